@@ -1,0 +1,1 @@
+"""Protocol code generator: spec/ (YAML) -> validated IR -> generated/ (C, C++, Python, Rust, docs)."""

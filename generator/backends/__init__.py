@@ -1,0 +1,1 @@
+"""One module per target language; see generator/pipeline.py for the interface."""

@@ -1,0 +1,340 @@
+"""Load the language-neutral golden vectors (tests/vectors/<protocol>/*.yaml).
+
+Each case is checked against the IR (every parameter present, values in range, names known) and
+turned into the exact canonical JSON lines (docs/conformance.md) that every language must print
+for its bytes. Values in the YAML are written as a person reads them (enum names, bit names,
+decimal floats); this module only re-spells them canonically.
+"""
+from __future__ import annotations
+
+import math
+import re
+import struct
+from pathlib import Path
+
+from .canonical import float_text, string_text
+from .diagnostics import SpecError, SpecErrors
+from .ir import SpecFile
+from .primitives import PRIMITIVES, int_range
+from .yamlpos import load
+
+CASE_KEYS = {"name", "sources", "derivation", "erratum", "hex", "device", "packets", "rejected", "notes", "skipped"}
+ERRATUM_KINDS = {"bad_checksum", "bad_length", "table_mismatch", "copy_paste_mismatch", "bad_decimal", "bad_bytes"}
+
+
+class _Ctx:
+    def __init__(self, sf: SpecFile, proto: dict):
+        self.sf = sf
+        self.proto = proto
+        self.types = {t["name"]: t for t in proto["types"]}
+        self.errors: list[SpecError] = []
+
+    def err(self, path: tuple, msg: str, expected: str | None = None) -> None:
+        self.errors.append(SpecError(self.sf.locate(path), msg, expected))
+
+
+def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
+    cases: list[dict] = []
+    errors: list[SpecError] = []
+    protos = {p["name"]: p for p in ir["protocols"]}
+    root = vectors_dir.parent.parent
+    names: dict[str, str] = {}
+    for proto_dir in sorted(p for p in vectors_dir.iterdir() if p.is_dir()):
+        proto = protos.get(proto_dir.name)
+        for path in sorted(proto_dir.glob("*.yaml")):
+            rel = str(path.relative_to(root))
+            try:
+                data, locate = load(str(path), rel)
+            except SpecError as e:
+                errors.append(e)
+                continue
+            sf = SpecFile(rel, data, locate)
+            if proto is None:
+                errors.append(SpecError(locate(()), f"no protocol '{proto_dir.name}' in spec/", "a directory named after a protocol"))
+                continue
+            ctx = _Ctx(sf, proto)
+            if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
+                ctx.err((), "a vector file is a mapping with a 'cases' list", "cases: [...]")
+                errors.extend(ctx.errors)
+                continue
+            for i, c in enumerate(data["cases"]):
+                case = _case(ctx, ("cases", i), c, rel)
+                if case is None:
+                    continue
+                if case["name"] in names:
+                    ctx.err(("cases", i, "name"), f"vector '{case['name']}' is defined twice (also in {names[case['name']]})", "unique vector names")
+                names[case["name"]] = rel
+                cases.append(case)
+            errors.extend(ctx.errors)
+    for c in cases:
+        corr = (c.get("erratum") or {}).get("corrected")
+        if corr and corr not in names:
+            errors.append(SpecError(None, f"vector '{c['name']}': corrected case '{corr}' does not exist", "the name of another vector"))
+    if errors:
+        raise SpecErrors(errors)
+    return cases
+
+
+def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
+    if not isinstance(c, dict):
+        ctx.err(path, "a case is a mapping")
+        return None
+    for k in c:
+        if k not in CASE_KEYS:
+            ctx.err(path + (k,), f"unknown key '{k}' in vector case", "one of " + ", ".join(sorted(CASE_KEYS)))
+    for k in ("name", "hex"):
+        if k not in c:
+            ctx.err(path, f"vector case lacks '{k}'")
+            return None
+    if not c.get("sources") and not c.get("derivation"):
+        ctx.err(path, f"vector '{c['name']}' has neither sources nor a derivation", "where the bytes come from")
+    hex_clean = re.sub(r"[\s_]", "", str(c["hex"])).lower()
+    if not re.fullmatch(r"([0-9a-f]{2})*", hex_clean):
+        ctx.err(path + ("hex",), f"vector '{c['name']}': hex is not an even number of hex digits", "pairs of hex digits, spaces allowed")
+        return None
+    raw = bytes.fromhex(hex_clean)
+    er = c.get("erratum")
+    if er is not None:
+        if not isinstance(er, dict) or er.get("kind") not in ERRATUM_KINDS or not er.get("evidence"):
+            ctx.err(path + ("erratum",), "an erratum needs kind and evidence", "kind: one of " + ", ".join(sorted(ERRATUM_KINDS)) + "; evidence: text")
+    lines: list[str] = []
+    if c.get("rejected"):
+        if c.get("packets"):
+            ctx.err(path + ("packets",), "a rejected case has no packets")
+        lines.append('{"offset":0,"skipped":"%s"}' % hex_clean)
+    else:
+        pkts = c.get("packets") or []
+        if not pkts:
+            ctx.err(path, f"vector '{c['name']}' has no packets and is not rejected", "packets: [...] or rejected: true")
+        for j, p in enumerate(pkts):
+            lines.append(_packet(ctx, path + ("packets", j), p, c.get("device")))
+        for j, s in enumerate(c.get("skipped") or []):
+            lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], s["hex"].lower()))
+        lines.sort(key=lambda line: int(re.match(r'\{"offset":(\d+)', line).group(1)))
+    return {
+        "name": c["name"], "protocol": ctx.proto["name"], "file": rel, "line": ctx.sf.locate(path).line,
+        "sources": c.get("sources") or [], "derivation": c.get("derivation"), "erratum": er, "notes": c.get("notes"),
+        "hex": hex_clean, "size": len(raw), "device": c.get("device"), "rejected": bool(c.get("rejected")),
+        "expect": lines,
+    }
+
+
+def _packet(ctx: _Ctx, path: tuple, p: dict, device: str | None) -> str:
+    set_id = p.get("set")
+    sets = {s["id"]: s for s in ctx.proto["sets"]}
+    fields = []
+    for k, f in enumerate(p.get("fields", [])):
+        fp = path + ("fields", k)
+        if "trailing" in f:
+            fields.append('{"trailing":"%s","error":%s}' % (f["trailing"].lower(), _json_str(f["error"])))
+            continue
+        if "data" in f:
+            fields.append('{"descriptor":%d,"data":"%s","error":%s}' % (f["descriptor"], f["data"].replace(" ", "").lower(), _json_str(f["error"])))
+            continue
+        fdef = _find_field(ctx, set_id, f.get("descriptor"), sets)
+        if fdef is None:
+            ctx.err(fp + ("descriptor",), f"no field 0x{f.get('descriptor', 0):02X} in set 0x{set_id:02X}", "a descriptor defined in spec/")
+            continue
+        if f.get("name") != fdef["name"]:
+            ctx.err(fp + ("name",), f"descriptor 0x{fdef['id']:02X} is '{fdef['name']}', the vector says '{f.get('name')}'", fdef["name"])
+        dev = f.get("device", device)
+        variants = fdef["variants"]
+        if len(variants) > 1:
+            match = [v for v in variants if v["device"] == dev]
+            if not match:
+                ctx.err(fp, f"field {fdef['name']} has per-device variants; name one with device:", ", ".join(v["device"] for v in variants))
+                continue
+            layout = match[0]
+            head = '{"descriptor":%d,"name":"%s","device":"%s","values":' % (fdef["id"], fdef["name"], layout["device"])
+        else:
+            layout = variants[0]
+            head = '{"descriptor":%d,"name":"%s","values":' % (fdef["id"], fdef["name"])
+        fields.append(head + _layout_values(ctx, fp + ("values",), layout, f.get("values") or {}) + "}")
+    return '{"offset":%d,"set":%d,"fields":[%s]}' % (p.get("offset", 0), set_id, ",".join(fields))
+
+
+def _find_field(ctx: _Ctx, set_id: int, desc: int, sets: dict) -> dict | None:
+    s = sets.get(set_id)
+    if s:
+        for f in s["fields"]:
+            if f["id"] == desc:
+                return f
+    kind = next((k for k, r in ctx.proto["set_kinds"].items() if r["first"] <= set_id <= r["last"]), None)
+    for r in ctx.proto["reserved_fields"]:
+        if r["applies_to"] == kind and r["id"] == desc:
+            return r
+    shared = ctx.proto.get("shared_data")
+    if kind == "data" and shared and shared["set"] in sets:
+        for f in sets[shared["set"]]["fields"]:
+            if f["id"] == desc:
+                return f
+    return None
+
+
+def _json_str(s: str) -> str:
+    return string_text(s.encode("latin-1"))
+
+
+def _layout_values(ctx: _Ctx, path: tuple, layout: dict, values: dict) -> str:
+    parts = []
+    known = {q["name"] for q in layout["params"]} | ({"function"} if layout["functions"] else set())
+    for k in values:
+        if k not in known:
+            ctx.err(path + (k,), f"unknown parameter '{k}'", "one of " + ", ".join(sorted(known)))
+    if layout["functions"]:
+        if "function" not in values:
+            ctx.err(path, "missing 'function'")
+        else:
+            fs = ctx.types[ctx.proto["function_selector"]["enum"]]
+            parts.append('"function":' + _enum_value(ctx, path + ("function",), fs, values["function"]))
+    parts.extend(_params(ctx, path, layout["params"], values))
+    return "{" + ",".join(parts) + "}"
+
+
+def _params(ctx: _Ctx, path: tuple, params: list[dict], values: dict) -> list[str]:
+    parts = []
+    seen: dict = {}
+    for q in params:
+        if q["name"] not in values:
+            if not q["optional"]:
+                ctx.err(path, f"missing parameter '{q['name']}'")
+            continue
+        v = values[q["name"]]
+        seen[q["name"]] = v
+        parts.append('"%s":%s' % (q["name"], _param_value(ctx, path + (q["name"],), q, v, seen)))
+    return parts
+
+
+def _param_value(ctx: _Ctx, path: tuple, q: dict, v, seen: dict) -> str:
+    c = q["count"]
+    if c is None:
+        return _value(ctx, path, q["type"], v, seen)
+    if not isinstance(v, list):
+        ctx.err(path, f"{q['name']} is an array", "a list")
+        return "[]"
+    if c["kind"] == "fixed" and len(v) != c["value"]:
+        ctx.err(path, f"{q['name']} has {len(v)} elements", f"{c['value']}")
+    if c["kind"] == "param" and seen.get(c["param"]) != len(v):
+        ctx.err(path, f"{q['name']} has {len(v)} elements but {c['param']} = {seen.get(c['param'])}", "matching count")
+    return "[" + ",".join(_value(ctx, path + (i,), q["type"], x, seen) for i, x in enumerate(v)) + "]"
+
+
+def _value(ctx: _Ctx, path: tuple, t: dict, v, seen: dict) -> str:
+    kind = t["kind"]
+    if kind == "primitive":
+        name = t["name"]
+        pk = PRIMITIVES[name][1]
+        if pk == "int":
+            lo, hi = int_range(name)
+            if not isinstance(v, int) or isinstance(v, bool) or not lo <= v <= hi:
+                ctx.err(path, f"{v!r} is not a valid {name}", f"an integer in {lo}..{hi}")
+                return "0"
+            return str(v)
+        if pk == "bool":
+            if not isinstance(v, bool):
+                ctx.err(path, f"{v!r} is not a bool", "true or false")
+            return "true" if v else "false"
+        if pk == "char":
+            if not isinstance(v, str) or len(v) != 1:
+                ctx.err(path, f"{v!r} is not one character")
+                return '"?"'
+            return string_text(v.encode("latin-1"))
+        return _float(ctx, path, name, v)
+    if kind == "string":
+        if not isinstance(v, str) or len(v.encode("latin-1", "replace")) != t["length"]:
+            ctx.err(path, f"string {v!r} is not exactly {t['length']} characters (padding included)", f"{t['length']} characters")
+            return '""'
+        return string_text(v.encode("latin-1"))
+    if kind == "enum":
+        return _enum_value(ctx, path, ctx.types[t["name"]], v)
+    if kind == "bitfield":
+        bt = ctx.types[t["name"]]
+        if isinstance(v, list):
+            members = {m["name"]: m for m in bt["members"]}
+            total = 0
+            for name in v:
+                if name not in members:
+                    ctx.err(path, f"'{name}' is not a member of bitfield {bt['name']}", ", ".join(members))
+                else:
+                    total |= members[name]["mask"]
+            return str(total)
+        lo, hi = int_range(bt["base"])
+        if not isinstance(v, int) or not lo <= v <= hi:
+            ctx.err(path, f"{v!r} is not a valid {bt['base']} for bitfield {bt['name']}", "an integer or a list of member names")
+            return "0"
+        return str(v)
+    if kind == "struct":
+        st = ctx.types[t["name"]]
+        if not isinstance(v, dict):
+            ctx.err(path, f"{t['name']} is a struct", "a mapping")
+            return "{}"
+        for k in v:
+            if k not in {q["name"] for q in st["params"]}:
+                ctx.err(path + (k,), f"unknown member '{k}' of {t['name']}")
+        return "{" + ",".join(_params(ctx, path, st["params"], v)) + "}"
+    if kind == "union":
+        ut = ctx.types[t["name"]]
+        sel_value = seen.get(t["selector"])
+        et = ctx.types[ut["selector_enum"]]
+        sel_int = _enum_int(et, sel_value)
+        member = next((m for m in ut["members"] if m["value"] == sel_int), None)
+        if member is None:
+            ctx.err(path, f"no member of union {ut['name']} for selector {sel_value!r}")
+            return "null"
+        if member["type"] is None:
+            if v is not None:
+                ctx.err(path, "this union member has no data", "null")
+            return "null"
+        return _value(ctx, path, {"kind": "struct", "name": member["type"]}, v, seen)
+    ctx.err(path, f"cannot express type kind {kind}")
+    return "null"
+
+
+def _enum_int(et: dict, v):
+    if isinstance(v, str):
+        for x in et["values"]:
+            if x["name"] == v:
+                return x["value"]
+        return None
+    return v
+
+
+def _enum_value(ctx: _Ctx, path: tuple, et: dict, v) -> str:
+    iv = _enum_int(et, v)
+    lo, hi = int_range(et["base"])
+    if iv is None or isinstance(iv, bool) or not isinstance(iv, int) or not lo <= iv <= hi:
+        ctx.err(path, f"{v!r} is not a value of enum {et['name']}", "a value name (" + ", ".join(x["name"] for x in et["values"]) + ") or an integer")
+        return "0"
+    return str(iv)
+
+
+def _float(ctx: _Ctx, path: tuple, name: str, v) -> str:
+    single = name == "float"
+    if isinstance(v, str):
+        s = v.strip()
+        if s == "nan":
+            return '"nan"'
+        if s in ("inf", "-inf"):
+            return '"%s"' % s
+        m = re.fullmatch(r"nan:0x([0-9a-f]+)", s)
+        if m and len(m.group(1)) == (8 if single else 16):
+            bits = int(m.group(1), 16)
+            val = struct.unpack(">f", struct.pack(">I", bits))[0] if single else struct.unpack(">d", struct.pack(">Q", bits))[0]
+            if not math.isnan(val):
+                ctx.err(path, f"{s} is not a NaN bit pattern")
+            return float_text(val, bits, single)
+        m = re.fullmatch(r"bits:0x([0-9a-f]+)", s)
+        if m:
+            bits = int(m.group(1), 16)
+            val = struct.unpack(">f", struct.pack(">I", bits))[0] if single else struct.unpack(">d", struct.pack(">Q", bits))[0]
+            return float_text(val, bits, single)
+        ctx.err(path, f"{v!r} is not a number", "a number, inf, -inf, nan, nan:0x<bits> or bits:0x<bits>")
+        return "0.0"
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        ctx.err(path, f"{v!r} is not a number")
+        return "0.0"
+    if single:
+        x = struct.unpack(">f", struct.pack(">f", float(v)))[0]
+        # The decimal written in the vector must name this float exactly (shortest repr is fine).
+        return float_text(x, single=True)
+    return float_text(float(v))
