@@ -597,7 +597,7 @@ class Builder:
 
 
 def _known_manuals(pf: SpecFile) -> set[str]:
-    return {d["manual"] for d in pf.data.get("devices", [])} | {"ms-cip-doc00419-revM.txt"}
+    return {d["manual"] for d in pf.data.get("devices", [])}
 
 
 def _fixed(n: int) -> dict:

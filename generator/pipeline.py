@@ -5,6 +5,7 @@ import importlib
 import os
 from pathlib import Path
 
+from .errata import render_errata
 from .export import ir_to_json
 from .ir import lint_stated_lengths
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
@@ -22,14 +23,16 @@ def _available_backends() -> list[str]:
     return [b for b in BACKENDS if (here / f"{b}.py").exists()]
 
 
-def run(spec_dir: Path | None, out_dir: Path | None, only: list[str] | None, validate_only: bool, lint: bool) -> int:
-    ir = load_spec(spec_dir)
+def run(spec_dir: Path | None, out_dir: Path | None, only: list[str] | None, validate_only: bool, lint: bool,
+        docs_dir: Path | None = None) -> int:
+    ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT)
     if lint:
         for item in lint_stated_lengths(ir):
             print(f"{item['manual']}:{item.get('line')}: {item['name']} (0x{item['set']:02X},0x{item['descriptor']:02X}): "
                   f"manual states {item['stated']!r}, computed {item['computed']}")
         return 0
-    vectors = load_vectors(ir, ROOT / "tests" / "vectors")
+    # Golden vectors belong to the project's own spec; a spec given with --spec is validated alone.
+    vectors = load_vectors(ir, ROOT / "tests" / "vectors") if spec_dir is None else []
     if validate_only:
         return 0
     out_dir = out_dir or ROOT / "generated"
@@ -47,6 +50,8 @@ def run(spec_dir: Path | None, out_dir: Path | None, only: list[str] | None, val
         files.update(rendered)
     files = format_files(files)
     _write_tree(out_dir, files, owned)
+    docs_dir = docs_dir or ROOT / "docs"
+    _write_tree(docs_dir, {"errata.md": render_errata(ir, vectors)}, [])
     return 0
 
 

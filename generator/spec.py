@@ -16,17 +16,27 @@ SCHEMA_PATH = ROOT / "spec" / "schema" / "spec.schema.json"
 
 
 def _schema_validator():
+    """One validator per file kind; the kind is chosen by the file's discriminating key."""
     with open(SCHEMA_PATH, encoding="utf-8") as fh:
         schema = json.load(fh)
-    return jsonschema.Draft202012Validator(schema)
+    validators = {}
+    for key, ref in (("protocol", "protocolFile"), ("set", "setFile"), ("types", "typesFile")):
+        sub = {"$schema": schema["$schema"], "$defs": schema["$defs"], "$ref": f"#/$defs/{ref}"}
+        validators[key] = jsonschema.Draft202012Validator(sub)
+    validators[None] = jsonschema.Draft202012Validator(schema)
+    return validators
 
 
-def _describe(error: jsonschema.ValidationError) -> tuple[str, str | None]:
-    """Turn a jsonschema error into (what is wrong, what is expected)."""
-    # oneOf at the top: find the most specific sub-error.
-    best = jsonschema.exceptions.best_match([error]) if error.context else error
+def _deepest(error: jsonschema.ValidationError) -> jsonschema.ValidationError:
+    """For oneOf/anyOf failures, the most specific sub-error (the one a person needs to see)."""
+    best = error
     while best.context:
         best = jsonschema.exceptions.best_match(best.context)
+    return best
+
+
+def _describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
+    """Turn a jsonschema error into (what is wrong, what is expected)."""
     where = ".".join(str(p) for p in best.absolute_path) or "(top level)"
     v = best.validator
     if v == "required":
@@ -45,15 +55,22 @@ def _describe(error: jsonschema.ValidationError) -> tuple[str, str | None]:
     return f"{where}: {best.message}", None
 
 
-def _validate_shape(validator, sf: SpecFile) -> list[SpecError]:
+def _validate_shape(validators, sf: SpecFile) -> list[SpecError]:
     errors = []
+    kind = next((k for k in ("protocol", "set", "types") if k in sf.data), None)
+    if kind is None:
+        return [SpecError(sf.locate(()), "cannot tell what kind of spec file this is",
+                          "a top-level 'protocol:' (protocol file), 'set:' (descriptor set) or 'types:' (shared types) key")]
+    validator = validators[kind]
     for e in sorted(validator.iter_errors(sf.data), key=lambda e: list(map(str, e.absolute_path))):
-        # Locate the deepest sub-error for oneOf/anyOf failures.
-        best = e
-        while best.context:
-            best = jsonschema.exceptions.best_match(best.context)
-        msg, expected = _describe(e)
-        errors.append(SpecError(sf.locate(tuple(best.absolute_path)), msg, expected))
+        best = _deepest(e)
+        msg, expected = _describe(best)
+        path = tuple(best.absolute_path)
+        if best.validator == "additionalProperties" and isinstance(best.instance, dict):
+            extra = [k for k in best.instance if k not in best.schema.get("properties", {})]
+            if extra:
+                path = path + (("key", extra[0]),)
+        errors.append(SpecError(sf.locate(path), msg, expected))
     return errors
 
 

@@ -1,0 +1,53 @@
+# Protocol code generator. Contracts (kept stable, see README): make, make test, make check,
+# make audit, make bench, generated/ir.json, tests/vectors/, tests/conformance/{decode,encode}.
+SHELL := /bin/bash
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+LANGS := c cpp python rust
+MANUALS ?= ../shared/manuals
+export RUFF := $(abspath $(VENV)/bin/ruff)
+
+SPEC_INPUTS := $(shell find spec generator templates tests/vectors -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
+
+.PHONY: all generate test test-generator test-conformance $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+
+all: generate
+
+$(VENV)/.stamp: requirements.txt
+	$(PYTHON) -m venv $(VENV)
+	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r requirements.txt
+	touch $@
+
+# Regenerate only when an input changed; the generator itself writes only changed files.
+generate: build/.generated
+build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
+	$(PY) -m generator
+	@mkdir -p build && touch $@
+
+test: generate test-generator $(addprefix test-,$(LANGS)) test-conformance
+
+test-generator: $(VENV)/.stamp
+	$(PY) -m pytest -q tests/generator
+
+$(addprefix test-,$(LANGS)): test-%: generate
+	tests/lang/$*.sh test
+
+test-conformance: generate
+	$(PY) -m pytest -q tests/conformance
+
+# Fails when generated/ (or docs/errata.md) is not what the spec and templates produce.
+check: $(VENV)/.stamp
+	$(PY) -m generator.drift
+
+lint: $(VENV)/.stamp
+	$(PY) -m generator --lint
+
+audit: $(VENV)/.stamp
+	$(PY) -m generator.audit --manuals $(MANUALS)
+
+clean:
+	rm -rf build
+
+distclean: clean
+	rm -rf $(VENV)
