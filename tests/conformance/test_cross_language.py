@@ -1,0 +1,96 @@
+"""Cross-language conformance through the command-line tools (docs/conformance.md §5).
+
+For every golden vector and every language: `decode` prints exactly the expected canonical JSON
+lines, and `encode` turns them back into the same bytes. Then one long stream made of every
+vector with garbage between them must decode to byte-identical output in all four languages and
+round-trip through decode | encode in each.
+"""
+import os
+import random
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from generator.spec import load_spec
+from generator.vectors import load_vectors
+
+ROOT = Path(__file__).resolve().parents[2]
+LANGS = ["c", "cpp", "python", "rust"]
+VECTORS = load_vectors(load_spec(), ROOT / "tests" / "vectors")
+CAPTURE = ROOT.parent / "shared" / "captures" / "mip_data.bin"
+
+
+def decode(lang: str, path: Path, *extra: str) -> str:
+    proc = subprocess.run([str(ROOT / "tests/conformance/decode"), lang, str(path), *extra], capture_output=True)
+    assert proc.returncode == 0, f"{lang} decode failed: {proc.stderr.decode(errors='replace')}"
+    return proc.stdout.decode()
+
+
+def encode(lang: str, text: str) -> bytes:
+    proc = subprocess.run([str(ROOT / "tests/conformance/encode"), lang], input=text.encode(), capture_output=True)
+    assert proc.returncode == 0, f"{lang} encode failed: {proc.stderr.decode(errors='replace')}"
+    return proc.stdout
+
+
+@pytest.fixture(scope="module")
+def vector_files(tmp_path_factory):
+    d = tmp_path_factory.mktemp("vectors")
+    out = {}
+    for c in VECTORS:
+        p = d / f"{c['name']}.bin"
+        p.write_bytes(bytes.fromhex(c["hex"]))
+        out[c["name"]] = p
+    return out
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_every_vector_decodes_and_encodes(lang, vector_files):
+    failures = []
+    for c in VECTORS:
+        extra = ("--device", c["device"]) if c.get("device") else ()
+        got = decode(lang, vector_files[c["name"]], *extra)
+        want = "".join(line + "\n" for line in c["expect"])
+        if got != want:
+            failures.append(f"{c['name']} ({c['file']}:{c['line']}):\n  want {want!r}\n  got  {got!r}")
+            continue
+        back = encode(lang, got)
+        if back.hex() != c["hex"]:
+            failures.append(f"{c['name']}: encode gave {back.hex()}, want {c['hex']}")
+    assert not failures, f"{len(failures)} of {len(VECTORS)} vectors fail in {lang}:\n" + "\n".join(failures)
+
+
+@pytest.fixture(scope="module")
+def mixed_stream(tmp_path_factory):
+    """Every vector, in order, separated by seeded random garbage (seed printed on failure)."""
+    seed = int(os.environ.get("CONFORMANCE_SEED", "20261121"))
+    rng = random.Random(seed)
+    parts = []
+    for c in VECTORS:
+        parts.append(bytes(rng.randrange(256) for _ in range(rng.randrange(0, 6))))
+        parts.append(bytes.fromhex(c["hex"]))
+    parts.append(b"\x75")  # a lone sync byte at the very end
+    p = tmp_path_factory.mktemp("stream") / f"mixed-{seed}.bin"
+    p.write_bytes(b"".join(parts))
+    return p
+
+
+def test_mixed_stream_identical_in_all_languages(mixed_stream):
+    outputs = {lang: decode(lang, mixed_stream) for lang in LANGS}
+    ref = outputs["python"]
+    assert ref.count('"set":') >= len([c for c in VECTORS if not c["rejected"]])
+    for lang, out in outputs.items():
+        assert out == ref, f"{lang} differs from python on {mixed_stream.name}"
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_mixed_stream_round_trips(lang, mixed_stream):
+    assert encode(lang, decode(lang, mixed_stream)) == mixed_stream.read_bytes()
+
+
+@pytest.mark.skipif(not CAPTURE.exists(), reason="device capture not present (../shared/captures)")
+def test_capture_identical_in_all_languages():
+    outputs = {lang: decode(lang, CAPTURE) for lang in LANGS}
+    for lang, out in outputs.items():
+        assert out == outputs["python"], f"{lang} differs from python on the device capture"
+    assert encode("c", outputs["c"]) == CAPTURE.read_bytes()
