@@ -109,7 +109,7 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
         for j, p in enumerate(pkts):
             lines.append(_packet(ctx, path + ("packets", j), p, c.get("device")))
         for j, s in enumerate(c.get("skipped") or []):
-            lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], s["hex"].lower()))
+            lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], re.sub(r"\s", "", s["hex"]).lower()))
         lines.sort(key=lambda line: int(re.match(r'\{"offset":(\d+)', line).group(1)))
     return {
         "name": c["name"], "protocol": ctx.proto["name"], "file": rel, "line": ctx.sf.locate(path).line,
