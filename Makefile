@@ -28,6 +28,8 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 test: generate test-generator $(addprefix test-,$(LANGS)) test-conformance
 
 test-generator: $(VENV)/.stamp
+	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance
+	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance
 	$(PY) -m pytest -q tests/generator
 
 $(addprefix test-,$(LANGS)): test-%: generate

@@ -3,6 +3,7 @@
 Loads and validates spec/, builds the IR, and renders every back end into generated/.
 Exit status: 0 ok, 1 spec errors (printed as file:line:column: error: ...), 2 usage/tool errors.
 """
+
 from __future__ import annotations
 
 import argparse

@@ -3,6 +3,7 @@
 Used by the generator to turn golden vectors into the exact text every language must print.
 It is not the code under test: each generated library has its own implementation.
 """
+
 from __future__ import annotations
 
 import math
@@ -13,7 +14,11 @@ def float_text(value: float, bits: int | None = None, single: bool = False) -> s
     """Canonical text of a float/double value. `bits` are the raw bits when known (for NaN)."""
     if math.isnan(value):
         if bits is None:
-            bits = struct.unpack(">I", struct.pack(">f", value))[0] if single else struct.unpack(">Q", struct.pack(">d", value))[0]
+            bits = (
+                struct.unpack(">I", struct.pack(">f", value))[0]
+                if single
+                else struct.unpack(">Q", struct.pack(">d", value))[0]
+            )
         canonical = 0x7FC00000 if single else 0x7FF8000000000000
         if bits == canonical:
             return '"nan"'

@@ -1,4 +1,5 @@
 """Located, readable errors for spec problems. Never a traceback for a bad spec."""
+
 from __future__ import annotations
 
 from dataclasses import dataclass

@@ -1,4 +1,5 @@
 """`make check`: regenerate into a temporary directory and fail if generated/ or docs/errata.md differ."""
+
 from __future__ import annotations
 
 import difflib
@@ -22,7 +23,9 @@ def _tracked_tree(base: Path) -> dict[str, Path]:
             out[str(p.relative_to(base))] = p
     if out:
         rels = list(out)
-        proc = subprocess.run(["git", "check-ignore", "--stdin"], cwd=base, input="\n".join(rels), capture_output=True, text=True)
+        proc = subprocess.run(
+            ["git", "check-ignore", "--stdin"], cwd=base, input="\n".join(rels), capture_output=True, text=True
+        )
         for ignored in proc.stdout.split():
             out.pop(ignored, None)
     return out
@@ -43,7 +46,11 @@ def main() -> int:
         pairs = [(gen, ROOT / "generated"), (docs, ROOT / "docs")]
         for fresh_base, have_base in pairs:
             fresh = {k: v for k, v in _tracked_tree(fresh_base).items()}
-            have = _tracked_tree(have_base) if fresh_base is gen else {k: have_base / k for k in fresh if (have_base / k).exists()}
+            have = (
+                _tracked_tree(have_base)
+                if fresh_base is gen
+                else {k: have_base / k for k in fresh if (have_base / k).exists()}
+            )
             label = have_base.relative_to(ROOT)
             for rel in sorted(set(fresh) | set(have)):
                 if rel not in have:
@@ -54,7 +61,16 @@ def main() -> int:
                     a = have[rel].read_text(encoding="utf-8", errors="replace")
                     b = fresh[rel].read_text(encoding="utf-8", errors="replace")
                     if a != b:
-                        diff = list(difflib.unified_diff(a.splitlines(), b.splitlines(), f"{label}/{rel} (checked in)", f"{label}/{rel} (regenerated)", lineterm="", n=1))
+                        diff = list(
+                            difflib.unified_diff(
+                                a.splitlines(),
+                                b.splitlines(),
+                                f"{label}/{rel} (checked in)",
+                                f"{label}/{rel} (regenerated)",
+                                lineterm="",
+                                n=1,
+                            )
+                        )
                         problems.append(f"{label}/{rel}: out of date\n" + "\n".join(diff[:20]))
         if problems:
             print("generated output is out of date; run `make` and commit the result:", file=sys.stderr)

@@ -2,11 +2,17 @@
 
 The facts live next to their entries (spec notes, vector `erratum:`); this page only collects them.
 """
+
 from __future__ import annotations
 
 from .ir import lint_stated_lengths
 
-KIND_TITLES = {"erratum": "Erratum", "gap": "Gap filled from evidence", "unresolved": "Unresolved", "decision": "Decision"}
+KIND_TITLES = {
+    "erratum": "Erratum",
+    "gap": "Gap filled from evidence",
+    "unresolved": "Unresolved",
+    "decision": "Decision",
+}
 
 
 def _src(sources: list[dict]) -> str:
@@ -57,7 +63,9 @@ def render_errata(ir: dict, vectors: list[dict]) -> str:
         e = c.get("erratum")
         if not e:
             continue
-        out.append(f"| `{c['name']}` | {_src(c['sources'])} | {e['kind']} | {_cell(e['evidence'])} | `{e.get('corrected', '-')}` |")
+        out.append(
+            f"| `{c['name']}` | {_src(c['sources'])} | {e['kind']} | {_cell(e['evidence'])} | `{e.get('corrected', '-')}` |"
+        )
     out += ["", "## Spec entries", "", "| protocol | entry | source | kind | note |", "|---|---|---|---|---|"]
     for proto, label, sources, n in _spec_notes(ir):
         out.append(f"| {proto} | {label} | {_src(sources)} | {KIND_TITLES[n['kind']]} | {_cell(n['text'])} |")
@@ -72,6 +80,8 @@ def render_errata(ir: dict, vectors: list[dict]) -> str:
         "|---|---|---|---|",
     ]
     for item in lint_stated_lengths(ir):
-        stated = item["stated"] if not item.get("textual") else f"textual: \"{item['stated']}\""
-        out.append(f"| {item['protocol']} {item['name']} (0x{item['set']:02X},0x{item['descriptor']:02X}) | {item['manual']}:{item.get('line')} | {_cell(stated)} | {item['computed']} |")
+        stated = item["stated"] if not item.get("textual") else f'textual: "{item["stated"]}"'
+        out.append(
+            f"| {item['protocol']} {item['name']} (0x{item['set']:02X},0x{item['descriptor']:02X}) | {item['manual']}:{item.get('line')} | {_cell(stated)} | {item['computed']} |"
+        )
     return "\n".join(out) + "\n"

@@ -1,4 +1,5 @@
 """Write generated/ir.json: the IR exactly as back ends consume it, deterministic."""
+
 from __future__ import annotations
 
 import json

@@ -5,10 +5,11 @@ as generated/ir.json unchanged; every back end consumes exactly that structure. 
 documents it. All decisions (sizes, offsets, optionality, dispatch tables, response links)
 are made here, so templates stay dumb.
 """
+
 from __future__ import annotations
 
 import re
-from typing import Any, Callable
+from typing import Callable
 
 from .diagnostics import Location, SpecError
 from .primitives import ALIASES, PRIMITIVES, int_range
@@ -56,7 +57,12 @@ class Builder:
         framing = self._framing()
         fs_enum = (p.get("function_selector") or {}).get("enum")
         if fs_enum and fs_enum not in self.types:
-            self.err(self.pf, ("function_selector", "enum"), f"function selector enum '{fs_enum}' is not defined", "an enum defined in the spec")
+            self.err(
+                self.pf,
+                ("function_selector", "enum"),
+                f"function selector enum '{fs_enum}' is not defined",
+                "an enum defined in the spec",
+            )
         self.function_values: dict[str, int] = {}
         if fs_enum in self.types and self.types[fs_enum]["kind"] == "enum":
             self.function_values = {v["name"]: v["value"] for v in self.types[fs_enum]["values"]}
@@ -106,8 +112,13 @@ class Builder:
         out = []
         for i, s in enumerate(sources or []):
             if s["manual"] not in self.manual_devices and s["manual"] not in _known_manuals(self.pf):
-                self.err(sf, path + (i, "manual"), f"unknown manual '{s['manual']}'",
-                         "one of the manuals listed under devices in the protocol file: " + ", ".join(sorted(self.manual_devices)))
+                self.err(
+                    sf,
+                    path + (i, "manual"),
+                    f"unknown manual '{s['manual']}'",
+                    "one of the manuals listed under devices in the protocol file: "
+                    + ", ".join(sorted(self.manual_devices)),
+                )
             out.append(dict(s))
         return out
 
@@ -117,14 +128,24 @@ class Builder:
 
     # ---------------------------------------------------------------- types
     def _collect_types(self, sf: SpecFile, base: tuple) -> None:
-        for kind_key, kind in (("enums", "enum"), ("bitfields", "bitfield"), ("structs", "struct"), ("unions", "union")):
+        for kind_key, kind in (
+            ("enums", "enum"),
+            ("bitfields", "bitfield"),
+            ("structs", "struct"),
+            ("unions", "union"),
+        ):
             for i, t in enumerate(sf.data.get(kind_key, []) or []):
                 name = t["name"]
                 path = base + (kind_key, i)
                 if name in self.raw_types or name in PRIMITIVES or name in ALIASES or name == "string":
                     prev = self.type_locs.get(name)
                     where = f" (first defined at {prev})" if prev else " (a built-in type)"
-                    self.err(sf, path + ("name",), f"type '{name}' is defined twice{where}", "unique type names across the protocol")
+                    self.err(
+                        sf,
+                        path + ("name",),
+                        f"type '{name}' is defined twice{where}",
+                        "unique type names across the protocol",
+                    )
                     continue
                 self.raw_types[name] = (kind, t, sf, path)
                 self.type_locs[name] = sf.locate(path)
@@ -180,9 +201,16 @@ class Builder:
         for i, v in enumerate(t["values"]):
             vp = path + ("values", i)
             if not lo <= v["value"] <= hi:
-                self.err(sf, vp + ("value",), f"enum {t['name']} value {v['name']} = {v['value']} does not fit in {base}", f"{lo}..{hi}")
+                self.err(
+                    sf,
+                    vp + ("value",),
+                    f"enum {t['name']} value {v['name']} = {v['value']} does not fit in {base}",
+                    f"{lo}..{hi}",
+                )
             if v["name"] in seen_names:
-                self.err(sf, vp + ("name",), f"enum {t['name']} has two values named '{v['name']}'", "unique value names")
+                self.err(
+                    sf, vp + ("name",), f"enum {t['name']} has two values named '{v['name']}'", "unique value names"
+                )
             seen_names[v["name"]] = v["value"]
             devs = set(v.get("devices") or self.device_ids)
             for d in v.get("devices", []) or []:
@@ -190,12 +218,21 @@ class Builder:
                     self.err(sf, vp + ("devices",), f"unknown device '{d}'", "one of " + ", ".join(self.device_ids))
             for other_devs, other_name in seen_values.get(v["value"], []):
                 if other_devs & devs:
-                    self.err(sf, vp + ("value",),
-                             f"enum {t['name']} value {v['value']} is used by both '{other_name}' and '{v['name']}' for the same device",
-                             "distinct values, or 'devices:' lists that do not overlap")
+                    self.err(
+                        sf,
+                        vp + ("value",),
+                        f"enum {t['name']} value {v['value']} is used by both '{other_name}' and '{v['name']}' for the same device",
+                        "distinct values, or 'devices:' lists that do not overlap",
+                    )
             seen_values.setdefault(v["value"], []).append((devs, v["name"]))
-            values.append({"name": v["name"], "value": v["value"], "description": v.get("description", ""),
-                           "devices": v.get("devices")})
+            values.append(
+                {
+                    "name": v["name"],
+                    "value": v["value"],
+                    "description": v.get("description", ""),
+                    "devices": v.get("devices"),
+                }
+            )
         out = {"kind": "enum", "name": t["name"], "base": base, "size": _fixed(PRIMITIVES[base][0]), "values": values}
         out.update(self._common(sf, path, t))
         return out
@@ -211,35 +248,70 @@ class Builder:
             bits = m["bits"]
             first, last = (bits, bits) if isinstance(bits, int) else (bits[0], bits[1])
             if first > last:
-                self.err(sf, mp + ("bits",), f"bitfield {t['name']} member {m['name']}: bit range {first}-{last} is reversed", "[low, high]")
+                self.err(
+                    sf,
+                    mp + ("bits",),
+                    f"bitfield {t['name']} member {m['name']}: bit range {first}-{last} is reversed",
+                    "[low, high]",
+                )
                 first, last = last, first
             if last >= nbits:
-                self.err(sf, mp + ("bits",), f"bitfield {t['name']} member {m['name']}: bit {last} is out of range for {base}", f"bits 0..{nbits - 1}")
+                self.err(
+                    sf,
+                    mp + ("bits",),
+                    f"bitfield {t['name']} member {m['name']}: bit {last} is out of range for {base}",
+                    f"bits 0..{nbits - 1}",
+                )
                 last = min(last, nbits - 1)
                 first = min(first, last)
             if m["name"] in names:
-                self.err(sf, mp + ("name",), f"bitfield {t['name']} has two members named '{m['name']}'", "unique member names")
+                self.err(
+                    sf,
+                    mp + ("name",),
+                    f"bitfield {t['name']} has two members named '{m['name']}'",
+                    "unique member names",
+                )
             names.add(m["name"])
             if not m.get("alias"):
                 for b in range(first, last + 1):
                     if b in used:
-                        self.err(sf, mp + ("bits",), f"bitfield {t['name']} member {m['name']} overlaps '{used[b]}' at bit {b}",
-                                 "non-overlapping members (mark deliberate multi-bit masks with alias: true)")
+                        self.err(
+                            sf,
+                            mp + ("bits",),
+                            f"bitfield {t['name']} member {m['name']} overlaps '{used[b]}' at bit {b}",
+                            "non-overlapping members (mark deliberate multi-bit masks with alias: true)",
+                        )
                         break
                 for b in range(first, last + 1):
                     used.setdefault(b, m["name"])
             width = last - first + 1
-            members.append({
-                "name": m["name"], "first_bit": first, "last_bit": last, "width": width,
-                "mask": ((1 << width) - 1) << first, "reserved": bool(m.get("reserved")), "alias": bool(m.get("alias")),
-                "description": m.get("description", ""), "devices": m.get("devices"),
-            })
-        out = {"kind": "bitfield", "name": t["name"], "base": base, "size": _fixed(PRIMITIVES[base][0]), "members": members}
+            members.append(
+                {
+                    "name": m["name"],
+                    "first_bit": first,
+                    "last_bit": last,
+                    "width": width,
+                    "mask": ((1 << width) - 1) << first,
+                    "reserved": bool(m.get("reserved")),
+                    "alias": bool(m.get("alias")),
+                    "description": m.get("description", ""),
+                    "devices": m.get("devices"),
+                }
+            )
+        out = {
+            "kind": "bitfield",
+            "name": t["name"],
+            "base": base,
+            "size": _fixed(PRIMITIVES[base][0]),
+            "members": members,
+        }
         out.update(self._common(sf, path, t))
         return out
 
     def _struct(self, sf: SpecFile, path: tuple, t: dict) -> dict:
-        params = self._params(sf, path + ("params",), t["params"], functions=None, owner=f"struct {t['name']}", allow_optional=False)
+        params = self._params(
+            sf, path + ("params",), t["params"], functions=None, owner=f"struct {t['name']}", allow_optional=False
+        )
         out = {"kind": "struct", "name": t["name"], "params": params, "size": _layout_size(params)}
         out.update(self._common(sf, path, t))
         return out
@@ -249,7 +321,12 @@ class Builder:
         sel_t = self.types.get(sel)
         if sel_t is None or sel_t["kind"] != "enum":
             what = "not defined" if sel_t is None else f"a {sel_t['kind']}, not an enum"
-            self.err(sf, path + ("selector_enum",), f"union {t['name']}: selector type '{sel}' is {what}", "the name of an enum")
+            self.err(
+                sf,
+                path + ("selector_enum",),
+                f"union {t['name']}: selector type '{sel}' is {what}",
+                "the name of an enum",
+            )
             values = {}
         else:
             values = {v["name"]: v["value"] for v in sel_t["values"]}
@@ -258,17 +335,38 @@ class Builder:
         for i, m in enumerate(t["members"]):
             mp = path + ("members", i)
             if values and m["when"] not in values:
-                self.err(sf, mp + ("when",), f"union {t['name']}: '{m['when']}' is not a value of enum {sel}", "one of " + ", ".join(values))
+                self.err(
+                    sf,
+                    mp + ("when",),
+                    f"union {t['name']}: '{m['when']}' is not a value of enum {sel}",
+                    "one of " + ", ".join(values),
+                )
             if m["when"] in seen:
-                self.err(sf, mp + ("when",), f"union {t['name']}: two members for '{m['when']}'", "one member per selector value")
+                self.err(
+                    sf,
+                    mp + ("when",),
+                    f"union {t['name']}: two members for '{m['when']}'",
+                    "one member per selector value",
+                )
             seen.add(m["when"])
             mt = m.get("type")
             if mt is not None and (mt not in self.types or self.types[mt]["kind"] != "struct"):
-                self.err(sf, mp + ("type",), f"union {t['name']} member '{m['when']}': type '{mt}' is not a defined struct", "a struct name")
+                self.err(
+                    sf,
+                    mp + ("type",),
+                    f"union {t['name']} member '{m['when']}': type '{mt}' is not a defined struct",
+                    "a struct name",
+                )
                 mt = None
-            members.append({"when": m["when"], "value": values.get(m["when"], 0), "type": mt,
-                            "description": m.get("description", ""),
-                            "size": self.types[mt]["size"] if mt else _fixed(0)})
+            members.append(
+                {
+                    "when": m["when"],
+                    "value": values.get(m["when"], 0),
+                    "type": mt,
+                    "description": m.get("description", ""),
+                    "size": self.types[mt]["size"] if mt else _fixed(0),
+                }
+            )
         sizes = [m["size"] for m in members] or [_fixed(0)]
         size = {"min": min(s["min"] for s in sizes), "max": max(s["max"] for s in sizes), "fixed": False}
         out = {"kind": "union", "name": t["name"], "selector_enum": sel, "members": members, "size": size}
@@ -287,22 +385,48 @@ class Builder:
         if tname == "string":
             length = p.get("length")
             if length is None:
-                self.err(sf, path + ("type",), f"parameter {p['name']}: string needs a length", "length: N (bytes on the wire)")
+                self.err(
+                    sf,
+                    path + ("type",),
+                    f"parameter {p['name']}: string needs a length",
+                    "length: N (bytes on the wire)",
+                )
                 length = 1
-            return {"kind": "string", "length": length, "padding": p.get("padding", "nul"),
-                    "justify": p.get("justify", "left"), "size": _fixed(length)}, None, None
+            return (
+                {
+                    "kind": "string",
+                    "length": length,
+                    "padding": p.get("padding", "nul"),
+                    "justify": p.get("justify", "left"),
+                    "size": _fixed(length),
+                },
+                None,
+                None,
+            )
         t = self.types.get(tname)
         if t is None:
             known = sorted(list(PRIMITIVES) + list(ALIASES) + ["string"] + list(self.types))
-            self.err(sf, path + ("type",), f"parameter {p['name']}: unknown type '{tname}'", "a primitive, vector type, string or defined type: " + ", ".join(known))
+            self.err(
+                sf,
+                path + ("type",),
+                f"parameter {p['name']}: unknown type '{tname}'",
+                "a primitive, vector type, string or defined type: " + ", ".join(known),
+            )
             return {"kind": "primitive", "name": "u8", "size": _fixed(1)}, None, None
         ref = {"kind": t["kind"], "name": tname, "size": t["size"]}
         if t["kind"] in ("enum", "bitfield"):
             ref["base"] = t["base"]
         return ref, None, None
 
-    def _params(self, sf: SpecFile, path: tuple, params: list[dict], functions: list[str] | None, owner: str,
-                allow_optional: bool = True) -> list[dict]:
+    def _params(
+        self,
+        sf: SpecFile,
+        path: tuple,
+        params: list[dict],
+        functions: list[str] | None,
+        owner: str,
+        allow_optional: bool = True,
+    ) -> list[dict]:
         out: list[dict] = []
         names: dict[str, dict] = {}
         optional_seen: str | None = None
@@ -313,14 +437,20 @@ class Builder:
             if name in names:
                 self.err(sf, pp + ("name",), f"{owner}: two parameters named '{name}'", "unique parameter names")
             if name == "function" and functions is not None:
-                self.err(sf, pp + ("name",), f"{owner}: 'function' is reserved for the function selector", "another name")
+                self.err(
+                    sf, pp + ("name",), f"{owner}: 'function' is reserved for the function selector", "another name"
+                )
             tref, alias, implicit_count = self._typeref(sf, pp, p)
             count = None
             if implicit_count is not None:
                 count = {"kind": "fixed", "value": implicit_count}
                 if "count" in p:
-                    self.err(sf, pp + ("count",), f"{owner}: parameter {name} has type {alias}, which already has {implicit_count} elements",
-                             "no count on vector/matrix types (use the element type with count)")
+                    self.err(
+                        sf,
+                        pp + ("count",),
+                        f"{owner}: parameter {name} has type {alias}, which already has {implicit_count} elements",
+                        "no count on vector/matrix types (use the element type with count)",
+                    )
             elif "count" in p:
                 c = p["count"]
                 if isinstance(c, int):
@@ -328,69 +458,135 @@ class Builder:
                 elif c == "remaining":
                     count = {"kind": "remaining"}
                     if i != len(params) - 1:
-                        self.err(sf, pp + ("count",), f"{owner}: parameter {name} runs to the end of the field but is not the last parameter",
-                                 "count: remaining only on the last parameter")
+                        self.err(
+                            sf,
+                            pp + ("count",),
+                            f"{owner}: parameter {name} runs to the end of the field but is not the last parameter",
+                            "count: remaining only on the last parameter",
+                        )
                 else:
                     ref = names.get(c)
                     if ref is None:
-                        later = any(q["name"] == c for q in params[i + 1:])
+                        later = any(q["name"] == c for q in params[i + 1 :])
                         why = "a later parameter" if later else "not a parameter"
-                        self.err(sf, pp + ("count",), f"{owner}: count of {name} refers to '{c}', which is {why}",
-                                 "the name of an earlier integer parameter")
+                        self.err(
+                            sf,
+                            pp + ("count",),
+                            f"{owner}: count of {name} refers to '{c}', which is {why}",
+                            "the name of an earlier integer parameter",
+                        )
                     elif not _is_integer(ref["type"]) or ref["count"] is not None:
-                        self.err(sf, pp + ("count",), f"{owner}: count of {name} refers to '{c}', which is not a single integer",
-                                 "an earlier u8/u16/u32 parameter")
+                        self.err(
+                            sf,
+                            pp + ("count",),
+                            f"{owner}: count of {name} refers to '{c}', which is not a single integer",
+                            "an earlier u8/u16/u32 parameter",
+                        )
                     count = {"kind": "param", "param": c}
             if tref["kind"] == "string" and count is not None:
-                self.err(sf, pp + ("count",), f"{owner}: arrays of strings are not supported", "a struct holding the string")
+                self.err(
+                    sf, pp + ("count",), f"{owner}: arrays of strings are not supported", "a struct holding the string"
+                )
             if tref["kind"] != "string" and ("length" in p or "padding" in p or "justify" in p):
-                self.err(sf, pp, f"{owner}: parameter {name}: length/padding/justify apply only to type string", "type: string")
+                self.err(
+                    sf,
+                    pp,
+                    f"{owner}: parameter {name}: length/padding/justify apply only to type string",
+                    "type: string",
+                )
             if tref["kind"] == "union":
                 sel = p.get("selector")
                 ut = self.types[tref["name"]]
                 if sel is None:
-                    self.err(sf, pp, f"{owner}: union parameter {name} needs 'selector'", "selector: <earlier enum parameter>")
+                    self.err(
+                        sf,
+                        pp,
+                        f"{owner}: union parameter {name} needs 'selector'",
+                        "selector: <earlier enum parameter>",
+                    )
                 elif sel not in names:
-                    self.err(sf, pp + ("selector",), f"{owner}: selector of {name} refers to '{sel}', which is not an earlier parameter",
-                             "the name of an earlier enum parameter")
+                    self.err(
+                        sf,
+                        pp + ("selector",),
+                        f"{owner}: selector of {name} refers to '{sel}', which is not an earlier parameter",
+                        "the name of an earlier enum parameter",
+                    )
                 elif names[sel]["type"]["kind"] != "enum":
-                    self.err(sf, pp + ("selector",), f"{owner}: selector '{sel}' of union {name} is not an enum (it is {names[sel]['type']['kind']})",
-                             f"a parameter of enum type {ut['selector_enum']}")
+                    self.err(
+                        sf,
+                        pp + ("selector",),
+                        f"{owner}: selector '{sel}' of union {name} is not an enum (it is {names[sel]['type']['kind']})",
+                        f"a parameter of enum type {ut['selector_enum']}",
+                    )
                 elif names[sel]["type"]["name"] != ut["selector_enum"]:
-                    self.err(sf, pp + ("selector",), f"{owner}: selector '{sel}' has type {names[sel]['type']['name']}, union {tref['name']} is selected by {ut['selector_enum']}",
-                             f"a parameter of enum type {ut['selector_enum']}")
+                    self.err(
+                        sf,
+                        pp + ("selector",),
+                        f"{owner}: selector '{sel}' has type {names[sel]['type']['name']}, union {tref['name']} is selected by {ut['selector_enum']}",
+                        f"a parameter of enum type {ut['selector_enum']}",
+                    )
                 tref = dict(tref, selector=sel)
                 if count is not None:
                     self.err(sf, pp + ("count",), f"{owner}: arrays of unions are not supported", "a single union")
             elif "selector" in p:
-                self.err(sf, pp + ("selector",), f"{owner}: parameter {name} is not a union; 'selector' does not apply", "no selector")
+                self.err(
+                    sf,
+                    pp + ("selector",),
+                    f"{owner}: parameter {name} is not a union; 'selector' does not apply",
+                    "no selector",
+                )
             pf = p.get("functions")
             if pf is not None:
                 if functions is None:
-                    self.err(sf, pp + ("functions",), f"{owner}: parameter {name} lists functions but the command has no function selector",
-                             "functions: on the command first")
+                    self.err(
+                        sf,
+                        pp + ("functions",),
+                        f"{owner}: parameter {name} lists functions but the command has no function selector",
+                        "functions: on the command first",
+                    )
                 else:
                     for fn in pf:
                         if fn not in functions:
-                            self.err(sf, pp + ("functions",), f"{owner}: parameter {name} is marked for function '{fn}', which the command does not support",
-                                     "a subset of the command's functions: " + ", ".join(functions))
-            optional = bool(p.get("optional")) or (functions is not None and pf is not None and set(pf) != set(functions))
+                            self.err(
+                                sf,
+                                pp + ("functions",),
+                                f"{owner}: parameter {name} is marked for function '{fn}', which the command does not support",
+                                "a subset of the command's functions: " + ", ".join(functions),
+                            )
+            optional = bool(p.get("optional")) or (
+                functions is not None and pf is not None and set(pf) != set(functions)
+            )
             if functions is not None and pf is None:
-                self.err(sf, pp, f"{owner}: parameter {name} does not say which functions it is sent for",
-                         "functions: [...] on every parameter of a command with a function selector")
+                self.err(
+                    sf,
+                    pp,
+                    f"{owner}: parameter {name} does not say which functions it is sent for",
+                    "functions: [...] on every parameter of a command with a function selector",
+                )
             if optional and not allow_optional:
-                self.err(sf, pp, f"{owner}: parameter {name} cannot be optional here", "optional parameters only in commands")
+                self.err(
+                    sf, pp, f"{owner}: parameter {name} cannot be optional here", "optional parameters only in commands"
+                )
             if optional:
                 optional_seen = optional_seen or name
             elif optional_seen:
-                self.err(sf, pp, f"{owner}: required parameter {name} follows optional parameter {optional_seen}",
-                         "optional parameters (not sent for every function) at the end")
+                self.err(
+                    sf,
+                    pp,
+                    f"{owner}: required parameter {name} follows optional parameter {optional_seen}",
+                    "optional parameters (not sent for every function) at the end",
+                )
             max_count = None
             if count is not None and count["kind"] != "fixed":
                 elem_min = max(tref["size"]["min"], 1)
                 max_count = p.get("max_count") or max(max_data // elem_min, 0)
             elif "max_count" in p:
-                self.err(sf, pp + ("max_count",), f"{owner}: max_count applies only to counted arrays", "count: <param> or remaining")
+                self.err(
+                    sf,
+                    pp + ("max_count",),
+                    f"{owner}: max_count applies only to counted arrays",
+                    "count: <param> or remaining",
+                )
             q = {
                 "name": name,
                 "description": p.get("description", ""),
@@ -427,12 +623,31 @@ class Builder:
         params = self._params(sf, path + ("params",), f["params"], None, f"reserved field {f['name']}")
         sources = self._sources(sf, path + ("sources",), f["sources"])
         return {
-            "id": f["id"], "name": f["name"], "title": f["title"], "role": f["role"], "applies_to": f["applies_to"],
-            "description": f.get("description", ""), "sources": sources, "devices": self._devices_of(sources),
-            "notes": f.get("notes", []), "stated_length": f.get("stated_length"),
-            "variants": [{"device": None, "devices": self._devices_of(sources), "sources": sources, "notes": [], "functions": None,
-                          "responses": [], "ack_suppressed_by": None, "params": params, "size": _layout_size(params)}],
-            "params": params, "size": _layout_size(params),
+            "id": f["id"],
+            "name": f["name"],
+            "title": f["title"],
+            "role": f["role"],
+            "applies_to": f["applies_to"],
+            "description": f.get("description", ""),
+            "sources": sources,
+            "devices": self._devices_of(sources),
+            "notes": f.get("notes", []),
+            "stated_length": f.get("stated_length"),
+            "variants": [
+                {
+                    "device": None,
+                    "devices": self._devices_of(sources),
+                    "sources": sources,
+                    "notes": [],
+                    "functions": None,
+                    "responses": [],
+                    "ack_suppressed_by": None,
+                    "params": params,
+                    "size": _layout_size(params),
+                }
+            ],
+            "params": params,
+            "size": _layout_size(params),
         }
 
     def _layout(self, sf: SpecFile, path: tuple, src: dict, set_name: str, field: dict, device: str | None) -> dict:
@@ -441,45 +656,87 @@ class Builder:
         if functions is not None:
             for j, fn in enumerate(functions):
                 if self.function_values and fn not in self.function_values:
-                    self.err(sf, path + ("functions", j), f"{owner}: unknown function '{fn}'", "one of " + ", ".join(self.function_values))
+                    self.err(
+                        sf,
+                        path + ("functions", j),
+                        f"{owner}: unknown function '{fn}'",
+                        "one of " + ", ".join(self.function_values),
+                    )
             if field["role"] != "command":
-                self.err(sf, path + ("functions",), f"{owner}: only commands take a function selector", "no functions on responses and data")
+                self.err(
+                    sf,
+                    path + ("functions",),
+                    f"{owner}: only commands take a function selector",
+                    "no functions on responses and data",
+                )
         params = self._params(sf, path + ("params",), src.get("params", []), functions, owner)
         responses = []
         if "response" in src and "responses" in src:
             self.err(sf, path + ("response",), f"{owner}: both 'response' and 'responses'", "one of them")
-        for j, r in enumerate(src.get("responses", []) if "responses" in src else ([src["response"]] if "response" in src else [])):
+        for j, r in enumerate(
+            src.get("responses", []) if "responses" in src else ([src["response"]] if "response" in src else [])
+        ):
             rp = path + (("responses", j) if "responses" in src else ("response",))
             if isinstance(r, int):
                 r = {"id": r}
             when = r.get("when")
             if when:
                 if "function" in when and functions is not None and when["function"] not in functions:
-                    self.err(sf, rp + ("when", "function"), f"{owner}: response condition names function '{when['function']}', which the command does not support",
-                             "one of " + ", ".join(functions))
+                    self.err(
+                        sf,
+                        rp + ("when", "function"),
+                        f"{owner}: response condition names function '{when['function']}', which the command does not support",
+                        "one of " + ", ".join(functions),
+                    )
                 if "param" in when:
                     match = [q for q in params if q["name"] == when["param"]]
                     if not match:
-                        self.err(sf, rp + ("when", "param"), f"{owner}: response condition names parameter '{when['param']}', which does not exist", "a parameter of this command")
+                        self.err(
+                            sf,
+                            rp + ("when", "param"),
+                            f"{owner}: response condition names parameter '{when['param']}', which does not exist",
+                            "a parameter of this command",
+                        )
                     elif "value" in when and isinstance(when["value"], str):
                         t = self.types.get(match[0]["type"].get("name", ""))
                         if not t or t["kind"] != "enum" or when["value"] not in {v["name"] for v in t["values"]}:
-                            self.err(sf, rp + ("when", "value"), f"{owner}: '{when['value']}' is not a value of parameter {when['param']}", "an enum value name")
+                            self.err(
+                                sf,
+                                rp + ("when", "value"),
+                                f"{owner}: '{when['value']}' is not a value of parameter {when['param']}",
+                                "an enum value name",
+                            )
             responses.append({"id": r["id"], "when": when, "_loc": rp})
         if responses and field["role"] != "command":
-            self.err(sf, path + ("response",), f"{owner}: only commands have responses", "no response on responses and data")
+            self.err(
+                sf, path + ("response",), f"{owner}: only commands have responses", "no response on responses and data"
+            )
         ack = src.get("ack_suppressed_by")
         if ack:
             if "function" in ack and (functions is None or ack["function"] not in functions):
-                self.err(sf, path + ("ack_suppressed_by", "function"), f"{owner}: ack suppression by function '{ack['function']}', which the command does not support",
-                         "one of the command's functions")
+                self.err(
+                    sf,
+                    path + ("ack_suppressed_by", "function"),
+                    f"{owner}: ack suppression by function '{ack['function']}', which the command does not support",
+                    "one of the command's functions",
+                )
             if "param" in ack and not any(q["name"] == ack["param"] for q in params):
-                self.err(sf, path + ("ack_suppressed_by", "param"), f"{owner}: ack suppression by parameter '{ack['param']}', which does not exist", "a parameter of this command")
+                self.err(
+                    sf,
+                    path + ("ack_suppressed_by", "param"),
+                    f"{owner}: ack suppression by parameter '{ack['param']}', which does not exist",
+                    "a parameter of this command",
+                )
         sources = self._sources(sf, path + ("sources",), src.get("sources", []))
         if device is not None:
             devs = self._devices_of(sources)
             if devs and device not in devs:
-                self.err(sf, path + ("device",), f"{owner}: variant for device '{device}' cites only manuals of {', '.join(devs)}", "sources from that device's manual")
+                self.err(
+                    sf,
+                    path + ("device",),
+                    f"{owner}: variant for device '{device}' cites only manuals of {', '.join(devs)}",
+                    "sources from that device's manual",
+                )
         return {
             "device": device,
             "devices": [device] if device else self._devices_of(sources),
@@ -501,16 +758,30 @@ class Builder:
         for sf in self.set_files:
             d = sf.data
             if d["set"] in by_id:
-                self.err(sf, ("set",), f"descriptor set 0x{d['set']:02X} is defined twice (also in {by_id[d['set']][0].path})", "one file per descriptor set")
+                self.err(
+                    sf,
+                    ("set",),
+                    f"descriptor set 0x{d['set']:02X} is defined twice (also in {by_id[d['set']][0].path})",
+                    "one file per descriptor set",
+                )
                 continue
             if d["name"] in by_name:
-                self.err(sf, ("name",), f"descriptor set name '{d['name']}' is used twice (also in {by_name[d['name']].path})", "unique set names")
+                self.err(
+                    sf,
+                    ("name",),
+                    f"descriptor set name '{d['name']}' is used twice (also in {by_name[d['name']].path})",
+                    "unique set names",
+                )
             by_id[d["set"]] = (sf, d)
             by_name[d["name"]] = sf
             rng = kinds.get(d["kind"])
             if rng and not rng["first"] <= d["set"] <= rng["last"]:
-                self.err(sf, ("set",), f"{d['kind']} set 0x{d['set']:02X} is outside the {d['kind']} range",
-                         f"0x{rng['first']:02X}..0x{rng['last']:02X}")
+                self.err(
+                    sf,
+                    ("set",),
+                    f"{d['kind']} set 0x{d['set']:02X} is outside the {d['kind']} range",
+                    f"0x{rng['first']:02X}..0x{rng['last']:02X}",
+                )
             is_shared = bool(shared and d["set"] == shared["set"])
             fields = []
             ids: dict[int, str] = {}
@@ -518,20 +789,43 @@ class Builder:
             for i, f in enumerate(d["fields"]):
                 fp = ("fields", i)
                 if f["id"] in ids:
-                    self.err(sf, fp + ("id",), f"{d['name']}: descriptor 0x{f['id']:02X} is used by both '{ids[f['id']]}' and '{f['name']}'",
-                             "unique descriptors within a set")
+                    self.err(
+                        sf,
+                        fp + ("id",),
+                        f"{d['name']}: descriptor 0x{f['id']:02X} is used by both '{ids[f['id']]}' and '{f['name']}'",
+                        "unique descriptors within a set",
+                    )
                 ids[f["id"]] = f["name"]
                 if f["name"] in fnames:
-                    self.err(sf, fp + ("name",), f"{d['name']}: two fields named '{f['name']}'", "unique field names within a set")
+                    self.err(
+                        sf,
+                        fp + ("name",),
+                        f"{d['name']}: two fields named '{f['name']}'",
+                        "unique field names within a set",
+                    )
                 fnames.add(f["name"])
                 for r in reserved:
                     if r["applies_to"] == d["kind"] and r["id"] == f["id"]:
-                        self.err(sf, fp + ("id",), f"{d['name']}.{f['name']}: descriptor 0x{f['id']:02X} is reserved for {r['name']}", "another descriptor")
+                        self.err(
+                            sf,
+                            fp + ("id",),
+                            f"{d['name']}.{f['name']}: descriptor 0x{f['id']:02X} is reserved for {r['name']}",
+                            "another descriptor",
+                        )
                 if d["kind"] == "command" and f["role"] == "data" or d["kind"] == "data" and f["role"] != "data":
-                    self.err(sf, fp + ("role",), f"{d['name']}.{f['name']}: role {f['role']} in a {d['kind']} set",
-                             "command/response in command sets, data in data sets")
+                    self.err(
+                        sf,
+                        fp + ("role",),
+                        f"{d['name']}.{f['name']}: role {f['role']} in a {d['kind']} set",
+                        "command/response in command sets, data in data sets",
+                    )
                 if is_shared and f["id"] < shared["first_descriptor"]:
-                    self.err(sf, fp + ("id",), f"shared descriptor 0x{f['id']:02X} is below 0x{shared['first_descriptor']:02X}", f">= 0x{shared['first_descriptor']:02X}")
+                    self.err(
+                        sf,
+                        fp + ("id",),
+                        f"shared descriptor 0x{f['id']:02X} is below 0x{shared['first_descriptor']:02X}",
+                        f">= 0x{shared['first_descriptor']:02X}",
+                    )
                 if f.get("repeats") and f["role"] != "data":
                     self.err(sf, fp + ("repeats",), f"{d['name']}.{f['name']}: only data fields repeat", "no repeats")
                 if "variants" in f:
@@ -539,30 +833,63 @@ class Builder:
                     seen_dev: set[str] = set()
                     for j, v in enumerate(f["variants"]):
                         if v["device"] not in self.device_ids:
-                            self.err(sf, fp + ("variants", j, "device"), f"unknown device '{v['device']}'", "one of " + ", ".join(self.device_ids))
+                            self.err(
+                                sf,
+                                fp + ("variants", j, "device"),
+                                f"unknown device '{v['device']}'",
+                                "one of " + ", ".join(self.device_ids),
+                            )
                         if v["device"] in seen_dev:
-                            self.err(sf, fp + ("variants", j, "device"), f"{d['name']}.{f['name']}: two variants for device '{v['device']}'", "one variant per device")
+                            self.err(
+                                sf,
+                                fp + ("variants", j, "device"),
+                                f"{d['name']}.{f['name']}: two variants for device '{v['device']}'",
+                                "one variant per device",
+                            )
                         seen_dev.add(v["device"])
                         variants.append(self._layout(sf, fp + ("variants", j), v, d["name"], f, v["device"]))
                     if f.get("functions") or f.get("response") or f.get("responses"):
-                        self.err(sf, fp, f"{d['name']}.{f['name']}: with variants, functions/responses go in each variant", "per-variant functions/responses")
+                        self.err(
+                            sf,
+                            fp,
+                            f"{d['name']}.{f['name']}: with variants, functions/responses go in each variant",
+                            "per-variant functions/responses",
+                        )
                     sources = [s for v in variants for s in v["sources"]]
                 else:
                     variants = [self._layout(sf, fp, f, d["name"], f, None)]
                     sources = variants[0]["sources"]
                 devices = [x for x in self.device_ids if any(x in v["devices"] for v in variants)]
-                fields.append({
-                    "id": f["id"], "name": f["name"], "role": f["role"], "title": f["title"],
-                    "description": f.get("description", ""), "sources": sources, "devices": devices,
-                    "notes": f.get("notes", []), "repeats": bool(f.get("repeats")),
-                    "variants": variants, "_sf": sf, "_path": fp,
-                })
-            sets.append({
-                "id": d["set"], "name": d["name"], "title": d["title"], "kind": d["kind"], "shared": is_shared,
-                "description": d.get("description", ""),
-                "sources": self._sources(sf, ("sources",), d["sources"]), "notes": d.get("notes", []),
-                "fields": fields, "_sf": sf,
-            })
+                fields.append(
+                    {
+                        "id": f["id"],
+                        "name": f["name"],
+                        "role": f["role"],
+                        "title": f["title"],
+                        "description": f.get("description", ""),
+                        "sources": sources,
+                        "devices": devices,
+                        "notes": f.get("notes", []),
+                        "repeats": bool(f.get("repeats")),
+                        "variants": variants,
+                        "_sf": sf,
+                        "_path": fp,
+                    }
+                )
+            sets.append(
+                {
+                    "id": d["set"],
+                    "name": d["name"],
+                    "title": d["title"],
+                    "kind": d["kind"],
+                    "shared": is_shared,
+                    "description": d.get("description", ""),
+                    "sources": self._sources(sf, ("sources",), d["sources"]),
+                    "notes": d.get("notes", []),
+                    "fields": fields,
+                    "_sf": sf,
+                }
+            )
         sets.sort(key=lambda s: s["id"])
         # Link responses: each must exist in the same set with role response.
         for s in sets:
@@ -573,11 +900,19 @@ class Builder:
                         target = by_desc.get(r["id"])
                         sf = f["_sf"]
                         if target is None:
-                            self.err(sf, r["_loc"], f"{s['name']}.{f['name']}: response 0x{r['id']:02X} does not exist in set 0x{s['id']:02X}",
-                                     "the descriptor of a field with role response in the same set")
+                            self.err(
+                                sf,
+                                r["_loc"],
+                                f"{s['name']}.{f['name']}: response 0x{r['id']:02X} does not exist in set 0x{s['id']:02X}",
+                                "the descriptor of a field with role response in the same set",
+                            )
                         elif target["role"] != "response":
-                            self.err(sf, r["_loc"], f"{s['name']}.{f['name']}: response 0x{r['id']:02X} is '{target['name']}', a {target['role']} field",
-                                     "a field with role response")
+                            self.err(
+                                sf,
+                                r["_loc"],
+                                f"{s['name']}.{f['name']}: response 0x{r['id']:02X} is '{target['name']}', a {target['role']} field",
+                                "a field with role response",
+                            )
                         else:
                             r["name"] = target["name"]
                         del r["_loc"]
@@ -589,7 +924,8 @@ class Builder:
                 f["response"] = f["responses"][0] if f["responses"] else None
                 f["stated_lengths"] = [
                     {"manual": src["manual"], "line": src.get("line"), "stated": src["stated_length"]}
-                    for src in f["sources"] if "stated_length" in src
+                    for src in f["sources"]
+                    if "stated_length" in src
                 ]
                 del f["_sf"], f["_path"]
             del s["_sf"]
@@ -629,7 +965,9 @@ def _layout_size(params: list[dict], selector: bool = False) -> dict:
 
 def _type_refs(t: dict) -> list[str]:
     refs = [p["type"] for p in t.get("params", [])]
-    refs += [m["type"] for m in t.get("members", []) if isinstance(m, dict) and "type" in m and isinstance(m["type"], str)]
+    refs += [
+        m["type"] for m in t.get("members", []) if isinstance(m, dict) and "type" in m and isinstance(m["type"], str)
+    ]
     if "selector_enum" in t:
         refs.append(t["selector_enum"])
     return refs
@@ -654,13 +992,32 @@ def lint_stated_lengths(ir: dict) -> list[dict]:
                             ok = stated == full_max if _all_fixed_elements(v["params"]) else False
                             ok = ok or (size["fixed"] and stated == full_min)
                             if not ok:
-                                out.append({"protocol": proto["name"], "set": s["id"], "descriptor": f["id"], "name": f"{s['name']}.{f['name']}",
-                                            "manual": src["manual"], "line": src.get("line"), "stated": stated,
-                                            "computed": full_min if size["fixed"] else f"{full_min}..{full_max}"})
+                                out.append(
+                                    {
+                                        "protocol": proto["name"],
+                                        "set": s["id"],
+                                        "descriptor": f["id"],
+                                        "name": f"{s['name']}.{f['name']}",
+                                        "manual": src["manual"],
+                                        "line": src.get("line"),
+                                        "stated": stated,
+                                        "computed": full_min if size["fixed"] else f"{full_min}..{full_max}",
+                                    }
+                                )
                         else:
-                            out.append({"protocol": proto["name"], "set": s["id"], "descriptor": f["id"], "name": f"{s['name']}.{f['name']}",
-                                        "manual": src["manual"], "line": src.get("line"), "stated": stated,
-                                        "computed": full_min if size["fixed"] else f"{full_min}..{full_max}", "textual": True})
+                            out.append(
+                                {
+                                    "protocol": proto["name"],
+                                    "set": s["id"],
+                                    "descriptor": f["id"],
+                                    "name": f"{s['name']}.{f['name']}",
+                                    "manual": src["manual"],
+                                    "line": src.get("line"),
+                                    "stated": stated,
+                                    "computed": full_min if size["fixed"] else f"{full_min}..{full_max}",
+                                    "textual": True,
+                                }
+                            )
     return out
 
 

@@ -1,4 +1,5 @@
 """spec/ -> IR -> every back end -> formatted files in generated/ (only changed files are written)."""
+
 from __future__ import annotations
 
 import importlib
@@ -23,13 +24,21 @@ def _available_backends() -> list[str]:
     return [b for b in BACKENDS if (here / f"{b}.py").exists()]
 
 
-def run(spec_dir: Path | None, out_dir: Path | None, only: list[str] | None, validate_only: bool, lint: bool,
-        docs_dir: Path | None = None) -> int:
+def run(
+    spec_dir: Path | None,
+    out_dir: Path | None,
+    only: list[str] | None,
+    validate_only: bool,
+    lint: bool,
+    docs_dir: Path | None = None,
+) -> int:
     ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT)
     if lint:
         for item in lint_stated_lengths(ir):
-            print(f"{item['manual']}:{item.get('line')}: {item['name']} (0x{item['set']:02X},0x{item['descriptor']:02X}): "
-                  f"manual states {item['stated']!r}, computed {item['computed']}")
+            print(
+                f"{item['manual']}:{item.get('line')}: {item['name']} (0x{item['set']:02X},0x{item['descriptor']:02X}): "
+                f"manual states {item['stated']!r}, computed {item['computed']}"
+            )
         return 0
     # Golden vectors belong to the project's own spec; a spec given with --spec is validated alone.
     vectors = load_vectors(ir, ROOT / "tests" / "vectors") if spec_dir is None else []

@@ -2,6 +2,7 @@
 
 Language back ends map these names to their own types; this table holds only wire facts.
 """
+
 from __future__ import annotations
 
 # name -> (size in bytes, kind, signed)

@@ -1,4 +1,5 @@
 """Shared Jinja2 environment and the formatters applied to generated files."""
+
 from __future__ import annotations
 
 import os
@@ -33,7 +34,9 @@ def environment() -> jinja2.Environment:
 def _which(name: str, env_var: str) -> str:
     exe = os.environ.get(env_var) or shutil.which(name)
     if not exe:
-        raise ToolError(f"'{name}' is not installed (needed to format generated code); run 'make' to set up, or set {env_var}")
+        raise ToolError(
+            f"'{name}' is not installed (needed to format generated code); run 'make' to set up, or set {env_var}"
+        )
     return exe
 
 
@@ -66,11 +69,11 @@ def format_files(files: dict[str, str]) -> dict[str, str]:
             shutil.copy(ROOT / ".clang-format", Path(tmp, ".clang-format"))
             exe = _which("clang-format", "CLANG_FORMAT")
             for i in range(0, len(by_tool["clang"]), 200):
-                _run([exe, "-i", "--style=file", *by_tool["clang"][i:i + 200]], tmp)
+                _run([exe, "-i", "--style=file", *by_tool["clang"][i : i + 200]], tmp)
         if by_tool["rust"]:
             exe = _which("rustfmt", "RUSTFMT")
             for i in range(0, len(by_tool["rust"]), 200):
-                _run([exe, "--edition", "2021", *by_tool["rust"][i:i + 200]], tmp)
+                _run([exe, "--edition", "2021", *by_tool["rust"][i : i + 200]], tmp)
         if by_tool["python"]:
             exe = _which("ruff", "RUFF")
             shutil.copy(ROOT / "ruff.toml", Path(tmp, "ruff.toml"))

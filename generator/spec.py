@@ -1,4 +1,5 @@
 """Load and validate the spec tree: JSON Schema for shape, then the IR builder for meaning."""
+
 from __future__ import annotations
 
 import json
@@ -45,7 +46,9 @@ def _describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
     if v == "additionalProperties":
         return f"{where}: {best.message}", "only the keys documented in docs/spec-format.md"
     if v == "enum":
-        return f"{where}: value {best.instance!r} is not allowed", "one of " + ", ".join(repr(x) for x in best.validator_value)
+        return f"{where}: value {best.instance!r} is not allowed", "one of " + ", ".join(
+            repr(x) for x in best.validator_value
+        )
     if v == "pattern":
         return f"{where}: {best.instance!r} is not a valid name", f"a name matching {best.validator_value}"
     if v == "type":
@@ -59,8 +62,13 @@ def _validate_shape(validators, sf: SpecFile) -> list[SpecError]:
     errors = []
     kind = next((k for k in ("protocol", "set", "types") if k in sf.data), None)
     if kind is None:
-        return [SpecError(sf.locate(()), "cannot tell what kind of spec file this is",
-                          "a top-level 'protocol:' (protocol file), 'set:' (descriptor set) or 'types:' (shared types) key")]
+        return [
+            SpecError(
+                sf.locate(()),
+                "cannot tell what kind of spec file this is",
+                "a top-level 'protocol:' (protocol file), 'set:' (descriptor set) or 'types:' (shared types) key",
+            )
+        ]
     validator = validators[kind]
     for e in sorted(validator.iter_errors(sf.data), key=lambda e: list(map(str, e.absolute_path))):
         best = _deepest(e)
@@ -91,7 +99,13 @@ def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
             continue
         sf = SpecFile(rel, data, locate)
         if not isinstance(data, dict):
-            errors.append(SpecError(locate(()), "the file must be a YAML mapping", "a protocol file (protocol: ...) or a set file (set: ...)"))
+            errors.append(
+                SpecError(
+                    locate(()),
+                    "the file must be a YAML mapping",
+                    "a protocol file (protocol: ...) or a set file (set: ...)",
+                )
+            )
             continue
         shape = _validate_shape(validator, sf)
         if shape:
@@ -99,7 +113,13 @@ def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
             continue
         if "protocol" in data:
             if protocol_file is not None:
-                errors.append(SpecError(locate(("protocol",)), f"a second protocol file in {directory.name}/ (first: {protocol_file.path})", "one protocol file per protocol directory"))
+                errors.append(
+                    SpecError(
+                        locate(("protocol",)),
+                        f"a second protocol file in {directory.name}/ (first: {protocol_file.path})",
+                        "one protocol file per protocol directory",
+                    )
+                )
             protocol_file = sf
         elif "set" in data:
             set_files.append(sf)
@@ -108,7 +128,15 @@ def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
     if errors:
         raise SpecErrors(errors)
     if protocol_file is None:
-        raise SpecErrors([SpecError(None, f"{os.path.relpath(directory, root)}/ has no protocol file", "a file with 'protocol:' describing the framing")])
+        raise SpecErrors(
+            [
+                SpecError(
+                    None,
+                    f"{os.path.relpath(directory, root)}/ has no protocol file",
+                    "a file with 'protocol:' describing the framing",
+                )
+            ]
+        )
     builder = Builder(protocol_file, set_files, type_files)
     ir = builder.build()
     if builder.errors:
@@ -128,4 +156,5 @@ def load_spec(spec_dir: Path | None = None, root: Path = ROOT) -> dict:
     if errors:
         raise SpecErrors(errors)
     from .ir import IR_VERSION
+
     return {"ir_version": IR_VERSION, "protocols": protocols}

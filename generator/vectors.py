@@ -5,6 +5,7 @@ turned into the exact canonical JSON lines (docs/conformance.md) that every lang
 for its bytes. Values in the YAML are written as a person reads them (enum names, bit names,
 decimal floats); this module only re-spells them canonically.
 """
+
 from __future__ import annotations
 
 import math
@@ -50,7 +51,11 @@ def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
                 continue
             sf = SpecFile(rel, data, locate)
             if proto is None:
-                errors.append(SpecError(locate(()), f"no protocol '{proto_dir.name}' in spec/", "a directory named after a protocol"))
+                errors.append(
+                    SpecError(
+                        locate(()), f"no protocol '{proto_dir.name}' in spec/", "a directory named after a protocol"
+                    )
+                )
                 continue
             ctx = _Ctx(sf, proto)
             if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
@@ -62,14 +67,22 @@ def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
                 if case is None:
                     continue
                 if case["name"] in names:
-                    ctx.err(("cases", i, "name"), f"vector '{case['name']}' is defined twice (also in {names[case['name']]})", "unique vector names")
+                    ctx.err(
+                        ("cases", i, "name"),
+                        f"vector '{case['name']}' is defined twice (also in {names[case['name']]})",
+                        "unique vector names",
+                    )
                 names[case["name"]] = rel
                 cases.append(case)
             errors.extend(ctx.errors)
     for c in cases:
         corr = (c.get("erratum") or {}).get("corrected")
         if corr and corr not in names:
-            errors.append(SpecError(None, f"vector '{c['name']}': corrected case '{corr}' does not exist", "the name of another vector"))
+            errors.append(
+                SpecError(
+                    None, f"vector '{c['name']}': corrected case '{corr}' does not exist", "the name of another vector"
+                )
+            )
     if errors:
         raise SpecErrors(errors)
     return cases
@@ -90,13 +103,21 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
         ctx.err(path, f"vector '{c['name']}' has neither sources nor a derivation", "where the bytes come from")
     hex_clean = re.sub(r"[\s_]", "", str(c["hex"])).lower()
     if not re.fullmatch(r"([0-9a-f]{2})*", hex_clean):
-        ctx.err(path + ("hex",), f"vector '{c['name']}': hex is not an even number of hex digits", "pairs of hex digits, spaces allowed")
+        ctx.err(
+            path + ("hex",),
+            f"vector '{c['name']}': hex is not an even number of hex digits",
+            "pairs of hex digits, spaces allowed",
+        )
         return None
     raw = bytes.fromhex(hex_clean)
     er = c.get("erratum")
     if er is not None:
         if not isinstance(er, dict) or er.get("kind") not in ERRATUM_KINDS or not er.get("evidence"):
-            ctx.err(path + ("erratum",), "an erratum needs kind and evidence", "kind: one of " + ", ".join(sorted(ERRATUM_KINDS)) + "; evidence: text")
+            ctx.err(
+                path + ("erratum",),
+                "an erratum needs kind and evidence",
+                "kind: one of " + ", ".join(sorted(ERRATUM_KINDS)) + "; evidence: text",
+            )
     lines: list[str] = []
     if c.get("rejected"):
         if c.get("packets"):
@@ -105,16 +126,27 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
     else:
         pkts = c.get("packets") or []
         if not pkts:
-            ctx.err(path, f"vector '{c['name']}' has no packets and is not rejected", "packets: [...] or rejected: true")
+            ctx.err(
+                path, f"vector '{c['name']}' has no packets and is not rejected", "packets: [...] or rejected: true"
+            )
         for j, p in enumerate(pkts):
             lines.append(_packet(ctx, path + ("packets", j), p, c.get("device")))
-        for j, s in enumerate(c.get("skipped") or []):
+        for s in c.get("skipped") or []:
             lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], re.sub(r"\s", "", s["hex"]).lower()))
         lines.sort(key=lambda line: int(re.match(r'\{"offset":(\d+)', line).group(1)))
     return {
-        "name": c["name"], "protocol": ctx.proto["name"], "file": rel, "line": ctx.sf.locate(path).line,
-        "sources": c.get("sources") or [], "derivation": c.get("derivation"), "erratum": er, "notes": c.get("notes"),
-        "hex": hex_clean, "size": len(raw), "device": c.get("device"), "rejected": bool(c.get("rejected")),
+        "name": c["name"],
+        "protocol": ctx.proto["name"],
+        "file": rel,
+        "line": ctx.sf.locate(path).line,
+        "sources": c.get("sources") or [],
+        "derivation": c.get("derivation"),
+        "erratum": er,
+        "notes": c.get("notes"),
+        "hex": hex_clean,
+        "size": len(raw),
+        "device": c.get("device"),
+        "rejected": bool(c.get("rejected")),
         "expect": lines,
     }
 
@@ -129,20 +161,35 @@ def _packet(ctx: _Ctx, path: tuple, p: dict, device: str | None) -> str:
             fields.append('{"trailing":"%s","error":%s}' % (f["trailing"].lower(), _json_str(f["error"])))
             continue
         if "data" in f:
-            fields.append('{"descriptor":%d,"data":"%s","error":%s}' % (f["descriptor"], f["data"].replace(" ", "").lower(), _json_str(f["error"])))
+            fields.append(
+                '{"descriptor":%d,"data":"%s","error":%s}'
+                % (f["descriptor"], f["data"].replace(" ", "").lower(), _json_str(f["error"]))
+            )
             continue
         fdef = _find_field(ctx, set_id, f.get("descriptor"), sets)
         if fdef is None:
-            ctx.err(fp + ("descriptor",), f"no field 0x{f.get('descriptor', 0):02X} in set 0x{set_id:02X}", "a descriptor defined in spec/")
+            ctx.err(
+                fp + ("descriptor",),
+                f"no field 0x{f.get('descriptor', 0):02X} in set 0x{set_id:02X}",
+                "a descriptor defined in spec/",
+            )
             continue
         if f.get("name") != fdef["name"]:
-            ctx.err(fp + ("name",), f"descriptor 0x{fdef['id']:02X} is '{fdef['name']}', the vector says '{f.get('name')}'", fdef["name"])
+            ctx.err(
+                fp + ("name",),
+                f"descriptor 0x{fdef['id']:02X} is '{fdef['name']}', the vector says '{f.get('name')}'",
+                fdef["name"],
+            )
         dev = f.get("device", device)
         variants = fdef["variants"]
         if len(variants) > 1:
             match = [v for v in variants if v["device"] == dev]
             if not match:
-                ctx.err(fp, f"field {fdef['name']} has per-device variants; name one with device:", ", ".join(v["device"] for v in variants))
+                ctx.err(
+                    fp,
+                    f"field {fdef['name']} has per-device variants; name one with device:",
+                    ", ".join(v["device"] for v in variants),
+                )
                 continue
             layout = match[0]
             head = '{"descriptor":%d,"name":"%s","device":"%s","values":' % (fdef["id"], fdef["name"], layout["device"])
@@ -242,7 +289,11 @@ def _value(ctx: _Ctx, path: tuple, t: dict, v, seen: dict) -> str:
         return _float(ctx, path, name, v)
     if kind == "string":
         if not isinstance(v, str) or len(v.encode("latin-1", "replace")) != t["length"]:
-            ctx.err(path, f"string {v!r} is not exactly {t['length']} characters (padding included)", f"{t['length']} characters")
+            ctx.err(
+                path,
+                f"string {v!r} is not exactly {t['length']} characters (padding included)",
+                f"{t['length']} characters",
+            )
             return '""'
         return string_text(v.encode("latin-1"))
     if kind == "enum":
@@ -260,7 +311,11 @@ def _value(ctx: _Ctx, path: tuple, t: dict, v, seen: dict) -> str:
             return str(total)
         lo, hi = int_range(bt["base"])
         if not isinstance(v, int) or not lo <= v <= hi:
-            ctx.err(path, f"{v!r} is not a valid {bt['base']} for bitfield {bt['name']}", "an integer or a list of member names")
+            ctx.err(
+                path,
+                f"{v!r} is not a valid {bt['base']} for bitfield {bt['name']}",
+                "an integer or a list of member names",
+            )
             return "0"
         return str(v)
     if kind == "struct":
@@ -303,7 +358,11 @@ def _enum_value(ctx: _Ctx, path: tuple, et: dict, v) -> str:
     iv = _enum_int(et, v)
     lo, hi = int_range(et["base"])
     if iv is None or isinstance(iv, bool) or not isinstance(iv, int) or not lo <= iv <= hi:
-        ctx.err(path, f"{v!r} is not a value of enum {et['name']}", "a value name (" + ", ".join(x["name"] for x in et["values"]) + ") or an integer")
+        ctx.err(
+            path,
+            f"{v!r} is not a value of enum {et['name']}",
+            "a value name (" + ", ".join(x["name"] for x in et["values"]) + ") or an integer",
+        )
         return "0"
     return str(iv)
 
@@ -319,14 +378,22 @@ def _float(ctx: _Ctx, path: tuple, name: str, v) -> str:
         m = re.fullmatch(r"nan:0x([0-9a-f]+)", s)
         if m and len(m.group(1)) == (8 if single else 16):
             bits = int(m.group(1), 16)
-            val = struct.unpack(">f", struct.pack(">I", bits))[0] if single else struct.unpack(">d", struct.pack(">Q", bits))[0]
+            val = (
+                struct.unpack(">f", struct.pack(">I", bits))[0]
+                if single
+                else struct.unpack(">d", struct.pack(">Q", bits))[0]
+            )
             if not math.isnan(val):
                 ctx.err(path, f"{s} is not a NaN bit pattern")
             return float_text(val, bits, single)
         m = re.fullmatch(r"bits:0x([0-9a-f]+)", s)
         if m:
             bits = int(m.group(1), 16)
-            val = struct.unpack(">f", struct.pack(">I", bits))[0] if single else struct.unpack(">d", struct.pack(">Q", bits))[0]
+            val = (
+                struct.unpack(">f", struct.pack(">I", bits))[0]
+                if single
+                else struct.unpack(">d", struct.pack(">Q", bits))[0]
+            )
             return float_text(val, bits, single)
         ctx.err(path, f"{v!r} is not a number", "a number, inf, -inf, nan, nan:0x<bits> or bits:0x<bits>")
         return "0.0"

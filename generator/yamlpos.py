@@ -3,6 +3,7 @@
 `load(path)` returns (data, locate) where `locate(path_tuple)` gives the Location of the node at
 that path (a tuple of dict keys and list indexes), falling back to the nearest parent.
 """
+
 from __future__ import annotations
 
 from typing import Any, Callable
@@ -21,7 +22,9 @@ def _construct(node: yaml.Node, path: Path, file: str, marks: dict) -> Any:
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
                 raise SpecError(marks[path], "mapping keys must be plain scalars")
-            key = yaml.safe_load(yaml.serialize(key_node)) if key_node.tag != "tag:yaml.org,2002:str" else key_node.value
+            key = (
+                yaml.safe_load(yaml.serialize(key_node)) if key_node.tag != "tag:yaml.org,2002:str" else key_node.value
+            )
             if key in out:
                 loc = Location(file, key_node.start_mark.line + 1, key_node.start_mark.column + 1)
                 raise SpecError(loc, f"duplicate key '{key}'", "each key once per mapping")

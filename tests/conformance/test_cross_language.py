@@ -5,6 +5,7 @@ lines, and `encode` turns them back into the same bytes. Then one long stream ma
 vector with garbage between them must decode to byte-identical output in all four languages and
 round-trip through decode | encode in each.
 """
+
 import os
 import random
 import subprocess

@@ -1,4 +1,5 @@
 """The fixture protocol in fixtures/everything uses every feature of the spec format; check the IR."""
+
 from pathlib import Path
 
 from generator.ir import lint_stated_lengths
@@ -45,7 +46,13 @@ def test_arrays_strings_bitfields_enums():
     resp = _field(p, "commands", "configuration")["variants"][0]
     by = {q["name"]: q for q in resp["params"]}
     assert by["rates"]["count"] == {"kind": "param", "param": "count"} and by["rates"]["max_count"] == 10
-    assert by["name"]["type"] == {"kind": "string", "length": 8, "padding": "nul", "justify": "left", "size": {"min": 8, "max": 8, "fixed": True}}
+    assert by["name"]["type"] == {
+        "kind": "string",
+        "length": 8,
+        "padding": "nul",
+        "justify": "left",
+        "size": {"min": 8, "max": 8, "fixed": True},
+    }
     assert by["label"]["type"]["justify"] == "right"
     assert by["matrix"]["alias"] == "matrix3d" and by["matrix"]["count"] == {"kind": "fixed", "value": 9}
     assert by["matrix"]["size"]["min"] == 72
@@ -58,7 +65,10 @@ def test_arrays_strings_bitfields_enums():
     level = next(m for m in flags["members"] if m["name"] == "level")
     assert (level["first_bit"], level["last_bit"], level["width"], level["mask"]) == (12, 15, 4, 0xF000)
     mode = next(t for t in p["types"] if t["name"] == "Mode")
-    assert [(v["name"], v["value"], v["devices"]) for v in mode["values"]][3:] == [("fast", 3, ["dev_a"]), ("quiet", 3, ["dev_b"])]
+    assert [(v["name"], v["value"], v["devices"]) for v in mode["values"]][3:] == [
+        ("fast", 3, ["dev_a"]),
+        ("quiet", 3, ["dev_b"]),
+    ]
     signed = next(t for t in p["types"] if t["name"] == "Signed")
     assert signed["base"] == "s16" and signed["values"][0]["value"] == -1
 

@@ -4,6 +4,7 @@ Each case copies the fixture protocol (fixtures/everything), breaks one thing, a
 message and the line it points at. A few run the command line to check the exit status and that
 no traceback is printed.
 """
+
 import shutil
 import subprocess
 import sys
@@ -46,60 +47,192 @@ def _errors(spec: Path) -> list[str]:
 
 CASES = [
     # (id, file, old, new, expected message part, line needle in the edited file)
-    ("duplicate descriptor", "commands.yaml", "  - id: 0x03\n    name: per_device", "  - id: 0x02\n    name: per_device",
-     "descriptor 0x02 is used by both 'configure' and 'per_device'", "name: per_device"),
-    ("enum value too big", "commands.yaml", "{name: gpio, value: 1}", "{name: gpio, value: 256}",
-     "enum Mode value gpio = 256 does not fit in u8 (expected 0..255)", "value: 256"),
-    ("enum value clash per device", "commands.yaml", "{name: quiet, value: 3, devices: [dev_b]}", "{name: quiet, value: 3, devices: [dev_a]}",
-     "enum Mode value 3 is used by both 'fast' and 'quiet' for the same device", "name: quiet"),
-    ("overlapping bits", "commands.yaml", "{name: ok, bits: 0}", "{name: ok, bits: 0}\n      - {name: low, bits: [0, 3]}",
-     "bitfield Flags member low overlaps 'ok' at bit 0", "name: low"),
-    ("bit out of range", "commands.yaml", "{name: level, bits: [12, 15]}", "{name: level, bits: [12, 16]}",
-     "bitfield Flags member level: bit 16 is out of range for u16 (expected bits 0..15)", "name: level"),
-    ("count refers to later param", "commands.yaml", "{name: rates, type: u16, count: count, max_count: 10}",
-     "{name: rates, type: u16, count: later, max_count: 10}\n      - {name: later, type: u8}",
-     "count of rates refers to 'later', which is a later parameter", "count: later"),
-    ("count refers to missing param", "commands.yaml", "count: count, max_count: 10", "count: nope, max_count: 10",
-     "count of rates refers to 'nope', which is not a parameter", "count: nope"),
-    ("count refers to non-integer", "commands.yaml", "{name: count, type: u8}", "{name: count, type: float}",
-     "count of rates refers to 'count', which is not a single integer", "count: count"),
-    ("union selector not an enum", "commands.yaml", "selector: mode, functions: [write]}", "selector: instance, functions: [write]}",
-     "selector 'instance' of union params is not an enum (it is primitive)", "selector: instance"),
-    ("union selector enum is a bitfield", "commands.yaml", "selector_enum: Mode", "selector_enum: Flags",
-     "union TriggerParams: selector type 'Flags' is a bitfield, not an enum (expected the name of an enum)", "selector_enum: Flags"),
-    ("union member not an enum value", "commands.yaml", "{when: gpio, type: GpioParams}", "{when: gpoi, type: GpioParams}",
-     "union TriggerParams: 'gpoi' is not a value of enum Mode", "when: gpoi"),
-    ("response does not exist", "commands.yaml", "{id: 0x82, when: {function: read}}", "{id: 0x99, when: {function: read}}",
-     "commands.configure: response 0x99 does not exist in set 0x01", "id: 0x99"),
-    ("response is not a response", "commands.yaml", "{id: 0x82, when: {function: read}}", "{id: 0x03, when: {function: read}}",
-     "response 0x03 is 'per_device', a command field", "id: 0x03, when"),
-    ("unknown type", "commands.yaml", "{name: b, type: u64}", "{name: b, type: u46}",
-     "parameter b: unknown type 'u46'", "type: u46"),
-    ("param for unsupported function", "commands.yaml", "{name: instance, type: u8, functions: [write, read, save]}",
-     "{name: instance, type: u8, functions: [write, read, load]}",
-     "parameter instance is marked for function 'load', which the command does not support", "functions: [write, read, load]"),
-    ("required after optional", "commands.yaml", "{name: suppress_ack, type: bool, functions: [write]}",
-     "{name: suppress_ack, type: bool, functions: [write]}\n      - {name: late, type: u8, functions: [write, read, save]}",
-     "required parameter late follows optional parameter mode", "name: late"),
-    ("remaining array not last", "commands.yaml", "{name: tail, type: char, count: remaining}",
-     "{name: tail, type: char, count: remaining}\n      - {name: after, type: u8}",
-     "parameter tail runs to the end of the field but is not the last parameter", "name: tail"),
-    ("unknown manual", "data.yaml", "sources: [{manual: demo.txt, line: 51}]", "sources: [{manual: dmeo.txt, line: 51}]",
-     "unknown manual 'dmeo.txt'", "dmeo.txt"),
-    ("reserved descriptor", "commands.yaml", "  - id: 0x03\n    name: per_device", "  - id: 0x80\n    name: per_device",
-     "descriptor 0x80 is reserved for ack", "id: 0x80\n"),
-    ("set outside its kind range", "data.yaml", "set: 0x90", "set: 0x10",
-     "data set 0x10 is outside the data range (expected 0x80..0xFF)", "set: 0x10"),
-    ("schema: missing key", "data.yaml", "    role: data\n", "",
-     "missing required key 'role'", "- id: 0x01"),
-    ("schema: unknown key", "data.yaml", "    repeats: true", "    repeat: true",
-     "Additional properties are not allowed ('repeat' was unexpected)", "repeat: true"),
-    ("schema: bad name", "data.yaml", "name: sample", "name: Sample-1",
-     "'Sample-1' is not a valid name", "name: Sample-1"),
-    ("duplicate yaml key", "data.yaml", "    title: Sample\n", "    title: Sample\n    title: Again\n",
-     "duplicate key 'title'", "title: Again"),
-    ("yaml syntax", "data.yaml", "    title: Sample\n", "    title: [Sample\n",
-     "invalid YAML", None),
+    (
+        "duplicate descriptor",
+        "commands.yaml",
+        "  - id: 0x03\n    name: per_device",
+        "  - id: 0x02\n    name: per_device",
+        "descriptor 0x02 is used by both 'configure' and 'per_device'",
+        "name: per_device",
+    ),
+    (
+        "enum value too big",
+        "commands.yaml",
+        "{name: gpio, value: 1}",
+        "{name: gpio, value: 256}",
+        "enum Mode value gpio = 256 does not fit in u8 (expected 0..255)",
+        "value: 256",
+    ),
+    (
+        "enum value clash per device",
+        "commands.yaml",
+        "{name: quiet, value: 3, devices: [dev_b]}",
+        "{name: quiet, value: 3, devices: [dev_a]}",
+        "enum Mode value 3 is used by both 'fast' and 'quiet' for the same device",
+        "name: quiet",
+    ),
+    (
+        "overlapping bits",
+        "commands.yaml",
+        "{name: ok, bits: 0}",
+        "{name: ok, bits: 0}\n      - {name: low, bits: [0, 3]}",
+        "bitfield Flags member low overlaps 'ok' at bit 0",
+        "name: low",
+    ),
+    (
+        "bit out of range",
+        "commands.yaml",
+        "{name: level, bits: [12, 15]}",
+        "{name: level, bits: [12, 16]}",
+        "bitfield Flags member level: bit 16 is out of range for u16 (expected bits 0..15)",
+        "name: level",
+    ),
+    (
+        "count refers to later param",
+        "commands.yaml",
+        "{name: rates, type: u16, count: count, max_count: 10}",
+        "{name: rates, type: u16, count: later, max_count: 10}\n      - {name: later, type: u8}",
+        "count of rates refers to 'later', which is a later parameter",
+        "count: later",
+    ),
+    (
+        "count refers to missing param",
+        "commands.yaml",
+        "count: count, max_count: 10",
+        "count: nope, max_count: 10",
+        "count of rates refers to 'nope', which is not a parameter",
+        "count: nope",
+    ),
+    (
+        "count refers to non-integer",
+        "commands.yaml",
+        "{name: count, type: u8}",
+        "{name: count, type: float}",
+        "count of rates refers to 'count', which is not a single integer",
+        "count: count",
+    ),
+    (
+        "union selector not an enum",
+        "commands.yaml",
+        "selector: mode, functions: [write]}",
+        "selector: instance, functions: [write]}",
+        "selector 'instance' of union params is not an enum (it is primitive)",
+        "selector: instance",
+    ),
+    (
+        "union selector enum is a bitfield",
+        "commands.yaml",
+        "selector_enum: Mode",
+        "selector_enum: Flags",
+        "union TriggerParams: selector type 'Flags' is a bitfield, not an enum (expected the name of an enum)",
+        "selector_enum: Flags",
+    ),
+    (
+        "union member not an enum value",
+        "commands.yaml",
+        "{when: gpio, type: GpioParams}",
+        "{when: gpoi, type: GpioParams}",
+        "union TriggerParams: 'gpoi' is not a value of enum Mode",
+        "when: gpoi",
+    ),
+    (
+        "response does not exist",
+        "commands.yaml",
+        "{id: 0x82, when: {function: read}}",
+        "{id: 0x99, when: {function: read}}",
+        "commands.configure: response 0x99 does not exist in set 0x01",
+        "id: 0x99",
+    ),
+    (
+        "response is not a response",
+        "commands.yaml",
+        "{id: 0x82, when: {function: read}}",
+        "{id: 0x03, when: {function: read}}",
+        "response 0x03 is 'per_device', a command field",
+        "id: 0x03, when",
+    ),
+    (
+        "unknown type",
+        "commands.yaml",
+        "{name: b, type: u64}",
+        "{name: b, type: u46}",
+        "parameter b: unknown type 'u46'",
+        "type: u46",
+    ),
+    (
+        "param for unsupported function",
+        "commands.yaml",
+        "{name: instance, type: u8, functions: [write, read, save]}",
+        "{name: instance, type: u8, functions: [write, read, load]}",
+        "parameter instance is marked for function 'load', which the command does not support",
+        "functions: [write, read, load]",
+    ),
+    (
+        "required after optional",
+        "commands.yaml",
+        "{name: suppress_ack, type: bool, functions: [write]}",
+        "{name: suppress_ack, type: bool, functions: [write]}\n      - {name: late, type: u8, functions: [write, read, save]}",
+        "required parameter late follows optional parameter mode",
+        "name: late",
+    ),
+    (
+        "remaining array not last",
+        "commands.yaml",
+        "{name: tail, type: char, count: remaining}",
+        "{name: tail, type: char, count: remaining}\n      - {name: after, type: u8}",
+        "parameter tail runs to the end of the field but is not the last parameter",
+        "name: tail",
+    ),
+    (
+        "unknown manual",
+        "data.yaml",
+        "sources: [{manual: demo.txt, line: 51}]",
+        "sources: [{manual: dmeo.txt, line: 51}]",
+        "unknown manual 'dmeo.txt'",
+        "dmeo.txt",
+    ),
+    (
+        "reserved descriptor",
+        "commands.yaml",
+        "  - id: 0x03\n    name: per_device",
+        "  - id: 0x80\n    name: per_device",
+        "descriptor 0x80 is reserved for ack",
+        "id: 0x80\n",
+    ),
+    (
+        "set outside its kind range",
+        "data.yaml",
+        "set: 0x90",
+        "set: 0x10",
+        "data set 0x10 is outside the data range (expected 0x80..0xFF)",
+        "set: 0x10",
+    ),
+    ("schema: missing key", "data.yaml", "    role: data\n", "", "missing required key 'role'", "- id: 0x01"),
+    (
+        "schema: unknown key",
+        "data.yaml",
+        "    repeats: true",
+        "    repeat: true",
+        "Additional properties are not allowed ('repeat' was unexpected)",
+        "repeat: true",
+    ),
+    (
+        "schema: bad name",
+        "data.yaml",
+        "name: sample",
+        "name: Sample-1",
+        "'Sample-1' is not a valid name",
+        "name: Sample-1",
+    ),
+    (
+        "duplicate yaml key",
+        "data.yaml",
+        "    title: Sample\n",
+        "    title: Sample\n    title: Again\n",
+        "duplicate key 'title'",
+        "title: Again",
+    ),
+    ("yaml syntax", "data.yaml", "    title: Sample\n", "    title: [Sample\n", "invalid YAML", None),
 ]
 
 
@@ -115,7 +248,11 @@ def test_bad_spec_is_located(tmp_path, case):
     assert msg.startswith(f"spec/demo/{file}:"), msg
     assert ": error: " in msg
     if needle is not None:
-        want = _line_of(spec, file, needle.split("\n")[0]) if "\n" not in needle else _line_of(spec, file, needle.split("\n")[0]) + 0
+        want = (
+            _line_of(spec, file, needle.split("\n")[0])
+            if "\n" not in needle
+            else _line_of(spec, file, needle.split("\n")[0]) + 0
+        )
         line = int(msg.split(":")[1])
         assert abs(line - want) <= 1, f"error points at line {line}, expected about {want}: {msg}"
 
@@ -125,8 +262,12 @@ def test_fixture_itself_is_valid():
 
 
 def _run_cli(spec: Path) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "generator", "--spec", str(spec), "--validate-only"],
-                          cwd=ROOT, capture_output=True, text=True)
+    return subprocess.run(
+        [sys.executable, "-m", "generator", "--spec", str(spec), "--validate-only"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+    )
 
 
 def test_cli_reports_several_errors_without_traceback(tmp_path):
