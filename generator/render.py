@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
@@ -32,7 +33,8 @@ def environment() -> jinja2.Environment:
 
 
 def _which(name: str, env_var: str) -> str:
-    exe = os.environ.get(env_var) or shutil.which(name)
+    beside = Path(sys.executable).parent / name  # tools installed in the same virtualenv
+    exe = os.environ.get(env_var) or (str(beside) if beside.exists() else None) or shutil.which(name)
     if not exe:
         raise ToolError(
             f"'{name}' is not installed (needed to format generated code); run 'make' to set up, or set {env_var}"

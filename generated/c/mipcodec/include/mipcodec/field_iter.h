@@ -1,0 +1,50 @@
+/* Splits a packet payload into fields (docs/conformance.md section 2). Generated: do not edit. */
+#ifndef MIP_FIELD_ITER_H
+#define MIP_FIELD_ITER_H
+
+#include "mipcodec/framing.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    MIP_ENTRY_FIELD = 1,   /* a complete field */
+    MIP_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
+} mip_entry_kind_t;
+
+typedef enum {
+    MIP_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
+    MIP_TRAILING_SHORT_LENGTH =
+        2, /* field length {length} at payload offset {offset} is shorter than the field header */
+    MIP_TRAILING_OVERRUN =
+        3 /* field length {length} at payload offset {offset} overruns the payload ({left} bytes left) */
+} mip_trailing_kind_t;
+
+typedef struct {
+    mip_entry_kind_t kind;
+    size_t offset;                /* payload offset of the field header / trailing bytes */
+    uint8_t descriptor;           /* fields */
+    const uint8_t *data;          /* field data (after the header), or the trailing bytes */
+    size_t length;                /* bytes at data */
+    mip_trailing_kind_t trailing; /* trailing entries: why */
+    uint8_t length_byte;          /* trailing entries: the field length byte as sent */
+} mip_field_entry_t;
+
+typedef struct {
+    const uint8_t *payload;
+    size_t len;
+    size_t pos;
+} mip_field_iter_t;
+
+void mip_field_iter_init(mip_field_iter_t *it, const uint8_t *payload, size_t len);
+/** Next entry: returns true and fills *entry, or false after the last one. */
+bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry);
+/** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
+size_t mip_trailing_format(const mip_field_entry_t *entry, char *buf, size_t cap);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,77 @@
+/* Framing of the MicroStrain MIP (Microstrain Inertial Packet) protocol protocol, rendered from
+ * protocols[].framing of the IR. Generated: do not edit. */
+#ifndef MIP_FRAMING_H
+#define MIP_FRAMING_H
+
+#include "mipcodec/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Sync sequence that starts every packet. */
+#define MIP_SYNC_SIZE 2
+#define MIP_SYNC_0 0x75
+#define MIP_SYNC_1 0x65
+/* Packet header: sync bytes, then set, payload_length. */
+#define MIP_HEADER_SIZE 4
+#define MIP_SET_OFFSET 2
+#define MIP_LENGTH_OFFSET 3
+#define MIP_MAX_PAYLOAD 255
+#define MIP_CHECKSUM_SIZE 2
+/* Largest packet: header, maximum payload and checksum. */
+#define MIP_MAX_PACKET 261
+/* Field header: length, descriptor. */
+#define MIP_FIELD_HEADER_SIZE 2
+#define MIP_FIELD_LENGTH_OFFSET 0
+#define MIP_FIELD_DESCRIPTOR_OFFSET 1
+/* The field length byte counts the field header and the data:
+ * data length = length byte - MIP_FIELD_LENGTH_ADJUST. */
+#define MIP_FIELD_LENGTH_ADJUST 2
+/* Largest data a single field can carry. */
+#define MIP_MAX_FIELD_DATA 253
+
+/** The sync sequence as bytes. */
+extern const uint8_t mip_sync[MIP_SYNC_SIZE];
+
+/**
+ * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
+ * out[0..1] receive the checksum in wire order (sum1, sum2).
+ */
+void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]);
+
+/** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
+bool mip_packet_valid(const uint8_t *packet, size_t len);
+/** Descriptor set of a packet (at least MIP_HEADER_SIZE bytes). */
+uint8_t mip_packet_set(const uint8_t *packet);
+/** Payload length byte of a packet (at least MIP_HEADER_SIZE bytes). */
+uint8_t mip_packet_payload_length(const uint8_t *packet);
+/** Start of the payload of a packet. */
+const uint8_t *mip_packet_payload(const uint8_t *packet);
+
+/**
+ * Builds one packet into a caller buffer: begin, add fields (or raw payload bytes), finish.
+ * Errors are sticky: once an add fails, finish returns the first error.
+ */
+typedef struct {
+    uint8_t *buf;
+    size_t cap;
+    size_t len;
+    mip_status_t status;
+} mip_packet_builder_t;
+
+/** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */
+void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
+/** Appends a field: header (descriptor, length) and data_len bytes of data. */
+mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                  size_t data_len);
+/** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
+mip_status_t mip_packet_add_raw(mip_packet_builder_t *b, const uint8_t *bytes, size_t len);
+/** Writes the payload length and checksum; *len_out receives the packet size. */
+mip_status_t mip_packet_finish(mip_packet_builder_t *b, size_t *len_out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,18 @@
+/* mipcodec: C99 codec of the MicroStrain MIP (Microstrain Inertial Packet) protocol protocol. Generated from
+ * the spec: do not edit. Everything is bounded by caller buffers; nothing allocates. */
+#ifndef MIP_MIPCODEC_H
+#define MIP_MIPCODEC_H
+
+#include "mipcodec/status.h"
+#include "mipcodec/framing.h"
+#include "mipcodec/parser.h"
+#include "mipcodec/field_iter.h"
+#include "mipcodec/types.h"
+#include "mipcodec/reserved.h"
+#include "mipcodec/sets/base.h"
+#include "mipcodec/sets/threedm.h"
+#include "mipcodec/sets/sensor.h"
+#include "mipcodec/dispatch.h"
+#include "mipcodec/json.h"
+
+#endif

@@ -1,0 +1,669 @@
+/* Dispatch tables. Generated from the spec: do not edit. */
+#include "mipcodec/dispatch.h"
+#include "layouts_internal.h"
+
+#include <string.h>
+
+const char *mip_device_id(mip_device_t device) {
+    switch (device) {
+    case MIP_DEVICE_GX5_45:
+        return "gx5_45";
+    case MIP_DEVICE_CV7_INS:
+        return "cv7_ins";
+    case MIP_DEVICE_ANY:
+    default:
+        return NULL;
+    }
+}
+
+bool mip_device_from_id(const char *id, mip_device_t *out) {
+    if (strcmp(id, "gx5_45") == 0) {
+        *out = MIP_DEVICE_GX5_45;
+        return true;
+    }
+    if (strcmp(id, "cv7_ins") == 0) {
+        *out = MIP_DEVICE_CV7_INS;
+        return true;
+    }
+    (void)id;
+    (void)out;
+    return false;
+}
+
+mip_set_kind_t mip_set_kind(uint8_t set) {
+    if (set >= 0x01 && set <= 0x7F) {
+        return MIP_SET_KIND_COMMAND;
+    }
+    if (set >= 0x80 && 1) {
+        return MIP_SET_KIND_DATA;
+    }
+    (void)set;
+    return MIP_SET_KIND_NONE;
+}
+
+static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
+    {MIP_FIELD_NONE, NULL, NULL, MIP_DEVICE_ANY, 0},
+    {MIP_FIELD_ACK_NACK, "ack_nack", NULL, MIP_DEVICE_ANY, 0xF1},
+    {MIP_FIELD_BASE_PING, "ping", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_BASE_SET_TO_IDLE, "set_to_idle", NULL, MIP_DEVICE_ANY, 0x02},
+    {MIP_FIELD_BASE_GET_DEVICE_INFO, "get_device_info", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_BASE_DEVICE_INFO, "device_info", NULL, MIP_DEVICE_ANY, 0x81},
+    {MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS, "get_device_descriptors", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_BASE_DEVICE_DESCRIPTORS, "device_descriptors", NULL, MIP_DEVICE_ANY, 0x82},
+    {MIP_FIELD_BASE_BUILT_IN_TEST, "built_in_test", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, "built_in_test_result", "gx5_45", MIP_DEVICE_GX5_45, 0x83},
+    {MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_CV7_INS, "built_in_test_result", "cv7_ins", MIP_DEVICE_CV7_INS,
+     0x83},
+    {MIP_FIELD_BASE_RESUME, "resume", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, "get_extended_descriptors", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_BASE_EXTENDED_DESCRIPTORS, "extended_descriptors", NULL, MIP_DEVICE_ANY, 0x86},
+    {MIP_FIELD_BASE_CONTINUOUS_BIT, "continuous_bit", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT, "continuous_bit_result", NULL, MIP_DEVICE_ANY, 0x88},
+    {MIP_FIELD_BASE_COMM_PORT_SPEED, "comm_port_speed", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, "comm_port_speed_response", NULL, MIP_DEVICE_ANY, 0x89},
+    {MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, "gps_time_update", "gx5_45", MIP_DEVICE_GX5_45, 0x72},
+    {MIP_FIELD_BASE_GPS_TIME_UPDATE_CV7_INS, "gps_time_update", "cv7_ins", MIP_DEVICE_CV7_INS, 0x72},
+    {MIP_FIELD_BASE_GPS_WEEK, "gps_week", NULL, MIP_DEVICE_ANY, 0x84},
+    {MIP_FIELD_BASE_GPS_SECONDS, "gps_seconds", NULL, MIP_DEVICE_ANY, 0x85},
+    {MIP_FIELD_BASE_DEVICE_RESET, "device_reset", NULL, MIP_DEVICE_ANY, 0x7E},
+    {MIP_FIELD_THREEDM_EVENT_CONTROL, "event_control", NULL, MIP_DEVICE_ANY, 0x2B},
+    {MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, "event_control_response", NULL, MIP_DEVICE_ANY, 0xB5},
+    {MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, "get_event_trigger_status", NULL, MIP_DEVICE_ANY, 0x2C},
+    {MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS, "event_trigger_status", NULL, MIP_DEVICE_ANY, 0xB6},
+    {MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, "get_event_action_status", NULL, MIP_DEVICE_ANY, 0x2D},
+    {MIP_FIELD_THREEDM_EVENT_ACTION_STATUS, "event_action_status", NULL, MIP_DEVICE_ANY, 0xB7},
+    {MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, "event_trigger_config", NULL, MIP_DEVICE_ANY, 0x2E},
+    {MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, "event_trigger_config_response", NULL, MIP_DEVICE_ANY,
+     0xB8},
+    {MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, "event_action_config", NULL, MIP_DEVICE_ANY, 0x2F},
+    {MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, "event_action_config_response", NULL, MIP_DEVICE_ANY,
+     0xB9},
+    {MIP_FIELD_SENSOR_SCALED_ACCEL, "scaled_accel", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_SENSOR_SCALED_GYRO, "scaled_gyro", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_SENSOR_SCALED_MAG, "scaled_mag", NULL, MIP_DEVICE_ANY, 0x06},
+};
+
+static const mip_field_info_t k_fields[33] = {
+    {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                   /* 0 */
+    {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                      /* 1 */
+    {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                        /* 2 */
+    {"get_device_info", 0x03, MIP_FIELD_BASE_GET_DEVICE_INFO, 1},                                /* 3 */
+    {"device_info", 0x81, MIP_FIELD_BASE_DEVICE_INFO, 1},                                        /* 4 */
+    {"get_device_descriptors", 0x04, MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},                  /* 5 */
+    {"device_descriptors", 0x82, MIP_FIELD_BASE_DEVICE_DESCRIPTORS, 1},                          /* 6 */
+    {"built_in_test", 0x05, MIP_FIELD_BASE_BUILT_IN_TEST, 1},                                    /* 7 */
+    {"built_in_test_result", 0x83, MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},               /* 8 */
+    {"resume", 0x06, MIP_FIELD_BASE_RESUME, 1},                                                  /* 9 */
+    {"get_extended_descriptors", 0x07, MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},              /* 10 */
+    {"extended_descriptors", 0x86, MIP_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},                      /* 11 */
+    {"continuous_bit", 0x08, MIP_FIELD_BASE_CONTINUOUS_BIT, 1},                                  /* 12 */
+    {"continuous_bit_result", 0x88, MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},                    /* 13 */
+    {"comm_port_speed", 0x09, MIP_FIELD_BASE_COMM_PORT_SPEED, 1},                                /* 14 */
+    {"comm_port_speed_response", 0x89, MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},              /* 15 */
+    {"gps_time_update", 0x72, MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},                         /* 16 */
+    {"gps_week", 0x84, MIP_FIELD_BASE_GPS_WEEK, 1},                                              /* 17 */
+    {"gps_seconds", 0x85, MIP_FIELD_BASE_GPS_SECONDS, 1},                                        /* 18 */
+    {"device_reset", 0x7E, MIP_FIELD_BASE_DEVICE_RESET, 1},                                      /* 19 */
+    {"event_control", 0x2B, MIP_FIELD_THREEDM_EVENT_CONTROL, 1},                                 /* 20 */
+    {"event_control_response", 0xB5, MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},               /* 21 */
+    {"get_event_trigger_status", 0x2C, MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},           /* 22 */
+    {"event_trigger_status", 0xB6, MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},                   /* 23 */
+    {"get_event_action_status", 0x2D, MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},             /* 24 */
+    {"event_action_status", 0xB7, MIP_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},                     /* 25 */
+    {"event_trigger_config", 0x2E, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},                   /* 26 */
+    {"event_trigger_config_response", 0xB8, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1}, /* 27 */
+    {"event_action_config", 0x2F, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},                     /* 28 */
+    {"event_action_config_response", 0xB9, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},   /* 29 */
+    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                    /* 30 */
+    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                      /* 31 */
+    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                        /* 32 */
+};
+
+const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
+    if ((size_t)id >= MIP_FIELD_COUNT) {
+        return NULL;
+    }
+    return &k_layouts[id];
+}
+
+/* Fields defined in a set; *set_known tells whether the set is defined at all. */
+static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
+    *set_known = true;
+    switch (set) {
+    case 0x01: /* base */
+        switch (descriptor) {
+        case 0x01:
+            return &k_fields[1]; /* ping */
+        case 0x02:
+            return &k_fields[2]; /* set_to_idle */
+        case 0x03:
+            return &k_fields[3]; /* get_device_info */
+        case 0x81:
+            return &k_fields[4]; /* device_info */
+        case 0x04:
+            return &k_fields[5]; /* get_device_descriptors */
+        case 0x82:
+            return &k_fields[6]; /* device_descriptors */
+        case 0x05:
+            return &k_fields[7]; /* built_in_test */
+        case 0x83:
+            return &k_fields[8]; /* built_in_test_result */
+        case 0x06:
+            return &k_fields[9]; /* resume */
+        case 0x07:
+            return &k_fields[10]; /* get_extended_descriptors */
+        case 0x86:
+            return &k_fields[11]; /* extended_descriptors */
+        case 0x08:
+            return &k_fields[12]; /* continuous_bit */
+        case 0x88:
+            return &k_fields[13]; /* continuous_bit_result */
+        case 0x09:
+            return &k_fields[14]; /* comm_port_speed */
+        case 0x89:
+            return &k_fields[15]; /* comm_port_speed_response */
+        case 0x72:
+            return &k_fields[16]; /* gps_time_update */
+        case 0x84:
+            return &k_fields[17]; /* gps_week */
+        case 0x85:
+            return &k_fields[18]; /* gps_seconds */
+        case 0x7E:
+            return &k_fields[19]; /* device_reset */
+        default:
+            return NULL;
+        }
+    case 0x0C: /* threedm */
+        switch (descriptor) {
+        case 0x2B:
+            return &k_fields[20]; /* event_control */
+        case 0xB5:
+            return &k_fields[21]; /* event_control_response */
+        case 0x2C:
+            return &k_fields[22]; /* get_event_trigger_status */
+        case 0xB6:
+            return &k_fields[23]; /* event_trigger_status */
+        case 0x2D:
+            return &k_fields[24]; /* get_event_action_status */
+        case 0xB7:
+            return &k_fields[25]; /* event_action_status */
+        case 0x2E:
+            return &k_fields[26]; /* event_trigger_config */
+        case 0xB8:
+            return &k_fields[27]; /* event_trigger_config_response */
+        case 0x2F:
+            return &k_fields[28]; /* event_action_config */
+        case 0xB9:
+            return &k_fields[29]; /* event_action_config_response */
+        default:
+            return NULL;
+        }
+    case 0x80: /* sensor */
+        switch (descriptor) {
+        case 0x04:
+            return &k_fields[30]; /* scaled_accel */
+        case 0x05:
+            return &k_fields[31]; /* scaled_gyro */
+        case 0x06:
+            return &k_fields[32]; /* scaled_mag */
+        default:
+            return NULL;
+        }
+    default:
+        (void)descriptor;
+        *set_known = false;
+        return NULL;
+    }
+}
+
+const mip_field_info_t *mip_find_field(uint8_t set, uint8_t descriptor, mip_status_t *why) {
+    bool known = false;
+    mip_set_kind_t kind = mip_set_kind(set);
+    const mip_field_info_t *f = defined(set, descriptor, &known);
+    if (f) {
+        return f;
+    }
+    /* reserved fields of the set's kind */
+    switch (kind) {
+    case MIP_SET_KIND_COMMAND:
+        if (descriptor == 0xF1) {
+            return &k_fields[0]; /* ack_nack */
+        }
+        break;
+    case MIP_SET_KIND_DATA:
+        break;
+    case MIP_SET_KIND_NONE:
+    default:
+        break;
+    }
+    if (why) {
+        *why = known ? MIP_ERR_UNKNOWN_DESCRIPTOR : MIP_ERR_UNKNOWN_SET;
+    }
+    return NULL;
+}
+
+static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t len, mip_field_value_t *out,
+                                  mip_decode_error_t *err) {
+    out->id = id;
+    switch (id) {
+    case MIP_FIELD_ACK_NACK:
+        return mip_ack_nack_decode(data, len, &out->u.ack_nack, err);
+    case MIP_FIELD_BASE_PING:
+        return mip_base_ping_decode(data, len, &out->u.base_ping, err);
+    case MIP_FIELD_BASE_SET_TO_IDLE:
+        return mip_base_set_to_idle_decode(data, len, &out->u.base_set_to_idle, err);
+    case MIP_FIELD_BASE_GET_DEVICE_INFO:
+        return mip_base_get_device_info_decode(data, len, &out->u.base_get_device_info, err);
+    case MIP_FIELD_BASE_DEVICE_INFO:
+        return mip_base_device_info_decode(data, len, &out->u.base_device_info, err);
+    case MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS:
+        return mip_base_get_device_descriptors_decode(data, len, &out->u.base_get_device_descriptors, err);
+    case MIP_FIELD_BASE_DEVICE_DESCRIPTORS:
+        return mip_base_device_descriptors_decode(data, len, &out->u.base_device_descriptors, err);
+    case MIP_FIELD_BASE_BUILT_IN_TEST:
+        return mip_base_built_in_test_decode(data, len, &out->u.base_built_in_test, err);
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45:
+        return mip_base_built_in_test_result_gx5_45_decode(data, len,
+                                                           &out->u.base_built_in_test_result_gx5_45, err);
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_CV7_INS:
+        return mip_base_built_in_test_result_cv7_ins_decode(data, len,
+                                                            &out->u.base_built_in_test_result_cv7_ins, err);
+    case MIP_FIELD_BASE_RESUME:
+        return mip_base_resume_decode(data, len, &out->u.base_resume, err);
+    case MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS:
+        return mip_base_get_extended_descriptors_decode(data, len, &out->u.base_get_extended_descriptors,
+                                                        err);
+    case MIP_FIELD_BASE_EXTENDED_DESCRIPTORS:
+        return mip_base_extended_descriptors_decode(data, len, &out->u.base_extended_descriptors, err);
+    case MIP_FIELD_BASE_CONTINUOUS_BIT:
+        return mip_base_continuous_bit_decode(data, len, &out->u.base_continuous_bit, err);
+    case MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT:
+        return mip_base_continuous_bit_result_decode(data, len, &out->u.base_continuous_bit_result, err);
+    case MIP_FIELD_BASE_COMM_PORT_SPEED:
+        return mip_base_comm_port_speed_decode(data, len, &out->u.base_comm_port_speed, err);
+    case MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE:
+        return mip_base_comm_port_speed_response_decode(data, len, &out->u.base_comm_port_speed_response,
+                                                        err);
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45:
+        return mip_base_gps_time_update_gx5_45_decode(data, len, &out->u.base_gps_time_update_gx5_45, err);
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_CV7_INS:
+        return mip_base_gps_time_update_cv7_ins_decode(data, len, &out->u.base_gps_time_update_cv7_ins, err);
+    case MIP_FIELD_BASE_GPS_WEEK:
+        return mip_base_gps_week_decode(data, len, &out->u.base_gps_week, err);
+    case MIP_FIELD_BASE_GPS_SECONDS:
+        return mip_base_gps_seconds_decode(data, len, &out->u.base_gps_seconds, err);
+    case MIP_FIELD_BASE_DEVICE_RESET:
+        return mip_base_device_reset_decode(data, len, &out->u.base_device_reset, err);
+    case MIP_FIELD_THREEDM_EVENT_CONTROL:
+        return mip_threedm_event_control_decode(data, len, &out->u.threedm_event_control, err);
+    case MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE:
+        return mip_threedm_event_control_response_decode(data, len, &out->u.threedm_event_control_response,
+                                                         err);
+    case MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS:
+        return mip_threedm_get_event_trigger_status_decode(data, len,
+                                                           &out->u.threedm_get_event_trigger_status, err);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS:
+        return mip_threedm_event_trigger_status_decode(data, len, &out->u.threedm_event_trigger_status, err);
+    case MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS:
+        return mip_threedm_get_event_action_status_decode(data, len, &out->u.threedm_get_event_action_status,
+                                                          err);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_STATUS:
+        return mip_threedm_event_action_status_decode(data, len, &out->u.threedm_event_action_status, err);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG:
+        return mip_threedm_event_trigger_config_decode(data, len, &out->u.threedm_event_trigger_config, err);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE:
+        return mip_threedm_event_trigger_config_response_decode(
+            data, len, &out->u.threedm_event_trigger_config_response, err);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG:
+        return mip_threedm_event_action_config_decode(data, len, &out->u.threedm_event_action_config, err);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
+        return mip_threedm_event_action_config_response_decode(
+            data, len, &out->u.threedm_event_action_config_response, err);
+    case MIP_FIELD_SENSOR_SCALED_ACCEL:
+        return mip_sensor_scaled_accel_decode(data, len, &out->u.sensor_scaled_accel, err);
+    case MIP_FIELD_SENSOR_SCALED_GYRO:
+        return mip_sensor_scaled_gyro_decode(data, len, &out->u.sensor_scaled_gyro, err);
+    case MIP_FIELD_SENSOR_SCALED_MAG:
+        return mip_sensor_scaled_mag_decode(data, len, &out->u.sensor_scaled_mag, err);
+    case MIP_FIELD_NONE:
+    case MIP_FIELD_COUNT:
+    default:
+        return MIP_ERR_INVALID;
+    }
+}
+
+mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
+                              mip_device_t device, mip_field_value_t *out, mip_decode_error_t *err) {
+    mip_status_t why = MIP_ERR_UNKNOWN_SET;
+    const mip_field_info_t *f = mip_find_field(set, descriptor, &why);
+    size_t first;
+    size_t count;
+    size_t i;
+    mip_decode_error_t first_err;
+    mip_decode_error_t other_err;
+    out->id = MIP_FIELD_NONE;
+    if (!f) {
+        return why;
+    }
+    first = (size_t)f->first_layout;
+    count = f->layout_count;
+    if (device != MIP_DEVICE_ANY) {
+        for (i = 0; i < count; i++) {
+            if (k_layouts[first + i].device_id == device) {
+                first += i;
+                count = 1;
+                break;
+            }
+        }
+    }
+    memset(&first_err, 0, sizeof first_err);
+    for (i = 0; i < count; i++) {
+        if (decode_layout((mip_field_id_t)(first + i), data, len, out, i == 0 ? &first_err : &other_err) ==
+            MIP_OK) {
+            return MIP_OK;
+        }
+    }
+    out->id = MIP_FIELD_NONE;
+    if (err) {
+        *err = first_err;
+    }
+    return MIP_ERR_DECODE;
+}
+
+mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+    switch (value->id) {
+    case MIP_FIELD_ACK_NACK:
+        return mip_ack_nack_encode(&value->u.ack_nack, buf, cap, len_out);
+    case MIP_FIELD_BASE_PING:
+        return mip_base_ping_encode(&value->u.base_ping, buf, cap, len_out);
+    case MIP_FIELD_BASE_SET_TO_IDLE:
+        return mip_base_set_to_idle_encode(&value->u.base_set_to_idle, buf, cap, len_out);
+    case MIP_FIELD_BASE_GET_DEVICE_INFO:
+        return mip_base_get_device_info_encode(&value->u.base_get_device_info, buf, cap, len_out);
+    case MIP_FIELD_BASE_DEVICE_INFO:
+        return mip_base_device_info_encode(&value->u.base_device_info, buf, cap, len_out);
+    case MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS:
+        return mip_base_get_device_descriptors_encode(&value->u.base_get_device_descriptors, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_BASE_DEVICE_DESCRIPTORS:
+        return mip_base_device_descriptors_encode(&value->u.base_device_descriptors, buf, cap, len_out);
+    case MIP_FIELD_BASE_BUILT_IN_TEST:
+        return mip_base_built_in_test_encode(&value->u.base_built_in_test, buf, cap, len_out);
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45:
+        return mip_base_built_in_test_result_gx5_45_encode(&value->u.base_built_in_test_result_gx5_45, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_CV7_INS:
+        return mip_base_built_in_test_result_cv7_ins_encode(&value->u.base_built_in_test_result_cv7_ins, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_BASE_RESUME:
+        return mip_base_resume_encode(&value->u.base_resume, buf, cap, len_out);
+    case MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS:
+        return mip_base_get_extended_descriptors_encode(&value->u.base_get_extended_descriptors, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_BASE_EXTENDED_DESCRIPTORS:
+        return mip_base_extended_descriptors_encode(&value->u.base_extended_descriptors, buf, cap, len_out);
+    case MIP_FIELD_BASE_CONTINUOUS_BIT:
+        return mip_base_continuous_bit_encode(&value->u.base_continuous_bit, buf, cap, len_out);
+    case MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT:
+        return mip_base_continuous_bit_result_encode(&value->u.base_continuous_bit_result, buf, cap, len_out);
+    case MIP_FIELD_BASE_COMM_PORT_SPEED:
+        return mip_base_comm_port_speed_encode(&value->u.base_comm_port_speed, buf, cap, len_out);
+    case MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE:
+        return mip_base_comm_port_speed_response_encode(&value->u.base_comm_port_speed_response, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45:
+        return mip_base_gps_time_update_gx5_45_encode(&value->u.base_gps_time_update_gx5_45, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_CV7_INS:
+        return mip_base_gps_time_update_cv7_ins_encode(&value->u.base_gps_time_update_cv7_ins, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_BASE_GPS_WEEK:
+        return mip_base_gps_week_encode(&value->u.base_gps_week, buf, cap, len_out);
+    case MIP_FIELD_BASE_GPS_SECONDS:
+        return mip_base_gps_seconds_encode(&value->u.base_gps_seconds, buf, cap, len_out);
+    case MIP_FIELD_BASE_DEVICE_RESET:
+        return mip_base_device_reset_encode(&value->u.base_device_reset, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_EVENT_CONTROL:
+        return mip_threedm_event_control_encode(&value->u.threedm_event_control, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE:
+        return mip_threedm_event_control_response_encode(&value->u.threedm_event_control_response, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS:
+        return mip_threedm_get_event_trigger_status_encode(&value->u.threedm_get_event_trigger_status, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS:
+        return mip_threedm_event_trigger_status_encode(&value->u.threedm_event_trigger_status, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS:
+        return mip_threedm_get_event_action_status_encode(&value->u.threedm_get_event_action_status, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_STATUS:
+        return mip_threedm_event_action_status_encode(&value->u.threedm_event_action_status, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG:
+        return mip_threedm_event_trigger_config_encode(&value->u.threedm_event_trigger_config, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE:
+        return mip_threedm_event_trigger_config_response_encode(
+            &value->u.threedm_event_trigger_config_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG:
+        return mip_threedm_event_action_config_encode(&value->u.threedm_event_action_config, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
+        return mip_threedm_event_action_config_response_encode(&value->u.threedm_event_action_config_response,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_SENSOR_SCALED_ACCEL:
+        return mip_sensor_scaled_accel_encode(&value->u.sensor_scaled_accel, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_SCALED_GYRO:
+        return mip_sensor_scaled_gyro_encode(&value->u.sensor_scaled_gyro, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_SCALED_MAG:
+        return mip_sensor_scaled_mag_encode(&value->u.sensor_scaled_mag, buf, cap, len_out);
+    case MIP_FIELD_NONE:
+    case MIP_FIELD_COUNT:
+    default:
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
+    switch (value->id) {
+    case MIP_FIELD_ACK_NACK:
+        mip_ack_nack_to_json(w, &value->u.ack_nack);
+        return;
+    case MIP_FIELD_BASE_PING:
+        mip_base_ping_to_json(w, &value->u.base_ping);
+        return;
+    case MIP_FIELD_BASE_SET_TO_IDLE:
+        mip_base_set_to_idle_to_json(w, &value->u.base_set_to_idle);
+        return;
+    case MIP_FIELD_BASE_GET_DEVICE_INFO:
+        mip_base_get_device_info_to_json(w, &value->u.base_get_device_info);
+        return;
+    case MIP_FIELD_BASE_DEVICE_INFO:
+        mip_base_device_info_to_json(w, &value->u.base_device_info);
+        return;
+    case MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS:
+        mip_base_get_device_descriptors_to_json(w, &value->u.base_get_device_descriptors);
+        return;
+    case MIP_FIELD_BASE_DEVICE_DESCRIPTORS:
+        mip_base_device_descriptors_to_json(w, &value->u.base_device_descriptors);
+        return;
+    case MIP_FIELD_BASE_BUILT_IN_TEST:
+        mip_base_built_in_test_to_json(w, &value->u.base_built_in_test);
+        return;
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45:
+        mip_base_built_in_test_result_gx5_45_to_json(w, &value->u.base_built_in_test_result_gx5_45);
+        return;
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_CV7_INS:
+        mip_base_built_in_test_result_cv7_ins_to_json(w, &value->u.base_built_in_test_result_cv7_ins);
+        return;
+    case MIP_FIELD_BASE_RESUME:
+        mip_base_resume_to_json(w, &value->u.base_resume);
+        return;
+    case MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS:
+        mip_base_get_extended_descriptors_to_json(w, &value->u.base_get_extended_descriptors);
+        return;
+    case MIP_FIELD_BASE_EXTENDED_DESCRIPTORS:
+        mip_base_extended_descriptors_to_json(w, &value->u.base_extended_descriptors);
+        return;
+    case MIP_FIELD_BASE_CONTINUOUS_BIT:
+        mip_base_continuous_bit_to_json(w, &value->u.base_continuous_bit);
+        return;
+    case MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT:
+        mip_base_continuous_bit_result_to_json(w, &value->u.base_continuous_bit_result);
+        return;
+    case MIP_FIELD_BASE_COMM_PORT_SPEED:
+        mip_base_comm_port_speed_to_json(w, &value->u.base_comm_port_speed);
+        return;
+    case MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE:
+        mip_base_comm_port_speed_response_to_json(w, &value->u.base_comm_port_speed_response);
+        return;
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45:
+        mip_base_gps_time_update_gx5_45_to_json(w, &value->u.base_gps_time_update_gx5_45);
+        return;
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_CV7_INS:
+        mip_base_gps_time_update_cv7_ins_to_json(w, &value->u.base_gps_time_update_cv7_ins);
+        return;
+    case MIP_FIELD_BASE_GPS_WEEK:
+        mip_base_gps_week_to_json(w, &value->u.base_gps_week);
+        return;
+    case MIP_FIELD_BASE_GPS_SECONDS:
+        mip_base_gps_seconds_to_json(w, &value->u.base_gps_seconds);
+        return;
+    case MIP_FIELD_BASE_DEVICE_RESET:
+        mip_base_device_reset_to_json(w, &value->u.base_device_reset);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_CONTROL:
+        mip_threedm_event_control_to_json(w, &value->u.threedm_event_control);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE:
+        mip_threedm_event_control_response_to_json(w, &value->u.threedm_event_control_response);
+        return;
+    case MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS:
+        mip_threedm_get_event_trigger_status_to_json(w, &value->u.threedm_get_event_trigger_status);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS:
+        mip_threedm_event_trigger_status_to_json(w, &value->u.threedm_event_trigger_status);
+        return;
+    case MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS:
+        mip_threedm_get_event_action_status_to_json(w, &value->u.threedm_get_event_action_status);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_ACTION_STATUS:
+        mip_threedm_event_action_status_to_json(w, &value->u.threedm_event_action_status);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG:
+        mip_threedm_event_trigger_config_to_json(w, &value->u.threedm_event_trigger_config);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE:
+        mip_threedm_event_trigger_config_response_to_json(w, &value->u.threedm_event_trigger_config_response);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG:
+        mip_threedm_event_action_config_to_json(w, &value->u.threedm_event_action_config);
+        return;
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
+        mip_threedm_event_action_config_response_to_json(w, &value->u.threedm_event_action_config_response);
+        return;
+    case MIP_FIELD_SENSOR_SCALED_ACCEL:
+        mip_sensor_scaled_accel_to_json(w, &value->u.sensor_scaled_accel);
+        return;
+    case MIP_FIELD_SENSOR_SCALED_GYRO:
+        mip_sensor_scaled_gyro_to_json(w, &value->u.sensor_scaled_gyro);
+        return;
+    case MIP_FIELD_SENSOR_SCALED_MAG:
+        mip_sensor_scaled_mag_to_json(w, &value->u.sensor_scaled_mag);
+        return;
+    case MIP_FIELD_NONE:
+    case MIP_FIELD_COUNT:
+    default:
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_value_t *value) {
+    value->id = id;
+    switch (id) {
+    case MIP_FIELD_ACK_NACK:
+        return mip_ack_nack_from_json(jr, pos, &value->u.ack_nack);
+    case MIP_FIELD_BASE_PING:
+        return mip_base_ping_from_json(jr, pos, &value->u.base_ping);
+    case MIP_FIELD_BASE_SET_TO_IDLE:
+        return mip_base_set_to_idle_from_json(jr, pos, &value->u.base_set_to_idle);
+    case MIP_FIELD_BASE_GET_DEVICE_INFO:
+        return mip_base_get_device_info_from_json(jr, pos, &value->u.base_get_device_info);
+    case MIP_FIELD_BASE_DEVICE_INFO:
+        return mip_base_device_info_from_json(jr, pos, &value->u.base_device_info);
+    case MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS:
+        return mip_base_get_device_descriptors_from_json(jr, pos, &value->u.base_get_device_descriptors);
+    case MIP_FIELD_BASE_DEVICE_DESCRIPTORS:
+        return mip_base_device_descriptors_from_json(jr, pos, &value->u.base_device_descriptors);
+    case MIP_FIELD_BASE_BUILT_IN_TEST:
+        return mip_base_built_in_test_from_json(jr, pos, &value->u.base_built_in_test);
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45:
+        return mip_base_built_in_test_result_gx5_45_from_json(jr, pos,
+                                                              &value->u.base_built_in_test_result_gx5_45);
+    case MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_CV7_INS:
+        return mip_base_built_in_test_result_cv7_ins_from_json(jr, pos,
+                                                               &value->u.base_built_in_test_result_cv7_ins);
+    case MIP_FIELD_BASE_RESUME:
+        return mip_base_resume_from_json(jr, pos, &value->u.base_resume);
+    case MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS:
+        return mip_base_get_extended_descriptors_from_json(jr, pos, &value->u.base_get_extended_descriptors);
+    case MIP_FIELD_BASE_EXTENDED_DESCRIPTORS:
+        return mip_base_extended_descriptors_from_json(jr, pos, &value->u.base_extended_descriptors);
+    case MIP_FIELD_BASE_CONTINUOUS_BIT:
+        return mip_base_continuous_bit_from_json(jr, pos, &value->u.base_continuous_bit);
+    case MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT:
+        return mip_base_continuous_bit_result_from_json(jr, pos, &value->u.base_continuous_bit_result);
+    case MIP_FIELD_BASE_COMM_PORT_SPEED:
+        return mip_base_comm_port_speed_from_json(jr, pos, &value->u.base_comm_port_speed);
+    case MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE:
+        return mip_base_comm_port_speed_response_from_json(jr, pos, &value->u.base_comm_port_speed_response);
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45:
+        return mip_base_gps_time_update_gx5_45_from_json(jr, pos, &value->u.base_gps_time_update_gx5_45);
+    case MIP_FIELD_BASE_GPS_TIME_UPDATE_CV7_INS:
+        return mip_base_gps_time_update_cv7_ins_from_json(jr, pos, &value->u.base_gps_time_update_cv7_ins);
+    case MIP_FIELD_BASE_GPS_WEEK:
+        return mip_base_gps_week_from_json(jr, pos, &value->u.base_gps_week);
+    case MIP_FIELD_BASE_GPS_SECONDS:
+        return mip_base_gps_seconds_from_json(jr, pos, &value->u.base_gps_seconds);
+    case MIP_FIELD_BASE_DEVICE_RESET:
+        return mip_base_device_reset_from_json(jr, pos, &value->u.base_device_reset);
+    case MIP_FIELD_THREEDM_EVENT_CONTROL:
+        return mip_threedm_event_control_from_json(jr, pos, &value->u.threedm_event_control);
+    case MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE:
+        return mip_threedm_event_control_response_from_json(jr, pos,
+                                                            &value->u.threedm_event_control_response);
+    case MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS:
+        return mip_threedm_get_event_trigger_status_from_json(jr, pos,
+                                                              &value->u.threedm_get_event_trigger_status);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS:
+        return mip_threedm_event_trigger_status_from_json(jr, pos, &value->u.threedm_event_trigger_status);
+    case MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS:
+        return mip_threedm_get_event_action_status_from_json(jr, pos,
+                                                             &value->u.threedm_get_event_action_status);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_STATUS:
+        return mip_threedm_event_action_status_from_json(jr, pos, &value->u.threedm_event_action_status);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG:
+        return mip_threedm_event_trigger_config_from_json(jr, pos, &value->u.threedm_event_trigger_config);
+    case MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE:
+        return mip_threedm_event_trigger_config_response_from_json(
+            jr, pos, &value->u.threedm_event_trigger_config_response);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG:
+        return mip_threedm_event_action_config_from_json(jr, pos, &value->u.threedm_event_action_config);
+    case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
+        return mip_threedm_event_action_config_response_from_json(
+            jr, pos, &value->u.threedm_event_action_config_response);
+    case MIP_FIELD_SENSOR_SCALED_ACCEL:
+        return mip_sensor_scaled_accel_from_json(jr, pos, &value->u.sensor_scaled_accel);
+    case MIP_FIELD_SENSOR_SCALED_GYRO:
+        return mip_sensor_scaled_gyro_from_json(jr, pos, &value->u.sensor_scaled_gyro);
+    case MIP_FIELD_SENSOR_SCALED_MAG:
+        return mip_sensor_scaled_mag_from_json(jr, pos, &value->u.sensor_scaled_mag);
+    case MIP_FIELD_NONE:
+    case MIP_FIELD_COUNT:
+    default:
+        (void)pos;
+        return mip_jr_fail(jr, "no such field layout");
+    }
+}

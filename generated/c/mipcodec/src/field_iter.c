@@ -1,0 +1,73 @@
+/* Splits a packet payload into fields. Generated: do not edit. */
+#include "mipcodec/field_iter.h"
+
+#include <stdio.h>
+
+void mip_field_iter_init(mip_field_iter_t *it, const uint8_t *payload, size_t len) {
+    it->payload = payload;
+    it->len = payload ? len : 0;
+    it->pos = 0;
+}
+
+static bool trailing(mip_field_iter_t *it, mip_field_entry_t *entry, mip_trailing_kind_t why) {
+    entry->kind = MIP_ENTRY_TRAILING;
+    entry->offset = it->pos;
+    entry->descriptor = 0;
+    entry->data = it->payload + it->pos;
+    entry->length = it->len - it->pos;
+    entry->trailing = why;
+    it->pos = it->len;
+    return true;
+}
+
+bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry) {
+    size_t left = it->len - it->pos;
+    size_t length;
+    size_t total;
+    const uint8_t *head;
+    if (left == 0) {
+        return false;
+    }
+    entry->length_byte = 0;
+    if (left < MIP_FIELD_HEADER_SIZE) {
+        return trailing(it, entry, MIP_TRAILING_SHORT_HEADER);
+    }
+    head = it->payload + it->pos;
+    length = head[MIP_FIELD_LENGTH_OFFSET];
+    entry->length_byte = head[MIP_FIELD_LENGTH_OFFSET];
+    if (length < MIP_FIELD_HEADER_SIZE) {
+        return trailing(it, entry, MIP_TRAILING_SHORT_LENGTH);
+    }
+    total = length;
+    if (total > left) {
+        return trailing(it, entry, MIP_TRAILING_OVERRUN);
+    }
+    entry->kind = MIP_ENTRY_FIELD;
+    entry->offset = it->pos;
+    entry->descriptor = head[MIP_FIELD_DESCRIPTOR_OFFSET];
+    entry->data = head + MIP_FIELD_HEADER_SIZE;
+    entry->length = total - MIP_FIELD_HEADER_SIZE;
+    entry->trailing = MIP_TRAILING_SHORT_HEADER;
+    it->pos += total;
+    return true;
+}
+
+size_t mip_trailing_format(const mip_field_entry_t *entry, char *buf, size_t cap) {
+    int n;
+    switch (entry->trailing) {
+    case MIP_TRAILING_SHORT_LENGTH:
+        n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
+                     (unsigned)entry->length_byte, entry->offset);
+        break;
+    case MIP_TRAILING_OVERRUN:
+        n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
+                     (unsigned)entry->length_byte, entry->offset, entry->length);
+        break;
+    case MIP_TRAILING_SHORT_HEADER:
+    default:
+        n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
+                     MIP_FIELD_HEADER_SIZE, entry->length);
+        break;
+    }
+    return n < 0 ? 0 : (size_t)n;
+}

@@ -1,0 +1,116 @@
+/* Checksum and packet builder. Generated: do not edit. */
+#include "mipcodec/framing.h"
+
+#include <string.h>
+
+const uint8_t mip_sync[MIP_SYNC_SIZE] = {0x75, 0x65};
+
+void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]) {
+    unsigned sum1 = 0;
+    unsigned sum2 = 0;
+    size_t i;
+    for (i = 0; i < len; i++) {
+        sum1 = (sum1 + bytes[i]) & 0xFFu;
+        sum2 = (sum2 + sum1) & 0xFFu;
+    }
+    out[0] = (uint8_t)sum1;
+    out[1] = (uint8_t)sum2;
+}
+
+bool mip_packet_valid(const uint8_t *packet, size_t len) {
+    uint8_t ck[MIP_CHECKSUM_SIZE];
+    size_t payload;
+    if (len < MIP_HEADER_SIZE + MIP_CHECKSUM_SIZE || memcmp(packet, mip_sync, MIP_SYNC_SIZE) != 0) {
+        return false;
+    }
+    payload = packet[MIP_LENGTH_OFFSET];
+    if (payload > MIP_MAX_PAYLOAD || len != MIP_HEADER_SIZE + payload + MIP_CHECKSUM_SIZE) {
+        return false;
+    }
+    mip_checksum(packet, MIP_HEADER_SIZE + payload, ck);
+    return memcmp(ck, packet + MIP_HEADER_SIZE + payload, MIP_CHECKSUM_SIZE) == 0;
+}
+
+uint8_t mip_packet_set(const uint8_t *packet) {
+    return packet[MIP_SET_OFFSET];
+}
+
+uint8_t mip_packet_payload_length(const uint8_t *packet) {
+    return packet[MIP_LENGTH_OFFSET];
+}
+
+const uint8_t *mip_packet_payload(const uint8_t *packet) {
+    return packet + MIP_HEADER_SIZE;
+}
+
+void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
+    b->buf = buf;
+    b->cap = buf ? cap : 0;
+    b->len = 0;
+    b->status = MIP_OK;
+    if (b->cap < MIP_HEADER_SIZE) {
+        b->status = MIP_ERR_BUFFER;
+        return;
+    }
+    memcpy(buf, mip_sync, MIP_SYNC_SIZE);
+    buf[MIP_SET_OFFSET] = set;
+    buf[MIP_LENGTH_OFFSET] = 0;
+    b->len = MIP_HEADER_SIZE;
+}
+
+static mip_status_t reserve(mip_packet_builder_t *b, size_t n) {
+    if (b->status != MIP_OK) {
+        return b->status;
+    }
+    if (b->len - MIP_HEADER_SIZE + n > MIP_MAX_PAYLOAD) {
+        b->status = MIP_ERR_TOO_LONG;
+    } else if (b->cap - b->len < n + MIP_CHECKSUM_SIZE) {
+        b->status = MIP_ERR_BUFFER;
+    }
+    return b->status;
+}
+
+mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                  size_t data_len) {
+    if (b->status == MIP_OK && data_len > MIP_MAX_FIELD_DATA) {
+        b->status = MIP_ERR_TOO_LONG;
+    }
+    if (reserve(b, MIP_FIELD_HEADER_SIZE + data_len) != MIP_OK) {
+        return b->status;
+    }
+    b->buf[b->len + MIP_FIELD_LENGTH_OFFSET] = (uint8_t)(data_len + MIP_FIELD_LENGTH_ADJUST);
+    b->buf[b->len + MIP_FIELD_DESCRIPTOR_OFFSET] = descriptor;
+    if (data_len > 0) {
+        memcpy(b->buf + b->len + MIP_FIELD_HEADER_SIZE, data, data_len);
+    }
+    b->len += MIP_FIELD_HEADER_SIZE + data_len;
+    return MIP_OK;
+}
+
+mip_status_t mip_packet_add_raw(mip_packet_builder_t *b, const uint8_t *bytes, size_t len) {
+    if (reserve(b, len) != MIP_OK) {
+        return b->status;
+    }
+    if (len > 0) {
+        memcpy(b->buf + b->len, bytes, len);
+    }
+    b->len += len;
+    return MIP_OK;
+}
+
+mip_status_t mip_packet_finish(mip_packet_builder_t *b, size_t *len_out) {
+    if (b->status != MIP_OK) {
+        return b->status;
+    }
+    if (b->cap - b->len < MIP_CHECKSUM_SIZE) {
+        b->status = MIP_ERR_BUFFER;
+        return b->status;
+    }
+    b->buf[MIP_LENGTH_OFFSET] = (uint8_t)(b->len - MIP_HEADER_SIZE);
+    mip_checksum(b->buf, b->len, b->buf + b->len);
+    b->len += MIP_CHECKSUM_SIZE;
+    if (len_out) {
+        *len_out = b->len;
+    }
+    return MIP_OK;
+}

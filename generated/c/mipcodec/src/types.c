@@ -1,0 +1,979 @@
+/* Read/write/JSON functions of the named structs and unions. Generated: do not edit. */
+#include "types_internal.h"
+
+#include <string.h>
+
+/* ---- ActionGpioParams */
+
+int mip_action_gpio_params_read(mip_reader_t *r, mip_action_gpio_params_t *out) {
+    mip_rd_push(r, "pin");
+    if (mip_rd_u8(r, &out->pin)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "mode");
+    if (mip_rd_u8(r, &out->mode)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_action_gpio_params_write(mip_writer_t *w, const mip_action_gpio_params_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->pin)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->mode)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_action_gpio_params_to_json(mip_jw_t *w, const mip_action_gpio_params_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "pin");
+    mip_jw_u8(w, &in->pin);
+    mip_jw_key(w, &first, "mode");
+    mip_jw_u8(w, &in->mode);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_action_gpio_params_from_json(mip_jr_t *jr, size_t pos, mip_action_gpio_params_t *out) {
+    static const char *const keys[] = {"pin", "mode"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "pin", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"pin\"");
+    }
+    {
+        mip_jr_push(jr, "pin");
+        if (mip_jr_u8(jr, vp, &out->pin)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "mode", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"mode\"");
+    }
+    {
+        mip_jr_push(jr, "mode");
+        if (mip_jr_u8(jr, vp, &out->mode)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- MessageParams */
+
+int mip_message_params_read(mip_reader_t *r, mip_message_params_t *out) {
+    size_t i;
+    mip_rd_push(r, "desc_set");
+    if (mip_rd_u8(r, &out->desc_set)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "decimation");
+    if (mip_rd_u16(r, &out->decimation)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "num_fields");
+    if (mip_rd_u8(r, &out->num_fields)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "descriptors");
+    if (out->num_fields > 12) {
+        return mip_rd_count_error(r, (uint64_t)out->num_fields, 12);
+    }
+    for (i = 0; i < (size_t)out->num_fields; i++) {
+        mip_rd_index(r, i);
+        if (mip_rd_u8(r, &out->descriptors[i])) {
+            return -1;
+        }
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_message_params_write(mip_writer_t *w, const mip_message_params_t *in) {
+    mip_status_t st;
+    size_t i;
+    if ((st = mip_wr_u8(w, &in->desc_set)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->decimation)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->num_fields)) != MIP_OK) {
+        return st;
+    }
+    if (in->num_fields > 12) {
+        return MIP_ERR_INVALID;
+    }
+    for (i = 0; i < (size_t)in->num_fields; i++) {
+        if ((st = mip_wr_u8(w, &in->descriptors[i])) != MIP_OK) {
+            return st;
+        }
+    }
+    return MIP_OK;
+}
+
+void mip_message_params_to_json(mip_jw_t *w, const mip_message_params_t *in) {
+    int first = 1;
+    size_t i;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "desc_set");
+    mip_jw_u8(w, &in->desc_set);
+    mip_jw_key(w, &first, "decimation");
+    mip_jw_u16(w, &in->decimation);
+    mip_jw_key(w, &first, "num_fields");
+    mip_jw_u8(w, &in->num_fields);
+    mip_jw_key(w, &first, "descriptors");
+    mip_jw_raw(w, "[", 1);
+    for (i = 0; i < (size_t)in->num_fields && i < 12; i++) {
+        mip_jw_sep(w, i);
+        mip_jw_u8(w, &in->descriptors[i]);
+    }
+    mip_jw_raw(w, "]", 1);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_message_params_from_json(mip_jr_t *jr, size_t pos, mip_message_params_t *out) {
+    static const char *const keys[] = {"desc_set", "decimation", "num_fields", "descriptors"};
+    size_t vp = 0;
+    int found;
+    size_t i;
+    size_t it = 0;
+    size_t ep = 0;
+    if (mip_jr_object(jr, pos, keys, 4)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "desc_set", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"desc_set\"");
+    }
+    {
+        mip_jr_push(jr, "desc_set");
+        if (mip_jr_u8(jr, vp, &out->desc_set)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "decimation", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"decimation\"");
+    }
+    {
+        mip_jr_push(jr, "decimation");
+        if (mip_jr_u16(jr, vp, &out->decimation)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "num_fields", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"num_fields\"");
+    }
+    {
+        mip_jr_push(jr, "num_fields");
+        if (mip_jr_u8(jr, vp, &out->num_fields)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "descriptors", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"descriptors\"");
+    }
+    {
+        mip_jr_push(jr, "descriptors");
+        if (mip_jr_array(jr, vp, &it)) {
+            return -1;
+        }
+        for (i = 0;; i++) {
+            int more = mip_jr_next(jr, &it, &ep);
+            if (more < 0) {
+                return -1;
+            }
+            if (!more) {
+                break;
+            }
+            if (i >= 12) {
+                return mip_jr_fail(jr, "more than 12 elements");
+            }
+            mip_jr_index(jr, i);
+            if (mip_jr_u8(jr, ep, &out->descriptors[i])) {
+                return -1;
+            }
+        }
+        mip_jr_index(jr, SIZE_MAX);
+        if (i != (size_t)out->num_fields) {
+            return mip_jr_fail(jr, "%zu elements but num_fields is %zu", i, (size_t)out->num_fields);
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- ActionStatusEntry */
+
+int mip_action_status_entry_read(mip_reader_t *r, mip_action_status_entry_t *out) {
+    mip_rd_push(r, "action_type");
+    if (mip_rd_u8(r, &out->action_type)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "trigger_id");
+    if (mip_rd_u8(r, &out->trigger_id)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_action_status_entry_write(mip_writer_t *w, const mip_action_status_entry_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->action_type)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->trigger_id)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_action_status_entry_to_json(mip_jw_t *w, const mip_action_status_entry_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "action_type");
+    mip_jw_u8(w, &in->action_type);
+    mip_jw_key(w, &first, "trigger_id");
+    mip_jw_u8(w, &in->trigger_id);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_action_status_entry_from_json(mip_jr_t *jr, size_t pos, mip_action_status_entry_t *out) {
+    static const char *const keys[] = {"action_type", "trigger_id"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "action_type", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"action_type\"");
+    }
+    {
+        mip_jr_push(jr, "action_type");
+        if (mip_jr_u8(jr, vp, &out->action_type)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "trigger_id", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"trigger_id\"");
+    }
+    {
+        mip_jr_push(jr, "trigger_id");
+        if (mip_jr_u8(jr, vp, &out->trigger_id)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- CombinationParams */
+
+int mip_combination_params_read(mip_reader_t *r, mip_combination_params_t *out) {
+    size_t i;
+    mip_rd_push(r, "logic_table");
+    if (mip_rd_u16(r, &out->logic_table)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "input_triggers");
+    for (i = 0; i < 4; i++) {
+        mip_rd_index(r, i);
+        if (mip_rd_u8(r, &out->input_triggers[i])) {
+            return -1;
+        }
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_combination_params_write(mip_writer_t *w, const mip_combination_params_t *in) {
+    mip_status_t st;
+    size_t i;
+    if ((st = mip_wr_u16(w, &in->logic_table)) != MIP_OK) {
+        return st;
+    }
+    for (i = 0; i < 4; i++) {
+        if ((st = mip_wr_u8(w, &in->input_triggers[i])) != MIP_OK) {
+            return st;
+        }
+    }
+    return MIP_OK;
+}
+
+void mip_combination_params_to_json(mip_jw_t *w, const mip_combination_params_t *in) {
+    int first = 1;
+    size_t i;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "logic_table");
+    mip_jw_u16(w, &in->logic_table);
+    mip_jw_key(w, &first, "input_triggers");
+    mip_jw_raw(w, "[", 1);
+    for (i = 0; i < 4; i++) {
+        mip_jw_sep(w, i);
+        mip_jw_u8(w, &in->input_triggers[i]);
+    }
+    mip_jw_raw(w, "]", 1);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_combination_params_from_json(mip_jr_t *jr, size_t pos, mip_combination_params_t *out) {
+    static const char *const keys[] = {"logic_table", "input_triggers"};
+    size_t vp = 0;
+    int found;
+    size_t i;
+    size_t it = 0;
+    size_t ep = 0;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "logic_table", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"logic_table\"");
+    }
+    {
+        mip_jr_push(jr, "logic_table");
+        if (mip_jr_u16(jr, vp, &out->logic_table)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "input_triggers", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"input_triggers\"");
+    }
+    {
+        mip_jr_push(jr, "input_triggers");
+        if (mip_jr_array(jr, vp, &it)) {
+            return -1;
+        }
+        for (i = 0;; i++) {
+            int more = mip_jr_next(jr, &it, &ep);
+            if (more < 0) {
+                return -1;
+            }
+            if (!more) {
+                break;
+            }
+            if (i >= 4) {
+                return mip_jr_fail(jr, "more than 4 elements");
+            }
+            mip_jr_index(jr, i);
+            if (mip_jr_u8(jr, ep, &out->input_triggers[i])) {
+                return -1;
+            }
+        }
+        mip_jr_index(jr, SIZE_MAX);
+        if (i != 4) {
+            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- DeviceInfo */
+
+int mip_device_info_read(mip_reader_t *r, mip_device_info_t *out) {
+    mip_rd_push(r, "firmware_version");
+    if (mip_rd_u16(r, &out->firmware_version)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "model_name");
+    if (mip_rd_chars(r, out->model_name, 16)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "model_number");
+    if (mip_rd_chars(r, out->model_number, 16)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "serial_number");
+    if (mip_rd_chars(r, out->serial_number, 16)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "lot_number");
+    if (mip_rd_chars(r, out->lot_number, 16)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "device_options");
+    if (mip_rd_chars(r, out->device_options, 16)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_device_info_write(mip_writer_t *w, const mip_device_info_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u16(w, &in->firmware_version)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_chars(w, in->model_name, 16)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_chars(w, in->model_number, 16)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_chars(w, in->serial_number, 16)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_chars(w, in->lot_number, 16)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_chars(w, in->device_options, 16)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_device_info_to_json(mip_jw_t *w, const mip_device_info_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "firmware_version");
+    mip_jw_u16(w, &in->firmware_version);
+    mip_jw_key(w, &first, "model_name");
+    mip_jw_chars(w, in->model_name, 16);
+    mip_jw_key(w, &first, "model_number");
+    mip_jw_chars(w, in->model_number, 16);
+    mip_jw_key(w, &first, "serial_number");
+    mip_jw_chars(w, in->serial_number, 16);
+    mip_jw_key(w, &first, "lot_number");
+    mip_jw_chars(w, in->lot_number, 16);
+    mip_jw_key(w, &first, "device_options");
+    mip_jw_chars(w, in->device_options, 16);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_device_info_from_json(mip_jr_t *jr, size_t pos, mip_device_info_t *out) {
+    static const char *const keys[] = {"firmware_version", "model_name", "model_number",
+                                       "serial_number",    "lot_number", "device_options"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 6)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "firmware_version", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"firmware_version\"");
+    }
+    {
+        mip_jr_push(jr, "firmware_version");
+        if (mip_jr_u16(jr, vp, &out->firmware_version)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "model_name", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"model_name\"");
+    }
+    {
+        mip_jr_push(jr, "model_name");
+        if (mip_jr_chars(jr, vp, out->model_name, 16)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "model_number", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"model_number\"");
+    }
+    {
+        mip_jr_push(jr, "model_number");
+        if (mip_jr_chars(jr, vp, out->model_number, 16)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "serial_number", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"serial_number\"");
+    }
+    {
+        mip_jr_push(jr, "serial_number");
+        if (mip_jr_chars(jr, vp, out->serial_number, 16)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "lot_number", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"lot_number\"");
+    }
+    {
+        mip_jr_push(jr, "lot_number");
+        if (mip_jr_chars(jr, vp, out->lot_number, 16)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "device_options", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"device_options\"");
+    }
+    {
+        mip_jr_push(jr, "device_options");
+        if (mip_jr_chars(jr, vp, out->device_options, 16)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- ThresholdParams */
+
+int mip_threshold_params_read(mip_reader_t *r, mip_threshold_params_t *out) {
+    mip_rd_push(r, "desc_set");
+    if (mip_rd_u8(r, &out->desc_set)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "field_desc");
+    if (mip_rd_u8(r, &out->field_desc)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "param_id");
+    if (mip_rd_u8(r, &out->param_id)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "type");
+    if (mip_rd_u8(r, &out->type)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "low_thres");
+    if (mip_rd_f64(r, &out->low_thres)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "high_thres");
+    if (mip_rd_f64(r, &out->high_thres)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_threshold_params_write(mip_writer_t *w, const mip_threshold_params_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->desc_set)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->field_desc)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->param_id)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_f64(w, &in->low_thres)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_f64(w, &in->high_thres)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_threshold_params_to_json(mip_jw_t *w, const mip_threshold_params_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "desc_set");
+    mip_jw_u8(w, &in->desc_set);
+    mip_jw_key(w, &first, "field_desc");
+    mip_jw_u8(w, &in->field_desc);
+    mip_jw_key(w, &first, "param_id");
+    mip_jw_u8(w, &in->param_id);
+    mip_jw_key(w, &first, "type");
+    mip_jw_u8(w, &in->type);
+    mip_jw_key(w, &first, "low_thres");
+    mip_jw_f64(w, &in->low_thres);
+    mip_jw_key(w, &first, "high_thres");
+    mip_jw_f64(w, &in->high_thres);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_threshold_params_from_json(mip_jr_t *jr, size_t pos, mip_threshold_params_t *out) {
+    static const char *const keys[] = {"desc_set", "field_desc", "param_id",
+                                       "type",     "low_thres",  "high_thres"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 6)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "desc_set", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"desc_set\"");
+    }
+    {
+        mip_jr_push(jr, "desc_set");
+        if (mip_jr_u8(jr, vp, &out->desc_set)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "field_desc", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"field_desc\"");
+    }
+    {
+        mip_jr_push(jr, "field_desc");
+        if (mip_jr_u8(jr, vp, &out->field_desc)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "param_id", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"param_id\"");
+    }
+    {
+        mip_jr_push(jr, "param_id");
+        if (mip_jr_u8(jr, vp, &out->param_id)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "type", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"type\"");
+    }
+    {
+        mip_jr_push(jr, "type");
+        if (mip_jr_u8(jr, vp, &out->type)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "low_thres", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"low_thres\"");
+    }
+    {
+        mip_jr_push(jr, "low_thres");
+        if (mip_jr_f64(jr, vp, &out->low_thres)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "high_thres", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"high_thres\"");
+    }
+    {
+        mip_jr_push(jr, "high_thres");
+        if (mip_jr_f64(jr, vp, &out->high_thres)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- TriggerGpioParams */
+
+int mip_trigger_gpio_params_read(mip_reader_t *r, mip_trigger_gpio_params_t *out) {
+    mip_rd_push(r, "pin");
+    if (mip_rd_u8(r, &out->pin)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "mode");
+    if (mip_rd_u8(r, &out->mode)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_trigger_gpio_params_write(mip_writer_t *w, const mip_trigger_gpio_params_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->pin)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->mode)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_trigger_gpio_params_to_json(mip_jw_t *w, const mip_trigger_gpio_params_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "pin");
+    mip_jw_u8(w, &in->pin);
+    mip_jw_key(w, &first, "mode");
+    mip_jw_u8(w, &in->mode);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_trigger_gpio_params_from_json(mip_jr_t *jr, size_t pos, mip_trigger_gpio_params_t *out) {
+    static const char *const keys[] = {"pin", "mode"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "pin", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"pin\"");
+    }
+    {
+        mip_jr_push(jr, "pin");
+        if (mip_jr_u8(jr, vp, &out->pin)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "mode", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"mode\"");
+    }
+    {
+        mip_jr_push(jr, "mode");
+        if (mip_jr_u8(jr, vp, &out->mode)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- TriggerStatusEntry */
+
+int mip_trigger_status_entry_read(mip_reader_t *r, mip_trigger_status_entry_t *out) {
+    mip_rd_push(r, "type");
+    if (mip_rd_u8(r, &out->type)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "status");
+    if (mip_rd_u8(r, &out->status)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_trigger_status_entry_write(mip_writer_t *w, const mip_trigger_status_entry_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->status)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_trigger_status_entry_to_json(mip_jw_t *w, const mip_trigger_status_entry_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "type");
+    mip_jw_u8(w, &in->type);
+    mip_jw_key(w, &first, "status");
+    mip_jw_u8(w, &in->status);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_trigger_status_entry_from_json(mip_jr_t *jr, size_t pos, mip_trigger_status_entry_t *out) {
+    static const char *const keys[] = {"type", "status"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "type", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"type\"");
+    }
+    {
+        mip_jr_push(jr, "type");
+        if (mip_jr_u8(jr, vp, &out->type)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "status", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"status\"");
+    }
+    {
+        mip_jr_push(jr, "status");
+        if (mip_jr_u8(jr, vp, &out->status)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- ActionParams (selected by mip_action_type_t) */
+
+int mip_action_params_read(mip_reader_t *r, mip_action_type_t selector, mip_action_params_t *out) {
+    switch (selector) {
+    case MIP_ACTION_TYPE_NONE:
+        return 0;
+    case MIP_ACTION_TYPE_GPIO:
+        return mip_action_gpio_params_read(r, &out->gpio);
+    case MIP_ACTION_TYPE_MESSAGE:
+        return mip_message_params_read(r, &out->message);
+    default:
+        return mip_rd_selector_error_u(r, (uint64_t)selector);
+    }
+}
+
+mip_status_t mip_action_params_write(mip_writer_t *w, mip_action_type_t selector,
+                                     const mip_action_params_t *in) {
+    switch (selector) {
+    case MIP_ACTION_TYPE_NONE:
+        return MIP_OK;
+    case MIP_ACTION_TYPE_GPIO:
+        return mip_action_gpio_params_write(w, &in->gpio);
+    case MIP_ACTION_TYPE_MESSAGE:
+        return mip_message_params_write(w, &in->message);
+    default:
+        (void)w;
+        (void)in;
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_action_params_to_json(mip_jw_t *w, mip_action_type_t selector, const mip_action_params_t *in) {
+    switch (selector) {
+    case MIP_ACTION_TYPE_GPIO:
+        mip_action_gpio_params_to_json(w, &in->gpio);
+        return;
+    case MIP_ACTION_TYPE_MESSAGE:
+        mip_message_params_to_json(w, &in->message);
+        return;
+    default:
+        (void)in;
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_action_params_from_json(mip_jr_t *jr, size_t pos, mip_action_type_t selector,
+                                mip_action_params_t *out) {
+    switch (selector) {
+    case MIP_ACTION_TYPE_NONE:
+        return mip_jr_null(jr, pos);
+    case MIP_ACTION_TYPE_GPIO:
+        return mip_action_gpio_params_from_json(jr, pos, &out->gpio);
+    case MIP_ACTION_TYPE_MESSAGE:
+        return mip_message_params_from_json(jr, pos, &out->message);
+    default:
+        (void)pos;
+        (void)out;
+        return mip_jr_fail(jr, "no member for selector value %llu", (unsigned long long)selector);
+    }
+}
+
+/* ---- TriggerParams (selected by mip_trigger_type_t) */
+
+int mip_trigger_params_read(mip_reader_t *r, mip_trigger_type_t selector, mip_trigger_params_t *out) {
+    switch (selector) {
+    case MIP_TRIGGER_TYPE_NONE:
+        return 0;
+    case MIP_TRIGGER_TYPE_GPIO:
+        return mip_trigger_gpio_params_read(r, &out->gpio);
+    case MIP_TRIGGER_TYPE_THRESHOLD:
+        return mip_threshold_params_read(r, &out->threshold);
+    case MIP_TRIGGER_TYPE_COMBINATION:
+        return mip_combination_params_read(r, &out->combination);
+    default:
+        return mip_rd_selector_error_u(r, (uint64_t)selector);
+    }
+}
+
+mip_status_t mip_trigger_params_write(mip_writer_t *w, mip_trigger_type_t selector,
+                                      const mip_trigger_params_t *in) {
+    switch (selector) {
+    case MIP_TRIGGER_TYPE_NONE:
+        return MIP_OK;
+    case MIP_TRIGGER_TYPE_GPIO:
+        return mip_trigger_gpio_params_write(w, &in->gpio);
+    case MIP_TRIGGER_TYPE_THRESHOLD:
+        return mip_threshold_params_write(w, &in->threshold);
+    case MIP_TRIGGER_TYPE_COMBINATION:
+        return mip_combination_params_write(w, &in->combination);
+    default:
+        (void)w;
+        (void)in;
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_trigger_params_to_json(mip_jw_t *w, mip_trigger_type_t selector, const mip_trigger_params_t *in) {
+    switch (selector) {
+    case MIP_TRIGGER_TYPE_GPIO:
+        mip_trigger_gpio_params_to_json(w, &in->gpio);
+        return;
+    case MIP_TRIGGER_TYPE_THRESHOLD:
+        mip_threshold_params_to_json(w, &in->threshold);
+        return;
+    case MIP_TRIGGER_TYPE_COMBINATION:
+        mip_combination_params_to_json(w, &in->combination);
+        return;
+    default:
+        (void)in;
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_trigger_params_from_json(mip_jr_t *jr, size_t pos, mip_trigger_type_t selector,
+                                 mip_trigger_params_t *out) {
+    switch (selector) {
+    case MIP_TRIGGER_TYPE_NONE:
+        return mip_jr_null(jr, pos);
+    case MIP_TRIGGER_TYPE_GPIO:
+        return mip_trigger_gpio_params_from_json(jr, pos, &out->gpio);
+    case MIP_TRIGGER_TYPE_THRESHOLD:
+        return mip_threshold_params_from_json(jr, pos, &out->threshold);
+    case MIP_TRIGGER_TYPE_COMBINATION:
+        return mip_combination_params_from_json(jr, pos, &out->combination);
+    default:
+        (void)pos;
+        (void)out;
+        return mip_jr_fail(jr, "no member for selector value %llu", (unsigned long long)selector);
+    }
+}

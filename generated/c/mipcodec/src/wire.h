@@ -1,0 +1,72 @@
+/* Private: bounds-checked big-endian reader and writer used by the generated layouts.
+ * Generated: do not edit. */
+#ifndef MIP_WIRE_H
+#define MIP_WIRE_H
+
+#include "mipcodec/status.h"
+
+/* Reads field data. Every read checks the bytes left first; on failure it fills *err with the
+ * current parameter path and returns -1 (0 on success). */
+typedef struct {
+    const uint8_t *data;
+    size_t len;
+    size_t pos;
+    mip_path_segment_t path[MIP_PATH_MAX_DEPTH];
+    size_t depth;
+    mip_decode_error_t *err;
+} mip_reader_t;
+
+void mip_reader_init(mip_reader_t *r, const uint8_t *data, size_t len, mip_decode_error_t *err);
+
+/* Parameter path bookkeeping (the names are string literals). */
+void mip_rd_push(mip_reader_t *r, const char *name);
+void mip_rd_index(mip_reader_t *r, size_t index);
+void mip_rd_pop(mip_reader_t *r);
+
+int mip_rd_bool(mip_reader_t *r, bool *out);
+int mip_rd_char(mip_reader_t *r, char *out);
+int mip_rd_u8(mip_reader_t *r, uint8_t *out);
+int mip_rd_u16(mip_reader_t *r, uint16_t *out);
+int mip_rd_u32(mip_reader_t *r, uint32_t *out);
+int mip_rd_u64(mip_reader_t *r, uint64_t *out);
+int mip_rd_s8(mip_reader_t *r, int8_t *out);
+int mip_rd_s16(mip_reader_t *r, int16_t *out);
+int mip_rd_s32(mip_reader_t *r, int32_t *out);
+int mip_rd_s64(mip_reader_t *r, int64_t *out);
+int mip_rd_f32(mip_reader_t *r, float *out);
+int mip_rd_f64(mip_reader_t *r, double *out);
+/* A string of exactly n bytes, kept verbatim. */
+int mip_rd_chars(mip_reader_t *r, char *out, size_t n);
+/* A `remaining` array of fixed-size elements: the element count, checked against max. */
+int mip_rd_remaining(mip_reader_t *r, size_t elem_size, uint64_t max, size_t *count);
+/* Errors raised by generated code. */
+int mip_rd_count_error(mip_reader_t *r, uint64_t count, uint64_t max);
+int mip_rd_selector_error_u(mip_reader_t *r, uint64_t value);
+int mip_rd_selector_error_s(mip_reader_t *r, int64_t value);
+/* After the last parameter: leftover bytes are an error. */
+int mip_rd_finish(mip_reader_t *r);
+
+/* Writes field data into a bounded buffer; functions return MIP_OK or MIP_ERR_BUFFER. */
+typedef struct {
+    uint8_t *buf;
+    size_t cap;
+    size_t len;
+} mip_writer_t;
+
+void mip_writer_init(mip_writer_t *w, uint8_t *buf, size_t cap);
+
+mip_status_t mip_wr_bool(mip_writer_t *w, const bool *v);
+mip_status_t mip_wr_char(mip_writer_t *w, const char *v);
+mip_status_t mip_wr_u8(mip_writer_t *w, const uint8_t *v);
+mip_status_t mip_wr_u16(mip_writer_t *w, const uint16_t *v);
+mip_status_t mip_wr_u32(mip_writer_t *w, const uint32_t *v);
+mip_status_t mip_wr_u64(mip_writer_t *w, const uint64_t *v);
+mip_status_t mip_wr_s8(mip_writer_t *w, const int8_t *v);
+mip_status_t mip_wr_s16(mip_writer_t *w, const int16_t *v);
+mip_status_t mip_wr_s32(mip_writer_t *w, const int32_t *v);
+mip_status_t mip_wr_s64(mip_writer_t *w, const int64_t *v);
+mip_status_t mip_wr_f32(mip_writer_t *w, const float *v);
+mip_status_t mip_wr_f64(mip_writer_t *w, const double *v);
+mip_status_t mip_wr_chars(mip_writer_t *w, const char *v, size_t n);
+
+#endif

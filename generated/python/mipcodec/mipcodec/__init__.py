@@ -1,0 +1,76 @@
+"""MicroStrain MIP (Microstrain Inertial Packet) protocol: typed encoder/decoder generated from the protocol spec.
+
+Modules: one per descriptor set (base, threedm, sensor) holding a
+dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);
+`reserved` (fields reserved in every set of a kind); `framing` (checksum, packet builder, stream
+parser, field splitter); `packets` (dispatch and canonical JSON lines); `cli` (decode/encode).
+
+    from mipcodec import Parser, PacketBuilder, decode_packet
+    for event in Parser().feed(data):
+        ...
+"""
+
+from . import base, reserved, sensor, threedm, types
+from .canonical import NaN
+from .codec import DecodeError, EncodeError, Field, Layout, Struct
+from .framing import (
+    FramingError,
+    PacketBuilder,
+    Parser,
+    RawPacket,
+    Skip,
+    build_packet,
+    checksum_bytes,
+    fletcher16,
+    iter_fields,
+    parse,
+)
+from .packets import (
+    DecodedField,
+    Packet,
+    RawField,
+    Trailing,
+    decode_bytes,
+    decode_field,
+    decode_packet,
+    decode_stream,
+    encode_line,
+    encode_lines,
+)
+from .registry import DEVICES, lookup
+
+__all__ = [
+    "base",
+    "reserved",
+    "sensor",
+    "threedm",
+    "types",
+    "NaN",
+    "DecodeError",
+    "EncodeError",
+    "Field",
+    "Layout",
+    "Struct",
+    "FramingError",
+    "PacketBuilder",
+    "Parser",
+    "RawPacket",
+    "Skip",
+    "build_packet",
+    "checksum_bytes",
+    "fletcher16",
+    "iter_fields",
+    "parse",
+    "DecodedField",
+    "Packet",
+    "RawField",
+    "Trailing",
+    "decode_bytes",
+    "decode_field",
+    "decode_packet",
+    "decode_stream",
+    "encode_line",
+    "encode_lines",
+    "DEVICES",
+    "lookup",
+]

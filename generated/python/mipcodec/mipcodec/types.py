@@ -1,0 +1,364 @@
+"""Named types of the MicroStrain MIP (Microstrain Inertial Packet) protocol: enums, bitfields, structs and unions.
+
+Enums are IntEnums; decoding keeps values that are not members as plain ints. Bitfields are ints
+whose members are properties (bool for one bit, int for several) with UPPER_CASE mask constants.
+Structs are dataclasses; a union value is the selected member's struct (None: member without data).
+"""
+
+from __future__ import annotations
+
+import dataclasses as _dc
+import typing as _ty
+
+from . import codec as _c
+
+
+class AckCode(_c.Enum):
+    """Ack/Nack code (u8)."""
+
+    OK = 0x00  # Success (ACK).
+    UNKNOWN_COMMAND = 0x01  # The command descriptor is not supported by this device.
+    BAD_CHECKSUM = 0x02  # An otherwise complete packet has a bad checksum.
+    INVALID_PARAMETER = 0x03  # One or more parameters are invalid.
+    COMMAND_FAILED = 0x04  # Device could not complete the command.
+    COMMAND_TIMEOUT = 0x05  # Device could not complete the command in time.
+    UNKNOWN_DESCRIPTOR_SET = 0x06  # Unknown descriptor set (CV7 only). (devices: cv7_ins)
+
+
+class ActionGpioMode(_c.Enum):
+    """GPIO action mode (u8)."""
+
+    DISABLED = 0x00  # Pin state will not be changed.
+    ACTIVE_HIGH = 0x01  # High while the trigger is active, low otherwise.
+    ACTIVE_LOW = 0x02  # Low while the trigger is active, high otherwise.
+    ONESHOT_HIGH = 0x05  # Set high each time the trigger activates.
+    ONESHOT_LOW = 0x06  # Set low each time the trigger activates.
+    TOGGLE = 0x07  # Toggle each time the trigger activates.
+
+
+class ActionType(_c.Enum):
+    """Event action type (u8)."""
+
+    NONE = 0x00  # No action. Parameters should be empty.
+    GPIO = 0x01  # Control the state of a GPIO pin.
+    MESSAGE = 0x02  # Output a data packet.
+
+
+@_c.bitfield("u32")
+class Cv7BitFlags(_c.Bitfield):
+    """3DM-CV7 commanded built-in test result (u32 bitfield)."""
+
+    _MEMBERS = (
+        ("general_hardware_fault", "general_hardware_fault", "GENERAL_HARDWARE_FAULT", 0, 1),
+        ("general_firmware_fault", "general_firmware_fault", "GENERAL_FIRMWARE_FAULT", 1, 1),
+        ("timing_overload", "timing_overload", "TIMING_OVERLOAD", 2, 1),
+        ("buffer_overrun", "buffer_overrun", "BUFFER_OVERRUN", 3, 1),
+        ("reserved_system", "reserved_system", "RESERVED_SYSTEM", 4, 4),
+        ("reserved_comms", "reserved_comms", "RESERVED_COMMS", 8, 4),
+        ("accelerometer_fault", "accelerometer_fault", "ACCELEROMETER_FAULT", 12, 1),
+        ("gyroscope_fault", "gyroscope_fault", "GYROSCOPE_FAULT", 13, 1),
+        ("magnetometer_fault", "magnetometer_fault", "MAGNETOMETER_FAULT", 14, 1),
+        ("pressure_sensor_fault", "pressure_sensor_fault", "PRESSURE_SENSOR_FAULT", 15, 1),
+        ("reserved_imu", "reserved_imu", "RESERVED_IMU", 16, 2),
+        ("calibration_error", "calibration_error", "CALIBRATION_ERROR", 18, 1),
+        ("general_imu_fault", "general_imu_fault", "GENERAL_IMU_FAULT", 19, 1),
+        ("reserved_filter", "reserved_filter", "RESERVED_FILTER", 20, 2),
+        ("filter_solution_fault", "filter_solution_fault", "FILTER_SOLUTION_FAULT", 22, 1),
+        ("general_filter_fault", "general_filter_fault", "GENERAL_FILTER_FAULT", 23, 1),
+        ("reserved", "reserved", "RESERVED", 24, 8),
+    )
+    GENERAL_HARDWARE_FAULT = 0x00000001  # bit 0: A critical hardware component has failed or is not operating properly.
+    # bit 1: System firmware has detected a serious, unexpected or abnormal condition.
+    GENERAL_FIRMWARE_FAULT = 0x00000002
+    TIMING_OVERLOAD = 0x00000004  # bit 2: The system cannot keep up with the processing demand.
+    BUFFER_OVERRUN = 0x00000008  # bit 3: A data buffer has reached its capacity.
+    RESERVED_SYSTEM = 0x000000F0  # bits 4-7: Reserved (system). (reserved)
+    RESERVED_COMMS = 0x00000F00  # bits 8-11: Reserved (comms). (reserved)
+    ACCELEROMETER_FAULT = 0x00001000  # bit 12: The accelerometer has been damaged or is inoperative.
+    GYROSCOPE_FAULT = 0x00002000  # bit 13: The gyroscope has been damaged or is inoperative.
+    MAGNETOMETER_FAULT = 0x00004000  # bit 14: The magnetometer has been damaged or is inoperative.
+    PRESSURE_SENSOR_FAULT = 0x00008000  # bit 15: The pressure sensor has been damaged or is inoperative.
+    RESERVED_IMU = 0x00030000  # bits 16-17: Reserved (IMU). (reserved)
+    CALIBRATION_ERROR = 0x00040000  # bit 18: One or more IMU calibration tables are invalid.
+    GENERAL_IMU_FAULT = 0x00080000  # bit 19: A problem has been detected in the IMU subsystem.
+    RESERVED_FILTER = 0x00300000  # bits 20-21: Reserved (filter). (reserved)
+    FILTER_SOLUTION_FAULT = 0x00400000  # bit 22: The filter solution is invalid (NaN in the filter output).
+    GENERAL_FILTER_FAULT = 0x00800000  # bit 23: A problem has been detected in the filter subsystem.
+    RESERVED = 0xFF000000  # bits 24-31: Reserved. (reserved)
+
+    general_hardware_fault = _c.bit(0)
+    general_firmware_fault = _c.bit(1)
+    timing_overload = _c.bit(2)
+    buffer_overrun = _c.bit(3)
+    reserved_system = _c.bits(4, 4)
+    reserved_comms = _c.bits(8, 4)
+    accelerometer_fault = _c.bit(12)
+    gyroscope_fault = _c.bit(13)
+    magnetometer_fault = _c.bit(14)
+    pressure_sensor_fault = _c.bit(15)
+    reserved_imu = _c.bits(16, 2)
+    calibration_error = _c.bit(18)
+    general_imu_fault = _c.bit(19)
+    reserved_filter = _c.bits(20, 2)
+    filter_solution_fault = _c.bit(22)
+    general_filter_fault = _c.bit(23)
+    reserved = _c.bits(24, 8)
+
+
+class EventControlMode(_c.Enum):
+    """Event trigger control mode (u8)."""
+
+    DISABLED = 0x00  # Trigger is disabled.
+    ENABLED = 0x01  # Trigger is enabled and will work normally.
+    TEST = 0x02  # Forces the trigger to the active state for testing purposes.
+    TEST_PULSE = 0x03  # Trigger is forced active for one event cycle only, then reverts.
+
+
+class FunctionSelector(_c.Enum):
+    """Function selector (u8).
+
+    First parameter of settings commands; chooses what the command does.
+    """
+
+    WRITE = 0x01  # Apply new setting.
+    READ = 0x02  # Read current setting.
+    SAVE = 0x03  # Save current setting to non-volatile memory.
+    LOAD = 0x04  # Load setting from non-volatile memory.
+    DEFAULT = 0x05  # Reset to the factory default.
+    WRITE_NO_ACK = 0x06  # Apply new setting with no ACK/NACK reply (GX5-45 only). (devices: gx5_45)
+
+
+class GpsTimeField(_c.Enum):
+    """GPS time field selector (u8)."""
+
+    WEEK_NUMBER = 0x01  # Week number (GX5-45: GPS Week Number).
+    TIME_OF_WEEK = 0x02  # Time of week in seconds (GX5-45: GPS Seconds).
+
+
+@_c.bitfield("u32")
+class Gx5BitFlags(_c.Bitfield):
+    """3DM-GX5-45 built-in test error flags (u32 bitfield)."""
+
+    _MEMBERS = (
+        ("processor_wdt_reset", "processor_wdt_reset", "PROCESSOR_WDT_RESET", 0, 1),
+        ("imu_communication_fault", "imu_communication_fault", "IMU_COMMUNICATION_FAULT", 8, 1),
+        ("magnetometer_fault", "magnetometer_fault", "MAGNETOMETER_FAULT", 9, 1),
+        ("pressure_sensor_fault", "pressure_sensor_fault", "PRESSURE_SENSOR_FAULT", 10, 1),
+        ("filter_solution_fault", "filter_solution_fault", "FILTER_SOLUTION_FAULT", 24, 1),
+    )
+    # bit 0: Processor board: watchdog reset (latching, cleared after first commanded BIT).
+    PROCESSOR_WDT_RESET = 0x00000001
+    IMU_COMMUNICATION_FAULT = 0x00000100  # bit 8: Sensor board: IMU communication fault.
+    MAGNETOMETER_FAULT = 0x00000200  # bit 9: Sensor board: magnetometer fault (if applicable).
+    PRESSURE_SENSOR_FAULT = 0x00000400  # bit 10: Sensor board: pressure sensor fault (if applicable).
+    FILTER_SOLUTION_FAULT = 0x01000000  # bit 24: Kalman filter: solution fault.
+
+    processor_wdt_reset = _c.bit(0)
+    imu_communication_fault = _c.bit(8)
+    magnetometer_fault = _c.bit(9)
+    pressure_sensor_fault = _c.bit(10)
+    filter_solution_fault = _c.bit(24)
+
+
+class ThresholdType(_c.Enum):
+    """Threshold comparison type (u8)."""
+
+    WINDOW = 0x01  # Active if low_thres <= value <= high_thres (reversed thresholds invert it).
+    INTERVAL = 0x02  # Active when (value % high_thres) <= low_thres: periodic triggering.
+
+
+class TriggerGpioMode(_c.Enum):
+    """GPIO trigger mode (u8)."""
+
+    DISABLED = 0x00  # The pin has no effect and the trigger never activates.
+    WHILE_HIGH = 0x01  # Active while the pin is high.
+    WHILE_LOW = 0x02  # Active while the pin is low.
+    EDGE = 0x04  # Use if the pin is configured for timestamping (0x0C,0x41).
+
+
+@_c.bitfield("u8")
+class TriggerStatus(_c.Bitfield):
+    """Event trigger status (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("active", "active", "ACTIVE", 0, 1),
+        ("enabled", "enabled", "ENABLED", 1, 1),
+        ("test", "test", "TEST", 2, 1),
+    )
+    ACTIVE = 0x01  # bit 0: The trigger is currently active (by its logic or in test mode).
+    ENABLED = 0x02  # bit 1: The trigger is enabled.
+    TEST = 0x04  # bit 2: The trigger is in test mode.
+
+    active = _c.bit(0)
+    enabled = _c.bit(1)
+    test = _c.bit(2)
+
+
+class TriggerType(_c.Enum):
+    """Event trigger type (u8)."""
+
+    NONE = 0x00  # No trigger selected. The state will always be inactive.
+    GPIO = 0x01  # Trigger based on the state of a GPIO pin.
+    THRESHOLD = 0x02  # Compare a data quantity against a high and low threshold.
+    COMBINATION = 0x03  # Logical combination of two or more triggers.
+
+
+@_dc.dataclass
+class ActionGpioParams(_c.Struct):
+    """ActionGpioParams (struct, 2 bytes)."""
+
+    pin: int = 0  # GPIO pin number.
+    mode: ActionGpioMode = ActionGpioMode.DISABLED  # Behavior of the pin.
+
+    _ATTRS = ("pin", "mode")
+    _OPS = (_c.Run(_c.P("pin", _c.U8), _c.P("mode", _c.enum(ActionGpioMode, "u8"))),)
+    _SIZE = 2
+
+
+@_dc.dataclass
+class MessageParams(_c.Struct):
+    """MessageParams (struct, 4..16 bytes)."""
+
+    desc_set: int = 0  # MIP data descriptor set.
+    decimation: int = 0  # Decimation from the base rate; 0 emits one packet per activation.
+    num_fields: int = 0  # Number of fields in the packet (at most 12).
+    descriptors: _ty.List[int] = _dc.field(default_factory=list)  # Field descriptors. (count: num_fields)
+
+    _ATTRS = ("desc_set", "decimation", "num_fields", "descriptors")
+    _OPS = (
+        _c.Run(_c.P("desc_set", _c.U8), _c.P("decimation", _c.U16), _c.P("num_fields", _c.U8)),
+        _c.Counted("descriptors", _c.U8, count="num_fields", maximum=12),
+    )
+
+
+class ActionParams(_c.Union):
+    """ActionParams (union selected by ActionType).
+
+    The value of a union parameter is the selected member's struct, or None for a member without
+    data.
+    """
+
+    _SELECTOR = ActionType
+    _MEMBERS = {
+        0x00: None,  # none
+        0x01: ActionGpioParams,  # gpio
+        0x02: MessageParams,  # message
+    }
+
+
+@_dc.dataclass
+class ActionStatusEntry(_c.Struct):
+    """ActionStatusEntry (struct, 2 bytes)."""
+
+    action_type: ActionType = ActionType.NONE  # Configured action type.
+    trigger_id: int = 0  # Associated trigger instance.
+
+    _ATTRS = ("action_type", "trigger_id")
+    _OPS = (_c.Run(_c.P("action_type", _c.enum(ActionType, "u8")), _c.P("trigger_id", _c.U8)),)
+    _SIZE = 2
+
+
+@_dc.dataclass
+class CombinationParams(_c.Struct):
+    """CombinationParams (struct, 6 bytes)."""
+
+    logic_table: int = 0  # Last column of the truth table of the inputs.
+    # Trigger IDs of the inputs; 0 for unused inputs.
+    input_triggers: _ty.List[int] = _dc.field(default_factory=lambda: [0] * 4)
+
+    _ATTRS = ("logic_table", "input_triggers")
+    _OPS = (_c.Run(_c.P("logic_table", _c.U16), _c.P("input_triggers", _c.U8, 4)),)
+    _SIZE = 6
+
+
+@_dc.dataclass
+class DeviceInfo(_c.Struct):
+    """Device information (struct, 82 bytes).
+
+    Firmware version and five 16-character identification strings, padded with spaces.
+    """
+
+    firmware_version: int = 0  # Firmware version number.
+    model_name: bytes = b" " * 16  # Model name.
+    model_number: bytes = b" " * 16  # Model number.
+    serial_number: bytes = b" " * 16  # Serial number.
+    lot_number: bytes = b" " * 16  # Lot number.
+    device_options: bytes = b" " * 16  # Device options (e.g. sensor ranges).
+
+    _ATTRS = ("firmware_version", "model_name", "model_number", "serial_number", "lot_number", "device_options")
+    _OPS = (
+        _c.Run(
+            _c.P("firmware_version", _c.U16),
+            _c.P("model_name", _c.string(16)),
+            _c.P("model_number", _c.string(16)),
+            _c.P("serial_number", _c.string(16)),
+            _c.P("lot_number", _c.string(16)),
+            _c.P("device_options", _c.string(16)),
+        ),
+    )
+    _SIZE = 82
+
+
+@_dc.dataclass
+class ThresholdParams(_c.Struct):
+    """ThresholdParams (struct, 20 bytes)."""
+
+    desc_set: int = 0  # Descriptor set of the target data quantity.
+    field_desc: int = 0  # Field descriptor of the target data quantity.
+    param_id: int = 0  # 1-based index of the target parameter within the field.
+    type: ThresholdType = ThresholdType.WINDOW  # Type of comparison.
+    low_thres: float = 0.0  # Low threshold (window) or active time (interval).
+    high_thres: float = 0.0  # High threshold (window) or interval (interval).
+
+    _ATTRS = ("desc_set", "field_desc", "param_id", "type", "low_thres", "high_thres")
+    _OPS = (
+        _c.Run(
+            _c.P("desc_set", _c.U8),
+            _c.P("field_desc", _c.U8),
+            _c.P("param_id", _c.U8),
+            _c.P("type", _c.enum(ThresholdType, "u8")),
+            _c.P("low_thres", _c.F64),
+            _c.P("high_thres", _c.F64),
+        ),
+    )
+    _SIZE = 20
+
+
+@_dc.dataclass
+class TriggerGpioParams(_c.Struct):
+    """TriggerGpioParams (struct, 2 bytes)."""
+
+    pin: int = 0  # GPIO pin number.
+    mode: TriggerGpioMode = TriggerGpioMode.DISABLED  # How the pin state affects the trigger.
+
+    _ATTRS = ("pin", "mode")
+    _OPS = (_c.Run(_c.P("pin", _c.U8), _c.P("mode", _c.enum(TriggerGpioMode, "u8"))),)
+    _SIZE = 2
+
+
+class TriggerParams(_c.Union):
+    """TriggerParams (union selected by TriggerType).
+
+    The value of a union parameter is the selected member's struct, or None for a member without
+    data.
+    """
+
+    _SELECTOR = TriggerType
+    _MEMBERS = {
+        0x00: None,  # none
+        0x01: TriggerGpioParams,  # gpio
+        0x02: ThresholdParams,  # threshold
+        0x03: CombinationParams,  # combination
+    }
+
+
+@_dc.dataclass
+class TriggerStatusEntry(_c.Struct):
+    """TriggerStatusEntry (struct, 2 bytes)."""
+
+    type: TriggerType = TriggerType.NONE  # Configured trigger type.
+    status: TriggerStatus = TriggerStatus(0)  # Trigger status.
+
+    _ATTRS = ("type", "status")
+    _OPS = (_c.Run(_c.P("type", _c.enum(TriggerType, "u8")), _c.P("status", _c.flags(TriggerStatus))),)
+    _SIZE = 2

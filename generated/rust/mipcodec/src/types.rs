@@ -1,0 +1,2135 @@
+//! Named types of the MicroStrain MIP (Microstrain Inertial Packet) protocol spec: enums (unknown values are kept), bitfields (named
+//! accessors), structs and unions (selected by an earlier enum parameter).
+
+/// Ack/Nack code.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AckCode(pub u8);
+
+impl AckCode {
+    /// Success (ACK).
+    pub const OK: Self = Self(0);
+    /// The command descriptor is not supported by this device.
+    pub const UNKNOWN_COMMAND: Self = Self(1);
+    /// An otherwise complete packet has a bad checksum.
+    pub const BAD_CHECKSUM: Self = Self(2);
+    /// One or more parameters are invalid.
+    pub const INVALID_PARAMETER: Self = Self(3);
+    /// Device could not complete the command.
+    pub const COMMAND_FAILED: Self = Self(4);
+    /// Device could not complete the command in time.
+    pub const COMMAND_TIMEOUT: Self = Self(5);
+    /// Unknown descriptor set (CV7 only). Devices: cv7_ins.
+    pub const UNKNOWN_DESCRIPTOR_SET: Self = Self(6);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("ok"),
+            1 => Some("unknown_command"),
+            2 => Some("bad_checksum"),
+            3 => Some("invalid_parameter"),
+            4 => Some("command_failed"),
+            5 => Some("command_timeout"),
+            6 => Some("unknown_descriptor_set"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "ok" => Some(Self::OK),
+            "unknown_command" => Some(Self::UNKNOWN_COMMAND),
+            "bad_checksum" => Some(Self::BAD_CHECKSUM),
+            "invalid_parameter" => Some(Self::INVALID_PARAMETER),
+            "command_failed" => Some(Self::COMMAND_FAILED),
+            "command_timeout" => Some(Self::COMMAND_TIMEOUT),
+            "unknown_descriptor_set" => Some(Self::UNKNOWN_DESCRIPTOR_SET),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AckCode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AckCode({} {})", self.0, name),
+            None => write!(f, "AckCode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AckCode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AckCode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AckCode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO action mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ActionGpioMode(pub u8);
+
+impl ActionGpioMode {
+    /// Pin state will not be changed.
+    pub const DISABLED: Self = Self(0);
+    /// High while the trigger is active, low otherwise.
+    pub const ACTIVE_HIGH: Self = Self(1);
+    /// Low while the trigger is active, high otherwise.
+    pub const ACTIVE_LOW: Self = Self(2);
+    /// Set high each time the trigger activates.
+    pub const ONESHOT_HIGH: Self = Self(5);
+    /// Set low each time the trigger activates.
+    pub const ONESHOT_LOW: Self = Self(6);
+    /// Toggle each time the trigger activates.
+    pub const TOGGLE: Self = Self(7);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("disabled"),
+            1 => Some("active_high"),
+            2 => Some("active_low"),
+            5 => Some("oneshot_high"),
+            6 => Some("oneshot_low"),
+            7 => Some("toggle"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "disabled" => Some(Self::DISABLED),
+            "active_high" => Some(Self::ACTIVE_HIGH),
+            "active_low" => Some(Self::ACTIVE_LOW),
+            "oneshot_high" => Some(Self::ONESHOT_HIGH),
+            "oneshot_low" => Some(Self::ONESHOT_LOW),
+            "toggle" => Some(Self::TOGGLE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for ActionGpioMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "ActionGpioMode({} {})", self.0, name),
+            None => write!(f, "ActionGpioMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for ActionGpioMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ActionGpioMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of ActionGpioMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// ActionGpioParams.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ActionGpioParams {
+    /// GPIO pin number.
+    pub pin: u8,
+    /// Behavior of the pin.
+    pub mode: crate::types::ActionGpioMode,
+}
+
+impl Default for ActionGpioParams {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ActionGpioParams {
+    const ZERO: Self = Self {
+        pin: <u8 as crate::wire::Wire>::ZERO,
+        mode: <crate::types::ActionGpioMode as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
+        let p_mode = <crate::types::ActionGpioMode as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("mode"))?;
+        Ok(Self {
+            pin: p_pin,
+            mode: p_mode,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.pin;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("pin"))?;
+        let v = &self.mode;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.pin;
+        crate::json::key(w, &mut first, "pin")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.mode;
+        crate::json::key(w, &mut first, "mode")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ActionGpioParams {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["pin", "mode"])?;
+        let p_pin = o.req("pin", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_mode = o.req(
+            "mode",
+            <crate::types::ActionGpioMode as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            pin: p_pin,
+            mode: p_mode,
+        })
+    }
+}
+
+/// ActionParams.
+///
+/// A union: the member is chosen by the value of an earlier selector parameter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ActionParams {
+    /// Selected by none (0).
+    None,
+    /// Selected by gpio (1).
+    Gpio(crate::types::ActionGpioParams),
+    /// Selected by message (2).
+    Message(crate::types::MessageParams),
+}
+
+impl ActionParams {
+    /// The first member with zero values.
+    pub const ZERO: Self = Self::None;
+
+    /// Selector value of this member.
+    pub fn selector_value(&self) -> u8 {
+        match self {
+            Self::None => 0,
+            Self::Gpio(_) => 1,
+            Self::Message(_) => 2,
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    pub fn decode_selected(
+        r: &mut crate::wire::Reader<'_>,
+        selector: u8,
+    ) -> Result<Self, crate::error::DecodeError> {
+        match selector {
+            0 => Ok(Self::None),
+            1 => <crate::types::ActionGpioParams as crate::wire::Wire>::decode(r).map(Self::Gpio),
+            2 => <crate::types::MessageParams as crate::wire::Wire>::decode(r).map(Self::Message),
+            value => {
+                let _ = r;
+                Err(crate::error::DecodeError::new(
+                    crate::error::DecodeErrorKind::NoMember {
+                        value: i128::from(value),
+                    },
+                ))
+            }
+        }
+    }
+
+    /// Writes the member after checking that `selector` chooses it.
+    pub fn encode_selected(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+        selector: u8,
+    ) -> Result<(), crate::error::EncodeError> {
+        if self.selector_value() != selector {
+            return Err(crate::error::EncodeError::new(
+                crate::error::EncodeErrorKind::UnionMismatch {
+                    value: i128::from(selector),
+                },
+            ));
+        }
+        match self {
+            Self::None => Ok(()),
+            Self::Gpio(v) => crate::wire::Wire::encode(v, w),
+            Self::Message(v) => crate::wire::Wire::encode(v, w),
+        }
+    }
+
+    /// Writes the member's struct, or `null` for a member without data.
+    pub fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::None => w.write_str("null"),
+            Self::Gpio(v) => crate::wire::Wire::write_json(v, w),
+            Self::Message(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    #[cfg(feature = "std")]
+    pub fn from_json_selected(
+        v: &crate::json_read::Json,
+        selector: u8,
+    ) -> Result<Self, crate::json_read::JsonError> {
+        match selector {
+            0 => crate::json_read::null(v).map(|()| Self::None),
+            1 => <crate::types::ActionGpioParams as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Gpio),
+            2 => <crate::types::MessageParams as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Message),
+            value => Err(crate::json_read::JsonError::new(std::format!(
+                "no member for selector value {value}"
+            ))),
+        }
+    }
+}
+
+/// ActionStatusEntry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ActionStatusEntry {
+    /// Configured action type.
+    pub action_type: crate::types::ActionType,
+    /// Associated trigger instance.
+    pub trigger_id: u8,
+}
+
+impl Default for ActionStatusEntry {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ActionStatusEntry {
+    const ZERO: Self = Self {
+        action_type: <crate::types::ActionType as crate::wire::Wire>::ZERO,
+        trigger_id: <u8 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_action_type = <crate::types::ActionType as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("action_type"))?;
+        let p_trigger_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("trigger_id"))?;
+        Ok(Self {
+            action_type: p_action_type,
+            trigger_id: p_trigger_id,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.action_type;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("action_type"))?;
+        let v = &self.trigger_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("trigger_id"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.action_type;
+        crate::json::key(w, &mut first, "action_type")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.trigger_id;
+        crate::json::key(w, &mut first, "trigger_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ActionStatusEntry {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["action_type", "trigger_id"])?;
+        let p_action_type = o.req(
+            "action_type",
+            <crate::types::ActionType as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_trigger_id = o.req("trigger_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            action_type: p_action_type,
+            trigger_id: p_trigger_id,
+        })
+    }
+}
+
+/// Event action type.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ActionType(pub u8);
+
+impl ActionType {
+    /// No action. Parameters should be empty.
+    pub const NONE: Self = Self(0);
+    /// Control the state of a GPIO pin.
+    pub const GPIO: Self = Self(1);
+    /// Output a data packet.
+    pub const MESSAGE: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("gpio"),
+            2 => Some("message"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "gpio" => Some(Self::GPIO),
+            "message" => Some(Self::MESSAGE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for ActionType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "ActionType({} {})", self.0, name),
+            None => write!(f, "ActionType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for ActionType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ActionType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of ActionType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// CombinationParams.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CombinationParams {
+    /// Last column of the truth table of the inputs.
+    pub logic_table: u16,
+    /// Trigger IDs of the inputs; 0 for unused inputs.
+    pub input_triggers: [u8; 4],
+}
+
+impl Default for CombinationParams {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for CombinationParams {
+    const ZERO: Self = Self {
+        logic_table: <u16 as crate::wire::Wire>::ZERO,
+        input_triggers: <[u8; 4] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(6);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_logic_table =
+            <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("logic_table"))?;
+        let p_input_triggers =
+            <[u8; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("input_triggers"))?;
+        Ok(Self {
+            logic_table: p_logic_table,
+            input_triggers: p_input_triggers,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.logic_table;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("logic_table"))?;
+        let v = &self.input_triggers;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("input_triggers"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.logic_table;
+        crate::json::key(w, &mut first, "logic_table")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.input_triggers;
+        crate::json::key(w, &mut first, "input_triggers")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for CombinationParams {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["logic_table", "input_triggers"])?;
+        let p_logic_table = o.req(
+            "logic_table",
+            <u16 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_input_triggers = o.req(
+            "input_triggers",
+            <[u8; 4] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            logic_table: p_logic_table,
+            input_triggers: p_input_triggers,
+        })
+    }
+}
+
+/// 3DM-CV7 commanded built-in test result.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7BitFlags(pub u32);
+
+impl Cv7BitFlags {
+    /// Mask of `general_hardware_fault` (bit 0).
+    pub const GENERAL_HARDWARE_FAULT: u32 = 0x00000001;
+    /// Mask of `general_firmware_fault` (bit 1).
+    pub const GENERAL_FIRMWARE_FAULT: u32 = 0x00000002;
+    /// Mask of `timing_overload` (bit 2).
+    pub const TIMING_OVERLOAD: u32 = 0x00000004;
+    /// Mask of `buffer_overrun` (bit 3).
+    pub const BUFFER_OVERRUN: u32 = 0x00000008;
+    /// Mask of `reserved_system` (bits 4..=7).
+    pub const RESERVED_SYSTEM: u32 = 0x000000F0;
+    /// Mask of `reserved_comms` (bits 8..=11).
+    pub const RESERVED_COMMS: u32 = 0x00000F00;
+    /// Mask of `accelerometer_fault` (bit 12).
+    pub const ACCELEROMETER_FAULT: u32 = 0x00001000;
+    /// Mask of `gyroscope_fault` (bit 13).
+    pub const GYROSCOPE_FAULT: u32 = 0x00002000;
+    /// Mask of `magnetometer_fault` (bit 14).
+    pub const MAGNETOMETER_FAULT: u32 = 0x00004000;
+    /// Mask of `pressure_sensor_fault` (bit 15).
+    pub const PRESSURE_SENSOR_FAULT: u32 = 0x00008000;
+    /// Mask of `reserved_imu` (bits 16..=17).
+    pub const RESERVED_IMU: u32 = 0x00030000;
+    /// Mask of `calibration_error` (bit 18).
+    pub const CALIBRATION_ERROR: u32 = 0x00040000;
+    /// Mask of `general_imu_fault` (bit 19).
+    pub const GENERAL_IMU_FAULT: u32 = 0x00080000;
+    /// Mask of `reserved_filter` (bits 20..=21).
+    pub const RESERVED_FILTER: u32 = 0x00300000;
+    /// Mask of `filter_solution_fault` (bit 22).
+    pub const FILTER_SOLUTION_FAULT: u32 = 0x00400000;
+    /// Mask of `general_filter_fault` (bit 23).
+    pub const GENERAL_FILTER_FAULT: u32 = 0x00800000;
+    /// Mask of `reserved` (bits 24..=31).
+    pub const RESERVED: u32 = 0xFF000000;
+
+    /// A critical hardware component has failed or is not operating properly. (bit 0)
+    pub const fn general_hardware_fault(self) -> bool {
+        self.0 & Self::GENERAL_HARDWARE_FAULT != 0
+    }
+
+    /// Sets or clears `general_hardware_fault` (bit 0).
+    pub fn set_general_hardware_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GENERAL_HARDWARE_FAULT;
+        } else {
+            self.0 &= !Self::GENERAL_HARDWARE_FAULT;
+        }
+    }
+
+    /// System firmware has detected a serious, unexpected or abnormal condition. (bit 1)
+    pub const fn general_firmware_fault(self) -> bool {
+        self.0 & Self::GENERAL_FIRMWARE_FAULT != 0
+    }
+
+    /// Sets or clears `general_firmware_fault` (bit 1).
+    pub fn set_general_firmware_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GENERAL_FIRMWARE_FAULT;
+        } else {
+            self.0 &= !Self::GENERAL_FIRMWARE_FAULT;
+        }
+    }
+
+    /// The system cannot keep up with the processing demand. (bit 2)
+    pub const fn timing_overload(self) -> bool {
+        self.0 & Self::TIMING_OVERLOAD != 0
+    }
+
+    /// Sets or clears `timing_overload` (bit 2).
+    pub fn set_timing_overload(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIMING_OVERLOAD;
+        } else {
+            self.0 &= !Self::TIMING_OVERLOAD;
+        }
+    }
+
+    /// A data buffer has reached its capacity. (bit 3)
+    pub const fn buffer_overrun(self) -> bool {
+        self.0 & Self::BUFFER_OVERRUN != 0
+    }
+
+    /// Sets or clears `buffer_overrun` (bit 3).
+    pub fn set_buffer_overrun(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BUFFER_OVERRUN;
+        } else {
+            self.0 &= !Self::BUFFER_OVERRUN;
+        }
+    }
+
+    /// Reserved (system). Reserved. (bits 4..=7)
+    pub const fn reserved_system(self) -> u32 {
+        (self.0 & Self::RESERVED_SYSTEM) >> 4
+    }
+
+    /// Sets `reserved_system` (bits 4..=7); higher bits of `v` are ignored.
+    pub fn set_reserved_system(&mut self, v: u32) {
+        self.0 = (self.0 & !Self::RESERVED_SYSTEM) | ((v << 4) & Self::RESERVED_SYSTEM);
+    }
+
+    /// Reserved (comms). Reserved. (bits 8..=11)
+    pub const fn reserved_comms(self) -> u32 {
+        (self.0 & Self::RESERVED_COMMS) >> 8
+    }
+
+    /// Sets `reserved_comms` (bits 8..=11); higher bits of `v` are ignored.
+    pub fn set_reserved_comms(&mut self, v: u32) {
+        self.0 = (self.0 & !Self::RESERVED_COMMS) | ((v << 8) & Self::RESERVED_COMMS);
+    }
+
+    /// The accelerometer has been damaged or is inoperative. (bit 12)
+    pub const fn accelerometer_fault(self) -> bool {
+        self.0 & Self::ACCELEROMETER_FAULT != 0
+    }
+
+    /// Sets or clears `accelerometer_fault` (bit 12).
+    pub fn set_accelerometer_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCELEROMETER_FAULT;
+        } else {
+            self.0 &= !Self::ACCELEROMETER_FAULT;
+        }
+    }
+
+    /// The gyroscope has been damaged or is inoperative. (bit 13)
+    pub const fn gyroscope_fault(self) -> bool {
+        self.0 & Self::GYROSCOPE_FAULT != 0
+    }
+
+    /// Sets or clears `gyroscope_fault` (bit 13).
+    pub fn set_gyroscope_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYROSCOPE_FAULT;
+        } else {
+            self.0 &= !Self::GYROSCOPE_FAULT;
+        }
+    }
+
+    /// The magnetometer has been damaged or is inoperative. (bit 14)
+    pub const fn magnetometer_fault(self) -> bool {
+        self.0 & Self::MAGNETOMETER_FAULT != 0
+    }
+
+    /// Sets or clears `magnetometer_fault` (bit 14).
+    pub fn set_magnetometer_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER_FAULT;
+        } else {
+            self.0 &= !Self::MAGNETOMETER_FAULT;
+        }
+    }
+
+    /// The pressure sensor has been damaged or is inoperative. (bit 15)
+    pub const fn pressure_sensor_fault(self) -> bool {
+        self.0 & Self::PRESSURE_SENSOR_FAULT != 0
+    }
+
+    /// Sets or clears `pressure_sensor_fault` (bit 15).
+    pub fn set_pressure_sensor_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PRESSURE_SENSOR_FAULT;
+        } else {
+            self.0 &= !Self::PRESSURE_SENSOR_FAULT;
+        }
+    }
+
+    /// Reserved (IMU). Reserved. (bits 16..=17)
+    pub const fn reserved_imu(self) -> u32 {
+        (self.0 & Self::RESERVED_IMU) >> 16
+    }
+
+    /// Sets `reserved_imu` (bits 16..=17); higher bits of `v` are ignored.
+    pub fn set_reserved_imu(&mut self, v: u32) {
+        self.0 = (self.0 & !Self::RESERVED_IMU) | ((v << 16) & Self::RESERVED_IMU);
+    }
+
+    /// One or more IMU calibration tables are invalid. (bit 18)
+    pub const fn calibration_error(self) -> bool {
+        self.0 & Self::CALIBRATION_ERROR != 0
+    }
+
+    /// Sets or clears `calibration_error` (bit 18).
+    pub fn set_calibration_error(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CALIBRATION_ERROR;
+        } else {
+            self.0 &= !Self::CALIBRATION_ERROR;
+        }
+    }
+
+    /// A problem has been detected in the IMU subsystem. (bit 19)
+    pub const fn general_imu_fault(self) -> bool {
+        self.0 & Self::GENERAL_IMU_FAULT != 0
+    }
+
+    /// Sets or clears `general_imu_fault` (bit 19).
+    pub fn set_general_imu_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GENERAL_IMU_FAULT;
+        } else {
+            self.0 &= !Self::GENERAL_IMU_FAULT;
+        }
+    }
+
+    /// Reserved (filter). Reserved. (bits 20..=21)
+    pub const fn reserved_filter(self) -> u32 {
+        (self.0 & Self::RESERVED_FILTER) >> 20
+    }
+
+    /// Sets `reserved_filter` (bits 20..=21); higher bits of `v` are ignored.
+    pub fn set_reserved_filter(&mut self, v: u32) {
+        self.0 = (self.0 & !Self::RESERVED_FILTER) | ((v << 20) & Self::RESERVED_FILTER);
+    }
+
+    /// The filter solution is invalid (NaN in the filter output). (bit 22)
+    pub const fn filter_solution_fault(self) -> bool {
+        self.0 & Self::FILTER_SOLUTION_FAULT != 0
+    }
+
+    /// Sets or clears `filter_solution_fault` (bit 22).
+    pub fn set_filter_solution_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_SOLUTION_FAULT;
+        } else {
+            self.0 &= !Self::FILTER_SOLUTION_FAULT;
+        }
+    }
+
+    /// A problem has been detected in the filter subsystem. (bit 23)
+    pub const fn general_filter_fault(self) -> bool {
+        self.0 & Self::GENERAL_FILTER_FAULT != 0
+    }
+
+    /// Sets or clears `general_filter_fault` (bit 23).
+    pub fn set_general_filter_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GENERAL_FILTER_FAULT;
+        } else {
+            self.0 &= !Self::GENERAL_FILTER_FAULT;
+        }
+    }
+
+    /// Reserved. Reserved. (bits 24..=31)
+    pub const fn reserved(self) -> u32 {
+        (self.0 & Self::RESERVED) >> 24
+    }
+
+    /// Sets `reserved` (bits 24..=31); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u32) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 24) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for Cv7BitFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u32 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u32 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7BitFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u32 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Device information. Firmware version and five 16-character identification strings, padded with spaces.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DeviceInfo {
+    /// Firmware version number.
+    pub firmware_version: u16,
+    /// Model name.
+    pub model_name: crate::wire::Str<16>,
+    /// Model number.
+    pub model_number: crate::wire::Str<16>,
+    /// Serial number.
+    pub serial_number: crate::wire::Str<16>,
+    /// Lot number.
+    pub lot_number: crate::wire::Str<16>,
+    /// Device options (e.g. sensor ranges).
+    pub device_options: crate::wire::Str<16>,
+}
+
+impl Default for DeviceInfo {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for DeviceInfo {
+    const ZERO: Self = Self {
+        firmware_version: <u16 as crate::wire::Wire>::ZERO,
+        model_name: <crate::wire::Str<16> as crate::wire::Wire>::ZERO,
+        model_number: <crate::wire::Str<16> as crate::wire::Wire>::ZERO,
+        serial_number: <crate::wire::Str<16> as crate::wire::Wire>::ZERO,
+        lot_number: <crate::wire::Str<16> as crate::wire::Wire>::ZERO,
+        device_options: <crate::wire::Str<16> as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(82);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_firmware_version =
+            <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("firmware_version"))?;
+        let p_model_name = <crate::wire::Str<16> as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("model_name"))?;
+        let p_model_number = <crate::wire::Str<16> as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("model_number"))?;
+        let p_serial_number = <crate::wire::Str<16> as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("serial_number"))?;
+        let p_lot_number = <crate::wire::Str<16> as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("lot_number"))?;
+        let p_device_options = <crate::wire::Str<16> as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("device_options"))?;
+        Ok(Self {
+            firmware_version: p_firmware_version,
+            model_name: p_model_name,
+            model_number: p_model_number,
+            serial_number: p_serial_number,
+            lot_number: p_lot_number,
+            device_options: p_device_options,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.firmware_version;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("firmware_version"))?;
+        let v = &self.model_name;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("model_name"))?;
+        let v = &self.model_number;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("model_number"))?;
+        let v = &self.serial_number;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("serial_number"))?;
+        let v = &self.lot_number;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("lot_number"))?;
+        let v = &self.device_options;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("device_options"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.firmware_version;
+        crate::json::key(w, &mut first, "firmware_version")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.model_name;
+        crate::json::key(w, &mut first, "model_name")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.model_number;
+        crate::json::key(w, &mut first, "model_number")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.serial_number;
+        crate::json::key(w, &mut first, "serial_number")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.lot_number;
+        crate::json::key(w, &mut first, "lot_number")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.device_options;
+        crate::json::key(w, &mut first, "device_options")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for DeviceInfo {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "firmware_version",
+                "model_name",
+                "model_number",
+                "serial_number",
+                "lot_number",
+                "device_options",
+            ],
+        )?;
+        let p_firmware_version = o.req(
+            "firmware_version",
+            <u16 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_model_name = o.req(
+            "model_name",
+            <crate::wire::Str<16> as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_model_number = o.req(
+            "model_number",
+            <crate::wire::Str<16> as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_serial_number = o.req(
+            "serial_number",
+            <crate::wire::Str<16> as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_lot_number = o.req(
+            "lot_number",
+            <crate::wire::Str<16> as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_device_options = o.req(
+            "device_options",
+            <crate::wire::Str<16> as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            firmware_version: p_firmware_version,
+            model_name: p_model_name,
+            model_number: p_model_number,
+            serial_number: p_serial_number,
+            lot_number: p_lot_number,
+            device_options: p_device_options,
+        })
+    }
+}
+
+/// Event trigger control mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct EventControlMode(pub u8);
+
+impl EventControlMode {
+    /// Trigger is disabled.
+    pub const DISABLED: Self = Self(0);
+    /// Trigger is enabled and will work normally.
+    pub const ENABLED: Self = Self(1);
+    /// Forces the trigger to the active state for testing purposes.
+    pub const TEST: Self = Self(2);
+    /// Trigger is forced active for one event cycle only, then reverts.
+    pub const TEST_PULSE: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("disabled"),
+            1 => Some("enabled"),
+            2 => Some("test"),
+            3 => Some("test_pulse"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "disabled" => Some(Self::DISABLED),
+            "enabled" => Some(Self::ENABLED),
+            "test" => Some(Self::TEST),
+            "test_pulse" => Some(Self::TEST_PULSE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for EventControlMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "EventControlMode({} {})", self.0, name),
+            None => write!(f, "EventControlMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for EventControlMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for EventControlMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of EventControlMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Function selector. First parameter of settings commands; chooses what the command does.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FunctionSelector(pub u8);
+
+impl FunctionSelector {
+    /// Apply new setting.
+    pub const WRITE: Self = Self(1);
+    /// Read current setting.
+    pub const READ: Self = Self(2);
+    /// Save current setting to non-volatile memory.
+    pub const SAVE: Self = Self(3);
+    /// Load setting from non-volatile memory.
+    pub const LOAD: Self = Self(4);
+    /// Reset to the factory default.
+    pub const DEFAULT: Self = Self(5);
+    /// Apply new setting with no ACK/NACK reply (GX5-45 only). Devices: gx5_45.
+    pub const WRITE_NO_ACK: Self = Self(6);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("write"),
+            2 => Some("read"),
+            3 => Some("save"),
+            4 => Some("load"),
+            5 => Some("default"),
+            6 => Some("write_no_ack"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "write" => Some(Self::WRITE),
+            "read" => Some(Self::READ),
+            "save" => Some(Self::SAVE),
+            "load" => Some(Self::LOAD),
+            "default" => Some(Self::DEFAULT),
+            "write_no_ack" => Some(Self::WRITE_NO_ACK),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FunctionSelector {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FunctionSelector({} {})", self.0, name),
+            None => write!(f, "FunctionSelector({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FunctionSelector {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FunctionSelector {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FunctionSelector"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPS time field selector.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpsTimeField(pub u8);
+
+impl GpsTimeField {
+    /// Week number (GX5-45: GPS Week Number).
+    pub const WEEK_NUMBER: Self = Self(1);
+    /// Time of week in seconds (GX5-45: GPS Seconds).
+    pub const TIME_OF_WEEK: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("week_number"),
+            2 => Some("time_of_week"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "week_number" => Some(Self::WEEK_NUMBER),
+            "time_of_week" => Some(Self::TIME_OF_WEEK),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpsTimeField {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpsTimeField({} {})", self.0, name),
+            None => write!(f, "GpsTimeField({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpsTimeField {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpsTimeField {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpsTimeField"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// 3DM-GX5-45 built-in test error flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Gx5BitFlags(pub u32);
+
+impl Gx5BitFlags {
+    /// Mask of `processor_wdt_reset` (bit 0).
+    pub const PROCESSOR_WDT_RESET: u32 = 0x00000001;
+    /// Mask of `imu_communication_fault` (bit 8).
+    pub const IMU_COMMUNICATION_FAULT: u32 = 0x00000100;
+    /// Mask of `magnetometer_fault` (bit 9).
+    pub const MAGNETOMETER_FAULT: u32 = 0x00000200;
+    /// Mask of `pressure_sensor_fault` (bit 10).
+    pub const PRESSURE_SENSOR_FAULT: u32 = 0x00000400;
+    /// Mask of `filter_solution_fault` (bit 24).
+    pub const FILTER_SOLUTION_FAULT: u32 = 0x01000000;
+
+    /// Processor board: watchdog reset (latching, cleared after first commanded BIT). (bit 0)
+    pub const fn processor_wdt_reset(self) -> bool {
+        self.0 & Self::PROCESSOR_WDT_RESET != 0
+    }
+
+    /// Sets or clears `processor_wdt_reset` (bit 0).
+    pub fn set_processor_wdt_reset(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PROCESSOR_WDT_RESET;
+        } else {
+            self.0 &= !Self::PROCESSOR_WDT_RESET;
+        }
+    }
+
+    /// Sensor board: IMU communication fault. (bit 8)
+    pub const fn imu_communication_fault(self) -> bool {
+        self.0 & Self::IMU_COMMUNICATION_FAULT != 0
+    }
+
+    /// Sets or clears `imu_communication_fault` (bit 8).
+    pub fn set_imu_communication_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_COMMUNICATION_FAULT;
+        } else {
+            self.0 &= !Self::IMU_COMMUNICATION_FAULT;
+        }
+    }
+
+    /// Sensor board: magnetometer fault (if applicable). (bit 9)
+    pub const fn magnetometer_fault(self) -> bool {
+        self.0 & Self::MAGNETOMETER_FAULT != 0
+    }
+
+    /// Sets or clears `magnetometer_fault` (bit 9).
+    pub fn set_magnetometer_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER_FAULT;
+        } else {
+            self.0 &= !Self::MAGNETOMETER_FAULT;
+        }
+    }
+
+    /// Sensor board: pressure sensor fault (if applicable). (bit 10)
+    pub const fn pressure_sensor_fault(self) -> bool {
+        self.0 & Self::PRESSURE_SENSOR_FAULT != 0
+    }
+
+    /// Sets or clears `pressure_sensor_fault` (bit 10).
+    pub fn set_pressure_sensor_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PRESSURE_SENSOR_FAULT;
+        } else {
+            self.0 &= !Self::PRESSURE_SENSOR_FAULT;
+        }
+    }
+
+    /// Kalman filter: solution fault. (bit 24)
+    pub const fn filter_solution_fault(self) -> bool {
+        self.0 & Self::FILTER_SOLUTION_FAULT != 0
+    }
+
+    /// Sets or clears `filter_solution_fault` (bit 24).
+    pub fn set_filter_solution_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_SOLUTION_FAULT;
+        } else {
+            self.0 &= !Self::FILTER_SOLUTION_FAULT;
+        }
+    }
+}
+
+impl crate::wire::Wire for Gx5BitFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u32 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u32 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5BitFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u32 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// MessageParams.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MessageParams {
+    /// MIP data descriptor set.
+    pub desc_set: u8,
+    /// Decimation from the base rate; 0 emits one packet per activation.
+    pub decimation: u16,
+    /// Number of fields in the packet (at most 12).
+    pub num_fields: u8,
+    /// Field descriptors.
+    pub descriptors: crate::bounded::BoundedVec<u8, 12>,
+}
+
+impl Default for MessageParams {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MessageParams {
+    const ZERO: Self = Self {
+        desc_set: <u8 as crate::wire::Wire>::ZERO,
+        decimation: <u16 as crate::wire::Wire>::ZERO,
+        num_fields: <u8 as crate::wire::Wire>::ZERO,
+        descriptors: <crate::bounded::BoundedVec<u8, 12> as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
+        let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
+        let p_num_fields = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_fields"))?;
+        let p_descriptors =
+            crate::bounded::BoundedVec::<u8, 12>::decode_counted(r, u64::from(p_num_fields))
+                .map_err(|e| e.at("descriptors"))?;
+        Ok(Self {
+            desc_set: p_desc_set,
+            decimation: p_decimation,
+            num_fields: p_num_fields,
+            descriptors: p_descriptors,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.desc_set;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("desc_set"))?;
+        let v = &self.decimation;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("decimation"))?;
+        let v = &self.num_fields;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_fields"))?;
+        let v = &self.descriptors;
+        v.encode_counted(w, u64::from(self.num_fields))
+            .map_err(|e| e.at("descriptors"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.desc_set;
+        crate::json::key(w, &mut first, "desc_set")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.decimation;
+        crate::json::key(w, &mut first, "decimation")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.num_fields;
+        crate::json::key(w, &mut first, "num_fields")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.descriptors;
+        crate::json::key(w, &mut first, "descriptors")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MessageParams {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &["desc_set", "decimation", "num_fields", "descriptors"],
+        )?;
+        let p_desc_set = o.req("desc_set", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_decimation = o.req("decimation", <u16 as crate::json_read::FromJson>::from_json)?;
+        let p_num_fields = o.req("num_fields", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_descriptors = o.req(
+            "descriptors",
+            <crate::bounded::BoundedVec<u8, 12> as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            desc_set: p_desc_set,
+            decimation: p_decimation,
+            num_fields: p_num_fields,
+            descriptors: p_descriptors,
+        })
+    }
+}
+
+/// ThresholdParams.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThresholdParams {
+    /// Descriptor set of the target data quantity.
+    pub desc_set: u8,
+    /// Field descriptor of the target data quantity.
+    pub field_desc: u8,
+    /// 1-based index of the target parameter within the field.
+    pub param_id: u8,
+    /// Type of comparison.
+    pub r#type: crate::types::ThresholdType,
+    /// Low threshold (window) or active time (interval).
+    pub low_thres: f64,
+    /// High threshold (window) or interval (interval).
+    pub high_thres: f64,
+}
+
+impl Default for ThresholdParams {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ThresholdParams {
+    const ZERO: Self = Self {
+        desc_set: <u8 as crate::wire::Wire>::ZERO,
+        field_desc: <u8 as crate::wire::Wire>::ZERO,
+        param_id: <u8 as crate::wire::Wire>::ZERO,
+        r#type: <crate::types::ThresholdType as crate::wire::Wire>::ZERO,
+        low_thres: <f64 as crate::wire::Wire>::ZERO,
+        high_thres: <f64 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(20);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
+        let p_field_desc = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("field_desc"))?;
+        let p_param_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("param_id"))?;
+        let p_type = <crate::types::ThresholdType as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("type"))?;
+        let p_low_thres = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_thres"))?;
+        let p_high_thres = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_thres"))?;
+        Ok(Self {
+            desc_set: p_desc_set,
+            field_desc: p_field_desc,
+            param_id: p_param_id,
+            r#type: p_type,
+            low_thres: p_low_thres,
+            high_thres: p_high_thres,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.desc_set;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("desc_set"))?;
+        let v = &self.field_desc;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("field_desc"))?;
+        let v = &self.param_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("param_id"))?;
+        let v = &self.r#type;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("type"))?;
+        let v = &self.low_thres;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_thres"))?;
+        let v = &self.high_thres;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_thres"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.desc_set;
+        crate::json::key(w, &mut first, "desc_set")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.field_desc;
+        crate::json::key(w, &mut first, "field_desc")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.param_id;
+        crate::json::key(w, &mut first, "param_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.r#type;
+        crate::json::key(w, &mut first, "type")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.low_thres;
+        crate::json::key(w, &mut first, "low_thres")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_thres;
+        crate::json::key(w, &mut first, "high_thres")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ThresholdParams {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "desc_set",
+                "field_desc",
+                "param_id",
+                "type",
+                "low_thres",
+                "high_thres",
+            ],
+        )?;
+        let p_desc_set = o.req("desc_set", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_field_desc = o.req("field_desc", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_param_id = o.req("param_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_type = o.req(
+            "type",
+            <crate::types::ThresholdType as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_low_thres = o.req("low_thres", <f64 as crate::json_read::FromJson>::from_json)?;
+        let p_high_thres = o.req("high_thres", <f64 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            desc_set: p_desc_set,
+            field_desc: p_field_desc,
+            param_id: p_param_id,
+            r#type: p_type,
+            low_thres: p_low_thres,
+            high_thres: p_high_thres,
+        })
+    }
+}
+
+/// Threshold comparison type.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ThresholdType(pub u8);
+
+impl ThresholdType {
+    /// Active if low_thres <= value <= high_thres (reversed thresholds invert it).
+    pub const WINDOW: Self = Self(1);
+    /// Active when (value % high_thres) <= low_thres: periodic triggering.
+    pub const INTERVAL: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("window"),
+            2 => Some("interval"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "window" => Some(Self::WINDOW),
+            "interval" => Some(Self::INTERVAL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for ThresholdType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "ThresholdType({} {})", self.0, name),
+            None => write!(f, "ThresholdType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for ThresholdType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ThresholdType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of ThresholdType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO trigger mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct TriggerGpioMode(pub u8);
+
+impl TriggerGpioMode {
+    /// The pin has no effect and the trigger never activates.
+    pub const DISABLED: Self = Self(0);
+    /// Active while the pin is high.
+    pub const WHILE_HIGH: Self = Self(1);
+    /// Active while the pin is low.
+    pub const WHILE_LOW: Self = Self(2);
+    /// Use if the pin is configured for timestamping (0x0C,0x41).
+    pub const EDGE: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("disabled"),
+            1 => Some("while_high"),
+            2 => Some("while_low"),
+            4 => Some("edge"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "disabled" => Some(Self::DISABLED),
+            "while_high" => Some(Self::WHILE_HIGH),
+            "while_low" => Some(Self::WHILE_LOW),
+            "edge" => Some(Self::EDGE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for TriggerGpioMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "TriggerGpioMode({} {})", self.0, name),
+            None => write!(f, "TriggerGpioMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for TriggerGpioMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TriggerGpioMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of TriggerGpioMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// TriggerGpioParams.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriggerGpioParams {
+    /// GPIO pin number.
+    pub pin: u8,
+    /// How the pin state affects the trigger.
+    pub mode: crate::types::TriggerGpioMode,
+}
+
+impl Default for TriggerGpioParams {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for TriggerGpioParams {
+    const ZERO: Self = Self {
+        pin: <u8 as crate::wire::Wire>::ZERO,
+        mode: <crate::types::TriggerGpioMode as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
+        let p_mode = <crate::types::TriggerGpioMode as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("mode"))?;
+        Ok(Self {
+            pin: p_pin,
+            mode: p_mode,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.pin;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("pin"))?;
+        let v = &self.mode;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.pin;
+        crate::json::key(w, &mut first, "pin")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.mode;
+        crate::json::key(w, &mut first, "mode")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TriggerGpioParams {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["pin", "mode"])?;
+        let p_pin = o.req("pin", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_mode = o.req(
+            "mode",
+            <crate::types::TriggerGpioMode as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            pin: p_pin,
+            mode: p_mode,
+        })
+    }
+}
+
+/// TriggerParams.
+///
+/// A union: the member is chosen by the value of an earlier selector parameter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TriggerParams {
+    /// Selected by none (0).
+    None,
+    /// Selected by gpio (1).
+    Gpio(crate::types::TriggerGpioParams),
+    /// Selected by threshold (2).
+    Threshold(crate::types::ThresholdParams),
+    /// Selected by combination (3).
+    Combination(crate::types::CombinationParams),
+}
+
+impl TriggerParams {
+    /// The first member with zero values.
+    pub const ZERO: Self = Self::None;
+
+    /// Selector value of this member.
+    pub fn selector_value(&self) -> u8 {
+        match self {
+            Self::None => 0,
+            Self::Gpio(_) => 1,
+            Self::Threshold(_) => 2,
+            Self::Combination(_) => 3,
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    pub fn decode_selected(
+        r: &mut crate::wire::Reader<'_>,
+        selector: u8,
+    ) -> Result<Self, crate::error::DecodeError> {
+        match selector {
+            0 => Ok(Self::None),
+            1 => <crate::types::TriggerGpioParams as crate::wire::Wire>::decode(r).map(Self::Gpio),
+            2 => {
+                <crate::types::ThresholdParams as crate::wire::Wire>::decode(r).map(Self::Threshold)
+            }
+            3 => <crate::types::CombinationParams as crate::wire::Wire>::decode(r)
+                .map(Self::Combination),
+            value => {
+                let _ = r;
+                Err(crate::error::DecodeError::new(
+                    crate::error::DecodeErrorKind::NoMember {
+                        value: i128::from(value),
+                    },
+                ))
+            }
+        }
+    }
+
+    /// Writes the member after checking that `selector` chooses it.
+    pub fn encode_selected(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+        selector: u8,
+    ) -> Result<(), crate::error::EncodeError> {
+        if self.selector_value() != selector {
+            return Err(crate::error::EncodeError::new(
+                crate::error::EncodeErrorKind::UnionMismatch {
+                    value: i128::from(selector),
+                },
+            ));
+        }
+        match self {
+            Self::None => Ok(()),
+            Self::Gpio(v) => crate::wire::Wire::encode(v, w),
+            Self::Threshold(v) => crate::wire::Wire::encode(v, w),
+            Self::Combination(v) => crate::wire::Wire::encode(v, w),
+        }
+    }
+
+    /// Writes the member's struct, or `null` for a member without data.
+    pub fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::None => w.write_str("null"),
+            Self::Gpio(v) => crate::wire::Wire::write_json(v, w),
+            Self::Threshold(v) => crate::wire::Wire::write_json(v, w),
+            Self::Combination(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    #[cfg(feature = "std")]
+    pub fn from_json_selected(
+        v: &crate::json_read::Json,
+        selector: u8,
+    ) -> Result<Self, crate::json_read::JsonError> {
+        match selector {
+            0 => crate::json_read::null(v).map(|()| Self::None),
+            1 => <crate::types::TriggerGpioParams as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Gpio),
+            2 => <crate::types::ThresholdParams as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Threshold),
+            3 => <crate::types::CombinationParams as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Combination),
+            value => Err(crate::json_read::JsonError::new(std::format!(
+                "no member for selector value {value}"
+            ))),
+        }
+    }
+}
+
+/// Event trigger status.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct TriggerStatus(pub u8);
+
+impl TriggerStatus {
+    /// Mask of `active` (bit 0).
+    pub const ACTIVE: u8 = 0x01;
+    /// Mask of `enabled` (bit 1).
+    pub const ENABLED: u8 = 0x02;
+    /// Mask of `test` (bit 2).
+    pub const TEST: u8 = 0x04;
+
+    /// The trigger is currently active (by its logic or in test mode). (bit 0)
+    pub const fn active(self) -> bool {
+        self.0 & Self::ACTIVE != 0
+    }
+
+    /// Sets or clears `active` (bit 0).
+    pub fn set_active(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACTIVE;
+        } else {
+            self.0 &= !Self::ACTIVE;
+        }
+    }
+
+    /// The trigger is enabled. (bit 1)
+    pub const fn enabled(self) -> bool {
+        self.0 & Self::ENABLED != 0
+    }
+
+    /// Sets or clears `enabled` (bit 1).
+    pub fn set_enabled(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ENABLED;
+        } else {
+            self.0 &= !Self::ENABLED;
+        }
+    }
+
+    /// The trigger is in test mode. (bit 2)
+    pub const fn test(self) -> bool {
+        self.0 & Self::TEST != 0
+    }
+
+    /// Sets or clears `test` (bit 2).
+    pub fn set_test(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TEST;
+        } else {
+            self.0 &= !Self::TEST;
+        }
+    }
+}
+
+impl crate::wire::Wire for TriggerStatus {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TriggerStatus {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// TriggerStatusEntry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriggerStatusEntry {
+    /// Configured trigger type.
+    pub r#type: crate::types::TriggerType,
+    /// Trigger status.
+    pub status: crate::types::TriggerStatus,
+}
+
+impl Default for TriggerStatusEntry {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for TriggerStatusEntry {
+    const ZERO: Self = Self {
+        r#type: <crate::types::TriggerType as crate::wire::Wire>::ZERO,
+        status: <crate::types::TriggerStatus as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("type"))?;
+        let p_status = <crate::types::TriggerStatus as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("status"))?;
+        Ok(Self {
+            r#type: p_type,
+            status: p_status,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.r#type;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("type"))?;
+        let v = &self.status;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("status"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.r#type;
+        crate::json::key(w, &mut first, "type")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.status;
+        crate::json::key(w, &mut first, "status")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TriggerStatusEntry {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["type", "status"])?;
+        let p_type = o.req(
+            "type",
+            <crate::types::TriggerType as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_status = o.req(
+            "status",
+            <crate::types::TriggerStatus as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            r#type: p_type,
+            status: p_status,
+        })
+    }
+}
+
+/// Event trigger type.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct TriggerType(pub u8);
+
+impl TriggerType {
+    /// No trigger selected. The state will always be inactive.
+    pub const NONE: Self = Self(0);
+    /// Trigger based on the state of a GPIO pin.
+    pub const GPIO: Self = Self(1);
+    /// Compare a data quantity against a high and low threshold.
+    pub const THRESHOLD: Self = Self(2);
+    /// Logical combination of two or more triggers.
+    pub const COMBINATION: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("gpio"),
+            2 => Some("threshold"),
+            3 => Some("combination"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "gpio" => Some(Self::GPIO),
+            "threshold" => Some(Self::THRESHOLD),
+            "combination" => Some(Self::COMBINATION),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for TriggerType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "TriggerType({} {})", self.0, name),
+            None => write!(f, "TriggerType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for TriggerType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TriggerType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of TriggerType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}

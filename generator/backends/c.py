@@ -1,0 +1,590 @@
+"""C back end: one C99 library per protocol at generated/c/<package>/ (see docs/design.md).
+
+All naming and type mapping happens here; the templates in templates/c/ only loop and print.
+The runtime (parser, checksum, JSON) is spec-independent template code rendered with the
+framing constants of the protocol.
+"""
+
+from __future__ import annotations
+
+import re
+
+from generator.primitives import PRIMITIVES, int_range
+from generator.render import environment
+
+OUTPUT_DIRS = ["c"]
+
+# C99 and C++ keywords (the headers are also compiled as C++ by the tests) and names the
+# generated code uses itself.
+_KEYWORDS = set(
+    """
+auto break case char const continue default do double else enum extern float for goto if inline int long
+register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while
+_Bool _Complex _Imaginary bool true false alignas alignof and and_eq asm bitand bitor catch class compl
+const_cast constexpr decltype delete dynamic_cast explicit export friend mutable namespace new noexcept not
+not_eq nullptr operator or or_eq private protected public reinterpret_cast static_assert static_cast
+template this thread_local throw try typeid typename using virtual wchar_t xor xor_eq char16_t char32_t
+""".split()
+)
+
+# wire primitive -> (C type, suffix of the runtime functions rd_/wr_/jw_/jr_)
+_PRIM = {
+    "bool": ("bool", "bool"),
+    "char": ("char", "char"),
+    "u8": ("uint8_t", "u8"),
+    "u16": ("uint16_t", "u16"),
+    "u32": ("uint32_t", "u32"),
+    "u64": ("uint64_t", "u64"),
+    "s8": ("int8_t", "s8"),
+    "s16": ("int16_t", "s16"),
+    "s32": ("int32_t", "s32"),
+    "s64": ("int64_t", "s64"),
+    "float": ("float", "f32"),
+    "double": ("double", "f64"),
+}
+
+# Runtime template -> generated file (relative to the package directory).
+_RUNTIME = {
+    "runtime/status.h.j2": "include/{pkg}/status.h",
+    "runtime/status.c.j2": "src/status.c",
+    "runtime/framing.h.j2": "include/{pkg}/framing.h",
+    "runtime/framing.c.j2": "src/framing.c",
+    "runtime/parser.h.j2": "include/{pkg}/parser.h",
+    "runtime/parser.c.j2": "src/parser.c",
+    "runtime/field_iter.h.j2": "include/{pkg}/field_iter.h",
+    "runtime/field_iter.c.j2": "src/field_iter.c",
+    "runtime/wire.h.j2": "src/wire.h",
+    "runtime/wire.c.j2": "src/wire.c",
+    "runtime/json_writer.h.j2": "src/json_writer.h",
+    "runtime/json_writer.c.j2": "src/json_writer.c",
+    "runtime/json_reader.h.j2": "src/json_reader.h",
+    "runtime/json_reader.c.j2": "src/json_reader.c",
+    "json.h.j2": "include/{pkg}/json.h",
+    "json_codec.c.j2": "src/json_codec.c",
+    "types.h.j2": "include/{pkg}/types.h",
+    "types_internal.h.j2": "src/types_internal.h",
+    "types.c.j2": "src/types.c",
+    "dispatch.h.j2": "include/{pkg}/dispatch.h",
+    "dispatch.c.j2": "src/dispatch.c",
+    "layouts_internal.h.j2": "src/layouts_internal.h",
+    "umbrella.h.j2": "include/{pkg}/{pkg}.h",
+    "CMakeLists.txt.j2": "CMakeLists.txt",
+    "README.md.j2": "README.md",
+    "tools/decode.c.j2": "tools/decode.c",
+    "tools/encode.c.j2": "tools/encode.c",
+    "tools/read_all.h.j2": "tools/read_all.h",
+    "tests/test_support.hpp.j2": "tests/test_support.hpp",
+    "tests/runtime_test.cpp.j2": "tests/runtime_test.cpp",
+    "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
+}
+
+
+class BackendError(Exception):
+    pass
+
+
+# ---------------------------------------------------------------------------- naming helpers
+def snake(name: str) -> str:
+    """CamelCase type name -> snake_case (Gx5BitFlags -> gx5_bit_flags)."""
+    s = re.sub(r"([A-Z]+)([A-Z][a-z])", r"\1_\2", name)
+    s = re.sub(r"([a-z0-9])([A-Z])", r"\1_\2", s)
+    return s.lower()
+
+
+def member(name: str) -> str:
+    """A spec identifier as a C struct member (keywords get a trailing underscore)."""
+    return name + "_" if name in _KEYWORDS else name
+
+
+def prefix_of(protocol: dict) -> str:
+    return re.sub(r"[^a-z0-9_]", "_", protocol["name"].lower())
+
+
+def _int_literal(value: int, ctype: str, base: str) -> str:
+    bits = PRIMITIVES[base][0] * 8
+    signed = PRIMITIVES[base][2]
+    if bits == 64:
+        if signed and value == -(1 << 63):
+            lit = "(-INT64_C(9223372036854775807) - 1)"
+        elif signed:
+            lit = f"INT64_C({value})"
+        else:
+            lit = f"UINT64_C({value})"
+    elif value < 0:
+        lit = f"({value})"
+    else:
+        lit = f"{value}" + ("u" if not signed else "")
+    return f"(({ctype}){lit})"
+
+
+def _mask_literal(mask: int, ctype: str, base: str) -> str:
+    if PRIMITIVES[base][0] == 8:
+        return f"(({ctype})UINT64_C(0x{mask:X}))"
+    return f"(({ctype})0x{mask:X}u)"
+
+
+def _c_string(text: str) -> str:
+    out = ['"']
+    for ch in text:
+        o = ord(ch)
+        if ch == "\\":
+            out.append("\\\\")
+        elif ch == '"':
+            out.append('\\"')
+        elif ch == "\n":
+            out.append("\\n")
+        elif 0x20 <= o < 0x7F:
+            out.append(ch)
+        else:
+            out.append("\\%03o" % o)
+    out.append('"')
+    return "".join(out)
+
+
+def _comment(text: str | None) -> str:
+    """Text safe to put inside a /* */ comment, on one line."""
+    return " ".join((text or "").replace("*/", "* /").split())
+
+
+# ---------------------------------------------------------------------------- the package model
+class _Package:
+    """Everything the templates print for one protocol."""
+
+    def __init__(self, proto: dict, vectors: list[dict]):
+        self.proto = proto
+        self.p = prefix_of(proto)
+        self.P = self.p.upper()
+        self.pkg = proto["package"]
+        self.framing = proto["framing"]
+        self.types = {t["name"]: t for t in proto["types"]}
+        self.globals: dict[str, str] = {}  # C identifier -> what it names (collision check)
+        self._check_framing()
+        self.type_views = [self._type_view(self.types[n]) for n in self._type_order()]
+        self.devices = [
+            {"id": d["id"], "c": f"{self.P}_DEVICE_{d['id'].upper()}", "title": d.get("title", d["id"])}
+            for d in proto["devices"]
+        ]
+        self.layouts: list[dict] = []
+        self.fields: list[dict] = []
+        self.reserved = [self._field_view(None, r) for r in proto["reserved_fields"]]
+        self.sets = [self._set_view(s) for s in proto["sets"]]
+        self.set_kinds = [
+            {"name": k, "c": f"{self.P}_SET_KIND_{k.upper()}", "first": r["first"], "last": r["last"]}
+            for k, r in proto["set_kinds"].items()
+        ]
+        shared = proto.get("shared_data")
+        self.shared_set = shared["set"] if shared and any(s["id"] == shared["set"] for s in proto["sets"]) else None
+        self.data_kind = next((k for k in self.set_kinds if k["name"] == "data"), None)
+        self.path_depth = max([self._layout_depth(v) for v in self._all_ir_layouts()] + [1])
+        longest = max([len(n) for n in self._all_param_names()] + [8])
+        self.error_message_max = self.path_depth * (longest + 24) + 160
+        self.vectors = [self._vector_view(c) for c in vectors if c["protocol"] == proto["name"]]
+
+    # -------------------------------------------------------------- checks
+    def _claim(self, ident: str, what: str) -> str:
+        if ident in self.globals and self.globals[ident] != what:
+            raise BackendError(f"C back end: the name {ident} would be used for both {self.globals[ident]} and {what}")
+        self.globals[ident] = what
+        return ident
+
+    def _check_framing(self) -> None:
+        f = self.framing
+        ck = f["checksum"]
+        if ck.get("algorithm") != "fletcher16" or ck.get("covers") != "header_and_payload":
+            raise BackendError(f"C back end: checksum {ck} is not supported (fletcher16 over header_and_payload)")
+        if sorted(ck["order"]) != ["sum1", "sum2"]:
+            raise BackendError(f"C back end: checksum order {ck['order']} is not a permutation of sum1, sum2")
+        if f["header_size"] != len(f["sync"]) + 2 or f["field_header_size"] != 2:
+            raise BackendError(
+                "C back end: expected a two-byte packet header after the sync bytes and a two-byte field header"
+            )
+
+    # -------------------------------------------------------------- types
+    def type_c(self, name: str) -> str:
+        return f"{self.p}_{snake(name)}_t"
+
+    def type_fn(self, name: str) -> str:
+        return f"{self.p}_{snake(name)}"
+
+    def type_macro(self, name: str) -> str:
+        return f"{self.P}_{snake(name).upper()}"
+
+    def _type_order(self) -> list[str]:
+        """Enums and bitfields first, then structs and unions after everything they contain."""
+        order: list[str] = [n for n, t in sorted(self.types.items()) if t["kind"] in ("enum", "bitfield")]
+        done = set(order)
+
+        def deps(t: dict) -> list[str]:
+            if t["kind"] == "struct":
+                return [
+                    q["type"]["name"]
+                    for q in t["params"]
+                    if q["type"]["kind"] in ("struct", "union", "enum", "bitfield")
+                ]
+            if t["kind"] == "union":
+                return [m["type"] for m in t["members"] if m["type"]] + [t["selector_enum"]]
+            return []
+
+        def visit(name: str) -> None:
+            if name in done or name not in self.types:
+                return
+            done.add(name)
+            for d in deps(self.types[name]):
+                visit(d)
+            order.append(name)
+
+        for n in sorted(self.types):
+            visit(n)
+        return order
+
+    def _type_view(self, t: dict) -> dict:
+        kind = t["kind"]
+        view = {
+            "kind": kind,
+            "name": t["name"],
+            "c": self._claim(self.type_c(t["name"]), f"type {t['name']}"),
+            "fn": self.type_fn(t["name"]),
+            "doc": _comment(t.get("title")),
+            "description": _comment(t.get("description")),
+        }
+        if kind in ("enum", "bitfield"):
+            ctype = view["c"]
+            view["base"] = _PRIM[t["base"]][0]
+            macro = self.type_macro(t["name"])
+            if kind == "enum":
+                view["values"] = [
+                    {
+                        "macro": self._claim(f"{macro}_{v['name'].upper()}", f"value {v['name']} of {t['name']}"),
+                        "literal": _int_literal(v["value"], ctype, t["base"]),
+                        "doc": _comment(v.get("description"))
+                        + (f" (devices: {', '.join(v['devices'])})" if v.get("devices") else ""),
+                    }
+                    for v in t["values"]
+                ]
+            else:
+                view["members"] = [
+                    {
+                        "mask": self._claim(f"{macro}_{m['name'].upper()}_MASK", f"member {m['name']} of {t['name']}"),
+                        "shift": self._claim(
+                            f"{macro}_{m['name'].upper()}_SHIFT", f"member {m['name']} of {t['name']}"
+                        ),
+                        "mask_literal": _mask_literal(m["mask"], ctype, t["base"]),
+                        "first_bit": m["first_bit"],
+                        "width": m["width"],
+                        "doc": (
+                            f"bits {m['first_bit']}-{m['last_bit']}: " if m["width"] > 1 else f"bit {m['first_bit']}: "
+                        )
+                        + ("(reserved) " if m["reserved"] else "")
+                        + _comment(m.get("description"))
+                        + (f" (devices: {', '.join(m['devices'])})" if m.get("devices") else ""),
+                    }
+                    for m in t["members"]
+                ]
+        elif kind == "struct":
+            view.update(self._params_view(t["params"], functions=None, owner=t["name"]))
+        else:
+            sel = self.types[t["selector_enum"]]
+            view["sel_c"] = self.type_c(sel["name"])
+            view["sel_signed"] = PRIMITIVES[sel["base"]][2]
+            values = {v["name"]: v for v in sel["values"]}
+            sel_macro = self.type_macro(sel["name"])
+            view["members"] = []
+            names = set()
+            seen_values = set()
+            for m in t["members"]:
+                if m["value"] in seen_values:
+                    continue  # per-device enum values sharing a number: one switch case (the first)
+                seen_values.add(m["value"])
+                c = member(m["when"])
+                if c in names or c == "none_":
+                    raise BackendError(f"C back end: union {t['name']} has two members named {c}")
+                names.add(c)
+                view["members"].append(
+                    {
+                        "when": m["when"],
+                        "c": c,
+                        "case": f"{sel_macro}_{m['when'].upper()}" if m["when"] in values else str(m["value"]),
+                        "st": {"c": self.type_c(m["type"]), "fn": self.type_fn(m["type"])} if m["type"] else None,
+                        "doc": _comment(m.get("description")),
+                    }
+                )
+        return view
+
+    # -------------------------------------------------------------- parameters
+    def _elem(self, tref: dict) -> dict:
+        """The C type of one value and the functions that read/write/print/parse it."""
+        k = tref["kind"]
+        if k == "primitive":
+            ctype, suffix = _PRIM[tref["name"]]
+            ops = f"{self.p}_%s_{suffix}"
+            return {
+                "ctype": ctype,
+                "rd": ops % "rd",
+                "wr": ops % "wr",
+                "jw": ops % "jw",
+                "jr": ops % "jr",
+                "size": PRIMITIVES[tref["name"]][0],
+            }
+        if k in ("enum", "bitfield"):
+            suffix = _PRIM[tref["base"]][1]
+            ops = f"{self.p}_%s_{suffix}"
+            return {
+                "ctype": self.type_c(tref["name"]),
+                "rd": ops % "rd",
+                "wr": ops % "wr",
+                "jw": ops % "jw",
+                "jr": ops % "jr",
+                "size": PRIMITIVES[tref["base"]][0],
+            }
+        if k in ("struct", "union"):
+            fn = self.type_fn(tref["name"])
+            size = tref["size"]
+            return {
+                "ctype": self.type_c(tref["name"]),
+                "rd": f"{fn}_read",
+                "wr": f"{fn}_write",
+                "jw": f"{fn}_to_json",
+                "jr": f"{fn}_from_json",
+                "size": size["min"] if size["fixed"] and size["min"] > 0 else None,
+            }
+        if k == "string":
+            return {"ctype": "char", "size": tref["length"]}
+        raise BackendError(f"C back end: unsupported type kind {k}")
+
+    def _param_view(self, q: dict, by_name: dict) -> dict:
+        tref = q["type"]
+        c = member(q["name"])
+        e = self._elem(tref)
+        count = q["count"]
+        view = {
+            "name": q["name"],
+            "c": c,
+            "optional": q["optional"],
+            "has": f"has_{q['name']}",
+            "e": e,
+            "doc": _comment(q.get("description")) + (f" [{q['units']}]" if q.get("units") else ""),
+        }
+        if tref["kind"] == "string":
+            view.update(kind="string", n=tref["length"], decl=f"char {c}[{tref['length']}]")
+        elif tref["kind"] == "union":
+            view.update(kind="union", sel_c=member(tref["selector"]), decl=f"{e['ctype']} {c}")
+        elif count is None:
+            view.update(kind="scalar", decl=f"{e['ctype']} {c}")
+        elif count["kind"] == "fixed":
+            view.update(kind="fixed", n=count["value"], decl=f"{e['ctype']} {c}[{count['value']}]")
+        else:
+            mx = q["max_count"]
+            view.update(max=mx, decl=f"{e['ctype']} {c}[{max(mx, 1)}]")
+            if count["kind"] == "param":
+                ref = by_name[count["param"]]
+                cmax = int_range(ref["type"]["name"])[1]
+                view.update(kind="counted", count_c=member(count["param"]), count_check=mx < cmax)
+            else:
+                view.update(kind="remaining", count_c=f"{q['name']}_count", count_check=True)
+        return view
+
+    def _params_view(self, params: list[dict], functions: list[str] | None, owner: str) -> dict:
+        views = []
+        by_name: dict[str, dict] = {}
+        if functions is not None:
+            fs = self.types[self.proto["function_selector"]["enum"]]
+            views.append(
+                {
+                    "name": "function",
+                    "c": "function",
+                    "optional": False,
+                    "has": None,
+                    "kind": "scalar",
+                    "e": self._elem({"kind": "enum", "name": fs["name"], "base": fs["base"]}),
+                    "decl": f"{self.type_c(fs['name'])} function",
+                    "doc": "function selector (" + ", ".join(functions) + ")",
+                }
+            )
+        for q in params:
+            views.append(self._param_view(q, by_name))
+            by_name[q["name"]] = q
+        members: list[dict] = []
+        for v in views:
+            if v["optional"]:
+                members.append({"decl": f"bool {v['has']}", "doc": f"{v['name']} is present"})
+            if v["kind"] == "remaining":
+                members.append({"decl": f"size_t {v['count_c']}", "doc": f"number of elements in {v['name']}"})
+            members.append({"decl": v["decl"], "doc": v["doc"]})
+        names = [m["decl"].split()[-1].split("[")[0] for m in members]
+        dup = {n for n in names if names.count(n) > 1}
+        if dup:
+            raise BackendError(f"C back end: {owner} would have two members named {', '.join(sorted(dup))}")
+        return {
+            "params": views,
+            "members": members,
+            "needs_i": any(v["kind"] in ("fixed", "counted", "remaining") for v in views),
+            "needs_n": any(v["kind"] == "remaining" and v["e"]["size"] for v in views),
+            "has_optional": any(v["optional"] for v in views),
+        }
+
+    # -------------------------------------------------------------- fields and layouts
+    def _field_view(self, set_: dict | None, f: dict) -> dict:
+        base = f"{self.p}_{set_['name']}_{f['name']}" if set_ else f"{self.p}_{f['name']}"
+        multi = len(f["variants"]) > 1
+        what = f"field {set_['name']}.{f['name']}" if set_ else f"reserved field {f['name']}"
+        fv = {
+            "name": f["name"],
+            "descriptor": f["id"],
+            "macro": self._claim(f"{base.upper()}_DESCRIPTOR", what),
+            "first": len(self.layouts),
+            "count": len(f["variants"]),
+            "has_variants": multi,
+            "index": len(self.fields),
+            "set": set_["id"] if set_ else None,
+            "doc": _comment(f.get("title")),
+            "role": f["role"],
+            "applies_to": f.get("applies_to"),
+        }
+        layouts = []
+        for v in f["variants"]:
+            lbase = base + (f"_{v['device']}" if v["device"] else "")
+            lv = {
+                "c": self._claim(f"{lbase}_t", what),
+                "fn": lbase,
+                "id": self._claim(f"{self.P}_FIELD_{lbase[len(self.p) + 1 :].upper()}", what),
+                "member": lbase[len(self.p) + 1 :],
+                "name": f["name"],
+                "device": v["device"] if multi else None,
+                "device_c": f"{self.P}_DEVICE_{v['device'].upper()}" if v["device"] else f"{self.P}_DEVICE_ANY",
+                "descriptor": f["id"],
+                "field_index": fv["index"],
+                "max_size": v["size"]["max"],
+                "doc": _comment(f.get("title")) + (f" ({v['device']})" if v["device"] else ""),
+                "description": _comment(f.get("description")),
+                "role": f["role"],
+            }
+            for suffix in ("encode", "decode"):
+                self._claim(f"{lbase}_{suffix}", what)
+            lv.update(
+                self._params_view(v["params"], v["functions"], f"{what} ({v['device']})" if v["device"] else what)
+            )
+            self.layouts.append(lv)
+            layouts.append(lv)
+        fv["layouts"] = layouts
+        self.fields.append(fv)
+        return fv
+
+    def _set_view(self, s: dict) -> dict:
+        name = s["name"]
+        return {
+            "name": name,
+            "id": s["id"],
+            "kind": s["kind"],
+            "doc": _comment(s.get("title")),
+            "macro": self._claim(f"{self.P}_{name.upper()}_SET", f"set {name}"),
+            "header": f"{self.pkg}/sets/{name}.h",
+            "guard": f"{self.P}_SETS_{name.upper()}_H",
+            "fields": [self._field_view(s, f) for f in s["fields"]],
+        }
+
+    def _all_ir_layouts(self):
+        for r in self.proto["reserved_fields"]:
+            yield from r["variants"]
+        for s in self.proto["sets"]:
+            for f in s["fields"]:
+                yield from f["variants"]
+
+    def _all_param_names(self):
+        yield "function"
+        for v in self._all_ir_layouts():
+            for q in v["params"]:
+                yield q["name"]
+        for t in self.types.values():
+            for q in t.get("params", []):
+                yield q["name"]
+
+    def _depth_params(self, params: list[dict]) -> int:
+        return max([1 + self._depth_type(q["type"]) for q in params] + [0])
+
+    def _depth_type(self, tref: dict) -> int:
+        t = self.types.get(tref.get("name", ""))
+        if tref["kind"] == "struct" and t:
+            return self._depth_params(t["params"])
+        if tref["kind"] == "union" and t:
+            return max([self._depth_params(self.types[m["type"]]["params"]) for m in t["members"] if m["type"]] + [0])
+        return 0
+
+    def _layout_depth(self, v: dict) -> int:
+        return max(self._depth_params(v["params"]), 1 if v["functions"] is not None else 0)
+
+    # -------------------------------------------------------------- vectors
+    def _vector_view(self, case: dict) -> dict:
+        name = re.sub(r"[^A-Za-z0-9_]", "_", case["name"])
+        dev = case.get("device")
+        return {
+            "name": name,
+            "hex": case["hex"],
+            "device_c": f"{self.P}_DEVICE_{dev.upper()}" if dev else f"{self.P}_DEVICE_ANY",
+            "expect": _c_string("".join(line + "\n" for line in case["expect"])),
+            "rejected": case["rejected"],
+        }
+
+    # -------------------------------------------------------------- render
+    def context(self) -> dict:
+        return {
+            "p": self.p,
+            "P": self.P,
+            "pkg": self.pkg,
+            "title": self.proto["title"],
+            "protocol": self.proto["name"],
+            "framing": self.framing,
+            "path_depth": self.path_depth,
+            "error_message_max": self.error_message_max,
+            "types": self.type_views,
+            "devices": self.devices,
+            "layouts": self.layouts,
+            "fields": self.fields,
+            "reserved": self.reserved,
+            "sets": self.sets,
+            "set_kinds": self.set_kinds,
+            "shared_set": self.shared_set,
+            "data_kind": self.data_kind,
+            "vectors": self.vectors,
+            "name_max": max([len(f["name"]) for f in self.fields] + [len(d["id"]) for d in self.devices] + [1]) + 1,
+        }
+
+
+def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+    env = environment()
+    out: dict[str, str] = {}
+    for proto in ir["protocols"]:
+        pkg = _Package(proto, vectors)
+        ctx = pkg.context()
+        root = f"c/{pkg.pkg}/"
+        for tpl, path in _RUNTIME.items():
+            out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
+        for s in pkg.sets:
+            out[root + f"include/{s['header']}"] = env.get_template("c/set.h.j2").render(ctx, set=s)
+            out[root + f"src/sets/{s['name']}.c"] = env.get_template("c/set.c.j2").render(ctx, set=s)
+        reserved = {
+            "name": "reserved",
+            "header": f"{pkg.pkg}/reserved.h",
+            "guard": f"{pkg.P}_RESERVED_H",
+            "macro": None,
+            "fields": pkg.reserved,
+            "doc": "Reserved fields (valid in every set of their kind)",
+        }
+        out[root + f"include/{pkg.pkg}/reserved.h"] = env.get_template("c/set.h.j2").render(ctx, set=reserved)
+        out[root + "src/reserved.c"] = env.get_template("c/set.c.j2").render(ctx, set=reserved)
+    return out
+
+
+def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
+    """Names a C user types for a field: struct type(s), encode and decode functions, header."""
+    p = prefix_of(protocol)
+    base = f"{p}_{set_['name']}_{field['name']}" if set_ else f"{p}_{field['name']}"
+    header = f"{protocol['package']}/sets/{set_['name']}.h" if set_ else f"{protocol['package']}/reserved.h"
+    variants = field.get("variants") or [{"device": None}]
+    bases = [base + (f"_{v['device']}" if v.get("device") else "") for v in variants]
+    return {
+        "type": ", ".join(b + "_t" for b in bases),
+        "encode": ", ".join(b + "_encode" for b in bases),
+        "decode": ", ".join(b + "_decode" for b in bases),
+        "descriptor": f"{base.upper()}_DESCRIPTOR",
+        "header": header,
+    }

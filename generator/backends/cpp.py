@@ -1,0 +1,671 @@
+"""C++17 back end: one header-only library per protocol at generated/cpp/<package>/.
+
+All naming and type mapping happens here; the templates in templates/cpp/ only loop and print.
+Layout of a package (namespace = protocols[].package):
+
+  include/<pkg>/framing.hpp          framing constants (from protocols[].framing) and limits
+  include/<pkg>/wire.hpp             Reader/Writer, DecodeError, BoundedVector, Codec<T> for primitives
+  include/<pkg>/checksum.hpp         Fletcher-16
+  include/<pkg>/packet.hpp           PacketBuilder, PacketView, FieldIterator
+  include/<pkg>/parser.hpp           StreamParser (docs/conformance.md section 1)
+  include/<pkg>/devices.hpp          Device enum, set kinds
+  include/<pkg>/types.hpp            <pkg>::types: enums, bitfields, structs, unions (+ Codec)
+  include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec)
+  include/<pkg>/lookup.hpp           (set, descriptor) -> layouts, with reserved and shared fields
+  include/<pkg>/dispatch.hpp         decode_field(): variants, raw fallback
+  include/<pkg>/json_*.hpp           canonical JSON writer, JSON reader, Json<T> codecs
+  include/<pkg>/json_lines.hpp       stream -> JSON lines, JSON line -> bytes (what the CLIs do)
+  tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt
+"""
+
+from __future__ import annotations
+
+import re
+
+from generator.render import environment
+
+OUTPUT_DIRS = ["cpp"]
+
+CPP_KEYWORDS = set(
+    """
+    alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t char16_t char32_t class
+    compl concept const consteval constexpr constinit const_cast continue co_await co_return co_yield decltype
+    default delete do double dynamic_cast else enum explicit export extern false float for friend goto if inline
+    int long mutable namespace new noexcept not not_eq nullptr operator or or_eq private protected public register
+    reinterpret_cast requires return short signed sizeof static static_assert static_cast struct switch template
+    this thread_local throw true try typedef typeid typename union unsigned using virtual void volatile wchar_t
+    while xor xor_eq
+    std NULL assert errno stdin stdout stderr EOF
+    """.split()
+)  # C++ keywords, and names (std, common macros) a member must not shadow
+
+# Sub-namespaces of a package that the runtime uses; a set with one of these names gets a suffix.
+RUNTIME_NAMESPACES = {
+    "types",
+    "detail",
+    "json",
+    "decode",
+    "encode",
+    "decode_field",
+    "lookup_field",
+    "set_kind",
+    "device_name",
+    "device_from_name",
+    "fletcher16",
+    "format_double",
+    "string_sink",
+    "to_string",
+    "from_string",
+    "write_packet_json",
+    "write_skip_json",
+    "decode_to_json_lines",
+    "encode_json_line",
+    "no_union_member_error",
+    "read_value",
+    "write_value",
+    "read_string",
+    "write_string",
+    "read_fixed",
+    "write_fixed",
+    "read_counted",
+    "write_counted",
+    "read_remaining",
+    "write_remaining",
+    "json_write_value",
+    "json_read_value",
+    "json_write_string",
+    "json_read_string",
+    "json_write_array",
+    "json_read_fixed",
+    "json_read_counted",
+    "json_read_remaining",
+    "json_check_object",
+}  # namespace-scope names of the runtime; a set with one of these names gets a "_set" suffix
+
+PRIM_CPP = {
+    "bool": "bool",
+    "char": "char",
+    "u8": "std::uint8_t",
+    "u16": "std::uint16_t",
+    "u32": "std::uint32_t",
+    "u64": "std::uint64_t",
+    "s8": "std::int8_t",
+    "s16": "std::int16_t",
+    "s32": "std::int32_t",
+    "s64": "std::int64_t",
+    "float": "float",
+    "double": "double",
+}
+
+
+def camel(name: str) -> str:
+    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
+
+
+def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
+    return name + "_" if name in CPP_KEYWORDS or name in extra else name
+
+
+def int_literal(v: int) -> str:
+    if v >= 0:
+        return str(v) if v < 2**31 else f"{v}ULL"
+    if v >= -(2**31):
+        return str(v)
+    return f"({v + 1}LL - 1)"
+
+
+def cpp_string(s: str) -> str:
+    """A C++ string literal for ASCII-ish text (octal escapes for anything unusual)."""
+    out = ['"']
+    for ch in s:
+        o = ord(ch)
+        if ch == '"':
+            out.append('\\"')
+        elif ch == "\\":
+            out.append("\\\\")
+        elif ch == "?":
+            out.append("\\?")  # no trigraphs
+        elif 0x20 <= o < 0x7F:
+            out.append(ch)
+        elif o < 0x100:
+            out.append("\\%03o" % o)
+        else:
+            raise ValueError(f"non-Latin-1 character in {s!r}")
+    out.append('"')
+    return "".join(out)
+
+
+def _reserved_ns(proto: dict) -> str:
+    names = {s["name"] for s in proto["sets"]}
+    return "reserved" if "reserved" not in names else "reserved_fields"
+
+
+def _set_ns(set_: dict) -> str:
+    n = ident(set_["name"])
+    return n + "_set" if n in RUNTIME_NAMESPACES or n == "reserved" else n
+
+
+def _layout_names(fields: list[dict]) -> dict[tuple[str, str | None], str]:
+    """(field name, device) -> C++ struct name, unique within a set."""
+    taken = {camel(f["name"]) for f in fields}
+    out: dict[tuple[str, str | None], str] = {}
+    for f in fields:
+        if len(f["variants"]) == 1:
+            out[(f["name"], None)] = camel(f["name"])
+            continue
+        for v in f["variants"]:
+            name = camel(f["name"]) + camel(v["device"])
+            if name in taken:
+                name = camel(f["name"]) + "For" + camel(v["device"])
+            taken.add(name)
+            out[(f["name"], v["device"])] = name
+    return out
+
+
+def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
+    """The names a C++ user types for a field (documentation back end)."""
+    pkg = protocol["package"]
+    is_reserved = set_ is None or field.get("role") == "ack"
+    ns = _reserved_ns(protocol) if is_reserved else _set_ns(set_)
+    names = _layout_names(protocol["reserved_fields"] if is_reserved else set_["fields"])
+    types = [
+        f"{pkg}::{ns}::{names[(field['name'], v['device'] if len(field['variants']) > 1 else None)]}"
+        for v in field["variants"]
+    ]
+    out = {
+        "type": types[0],
+        "header": f"{pkg}/fields/{ns}.hpp",
+        "namespace": f"{pkg}::{ns}",
+        "decode": f"{pkg}::decode(data, size, value, error)",
+        "encode": f"{pkg}::encode(value, buffer, capacity, written)",
+        "packet": f"{pkg}::PacketBuilder(set).add(value)",
+    }
+    if len(types) > 1:
+        out["variants"] = ", ".join(types)
+        for v, t in zip(field["variants"], types):
+            out[f"type_{v['device']}"] = t
+    return out
+
+
+class _Proto:
+    def __init__(self, proto: dict):
+        self.p = proto
+        self.ns = ident(proto["package"])
+        self.types = {t["name"]: t for t in proto["types"]}
+        self.reserved_ns = _reserved_ns(proto)
+
+    # ------------------------------------------------------------ type mapping
+    def type_name(self, name: str) -> str:
+        return f"::{self.ns}::types::{name}"
+
+    def elem_cpp(self, tref: dict) -> str:
+        k = tref["kind"]
+        if k == "primitive":
+            return PRIM_CPP[tref["name"]]
+        if k == "string":
+            return f"std::array<char, {tref['length']}>"
+        return self.type_name(tref["name"])
+
+    def param(self, q: dict, siblings: dict[str, dict]) -> dict:
+        """Everything a template prints for one parameter (struct member or layout parameter)."""
+        t = q["type"]
+        c = q["count"]
+        member = ident(q["name"])
+        elem = self.elem_cpp(t)
+        ns = self.ns
+
+        def ref(name: str) -> str:
+            sib = siblings[name]
+            return f"(*v.{sib['member']})" if sib["optional"] else f"v.{sib['member']}"
+
+        count_expr = sel_expr = None
+        if t["kind"] == "string":
+            shape, value_type = "string", elem
+        elif t["kind"] == "union":
+            shape, value_type = "union", elem
+            sib = siblings[t["selector"]]
+            sel_type = sib["value_type"]
+            sel_expr = f"v.{sib['member']}.value_or({sel_type}{{}})" if sib["optional"] else f"v.{sib['member']}"
+        elif c is None:
+            shape, value_type = "scalar", elem
+        elif c["kind"] == "fixed":
+            shape, value_type = "fixed", f"std::array<{elem}, {c['value']}>"
+        elif c["kind"] == "param":
+            shape, value_type = "counted", f"::{ns}::BoundedVector<{elem}, {q['max_count']}>"
+            sib = siblings[c["param"]]
+            base = f"v.{sib['member']}.value_or(0)" if sib["optional"] else f"v.{sib['member']}"
+            count_expr = f"static_cast<std::uint64_t>({base})"
+        else:
+            shape, value_type = "remaining", f"::{ns}::BoundedVector<{elem}, {q['max_count']}>"
+        optional = bool(q["optional"])
+        tgt = f"(*v.{member})" if optional else f"v.{member}"
+        ops = {
+            "scalar": (
+                f"read_value(r, {tgt}, err)",
+                f"write_value(w, {tgt})",
+                f"json_write_value(w, {tgt})",
+                f"json_read_value(x, {tgt}, err)",
+            ),
+            "string": (
+                f"read_string(r, {tgt}, err)",
+                f"write_string(w, {tgt})",
+                f"json_write_string(w, {tgt})",
+                f"json_read_string(x, {tgt}, err)",
+            ),
+            "union": (
+                f"::{ns}::Codec<{elem}>::read(r, {tgt}, {sel_expr}, err)",
+                f"::{ns}::Codec<{elem}>::write(w, {tgt}, {sel_expr})",
+                f"::{ns}::Json<{elem}>::write(w, {tgt})",
+                f"::{ns}::Json<{elem}>::read(x, {tgt}, {sel_expr}, err)",
+            ),
+            "fixed": (
+                f"read_fixed(r, {tgt}, err)",
+                f"write_fixed(w, {tgt})",
+                f"json_write_array(w, {tgt})",
+                f"json_read_fixed(x, {tgt}, err)",
+            ),
+            "counted": (
+                f"read_counted(r, {tgt}, {count_expr}, err)",
+                f"write_counted(w, {tgt}, {count_expr})",
+                f"json_write_array(w, {tgt})",
+                f"json_read_counted(x, {tgt}, {count_expr}, err)",
+            ),
+            "remaining": (
+                f"read_remaining(r, {tgt}, err)",
+                f"write_remaining(w, {tgt})",
+                f"json_write_array(w, {tgt})",
+                f"json_read_remaining(x, {tgt}, err)",
+            ),
+        }[shape]
+        out = {
+            "json": q["name"],
+            "member": member,
+            "value_type": value_type,
+            "type": f"std::optional<{value_type}>" if optional else value_type,
+            "optional": optional,
+            "shape": shape,
+            "read": ops[0],
+            "write": ops[1],
+            "json_write": ops[2],
+            "json_read": ops[3],
+            "doc": " ".join((q.get("description") or "").split()) + (f" [{q['units']}]" if q.get("units") else ""),
+        }
+        siblings[q["name"]] = out
+        return out
+
+    def params(self, params: list[dict], function: bool = False) -> list[dict]:
+        siblings: dict[str, dict] = {}
+        out = []
+        if function:
+            fs = self.p["function_selector"]["enum"]
+            out.append(
+                self.param(
+                    {
+                        "name": "function",
+                        "type": {"kind": "enum", "name": fs},
+                        "count": None,
+                        "optional": False,
+                        "description": "Function selector.",
+                    },
+                    siblings,
+                )
+            )
+        out.extend(self.param(q, siblings) for q in params)
+        return out
+
+    # ------------------------------------------------------------ types
+    def ordered_types(self) -> list[dict]:
+        """Enums and bitfields first, then structs and unions after what they contain."""
+        done: set[str] = set()
+        order: list[dict] = []
+
+        def deps(t: dict) -> list[str]:
+            if t["kind"] == "struct":
+                return [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
+            if t["kind"] == "union":
+                return [m["type"] for m in t["members"] if m["type"]]
+            return []
+
+        def visit(name: str) -> None:
+            if name in done:
+                return
+            done.add(name)
+            t = self.types[name]
+            for d in deps(t):
+                visit(d)
+            order.append(t)
+
+        for t in self.p["types"]:
+            if t["kind"] in ("enum", "bitfield"):
+                done.add(t["name"])
+                order.append(t)
+        for t in self.p["types"]:
+            visit(t["name"])
+        return order
+
+    def type_model(self, t: dict) -> dict:
+        m = {
+            "kind": t["kind"],
+            "name": t["name"],
+            "cpp": t["name"],
+            "full": self.type_name(t["name"]),
+            "title": " ".join(t.get("title", t["name"]).split()),
+        }
+        if t["kind"] == "enum":
+            m["base"] = PRIM_CPP[t["base"]]
+            m["enumerators"] = [
+                {"name": v["name"], "cpp": ident(v["name"]), "literal": int_literal(v["value"])} for v in t["values"]
+            ]
+        elif t["kind"] == "bitfield":
+            m["base"] = PRIM_CPP[t["base"]]
+            taken = {"raw", "set_raw", "Raw"}
+            members = []
+            for b in t["members"]:
+                getter = ident(b["name"], frozenset(taken))
+                members.append(
+                    {
+                        "name": b["name"],
+                        "getter": getter,
+                        "setter": "set_" + b["name"],
+                        "mask_name": b["name"] + "_mask",
+                        "mask": f"0x{b['mask']:X}ULL",
+                        "shift": b["first_bit"],
+                        "width": b["width"],
+                        "flag": b["width"] == 1,
+                    }
+                )
+            m["members"] = members
+        elif t["kind"] == "struct":
+            m["params"] = self.params(t["params"])
+            m["fixed"] = "true" if t["size"]["fixed"] else "false"
+            m["size"] = t["size"]["min"] if t["size"]["fixed"] else 0
+        else:
+            sel = self.types[t["selector_enum"]]
+            alts = ["std::monostate"]
+            members = []
+            for mem in t["members"]:
+                if mem["type"]:
+                    alts.append(self.type_name(mem["type"]))
+                    index = len(alts) - 1
+                else:
+                    index = 0
+                members.append(
+                    {
+                        "when": mem["when"],
+                        "literal": int_literal(mem["value"]),
+                        "index": index,
+                        "type": self.type_name(mem["type"]) if mem["type"] else None,
+                    }
+                )
+            m["alternatives"] = alts
+            m["members"] = members
+            m["selector"] = self.type_name(sel["name"])
+            m["selector_base"] = PRIM_CPP[sel["base"]]
+            m["selector_signed"] = sel["base"].startswith("s")
+        return m
+
+    # ------------------------------------------------------------ fields
+    def layouts(self, fields: list[dict], set_: dict | None) -> list[dict]:
+        names = _layout_names(fields)
+        out = []
+        for f in fields:
+            multi = len(f["variants"]) > 1
+            for v in f["variants"]:
+                out.append(
+                    {
+                        "cpp": names[(f["name"], v["device"] if multi else None)],
+                        "name": f["name"],
+                        "title": " ".join(f["title"].split()),
+                        "set": set_["id"] if set_ else None,
+                        "descriptor": f["id"],
+                        "device": v["device"] if multi else None,
+                        "device_cpp": ident(v["device"]) if multi else None,
+                        "params": self.params(v["params"], function=v["functions"] is not None),
+                        "has_optional": any(q["optional"] for q in v["params"]),
+                        "role": f["role"],
+                    }
+                )
+        return out
+
+    def set_models(self) -> list[dict]:
+        out = []
+        for s in self.p["sets"]:
+            ns = _set_ns(s)
+            out.append(
+                {
+                    "ns": ns,
+                    "file": ns,
+                    "title": s["title"],
+                    "id": s["id"],
+                    "kind": s["kind"],
+                    "layouts": self.layouts(s["fields"], s),
+                }
+            )
+        if self.p["reserved_fields"]:
+            out.append(
+                {
+                    "ns": self.reserved_ns,
+                    "file": self.reserved_ns,
+                    "title": "Reserved fields",
+                    "id": None,
+                    "kind": None,
+                    "layouts": self.layouts(self.p["reserved_fields"], None),
+                }
+            )
+        return out
+
+    def lookup_cases(self, fields: list[dict], ns: str) -> list[dict]:
+        names = _layout_names(fields)
+        cases = []
+        for f in fields:
+            multi = len(f["variants"]) > 1
+            cases.append(
+                {
+                    "descriptor": f["id"],
+                    "types": [
+                        f"::{self.ns}::{ns}::{names[(f['name'], v['device'] if multi else None)]}"
+                        for v in f["variants"]
+                    ],
+                }
+            )
+        return cases
+
+    def lookup(self) -> dict:
+        sets = [{"id": s["id"], "cases": self.lookup_cases(s["fields"], _set_ns(s))} for s in self.p["sets"]]
+        kinds = []
+        for k, r in self.p["set_kinds"].items():
+            conds = ([f"set >= {r['first']}"] if r["first"] > 0 else []) + (
+                [f"set <= {r['last']}"] if r["last"] < 255 else []
+            )
+            kinds.append({"name": k, "cpp": ident(k), "cond": " && ".join(conds) or "true"})
+        reserved = []
+        for k in kinds:
+            rf = [f for f in self.p["reserved_fields"] if f["applies_to"] == k["name"]]
+            if rf:
+                reserved.append({"kind": k["cpp"], "cases": self.lookup_cases(rf, self.reserved_ns)})
+        shared = None
+        sd = self.p.get("shared_data")
+        if sd:
+            sset = next((s for s in self.p["sets"] if s["id"] == sd["set"]), None)
+            if sset and any(k["name"] == "data" for k in kinds):
+                shared = {"kind": ident("data"), "cases": self.lookup_cases(sset["fields"], _set_ns(sset))}
+        return {"sets": sets, "kinds": kinds, "reserved": reserved, "shared": shared}
+
+    # ------------------------------------------------------------ limits
+    def _value_path(self, tref: dict, seen: tuple = ()) -> int:
+        if tref["kind"] == "struct" and tref["name"] not in seen:
+            return 1 + self._params_path(self.types[tref["name"]]["params"], seen + (tref["name"],))
+        if tref["kind"] == "union" and tref["name"] not in seen:
+            u = self.types[tref["name"]]
+            return max(
+                [
+                    1 + self._params_path(self.types[m["type"]]["params"], seen + (tref["name"],))
+                    for m in u["members"]
+                    if m["type"]
+                ]
+                or [0]
+            )
+        return 0
+
+    def _params_path(self, params: list[dict], seen: tuple = ()) -> int:
+        best = 0
+        for q in params:
+            n = len(q["name"])
+            c = q["count"]
+            if c is not None:
+                top = c["value"] if c["kind"] == "fixed" else (q["max_count"] or 0) + 1
+                n += 2 + len(str(max(top, 1)))
+            best = max(best, n + self._value_path(q["type"], seen))
+        return best
+
+    def _value_depth(self, tref: dict, counted: bool, seen: tuple = ()) -> int:
+        d = 1 if counted else 0
+        if tref["kind"] == "struct" and tref["name"] not in seen:
+            d += 1 + max(
+                [
+                    self._value_depth(q["type"], q["count"] is not None, seen + (tref["name"],))
+                    for q in self.types[tref["name"]]["params"]
+                ]
+                or [0]
+            )
+        elif tref["kind"] == "union" and tref["name"] not in seen:
+            u = self.types[tref["name"]]
+            d += 1 + max(
+                [
+                    self._value_depth({"kind": "struct", "name": m["type"]}, False, seen + (tref["name"],)) - 1
+                    for m in u["members"]
+                    if m["type"]
+                ]
+                or [0]
+            )
+        return d
+
+    def limits(self) -> dict:
+        layouts = [v for s in self.p["sets"] for f in s["fields"] for v in f["variants"]]
+        layouts += [v for f in self.p["reserved_fields"] for v in f["variants"]]
+        path = max([len("function")] + [self._params_path(v["params"]) for v in layouts])
+        depth = max([0] + [self._value_depth(q["type"], q["count"] is not None) for v in layouts for q in v["params"]])
+        return {"max_error_path": path + 8, "max_json_depth": depth + 8}
+
+    # ------------------------------------------------------------ framing
+    def framing(self) -> dict:
+        f = self.p["framing"]
+        order = f["checksum"]["order"]
+        return {
+            "sync": ", ".join(f"0x{b:02X}" for b in f["sync"]),
+            "sync_size": len(f["sync"]),
+            "header_size": f["header_size"],
+            "set_offset": f["set_offset"],
+            "length_offset": f["length_offset"],
+            "field_header_size": f["field_header_size"],
+            "field_length_offset": f["field_length_offset"],
+            "field_descriptor_offset": f["field_descriptor_offset"],
+            "field_length_counts_header": "true" if f["field_length_counts_header"] else "false",
+            "field_length_adjust": f["field_length_adjust"],
+            "max_payload": f["max_payload"],
+            "checksum_size": f["checksum_size"],
+            "sum1_index": order.index("sum1"),
+            "sum2_index": order.index("sum2"),
+            "max_packet": f["max_packet"],
+            "max_field_data": f["max_field_data"],
+            "big_endian": "true" if self.p["byte_order"] == "big" else "false",
+        }
+
+    # ------------------------------------------------------------ tests
+    def bitfield_test(self) -> dict | None:
+        for t in self.p["types"]:
+            if t["kind"] != "bitfield":
+                continue
+            m = self.type_model(t)
+            mem = next((x for x in m["members"] if not x["flag"]), None) or m["members"][0]
+            flag = next((x for x in m["members"] if x["flag"]), None)
+            return {
+                "type": m["full"],
+                "base": m["base"],
+                "member": mem,
+                "flag": flag,
+                "value": (1 << mem["width"]) - 1 if mem["width"] < 64 else 1,
+                "raw": f"0x{((((1 << mem['width']) - 1) << mem['shift']) if mem['width'] < 64 else 1):X}ULL",
+            }
+        return None
+
+    def vector_cases(self, vectors: list[dict]) -> list[dict]:
+        out = []
+        used: set[str] = set()
+        for c in vectors:
+            if c["protocol"] != self.p["name"]:
+                continue
+            name = re.sub(r"[^A-Za-z0-9]", "_", c["name"]).strip("_") or "case"
+            name = camel(name.lower()) if name[0].isdigit() else name
+            base, i = name, 2
+            while name in used:
+                name, i = f"{base}_{i}", i + 1
+            used.add(name)
+            out.append(
+                {
+                    "name": name,
+                    "source": c["name"],
+                    "hex": cpp_string(c["hex"]),
+                    "device": cpp_string(c["device"]) if c["device"] else "nullptr",
+                    "rejected": c["rejected"],
+                    "expect": [cpp_string(line) for line in c["expect"]],
+                }
+            )
+        return out
+
+
+def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+    env = environment()
+    files: dict[str, str] = {}
+    for proto in ir["protocols"]:
+        P = _Proto(proto)
+        pkg = proto["package"]
+        root = f"cpp/{pkg}"
+        inc = f"{root}/include/{pkg}"
+        sets = P.set_models()
+        ctx = {
+            "ns": P.ns,
+            "pkg": pkg,
+            "protocol": proto["name"],
+            "title": proto["title"],
+            "framing": P.framing(),
+            "limits": P.limits(),
+            "devices": [{"id": d["id"], "cpp": ident(d["id"]), "title": d["title"]} for d in proto["devices"]],
+            "types": [P.type_model(t) for t in P.ordered_types()],
+            "sets": sets,
+            "lookup": P.lookup(),
+            "vectors": P.vector_cases(vectors),
+            "bitfield_test": P.bitfield_test(),
+        }
+        plain = {
+            "framing.hpp": "framing.hpp.j2",
+            "wire.hpp": "wire.hpp.j2",
+            "checksum.hpp": "checksum.hpp.j2",
+            "packet.hpp": "packet.hpp.j2",
+            "parser.hpp": "parser.hpp.j2",
+            "devices.hpp": "devices.hpp.j2",
+            "types.hpp": "types.hpp.j2",
+            "types_json.hpp": "types_json.hpp.j2",
+            "lookup.hpp": "lookup.hpp.j2",
+            "dispatch.hpp": "dispatch.hpp.j2",
+            "json_writer.hpp": "json_writer.hpp.j2",
+            "json_reader.hpp": "json_reader.hpp.j2",
+            "json_codec.hpp": "json_codec.hpp.j2",
+            "json_lines.hpp": "json_lines.hpp.j2",
+            f"{pkg}.hpp": "package.hpp.j2",
+        }
+        for out, tpl in plain.items():
+            files[f"{inc}/{out}"] = env.get_template(f"cpp/include/{tpl}").render(ctx)
+        for s in sets:
+            files[f"{inc}/fields/{s['file']}.hpp"] = env.get_template("cpp/include/fields.hpp.j2").render(ctx, set=s)
+            files[f"{inc}/fields/{s['file']}_json.hpp"] = env.get_template("cpp/include/fields_json.hpp.j2").render(
+                ctx, set=s
+            )
+        files[f"{root}/tools/decode.cpp"] = env.get_template("cpp/tools/decode.cpp.j2").render(ctx)
+        files[f"{root}/tools/encode.cpp"] = env.get_template("cpp/tools/encode.cpp.j2").render(ctx)
+        files[f"{root}/tests/test_support.hpp"] = env.get_template("cpp/tests/test_support.hpp.j2").render(ctx)
+        files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
+        files[f"{root}/tests/test_runtime.cpp"] = env.get_template("cpp/tests/test_runtime.cpp.j2").render(ctx)
+        files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
+        files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
+    return files

@@ -1,0 +1,798 @@
+"""Python back end: one installable, dependency-free package per protocol (Python 3.9+).
+
+generated/python/<package>/
+    pyproject.toml, README.md
+    <package>/            the library: runtime modules (rendered with the framing constants) plus
+                          types.py (enums, bitfields, structs, unions), one module per descriptor set,
+                          reserved.py (reserved fields such as ack/nack) and registry.py (dispatch tables)
+    tests/                golden vectors (generated), typed round trips (generated), runtime tests
+
+All naming and type mapping happens here; templates only loop and print. Layouts are described to
+the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...) whose source text is
+built below, so the generated modules read like declarations.
+"""
+
+from __future__ import annotations
+
+import keyword
+import textwrap
+
+from generator.primitives import PRIMITIVES, int_range
+from generator.render import environment
+
+OUTPUT_DIRS = ["python"]
+
+# Runtime modules of every package; a descriptor set whose name collides gets a "_set" suffix.
+RUNTIME_MODULES = {"canonical", "cli", "codec", "framing", "packets", "registry", "reserved", "types", "tests"}
+# Names the package exports at top level (a set module must not shadow them).
+EXPORTED = {
+    "build_packet",
+    "checksum_bytes",
+    "decode_bytes",
+    "decode_field",
+    "decode_packet",
+    "decode_stream",
+    "encode_line",
+    "encode_lines",
+    "fletcher16",
+    "iter_fields",
+    "lookup",
+    "parse",
+}
+# Static runtime templates: template file -> output path inside the package directory.
+RUNTIME_TEMPLATES = ["__init__.py", "__main__.py", "canonical.py", "cli.py", "codec.py", "framing.py", "packets.py"]
+
+SCALARS = {
+    "u8": "_c.U8",
+    "u16": "_c.U16",
+    "u32": "_c.U32",
+    "u64": "_c.U64",
+    "s8": "_c.S8",
+    "s16": "_c.S16",
+    "s32": "_c.S32",
+    "s64": "_c.S64",
+    "float": "_c.F32",
+    "double": "_c.F64",
+    "bool": "_c.BOOL",
+    "char": "_c.CHAR",
+}
+PY_TYPES = {"int": "int", "float": "float", "bool": "bool", "char": "bytes"}
+# Attribute names the runtime base classes use (a parameter with such a name gets a "_" suffix).
+LAYOUT_RESERVED = {"decode", "encode", "to_json", "from_json"}
+BITFIELD_RESERVED = set(dir(int)) | {"replace", "members"}
+
+
+# ------------------------------------------------------------------------------------------ naming
+def camel(name: str) -> str:
+    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
+
+
+def py_attr(name: str, reserved: set[str] = LAYOUT_RESERVED) -> str:
+    """A parameter/member name as a Python attribute (keywords and runtime names get a '_')."""
+    if keyword.iskeyword(name) or name in reserved or name in ("l", "O", "I"):
+        return name + "_"
+    return name
+
+
+def const_name(name: str) -> str:
+    return name.upper()
+
+
+def set_module(set_: dict) -> str:
+    name = set_["name"]
+    if name in RUNTIME_MODULES or name in EXPORTED or keyword.iskeyword(name):
+        return name + "_set"
+    return name
+
+
+def _layout_classes(fields: list[dict]) -> dict[tuple[str, str | None], str]:
+    """Class name of every layout of the given fields: (field name, device or None) -> class name."""
+    out: dict[tuple[str, str | None], str] = {}
+    used: set[str] = set()
+    for f in fields:
+        multi = len(f["variants"]) > 1
+        for v in f["variants"]:
+            dev = v["device"] if multi else None
+            base = camel(f["name"]) + (f"_{dev}" if dev else "")
+            name = base
+            if name in used:
+                name = f"{base}_0x{f['id']:02X}"
+            used.add(name)
+            out[(f["name"], dev)] = name
+    return out
+
+
+def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
+    """The names a Python user types for a field (used by the documentation back end)."""
+    pkg = protocol["package"]
+    is_reserved = set_ is None or field.get("role") == "ack" or "applies_to" in field
+    module = f"{pkg}.reserved" if is_reserved else f"{pkg}.{set_module(set_)}"
+    names = _layout_classes(protocol["reserved_fields"] if is_reserved else set_["fields"])
+    multi = len(field["variants"]) > 1
+    classes = [f"{module}.{names[(field['name'], v['device'] if multi else None)]}" for v in field["variants"]]
+    out = {
+        "class": classes[0],
+        "module": module,
+        "decode": f"{classes[0]}.decode(data)",
+        "encode": "value.encode()",
+        "packet": f"{pkg}.PacketBuilder(set).add(value).build()",
+        "json": "value.to_json()",
+    }
+    if multi:
+        out["variants"] = ", ".join(classes)
+        for v, c in zip(field["variants"], classes):
+            out[f"class_{v['device']}"] = c
+    return out
+
+
+# ------------------------------------------------------------------------------------------ text
+def docstring(*paragraphs: str, indent: int = 4) -> str:
+    """A safe triple-quoted docstring body: paragraphs wrapped, backslashes and quotes escaped."""
+    parts = []
+    for p in paragraphs:
+        p = " ".join((p or "").split())
+        if p:
+            lines = textwrap.wrap(p, 100 - indent, break_long_words=False, break_on_hyphens=False)
+            parts.append(("\n" + " " * indent).join(lines))
+    text = ("\n\n" + " " * indent).join(parts) or "(no description)"
+    text = text.replace("\\", "\\\\").replace('"""', '\\"\\"\\"')
+    if text.endswith('"'):
+        text += " "
+    if "\n" in text:
+        text += "\n"
+    return text
+
+
+def comment(text: str) -> str:
+    return " ".join((text or "").split())
+
+
+def decl(code: str, note: str, indent: int = 4) -> list[str]:
+    """A declaration with its note: a trailing comment when it fits in 120 columns, else comment lines above."""
+    note = comment(note)
+    if not note:
+        return [code]
+    inline = f"{code}  # {note}"
+    if indent + len(inline) <= 120:
+        return [inline]
+    wrapped = textwrap.wrap(note, 116 - indent, break_long_words=False, break_on_hyphens=False)
+    return [f"# {line}" for line in wrapped] + [code]
+
+
+def tuple_literal(items: list[str]) -> str:
+    if len(items) == 1:
+        return f"({items[0]},)"
+    return "(" + ", ".join(items) + ")"
+
+
+def pyrepr(value) -> str:
+    return repr(value)
+
+
+# ------------------------------------------------------------------------------------------ model
+class _Proto:
+    """Everything the templates need for one protocol, with names and types mapped to Python."""
+
+    def __init__(self, proto: dict):
+        self.p = proto
+        self.package = proto["package"]
+        self.types = {t["name"]: t for t in proto["types"]}
+        fs = proto.get("function_selector") or {}
+        self.function_enum = fs.get("enum")
+        self.byte_order = ">" if proto["byte_order"] == "big" else "<"
+
+    # -------------------------------------------------------------- type mapping
+    def scalar_expr(self, tref: dict, tp: str) -> str | None:
+        """Runtime scalar for a type reference, or None when it is not a scalar (struct/union)."""
+        kind = tref["kind"]
+        if kind == "primitive":
+            return SCALARS[tref["name"]]
+        if kind == "string":
+            return f"_c.string({tref['length']})"
+        if kind == "enum":
+            return f"_c.enum({tp}{tref['name']}, {tref['base']!r})"
+        if kind == "bitfield":
+            return f"_c.flags({tp}{tref['name']})"
+        return None
+
+    def elem_annotation(self, tref: dict, tp: str) -> str:
+        kind = tref["kind"]
+        if kind == "primitive":
+            return PY_TYPES[PRIMITIVES[tref["name"]][1]]
+        if kind == "string":
+            return "bytes"
+        if kind in ("enum", "bitfield", "struct"):
+            return f"{tp}{tref['name']}"
+        if kind == "union":
+            members = [m["type"] for m in self.types[tref["name"]]["members"] if m["type"]]
+            inner = ", ".join(f"{tp}{m}" for m in dict.fromkeys(members))
+            if not members:
+                return "None"
+            return f"_ty.Optional[_ty.Union[{inner}]]" if len(members) > 1 else f"_ty.Optional[{inner}]"
+        raise ValueError(kind)
+
+    def elem_default(self, tref: dict, tp: str) -> str:
+        kind = tref["kind"]
+        if kind == "primitive":
+            pk = PRIMITIVES[tref["name"]][1]
+            return {"int": "0", "float": "0.0", "bool": "False", "char": 'b"\\x00"'}[pk]
+        if kind == "string":
+            pad = "b' '" if tref.get("padding") == "space" else "b'\\x00'"
+            return f"{pad} * {tref['length']}"
+        if kind == "enum":
+            first = self.types[tref["name"]]["values"][0]["name"]
+            return f"{tp}{tref['name']}.{const_name(first)}"
+        if kind == "bitfield":
+            return f"{tp}{tref['name']}(0)"
+        if kind == "struct":
+            return f"{tp}{tref['name']}()"
+        if kind == "union":
+            return "None"
+        raise ValueError(kind)
+
+    def field_decl(self, q: dict, tp: str) -> dict:
+        """Dataclass field: attribute, annotation and default for one parameter."""
+        tref, count = q["type"], q["count"]
+        elem = self.elem_annotation(tref, tp)
+        if count is None:
+            ann = elem
+            if tref["kind"] == "struct":
+                default = f"_dc.field(default_factory={tp}{tref['name']})"
+            else:
+                default = self.elem_default(tref, tp)
+        else:
+            ann = f"_ty.List[{elem}]"
+            if count["kind"] == "fixed":
+                d = self.elem_default(tref, tp)
+                if tref["kind"] == "struct":
+                    default = f"_dc.field(default_factory=lambda: [{d} for _ in range({count['value']})])"
+                else:
+                    default = f"_dc.field(default_factory=lambda: [{d}] * {count['value']})"
+            else:
+                default = "_dc.field(default_factory=list)"
+        if q["optional"]:
+            if not ann.startswith("_ty.Optional["):
+                ann = f"_ty.Optional[{ann}]"
+            default = "None"
+        notes = [comment(q.get("description", ""))]
+        if q.get("units"):
+            notes.append(f"[{q['units']}]")
+        if q["optional"] and q.get("functions") is not None:
+            notes.append("(sent for: " + ", ".join(q["functions"]) + ")")
+        if count is not None and count["kind"] == "param":
+            notes.append(f"(count: {count['param']})")
+        elif count is not None and count["kind"] == "remaining":
+            notes.append("(to the end of the field)")
+        attr = py_attr(q["name"])
+        return {
+            "attr": attr,
+            "name": q["name"],
+            "annotation": ann,
+            "default": default,
+            "lines": decl(f"{attr}: {ann} = {default}", " ".join(n for n in notes if n)),
+        }
+
+    def ops(self, params: list[dict], tp: str, function: bool) -> list[str]:
+        """Source of the runtime operations that read/write a layout, in order."""
+        ops: list[str] = []
+        run: list[str] = []
+
+        def flush() -> None:
+            if run:
+                ops.append("_c.Run(" + ", ".join(run) + ")")
+                run.clear()
+
+        if function:
+            et = self.types[self.function_enum]
+            run.append(f'_c.P("function", _c.enum({tp}{self.function_enum}, {et["base"]!r}))')
+        for q in params:
+            tref, count = q["type"], q["count"]
+            name = q["name"]
+            scalar = self.scalar_expr(tref, tp)
+            flat = scalar is not None and (count is None or count["kind"] == "fixed")
+            if flat:
+                p = f'_c.P("{name}", {scalar}' + (f", {count['value']})" if count else ")")
+                if q["optional"]:
+                    flush()
+                    ops.append(f"_c.Opt(_c.Run({p}))")
+                else:
+                    run.append(p)
+                continue
+            flush()
+            elem = scalar if scalar is not None else f"{tp}{tref['name']}"
+            if tref["kind"] == "union":
+                op = f'_c.Choice("{name}", {tp}{tref["name"]}, selector="{tref["selector"]}")'
+            elif count is None:
+                op = f'_c.Nested("{name}", {elem})'
+            elif count["kind"] == "fixed":
+                op = f'_c.Repeat("{name}", {elem}, {count["value"]})'
+            elif count["kind"] == "param":
+                op = f'_c.Counted("{name}", {elem}, count="{count["param"]}", maximum={q["max_count"]})'
+            else:
+                op = f'_c.Remaining("{name}", {elem}, maximum={q["max_count"]})'
+            ops.append(f"_c.Opt({op})" if q["optional"] else op)
+        flush()
+        return ops
+
+    def layout(self, params: list[dict], tp: str, function_names: list[str] | None) -> dict:
+        fields = []
+        if function_names is not None:
+            et = self.types[self.function_enum]
+            ann = f"{tp}{self.function_enum}"
+            default = f"{tp}{self.function_enum}.{const_name(function_names[0])}"
+            note = comment(et.get("title", "")) + " (one of: " + ", ".join(function_names) + ")"
+            fields.append(
+                {
+                    "attr": "function",
+                    "name": "function",
+                    "annotation": ann,
+                    "default": default,
+                    "lines": decl(f"function: {ann} = {default}", note),
+                }
+            )
+        fields.extend(self.field_decl(q, tp) for q in params)
+        return {
+            "fields": fields,
+            "attrs": tuple_literal([f'"{f["attr"]}"' for f in fields]) if fields else "()",
+            "ops": self.ops(params, tp, function_names is not None),
+        }
+
+    # -------------------------------------------------------------- types module
+    def type_order(self) -> list[dict]:
+        """Enums and bitfields (by name), then structs and unions in dependency order."""
+        simple = [t for t in self.p["types"] if t["kind"] in ("enum", "bitfield")]
+        order: list[dict] = []
+        done: set[str] = set()
+
+        def deps(t: dict) -> list[str]:
+            if t["kind"] == "struct":
+                return [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
+            return [m["type"] for m in t["members"] if m["type"]]
+
+        def visit(t: dict) -> None:
+            if t["name"] in done:
+                return
+            done.add(t["name"])
+            for d in deps(t):
+                visit(self.types[d])
+            order.append(t)
+
+        for t in self.p["types"]:
+            if t["kind"] in ("struct", "union"):
+                visit(t)
+        return simple + order
+
+    def enum_model(self, t: dict) -> dict:
+        values = []
+        for v in t["values"]:
+            text = comment(v.get("description", ""))
+            if v.get("devices"):
+                text = (text + " " if text else "") + "(devices: " + ", ".join(v["devices"]) + ")"
+            lit = str(v["value"]) if v["value"] < 0 else f"0x{v['value']:02X}"
+            values.append({"lines": decl(f"{const_name(v['name'])} = {lit}", text)})
+        return {
+            "kind": "enum",
+            "name": t["name"],
+            "doc": docstring(f"{t.get('title', t['name'])} ({t['base']}).", t.get("description", "")),
+            "values": values,
+        }
+
+    def bitfield_model(self, t: dict) -> dict:
+        digits = PRIMITIVES[t["base"]][0] * 2
+        members = []
+        for m in t["members"]:
+            attr = py_attr(m["name"], BITFIELD_RESERVED)
+            text = comment(m.get("description", ""))
+            flags = []
+            if m.get("reserved"):
+                flags.append("reserved")
+            if m.get("alias"):
+                flags.append("alias mask")
+            if m.get("devices"):
+                flags.append("devices: " + ", ".join(m["devices"]))
+            if flags:
+                text = (text + " " if text else "") + "(" + "; ".join(flags) + ")"
+            bits = f"bit {m['first_bit']}" if m["width"] == 1 else f"bits {m['first_bit']}-{m['last_bit']}"
+            members.append(
+                {
+                    "name": m["name"],
+                    "attr": attr,
+                    "const": const_name(m["name"]),
+                    "first": m["first_bit"],
+                    "width": m["width"],
+                    "mask": f"0x{m['mask']:0{digits}X}",
+                    "prop": f"_c.bit({m['first_bit']})"
+                    if m["width"] == 1
+                    else f"_c.bits({m['first_bit']}, {m['width']})",
+                    "lines": decl(
+                        f"{const_name(m['name'])} = 0x{m['mask']:0{digits}X}", f"{bits}: {text}" if text else bits
+                    ),
+                }
+            )
+        return {
+            "kind": "bitfield",
+            "name": t["name"],
+            "base": t["base"],
+            "doc": docstring(f"{t.get('title', t['name'])} ({t['base']} bitfield).", t.get("description", "")),
+            "members": members,
+        }
+
+    def struct_model(self, t: dict) -> dict:
+        lay = self.layout(t["params"], "", None)
+        size = t["size"]
+        size_text = f"{size['min']} bytes" if size["fixed"] else f"{size['min']}..{size['max']} bytes"
+        return {
+            "kind": "struct",
+            "name": t["name"],
+            "doc": docstring(f"{t.get('title', t['name'])} (struct, {size_text}).", t.get("description", "")),
+            "size": size["min"] if size["fixed"] else None,
+            **lay,
+        }
+
+    def union_model(self, t: dict) -> dict:
+        sel = self.types[t["selector_enum"]]
+        by_name = {v["name"]: v["value"] for v in sel["values"]}
+        members = []
+        for m in t["members"]:
+            members.append(
+                {
+                    "value": f"0x{by_name.get(m['when'], m['value']):02X}"
+                    if by_name.get(m["when"], m["value"]) >= 0
+                    else str(by_name.get(m["when"], m["value"])),
+                    "type": m["type"] or "None",
+                    "comment": f"{m['when']}"
+                    + (f": {comment(m.get('description', ''))}" if m.get("description") else ""),
+                }
+            )
+        return {
+            "kind": "union",
+            "name": t["name"],
+            "selector": t["selector_enum"],
+            "doc": docstring(
+                f"{t.get('title', t['name'])} (union selected by {t['selector_enum']}).",
+                t.get("description", ""),
+                "The value of a union parameter is the selected member's struct, or None for a member without data.",
+            ),
+            "members": members,
+        }
+
+    def types_module(self) -> dict:
+        models = []
+        for t in self.type_order():
+            models.append(getattr(self, f"{t['kind']}_model")(t))
+        uses = {"typing": False, "dataclasses": False}
+        for m in models:
+            if m["kind"] == "struct":
+                uses["dataclasses"] = True
+                if any("_ty." in f["annotation"] for f in m["fields"]):
+                    uses["typing"] = True
+        return {"types": models, "uses": uses}
+
+    # -------------------------------------------------------------- field modules
+    def field_models(self, fields: list[dict], set_: dict | None) -> list[dict]:
+        names = _layout_classes(fields)
+        out = []
+        for f in fields:
+            multi = len(f["variants"]) > 1
+            for v in f["variants"]:
+                dev = v["device"] if multi else None
+                cls = names[(f["name"], dev)]
+                lay = self.layout(v["params"], "_t.", v["functions"])
+                if set_ is not None:
+                    where = f"set 0x{set_['id']:02X}, descriptor 0x{f['id']:02X}"
+                else:
+                    where = f"descriptor 0x{f['id']:02X} in every {f['applies_to']} set"
+                head = f"{f['title']} ({where}, {f['role']})" + (f", device {dev}." if dev else ".")
+                extra = []
+                if v["functions"]:
+                    extra.append("Functions: " + ", ".join(v["functions"]) + ".")
+                if v.get("responses"):
+                    extra.append(
+                        "Responses: "
+                        + ", ".join(f"0x{r['id']:02X} {r.get('name', '')}".strip() for r in v["responses"])
+                        + "."
+                    )
+                srcs = v.get("sources") or f.get("sources") or []
+                if srcs:
+                    extra.append(
+                        "Sources: "
+                        + "; ".join(f"{s['manual']}" + (f" line {s['line']}" if s.get("line") else "") for s in srcs)
+                        + "."
+                    )
+                size = v["size"]
+                size_text = f"{size['min']}" if size["fixed"] else f"{size['min']}..{size['max']}"
+                extra.append(f"Field data: {size_text} bytes.")
+                out.append(
+                    {
+                        "cls": cls,
+                        "doc": docstring(head, f.get("description", ""), " ".join(extra)),
+                        "set": f"0x{set_['id']:02X}" if set_ is not None else "None",
+                        "applies_to": repr(f.get("applies_to")) if set_ is None else "None",
+                        "descriptor": f"0x{f['id']:02X}",
+                        "name": f["name"],
+                        "role": f["role"],
+                        "device": repr(dev),
+                        "field_name": f["name"],
+                        "variant": dev,
+                        **lay,
+                    }
+                )
+        return out
+
+    def module_uses(self, classes: list[dict]) -> dict:
+        text = " ".join(
+            " ".join(c["ops"]) + " " + " ".join(f["annotation"] + " " + f["default"] for f in c["fields"])
+            for c in classes
+        )
+        return {
+            "typing": "_ty." in text,
+            "types": "_t." in text,
+            "dataclasses": bool(classes),
+        }
+
+    def set_model(self, s: dict) -> dict:
+        classes = self.field_models(s["fields"], s)
+        return {
+            "module": set_module(s),
+            "set": s,
+            "set_hex": f"0x{s['id']:02X}",
+            "doc": docstring(
+                f"{s['title']} (descriptor set 0x{s['id']:02X}, {s['kind']}"
+                + (", shared data descriptors" if s.get("shared") else "")
+                + ").",
+                s.get("description", ""),
+                indent=0,
+            ),
+            "classes": classes,
+            "fields_tuple": tuple_literal([c["cls"] for c in classes]) if classes else "()",
+            "uses": self.module_uses(classes),
+        }
+
+    def reserved_model(self) -> dict:
+        classes = self.field_models(self.p["reserved_fields"], None)
+        return {
+            "module": "reserved",
+            "doc": docstring(
+                "Reserved fields: descriptors reserved in every set of a kind (e.g. ack/nack in command sets).",
+                indent=0,
+            ),
+            "classes": classes,
+            "fields_tuple": tuple_literal([c["cls"] for c in classes]) if classes else "()",
+            "uses": self.module_uses(classes),
+        }
+
+    # -------------------------------------------------------------- registry
+    def registry(self, sets: list[dict], reserved: dict) -> dict:
+        entries = []
+        for sm in sets:
+            s = sm["set"]
+            by_field: dict[str, list[str]] = {}
+            for c in sm["classes"]:
+                by_field.setdefault(c["field_name"], []).append(f"{sm['module']}.{c['cls']}")
+            for f in s["fields"]:
+                entries.append(
+                    {"key": f"(0x{s['id']:02X}, 0x{f['id']:02X})", "classes": tuple_literal(by_field[f["name"]])}
+                )
+        res: dict[str, list[dict]] = {}
+        by_field = {}
+        for c in reserved["classes"]:
+            by_field.setdefault(c["field_name"], []).append(f"reserved.{c['cls']}")
+        for r in self.p["reserved_fields"]:
+            res.setdefault(r["applies_to"], []).append(
+                {"key": f"0x{r['id']:02X}", "classes": tuple_literal(by_field[r["name"]])}
+            )
+        shared = self.p.get("shared_data")
+        return {
+            "modules": sorted({sm["module"] for sm in sets} | ({"reserved"} if reserved["classes"] else set())),
+            "entries": entries,
+            "reserved": [{"kind": k, "entries": v} for k, v in res.items()],
+            "set_names": [{"id": f"0x{sm['set']['id']:02X}", "name": sm["set"]["name"]} for sm in sets],
+            "set_kinds": [
+                {"kind": k, "first": f"0x{r['first']:02X}", "last": f"0x{r['last']:02X}"}
+                for k, r in self.p["set_kinds"].items()
+            ],
+            "shared_set": f"0x{shared['set']:02X}" if shared else "None",
+            "devices": tuple_literal([f'"{d["id"]}"' for d in self.p["devices"]]),
+        }
+
+    # -------------------------------------------------------------- samples (typed round-trip tests)
+    def sample_layout(self, params: list[dict], tp: str, function_names: list[str] | None, counter: list[int]) -> str:
+        args = []
+        if function_names is not None:
+            args.append(f"function={tp}{self.function_enum}.{const_name(function_names[-1])}")
+        counts: dict[str, int] = {}
+        selectors: dict[str, str] = {}
+        for q in params:
+            c = q["count"]
+            if c is not None and c["kind"] == "param":
+                counts[c["param"]] = min(2, q["max_count"])
+            if q["type"]["kind"] == "union":
+                ut = self.types[q["type"]["name"]]
+                with_data = [m for m in ut["members"] if m["type"]] or ut["members"]
+                selectors[q["type"]["selector"]] = with_data[0]["when"]
+        chosen: dict[str, str] = {}
+        for q in params:
+            attr = py_attr(q["name"])
+            if q["name"] in counts:
+                args.append(f"{attr}={counts[q['name']]}")
+                continue
+            if q["name"] in selectors:
+                chosen[q["name"]] = selectors[q["name"]]
+                args.append(f"{attr}={tp}{q['type']['name']}.{const_name(selectors[q['name']])}")
+                continue
+            c = q["count"]
+            tref = q["type"]
+            if tref["kind"] == "union":
+                ut = self.types[tref["name"]]
+                when = chosen.get(tref["selector"])
+                member = next((m for m in ut["members"] if m["when"] == when), None)
+                if member is None or not member["type"]:
+                    args.append(f"{attr}=None")
+                else:
+                    st = self.types[member["type"]]
+                    args.append(f"{attr}={self.sample_struct(st, tp, counter)}")
+                continue
+            if c is None:
+                args.append(f"{attr}={self.sample_value(tref, tp, counter)}")
+            else:
+                n = c["value"] if c["kind"] == "fixed" else counts.get(c.get("param", ""), min(2, q["max_count"]))
+                args.append(f"{attr}=[" + ", ".join(self.sample_value(tref, tp, counter) for _ in range(n)) + "]")
+        return ", ".join(args)
+
+    def sample_struct(self, t: dict, tp: str, counter: list[int]) -> str:
+        return f"{tp}{t['name']}(" + self.sample_layout(t["params"], tp, None, counter) + ")"
+
+    def sample_value(self, tref: dict, tp: str, counter: list[int]) -> str:
+        counter[0] += 1
+        k = counter[0]
+        kind = tref["kind"]
+        if kind == "primitive":
+            name = tref["name"]
+            pk = PRIMITIVES[name][1]
+            if pk == "int":
+                lo, hi = int_range(name)
+                return str(-(k % 100) - 1) if lo < 0 and k % 2 else str((k * 37 + 1) % min(hi + 1, 251))
+            if pk == "bool":
+                return "True" if k % 2 else "False"
+            if pk == "char":
+                return repr(bytes([0x41 + k % 26]))
+            if name == "float":
+                return ["1.5", "-2.25", "0.375", "1024.0", "-0.0"][k % 5]
+            return ["0.1", "-2.5e-310", "1e+16", "123.456", "-0.0"][k % 5]
+        if kind == "string":
+            n = tref["length"]
+            text = bytes([0x61 + (k + i) % 26 for i in range(min(n, 3))])
+            pad = b" " if tref.get("padding") == "space" else b"\x00"
+            return repr(text + pad * (n - len(text)))
+        if kind == "enum":
+            et = self.types[tref["name"]]
+            v = et["values"][k % len(et["values"])]
+            return f"{tp}{tref['name']}.{const_name(v['name'])}"
+        if kind == "bitfield":
+            bt = self.types[tref["name"]]
+            ms = [m for m in bt["members"] if not m["alias"]] or bt["members"]
+            return f"{tp}{tref['name']}(0x{ms[k % len(ms)]['mask']:X})"
+        if kind == "struct":
+            return self.sample_struct(self.types[tref["name"]], tp, counter)
+        raise ValueError(kind)
+
+    def samples(self, sets: list[dict]) -> list[dict]:
+        out = []
+        counter = [0]
+        for sm in sets:
+            s = sm["set"]
+            names = _layout_classes(s["fields"])
+            for f in s["fields"]:
+                multi = len(f["variants"]) > 1
+                for v in f["variants"]:
+                    cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
+                    out.append(
+                        {
+                            "cls": cls,
+                            "expr": f"{cls}("
+                            + self.sample_layout(v["params"], "types.", v["functions"], counter)
+                            + ")",
+                        }
+                    )
+        names = _layout_classes(self.p["reserved_fields"])
+        for f in self.p["reserved_fields"]:
+            cls = f"reserved.{names[(f['name'], None)]}"
+            out.append({"cls": cls, "expr": f"{cls}(" + self.sample_layout(f["params"], "types.", None, counter) + ")"})
+        for t in self.type_order():
+            if t["kind"] == "struct":
+                out.append({"cls": f"types.{t['name']}", "expr": self.sample_struct(t, "types.", counter)})
+        return out
+
+    def bitfield_cases(self) -> list[dict]:
+        out = []
+        for t in self.p["types"]:
+            if t["kind"] != "bitfield":
+                continue
+            for m in t["members"]:
+                out.append(
+                    {
+                        "cls": f"types.{t['name']}",
+                        "attr": py_attr(m["name"], BITFIELD_RESERVED),
+                        "const": const_name(m["name"]),
+                        "first": m["first_bit"],
+                        "width": m["width"],
+                        "mask": m["mask"],
+                    }
+                )
+        return out
+
+
+# ------------------------------------------------------------------------------------------ render
+def _vector_cases(vectors: list[dict], proto: dict) -> list[dict]:
+    cases = []
+    for c in vectors:
+        if c.get("protocol") != proto["name"]:
+            continue
+        cases.append(
+            {
+                "name": c["name"],
+                "hex": c["hex"],
+                "device": c.get("device"),
+                "rejected": bool(c.get("rejected")),
+                "where": f"{c.get('file', '')}:{c.get('line', '')}",
+                "expect": list(c["expect"]),
+            }
+        )
+    return cases
+
+
+def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+    env = environment()
+    env.filters["pyrepr"] = pyrepr
+    files: dict[str, str] = {}
+    for proto in ir["protocols"]:
+        m = _Proto(proto)
+        pkg = m.package
+        root = f"python/{pkg}"
+        sets = [m.set_model(s) for s in proto["sets"]]
+        reserved = m.reserved_model()
+        framing = proto["framing"]
+        ctx = {
+            "proto": proto,
+            "package": pkg,
+            "framing": framing,
+            "byte_order": m.byte_order,
+            "sync": "".join(f"\\x{b:02x}" for b in framing["sync"]),
+            "sum1_first": framing["checksum"]["order"][0] == "sum1",
+            "sets": sets,
+            "reserved": reserved,
+            "registry": m.registry(sets, reserved),
+            "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
+            "devices": [d["id"] for d in proto["devices"]],
+        }
+        for name in RUNTIME_TEMPLATES:
+            files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)
+        files[f"{root}/{pkg}/types.py"] = env.get_template("python/package/types.py.j2").render(
+            **ctx, **m.types_module()
+        )
+        tmpl = env.get_template("python/package/fields.py.j2")
+        for sm in sets:
+            files[f"{root}/{pkg}/{sm['module']}.py"] = tmpl.render(**ctx, mod=sm)
+        files[f"{root}/{pkg}/reserved.py"] = tmpl.render(**ctx, mod=reserved)
+        files[f"{root}/{pkg}/registry.py"] = env.get_template("python/package/registry.py.j2").render(**ctx)
+        files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
+        files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx)
+        tests = {
+            "conftest.py": {},
+            "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
+            "test_typed.py": _typed_context(m, sets),
+            "test_runtime.py": {},
+            "test_cli.py": {},
+        }
+        for name, extra in tests.items():
+            files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
+    return files
+
+
+def _typed_context(m: _Proto, sets: list[dict]) -> dict:
+    samples = m.samples(sets)
+    bitfields = m.bitfield_cases()
+    used = {s["cls"].split(".")[0] for s in samples} | ({"types"} if bitfields else set())
+    text = " ".join(s["expr"] for s in samples)
+    used |= {mod for mod in ("types",) if f"{mod}." in text}
+    return {"samples": samples, "bitfields": bitfields, "sample_modules": sorted(used)}

@@ -1,0 +1,875 @@
+"""Rust back end: one `no_std` crate (optional `std` feature) per protocol at generated/rust/<package>/.
+
+All naming and type mapping happens here; the templates in templates/rust/ only loop and print.
+The runtime pieces that do not depend on the spec (parser, checksum, JSON) are template files
+rendered with the framing constants of the protocol.
+"""
+
+from __future__ import annotations
+
+import random
+import re
+import struct
+
+from generator.canonical import float_text, string_text
+from generator.primitives import PRIMITIVES
+from generator.render import ToolError, environment
+
+OUTPUT_DIRS = ["rust"]
+
+# Rust keywords (2021 edition plus reserved words). Most can be written as raw identifiers;
+# the few that cannot get a trailing underscore.
+_KEYWORDS = {
+    "as",
+    "break",
+    "const",
+    "continue",
+    "crate",
+    "else",
+    "enum",
+    "extern",
+    "false",
+    "fn",
+    "for",
+    "if",
+    "impl",
+    "in",
+    "let",
+    "loop",
+    "match",
+    "mod",
+    "move",
+    "mut",
+    "pub",
+    "ref",
+    "return",
+    "self",
+    "Self",
+    "static",
+    "struct",
+    "super",
+    "trait",
+    "true",
+    "type",
+    "unsafe",
+    "use",
+    "where",
+    "while",
+    "async",
+    "await",
+    "dyn",
+    "abstract",
+    "become",
+    "box",
+    "do",
+    "final",
+    "macro",
+    "override",
+    "priv",
+    "typeof",
+    "unsized",
+    "virtual",
+    "yield",
+    "try",
+    "gen",
+}
+_NOT_RAW = {"crate", "self", "Self", "super", "_"}
+
+# Modules of the runtime; a descriptor set cannot use these names as its module.
+_RUNTIME_MODULES = {
+    "bounded",
+    "builder",
+    "dispatch",
+    "error",
+    "fields",
+    "framing",
+    "json",
+    "json_read",
+    "parser",
+    "reserved",
+    "text",
+    "types",
+    "wire",
+    "std",
+    "core",
+    "alloc",
+}
+
+_PRIM_RUST = {
+    "bool": "bool",
+    "char": "crate::wire::Char",
+    "u8": "u8",
+    "u16": "u16",
+    "u32": "u32",
+    "u64": "u64",
+    "s8": "i8",
+    "s16": "i16",
+    "s32": "i32",
+    "s64": "i64",
+    "float": "f32",
+    "double": "f64",
+}
+
+
+# ---------------------------------------------------------------------------------------- naming
+def camel(name: str) -> str:
+    """snake_case -> CamelCase; names that already are CamelCase are kept. Digit-digit joins keep a `_`."""
+    if re.fullmatch(r"[A-Z][A-Za-z0-9]*", name):
+        return name
+    out = ""
+    for part in [p for p in name.split("_") if p]:
+        piece = part[0].upper() + part[1:]
+        if out and out[-1].isdigit() and piece[0].isdigit():
+            out += "_"
+        out += piece
+    if not out or out[0].isdigit():
+        out = "T" + out
+    return out
+
+
+def ident(name: str) -> str:
+    """A snake_case Rust identifier for a spec name (keywords escaped)."""
+    if name in _NOT_RAW:
+        return name + "_"
+    if name in _KEYWORDS:
+        return "r#" + name
+    return name
+
+
+def upper(name: str) -> str:
+    return name.upper()
+
+
+def rust_str(s: str) -> str:
+    """A Rust string literal for ASCII text."""
+    out = ['"']
+    for ch in s:
+        if ch == "\\":
+            out.append("\\\\")
+        elif ch == '"':
+            out.append('\\"')
+        elif 0x20 <= ord(ch) < 0x7F:
+            out.append(ch)
+        else:
+            out.append("\\u{%x}" % ord(ch))
+    out.append('"')
+    return "".join(out)
+
+
+def doc_line(*texts: str | None) -> str:
+    """One line of documentation text (whitespace folded), or ''."""
+    parts = [" ".join(str(t).split()) for t in texts if t and str(t).strip()]
+    text = ". ".join(p.rstrip(".") for p in parts)
+    if text and not text.endswith("."):
+        text += "."
+    # Brackets would read as intra-doc links.
+    return text.replace("[", "\\[").replace("]", "\\]")
+
+
+def _int_rust(name: str) -> str:
+    return _PRIM_RUST[name]
+
+
+def _hex(v: int, width: int = 2) -> str:
+    return "0x%0*X" % (width, v)
+
+
+# ---------------------------------------------------------------------------------------- model
+class _Protocol:
+    """Everything the templates need for one protocol, computed from the IR."""
+
+    def __init__(self, proto: dict, vectors: list[dict]):
+        self.proto = proto
+        self.package = proto["package"]
+        self.types = {t["name"]: t for t in proto["types"]}
+        self.vectors = vectors
+        self._check_names()
+
+    # ---------------------------------------------------------------- names
+    def set_module(self, s: dict) -> str:
+        return self._set_modules[s["id"]]
+
+    def _check_names(self) -> None:
+        proto = self.proto
+        self._set_modules: dict[int, str] = {}
+        used = set(_RUNTIME_MODULES) | {self.package}
+        for s in proto["sets"]:
+            m = s["name"]
+            if m in used or m in _KEYWORDS or m in _NOT_RAW:
+                m = m + "_set"
+            if m in used:
+                raise ToolError(f"rust back end: set {s['name']} (0x{s['id']:02X}) has no free module name")
+            used.add(m)
+            self._set_modules[s["id"]] = m
+        # Type names are unique in the IR; check what camel() makes of them and of field names.
+        seen: dict[str, str] = {}
+        for t in proto["types"]:
+            n = camel(t["name"])
+            if n in seen:
+                raise ToolError(f"rust back end: types {seen[n]} and {t['name']} both map to {n}")
+            seen[n] = t["name"]
+        for s in proto["sets"]:
+            names: dict[str, str] = {"SetField": "(the set's field enum)"}
+            for f in s["fields"]:
+                for tn in self._field_type_names(f):
+                    if tn in names:
+                        raise ToolError(
+                            f"rust back end: in set {s['name']}, {f['name']} and {names[tn]} both map to Rust type {tn}"
+                        )
+                    names[tn] = f["name"]
+        names = {"ReservedField": "(the reserved field enum)"}
+        for r in proto["reserved_fields"]:
+            tn = camel(r["name"])
+            if tn in names:
+                raise ToolError(f"rust back end: reserved fields {r['name']} and {names[tn]} both map to {tn}")
+            names[tn] = r["name"]
+        variants = [camel(self._set_modules[s["id"]]) for s in proto["sets"]] + (
+            ["Reserved"] if proto["reserved_fields"] else []
+        )
+        if len(set(variants)) != len(variants):
+            raise ToolError(
+                "rust back end: two descriptor sets map to the same FieldValue variant: " + ", ".join(variants)
+            )
+
+    def _field_type_names(self, f: dict) -> list[str]:
+        base = camel(f["name"])
+        if len(f["variants"]) == 1:
+            return [base]
+        return [base] + [base + camel(v["device"]) for v in f["variants"]]
+
+    def device_variant(self, device_id: str) -> str:
+        return camel(device_id)
+
+    # ---------------------------------------------------------------- types
+    def elem_type(self, tref: dict) -> str:
+        kind = tref["kind"]
+        if kind == "primitive":
+            return _PRIM_RUST[tref["name"]]
+        if kind == "string":
+            return f"crate::wire::Str<{tref['length']}>"
+        return f"crate::types::{camel(tref['name'])}"
+
+    def enum_base(self, enum_name: str) -> str:
+        return _int_rust(self.types[enum_name]["base"])
+
+    def fixed_size(self, size: dict) -> str:
+        return f"Some({size['min']})" if size["fixed"] else "None"
+
+    def param(self, q: dict, params: list[dict], function_enum: str | None = None) -> dict:
+        """Model of one parameter (or of the function selector when function_enum is given)."""
+        if function_enum is not None:
+            t = f"crate::types::{camel(function_enum)}"
+            return {
+                "name": "function",
+                "field": "function",
+                "local": "p_function",
+                "optional": False,
+                "union": False,
+                "type": t,
+                "inner": t,
+                "zero": f"<{t} as crate::wire::Wire>::ZERO",
+                "decode": f"<{t} as crate::wire::Wire>::decode(r)",
+                "encode": "crate::wire::Wire::encode(v, w)",
+                "from_json": f"<{t} as crate::json_read::FromJson>::from_json",
+                "write_json": "crate::wire::Wire::write_json(v, w)",
+                "doc": "Function selector (sent first).",
+            }
+        name = q["name"]
+        tref = q["type"]
+        elem = self.elem_type(tref)
+        count = q["count"]
+        by_name = {p["name"]: p for p in params}
+        union = tref["kind"] == "union"
+        if union:
+            sel = by_name[tref["selector"]]
+            if sel["optional"]:
+                sel_local = f"p_{sel['name']}.map_or(0, |s| s.0)"
+                sel_self = f"self.{ident(sel['name'])}.map_or(0, |s| s.0)"
+            else:
+                sel_local = f"p_{sel['name']}.0"
+                sel_self = f"self.{ident(sel['name'])}.0"
+            inner = elem
+            decode = f"{elem}::decode_selected(r, {sel_local})"
+            encode = f"v.encode_selected(w, {sel_self})"
+            from_json = f"|v| {elem}::from_json_selected(v, {sel_local})"
+            write_json = "v.write_json(w)"
+            zero = f"{elem}::ZERO"
+        else:
+            write_json = "crate::wire::Wire::write_json(v, w)"
+            encode = "crate::wire::Wire::encode(v, w)"
+            if count is None:
+                inner = elem
+                decode = f"<{inner} as crate::wire::Wire>::decode(r)"
+            elif count["kind"] == "fixed":
+                inner = f"[{elem}; {count['value']}]"
+                decode = f"<{inner} as crate::wire::Wire>::decode(r)"
+            elif count["kind"] == "param":
+                cq = by_name[count["param"]]
+                inner = f"crate::bounded::BoundedVec<{elem}, {q['max_count']}>"
+                if cq["optional"]:
+                    c_local = f"p_{cq['name']}.map_or(0, u64::from)"
+                    c_self = f"self.{ident(cq['name'])}.map_or(0, u64::from)"
+                else:
+                    c_local = f"u64::from(p_{cq['name']})"
+                    c_self = f"u64::from(self.{ident(cq['name'])})"
+                decode = f"crate::bounded::BoundedVec::<{elem}, {q['max_count']}>::decode_counted(r, {c_local})"
+                encode = f"v.encode_counted(w, {c_self})"
+            else:  # remaining
+                inner = f"crate::bounded::BoundedVec<{elem}, {q['max_count']}>"
+                decode = f"crate::bounded::BoundedVec::<{elem}, {q['max_count']}>::decode_remaining(r)"
+            from_json = f"<{inner} as crate::json_read::FromJson>::from_json"
+            zero = f"<{inner} as crate::wire::Wire>::ZERO"
+        optional = q["optional"]
+        units = f" Units: {q['units']}." if q.get("units") else ""
+        doc = doc_line(q.get("description")) + units
+        if q.get("functions") is not None:
+            doc = (doc + " Sent for: " + ", ".join(q["functions"]) + ".").strip()
+        return {
+            "name": name,
+            "field": ident(name),
+            "local": f"p_{name}",
+            "optional": optional,
+            "union": union,
+            "type": f"Option<{inner}>" if optional else inner,
+            "inner": inner,
+            "zero": "None" if optional else zero,
+            "decode": decode,
+            "encode": encode,
+            "from_json": from_json,
+            "write_json": write_json,
+            "doc": doc.strip(),
+        }
+
+    def params_model(self, params: list[dict], functions: list[str] | None) -> list[dict]:
+        out = []
+        if functions is not None:
+            out.append(self.param(None, params, function_enum=self.proto["function_selector"]["enum"]))
+        out.extend(self.param(q, params) for q in params)
+        return out
+
+    def type_model(self, t: dict) -> dict:
+        kind = t["kind"]
+        m = {
+            "kind": kind,
+            "name": t["name"],
+            "rust": camel(t["name"]),
+            "doc": doc_line(t.get("title"), t.get("description")),
+        }
+        if kind == "enum":
+            m["base"] = _int_rust(t["base"])
+            seen: set[int] = set()
+            values = []
+            for v in t["values"]:
+                first = v["value"] not in seen
+                seen.add(v["value"])
+                devs = f" Devices: {', '.join(v['devices'])}." if v.get("devices") else ""
+                values.append(
+                    {
+                        "name": v["name"],
+                        "const": upper(v["name"]),
+                        "value": v["value"],
+                        "first": first,
+                        "doc": (doc_line(v.get("description")) + devs).strip(),
+                    }
+                )
+            m["enum_values"] = values
+        elif kind == "bitfield":
+            base = _int_rust(t["base"])
+            nbits = PRIMITIVES[t["base"]][0] * 8
+            full = (1 << nbits) - 1
+            m["base"] = base
+            members = []
+            names: set[str] = set()
+            for b in t["members"]:
+                getter = ident(b["name"])
+                setter = f"set_{b['name']}"
+                for n in (b["name"], setter):
+                    if n in names:
+                        raise ToolError(f"rust back end: bitfield {t['name']}: accessor {n} is defined twice")
+                names.update((b["name"], setter))
+                mask = b["mask"]
+                width = b["width"]
+                first = b["first_bit"]
+                if mask == full:
+                    get = "self.0" if first == 0 else f"self.0 >> {first}"
+                else:
+                    get = (
+                        f"self.0 & Self::{upper(b['name'])}"
+                        if first == 0
+                        else f"(self.0 & Self::{upper(b['name'])}) >> {first}"
+                    )
+                shifted = "v" if first == 0 else f"(v << {first})"
+                if mask == full:
+                    set_expr = "v"
+                else:
+                    set_expr = f"(self.0 & !Self::{upper(b['name'])}) | ({shifted} & Self::{upper(b['name'])})"
+                members.append(
+                    {
+                        "name": b["name"],
+                        "const": upper(b["name"]),
+                        "getter": getter,
+                        "setter": setter,
+                        "mask": _hex(mask, 2 * PRIMITIVES[t["base"]][0]),
+                        "bool": width == 1,
+                        "get_expr": get,
+                        "set_expr": set_expr,
+                        "bits": f"bit {first}" if width == 1 else f"bits {first}..={b['last_bit']}",
+                        "doc": doc_line(b.get("description")) + (" Reserved." if b.get("reserved") else ""),
+                        "width": width,
+                        "first": first,
+                        "mask_int": mask,
+                    }
+                )
+            m["members"] = members
+        elif kind == "struct":
+            m["params"] = self.params_model(t["params"], None)
+            m["has_optional"] = False
+            m["fixed_size"] = self.fixed_size(t["size"])
+        elif kind == "union":
+            m["base"] = self.enum_base(t["selector_enum"])
+            seen = set()
+            members = []
+            for mem in t["members"]:
+                first = mem["value"] not in seen
+                seen.add(mem["value"])
+                members.append(
+                    {
+                        "variant": camel(mem["when"]),
+                        "when": mem["when"],
+                        "value": mem["value"],
+                        "first": first,
+                        "type": f"crate::types::{camel(mem['type'])}" if mem["type"] else None,
+                        "doc": doc_line(mem.get("description")) or f"Selected by {mem['when']} ({mem['value']}).",
+                    }
+                )
+            if not members:
+                raise ToolError(f"rust back end: union {t['name']} has no members")
+            m["members"] = members
+        return m
+
+    # ---------------------------------------------------------------- fields
+    def layout_model(self, name: str, rust: str, layout: dict, descriptor: int, set_id: int | None, doc: str) -> dict:
+        params = self.params_model(layout["params"], layout["functions"])
+        return {
+            "name": name,
+            "rust": rust,
+            "descriptor": _hex(descriptor),
+            "set": _hex(set_id) if set_id is not None else None,
+            "params": params,
+            "has_optional": any(p["optional"] for p in params),
+            "fixed_size": self.fixed_size(layout["size"]),
+            "doc": doc,
+            "device": layout["device"],
+        }
+
+    def field_model(self, s: dict, f: dict) -> dict:
+        base = camel(f["name"])
+        doc = doc_line(f.get("title"), f.get("description"))
+        if len(f["variants"]) == 1:
+            layouts = [self.layout_model(f["name"], base, f["variants"][0], f["id"], s["id"], doc)]
+            return {
+                "name": f["name"],
+                "rust": base,
+                "descriptor": _hex(f["id"]),
+                "multi": False,
+                "layouts": layouts,
+                "doc": doc,
+            }
+        layouts = []
+        for v in f["variants"]:
+            lm = self.layout_model(
+                f["name"],
+                base + camel(v["device"]),
+                v,
+                f["id"],
+                s["id"],
+                doc_line(f.get("title"), f"Layout for device {v['device']}"),
+            )
+            lm["device_variant"] = self.device_variant(v["device"])
+            layouts.append(lm)
+        devices = {v["device"] for v in f["variants"]}
+        covers_all = all(d["id"] in devices for d in self.proto["devices"])
+        return {
+            "name": f["name"],
+            "rust": base,
+            "descriptor": _hex(f["id"]),
+            "multi": True,
+            "layouts": layouts,
+            "doc": doc,
+            "covers_all": covers_all,
+            "devices": ", ".join(v["device"] for v in f["variants"]),
+        }
+
+    def set_model(self, s: dict) -> dict:
+        fields = [self.field_model(s, f) for f in s["fields"]]
+        return {
+            "id": _hex(s["id"]),
+            "name": s["name"],
+            "module": self.set_module(s),
+            "variant": camel(self.set_module(s)),
+            "kind": s["kind"],
+            "doc": doc_line(s.get("title"), s.get("description")),
+            "fields": fields,
+            "has_multi": any(f["multi"] for f in fields),
+            "shared": s["shared"],
+        }
+
+    def reserved_model(self) -> list[dict]:
+        out = []
+        for r in self.proto["reserved_fields"]:
+            if len(r["variants"]) != 1:
+                raise ToolError(f"rust back end: reserved field {r['name']} has several variants")
+            doc = doc_line(r.get("title"), r.get("description")) + f" Reserved in every {r['applies_to']} set."
+            lm = self.layout_model(r["name"], camel(r["name"]), r["variants"][0], r["id"], None, doc)
+            out.append(
+                {
+                    "name": r["name"],
+                    "rust": camel(r["name"]),
+                    "descriptor": _hex(r["id"]),
+                    "kind": camel(r["applies_to"]),
+                    "layouts": [lm],
+                    "doc": doc,
+                    "multi": False,
+                }
+            )
+        return out
+
+    # ---------------------------------------------------------------- path depth
+    def path_depth(self) -> int:
+        memo: dict[str, int] = {}
+
+        def type_depth(tref: dict) -> int:
+            kind = tref["kind"]
+            if kind == "struct":
+                n = tref["name"]
+                if n not in memo:
+                    memo[n] = 0
+                    memo[n] = max([param_depth(q) for q in self.types[n]["params"]] or [0])
+                return memo[n]
+            if kind == "union":
+                u = self.types[tref["name"]]
+                return max(
+                    [type_depth({"kind": "struct", "name": m["type"]}) for m in u["members"] if m["type"]] or [0]
+                )
+            return 0
+
+        def param_depth(q: dict) -> int:
+            return 1 + (1 if q["count"] is not None else 0) + type_depth(q["type"])
+
+        depth = 1
+        layouts = [v for s in self.proto["sets"] for f in s["fields"] for v in f["variants"]]
+        layouts += [v for r in self.proto["reserved_fields"] for v in r["variants"]]
+        for lay in layouts:
+            for q in lay["params"]:
+                depth = max(depth, param_depth(q))
+        for t in self.proto["types"]:
+            if t["kind"] == "struct":
+                depth = max(depth, type_depth({"kind": "struct", "name": t["name"]}))
+        return depth
+
+    # ---------------------------------------------------------------- context
+    def context(self) -> dict:
+        proto = self.proto
+        f = proto["framing"]
+        sets = [self.set_model(s) for s in proto["sets"]]
+        shared = None
+        sd = proto.get("shared_data")
+        if sd:
+            shared = next((s for s in sets if s["id"] == _hex(sd["set"])), None)
+        kinds = [
+            {"variant": camel(k), "name": k, "first": _hex(r["first"]), "last": _hex(r["last"])}
+            for k, r in proto["set_kinds"].items()
+        ]
+        devices = [
+            {
+                "id": d["id"],
+                "variant": self.device_variant(d["id"]),
+                "title": d["title"],
+                "title_lit": rust_str(d["title"]),
+            }
+            for d in proto["devices"]
+        ]
+        reserved = self.reserved_model()
+        groups = [s["variant"] for s in sets] + (["Reserved"] if reserved else [])
+        types = [self.type_model(t) for t in proto["types"]]
+        return {
+            "package": self.package,
+            "protocol": proto["name"],
+            "title": proto["title"],
+            "framing": {
+                "sync": ", ".join(_hex(b) for b in f["sync"]),
+                "sync_len": len(f["sync"]),
+                "sync_text": " ".join("%02X" % b for b in f["sync"]),
+                "header_size": f["header_size"],
+                "set_offset": f["set_offset"],
+                "length_offset": f["length_offset"],
+                "max_payload": f["max_payload"],
+                "max_packet": f["max_packet"],
+                "checksum_size": f["checksum_size"],
+                "field_header_size": f["field_header_size"],
+                "field_length_offset": f["field_length_offset"],
+                "field_descriptor_offset": f["field_descriptor_offset"],
+                "counts_header": "true" if f["field_length_counts_header"] else "false",
+                "field_length_adjust": f["field_length_adjust"],
+                "max_field_data": f["max_field_data"],
+                "big_endian": "true" if proto["byte_order"] == "big" else "false",
+                "sum1_first": "true" if f["checksum"]["order"][0] == "sum1" else "false",
+                "header": ", ".join(f["header"]),
+                "field_header": ", ".join(f["field_header"]),
+                "byte_order": proto["byte_order"],
+            },
+            "path_depth": self.path_depth(),
+            "kinds": kinds,
+            "devices": devices,
+            "types": types,
+            "sets": sets,
+            "reserved": reserved,
+            "groups": groups,
+            "shared": shared,
+            "shared_rule": bool(shared) and "data" in proto["set_kinds"],
+            "first_set": sets[0]["id"] if sets else "0x00",
+        }
+
+    # ---------------------------------------------------------------- tests computed here
+    def vector_cases(self) -> list[dict]:
+        out = []
+        used: set[str] = set()
+        for c in self.vectors:
+            fn = "case_" + re.sub(r"[^a-z0-9_]", "_", c["name"].lower())
+            while fn in used:
+                fn += "_"
+            used.add(fn)
+            out.append(
+                {
+                    "fn": fn,
+                    "name": c["name"],
+                    "hex": rust_str(c["hex"]),
+                    "device": f"Some({rust_str(c['device'])})" if c.get("device") else "None",
+                    "expect": [rust_str(line) for line in c["expect"]],
+                    "rejected": "true" if c["rejected"] else "false",
+                    "source": f"{c['file']}:{c['line']}",
+                }
+            )
+        return out
+
+    def float_cases(self) -> dict:
+        rnd = random.Random(20240611)
+        doubles = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.1,
+            0.5,
+            123.456,
+            1e16,
+            1e15,
+            9999999999999998.0,
+            1.5e16,
+            1e-4,
+            1e-5,
+            0.00012345,
+            2.5e-310,
+            5e-324,
+            1.7976931348623157e308,
+            2.2250738585072014e-308,
+            1e22,
+            1e21,
+            123456789012345680.0,
+            0.30000000000000004,
+            100.0,
+            1e100,
+            -1e-100,
+            3.14159,
+        ]
+        dbits = [struct.unpack(">Q", struct.pack(">d", x))[0] for x in doubles]
+        dbits += [
+            0x7FF8000000000000,
+            0xFFF8000000000000,
+            0x7FF0000000000001,
+            0x7FF4000000000000,
+            0x7FF0000000000000,
+            0xFFF0000000000000,
+        ]
+        dbits += [rnd.getrandbits(64) for _ in range(300)]
+        floats = [0.0, -0.0, 1.0, 0.1, 16777216.0, 3.4028234663852886e38, 1e-45, 1.1754943508222875e-38, 0.24452066]
+        fbits = [struct.unpack(">I", struct.pack(">f", x))[0] for x in floats]
+        fbits += [0x7FC00000, 0xFFC00000, 0x7FE5BF7F, 0x7F800001, 0x7FA00000, 0x7F800000, 0xFF800000]
+        fbits += [rnd.getrandbits(32) for _ in range(300)]
+        dcases = []
+        for b in dbits:
+            x = struct.unpack(">d", struct.pack(">Q", b))[0]
+            dcases.append({"bits": "0x%016X" % b, "text": rust_str(float_text(x, b, single=False))})
+        fcases = []
+        for b in fbits:
+            x = struct.unpack(">f", struct.pack(">I", b))[0]
+            fcases.append({"bits": "0x%08X" % b, "text": rust_str(float_text(x, b, single=True))})
+        return {"doubles": dcases, "floats": fcases, "all_bytes": rust_str(string_text(bytes(range(256))))}
+
+    def bitfield_cases(self) -> list[dict]:
+        out = []
+        for t in self.proto["types"]:
+            if t["kind"] != "bitfield":
+                continue
+            base = _int_rust(t["base"])
+            members = []
+            for b in t["members"]:
+                getter = ident(b["name"])
+                if b["width"] == 1:
+                    maxv, zero = "true", "false"
+                    check_max, check_zero = f"assert!(v.{getter}());", f"assert!(!v.{getter}());"
+                else:
+                    maxv, zero = _hex((1 << b["width"]) - 1), "0"
+                    check_max, check_zero = f"assert_eq!(v.{getter}(), {maxv});", f"assert_eq!(v.{getter}(), 0);"
+                members.append(
+                    {
+                        "getter": getter,
+                        "setter": f"set_{b['name']}",
+                        "max": maxv,
+                        "zero": zero,
+                        "mask": _hex(b["mask"]),
+                        "check_max": check_max,
+                        "check_zero": check_zero,
+                    }
+                )
+            out.append({"rust": camel(t["name"]), "base": base, "members": members})
+        return out
+
+    def short_cases(self) -> list[dict]:
+        """Per layout: the result of decoding empty data and one byte too many (docs/conformance.md §3)."""
+        out = []
+        layouts = []
+        for s in self.proto["sets"]:
+            for f in s["fields"]:
+                for v in f["variants"]:
+                    rust = camel(f["name"]) + (camel(v["device"]) if len(f["variants"]) > 1 else "")
+                    layouts.append((self.set_module(s), rust, v))
+        for r in self.proto["reserved_fields"]:
+            layouts.append(("reserved", camel(r["name"]), r["variants"][0]))
+        max_data = self.proto["framing"]["max_field_data"]
+        package = self.package
+        for module, rust, v in layouts:
+            case = {"module": module, "rust": rust, "empty": None, "extra_len": None}
+            first = self._first_read(v)
+            if first == "ok":
+                case["empty"] = "Ok(())"
+            elif first is not None:
+                path, n = first
+                case["empty"] = f"Err({rust_str(f'{path}: needs {n} bytes at offset 0, 0 left')}.to_string())"
+            size = v["size"]
+            if (
+                all(q["size"]["fixed"] for q in v["params"])
+                and self._zero_safe(v["params"])
+                and size["max"] + 1 <= max_data
+            ):
+                case["extra_len"] = size["max"] + 1
+                case["extra"] = rust_str(f"1 unexpected bytes at offset {size['max']}")
+            case["zero_safe"] = self._zero_safe(v["params"])
+            case["set"] = "0x00" if module == "reserved" else f"{package}::{module}::{rust}::SET"
+            out.append(case)
+        return out
+
+    def _first_read(self, layout: dict):
+        if layout["functions"] is not None:
+            return ("function", 1)
+        params = layout["params"]
+        if not params or params[0]["optional"]:
+            return "ok"
+        return self._first_of_param(params[0], params[0]["name"])
+
+    def _first_of_param(self, q: dict, path: str):
+        c = q["count"]
+        t = q["type"]
+        if c is not None:
+            if c["kind"] != "fixed":
+                return None
+            path += "[0]"
+        kind = t["kind"]
+        if kind in ("primitive", "enum", "bitfield", "string"):
+            return (path, t["size"]["min"])
+        if kind == "struct":
+            ps = self.types[t["name"]]["params"]
+            if not ps:
+                return None
+            return self._first_of_param(ps[0], path + "." + ps[0]["name"])
+        return None
+
+    def _zero_safe(self, params: list[dict]) -> bool:
+        for q in params:
+            t = q["type"]
+            if t["kind"] == "union" or (q["count"] is not None and q["count"]["kind"] != "fixed"):
+                return False
+            if t["kind"] == "struct" and not self._zero_safe(self.types[t["name"]]["params"]):
+                return False
+        return True
+
+
+# ---------------------------------------------------------------------------------------- entry points
+_TEMPLATES = [
+    ("Cargo.toml.j2", "Cargo.toml"),
+    ("README.md.j2", "README.md"),
+    ("lib.rs.j2", "src/lib.rs"),
+    ("framing.rs.j2", "src/framing.rs"),
+    ("error.rs.j2", "src/error.rs"),
+    ("wire.rs.j2", "src/wire.rs"),
+    ("bounded.rs.j2", "src/bounded.rs"),
+    ("json_write.rs.j2", "src/json.rs"),
+    ("json_read.rs.j2", "src/json_read.rs"),
+    ("parser.rs.j2", "src/parser.rs"),
+    ("fields.rs.j2", "src/fields.rs"),
+    ("builder.rs.j2", "src/builder.rs"),
+    ("types.rs.j2", "src/types.rs"),
+    ("reserved.rs.j2", "src/reserved.rs"),
+    ("dispatch.rs.j2", "src/dispatch.rs"),
+    ("text.rs.j2", "src/text.rs"),
+    ("bin_decode.rs.j2", "src/bin/{package}-decode.rs"),
+    ("bin_encode.rs.j2", "src/bin/{package}-encode.rs"),
+    ("test_vectors.rs.j2", "tests/vectors.rs"),
+    ("test_runtime.rs.j2", "tests/runtime.rs"),
+    ("test_spec.rs.j2", "tests/spec.rs"),
+]
+
+
+def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+    env = environment()
+    files: dict[str, str] = {}
+    for proto in ir["protocols"]:
+        model = _Protocol(proto, [v for v in vectors if v["protocol"] == proto["name"]])
+        ctx = model.context()
+        ctx["cases"] = model.vector_cases()
+        ctx["floats"] = model.float_cases()
+        ctx["bitfields"] = model.bitfield_cases()
+        ctx["short_cases"] = model.short_cases()
+        root = f"rust/{model.package}/"
+        for tpl, out in _TEMPLATES:
+            files[root + out.format(package=model.package)] = env.get_template(f"rust/{tpl}").render(**ctx)
+        set_tpl = env.get_template("rust/set.rs.j2")
+        for s in ctx["sets"]:
+            files[root + f"src/{s['module']}.rs"] = set_tpl.render(set=s, **ctx)
+    return files
+
+
+def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
+    """Names a Rust user types for a field: its type (per device when it has variants) and module."""
+    model = _Protocol(protocol, [])
+    pkg = protocol["package"]
+    if set_ is None or "applies_to" in field:
+        module = f"{pkg}::reserved"
+        return {
+            "type": f"{module}::{camel(field['name'])}",
+            "module": module,
+            "enum": f"{module}::ReservedField",
+            "decode": f"{pkg}::decode_field",
+        }
+    module = f"{pkg}::{model.set_module(set_)}"
+    out = {
+        "type": f"{module}::{camel(field['name'])}",
+        "module": module,
+        "enum": f"{module}::SetField",
+        "decode": f"{pkg}::decode_field",
+    }
+    if len(field["variants"]) > 1:
+        out["variants"] = ", ".join(
+            f"{v['device']}: {module}::{camel(field['name'])}{camel(v['device'])}" for v in field["variants"]
+        )
+    return out

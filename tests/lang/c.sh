@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Build, test and run the generated C packages (generated/c/<package>/ -> build/c/<package>/).
+#   tests/lang/c.sh build                         configure and build every package
+#   tests/lang/c.sh test                          build, then run each package's googletest binary
+#   tests/lang/c.sh decode FILE|- [--device ID]   run <package>-decode (builds first if needed)
+#   tests/lang/c.sh encode                        run <package>-encode: JSON lines on stdin -> bytes
+# decode/encode use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
+# output goes to stderr so that decode/encode keep stdout clean.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+PACKAGE="${C_PACKAGE:-mipcodec}"
+
+packages() {
+    local d
+    for d in "$ROOT"/generated/c/*/; do
+        if [ -f "$d/CMakeLists.txt" ]; then basename "$d"; fi
+    done
+}
+
+build_one() {
+    local src="$ROOT/generated/c/$1" out="$ROOT/build/c/$1"
+    if [ ! -f "$out/build.ninja" ]; then
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug >&2
+    fi
+    cmake --build "$out" >&2
+}
+
+ensure_built() {
+    local out="$ROOT/build/c/$PACKAGE"
+    if [ -x "$out/$PACKAGE-decode" ] && [ -x "$out/$PACKAGE-encode" ] &&
+        cmake --build "$out" --target "$PACKAGE-decode" "$PACKAGE-encode" >/dev/null 2>&1; then
+        return
+    fi
+    build_one "$PACKAGE"
+}
+
+usage() {
+    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode" >&2
+    exit 2
+}
+
+[ $# -ge 1 ] || usage
+cmd="$1"
+shift
+case "$cmd" in
+build)
+    for pkg in $(packages); do build_one "$pkg"; done
+    ;;
+test)
+    for pkg in $(packages); do
+        build_one "$pkg"
+        "$ROOT/build/c/$pkg/$pkg-tests"
+    done
+    ;;
+decode)
+    [ $# -ge 1 ] || usage
+    ensure_built
+    exec "$ROOT/build/c/$PACKAGE/$PACKAGE-decode" "$@"
+    ;;
+encode)
+    ensure_built
+    exec "$ROOT/build/c/$PACKAGE/$PACKAGE-encode" "$@"
+    ;;
+*)
+    usage
+    ;;
+esac

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# tests/lang/cpp.sh build|test|decode FILE [--device ID]|encode
+# Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites, or
+# runs the decode/encode tools (building them first when needed). Works from any directory.
+# CPP_PACKAGE selects the package for decode/encode (default: mipcodec).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+PKG="${CPP_PACKAGE:-mipcodec}"
+GEN="$ROOT/generated/cpp"
+
+usage() { echo "usage: $0 build|test|decode FILE [--device ID]|encode" >&2; exit 2; }
+
+packages() {
+  local d
+  for d in "$GEN"/*/; do
+    [ -f "$d/CMakeLists.txt" ] && basename "$d"
+  done
+}
+
+configure() { # package
+  local src="$GEN/$1" out="$ROOT/build/cpp/$1"
+  [ -f "$src/CMakeLists.txt" ] || { echo "cpp.sh: $src is missing; run 'python -m generator --only cpp'" >&2; exit 2; }
+  if [ ! -f "$out/build.ninja" ]; then
+    cmake -G Ninja -S "$src" -B "$out" >&2
+  fi
+}
+
+build() { # package [targets...]
+  local pkg="$1"; shift
+  configure "$pkg"
+  cmake --build "$ROOT/build/cpp/$pkg" ${1:+--target "$@"} >&2
+}
+
+tool() { # decode|encode
+  local exe="$ROOT/build/cpp/$PKG/$PKG-$1"
+  # Always let ninja check (a no-op when up to date), so a regenerated package is rebuilt.
+  build "$PKG" "$PKG-$1" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
+  echo "$exe"
+}
+
+[ $# -ge 1 ] || usage
+cmd="$1"; shift
+case "$cmd" in
+  build)
+    for p in $(packages); do build "$p"; done
+    ;;
+  test)
+    for p in $(packages); do
+      build "$p"
+      "$ROOT/build/cpp/$p/$p-tests" "$@"
+    done
+    ;;
+  decode)
+    [ $# -ge 1 ] || usage
+    mkdir -p "$ROOT/build/cpp"
+    exe="$(tool decode)"
+    exec "$exe" "$@"
+    ;;
+  encode)
+    mkdir -p "$ROOT/build/cpp"
+    exe="$(tool encode)"
+    exec "$exe" "$@"
+    ;;
+  *) usage ;;
+esac
