@@ -361,6 +361,26 @@ TEST(Vectors, built_in_test_reply_cv7_flags) {
                  });
 }
 
+// device_info_every_string_byte
+TEST(Vectors, device_info_every_string_byte) {
+    check_vector(
+        "756501545481ffff5122425c00011f7f80ff7e20090a0d5a0000000000000000000000000000000020202020202020202020"
+        "202020202020202122232425262728292a2b2c2d2e2ff0f1f2f3f4f5f6f7f8f9fafbfcfdfeff39e6",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":129,\"name\":\"device_info\",\"values\":{"
+            "\"info\":{\"firmware_version\":65535,\"model_name\":"
+            "\"Q\\\"B\\\\\\u0000\\u0001\\u001f\\u007f\\u0080\\u00ff~ "
+            "\\u0009\\u000a\\u000dZ\",\"model_number\":"
+            "\"\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u"
+            "0000\\u0000\\u0000\",\"serial_number\":\"                \",\"lot_number\":\" "
+            "!\\\"#$%&'()*+,-./"
+            "\",\"device_options\":"
+            "\"\\u00f0\\u00f1\\u00f2\\u00f3\\u00f4\\u00f5\\u00f6\\u00f7\\u00f8\\u00f9\\u00fa\\u00fb\\u00fc\\u"
+            "00fd\\u00fe\\u00ff\"}}}]}",
+        });
+}
+
 // event_trigger_gpio_edge
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(
@@ -615,6 +635,61 @@ TEST(Vectors, get_event_action_status_all_reply) {
                      "\"values\":{\"command_descriptor\":45,\"ack_code\":0}},{\"descriptor\":183,\"name\":"
                      "\"event_action_status\",\"values\":{\"count\":2,\"actions\":[{\"action_type\":2,"
                      "\"trigger_id\":1},{\"action_type\":1,\"trigger_id\":3}]}}]}",
+                 });
+}
+
+// doubles_power_of_two_and_negative_zero
+TEST(Vectors, doubles_power_of_two_and_negative_zero) {
+    check_vector("75650c19192e010402800c010116900000000000008000000000000000014c", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_"
+                     "config\",\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_"
+                     "set\":128,\"field_desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":5.225680706521042e-"
+                     "200,\"high_thres\":-0.0}}}]}",
+                 });
+}
+
+// doubles_denormal_and_1e16
+TEST(Vectors, doubles_denormal_and_1e16) {
+    check_vector(
+        "75650c19192e010402800c010100000000000000014341c37937e0800033cf", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
+            "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
+            "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":5e-324,\"high_thres\":1e+16}}}]}",
+        });
+}
+
+// doubles_positional_boundary
+TEST(Vectors, doubles_positional_boundary) {
+    check_vector(
+        "75650c19192e010402800c01013f1a36e2eb1c432d3ee4f8b588e368f156da", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
+            "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
+            "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":0.0001,\"high_thres\":1e-05}}}]}",
+        });
+}
+
+// doubles_large_values
+TEST(Vectors, doubles_large_values) {
+    check_vector(
+        "75650c19192e010402800c01017e37e43c8800759c42dc12218377de6bdd44", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
+            "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
+            "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":1e+300,\"high_thres\":123456789012345.67}}}]}",
+        });
+}
+
+// doubles_infinity_and_nan_payload
+TEST(Vectors, doubles_infinity_and_nan_payload) {
+    check_vector("75650c19192e010402800c01017ff0000000000000fff00000000000013a05", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_"
+                     "config\",\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_"
+                     "set\":128,\"field_desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":\"inf\",\"high_"
+                     "thres\":\"nan:0xfff0000000000001\"}}}]}",
                  });
 }
 

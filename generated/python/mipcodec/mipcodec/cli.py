@@ -101,6 +101,8 @@ def _encode(args: List[str]) -> int:
             print(f"line {number}: not UTF-8 text", file=sys.stderr)
             status = 1
             continue
+        if not text.strip():
+            continue  # blank lines carry nothing (as in the C, C++ and Rust encoders)
         try:
             data = encode_line(text)
         except EncodeError as e:

@@ -137,16 +137,6 @@ def test_false_header_running_past_the_end_hides_nothing():
     assert bytewise(stream) == want
 
 
-@pytest.mark.skipif(MAX_PAYLOAD == 0xFF, reason="every length byte is a valid payload length")
-def test_length_above_the_maximum_is_a_false_sync():
-    pkt = packet()
-    header = bytearray(HEADER_SIZE)
-    header[: len(SYNC)] = SYNC
-    header[SET_OFFSET] = SET_ID
-    header[LENGTH_OFFSET] = MAX_PAYLOAD + 1
-    assert Parser().feed(bytes(header) + pkt) == [Skip(0, bytes(header)), RawPacket(len(header), pkt)]
-
-
 def test_packet_inside_a_false_packet_is_found():
     pkt = packet()
     header = bytearray(HEADER_SIZE)

@@ -526,6 +526,19 @@ fn case_built_in_test_reply_cv7_flags() {
     );
 }
 
+/// `device_info_every_string_byte` (tests/vectors/mip/base.yaml:466)
+#[test]
+fn case_device_info_every_string_byte() {
+    check(
+        "756501545481ffff5122425c00011f7f80ff7e20090a0d5a0000000000000000000000000000000020202020202020202020202020202020202122232425262728292a2b2c2d2e2ff0f1f2f3f4f5f6f7f8f9fafbfcfdfeff39e6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":129,\"name\":\"device_info\",\"values\":{\"info\":{\"firmware_version\":65535,\"model_name\":\"Q\\\"B\\\\\\u0000\\u0001\\u001f\\u007f\\u0080\\u00ff~ \\u0009\\u000a\\u000dZ\",\"model_number\":\"\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\",\"serial_number\":\"                \",\"lot_number\":\" !\\\"#$%&'()*+,-./\",\"device_options\":\"\\u00f0\\u00f1\\u00f2\\u00f3\\u00f4\\u00f5\\u00f6\\u00f7\\u00f8\\u00f9\\u00fa\\u00fb\\u00fc\\u00fd\\u00fe\\u00ff\"}}}]}",
+        ],
+        false,
+    );
+}
+
 /// `event_trigger_gpio_edge` (tests/vectors/mip/events.yaml:6)
 #[test]
 fn case_event_trigger_gpio_edge() {
