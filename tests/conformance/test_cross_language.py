@@ -95,3 +95,30 @@ def test_capture_identical_in_all_languages():
     for lang, out in outputs.items():
         assert out == outputs["python"], f"{lang} differs from python on the device capture"
     assert encode("c", outputs["c"]) == CAPTURE.read_bytes()
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_encode_reports_a_bad_line_and_keeps_the_others(lang):
+    lines = [
+        '{"offset":0,"skipped":"00ff"}',
+        '{"offset":2,"set":1,"fields":[{"descriptor":9,"name":"comm_port_speed","values":{"function":1,"port":1,"baud":-5}}]}',
+        "{not json",
+        "",
+        '{"offset":9,"skipped":"01"}',
+    ]
+    proc = subprocess.run(
+        [str(ROOT / "tests/conformance/encode"), lang], input="\n".join(lines).encode() + b"\n", capture_output=True
+    )
+    assert proc.returncode == 1
+    assert proc.stdout == b"\x00\xff\x01"
+    err = proc.stderr.decode()
+    assert "line 2" in err and "line 3" in err and "baud" in err
+    assert "Traceback" not in err and "panicked" not in err
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_decode_of_a_missing_file_is_a_usage_error(lang, tmp_path):
+    proc = subprocess.run([str(ROOT / "tests/conformance/decode"), lang, str(tmp_path / "missing.bin")], capture_output=True)
+    assert proc.returncode == 2
+    assert proc.stdout == b""
+    assert b"missing.bin" in proc.stderr

@@ -1,4 +1,4 @@
-"""MicroStrain MIP (Microstrain Inertial Packet) protocol: typed encoder/decoder generated from the protocol spec.
+"""MicroStrain MIP: typed encoder/decoder generated from the protocol spec.
 
 Modules: one per descriptor set (base, threedm, sensor) holding a
 dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);

@@ -1,4 +1,4 @@
-"""Framing of the MicroStrain MIP (Microstrain Inertial Packet) protocol: constants, Fletcher-16, packet builder, stream parser, field splitter.
+"""Framing of the MicroStrain MIP: constants, Fletcher-16, packet builder, stream parser, field splitter.
 
 The constants are rendered from the IR (protocols[].framing); the code below them is the same for
 every protocol and follows docs/conformance.md sections 1 and 2.

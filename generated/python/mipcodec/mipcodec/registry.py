@@ -1,4 +1,4 @@
-"""Dispatch tables of the MicroStrain MIP (Microstrain Inertial Packet) protocol: (set, descriptor) -> layout classes.
+"""Dispatch tables of the MicroStrain MIP: (set, descriptor) -> layout classes.
 
 A field with per-device variants maps to several classes, tried in IR order (docs/conformance.md
 section 2). Reserved fields apply to every set of a kind; shared data descriptors to every data set.

@@ -1,4 +1,4 @@
-"""Named types of the MicroStrain MIP (Microstrain Inertial Packet) protocol: enums, bitfields, structs and unions.
+"""Named types of the MicroStrain MIP: enums, bitfields, structs and unions.
 
 Enums are IntEnums; decoding keeps values that are not members as plain ints. Bitfields are ints
 whose members are properties (bool for one bit, int for several) with UPPER_CASE mask constants.

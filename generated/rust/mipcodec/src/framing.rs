@@ -1,4 +1,4 @@
-//! Framing of the MicroStrain MIP (Microstrain Inertial Packet) protocol protocol, rendered from `ir.json` → `protocols[].framing`, and the
+//! Framing of the MicroStrain MIP protocol, rendered from `ir.json` → `protocols[].framing`, and the
 //! Fletcher-16 checksum.
 //!
 //! Packet: sync (75 65), header [set, payload_length], payload, checksum.

@@ -1,4 +1,4 @@
-//! MicroStrain MIP (Microstrain Inertial Packet) protocol: codec generated from `spec/mip/` by `python -m generator`. Do not edit.
+//! MicroStrain MIP: codec generated from `spec/mip/` by `python -m generator`. Do not edit.
 //!
 //! The core is `no_std` and allocation-free: bounded arrays ([`bounded::BoundedVec`]), a stream
 //! parser whose state is one maximum packet ([`parser::Parser`]), a packet builder

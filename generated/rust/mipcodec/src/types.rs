@@ -1,4 +1,4 @@
-//! Named types of the MicroStrain MIP (Microstrain Inertial Packet) protocol spec: enums (unknown values are kept), bitfields (named
+//! Named types of the MicroStrain MIP spec: enums (unknown values are kept), bitfields (named
 //! accessors), structs and unions (selected by an earlier enum parameter).
 
 /// Ack/Nack code.

@@ -1,5 +1,5 @@
-/* Framing of the MicroStrain MIP (Microstrain Inertial Packet) protocol protocol, rendered from
- * protocols[].framing of the IR. Generated: do not edit. */
+/* Framing of the MicroStrain MIP protocol, rendered from protocols[].framing of the IR.
+ * Generated: do not edit. */
 #ifndef MIP_FRAMING_H
 #define MIP_FRAMING_H
 

@@ -1,5 +1,5 @@
-/* mipcodec: C99 codec of the MicroStrain MIP (Microstrain Inertial Packet) protocol protocol. Generated from
- * the spec: do not edit. Everything is bounded by caller buffers; nothing allocates. */
+/* mipcodec: C99 codec of the MicroStrain MIP protocol. Generated from the spec: do not edit.
+ * Everything is bounded by caller buffers; nothing allocates. */
 #ifndef MIP_MIPCODEC_H
 #define MIP_MIPCODEC_H
 

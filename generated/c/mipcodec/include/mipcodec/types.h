@@ -1,5 +1,5 @@
-/* Named types of the MicroStrain MIP (Microstrain Inertial Packet) protocol protocol: enums, bitfields,
- * structs and unions. Generated from the spec: do not edit. */
+/* Named types of the MicroStrain MIP protocol: enums, bitfields, structs and unions.
+ * Generated from the spec: do not edit. */
 #ifndef MIP_TYPES_H
 #define MIP_TYPES_H
 

@@ -1,8 +1,9 @@
 //! `mipcodec-encode`: reads JSON lines (as printed by `mipcodec-decode`) on stdin and
 //! writes the bytes on stdout: packets rebuilt from their fields with payload length and
 //! checksum recomputed, skip runs as their bytes. Blank lines are ignored.
-//! Exit status: 0; 1 for bad input (stops at the first bad line, which writes nothing, with
-//! `line N: ...` on stderr); 2 for usage and I/O errors.
+//! Exit status: 0; 1 for bad input (a bad line writes nothing and is reported as `line N: ...`
+//! on stderr; the other lines are still encoded, as in the C, C++ and Python encoders); 2 for
+//! usage and I/O errors.
 
 use std::io::{self, BufRead, Write};
 use std::process::ExitCode;
@@ -26,6 +27,7 @@ fn main() -> ExitCode {
     let mut out = io::BufWriter::new(stdout.lock());
     let mut raw = Vec::new();
     let mut number = 0usize;
+    let mut bad_lines = false;
     loop {
         raw.clear();
         match input.read_until(b'\n', &mut raw) {
@@ -52,9 +54,8 @@ fn main() -> ExitCode {
                 }
             }
             Err(message) => {
-                let _ = out.flush();
                 eprintln!("{PROG}: line {number}: {message}");
-                return ExitCode::from(1);
+                bad_lines = true;
             }
         }
     }
@@ -62,5 +63,9 @@ fn main() -> ExitCode {
         eprintln!("{PROG}: cannot write: {e}");
         return ExitCode::from(2);
     }
-    ExitCode::SUCCESS
+    if bad_lines {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
 }
