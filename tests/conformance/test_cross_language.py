@@ -118,7 +118,9 @@ def test_encode_reports_a_bad_line_and_keeps_the_others(lang):
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_decode_of_a_missing_file_is_a_usage_error(lang, tmp_path):
-    proc = subprocess.run([str(ROOT / "tests/conformance/decode"), lang, str(tmp_path / "missing.bin")], capture_output=True)
+    proc = subprocess.run(
+        [str(ROOT / "tests/conformance/decode"), lang, str(tmp_path / "missing.bin")], capture_output=True
+    )
     assert proc.returncode == 2
     assert proc.stdout == b""
     assert b"missing.bin" in proc.stderr
