@@ -19,7 +19,19 @@ from .ir import SpecFile
 from .primitives import PRIMITIVES, int_range
 from .yamlpos import load
 
-CASE_KEYS = {"name", "sources", "derivation", "erratum", "hex", "device", "packets", "rejected", "notes", "skipped"}
+CASE_KEYS = {
+    "name",
+    "sources",
+    "derivation",
+    "erratum",
+    "hex",
+    "device",
+    "packets",
+    "rejected",
+    "notes",
+    "skipped",
+    "quoted",
+}
 ERRATUM_KINDS = {"bad_checksum", "bad_length", "table_mismatch", "copy_paste_mismatch", "bad_decimal", "bad_bytes"}
 
 
@@ -147,6 +159,7 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
         "size": len(raw),
         "device": c.get("device"),
         "rejected": bool(c.get("rejected")),
+        "quoted": c.get("quoted"),
         "expect": lines,
     }
 
