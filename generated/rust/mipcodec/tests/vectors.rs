@@ -539,6 +539,95 @@ fn case_device_info_every_string_byte() {
     );
 }
 
+/// `ack_imu_message_format` (tests/vectors/mip/base.yaml:493)
+#[test]
+fn case_ack_imu_message_format() {
+    check(
+        "75650c0404f10800e7ba",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `ack_filter_message_format` (tests/vectors/mip/base.yaml:501)
+#[test]
+fn case_ack_filter_message_format() {
+    check(
+        "75650c0404f10a00e9be",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `two_acks_save_formats_published` (tests/vectors/mip/base.yaml:509)
+#[test]
+fn case_two_acks_save_formats_published() {
+    check(
+        "75650c0804f1080004f10a00e9be",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}"],
+        true,
+    );
+}
+
+/// `two_acks_save_formats` (tests/vectors/mip/base.yaml:521)
+#[test]
+fn case_two_acks_save_formats() {
+    check(
+        "75650c0804f1080004f10a00ea71",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `two_acks_enable_streams` (tests/vectors/mip/base.yaml:531)
+#[test]
+fn case_two_acks_enable_streams() {
+    check(
+        "75650c0804f1110004f11100fab5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `ack_poll_data` (tests/vectors/mip/base.yaml:540)
+#[test]
+fn case_ack_poll_data() {
+    check(
+        "75650c0404f10100e0ac",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `ack_initialize_attitude` (tests/vectors/mip/base.yaml:550)
+#[test]
+fn case_ack_initialize_attitude() {
+    check(
+        "75650d0404f10200e2b4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":2,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
 /// `event_trigger_gpio_edge` (tests/vectors/mip/events.yaml:6)
 #[test]
 fn case_event_trigger_gpio_edge() {
