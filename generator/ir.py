@@ -35,6 +35,8 @@ class Builder:
         self.types: dict[str, dict] = {}  # name -> type definition (IR form, filled progressively)
         self.type_locs: dict[str, Location] = {}
         self.raw_types: dict[str, tuple[str, dict, SpecFile, tuple]] = {}
+        # Named field layouts shared by several fields (e.g. the GNSS receiver sets).
+        self.field_layouts: dict[str, tuple[dict, SpecFile, tuple]] = {}
         self.manual_devices: dict[str, str] = {}
         self.device_ids: list[str] = []
 
@@ -149,6 +151,18 @@ class Builder:
                     continue
                 self.raw_types[name] = (kind, t, sf, path)
                 self.type_locs[name] = sf.locate(path)
+        for i, t in enumerate(sf.data.get("field_layouts", []) or []):
+            path = base + ("field_layouts", i)
+            if t["name"] in self.field_layouts:
+                prev = self.field_layouts[t["name"]][1].locate(self.field_layouts[t["name"]][2])
+                self.err(
+                    sf,
+                    path + ("name",),
+                    f"field layout '{t['name']}' is defined twice (first defined at {prev})",
+                    "unique field layout names across the protocol",
+                )
+                continue
+            self.field_layouts[t["name"]] = (t, sf, path)
 
     def _resolve_types(self) -> None:
         # Enums and bitfields first (no dependencies), then structs/unions in dependency order.
@@ -644,6 +658,7 @@ class Builder:
                     "ack_suppressed_by": None,
                     "params": params,
                     "size": _layout_size(params),
+                    "layout": None,
                 }
             ],
             "params": params,
@@ -669,7 +684,23 @@ class Builder:
                     f"{owner}: only commands take a function selector",
                     "no functions on responses and data",
                 )
-        params = self._params(sf, path + ("params",), src.get("params", []), functions, owner)
+        layout_name = src.get("layout")
+        if layout_name is not None:
+            shared = self.field_layouts.get(layout_name)
+            if shared is None:
+                known = ", ".join(sorted(self.field_layouts)) or "none defined"
+                self.err(
+                    sf,
+                    path + ("layout",),
+                    f"{owner}: unknown field layout '{layout_name}'",
+                    f"a name under field_layouts: ({known})",
+                )
+                params = []
+            else:
+                t, lsf, lpath = shared
+                params = self._params(lsf, lpath + ("params",), t["params"], functions, f"field layout {layout_name}")
+        else:
+            params = self._params(sf, path + ("params",), src.get("params", []), functions, owner)
         responses = []
         if "response" in src and "responses" in src:
             self.err(sf, path + ("response",), f"{owner}: both 'response' and 'responses'", "one of them")
@@ -747,6 +778,7 @@ class Builder:
             "ack_suppressed_by": ack,
             "params": params,
             "size": _layout_size(params, selector=functions is not None),
+            "layout": layout_name,
         }
 
     def _sets(self, reserved: list[dict], framing: dict) -> list[dict]:
@@ -828,6 +860,24 @@ class Builder:
                     )
                 if f.get("repeats") and f["role"] != "data":
                     self.err(sf, fp + ("repeats",), f"{d['name']}.{f['name']}: only data fields repeat", "no repeats")
+                given = [k for k in ("params", "layout", "variants") if k in f]
+                if len(given) != 1:
+                    what = " and ".join(given) if given else "none of them"
+                    self.err(
+                        sf,
+                        fp + ((given[1],) if len(given) > 1 else ()),
+                        f"{d['name']}.{f['name']}: has {what}",
+                        "exactly one of params (its own parameters), layout (a shared field layout) or variants (per-device layouts)",
+                    )
+                if "variants" in f and "sources" in f:
+                    self.err(
+                        sf,
+                        fp + ("sources",),
+                        f"{d['name']}.{f['name']}: with variants, sources go in each variant",
+                        "sources under each variant",
+                    )
+                if "variants" not in f and "sources" not in f:
+                    self.err(sf, fp, f"{d['name']}.{f['name']}: missing sources", "sources: [{manual, line, title}]")
                 if "variants" in f:
                     variants = []
                     seen_dev: set[str] = set()
@@ -847,6 +897,13 @@ class Builder:
                                 "one variant per device",
                             )
                         seen_dev.add(v["device"])
+                        if ("params" in v) == ("layout" in v):
+                            self.err(
+                                sf,
+                                fp + ("variants", j),
+                                f"{d['name']}.{f['name']} ({v['device']}): needs exactly one of params or layout",
+                                "params: [...] or layout: <FieldLayout>",
+                            )
                         variants.append(self._layout(sf, fp + ("variants", j), v, d["name"], f, v["device"]))
                     if f.get("functions") or f.get("response") or f.get("responses"):
                         self.err(

@@ -90,3 +90,15 @@ def test_stated_length_lint_uses_framing():
     # configure is stated as 5 but its full length is 1 + 1 + 1 + 28 + 1 = 32 data bytes (+0 header)
     items = [i for i in lint_stated_lengths({"protocols": [_proto()]}) if i["name"] == "commands.configure"]
     assert len(items) == 1 and items[0]["stated"] == 5
+
+
+def test_field_layout_shared_by_two_sets():
+    p = _proto()
+    a = _field(p, "receiver_1", "llh_position")["variants"][0]
+    b = _field(p, "receiver_2", "llh_position")["variants"][0]
+    assert a["layout"] == b["layout"] == "LlhPosition"
+    assert a["params"] == b["params"]
+    assert [q["name"] for q in a["params"]] == ["latitude", "longitude", "valid_flags"]
+    assert a["size"] == {"min": 18, "max": 18, "fixed": True}
+    # the stated length 18 agrees (this framing counts only data bytes), so the lint is silent
+    assert not [i for i in lint_stated_lengths({"protocols": [p]}) if i["name"] == "receiver_1.llh_position"]

@@ -232,6 +232,22 @@ CASES = [
         "duplicate key 'title'",
         "title: Again",
     ),
+    (
+        "unknown field layout",
+        "gnss2.yaml",
+        "layout: LlhPosition",
+        "layout: LlhPositon",
+        "receiver_2.llh_position: unknown field layout 'LlhPositon'",
+        "layout: LlhPositon",
+    ),
+    (
+        "field with params and layout",
+        "gnss2.yaml",
+        "    layout: LlhPosition\n",
+        "    layout: LlhPosition\n    params: []\n",
+        "receiver_2.llh_position: has params and layout (expected exactly one of params",
+        "params: []",
+    ),
     ("yaml syntax", "data.yaml", "    title: Sample\n", "    title: [Sample\n", "invalid YAML", None),
 ]
 
