@@ -1044,37 +1044,25 @@ def lint_stated_lengths(ir: dict) -> list[dict]:
                         if stated is None:
                             continue
                         full_min, full_max = size["min"] + adj, size["max"] + adj
-                        if isinstance(stated, int):
+                        textual = not isinstance(stated, int)
+                        if not textual:
                             # A command with optional parameters may be stated at its full length.
                             ok = stated == full_max if _all_fixed_elements(v["params"]) else False
-                            ok = ok or (size["fixed"] and stated == full_min)
-                            if not ok:
-                                out.append(
-                                    {
-                                        "protocol": proto["name"],
-                                        "set": s["id"],
-                                        "descriptor": f["id"],
-                                        "name": f"{s['name']}.{f['name']}",
-                                        "manual": src["manual"],
-                                        "line": src.get("line"),
-                                        "stated": stated,
-                                        "computed": full_min if size["fixed"] else f"{full_min}..{full_max}",
-                                    }
-                                )
-                        else:
-                            out.append(
-                                {
-                                    "protocol": proto["name"],
-                                    "set": s["id"],
-                                    "descriptor": f["id"],
-                                    "name": f"{s['name']}.{f['name']}",
-                                    "manual": src["manual"],
-                                    "line": src.get("line"),
-                                    "stated": stated,
-                                    "computed": full_min if size["fixed"] else f"{full_min}..{full_max}",
-                                    "textual": True,
-                                }
-                            )
+                            if ok or (size["fixed"] and stated == full_min):
+                                continue
+                        item = {
+                            "protocol": proto["name"],
+                            "set": s["id"],
+                            "descriptor": f["id"],
+                            "name": f"{s['name']}.{f['name']}",
+                            "manual": src["manual"],
+                            "line": src.get("line"),
+                            "stated": stated,
+                            "computed": full_min if size["fixed"] else f"{full_min}..{full_max}",
+                        }
+                        if textual:
+                            item["textual"] = True
+                        out.append(item)
     return out
 
 
