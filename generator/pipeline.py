@@ -16,7 +16,7 @@ from .vectors import load_vectors
 # Back ends, in render order. Each is generator/backends/<name>.py with
 #   OUTPUT_DIRS: list of directories under generated/ that it owns entirely
 #   render(ir: dict, vectors: list[dict]) -> dict[path relative to generated/, file text]
-BACKENDS = ["c", "cpp", "python", "rust", "docs"]
+BACKENDS = ["c", "cpp", "python", "rust"]
 
 
 def _available_backends() -> list[str]:
