@@ -10,6 +10,7 @@ import jsonschema
 
 from .diagnostics import SpecError, SpecErrors
 from .ir import Builder, SpecFile
+from .schema_check import schema_errors
 from .yamlpos import load
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -28,38 +29,7 @@ def _schema_validator():
     return validators
 
 
-def _deepest(error: jsonschema.ValidationError) -> jsonschema.ValidationError:
-    """For oneOf/anyOf failures, the most specific sub-error (the one a person needs to see)."""
-    best = error
-    while best.context:
-        best = jsonschema.exceptions.best_match(best.context)
-    return best
-
-
-def _describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
-    """Turn a jsonschema error into (what is wrong, what is expected)."""
-    where = ".".join(str(p) for p in best.absolute_path) or "(top level)"
-    v = best.validator
-    if v == "required":
-        missing = best.message.split("'")[1] if "'" in best.message else best.message
-        return f"{where}: missing required key '{missing}'", None
-    if v == "additionalProperties":
-        return f"{where}: {best.message}", "only the keys documented in docs/spec-format.md"
-    if v == "enum":
-        return f"{where}: value {best.instance!r} is not allowed", "one of " + ", ".join(
-            repr(x) for x in best.validator_value
-        )
-    if v == "pattern":
-        return f"{where}: {best.instance!r} is not a valid name", f"a name matching {best.validator_value}"
-    if v == "type":
-        return f"{where}: {best.instance!r} has the wrong type", f"{best.validator_value}"
-    if v in ("minimum", "maximum"):
-        return f"{where}: {best.instance!r} is out of range", f"{v} {best.validator_value}"
-    return f"{where}: {best.message}", None
-
-
 def _validate_shape(validators, sf: SpecFile) -> list[SpecError]:
-    errors = []
     kind = next((k for k in ("protocol", "set", "types") if k in sf.data), None)
     if kind is None:
         return [
@@ -69,17 +39,7 @@ def _validate_shape(validators, sf: SpecFile) -> list[SpecError]:
                 "a top-level 'protocol:' (protocol file), 'set:' (descriptor set) or 'types:' (shared types) key",
             )
         ]
-    validator = validators[kind]
-    for e in sorted(validator.iter_errors(sf.data), key=lambda e: list(map(str, e.absolute_path))):
-        best = _deepest(e)
-        msg, expected = _describe(best)
-        path = tuple(best.absolute_path)
-        if best.validator == "additionalProperties" and isinstance(best.instance, dict):
-            extra = [k for k in best.instance if k not in best.schema.get("properties", {})]
-            if extra:
-                path = path + (("key", extra[0]),)
-        errors.append(SpecError(sf.locate(path), msg, expected))
-    return errors
+    return schema_errors(validators[kind], sf.data, sf.locate)
 
 
 def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:

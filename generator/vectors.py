@@ -8,15 +8,19 @@ decimal floats); this module only re-spells them canonically.
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import struct
 from pathlib import Path
 
+import jsonschema
+
 from .canonical import float_text, string_text
 from .diagnostics import SpecError, SpecErrors
 from .ir import SpecFile
 from .primitives import PRIMITIVES, int_range
+from .schema_check import schema_errors
 from .yamlpos import load
 
 CASE_KEYS = {
@@ -62,6 +66,10 @@ def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
                 errors.append(e)
                 continue
             sf = SpecFile(rel, data, locate)
+            shape = _shape_errors(sf)
+            if shape:
+                errors.extend(shape)
+                continue
             if proto is None:
                 errors.append(
                     SpecError(
@@ -98,6 +106,14 @@ def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
     if errors:
         raise SpecErrors(errors)
     return cases
+
+
+SCHEMA = Path(__file__).resolve().parent.parent / "spec" / "schema" / "vectors.schema.json"
+
+
+def _shape_errors(sf: SpecFile) -> list[SpecError]:
+    validator = jsonschema.Draft202012Validator(json.loads(SCHEMA.read_text(encoding="utf-8")))
+    return schema_errors(validator, sf.data, sf.locate)
 
 
 def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:

@@ -1,0 +1,52 @@
+"""JSON Schema checks with located, readable errors (used for spec files and vector files)."""
+
+from __future__ import annotations
+
+import jsonschema
+
+from .diagnostics import SpecError
+
+
+def deepest(error: jsonschema.ValidationError) -> jsonschema.ValidationError:
+    """For oneOf/anyOf failures, the most specific sub-error (the one a person needs to see)."""
+    best = error
+    while best.context:
+        best = jsonschema.exceptions.best_match(best.context)
+    return best
+
+
+def describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
+    """Turn a jsonschema error into (what is wrong, what is expected)."""
+    where = ".".join(str(p) for p in best.absolute_path) or "(top level)"
+    v = best.validator
+    if v == "required":
+        missing = best.message.split("'")[1] if "'" in best.message else best.message
+        return f"{where}: missing required key '{missing}'", None
+    if v == "additionalProperties":
+        return f"{where}: {best.message}", "only the keys documented in docs/spec-format.md"
+    if v == "enum":
+        return f"{where}: value {best.instance!r} is not allowed", "one of " + ", ".join(
+            repr(x) for x in best.validator_value
+        )
+    if v == "pattern":
+        return f"{where}: {best.instance!r} is not a valid name", f"a name matching {best.validator_value}"
+    if v == "type":
+        return f"{where}: {best.instance!r} has the wrong type", f"{best.validator_value}"
+    if v in ("minimum", "maximum"):
+        return f"{where}: {best.instance!r} is out of range", f"{v} {best.validator_value}"
+    return f"{where}: {best.message}", None
+
+
+def schema_errors(validator: jsonschema.Validator, data, locate) -> list[SpecError]:
+    """Every shape error of `data`, located at its line and column (unknown keys at the key)."""
+    errors = []
+    for e in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path))):
+        best = deepest(e)
+        msg, expected = describe(best)
+        path = tuple(best.absolute_path)
+        if best.validator == "additionalProperties" and isinstance(best.instance, dict):
+            extra = [k for k in best.instance if k not in best.schema.get("properties", {})]
+            if extra:
+                path = path + (("key", extra[0]),)
+        errors.append(SpecError(locate(path), msg, expected))
+    return errors
