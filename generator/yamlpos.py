@@ -33,8 +33,16 @@ def _construct(node: yaml.Node, path: Path, file: str, marks: dict) -> Any:
         return out
     if isinstance(node, yaml.SequenceNode):
         return [_construct(v, path + (i,), file, marks) for i, v in enumerate(node.value)]
-    # Scalars: let the safe loader resolve ints (incl. 0x..), floats, bools, null, strings.
-    return yaml.safe_load(yaml.serialize(node))
+    return _scalar(node, file)
+
+
+def _scalar(node: yaml.Node, file: str):
+    """A scalar as the safe loader resolves it: ints (incl. 0x..), floats, bools, null, strings."""
+    try:
+        return yaml.constructor.SafeConstructor().construct_object(node, deep=True)
+    except yaml.YAMLError as exc:
+        loc = Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
+        raise SpecError(loc, f"invalid YAML value: {getattr(exc, 'problem', None) or exc}") from None
 
 
 def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable[[Path], Location]]:
