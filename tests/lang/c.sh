@@ -50,6 +50,11 @@ build)
 test)
     for pkg in $(packages); do
         build_one "$pkg"
+        # The library never allocates: no allocator symbol may be referenced by it.
+        if nm -u "$ROOT/build/c/$pkg/lib$pkg.a" | grep -wE 'malloc|calloc|realloc|free|aligned_alloc|posix_memalign'; then
+            echo "c.sh: lib$pkg.a references the heap allocator (listed above)" >&2
+            exit 1
+        fi
         "$ROOT/build/c/$pkg/$pkg-tests"
     done
     ;;
