@@ -35,6 +35,35 @@ ensure_built() {
     build_one "$PACKAGE"
 }
 
+# The same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails),
+# then the sanitized decoder over a stream of random bytes mixed with the library's own packets.
+sanitized() {
+    local src="$ROOT/generated/c/$1" out="$ROOT/build/c-sanitize/$1"
+    local san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+    if [ ! -f "$out/build.ninja" ]; then
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS="$san" \
+            -DCMAKE_CXX_FLAGS="$san" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
+    fi
+    cmake --build "$out" >&2
+    "$out/$1-tests" --gtest_brief=1
+    python3 - "$out/noise.bin" "$ROOT/generated/ir.json" "$1" <<'PY'
+import json, random, sys
+proto = next(p for p in json.load(open(sys.argv[2]))["protocols"] if p["package"] == sys.argv[3])
+sync = bytes(proto["framing"]["sync"])
+rng = random.Random(20261121)
+chunks = []
+for _ in range(4000):
+    r = rng.random()
+    if r < 0.5:
+        chunks.append(bytes(rng.randrange(256) for _ in range(rng.randrange(8))))
+    else:  # a sync pair and a header followed by random bytes: false and truncated packets
+        chunks.append(sync + bytes([rng.randrange(256), rng.randrange(256)]) + bytes(rng.randrange(256) for _ in range(rng.randrange(40))))
+open(sys.argv[1], "wb").write(b"".join(chunks))
+PY
+    "$out/$1-decode" "$out/noise.bin" | "$out/$1-encode" | cmp - "$out/noise.bin"
+    echo "c.sh: $1 sanitized tests and noise round trip passed" >&2
+}
+
 usage() {
     echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode" >&2
     exit 2
@@ -56,6 +85,7 @@ test)
             exit 1
         fi
         "$ROOT/build/c/$pkg/$pkg-tests"
+        sanitized "$pkg"
     done
     ;;
 decode)
