@@ -48,6 +48,15 @@ case "$cmd" in
     for p in $(packages); do
       build "$p"
       "$ROOT/build/cpp/$p/$p-tests" "$@"
+      # The same suite under AddressSanitizer and UndefinedBehaviorSanitizer (any report fails).
+      san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+      out="$ROOT/build/cpp-sanitize/$p"
+      if [ ! -f "$out/build.ninja" ]; then
+        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_CXX_FLAGS="$san" \
+          -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
+      fi
+      cmake --build "$out" >&2
+      "$out/$p-tests" --gtest_brief=1
     done
     ;;
   decode)
