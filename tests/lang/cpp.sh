@@ -52,7 +52,7 @@ case "$cmd" in
       san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
       out="$ROOT/build/cpp-sanitize/$p"
       if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_CXX_FLAGS="$san" \
+        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="$san" \
           -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
       fi
       cmake --build "$out" >&2
