@@ -318,6 +318,12 @@ TEST(Vectors, ack_initialize_attitude) {
                  "\"command_descriptor\":2,\"ack_code\":0}}]}\n");
 }
 
+TEST(Vectors, ack_pps_source) {
+    check_vector("75650c0404f1280007fa", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":40,\"ack_code\":0}}]}\n");
+}
+
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(
         "75650c07072e01010101042af4", MIP_DEVICE_ANY,

@@ -445,6 +445,15 @@ TEST(Vectors, ack_initialize_attitude) {
                  });
 }
 
+// ack_pps_source
+TEST(Vectors, ack_pps_source) {
+    check_vector("75650c0404f1280007fa", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
+                 });
+}
+
 // event_trigger_gpio_edge
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(

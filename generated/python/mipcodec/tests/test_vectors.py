@@ -439,6 +439,16 @@ CASES = [
         ],
     },
     {
+        "name": "ack_pps_source",
+        "hex": "75650c0404f1280007fa",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/base.yaml:558",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}}]}'
+        ],
+    },
+    {
         "name": "event_trigger_gpio_edge",
         "hex": "75650c07072e01010101042af4",
         "device": None,

@@ -628,6 +628,19 @@ fn case_ack_initialize_attitude() {
     );
 }
 
+/// `ack_pps_source` (tests/vectors/mip/base.yaml:558)
+#[test]
+fn case_ack_pps_source() {
+    check(
+        "75650c0404f1280007fa",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
 /// `event_trigger_gpio_edge` (tests/vectors/mip/events.yaml:6)
 #[test]
 fn case_event_trigger_gpio_edge() {
