@@ -787,16 +787,22 @@ class Builder:
         by_name: dict[str, SpecFile] = {}
         kinds = self.pf.data["set_kinds"]
         shared = self.pf.data.get("shared_data")
+        # A set may be split over several files ("parts"); they must agree on name and kind.
+        groups: dict[int, list[SpecFile]] = {}
         for sf in self.set_files:
+            groups.setdefault(sf.data["set"], []).append(sf)
+        for set_id, parts in groups.items():
+            sf = parts[0]
             d = sf.data
-            if d["set"] in by_id:
-                self.err(
-                    sf,
-                    ("set",),
-                    f"descriptor set 0x{d['set']:02X} is defined twice (also in {by_id[d['set']][0].path})",
-                    "one file per descriptor set",
-                )
-                continue
+            for other in parts[1:]:
+                for key in ("name", "kind"):
+                    if other.data[key] != d[key]:
+                        self.err(
+                            other,
+                            (key,),
+                            f"descriptor set 0x{set_id:02X} has {key} '{other.data[key]}' here but '{d[key]}' in {sf.path}",
+                            f"every file of set 0x{set_id:02X} with {key} '{d[key]}'",
+                        )
             if d["name"] in by_name:
                 self.err(
                     sf,
@@ -804,7 +810,7 @@ class Builder:
                     f"descriptor set name '{d['name']}' is used twice (also in {by_name[d['name']].path})",
                     "unique set names",
                 )
-            by_id[d["set"]] = (sf, d)
+            by_id[set_id] = (sf, d)
             by_name[d["name"]] = sf
             rng = kinds.get(d["kind"])
             if rng and not rng["first"] <= d["set"] <= rng["last"]:
@@ -818,7 +824,7 @@ class Builder:
             fields = []
             ids: dict[int, str] = {}
             fnames: set[str] = set()
-            for i, f in enumerate(d["fields"]):
+            for sf, i, f in [(part, i, f) for part in parts for i, f in enumerate(part.data["fields"])]:
                 fp = ("fields", i)
                 if f["id"] in ids:
                     self.err(
@@ -941,10 +947,10 @@ class Builder:
                     "kind": d["kind"],
                     "shared": is_shared,
                     "description": d.get("description", ""),
-                    "sources": self._sources(sf, ("sources",), d["sources"]),
-                    "notes": d.get("notes", []),
+                    "sources": [s for part in parts for s in self._sources(part, ("sources",), part.data["sources"])],
+                    "notes": [n for part in parts for n in part.data.get("notes", [])],
                     "fields": fields,
-                    "_sf": sf,
+                    "_sf": parts[0],
                 }
             )
         sets.sort(key=lambda s: s["id"])

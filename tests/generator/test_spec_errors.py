@@ -305,3 +305,37 @@ def test_cli_accepts_good_spec(tmp_path):
 def test_project_spec_is_valid():
     ir = load_spec()
     assert [p["name"] for p in ir["protocols"]] == ["mip"]
+
+
+def _add_part(spec: Path, name: str, set_name: str = "commands", descriptor: int = 0x70) -> None:
+    (spec / "demo" / "commands_part.yaml").write_text(
+        f"set: 0x01\nname: {set_name}\ntitle: More commands\nkind: command\n"
+        "sources: [{manual: demo.txt, line: 99}]\n"
+        "fields:\n"
+        f"  - id: 0x{descriptor:02X}\n    name: {name}\n    role: command\n    title: Extra\n"
+        "    sources: [{manual: demo.txt, line: 100}]\n    params: [{name: x, type: u8}]\n"
+    )
+
+
+def test_set_split_over_files_is_merged(tmp_path):
+    spec = _copy(tmp_path)
+    _add_part(spec, "extra")
+    ir = load_spec(spec, root=spec.parent)
+    (s,) = [s for s in ir["protocols"][0]["sets"] if s["id"] == 0x01]
+    names = [f["name"] for f in s["fields"]]
+    assert names[-1] == "extra" and names.count("extra") == 1 and len(names) > 1
+    assert [src["line"] for src in s["sources"]] == [10, 99]
+
+
+def test_set_parts_must_agree_on_name(tmp_path):
+    spec = _copy(tmp_path)
+    _add_part(spec, "extra", set_name="commandz")
+    errs = _errors(spec)
+    assert any("commands_part.yaml:2:" in e and "has name 'commandz' here but 'commands'" in e for e in errs), errs
+
+
+def test_descriptor_clash_across_parts_is_located(tmp_path):
+    spec = _copy(tmp_path)
+    _add_part(spec, "extra", descriptor=0x02)
+    errs = _errors(spec)
+    assert any("commands_part.yaml:7:" in e and "descriptor 0x02 is used by both" in e for e in errs), errs
