@@ -592,8 +592,7 @@ class Builder:
                 )
             max_count = None
             if count is not None and count["kind"] != "fixed":
-                elem_min = max(tref["size"]["min"], 1)
-                max_count = p.get("max_count") or max(max_data // elem_min, 0)
+                max_count = p.get("max_count") or -1  # default: what fits beside the others (below)
             elif "max_count" in p:
                 self.err(
                     sf,
@@ -616,6 +615,14 @@ class Builder:
             q["size"] = _param_size(q)
             names[name] = q
             out.append(q)
+        # Default capacity of a counted array: what fits in one field beside the selector byte and
+        # the smallest size of every other parameter.
+        for q in out:
+            if q["max_count"] == -1:
+                others = sum(o["size"]["min"] for o in out if o is not q)
+                budget = max_data - (1 if functions is not None else 0) - others
+                q["max_count"] = max(budget // max(q["type"]["size"]["min"], 1), 0)
+                q["size"] = _param_size(q)
         # fixed offsets where known
         off: int | None = 0
         for q in out:
@@ -947,7 +954,9 @@ class Builder:
                     "kind": d["kind"],
                     "shared": is_shared,
                     "description": d.get("description", ""),
-                    "sources": [s for part in parts for s in self._sources(part, ("sources",), part.data["sources"])],
+                    "sources": _unique(
+                        [s for part in parts for s in self._sources(part, ("sources",), part.data["sources"])]
+                    ),
                     "notes": [n for part in parts for n in part.data.get("notes", [])],
                     "fields": fields,
                     "_sf": parts[0],
@@ -993,6 +1002,15 @@ class Builder:
                 del f["_sf"], f["_path"]
             del s["_sf"]
         return sets
+
+
+def _unique(items: list[dict]) -> list[dict]:
+    """Items in order, without repeats (parts of a set may cite the same set-level source)."""
+    out: list[dict] = []
+    for x in items:
+        if x not in out:
+            out.append(x)
+    return out
 
 
 def _known_manuals(pf: SpecFile) -> set[str]:

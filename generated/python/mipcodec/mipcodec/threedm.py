@@ -65,7 +65,7 @@ class GetEventTriggerStatus(_c.Field):
     Report the type and status of event triggers.
 
     Responses: 0xB6 event_trigger_status. Sources: 3dm-cv7-ins-docs.txt line 7047. Field data:
-    1..254 bytes.
+    1..253 bytes.
     """
 
     requested_count: int = 0  # Number of entries requested; 0 requests all trigger slots.
@@ -79,7 +79,7 @@ class GetEventTriggerStatus(_c.Field):
     _ATTRS = ("requested_count", "requested_instances")
     _OPS = (
         _c.Run(_c.P("requested_count", _c.U8)),
-        _c.Counted("requested_instances", _c.U8, count="requested_count", maximum=253),
+        _c.Counted("requested_instances", _c.U8, count="requested_count", maximum=252),
     )
 
 
@@ -113,7 +113,7 @@ class GetEventActionStatus(_c.Field):
 
     Report the type and trigger of event actions.
 
-    Responses: 0xB7 event_action_status. Sources: 3dm-cv7-ins-docs.txt line 7080. Field data: 1..254
+    Responses: 0xB7 event_action_status. Sources: 3dm-cv7-ins-docs.txt line 7080. Field data: 1..253
     bytes.
     """
 
@@ -128,7 +128,7 @@ class GetEventActionStatus(_c.Field):
     _ATTRS = ("requested_count", "requested_instances")
     _OPS = (
         _c.Run(_c.P("requested_count", _c.U8)),
-        _c.Counted("requested_instances", _c.U8, count="requested_count", maximum=253),
+        _c.Counted("requested_instances", _c.U8, count="requested_count", maximum=252),
     )
 
 

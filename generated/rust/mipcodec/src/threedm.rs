@@ -198,7 +198,7 @@ pub struct GetEventTriggerStatus {
     /// Number of entries requested; 0 requests all trigger slots.
     pub requested_count: u8,
     /// Trigger instances to query.
-    pub requested_instances: crate::bounded::BoundedVec<u8, 253>,
+    pub requested_instances: crate::bounded::BoundedVec<u8, 252>,
 }
 
 impl Default for GetEventTriggerStatus {
@@ -210,7 +210,7 @@ impl Default for GetEventTriggerStatus {
 impl crate::wire::Wire for GetEventTriggerStatus {
     const ZERO: Self = Self {
         requested_count: <u8 as crate::wire::Wire>::ZERO,
-        requested_instances: <crate::bounded::BoundedVec<u8, 253> as crate::wire::Wire>::ZERO,
+        requested_instances: <crate::bounded::BoundedVec<u8, 252> as crate::wire::Wire>::ZERO,
     };
     const FIXED_SIZE: Option<usize> = None;
 
@@ -218,7 +218,7 @@ impl crate::wire::Wire for GetEventTriggerStatus {
         let p_requested_count =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("requested_count"))?;
         let p_requested_instances =
-            crate::bounded::BoundedVec::<u8, 253>::decode_counted(r, u64::from(p_requested_count))
+            crate::bounded::BoundedVec::<u8, 252>::decode_counted(r, u64::from(p_requested_count))
                 .map_err(|e| e.at("requested_instances"))?;
         Ok(Self {
             requested_count: p_requested_count,
@@ -258,7 +258,7 @@ impl crate::json_read::FromJson for GetEventTriggerStatus {
         )?;
         let p_requested_instances = o.req(
             "requested_instances",
-            <crate::bounded::BoundedVec<u8, 253> as crate::json_read::FromJson>::from_json,
+            <crate::bounded::BoundedVec<u8, 252> as crate::json_read::FromJson>::from_json,
         )?;
         Ok(Self {
             requested_count: p_requested_count,
@@ -364,7 +364,7 @@ pub struct GetEventActionStatus {
     /// Number of entries requested; 0 requests all action slots.
     pub requested_count: u8,
     /// Action instances to query.
-    pub requested_instances: crate::bounded::BoundedVec<u8, 253>,
+    pub requested_instances: crate::bounded::BoundedVec<u8, 252>,
 }
 
 impl Default for GetEventActionStatus {
@@ -376,7 +376,7 @@ impl Default for GetEventActionStatus {
 impl crate::wire::Wire for GetEventActionStatus {
     const ZERO: Self = Self {
         requested_count: <u8 as crate::wire::Wire>::ZERO,
-        requested_instances: <crate::bounded::BoundedVec<u8, 253> as crate::wire::Wire>::ZERO,
+        requested_instances: <crate::bounded::BoundedVec<u8, 252> as crate::wire::Wire>::ZERO,
     };
     const FIXED_SIZE: Option<usize> = None;
 
@@ -384,7 +384,7 @@ impl crate::wire::Wire for GetEventActionStatus {
         let p_requested_count =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("requested_count"))?;
         let p_requested_instances =
-            crate::bounded::BoundedVec::<u8, 253>::decode_counted(r, u64::from(p_requested_count))
+            crate::bounded::BoundedVec::<u8, 252>::decode_counted(r, u64::from(p_requested_count))
                 .map_err(|e| e.at("requested_instances"))?;
         Ok(Self {
             requested_count: p_requested_count,
@@ -424,7 +424,7 @@ impl crate::json_read::FromJson for GetEventActionStatus {
         )?;
         let p_requested_instances = o.req(
             "requested_instances",
-            <crate::bounded::BoundedVec<u8, 253> as crate::json_read::FromJson>::from_json,
+            <crate::bounded::BoundedVec<u8, 252> as crate::json_read::FromJson>::from_json,
         )?;
         Ok(Self {
             requested_count: p_requested_count,

@@ -236,8 +236,8 @@ static int mip_threedm_get_event_trigger_status_read(mip_reader_t *r,
     }
     mip_rd_pop(r);
     mip_rd_push(r, "requested_instances");
-    if (out->requested_count > 253) {
-        return mip_rd_count_error(r, (uint64_t)out->requested_count, 253);
+    if (out->requested_count > 252) {
+        return mip_rd_count_error(r, (uint64_t)out->requested_count, 252);
     }
     for (i = 0; i < (size_t)out->requested_count; i++) {
         mip_rd_index(r, i);
@@ -257,7 +257,7 @@ mip_threedm_get_event_trigger_status_write(mip_writer_t *w,
     if ((st = mip_wr_u8(w, &in->requested_count)) != MIP_OK) {
         return st;
     }
-    if (in->requested_count > 253) {
+    if (in->requested_count > 252) {
         return MIP_ERR_INVALID;
     }
     for (i = 0; i < (size_t)in->requested_count; i++) {
@@ -298,7 +298,7 @@ void mip_threedm_get_event_trigger_status_to_json(mip_jw_t *w,
     mip_jw_u8(w, &in->requested_count);
     mip_jw_key(w, &first, "requested_instances");
     mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->requested_count && i < 253; i++) {
+    for (i = 0; i < (size_t)in->requested_count && i < 252; i++) {
         mip_jw_sep(w, i);
         mip_jw_u8(w, &in->requested_instances[i]);
     }
@@ -346,8 +346,8 @@ int mip_threedm_get_event_trigger_status_from_json(mip_jr_t *jr, size_t pos,
             if (!more) {
                 break;
             }
-            if (i >= 253) {
-                return mip_jr_fail(jr, "more than 253 elements");
+            if (i >= 252) {
+                return mip_jr_fail(jr, "more than 252 elements");
             }
             mip_jr_index(jr, i);
             if (mip_jr_u8(jr, ep, &out->requested_instances[i])) {
@@ -510,8 +510,8 @@ static int mip_threedm_get_event_action_status_read(mip_reader_t *r,
     }
     mip_rd_pop(r);
     mip_rd_push(r, "requested_instances");
-    if (out->requested_count > 253) {
-        return mip_rd_count_error(r, (uint64_t)out->requested_count, 253);
+    if (out->requested_count > 252) {
+        return mip_rd_count_error(r, (uint64_t)out->requested_count, 252);
     }
     for (i = 0; i < (size_t)out->requested_count; i++) {
         mip_rd_index(r, i);
@@ -530,7 +530,7 @@ mip_threedm_get_event_action_status_write(mip_writer_t *w, const mip_threedm_get
     if ((st = mip_wr_u8(w, &in->requested_count)) != MIP_OK) {
         return st;
     }
-    if (in->requested_count > 253) {
+    if (in->requested_count > 252) {
         return MIP_ERR_INVALID;
     }
     for (i = 0; i < (size_t)in->requested_count; i++) {
@@ -571,7 +571,7 @@ void mip_threedm_get_event_action_status_to_json(mip_jw_t *w,
     mip_jw_u8(w, &in->requested_count);
     mip_jw_key(w, &first, "requested_instances");
     mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->requested_count && i < 253; i++) {
+    for (i = 0; i < (size_t)in->requested_count && i < 252; i++) {
         mip_jw_sep(w, i);
         mip_jw_u8(w, &in->requested_instances[i]);
     }
@@ -619,8 +619,8 @@ int mip_threedm_get_event_action_status_from_json(mip_jr_t *jr, size_t pos,
             if (!more) {
                 break;
             }
-            if (i >= 253) {
-                return mip_jr_fail(jr, "more than 253 elements");
+            if (i >= 252) {
+                return mip_jr_fail(jr, "more than 252 elements");
             }
             mip_jr_index(jr, i);
             if (mip_jr_u8(jr, ep, &out->requested_instances[i])) {

@@ -58,11 +58,11 @@ mip_status_t mip_threedm_event_control_response_decode(const uint8_t *data, size
 /** Get event trigger status. Report the type and status of event triggers. */
 typedef struct {
     uint8_t requested_count;          /* Number of entries requested; 0 requests all trigger slots. */
-    uint8_t requested_instances[253]; /* Trigger instances to query. */
+    uint8_t requested_instances[252]; /* Trigger instances to query. */
 } mip_threedm_get_event_trigger_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_THREEDM_GET_EVENT_TRIGGER_STATUS_MAX_SIZE 254
+#define MIP_THREEDM_GET_EVENT_TRIGGER_STATUS_MAX_SIZE 253
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
 mip_status_t mip_threedm_get_event_trigger_status_encode(const mip_threedm_get_event_trigger_status_t *value,
@@ -98,11 +98,11 @@ mip_status_t mip_threedm_event_trigger_status_decode(const uint8_t *data, size_t
 /** Get event action status. Report the type and trigger of event actions. */
 typedef struct {
     uint8_t requested_count;          /* Number of entries requested; 0 requests all action slots. */
-    uint8_t requested_instances[253]; /* Action instances to query. */
+    uint8_t requested_instances[252]; /* Action instances to query. */
 } mip_threedm_get_event_action_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_THREEDM_GET_EVENT_ACTION_STATUS_MAX_SIZE 254
+#define MIP_THREEDM_GET_EVENT_ACTION_STATUS_MAX_SIZE 253
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
 mip_status_t mip_threedm_get_event_action_status_encode(const mip_threedm_get_event_action_status_t *value,

@@ -63,7 +63,7 @@ struct GetEventTriggerStatus {
     static constexpr const char *kDevice = nullptr;
 
     std::uint8_t requested_count{}; ///< Number of entries requested; 0 requests all trigger slots.
-    ::mipcodec::BoundedVector<std::uint8_t, 253> requested_instances{}; ///< Trigger instances to query.
+    ::mipcodec::BoundedVector<std::uint8_t, 252> requested_instances{}; ///< Trigger instances to query.
     friend bool operator==(const GetEventTriggerStatus &a, const GetEventTriggerStatus &b) {
         (void)a;
         (void)b;
@@ -105,7 +105,7 @@ struct GetEventActionStatus {
     static constexpr const char *kDevice = nullptr;
 
     std::uint8_t requested_count{}; ///< Number of entries requested; 0 requests all action slots.
-    ::mipcodec::BoundedVector<std::uint8_t, 253> requested_instances{}; ///< Action instances to query.
+    ::mipcodec::BoundedVector<std::uint8_t, 252> requested_instances{}; ///< Action instances to query.
     friend bool operator==(const GetEventActionStatus &a, const GetEventActionStatus &b) {
         (void)a;
         (void)b;
