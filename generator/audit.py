@@ -4,7 +4,10 @@ Lists every `(0xSS,0xDD)` heading in the manuals and every quoted packet (contig
 starting with a protocol's sync bytes), and reports those that no spec field or golden vector
 covers. A heading is covered when the IR has that descriptor (in its set, the shared data set, or
 as a reserved field). A quoted packet is covered when a vector has the same bytes, or names the
-exact string in `quoted:` (for published strings that cannot be written as bytes).
+exact string in `quoted:` (for published strings that cannot be written as bytes). Example
+tables (rows whose cells are the bytes `0x75 0x65 ...`) are packets too: a row is covered when a
+vector has the bytes the row spells out, or cites that manual line in its sources (rows that
+hold one field of a multi-row packet, or whose bytes are wrong, are matched by line).
 Exit status 1 when anything is missing. Not part of `make test`: users do not have the manuals.
 """
 
@@ -38,6 +41,57 @@ def quoted_packets(text: str, sync: bytes):
         yield text.count("\n", 0, m.start()) + 1, hx, raw
 
 
+def _row_bytes(cells: str) -> bytes:
+    out = bytearray()
+    for cell in re.sub(r"<[^>]+>", " ", cells).split("\t"):
+        after_hex = False
+        for tok in cell.split():
+            tok = tok.strip(",;")
+            if re.fullmatch(r"0x[0-9A-Fa-f]+", tok) and len(tok) % 2 == 0:
+                out += bytes.fromhex(tok[2:])
+                after_hex = True
+            elif after_hex and re.fullmatch(r"[0-9A-Fa-f]{2}", tok):
+                out += bytes.fromhex(tok)
+            else:
+                after_hex = False
+    return bytes(out)
+
+
+def table_rows(text: str, sync: bytes):
+    """Rows of example tables: a line with the sync bytes as `0x75<tab>0x65` cells, plus the
+    rows right after it that continue the same packet (a further field: empty header cells, no
+    sync). The bytes are read in order from `0x..` tokens (several bytes when longer) and the
+    bare two-digit hex tokens that follow one inside the same cell (`0x3E 7A 63 A0`).
+    Yields (first line, all lines, hex, first row text)."""
+    start = re.compile(r"\s+".join(f"0x{b:02X}" for b in sync), re.I)
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        m = start.search(lines[i])
+        if not m:
+            i += 1
+            continue
+        data = _row_bytes(lines[i][m.start() :])
+        rows = [i + 1]
+        j = i + 1
+        while j < len(lines) and not start.search(lines[j]) and re.match(r"[^\t]*(Field|Data)[^\t]*\t\t", lines[j]):
+            data += _row_bytes(lines[j].split("\t", 1)[1])
+            rows.append(j + 1)
+            j += 1
+        yield i + 1, rows, data.hex(), lines[i].strip()
+        i = j
+
+
+def packet_lines(text: str, sync: bytes) -> dict[str, list[int]]:
+    """Where each packet's bytes appear in a manual (quoted strings and table rows)."""
+    where: dict[str, list[int]] = {}
+    for lineno, hx, _ in quoted_packets(text, sync):
+        where.setdefault(hx, []).append(lineno)
+    for lineno, rows, hx, _ in table_rows(text, sync):
+        where.setdefault(hx, []).extend(rows)
+    return where
+
+
 def covered_descriptor(proto: dict, set_id: int, desc: int) -> bool:
     sets = {s["id"]: s for s in proto["sets"]}
     if set_id in sets and any(f["id"] == desc for f in sets[set_id]["fields"]):
@@ -64,8 +118,9 @@ def main(argv: list[str] | None = None) -> int:
     vectors = load_vectors(ir, ROOT / "tests" / "vectors")
     vector_hex = {c["hex"] for c in vectors}
     vector_quoted = {re.sub(r"\s", "", c.get("quoted") or "").lower() for c in vectors}
+    cited = {(src["manual"], src.get("line")) for c in vectors for src in c.get("sources") or []}
     missing = 0
-    total_h = total_p = 0
+    total_h = total_p = total_r = 0
     for proto in ir["protocols"]:
         sync = bytes(proto["framing"]["sync"])
         for dev in proto["devices"]:
@@ -93,7 +148,31 @@ def main(argv: list[str] | None = None) -> int:
                     missing += 1
                 elif args.verbose:
                     print(f"{dev['manual']}:{lineno}: covered: {raw}")
-    print(f"audit: {total_h} headings, {total_p} quoted packets, {missing} not covered", file=sys.stderr)
+            for lineno, rows, hx, raw in table_rows(text, sync):
+                total_r += 1
+                ok = hx in vector_hex or hx in vector_quoted or any((dev["manual"], r) in cited for r in rows)
+                if not ok:
+                    print(f"{dev['manual']}:{lineno}: example table row not in tests/vectors: {hx}  ({raw[:60]})")
+                    missing += 1
+                elif args.verbose:
+                    print(f"{dev['manual']}:{lineno}: covered row: {hx}")
+            # A vector that quotes a packet printed in this manual must cite the line it is on.
+            where = packet_lines(text, sync)
+            for c in vectors:
+                lines = where.get(c["hex"]) or where.get(re.sub(r"\s", "", c.get("quoted") or "").lower())
+                cites = [
+                    src["line"] for src in c.get("sources") or [] if src["manual"] == dev["manual"] and src.get("line")
+                ]
+                if lines and cites and not set(cites) & set(lines):
+                    print(
+                        f"{c['file']}:{c['line']}: vector {c['name']} cites {dev['manual']}:{', '.join(map(str, cites))}, "
+                        f"but its packet is printed at line {', '.join(map(str, sorted(set(lines))))}"
+                    )
+                    missing += 1
+    print(
+        f"audit: {total_h} headings, {total_p} quoted packets, {total_r} example table rows, {missing} not covered",
+        file=sys.stderr,
+    )
     return 1 if missing else 0
 
 

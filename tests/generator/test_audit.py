@@ -10,11 +10,16 @@ def _manuals(tmp_path, gx5: str, cv7: str = ""):
 
 
 def test_covered_manual_reports_nothing(tmp_path, capsys):
+    # The copy-paste string sits on line 311, the line the project's ping vector cites.
     text = (
         "### 4.1.1 Ping (0x01, 0x01)\n"
-        '<i>Copy-Paste version of the command: "7565 0102 0201 E0C6"</i>\n'
+        + "\n" * 309
+        + '<i>Copy-Paste version of the command: "7565 0102 0201 E0C6"</i>\n'
         "## Scaled Accel (0x80,0x04)\n"
+        + "\n" * 456
+        + '<i>Set To Idle copy-paste, the Ping bytes again (a negative vector cites it): "7565 0102 0201 E0C6"</i>\n'
     )
+    assert text.splitlines()[310].endswith('E0C6"</i>') and text.splitlines()[768].endswith('E0C6"</i>')
     assert audit.main(["--manuals", str(_manuals(tmp_path, text))]) == 0
     assert "0 not covered" in capsys.readouterr().err
 
@@ -35,3 +40,35 @@ def test_missing_heading_and_packet_are_listed(tmp_path, capsys):
 
 def test_missing_manuals_directory_is_a_usage_error(tmp_path):
     assert audit.main(["--manuals", str(tmp_path / "nope")]) == 2
+
+
+def test_example_table_rows_are_packets(tmp_path, capsys):
+    text = (
+        "<i>Command: Ping</i>\t0x75\t0x65\t0x01\t0x02\t0x02\t0x01\tN/A\t0xE0\t0xC6\n"
+        "<i>Command: Reset</i>\t0x75\t0x65\t0x0D\t0x02\t0x02\t0x01\t\t0xE1\t0xC3\n"
+    )
+    assert audit.main(["--manuals", str(_manuals(tmp_path, text))]) == 1
+    out = capsys.readouterr()
+    assert ":1: example table row" not in out.out  # the Ping packet is a vector
+    assert "3dm-gx5-45-dcp.txt:2: example table row not in tests/vectors: 75650d020201e1c3" in out.out
+
+
+def test_table_row_bytes_and_continuation_rows():
+    text = (
+        "<b>Header</b>\tSync1\n"
+        "<i>Reply Field 1: ACK/NACK</i>\t0x75\t0x65\t0x01\t0x0A\t0x04\t0xF1\tEcho cmd: 0x05 Error code: 0x00\t\t\n"
+        "<i>Reply Field 2: BIT</i>\t\t\t\t\t0x06\t0x83\tFlags: 0x00000000\t0x68\t0x7D\n"
+        "Row\t0x75\t0x65\t0x80\t0x0E\t0x0E\t0x04\t0x3E 7A 63 A0 0xBB 8E\t0x92\t0xC0\n"
+    )
+    rows = list(audit.table_rows(text, bytes([0x75, 0x65])))
+    assert [(r[0], r[1], r[2]) for r in rows] == [
+        (2, [2, 3], "7565010a04f10500068300000000687d"),
+        (4, [4], "7565800e0e043e7a63a0bb8e92c0"),
+    ]
+
+
+def test_vector_citing_the_wrong_line_is_reported(tmp_path, capsys):
+    # The project's ping vector cites 3dm-gx5-45-dcp.txt at its real line; here the packet sits elsewhere.
+    text = "\n" * 2000 + 'Copy-Paste version of the command: "7565 0102 0201 E0C6"\n'
+    audit.main(["--manuals", str(_manuals(tmp_path, text))])
+    assert "but its packet is printed at line 2001" in capsys.readouterr().out

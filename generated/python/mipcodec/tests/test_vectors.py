@@ -413,7 +413,7 @@ CASES = [
         "hex": "75650c0804f1110004f11100fab5",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:531",
+        "where": "tests/vectors/mip/base.yaml:533",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}}]}'
         ],
@@ -423,7 +423,7 @@ CASES = [
         "hex": "75650c0404f10100e0ac",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:540",
+        "where": "tests/vectors/mip/base.yaml:542",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}}]}'
         ],
@@ -433,7 +433,7 @@ CASES = [
         "hex": "75650d0404f10200e2b4",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:550",
+        "where": "tests/vectors/mip/base.yaml:552",
         "expect": [
             '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":2,"ack_code":0}}]}'
         ],
@@ -443,7 +443,7 @@ CASES = [
         "hex": "75650c0404f1280007fa",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:558",
+        "where": "tests/vectors/mip/base.yaml:560",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}}]}'
         ],

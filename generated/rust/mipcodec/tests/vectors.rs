@@ -589,7 +589,7 @@ fn case_two_acks_save_formats() {
     );
 }
 
-/// `two_acks_enable_streams` (tests/vectors/mip/base.yaml:531)
+/// `two_acks_enable_streams` (tests/vectors/mip/base.yaml:533)
 #[test]
 fn case_two_acks_enable_streams() {
     check(
@@ -602,7 +602,7 @@ fn case_two_acks_enable_streams() {
     );
 }
 
-/// `ack_poll_data` (tests/vectors/mip/base.yaml:540)
+/// `ack_poll_data` (tests/vectors/mip/base.yaml:542)
 #[test]
 fn case_ack_poll_data() {
     check(
@@ -615,7 +615,7 @@ fn case_ack_poll_data() {
     );
 }
 
-/// `ack_initialize_attitude` (tests/vectors/mip/base.yaml:550)
+/// `ack_initialize_attitude` (tests/vectors/mip/base.yaml:552)
 #[test]
 fn case_ack_initialize_attitude() {
     check(
@@ -628,7 +628,7 @@ fn case_ack_initialize_attitude() {
     );
 }
 
-/// `ack_pps_source` (tests/vectors/mip/base.yaml:558)
+/// `ack_pps_source` (tests/vectors/mip/base.yaml:560)
 #[test]
 fn case_ack_pps_source() {
     check(
