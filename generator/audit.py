@@ -87,7 +87,7 @@ def packet_lines(text: str, sync: bytes) -> dict[str, list[int]]:
     where: dict[str, list[int]] = {}
     for lineno, hx, _ in quoted_packets(text, sync):
         where.setdefault(hx, []).append(lineno)
-    for lineno, rows, hx, _ in table_rows(text, sync):
+    for _, rows, hx, _ in table_rows(text, sync):
         where.setdefault(hx, []).extend(rows)
     return where
 
