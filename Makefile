@@ -51,7 +51,7 @@ lint: $(VENV)/.stamp
 	$(PY) -m generator --lint
 
 audit: $(VENV)/.stamp
-	$(PY) -m generator.audit --manuals $(MANUALS)
+	$(PY) -m generator.audit --manuals $(MANUALS) $(if $(KINDS),--kinds $(KINDS))
 
 clean:
 	rm -rf build

@@ -109,6 +109,11 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="make audit", description=__doc__.splitlines()[0])
     ap.add_argument("--manuals", default=str(ROOT.parent / "shared" / "manuals"))
     ap.add_argument("--verbose", action="store_true", help="also list what is covered")
+    ap.add_argument(
+        "--kinds",
+        default="",
+        help="comma-separated set kinds to audit (command, data); default: every kind",
+    )
     args = ap.parse_args(argv)
     manuals = Path(args.manuals)
     if not manuals.is_dir():
@@ -123,6 +128,23 @@ def main(argv: list[str] | None = None) -> int:
     total_h = total_p = total_r = 0
     for proto in ir["protocols"]:
         sync = bytes(proto["framing"]["sync"])
+        kinds = set(filter(None, args.kinds.split(","))) or set(proto["set_kinds"])
+        unknown = kinds - set(proto["set_kinds"])
+        if unknown:
+            print(
+                f"audit: unknown set kind {', '.join(sorted(unknown))} (expected {', '.join(proto['set_kinds'])})",
+                file=sys.stderr,
+            )
+            return 2
+        set_at = proto["framing"]["set_offset"]
+
+        def in_scope(set_id: int | None, proto=proto, kinds=kinds) -> bool:
+            kind = next((k for k, r in proto["set_kinds"].items() if r["first"] <= (set_id or -1) <= r["last"]), None)
+            return kind in kinds
+
+        def packet_set(hx: str, set_at=set_at) -> int | None:
+            return int(hx[2 * set_at : 2 * set_at + 2], 16) if len(hx) >= 2 * set_at + 2 else None
+
         for dev in proto["devices"]:
             path = manuals / dev["manual"]
             if not path.exists():
@@ -132,7 +154,7 @@ def main(argv: list[str] | None = None) -> int:
             text = path.read_text(encoding="utf-8", errors="replace")
             seen = set()
             for lineno, s, d, line in headings(text):
-                if s == proto.get("shared_data", {}).get("set") and d < 0xD0:
+                if s == proto.get("shared_data", {}).get("set") and d < 0xD0 or not in_scope(s):
                     continue
                 total_h += 1
                 ok = covered_descriptor(proto, s, d)
@@ -141,6 +163,8 @@ def main(argv: list[str] | None = None) -> int:
                     missing += 1
                 seen.add((s, d))
             for lineno, hx, raw in quoted_packets(text, sync):
+                if not in_scope(packet_set(hx)):
+                    continue
                 total_p += 1
                 ok = hx in vector_hex or hx in vector_quoted or hx[: len(hx) // 2 * 2] in vector_hex
                 if not ok:
@@ -149,6 +173,8 @@ def main(argv: list[str] | None = None) -> int:
                 elif args.verbose:
                     print(f"{dev['manual']}:{lineno}: covered: {raw}")
             for lineno, rows, hx, raw in table_rows(text, sync):
+                if not in_scope(packet_set(hx)):
+                    continue
                 total_r += 1
                 ok = hx in vector_hex or hx in vector_quoted or any((dev["manual"], r) in cited for r in rows)
                 if not ok:
@@ -159,6 +185,8 @@ def main(argv: list[str] | None = None) -> int:
             # A vector that quotes a packet printed in this manual must cite the line it is on.
             where = packet_lines(text, sync)
             for c in vectors:
+                if not in_scope(packet_set(c["hex"])):
+                    continue
                 lines = where.get(c["hex"]) or where.get(re.sub(r"\s", "", c.get("quoted") or "").lower())
                 cites = [
                     src["line"] for src in c.get("sources") or [] if src["manual"] == dev["manual"] and src.get("line")

@@ -72,3 +72,15 @@ def test_vector_citing_the_wrong_line_is_reported(tmp_path, capsys):
     text = "\n" * 2000 + 'Copy-Paste version of the command: "7565 0102 0201 E0C6"\n'
     audit.main(["--manuals", str(_manuals(tmp_path, text))])
     assert "but its packet is printed at line 2001" in capsys.readouterr().out
+
+
+def test_kinds_limits_the_audit(tmp_path, capsys):
+    text = "### 4.3.1 Reset Filter (0x0D, 0x01)\n### 5.9 Some Data (0x82, 0x7E)\n"
+    manuals = str(_manuals(tmp_path, text))
+    assert audit.main(["--manuals", manuals, "--kinds", "data"]) == 1
+    out = capsys.readouterr().out
+    assert "(0x82,0x7E)" in out and "(0x0D,0x01)" not in out
+    assert audit.main(["--manuals", manuals, "--kinds", "command"]) == 1
+    out = capsys.readouterr().out
+    assert "(0x0D,0x01)" in out and "(0x82,0x7E)" not in out
+    assert audit.main(["--manuals", manuals, "--kinds", "bogus"]) == 2
