@@ -26,15 +26,15 @@ def test_covered_manual_reports_nothing(tmp_path, capsys):
 
 def test_missing_heading_and_packet_are_listed(tmp_path, capsys):
     text = (
-        "### 4.3.1 Reset Filter (0x0D, 0x01)\n"
+        "### 4.3.1 Not A Command (0x0D, 0x7D)\n"
         "prose mentioning (0x0D, 0x02) is not a heading\n"
-        'Copy-paste: "7565 0D02 0201 E1C3"\n'
+        'Copy-paste: "7565 0D02 027D 5DBB"\n'
     )
     assert audit.main(["--manuals", str(_manuals(tmp_path, text))]) == 1
     out = capsys.readouterr()
-    assert "3dm-gx5-45-dcp.txt:1: heading (0x0D,0x01) not in the spec" in out.out
+    assert "3dm-gx5-45-dcp.txt:1: heading (0x0D,0x7D) not in the spec" in out.out
     assert "(0x0D,0x02)" not in out.out
-    assert "3dm-gx5-45-dcp.txt:3: quoted packet not in tests/vectors: 7565 0D02 0201 E1C3" in out.out
+    assert "3dm-gx5-45-dcp.txt:3: quoted packet not in tests/vectors: 7565 0D02 027D 5DBB" in out.out
     assert "2 not covered" in out.err
 
 
@@ -45,12 +45,12 @@ def test_missing_manuals_directory_is_a_usage_error(tmp_path):
 def test_example_table_rows_are_packets(tmp_path, capsys):
     text = (
         "<i>Command: Ping</i>\t0x75\t0x65\t0x01\t0x02\t0x02\t0x01\tN/A\t0xE0\t0xC6\n"
-        "<i>Command: Reset</i>\t0x75\t0x65\t0x0D\t0x02\t0x02\t0x01\t\t0xE1\t0xC3\n"
+        "<i>Command: Reset</i>\t0x75\t0x65\t0x0D\t0x02\t0x02\t0x7D\t\t0x5D\t0xBB\n"
     )
     assert audit.main(["--manuals", str(_manuals(tmp_path, text))]) == 1
     out = capsys.readouterr()
     assert ":1: example table row" not in out.out  # the Ping packet is a vector
-    assert "3dm-gx5-45-dcp.txt:2: example table row not in tests/vectors: 75650d020201e1c3" in out.out
+    assert "3dm-gx5-45-dcp.txt:2: example table row not in tests/vectors: 75650d02027d5dbb" in out.out
 
 
 def test_table_row_bytes_and_continuation_rows():
@@ -75,12 +75,12 @@ def test_vector_citing_the_wrong_line_is_reported(tmp_path, capsys):
 
 
 def test_kinds_limits_the_audit(tmp_path, capsys):
-    text = "### 4.3.1 Reset Filter (0x0D, 0x01)\n### 5.9 Some Data (0x82, 0x7E)\n"
+    text = "### 4.3.1 Not A Command (0x0D, 0x7D)\n### 5.9 Some Data (0x82, 0x7E)\n"
     manuals = str(_manuals(tmp_path, text))
     assert audit.main(["--manuals", manuals, "--kinds", "data"]) == 1
     out = capsys.readouterr().out
-    assert "(0x82,0x7E)" in out and "(0x0D,0x01)" not in out
+    assert "(0x82,0x7E)" in out and "(0x0D,0x7D)" not in out
     assert audit.main(["--manuals", manuals, "--kinds", "command"]) == 1
     out = capsys.readouterr().out
-    assert "(0x0D,0x01)" in out and "(0x82,0x7E)" not in out
+    assert "(0x0D,0x7D)" in out and "(0x82,0x7E)" not in out
     assert audit.main(["--manuals", manuals, "--kinds", "bogus"]) == 2
