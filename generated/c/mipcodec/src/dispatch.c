@@ -78,45 +78,164 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, "event_action_config", NULL, MIP_DEVICE_ANY, 0x2F},
     {MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, "event_action_config_response", NULL, MIP_DEVICE_ANY,
      0xB9},
+    {MIP_FIELD_FILTER_RESET_FILTER, "reset_filter", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE, "set_initial_attitude", NULL, MIP_DEVICE_ANY, 0x02},
+    {MIP_FIELD_FILTER_SET_INITIAL_HEADING, "set_initial_heading", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_FILTER_RUN_FILTER, "run_filter", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE, "vehicle_dynamics_mode", NULL, MIP_DEVICE_ANY, 0x10},
+    {MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE, "vehicle_dynamics_mode_response", NULL, MIP_DEVICE_ANY,
+     0x80},
+    {MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM, "sensor_to_vehicle_transform", NULL, MIP_DEVICE_ANY, 0x11},
+    {MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE, "sensor_to_vehicle_transform_response", NULL,
+     MIP_DEVICE_ANY, 0x81},
+    {MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET, "sensor_to_vehicle_offset", NULL, MIP_DEVICE_ANY, 0x12},
+    {MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE, "sensor_to_vehicle_offset_response", NULL,
+     MIP_DEVICE_ANY, 0x82},
+    {MIP_FIELD_FILTER_ANTENNA_OFFSET, "antenna_offset", NULL, MIP_DEVICE_ANY, 0x13},
+    {MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE, "antenna_offset_response", NULL, MIP_DEVICE_ANY, 0x83},
+    {MIP_FIELD_FILTER_ESTIMATION_CONTROL, "estimation_control", NULL, MIP_DEVICE_ANY, 0x14},
+    {MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE, "estimation_control_response", NULL, MIP_DEVICE_ANY, 0x84},
+    {MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL, "gnss_source_control", NULL, MIP_DEVICE_ANY, 0x15},
+    {MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE, "gnss_source_control_response", NULL, MIP_DEVICE_ANY,
+     0x86},
+    {MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE, "external_gnss_update", NULL, MIP_DEVICE_ANY, 0x16},
+    {MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE, "external_heading_update", NULL, MIP_DEVICE_ANY, 0x17},
+    {MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL, "heading_update_control", NULL, MIP_DEVICE_ANY, 0x18},
+    {MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE, "heading_update_control_response", NULL,
+     MIP_DEVICE_ANY, 0x87},
+    {MIP_FIELD_FILTER_AUTO_INIT_CONTROL, "auto_init_control", NULL, MIP_DEVICE_ANY, 0x19},
+    {MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE, "auto_init_control_response", NULL, MIP_DEVICE_ANY, 0x88},
+    {MIP_FIELD_FILTER_ACCEL_NOISE, "accel_noise", NULL, MIP_DEVICE_ANY, 0x1A},
+    {MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE, "accel_noise_response", NULL, MIP_DEVICE_ANY, 0x89},
+    {MIP_FIELD_FILTER_GYRO_NOISE, "gyro_noise", NULL, MIP_DEVICE_ANY, 0x1B},
+    {MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE, "gyro_noise_response", NULL, MIP_DEVICE_ANY, 0x8A},
+    {MIP_FIELD_FILTER_ACCEL_BIAS_MODEL, "accel_bias_model", NULL, MIP_DEVICE_ANY, 0x1C},
+    {MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE, "accel_bias_model_response", NULL, MIP_DEVICE_ANY, 0x8B},
+    {MIP_FIELD_FILTER_GYRO_BIAS_MODEL, "gyro_bias_model", NULL, MIP_DEVICE_ANY, 0x1D},
+    {MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE, "gyro_bias_model_response", NULL, MIP_DEVICE_ANY, 0x8C},
+    {MIP_FIELD_FILTER_ZUPT_CONTROL, "zupt_control", NULL, MIP_DEVICE_ANY, 0x1E},
+    {MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, "zupt_control_response", NULL, MIP_DEVICE_ANY, 0x8D},
+    {MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME, "external_heading_update_with_time", NULL,
+     MIP_DEVICE_ANY, 0x1F},
+    {MIP_FIELD_GNSS_RECEIVER_INFO, "receiver_info", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, "receiver_info_response", NULL, MIP_DEVICE_ANY, 0x81},
+    {MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, "signal_configuration", NULL, MIP_DEVICE_ANY, 0x02},
+    {MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, "signal_configuration_response", NULL, MIP_DEVICE_ANY,
+     0x82},
+    {MIP_FIELD_GNSS_SPARTN_CONFIGURATION, "spartn_configuration", NULL, MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, "spartn_configuration_response", NULL, MIP_DEVICE_ANY,
+     0xA0},
+    {MIP_FIELD_AIDING_FRAME_CONFIG, "frame_config", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE, "frame_config_response", NULL, MIP_DEVICE_ANY, 0x81},
+    {MIP_FIELD_AIDING_ECHO_CONTROL, "echo_control", NULL, MIP_DEVICE_ANY, 0x1F},
+    {MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE, "echo_control_response", NULL, MIP_DEVICE_ANY, 0x9F},
+    {MIP_FIELD_AIDING_ECEF_POSITION, "ecef_position", NULL, MIP_DEVICE_ANY, 0x21},
+    {MIP_FIELD_AIDING_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x22},
+    {MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, "height_above_ellipsoid", NULL, MIP_DEVICE_ANY, 0x23},
+    {MIP_FIELD_AIDING_ECEF_VELOCITY, "ecef_velocity", NULL, MIP_DEVICE_ANY, 0x28},
+    {MIP_FIELD_AIDING_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x29},
+    {MIP_FIELD_AIDING_BODY_FRAME_VELOCITY, "body_frame_velocity", NULL, MIP_DEVICE_ANY, 0x2A},
+    {MIP_FIELD_AIDING_TRUE_HEADING, "true_heading", NULL, MIP_DEVICE_ANY, 0x31},
+    {MIP_FIELD_AIDING_MAGNETIC_FIELD, "magnetic_field", NULL, MIP_DEVICE_ANY, 0x32},
+    {MIP_FIELD_AIDING_PRESSURE, "pressure", NULL, MIP_DEVICE_ANY, 0x33},
+    {MIP_FIELD_SYSTEM_COMMUNICATION_MODE, "communication_mode", NULL, MIP_DEVICE_ANY, 0x10},
+    {MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, "communication_mode_response", NULL, MIP_DEVICE_ANY, 0x90},
     {MIP_FIELD_SENSOR_SCALED_ACCEL, "scaled_accel", NULL, MIP_DEVICE_ANY, 0x04},
     {MIP_FIELD_SENSOR_SCALED_GYRO, "scaled_gyro", NULL, MIP_DEVICE_ANY, 0x05},
     {MIP_FIELD_SENSOR_SCALED_MAG, "scaled_mag", NULL, MIP_DEVICE_ANY, 0x06},
 };
 
-static const mip_field_info_t k_fields[33] = {
-    {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                   /* 0 */
-    {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                      /* 1 */
-    {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                        /* 2 */
-    {"get_device_info", 0x03, MIP_FIELD_BASE_GET_DEVICE_INFO, 1},                                /* 3 */
-    {"device_info", 0x81, MIP_FIELD_BASE_DEVICE_INFO, 1},                                        /* 4 */
-    {"get_device_descriptors", 0x04, MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},                  /* 5 */
-    {"device_descriptors", 0x82, MIP_FIELD_BASE_DEVICE_DESCRIPTORS, 1},                          /* 6 */
-    {"built_in_test", 0x05, MIP_FIELD_BASE_BUILT_IN_TEST, 1},                                    /* 7 */
-    {"built_in_test_result", 0x83, MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},               /* 8 */
-    {"resume", 0x06, MIP_FIELD_BASE_RESUME, 1},                                                  /* 9 */
-    {"get_extended_descriptors", 0x07, MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},              /* 10 */
-    {"extended_descriptors", 0x86, MIP_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},                      /* 11 */
-    {"continuous_bit", 0x08, MIP_FIELD_BASE_CONTINUOUS_BIT, 1},                                  /* 12 */
-    {"continuous_bit_result", 0x88, MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},                    /* 13 */
-    {"comm_port_speed", 0x09, MIP_FIELD_BASE_COMM_PORT_SPEED, 1},                                /* 14 */
-    {"comm_port_speed_response", 0x89, MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},              /* 15 */
-    {"gps_time_update", 0x72, MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},                         /* 16 */
-    {"gps_week", 0x84, MIP_FIELD_BASE_GPS_WEEK, 1},                                              /* 17 */
-    {"gps_seconds", 0x85, MIP_FIELD_BASE_GPS_SECONDS, 1},                                        /* 18 */
-    {"device_reset", 0x7E, MIP_FIELD_BASE_DEVICE_RESET, 1},                                      /* 19 */
-    {"event_control", 0x2B, MIP_FIELD_THREEDM_EVENT_CONTROL, 1},                                 /* 20 */
-    {"event_control_response", 0xB5, MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},               /* 21 */
-    {"get_event_trigger_status", 0x2C, MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},           /* 22 */
-    {"event_trigger_status", 0xB6, MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},                   /* 23 */
-    {"get_event_action_status", 0x2D, MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},             /* 24 */
-    {"event_action_status", 0xB7, MIP_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},                     /* 25 */
-    {"event_trigger_config", 0x2E, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},                   /* 26 */
-    {"event_trigger_config_response", 0xB8, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1}, /* 27 */
-    {"event_action_config", 0x2F, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},                     /* 28 */
-    {"event_action_config_response", 0xB9, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},   /* 29 */
-    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                    /* 30 */
-    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                      /* 31 */
-    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                        /* 32 */
+static const mip_field_info_t k_fields[87] = {
+    {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                    /* 0 */
+    {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                       /* 1 */
+    {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                         /* 2 */
+    {"get_device_info", 0x03, MIP_FIELD_BASE_GET_DEVICE_INFO, 1},                                 /* 3 */
+    {"device_info", 0x81, MIP_FIELD_BASE_DEVICE_INFO, 1},                                         /* 4 */
+    {"get_device_descriptors", 0x04, MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},                   /* 5 */
+    {"device_descriptors", 0x82, MIP_FIELD_BASE_DEVICE_DESCRIPTORS, 1},                           /* 6 */
+    {"built_in_test", 0x05, MIP_FIELD_BASE_BUILT_IN_TEST, 1},                                     /* 7 */
+    {"built_in_test_result", 0x83, MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},                /* 8 */
+    {"resume", 0x06, MIP_FIELD_BASE_RESUME, 1},                                                   /* 9 */
+    {"get_extended_descriptors", 0x07, MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},               /* 10 */
+    {"extended_descriptors", 0x86, MIP_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},                       /* 11 */
+    {"continuous_bit", 0x08, MIP_FIELD_BASE_CONTINUOUS_BIT, 1},                                   /* 12 */
+    {"continuous_bit_result", 0x88, MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},                     /* 13 */
+    {"comm_port_speed", 0x09, MIP_FIELD_BASE_COMM_PORT_SPEED, 1},                                 /* 14 */
+    {"comm_port_speed_response", 0x89, MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},               /* 15 */
+    {"gps_time_update", 0x72, MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},                          /* 16 */
+    {"gps_week", 0x84, MIP_FIELD_BASE_GPS_WEEK, 1},                                               /* 17 */
+    {"gps_seconds", 0x85, MIP_FIELD_BASE_GPS_SECONDS, 1},                                         /* 18 */
+    {"device_reset", 0x7E, MIP_FIELD_BASE_DEVICE_RESET, 1},                                       /* 19 */
+    {"event_control", 0x2B, MIP_FIELD_THREEDM_EVENT_CONTROL, 1},                                  /* 20 */
+    {"event_control_response", 0xB5, MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},                /* 21 */
+    {"get_event_trigger_status", 0x2C, MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},            /* 22 */
+    {"event_trigger_status", 0xB6, MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},                    /* 23 */
+    {"get_event_action_status", 0x2D, MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},              /* 24 */
+    {"event_action_status", 0xB7, MIP_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},                      /* 25 */
+    {"event_trigger_config", 0x2E, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},                    /* 26 */
+    {"event_trigger_config_response", 0xB8, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1},  /* 27 */
+    {"event_action_config", 0x2F, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},                      /* 28 */
+    {"event_action_config_response", 0xB9, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},    /* 29 */
+    {"reset_filter", 0x01, MIP_FIELD_FILTER_RESET_FILTER, 1},                                     /* 30 */
+    {"set_initial_attitude", 0x02, MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE, 1},                     /* 31 */
+    {"set_initial_heading", 0x03, MIP_FIELD_FILTER_SET_INITIAL_HEADING, 1},                       /* 32 */
+    {"run_filter", 0x05, MIP_FIELD_FILTER_RUN_FILTER, 1},                                         /* 33 */
+    {"vehicle_dynamics_mode", 0x10, MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE, 1},                   /* 34 */
+    {"vehicle_dynamics_mode_response", 0x80, MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE, 1}, /* 35 */
+    {"sensor_to_vehicle_transform", 0x11, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM, 1},       /* 36 */
+    {"sensor_to_vehicle_transform_response", 0x81, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE,
+     1},                                                                              /* 37 */
+    {"sensor_to_vehicle_offset", 0x12, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET, 1}, /* 38 */
+    {"sensor_to_vehicle_offset_response", 0x82, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE,
+     1},                                                                                            /* 39 */
+    {"antenna_offset", 0x13, MIP_FIELD_FILTER_ANTENNA_OFFSET, 1},                                   /* 40 */
+    {"antenna_offset_response", 0x83, MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE, 1},                 /* 41 */
+    {"estimation_control", 0x14, MIP_FIELD_FILTER_ESTIMATION_CONTROL, 1},                           /* 42 */
+    {"estimation_control_response", 0x84, MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE, 1},         /* 43 */
+    {"gnss_source_control", 0x15, MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL, 1},                         /* 44 */
+    {"gnss_source_control_response", 0x86, MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE, 1},       /* 45 */
+    {"external_gnss_update", 0x16, MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE, 1},                       /* 46 */
+    {"external_heading_update", 0x17, MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE, 1},                 /* 47 */
+    {"heading_update_control", 0x18, MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL, 1},                   /* 48 */
+    {"heading_update_control_response", 0x87, MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE, 1}, /* 49 */
+    {"auto_init_control", 0x19, MIP_FIELD_FILTER_AUTO_INIT_CONTROL, 1},                             /* 50 */
+    {"auto_init_control_response", 0x88, MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE, 1},           /* 51 */
+    {"accel_noise", 0x1A, MIP_FIELD_FILTER_ACCEL_NOISE, 1},                                         /* 52 */
+    {"accel_noise_response", 0x89, MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE, 1},                       /* 53 */
+    {"gyro_noise", 0x1B, MIP_FIELD_FILTER_GYRO_NOISE, 1},                                           /* 54 */
+    {"gyro_noise_response", 0x8A, MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE, 1},                         /* 55 */
+    {"accel_bias_model", 0x1C, MIP_FIELD_FILTER_ACCEL_BIAS_MODEL, 1},                               /* 56 */
+    {"accel_bias_model_response", 0x8B, MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE, 1},             /* 57 */
+    {"gyro_bias_model", 0x1D, MIP_FIELD_FILTER_GYRO_BIAS_MODEL, 1},                                 /* 58 */
+    {"gyro_bias_model_response", 0x8C, MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE, 1},               /* 59 */
+    {"zupt_control", 0x1E, MIP_FIELD_FILTER_ZUPT_CONTROL, 1},                                       /* 60 */
+    {"zupt_control_response", 0x8D, MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, 1},                     /* 61 */
+    {"external_heading_update_with_time", 0x1F, MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME,
+     1},                                                                                      /* 62 */
+    {"receiver_info", 0x01, MIP_FIELD_GNSS_RECEIVER_INFO, 1},                                 /* 63 */
+    {"receiver_info_response", 0x81, MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},               /* 64 */
+    {"signal_configuration", 0x02, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},                   /* 65 */
+    {"signal_configuration_response", 0x82, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1}, /* 66 */
+    {"spartn_configuration", 0x20, MIP_FIELD_GNSS_SPARTN_CONFIGURATION, 1},                   /* 67 */
+    {"spartn_configuration_response", 0xA0, MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1}, /* 68 */
+    {"frame_config", 0x01, MIP_FIELD_AIDING_FRAME_CONFIG, 1},                                 /* 69 */
+    {"frame_config_response", 0x81, MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},               /* 70 */
+    {"echo_control", 0x1F, MIP_FIELD_AIDING_ECHO_CONTROL, 1},                                 /* 71 */
+    {"echo_control_response", 0x9F, MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},               /* 72 */
+    {"ecef_position", 0x21, MIP_FIELD_AIDING_ECEF_POSITION, 1},                               /* 73 */
+    {"llh_position", 0x22, MIP_FIELD_AIDING_LLH_POSITION, 1},                                 /* 74 */
+    {"height_above_ellipsoid", 0x23, MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},             /* 75 */
+    {"ecef_velocity", 0x28, MIP_FIELD_AIDING_ECEF_VELOCITY, 1},                               /* 76 */
+    {"ned_velocity", 0x29, MIP_FIELD_AIDING_NED_VELOCITY, 1},                                 /* 77 */
+    {"body_frame_velocity", 0x2A, MIP_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},                   /* 78 */
+    {"true_heading", 0x31, MIP_FIELD_AIDING_TRUE_HEADING, 1},                                 /* 79 */
+    {"magnetic_field", 0x32, MIP_FIELD_AIDING_MAGNETIC_FIELD, 1},                             /* 80 */
+    {"pressure", 0x33, MIP_FIELD_AIDING_PRESSURE, 1},                                         /* 81 */
+    {"communication_mode", 0x10, MIP_FIELD_SYSTEM_COMMUNICATION_MODE, 1},                     /* 82 */
+    {"communication_mode_response", 0x90, MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},   /* 83 */
+    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 84 */
+    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 85 */
+    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 86 */
 };
 
 const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
@@ -198,14 +317,142 @@ static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *se
         default:
             return NULL;
         }
+    case 0x0D: /* filter */
+        switch (descriptor) {
+        case 0x01:
+            return &k_fields[30]; /* reset_filter */
+        case 0x02:
+            return &k_fields[31]; /* set_initial_attitude */
+        case 0x03:
+            return &k_fields[32]; /* set_initial_heading */
+        case 0x05:
+            return &k_fields[33]; /* run_filter */
+        case 0x10:
+            return &k_fields[34]; /* vehicle_dynamics_mode */
+        case 0x80:
+            return &k_fields[35]; /* vehicle_dynamics_mode_response */
+        case 0x11:
+            return &k_fields[36]; /* sensor_to_vehicle_transform */
+        case 0x81:
+            return &k_fields[37]; /* sensor_to_vehicle_transform_response */
+        case 0x12:
+            return &k_fields[38]; /* sensor_to_vehicle_offset */
+        case 0x82:
+            return &k_fields[39]; /* sensor_to_vehicle_offset_response */
+        case 0x13:
+            return &k_fields[40]; /* antenna_offset */
+        case 0x83:
+            return &k_fields[41]; /* antenna_offset_response */
+        case 0x14:
+            return &k_fields[42]; /* estimation_control */
+        case 0x84:
+            return &k_fields[43]; /* estimation_control_response */
+        case 0x15:
+            return &k_fields[44]; /* gnss_source_control */
+        case 0x86:
+            return &k_fields[45]; /* gnss_source_control_response */
+        case 0x16:
+            return &k_fields[46]; /* external_gnss_update */
+        case 0x17:
+            return &k_fields[47]; /* external_heading_update */
+        case 0x18:
+            return &k_fields[48]; /* heading_update_control */
+        case 0x87:
+            return &k_fields[49]; /* heading_update_control_response */
+        case 0x19:
+            return &k_fields[50]; /* auto_init_control */
+        case 0x88:
+            return &k_fields[51]; /* auto_init_control_response */
+        case 0x1A:
+            return &k_fields[52]; /* accel_noise */
+        case 0x89:
+            return &k_fields[53]; /* accel_noise_response */
+        case 0x1B:
+            return &k_fields[54]; /* gyro_noise */
+        case 0x8A:
+            return &k_fields[55]; /* gyro_noise_response */
+        case 0x1C:
+            return &k_fields[56]; /* accel_bias_model */
+        case 0x8B:
+            return &k_fields[57]; /* accel_bias_model_response */
+        case 0x1D:
+            return &k_fields[58]; /* gyro_bias_model */
+        case 0x8C:
+            return &k_fields[59]; /* gyro_bias_model_response */
+        case 0x1E:
+            return &k_fields[60]; /* zupt_control */
+        case 0x8D:
+            return &k_fields[61]; /* zupt_control_response */
+        case 0x1F:
+            return &k_fields[62]; /* external_heading_update_with_time */
+        default:
+            return NULL;
+        }
+    case 0x0E: /* gnss */
+        switch (descriptor) {
+        case 0x01:
+            return &k_fields[63]; /* receiver_info */
+        case 0x81:
+            return &k_fields[64]; /* receiver_info_response */
+        case 0x02:
+            return &k_fields[65]; /* signal_configuration */
+        case 0x82:
+            return &k_fields[66]; /* signal_configuration_response */
+        case 0x20:
+            return &k_fields[67]; /* spartn_configuration */
+        case 0xA0:
+            return &k_fields[68]; /* spartn_configuration_response */
+        default:
+            return NULL;
+        }
+    case 0x13: /* aiding */
+        switch (descriptor) {
+        case 0x01:
+            return &k_fields[69]; /* frame_config */
+        case 0x81:
+            return &k_fields[70]; /* frame_config_response */
+        case 0x1F:
+            return &k_fields[71]; /* echo_control */
+        case 0x9F:
+            return &k_fields[72]; /* echo_control_response */
+        case 0x21:
+            return &k_fields[73]; /* ecef_position */
+        case 0x22:
+            return &k_fields[74]; /* llh_position */
+        case 0x23:
+            return &k_fields[75]; /* height_above_ellipsoid */
+        case 0x28:
+            return &k_fields[76]; /* ecef_velocity */
+        case 0x29:
+            return &k_fields[77]; /* ned_velocity */
+        case 0x2A:
+            return &k_fields[78]; /* body_frame_velocity */
+        case 0x31:
+            return &k_fields[79]; /* true_heading */
+        case 0x32:
+            return &k_fields[80]; /* magnetic_field */
+        case 0x33:
+            return &k_fields[81]; /* pressure */
+        default:
+            return NULL;
+        }
+    case 0x7F: /* system */
+        switch (descriptor) {
+        case 0x10:
+            return &k_fields[82]; /* communication_mode */
+        case 0x90:
+            return &k_fields[83]; /* communication_mode_response */
+        default:
+            return NULL;
+        }
     case 0x80: /* sensor */
         switch (descriptor) {
         case 0x04:
-            return &k_fields[30]; /* scaled_accel */
+            return &k_fields[84]; /* scaled_accel */
         case 0x05:
-            return &k_fields[31]; /* scaled_gyro */
+            return &k_fields[85]; /* scaled_gyro */
         case 0x06:
-            return &k_fields[32]; /* scaled_mag */
+            return &k_fields[86]; /* scaled_mag */
         default:
             return NULL;
         }
@@ -319,6 +566,133 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         return mip_threedm_event_action_config_response_decode(
             data, len, &out->u.threedm_event_action_config_response, err);
+    case MIP_FIELD_FILTER_RESET_FILTER:
+        return mip_filter_reset_filter_decode(data, len, &out->u.filter_reset_filter, err);
+    case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:
+        return mip_filter_set_initial_attitude_decode(data, len, &out->u.filter_set_initial_attitude, err);
+    case MIP_FIELD_FILTER_SET_INITIAL_HEADING:
+        return mip_filter_set_initial_heading_decode(data, len, &out->u.filter_set_initial_heading, err);
+    case MIP_FIELD_FILTER_RUN_FILTER:
+        return mip_filter_run_filter_decode(data, len, &out->u.filter_run_filter, err);
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE:
+        return mip_filter_vehicle_dynamics_mode_decode(data, len, &out->u.filter_vehicle_dynamics_mode, err);
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE:
+        return mip_filter_vehicle_dynamics_mode_response_decode(
+            data, len, &out->u.filter_vehicle_dynamics_mode_response, err);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM:
+        return mip_filter_sensor_to_vehicle_transform_decode(data, len,
+                                                             &out->u.filter_sensor_to_vehicle_transform, err);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE:
+        return mip_filter_sensor_to_vehicle_transform_response_decode(
+            data, len, &out->u.filter_sensor_to_vehicle_transform_response, err);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET:
+        return mip_filter_sensor_to_vehicle_offset_decode(data, len, &out->u.filter_sensor_to_vehicle_offset,
+                                                          err);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE:
+        return mip_filter_sensor_to_vehicle_offset_response_decode(
+            data, len, &out->u.filter_sensor_to_vehicle_offset_response, err);
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET:
+        return mip_filter_antenna_offset_decode(data, len, &out->u.filter_antenna_offset, err);
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE:
+        return mip_filter_antenna_offset_response_decode(data, len, &out->u.filter_antenna_offset_response,
+                                                         err);
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL:
+        return mip_filter_estimation_control_decode(data, len, &out->u.filter_estimation_control, err);
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE:
+        return mip_filter_estimation_control_response_decode(data, len,
+                                                             &out->u.filter_estimation_control_response, err);
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL:
+        return mip_filter_gnss_source_control_decode(data, len, &out->u.filter_gnss_source_control, err);
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE:
+        return mip_filter_gnss_source_control_response_decode(
+            data, len, &out->u.filter_gnss_source_control_response, err);
+    case MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE:
+        return mip_filter_external_gnss_update_decode(data, len, &out->u.filter_external_gnss_update, err);
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE:
+        return mip_filter_external_heading_update_decode(data, len, &out->u.filter_external_heading_update,
+                                                         err);
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL:
+        return mip_filter_heading_update_control_decode(data, len, &out->u.filter_heading_update_control,
+                                                        err);
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE:
+        return mip_filter_heading_update_control_response_decode(
+            data, len, &out->u.filter_heading_update_control_response, err);
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL:
+        return mip_filter_auto_init_control_decode(data, len, &out->u.filter_auto_init_control, err);
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE:
+        return mip_filter_auto_init_control_response_decode(data, len,
+                                                            &out->u.filter_auto_init_control_response, err);
+    case MIP_FIELD_FILTER_ACCEL_NOISE:
+        return mip_filter_accel_noise_decode(data, len, &out->u.filter_accel_noise, err);
+    case MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE:
+        return mip_filter_accel_noise_response_decode(data, len, &out->u.filter_accel_noise_response, err);
+    case MIP_FIELD_FILTER_GYRO_NOISE:
+        return mip_filter_gyro_noise_decode(data, len, &out->u.filter_gyro_noise, err);
+    case MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE:
+        return mip_filter_gyro_noise_response_decode(data, len, &out->u.filter_gyro_noise_response, err);
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL:
+        return mip_filter_accel_bias_model_decode(data, len, &out->u.filter_accel_bias_model, err);
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE:
+        return mip_filter_accel_bias_model_response_decode(data, len,
+                                                           &out->u.filter_accel_bias_model_response, err);
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL:
+        return mip_filter_gyro_bias_model_decode(data, len, &out->u.filter_gyro_bias_model, err);
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE:
+        return mip_filter_gyro_bias_model_response_decode(data, len, &out->u.filter_gyro_bias_model_response,
+                                                          err);
+    case MIP_FIELD_FILTER_ZUPT_CONTROL:
+        return mip_filter_zupt_control_decode(data, len, &out->u.filter_zupt_control, err);
+    case MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE:
+        return mip_filter_zupt_control_response_decode(data, len, &out->u.filter_zupt_control_response, err);
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
+        return mip_filter_external_heading_update_with_time_decode(
+            data, len, &out->u.filter_external_heading_update_with_time, err);
+    case MIP_FIELD_GNSS_RECEIVER_INFO:
+        return mip_gnss_receiver_info_decode(data, len, &out->u.gnss_receiver_info, err);
+    case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:
+        return mip_gnss_receiver_info_response_decode(data, len, &out->u.gnss_receiver_info_response, err);
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION:
+        return mip_gnss_signal_configuration_decode(data, len, &out->u.gnss_signal_configuration, err);
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE:
+        return mip_gnss_signal_configuration_response_decode(data, len,
+                                                             &out->u.gnss_signal_configuration_response, err);
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION:
+        return mip_gnss_spartn_configuration_decode(data, len, &out->u.gnss_spartn_configuration, err);
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE:
+        return mip_gnss_spartn_configuration_response_decode(data, len,
+                                                             &out->u.gnss_spartn_configuration_response, err);
+    case MIP_FIELD_AIDING_FRAME_CONFIG:
+        return mip_aiding_frame_config_decode(data, len, &out->u.aiding_frame_config, err);
+    case MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE:
+        return mip_aiding_frame_config_response_decode(data, len, &out->u.aiding_frame_config_response, err);
+    case MIP_FIELD_AIDING_ECHO_CONTROL:
+        return mip_aiding_echo_control_decode(data, len, &out->u.aiding_echo_control, err);
+    case MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE:
+        return mip_aiding_echo_control_response_decode(data, len, &out->u.aiding_echo_control_response, err);
+    case MIP_FIELD_AIDING_ECEF_POSITION:
+        return mip_aiding_ecef_position_decode(data, len, &out->u.aiding_ecef_position, err);
+    case MIP_FIELD_AIDING_LLH_POSITION:
+        return mip_aiding_llh_position_decode(data, len, &out->u.aiding_llh_position, err);
+    case MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID:
+        return mip_aiding_height_above_ellipsoid_decode(data, len, &out->u.aiding_height_above_ellipsoid,
+                                                        err);
+    case MIP_FIELD_AIDING_ECEF_VELOCITY:
+        return mip_aiding_ecef_velocity_decode(data, len, &out->u.aiding_ecef_velocity, err);
+    case MIP_FIELD_AIDING_NED_VELOCITY:
+        return mip_aiding_ned_velocity_decode(data, len, &out->u.aiding_ned_velocity, err);
+    case MIP_FIELD_AIDING_BODY_FRAME_VELOCITY:
+        return mip_aiding_body_frame_velocity_decode(data, len, &out->u.aiding_body_frame_velocity, err);
+    case MIP_FIELD_AIDING_TRUE_HEADING:
+        return mip_aiding_true_heading_decode(data, len, &out->u.aiding_true_heading, err);
+    case MIP_FIELD_AIDING_MAGNETIC_FIELD:
+        return mip_aiding_magnetic_field_decode(data, len, &out->u.aiding_magnetic_field, err);
+    case MIP_FIELD_AIDING_PRESSURE:
+        return mip_aiding_pressure_decode(data, len, &out->u.aiding_pressure, err);
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE:
+        return mip_system_communication_mode_decode(data, len, &out->u.system_communication_mode, err);
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE:
+        return mip_system_communication_mode_response_decode(data, len,
+                                                             &out->u.system_communication_mode_response, err);
     case MIP_FIELD_SENSOR_SCALED_ACCEL:
         return mip_sensor_scaled_accel_decode(data, len, &out->u.sensor_scaled_accel, err);
     case MIP_FIELD_SENSOR_SCALED_GYRO:
@@ -452,6 +826,141 @@ mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         return mip_threedm_event_action_config_response_encode(&value->u.threedm_event_action_config_response,
                                                                buf, cap, len_out);
+    case MIP_FIELD_FILTER_RESET_FILTER:
+        return mip_filter_reset_filter_encode(&value->u.filter_reset_filter, buf, cap, len_out);
+    case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:
+        return mip_filter_set_initial_attitude_encode(&value->u.filter_set_initial_attitude, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_FILTER_SET_INITIAL_HEADING:
+        return mip_filter_set_initial_heading_encode(&value->u.filter_set_initial_heading, buf, cap, len_out);
+    case MIP_FIELD_FILTER_RUN_FILTER:
+        return mip_filter_run_filter_encode(&value->u.filter_run_filter, buf, cap, len_out);
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE:
+        return mip_filter_vehicle_dynamics_mode_encode(&value->u.filter_vehicle_dynamics_mode, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE:
+        return mip_filter_vehicle_dynamics_mode_response_encode(
+            &value->u.filter_vehicle_dynamics_mode_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM:
+        return mip_filter_sensor_to_vehicle_transform_encode(&value->u.filter_sensor_to_vehicle_transform,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE:
+        return mip_filter_sensor_to_vehicle_transform_response_encode(
+            &value->u.filter_sensor_to_vehicle_transform_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET:
+        return mip_filter_sensor_to_vehicle_offset_encode(&value->u.filter_sensor_to_vehicle_offset, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE:
+        return mip_filter_sensor_to_vehicle_offset_response_encode(
+            &value->u.filter_sensor_to_vehicle_offset_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET:
+        return mip_filter_antenna_offset_encode(&value->u.filter_antenna_offset, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE:
+        return mip_filter_antenna_offset_response_encode(&value->u.filter_antenna_offset_response, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL:
+        return mip_filter_estimation_control_encode(&value->u.filter_estimation_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE:
+        return mip_filter_estimation_control_response_encode(&value->u.filter_estimation_control_response,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL:
+        return mip_filter_gnss_source_control_encode(&value->u.filter_gnss_source_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE:
+        return mip_filter_gnss_source_control_response_encode(&value->u.filter_gnss_source_control_response,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE:
+        return mip_filter_external_gnss_update_encode(&value->u.filter_external_gnss_update, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE:
+        return mip_filter_external_heading_update_encode(&value->u.filter_external_heading_update, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL:
+        return mip_filter_heading_update_control_encode(&value->u.filter_heading_update_control, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE:
+        return mip_filter_heading_update_control_response_encode(
+            &value->u.filter_heading_update_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL:
+        return mip_filter_auto_init_control_encode(&value->u.filter_auto_init_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE:
+        return mip_filter_auto_init_control_response_encode(&value->u.filter_auto_init_control_response, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_FILTER_ACCEL_NOISE:
+        return mip_filter_accel_noise_encode(&value->u.filter_accel_noise, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE:
+        return mip_filter_accel_noise_response_encode(&value->u.filter_accel_noise_response, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_FILTER_GYRO_NOISE:
+        return mip_filter_gyro_noise_encode(&value->u.filter_gyro_noise, buf, cap, len_out);
+    case MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE:
+        return mip_filter_gyro_noise_response_encode(&value->u.filter_gyro_noise_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL:
+        return mip_filter_accel_bias_model_encode(&value->u.filter_accel_bias_model, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE:
+        return mip_filter_accel_bias_model_response_encode(&value->u.filter_accel_bias_model_response, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL:
+        return mip_filter_gyro_bias_model_encode(&value->u.filter_gyro_bias_model, buf, cap, len_out);
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE:
+        return mip_filter_gyro_bias_model_response_encode(&value->u.filter_gyro_bias_model_response, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_FILTER_ZUPT_CONTROL:
+        return mip_filter_zupt_control_encode(&value->u.filter_zupt_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE:
+        return mip_filter_zupt_control_response_encode(&value->u.filter_zupt_control_response, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
+        return mip_filter_external_heading_update_with_time_encode(
+            &value->u.filter_external_heading_update_with_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_INFO:
+        return mip_gnss_receiver_info_encode(&value->u.gnss_receiver_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:
+        return mip_gnss_receiver_info_response_encode(&value->u.gnss_receiver_info_response, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION:
+        return mip_gnss_signal_configuration_encode(&value->u.gnss_signal_configuration, buf, cap, len_out);
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE:
+        return mip_gnss_signal_configuration_response_encode(&value->u.gnss_signal_configuration_response,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION:
+        return mip_gnss_spartn_configuration_encode(&value->u.gnss_spartn_configuration, buf, cap, len_out);
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE:
+        return mip_gnss_spartn_configuration_response_encode(&value->u.gnss_spartn_configuration_response,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_AIDING_FRAME_CONFIG:
+        return mip_aiding_frame_config_encode(&value->u.aiding_frame_config, buf, cap, len_out);
+    case MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE:
+        return mip_aiding_frame_config_response_encode(&value->u.aiding_frame_config_response, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_AIDING_ECHO_CONTROL:
+        return mip_aiding_echo_control_encode(&value->u.aiding_echo_control, buf, cap, len_out);
+    case MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE:
+        return mip_aiding_echo_control_response_encode(&value->u.aiding_echo_control_response, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_AIDING_ECEF_POSITION:
+        return mip_aiding_ecef_position_encode(&value->u.aiding_ecef_position, buf, cap, len_out);
+    case MIP_FIELD_AIDING_LLH_POSITION:
+        return mip_aiding_llh_position_encode(&value->u.aiding_llh_position, buf, cap, len_out);
+    case MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID:
+        return mip_aiding_height_above_ellipsoid_encode(&value->u.aiding_height_above_ellipsoid, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_AIDING_ECEF_VELOCITY:
+        return mip_aiding_ecef_velocity_encode(&value->u.aiding_ecef_velocity, buf, cap, len_out);
+    case MIP_FIELD_AIDING_NED_VELOCITY:
+        return mip_aiding_ned_velocity_encode(&value->u.aiding_ned_velocity, buf, cap, len_out);
+    case MIP_FIELD_AIDING_BODY_FRAME_VELOCITY:
+        return mip_aiding_body_frame_velocity_encode(&value->u.aiding_body_frame_velocity, buf, cap, len_out);
+    case MIP_FIELD_AIDING_TRUE_HEADING:
+        return mip_aiding_true_heading_encode(&value->u.aiding_true_heading, buf, cap, len_out);
+    case MIP_FIELD_AIDING_MAGNETIC_FIELD:
+        return mip_aiding_magnetic_field_encode(&value->u.aiding_magnetic_field, buf, cap, len_out);
+    case MIP_FIELD_AIDING_PRESSURE:
+        return mip_aiding_pressure_encode(&value->u.aiding_pressure, buf, cap, len_out);
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE:
+        return mip_system_communication_mode_encode(&value->u.system_communication_mode, buf, cap, len_out);
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE:
+        return mip_system_communication_mode_response_encode(&value->u.system_communication_mode_response,
+                                                             buf, cap, len_out);
     case MIP_FIELD_SENSOR_SCALED_ACCEL:
         return mip_sensor_scaled_accel_encode(&value->u.sensor_scaled_accel, buf, cap, len_out);
     case MIP_FIELD_SENSOR_SCALED_GYRO:
@@ -563,6 +1072,172 @@ void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         mip_threedm_event_action_config_response_to_json(w, &value->u.threedm_event_action_config_response);
         return;
+    case MIP_FIELD_FILTER_RESET_FILTER:
+        mip_filter_reset_filter_to_json(w, &value->u.filter_reset_filter);
+        return;
+    case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:
+        mip_filter_set_initial_attitude_to_json(w, &value->u.filter_set_initial_attitude);
+        return;
+    case MIP_FIELD_FILTER_SET_INITIAL_HEADING:
+        mip_filter_set_initial_heading_to_json(w, &value->u.filter_set_initial_heading);
+        return;
+    case MIP_FIELD_FILTER_RUN_FILTER:
+        mip_filter_run_filter_to_json(w, &value->u.filter_run_filter);
+        return;
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE:
+        mip_filter_vehicle_dynamics_mode_to_json(w, &value->u.filter_vehicle_dynamics_mode);
+        return;
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE:
+        mip_filter_vehicle_dynamics_mode_response_to_json(w, &value->u.filter_vehicle_dynamics_mode_response);
+        return;
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM:
+        mip_filter_sensor_to_vehicle_transform_to_json(w, &value->u.filter_sensor_to_vehicle_transform);
+        return;
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE:
+        mip_filter_sensor_to_vehicle_transform_response_to_json(
+            w, &value->u.filter_sensor_to_vehicle_transform_response);
+        return;
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET:
+        mip_filter_sensor_to_vehicle_offset_to_json(w, &value->u.filter_sensor_to_vehicle_offset);
+        return;
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE:
+        mip_filter_sensor_to_vehicle_offset_response_to_json(
+            w, &value->u.filter_sensor_to_vehicle_offset_response);
+        return;
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET:
+        mip_filter_antenna_offset_to_json(w, &value->u.filter_antenna_offset);
+        return;
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE:
+        mip_filter_antenna_offset_response_to_json(w, &value->u.filter_antenna_offset_response);
+        return;
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL:
+        mip_filter_estimation_control_to_json(w, &value->u.filter_estimation_control);
+        return;
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE:
+        mip_filter_estimation_control_response_to_json(w, &value->u.filter_estimation_control_response);
+        return;
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL:
+        mip_filter_gnss_source_control_to_json(w, &value->u.filter_gnss_source_control);
+        return;
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE:
+        mip_filter_gnss_source_control_response_to_json(w, &value->u.filter_gnss_source_control_response);
+        return;
+    case MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE:
+        mip_filter_external_gnss_update_to_json(w, &value->u.filter_external_gnss_update);
+        return;
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE:
+        mip_filter_external_heading_update_to_json(w, &value->u.filter_external_heading_update);
+        return;
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL:
+        mip_filter_heading_update_control_to_json(w, &value->u.filter_heading_update_control);
+        return;
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE:
+        mip_filter_heading_update_control_response_to_json(w,
+                                                           &value->u.filter_heading_update_control_response);
+        return;
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL:
+        mip_filter_auto_init_control_to_json(w, &value->u.filter_auto_init_control);
+        return;
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE:
+        mip_filter_auto_init_control_response_to_json(w, &value->u.filter_auto_init_control_response);
+        return;
+    case MIP_FIELD_FILTER_ACCEL_NOISE:
+        mip_filter_accel_noise_to_json(w, &value->u.filter_accel_noise);
+        return;
+    case MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE:
+        mip_filter_accel_noise_response_to_json(w, &value->u.filter_accel_noise_response);
+        return;
+    case MIP_FIELD_FILTER_GYRO_NOISE:
+        mip_filter_gyro_noise_to_json(w, &value->u.filter_gyro_noise);
+        return;
+    case MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE:
+        mip_filter_gyro_noise_response_to_json(w, &value->u.filter_gyro_noise_response);
+        return;
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL:
+        mip_filter_accel_bias_model_to_json(w, &value->u.filter_accel_bias_model);
+        return;
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE:
+        mip_filter_accel_bias_model_response_to_json(w, &value->u.filter_accel_bias_model_response);
+        return;
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL:
+        mip_filter_gyro_bias_model_to_json(w, &value->u.filter_gyro_bias_model);
+        return;
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE:
+        mip_filter_gyro_bias_model_response_to_json(w, &value->u.filter_gyro_bias_model_response);
+        return;
+    case MIP_FIELD_FILTER_ZUPT_CONTROL:
+        mip_filter_zupt_control_to_json(w, &value->u.filter_zupt_control);
+        return;
+    case MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE:
+        mip_filter_zupt_control_response_to_json(w, &value->u.filter_zupt_control_response);
+        return;
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
+        mip_filter_external_heading_update_with_time_to_json(
+            w, &value->u.filter_external_heading_update_with_time);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_INFO:
+        mip_gnss_receiver_info_to_json(w, &value->u.gnss_receiver_info);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:
+        mip_gnss_receiver_info_response_to_json(w, &value->u.gnss_receiver_info_response);
+        return;
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION:
+        mip_gnss_signal_configuration_to_json(w, &value->u.gnss_signal_configuration);
+        return;
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE:
+        mip_gnss_signal_configuration_response_to_json(w, &value->u.gnss_signal_configuration_response);
+        return;
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION:
+        mip_gnss_spartn_configuration_to_json(w, &value->u.gnss_spartn_configuration);
+        return;
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE:
+        mip_gnss_spartn_configuration_response_to_json(w, &value->u.gnss_spartn_configuration_response);
+        return;
+    case MIP_FIELD_AIDING_FRAME_CONFIG:
+        mip_aiding_frame_config_to_json(w, &value->u.aiding_frame_config);
+        return;
+    case MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE:
+        mip_aiding_frame_config_response_to_json(w, &value->u.aiding_frame_config_response);
+        return;
+    case MIP_FIELD_AIDING_ECHO_CONTROL:
+        mip_aiding_echo_control_to_json(w, &value->u.aiding_echo_control);
+        return;
+    case MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE:
+        mip_aiding_echo_control_response_to_json(w, &value->u.aiding_echo_control_response);
+        return;
+    case MIP_FIELD_AIDING_ECEF_POSITION:
+        mip_aiding_ecef_position_to_json(w, &value->u.aiding_ecef_position);
+        return;
+    case MIP_FIELD_AIDING_LLH_POSITION:
+        mip_aiding_llh_position_to_json(w, &value->u.aiding_llh_position);
+        return;
+    case MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID:
+        mip_aiding_height_above_ellipsoid_to_json(w, &value->u.aiding_height_above_ellipsoid);
+        return;
+    case MIP_FIELD_AIDING_ECEF_VELOCITY:
+        mip_aiding_ecef_velocity_to_json(w, &value->u.aiding_ecef_velocity);
+        return;
+    case MIP_FIELD_AIDING_NED_VELOCITY:
+        mip_aiding_ned_velocity_to_json(w, &value->u.aiding_ned_velocity);
+        return;
+    case MIP_FIELD_AIDING_BODY_FRAME_VELOCITY:
+        mip_aiding_body_frame_velocity_to_json(w, &value->u.aiding_body_frame_velocity);
+        return;
+    case MIP_FIELD_AIDING_TRUE_HEADING:
+        mip_aiding_true_heading_to_json(w, &value->u.aiding_true_heading);
+        return;
+    case MIP_FIELD_AIDING_MAGNETIC_FIELD:
+        mip_aiding_magnetic_field_to_json(w, &value->u.aiding_magnetic_field);
+        return;
+    case MIP_FIELD_AIDING_PRESSURE:
+        mip_aiding_pressure_to_json(w, &value->u.aiding_pressure);
+        return;
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE:
+        mip_system_communication_mode_to_json(w, &value->u.system_communication_mode);
+        return;
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE:
+        mip_system_communication_mode_response_to_json(w, &value->u.system_communication_mode_response);
+        return;
     case MIP_FIELD_SENSOR_SCALED_ACCEL:
         mip_sensor_scaled_accel_to_json(w, &value->u.sensor_scaled_accel);
         return;
@@ -654,6 +1329,131 @@ int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_v
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         return mip_threedm_event_action_config_response_from_json(
             jr, pos, &value->u.threedm_event_action_config_response);
+    case MIP_FIELD_FILTER_RESET_FILTER:
+        return mip_filter_reset_filter_from_json(jr, pos, &value->u.filter_reset_filter);
+    case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:
+        return mip_filter_set_initial_attitude_from_json(jr, pos, &value->u.filter_set_initial_attitude);
+    case MIP_FIELD_FILTER_SET_INITIAL_HEADING:
+        return mip_filter_set_initial_heading_from_json(jr, pos, &value->u.filter_set_initial_heading);
+    case MIP_FIELD_FILTER_RUN_FILTER:
+        return mip_filter_run_filter_from_json(jr, pos, &value->u.filter_run_filter);
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE:
+        return mip_filter_vehicle_dynamics_mode_from_json(jr, pos, &value->u.filter_vehicle_dynamics_mode);
+    case MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE:
+        return mip_filter_vehicle_dynamics_mode_response_from_json(
+            jr, pos, &value->u.filter_vehicle_dynamics_mode_response);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM:
+        return mip_filter_sensor_to_vehicle_transform_from_json(jr, pos,
+                                                                &value->u.filter_sensor_to_vehicle_transform);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE:
+        return mip_filter_sensor_to_vehicle_transform_response_from_json(
+            jr, pos, &value->u.filter_sensor_to_vehicle_transform_response);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET:
+        return mip_filter_sensor_to_vehicle_offset_from_json(jr, pos,
+                                                             &value->u.filter_sensor_to_vehicle_offset);
+    case MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE:
+        return mip_filter_sensor_to_vehicle_offset_response_from_json(
+            jr, pos, &value->u.filter_sensor_to_vehicle_offset_response);
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET:
+        return mip_filter_antenna_offset_from_json(jr, pos, &value->u.filter_antenna_offset);
+    case MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE:
+        return mip_filter_antenna_offset_response_from_json(jr, pos,
+                                                            &value->u.filter_antenna_offset_response);
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL:
+        return mip_filter_estimation_control_from_json(jr, pos, &value->u.filter_estimation_control);
+    case MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE:
+        return mip_filter_estimation_control_response_from_json(jr, pos,
+                                                                &value->u.filter_estimation_control_response);
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL:
+        return mip_filter_gnss_source_control_from_json(jr, pos, &value->u.filter_gnss_source_control);
+    case MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE:
+        return mip_filter_gnss_source_control_response_from_json(
+            jr, pos, &value->u.filter_gnss_source_control_response);
+    case MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE:
+        return mip_filter_external_gnss_update_from_json(jr, pos, &value->u.filter_external_gnss_update);
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE:
+        return mip_filter_external_heading_update_from_json(jr, pos,
+                                                            &value->u.filter_external_heading_update);
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL:
+        return mip_filter_heading_update_control_from_json(jr, pos, &value->u.filter_heading_update_control);
+    case MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE:
+        return mip_filter_heading_update_control_response_from_json(
+            jr, pos, &value->u.filter_heading_update_control_response);
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL:
+        return mip_filter_auto_init_control_from_json(jr, pos, &value->u.filter_auto_init_control);
+    case MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE:
+        return mip_filter_auto_init_control_response_from_json(jr, pos,
+                                                               &value->u.filter_auto_init_control_response);
+    case MIP_FIELD_FILTER_ACCEL_NOISE:
+        return mip_filter_accel_noise_from_json(jr, pos, &value->u.filter_accel_noise);
+    case MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE:
+        return mip_filter_accel_noise_response_from_json(jr, pos, &value->u.filter_accel_noise_response);
+    case MIP_FIELD_FILTER_GYRO_NOISE:
+        return mip_filter_gyro_noise_from_json(jr, pos, &value->u.filter_gyro_noise);
+    case MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE:
+        return mip_filter_gyro_noise_response_from_json(jr, pos, &value->u.filter_gyro_noise_response);
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL:
+        return mip_filter_accel_bias_model_from_json(jr, pos, &value->u.filter_accel_bias_model);
+    case MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE:
+        return mip_filter_accel_bias_model_response_from_json(jr, pos,
+                                                              &value->u.filter_accel_bias_model_response);
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL:
+        return mip_filter_gyro_bias_model_from_json(jr, pos, &value->u.filter_gyro_bias_model);
+    case MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE:
+        return mip_filter_gyro_bias_model_response_from_json(jr, pos,
+                                                             &value->u.filter_gyro_bias_model_response);
+    case MIP_FIELD_FILTER_ZUPT_CONTROL:
+        return mip_filter_zupt_control_from_json(jr, pos, &value->u.filter_zupt_control);
+    case MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE:
+        return mip_filter_zupt_control_response_from_json(jr, pos, &value->u.filter_zupt_control_response);
+    case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
+        return mip_filter_external_heading_update_with_time_from_json(
+            jr, pos, &value->u.filter_external_heading_update_with_time);
+    case MIP_FIELD_GNSS_RECEIVER_INFO:
+        return mip_gnss_receiver_info_from_json(jr, pos, &value->u.gnss_receiver_info);
+    case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:
+        return mip_gnss_receiver_info_response_from_json(jr, pos, &value->u.gnss_receiver_info_response);
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION:
+        return mip_gnss_signal_configuration_from_json(jr, pos, &value->u.gnss_signal_configuration);
+    case MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE:
+        return mip_gnss_signal_configuration_response_from_json(jr, pos,
+                                                                &value->u.gnss_signal_configuration_response);
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION:
+        return mip_gnss_spartn_configuration_from_json(jr, pos, &value->u.gnss_spartn_configuration);
+    case MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE:
+        return mip_gnss_spartn_configuration_response_from_json(jr, pos,
+                                                                &value->u.gnss_spartn_configuration_response);
+    case MIP_FIELD_AIDING_FRAME_CONFIG:
+        return mip_aiding_frame_config_from_json(jr, pos, &value->u.aiding_frame_config);
+    case MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE:
+        return mip_aiding_frame_config_response_from_json(jr, pos, &value->u.aiding_frame_config_response);
+    case MIP_FIELD_AIDING_ECHO_CONTROL:
+        return mip_aiding_echo_control_from_json(jr, pos, &value->u.aiding_echo_control);
+    case MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE:
+        return mip_aiding_echo_control_response_from_json(jr, pos, &value->u.aiding_echo_control_response);
+    case MIP_FIELD_AIDING_ECEF_POSITION:
+        return mip_aiding_ecef_position_from_json(jr, pos, &value->u.aiding_ecef_position);
+    case MIP_FIELD_AIDING_LLH_POSITION:
+        return mip_aiding_llh_position_from_json(jr, pos, &value->u.aiding_llh_position);
+    case MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID:
+        return mip_aiding_height_above_ellipsoid_from_json(jr, pos, &value->u.aiding_height_above_ellipsoid);
+    case MIP_FIELD_AIDING_ECEF_VELOCITY:
+        return mip_aiding_ecef_velocity_from_json(jr, pos, &value->u.aiding_ecef_velocity);
+    case MIP_FIELD_AIDING_NED_VELOCITY:
+        return mip_aiding_ned_velocity_from_json(jr, pos, &value->u.aiding_ned_velocity);
+    case MIP_FIELD_AIDING_BODY_FRAME_VELOCITY:
+        return mip_aiding_body_frame_velocity_from_json(jr, pos, &value->u.aiding_body_frame_velocity);
+    case MIP_FIELD_AIDING_TRUE_HEADING:
+        return mip_aiding_true_heading_from_json(jr, pos, &value->u.aiding_true_heading);
+    case MIP_FIELD_AIDING_MAGNETIC_FIELD:
+        return mip_aiding_magnetic_field_from_json(jr, pos, &value->u.aiding_magnetic_field);
+    case MIP_FIELD_AIDING_PRESSURE:
+        return mip_aiding_pressure_from_json(jr, pos, &value->u.aiding_pressure);
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE:
+        return mip_system_communication_mode_from_json(jr, pos, &value->u.system_communication_mode);
+    case MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE:
+        return mip_system_communication_mode_response_from_json(jr, pos,
+                                                                &value->u.system_communication_mode_response);
     case MIP_FIELD_SENSOR_SCALED_ACCEL:
         return mip_sensor_scaled_accel_from_json(jr, pos, &value->u.sensor_scaled_accel);
     case MIP_FIELD_SENSOR_SCALED_GYRO:

@@ -92,6 +92,156 @@ void mip_threedm_event_action_config_response_to_json(mip_jw_t *w,
                                                       const mip_threedm_event_action_config_response_t *in);
 int mip_threedm_event_action_config_response_from_json(mip_jr_t *jr, size_t pos,
                                                        mip_threedm_event_action_config_response_t *out);
+void mip_filter_reset_filter_to_json(mip_jw_t *w, const mip_filter_reset_filter_t *in);
+int mip_filter_reset_filter_from_json(mip_jr_t *jr, size_t pos, mip_filter_reset_filter_t *out);
+void mip_filter_set_initial_attitude_to_json(mip_jw_t *w, const mip_filter_set_initial_attitude_t *in);
+int mip_filter_set_initial_attitude_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_filter_set_initial_attitude_t *out);
+void mip_filter_set_initial_heading_to_json(mip_jw_t *w, const mip_filter_set_initial_heading_t *in);
+int mip_filter_set_initial_heading_from_json(mip_jr_t *jr, size_t pos, mip_filter_set_initial_heading_t *out);
+void mip_filter_run_filter_to_json(mip_jw_t *w, const mip_filter_run_filter_t *in);
+int mip_filter_run_filter_from_json(mip_jr_t *jr, size_t pos, mip_filter_run_filter_t *out);
+void mip_filter_vehicle_dynamics_mode_to_json(mip_jw_t *w, const mip_filter_vehicle_dynamics_mode_t *in);
+int mip_filter_vehicle_dynamics_mode_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_filter_vehicle_dynamics_mode_t *out);
+void mip_filter_vehicle_dynamics_mode_response_to_json(mip_jw_t *w,
+                                                       const mip_filter_vehicle_dynamics_mode_response_t *in);
+int mip_filter_vehicle_dynamics_mode_response_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_vehicle_dynamics_mode_response_t *out);
+void mip_filter_sensor_to_vehicle_transform_to_json(mip_jw_t *w,
+                                                    const mip_filter_sensor_to_vehicle_transform_t *in);
+int mip_filter_sensor_to_vehicle_transform_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_filter_sensor_to_vehicle_transform_t *out);
+void mip_filter_sensor_to_vehicle_transform_response_to_json(
+    mip_jw_t *w, const mip_filter_sensor_to_vehicle_transform_response_t *in);
+int mip_filter_sensor_to_vehicle_transform_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_sensor_to_vehicle_transform_response_t *out);
+void mip_filter_sensor_to_vehicle_offset_to_json(mip_jw_t *w,
+                                                 const mip_filter_sensor_to_vehicle_offset_t *in);
+int mip_filter_sensor_to_vehicle_offset_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_filter_sensor_to_vehicle_offset_t *out);
+void mip_filter_sensor_to_vehicle_offset_response_to_json(
+    mip_jw_t *w, const mip_filter_sensor_to_vehicle_offset_response_t *in);
+int mip_filter_sensor_to_vehicle_offset_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_sensor_to_vehicle_offset_response_t *out);
+void mip_filter_antenna_offset_to_json(mip_jw_t *w, const mip_filter_antenna_offset_t *in);
+int mip_filter_antenna_offset_from_json(mip_jr_t *jr, size_t pos, mip_filter_antenna_offset_t *out);
+void mip_filter_antenna_offset_response_to_json(mip_jw_t *w, const mip_filter_antenna_offset_response_t *in);
+int mip_filter_antenna_offset_response_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_filter_antenna_offset_response_t *out);
+void mip_filter_estimation_control_to_json(mip_jw_t *w, const mip_filter_estimation_control_t *in);
+int mip_filter_estimation_control_from_json(mip_jr_t *jr, size_t pos, mip_filter_estimation_control_t *out);
+void mip_filter_estimation_control_response_to_json(mip_jw_t *w,
+                                                    const mip_filter_estimation_control_response_t *in);
+int mip_filter_estimation_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_filter_estimation_control_response_t *out);
+void mip_filter_gnss_source_control_to_json(mip_jw_t *w, const mip_filter_gnss_source_control_t *in);
+int mip_filter_gnss_source_control_from_json(mip_jr_t *jr, size_t pos, mip_filter_gnss_source_control_t *out);
+void mip_filter_gnss_source_control_response_to_json(mip_jw_t *w,
+                                                     const mip_filter_gnss_source_control_response_t *in);
+int mip_filter_gnss_source_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_filter_gnss_source_control_response_t *out);
+void mip_filter_external_gnss_update_to_json(mip_jw_t *w, const mip_filter_external_gnss_update_t *in);
+int mip_filter_external_gnss_update_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_filter_external_gnss_update_t *out);
+void mip_filter_external_heading_update_to_json(mip_jw_t *w, const mip_filter_external_heading_update_t *in);
+int mip_filter_external_heading_update_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_filter_external_heading_update_t *out);
+void mip_filter_heading_update_control_to_json(mip_jw_t *w, const mip_filter_heading_update_control_t *in);
+int mip_filter_heading_update_control_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_heading_update_control_t *out);
+void mip_filter_heading_update_control_response_to_json(
+    mip_jw_t *w, const mip_filter_heading_update_control_response_t *in);
+int mip_filter_heading_update_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_heading_update_control_response_t *out);
+void mip_filter_auto_init_control_to_json(mip_jw_t *w, const mip_filter_auto_init_control_t *in);
+int mip_filter_auto_init_control_from_json(mip_jr_t *jr, size_t pos, mip_filter_auto_init_control_t *out);
+void mip_filter_auto_init_control_response_to_json(mip_jw_t *w,
+                                                   const mip_filter_auto_init_control_response_t *in);
+int mip_filter_auto_init_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_filter_auto_init_control_response_t *out);
+void mip_filter_accel_noise_to_json(mip_jw_t *w, const mip_filter_accel_noise_t *in);
+int mip_filter_accel_noise_from_json(mip_jr_t *jr, size_t pos, mip_filter_accel_noise_t *out);
+void mip_filter_accel_noise_response_to_json(mip_jw_t *w, const mip_filter_accel_noise_response_t *in);
+int mip_filter_accel_noise_response_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_filter_accel_noise_response_t *out);
+void mip_filter_gyro_noise_to_json(mip_jw_t *w, const mip_filter_gyro_noise_t *in);
+int mip_filter_gyro_noise_from_json(mip_jr_t *jr, size_t pos, mip_filter_gyro_noise_t *out);
+void mip_filter_gyro_noise_response_to_json(mip_jw_t *w, const mip_filter_gyro_noise_response_t *in);
+int mip_filter_gyro_noise_response_from_json(mip_jr_t *jr, size_t pos, mip_filter_gyro_noise_response_t *out);
+void mip_filter_accel_bias_model_to_json(mip_jw_t *w, const mip_filter_accel_bias_model_t *in);
+int mip_filter_accel_bias_model_from_json(mip_jr_t *jr, size_t pos, mip_filter_accel_bias_model_t *out);
+void mip_filter_accel_bias_model_response_to_json(mip_jw_t *w,
+                                                  const mip_filter_accel_bias_model_response_t *in);
+int mip_filter_accel_bias_model_response_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_filter_accel_bias_model_response_t *out);
+void mip_filter_gyro_bias_model_to_json(mip_jw_t *w, const mip_filter_gyro_bias_model_t *in);
+int mip_filter_gyro_bias_model_from_json(mip_jr_t *jr, size_t pos, mip_filter_gyro_bias_model_t *out);
+void mip_filter_gyro_bias_model_response_to_json(mip_jw_t *w,
+                                                 const mip_filter_gyro_bias_model_response_t *in);
+int mip_filter_gyro_bias_model_response_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_filter_gyro_bias_model_response_t *out);
+void mip_filter_zupt_control_to_json(mip_jw_t *w, const mip_filter_zupt_control_t *in);
+int mip_filter_zupt_control_from_json(mip_jr_t *jr, size_t pos, mip_filter_zupt_control_t *out);
+void mip_filter_zupt_control_response_to_json(mip_jw_t *w, const mip_filter_zupt_control_response_t *in);
+int mip_filter_zupt_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_filter_zupt_control_response_t *out);
+void mip_filter_external_heading_update_with_time_to_json(
+    mip_jw_t *w, const mip_filter_external_heading_update_with_time_t *in);
+int mip_filter_external_heading_update_with_time_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_external_heading_update_with_time_t *out);
+void mip_gnss_receiver_info_to_json(mip_jw_t *w, const mip_gnss_receiver_info_t *in);
+int mip_gnss_receiver_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_info_t *out);
+void mip_gnss_receiver_info_response_to_json(mip_jw_t *w, const mip_gnss_receiver_info_response_t *in);
+int mip_gnss_receiver_info_response_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_gnss_receiver_info_response_t *out);
+void mip_gnss_signal_configuration_to_json(mip_jw_t *w, const mip_gnss_signal_configuration_t *in);
+int mip_gnss_signal_configuration_from_json(mip_jr_t *jr, size_t pos, mip_gnss_signal_configuration_t *out);
+void mip_gnss_signal_configuration_response_to_json(mip_jw_t *w,
+                                                    const mip_gnss_signal_configuration_response_t *in);
+int mip_gnss_signal_configuration_response_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_gnss_signal_configuration_response_t *out);
+void mip_gnss_spartn_configuration_to_json(mip_jw_t *w, const mip_gnss_spartn_configuration_t *in);
+int mip_gnss_spartn_configuration_from_json(mip_jr_t *jr, size_t pos, mip_gnss_spartn_configuration_t *out);
+void mip_gnss_spartn_configuration_response_to_json(mip_jw_t *w,
+                                                    const mip_gnss_spartn_configuration_response_t *in);
+int mip_gnss_spartn_configuration_response_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_gnss_spartn_configuration_response_t *out);
+void mip_aiding_frame_config_to_json(mip_jw_t *w, const mip_aiding_frame_config_t *in);
+int mip_aiding_frame_config_from_json(mip_jr_t *jr, size_t pos, mip_aiding_frame_config_t *out);
+void mip_aiding_frame_config_response_to_json(mip_jw_t *w, const mip_aiding_frame_config_response_t *in);
+int mip_aiding_frame_config_response_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_aiding_frame_config_response_t *out);
+void mip_aiding_echo_control_to_json(mip_jw_t *w, const mip_aiding_echo_control_t *in);
+int mip_aiding_echo_control_from_json(mip_jr_t *jr, size_t pos, mip_aiding_echo_control_t *out);
+void mip_aiding_echo_control_response_to_json(mip_jw_t *w, const mip_aiding_echo_control_response_t *in);
+int mip_aiding_echo_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_aiding_echo_control_response_t *out);
+void mip_aiding_ecef_position_to_json(mip_jw_t *w, const mip_aiding_ecef_position_t *in);
+int mip_aiding_ecef_position_from_json(mip_jr_t *jr, size_t pos, mip_aiding_ecef_position_t *out);
+void mip_aiding_llh_position_to_json(mip_jw_t *w, const mip_aiding_llh_position_t *in);
+int mip_aiding_llh_position_from_json(mip_jr_t *jr, size_t pos, mip_aiding_llh_position_t *out);
+void mip_aiding_height_above_ellipsoid_to_json(mip_jw_t *w, const mip_aiding_height_above_ellipsoid_t *in);
+int mip_aiding_height_above_ellipsoid_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_aiding_height_above_ellipsoid_t *out);
+void mip_aiding_ecef_velocity_to_json(mip_jw_t *w, const mip_aiding_ecef_velocity_t *in);
+int mip_aiding_ecef_velocity_from_json(mip_jr_t *jr, size_t pos, mip_aiding_ecef_velocity_t *out);
+void mip_aiding_ned_velocity_to_json(mip_jw_t *w, const mip_aiding_ned_velocity_t *in);
+int mip_aiding_ned_velocity_from_json(mip_jr_t *jr, size_t pos, mip_aiding_ned_velocity_t *out);
+void mip_aiding_body_frame_velocity_to_json(mip_jw_t *w, const mip_aiding_body_frame_velocity_t *in);
+int mip_aiding_body_frame_velocity_from_json(mip_jr_t *jr, size_t pos, mip_aiding_body_frame_velocity_t *out);
+void mip_aiding_true_heading_to_json(mip_jw_t *w, const mip_aiding_true_heading_t *in);
+int mip_aiding_true_heading_from_json(mip_jr_t *jr, size_t pos, mip_aiding_true_heading_t *out);
+void mip_aiding_magnetic_field_to_json(mip_jw_t *w, const mip_aiding_magnetic_field_t *in);
+int mip_aiding_magnetic_field_from_json(mip_jr_t *jr, size_t pos, mip_aiding_magnetic_field_t *out);
+void mip_aiding_pressure_to_json(mip_jw_t *w, const mip_aiding_pressure_t *in);
+int mip_aiding_pressure_from_json(mip_jr_t *jr, size_t pos, mip_aiding_pressure_t *out);
+void mip_system_communication_mode_to_json(mip_jw_t *w, const mip_system_communication_mode_t *in);
+int mip_system_communication_mode_from_json(mip_jr_t *jr, size_t pos, mip_system_communication_mode_t *out);
+void mip_system_communication_mode_response_to_json(mip_jw_t *w,
+                                                    const mip_system_communication_mode_response_t *in);
+int mip_system_communication_mode_response_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_system_communication_mode_response_t *out);
 void mip_sensor_scaled_accel_to_json(mip_jw_t *w, const mip_sensor_scaled_accel_t *in);
 int mip_sensor_scaled_accel_from_json(mip_jr_t *jr, size_t pos, mip_sensor_scaled_accel_t *out);
 void mip_sensor_scaled_gyro_to_json(mip_jw_t *w, const mip_sensor_scaled_gyro_t *in);

@@ -294,6 +294,264 @@ int mip_action_status_entry_from_json(mip_jr_t *jr, size_t pos, mip_action_statu
     return 0;
 }
 
+/* ---- AidingFrameEuler */
+
+int mip_aiding_frame_euler_read(mip_reader_t *r, mip_aiding_frame_euler_t *out) {
+    size_t i;
+    mip_rd_push(r, "euler");
+    for (i = 0; i < 3; i++) {
+        mip_rd_index(r, i);
+        if (mip_rd_f32(r, &out->euler[i])) {
+            return -1;
+        }
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_aiding_frame_euler_write(mip_writer_t *w, const mip_aiding_frame_euler_t *in) {
+    mip_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mip_wr_f32(w, &in->euler[i])) != MIP_OK) {
+            return st;
+        }
+    }
+    return MIP_OK;
+}
+
+void mip_aiding_frame_euler_to_json(mip_jw_t *w, const mip_aiding_frame_euler_t *in) {
+    int first = 1;
+    size_t i;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "euler");
+    mip_jw_raw(w, "[", 1);
+    for (i = 0; i < 3; i++) {
+        mip_jw_sep(w, i);
+        mip_jw_f32(w, &in->euler[i]);
+    }
+    mip_jw_raw(w, "]", 1);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_aiding_frame_euler_from_json(mip_jr_t *jr, size_t pos, mip_aiding_frame_euler_t *out) {
+    static const char *const keys[] = {"euler"};
+    size_t vp = 0;
+    int found;
+    size_t i;
+    size_t it = 0;
+    size_t ep = 0;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "euler", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"euler\"");
+    }
+    {
+        mip_jr_push(jr, "euler");
+        if (mip_jr_array(jr, vp, &it)) {
+            return -1;
+        }
+        for (i = 0;; i++) {
+            int more = mip_jr_next(jr, &it, &ep);
+            if (more < 0) {
+                return -1;
+            }
+            if (!more) {
+                break;
+            }
+            if (i >= 3) {
+                return mip_jr_fail(jr, "more than 3 elements");
+            }
+            mip_jr_index(jr, i);
+            if (mip_jr_f32(jr, ep, &out->euler[i])) {
+                return -1;
+            }
+        }
+        mip_jr_index(jr, SIZE_MAX);
+        if (i != 3) {
+            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- AidingFrameQuaternion */
+
+int mip_aiding_frame_quaternion_read(mip_reader_t *r, mip_aiding_frame_quaternion_t *out) {
+    size_t i;
+    mip_rd_push(r, "quaternion");
+    for (i = 0; i < 4; i++) {
+        mip_rd_index(r, i);
+        if (mip_rd_f32(r, &out->quaternion[i])) {
+            return -1;
+        }
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_aiding_frame_quaternion_write(mip_writer_t *w, const mip_aiding_frame_quaternion_t *in) {
+    mip_status_t st;
+    size_t i;
+    for (i = 0; i < 4; i++) {
+        if ((st = mip_wr_f32(w, &in->quaternion[i])) != MIP_OK) {
+            return st;
+        }
+    }
+    return MIP_OK;
+}
+
+void mip_aiding_frame_quaternion_to_json(mip_jw_t *w, const mip_aiding_frame_quaternion_t *in) {
+    int first = 1;
+    size_t i;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "quaternion");
+    mip_jw_raw(w, "[", 1);
+    for (i = 0; i < 4; i++) {
+        mip_jw_sep(w, i);
+        mip_jw_f32(w, &in->quaternion[i]);
+    }
+    mip_jw_raw(w, "]", 1);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_aiding_frame_quaternion_from_json(mip_jr_t *jr, size_t pos, mip_aiding_frame_quaternion_t *out) {
+    static const char *const keys[] = {"quaternion"};
+    size_t vp = 0;
+    int found;
+    size_t i;
+    size_t it = 0;
+    size_t ep = 0;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "quaternion", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"quaternion\"");
+    }
+    {
+        mip_jr_push(jr, "quaternion");
+        if (mip_jr_array(jr, vp, &it)) {
+            return -1;
+        }
+        for (i = 0;; i++) {
+            int more = mip_jr_next(jr, &it, &ep);
+            if (more < 0) {
+                return -1;
+            }
+            if (!more) {
+                break;
+            }
+            if (i >= 4) {
+                return mip_jr_fail(jr, "more than 4 elements");
+            }
+            mip_jr_index(jr, i);
+            if (mip_jr_f32(jr, ep, &out->quaternion[i])) {
+                return -1;
+            }
+        }
+        mip_jr_index(jr, SIZE_MAX);
+        if (i != 4) {
+            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- AidingTime */
+
+int mip_aiding_time_read(mip_reader_t *r, mip_aiding_time_t *out) {
+    mip_rd_push(r, "timebase");
+    if (mip_rd_u8(r, &out->timebase)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved");
+    if (mip_rd_u8(r, &out->reserved)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "nanoseconds");
+    if (mip_rd_u64(r, &out->nanoseconds)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_aiding_time_write(mip_writer_t *w, const mip_aiding_time_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->timebase)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u64(w, &in->nanoseconds)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_aiding_time_to_json(mip_jw_t *w, const mip_aiding_time_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "timebase");
+    mip_jw_u8(w, &in->timebase);
+    mip_jw_key(w, &first, "reserved");
+    mip_jw_u8(w, &in->reserved);
+    mip_jw_key(w, &first, "nanoseconds");
+    mip_jw_u64(w, &in->nanoseconds);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_aiding_time_from_json(mip_jr_t *jr, size_t pos, mip_aiding_time_t *out) {
+    static const char *const keys[] = {"timebase", "reserved", "nanoseconds"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 3)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "timebase", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"timebase\"");
+    }
+    {
+        mip_jr_push(jr, "timebase");
+        if (mip_jr_u8(jr, vp, &out->timebase)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved\"");
+    }
+    {
+        mip_jr_push(jr, "reserved");
+        if (mip_jr_u8(jr, vp, &out->reserved)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "nanoseconds", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"nanoseconds\"");
+    }
+    {
+        mip_jr_push(jr, "nanoseconds");
+        if (mip_jr_u64(jr, vp, &out->nanoseconds)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
 /* ---- CombinationParams */
 
 int mip_combination_params_read(mip_reader_t *r, mip_combination_params_t *out) {
@@ -546,6 +804,96 @@ int mip_device_info_from_json(mip_jr_t *jr, size_t pos, mip_device_info_t *out) 
     {
         mip_jr_push(jr, "device_options");
         if (mip_jr_chars(jr, vp, out->device_options, 16)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GnssReceiverInfoEntry */
+
+int mip_gnss_receiver_info_entry_read(mip_reader_t *r, mip_gnss_receiver_info_entry_t *out) {
+    mip_rd_push(r, "receiver_id");
+    if (mip_rd_u8(r, &out->receiver_id)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "mip_data_descriptor_set");
+    if (mip_rd_u8(r, &out->mip_data_descriptor_set)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "description");
+    if (mip_rd_chars(r, out->description, 32)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gnss_receiver_info_entry_write(mip_writer_t *w, const mip_gnss_receiver_info_entry_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->receiver_id)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->mip_data_descriptor_set)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_chars(w, in->description, 32)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gnss_receiver_info_entry_to_json(mip_jw_t *w, const mip_gnss_receiver_info_entry_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "receiver_id");
+    mip_jw_u8(w, &in->receiver_id);
+    mip_jw_key(w, &first, "mip_data_descriptor_set");
+    mip_jw_u8(w, &in->mip_data_descriptor_set);
+    mip_jw_key(w, &first, "description");
+    mip_jw_chars(w, in->description, 32);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gnss_receiver_info_entry_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_info_entry_t *out) {
+    static const char *const keys[] = {"receiver_id", "mip_data_descriptor_set", "description"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 3)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "receiver_id", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"receiver_id\"");
+    }
+    {
+        mip_jr_push(jr, "receiver_id");
+        if (mip_jr_u8(jr, vp, &out->receiver_id)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "mip_data_descriptor_set", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"mip_data_descriptor_set\"");
+    }
+    {
+        mip_jr_push(jr, "mip_data_descriptor_set");
+        if (mip_jr_u8(jr, vp, &out->mip_data_descriptor_set)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "description", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"description\"");
+    }
+    {
+        mip_jr_push(jr, "description");
+        if (mip_jr_chars(jr, vp, out->description, 32)) {
             return -1;
         }
         mip_jr_pop(jr);
@@ -900,6 +1248,64 @@ int mip_action_params_from_json(mip_jr_t *jr, size_t pos, mip_action_type_t sele
         return mip_action_gpio_params_from_json(jr, pos, &out->gpio);
     case MIP_ACTION_TYPE_MESSAGE:
         return mip_message_params_from_json(jr, pos, &out->message);
+    default:
+        (void)pos;
+        (void)out;
+        return mip_jr_fail(jr, "no member for selector value %llu", (unsigned long long)selector);
+    }
+}
+
+/* ---- AidingFrameRotation (selected by mip_aiding_frame_format_t) */
+
+int mip_aiding_frame_rotation_read(mip_reader_t *r, mip_aiding_frame_format_t selector,
+                                   mip_aiding_frame_rotation_t *out) {
+    switch (selector) {
+    case MIP_AIDING_FRAME_FORMAT_EULER:
+        return mip_aiding_frame_euler_read(r, &out->euler);
+    case MIP_AIDING_FRAME_FORMAT_QUATERNION:
+        return mip_aiding_frame_quaternion_read(r, &out->quaternion);
+    default:
+        return mip_rd_selector_error_u(r, (uint64_t)selector);
+    }
+}
+
+mip_status_t mip_aiding_frame_rotation_write(mip_writer_t *w, mip_aiding_frame_format_t selector,
+                                             const mip_aiding_frame_rotation_t *in) {
+    switch (selector) {
+    case MIP_AIDING_FRAME_FORMAT_EULER:
+        return mip_aiding_frame_euler_write(w, &in->euler);
+    case MIP_AIDING_FRAME_FORMAT_QUATERNION:
+        return mip_aiding_frame_quaternion_write(w, &in->quaternion);
+    default:
+        (void)w;
+        (void)in;
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_aiding_frame_rotation_to_json(mip_jw_t *w, mip_aiding_frame_format_t selector,
+                                       const mip_aiding_frame_rotation_t *in) {
+    switch (selector) {
+    case MIP_AIDING_FRAME_FORMAT_EULER:
+        mip_aiding_frame_euler_to_json(w, &in->euler);
+        return;
+    case MIP_AIDING_FRAME_FORMAT_QUATERNION:
+        mip_aiding_frame_quaternion_to_json(w, &in->quaternion);
+        return;
+    default:
+        (void)in;
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_aiding_frame_rotation_from_json(mip_jr_t *jr, size_t pos, mip_aiding_frame_format_t selector,
+                                        mip_aiding_frame_rotation_t *out) {
+    switch (selector) {
+    case MIP_AIDING_FRAME_FORMAT_EULER:
+        return mip_aiding_frame_euler_from_json(jr, pos, &out->euler);
+    case MIP_AIDING_FRAME_FORMAT_QUATERNION:
+        return mip_aiding_frame_quaternion_from_json(jr, pos, &out->quaternion);
     default:
         (void)pos;
         (void)out;

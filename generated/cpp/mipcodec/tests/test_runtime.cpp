@@ -372,15 +372,15 @@ TEST(Json, StringsEscapeBytes) {
 }
 
 TEST(Types, BitfieldAccessorRoundTrip) {
-    using Bits = ::mipcodec::types::Cv7BitFlags;
+    using Bits = ::mipcodec::types::AidingLlhValidFlags;
     Bits flags;
     EXPECT_EQ(flags.raw(), 0u);
-    flags.set_reserved_system(static_cast<Bits::Raw>(15ULL));
-    EXPECT_EQ(flags.reserved_system(), static_cast<Bits::Raw>(15ULL));
-    EXPECT_EQ(flags.raw(), static_cast<Bits::Raw>(0xF0ULL));
-    EXPECT_EQ(flags.raw() & Bits::reserved_system_mask, flags.raw());
+    flags.set_latitude(true);
+    EXPECT_TRUE(flags.latitude());
+    EXPECT_EQ(flags.raw(), static_cast<Bits::Raw>(0x1ULL));
+    EXPECT_EQ(flags.raw() & Bits::latitude_mask, flags.raw());
     // reserved/unnamed bits survive encode -> decode
-    flags.set_raw(static_cast<Bits::Raw>(flags.raw() | static_cast<Bits::Raw>(~Bits::reserved_system_mask)));
+    flags.set_raw(static_cast<Bits::Raw>(flags.raw() | static_cast<Bits::Raw>(~Bits::latitude_mask)));
     std::uint8_t buf[sizeof(Bits::Raw)];
     std::size_t written = 0;
     ASSERT_EQ(pkg::encode(flags, buf, sizeof buf, written), pkg::EncodeError::none);
@@ -389,13 +389,9 @@ TEST(Types, BitfieldAccessorRoundTrip) {
     pkg::DecodeError err;
     ASSERT_TRUE(pkg::decode(buf, written, back, err)) << err.text().c_str();
     EXPECT_EQ(back, flags);
-    back.set_reserved_system(0);
-    EXPECT_EQ(back.reserved_system(), 0u);
-    EXPECT_EQ(back.raw(), static_cast<Bits::Raw>(~Bits::reserved_system_mask));
-    Bits one;
-    one.set_general_hardware_fault(true);
-    EXPECT_TRUE(one.general_hardware_fault());
-    EXPECT_EQ(one.raw(), Bits::general_hardware_fault_mask);
+    back.set_latitude(false);
+    EXPECT_FALSE(back.latitude());
+    EXPECT_EQ(back.raw(), static_cast<Bits::Raw>(~Bits::latitude_mask));
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 """MicroStrain MIP: typed encoder/decoder generated from the protocol spec.
 
-Modules: one per descriptor set (base, threedm, sensor) holding a
+Modules: one per descriptor set (base, threedm, filter, gnss, aiding, system, sensor) holding a
 dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);
 `reserved` (fields reserved in every set of a kind); `framing` (checksum, packet builder, stream
 parser, field splitter); `packets` (dispatch and canonical JSON lines); `cli` (decode/encode).
@@ -10,7 +10,7 @@ parser, field splitter); `packets` (dispatch and canonical JSON lines); `cli` (d
         ...
 """
 
-from . import base, reserved, sensor, threedm, types
+from . import aiding, base, filter, gnss, reserved, sensor, system, threedm, types
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
@@ -40,9 +40,13 @@ from .packets import (
 from .registry import DEVICES, lookup
 
 __all__ = [
+    "aiding",
     "base",
+    "filter",
+    "gnss",
     "reserved",
     "sensor",
+    "system",
     "threedm",
     "types",
     "NaN",

@@ -14,14 +14,18 @@ from . import codec as _c
 
 
 class AckCode(_c.Enum):
-    """Ack/Nack code (u8)."""
+    """Ack/Nack code (u8).
+
+    Second byte of the ack/nack field; 0 is an ACK, any other value a NACK giving the reason.
+    """
 
     OK = 0x00  # Success (ACK).
     UNKNOWN_COMMAND = 0x01  # The command descriptor is not supported by this device.
-    BAD_CHECKSUM = 0x02  # An otherwise complete packet has a bad checksum.
-    INVALID_PARAMETER = 0x03  # One or more parameters are invalid.
+    BAD_CHECKSUM = 0x02  # An otherwise complete packet has a bad checksum (GX5-45: invalid checksum).
+    # One or more parameters are invalid: out of the allowed range, or not the expected size or type.
+    INVALID_PARAMETER = 0x03
     COMMAND_FAILED = 0x04  # Device could not complete the command.
-    COMMAND_TIMEOUT = 0x05  # Device could not complete the command in time.
+    COMMAND_TIMEOUT = 0x05  # Device could not complete the command within the expected time.
     UNKNOWN_DESCRIPTOR_SET = 0x06  # Unknown descriptor set (CV7 only). (devices: cv7_ins)
 
 
@@ -42,6 +46,71 @@ class ActionType(_c.Enum):
     NONE = 0x00  # No action. Parameters should be empty.
     GPIO = 0x01  # Control the state of a GPIO pin.
     MESSAGE = 0x02  # Output a data packet.
+
+
+class AidingEchoMode(_c.Enum):
+    """Aiding command echo mode (u8)."""
+
+    SUPPRESS_ACK = 0x00  # The aiding measurement commands are not acknowledged.
+    STANDARD = 0x01  # Normal ack/nack behavior.
+    RESPONSE = 0x02  # The device echoes the aiding data back as a response.
+
+
+class AidingFrameFormat(_c.Enum):
+    """Aiding frame rotation format (u8)."""
+
+    EULER = 0x01  # Translation vector followed by Euler angles (roll, pitch, yaw).
+    QUATERNION = 0x02  # Translation vector followed by a quaternion (w, x, y, z).
+
+
+@_c.bitfield("u16")
+class AidingLlhValidFlags(_c.Bitfield):
+    """LLH position aiding valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("latitude", "latitude", "LATITUDE", 0, 1),
+        ("longitude", "longitude", "LONGITUDE", 1, 1),
+        ("height", "height", "HEIGHT", 2, 1),
+    )
+    LATITUDE = 0x0001  # bit 0: Latitude valid.
+    LONGITUDE = 0x0002  # bit 1: Longitude valid.
+    HEIGHT = 0x0004  # bit 2: Height valid.
+
+    latitude = _c.bit(0)
+    longitude = _c.bit(1)
+    height = _c.bit(2)
+
+
+class AidingTimebase(_c.Enum):
+    """Aiding measurement timebase (u8).
+
+    Clock in which the timestamp of an aiding measurement is expressed.
+    """
+
+    INTERNAL_REFERENCE = 0x01  # Timestamp in the device's internal reference time (nanoseconds since power-on).
+    EXTERNAL_TIME = 0x02  # Timestamp in external time, synchronised by the PPS source and GPS time update.
+    TIME_OF_ARRIVAL = 0x03  # No timestamp: the measurement is taken at its arrival time, with a fixed latency.
+
+
+@_c.bitfield("u16")
+class AidingVectorValidFlags(_c.Bitfield):
+    """Aiding vector valid flags (u16 bitfield).
+
+    Which axes of a 3-axis aiding measurement are valid; axes with 0 are ignored.
+    """
+
+    _MEMBERS = (
+        ("x", "x", "X", 0, 1),
+        ("y", "y", "Y", 1, 1),
+        ("z", "z", "Z", 2, 1),
+    )
+    X = 0x0001  # bit 0: X (or north) component valid.
+    Y = 0x0002  # bit 1: Y (or east) component valid.
+    Z = 0x0004  # bit 2: Z (or down) component valid.
+
+    x = _c.bit(0)
+    y = _c.bit(1)
+    z = _c.bit(2)
 
 
 @_c.bitfield("u32")
@@ -105,6 +174,42 @@ class Cv7BitFlags(_c.Bitfield):
     reserved = _c.bits(24, 8)
 
 
+@_c.bitfield("u16")
+class EstimationControlFlags(_c.Bitfield):
+    """Estimation control flags (u16 bitfield).
+
+    Which optional states the Kalman filter estimates.
+    """
+
+    _MEMBERS = (
+        ("gyro_bias", "gyro_bias", "GYRO_BIAS", 0, 1),
+        ("accel_bias", "accel_bias", "ACCEL_BIAS", 1, 1),
+        ("gyro_scale_factor", "gyro_scale_factor", "GYRO_SCALE_FACTOR", 2, 1),
+        ("accel_scale_factor", "accel_scale_factor", "ACCEL_SCALE_FACTOR", 3, 1),
+        ("antenna_offset", "antenna_offset", "ANTENNA_OFFSET", 4, 1),
+        ("hard_iron_auto_cal", "hard_iron_auto_cal", "HARD_IRON_AUTO_CAL", 5, 1),
+        ("soft_iron_auto_cal", "soft_iron_auto_cal", "SOFT_IRON_AUTO_CAL", 6, 1),
+        ("reserved", "reserved", "RESERVED", 7, 9),
+    )
+    GYRO_BIAS = 0x0001  # bit 0: Estimate gyro bias (recommended).
+    ACCEL_BIAS = 0x0002  # bit 1: Estimate accelerometer bias (recommended).
+    GYRO_SCALE_FACTOR = 0x0004  # bit 2: Estimate gyro scale factor (optional).
+    ACCEL_SCALE_FACTOR = 0x0008  # bit 3: Estimate accelerometer scale factor (optional).
+    ANTENNA_OFFSET = 0x0010  # bit 4: Estimate the GNSS antenna offset (optional).
+    HARD_IRON_AUTO_CAL = 0x0020  # bit 5: Hard iron auto-calibration (optional).
+    SOFT_IRON_AUTO_CAL = 0x0040  # bit 6: Soft iron auto-calibration (optional).
+    RESERVED = 0xFF80  # bits 7-15: Not named by the manual. (reserved)
+
+    gyro_bias = _c.bit(0)
+    accel_bias = _c.bit(1)
+    gyro_scale_factor = _c.bit(2)
+    accel_scale_factor = _c.bit(3)
+    antenna_offset = _c.bit(4)
+    hard_iron_auto_cal = _c.bit(5)
+    soft_iron_auto_cal = _c.bit(6)
+    reserved = _c.bits(7, 9)
+
+
 class EventControlMode(_c.Enum):
     """Event trigger control mode (u8)."""
 
@@ -114,18 +219,111 @@ class EventControlMode(_c.Enum):
     TEST_PULSE = 0x03  # Trigger is forced active for one event cycle only, then reverts.
 
 
+class ExternalHeadingType(_c.Enum):
+    """External heading type (u8).
+
+    Reference of an externally supplied heading angle.
+    """
+
+    TRUE_HEADING = 0x01  # True heading (from true north).
+    MAGNETIC_HEADING = 0x02  # Magnetic heading (from magnetic north).
+
+
+class FilterGnssSource(_c.Enum):
+    """Filter GNSS source (u8).
+
+    Where the filter takes its GNSS position and velocity updates from.
+    """
+
+    ALL_INTERNAL = 0x01  # The internal GNSS receiver(s) (GX5-45: Internal GNSS; CV7: ALL_INT, all internal receivers).
+    EXTERNAL = 0x02  # External GNSS messages supplied by the user (GX5-45: External GNSS Update 0x0D,0x16).
+    INTERNAL_1 = 0x03  # Internal GNSS receiver 1 only. (devices: cv7_ins)
+    INTERNAL_2 = 0x04  # Internal GNSS receiver 2 only. (devices: cv7_ins)
+
+
 class FunctionSelector(_c.Enum):
     """Function selector (u8).
 
-    First parameter of settings commands; chooses what the command does.
+    First parameter of settings commands; chooses what the command does. Only a read returns a
+    response field (with the ack); parameters not needed for a function may be left out, or sent as
+    placeholders.
     """
 
     WRITE = 0x01  # Apply new setting.
-    READ = 0x02  # Read current setting.
-    SAVE = 0x03  # Save current setting to non-volatile memory.
-    LOAD = 0x04  # Load setting from non-volatile memory.
+    READ = 0x02  # Read back the current setting (the only function that returns response data).
+    SAVE = 0x03  # Save the current setting to non-volatile memory as the startup setting.
+    LOAD = 0x04  # Load the saved startup setting from non-volatile memory.
     DEFAULT = 0x05  # Reset to the factory default.
     WRITE_NO_ACK = 0x06  # Apply new setting with no ACK/NACK reply (GX5-45 only). (devices: gx5_45)
+
+
+@_c.bitfield("u8")
+class GnssBeidouSignals(_c.Bitfield):
+    """BeiDou signals enabled (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("b1", "b1", "B1", 0, 1),
+        ("b2", "b2", "B2", 1, 1),
+        ("b2a", "b2a", "B2A", 2, 1),
+    )
+    B1 = 0x01  # bit 0: Enable B1.
+    B2 = 0x02  # bit 1: Enable B2.
+    B2A = 0x04  # bit 2: Enable B2A.
+
+    b1 = _c.bit(0)
+    b2 = _c.bit(1)
+    b2a = _c.bit(2)
+
+
+@_c.bitfield("u8")
+class GnssGalileoSignals(_c.Bitfield):
+    """Galileo signals enabled (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("e1", "e1", "E1", 0, 1),
+        ("e5b", "e5b", "E5B", 1, 1),
+        ("e5a", "e5a", "E5A", 2, 1),
+    )
+    E1 = 0x01  # bit 0: Enable E1.
+    E5B = 0x02  # bit 1: Enable E5B.
+    E5A = 0x04  # bit 2: Enable E5A.
+
+    e1 = _c.bit(0)
+    e5b = _c.bit(1)
+    e5a = _c.bit(2)
+
+
+@_c.bitfield("u8")
+class GnssGlonassSignals(_c.Bitfield):
+    """GLONASS signals enabled (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("l1of", "l1of", "L1OF", 0, 1),
+        ("l2of", "l2of", "L2OF", 1, 1),
+    )
+    L1OF = 0x01  # bit 0: Enable L1OF.
+    L2OF = 0x02  # bit 1: Enable L2OF.
+
+    l1of = _c.bit(0)
+    l2of = _c.bit(1)
+
+
+@_c.bitfield("u8")
+class GnssGpsSignals(_c.Bitfield):
+    """GPS signals enabled (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("l1ca", "l1ca", "L1CA", 0, 1),
+        ("l2c", "l2c", "L2C", 1, 1),
+        ("l5", "l5", "L5", 2, 1),
+    )
+    L1CA = 0x01  # bit 0: Enable L1 C/A.
+    L2C = 0x02  # bit 1: Enable L2C.
+    L5 = 0x04  # bit 2: Enable L5.
+
+    l1ca = _c.bit(0)
+    l2c = _c.bit(1)
+    l5 = _c.bit(2)
 
 
 class GpsTimeField(_c.Enum):
@@ -158,6 +356,39 @@ class Gx5BitFlags(_c.Bitfield):
     magnetometer_fault = _c.bit(9)
     pressure_sensor_fault = _c.bit(10)
     filter_solution_fault = _c.bit(24)
+
+
+class HeadingUpdateSource(_c.Enum):
+    """Heading update source (u8).
+
+    Which aiding sources the filter uses for heading updates.
+    """
+
+    NONE = 0x00  # No heading aiding; heading still converges from GNSS under sufficient acceleration.
+    MAGNETOMETER = 0x01  # Internal magnetometer.
+    # Internal GNSS velocity vector (needs little side-slip and the vehicle X axis along the direction of travel).
+    GNSS_VELOCITY = 0x02
+    EXTERNAL = 0x03  # External heading messages (0x0D,0x17 / 0x0D,0x1F).
+    GNSS_VELOCITY_AND_MAGNETOMETER = 0x04  # GNSS velocity vector and magnetometer.
+    GNSS_VELOCITY_AND_EXTERNAL = 0x05  # GNSS velocity vector and external heading messages.
+    MAGNETOMETER_AND_EXTERNAL = 0x06  # Magnetometer and external heading messages.
+    GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL = 0x07  # GNSS velocity vector, magnetometer and external heading messages.
+
+
+class SpartnConnectionType(_c.Enum):
+    """SPARTN connection type (u8)."""
+
+    NONE = 0x00  # No SPARTN connection.
+    NETWORK = 0x01  # Corrections over a network connection (e.g. NTRIP).
+    L_BAND = 0x02  # Corrections from an L-band correction receiver.
+
+
+class SystemCommMode(_c.Enum):
+    """Communication mode (u8)."""
+
+    STANDARD = 0x01  # 3DM-GX5-45 MIP packets (default).
+    SENSOR_DIRECT = 0x02  # Direct to the internal IMU: MIP IMU protocol.
+    GNSS_DIRECT = 0x03  # Direct to the GNSS receiver: NMEA and UBX (GNSS models only).
 
 
 class ThresholdType(_c.Enum):
@@ -201,6 +432,19 @@ class TriggerType(_c.Enum):
     GPIO = 0x01  # Trigger based on the state of a GPIO pin.
     THRESHOLD = 0x02  # Compare a data quantity against a high and low threshold.
     COMBINATION = 0x03  # Logical combination of two or more triggers.
+
+
+class VehicleDynamicsMode(_c.Enum):
+    """Vehicle dynamics mode (u8).
+
+    Dynamics model the filter assumes for the vehicle (altitude and velocity limits).
+    """
+
+    PORTABLE = 0x01  # Low-acceleration applications (default); up to 12,000 m, 310 m/s horizontal, 50 m/s vertical.
+    # Wheeled vehicles with low vertical acceleration; up to 6,000 m, 84 m/s horizontal, 15 m/s vertical.
+    AUTOMOTIVE = 0x02
+    AIRBORNE = 0x03  # Airborne up to 2 g; up to 50,000 m, 250 m/s horizontal, 100 m/s vertical.
+    AIRBORNE_HIGH_G = 0x04  # Airborne up to 4 g; same altitude and velocity limits as airborne.
 
 
 @_dc.dataclass
@@ -259,6 +503,64 @@ class ActionStatusEntry(_c.Struct):
 
 
 @_dc.dataclass
+class AidingFrameEuler(_c.Struct):
+    """Aiding frame rotation as Euler angles (struct, 12 bytes)."""
+
+    # Roll, pitch, yaw of the frame relative to the vehicle frame, each within +/- pi. [rad]
+    euler: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 3)
+
+    _ATTRS = ("euler",)
+    _OPS = (_c.Run(_c.P("euler", _c.F32, 3)),)
+    _SIZE = 12
+
+
+@_dc.dataclass
+class AidingFrameQuaternion(_c.Struct):
+    """Aiding frame rotation as a quaternion (struct, 16 bytes)."""
+
+    # Rotation of the frame relative to the vehicle frame, (w, x, y, z).
+    quaternion: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 4)
+
+    _ATTRS = ("quaternion",)
+    _OPS = (_c.Run(_c.P("quaternion", _c.F32, 4)),)
+    _SIZE = 16
+
+
+class AidingFrameRotation(_c.Union):
+    """Aiding frame rotation (union selected by AidingFrameFormat).
+
+    Rotation of an aiding frame, as Euler angles or as a quaternion depending on the format.
+
+    The value of a union parameter is the selected member's struct, or None for a member without
+    data.
+    """
+
+    _SELECTOR = AidingFrameFormat
+    _MEMBERS = {
+        0x01: AidingFrameEuler,  # euler
+        0x02: AidingFrameQuaternion,  # quaternion
+    }
+
+
+@_dc.dataclass
+class AidingTime(_c.Struct):
+    """Aiding measurement timestamp (struct, 10 bytes).
+
+    Timestamp carried first in every aiding measurement command.
+    """
+
+    timebase: AidingTimebase = AidingTimebase.INTERNAL_REFERENCE  # Clock of the timestamp.
+    reserved: int = 0  # Reserved.
+    nanoseconds: int = 0  # Time of the measurement in nanoseconds, in the timebase's clock. [ns]
+
+    _ATTRS = ("timebase", "reserved", "nanoseconds")
+    _OPS = (
+        _c.Run(_c.P("timebase", _c.enum(AidingTimebase, "u8")), _c.P("reserved", _c.U8), _c.P("nanoseconds", _c.U64)),
+    )
+    _SIZE = 10
+
+
+@_dc.dataclass
 class CombinationParams(_c.Struct):
     """CombinationParams (struct, 6 bytes)."""
 
@@ -297,6 +599,24 @@ class DeviceInfo(_c.Struct):
         ),
     )
     _SIZE = 82
+
+
+@_dc.dataclass
+class GnssReceiverInfoEntry(_c.Struct):
+    """GNSS receiver information (struct, 34 bytes).
+
+    Identity of one physical GNSS receiver in the device.
+    """
+
+    receiver_id: int = 0  # Receiver id (1, 2, ...).
+    mip_data_descriptor_set: int = 0  # MIP data descriptor set of this receiver's data.
+    description: bytes = b"\x00" * 32  # ASCII, comma-delimited: module name/model, firmware version.
+
+    _ATTRS = ("receiver_id", "mip_data_descriptor_set", "description")
+    _OPS = (
+        _c.Run(_c.P("receiver_id", _c.U8), _c.P("mip_data_descriptor_set", _c.U8), _c.P("description", _c.string(32))),
+    )
+    _SIZE = 34
 
 
 @_dc.dataclass

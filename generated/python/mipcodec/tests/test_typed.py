@@ -3,7 +3,7 @@
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
 import pytest
-from mipcodec import base, reserved, sensor, threedm, types
+from mipcodec import aiding, base, filter, gnss, reserved, sensor, system, threedm, types
 from mipcodec.canonical import loads
 from mipcodec.framing import MAX_FIELD_DATA, PacketBuilder
 from mipcodec.packets import DecodedField, decode_packet
@@ -132,21 +132,350 @@ SAMPLES = [
             parameters=types.ActionGpioParams(pin=155, mode=types.ActionGpioMode.ACTIVE_HIGH),
         ),
     ),
+    ("filter.ResetFilter", lambda: filter.ResetFilter()),
+    ("filter.SetInitialAttitude", lambda: filter.SetInitialAttitude(roll=-0.0, pitch=1.5, heading=-2.25)),
+    ("filter.SetInitialHeading", lambda: filter.SetInitialHeading(heading=0.375)),
+    ("filter.RunFilter", lambda: filter.RunFilter()),
+    (
+        "filter.VehicleDynamicsMode",
+        lambda: filter.VehicleDynamicsMode(
+            function=types.FunctionSelector.DEFAULT, mode=types.VehicleDynamicsMode.AIRBORNE
+        ),
+    ),
+    (
+        "filter.VehicleDynamicsModeResponse",
+        lambda: filter.VehicleDynamicsModeResponse(mode=types.VehicleDynamicsMode.AIRBORNE_HIGH_G),
+    ),
+    (
+        "filter.SensorToVehicleTransform",
+        lambda: filter.SensorToVehicleTransform(
+            function=types.FunctionSelector.DEFAULT, roll=1.5, pitch=-2.25, yaw=0.375
+        ),
+    ),
+    (
+        "filter.SensorToVehicleTransformResponse",
+        lambda: filter.SensorToVehicleTransformResponse(roll=1024.0, pitch=-0.0, yaw=1.5),
+    ),
+    (
+        "filter.SensorToVehicleOffset",
+        lambda: filter.SensorToVehicleOffset(function=types.FunctionSelector.DEFAULT, offset=[-2.25, 0.375, 1024.0]),
+    ),
+    ("filter.SensorToVehicleOffsetResponse", lambda: filter.SensorToVehicleOffsetResponse(offset=[-0.0, 1.5, -2.25])),
+    (
+        "filter.AntennaOffset",
+        lambda: filter.AntennaOffset(function=types.FunctionSelector.DEFAULT, offset=[0.375, 1024.0, -0.0]),
+    ),
+    ("filter.AntennaOffsetResponse", lambda: filter.AntennaOffsetResponse(offset=[1.5, -2.25, 0.375])),
+    (
+        "filter.EstimationControl",
+        lambda: filter.EstimationControl(
+            function=types.FunctionSelector.DEFAULT, flags=types.EstimationControlFlags(0x4)
+        ),
+    ),
+    (
+        "filter.EstimationControlResponse",
+        lambda: filter.EstimationControlResponse(flags=types.EstimationControlFlags(0x8)),
+    ),
+    (
+        "filter.GnssSourceControl",
+        lambda: filter.GnssSourceControl(
+            function=types.FunctionSelector.DEFAULT, source=types.FilterGnssSource.ALL_INTERNAL
+        ),
+    ),
+    (
+        "filter.GnssSourceControlResponse",
+        lambda: filter.GnssSourceControlResponse(source=types.FilterGnssSource.EXTERNAL),
+    ),
+    (
+        "filter.ExternalGnssUpdate",
+        lambda: filter.ExternalGnssUpdate(
+            gps_tow=1e16,
+            gps_week=47,
+            latitude=-0.0,
+            longitude=0.1,
+            height=-2.5e-310,
+            velocity=[0.375, 1024.0, -0.0],
+            position_uncertainty=[1.5, -2.25, 0.375],
+            velocity_uncertainty=[1024.0, -0.0, 1.5],
+        ),
+    ),
+    (
+        "filter.ExternalHeadingUpdate",
+        lambda: filter.ExternalHeadingUpdate(
+            heading=-2.25, heading_uncertainty=0.375, type=types.ExternalHeadingType.TRUE_HEADING
+        ),
+    ),
+    (
+        "filter.HeadingUpdateControl",
+        lambda: filter.HeadingUpdateControl(
+            function=types.FunctionSelector.DEFAULT,
+            source=types.HeadingUpdateSource.GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL,
+        ),
+    ),
+    (
+        "filter.HeadingUpdateControlResponse",
+        lambda: filter.HeadingUpdateControlResponse(source=types.HeadingUpdateSource.NONE),
+    ),
+    ("filter.AutoInitControl", lambda: filter.AutoInitControl(function=types.FunctionSelector.DEFAULT, enable=211)),
+    ("filter.AutoInitControlResponse", lambda: filter.AutoInitControlResponse(enable=248)),
+    (
+        "filter.AccelNoise",
+        lambda: filter.AccelNoise(function=types.FunctionSelector.DEFAULT, noise=[1024.0, -0.0, 1.5]),
+    ),
+    ("filter.AccelNoiseResponse", lambda: filter.AccelNoiseResponse(noise=[-2.25, 0.375, 1024.0])),
+    ("filter.GyroNoise", lambda: filter.GyroNoise(function=types.FunctionSelector.DEFAULT, noise=[-0.0, 1.5, -2.25])),
+    ("filter.GyroNoiseResponse", lambda: filter.GyroNoiseResponse(noise=[0.375, 1024.0, -0.0])),
+    (
+        "filter.AccelBiasModel",
+        lambda: filter.AccelBiasModel(
+            function=types.FunctionSelector.DEFAULT, beta=[1.5, -2.25, 0.375], noise=[1024.0, -0.0, 1.5]
+        ),
+    ),
+    (
+        "filter.AccelBiasModelResponse",
+        lambda: filter.AccelBiasModelResponse(beta=[-2.25, 0.375, 1024.0], noise=[-0.0, 1.5, -2.25]),
+    ),
+    (
+        "filter.GyroBiasModel",
+        lambda: filter.GyroBiasModel(
+            function=types.FunctionSelector.DEFAULT, beta=[0.375, 1024.0, -0.0], noise=[1.5, -2.25, 0.375]
+        ),
+    ),
+    (
+        "filter.GyroBiasModelResponse",
+        lambda: filter.GyroBiasModelResponse(beta=[1024.0, -0.0, 1.5], noise=[-2.25, 0.375, 1024.0]),
+    ),
+    (
+        "filter.ZuptControl",
+        lambda: filter.ZuptControl(function=types.FunctionSelector.DEFAULT, enable=111, threshold=1.5),
+    ),
+    ("filter.ZuptControlResponse", lambda: filter.ZuptControlResponse(enable=185, threshold=0.375)),
+    (
+        "filter.ExternalHeadingUpdateWithTime",
+        lambda: filter.ExternalHeadingUpdateWithTime(
+            gps_tow=123.456,
+            gps_week=45,
+            heading=1.5,
+            heading_uncertainty=-2.25,
+            type=types.ExternalHeadingType.MAGNETIC_HEADING,
+        ),
+    ),
+    ("gnss.ReceiverInfo", lambda: gnss.ReceiverInfo()),
+    (
+        "gnss.ReceiverInfoResponse",
+        lambda: gnss.ReceiverInfoResponse(
+            num_receivers=2,
+            receiver_info=[
+                types.GnssReceiverInfoEntry(
+                    receiver_id=230,
+                    mip_data_descriptor_set=16,
+                    description=b"pqr\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                ),
+                types.GnssReceiverInfoEntry(
+                    receiver_id=127,
+                    mip_data_descriptor_set=164,
+                    description=b"tuv\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                ),
+            ],
+        ),
+    ),
+    (
+        "gnss.SignalConfiguration",
+        lambda: gnss.SignalConfiguration(
+            function=types.FunctionSelector.DEFAULT,
+            gps_enable=types.GnssGpsSignals(0x4),
+            glonass_enable=types.GnssGlonassSignals(0x2),
+            galileo_enable=types.GnssGalileoSignals(0x2),
+            beidou_enable=types.GnssBeidouSignals(0x4),
+            reserved=[135, 172, 209, 246],
+        ),
+    ),
+    (
+        "gnss.SignalConfigurationResponse",
+        lambda: gnss.SignalConfigurationResponse(
+            gps_enable=types.GnssGpsSignals(0x2),
+            glonass_enable=types.GnssGlonassSignals(0x2),
+            galileo_enable=types.GnssGalileoSignals(0x1),
+            beidou_enable=types.GnssBeidouSignals(0x2),
+            reserved=[180, 217, 3, 40],
+        ),
+    ),
+    (
+        "gnss.SpartnConfiguration",
+        lambda: gnss.SpartnConfiguration(
+            function=types.FunctionSelector.DEFAULT,
+            enable=77,
+            type=types.SpartnConnectionType.NETWORK,
+            current_key_tow=151,
+            current_key_week=188,
+            current_key=b"opq\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            next_key_tow=11,
+            next_key_week=48,
+            next_key=b"rst\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+        ),
+    ),
+    (
+        "gnss.SpartnConfigurationResponse",
+        lambda: gnss.SpartnConfigurationResponse(
+            enable=122,
+            type=types.SpartnConnectionType.NONE,
+            current_key_tow=196,
+            current_key_week=233,
+            current_key=b"wxy\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            next_key_tow=56,
+            next_key_week=93,
+            next_key=b"zab\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+        ),
+    ),
+    (
+        "aiding.FrameConfig",
+        lambda: aiding.FrameConfig(
+            function=types.FunctionSelector.DEFAULT,
+            frame_id=167,
+            format=types.AidingFrameFormat.EULER,
+            tracking_enabled=True,
+            translation=[1.5, -2.25, 0.375],
+            rotation=types.AidingFrameEuler(euler=[1024.0, -0.0, 1.5]),
+        ),
+    ),
+    (
+        "aiding.FrameConfigResponse",
+        lambda: aiding.FrameConfigResponse(
+            frame_id=212,
+            format=types.AidingFrameFormat.EULER,
+            tracking_enabled=True,
+            translation=[1024.0, -0.0, 1.5],
+            rotation=types.AidingFrameEuler(euler=[-2.25, 0.375, 1024.0]),
+        ),
+    ),
+    (
+        "aiding.EchoControl",
+        lambda: aiding.EchoControl(function=types.FunctionSelector.DEFAULT, mode=types.AidingEchoMode.RESPONSE),
+    ),
+    ("aiding.EchoControlResponse", lambda: aiding.EchoControlResponse(mode=types.AidingEchoMode.SUPPRESS_ACK)),
+    (
+        "aiding.EcefPosition",
+        lambda: aiding.EcefPosition(
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=154, nanoseconds=191),
+            frame_id=228,
+            position=[-2.5e-310, 1e16, 123.456],
+            uncertainty=[-0.0, 1.5, -2.25],
+            valid_flags=types.AidingVectorValidFlags(0x1),
+        ),
+    ),
+    (
+        "aiding.LlhPosition",
+        lambda: aiding.LlhPosition(
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=96, nanoseconds=133),
+            frame_id=170,
+            latitude=123.456,
+            longitude=-0.0,
+            height=0.1,
+            uncertainty=[-2.25, 0.375, 1024.0],
+            valid_flags=types.AidingLlhValidFlags(0x1),
+        ),
+    ),
+    (
+        "aiding.HeightAboveEllipsoid",
+        lambda: aiding.HeightAboveEllipsoid(
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=38, nanoseconds=75),
+            frame_id=112,
+            height=1.5,
+            uncertainty=-2.25,
+            valid_flags=223,
+        ),
+    ),
+    (
+        "aiding.EcefVelocity",
+        lambda: aiding.EcefVelocity(
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=83, nanoseconds=120),
+            frame_id=157,
+            velocity=[1024.0, -0.0, 1.5],
+            uncertainty=[-2.25, 0.375, 1024.0],
+            valid_flags=types.AidingVectorValidFlags(0x4),
+        ),
+    ),
+    (
+        "aiding.NedVelocity",
+        lambda: aiding.NedVelocity(
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=25, nanoseconds=62),
+            frame_id=99,
+            velocity=[1.5, -2.25, 0.375],
+            uncertainty=[1024.0, -0.0, 1.5],
+            valid_flags=types.AidingVectorValidFlags(0x4),
+        ),
+    ),
+    (
+        "aiding.BodyFrameVelocity",
+        lambda: aiding.BodyFrameVelocity(
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=218, nanoseconds=4),
+            frame_id=41,
+            velocity=[0.375, 1024.0, -0.0],
+            uncertainty=[1.5, -2.25, 0.375],
+            valid_flags=types.AidingVectorValidFlags(0x4),
+        ),
+    ),
+    (
+        "aiding.TrueHeading",
+        lambda: aiding.TrueHeading(
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=160, nanoseconds=197),
+            frame_id=234,
+            heading=-0.0,
+            uncertainty=1.5,
+            valid_flags=94,
+        ),
+    ),
+    (
+        "aiding.MagneticField",
+        lambda: aiding.MagneticField(
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=205, nanoseconds=242),
+            frame_id=28,
+            magnetic_field=[0.375, 1024.0, -0.0],
+            uncertainty=[1.5, -2.25, 0.375],
+            valid_flags=types.AidingVectorValidFlags(0x2),
+        ),
+    ),
+    (
+        "aiding.Pressure",
+        lambda: aiding.Pressure(
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=147, nanoseconds=184),
+            frame_id=221,
+            pressure=-0.0,
+            uncertainty=1.5,
+            valid_flags=81,
+        ),
+    ),
+    (
+        "system.CommunicationMode",
+        lambda: system.CommunicationMode(
+            function=types.FunctionSelector.DEFAULT, mode=types.SystemCommMode.SENSOR_DIRECT
+        ),
+    ),
+    (
+        "system.CommunicationModeResponse",
+        lambda: system.CommunicationModeResponse(mode=types.SystemCommMode.GNSS_DIRECT),
+    ),
     ("sensor.ScaledAccel", lambda: sensor.ScaledAccel(scaled_accel=[-0.0, 1.5, -2.25])),
     ("sensor.ScaledGyro", lambda: sensor.ScaledGyro(scaled_gyro=[0.375, 1024.0, -0.0])),
     ("sensor.ScaledMag", lambda: sensor.ScaledMag(scaled_mag=[1.5, -2.25, 0.375])),
-    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=60, ack_code=types.AckCode.OK)),
-    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=134, mode=types.ActionGpioMode.ACTIVE_LOW)),
+    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=23, ack_code=types.AckCode.COMMAND_TIMEOUT)),
+    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=97, mode=types.ActionGpioMode.DISABLED)),
     (
         "types.MessageParams",
-        lambda: types.MessageParams(desc_set=208, decimation=245, num_fields=2, descriptors=[31, 68]),
+        lambda: types.MessageParams(desc_set=171, decimation=208, num_fields=2, descriptors=[245, 31]),
     ),
-    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.GPIO, trigger_id=142)),
-    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=179, input_triggers=[216, 2, 39, 76])),
+    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.MESSAGE, trigger_id=105)),
+    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[1024.0, -0.0, 1.5])),
+    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[-2.25, 0.375, 1024.0, -0.0])),
+    (
+        "types.AidingTime",
+        lambda: types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=187, nanoseconds=224),
+    ),
+    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=10, input_triggers=[47, 84, 121, 158])),
     (
         "types.DeviceInfo",
         lambda: types.DeviceInfo(
-            firmware_version=113,
+            firmware_version=195,
             model_name=b"vwx             ",
             model_number=b"wxy             ",
             serial_number=b"xyz             ",
@@ -155,24 +484,38 @@ SAMPLES = [
         ),
     ),
     (
-        "types.ThresholdParams",
-        lambda: types.ThresholdParams(
-            desc_set=84,
-            field_desc=121,
-            param_id=158,
-            type=types.ThresholdType.INTERVAL,
-            low_thres=123.456,
-            high_thres=-0.0,
+        "types.GnssReceiverInfoEntry",
+        lambda: types.GnssReceiverInfoEntry(
+            receiver_id=166,
+            mip_data_descriptor_set=203,
+            description=b"cde\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
-    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=55, mode=types.TriggerGpioMode.EDGE)),
+    (
+        "types.ThresholdParams",
+        lambda: types.ThresholdParams(
+            desc_set=26,
+            field_desc=63,
+            param_id=100,
+            type=types.ThresholdType.WINDOW,
+            low_thres=-2.5e-310,
+            high_thres=1e16,
+        ),
+    ),
+    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=248, mode=types.TriggerGpioMode.WHILE_LOW)),
     (
         "types.TriggerStatusEntry",
-        lambda: types.TriggerStatusEntry(type=types.TriggerType.NONE, status=types.TriggerStatus(0x4)),
+        lambda: types.TriggerStatusEntry(type=types.TriggerType.COMBINATION, status=types.TriggerStatus(0x2)),
     ),
 ]
 
 BITFIELD_MEMBERS = [
+    (types.AidingLlhValidFlags, "latitude", "LATITUDE", 0, 1, 0x1),
+    (types.AidingLlhValidFlags, "longitude", "LONGITUDE", 1, 1, 0x2),
+    (types.AidingLlhValidFlags, "height", "HEIGHT", 2, 1, 0x4),
+    (types.AidingVectorValidFlags, "x", "X", 0, 1, 0x1),
+    (types.AidingVectorValidFlags, "y", "Y", 1, 1, 0x2),
+    (types.AidingVectorValidFlags, "z", "Z", 2, 1, 0x4),
     (types.Cv7BitFlags, "general_hardware_fault", "GENERAL_HARDWARE_FAULT", 0, 1, 0x1),
     (types.Cv7BitFlags, "general_firmware_fault", "GENERAL_FIRMWARE_FAULT", 1, 1, 0x2),
     (types.Cv7BitFlags, "timing_overload", "TIMING_OVERLOAD", 2, 1, 0x4),
@@ -190,6 +533,25 @@ BITFIELD_MEMBERS = [
     (types.Cv7BitFlags, "filter_solution_fault", "FILTER_SOLUTION_FAULT", 22, 1, 0x400000),
     (types.Cv7BitFlags, "general_filter_fault", "GENERAL_FILTER_FAULT", 23, 1, 0x800000),
     (types.Cv7BitFlags, "reserved", "RESERVED", 24, 8, 0xFF000000),
+    (types.EstimationControlFlags, "gyro_bias", "GYRO_BIAS", 0, 1, 0x1),
+    (types.EstimationControlFlags, "accel_bias", "ACCEL_BIAS", 1, 1, 0x2),
+    (types.EstimationControlFlags, "gyro_scale_factor", "GYRO_SCALE_FACTOR", 2, 1, 0x4),
+    (types.EstimationControlFlags, "accel_scale_factor", "ACCEL_SCALE_FACTOR", 3, 1, 0x8),
+    (types.EstimationControlFlags, "antenna_offset", "ANTENNA_OFFSET", 4, 1, 0x10),
+    (types.EstimationControlFlags, "hard_iron_auto_cal", "HARD_IRON_AUTO_CAL", 5, 1, 0x20),
+    (types.EstimationControlFlags, "soft_iron_auto_cal", "SOFT_IRON_AUTO_CAL", 6, 1, 0x40),
+    (types.EstimationControlFlags, "reserved", "RESERVED", 7, 9, 0xFF80),
+    (types.GnssBeidouSignals, "b1", "B1", 0, 1, 0x1),
+    (types.GnssBeidouSignals, "b2", "B2", 1, 1, 0x2),
+    (types.GnssBeidouSignals, "b2a", "B2A", 2, 1, 0x4),
+    (types.GnssGalileoSignals, "e1", "E1", 0, 1, 0x1),
+    (types.GnssGalileoSignals, "e5b", "E5B", 1, 1, 0x2),
+    (types.GnssGalileoSignals, "e5a", "E5A", 2, 1, 0x4),
+    (types.GnssGlonassSignals, "l1of", "L1OF", 0, 1, 0x1),
+    (types.GnssGlonassSignals, "l2of", "L2OF", 1, 1, 0x2),
+    (types.GnssGpsSignals, "l1ca", "L1CA", 0, 1, 0x1),
+    (types.GnssGpsSignals, "l2c", "L2C", 1, 1, 0x2),
+    (types.GnssGpsSignals, "l5", "L5", 2, 1, 0x4),
     (types.Gx5BitFlags, "processor_wdt_reset", "PROCESSOR_WDT_RESET", 0, 1, 0x1),
     (types.Gx5BitFlags, "imu_communication_fault", "IMU_COMMUNICATION_FAULT", 8, 1, 0x100),
     (types.Gx5BitFlags, "magnetometer_fault", "MAGNETOMETER_FAULT", 9, 1, 0x200),

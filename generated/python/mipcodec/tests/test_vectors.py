@@ -7,6 +7,282 @@ from mipcodec import decode_bytes, decode_stream, encode_lines
 
 CASES = [
     {
+        "name": "frame_config_write_antenna_offset",
+        "hex": "7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:13",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":1,"frame_id":1,"format":1,"tracking_enabled":true,"translation":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853],"rotation":{"euler":[0.0,0.0,0.0]}}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_write_notes_example",
+        "hex": "7565131e1e0101010100000000003f80000000000000000000000000000000000000ecef",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:38",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":1,"frame_id":1,"format":1,"tracking_enabled":false,"translation":[0.0,1.0,0.0],"rotation":{"euler":[0.0,0.0,0.0]}}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_write_pitch_down",
+        "hex": "7565131e1e01010101003f333333000000000000000000000000bfc8f5c300000000448e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:60",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":1,"frame_id":1,"format":1,"tracking_enabled":false,"translation":[0.699999988079071,0.0,0.0],"rotation":{"euler":[0.0,-1.5700000524520874,0.0]}}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_write_quaternion",
+        "hex": "756513222201010202010000000000000000becccccd3f8000000000000000000000000000001a06",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:82",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":1,"frame_id":2,"format":2,"tracking_enabled":true,"translation":[0.0,0.0,-0.4000000059604645],"rotation":{"quaternion":[1.0,0.0,0.0,0.0]}}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_read_euler",
+        "hex": "756513050501020101fc0e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:106",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":2,"frame_id":1,"format":1}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_read_euler_reply",
+        "hex": "7565132104f101001d81010101bea3d70a3de147aebf23d70a000000000000000000000000bd93",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:118",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}},{"descriptor":129,"name":"frame_config_response","values":{"frame_id":1,"format":1,"tracking_enabled":true,"translation":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853],"rotation":{"euler":[0.0,0.0,0.0]}}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_read_quaternion",
+        "hex": "756513050501020202fe11",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:140",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":2,"frame_id":2,"format":2}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_read_quaternion_reply",
+        "hex": "7565132504f1010021810202010000000000000000becccccd3f3504f300000000000000003f3504f3a89c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:150",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}},{"descriptor":129,"name":"frame_config_response","values":{"frame_id":2,"format":2,"tracking_enabled":true,"translation":[0.0,0.0,-0.4000000059604645],"rotation":{"quaternion":[0.7071067690849304,0.0,0.0,0.7071067690849304]}}}]}'
+        ],
+    },
+    {
+        "name": "frame_config_save",
+        "hex": "7565130404010301fa0b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:172",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":1,"name":"frame_config","values":{"function":3,"frame_id":1}}]}'
+        ],
+    },
+    {
+        "name": "echo_control_write_suppress_ack",
+        "hex": "75651304041f01001560",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:182",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":31,"name":"echo_control","values":{"function":1,"mode":0}}]}'
+        ],
+    },
+    {
+        "name": "echo_control_write_response",
+        "hex": "75651304041f01021762",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:192",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":31,"name":"echo_control","values":{"function":1,"mode":2}}]}'
+        ],
+    },
+    {
+        "name": "echo_control_read",
+        "hex": "75651303031f021445",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:202",
+        "expect": ['{"offset":0,"set":19,"fields":[{"descriptor":31,"name":"echo_control","values":{"function":2}}]}'],
+    },
+    {
+        "name": "echo_control_read_reply",
+        "hex": "7565130704f11f00039f01ab81",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:212",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":31,"ack_code":0}},{"descriptor":159,"name":"echo_control_response","values":{"mode":1}}]}'
+        ],
+    },
+    {
+        "name": "echo_control_default",
+        "hex": "75651303031f051748",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:224",
+        "expect": ['{"offset":0,"set":19,"fields":[{"descriptor":31,"name":"echo_control","values":{"function":5}}]}'],
+    },
+    {
+        "name": "ecef_position_measurement",
+        "hex": "7565133333210200112210f47de9811501412e848100000000c151edd810000000414f47d010000000402000004020000040a0000000076337",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:234",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":33,"name":"ecef_position","values":{"time":{"timebase":2,"reserved":0,"nanoseconds":1234567890123456789},"frame_id":1,"position":[1000000.5,-4700000.25,4100000.125],"uncertainty":[2.5,2.5,5.0],"valid_flags":7}}]}'
+        ],
+    },
+    {
+        "name": "llh_position_measurement",
+        "hex": "7565133333220200136dcc951d8c0000014046380000000000c052440000000000405e2000000000003fc000003fc000004040000000075911",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:260",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":34,"name":"llh_position","values":{"time":{"timebase":2,"reserved":0,"nanoseconds":1400000000000000000},"frame_id":1,"latitude":44.4375,"longitude":-73.0625,"height":120.5,"uncertainty":[1.5,1.5,3.0],"valid_flags":7}}]}'
+        ],
+    },
+    {
+        "name": "llh_position_height_only",
+        "hex": "75651333332201000000000df84758000100000000000000000000000000000000405e20000000000000000000000000004040000000045dfd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:287",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":34,"name":"llh_position","values":{"time":{"timebase":1,"reserved":0,"nanoseconds":60000000000},"frame_id":1,"latitude":0.0,"longitude":0.0,"height":120.5,"uncertainty":[0.0,0.0,3.0],"valid_flags":4}}]}'
+        ],
+    },
+    {
+        "name": "height_above_ellipsoid_measurement",
+        "hex": "7565131717230100000000012a05f20001437a4000400000000001a04e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:314",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":35,"name":"height_above_ellipsoid","values":{"time":{"timebase":1,"reserved":0,"nanoseconds":5000000000},"frame_id":1,"height":250.25,"uncertainty":2.0,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "ecef_velocity_measurement",
+        "hex": "7565132727280200136dcc953b596500013fc00000be800000000000003dcccccd3dcccccd3dcccccd00076a41",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:335",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":40,"name":"ecef_velocity","values":{"time":{"timebase":2,"reserved":0,"nanoseconds":1400000000500000000},"frame_id":1,"velocity":[1.5,-0.25,0.0],"uncertainty":[0.10000000149011612,0.10000000149011612,0.10000000149011612],"valid_flags":7}}]}'
+        ],
+    },
+    {
+        "name": "ned_velocity_measurement_time_of_arrival",
+        "hex": "756513272729030000000000000000000141200000c02000003e0000003d4ccccd3d4ccccd3dcccccd0003d0c1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:356",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":41,"name":"ned_velocity","values":{"time":{"timebase":3,"reserved":0,"nanoseconds":0},"frame_id":1,"velocity":[10.0,-2.5,0.125],"uncertainty":[0.05000000074505806,0.05000000074505806,0.10000000149011612],"valid_flags":3}}]}'
+        ],
+    },
+    {
+        "name": "body_frame_velocity_example",
+        "hex": "75651327272a0100000000000002693002406fae1400000000000000003df5c28f3df5c28f3df5c28f000300a3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:377",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":42,"name":"body_frame_velocity","values":{"time":{"timebase":1,"reserved":0,"nanoseconds":158000},"frame_id":2,"velocity":[3.744999885559082,0.0,0.0],"uncertainty":[0.11999999731779099,0.11999999731779099,0.11999999731779099],"valid_flags":3}}]}'
+        ],
+    },
+    {
+        "name": "body_frame_velocity_nack_invalid_parameter",
+        "hex": "7565130404f12a03132b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:403",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":42,"ack_code":3}}]}'
+        ],
+    },
+    {
+        "name": "true_heading_measurement",
+        "hex": "75651317173101000000000077359400013fc90fdb3c8f5c290001d181",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:415",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":49,"name":"true_heading","values":{"time":{"timebase":1,"reserved":0,"nanoseconds":2000000000},"frame_id":1,"heading":1.5707963705062866,"uncertainty":0.017500000074505806,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "magnetic_field_example",
+        "hex": "75651327273201000000000000026930033ee6e9793eb0a3d73ecd4fdf3cfdf3b63cfdf3b63cfdf3b60007e0ec",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:435",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":50,"name":"magnetic_field","values":{"time":{"timebase":1,"reserved":0,"nanoseconds":158000},"frame_id":3,"magnetic_field":[0.45100000500679016,0.3449999988079071,0.4009999930858612],"uncertainty":[0.03099999949336052,0.03099999949336052,0.03099999949336052],"valid_flags":7}}]}'
+        ],
+    },
+    {
+        "name": "magnetic_field_ack",
+        "hex": "7565130404f132001838",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:459",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":50,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "pressure_measurement",
+        "hex": "756513171733010000000000b2d05e0000447d50003f000000000180c0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:469",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":51,"name":"pressure","values":{"time":{"timebase":1,"reserved":0,"nanoseconds":3000000000},"frame_id":0,"pressure":1013.25,"uncertainty":0.5,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "llh_position_and_ned_velocity_one_packet",
+        "hex": "7565135a33220200136dcc951d8c0000014046380000000000c052440000000000405e2000000000003fc000003fc0000040400000000727290200136dcc951d8c00000141200000c02000003e0000003d4ccccd3d4ccccd3dcccccd0007c9ab",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:489",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":34,"name":"llh_position","values":{"time":{"timebase":2,"reserved":0,"nanoseconds":1400000000000000000},"frame_id":1,"latitude":44.4375,"longitude":-73.0625,"height":120.5,"uncertainty":[1.5,1.5,3.0],"valid_flags":7}},{"descriptor":41,"name":"ned_velocity","values":{"time":{"timebase":2,"reserved":0,"nanoseconds":1400000000000000000},"frame_id":1,"velocity":[10.0,-2.5,0.125],"uncertainty":[0.05000000074505806,0.05000000074505806,0.10000000149011612],"valid_flags":7}}]}'
+        ],
+    },
+    {
+        "name": "llh_position_and_ned_velocity_acks",
+        "hex": "7565130804f1220004f129002a91",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/aiding.yaml:526",
+        "expect": [
+            '{"offset":0,"set":19,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":41,"ack_code":0}}]}'
+        ],
+    },
+    {
         "name": "ping_command",
         "hex": "756501020201e0c6",
         "device": None,
@@ -749,6 +1025,966 @@ CASES = [
         ],
     },
     {
+        "name": "reset_filter_command",
+        "hex": "75650d020201ecf6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:10",
+        "expect": ['{"offset":0,"set":13,"fields":[{"descriptor":1,"name":"reset_filter","values":{}}]}'],
+    },
+    {
+        "name": "reset_filter_reply",
+        "hex": "75650d0404f10100e1b2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:20",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "reset_and_run_filter_one_packet",
+        "hex": "75650d0402010205f5e1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:28",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":1,"name":"reset_filter","values":{}},{"descriptor":5,"name":"run_filter","values":{}}]}'
+        ],
+    },
+    {
+        "name": "set_initial_attitude_zero",
+        "hex": "75650d0e0e02000000000000000000000000056f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:43",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":2,"name":"set_initial_attitude","values":{"roll":0.0,"pitch":0.0,"heading":0.0}}]}'
+        ],
+    },
+    {
+        "name": "set_initial_attitude_copy_paste_published",
+        "hex": "75650d0e0e020000000000000000000000000000056f",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:51",
+        "expect": ['{"offset":0,"skipped":"75650d0e0e020000000000000000000000000000056f"}'],
+    },
+    {
+        "name": "set_initial_attitude_reply",
+        "hex": "75650d0404f10200e2b4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:64",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":2,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "set_initial_attitude_getting_started",
+        "hex": "75650d0e0e02bae3ed9b3c7d6ddfbf855cf5c409",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:74",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":2,"name":"set_initial_attitude","values":{"roll":-0.001738953753374517,"pitch":0.01546808984130621,"heading":-1.04189932346344}}]}'
+        ],
+    },
+    {
+        "name": "set_initial_attitude_getting_started_table_published",
+        "hex": "75650d060602bae3ed9b3c7d6ddfbf855cf5c409",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:87",
+        "expect": ['{"offset":0,"skipped":"75650d060602bae3ed9b3c7d6ddfbf855cf5c409"}'],
+    },
+    {
+        "name": "set_initial_heading_command",
+        "hex": "75650d06060300000000f6e4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:100",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":3,"name":"set_initial_heading","values":{"heading":0.0}}]}'
+        ],
+    },
+    {
+        "name": "set_initial_heading_reply",
+        "hex": "75650d0404f10300e3b6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:110",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":3,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "set_initial_heading_half_pi",
+        "hex": "75650d0606033fc90fdbe834",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:118",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":3,"name":"set_initial_heading","values":{"heading":1.5707963705062866}}]}'
+        ],
+    },
+    {
+        "name": "run_filter_command",
+        "hex": "75650d020205f0fa",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:130",
+        "expect": ['{"offset":0,"set":13,"fields":[{"descriptor":5,"name":"run_filter","values":{}}]}'],
+    },
+    {
+        "name": "run_filter_reply",
+        "hex": "75650d0404f10500e5ba",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:139",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":5,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "vehicle_dynamics_mode_write",
+        "hex": "75650d04041001010110",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:149",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":16,"name":"vehicle_dynamics_mode","values":{"function":1,"mode":1}}]}'
+        ],
+    },
+    {
+        "name": "vehicle_dynamics_mode_copy_paste_published",
+        "hex": "75650c04041001010110",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:159",
+        "expect": ['{"offset":0,"skipped":"75650c04041001010110"}'],
+    },
+    {
+        "name": "vehicle_dynamics_mode_reply",
+        "hex": "75650d0404f11000f0d0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:170",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "vehicle_dynamics_mode_write_airborne_high_g",
+        "hex": "75650d04041001040413",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:178",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":16,"name":"vehicle_dynamics_mode","values":{"function":1,"mode":4}}]}'
+        ],
+    },
+    {
+        "name": "vehicle_dynamics_mode_read",
+        "hex": "75650d03031002ff09",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:187",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":16,"name":"vehicle_dynamics_mode","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "vehicle_dynamics_mode_read_reply",
+        "hex": "75650d0704f1100003800278c3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:196",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":0}},{"descriptor":128,"name":"vehicle_dynamics_mode_response","values":{"mode":2}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_transform_write",
+        "hex": "75650d0f0f11010000000000000000000000001772",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:210",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":17,"name":"sensor_to_vehicle_transform","values":{"function":1,"roll":0.0,"pitch":0.0,"yaw":0.0}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_transform_copy_paste_published",
+        "hex": "75650d0f0f1101000000000000000000001772",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:218",
+        "expect": ['{"offset":0,"skipped":"75650d0f0f1101000000000000000000001772"}'],
+    },
+    {
+        "name": "sensor_to_vehicle_transform_reply",
+        "hex": "75650d0404f11100f1d2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:230",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_transform_write_rotated",
+        "hex": "75650d0f0f110140490fdb00000000bfc90fdbfc2e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:238",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":17,"name":"sensor_to_vehicle_transform","values":{"function":1,"roll":3.1415927410125732,"pitch":0.0,"yaw":-1.5707963705062866}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_transform_read",
+        "hex": "75650d03031102000b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:249",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":17,"name":"sensor_to_vehicle_transform","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_transform_read_reply",
+        "hex": "75650d1204f111000e8100000000000000003fc90fdb80ab",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:258",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":129,"name":"sensor_to_vehicle_transform_response","values":{"roll":0.0,"pitch":0.0,"yaw":1.5707963705062866}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_offset_write",
+        "hex": "75650d0f0f12010000000000000000000000001880",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:271",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":18,"name":"sensor_to_vehicle_offset","values":{"function":1,"offset":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_offset_reply",
+        "hex": "75650d0404f11200f2d4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:281",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":18,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_offset_read_reply",
+        "hex": "75650d1204f112000e823e800000bf0000003f800000cc54",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:289",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":18,"ack_code":0}},{"descriptor":130,"name":"sensor_to_vehicle_offset_response","values":{"offset":[0.25,-0.5,1.0]}}]}'
+        ],
+    },
+    {
+        "name": "antenna_offset_write",
+        "hex": "75650d0f0f1301000000000000000000000000198e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:302",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":19,"name":"antenna_offset","values":{"function":1,"offset":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "antenna_offset_reply",
+        "hex": "75650d0404f11300f3d6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:312",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":19,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "antenna_offset_write_cv7_example",
+        "hex": "75650d0f0f1301bea3d70a3de147aebf23d70a3173",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:320",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":19,"name":"antenna_offset","values":{"function":1,"offset":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}'
+        ],
+    },
+    {
+        "name": "antenna_offset_read_reply",
+        "hex": "75650d1204f113000e83bea3d70a3de147aebf23d70aaa7a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:331",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":19,"ack_code":0}},{"descriptor":131,"name":"antenna_offset_response","values":{"offset":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}'
+        ],
+    },
+    {
+        "name": "estimation_control_write_all",
+        "hex": "75650d05051401ffff0427",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:346",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":20,"name":"estimation_control","values":{"function":1,"flags":65535}}]}'
+        ],
+    },
+    {
+        "name": "estimation_control_reply",
+        "hex": "75650d0404f11400f4d8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:356",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":20,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "estimation_control_write_gyro_bias",
+        "hex": "75650d050514010001072b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:364",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":20,"name":"estimation_control","values":{"function":1,"flags":1}}]}'
+        ],
+    },
+    {
+        "name": "estimation_control_read_reply",
+        "hex": "75650d0804f1140004840063e3cb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:373",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":20,"ack_code":0}},{"descriptor":132,"name":"estimation_control_response","values":{"flags":99}}]}'
+        ],
+    },
+    {
+        "name": "gnss_source_control_write_external",
+        "hex": "75650d04041501020720",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:388",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":21,"name":"gnss_source_control","values":{"function":1,"source":2}}]}'
+        ],
+    },
+    {
+        "name": "gnss_source_control_reply",
+        "hex": "75650d0404f11500f5da",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:398",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":21,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_source_control_write_internal_2",
+        "hex": "75650d04041501040922",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:406",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":21,"name":"gnss_source_control","values":{"function":1,"source":4}}]}'
+        ],
+    },
+    {
+        "name": "gnss_source_control_save",
+        "hex": "75650d030315030514",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:415",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":21,"name":"gnss_source_control","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "gnss_source_control_read_reply_internal_1",
+        "hex": "75650d0704f1150003860384e9",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:424",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":21,"ack_code":0}},{"descriptor":134,"name":"gnss_source_control_response","values":{"source":3}}]}'
+        ],
+    },
+    {
+        "name": "gnss_source_control_read_reply_internal",
+        "hex": "75650d0704f1150003860182e7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:435",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":21,"ack_code":0}},{"descriptor":134,"name":"gnss_source_control_response","values":{"source":1}}]}'
+        ],
+    },
+    {
+        "name": "external_gnss_update_example",
+        "hex": "75650d484816000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000003f0000003f0000003f0000003dcccccd3dcccccd3dcccccd308a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:448",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":22,"name":"external_gnss_update","values":{"gps_tow":0.0,"gps_week":0,"latitude":0.0,"longitude":0.0,"height":0.0,"velocity":[0.0,0.0,0.0],"position_uncertainty":[0.5,0.5,0.5],"velocity_uncertainty":[0.10000000149011612,0.10000000149011612,0.10000000149011612]}}]}'
+        ],
+    },
+    {
+        "name": "external_gnss_update_reply",
+        "hex": "75650d0404f11600f6dc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:478",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":22,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "external_gnss_update_values",
+        "hex": "75650d484816411518010000000008fc4046380000000000c0524c0000000000405e2000000000003fc00000c01000003e0000003f0000003f0000003f8000003dcccccd3dcccccd3e4ccccd8b7a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:486",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":22,"name":"external_gnss_update","values":{"gps_tow":345600.25,"gps_week":2300,"latitude":44.4375,"longitude":-73.1875,"height":120.5,"velocity":[1.5,-2.25,0.125],"position_uncertainty":[0.5,0.5,1.0],"velocity_uncertainty":[0.10000000149011612,0.10000000149011612,0.20000000298023224]}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_example",
+        "hex": "75650d0b0b173dcccccd3dcccccd015934",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:518",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":23,"name":"external_heading_update","values":{"heading":0.10000000149011612,"heading_uncertainty":0.10000000149011612,"type":1}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_reply",
+        "hex": "75650d0404f11700f7de",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:529",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":23,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_magnetic",
+        "hex": "75650d0b0b17c02000003d4ccccd02180e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:537",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":23,"name":"external_heading_update","values":{"heading":-2.5,"heading_uncertainty":0.05000000074505806,"type":2}}]}'
+        ],
+    },
+    {
+        "name": "heading_update_control_write_magnetometer",
+        "hex": "75650d04041801010928",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:549",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":24,"name":"heading_update_control","values":{"function":1,"source":1}}]}'
+        ],
+    },
+    {
+        "name": "heading_update_control_reply",
+        "hex": "75650d0404f11800f8e0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:559",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":24,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "heading_update_control_read",
+        "hex": "75650d030318020719",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:567",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":24,"name":"heading_update_control","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "heading_update_control_read_reply",
+        "hex": "75650d0704f118000387078cfe",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:576",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":24,"ack_code":0}},{"descriptor":135,"name":"heading_update_control_response","values":{"source":7}}]}'
+        ],
+    },
+    {
+        "name": "auto_init_control_write_enable",
+        "hex": "75650d04041901010a2b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:589",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":25,"name":"auto_init_control","values":{"function":1,"enable":1}}]}'
+        ],
+    },
+    {
+        "name": "auto_init_control_reply",
+        "hex": "75650d0404f11900f9e2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:599",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":25,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "auto_init_control_read",
+        "hex": "75650d03031902081b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:607",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":25,"name":"auto_init_control","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "auto_init_control_read_reply",
+        "hex": "75650d0704f1190003880087fe",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:616",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":25,"ack_code":0}},{"descriptor":136,"name":"auto_init_control_response","values":{"enable":0}}]}'
+        ],
+    },
+    {
+        "name": "accel_noise_write",
+        "hex": "75650d0f0f1a013ca3d70a3ca3d70a3ca3d70a60a3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:627",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":26,"name":"accel_noise","values":{"function":1,"noise":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}'
+        ],
+    },
+    {
+        "name": "accel_noise_copy_paste_published",
+        "hex": "75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:635",
+        "expect": ['{"offset":0,"skipped":"75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3"}'],
+    },
+    {
+        "name": "accel_noise_reply",
+        "hex": "75650d0404f11a00fae4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:648",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":26,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "accel_noise_read_reply",
+        "hex": "75650d1204f11a000e893ca3d70a3ca3d70a3ca3d70adf06",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:656",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":26,"ack_code":0}},{"descriptor":137,"name":"accel_noise_response","values":{"noise":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_noise_write",
+        "hex": "75650d0f0f1b013a0d4bad3a0d4bad3a0d4baddee8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:671",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":27,"name":"gyro_noise","values":{"function":1,"noise":[0.0005389999714680016,0.0005389999714680016,0.0005389999714680016]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_noise_reply",
+        "hex": "75650d0404f11b00fbe6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:686",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":27,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gyro_noise_default",
+        "hex": "75650d03031b050d22",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:694",
+        "expect": ['{"offset":0,"set":13,"fields":[{"descriptor":27,"name":"gyro_noise","values":{"function":5}}]}'],
+    },
+    {
+        "name": "gyro_noise_read_reply",
+        "hex": "75650d1204f11b000e8a386212af386212af386212afb23f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:703",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":27,"ack_code":0}},{"descriptor":138,"name":"gyro_noise_response","values":{"noise":[5.3899999329587445e-05,5.3899999329587445e-05,5.3899999329587445e-05]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_model_example",
+        "hex": "75650d1b1b1c013c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d4952d02c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:718",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":28,"name":"accel_bias_model","values":{"function":1,"beta":[0.009999999776482582,0.009999999776482582,0.009999999776482582],"noise":[0.0006000000284984708,0.0006000000284984708,0.0006000000284984708]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_model_reply",
+        "hex": "75650d0404f11c00fce8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:733",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":28,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_model_read",
+        "hex": "75650d03031c020b21",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:741",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":28,"name":"accel_bias_model","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_model_read_reply",
+        "hex": "75650d1e04f11c001a8b3c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d495251d1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:750",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":28,"ack_code":0}},{"descriptor":139,"name":"accel_bias_model_response","values":{"beta":[0.009999999776482582,0.009999999776482582,0.009999999776482582],"noise":[0.0006000000284984708,0.0006000000284984708,0.0006000000284984708]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_model_example",
+        "hex": "75650d1b1b1d013c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5ac6efe",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:768",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":29,"name":"gyro_bias_model","values":{"function":1,"beta":[0.009999999776482582,0.009999999776482582,0.009999999776482582],"noise":[0.00015999999595806003,0.00015999999595806003,0.00015999999595806003]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_model_reply",
+        "hex": "75650d0404f11d00fdea",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:782",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":29,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_model_load",
+        "hex": "75650d03031d040e25",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:790",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":29,"name":"gyro_bias_model","values":{"function":4}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_model_read_reply",
+        "hex": "75650d1e04f11d001a8c3c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5acf0be",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:799",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":29,"ack_code":0}},{"descriptor":140,"name":"gyro_bias_model_response","values":{"beta":[0.009999999776482582,0.009999999776482582,0.009999999776482582],"noise":[0.00015999999595806003,0.00015999999595806003,0.00015999999595806003]}}]}'
+        ],
+    },
+    {
+        "name": "zupt_control_write",
+        "hex": "75650d08081e01010000000017ba",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:817",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":30,"name":"zupt_control","values":{"function":1,"enable":1,"threshold":0.0}}]}'
+        ],
+    },
+    {
+        "name": "zupt_control_write_threshold",
+        "hex": "75650d08081e01013c23d70a57cb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:833",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":30,"name":"zupt_control","values":{"function":1,"enable":1,"threshold":0.009999999776482582}}]}'
+        ],
+    },
+    {
+        "name": "zupt_control_reply",
+        "hex": "75650d0404f11e00feec",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:844",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":30,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "zupt_control_read_reply",
+        "hex": "75650d0b04f11e00078d013dcccccd3c73",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:852",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":30,"ack_code":0}},{"descriptor":141,"name":"zupt_control_response","values":{"enable":1,"threshold":0.10000000149011612}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_with_time_example",
+        "hex": "75650d15151f40dd4c000000000006a43c23d70a3c23d70a01c4a6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:865",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":31,"name":"external_heading_update_with_time","values":{"gps_tow":30000.0,"gps_week":1700,"heading":0.009999999776482582,"heading_uncertainty":0.009999999776482582,"type":1}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_with_time_reply",
+        "hex": "75650d0404f11f00ffee",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:879",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":31,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_with_time_reply_table_published",
+        "hex": "75650d0404f10100ffee",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:888",
+        "expect": ['{"offset":0,"skipped":"75650d0404f10100ffee"}'],
+    },
+    {
+        "name": "external_heading_update_with_time_nack",
+        "hex": "75650d0404f11f0302f1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:899",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":31,"ack_code":3}}]}'
+        ],
+    },
+    {
+        "name": "external_heading_update_with_time_cv7",
+        "hex": "75650d15151f411518010000000008fcc02000003d4ccccd02a749",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_01_1f.yaml:910",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":31,"name":"external_heading_update_with_time","values":{"gps_tow":345600.25,"gps_week":2300,"heading":-2.5,"heading_uncertainty":0.05000000074505806,"type":2}}]}'
+        ],
+    },
+    {
+        "name": "receiver_info_command",
+        "hex": "75650e020201edfa",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:7",
+        "expect": ['{"offset":0,"set":14,"fields":[{"descriptor":1,"name":"receiver_info","values":{}}]}'],
+    },
+    {
+        "name": "receiver_info_reply_two_receivers",
+        "hex": "75650e4b04f1010047810201915a45442d4639502c48504720312e33320000000000000000000000000000000002925a45442d4639502c48504720312e333200000000000000000000000000000000b5ca",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:17",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}},{"descriptor":129,"name":"receiver_info_response","values":{"num_receivers":2,"receiver_info":[{"receiver_id":1,"mip_data_descriptor_set":145,"description":"ZED-F9P,HPG 1.32\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000"},{"receiver_id":2,"mip_data_descriptor_set":146,"description":"ZED-F9P,HPG 1.32\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000"}]}}]}'
+        ],
+    },
+    {
+        "name": "receiver_info_reply_none",
+        "hex": "75650e0704f101000381006981",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:44",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}},{"descriptor":129,"name":"receiver_info_response","values":{"num_receivers":0,"receiver_info":[]}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_write",
+        "hex": "75650e0b0b020105010505000000001197",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:57",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":2,"name":"signal_configuration","values":{"function":1,"gps_enable":5,"glonass_enable":1,"galileo_enable":5,"beidou_enable":5,"reserved":[0,0,0,0]}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_write_every_bit",
+        "hex": "75650e0b0b0201070307070000000019cb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:79",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":2,"name":"signal_configuration","values":{"function":1,"gps_enable":7,"glonass_enable":3,"galileo_enable":7,"beidou_enable":7,"reserved":[0,0,0,0]}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_read",
+        "hex": "75650e03030202f2f2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:100",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":2,"name":"signal_configuration","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_read_reply",
+        "hex": "75650e0e04f102000a820100050100000000804f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:110",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":2,"ack_code":0}},{"descriptor":130,"name":"signal_configuration_response","values":{"gps_enable":1,"glonass_enable":0,"galileo_enable":5,"beidou_enable":1,"reserved":[0,0,0,0]}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_save",
+        "hex": "75650e03030203f3f3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:126",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":2,"name":"signal_configuration","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_load",
+        "hex": "75650e03030204f4f4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:135",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":2,"name":"signal_configuration","values":{"function":4}}]}'
+        ],
+    },
+    {
+        "name": "signal_configuration_default",
+        "hex": "75650e03030205f5f5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:144",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":2,"name":"signal_configuration","values":{"function":5}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_write_lband",
+        "hex": "75650e51512001010200000000000030313031303130313031303130313031303130313031303130313031303130310000000000003031303130313031303130313031303130313031303130313031303130313031ceb1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:153",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":32,"name":"spartn_configuration","values":{"function":1,"enable":1,"type":2,"current_key_tow":0,"current_key_week":0,"current_key":"01010101010101010101010101010101","next_key_tow":0,"next_key_week":0,"next_key":"01010101010101010101010101010101"}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_write_network",
+        "hex": "75650e51512001010100054600091a30313233343536373839414243444546303132333435363738394142434445460007e900091b4645444342413938373635343332313046454443424139383736353433323130b7c5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:186",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":32,"name":"spartn_configuration","values":{"function":1,"enable":1,"type":1,"current_key_tow":345600,"current_key_week":2330,"current_key":"0123456789ABCDEF0123456789ABCDEF","next_key_tow":518400,"next_key_week":2331,"next_key":"FEDCBA9876543210FEDCBA9876543210"}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_ack",
+        "hex": "75650e0404f1200001f6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:216",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":32,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_read",
+        "hex": "75650e03032002102e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:225",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":32,"name":"spartn_configuration","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_read_reply",
+        "hex": "75650e5404f1200050a0010200000000000030313031303130313031303130313031303130313031303130313031303130310000000000003031303130313031303130313031303130313031303130313031303130313031647e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:234",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":32,"ack_code":0}},{"descriptor":160,"name":"spartn_configuration_response","values":{"enable":1,"type":2,"current_key_tow":0,"current_key_week":0,"current_key":"01010101010101010101010101010101","next_key_tow":0,"next_key_week":0,"next_key":"01010101010101010101010101010101"}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_save",
+        "hex": "75650e03032003112f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:263",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":32,"name":"spartn_configuration","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "spartn_configuration_default",
+        "hex": "75650e030320051331",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/gnss.yaml:272",
+        "expect": [
+            '{"offset":0,"set":14,"fields":[{"descriptor":32,"name":"spartn_configuration","values":{"function":5}}]}'
+        ],
+    },
+    {
         "name": "overview_field_descriptor_0x03",
         "hex": "7565800e0e033e7a63a0bb8e3b297fe5bf7f83e1",
         "device": None,
@@ -964,6 +2200,106 @@ CASES = [
         "where": "tests/vectors/mip/streams.yaml:130",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"data":"0101090104","error":"parameters: no member for selector value 9"}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_write_sensor_direct",
+        "hex": "75657f040410010274bd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:7",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":1,"mode":2}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_ack",
+        "hex": "75657f0404f11000627c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:17",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_read",
+        "hex": "75657f030310027143",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:26",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_read_placeholder",
+        "hex": "75657f040410020174be",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:39",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":2,"mode":1}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_read_reply",
+        "hex": "75657f0704f11000039001f9e4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:52",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":0}},{"descriptor":144,"name":"communication_mode_response","values":{"mode":1}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_write_gnss_direct",
+        "hex": "75657f040410010375be",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:65",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":1,"mode":3}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_save",
+        "hex": "75657f030310037244",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:75",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_load",
+        "hex": "75657f030310047345",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:85",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":4}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_default",
+        "hex": "75657f030310057446",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:95",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":16,"name":"communication_mode","values":{"function":5}}]}'
+        ],
+    },
+    {
+        "name": "communication_mode_nack_command_failed",
+        "hex": "75657f0404f110046680",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/system.yaml:105",
+        "expect": [
+            '{"offset":0,"set":127,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":4}}]}'
         ],
     },
 ]

@@ -69,7 +69,7 @@ pub fn set_kind(set: u8) -> Option<SetKind> {
 
 /// Whether the spec defines descriptor set `set`.
 pub fn set_defined(set: u8) -> bool {
-    matches!(set, 0x01 | 0x0C | 0x80)
+    matches!(set, 0x01 | 0x0C | 0x0D | 0x0E | 0x13 | 0x7F | 0x80)
 }
 
 /// A decoded field, by the group that defines it.
@@ -80,6 +80,14 @@ pub enum FieldValue {
     Base(crate::base::SetField),
     /// A field of set 0x0C.
     Threedm(crate::threedm::SetField),
+    /// A field of set 0x0D.
+    Filter(crate::filter::SetField),
+    /// A field of set 0x0E.
+    Gnss(crate::gnss::SetField),
+    /// A field of set 0x13.
+    Aiding(crate::aiding::SetField),
+    /// A field of set 0x7F.
+    System(crate::system::SetField),
     /// A field of set 0x80.
     Sensor(crate::sensor::SetField),
     /// A reserved field.
@@ -92,6 +100,10 @@ impl FieldValue {
         match self {
             FieldValue::Base(v) => v.descriptor(),
             FieldValue::Threedm(v) => v.descriptor(),
+            FieldValue::Filter(v) => v.descriptor(),
+            FieldValue::Gnss(v) => v.descriptor(),
+            FieldValue::Aiding(v) => v.descriptor(),
+            FieldValue::System(v) => v.descriptor(),
             FieldValue::Sensor(v) => v.descriptor(),
             FieldValue::Reserved(v) => v.descriptor(),
         }
@@ -102,6 +114,10 @@ impl FieldValue {
         match self {
             FieldValue::Base(v) => v.name(),
             FieldValue::Threedm(v) => v.name(),
+            FieldValue::Filter(v) => v.name(),
+            FieldValue::Gnss(v) => v.name(),
+            FieldValue::Aiding(v) => v.name(),
+            FieldValue::System(v) => v.name(),
             FieldValue::Sensor(v) => v.name(),
             FieldValue::Reserved(v) => v.name(),
         }
@@ -112,6 +128,10 @@ impl FieldValue {
         match self {
             FieldValue::Base(v) => v.device(),
             FieldValue::Threedm(v) => v.device(),
+            FieldValue::Filter(v) => v.device(),
+            FieldValue::Gnss(v) => v.device(),
+            FieldValue::Aiding(v) => v.device(),
+            FieldValue::System(v) => v.device(),
             FieldValue::Sensor(v) => v.device(),
             FieldValue::Reserved(v) => v.device(),
         }
@@ -122,6 +142,10 @@ impl FieldValue {
         match self {
             FieldValue::Base(v) => v.encode_data(w),
             FieldValue::Threedm(v) => v.encode_data(w),
+            FieldValue::Filter(v) => v.encode_data(w),
+            FieldValue::Gnss(v) => v.encode_data(w),
+            FieldValue::Aiding(v) => v.encode_data(w),
+            FieldValue::System(v) => v.encode_data(w),
             FieldValue::Sensor(v) => v.encode_data(w),
             FieldValue::Reserved(v) => v.encode_data(w),
         }
@@ -132,6 +156,10 @@ impl FieldValue {
         match self {
             FieldValue::Base(v) => v.write_values_json(w),
             FieldValue::Threedm(v) => v.write_values_json(w),
+            FieldValue::Filter(v) => v.write_values_json(w),
+            FieldValue::Gnss(v) => v.write_values_json(w),
+            FieldValue::Aiding(v) => v.write_values_json(w),
+            FieldValue::System(v) => v.write_values_json(w),
             FieldValue::Sensor(v) => v.write_values_json(w),
             FieldValue::Reserved(v) => v.write_values_json(w),
         }
@@ -165,6 +193,14 @@ impl FieldValue {
                 .map(|r| r.map(FieldValue::Base)),
             0x0C => crate::threedm::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Threedm)),
+            0x0D => crate::filter::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::Filter)),
+            0x0E => crate::gnss::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::Gnss)),
+            0x13 => crate::aiding::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::Aiding)),
+            0x7F => crate::system::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::System)),
             0x80 => crate::sensor::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Sensor)),
             _ => None,
@@ -194,16 +230,24 @@ pub fn decode_field(
     data: &[u8],
     device: Option<Device>,
 ) -> Result<FieldValue, DecodeError> {
-    let found = match set {
-        0x01 => {
-            crate::base::SetField::decode(descriptor, data, device).map(|r| r.map(FieldValue::Base))
-        }
-        0x0C => crate::threedm::SetField::decode(descriptor, data, device)
-            .map(|r| r.map(FieldValue::Threedm)),
-        0x80 => crate::sensor::SetField::decode(descriptor, data, device)
-            .map(|r| r.map(FieldValue::Sensor)),
-        _ => None,
-    };
+    let found =
+        match set {
+            0x01 => crate::base::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Base)),
+            0x0C => crate::threedm::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Threedm)),
+            0x0D => crate::filter::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Filter)),
+            0x0E => crate::gnss::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Gnss)),
+            0x13 => crate::aiding::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Aiding)),
+            0x7F => crate::system::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::System)),
+            0x80 => crate::sensor::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Sensor)),
+            _ => None,
+        };
     if let Some(result) = found {
         return result;
     }

@@ -54,8 +54,12 @@ pub mod text;
 pub mod types;
 pub mod wire;
 
+pub mod aiding;
 pub mod base;
+pub mod filter;
+pub mod gnss;
 pub mod sensor;
+pub mod system;
 pub mod threedm;
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};

@@ -1,7 +1,7 @@
 //! Named types of the MicroStrain MIP spec: enums (unknown values are kept), bitfields (named
 //! accessors), structs and unions (selected by an earlier enum parameter).
 
-/// Ack/Nack code.
+/// Ack/Nack code. Second byte of the ack/nack field; 0 is an ACK, any other value a NACK giving the reason.
 ///
 /// Values the spec does not list are kept as they are.
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -12,13 +12,13 @@ impl AckCode {
     pub const OK: Self = Self(0);
     /// The command descriptor is not supported by this device.
     pub const UNKNOWN_COMMAND: Self = Self(1);
-    /// An otherwise complete packet has a bad checksum.
+    /// An otherwise complete packet has a bad checksum (GX5-45: invalid checksum).
     pub const BAD_CHECKSUM: Self = Self(2);
-    /// One or more parameters are invalid.
+    /// One or more parameters are invalid: out of the allowed range, or not the expected size or type.
     pub const INVALID_PARAMETER: Self = Self(3);
     /// Device could not complete the command.
     pub const COMMAND_FAILED: Self = Self(4);
-    /// Device could not complete the command in time.
+    /// Device could not complete the command within the expected time.
     pub const COMMAND_TIMEOUT: Self = Self(5);
     /// Unknown descriptor set (CV7 only). Devices: cv7_ins.
     pub const UNKNOWN_DESCRIPTOR_SET: Self = Self(6);
@@ -487,6 +487,672 @@ impl crate::json_read::FromJson for ActionType {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Aiding command echo mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AidingEchoMode(pub u8);
+
+impl AidingEchoMode {
+    /// The aiding measurement commands are not acknowledged.
+    pub const SUPPRESS_ACK: Self = Self(0);
+    /// Normal ack/nack behavior.
+    pub const STANDARD: Self = Self(1);
+    /// The device echoes the aiding data back as a response.
+    pub const RESPONSE: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("suppress_ack"),
+            1 => Some("standard"),
+            2 => Some("response"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "suppress_ack" => Some(Self::SUPPRESS_ACK),
+            "standard" => Some(Self::STANDARD),
+            "response" => Some(Self::RESPONSE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AidingEchoMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AidingEchoMode({} {})", self.0, name),
+            None => write!(f, "AidingEchoMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AidingEchoMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingEchoMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AidingEchoMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Aiding frame rotation as Euler angles.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AidingFrameEuler {
+    /// Roll, pitch, yaw of the frame relative to the vehicle frame, each within +/- pi. Units: rad.
+    pub euler: [f32; 3],
+}
+
+impl Default for AidingFrameEuler {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AidingFrameEuler {
+    const ZERO: Self = Self {
+        euler: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(12);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_euler = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("euler"))?;
+        Ok(Self { euler: p_euler })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.euler;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("euler"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.euler;
+        crate::json::key(w, &mut first, "euler")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingFrameEuler {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["euler"])?;
+        let p_euler = o.req("euler", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { euler: p_euler })
+    }
+}
+
+/// Aiding frame rotation format.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AidingFrameFormat(pub u8);
+
+impl AidingFrameFormat {
+    /// Translation vector followed by Euler angles (roll, pitch, yaw).
+    pub const EULER: Self = Self(1);
+    /// Translation vector followed by a quaternion (w, x, y, z).
+    pub const QUATERNION: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("euler"),
+            2 => Some("quaternion"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "euler" => Some(Self::EULER),
+            "quaternion" => Some(Self::QUATERNION),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AidingFrameFormat {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AidingFrameFormat({} {})", self.0, name),
+            None => write!(f, "AidingFrameFormat({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AidingFrameFormat {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingFrameFormat {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AidingFrameFormat"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Aiding frame rotation as a quaternion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AidingFrameQuaternion {
+    /// Rotation of the frame relative to the vehicle frame, (w, x, y, z).
+    pub quaternion: [f32; 4],
+}
+
+impl Default for AidingFrameQuaternion {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AidingFrameQuaternion {
+    const ZERO: Self = Self {
+        quaternion: <[f32; 4] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(16);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_quaternion =
+            <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("quaternion"))?;
+        Ok(Self {
+            quaternion: p_quaternion,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.quaternion;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("quaternion"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.quaternion;
+        crate::json::key(w, &mut first, "quaternion")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingFrameQuaternion {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["quaternion"])?;
+        let p_quaternion = o.req(
+            "quaternion",
+            <[f32; 4] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            quaternion: p_quaternion,
+        })
+    }
+}
+
+/// Aiding frame rotation. Rotation of an aiding frame, as Euler angles or as a quaternion depending on the format.
+///
+/// A union: the member is chosen by the value of an earlier selector parameter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AidingFrameRotation {
+    /// Selected by euler (1).
+    Euler(crate::types::AidingFrameEuler),
+    /// Selected by quaternion (2).
+    Quaternion(crate::types::AidingFrameQuaternion),
+}
+
+impl AidingFrameRotation {
+    /// The first member with zero values.
+    pub const ZERO: Self = Self::Euler(<crate::types::AidingFrameEuler as crate::wire::Wire>::ZERO);
+
+    /// Selector value of this member.
+    pub fn selector_value(&self) -> u8 {
+        match self {
+            Self::Euler(_) => 1,
+            Self::Quaternion(_) => 2,
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    pub fn decode_selected(
+        r: &mut crate::wire::Reader<'_>,
+        selector: u8,
+    ) -> Result<Self, crate::error::DecodeError> {
+        match selector {
+            1 => <crate::types::AidingFrameEuler as crate::wire::Wire>::decode(r).map(Self::Euler),
+            2 => <crate::types::AidingFrameQuaternion as crate::wire::Wire>::decode(r)
+                .map(Self::Quaternion),
+            value => {
+                let _ = r;
+                Err(crate::error::DecodeError::new(
+                    crate::error::DecodeErrorKind::NoMember {
+                        value: i128::from(value),
+                    },
+                ))
+            }
+        }
+    }
+
+    /// Writes the member after checking that `selector` chooses it.
+    pub fn encode_selected(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+        selector: u8,
+    ) -> Result<(), crate::error::EncodeError> {
+        if self.selector_value() != selector {
+            return Err(crate::error::EncodeError::new(
+                crate::error::EncodeErrorKind::UnionMismatch {
+                    value: i128::from(selector),
+                },
+            ));
+        }
+        match self {
+            Self::Euler(v) => crate::wire::Wire::encode(v, w),
+            Self::Quaternion(v) => crate::wire::Wire::encode(v, w),
+        }
+    }
+
+    /// Writes the member's struct, or `null` for a member without data.
+    pub fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::Euler(v) => crate::wire::Wire::write_json(v, w),
+            Self::Quaternion(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    #[cfg(feature = "std")]
+    pub fn from_json_selected(
+        v: &crate::json_read::Json,
+        selector: u8,
+    ) -> Result<Self, crate::json_read::JsonError> {
+        match selector {
+            1 => <crate::types::AidingFrameEuler as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Euler),
+            2 => <crate::types::AidingFrameQuaternion as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Quaternion),
+            value => Err(crate::json_read::JsonError::new(std::format!(
+                "no member for selector value {value}"
+            ))),
+        }
+    }
+}
+
+/// LLH position aiding valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct AidingLlhValidFlags(pub u16);
+
+impl AidingLlhValidFlags {
+    /// Mask of `latitude` (bit 0).
+    pub const LATITUDE: u16 = 0x0001;
+    /// Mask of `longitude` (bit 1).
+    pub const LONGITUDE: u16 = 0x0002;
+    /// Mask of `height` (bit 2).
+    pub const HEIGHT: u16 = 0x0004;
+
+    /// Latitude valid. (bit 0)
+    pub const fn latitude(self) -> bool {
+        self.0 & Self::LATITUDE != 0
+    }
+
+    /// Sets or clears `latitude` (bit 0).
+    pub fn set_latitude(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LATITUDE;
+        } else {
+            self.0 &= !Self::LATITUDE;
+        }
+    }
+
+    /// Longitude valid. (bit 1)
+    pub const fn longitude(self) -> bool {
+        self.0 & Self::LONGITUDE != 0
+    }
+
+    /// Sets or clears `longitude` (bit 1).
+    pub fn set_longitude(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LONGITUDE;
+        } else {
+            self.0 &= !Self::LONGITUDE;
+        }
+    }
+
+    /// Height valid. (bit 2)
+    pub const fn height(self) -> bool {
+        self.0 & Self::HEIGHT != 0
+    }
+
+    /// Sets or clears `height` (bit 2).
+    pub fn set_height(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEIGHT;
+        } else {
+            self.0 &= !Self::HEIGHT;
+        }
+    }
+}
+
+impl crate::wire::Wire for AidingLlhValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingLlhValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Aiding measurement timestamp. Timestamp carried first in every aiding measurement command.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AidingTime {
+    /// Clock of the timestamp.
+    pub timebase: crate::types::AidingTimebase,
+    /// Reserved.
+    pub reserved: u8,
+    /// Time of the measurement in nanoseconds, in the timebase's clock. Units: ns.
+    pub nanoseconds: u64,
+}
+
+impl Default for AidingTime {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AidingTime {
+    const ZERO: Self = Self {
+        timebase: <crate::types::AidingTimebase as crate::wire::Wire>::ZERO,
+        reserved: <u8 as crate::wire::Wire>::ZERO,
+        nanoseconds: <u64 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(10);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_timebase = <crate::types::AidingTimebase as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("timebase"))?;
+        let p_reserved = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved"))?;
+        let p_nanoseconds =
+            <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("nanoseconds"))?;
+        Ok(Self {
+            timebase: p_timebase,
+            reserved: p_reserved,
+            nanoseconds: p_nanoseconds,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.timebase;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("timebase"))?;
+        let v = &self.reserved;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved"))?;
+        let v = &self.nanoseconds;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("nanoseconds"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.timebase;
+        crate::json::key(w, &mut first, "timebase")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved;
+        crate::json::key(w, &mut first, "reserved")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.nanoseconds;
+        crate::json::key(w, &mut first, "nanoseconds")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingTime {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["timebase", "reserved", "nanoseconds"])?;
+        let p_timebase = o.req(
+            "timebase",
+            <crate::types::AidingTimebase as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved = o.req("reserved", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_nanoseconds = o.req(
+            "nanoseconds",
+            <u64 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            timebase: p_timebase,
+            reserved: p_reserved,
+            nanoseconds: p_nanoseconds,
+        })
+    }
+}
+
+/// Aiding measurement timebase. Clock in which the timestamp of an aiding measurement is expressed.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AidingTimebase(pub u8);
+
+impl AidingTimebase {
+    /// Timestamp in the device's internal reference time (nanoseconds since power-on).
+    pub const INTERNAL_REFERENCE: Self = Self(1);
+    /// Timestamp in external time, synchronised by the PPS source and GPS time update.
+    pub const EXTERNAL_TIME: Self = Self(2);
+    /// No timestamp: the measurement is taken at its arrival time, with a fixed latency.
+    pub const TIME_OF_ARRIVAL: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("internal_reference"),
+            2 => Some("external_time"),
+            3 => Some("time_of_arrival"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "internal_reference" => Some(Self::INTERNAL_REFERENCE),
+            "external_time" => Some(Self::EXTERNAL_TIME),
+            "time_of_arrival" => Some(Self::TIME_OF_ARRIVAL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AidingTimebase {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AidingTimebase({} {})", self.0, name),
+            None => write!(f, "AidingTimebase({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AidingTimebase {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingTimebase {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AidingTimebase"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Aiding vector valid flags. Which axes of a 3-axis aiding measurement are valid; axes with 0 are ignored.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct AidingVectorValidFlags(pub u16);
+
+impl AidingVectorValidFlags {
+    /// Mask of `x` (bit 0).
+    pub const X: u16 = 0x0001;
+    /// Mask of `y` (bit 1).
+    pub const Y: u16 = 0x0002;
+    /// Mask of `z` (bit 2).
+    pub const Z: u16 = 0x0004;
+
+    /// X (or north) component valid. (bit 0)
+    pub const fn x(self) -> bool {
+        self.0 & Self::X != 0
+    }
+
+    /// Sets or clears `x` (bit 0).
+    pub fn set_x(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::X;
+        } else {
+            self.0 &= !Self::X;
+        }
+    }
+
+    /// Y (or east) component valid. (bit 1)
+    pub const fn y(self) -> bool {
+        self.0 & Self::Y != 0
+    }
+
+    /// Sets or clears `y` (bit 1).
+    pub fn set_y(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::Y;
+        } else {
+            self.0 &= !Self::Y;
+        }
+    }
+
+    /// Z (or down) component valid. (bit 2)
+    pub const fn z(self) -> bool {
+        self.0 & Self::Z != 0
+    }
+
+    /// Sets or clears `z` (bit 2).
+    pub fn set_z(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::Z;
+        } else {
+            self.0 &= !Self::Z;
+        }
+    }
+}
+
+impl crate::wire::Wire for AidingVectorValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingVectorValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -995,6 +1661,163 @@ impl crate::json_read::FromJson for DeviceInfo {
     }
 }
 
+/// Estimation control flags. Which optional states the Kalman filter estimates.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct EstimationControlFlags(pub u16);
+
+impl EstimationControlFlags {
+    /// Mask of `gyro_bias` (bit 0).
+    pub const GYRO_BIAS: u16 = 0x0001;
+    /// Mask of `accel_bias` (bit 1).
+    pub const ACCEL_BIAS: u16 = 0x0002;
+    /// Mask of `gyro_scale_factor` (bit 2).
+    pub const GYRO_SCALE_FACTOR: u16 = 0x0004;
+    /// Mask of `accel_scale_factor` (bit 3).
+    pub const ACCEL_SCALE_FACTOR: u16 = 0x0008;
+    /// Mask of `antenna_offset` (bit 4).
+    pub const ANTENNA_OFFSET: u16 = 0x0010;
+    /// Mask of `hard_iron_auto_cal` (bit 5).
+    pub const HARD_IRON_AUTO_CAL: u16 = 0x0020;
+    /// Mask of `soft_iron_auto_cal` (bit 6).
+    pub const SOFT_IRON_AUTO_CAL: u16 = 0x0040;
+    /// Mask of `reserved` (bits 7..=15).
+    pub const RESERVED: u16 = 0xFF80;
+
+    /// Estimate gyro bias (recommended). (bit 0)
+    pub const fn gyro_bias(self) -> bool {
+        self.0 & Self::GYRO_BIAS != 0
+    }
+
+    /// Sets or clears `gyro_bias` (bit 0).
+    pub fn set_gyro_bias(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYRO_BIAS;
+        } else {
+            self.0 &= !Self::GYRO_BIAS;
+        }
+    }
+
+    /// Estimate accelerometer bias (recommended). (bit 1)
+    pub const fn accel_bias(self) -> bool {
+        self.0 & Self::ACCEL_BIAS != 0
+    }
+
+    /// Sets or clears `accel_bias` (bit 1).
+    pub fn set_accel_bias(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCEL_BIAS;
+        } else {
+            self.0 &= !Self::ACCEL_BIAS;
+        }
+    }
+
+    /// Estimate gyro scale factor (optional). (bit 2)
+    pub const fn gyro_scale_factor(self) -> bool {
+        self.0 & Self::GYRO_SCALE_FACTOR != 0
+    }
+
+    /// Sets or clears `gyro_scale_factor` (bit 2).
+    pub fn set_gyro_scale_factor(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYRO_SCALE_FACTOR;
+        } else {
+            self.0 &= !Self::GYRO_SCALE_FACTOR;
+        }
+    }
+
+    /// Estimate accelerometer scale factor (optional). (bit 3)
+    pub const fn accel_scale_factor(self) -> bool {
+        self.0 & Self::ACCEL_SCALE_FACTOR != 0
+    }
+
+    /// Sets or clears `accel_scale_factor` (bit 3).
+    pub fn set_accel_scale_factor(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCEL_SCALE_FACTOR;
+        } else {
+            self.0 &= !Self::ACCEL_SCALE_FACTOR;
+        }
+    }
+
+    /// Estimate the GNSS antenna offset (optional). (bit 4)
+    pub const fn antenna_offset(self) -> bool {
+        self.0 & Self::ANTENNA_OFFSET != 0
+    }
+
+    /// Sets or clears `antenna_offset` (bit 4).
+    pub fn set_antenna_offset(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_OFFSET;
+        } else {
+            self.0 &= !Self::ANTENNA_OFFSET;
+        }
+    }
+
+    /// Hard iron auto-calibration (optional). (bit 5)
+    pub const fn hard_iron_auto_cal(self) -> bool {
+        self.0 & Self::HARD_IRON_AUTO_CAL != 0
+    }
+
+    /// Sets or clears `hard_iron_auto_cal` (bit 5).
+    pub fn set_hard_iron_auto_cal(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HARD_IRON_AUTO_CAL;
+        } else {
+            self.0 &= !Self::HARD_IRON_AUTO_CAL;
+        }
+    }
+
+    /// Soft iron auto-calibration (optional). (bit 6)
+    pub const fn soft_iron_auto_cal(self) -> bool {
+        self.0 & Self::SOFT_IRON_AUTO_CAL != 0
+    }
+
+    /// Sets or clears `soft_iron_auto_cal` (bit 6).
+    pub fn set_soft_iron_auto_cal(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SOFT_IRON_AUTO_CAL;
+        } else {
+            self.0 &= !Self::SOFT_IRON_AUTO_CAL;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 7..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 7
+    }
+
+    /// Sets `reserved` (bits 7..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 7) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for EstimationControlFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for EstimationControlFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// Event trigger control mode.
 ///
 /// Values the spec does not list are kept as they are.
@@ -1075,7 +1898,159 @@ impl crate::json_read::FromJson for EventControlMode {
     }
 }
 
-/// Function selector. First parameter of settings commands; chooses what the command does.
+/// External heading type. Reference of an externally supplied heading angle.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ExternalHeadingType(pub u8);
+
+impl ExternalHeadingType {
+    /// True heading (from true north).
+    pub const TRUE_HEADING: Self = Self(1);
+    /// Magnetic heading (from magnetic north).
+    pub const MAGNETIC_HEADING: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("true_heading"),
+            2 => Some("magnetic_heading"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "true_heading" => Some(Self::TRUE_HEADING),
+            "magnetic_heading" => Some(Self::MAGNETIC_HEADING),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for ExternalHeadingType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "ExternalHeadingType({} {})", self.0, name),
+            None => write!(f, "ExternalHeadingType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for ExternalHeadingType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ExternalHeadingType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of ExternalHeadingType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Filter GNSS source. Where the filter takes its GNSS position and velocity updates from.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterGnssSource(pub u8);
+
+impl FilterGnssSource {
+    /// The internal GNSS receiver(s) (GX5-45: Internal GNSS; CV7: ALL_INT, all internal receivers).
+    pub const ALL_INTERNAL: Self = Self(1);
+    /// External GNSS messages supplied by the user (GX5-45: External GNSS Update 0x0D,0x16).
+    pub const EXTERNAL: Self = Self(2);
+    /// Internal GNSS receiver 1 only. Devices: cv7_ins.
+    pub const INTERNAL_1: Self = Self(3);
+    /// Internal GNSS receiver 2 only. Devices: cv7_ins.
+    pub const INTERNAL_2: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("all_internal"),
+            2 => Some("external"),
+            3 => Some("internal_1"),
+            4 => Some("internal_2"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "all_internal" => Some(Self::ALL_INTERNAL),
+            "external" => Some(Self::EXTERNAL),
+            "internal_1" => Some(Self::INTERNAL_1),
+            "internal_2" => Some(Self::INTERNAL_2),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterGnssSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterGnssSource({} {})", self.0, name),
+            None => write!(f, "FilterGnssSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterGnssSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterGnssSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterGnssSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Function selector. First parameter of settings commands; chooses what the command does. Only a read returns a response field (with the ack); parameters not needed for a function may be left out, or sent as placeholders.
 ///
 /// Values the spec does not list are kept as they are.
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -1084,11 +2059,11 @@ pub struct FunctionSelector(pub u8);
 impl FunctionSelector {
     /// Apply new setting.
     pub const WRITE: Self = Self(1);
-    /// Read current setting.
+    /// Read back the current setting (the only function that returns response data).
     pub const READ: Self = Self(2);
-    /// Save current setting to non-volatile memory.
+    /// Save the current setting to non-volatile memory as the startup setting.
     pub const SAVE: Self = Self(3);
-    /// Load setting from non-volatile memory.
+    /// Load the saved startup setting from non-volatile memory.
     pub const LOAD: Self = Self(4);
     /// Reset to the factory default.
     pub const DEFAULT: Self = Self(5);
@@ -1160,6 +2135,403 @@ impl crate::json_read::FromJson for FunctionSelector {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// BeiDou signals enabled.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssBeidouSignals(pub u8);
+
+impl GnssBeidouSignals {
+    /// Mask of `b1` (bit 0).
+    pub const B1: u8 = 0x01;
+    /// Mask of `b2` (bit 1).
+    pub const B2: u8 = 0x02;
+    /// Mask of `b2a` (bit 2).
+    pub const B2A: u8 = 0x04;
+
+    /// Enable B1. (bit 0)
+    pub const fn b1(self) -> bool {
+        self.0 & Self::B1 != 0
+    }
+
+    /// Sets or clears `b1` (bit 0).
+    pub fn set_b1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::B1;
+        } else {
+            self.0 &= !Self::B1;
+        }
+    }
+
+    /// Enable B2. (bit 1)
+    pub const fn b2(self) -> bool {
+        self.0 & Self::B2 != 0
+    }
+
+    /// Sets or clears `b2` (bit 1).
+    pub fn set_b2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::B2;
+        } else {
+            self.0 &= !Self::B2;
+        }
+    }
+
+    /// Enable B2A. (bit 2)
+    pub const fn b2a(self) -> bool {
+        self.0 & Self::B2A != 0
+    }
+
+    /// Sets or clears `b2a` (bit 2).
+    pub fn set_b2a(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::B2A;
+        } else {
+            self.0 &= !Self::B2A;
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssBeidouSignals {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssBeidouSignals {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Galileo signals enabled.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssGalileoSignals(pub u8);
+
+impl GnssGalileoSignals {
+    /// Mask of `e1` (bit 0).
+    pub const E1: u8 = 0x01;
+    /// Mask of `e5b` (bit 1).
+    pub const E5B: u8 = 0x02;
+    /// Mask of `e5a` (bit 2).
+    pub const E5A: u8 = 0x04;
+
+    /// Enable E1. (bit 0)
+    pub const fn e1(self) -> bool {
+        self.0 & Self::E1 != 0
+    }
+
+    /// Sets or clears `e1` (bit 0).
+    pub fn set_e1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::E1;
+        } else {
+            self.0 &= !Self::E1;
+        }
+    }
+
+    /// Enable E5B. (bit 1)
+    pub const fn e5b(self) -> bool {
+        self.0 & Self::E5B != 0
+    }
+
+    /// Sets or clears `e5b` (bit 1).
+    pub fn set_e5b(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::E5B;
+        } else {
+            self.0 &= !Self::E5B;
+        }
+    }
+
+    /// Enable E5A. (bit 2)
+    pub const fn e5a(self) -> bool {
+        self.0 & Self::E5A != 0
+    }
+
+    /// Sets or clears `e5a` (bit 2).
+    pub fn set_e5a(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::E5A;
+        } else {
+            self.0 &= !Self::E5A;
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssGalileoSignals {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssGalileoSignals {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GLONASS signals enabled.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssGlonassSignals(pub u8);
+
+impl GnssGlonassSignals {
+    /// Mask of `l1of` (bit 0).
+    pub const L1OF: u8 = 0x01;
+    /// Mask of `l2of` (bit 1).
+    pub const L2OF: u8 = 0x02;
+
+    /// Enable L1OF. (bit 0)
+    pub const fn l1of(self) -> bool {
+        self.0 & Self::L1OF != 0
+    }
+
+    /// Sets or clears `l1of` (bit 0).
+    pub fn set_l1of(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::L1OF;
+        } else {
+            self.0 &= !Self::L1OF;
+        }
+    }
+
+    /// Enable L2OF. (bit 1)
+    pub const fn l2of(self) -> bool {
+        self.0 & Self::L2OF != 0
+    }
+
+    /// Sets or clears `l2of` (bit 1).
+    pub fn set_l2of(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::L2OF;
+        } else {
+            self.0 &= !Self::L2OF;
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssGlonassSignals {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssGlonassSignals {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GPS signals enabled.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssGpsSignals(pub u8);
+
+impl GnssGpsSignals {
+    /// Mask of `l1ca` (bit 0).
+    pub const L1CA: u8 = 0x01;
+    /// Mask of `l2c` (bit 1).
+    pub const L2C: u8 = 0x02;
+    /// Mask of `l5` (bit 2).
+    pub const L5: u8 = 0x04;
+
+    /// Enable L1 C/A. (bit 0)
+    pub const fn l1ca(self) -> bool {
+        self.0 & Self::L1CA != 0
+    }
+
+    /// Sets or clears `l1ca` (bit 0).
+    pub fn set_l1ca(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::L1CA;
+        } else {
+            self.0 &= !Self::L1CA;
+        }
+    }
+
+    /// Enable L2C. (bit 1)
+    pub const fn l2c(self) -> bool {
+        self.0 & Self::L2C != 0
+    }
+
+    /// Sets or clears `l2c` (bit 1).
+    pub fn set_l2c(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::L2C;
+        } else {
+            self.0 &= !Self::L2C;
+        }
+    }
+
+    /// Enable L5. (bit 2)
+    pub const fn l5(self) -> bool {
+        self.0 & Self::L5 != 0
+    }
+
+    /// Sets or clears `l5` (bit 2).
+    pub fn set_l5(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::L5;
+        } else {
+            self.0 &= !Self::L5;
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssGpsSignals {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssGpsSignals {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS receiver information. Identity of one physical GNSS receiver in the device.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GnssReceiverInfoEntry {
+    /// Receiver id (1, 2, ...).
+    pub receiver_id: u8,
+    /// MIP data descriptor set of this receiver's data.
+    pub mip_data_descriptor_set: u8,
+    /// ASCII, comma-delimited: module name/model, firmware version.
+    pub description: crate::wire::Str<32>,
+}
+
+impl Default for GnssReceiverInfoEntry {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GnssReceiverInfoEntry {
+    const ZERO: Self = Self {
+        receiver_id: <u8 as crate::wire::Wire>::ZERO,
+        mip_data_descriptor_set: <u8 as crate::wire::Wire>::ZERO,
+        description: <crate::wire::Str<32> as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(34);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_receiver_id =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
+        let p_mip_data_descriptor_set =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("mip_data_descriptor_set"))?;
+        let p_description = <crate::wire::Str<32> as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("description"))?;
+        Ok(Self {
+            receiver_id: p_receiver_id,
+            mip_data_descriptor_set: p_mip_data_descriptor_set,
+            description: p_description,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.receiver_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("receiver_id"))?;
+        let v = &self.mip_data_descriptor_set;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("mip_data_descriptor_set"))?;
+        let v = &self.description;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("description"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.receiver_id;
+        crate::json::key(w, &mut first, "receiver_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.mip_data_descriptor_set;
+        crate::json::key(w, &mut first, "mip_data_descriptor_set")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.description;
+        crate::json::key(w, &mut first, "description")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssReceiverInfoEntry {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &["receiver_id", "mip_data_descriptor_set", "description"],
+        )?;
+        let p_receiver_id = o.req("receiver_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_mip_data_descriptor_set = o.req(
+            "mip_data_descriptor_set",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_description = o.req(
+            "description",
+            <crate::wire::Str<32> as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            receiver_id: p_receiver_id,
+            mip_data_descriptor_set: p_mip_data_descriptor_set,
+            description: p_description,
+        })
     }
 }
 
@@ -1348,6 +2720,104 @@ impl crate::json_read::FromJson for Gx5BitFlags {
     }
 }
 
+/// Heading update source. Which aiding sources the filter uses for heading updates.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct HeadingUpdateSource(pub u8);
+
+impl HeadingUpdateSource {
+    /// No heading aiding; heading still converges from GNSS under sufficient acceleration.
+    pub const NONE: Self = Self(0);
+    /// Internal magnetometer.
+    pub const MAGNETOMETER: Self = Self(1);
+    /// Internal GNSS velocity vector (needs little side-slip and the vehicle X axis along the direction of travel).
+    pub const GNSS_VELOCITY: Self = Self(2);
+    /// External heading messages (0x0D,0x17 / 0x0D,0x1F).
+    pub const EXTERNAL: Self = Self(3);
+    /// GNSS velocity vector and magnetometer.
+    pub const GNSS_VELOCITY_AND_MAGNETOMETER: Self = Self(4);
+    /// GNSS velocity vector and external heading messages.
+    pub const GNSS_VELOCITY_AND_EXTERNAL: Self = Self(5);
+    /// Magnetometer and external heading messages.
+    pub const MAGNETOMETER_AND_EXTERNAL: Self = Self(6);
+    /// GNSS velocity vector, magnetometer and external heading messages.
+    pub const GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL: Self = Self(7);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("magnetometer"),
+            2 => Some("gnss_velocity"),
+            3 => Some("external"),
+            4 => Some("gnss_velocity_and_magnetometer"),
+            5 => Some("gnss_velocity_and_external"),
+            6 => Some("magnetometer_and_external"),
+            7 => Some("gnss_velocity_magnetometer_and_external"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "magnetometer" => Some(Self::MAGNETOMETER),
+            "gnss_velocity" => Some(Self::GNSS_VELOCITY),
+            "external" => Some(Self::EXTERNAL),
+            "gnss_velocity_and_magnetometer" => Some(Self::GNSS_VELOCITY_AND_MAGNETOMETER),
+            "gnss_velocity_and_external" => Some(Self::GNSS_VELOCITY_AND_EXTERNAL),
+            "magnetometer_and_external" => Some(Self::MAGNETOMETER_AND_EXTERNAL),
+            "gnss_velocity_magnetometer_and_external" => {
+                Some(Self::GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL)
+            }
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for HeadingUpdateSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "HeadingUpdateSource({} {})", self.0, name),
+            None => write!(f, "HeadingUpdateSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for HeadingUpdateSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for HeadingUpdateSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of HeadingUpdateSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// MessageParams.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MessageParams {
@@ -1443,6 +2913,158 @@ impl crate::json_read::FromJson for MessageParams {
             num_fields: p_num_fields,
             descriptors: p_descriptors,
         })
+    }
+}
+
+/// SPARTN connection type.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SpartnConnectionType(pub u8);
+
+impl SpartnConnectionType {
+    /// No SPARTN connection.
+    pub const NONE: Self = Self(0);
+    /// Corrections over a network connection (e.g. NTRIP).
+    pub const NETWORK: Self = Self(1);
+    /// Corrections from an L-band correction receiver.
+    pub const L_BAND: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("network"),
+            2 => Some("l_band"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "network" => Some(Self::NETWORK),
+            "l_band" => Some(Self::L_BAND),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for SpartnConnectionType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "SpartnConnectionType({} {})", self.0, name),
+            None => write!(f, "SpartnConnectionType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for SpartnConnectionType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SpartnConnectionType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of SpartnConnectionType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Communication mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SystemCommMode(pub u8);
+
+impl SystemCommMode {
+    /// 3DM-GX5-45 MIP packets (default).
+    pub const STANDARD: Self = Self(1);
+    /// Direct to the internal IMU: MIP IMU protocol.
+    pub const SENSOR_DIRECT: Self = Self(2);
+    /// Direct to the GNSS receiver: NMEA and UBX (GNSS models only).
+    pub const GNSS_DIRECT: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("standard"),
+            2 => Some("sensor_direct"),
+            3 => Some("gnss_direct"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "standard" => Some(Self::STANDARD),
+            "sensor_direct" => Some(Self::SENSOR_DIRECT),
+            "gnss_direct" => Some(Self::GNSS_DIRECT),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for SystemCommMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "SystemCommMode({} {})", self.0, name),
+            None => write!(f, "SystemCommMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for SystemCommMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SystemCommMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of SystemCommMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
     }
 }
 
@@ -2127,6 +3749,86 @@ impl crate::json_read::FromJson for TriggerType {
             crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
                 crate::json_read::JsonError::new(std::format!(
                     "\"{name}\" is not a value of TriggerType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Vehicle dynamics mode. Dynamics model the filter assumes for the vehicle (altitude and velocity limits).
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct VehicleDynamicsMode(pub u8);
+
+impl VehicleDynamicsMode {
+    /// Low-acceleration applications (default); up to 12,000 m, 310 m/s horizontal, 50 m/s vertical.
+    pub const PORTABLE: Self = Self(1);
+    /// Wheeled vehicles with low vertical acceleration; up to 6,000 m, 84 m/s horizontal, 15 m/s vertical.
+    pub const AUTOMOTIVE: Self = Self(2);
+    /// Airborne up to 2 g; up to 50,000 m, 250 m/s horizontal, 100 m/s vertical.
+    pub const AIRBORNE: Self = Self(3);
+    /// Airborne up to 4 g; same altitude and velocity limits as airborne.
+    pub const AIRBORNE_HIGH_G: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("portable"),
+            2 => Some("automotive"),
+            3 => Some("airborne"),
+            4 => Some("airborne_high_g"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "portable" => Some(Self::PORTABLE),
+            "automotive" => Some(Self::AUTOMOTIVE),
+            "airborne" => Some(Self::AIRBORNE),
+            "airborne_high_g" => Some(Self::AIRBORNE_HIGH_G),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for VehicleDynamicsMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "VehicleDynamicsMode({} {})", self.0, name),
+            None => write!(f, "VehicleDynamicsMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for VehicleDynamicsMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for VehicleDynamicsMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of VehicleDynamicsMode"
                 ))
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),

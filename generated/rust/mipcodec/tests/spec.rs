@@ -699,6 +699,64 @@ fn strings_escape_every_byte() {
 }
 
 #[test]
+fn bitfield_aidingllhvalidflags_accessors() {
+    use mipcodec::types::AidingLlhValidFlags;
+    let mut v = AidingLlhValidFlags(0);
+    v.set_latitude(true);
+    assert_eq!(v.0, 0x01, "latitude");
+    assert!(v.latitude());
+    let mut v = AidingLlhValidFlags(!0);
+    v.set_latitude(false);
+    assert_eq!(v.0, !0x01, "latitude");
+    assert!(!v.latitude());
+    let mut v = AidingLlhValidFlags(0);
+    v.set_longitude(true);
+    assert_eq!(v.0, 0x02, "longitude");
+    assert!(v.longitude());
+    let mut v = AidingLlhValidFlags(!0);
+    v.set_longitude(false);
+    assert_eq!(v.0, !0x02, "longitude");
+    assert!(!v.longitude());
+    let mut v = AidingLlhValidFlags(0);
+    v.set_height(true);
+    assert_eq!(v.0, 0x04, "height");
+    assert!(v.height());
+    let mut v = AidingLlhValidFlags(!0);
+    v.set_height(false);
+    assert_eq!(v.0, !0x04, "height");
+    assert!(!v.height());
+}
+
+#[test]
+fn bitfield_aidingvectorvalidflags_accessors() {
+    use mipcodec::types::AidingVectorValidFlags;
+    let mut v = AidingVectorValidFlags(0);
+    v.set_x(true);
+    assert_eq!(v.0, 0x01, "x");
+    assert!(v.x());
+    let mut v = AidingVectorValidFlags(!0);
+    v.set_x(false);
+    assert_eq!(v.0, !0x01, "x");
+    assert!(!v.x());
+    let mut v = AidingVectorValidFlags(0);
+    v.set_y(true);
+    assert_eq!(v.0, 0x02, "y");
+    assert!(v.y());
+    let mut v = AidingVectorValidFlags(!0);
+    v.set_y(false);
+    assert_eq!(v.0, !0x02, "y");
+    assert!(!v.y());
+    let mut v = AidingVectorValidFlags(0);
+    v.set_z(true);
+    assert_eq!(v.0, 0x04, "z");
+    assert!(v.z());
+    let mut v = AidingVectorValidFlags(!0);
+    v.set_z(false);
+    assert_eq!(v.0, !0x04, "z");
+    assert!(!v.z());
+}
+
+#[test]
 fn bitfield_cv7bitflags_accessors() {
     use mipcodec::types::Cv7BitFlags;
     let mut v = Cv7BitFlags(0);
@@ -837,6 +895,183 @@ fn bitfield_cv7bitflags_accessors() {
     v.set_reserved(0);
     assert_eq!(v.0, !0xFF000000, "reserved");
     assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_estimationcontrolflags_accessors() {
+    use mipcodec::types::EstimationControlFlags;
+    let mut v = EstimationControlFlags(0);
+    v.set_gyro_bias(true);
+    assert_eq!(v.0, 0x01, "gyro_bias");
+    assert!(v.gyro_bias());
+    let mut v = EstimationControlFlags(!0);
+    v.set_gyro_bias(false);
+    assert_eq!(v.0, !0x01, "gyro_bias");
+    assert!(!v.gyro_bias());
+    let mut v = EstimationControlFlags(0);
+    v.set_accel_bias(true);
+    assert_eq!(v.0, 0x02, "accel_bias");
+    assert!(v.accel_bias());
+    let mut v = EstimationControlFlags(!0);
+    v.set_accel_bias(false);
+    assert_eq!(v.0, !0x02, "accel_bias");
+    assert!(!v.accel_bias());
+    let mut v = EstimationControlFlags(0);
+    v.set_gyro_scale_factor(true);
+    assert_eq!(v.0, 0x04, "gyro_scale_factor");
+    assert!(v.gyro_scale_factor());
+    let mut v = EstimationControlFlags(!0);
+    v.set_gyro_scale_factor(false);
+    assert_eq!(v.0, !0x04, "gyro_scale_factor");
+    assert!(!v.gyro_scale_factor());
+    let mut v = EstimationControlFlags(0);
+    v.set_accel_scale_factor(true);
+    assert_eq!(v.0, 0x08, "accel_scale_factor");
+    assert!(v.accel_scale_factor());
+    let mut v = EstimationControlFlags(!0);
+    v.set_accel_scale_factor(false);
+    assert_eq!(v.0, !0x08, "accel_scale_factor");
+    assert!(!v.accel_scale_factor());
+    let mut v = EstimationControlFlags(0);
+    v.set_antenna_offset(true);
+    assert_eq!(v.0, 0x10, "antenna_offset");
+    assert!(v.antenna_offset());
+    let mut v = EstimationControlFlags(!0);
+    v.set_antenna_offset(false);
+    assert_eq!(v.0, !0x10, "antenna_offset");
+    assert!(!v.antenna_offset());
+    let mut v = EstimationControlFlags(0);
+    v.set_hard_iron_auto_cal(true);
+    assert_eq!(v.0, 0x20, "hard_iron_auto_cal");
+    assert!(v.hard_iron_auto_cal());
+    let mut v = EstimationControlFlags(!0);
+    v.set_hard_iron_auto_cal(false);
+    assert_eq!(v.0, !0x20, "hard_iron_auto_cal");
+    assert!(!v.hard_iron_auto_cal());
+    let mut v = EstimationControlFlags(0);
+    v.set_soft_iron_auto_cal(true);
+    assert_eq!(v.0, 0x40, "soft_iron_auto_cal");
+    assert!(v.soft_iron_auto_cal());
+    let mut v = EstimationControlFlags(!0);
+    v.set_soft_iron_auto_cal(false);
+    assert_eq!(v.0, !0x40, "soft_iron_auto_cal");
+    assert!(!v.soft_iron_auto_cal());
+    let mut v = EstimationControlFlags(0);
+    v.set_reserved(0x1FF);
+    assert_eq!(v.0, 0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0x1FF);
+    let mut v = EstimationControlFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssbeidousignals_accessors() {
+    use mipcodec::types::GnssBeidouSignals;
+    let mut v = GnssBeidouSignals(0);
+    v.set_b1(true);
+    assert_eq!(v.0, 0x01, "b1");
+    assert!(v.b1());
+    let mut v = GnssBeidouSignals(!0);
+    v.set_b1(false);
+    assert_eq!(v.0, !0x01, "b1");
+    assert!(!v.b1());
+    let mut v = GnssBeidouSignals(0);
+    v.set_b2(true);
+    assert_eq!(v.0, 0x02, "b2");
+    assert!(v.b2());
+    let mut v = GnssBeidouSignals(!0);
+    v.set_b2(false);
+    assert_eq!(v.0, !0x02, "b2");
+    assert!(!v.b2());
+    let mut v = GnssBeidouSignals(0);
+    v.set_b2a(true);
+    assert_eq!(v.0, 0x04, "b2a");
+    assert!(v.b2a());
+    let mut v = GnssBeidouSignals(!0);
+    v.set_b2a(false);
+    assert_eq!(v.0, !0x04, "b2a");
+    assert!(!v.b2a());
+}
+
+#[test]
+fn bitfield_gnssgalileosignals_accessors() {
+    use mipcodec::types::GnssGalileoSignals;
+    let mut v = GnssGalileoSignals(0);
+    v.set_e1(true);
+    assert_eq!(v.0, 0x01, "e1");
+    assert!(v.e1());
+    let mut v = GnssGalileoSignals(!0);
+    v.set_e1(false);
+    assert_eq!(v.0, !0x01, "e1");
+    assert!(!v.e1());
+    let mut v = GnssGalileoSignals(0);
+    v.set_e5b(true);
+    assert_eq!(v.0, 0x02, "e5b");
+    assert!(v.e5b());
+    let mut v = GnssGalileoSignals(!0);
+    v.set_e5b(false);
+    assert_eq!(v.0, !0x02, "e5b");
+    assert!(!v.e5b());
+    let mut v = GnssGalileoSignals(0);
+    v.set_e5a(true);
+    assert_eq!(v.0, 0x04, "e5a");
+    assert!(v.e5a());
+    let mut v = GnssGalileoSignals(!0);
+    v.set_e5a(false);
+    assert_eq!(v.0, !0x04, "e5a");
+    assert!(!v.e5a());
+}
+
+#[test]
+fn bitfield_gnssglonasssignals_accessors() {
+    use mipcodec::types::GnssGlonassSignals;
+    let mut v = GnssGlonassSignals(0);
+    v.set_l1of(true);
+    assert_eq!(v.0, 0x01, "l1of");
+    assert!(v.l1of());
+    let mut v = GnssGlonassSignals(!0);
+    v.set_l1of(false);
+    assert_eq!(v.0, !0x01, "l1of");
+    assert!(!v.l1of());
+    let mut v = GnssGlonassSignals(0);
+    v.set_l2of(true);
+    assert_eq!(v.0, 0x02, "l2of");
+    assert!(v.l2of());
+    let mut v = GnssGlonassSignals(!0);
+    v.set_l2of(false);
+    assert_eq!(v.0, !0x02, "l2of");
+    assert!(!v.l2of());
+}
+
+#[test]
+fn bitfield_gnssgpssignals_accessors() {
+    use mipcodec::types::GnssGpsSignals;
+    let mut v = GnssGpsSignals(0);
+    v.set_l1ca(true);
+    assert_eq!(v.0, 0x01, "l1ca");
+    assert!(v.l1ca());
+    let mut v = GnssGpsSignals(!0);
+    v.set_l1ca(false);
+    assert_eq!(v.0, !0x01, "l1ca");
+    assert!(!v.l1ca());
+    let mut v = GnssGpsSignals(0);
+    v.set_l2c(true);
+    assert_eq!(v.0, 0x02, "l2c");
+    assert!(v.l2c());
+    let mut v = GnssGpsSignals(!0);
+    v.set_l2c(false);
+    assert_eq!(v.0, !0x02, "l2c");
+    assert!(!v.l2c());
+    let mut v = GnssGpsSignals(0);
+    v.set_l5(true);
+    assert_eq!(v.0, 0x04, "l5");
+    assert!(v.l5());
+    let mut v = GnssGpsSignals(!0);
+    v.set_l5(false);
+    assert_eq!(v.0, !0x04, "l5");
+    assert!(!v.l5());
 }
 
 #[test]
@@ -1216,6 +1451,636 @@ fn fixed_layout_errors() {
         Err("instance: needs 1 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
+        mipcodec::filter::ResetFilter::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::filter::ResetFilter::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SetInitialAttitude::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("roll: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SetInitialAttitude::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SetInitialHeading::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("heading: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SetInitialHeading::decode_data(&[0u8; 5])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 4".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::RunFilter::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::filter::RunFilter::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::VehicleDynamicsMode::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::VehicleDynamicsMode::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::VehicleDynamicsModeResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::VehicleDynamicsModeResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleTransform::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleTransform::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleTransformResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("roll: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleTransformResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleOffset::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleOffset::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleOffsetResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("offset[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SensorToVehicleOffsetResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AntennaOffset::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AntennaOffset::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AntennaOffsetResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("offset[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AntennaOffsetResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::EstimationControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::EstimationControl::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::EstimationControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("flags: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::EstimationControlResponse::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssSourceControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssSourceControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssSourceControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssSourceControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ExternalGnssUpdate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gps_tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ExternalGnssUpdate::decode_data(&[0u8; 71])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 70".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ExternalHeadingUpdate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("heading: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ExternalHeadingUpdate::decode_data(&[0u8; 10])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 9".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HeadingUpdateControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HeadingUpdateControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HeadingUpdateControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HeadingUpdateControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AutoInitControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AutoInitControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AutoInitControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AutoInitControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelNoise::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelNoise::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelNoiseResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelNoiseResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroNoise::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroNoise::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroNoiseResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroNoiseResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelBiasModel::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelBiasModel::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelBiasModelResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("beta[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AccelBiasModelResponse::decode_data(&[0u8; 25])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 24".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroBiasModel::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroBiasModel::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroBiasModelResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("beta[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GyroBiasModelResponse::decode_data(&[0u8; 25])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 24".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZuptControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZuptControl::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZuptControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZuptControlResponse::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ExternalHeadingUpdateWithTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gps_tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ExternalHeadingUpdateWithTime::decode_data(&[0u8; 20])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 19".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::ReceiverInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::gnss::ReceiverInfo::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::ReceiverInfoResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("num_receivers: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SignalConfiguration::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SignalConfiguration::decode_data(&[0u8; 10])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 9".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SignalConfigurationResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gps_enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SignalConfigurationResponse::decode_data(&[0u8; 9])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 8".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SpartnConfiguration::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SpartnConfiguration::decode_data(&[0u8; 80])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 79".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SpartnConfigurationResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss::SpartnConfigurationResponse::decode_data(&[0u8; 79])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 78".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::FrameConfig::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::FrameConfigResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("frame_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EchoControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EchoControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EchoControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EchoControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EcefPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EcefPosition::decode_data(&[0u8; 50])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 49".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::LlhPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::LlhPosition::decode_data(&[0u8; 50])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 49".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::HeightAboveEllipsoid::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::HeightAboveEllipsoid::decode_data(&[0u8; 22])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 21".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EcefVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::EcefVelocity::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::NedVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::NedVelocity::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::BodyFrameVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::BodyFrameVelocity::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::TrueHeading::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::TrueHeading::decode_data(&[0u8; 22])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 21".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::MagneticField::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::MagneticField::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::Pressure::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time.timebase: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::aiding::Pressure::decode_data(&[0u8; 22])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 21".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system::CommunicationMode::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system::CommunicationMode::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system::CommunicationModeResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system::CommunicationModeResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
         mipcodec::sensor::ScaledAccel::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
@@ -1590,6 +2455,849 @@ fn zero_values_round_trip_through_packets() {
         };
         assert_eq!(descriptor, <EventControlResponse as Layout>::DESCRIPTOR);
         assert_eq!(EventControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ResetFilter;
+        let value = ResetFilter::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::filter::ResetFilter::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ResetFilter: no field");
+        };
+        assert_eq!(descriptor, <ResetFilter as Layout>::DESCRIPTOR);
+        assert_eq!(ResetFilter::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SetInitialAttitude;
+        let value = SetInitialAttitude::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SetInitialAttitude::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SetInitialAttitude: no field");
+        };
+        assert_eq!(descriptor, <SetInitialAttitude as Layout>::DESCRIPTOR);
+        assert_eq!(SetInitialAttitude::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SetInitialHeading;
+        let value = SetInitialHeading::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SetInitialHeading::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SetInitialHeading: no field");
+        };
+        assert_eq!(descriptor, <SetInitialHeading as Layout>::DESCRIPTOR);
+        assert_eq!(SetInitialHeading::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::RunFilter;
+        let value = RunFilter::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::filter::RunFilter::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("RunFilter: no field");
+        };
+        assert_eq!(descriptor, <RunFilter as Layout>::DESCRIPTOR);
+        assert_eq!(RunFilter::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::VehicleDynamicsMode;
+        let value = VehicleDynamicsMode::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::VehicleDynamicsMode::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("VehicleDynamicsMode: no field");
+        };
+        assert_eq!(descriptor, <VehicleDynamicsMode as Layout>::DESCRIPTOR);
+        assert_eq!(VehicleDynamicsMode::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::VehicleDynamicsModeResponse;
+        let value = VehicleDynamicsModeResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::VehicleDynamicsModeResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("VehicleDynamicsModeResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <VehicleDynamicsModeResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(VehicleDynamicsModeResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SensorToVehicleTransform;
+        let value = SensorToVehicleTransform::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SensorToVehicleTransform::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleTransform: no field");
+        };
+        assert_eq!(descriptor, <SensorToVehicleTransform as Layout>::DESCRIPTOR);
+        assert_eq!(SensorToVehicleTransform::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SensorToVehicleTransformResponse;
+        let value = SensorToVehicleTransformResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::SensorToVehicleTransformResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleTransformResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SensorToVehicleTransformResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            SensorToVehicleTransformResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SensorToVehicleOffset;
+        let value = SensorToVehicleOffset::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SensorToVehicleOffset::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleOffset: no field");
+        };
+        assert_eq!(descriptor, <SensorToVehicleOffset as Layout>::DESCRIPTOR);
+        assert_eq!(SensorToVehicleOffset::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SensorToVehicleOffsetResponse;
+        let value = SensorToVehicleOffsetResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::SensorToVehicleOffsetResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleOffsetResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SensorToVehicleOffsetResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SensorToVehicleOffsetResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AntennaOffset;
+        let value = AntennaOffset::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AntennaOffset::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AntennaOffset: no field");
+        };
+        assert_eq!(descriptor, <AntennaOffset as Layout>::DESCRIPTOR);
+        assert_eq!(AntennaOffset::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AntennaOffsetResponse;
+        let value = AntennaOffsetResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AntennaOffsetResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AntennaOffsetResponse: no field");
+        };
+        assert_eq!(descriptor, <AntennaOffsetResponse as Layout>::DESCRIPTOR);
+        assert_eq!(AntennaOffsetResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::EstimationControl;
+        let value = EstimationControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::EstimationControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EstimationControl: no field");
+        };
+        assert_eq!(descriptor, <EstimationControl as Layout>::DESCRIPTOR);
+        assert_eq!(EstimationControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::EstimationControlResponse;
+        let value = EstimationControlResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::EstimationControlResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EstimationControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <EstimationControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(EstimationControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GnssSourceControl;
+        let value = GnssSourceControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::GnssSourceControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssSourceControl: no field");
+        };
+        assert_eq!(descriptor, <GnssSourceControl as Layout>::DESCRIPTOR);
+        assert_eq!(GnssSourceControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GnssSourceControlResponse;
+        let value = GnssSourceControlResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::GnssSourceControlResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssSourceControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssSourceControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GnssSourceControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ExternalGnssUpdate;
+        let value = ExternalGnssUpdate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::ExternalGnssUpdate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ExternalGnssUpdate: no field");
+        };
+        assert_eq!(descriptor, <ExternalGnssUpdate as Layout>::DESCRIPTOR);
+        assert_eq!(ExternalGnssUpdate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ExternalHeadingUpdate;
+        let value = ExternalHeadingUpdate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::ExternalHeadingUpdate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ExternalHeadingUpdate: no field");
+        };
+        assert_eq!(descriptor, <ExternalHeadingUpdate as Layout>::DESCRIPTOR);
+        assert_eq!(ExternalHeadingUpdate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::HeadingUpdateControl;
+        let value = HeadingUpdateControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::HeadingUpdateControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HeadingUpdateControl: no field");
+        };
+        assert_eq!(descriptor, <HeadingUpdateControl as Layout>::DESCRIPTOR);
+        assert_eq!(HeadingUpdateControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::HeadingUpdateControlResponse;
+        let value = HeadingUpdateControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::HeadingUpdateControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HeadingUpdateControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <HeadingUpdateControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(HeadingUpdateControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AutoInitControl;
+        let value = AutoInitControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AutoInitControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AutoInitControl: no field");
+        };
+        assert_eq!(descriptor, <AutoInitControl as Layout>::DESCRIPTOR);
+        assert_eq!(AutoInitControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AutoInitControlResponse;
+        let value = AutoInitControlResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AutoInitControlResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AutoInitControlResponse: no field");
+        };
+        assert_eq!(descriptor, <AutoInitControlResponse as Layout>::DESCRIPTOR);
+        assert_eq!(AutoInitControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AccelNoise;
+        let value = AccelNoise::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::filter::AccelNoise::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelNoise: no field");
+        };
+        assert_eq!(descriptor, <AccelNoise as Layout>::DESCRIPTOR);
+        assert_eq!(AccelNoise::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AccelNoiseResponse;
+        let value = AccelNoiseResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AccelNoiseResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelNoiseResponse: no field");
+        };
+        assert_eq!(descriptor, <AccelNoiseResponse as Layout>::DESCRIPTOR);
+        assert_eq!(AccelNoiseResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GyroNoise;
+        let value = GyroNoise::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::filter::GyroNoise::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroNoise: no field");
+        };
+        assert_eq!(descriptor, <GyroNoise as Layout>::DESCRIPTOR);
+        assert_eq!(GyroNoise::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GyroNoiseResponse;
+        let value = GyroNoiseResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::GyroNoiseResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroNoiseResponse: no field");
+        };
+        assert_eq!(descriptor, <GyroNoiseResponse as Layout>::DESCRIPTOR);
+        assert_eq!(GyroNoiseResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AccelBiasModel;
+        let value = AccelBiasModel::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AccelBiasModel::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBiasModel: no field");
+        };
+        assert_eq!(descriptor, <AccelBiasModel as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBiasModel::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AccelBiasModelResponse;
+        let value = AccelBiasModelResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AccelBiasModelResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBiasModelResponse: no field");
+        };
+        assert_eq!(descriptor, <AccelBiasModelResponse as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBiasModelResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GyroBiasModel;
+        let value = GyroBiasModel::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::GyroBiasModel::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBiasModel: no field");
+        };
+        assert_eq!(descriptor, <GyroBiasModel as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBiasModel::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GyroBiasModelResponse;
+        let value = GyroBiasModelResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::GyroBiasModelResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBiasModelResponse: no field");
+        };
+        assert_eq!(descriptor, <GyroBiasModelResponse as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBiasModelResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ZuptControl;
+        let value = ZuptControl::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::filter::ZuptControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ZuptControl: no field");
+        };
+        assert_eq!(descriptor, <ZuptControl as Layout>::DESCRIPTOR);
+        assert_eq!(ZuptControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ZuptControlResponse;
+        let value = ZuptControlResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::ZuptControlResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ZuptControlResponse: no field");
+        };
+        assert_eq!(descriptor, <ZuptControlResponse as Layout>::DESCRIPTOR);
+        assert_eq!(ZuptControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ExternalHeadingUpdateWithTime;
+        let value = ExternalHeadingUpdateWithTime::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::ExternalHeadingUpdateWithTime::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ExternalHeadingUpdateWithTime: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <ExternalHeadingUpdateWithTime as Layout>::DESCRIPTOR
+        );
+        assert_eq!(ExternalHeadingUpdateWithTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss::ReceiverInfo;
+        let value = ReceiverInfo::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::gnss::ReceiverInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ReceiverInfo: no field");
+        };
+        assert_eq!(descriptor, <ReceiverInfo as Layout>::DESCRIPTOR);
+        assert_eq!(ReceiverInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss::SignalConfiguration;
+        let value = SignalConfiguration::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss::SignalConfiguration::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SignalConfiguration: no field");
+        };
+        assert_eq!(descriptor, <SignalConfiguration as Layout>::DESCRIPTOR);
+        assert_eq!(SignalConfiguration::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss::SignalConfigurationResponse;
+        let value = SignalConfigurationResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss::SignalConfigurationResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SignalConfigurationResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SignalConfigurationResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SignalConfigurationResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss::SpartnConfiguration;
+        let value = SpartnConfiguration::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss::SpartnConfiguration::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SpartnConfiguration: no field");
+        };
+        assert_eq!(descriptor, <SpartnConfiguration as Layout>::DESCRIPTOR);
+        assert_eq!(SpartnConfiguration::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss::SpartnConfigurationResponse;
+        let value = SpartnConfigurationResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss::SpartnConfigurationResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SpartnConfigurationResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SpartnConfigurationResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SpartnConfigurationResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::EchoControl;
+        let value = EchoControl::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::aiding::EchoControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EchoControl: no field");
+        };
+        assert_eq!(descriptor, <EchoControl as Layout>::DESCRIPTOR);
+        assert_eq!(EchoControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::EchoControlResponse;
+        let value = EchoControlResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::aiding::EchoControlResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EchoControlResponse: no field");
+        };
+        assert_eq!(descriptor, <EchoControlResponse as Layout>::DESCRIPTOR);
+        assert_eq!(EchoControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::EcefPosition;
+        let value = EcefPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::aiding::EcefPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefPosition: no field");
+        };
+        assert_eq!(descriptor, <EcefPosition as Layout>::DESCRIPTOR);
+        assert_eq!(EcefPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::LlhPosition;
+        let value = LlhPosition::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::aiding::LlhPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPosition: no field");
+        };
+        assert_eq!(descriptor, <LlhPosition as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::HeightAboveEllipsoid;
+        let value = HeightAboveEllipsoid::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::aiding::HeightAboveEllipsoid::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HeightAboveEllipsoid: no field");
+        };
+        assert_eq!(descriptor, <HeightAboveEllipsoid as Layout>::DESCRIPTOR);
+        assert_eq!(HeightAboveEllipsoid::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::EcefVelocity;
+        let value = EcefVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::aiding::EcefVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefVelocity: no field");
+        };
+        assert_eq!(descriptor, <EcefVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(EcefVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::NedVelocity;
+        let value = NedVelocity::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::aiding::NedVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocity: no field");
+        };
+        assert_eq!(descriptor, <NedVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::BodyFrameVelocity;
+        let value = BodyFrameVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::aiding::BodyFrameVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("BodyFrameVelocity: no field");
+        };
+        assert_eq!(descriptor, <BodyFrameVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(BodyFrameVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::TrueHeading;
+        let value = TrueHeading::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::aiding::TrueHeading::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("TrueHeading: no field");
+        };
+        assert_eq!(descriptor, <TrueHeading as Layout>::DESCRIPTOR);
+        assert_eq!(TrueHeading::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::MagneticField;
+        let value = MagneticField::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::aiding::MagneticField::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagneticField: no field");
+        };
+        assert_eq!(descriptor, <MagneticField as Layout>::DESCRIPTOR);
+        assert_eq!(MagneticField::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::aiding::Pressure;
+        let value = Pressure::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::aiding::Pressure::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Pressure: no field");
+        };
+        assert_eq!(descriptor, <Pressure as Layout>::DESCRIPTOR);
+        assert_eq!(Pressure::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::system::CommunicationMode;
+        let value = CommunicationMode::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::system::CommunicationMode::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CommunicationMode: no field");
+        };
+        assert_eq!(descriptor, <CommunicationMode as Layout>::DESCRIPTOR);
+        assert_eq!(CommunicationMode::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::system::CommunicationModeResponse;
+        let value = CommunicationModeResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::system::CommunicationModeResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CommunicationModeResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <CommunicationModeResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(CommunicationModeResponse::decode_data(data), Ok(value));
         assert!(fields.next().is_none());
     }
     {

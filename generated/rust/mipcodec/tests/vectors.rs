@@ -38,6 +38,370 @@ fn check(hex: &str, device: Option<&str>, expect: &[&str], rejected: bool) {
     );
 }
 
+/// `frame_config_write_antenna_offset` (tests/vectors/mip/aiding.yaml:13)
+#[test]
+fn case_frame_config_write_antenna_offset() {
+    check(
+        "7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":1,\"frame_id\":1,\"format\":1,\"tracking_enabled\":true,\"translation\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853],\"rotation\":{\"euler\":[0.0,0.0,0.0]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_write_notes_example` (tests/vectors/mip/aiding.yaml:38)
+#[test]
+fn case_frame_config_write_notes_example() {
+    check(
+        "7565131e1e0101010100000000003f80000000000000000000000000000000000000ecef",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":1,\"frame_id\":1,\"format\":1,\"tracking_enabled\":false,\"translation\":[0.0,1.0,0.0],\"rotation\":{\"euler\":[0.0,0.0,0.0]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_write_pitch_down` (tests/vectors/mip/aiding.yaml:60)
+#[test]
+fn case_frame_config_write_pitch_down() {
+    check(
+        "7565131e1e01010101003f333333000000000000000000000000bfc8f5c300000000448e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":1,\"frame_id\":1,\"format\":1,\"tracking_enabled\":false,\"translation\":[0.699999988079071,0.0,0.0],\"rotation\":{\"euler\":[0.0,-1.5700000524520874,0.0]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_write_quaternion` (tests/vectors/mip/aiding.yaml:82)
+#[test]
+fn case_frame_config_write_quaternion() {
+    check(
+        "756513222201010202010000000000000000becccccd3f8000000000000000000000000000001a06",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":1,\"frame_id\":2,\"format\":2,\"tracking_enabled\":true,\"translation\":[0.0,0.0,-0.4000000059604645],\"rotation\":{\"quaternion\":[1.0,0.0,0.0,0.0]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_read_euler` (tests/vectors/mip/aiding.yaml:106)
+#[test]
+fn case_frame_config_read_euler() {
+    check(
+        "756513050501020101fc0e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":2,\"frame_id\":1,\"format\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_read_euler_reply` (tests/vectors/mip/aiding.yaml:118)
+#[test]
+fn case_frame_config_read_euler_reply() {
+    check(
+        "7565132104f101001d81010101bea3d70a3de147aebf23d70a000000000000000000000000bd93",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"frame_config_response\",\"values\":{\"frame_id\":1,\"format\":1,\"tracking_enabled\":true,\"translation\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853],\"rotation\":{\"euler\":[0.0,0.0,0.0]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_read_quaternion` (tests/vectors/mip/aiding.yaml:140)
+#[test]
+fn case_frame_config_read_quaternion() {
+    check(
+        "756513050501020202fe11",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":2,\"frame_id\":2,\"format\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_read_quaternion_reply` (tests/vectors/mip/aiding.yaml:150)
+#[test]
+fn case_frame_config_read_quaternion_reply() {
+    check(
+        "7565132504f1010021810202010000000000000000becccccd3f3504f300000000000000003f3504f3a89c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"frame_config_response\",\"values\":{\"frame_id\":2,\"format\":2,\"tracking_enabled\":true,\"translation\":[0.0,0.0,-0.4000000059604645],\"rotation\":{\"quaternion\":[0.7071067690849304,0.0,0.0,0.7071067690849304]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `frame_config_save` (tests/vectors/mip/aiding.yaml:172)
+#[test]
+fn case_frame_config_save() {
+    check(
+        "7565130404010301fa0b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{\"function\":3,\"frame_id\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `echo_control_write_suppress_ack` (tests/vectors/mip/aiding.yaml:182)
+#[test]
+fn case_echo_control_write_suppress_ack() {
+    check(
+        "75651304041f01001560",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\",\"values\":{\"function\":1,\"mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `echo_control_write_response` (tests/vectors/mip/aiding.yaml:192)
+#[test]
+fn case_echo_control_write_response() {
+    check(
+        "75651304041f01021762",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\",\"values\":{\"function\":1,\"mode\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `echo_control_read` (tests/vectors/mip/aiding.yaml:202)
+#[test]
+fn case_echo_control_read() {
+    check(
+        "75651303031f021445",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `echo_control_read_reply` (tests/vectors/mip/aiding.yaml:212)
+#[test]
+fn case_echo_control_read_reply() {
+    check(
+        "7565130704f11f00039f01ab81",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":31,\"ack_code\":0}},{\"descriptor\":159,\"name\":\"echo_control_response\",\"values\":{\"mode\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `echo_control_default` (tests/vectors/mip/aiding.yaml:224)
+#[test]
+fn case_echo_control_default() {
+    check(
+        "75651303031f051748",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `ecef_position_measurement` (tests/vectors/mip/aiding.yaml:234)
+#[test]
+fn case_ecef_position_measurement() {
+    check(
+        "7565133333210200112210f47de9811501412e848100000000c151edd810000000414f47d010000000402000004020000040a0000000076337",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":33,\"name\":\"ecef_position\",\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1234567890123456789},\"frame_id\":1,\"position\":[1000000.5,-4700000.25,4100000.125],\"uncertainty\":[2.5,2.5,5.0],\"valid_flags\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `llh_position_measurement` (tests/vectors/mip/aiding.yaml:260)
+#[test]
+fn case_llh_position_measurement() {
+    check(
+        "7565133333220200136dcc951d8c0000014046380000000000c052440000000000405e2000000000003fc000003fc000004040000000075911",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":34,\"name\":\"llh_position\",\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000000000000},\"frame_id\":1,\"latitude\":44.4375,\"longitude\":-73.0625,\"height\":120.5,\"uncertainty\":[1.5,1.5,3.0],\"valid_flags\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `llh_position_height_only` (tests/vectors/mip/aiding.yaml:287)
+#[test]
+fn case_llh_position_height_only() {
+    check(
+        "75651333332201000000000df84758000100000000000000000000000000000000405e20000000000000000000000000004040000000045dfd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":34,\"name\":\"llh_position\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":60000000000},\"frame_id\":1,\"latitude\":0.0,\"longitude\":0.0,\"height\":120.5,\"uncertainty\":[0.0,0.0,3.0],\"valid_flags\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `height_above_ellipsoid_measurement` (tests/vectors/mip/aiding.yaml:314)
+#[test]
+fn case_height_above_ellipsoid_measurement() {
+    check(
+        "7565131717230100000000012a05f20001437a4000400000000001a04e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":35,\"name\":\"height_above_ellipsoid\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":5000000000},\"frame_id\":1,\"height\":250.25,\"uncertainty\":2.0,\"valid_flags\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `ecef_velocity_measurement` (tests/vectors/mip/aiding.yaml:335)
+#[test]
+fn case_ecef_velocity_measurement() {
+    check(
+        "7565132727280200136dcc953b596500013fc00000be800000000000003dcccccd3dcccccd3dcccccd00076a41",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":40,\"name\":\"ecef_velocity\",\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000500000000},\"frame_id\":1,\"velocity\":[1.5,-0.25,0.0],\"uncertainty\":[0.10000000149011612,0.10000000149011612,0.10000000149011612],\"valid_flags\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `ned_velocity_measurement_time_of_arrival` (tests/vectors/mip/aiding.yaml:356)
+#[test]
+fn case_ned_velocity_measurement_time_of_arrival() {
+    check(
+        "756513272729030000000000000000000141200000c02000003e0000003d4ccccd3d4ccccd3dcccccd0003d0c1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":41,\"name\":\"ned_velocity\",\"values\":{\"time\":{\"timebase\":3,\"reserved\":0,\"nanoseconds\":0},\"frame_id\":1,\"velocity\":[10.0,-2.5,0.125],\"uncertainty\":[0.05000000074505806,0.05000000074505806,0.10000000149011612],\"valid_flags\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `body_frame_velocity_example` (tests/vectors/mip/aiding.yaml:377)
+#[test]
+fn case_body_frame_velocity_example() {
+    check(
+        "75651327272a0100000000000002693002406fae1400000000000000003df5c28f3df5c28f3df5c28f000300a3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":42,\"name\":\"body_frame_velocity\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":158000},\"frame_id\":2,\"velocity\":[3.744999885559082,0.0,0.0],\"uncertainty\":[0.11999999731779099,0.11999999731779099,0.11999999731779099],\"valid_flags\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `body_frame_velocity_nack_invalid_parameter` (tests/vectors/mip/aiding.yaml:403)
+#[test]
+fn case_body_frame_velocity_nack_invalid_parameter() {
+    check(
+        "7565130404f12a03132b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":42,\"ack_code\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `true_heading_measurement` (tests/vectors/mip/aiding.yaml:415)
+#[test]
+fn case_true_heading_measurement() {
+    check(
+        "75651317173101000000000077359400013fc90fdb3c8f5c290001d181",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":49,\"name\":\"true_heading\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":2000000000},\"frame_id\":1,\"heading\":1.5707963705062866,\"uncertainty\":0.017500000074505806,\"valid_flags\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `magnetic_field_example` (tests/vectors/mip/aiding.yaml:435)
+#[test]
+fn case_magnetic_field_example() {
+    check(
+        "75651327273201000000000000026930033ee6e9793eb0a3d73ecd4fdf3cfdf3b63cfdf3b63cfdf3b60007e0ec",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":50,\"name\":\"magnetic_field\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":158000},\"frame_id\":3,\"magnetic_field\":[0.45100000500679016,0.3449999988079071,0.4009999930858612],\"uncertainty\":[0.03099999949336052,0.03099999949336052,0.03099999949336052],\"valid_flags\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `magnetic_field_ack` (tests/vectors/mip/aiding.yaml:459)
+#[test]
+fn case_magnetic_field_ack() {
+    check(
+        "7565130404f132001838",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":50,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pressure_measurement` (tests/vectors/mip/aiding.yaml:469)
+#[test]
+fn case_pressure_measurement() {
+    check(
+        "756513171733010000000000b2d05e0000447d50003f000000000180c0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":51,\"name\":\"pressure\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":3000000000},\"frame_id\":0,\"pressure\":1013.25,\"uncertainty\":0.5,\"valid_flags\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `llh_position_and_ned_velocity_one_packet` (tests/vectors/mip/aiding.yaml:489)
+#[test]
+fn case_llh_position_and_ned_velocity_one_packet() {
+    check(
+        "7565135a33220200136dcc951d8c0000014046380000000000c052440000000000405e2000000000003fc000003fc0000040400000000727290200136dcc951d8c00000141200000c02000003e0000003d4ccccd3d4ccccd3dcccccd0007c9ab",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":34,\"name\":\"llh_position\",\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000000000000},\"frame_id\":1,\"latitude\":44.4375,\"longitude\":-73.0625,\"height\":120.5,\"uncertainty\":[1.5,1.5,3.0],\"valid_flags\":7}},{\"descriptor\":41,\"name\":\"ned_velocity\",\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000000000000},\"frame_id\":1,\"velocity\":[10.0,-2.5,0.125],\"uncertainty\":[0.05000000074505806,0.05000000074505806,0.10000000149011612],\"valid_flags\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `llh_position_and_ned_velocity_acks` (tests/vectors/mip/aiding.yaml:526)
+#[test]
+fn case_llh_position_and_ned_velocity_acks() {
+    check(
+        "7565130804f1220004f129002a91",
+        None,
+        &[
+            "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":41,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
 /// `ping_command` (tests/vectors/mip/base.yaml:8)
 #[test]
 fn case_ping_command() {
@@ -1031,6 +1395,1268 @@ fn case_doubles_infinity_and_nan_payload() {
     );
 }
 
+/// `reset_filter_command` (tests/vectors/mip/filter_01_1f.yaml:10)
+#[test]
+fn case_reset_filter_command() {
+    check(
+        "75650d020201ecf6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":1,\"name\":\"reset_filter\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `reset_filter_reply` (tests/vectors/mip/filter_01_1f.yaml:20)
+#[test]
+fn case_reset_filter_reply() {
+    check(
+        "75650d0404f10100e1b2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `reset_and_run_filter_one_packet` (tests/vectors/mip/filter_01_1f.yaml:28)
+#[test]
+fn case_reset_and_run_filter_one_packet() {
+    check(
+        "75650d0402010205f5e1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":1,\"name\":\"reset_filter\",\"values\":{}},{\"descriptor\":5,\"name\":\"run_filter\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_initial_attitude_zero` (tests/vectors/mip/filter_01_1f.yaml:43)
+#[test]
+fn case_set_initial_attitude_zero() {
+    check(
+        "75650d0e0e02000000000000000000000000056f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":2,\"name\":\"set_initial_attitude\",\"values\":{\"roll\":0.0,\"pitch\":0.0,\"heading\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_initial_attitude_copy_paste_published` (tests/vectors/mip/filter_01_1f.yaml:51)
+#[test]
+fn case_set_initial_attitude_copy_paste_published() {
+    check(
+        "75650d0e0e020000000000000000000000000000056f",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0e0e020000000000000000000000000000056f\"}"],
+        true,
+    );
+}
+
+/// `set_initial_attitude_reply` (tests/vectors/mip/filter_01_1f.yaml:64)
+#[test]
+fn case_set_initial_attitude_reply() {
+    check(
+        "75650d0404f10200e2b4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":2,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_initial_attitude_getting_started` (tests/vectors/mip/filter_01_1f.yaml:74)
+#[test]
+fn case_set_initial_attitude_getting_started() {
+    check(
+        "75650d0e0e02bae3ed9b3c7d6ddfbf855cf5c409",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":2,\"name\":\"set_initial_attitude\",\"values\":{\"roll\":-0.001738953753374517,\"pitch\":0.01546808984130621,\"heading\":-1.04189932346344}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_initial_attitude_getting_started_table_published` (tests/vectors/mip/filter_01_1f.yaml:87)
+#[test]
+fn case_set_initial_attitude_getting_started_table_published() {
+    check(
+        "75650d060602bae3ed9b3c7d6ddfbf855cf5c409",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d060602bae3ed9b3c7d6ddfbf855cf5c409\"}"],
+        true,
+    );
+}
+
+/// `set_initial_heading_command` (tests/vectors/mip/filter_01_1f.yaml:100)
+#[test]
+fn case_set_initial_heading_command() {
+    check(
+        "75650d06060300000000f6e4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":3,\"name\":\"set_initial_heading\",\"values\":{\"heading\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_initial_heading_reply` (tests/vectors/mip/filter_01_1f.yaml:110)
+#[test]
+fn case_set_initial_heading_reply() {
+    check(
+        "75650d0404f10300e3b6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":3,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_initial_heading_half_pi` (tests/vectors/mip/filter_01_1f.yaml:118)
+#[test]
+fn case_set_initial_heading_half_pi() {
+    check(
+        "75650d0606033fc90fdbe834",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":3,\"name\":\"set_initial_heading\",\"values\":{\"heading\":1.5707963705062866}}]}",
+        ],
+        false,
+    );
+}
+
+/// `run_filter_command` (tests/vectors/mip/filter_01_1f.yaml:130)
+#[test]
+fn case_run_filter_command() {
+    check(
+        "75650d020205f0fa",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":5,\"name\":\"run_filter\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `run_filter_reply` (tests/vectors/mip/filter_01_1f.yaml:139)
+#[test]
+fn case_run_filter_reply() {
+    check(
+        "75650d0404f10500e5ba",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":5,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `vehicle_dynamics_mode_write` (tests/vectors/mip/filter_01_1f.yaml:149)
+#[test]
+fn case_vehicle_dynamics_mode_write() {
+    check(
+        "75650d04041001010110",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":16,\"name\":\"vehicle_dynamics_mode\",\"values\":{\"function\":1,\"mode\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `vehicle_dynamics_mode_copy_paste_published` (tests/vectors/mip/filter_01_1f.yaml:159)
+#[test]
+fn case_vehicle_dynamics_mode_copy_paste_published() {
+    check(
+        "75650c04041001010110",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c04041001010110\"}"],
+        true,
+    );
+}
+
+/// `vehicle_dynamics_mode_reply` (tests/vectors/mip/filter_01_1f.yaml:170)
+#[test]
+fn case_vehicle_dynamics_mode_reply() {
+    check(
+        "75650d0404f11000f0d0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `vehicle_dynamics_mode_write_airborne_high_g` (tests/vectors/mip/filter_01_1f.yaml:178)
+#[test]
+fn case_vehicle_dynamics_mode_write_airborne_high_g() {
+    check(
+        "75650d04041001040413",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":16,\"name\":\"vehicle_dynamics_mode\",\"values\":{\"function\":1,\"mode\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `vehicle_dynamics_mode_read` (tests/vectors/mip/filter_01_1f.yaml:187)
+#[test]
+fn case_vehicle_dynamics_mode_read() {
+    check(
+        "75650d03031002ff09",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":16,\"name\":\"vehicle_dynamics_mode\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `vehicle_dynamics_mode_read_reply` (tests/vectors/mip/filter_01_1f.yaml:196)
+#[test]
+fn case_vehicle_dynamics_mode_read_reply() {
+    check(
+        "75650d0704f1100003800278c3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"vehicle_dynamics_mode_response\",\"values\":{\"mode\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_transform_write` (tests/vectors/mip/filter_01_1f.yaml:210)
+#[test]
+fn case_sensor_to_vehicle_transform_write() {
+    check(
+        "75650d0f0f11010000000000000000000000001772",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":17,\"name\":\"sensor_to_vehicle_transform\",\"values\":{\"function\":1,\"roll\":0.0,\"pitch\":0.0,\"yaw\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_transform_copy_paste_published` (tests/vectors/mip/filter_01_1f.yaml:218)
+#[test]
+fn case_sensor_to_vehicle_transform_copy_paste_published() {
+    check(
+        "75650d0f0f1101000000000000000000001772",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0f0f1101000000000000000000001772\"}"],
+        true,
+    );
+}
+
+/// `sensor_to_vehicle_transform_reply` (tests/vectors/mip/filter_01_1f.yaml:230)
+#[test]
+fn case_sensor_to_vehicle_transform_reply() {
+    check(
+        "75650d0404f11100f1d2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_transform_write_rotated` (tests/vectors/mip/filter_01_1f.yaml:238)
+#[test]
+fn case_sensor_to_vehicle_transform_write_rotated() {
+    check(
+        "75650d0f0f110140490fdb00000000bfc90fdbfc2e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":17,\"name\":\"sensor_to_vehicle_transform\",\"values\":{\"function\":1,\"roll\":3.1415927410125732,\"pitch\":0.0,\"yaw\":-1.5707963705062866}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_transform_read` (tests/vectors/mip/filter_01_1f.yaml:249)
+#[test]
+fn case_sensor_to_vehicle_transform_read() {
+    check(
+        "75650d03031102000b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":17,\"name\":\"sensor_to_vehicle_transform\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_transform_read_reply` (tests/vectors/mip/filter_01_1f.yaml:258)
+#[test]
+fn case_sensor_to_vehicle_transform_read_reply() {
+    check(
+        "75650d1204f111000e8100000000000000003fc90fdb80ab",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"sensor_to_vehicle_transform_response\",\"values\":{\"roll\":0.0,\"pitch\":0.0,\"yaw\":1.5707963705062866}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_offset_write` (tests/vectors/mip/filter_01_1f.yaml:271)
+#[test]
+fn case_sensor_to_vehicle_offset_write() {
+    check(
+        "75650d0f0f12010000000000000000000000001880",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":18,\"name\":\"sensor_to_vehicle_offset\",\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_offset_reply` (tests/vectors/mip/filter_01_1f.yaml:281)
+#[test]
+fn case_sensor_to_vehicle_offset_reply() {
+    check(
+        "75650d0404f11200f2d4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":18,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_offset_read_reply` (tests/vectors/mip/filter_01_1f.yaml:289)
+#[test]
+fn case_sensor_to_vehicle_offset_read_reply() {
+    check(
+        "75650d1204f112000e823e800000bf0000003f800000cc54",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":18,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"sensor_to_vehicle_offset_response\",\"values\":{\"offset\":[0.25,-0.5,1.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `antenna_offset_write` (tests/vectors/mip/filter_01_1f.yaml:302)
+#[test]
+fn case_antenna_offset_write() {
+    check(
+        "75650d0f0f1301000000000000000000000000198e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":19,\"name\":\"antenna_offset\",\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `antenna_offset_reply` (tests/vectors/mip/filter_01_1f.yaml:312)
+#[test]
+fn case_antenna_offset_reply() {
+    check(
+        "75650d0404f11300f3d6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":19,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `antenna_offset_write_cv7_example` (tests/vectors/mip/filter_01_1f.yaml:320)
+#[test]
+fn case_antenna_offset_write_cv7_example() {
+    check(
+        "75650d0f0f1301bea3d70a3de147aebf23d70a3173",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":19,\"name\":\"antenna_offset\",\"values\":{\"function\":1,\"offset\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `antenna_offset_read_reply` (tests/vectors/mip/filter_01_1f.yaml:331)
+#[test]
+fn case_antenna_offset_read_reply() {
+    check(
+        "75650d1204f113000e83bea3d70a3de147aebf23d70aaa7a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":19,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"antenna_offset_response\",\"values\":{\"offset\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `estimation_control_write_all` (tests/vectors/mip/filter_01_1f.yaml:346)
+#[test]
+fn case_estimation_control_write_all() {
+    check(
+        "75650d05051401ffff0427",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":20,\"name\":\"estimation_control\",\"values\":{\"function\":1,\"flags\":65535}}]}",
+        ],
+        false,
+    );
+}
+
+/// `estimation_control_reply` (tests/vectors/mip/filter_01_1f.yaml:356)
+#[test]
+fn case_estimation_control_reply() {
+    check(
+        "75650d0404f11400f4d8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":20,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `estimation_control_write_gyro_bias` (tests/vectors/mip/filter_01_1f.yaml:364)
+#[test]
+fn case_estimation_control_write_gyro_bias() {
+    check(
+        "75650d050514010001072b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":20,\"name\":\"estimation_control\",\"values\":{\"function\":1,\"flags\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `estimation_control_read_reply` (tests/vectors/mip/filter_01_1f.yaml:373)
+#[test]
+fn case_estimation_control_read_reply() {
+    check(
+        "75650d0804f1140004840063e3cb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":20,\"ack_code\":0}},{\"descriptor\":132,\"name\":\"estimation_control_response\",\"values\":{\"flags\":99}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_source_control_write_external` (tests/vectors/mip/filter_01_1f.yaml:388)
+#[test]
+fn case_gnss_source_control_write_external() {
+    check(
+        "75650d04041501020720",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":21,\"name\":\"gnss_source_control\",\"values\":{\"function\":1,\"source\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_source_control_reply` (tests/vectors/mip/filter_01_1f.yaml:398)
+#[test]
+fn case_gnss_source_control_reply() {
+    check(
+        "75650d0404f11500f5da",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":21,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_source_control_write_internal_2` (tests/vectors/mip/filter_01_1f.yaml:406)
+#[test]
+fn case_gnss_source_control_write_internal_2() {
+    check(
+        "75650d04041501040922",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":21,\"name\":\"gnss_source_control\",\"values\":{\"function\":1,\"source\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_source_control_save` (tests/vectors/mip/filter_01_1f.yaml:415)
+#[test]
+fn case_gnss_source_control_save() {
+    check(
+        "75650d030315030514",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":21,\"name\":\"gnss_source_control\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_source_control_read_reply_internal_1` (tests/vectors/mip/filter_01_1f.yaml:424)
+#[test]
+fn case_gnss_source_control_read_reply_internal_1() {
+    check(
+        "75650d0704f1150003860384e9",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":21,\"ack_code\":0}},{\"descriptor\":134,\"name\":\"gnss_source_control_response\",\"values\":{\"source\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_source_control_read_reply_internal` (tests/vectors/mip/filter_01_1f.yaml:435)
+#[test]
+fn case_gnss_source_control_read_reply_internal() {
+    check(
+        "75650d0704f1150003860182e7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":21,\"ack_code\":0}},{\"descriptor\":134,\"name\":\"gnss_source_control_response\",\"values\":{\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_gnss_update_example` (tests/vectors/mip/filter_01_1f.yaml:448)
+#[test]
+fn case_external_gnss_update_example() {
+    check(
+        "75650d484816000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000003f0000003f0000003f0000003dcccccd3dcccccd3dcccccd308a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":22,\"name\":\"external_gnss_update\",\"values\":{\"gps_tow\":0.0,\"gps_week\":0,\"latitude\":0.0,\"longitude\":0.0,\"height\":0.0,\"velocity\":[0.0,0.0,0.0],\"position_uncertainty\":[0.5,0.5,0.5],\"velocity_uncertainty\":[0.10000000149011612,0.10000000149011612,0.10000000149011612]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_gnss_update_reply` (tests/vectors/mip/filter_01_1f.yaml:478)
+#[test]
+fn case_external_gnss_update_reply() {
+    check(
+        "75650d0404f11600f6dc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":22,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_gnss_update_values` (tests/vectors/mip/filter_01_1f.yaml:486)
+#[test]
+fn case_external_gnss_update_values() {
+    check(
+        "75650d484816411518010000000008fc4046380000000000c0524c0000000000405e2000000000003fc00000c01000003e0000003f0000003f0000003f8000003dcccccd3dcccccd3e4ccccd8b7a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":22,\"name\":\"external_gnss_update\",\"values\":{\"gps_tow\":345600.25,\"gps_week\":2300,\"latitude\":44.4375,\"longitude\":-73.1875,\"height\":120.5,\"velocity\":[1.5,-2.25,0.125],\"position_uncertainty\":[0.5,0.5,1.0],\"velocity_uncertainty\":[0.10000000149011612,0.10000000149011612,0.20000000298023224]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_example` (tests/vectors/mip/filter_01_1f.yaml:518)
+#[test]
+fn case_external_heading_update_example() {
+    check(
+        "75650d0b0b173dcccccd3dcccccd015934",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":23,\"name\":\"external_heading_update\",\"values\":{\"heading\":0.10000000149011612,\"heading_uncertainty\":0.10000000149011612,\"type\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_reply` (tests/vectors/mip/filter_01_1f.yaml:529)
+#[test]
+fn case_external_heading_update_reply() {
+    check(
+        "75650d0404f11700f7de",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":23,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_magnetic` (tests/vectors/mip/filter_01_1f.yaml:537)
+#[test]
+fn case_external_heading_update_magnetic() {
+    check(
+        "75650d0b0b17c02000003d4ccccd02180e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":23,\"name\":\"external_heading_update\",\"values\":{\"heading\":-2.5,\"heading_uncertainty\":0.05000000074505806,\"type\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `heading_update_control_write_magnetometer` (tests/vectors/mip/filter_01_1f.yaml:549)
+#[test]
+fn case_heading_update_control_write_magnetometer() {
+    check(
+        "75650d04041801010928",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":24,\"name\":\"heading_update_control\",\"values\":{\"function\":1,\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `heading_update_control_reply` (tests/vectors/mip/filter_01_1f.yaml:559)
+#[test]
+fn case_heading_update_control_reply() {
+    check(
+        "75650d0404f11800f8e0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":24,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `heading_update_control_read` (tests/vectors/mip/filter_01_1f.yaml:567)
+#[test]
+fn case_heading_update_control_read() {
+    check(
+        "75650d030318020719",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":24,\"name\":\"heading_update_control\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `heading_update_control_read_reply` (tests/vectors/mip/filter_01_1f.yaml:576)
+#[test]
+fn case_heading_update_control_read_reply() {
+    check(
+        "75650d0704f118000387078cfe",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":24,\"ack_code\":0}},{\"descriptor\":135,\"name\":\"heading_update_control_response\",\"values\":{\"source\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `auto_init_control_write_enable` (tests/vectors/mip/filter_01_1f.yaml:589)
+#[test]
+fn case_auto_init_control_write_enable() {
+    check(
+        "75650d04041901010a2b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":25,\"name\":\"auto_init_control\",\"values\":{\"function\":1,\"enable\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `auto_init_control_reply` (tests/vectors/mip/filter_01_1f.yaml:599)
+#[test]
+fn case_auto_init_control_reply() {
+    check(
+        "75650d0404f11900f9e2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":25,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `auto_init_control_read` (tests/vectors/mip/filter_01_1f.yaml:607)
+#[test]
+fn case_auto_init_control_read() {
+    check(
+        "75650d03031902081b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":25,\"name\":\"auto_init_control\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `auto_init_control_read_reply` (tests/vectors/mip/filter_01_1f.yaml:616)
+#[test]
+fn case_auto_init_control_read_reply() {
+    check(
+        "75650d0704f1190003880087fe",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":25,\"ack_code\":0}},{\"descriptor\":136,\"name\":\"auto_init_control_response\",\"values\":{\"enable\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_noise_write` (tests/vectors/mip/filter_01_1f.yaml:627)
+#[test]
+fn case_accel_noise_write() {
+    check(
+        "75650d0f0f1a013ca3d70a3ca3d70a3ca3d70a60a3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":26,\"name\":\"accel_noise\",\"values\":{\"function\":1,\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_noise_copy_paste_published` (tests/vectors/mip/filter_01_1f.yaml:635)
+#[test]
+fn case_accel_noise_copy_paste_published() {
+    check(
+        "75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3\"}"],
+        true,
+    );
+}
+
+/// `accel_noise_reply` (tests/vectors/mip/filter_01_1f.yaml:648)
+#[test]
+fn case_accel_noise_reply() {
+    check(
+        "75650d0404f11a00fae4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":26,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_noise_read_reply` (tests/vectors/mip/filter_01_1f.yaml:656)
+#[test]
+fn case_accel_noise_read_reply() {
+    check(
+        "75650d1204f11a000e893ca3d70a3ca3d70a3ca3d70adf06",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":26,\"ack_code\":0}},{\"descriptor\":137,\"name\":\"accel_noise_response\",\"values\":{\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_noise_write` (tests/vectors/mip/filter_01_1f.yaml:671)
+#[test]
+fn case_gyro_noise_write() {
+    check(
+        "75650d0f0f1b013a0d4bad3a0d4bad3a0d4baddee8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":27,\"name\":\"gyro_noise\",\"values\":{\"function\":1,\"noise\":[0.0005389999714680016,0.0005389999714680016,0.0005389999714680016]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_noise_reply` (tests/vectors/mip/filter_01_1f.yaml:686)
+#[test]
+fn case_gyro_noise_reply() {
+    check(
+        "75650d0404f11b00fbe6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":27,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_noise_default` (tests/vectors/mip/filter_01_1f.yaml:694)
+#[test]
+fn case_gyro_noise_default() {
+    check(
+        "75650d03031b050d22",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":27,\"name\":\"gyro_noise\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_noise_read_reply` (tests/vectors/mip/filter_01_1f.yaml:703)
+#[test]
+fn case_gyro_noise_read_reply() {
+    check(
+        "75650d1204f11b000e8a386212af386212af386212afb23f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":27,\"ack_code\":0}},{\"descriptor\":138,\"name\":\"gyro_noise_response\",\"values\":{\"noise\":[5.3899999329587445e-05,5.3899999329587445e-05,5.3899999329587445e-05]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_model_example` (tests/vectors/mip/filter_01_1f.yaml:718)
+#[test]
+fn case_accel_bias_model_example() {
+    check(
+        "75650d1b1b1c013c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d4952d02c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":28,\"name\":\"accel_bias_model\",\"values\":{\"function\":1,\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],\"noise\":[0.0006000000284984708,0.0006000000284984708,0.0006000000284984708]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_model_reply` (tests/vectors/mip/filter_01_1f.yaml:733)
+#[test]
+fn case_accel_bias_model_reply() {
+    check(
+        "75650d0404f11c00fce8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":28,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_model_read` (tests/vectors/mip/filter_01_1f.yaml:741)
+#[test]
+fn case_accel_bias_model_read() {
+    check(
+        "75650d03031c020b21",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":28,\"name\":\"accel_bias_model\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_model_read_reply` (tests/vectors/mip/filter_01_1f.yaml:750)
+#[test]
+fn case_accel_bias_model_read_reply() {
+    check(
+        "75650d1e04f11c001a8b3c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d495251d1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":28,\"ack_code\":0}},{\"descriptor\":139,\"name\":\"accel_bias_model_response\",\"values\":{\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],\"noise\":[0.0006000000284984708,0.0006000000284984708,0.0006000000284984708]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_model_example` (tests/vectors/mip/filter_01_1f.yaml:768)
+#[test]
+fn case_gyro_bias_model_example() {
+    check(
+        "75650d1b1b1d013c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5ac6efe",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":29,\"name\":\"gyro_bias_model\",\"values\":{\"function\":1,\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],\"noise\":[0.00015999999595806003,0.00015999999595806003,0.00015999999595806003]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_model_reply` (tests/vectors/mip/filter_01_1f.yaml:782)
+#[test]
+fn case_gyro_bias_model_reply() {
+    check(
+        "75650d0404f11d00fdea",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":29,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_model_load` (tests/vectors/mip/filter_01_1f.yaml:790)
+#[test]
+fn case_gyro_bias_model_load() {
+    check(
+        "75650d03031d040e25",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":29,\"name\":\"gyro_bias_model\",\"values\":{\"function\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_model_read_reply` (tests/vectors/mip/filter_01_1f.yaml:799)
+#[test]
+fn case_gyro_bias_model_read_reply() {
+    check(
+        "75650d1e04f11d001a8c3c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5acf0be",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":29,\"ack_code\":0}},{\"descriptor\":140,\"name\":\"gyro_bias_model_response\",\"values\":{\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],\"noise\":[0.00015999999595806003,0.00015999999595806003,0.00015999999595806003]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zupt_control_write` (tests/vectors/mip/filter_01_1f.yaml:817)
+#[test]
+fn case_zupt_control_write() {
+    check(
+        "75650d08081e01010000000017ba",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":30,\"name\":\"zupt_control\",\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zupt_control_write_threshold` (tests/vectors/mip/filter_01_1f.yaml:833)
+#[test]
+fn case_zupt_control_write_threshold() {
+    check(
+        "75650d08081e01013c23d70a57cb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":30,\"name\":\"zupt_control\",\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.009999999776482582}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zupt_control_reply` (tests/vectors/mip/filter_01_1f.yaml:844)
+#[test]
+fn case_zupt_control_reply() {
+    check(
+        "75650d0404f11e00feec",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":30,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zupt_control_read_reply` (tests/vectors/mip/filter_01_1f.yaml:852)
+#[test]
+fn case_zupt_control_read_reply() {
+    check(
+        "75650d0b04f11e00078d013dcccccd3c73",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":30,\"ack_code\":0}},{\"descriptor\":141,\"name\":\"zupt_control_response\",\"values\":{\"enable\":1,\"threshold\":0.10000000149011612}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_with_time_example` (tests/vectors/mip/filter_01_1f.yaml:865)
+#[test]
+fn case_external_heading_update_with_time_example() {
+    check(
+        "75650d15151f40dd4c000000000006a43c23d70a3c23d70a01c4a6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":31,\"name\":\"external_heading_update_with_time\",\"values\":{\"gps_tow\":30000.0,\"gps_week\":1700,\"heading\":0.009999999776482582,\"heading_uncertainty\":0.009999999776482582,\"type\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_with_time_reply` (tests/vectors/mip/filter_01_1f.yaml:879)
+#[test]
+fn case_external_heading_update_with_time_reply() {
+    check(
+        "75650d0404f11f00ffee",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":31,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_with_time_reply_table_published` (tests/vectors/mip/filter_01_1f.yaml:888)
+#[test]
+fn case_external_heading_update_with_time_reply_table_published() {
+    check(
+        "75650d0404f10100ffee",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f10100ffee\"}"],
+        true,
+    );
+}
+
+/// `external_heading_update_with_time_nack` (tests/vectors/mip/filter_01_1f.yaml:899)
+#[test]
+fn case_external_heading_update_with_time_nack() {
+    check(
+        "75650d0404f11f0302f1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":31,\"ack_code\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `external_heading_update_with_time_cv7` (tests/vectors/mip/filter_01_1f.yaml:910)
+#[test]
+fn case_external_heading_update_with_time_cv7() {
+    check(
+        "75650d15151f411518010000000008fcc02000003d4ccccd02a749",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":31,\"name\":\"external_heading_update_with_time\",\"values\":{\"gps_tow\":345600.25,\"gps_week\":2300,\"heading\":-2.5,\"heading_uncertainty\":0.05000000074505806,\"type\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `receiver_info_command` (tests/vectors/mip/gnss.yaml:7)
+#[test]
+fn case_receiver_info_command() {
+    check(
+        "75650e020201edfa",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":1,\"name\":\"receiver_info\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `receiver_info_reply_two_receivers` (tests/vectors/mip/gnss.yaml:17)
+#[test]
+fn case_receiver_info_reply_two_receivers() {
+    check(
+        "75650e4b04f1010047810201915a45442d4639502c48504720312e33320000000000000000000000000000000002925a45442d4639502c48504720312e333200000000000000000000000000000000b5ca",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"receiver_info_response\",\"values\":{\"num_receivers\":2,\"receiver_info\":[{\"receiver_id\":1,\"mip_data_descriptor_set\":145,\"description\":\"ZED-F9P,HPG 1.32\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\"},{\"receiver_id\":2,\"mip_data_descriptor_set\":146,\"description\":\"ZED-F9P,HPG 1.32\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\\u0000\"}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `receiver_info_reply_none` (tests/vectors/mip/gnss.yaml:44)
+#[test]
+fn case_receiver_info_reply_none() {
+    check(
+        "75650e0704f101000381006981",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"receiver_info_response\",\"values\":{\"num_receivers\":0,\"receiver_info\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_write` (tests/vectors/mip/gnss.yaml:57)
+#[test]
+fn case_signal_configuration_write() {
+    check(
+        "75650e0b0b020105010505000000001197",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\",\"values\":{\"function\":1,\"gps_enable\":5,\"glonass_enable\":1,\"galileo_enable\":5,\"beidou_enable\":5,\"reserved\":[0,0,0,0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_write_every_bit` (tests/vectors/mip/gnss.yaml:79)
+#[test]
+fn case_signal_configuration_write_every_bit() {
+    check(
+        "75650e0b0b0201070307070000000019cb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\",\"values\":{\"function\":1,\"gps_enable\":7,\"glonass_enable\":3,\"galileo_enable\":7,\"beidou_enable\":7,\"reserved\":[0,0,0,0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_read` (tests/vectors/mip/gnss.yaml:100)
+#[test]
+fn case_signal_configuration_read() {
+    check(
+        "75650e03030202f2f2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_read_reply` (tests/vectors/mip/gnss.yaml:110)
+#[test]
+fn case_signal_configuration_read_reply() {
+    check(
+        "75650e0e04f102000a820100050100000000804f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":2,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"signal_configuration_response\",\"values\":{\"gps_enable\":1,\"glonass_enable\":0,\"galileo_enable\":5,\"beidou_enable\":1,\"reserved\":[0,0,0,0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_save` (tests/vectors/mip/gnss.yaml:126)
+#[test]
+fn case_signal_configuration_save() {
+    check(
+        "75650e03030203f3f3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_load` (tests/vectors/mip/gnss.yaml:135)
+#[test]
+fn case_signal_configuration_load() {
+    check(
+        "75650e03030204f4f4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\",\"values\":{\"function\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `signal_configuration_default` (tests/vectors/mip/gnss.yaml:144)
+#[test]
+fn case_signal_configuration_default() {
+    check(
+        "75650e03030205f5f5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_write_lband` (tests/vectors/mip/gnss.yaml:153)
+#[test]
+fn case_spartn_configuration_write_lband() {
+    check(
+        "75650e51512001010200000000000030313031303130313031303130313031303130313031303130313031303130310000000000003031303130313031303130313031303130313031303130313031303130313031ceb1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\",\"values\":{\"function\":1,\"enable\":1,\"type\":2,\"current_key_tow\":0,\"current_key_week\":0,\"current_key\":\"01010101010101010101010101010101\",\"next_key_tow\":0,\"next_key_week\":0,\"next_key\":\"01010101010101010101010101010101\"}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_write_network` (tests/vectors/mip/gnss.yaml:186)
+#[test]
+fn case_spartn_configuration_write_network() {
+    check(
+        "75650e51512001010100054600091a30313233343536373839414243444546303132333435363738394142434445460007e900091b4645444342413938373635343332313046454443424139383736353433323130b7c5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\",\"values\":{\"function\":1,\"enable\":1,\"type\":1,\"current_key_tow\":345600,\"current_key_week\":2330,\"current_key\":\"0123456789ABCDEF0123456789ABCDEF\",\"next_key_tow\":518400,\"next_key_week\":2331,\"next_key\":\"FEDCBA9876543210FEDCBA9876543210\"}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_ack` (tests/vectors/mip/gnss.yaml:216)
+#[test]
+fn case_spartn_configuration_ack() {
+    check(
+        "75650e0404f1200001f6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":32,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_read` (tests/vectors/mip/gnss.yaml:225)
+#[test]
+fn case_spartn_configuration_read() {
+    check(
+        "75650e03032002102e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_read_reply` (tests/vectors/mip/gnss.yaml:234)
+#[test]
+fn case_spartn_configuration_read_reply() {
+    check(
+        "75650e5404f1200050a0010200000000000030313031303130313031303130313031303130313031303130313031303130310000000000003031303130313031303130313031303130313031303130313031303130313031647e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":32,\"ack_code\":0}},{\"descriptor\":160,\"name\":\"spartn_configuration_response\",\"values\":{\"enable\":1,\"type\":2,\"current_key_tow\":0,\"current_key_week\":0,\"current_key\":\"01010101010101010101010101010101\",\"next_key_tow\":0,\"next_key_week\":0,\"next_key\":\"01010101010101010101010101010101\"}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_save` (tests/vectors/mip/gnss.yaml:263)
+#[test]
+fn case_spartn_configuration_save() {
+    check(
+        "75650e03032003112f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `spartn_configuration_default` (tests/vectors/mip/gnss.yaml:272)
+#[test]
+fn case_spartn_configuration_default() {
+    check(
+        "75650e030320051331",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
 /// `overview_field_descriptor_0x03` (tests/vectors/mip/sensor.yaml:9)
 #[test]
 fn case_overview_field_descriptor_0x03() {
@@ -1314,6 +2940,136 @@ fn case_union_selector_without_member() {
         None,
         &[
             "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":\"parameters: no member for selector value 9\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_write_sensor_direct` (tests/vectors/mip/system.yaml:7)
+#[test]
+fn case_communication_mode_write_sensor_direct() {
+    check(
+        "75657f040410010274bd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":1,\"mode\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_ack` (tests/vectors/mip/system.yaml:17)
+#[test]
+fn case_communication_mode_ack() {
+    check(
+        "75657f0404f11000627c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_read` (tests/vectors/mip/system.yaml:26)
+#[test]
+fn case_communication_mode_read() {
+    check(
+        "75657f030310027143",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_read_placeholder` (tests/vectors/mip/system.yaml:39)
+#[test]
+fn case_communication_mode_read_placeholder() {
+    check(
+        "75657f040410020174be",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":2,\"mode\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_read_reply` (tests/vectors/mip/system.yaml:52)
+#[test]
+fn case_communication_mode_read_reply() {
+    check(
+        "75657f0704f11000039001f9e4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"communication_mode_response\",\"values\":{\"mode\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_write_gnss_direct` (tests/vectors/mip/system.yaml:65)
+#[test]
+fn case_communication_mode_write_gnss_direct() {
+    check(
+        "75657f040410010375be",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":1,\"mode\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_save` (tests/vectors/mip/system.yaml:75)
+#[test]
+fn case_communication_mode_save() {
+    check(
+        "75657f030310037244",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_load` (tests/vectors/mip/system.yaml:85)
+#[test]
+fn case_communication_mode_load() {
+    check(
+        "75657f030310047345",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_default` (tests/vectors/mip/system.yaml:95)
+#[test]
+fn case_communication_mode_default() {
+    check(
+        "75657f030310057446",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `communication_mode_nack_command_failed` (tests/vectors/mip/system.yaml:105)
+#[test]
+fn case_communication_mode_nack_command_failed() {
+    check(
+        "75657f0404f110046680",
+        None,
+        &[
+            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":4}}]}",
         ],
         false,
     );

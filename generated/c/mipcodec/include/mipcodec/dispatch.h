@@ -6,6 +6,10 @@
 #include "mipcodec/reserved.h"
 #include "mipcodec/sets/base.h"
 #include "mipcodec/sets/threedm.h"
+#include "mipcodec/sets/filter.h"
+#include "mipcodec/sets/gnss.h"
+#include "mipcodec/sets/aiding.h"
+#include "mipcodec/sets/system.h"
 #include "mipcodec/sets/sensor.h"
 
 #ifdef __cplusplus
@@ -68,10 +72,64 @@ typedef enum {
     MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE = 30,
     MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG = 31,
     MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE = 32,
-    MIP_FIELD_SENSOR_SCALED_ACCEL = 33,
-    MIP_FIELD_SENSOR_SCALED_GYRO = 34,
-    MIP_FIELD_SENSOR_SCALED_MAG = 35,
-    MIP_FIELD_COUNT = 36
+    MIP_FIELD_FILTER_RESET_FILTER = 33,
+    MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE = 34,
+    MIP_FIELD_FILTER_SET_INITIAL_HEADING = 35,
+    MIP_FIELD_FILTER_RUN_FILTER = 36,
+    MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE = 37,
+    MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE = 38,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM = 39,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE = 40,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET = 41,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE = 42,
+    MIP_FIELD_FILTER_ANTENNA_OFFSET = 43,
+    MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE = 44,
+    MIP_FIELD_FILTER_ESTIMATION_CONTROL = 45,
+    MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE = 46,
+    MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL = 47,
+    MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE = 48,
+    MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE = 49,
+    MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE = 50,
+    MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL = 51,
+    MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE = 52,
+    MIP_FIELD_FILTER_AUTO_INIT_CONTROL = 53,
+    MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE = 54,
+    MIP_FIELD_FILTER_ACCEL_NOISE = 55,
+    MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE = 56,
+    MIP_FIELD_FILTER_GYRO_NOISE = 57,
+    MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE = 58,
+    MIP_FIELD_FILTER_ACCEL_BIAS_MODEL = 59,
+    MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE = 60,
+    MIP_FIELD_FILTER_GYRO_BIAS_MODEL = 61,
+    MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE = 62,
+    MIP_FIELD_FILTER_ZUPT_CONTROL = 63,
+    MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE = 64,
+    MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME = 65,
+    MIP_FIELD_GNSS_RECEIVER_INFO = 66,
+    MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE = 67,
+    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION = 68,
+    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE = 69,
+    MIP_FIELD_GNSS_SPARTN_CONFIGURATION = 70,
+    MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE = 71,
+    MIP_FIELD_AIDING_FRAME_CONFIG = 72,
+    MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE = 73,
+    MIP_FIELD_AIDING_ECHO_CONTROL = 74,
+    MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE = 75,
+    MIP_FIELD_AIDING_ECEF_POSITION = 76,
+    MIP_FIELD_AIDING_LLH_POSITION = 77,
+    MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID = 78,
+    MIP_FIELD_AIDING_ECEF_VELOCITY = 79,
+    MIP_FIELD_AIDING_NED_VELOCITY = 80,
+    MIP_FIELD_AIDING_BODY_FRAME_VELOCITY = 81,
+    MIP_FIELD_AIDING_TRUE_HEADING = 82,
+    MIP_FIELD_AIDING_MAGNETIC_FIELD = 83,
+    MIP_FIELD_AIDING_PRESSURE = 84,
+    MIP_FIELD_SYSTEM_COMMUNICATION_MODE = 85,
+    MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE = 86,
+    MIP_FIELD_SENSOR_SCALED_ACCEL = 87,
+    MIP_FIELD_SENSOR_SCALED_GYRO = 88,
+    MIP_FIELD_SENSOR_SCALED_MAG = 89,
+    MIP_FIELD_COUNT = 90
 } mip_field_id_t;
 
 /** A decoded field: which layout, and its value. */
@@ -110,6 +168,60 @@ typedef struct {
         mip_threedm_event_trigger_config_response_t threedm_event_trigger_config_response;
         mip_threedm_event_action_config_t threedm_event_action_config;
         mip_threedm_event_action_config_response_t threedm_event_action_config_response;
+        mip_filter_reset_filter_t filter_reset_filter;
+        mip_filter_set_initial_attitude_t filter_set_initial_attitude;
+        mip_filter_set_initial_heading_t filter_set_initial_heading;
+        mip_filter_run_filter_t filter_run_filter;
+        mip_filter_vehicle_dynamics_mode_t filter_vehicle_dynamics_mode;
+        mip_filter_vehicle_dynamics_mode_response_t filter_vehicle_dynamics_mode_response;
+        mip_filter_sensor_to_vehicle_transform_t filter_sensor_to_vehicle_transform;
+        mip_filter_sensor_to_vehicle_transform_response_t filter_sensor_to_vehicle_transform_response;
+        mip_filter_sensor_to_vehicle_offset_t filter_sensor_to_vehicle_offset;
+        mip_filter_sensor_to_vehicle_offset_response_t filter_sensor_to_vehicle_offset_response;
+        mip_filter_antenna_offset_t filter_antenna_offset;
+        mip_filter_antenna_offset_response_t filter_antenna_offset_response;
+        mip_filter_estimation_control_t filter_estimation_control;
+        mip_filter_estimation_control_response_t filter_estimation_control_response;
+        mip_filter_gnss_source_control_t filter_gnss_source_control;
+        mip_filter_gnss_source_control_response_t filter_gnss_source_control_response;
+        mip_filter_external_gnss_update_t filter_external_gnss_update;
+        mip_filter_external_heading_update_t filter_external_heading_update;
+        mip_filter_heading_update_control_t filter_heading_update_control;
+        mip_filter_heading_update_control_response_t filter_heading_update_control_response;
+        mip_filter_auto_init_control_t filter_auto_init_control;
+        mip_filter_auto_init_control_response_t filter_auto_init_control_response;
+        mip_filter_accel_noise_t filter_accel_noise;
+        mip_filter_accel_noise_response_t filter_accel_noise_response;
+        mip_filter_gyro_noise_t filter_gyro_noise;
+        mip_filter_gyro_noise_response_t filter_gyro_noise_response;
+        mip_filter_accel_bias_model_t filter_accel_bias_model;
+        mip_filter_accel_bias_model_response_t filter_accel_bias_model_response;
+        mip_filter_gyro_bias_model_t filter_gyro_bias_model;
+        mip_filter_gyro_bias_model_response_t filter_gyro_bias_model_response;
+        mip_filter_zupt_control_t filter_zupt_control;
+        mip_filter_zupt_control_response_t filter_zupt_control_response;
+        mip_filter_external_heading_update_with_time_t filter_external_heading_update_with_time;
+        mip_gnss_receiver_info_t gnss_receiver_info;
+        mip_gnss_receiver_info_response_t gnss_receiver_info_response;
+        mip_gnss_signal_configuration_t gnss_signal_configuration;
+        mip_gnss_signal_configuration_response_t gnss_signal_configuration_response;
+        mip_gnss_spartn_configuration_t gnss_spartn_configuration;
+        mip_gnss_spartn_configuration_response_t gnss_spartn_configuration_response;
+        mip_aiding_frame_config_t aiding_frame_config;
+        mip_aiding_frame_config_response_t aiding_frame_config_response;
+        mip_aiding_echo_control_t aiding_echo_control;
+        mip_aiding_echo_control_response_t aiding_echo_control_response;
+        mip_aiding_ecef_position_t aiding_ecef_position;
+        mip_aiding_llh_position_t aiding_llh_position;
+        mip_aiding_height_above_ellipsoid_t aiding_height_above_ellipsoid;
+        mip_aiding_ecef_velocity_t aiding_ecef_velocity;
+        mip_aiding_ned_velocity_t aiding_ned_velocity;
+        mip_aiding_body_frame_velocity_t aiding_body_frame_velocity;
+        mip_aiding_true_heading_t aiding_true_heading;
+        mip_aiding_magnetic_field_t aiding_magnetic_field;
+        mip_aiding_pressure_t aiding_pressure;
+        mip_system_communication_mode_t system_communication_mode;
+        mip_system_communication_mode_response_t system_communication_mode_response;
         mip_sensor_scaled_accel_t sensor_scaled_accel;
         mip_sensor_scaled_gyro_t sensor_scaled_gyro;
         mip_sensor_scaled_mag_t sensor_scaled_mag;

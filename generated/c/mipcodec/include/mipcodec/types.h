@@ -9,18 +9,20 @@
 extern "C" {
 #endif
 
-/** Ack/Nack code.
+/** Ack/Nack code. Second byte of the ack/nack field; 0 is an ACK, any other value a NACK giving the reason.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_ack_code_t;
 #define MIP_ACK_CODE_OK ((mip_ack_code_t)0u) /* Success (ACK). */
 #define MIP_ACK_CODE_UNKNOWN_COMMAND                                                                         \
     ((mip_ack_code_t)1u) /* The command descriptor is not supported by this device. */
-#define MIP_ACK_CODE_BAD_CHECKSUM ((mip_ack_code_t)2u) /* An otherwise complete packet has a bad checksum.   \
-                                                        */
-#define MIP_ACK_CODE_INVALID_PARAMETER ((mip_ack_code_t)3u) /* One or more parameters are invalid. */
-#define MIP_ACK_CODE_COMMAND_FAILED ((mip_ack_code_t)4u)    /* Device could not complete the command. */
-#define MIP_ACK_CODE_COMMAND_TIMEOUT ((mip_ack_code_t)5u) /* Device could not complete the command in time.  \
-                                                           */
+#define MIP_ACK_CODE_BAD_CHECKSUM                                                                            \
+    ((mip_ack_code_t)2u) /* An otherwise complete packet has a bad checksum (GX5-45: invalid checksum). */
+#define MIP_ACK_CODE_INVALID_PARAMETER                                                                       \
+    ((mip_ack_code_t)3u) /* One or more parameters are invalid: out of the allowed range, or not the         \
+                            expected size or type. */
+#define MIP_ACK_CODE_COMMAND_FAILED ((mip_ack_code_t)4u) /* Device could not complete the command. */
+#define MIP_ACK_CODE_COMMAND_TIMEOUT                                                                         \
+    ((mip_ack_code_t)5u) /* Device could not complete the command within the expected time. */
 #define MIP_ACK_CODE_UNKNOWN_DESCRIPTOR_SET                                                                  \
     ((mip_ack_code_t)6u) /* Unknown descriptor set (CV7 only). (devices: cv7_ins) */
 
@@ -45,6 +47,64 @@ typedef uint8_t mip_action_type_t;
 #define MIP_ACTION_TYPE_NONE ((mip_action_type_t)0u)    /* No action. Parameters should be empty. */
 #define MIP_ACTION_TYPE_GPIO ((mip_action_type_t)1u)    /* Control the state of a GPIO pin. */
 #define MIP_ACTION_TYPE_MESSAGE ((mip_action_type_t)2u) /* Output a data packet. */
+
+/** Aiding command echo mode.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_aiding_echo_mode_t;
+#define MIP_AIDING_ECHO_MODE_SUPPRESS_ACK                                                                    \
+    ((mip_aiding_echo_mode_t)0u) /* The aiding measurement commands are not acknowledged. */
+#define MIP_AIDING_ECHO_MODE_STANDARD ((mip_aiding_echo_mode_t)1u) /* Normal ack/nack behavior. */
+#define MIP_AIDING_ECHO_MODE_RESPONSE                                                                        \
+    ((mip_aiding_echo_mode_t)2u) /* The device echoes the aiding data back as a response. */
+
+/** Aiding frame rotation format.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_aiding_frame_format_t;
+#define MIP_AIDING_FRAME_FORMAT_EULER                                                                        \
+    ((mip_aiding_frame_format_t)1u) /* Translation vector followed by Euler angles (roll, pitch, yaw). */
+#define MIP_AIDING_FRAME_FORMAT_QUATERNION                                                                   \
+    ((mip_aiding_frame_format_t)2u) /* Translation vector followed by a quaternion (w, x, y, z). */
+
+/** LLH position aiding valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_aiding_llh_valid_flags_t;
+#define MIP_AIDING_LLH_VALID_FLAGS_LATITUDE_MASK                                                             \
+    ((mip_aiding_llh_valid_flags_t)0x1u) /* bit 0: Latitude valid. */
+#define MIP_AIDING_LLH_VALID_FLAGS_LATITUDE_SHIFT 0
+#define MIP_AIDING_LLH_VALID_FLAGS_LONGITUDE_MASK                                                            \
+    ((mip_aiding_llh_valid_flags_t)0x2u) /* bit 1: Longitude valid. */
+#define MIP_AIDING_LLH_VALID_FLAGS_LONGITUDE_SHIFT 1
+#define MIP_AIDING_LLH_VALID_FLAGS_HEIGHT_MASK ((mip_aiding_llh_valid_flags_t)0x4u) /* bit 2: Height valid.  \
+                                                                                     */
+#define MIP_AIDING_LLH_VALID_FLAGS_HEIGHT_SHIFT 2
+
+/** Aiding measurement timebase. Clock in which the timestamp of an aiding measurement is expressed.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_aiding_timebase_t;
+#define MIP_AIDING_TIMEBASE_INTERNAL_REFERENCE                                                               \
+    ((mip_aiding_timebase_t)1u) /* Timestamp in the device's internal reference time (nanoseconds since      \
+                                   power-on). */
+#define MIP_AIDING_TIMEBASE_EXTERNAL_TIME                                                                    \
+    ((mip_aiding_timebase_t)2u) /* Timestamp in external time, synchronised by the PPS source and GPS time   \
+                                   update. */
+#define MIP_AIDING_TIMEBASE_TIME_OF_ARRIVAL                                                                  \
+    ((mip_aiding_timebase_t)3u) /* No timestamp: the measurement is taken at its arrival time, with a fixed  \
+                                   latency. */
+
+/** Aiding vector valid flags. Which axes of a 3-axis aiding measurement are valid; axes with 0 are ignored.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_aiding_vector_valid_flags_t;
+#define MIP_AIDING_VECTOR_VALID_FLAGS_X_MASK                                                                 \
+    ((mip_aiding_vector_valid_flags_t)0x1u) /* bit 0: X (or north) component valid. */
+#define MIP_AIDING_VECTOR_VALID_FLAGS_X_SHIFT 0
+#define MIP_AIDING_VECTOR_VALID_FLAGS_Y_MASK                                                                 \
+    ((mip_aiding_vector_valid_flags_t)0x2u) /* bit 1: Y (or east) component valid. */
+#define MIP_AIDING_VECTOR_VALID_FLAGS_Y_SHIFT 1
+#define MIP_AIDING_VECTOR_VALID_FLAGS_Z_MASK                                                                 \
+    ((mip_aiding_vector_valid_flags_t)0x4u) /* bit 2: Z (or down) component valid. */
+#define MIP_AIDING_VECTOR_VALID_FLAGS_Z_SHIFT 2
 
 /** 3DM-CV7 commanded built-in test result.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
@@ -105,6 +165,35 @@ typedef uint32_t mip_cv7_bit_flags_t;
     ((mip_cv7_bit_flags_t)0xFF000000u) /* bits 24-31: (reserved) Reserved. */
 #define MIP_CV7_BIT_FLAGS_RESERVED_SHIFT 24
 
+/** Estimation control flags. Which optional states the Kalman filter estimates.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_estimation_control_flags_t;
+#define MIP_ESTIMATION_CONTROL_FLAGS_GYRO_BIAS_MASK                                                          \
+    ((mip_estimation_control_flags_t)0x1u) /* bit 0: Estimate gyro bias (recommended). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_GYRO_BIAS_SHIFT 0
+#define MIP_ESTIMATION_CONTROL_FLAGS_ACCEL_BIAS_MASK                                                         \
+    ((mip_estimation_control_flags_t)0x2u) /* bit 1: Estimate accelerometer bias (recommended). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_ACCEL_BIAS_SHIFT 1
+#define MIP_ESTIMATION_CONTROL_FLAGS_GYRO_SCALE_FACTOR_MASK                                                  \
+    ((mip_estimation_control_flags_t)0x4u) /* bit 2: Estimate gyro scale factor (optional). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_GYRO_SCALE_FACTOR_SHIFT 2
+#define MIP_ESTIMATION_CONTROL_FLAGS_ACCEL_SCALE_FACTOR_MASK                                                 \
+    ((mip_estimation_control_flags_t)0x8u) /* bit 3: Estimate accelerometer scale factor (optional). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_ACCEL_SCALE_FACTOR_SHIFT 3
+#define MIP_ESTIMATION_CONTROL_FLAGS_ANTENNA_OFFSET_MASK                                                     \
+    ((mip_estimation_control_flags_t)0x10u) /* bit 4: Estimate the GNSS antenna offset (optional). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_ANTENNA_OFFSET_SHIFT 4
+#define MIP_ESTIMATION_CONTROL_FLAGS_HARD_IRON_AUTO_CAL_MASK                                                 \
+    ((mip_estimation_control_flags_t)0x20u) /* bit 5: Hard iron auto-calibration (optional). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_HARD_IRON_AUTO_CAL_SHIFT 5
+#define MIP_ESTIMATION_CONTROL_FLAGS_SOFT_IRON_AUTO_CAL_MASK                                                 \
+    ((mip_estimation_control_flags_t)0x40u) /* bit 6: Soft iron auto-calibration (optional). */
+#define MIP_ESTIMATION_CONTROL_FLAGS_SOFT_IRON_AUTO_CAL_SHIFT 6
+#define MIP_ESTIMATION_CONTROL_FLAGS_RESERVED_MASK                                                           \
+    ((mip_estimation_control_flags_t)0xFF80u) /* bits 7-15: (reserved) Not named by the manual. */
+#define MIP_ESTIMATION_CONTROL_FLAGS_RESERVED_SHIFT 7
+
 /** Event trigger control mode.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_event_control_mode_t;
@@ -116,19 +205,87 @@ typedef uint8_t mip_event_control_mode_t;
 #define MIP_EVENT_CONTROL_MODE_TEST_PULSE                                                                    \
     ((mip_event_control_mode_t)3u) /* Trigger is forced active for one event cycle only, then reverts. */
 
-/** Function selector. First parameter of settings commands; chooses what the command does.
+/** External heading type. Reference of an externally supplied heading angle.
  * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_external_heading_type_t;
+#define MIP_EXTERNAL_HEADING_TYPE_TRUE_HEADING                                                               \
+    ((mip_external_heading_type_t)1u) /* True heading (from true north). */
+#define MIP_EXTERNAL_HEADING_TYPE_MAGNETIC_HEADING                                                           \
+    ((mip_external_heading_type_t)2u) /* Magnetic heading (from magnetic north). */
+
+/** Filter GNSS source. Where the filter takes its GNSS position and velocity updates from.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_filter_gnss_source_t;
+#define MIP_FILTER_GNSS_SOURCE_ALL_INTERNAL                                                                  \
+    ((mip_filter_gnss_source_t)1u) /* The internal GNSS receiver(s) (GX5-45: Internal GNSS; CV7: ALL_INT,    \
+                                      all internal receivers). */
+#define MIP_FILTER_GNSS_SOURCE_EXTERNAL                                                                      \
+    ((mip_filter_gnss_source_t)2u) /* External GNSS messages supplied by the user (GX5-45: External GNSS     \
+                                      Update 0x0D,0x16). */
+#define MIP_FILTER_GNSS_SOURCE_INTERNAL_1                                                                    \
+    ((mip_filter_gnss_source_t)3u) /* Internal GNSS receiver 1 only. (devices: cv7_ins) */
+#define MIP_FILTER_GNSS_SOURCE_INTERNAL_2                                                                    \
+    ((mip_filter_gnss_source_t)4u) /* Internal GNSS receiver 2 only. (devices: cv7_ins) */
+
+/** Function selector. First parameter of settings commands; chooses what the command does. Only a read
+ * returns a response field (with the ack); parameters not needed for a function may be left out, or sent as
+ * placeholders. An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_function_selector_t;
 #define MIP_FUNCTION_SELECTOR_WRITE ((mip_function_selector_t)1u) /* Apply new setting. */
-#define MIP_FUNCTION_SELECTOR_READ ((mip_function_selector_t)2u)  /* Read current setting. */
+#define MIP_FUNCTION_SELECTOR_READ                                                                           \
+    ((mip_function_selector_t)2u) /* Read back the current setting (the only function that returns response  \
+                                     data). */
 #define MIP_FUNCTION_SELECTOR_SAVE                                                                           \
-    ((mip_function_selector_t)3u) /* Save current setting to non-volatile memory. */
-#define MIP_FUNCTION_SELECTOR_LOAD ((mip_function_selector_t)4u) /* Load setting from non-volatile memory.   \
-                                                                  */
+    ((mip_function_selector_t)3u) /* Save the current setting to non-volatile memory as the startup setting. \
+                                   */
+#define MIP_FUNCTION_SELECTOR_LOAD                                                                           \
+    ((mip_function_selector_t)4u) /* Load the saved startup setting from non-volatile memory. */
 #define MIP_FUNCTION_SELECTOR_DEFAULT ((mip_function_selector_t)5u) /* Reset to the factory default. */
 #define MIP_FUNCTION_SELECTOR_WRITE_NO_ACK                                                                   \
     ((mip_function_selector_t)6u) /* Apply new setting with no ACK/NACK reply (GX5-45 only). (devices:       \
                                      gx5_45) */
+
+/** BeiDou signals enabled.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gnss_beidou_signals_t;
+#define MIP_GNSS_BEIDOU_SIGNALS_B1_MASK ((mip_gnss_beidou_signals_t)0x1u) /* bit 0: Enable B1. */
+#define MIP_GNSS_BEIDOU_SIGNALS_B1_SHIFT 0
+#define MIP_GNSS_BEIDOU_SIGNALS_B2_MASK ((mip_gnss_beidou_signals_t)0x2u) /* bit 1: Enable B2. */
+#define MIP_GNSS_BEIDOU_SIGNALS_B2_SHIFT 1
+#define MIP_GNSS_BEIDOU_SIGNALS_B2A_MASK ((mip_gnss_beidou_signals_t)0x4u) /* bit 2: Enable B2A. */
+#define MIP_GNSS_BEIDOU_SIGNALS_B2A_SHIFT 2
+
+/** Galileo signals enabled.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gnss_galileo_signals_t;
+#define MIP_GNSS_GALILEO_SIGNALS_E1_MASK ((mip_gnss_galileo_signals_t)0x1u) /* bit 0: Enable E1. */
+#define MIP_GNSS_GALILEO_SIGNALS_E1_SHIFT 0
+#define MIP_GNSS_GALILEO_SIGNALS_E5B_MASK ((mip_gnss_galileo_signals_t)0x2u) /* bit 1: Enable E5B. */
+#define MIP_GNSS_GALILEO_SIGNALS_E5B_SHIFT 1
+#define MIP_GNSS_GALILEO_SIGNALS_E5A_MASK ((mip_gnss_galileo_signals_t)0x4u) /* bit 2: Enable E5A. */
+#define MIP_GNSS_GALILEO_SIGNALS_E5A_SHIFT 2
+
+/** GLONASS signals enabled.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gnss_glonass_signals_t;
+#define MIP_GNSS_GLONASS_SIGNALS_L1OF_MASK ((mip_gnss_glonass_signals_t)0x1u) /* bit 0: Enable L1OF. */
+#define MIP_GNSS_GLONASS_SIGNALS_L1OF_SHIFT 0
+#define MIP_GNSS_GLONASS_SIGNALS_L2OF_MASK ((mip_gnss_glonass_signals_t)0x2u) /* bit 1: Enable L2OF. */
+#define MIP_GNSS_GLONASS_SIGNALS_L2OF_SHIFT 1
+
+/** GPS signals enabled.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gnss_gps_signals_t;
+#define MIP_GNSS_GPS_SIGNALS_L1CA_MASK ((mip_gnss_gps_signals_t)0x1u) /* bit 0: Enable L1 C/A. */
+#define MIP_GNSS_GPS_SIGNALS_L1CA_SHIFT 0
+#define MIP_GNSS_GPS_SIGNALS_L2C_MASK ((mip_gnss_gps_signals_t)0x2u) /* bit 1: Enable L2C. */
+#define MIP_GNSS_GPS_SIGNALS_L2C_SHIFT 1
+#define MIP_GNSS_GPS_SIGNALS_L5_MASK ((mip_gnss_gps_signals_t)0x4u) /* bit 2: Enable L5. */
+#define MIP_GNSS_GPS_SIGNALS_L5_SHIFT 2
 
 /** GPS time field selector.
  * An integer, so that values the spec does not list are kept. */
@@ -158,6 +315,47 @@ typedef uint32_t mip_gx5_bit_flags_t;
 #define MIP_GX5_BIT_FLAGS_FILTER_SOLUTION_FAULT_MASK                                                         \
     ((mip_gx5_bit_flags_t)0x1000000u) /* bit 24: Kalman filter: solution fault. */
 #define MIP_GX5_BIT_FLAGS_FILTER_SOLUTION_FAULT_SHIFT 24
+
+/** Heading update source. Which aiding sources the filter uses for heading updates.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_heading_update_source_t;
+#define MIP_HEADING_UPDATE_SOURCE_NONE                                                                       \
+    ((mip_heading_update_source_t)0u) /* No heading aiding; heading still converges from GNSS under          \
+                                         sufficient acceleration. */
+#define MIP_HEADING_UPDATE_SOURCE_MAGNETOMETER ((mip_heading_update_source_t)1u) /* Internal magnetometer.   \
+                                                                                  */
+#define MIP_HEADING_UPDATE_SOURCE_GNSS_VELOCITY                                                              \
+    ((mip_heading_update_source_t)2u) /* Internal GNSS velocity vector (needs little side-slip and the       \
+                                         vehicle X axis along the direction of travel). */
+#define MIP_HEADING_UPDATE_SOURCE_EXTERNAL                                                                   \
+    ((mip_heading_update_source_t)3u) /* External heading messages (0x0D,0x17 / 0x0D,0x1F). */
+#define MIP_HEADING_UPDATE_SOURCE_GNSS_VELOCITY_AND_MAGNETOMETER                                             \
+    ((mip_heading_update_source_t)4u) /* GNSS velocity vector and magnetometer. */
+#define MIP_HEADING_UPDATE_SOURCE_GNSS_VELOCITY_AND_EXTERNAL                                                 \
+    ((mip_heading_update_source_t)5u) /* GNSS velocity vector and external heading messages. */
+#define MIP_HEADING_UPDATE_SOURCE_MAGNETOMETER_AND_EXTERNAL                                                  \
+    ((mip_heading_update_source_t)6u) /* Magnetometer and external heading messages. */
+#define MIP_HEADING_UPDATE_SOURCE_GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL                                    \
+    ((mip_heading_update_source_t)7u) /* GNSS velocity vector, magnetometer and external heading messages.   \
+                                       */
+
+/** SPARTN connection type.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_spartn_connection_type_t;
+#define MIP_SPARTN_CONNECTION_TYPE_NONE ((mip_spartn_connection_type_t)0u) /* No SPARTN connection. */
+#define MIP_SPARTN_CONNECTION_TYPE_NETWORK                                                                   \
+    ((mip_spartn_connection_type_t)1u) /* Corrections over a network connection (e.g. NTRIP). */
+#define MIP_SPARTN_CONNECTION_TYPE_L_BAND                                                                    \
+    ((mip_spartn_connection_type_t)2u) /* Corrections from an L-band correction receiver. */
+
+/** Communication mode.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_system_comm_mode_t;
+#define MIP_SYSTEM_COMM_MODE_STANDARD ((mip_system_comm_mode_t)1u) /* 3DM-GX5-45 MIP packets (default). */
+#define MIP_SYSTEM_COMM_MODE_SENSOR_DIRECT                                                                   \
+    ((mip_system_comm_mode_t)2u) /* Direct to the internal IMU: MIP IMU protocol. */
+#define MIP_SYSTEM_COMM_MODE_GNSS_DIRECT                                                                     \
+    ((mip_system_comm_mode_t)3u) /* Direct to the GNSS receiver: NMEA and UBX (GNSS models only). */
 
 /** Threshold comparison type.
  * An integer, so that values the spec does not list are kept. */
@@ -202,6 +400,22 @@ typedef uint8_t mip_trigger_type_t;
 #define MIP_TRIGGER_TYPE_COMBINATION                                                                         \
     ((mip_trigger_type_t)3u) /* Logical combination of two or more triggers. */
 
+/** Vehicle dynamics mode. Dynamics model the filter assumes for the vehicle (altitude and velocity limits).
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_vehicle_dynamics_mode_t;
+#define MIP_VEHICLE_DYNAMICS_MODE_PORTABLE                                                                   \
+    ((mip_vehicle_dynamics_mode_t)1u) /* Low-acceleration applications (default); up to 12,000 m, 310 m/s    \
+                                         horizontal, 50 m/s vertical. */
+#define MIP_VEHICLE_DYNAMICS_MODE_AUTOMOTIVE                                                                 \
+    ((mip_vehicle_dynamics_mode_t)2u) /* Wheeled vehicles with low vertical acceleration; up to 6,000 m, 84  \
+                                         m/s horizontal, 15 m/s vertical. */
+#define MIP_VEHICLE_DYNAMICS_MODE_AIRBORNE                                                                   \
+    ((mip_vehicle_dynamics_mode_t)3u) /* Airborne up to 2 g; up to 50,000 m, 250 m/s horizontal, 100 m/s     \
+                                         vertical. */
+#define MIP_VEHICLE_DYNAMICS_MODE_AIRBORNE_HIGH_G                                                            \
+    ((mip_vehicle_dynamics_mode_t)4u) /* Airborne up to 4 g; same altitude and velocity limits as airborne.  \
+                                       */
+
 /** ActionGpioParams.  */
 typedef struct {
     uint8_t pin;                 /* GPIO pin number. */
@@ -230,6 +444,32 @@ typedef struct {
     uint8_t trigger_id;            /* Associated trigger instance. */
 } mip_action_status_entry_t;
 
+/** Aiding frame rotation as Euler angles.  */
+typedef struct {
+    float
+        euler[3]; /* Roll, pitch, yaw of the frame relative to the vehicle frame, each within +/- pi. [rad] */
+} mip_aiding_frame_euler_t;
+
+/** Aiding frame rotation as a quaternion.  */
+typedef struct {
+    float quaternion[4]; /* Rotation of the frame relative to the vehicle frame, (w, x, y, z). */
+} mip_aiding_frame_quaternion_t;
+
+/** Aiding frame rotation. Rotation of an aiding frame, as Euler angles or as a quaternion depending on the
+ * format. The member is chosen by a parameter of type mip_aiding_frame_format_t next to it. */
+typedef union {
+    mip_aiding_frame_euler_t euler;           /* euler:  */
+    mip_aiding_frame_quaternion_t quaternion; /* quaternion:  */
+    uint8_t none_;                            /* members without data */
+} mip_aiding_frame_rotation_t;
+
+/** Aiding measurement timestamp. Timestamp carried first in every aiding measurement command. */
+typedef struct {
+    mip_aiding_timebase_t timebase; /* Clock of the timestamp. */
+    uint8_t reserved;               /* Reserved. */
+    uint64_t nanoseconds; /* Time of the measurement in nanoseconds, in the timebase's clock. [ns] */
+} mip_aiding_time_t;
+
 /** CombinationParams.  */
 typedef struct {
     uint16_t logic_table;      /* Last column of the truth table of the inputs. */
@@ -245,6 +485,13 @@ typedef struct {
     char lot_number[16];       /* Lot number. */
     char device_options[16];   /* Device options (e.g. sensor ranges). */
 } mip_device_info_t;
+
+/** GNSS receiver information. Identity of one physical GNSS receiver in the device. */
+typedef struct {
+    uint8_t receiver_id;             /* Receiver id (1, 2, ...). */
+    uint8_t mip_data_descriptor_set; /* MIP data descriptor set of this receiver's data. */
+    char description[32];            /* ASCII, comma-delimited: module name/model, firmware version. */
+} mip_gnss_receiver_info_entry_t;
 
 /** ThresholdParams.  */
 typedef struct {

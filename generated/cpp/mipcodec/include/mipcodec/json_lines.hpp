@@ -20,6 +20,10 @@
 #include "mipcodec/types_json.hpp"
 #include "mipcodec/fields/base_json.hpp"
 #include "mipcodec/fields/threedm_json.hpp"
+#include "mipcodec/fields/filter_json.hpp"
+#include "mipcodec/fields/gnss_json.hpp"
+#include "mipcodec/fields/aiding_json.hpp"
+#include "mipcodec/fields/system_json.hpp"
 #include "mipcodec/fields/sensor_json.hpp"
 #include "mipcodec/fields/reserved_json.hpp"
 

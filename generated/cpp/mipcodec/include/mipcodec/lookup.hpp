@@ -8,6 +8,10 @@
 #include "mipcodec/devices.hpp"
 #include "mipcodec/fields/base.hpp"
 #include "mipcodec/fields/threedm.hpp"
+#include "mipcodec/fields/filter.hpp"
+#include "mipcodec/fields/gnss.hpp"
+#include "mipcodec/fields/aiding.hpp"
+#include "mipcodec/fields/system.hpp"
 #include "mipcodec/fields/sensor.hpp"
 #include "mipcodec/fields/reserved.hpp"
 
@@ -118,6 +122,196 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
             return Lookup::found;
         case 0xB9:
             f(Layouts<::mipcodec::threedm::EventActionConfigResponse>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x0D:
+        known_set = true;
+        switch (descriptor) {
+        case 0x01:
+            f(Layouts<::mipcodec::filter::ResetFilter>{});
+            return Lookup::found;
+        case 0x02:
+            f(Layouts<::mipcodec::filter::SetInitialAttitude>{});
+            return Lookup::found;
+        case 0x03:
+            f(Layouts<::mipcodec::filter::SetInitialHeading>{});
+            return Lookup::found;
+        case 0x05:
+            f(Layouts<::mipcodec::filter::RunFilter>{});
+            return Lookup::found;
+        case 0x10:
+            f(Layouts<::mipcodec::filter::VehicleDynamicsMode>{});
+            return Lookup::found;
+        case 0x80:
+            f(Layouts<::mipcodec::filter::VehicleDynamicsModeResponse>{});
+            return Lookup::found;
+        case 0x11:
+            f(Layouts<::mipcodec::filter::SensorToVehicleTransform>{});
+            return Lookup::found;
+        case 0x81:
+            f(Layouts<::mipcodec::filter::SensorToVehicleTransformResponse>{});
+            return Lookup::found;
+        case 0x12:
+            f(Layouts<::mipcodec::filter::SensorToVehicleOffset>{});
+            return Lookup::found;
+        case 0x82:
+            f(Layouts<::mipcodec::filter::SensorToVehicleOffsetResponse>{});
+            return Lookup::found;
+        case 0x13:
+            f(Layouts<::mipcodec::filter::AntennaOffset>{});
+            return Lookup::found;
+        case 0x83:
+            f(Layouts<::mipcodec::filter::AntennaOffsetResponse>{});
+            return Lookup::found;
+        case 0x14:
+            f(Layouts<::mipcodec::filter::EstimationControl>{});
+            return Lookup::found;
+        case 0x84:
+            f(Layouts<::mipcodec::filter::EstimationControlResponse>{});
+            return Lookup::found;
+        case 0x15:
+            f(Layouts<::mipcodec::filter::GnssSourceControl>{});
+            return Lookup::found;
+        case 0x86:
+            f(Layouts<::mipcodec::filter::GnssSourceControlResponse>{});
+            return Lookup::found;
+        case 0x16:
+            f(Layouts<::mipcodec::filter::ExternalGnssUpdate>{});
+            return Lookup::found;
+        case 0x17:
+            f(Layouts<::mipcodec::filter::ExternalHeadingUpdate>{});
+            return Lookup::found;
+        case 0x18:
+            f(Layouts<::mipcodec::filter::HeadingUpdateControl>{});
+            return Lookup::found;
+        case 0x87:
+            f(Layouts<::mipcodec::filter::HeadingUpdateControlResponse>{});
+            return Lookup::found;
+        case 0x19:
+            f(Layouts<::mipcodec::filter::AutoInitControl>{});
+            return Lookup::found;
+        case 0x88:
+            f(Layouts<::mipcodec::filter::AutoInitControlResponse>{});
+            return Lookup::found;
+        case 0x1A:
+            f(Layouts<::mipcodec::filter::AccelNoise>{});
+            return Lookup::found;
+        case 0x89:
+            f(Layouts<::mipcodec::filter::AccelNoiseResponse>{});
+            return Lookup::found;
+        case 0x1B:
+            f(Layouts<::mipcodec::filter::GyroNoise>{});
+            return Lookup::found;
+        case 0x8A:
+            f(Layouts<::mipcodec::filter::GyroNoiseResponse>{});
+            return Lookup::found;
+        case 0x1C:
+            f(Layouts<::mipcodec::filter::AccelBiasModel>{});
+            return Lookup::found;
+        case 0x8B:
+            f(Layouts<::mipcodec::filter::AccelBiasModelResponse>{});
+            return Lookup::found;
+        case 0x1D:
+            f(Layouts<::mipcodec::filter::GyroBiasModel>{});
+            return Lookup::found;
+        case 0x8C:
+            f(Layouts<::mipcodec::filter::GyroBiasModelResponse>{});
+            return Lookup::found;
+        case 0x1E:
+            f(Layouts<::mipcodec::filter::ZuptControl>{});
+            return Lookup::found;
+        case 0x8D:
+            f(Layouts<::mipcodec::filter::ZuptControlResponse>{});
+            return Lookup::found;
+        case 0x1F:
+            f(Layouts<::mipcodec::filter::ExternalHeadingUpdateWithTime>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x0E:
+        known_set = true;
+        switch (descriptor) {
+        case 0x01:
+            f(Layouts<::mipcodec::gnss::ReceiverInfo>{});
+            return Lookup::found;
+        case 0x81:
+            f(Layouts<::mipcodec::gnss::ReceiverInfoResponse>{});
+            return Lookup::found;
+        case 0x02:
+            f(Layouts<::mipcodec::gnss::SignalConfiguration>{});
+            return Lookup::found;
+        case 0x82:
+            f(Layouts<::mipcodec::gnss::SignalConfigurationResponse>{});
+            return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::gnss::SpartnConfiguration>{});
+            return Lookup::found;
+        case 0xA0:
+            f(Layouts<::mipcodec::gnss::SpartnConfigurationResponse>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x13:
+        known_set = true;
+        switch (descriptor) {
+        case 0x01:
+            f(Layouts<::mipcodec::aiding::FrameConfig>{});
+            return Lookup::found;
+        case 0x81:
+            f(Layouts<::mipcodec::aiding::FrameConfigResponse>{});
+            return Lookup::found;
+        case 0x1F:
+            f(Layouts<::mipcodec::aiding::EchoControl>{});
+            return Lookup::found;
+        case 0x9F:
+            f(Layouts<::mipcodec::aiding::EchoControlResponse>{});
+            return Lookup::found;
+        case 0x21:
+            f(Layouts<::mipcodec::aiding::EcefPosition>{});
+            return Lookup::found;
+        case 0x22:
+            f(Layouts<::mipcodec::aiding::LlhPosition>{});
+            return Lookup::found;
+        case 0x23:
+            f(Layouts<::mipcodec::aiding::HeightAboveEllipsoid>{});
+            return Lookup::found;
+        case 0x28:
+            f(Layouts<::mipcodec::aiding::EcefVelocity>{});
+            return Lookup::found;
+        case 0x29:
+            f(Layouts<::mipcodec::aiding::NedVelocity>{});
+            return Lookup::found;
+        case 0x2A:
+            f(Layouts<::mipcodec::aiding::BodyFrameVelocity>{});
+            return Lookup::found;
+        case 0x31:
+            f(Layouts<::mipcodec::aiding::TrueHeading>{});
+            return Lookup::found;
+        case 0x32:
+            f(Layouts<::mipcodec::aiding::MagneticField>{});
+            return Lookup::found;
+        case 0x33:
+            f(Layouts<::mipcodec::aiding::Pressure>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x7F:
+        known_set = true;
+        switch (descriptor) {
+        case 0x10:
+            f(Layouts<::mipcodec::system::CommunicationMode>{});
+            return Lookup::found;
+        case 0x90:
+            f(Layouts<::mipcodec::system::CommunicationModeResponse>{});
             return Lookup::found;
         default:
             break;

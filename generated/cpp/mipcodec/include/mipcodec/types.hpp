@@ -183,6 +183,206 @@ inline bool from_string(const char *name, ActionType &out) {
     return false;
 }
 
+/// Aiding command echo mode. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AidingEchoMode : std::uint8_t {
+    suppress_ack = 0,
+    standard = 1,
+    response = 2,
+};
+
+/// Spec name of a value ("suppress_ack"), or nullptr when the value has no name.
+inline const char *to_string(AidingEchoMode v) {
+    if (v == AidingEchoMode::suppress_ack) {
+        return "suppress_ack";
+    }
+    if (v == AidingEchoMode::standard) {
+        return "standard";
+    }
+    if (v == AidingEchoMode::response) {
+        return "response";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AidingEchoMode &out) {
+    if (std::strcmp(name, "suppress_ack") == 0) {
+        out = AidingEchoMode::suppress_ack;
+        return true;
+    }
+    if (std::strcmp(name, "standard") == 0) {
+        out = AidingEchoMode::standard;
+        return true;
+    }
+    if (std::strcmp(name, "response") == 0) {
+        out = AidingEchoMode::response;
+        return true;
+    }
+    return false;
+}
+
+/// Aiding frame rotation format. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AidingFrameFormat : std::uint8_t {
+    euler = 1,
+    quaternion = 2,
+};
+
+/// Spec name of a value ("euler"), or nullptr when the value has no name.
+inline const char *to_string(AidingFrameFormat v) {
+    if (v == AidingFrameFormat::euler) {
+        return "euler";
+    }
+    if (v == AidingFrameFormat::quaternion) {
+        return "quaternion";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AidingFrameFormat &out) {
+    if (std::strcmp(name, "euler") == 0) {
+        out = AidingFrameFormat::euler;
+        return true;
+    }
+    if (std::strcmp(name, "quaternion") == 0) {
+        out = AidingFrameFormat::quaternion;
+        return true;
+    }
+    return false;
+}
+
+/// LLH position aiding valid flags. Reserved and unnamed bits are kept in raw().
+class AidingLlhValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr AidingLlhValidFlags() = default;
+    constexpr explicit AidingLlhValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw latitude_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool latitude() const {
+        return (raw_ & latitude_mask) != 0;
+    }
+    constexpr void set_latitude(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | latitude_mask) : (raw_ & static_cast<Raw>(~latitude_mask)));
+    }
+
+    static constexpr Raw longitude_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool longitude() const {
+        return (raw_ & longitude_mask) != 0;
+    }
+    constexpr void set_longitude(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | longitude_mask) : (raw_ & static_cast<Raw>(~longitude_mask)));
+    }
+
+    static constexpr Raw height_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool height() const {
+        return (raw_ & height_mask) != 0;
+    }
+    constexpr void set_height(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | height_mask) : (raw_ & static_cast<Raw>(~height_mask)));
+    }
+    friend constexpr bool operator==(AidingLlhValidFlags a, AidingLlhValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(AidingLlhValidFlags a, AidingLlhValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Aiding measurement timebase. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AidingTimebase : std::uint8_t {
+    internal_reference = 1,
+    external_time = 2,
+    time_of_arrival = 3,
+};
+
+/// Spec name of a value ("internal_reference"), or nullptr when the value has no name.
+inline const char *to_string(AidingTimebase v) {
+    if (v == AidingTimebase::internal_reference) {
+        return "internal_reference";
+    }
+    if (v == AidingTimebase::external_time) {
+        return "external_time";
+    }
+    if (v == AidingTimebase::time_of_arrival) {
+        return "time_of_arrival";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AidingTimebase &out) {
+    if (std::strcmp(name, "internal_reference") == 0) {
+        out = AidingTimebase::internal_reference;
+        return true;
+    }
+    if (std::strcmp(name, "external_time") == 0) {
+        out = AidingTimebase::external_time;
+        return true;
+    }
+    if (std::strcmp(name, "time_of_arrival") == 0) {
+        out = AidingTimebase::time_of_arrival;
+        return true;
+    }
+    return false;
+}
+
+/// Aiding vector valid flags. Reserved and unnamed bits are kept in raw().
+class AidingVectorValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr AidingVectorValidFlags() = default;
+    constexpr explicit AidingVectorValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw x_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool x() const {
+        return (raw_ & x_mask) != 0;
+    }
+    constexpr void set_x(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | x_mask) : (raw_ & static_cast<Raw>(~x_mask)));
+    }
+
+    static constexpr Raw y_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool y() const {
+        return (raw_ & y_mask) != 0;
+    }
+    constexpr void set_y(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | y_mask) : (raw_ & static_cast<Raw>(~y_mask)));
+    }
+
+    static constexpr Raw z_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool z() const {
+        return (raw_ & z_mask) != 0;
+    }
+    constexpr void set_z(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | z_mask) : (raw_ & static_cast<Raw>(~z_mask)));
+    }
+    friend constexpr bool operator==(AidingVectorValidFlags a, AidingVectorValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(AidingVectorValidFlags a, AidingVectorValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// 3DM-CV7 commanded built-in test result. Reserved and unnamed bits are kept in raw().
 class Cv7BitFlags {
   public:
@@ -364,6 +564,100 @@ class Cv7BitFlags {
     Raw raw_ = 0;
 };
 
+/// Estimation control flags. Reserved and unnamed bits are kept in raw().
+class EstimationControlFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr EstimationControlFlags() = default;
+    constexpr explicit EstimationControlFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw gyro_bias_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool gyro_bias() const {
+        return (raw_ & gyro_bias_mask) != 0;
+    }
+    constexpr void set_gyro_bias(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyro_bias_mask) : (raw_ & static_cast<Raw>(~gyro_bias_mask)));
+    }
+
+    static constexpr Raw accel_bias_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool accel_bias() const {
+        return (raw_ & accel_bias_mask) != 0;
+    }
+    constexpr void set_accel_bias(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accel_bias_mask) : (raw_ & static_cast<Raw>(~accel_bias_mask)));
+    }
+
+    static constexpr Raw gyro_scale_factor_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool gyro_scale_factor() const {
+        return (raw_ & gyro_scale_factor_mask) != 0;
+    }
+    constexpr void set_gyro_scale_factor(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyro_scale_factor_mask)
+                                   : (raw_ & static_cast<Raw>(~gyro_scale_factor_mask)));
+    }
+
+    static constexpr Raw accel_scale_factor_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool accel_scale_factor() const {
+        return (raw_ & accel_scale_factor_mask) != 0;
+    }
+    constexpr void set_accel_scale_factor(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accel_scale_factor_mask)
+                                   : (raw_ & static_cast<Raw>(~accel_scale_factor_mask)));
+    }
+
+    static constexpr Raw antenna_offset_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool antenna_offset() const {
+        return (raw_ & antenna_offset_mask) != 0;
+    }
+    constexpr void set_antenna_offset(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_offset_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_offset_mask)));
+    }
+
+    static constexpr Raw hard_iron_auto_cal_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool hard_iron_auto_cal() const {
+        return (raw_ & hard_iron_auto_cal_mask) != 0;
+    }
+    constexpr void set_hard_iron_auto_cal(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | hard_iron_auto_cal_mask)
+                                   : (raw_ & static_cast<Raw>(~hard_iron_auto_cal_mask)));
+    }
+
+    static constexpr Raw soft_iron_auto_cal_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool soft_iron_auto_cal() const {
+        return (raw_ & soft_iron_auto_cal_mask) != 0;
+    }
+    constexpr void set_soft_iron_auto_cal(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | soft_iron_auto_cal_mask)
+                                   : (raw_ & static_cast<Raw>(~soft_iron_auto_cal_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFF80ULL);
+    /// Bits 7..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFF80ULL) >> 7);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFF80ULL) |
+                                ((static_cast<std::uint64_t>(value) << 7) & 0xFF80ULL));
+    }
+    friend constexpr bool operator==(EstimationControlFlags a, EstimationControlFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(EstimationControlFlags a, EstimationControlFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// Event trigger control mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class EventControlMode : std::uint8_t {
     disabled = 0,
@@ -405,6 +699,82 @@ inline bool from_string(const char *name, EventControlMode &out) {
     }
     if (std::strcmp(name, "test_pulse") == 0) {
         out = EventControlMode::test_pulse;
+        return true;
+    }
+    return false;
+}
+
+/// External heading type. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class ExternalHeadingType : std::uint8_t {
+    true_heading = 1,
+    magnetic_heading = 2,
+};
+
+/// Spec name of a value ("true_heading"), or nullptr when the value has no name.
+inline const char *to_string(ExternalHeadingType v) {
+    if (v == ExternalHeadingType::true_heading) {
+        return "true_heading";
+    }
+    if (v == ExternalHeadingType::magnetic_heading) {
+        return "magnetic_heading";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, ExternalHeadingType &out) {
+    if (std::strcmp(name, "true_heading") == 0) {
+        out = ExternalHeadingType::true_heading;
+        return true;
+    }
+    if (std::strcmp(name, "magnetic_heading") == 0) {
+        out = ExternalHeadingType::magnetic_heading;
+        return true;
+    }
+    return false;
+}
+
+/// Filter GNSS source. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class FilterGnssSource : std::uint8_t {
+    all_internal = 1,
+    external = 2,
+    internal_1 = 3,
+    internal_2 = 4,
+};
+
+/// Spec name of a value ("all_internal"), or nullptr when the value has no name.
+inline const char *to_string(FilterGnssSource v) {
+    if (v == FilterGnssSource::all_internal) {
+        return "all_internal";
+    }
+    if (v == FilterGnssSource::external) {
+        return "external";
+    }
+    if (v == FilterGnssSource::internal_1) {
+        return "internal_1";
+    }
+    if (v == FilterGnssSource::internal_2) {
+        return "internal_2";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterGnssSource &out) {
+    if (std::strcmp(name, "all_internal") == 0) {
+        out = FilterGnssSource::all_internal;
+        return true;
+    }
+    if (std::strcmp(name, "external") == 0) {
+        out = FilterGnssSource::external;
+        return true;
+    }
+    if (std::strcmp(name, "internal_1") == 0) {
+        out = FilterGnssSource::internal_1;
+        return true;
+    }
+    if (std::strcmp(name, "internal_2") == 0) {
+        out = FilterGnssSource::internal_2;
         return true;
     }
     return false;
@@ -471,6 +841,186 @@ inline bool from_string(const char *name, FunctionSelector &out) {
     }
     return false;
 }
+
+/// BeiDou signals enabled. Reserved and unnamed bits are kept in raw().
+class GnssBeidouSignals {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GnssBeidouSignals() = default;
+    constexpr explicit GnssBeidouSignals(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw b1_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool b1() const {
+        return (raw_ & b1_mask) != 0;
+    }
+    constexpr void set_b1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | b1_mask) : (raw_ & static_cast<Raw>(~b1_mask)));
+    }
+
+    static constexpr Raw b2_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool b2() const {
+        return (raw_ & b2_mask) != 0;
+    }
+    constexpr void set_b2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | b2_mask) : (raw_ & static_cast<Raw>(~b2_mask)));
+    }
+
+    static constexpr Raw b2a_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool b2a() const {
+        return (raw_ & b2a_mask) != 0;
+    }
+    constexpr void set_b2a(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | b2a_mask) : (raw_ & static_cast<Raw>(~b2a_mask)));
+    }
+    friend constexpr bool operator==(GnssBeidouSignals a, GnssBeidouSignals b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssBeidouSignals a, GnssBeidouSignals b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Galileo signals enabled. Reserved and unnamed bits are kept in raw().
+class GnssGalileoSignals {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GnssGalileoSignals() = default;
+    constexpr explicit GnssGalileoSignals(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw e1_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool e1() const {
+        return (raw_ & e1_mask) != 0;
+    }
+    constexpr void set_e1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | e1_mask) : (raw_ & static_cast<Raw>(~e1_mask)));
+    }
+
+    static constexpr Raw e5b_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool e5b() const {
+        return (raw_ & e5b_mask) != 0;
+    }
+    constexpr void set_e5b(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | e5b_mask) : (raw_ & static_cast<Raw>(~e5b_mask)));
+    }
+
+    static constexpr Raw e5a_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool e5a() const {
+        return (raw_ & e5a_mask) != 0;
+    }
+    constexpr void set_e5a(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | e5a_mask) : (raw_ & static_cast<Raw>(~e5a_mask)));
+    }
+    friend constexpr bool operator==(GnssGalileoSignals a, GnssGalileoSignals b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssGalileoSignals a, GnssGalileoSignals b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GLONASS signals enabled. Reserved and unnamed bits are kept in raw().
+class GnssGlonassSignals {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GnssGlonassSignals() = default;
+    constexpr explicit GnssGlonassSignals(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw l1of_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool l1of() const {
+        return (raw_ & l1of_mask) != 0;
+    }
+    constexpr void set_l1of(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | l1of_mask) : (raw_ & static_cast<Raw>(~l1of_mask)));
+    }
+
+    static constexpr Raw l2of_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool l2of() const {
+        return (raw_ & l2of_mask) != 0;
+    }
+    constexpr void set_l2of(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | l2of_mask) : (raw_ & static_cast<Raw>(~l2of_mask)));
+    }
+    friend constexpr bool operator==(GnssGlonassSignals a, GnssGlonassSignals b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssGlonassSignals a, GnssGlonassSignals b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GPS signals enabled. Reserved and unnamed bits are kept in raw().
+class GnssGpsSignals {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GnssGpsSignals() = default;
+    constexpr explicit GnssGpsSignals(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw l1ca_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool l1ca() const {
+        return (raw_ & l1ca_mask) != 0;
+    }
+    constexpr void set_l1ca(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | l1ca_mask) : (raw_ & static_cast<Raw>(~l1ca_mask)));
+    }
+
+    static constexpr Raw l2c_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool l2c() const {
+        return (raw_ & l2c_mask) != 0;
+    }
+    constexpr void set_l2c(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | l2c_mask) : (raw_ & static_cast<Raw>(~l2c_mask)));
+    }
+
+    static constexpr Raw l5_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool l5() const {
+        return (raw_ & l5_mask) != 0;
+    }
+    constexpr void set_l5(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | l5_mask) : (raw_ & static_cast<Raw>(~l5_mask)));
+    }
+    friend constexpr bool operator==(GnssGpsSignals a, GnssGpsSignals b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssGpsSignals a, GnssGpsSignals b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// GPS time field selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpsTimeField : std::uint8_t {
@@ -569,6 +1119,160 @@ class Gx5BitFlags {
   private:
     Raw raw_ = 0;
 };
+
+/// Heading update source. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class HeadingUpdateSource : std::uint8_t {
+    none = 0,
+    magnetometer = 1,
+    gnss_velocity = 2,
+    external = 3,
+    gnss_velocity_and_magnetometer = 4,
+    gnss_velocity_and_external = 5,
+    magnetometer_and_external = 6,
+    gnss_velocity_magnetometer_and_external = 7,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(HeadingUpdateSource v) {
+    if (v == HeadingUpdateSource::none) {
+        return "none";
+    }
+    if (v == HeadingUpdateSource::magnetometer) {
+        return "magnetometer";
+    }
+    if (v == HeadingUpdateSource::gnss_velocity) {
+        return "gnss_velocity";
+    }
+    if (v == HeadingUpdateSource::external) {
+        return "external";
+    }
+    if (v == HeadingUpdateSource::gnss_velocity_and_magnetometer) {
+        return "gnss_velocity_and_magnetometer";
+    }
+    if (v == HeadingUpdateSource::gnss_velocity_and_external) {
+        return "gnss_velocity_and_external";
+    }
+    if (v == HeadingUpdateSource::magnetometer_and_external) {
+        return "magnetometer_and_external";
+    }
+    if (v == HeadingUpdateSource::gnss_velocity_magnetometer_and_external) {
+        return "gnss_velocity_magnetometer_and_external";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, HeadingUpdateSource &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = HeadingUpdateSource::none;
+        return true;
+    }
+    if (std::strcmp(name, "magnetometer") == 0) {
+        out = HeadingUpdateSource::magnetometer;
+        return true;
+    }
+    if (std::strcmp(name, "gnss_velocity") == 0) {
+        out = HeadingUpdateSource::gnss_velocity;
+        return true;
+    }
+    if (std::strcmp(name, "external") == 0) {
+        out = HeadingUpdateSource::external;
+        return true;
+    }
+    if (std::strcmp(name, "gnss_velocity_and_magnetometer") == 0) {
+        out = HeadingUpdateSource::gnss_velocity_and_magnetometer;
+        return true;
+    }
+    if (std::strcmp(name, "gnss_velocity_and_external") == 0) {
+        out = HeadingUpdateSource::gnss_velocity_and_external;
+        return true;
+    }
+    if (std::strcmp(name, "magnetometer_and_external") == 0) {
+        out = HeadingUpdateSource::magnetometer_and_external;
+        return true;
+    }
+    if (std::strcmp(name, "gnss_velocity_magnetometer_and_external") == 0) {
+        out = HeadingUpdateSource::gnss_velocity_magnetometer_and_external;
+        return true;
+    }
+    return false;
+}
+
+/// SPARTN connection type. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class SpartnConnectionType : std::uint8_t {
+    none = 0,
+    network = 1,
+    l_band = 2,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(SpartnConnectionType v) {
+    if (v == SpartnConnectionType::none) {
+        return "none";
+    }
+    if (v == SpartnConnectionType::network) {
+        return "network";
+    }
+    if (v == SpartnConnectionType::l_band) {
+        return "l_band";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, SpartnConnectionType &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = SpartnConnectionType::none;
+        return true;
+    }
+    if (std::strcmp(name, "network") == 0) {
+        out = SpartnConnectionType::network;
+        return true;
+    }
+    if (std::strcmp(name, "l_band") == 0) {
+        out = SpartnConnectionType::l_band;
+        return true;
+    }
+    return false;
+}
+
+/// Communication mode. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class SystemCommMode : std::uint8_t {
+    standard = 1,
+    sensor_direct = 2,
+    gnss_direct = 3,
+};
+
+/// Spec name of a value ("standard"), or nullptr when the value has no name.
+inline const char *to_string(SystemCommMode v) {
+    if (v == SystemCommMode::standard) {
+        return "standard";
+    }
+    if (v == SystemCommMode::sensor_direct) {
+        return "sensor_direct";
+    }
+    if (v == SystemCommMode::gnss_direct) {
+        return "gnss_direct";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, SystemCommMode &out) {
+    if (std::strcmp(name, "standard") == 0) {
+        out = SystemCommMode::standard;
+        return true;
+    }
+    if (std::strcmp(name, "sensor_direct") == 0) {
+        out = SystemCommMode::sensor_direct;
+        return true;
+    }
+    if (std::strcmp(name, "gnss_direct") == 0) {
+        out = SystemCommMode::gnss_direct;
+        return true;
+    }
+    return false;
+}
 
 /// Threshold comparison type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ThresholdType : std::uint8_t {
@@ -739,6 +1443,52 @@ inline bool from_string(const char *name, TriggerType &out) {
     return false;
 }
 
+/// Vehicle dynamics mode. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class VehicleDynamicsMode : std::uint8_t {
+    portable = 1,
+    automotive = 2,
+    airborne = 3,
+    airborne_high_g = 4,
+};
+
+/// Spec name of a value ("portable"), or nullptr when the value has no name.
+inline const char *to_string(VehicleDynamicsMode v) {
+    if (v == VehicleDynamicsMode::portable) {
+        return "portable";
+    }
+    if (v == VehicleDynamicsMode::automotive) {
+        return "automotive";
+    }
+    if (v == VehicleDynamicsMode::airborne) {
+        return "airborne";
+    }
+    if (v == VehicleDynamicsMode::airborne_high_g) {
+        return "airborne_high_g";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, VehicleDynamicsMode &out) {
+    if (std::strcmp(name, "portable") == 0) {
+        out = VehicleDynamicsMode::portable;
+        return true;
+    }
+    if (std::strcmp(name, "automotive") == 0) {
+        out = VehicleDynamicsMode::automotive;
+        return true;
+    }
+    if (std::strcmp(name, "airborne") == 0) {
+        out = VehicleDynamicsMode::airborne;
+        return true;
+    }
+    if (std::strcmp(name, "airborne_high_g") == 0) {
+        out = VehicleDynamicsMode::airborne_high_g;
+        return true;
+    }
+    return false;
+}
+
 /// ActionGpioParams
 struct ActionGpioParams {
     std::uint8_t pin{};                       ///< GPIO pin number.
@@ -796,6 +1546,62 @@ struct ActionStatusEntry {
     }
 };
 
+/// Aiding frame rotation as Euler angles
+struct AidingFrameEuler {
+    std::array<float, 3>
+        euler{}; ///< Roll, pitch, yaw of the frame relative to the vehicle frame, each within +/- pi. [rad]
+    friend bool operator==(const AidingFrameEuler &a, const AidingFrameEuler &b) {
+        (void)a;
+        (void)b;
+        return true && a.euler == b.euler;
+    }
+    friend bool operator!=(const AidingFrameEuler &a, const AidingFrameEuler &b) {
+        return !(a == b);
+    }
+};
+
+/// Aiding frame rotation as a quaternion
+struct AidingFrameQuaternion {
+    std::array<float, 4> quaternion{}; ///< Rotation of the frame relative to the vehicle frame, (w, x, y, z).
+    friend bool operator==(const AidingFrameQuaternion &a, const AidingFrameQuaternion &b) {
+        (void)a;
+        (void)b;
+        return true && a.quaternion == b.quaternion;
+    }
+    friend bool operator!=(const AidingFrameQuaternion &a, const AidingFrameQuaternion &b) {
+        return !(a == b);
+    }
+};
+
+/// Aiding frame rotation: the member chosen by a ::mipcodec::types::AidingFrameFormat parameter
+/// (index 0, std::monostate, for members without data).
+struct AidingFrameRotation {
+    std::variant<std::monostate, ::mipcodec::types::AidingFrameEuler,
+                 ::mipcodec::types::AidingFrameQuaternion>
+        value;
+    friend bool operator==(const AidingFrameRotation &a, const AidingFrameRotation &b) {
+        return a.value == b.value;
+    }
+    friend bool operator!=(const AidingFrameRotation &a, const AidingFrameRotation &b) {
+        return !(a == b);
+    }
+};
+
+/// Aiding measurement timestamp
+struct AidingTime {
+    ::mipcodec::types::AidingTimebase timebase{}; ///< Clock of the timestamp.
+    std::uint8_t reserved{};                      ///< Reserved.
+    std::uint64_t nanoseconds{}; ///< Time of the measurement in nanoseconds, in the timebase's clock. [ns]
+    friend bool operator==(const AidingTime &a, const AidingTime &b) {
+        (void)a;
+        (void)b;
+        return true && a.timebase == b.timebase && a.reserved == b.reserved && a.nanoseconds == b.nanoseconds;
+    }
+    friend bool operator!=(const AidingTime &a, const AidingTime &b) {
+        return !(a == b);
+    }
+};
+
 /// CombinationParams
 struct CombinationParams {
     std::uint16_t logic_table{};                  ///< Last column of the truth table of the inputs.
@@ -826,6 +1632,22 @@ struct DeviceInfo {
                a.lot_number == b.lot_number && a.device_options == b.device_options;
     }
     friend bool operator!=(const DeviceInfo &a, const DeviceInfo &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS receiver information
+struct GnssReceiverInfoEntry {
+    std::uint8_t receiver_id{};             ///< Receiver id (1, 2, ...).
+    std::uint8_t mip_data_descriptor_set{}; ///< MIP data descriptor set of this receiver's data.
+    std::array<char, 32> description{};     ///< ASCII, comma-delimited: module name/model, firmware version.
+    friend bool operator==(const GnssReceiverInfoEntry &a, const GnssReceiverInfoEntry &b) {
+        (void)a;
+        (void)b;
+        return true && a.receiver_id == b.receiver_id &&
+               a.mip_data_descriptor_set == b.mip_data_descriptor_set && a.description == b.description;
+    }
+    friend bool operator!=(const GnssReceiverInfoEntry &a, const GnssReceiverInfoEntry &b) {
         return !(a == b);
     }
 };
@@ -895,6 +1717,38 @@ struct TriggerStatusEntry {
 
 namespace mipcodec {
 
+template <> struct Codec<::mipcodec::types::AidingLlhValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::AidingLlhValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::AidingLlhValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::AidingVectorValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::AidingVectorValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::AidingVectorValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::Cv7BitFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint32_t);
@@ -908,6 +1762,86 @@ template <> struct Codec<::mipcodec::types::Cv7BitFlags> {
     }
     static void write(Writer &w, const ::mipcodec::types::Cv7BitFlags &v) {
         Codec<std::uint32_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::EstimationControlFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::EstimationControlFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::EstimationControlFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssBeidouSignals> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssBeidouSignals &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssBeidouSignals &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssGalileoSignals> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssGalileoSignals &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssGalileoSignals &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssGlonassSignals> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssGlonassSignals &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssGlonassSignals &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssGpsSignals> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssGpsSignals &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssGpsSignals &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
     }
 };
 
@@ -1086,6 +2020,123 @@ template <> struct Codec<::mipcodec::types::ActionStatusEntry> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::AidingFrameEuler> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 12;
+    static bool read(Reader &r, ::mipcodec::types::AidingFrameEuler &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.euler, err)) {
+            err.enter("euler");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::AidingFrameEuler &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.euler);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::AidingFrameQuaternion> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 16;
+    static bool read(Reader &r, ::mipcodec::types::AidingFrameQuaternion &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.quaternion, err)) {
+            err.enter("quaternion");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::AidingFrameQuaternion &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.quaternion);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::AidingFrameRotation> {
+    static constexpr bool kFixedSize = false;
+    static constexpr std::size_t kSize = 0;
+    static bool read(Reader &r, ::mipcodec::types::AidingFrameRotation &v,
+                     ::mipcodec::types::AidingFrameFormat selector, DecodeError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // euler
+            v.value.emplace<1>();
+            return Codec<::mipcodec::types::AidingFrameEuler>::read(r, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // quaternion
+            v.value.emplace<2>();
+            return Codec<::mipcodec::types::AidingFrameQuaternion>::read(r, std::get<2>(v.value), err);
+        }
+        (void)r;
+        err = no_union_member_error(raw);
+        return false;
+    }
+    static void write(Writer &w, const ::mipcodec::types::AidingFrameRotation &v,
+                      ::mipcodec::types::AidingFrameFormat selector) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // euler
+            if (v.value.index() != 1) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::AidingFrameEuler>::write(w, std::get<1>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // quaternion
+            if (v.value.index() != 2) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::AidingFrameQuaternion>::write(w, std::get<2>(v.value));
+            return;
+        }
+        w.fail(EncodeError::union_mismatch);
+    }
+};
+
+template <> struct Codec<::mipcodec::types::AidingTime> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 10;
+    static bool read(Reader &r, ::mipcodec::types::AidingTime &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.timebase, err)) {
+            err.enter("timebase");
+            return false;
+        }
+        if (!read_value(r, v.reserved, err)) {
+            err.enter("reserved");
+            return false;
+        }
+        if (!read_value(r, v.nanoseconds, err)) {
+            err.enter("nanoseconds");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::AidingTime &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.timebase);
+        write_value(w, v.reserved);
+        write_value(w, v.nanoseconds);
+        (void)absent;
+    }
+};
+
 template <> struct Codec<::mipcodec::types::CombinationParams> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 6;
@@ -1156,6 +2207,38 @@ template <> struct Codec<::mipcodec::types::DeviceInfo> {
         write_string(w, v.serial_number);
         write_string(w, v.lot_number);
         write_string(w, v.device_options);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssReceiverInfoEntry> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 34;
+    static bool read(Reader &r, ::mipcodec::types::GnssReceiverInfoEntry &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.receiver_id, err)) {
+            err.enter("receiver_id");
+            return false;
+        }
+        if (!read_value(r, v.mip_data_descriptor_set, err)) {
+            err.enter("mip_data_descriptor_set");
+            return false;
+        }
+        if (!read_string(r, v.description, err)) {
+            err.enter("description");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssReceiverInfoEntry &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.receiver_id);
+        write_value(w, v.mip_data_descriptor_set);
+        write_string(w, v.description);
         (void)absent;
     }
 };

@@ -10,6 +10,34 @@
 
 namespace mipcodec {
 
+template <> struct Json<::mipcodec::types::AidingLlhValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingLlhValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::AidingLlhValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::AidingVectorValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingVectorValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::AidingVectorValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::Cv7BitFlags> {
     static void write(JsonWriter &w, const ::mipcodec::types::Cv7BitFlags &v) {
         Json<std::uint32_t>::write(w, v.raw());
@@ -17,6 +45,76 @@ template <> struct Json<::mipcodec::types::Cv7BitFlags> {
     static bool read(const json::Value &x, ::mipcodec::types::Cv7BitFlags &v, JsonError &err) {
         std::uint32_t raw{};
         if (!Json<std::uint32_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::EstimationControlFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::EstimationControlFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::EstimationControlFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssBeidouSignals> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssBeidouSignals &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssBeidouSignals &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssGalileoSignals> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssGalileoSignals &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssGalileoSignals &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssGlonassSignals> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssGlonassSignals &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssGlonassSignals &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssGpsSignals> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssGpsSignals &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssGpsSignals &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
             return false;
         }
         v.set_raw(raw);
@@ -237,6 +335,148 @@ template <> struct Json<::mipcodec::types::ActionStatusEntry> {
     }
 };
 
+template <> struct Json<::mipcodec::types::AidingFrameEuler> {
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameEuler &v) {
+        w.begin_object();
+        w.key("euler");
+        json_write_array(w, v.euler);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::AidingFrameEuler &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "euler",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("euler")) {
+            const json::Value &x = *found;
+            if (!json_read_fixed(x, v.euler, err)) {
+                err.enter("euler");
+                return false;
+            }
+        } else {
+            return err.missing("euler");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::AidingFrameQuaternion> {
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameQuaternion &v) {
+        w.begin_object();
+        w.key("quaternion");
+        json_write_array(w, v.quaternion);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::AidingFrameQuaternion &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "quaternion",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("quaternion")) {
+            const json::Value &x = *found;
+            if (!json_read_fixed(x, v.quaternion, err)) {
+                err.enter("quaternion");
+                return false;
+            }
+        } else {
+            return err.missing("quaternion");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::AidingFrameRotation> {
+    /// The selected member's object, or null for a member without data.
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameRotation &v) {
+        switch (v.value.index()) {
+        case 1:
+            Json<::mipcodec::types::AidingFrameEuler>::write(w, std::get<1>(v.value));
+            return;
+        case 2:
+            Json<::mipcodec::types::AidingFrameQuaternion>::write(w, std::get<2>(v.value));
+            return;
+        default:
+            w.null();
+            return;
+        }
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::AidingFrameRotation &v,
+                     ::mipcodec::types::AidingFrameFormat selector, JsonError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // euler
+            v.value.emplace<1>();
+            return Json<::mipcodec::types::AidingFrameEuler>::read(x, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // quaternion
+            v.value.emplace<2>();
+            return Json<::mipcodec::types::AidingFrameQuaternion>::read(x, std::get<2>(v.value), err);
+        }
+        (void)x;
+        return err.fail("no member for selector value " + std::to_string(raw));
+    }
+};
+
+template <> struct Json<::mipcodec::types::AidingTime> {
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingTime &v) {
+        w.begin_object();
+        w.key("timebase");
+        json_write_value(w, v.timebase);
+        w.key("reserved");
+        json_write_value(w, v.reserved);
+        w.key("nanoseconds");
+        json_write_value(w, v.nanoseconds);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::AidingTime &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "timebase",
+                                   "reserved",
+                                   "nanoseconds",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("timebase")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.timebase, err)) {
+                err.enter("timebase");
+                return false;
+            }
+        } else {
+            return err.missing("timebase");
+        }
+        if (const json::Value *found = in.find("reserved")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved, err)) {
+                err.enter("reserved");
+                return false;
+            }
+        } else {
+            return err.missing("reserved");
+        }
+        if (const json::Value *found = in.find("nanoseconds")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.nanoseconds, err)) {
+                err.enter("nanoseconds");
+                return false;
+            }
+        } else {
+            return err.missing("nanoseconds");
+        }
+        (void)v;
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::CombinationParams> {
     static void write(JsonWriter &w, const ::mipcodec::types::CombinationParams &v) {
         w.begin_object();
@@ -361,6 +601,59 @@ template <> struct Json<::mipcodec::types::DeviceInfo> {
             }
         } else {
             return err.missing("device_options");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssReceiverInfoEntry> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssReceiverInfoEntry &v) {
+        w.begin_object();
+        w.key("receiver_id");
+        json_write_value(w, v.receiver_id);
+        w.key("mip_data_descriptor_set");
+        json_write_value(w, v.mip_data_descriptor_set);
+        w.key("description");
+        json_write_string(w, v.description);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GnssReceiverInfoEntry &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "receiver_id",
+                                   "mip_data_descriptor_set",
+                                   "description",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("receiver_id")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.receiver_id, err)) {
+                err.enter("receiver_id");
+                return false;
+            }
+        } else {
+            return err.missing("receiver_id");
+        }
+        if (const json::Value *found = in.find("mip_data_descriptor_set")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.mip_data_descriptor_set, err)) {
+                err.enter("mip_data_descriptor_set");
+                return false;
+            }
+        } else {
+            return err.missing("mip_data_descriptor_set");
+        }
+        if (const json::Value *found = in.find("description")) {
+            const json::Value &x = *found;
+            if (!json_read_string(x, v.description, err)) {
+                err.enter("description");
+                return false;
+            }
+        } else {
+            return err.missing("description");
         }
         (void)v;
         return true;
