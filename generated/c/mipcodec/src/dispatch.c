@@ -117,6 +117,87 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, "zupt_control_response", NULL, MIP_DEVICE_ANY, 0x8D},
     {MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME, "external_heading_update_with_time", NULL,
      MIP_DEVICE_ANY, 0x1F},
+    {MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL, "zero_angular_rate_update_control", NULL,
+     MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE, "zero_angular_rate_update_control_response",
+     NULL, MIP_DEVICE_ANY, 0x8E},
+    {MIP_FIELD_FILTER_TARE_ORIENTATION, "tare_orientation", NULL, MIP_DEVICE_ANY, 0x21},
+    {MIP_FIELD_FILTER_COMMANDED_ZUPT, "commanded_zupt", NULL, MIP_DEVICE_ANY, 0x22},
+    {MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE, "commanded_zero_angular_rate_update", NULL,
+     MIP_DEVICE_ANY, 0x23},
+    {MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION, "mag_capture_auto_calibration", NULL, MIP_DEVICE_ANY,
+     0x27},
+    {MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV, "gravity_noise_std_dev", NULL, MIP_DEVICE_ANY, 0x28},
+    {MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE, "gravity_noise_std_dev_response", NULL, MIP_DEVICE_ANY,
+     0x93},
+    {MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV, "pressure_altitude_noise_std_dev", NULL,
+     MIP_DEVICE_ANY, 0x29},
+    {MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE, "pressure_altitude_noise_std_dev_response",
+     NULL, MIP_DEVICE_ANY, 0x94},
+    {MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE, "hard_iron_offset_noise", NULL, MIP_DEVICE_ANY, 0x2B},
+    {MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE, "hard_iron_offset_noise_response", NULL,
+     MIP_DEVICE_ANY, 0x96},
+    {MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE, "soft_iron_matrix_noise", NULL, MIP_DEVICE_ANY, 0x2C},
+    {MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE, "soft_iron_matrix_noise_response", NULL,
+     MIP_DEVICE_ANY, 0x97},
+    {MIP_FIELD_FILTER_MAG_NOISE_STD_DEV, "mag_noise_std_dev", NULL, MIP_DEVICE_ANY, 0x42},
+    {MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE, "mag_noise_std_dev_response", NULL, MIP_DEVICE_ANY, 0xB1},
+    {MIP_FIELD_FILTER_DECLINATION_SOURCE, "declination_source", NULL, MIP_DEVICE_ANY, 0x43},
+    {MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE, "declination_source_response", NULL, MIP_DEVICE_ANY, 0xB2},
+    {MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT, "gravity_magnitude_adaptive_measurement", NULL,
+     MIP_DEVICE_ANY, 0x44},
+    {MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE,
+     "gravity_magnitude_adaptive_measurement_response", NULL, MIP_DEVICE_ANY, 0xB3},
+    {MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT, "mag_magnitude_adaptive_measurement", NULL,
+     MIP_DEVICE_ANY, 0x45},
+    {MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE,
+     "mag_magnitude_adaptive_measurement_response", NULL, MIP_DEVICE_ANY, 0xB4},
+    {MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT, "mag_dip_angle_adaptive_measurement", NULL,
+     MIP_DEVICE_ANY, 0x46},
+    {MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE,
+     "mag_dip_angle_adaptive_measurement_response", NULL, MIP_DEVICE_ANY, 0xB5},
+    {MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL, "altitude_aiding_control", NULL, MIP_DEVICE_ANY, 0x47},
+    {MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE, "altitude_aiding_control_response", NULL,
+     MIP_DEVICE_ANY, 0xB7},
+    {MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL, "pitch_roll_aiding_control", NULL, MIP_DEVICE_ANY, 0x4B},
+    {MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE, "pitch_roll_aiding_control_response", NULL,
+     MIP_DEVICE_ANY, 0xBB},
+    {MIP_FIELD_FILTER_INCLINATION_SOURCE, "inclination_source", NULL, MIP_DEVICE_ANY, 0x4C},
+    {MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE, "inclination_source_response", NULL, MIP_DEVICE_ANY, 0xBC},
+    {MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE, "magnetic_field_magnitude_source", NULL,
+     MIP_DEVICE_ANY, 0x4D},
+    {MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE, "magnetic_field_magnitude_source_response",
+     NULL, MIP_DEVICE_ANY, 0xBD},
+    {MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL, "aiding_measurement_control", NULL, MIP_DEVICE_ANY, 0x50},
+    {MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE, "aiding_measurement_control_response", NULL,
+     MIP_DEVICE_ANY, 0xD0},
+    {MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION, "initialization_configuration", NULL, MIP_DEVICE_ANY,
+     0x52},
+    {MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE, "initialization_configuration_response", NULL,
+     MIP_DEVICE_ANY, 0xD2},
+    {MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL, "adaptive_filter_control", NULL, MIP_DEVICE_ANY, 0x53},
+    {MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE, "adaptive_filter_control_response", NULL,
+     MIP_DEVICE_ANY, 0xD3},
+    {MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET, "multi_antenna_offset", NULL, MIP_DEVICE_ANY, 0x54},
+    {MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE, "multi_antenna_offset_response", NULL, MIP_DEVICE_ANY,
+     0xD4},
+    {MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION, "relative_position_configuration", NULL,
+     MIP_DEVICE_ANY, 0x55},
+    {MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE, "relative_position_configuration_response",
+     NULL, MIP_DEVICE_ANY, 0xD5},
+    {MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM, "reference_point_lever_arm", NULL, MIP_DEVICE_ANY, 0x56},
+    {MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE, "reference_point_lever_arm_response", NULL,
+     MIP_DEVICE_ANY, 0xD6},
+    {MIP_FIELD_FILTER_SPEED_LEVER_ARM, "speed_lever_arm", NULL, MIP_DEVICE_ANY, 0x61},
+    {MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE, "speed_lever_arm_response", NULL, MIP_DEVICE_ANY, 0xE1},
+    {MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL, "wheeled_vehicle_constraint_control", NULL,
+     MIP_DEVICE_ANY, 0x63},
+    {MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE,
+     "wheeled_vehicle_constraint_control_response", NULL, MIP_DEVICE_ANY, 0xE3},
+    {MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL, "gnss_antenna_calibration_control", NULL,
+     MIP_DEVICE_ANY, 0x64},
+    {MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE, "gnss_antenna_calibration_control_response",
+     NULL, MIP_DEVICE_ANY, 0xE4},
     {MIP_FIELD_GNSS_RECEIVER_INFO, "receiver_info", NULL, MIP_DEVICE_ANY, 0x01},
     {MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, "receiver_info_response", NULL, MIP_DEVICE_ANY, 0x81},
     {MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, "signal_configuration", NULL, MIP_DEVICE_ANY, 0x02},
@@ -145,7 +226,7 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_SENSOR_SCALED_MAG, "scaled_mag", NULL, MIP_DEVICE_ANY, 0x06},
 };
 
-static const mip_field_info_t k_fields[87] = {
+static const mip_field_info_t k_fields[137] = {
     {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                    /* 0 */
     {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                       /* 1 */
     {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                         /* 2 */
@@ -211,31 +292,101 @@ static const mip_field_info_t k_fields[87] = {
     {"zupt_control", 0x1E, MIP_FIELD_FILTER_ZUPT_CONTROL, 1},                                       /* 60 */
     {"zupt_control_response", 0x8D, MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, 1},                     /* 61 */
     {"external_heading_update_with_time", 0x1F, MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME,
-     1},                                                                                      /* 62 */
-    {"receiver_info", 0x01, MIP_FIELD_GNSS_RECEIVER_INFO, 1},                                 /* 63 */
-    {"receiver_info_response", 0x81, MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},               /* 64 */
-    {"signal_configuration", 0x02, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},                   /* 65 */
-    {"signal_configuration_response", 0x82, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1}, /* 66 */
-    {"spartn_configuration", 0x20, MIP_FIELD_GNSS_SPARTN_CONFIGURATION, 1},                   /* 67 */
-    {"spartn_configuration_response", 0xA0, MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1}, /* 68 */
-    {"frame_config", 0x01, MIP_FIELD_AIDING_FRAME_CONFIG, 1},                                 /* 69 */
-    {"frame_config_response", 0x81, MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},               /* 70 */
-    {"echo_control", 0x1F, MIP_FIELD_AIDING_ECHO_CONTROL, 1},                                 /* 71 */
-    {"echo_control_response", 0x9F, MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},               /* 72 */
-    {"ecef_position", 0x21, MIP_FIELD_AIDING_ECEF_POSITION, 1},                               /* 73 */
-    {"llh_position", 0x22, MIP_FIELD_AIDING_LLH_POSITION, 1},                                 /* 74 */
-    {"height_above_ellipsoid", 0x23, MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},             /* 75 */
-    {"ecef_velocity", 0x28, MIP_FIELD_AIDING_ECEF_VELOCITY, 1},                               /* 76 */
-    {"ned_velocity", 0x29, MIP_FIELD_AIDING_NED_VELOCITY, 1},                                 /* 77 */
-    {"body_frame_velocity", 0x2A, MIP_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},                   /* 78 */
-    {"true_heading", 0x31, MIP_FIELD_AIDING_TRUE_HEADING, 1},                                 /* 79 */
-    {"magnetic_field", 0x32, MIP_FIELD_AIDING_MAGNETIC_FIELD, 1},                             /* 80 */
-    {"pressure", 0x33, MIP_FIELD_AIDING_PRESSURE, 1},                                         /* 81 */
-    {"communication_mode", 0x10, MIP_FIELD_SYSTEM_COMMUNICATION_MODE, 1},                     /* 82 */
-    {"communication_mode_response", 0x90, MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},   /* 83 */
-    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 84 */
-    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 85 */
-    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 86 */
+     1},                                                                                              /* 62 */
+    {"zero_angular_rate_update_control", 0x20, MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL, 1}, /* 63 */
+    {"zero_angular_rate_update_control_response", 0x8E,
+     MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE, 1},  /* 64 */
+    {"tare_orientation", 0x21, MIP_FIELD_FILTER_TARE_ORIENTATION, 1}, /* 65 */
+    {"commanded_zupt", 0x22, MIP_FIELD_FILTER_COMMANDED_ZUPT, 1},     /* 66 */
+    {"commanded_zero_angular_rate_update", 0x23, MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE,
+     1},                                                                                            /* 67 */
+    {"mag_capture_auto_calibration", 0x27, MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION, 1},       /* 68 */
+    {"gravity_noise_std_dev", 0x28, MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV, 1},                     /* 69 */
+    {"gravity_noise_std_dev_response", 0x93, MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE, 1},   /* 70 */
+    {"pressure_altitude_noise_std_dev", 0x29, MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV, 1}, /* 71 */
+    {"pressure_altitude_noise_std_dev_response", 0x94,
+     MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE, 1},                                 /* 72 */
+    {"hard_iron_offset_noise", 0x2B, MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE, 1},                   /* 73 */
+    {"hard_iron_offset_noise_response", 0x96, MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE, 1}, /* 74 */
+    {"soft_iron_matrix_noise", 0x2C, MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE, 1},                   /* 75 */
+    {"soft_iron_matrix_noise_response", 0x97, MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE, 1}, /* 76 */
+    {"mag_noise_std_dev", 0x42, MIP_FIELD_FILTER_MAG_NOISE_STD_DEV, 1},                             /* 77 */
+    {"mag_noise_std_dev_response", 0xB1, MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE, 1},           /* 78 */
+    {"declination_source", 0x43, MIP_FIELD_FILTER_DECLINATION_SOURCE, 1},                           /* 79 */
+    {"declination_source_response", 0xB2, MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE, 1},         /* 80 */
+    {"gravity_magnitude_adaptive_measurement", 0x44, MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT,
+     1}, /* 81 */
+    {"gravity_magnitude_adaptive_measurement_response", 0xB3,
+     MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 82 */
+    {"mag_magnitude_adaptive_measurement", 0x45, MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT,
+     1}, /* 83 */
+    {"mag_magnitude_adaptive_measurement_response", 0xB4,
+     MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 84 */
+    {"mag_dip_angle_adaptive_measurement", 0x46, MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT,
+     1}, /* 85 */
+    {"mag_dip_angle_adaptive_measurement_response", 0xB5,
+     MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},                                /* 86 */
+    {"altitude_aiding_control", 0x47, MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL, 1},                   /* 87 */
+    {"altitude_aiding_control_response", 0xB7, MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE, 1}, /* 88 */
+    {"pitch_roll_aiding_control", 0x4B, MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL, 1},               /* 89 */
+    {"pitch_roll_aiding_control_response", 0xBB, MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE,
+     1},                                                                                            /* 90 */
+    {"inclination_source", 0x4C, MIP_FIELD_FILTER_INCLINATION_SOURCE, 1},                           /* 91 */
+    {"inclination_source_response", 0xBC, MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE, 1},         /* 92 */
+    {"magnetic_field_magnitude_source", 0x4D, MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE, 1}, /* 93 */
+    {"magnetic_field_magnitude_source_response", 0xBD,
+     MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE, 1},                       /* 94 */
+    {"aiding_measurement_control", 0x50, MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL, 1}, /* 95 */
+    {"aiding_measurement_control_response", 0xD0, MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE,
+     1},                                                                                      /* 96 */
+    {"initialization_configuration", 0x52, MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION, 1}, /* 97 */
+    {"initialization_configuration_response", 0xD2, MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE,
+     1},                                                                            /* 98 */
+    {"adaptive_filter_control", 0x53, MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL, 1}, /* 99 */
+    {"adaptive_filter_control_response", 0xD3, MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE,
+     1},                                                                                            /* 100 */
+    {"multi_antenna_offset", 0x54, MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET, 1},                       /* 101 */
+    {"multi_antenna_offset_response", 0xD4, MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE, 1},     /* 102 */
+    {"relative_position_configuration", 0x55, MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION, 1}, /* 103 */
+    {"relative_position_configuration_response", 0xD5,
+     MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE, 1},                     /* 104 */
+    {"reference_point_lever_arm", 0x56, MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM, 1}, /* 105 */
+    {"reference_point_lever_arm_response", 0xD6, MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE,
+     1},                                                                              /* 106 */
+    {"speed_lever_arm", 0x61, MIP_FIELD_FILTER_SPEED_LEVER_ARM, 1},                   /* 107 */
+    {"speed_lever_arm_response", 0xE1, MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE, 1}, /* 108 */
+    {"wheeled_vehicle_constraint_control", 0x63, MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL,
+     1}, /* 109 */
+    {"wheeled_vehicle_constraint_control_response", 0xE3,
+     MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE, 1}, /* 110 */
+    {"gnss_antenna_calibration_control", 0x64, MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL,
+     1}, /* 111 */
+    {"gnss_antenna_calibration_control_response", 0xE4,
+     MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE, 1},                          /* 112 */
+    {"receiver_info", 0x01, MIP_FIELD_GNSS_RECEIVER_INFO, 1},                                 /* 113 */
+    {"receiver_info_response", 0x81, MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},               /* 114 */
+    {"signal_configuration", 0x02, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},                   /* 115 */
+    {"signal_configuration_response", 0x82, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1}, /* 116 */
+    {"spartn_configuration", 0x20, MIP_FIELD_GNSS_SPARTN_CONFIGURATION, 1},                   /* 117 */
+    {"spartn_configuration_response", 0xA0, MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1}, /* 118 */
+    {"frame_config", 0x01, MIP_FIELD_AIDING_FRAME_CONFIG, 1},                                 /* 119 */
+    {"frame_config_response", 0x81, MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},               /* 120 */
+    {"echo_control", 0x1F, MIP_FIELD_AIDING_ECHO_CONTROL, 1},                                 /* 121 */
+    {"echo_control_response", 0x9F, MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},               /* 122 */
+    {"ecef_position", 0x21, MIP_FIELD_AIDING_ECEF_POSITION, 1},                               /* 123 */
+    {"llh_position", 0x22, MIP_FIELD_AIDING_LLH_POSITION, 1},                                 /* 124 */
+    {"height_above_ellipsoid", 0x23, MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},             /* 125 */
+    {"ecef_velocity", 0x28, MIP_FIELD_AIDING_ECEF_VELOCITY, 1},                               /* 126 */
+    {"ned_velocity", 0x29, MIP_FIELD_AIDING_NED_VELOCITY, 1},                                 /* 127 */
+    {"body_frame_velocity", 0x2A, MIP_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},                   /* 128 */
+    {"true_heading", 0x31, MIP_FIELD_AIDING_TRUE_HEADING, 1},                                 /* 129 */
+    {"magnetic_field", 0x32, MIP_FIELD_AIDING_MAGNETIC_FIELD, 1},                             /* 130 */
+    {"pressure", 0x33, MIP_FIELD_AIDING_PRESSURE, 1},                                         /* 131 */
+    {"communication_mode", 0x10, MIP_FIELD_SYSTEM_COMMUNICATION_MODE, 1},                     /* 132 */
+    {"communication_mode_response", 0x90, MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},   /* 133 */
+    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 134 */
+    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 135 */
+    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 136 */
 };
 
 const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
@@ -385,74 +536,174 @@ static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *se
             return &k_fields[61]; /* zupt_control_response */
         case 0x1F:
             return &k_fields[62]; /* external_heading_update_with_time */
+        case 0x20:
+            return &k_fields[63]; /* zero_angular_rate_update_control */
+        case 0x8E:
+            return &k_fields[64]; /* zero_angular_rate_update_control_response */
+        case 0x21:
+            return &k_fields[65]; /* tare_orientation */
+        case 0x22:
+            return &k_fields[66]; /* commanded_zupt */
+        case 0x23:
+            return &k_fields[67]; /* commanded_zero_angular_rate_update */
+        case 0x27:
+            return &k_fields[68]; /* mag_capture_auto_calibration */
+        case 0x28:
+            return &k_fields[69]; /* gravity_noise_std_dev */
+        case 0x93:
+            return &k_fields[70]; /* gravity_noise_std_dev_response */
+        case 0x29:
+            return &k_fields[71]; /* pressure_altitude_noise_std_dev */
+        case 0x94:
+            return &k_fields[72]; /* pressure_altitude_noise_std_dev_response */
+        case 0x2B:
+            return &k_fields[73]; /* hard_iron_offset_noise */
+        case 0x96:
+            return &k_fields[74]; /* hard_iron_offset_noise_response */
+        case 0x2C:
+            return &k_fields[75]; /* soft_iron_matrix_noise */
+        case 0x97:
+            return &k_fields[76]; /* soft_iron_matrix_noise_response */
+        case 0x42:
+            return &k_fields[77]; /* mag_noise_std_dev */
+        case 0xB1:
+            return &k_fields[78]; /* mag_noise_std_dev_response */
+        case 0x43:
+            return &k_fields[79]; /* declination_source */
+        case 0xB2:
+            return &k_fields[80]; /* declination_source_response */
+        case 0x44:
+            return &k_fields[81]; /* gravity_magnitude_adaptive_measurement */
+        case 0xB3:
+            return &k_fields[82]; /* gravity_magnitude_adaptive_measurement_response */
+        case 0x45:
+            return &k_fields[83]; /* mag_magnitude_adaptive_measurement */
+        case 0xB4:
+            return &k_fields[84]; /* mag_magnitude_adaptive_measurement_response */
+        case 0x46:
+            return &k_fields[85]; /* mag_dip_angle_adaptive_measurement */
+        case 0xB5:
+            return &k_fields[86]; /* mag_dip_angle_adaptive_measurement_response */
+        case 0x47:
+            return &k_fields[87]; /* altitude_aiding_control */
+        case 0xB7:
+            return &k_fields[88]; /* altitude_aiding_control_response */
+        case 0x4B:
+            return &k_fields[89]; /* pitch_roll_aiding_control */
+        case 0xBB:
+            return &k_fields[90]; /* pitch_roll_aiding_control_response */
+        case 0x4C:
+            return &k_fields[91]; /* inclination_source */
+        case 0xBC:
+            return &k_fields[92]; /* inclination_source_response */
+        case 0x4D:
+            return &k_fields[93]; /* magnetic_field_magnitude_source */
+        case 0xBD:
+            return &k_fields[94]; /* magnetic_field_magnitude_source_response */
+        case 0x50:
+            return &k_fields[95]; /* aiding_measurement_control */
+        case 0xD0:
+            return &k_fields[96]; /* aiding_measurement_control_response */
+        case 0x52:
+            return &k_fields[97]; /* initialization_configuration */
+        case 0xD2:
+            return &k_fields[98]; /* initialization_configuration_response */
+        case 0x53:
+            return &k_fields[99]; /* adaptive_filter_control */
+        case 0xD3:
+            return &k_fields[100]; /* adaptive_filter_control_response */
+        case 0x54:
+            return &k_fields[101]; /* multi_antenna_offset */
+        case 0xD4:
+            return &k_fields[102]; /* multi_antenna_offset_response */
+        case 0x55:
+            return &k_fields[103]; /* relative_position_configuration */
+        case 0xD5:
+            return &k_fields[104]; /* relative_position_configuration_response */
+        case 0x56:
+            return &k_fields[105]; /* reference_point_lever_arm */
+        case 0xD6:
+            return &k_fields[106]; /* reference_point_lever_arm_response */
+        case 0x61:
+            return &k_fields[107]; /* speed_lever_arm */
+        case 0xE1:
+            return &k_fields[108]; /* speed_lever_arm_response */
+        case 0x63:
+            return &k_fields[109]; /* wheeled_vehicle_constraint_control */
+        case 0xE3:
+            return &k_fields[110]; /* wheeled_vehicle_constraint_control_response */
+        case 0x64:
+            return &k_fields[111]; /* gnss_antenna_calibration_control */
+        case 0xE4:
+            return &k_fields[112]; /* gnss_antenna_calibration_control_response */
         default:
             return NULL;
         }
     case 0x0E: /* gnss */
         switch (descriptor) {
         case 0x01:
-            return &k_fields[63]; /* receiver_info */
+            return &k_fields[113]; /* receiver_info */
         case 0x81:
-            return &k_fields[64]; /* receiver_info_response */
+            return &k_fields[114]; /* receiver_info_response */
         case 0x02:
-            return &k_fields[65]; /* signal_configuration */
+            return &k_fields[115]; /* signal_configuration */
         case 0x82:
-            return &k_fields[66]; /* signal_configuration_response */
+            return &k_fields[116]; /* signal_configuration_response */
         case 0x20:
-            return &k_fields[67]; /* spartn_configuration */
+            return &k_fields[117]; /* spartn_configuration */
         case 0xA0:
-            return &k_fields[68]; /* spartn_configuration_response */
+            return &k_fields[118]; /* spartn_configuration_response */
         default:
             return NULL;
         }
     case 0x13: /* aiding */
         switch (descriptor) {
         case 0x01:
-            return &k_fields[69]; /* frame_config */
+            return &k_fields[119]; /* frame_config */
         case 0x81:
-            return &k_fields[70]; /* frame_config_response */
+            return &k_fields[120]; /* frame_config_response */
         case 0x1F:
-            return &k_fields[71]; /* echo_control */
+            return &k_fields[121]; /* echo_control */
         case 0x9F:
-            return &k_fields[72]; /* echo_control_response */
+            return &k_fields[122]; /* echo_control_response */
         case 0x21:
-            return &k_fields[73]; /* ecef_position */
+            return &k_fields[123]; /* ecef_position */
         case 0x22:
-            return &k_fields[74]; /* llh_position */
+            return &k_fields[124]; /* llh_position */
         case 0x23:
-            return &k_fields[75]; /* height_above_ellipsoid */
+            return &k_fields[125]; /* height_above_ellipsoid */
         case 0x28:
-            return &k_fields[76]; /* ecef_velocity */
+            return &k_fields[126]; /* ecef_velocity */
         case 0x29:
-            return &k_fields[77]; /* ned_velocity */
+            return &k_fields[127]; /* ned_velocity */
         case 0x2A:
-            return &k_fields[78]; /* body_frame_velocity */
+            return &k_fields[128]; /* body_frame_velocity */
         case 0x31:
-            return &k_fields[79]; /* true_heading */
+            return &k_fields[129]; /* true_heading */
         case 0x32:
-            return &k_fields[80]; /* magnetic_field */
+            return &k_fields[130]; /* magnetic_field */
         case 0x33:
-            return &k_fields[81]; /* pressure */
+            return &k_fields[131]; /* pressure */
         default:
             return NULL;
         }
     case 0x7F: /* system */
         switch (descriptor) {
         case 0x10:
-            return &k_fields[82]; /* communication_mode */
+            return &k_fields[132]; /* communication_mode */
         case 0x90:
-            return &k_fields[83]; /* communication_mode_response */
+            return &k_fields[133]; /* communication_mode_response */
         default:
             return NULL;
         }
     case 0x80: /* sensor */
         switch (descriptor) {
         case 0x04:
-            return &k_fields[84]; /* scaled_accel */
+            return &k_fields[134]; /* scaled_accel */
         case 0x05:
-            return &k_fields[85]; /* scaled_gyro */
+            return &k_fields[135]; /* scaled_gyro */
         case 0x06:
-            return &k_fields[86]; /* scaled_mag */
+            return &k_fields[136]; /* scaled_mag */
         default:
             return NULL;
         }
@@ -647,6 +898,148 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
     case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
         return mip_filter_external_heading_update_with_time_decode(
             data, len, &out->u.filter_external_heading_update_with_time, err);
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL:
+        return mip_filter_zero_angular_rate_update_control_decode(
+            data, len, &out->u.filter_zero_angular_rate_update_control, err);
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE:
+        return mip_filter_zero_angular_rate_update_control_response_decode(
+            data, len, &out->u.filter_zero_angular_rate_update_control_response, err);
+    case MIP_FIELD_FILTER_TARE_ORIENTATION:
+        return mip_filter_tare_orientation_decode(data, len, &out->u.filter_tare_orientation, err);
+    case MIP_FIELD_FILTER_COMMANDED_ZUPT:
+        return mip_filter_commanded_zupt_decode(data, len, &out->u.filter_commanded_zupt, err);
+    case MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE:
+        return mip_filter_commanded_zero_angular_rate_update_decode(
+            data, len, &out->u.filter_commanded_zero_angular_rate_update, err);
+    case MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION:
+        return mip_filter_mag_capture_auto_calibration_decode(
+            data, len, &out->u.filter_mag_capture_auto_calibration, err);
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV:
+        return mip_filter_gravity_noise_std_dev_decode(data, len, &out->u.filter_gravity_noise_std_dev, err);
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_gravity_noise_std_dev_response_decode(
+            data, len, &out->u.filter_gravity_noise_std_dev_response, err);
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV:
+        return mip_filter_pressure_altitude_noise_std_dev_decode(
+            data, len, &out->u.filter_pressure_altitude_noise_std_dev, err);
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_pressure_altitude_noise_std_dev_response_decode(
+            data, len, &out->u.filter_pressure_altitude_noise_std_dev_response, err);
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE:
+        return mip_filter_hard_iron_offset_noise_decode(data, len, &out->u.filter_hard_iron_offset_noise,
+                                                        err);
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE:
+        return mip_filter_hard_iron_offset_noise_response_decode(
+            data, len, &out->u.filter_hard_iron_offset_noise_response, err);
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE:
+        return mip_filter_soft_iron_matrix_noise_decode(data, len, &out->u.filter_soft_iron_matrix_noise,
+                                                        err);
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE:
+        return mip_filter_soft_iron_matrix_noise_response_decode(
+            data, len, &out->u.filter_soft_iron_matrix_noise_response, err);
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV:
+        return mip_filter_mag_noise_std_dev_decode(data, len, &out->u.filter_mag_noise_std_dev, err);
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_mag_noise_std_dev_response_decode(data, len,
+                                                            &out->u.filter_mag_noise_std_dev_response, err);
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE:
+        return mip_filter_declination_source_decode(data, len, &out->u.filter_declination_source, err);
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE:
+        return mip_filter_declination_source_response_decode(data, len,
+                                                             &out->u.filter_declination_source_response, err);
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_gravity_magnitude_adaptive_measurement_decode(
+            data, len, &out->u.filter_gravity_magnitude_adaptive_measurement, err);
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_gravity_magnitude_adaptive_measurement_response_decode(
+            data, len, &out->u.filter_gravity_magnitude_adaptive_measurement_response, err);
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_mag_magnitude_adaptive_measurement_decode(
+            data, len, &out->u.filter_mag_magnitude_adaptive_measurement, err);
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_mag_magnitude_adaptive_measurement_response_decode(
+            data, len, &out->u.filter_mag_magnitude_adaptive_measurement_response, err);
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_mag_dip_angle_adaptive_measurement_decode(
+            data, len, &out->u.filter_mag_dip_angle_adaptive_measurement, err);
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_mag_dip_angle_adaptive_measurement_response_decode(
+            data, len, &out->u.filter_mag_dip_angle_adaptive_measurement_response, err);
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL:
+        return mip_filter_altitude_aiding_control_decode(data, len, &out->u.filter_altitude_aiding_control,
+                                                         err);
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE:
+        return mip_filter_altitude_aiding_control_response_decode(
+            data, len, &out->u.filter_altitude_aiding_control_response, err);
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL:
+        return mip_filter_pitch_roll_aiding_control_decode(data, len,
+                                                           &out->u.filter_pitch_roll_aiding_control, err);
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE:
+        return mip_filter_pitch_roll_aiding_control_response_decode(
+            data, len, &out->u.filter_pitch_roll_aiding_control_response, err);
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE:
+        return mip_filter_inclination_source_decode(data, len, &out->u.filter_inclination_source, err);
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE:
+        return mip_filter_inclination_source_response_decode(data, len,
+                                                             &out->u.filter_inclination_source_response, err);
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE:
+        return mip_filter_magnetic_field_magnitude_source_decode(
+            data, len, &out->u.filter_magnetic_field_magnitude_source, err);
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE:
+        return mip_filter_magnetic_field_magnitude_source_response_decode(
+            data, len, &out->u.filter_magnetic_field_magnitude_source_response, err);
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL:
+        return mip_filter_aiding_measurement_control_decode(data, len,
+                                                            &out->u.filter_aiding_measurement_control, err);
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE:
+        return mip_filter_aiding_measurement_control_response_decode(
+            data, len, &out->u.filter_aiding_measurement_control_response, err);
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION:
+        return mip_filter_initialization_configuration_decode(
+            data, len, &out->u.filter_initialization_configuration, err);
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE:
+        return mip_filter_initialization_configuration_response_decode(
+            data, len, &out->u.filter_initialization_configuration_response, err);
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL:
+        return mip_filter_adaptive_filter_control_decode(data, len, &out->u.filter_adaptive_filter_control,
+                                                         err);
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE:
+        return mip_filter_adaptive_filter_control_response_decode(
+            data, len, &out->u.filter_adaptive_filter_control_response, err);
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET:
+        return mip_filter_multi_antenna_offset_decode(data, len, &out->u.filter_multi_antenna_offset, err);
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE:
+        return mip_filter_multi_antenna_offset_response_decode(
+            data, len, &out->u.filter_multi_antenna_offset_response, err);
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION:
+        return mip_filter_relative_position_configuration_decode(
+            data, len, &out->u.filter_relative_position_configuration, err);
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE:
+        return mip_filter_relative_position_configuration_response_decode(
+            data, len, &out->u.filter_relative_position_configuration_response, err);
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM:
+        return mip_filter_reference_point_lever_arm_decode(data, len,
+                                                           &out->u.filter_reference_point_lever_arm, err);
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE:
+        return mip_filter_reference_point_lever_arm_response_decode(
+            data, len, &out->u.filter_reference_point_lever_arm_response, err);
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM:
+        return mip_filter_speed_lever_arm_decode(data, len, &out->u.filter_speed_lever_arm, err);
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE:
+        return mip_filter_speed_lever_arm_response_decode(data, len, &out->u.filter_speed_lever_arm_response,
+                                                          err);
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL:
+        return mip_filter_wheeled_vehicle_constraint_control_decode(
+            data, len, &out->u.filter_wheeled_vehicle_constraint_control, err);
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE:
+        return mip_filter_wheeled_vehicle_constraint_control_response_decode(
+            data, len, &out->u.filter_wheeled_vehicle_constraint_control_response, err);
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL:
+        return mip_filter_gnss_antenna_calibration_control_decode(
+            data, len, &out->u.filter_gnss_antenna_calibration_control, err);
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE:
+        return mip_filter_gnss_antenna_calibration_control_response_decode(
+            data, len, &out->u.filter_gnss_antenna_calibration_control_response, err);
     case MIP_FIELD_GNSS_RECEIVER_INFO:
         return mip_gnss_receiver_info_decode(data, len, &out->u.gnss_receiver_info, err);
     case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:
@@ -912,6 +1305,150 @@ mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size
     case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
         return mip_filter_external_heading_update_with_time_encode(
             &value->u.filter_external_heading_update_with_time, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL:
+        return mip_filter_zero_angular_rate_update_control_encode(
+            &value->u.filter_zero_angular_rate_update_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE:
+        return mip_filter_zero_angular_rate_update_control_response_encode(
+            &value->u.filter_zero_angular_rate_update_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_TARE_ORIENTATION:
+        return mip_filter_tare_orientation_encode(&value->u.filter_tare_orientation, buf, cap, len_out);
+    case MIP_FIELD_FILTER_COMMANDED_ZUPT:
+        return mip_filter_commanded_zupt_encode(&value->u.filter_commanded_zupt, buf, cap, len_out);
+    case MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE:
+        return mip_filter_commanded_zero_angular_rate_update_encode(
+            &value->u.filter_commanded_zero_angular_rate_update, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION:
+        return mip_filter_mag_capture_auto_calibration_encode(&value->u.filter_mag_capture_auto_calibration,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV:
+        return mip_filter_gravity_noise_std_dev_encode(&value->u.filter_gravity_noise_std_dev, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_gravity_noise_std_dev_response_encode(
+            &value->u.filter_gravity_noise_std_dev_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV:
+        return mip_filter_pressure_altitude_noise_std_dev_encode(
+            &value->u.filter_pressure_altitude_noise_std_dev, buf, cap, len_out);
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_pressure_altitude_noise_std_dev_response_encode(
+            &value->u.filter_pressure_altitude_noise_std_dev_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE:
+        return mip_filter_hard_iron_offset_noise_encode(&value->u.filter_hard_iron_offset_noise, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE:
+        return mip_filter_hard_iron_offset_noise_response_encode(
+            &value->u.filter_hard_iron_offset_noise_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE:
+        return mip_filter_soft_iron_matrix_noise_encode(&value->u.filter_soft_iron_matrix_noise, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE:
+        return mip_filter_soft_iron_matrix_noise_response_encode(
+            &value->u.filter_soft_iron_matrix_noise_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV:
+        return mip_filter_mag_noise_std_dev_encode(&value->u.filter_mag_noise_std_dev, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_mag_noise_std_dev_response_encode(&value->u.filter_mag_noise_std_dev_response, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE:
+        return mip_filter_declination_source_encode(&value->u.filter_declination_source, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE:
+        return mip_filter_declination_source_response_encode(&value->u.filter_declination_source_response,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_gravity_magnitude_adaptive_measurement_encode(
+            &value->u.filter_gravity_magnitude_adaptive_measurement, buf, cap, len_out);
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_gravity_magnitude_adaptive_measurement_response_encode(
+            &value->u.filter_gravity_magnitude_adaptive_measurement_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_mag_magnitude_adaptive_measurement_encode(
+            &value->u.filter_mag_magnitude_adaptive_measurement, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_mag_magnitude_adaptive_measurement_response_encode(
+            &value->u.filter_mag_magnitude_adaptive_measurement_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_mag_dip_angle_adaptive_measurement_encode(
+            &value->u.filter_mag_dip_angle_adaptive_measurement, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_mag_dip_angle_adaptive_measurement_response_encode(
+            &value->u.filter_mag_dip_angle_adaptive_measurement_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL:
+        return mip_filter_altitude_aiding_control_encode(&value->u.filter_altitude_aiding_control, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE:
+        return mip_filter_altitude_aiding_control_response_encode(
+            &value->u.filter_altitude_aiding_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL:
+        return mip_filter_pitch_roll_aiding_control_encode(&value->u.filter_pitch_roll_aiding_control, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE:
+        return mip_filter_pitch_roll_aiding_control_response_encode(
+            &value->u.filter_pitch_roll_aiding_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE:
+        return mip_filter_inclination_source_encode(&value->u.filter_inclination_source, buf, cap, len_out);
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE:
+        return mip_filter_inclination_source_response_encode(&value->u.filter_inclination_source_response,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE:
+        return mip_filter_magnetic_field_magnitude_source_encode(
+            &value->u.filter_magnetic_field_magnitude_source, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE:
+        return mip_filter_magnetic_field_magnitude_source_response_encode(
+            &value->u.filter_magnetic_field_magnitude_source_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL:
+        return mip_filter_aiding_measurement_control_encode(&value->u.filter_aiding_measurement_control, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE:
+        return mip_filter_aiding_measurement_control_response_encode(
+            &value->u.filter_aiding_measurement_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION:
+        return mip_filter_initialization_configuration_encode(&value->u.filter_initialization_configuration,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE:
+        return mip_filter_initialization_configuration_response_encode(
+            &value->u.filter_initialization_configuration_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL:
+        return mip_filter_adaptive_filter_control_encode(&value->u.filter_adaptive_filter_control, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE:
+        return mip_filter_adaptive_filter_control_response_encode(
+            &value->u.filter_adaptive_filter_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET:
+        return mip_filter_multi_antenna_offset_encode(&value->u.filter_multi_antenna_offset, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE:
+        return mip_filter_multi_antenna_offset_response_encode(&value->u.filter_multi_antenna_offset_response,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION:
+        return mip_filter_relative_position_configuration_encode(
+            &value->u.filter_relative_position_configuration, buf, cap, len_out);
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE:
+        return mip_filter_relative_position_configuration_response_encode(
+            &value->u.filter_relative_position_configuration_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM:
+        return mip_filter_reference_point_lever_arm_encode(&value->u.filter_reference_point_lever_arm, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE:
+        return mip_filter_reference_point_lever_arm_response_encode(
+            &value->u.filter_reference_point_lever_arm_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM:
+        return mip_filter_speed_lever_arm_encode(&value->u.filter_speed_lever_arm, buf, cap, len_out);
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE:
+        return mip_filter_speed_lever_arm_response_encode(&value->u.filter_speed_lever_arm_response, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL:
+        return mip_filter_wheeled_vehicle_constraint_control_encode(
+            &value->u.filter_wheeled_vehicle_constraint_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE:
+        return mip_filter_wheeled_vehicle_constraint_control_response_encode(
+            &value->u.filter_wheeled_vehicle_constraint_control_response, buf, cap, len_out);
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL:
+        return mip_filter_gnss_antenna_calibration_control_encode(
+            &value->u.filter_gnss_antenna_calibration_control, buf, cap, len_out);
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE:
+        return mip_filter_gnss_antenna_calibration_control_response_encode(
+            &value->u.filter_gnss_antenna_calibration_control_response, buf, cap, len_out);
     case MIP_FIELD_GNSS_RECEIVER_INFO:
         return mip_gnss_receiver_info_encode(&value->u.gnss_receiver_info, buf, cap, len_out);
     case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:
@@ -1175,6 +1712,183 @@ void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
         mip_filter_external_heading_update_with_time_to_json(
             w, &value->u.filter_external_heading_update_with_time);
         return;
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL:
+        mip_filter_zero_angular_rate_update_control_to_json(
+            w, &value->u.filter_zero_angular_rate_update_control);
+        return;
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE:
+        mip_filter_zero_angular_rate_update_control_response_to_json(
+            w, &value->u.filter_zero_angular_rate_update_control_response);
+        return;
+    case MIP_FIELD_FILTER_TARE_ORIENTATION:
+        mip_filter_tare_orientation_to_json(w, &value->u.filter_tare_orientation);
+        return;
+    case MIP_FIELD_FILTER_COMMANDED_ZUPT:
+        mip_filter_commanded_zupt_to_json(w, &value->u.filter_commanded_zupt);
+        return;
+    case MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE:
+        mip_filter_commanded_zero_angular_rate_update_to_json(
+            w, &value->u.filter_commanded_zero_angular_rate_update);
+        return;
+    case MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION:
+        mip_filter_mag_capture_auto_calibration_to_json(w, &value->u.filter_mag_capture_auto_calibration);
+        return;
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV:
+        mip_filter_gravity_noise_std_dev_to_json(w, &value->u.filter_gravity_noise_std_dev);
+        return;
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE:
+        mip_filter_gravity_noise_std_dev_response_to_json(w, &value->u.filter_gravity_noise_std_dev_response);
+        return;
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV:
+        mip_filter_pressure_altitude_noise_std_dev_to_json(w,
+                                                           &value->u.filter_pressure_altitude_noise_std_dev);
+        return;
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE:
+        mip_filter_pressure_altitude_noise_std_dev_response_to_json(
+            w, &value->u.filter_pressure_altitude_noise_std_dev_response);
+        return;
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE:
+        mip_filter_hard_iron_offset_noise_to_json(w, &value->u.filter_hard_iron_offset_noise);
+        return;
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE:
+        mip_filter_hard_iron_offset_noise_response_to_json(w,
+                                                           &value->u.filter_hard_iron_offset_noise_response);
+        return;
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE:
+        mip_filter_soft_iron_matrix_noise_to_json(w, &value->u.filter_soft_iron_matrix_noise);
+        return;
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE:
+        mip_filter_soft_iron_matrix_noise_response_to_json(w,
+                                                           &value->u.filter_soft_iron_matrix_noise_response);
+        return;
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV:
+        mip_filter_mag_noise_std_dev_to_json(w, &value->u.filter_mag_noise_std_dev);
+        return;
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE:
+        mip_filter_mag_noise_std_dev_response_to_json(w, &value->u.filter_mag_noise_std_dev_response);
+        return;
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE:
+        mip_filter_declination_source_to_json(w, &value->u.filter_declination_source);
+        return;
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE:
+        mip_filter_declination_source_response_to_json(w, &value->u.filter_declination_source_response);
+        return;
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        mip_filter_gravity_magnitude_adaptive_measurement_to_json(
+            w, &value->u.filter_gravity_magnitude_adaptive_measurement);
+        return;
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        mip_filter_gravity_magnitude_adaptive_measurement_response_to_json(
+            w, &value->u.filter_gravity_magnitude_adaptive_measurement_response);
+        return;
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        mip_filter_mag_magnitude_adaptive_measurement_to_json(
+            w, &value->u.filter_mag_magnitude_adaptive_measurement);
+        return;
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        mip_filter_mag_magnitude_adaptive_measurement_response_to_json(
+            w, &value->u.filter_mag_magnitude_adaptive_measurement_response);
+        return;
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT:
+        mip_filter_mag_dip_angle_adaptive_measurement_to_json(
+            w, &value->u.filter_mag_dip_angle_adaptive_measurement);
+        return;
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        mip_filter_mag_dip_angle_adaptive_measurement_response_to_json(
+            w, &value->u.filter_mag_dip_angle_adaptive_measurement_response);
+        return;
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL:
+        mip_filter_altitude_aiding_control_to_json(w, &value->u.filter_altitude_aiding_control);
+        return;
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE:
+        mip_filter_altitude_aiding_control_response_to_json(
+            w, &value->u.filter_altitude_aiding_control_response);
+        return;
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL:
+        mip_filter_pitch_roll_aiding_control_to_json(w, &value->u.filter_pitch_roll_aiding_control);
+        return;
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE:
+        mip_filter_pitch_roll_aiding_control_response_to_json(
+            w, &value->u.filter_pitch_roll_aiding_control_response);
+        return;
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE:
+        mip_filter_inclination_source_to_json(w, &value->u.filter_inclination_source);
+        return;
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE:
+        mip_filter_inclination_source_response_to_json(w, &value->u.filter_inclination_source_response);
+        return;
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE:
+        mip_filter_magnetic_field_magnitude_source_to_json(w,
+                                                           &value->u.filter_magnetic_field_magnitude_source);
+        return;
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE:
+        mip_filter_magnetic_field_magnitude_source_response_to_json(
+            w, &value->u.filter_magnetic_field_magnitude_source_response);
+        return;
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL:
+        mip_filter_aiding_measurement_control_to_json(w, &value->u.filter_aiding_measurement_control);
+        return;
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE:
+        mip_filter_aiding_measurement_control_response_to_json(
+            w, &value->u.filter_aiding_measurement_control_response);
+        return;
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION:
+        mip_filter_initialization_configuration_to_json(w, &value->u.filter_initialization_configuration);
+        return;
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE:
+        mip_filter_initialization_configuration_response_to_json(
+            w, &value->u.filter_initialization_configuration_response);
+        return;
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL:
+        mip_filter_adaptive_filter_control_to_json(w, &value->u.filter_adaptive_filter_control);
+        return;
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE:
+        mip_filter_adaptive_filter_control_response_to_json(
+            w, &value->u.filter_adaptive_filter_control_response);
+        return;
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET:
+        mip_filter_multi_antenna_offset_to_json(w, &value->u.filter_multi_antenna_offset);
+        return;
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE:
+        mip_filter_multi_antenna_offset_response_to_json(w, &value->u.filter_multi_antenna_offset_response);
+        return;
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION:
+        mip_filter_relative_position_configuration_to_json(w,
+                                                           &value->u.filter_relative_position_configuration);
+        return;
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE:
+        mip_filter_relative_position_configuration_response_to_json(
+            w, &value->u.filter_relative_position_configuration_response);
+        return;
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM:
+        mip_filter_reference_point_lever_arm_to_json(w, &value->u.filter_reference_point_lever_arm);
+        return;
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE:
+        mip_filter_reference_point_lever_arm_response_to_json(
+            w, &value->u.filter_reference_point_lever_arm_response);
+        return;
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM:
+        mip_filter_speed_lever_arm_to_json(w, &value->u.filter_speed_lever_arm);
+        return;
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE:
+        mip_filter_speed_lever_arm_response_to_json(w, &value->u.filter_speed_lever_arm_response);
+        return;
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL:
+        mip_filter_wheeled_vehicle_constraint_control_to_json(
+            w, &value->u.filter_wheeled_vehicle_constraint_control);
+        return;
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE:
+        mip_filter_wheeled_vehicle_constraint_control_response_to_json(
+            w, &value->u.filter_wheeled_vehicle_constraint_control_response);
+        return;
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL:
+        mip_filter_gnss_antenna_calibration_control_to_json(
+            w, &value->u.filter_gnss_antenna_calibration_control);
+        return;
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE:
+        mip_filter_gnss_antenna_calibration_control_response_to_json(
+            w, &value->u.filter_gnss_antenna_calibration_control_response);
+        return;
     case MIP_FIELD_GNSS_RECEIVER_INFO:
         mip_gnss_receiver_info_to_json(w, &value->u.gnss_receiver_info);
         return;
@@ -1409,6 +2123,146 @@ int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_v
     case MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME:
         return mip_filter_external_heading_update_with_time_from_json(
             jr, pos, &value->u.filter_external_heading_update_with_time);
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL:
+        return mip_filter_zero_angular_rate_update_control_from_json(
+            jr, pos, &value->u.filter_zero_angular_rate_update_control);
+    case MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE:
+        return mip_filter_zero_angular_rate_update_control_response_from_json(
+            jr, pos, &value->u.filter_zero_angular_rate_update_control_response);
+    case MIP_FIELD_FILTER_TARE_ORIENTATION:
+        return mip_filter_tare_orientation_from_json(jr, pos, &value->u.filter_tare_orientation);
+    case MIP_FIELD_FILTER_COMMANDED_ZUPT:
+        return mip_filter_commanded_zupt_from_json(jr, pos, &value->u.filter_commanded_zupt);
+    case MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE:
+        return mip_filter_commanded_zero_angular_rate_update_from_json(
+            jr, pos, &value->u.filter_commanded_zero_angular_rate_update);
+    case MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION:
+        return mip_filter_mag_capture_auto_calibration_from_json(
+            jr, pos, &value->u.filter_mag_capture_auto_calibration);
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV:
+        return mip_filter_gravity_noise_std_dev_from_json(jr, pos, &value->u.filter_gravity_noise_std_dev);
+    case MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_gravity_noise_std_dev_response_from_json(
+            jr, pos, &value->u.filter_gravity_noise_std_dev_response);
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV:
+        return mip_filter_pressure_altitude_noise_std_dev_from_json(
+            jr, pos, &value->u.filter_pressure_altitude_noise_std_dev);
+    case MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_pressure_altitude_noise_std_dev_response_from_json(
+            jr, pos, &value->u.filter_pressure_altitude_noise_std_dev_response);
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE:
+        return mip_filter_hard_iron_offset_noise_from_json(jr, pos, &value->u.filter_hard_iron_offset_noise);
+    case MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE:
+        return mip_filter_hard_iron_offset_noise_response_from_json(
+            jr, pos, &value->u.filter_hard_iron_offset_noise_response);
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE:
+        return mip_filter_soft_iron_matrix_noise_from_json(jr, pos, &value->u.filter_soft_iron_matrix_noise);
+    case MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE:
+        return mip_filter_soft_iron_matrix_noise_response_from_json(
+            jr, pos, &value->u.filter_soft_iron_matrix_noise_response);
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV:
+        return mip_filter_mag_noise_std_dev_from_json(jr, pos, &value->u.filter_mag_noise_std_dev);
+    case MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE:
+        return mip_filter_mag_noise_std_dev_response_from_json(jr, pos,
+                                                               &value->u.filter_mag_noise_std_dev_response);
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE:
+        return mip_filter_declination_source_from_json(jr, pos, &value->u.filter_declination_source);
+    case MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE:
+        return mip_filter_declination_source_response_from_json(jr, pos,
+                                                                &value->u.filter_declination_source_response);
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_gravity_magnitude_adaptive_measurement_from_json(
+            jr, pos, &value->u.filter_gravity_magnitude_adaptive_measurement);
+    case MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_gravity_magnitude_adaptive_measurement_response_from_json(
+            jr, pos, &value->u.filter_gravity_magnitude_adaptive_measurement_response);
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_mag_magnitude_adaptive_measurement_from_json(
+            jr, pos, &value->u.filter_mag_magnitude_adaptive_measurement);
+    case MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_mag_magnitude_adaptive_measurement_response_from_json(
+            jr, pos, &value->u.filter_mag_magnitude_adaptive_measurement_response);
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT:
+        return mip_filter_mag_dip_angle_adaptive_measurement_from_json(
+            jr, pos, &value->u.filter_mag_dip_angle_adaptive_measurement);
+    case MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE:
+        return mip_filter_mag_dip_angle_adaptive_measurement_response_from_json(
+            jr, pos, &value->u.filter_mag_dip_angle_adaptive_measurement_response);
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL:
+        return mip_filter_altitude_aiding_control_from_json(jr, pos,
+                                                            &value->u.filter_altitude_aiding_control);
+    case MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE:
+        return mip_filter_altitude_aiding_control_response_from_json(
+            jr, pos, &value->u.filter_altitude_aiding_control_response);
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL:
+        return mip_filter_pitch_roll_aiding_control_from_json(jr, pos,
+                                                              &value->u.filter_pitch_roll_aiding_control);
+    case MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE:
+        return mip_filter_pitch_roll_aiding_control_response_from_json(
+            jr, pos, &value->u.filter_pitch_roll_aiding_control_response);
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE:
+        return mip_filter_inclination_source_from_json(jr, pos, &value->u.filter_inclination_source);
+    case MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE:
+        return mip_filter_inclination_source_response_from_json(jr, pos,
+                                                                &value->u.filter_inclination_source_response);
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE:
+        return mip_filter_magnetic_field_magnitude_source_from_json(
+            jr, pos, &value->u.filter_magnetic_field_magnitude_source);
+    case MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE:
+        return mip_filter_magnetic_field_magnitude_source_response_from_json(
+            jr, pos, &value->u.filter_magnetic_field_magnitude_source_response);
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL:
+        return mip_filter_aiding_measurement_control_from_json(jr, pos,
+                                                               &value->u.filter_aiding_measurement_control);
+    case MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE:
+        return mip_filter_aiding_measurement_control_response_from_json(
+            jr, pos, &value->u.filter_aiding_measurement_control_response);
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION:
+        return mip_filter_initialization_configuration_from_json(
+            jr, pos, &value->u.filter_initialization_configuration);
+    case MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE:
+        return mip_filter_initialization_configuration_response_from_json(
+            jr, pos, &value->u.filter_initialization_configuration_response);
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL:
+        return mip_filter_adaptive_filter_control_from_json(jr, pos,
+                                                            &value->u.filter_adaptive_filter_control);
+    case MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE:
+        return mip_filter_adaptive_filter_control_response_from_json(
+            jr, pos, &value->u.filter_adaptive_filter_control_response);
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET:
+        return mip_filter_multi_antenna_offset_from_json(jr, pos, &value->u.filter_multi_antenna_offset);
+    case MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE:
+        return mip_filter_multi_antenna_offset_response_from_json(
+            jr, pos, &value->u.filter_multi_antenna_offset_response);
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION:
+        return mip_filter_relative_position_configuration_from_json(
+            jr, pos, &value->u.filter_relative_position_configuration);
+    case MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE:
+        return mip_filter_relative_position_configuration_response_from_json(
+            jr, pos, &value->u.filter_relative_position_configuration_response);
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM:
+        return mip_filter_reference_point_lever_arm_from_json(jr, pos,
+                                                              &value->u.filter_reference_point_lever_arm);
+    case MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE:
+        return mip_filter_reference_point_lever_arm_response_from_json(
+            jr, pos, &value->u.filter_reference_point_lever_arm_response);
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM:
+        return mip_filter_speed_lever_arm_from_json(jr, pos, &value->u.filter_speed_lever_arm);
+    case MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE:
+        return mip_filter_speed_lever_arm_response_from_json(jr, pos,
+                                                             &value->u.filter_speed_lever_arm_response);
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL:
+        return mip_filter_wheeled_vehicle_constraint_control_from_json(
+            jr, pos, &value->u.filter_wheeled_vehicle_constraint_control);
+    case MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE:
+        return mip_filter_wheeled_vehicle_constraint_control_response_from_json(
+            jr, pos, &value->u.filter_wheeled_vehicle_constraint_control_response);
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL:
+        return mip_filter_gnss_antenna_calibration_control_from_json(
+            jr, pos, &value->u.filter_gnss_antenna_calibration_control);
+    case MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE:
+        return mip_filter_gnss_antenna_calibration_control_response_from_json(
+            jr, pos, &value->u.filter_gnss_antenna_calibration_control_response);
     case MIP_FIELD_GNSS_RECEIVER_INFO:
         return mip_gnss_receiver_info_from_json(jr, pos, &value->u.gnss_receiver_info);
     case MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE:

@@ -190,6 +190,188 @@ void mip_filter_external_heading_update_with_time_to_json(
     mip_jw_t *w, const mip_filter_external_heading_update_with_time_t *in);
 int mip_filter_external_heading_update_with_time_from_json(
     mip_jr_t *jr, size_t pos, mip_filter_external_heading_update_with_time_t *out);
+void mip_filter_zero_angular_rate_update_control_to_json(
+    mip_jw_t *w, const mip_filter_zero_angular_rate_update_control_t *in);
+int mip_filter_zero_angular_rate_update_control_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_filter_zero_angular_rate_update_control_t *out);
+void mip_filter_zero_angular_rate_update_control_response_to_json(
+    mip_jw_t *w, const mip_filter_zero_angular_rate_update_control_response_t *in);
+int mip_filter_zero_angular_rate_update_control_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_zero_angular_rate_update_control_response_t *out);
+void mip_filter_tare_orientation_to_json(mip_jw_t *w, const mip_filter_tare_orientation_t *in);
+int mip_filter_tare_orientation_from_json(mip_jr_t *jr, size_t pos, mip_filter_tare_orientation_t *out);
+void mip_filter_commanded_zupt_to_json(mip_jw_t *w, const mip_filter_commanded_zupt_t *in);
+int mip_filter_commanded_zupt_from_json(mip_jr_t *jr, size_t pos, mip_filter_commanded_zupt_t *out);
+void mip_filter_commanded_zero_angular_rate_update_to_json(
+    mip_jw_t *w, const mip_filter_commanded_zero_angular_rate_update_t *in);
+int mip_filter_commanded_zero_angular_rate_update_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_commanded_zero_angular_rate_update_t *out);
+void mip_filter_mag_capture_auto_calibration_to_json(mip_jw_t *w,
+                                                     const mip_filter_mag_capture_auto_calibration_t *in);
+int mip_filter_mag_capture_auto_calibration_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_filter_mag_capture_auto_calibration_t *out);
+void mip_filter_gravity_noise_std_dev_to_json(mip_jw_t *w, const mip_filter_gravity_noise_std_dev_t *in);
+int mip_filter_gravity_noise_std_dev_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_filter_gravity_noise_std_dev_t *out);
+void mip_filter_gravity_noise_std_dev_response_to_json(mip_jw_t *w,
+                                                       const mip_filter_gravity_noise_std_dev_response_t *in);
+int mip_filter_gravity_noise_std_dev_response_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_gravity_noise_std_dev_response_t *out);
+void mip_filter_pressure_altitude_noise_std_dev_to_json(
+    mip_jw_t *w, const mip_filter_pressure_altitude_noise_std_dev_t *in);
+int mip_filter_pressure_altitude_noise_std_dev_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_pressure_altitude_noise_std_dev_t *out);
+void mip_filter_pressure_altitude_noise_std_dev_response_to_json(
+    mip_jw_t *w, const mip_filter_pressure_altitude_noise_std_dev_response_t *in);
+int mip_filter_pressure_altitude_noise_std_dev_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_pressure_altitude_noise_std_dev_response_t *out);
+void mip_filter_hard_iron_offset_noise_to_json(mip_jw_t *w, const mip_filter_hard_iron_offset_noise_t *in);
+int mip_filter_hard_iron_offset_noise_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_hard_iron_offset_noise_t *out);
+void mip_filter_hard_iron_offset_noise_response_to_json(
+    mip_jw_t *w, const mip_filter_hard_iron_offset_noise_response_t *in);
+int mip_filter_hard_iron_offset_noise_response_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_hard_iron_offset_noise_response_t *out);
+void mip_filter_soft_iron_matrix_noise_to_json(mip_jw_t *w, const mip_filter_soft_iron_matrix_noise_t *in);
+int mip_filter_soft_iron_matrix_noise_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_soft_iron_matrix_noise_t *out);
+void mip_filter_soft_iron_matrix_noise_response_to_json(
+    mip_jw_t *w, const mip_filter_soft_iron_matrix_noise_response_t *in);
+int mip_filter_soft_iron_matrix_noise_response_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_soft_iron_matrix_noise_response_t *out);
+void mip_filter_mag_noise_std_dev_to_json(mip_jw_t *w, const mip_filter_mag_noise_std_dev_t *in);
+int mip_filter_mag_noise_std_dev_from_json(mip_jr_t *jr, size_t pos, mip_filter_mag_noise_std_dev_t *out);
+void mip_filter_mag_noise_std_dev_response_to_json(mip_jw_t *w,
+                                                   const mip_filter_mag_noise_std_dev_response_t *in);
+int mip_filter_mag_noise_std_dev_response_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_filter_mag_noise_std_dev_response_t *out);
+void mip_filter_declination_source_to_json(mip_jw_t *w, const mip_filter_declination_source_t *in);
+int mip_filter_declination_source_from_json(mip_jr_t *jr, size_t pos, mip_filter_declination_source_t *out);
+void mip_filter_declination_source_response_to_json(mip_jw_t *w,
+                                                    const mip_filter_declination_source_response_t *in);
+int mip_filter_declination_source_response_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_filter_declination_source_response_t *out);
+void mip_filter_gravity_magnitude_adaptive_measurement_to_json(
+    mip_jw_t *w, const mip_filter_gravity_magnitude_adaptive_measurement_t *in);
+int mip_filter_gravity_magnitude_adaptive_measurement_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_gravity_magnitude_adaptive_measurement_t *out);
+void mip_filter_gravity_magnitude_adaptive_measurement_response_to_json(
+    mip_jw_t *w, const mip_filter_gravity_magnitude_adaptive_measurement_response_t *in);
+int mip_filter_gravity_magnitude_adaptive_measurement_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out);
+void mip_filter_mag_magnitude_adaptive_measurement_to_json(
+    mip_jw_t *w, const mip_filter_mag_magnitude_adaptive_measurement_t *in);
+int mip_filter_mag_magnitude_adaptive_measurement_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_mag_magnitude_adaptive_measurement_t *out);
+void mip_filter_mag_magnitude_adaptive_measurement_response_to_json(
+    mip_jw_t *w, const mip_filter_mag_magnitude_adaptive_measurement_response_t *in);
+int mip_filter_mag_magnitude_adaptive_measurement_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_mag_magnitude_adaptive_measurement_response_t *out);
+void mip_filter_mag_dip_angle_adaptive_measurement_to_json(
+    mip_jw_t *w, const mip_filter_mag_dip_angle_adaptive_measurement_t *in);
+int mip_filter_mag_dip_angle_adaptive_measurement_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_mag_dip_angle_adaptive_measurement_t *out);
+void mip_filter_mag_dip_angle_adaptive_measurement_response_to_json(
+    mip_jw_t *w, const mip_filter_mag_dip_angle_adaptive_measurement_response_t *in);
+int mip_filter_mag_dip_angle_adaptive_measurement_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out);
+void mip_filter_altitude_aiding_control_to_json(mip_jw_t *w, const mip_filter_altitude_aiding_control_t *in);
+int mip_filter_altitude_aiding_control_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_filter_altitude_aiding_control_t *out);
+void mip_filter_altitude_aiding_control_response_to_json(
+    mip_jw_t *w, const mip_filter_altitude_aiding_control_response_t *in);
+int mip_filter_altitude_aiding_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_filter_altitude_aiding_control_response_t *out);
+void mip_filter_pitch_roll_aiding_control_to_json(mip_jw_t *w,
+                                                  const mip_filter_pitch_roll_aiding_control_t *in);
+int mip_filter_pitch_roll_aiding_control_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_filter_pitch_roll_aiding_control_t *out);
+void mip_filter_pitch_roll_aiding_control_response_to_json(
+    mip_jw_t *w, const mip_filter_pitch_roll_aiding_control_response_t *in);
+int mip_filter_pitch_roll_aiding_control_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_pitch_roll_aiding_control_response_t *out);
+void mip_filter_inclination_source_to_json(mip_jw_t *w, const mip_filter_inclination_source_t *in);
+int mip_filter_inclination_source_from_json(mip_jr_t *jr, size_t pos, mip_filter_inclination_source_t *out);
+void mip_filter_inclination_source_response_to_json(mip_jw_t *w,
+                                                    const mip_filter_inclination_source_response_t *in);
+int mip_filter_inclination_source_response_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_filter_inclination_source_response_t *out);
+void mip_filter_magnetic_field_magnitude_source_to_json(
+    mip_jw_t *w, const mip_filter_magnetic_field_magnitude_source_t *in);
+int mip_filter_magnetic_field_magnitude_source_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_magnetic_field_magnitude_source_t *out);
+void mip_filter_magnetic_field_magnitude_source_response_to_json(
+    mip_jw_t *w, const mip_filter_magnetic_field_magnitude_source_response_t *in);
+int mip_filter_magnetic_field_magnitude_source_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_magnetic_field_magnitude_source_response_t *out);
+void mip_filter_aiding_measurement_control_to_json(mip_jw_t *w,
+                                                   const mip_filter_aiding_measurement_control_t *in);
+int mip_filter_aiding_measurement_control_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_filter_aiding_measurement_control_t *out);
+void mip_filter_aiding_measurement_control_response_to_json(
+    mip_jw_t *w, const mip_filter_aiding_measurement_control_response_t *in);
+int mip_filter_aiding_measurement_control_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_aiding_measurement_control_response_t *out);
+void mip_filter_initialization_configuration_to_json(mip_jw_t *w,
+                                                     const mip_filter_initialization_configuration_t *in);
+int mip_filter_initialization_configuration_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_filter_initialization_configuration_t *out);
+void mip_filter_initialization_configuration_response_to_json(
+    mip_jw_t *w, const mip_filter_initialization_configuration_response_t *in);
+int mip_filter_initialization_configuration_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_initialization_configuration_response_t *out);
+void mip_filter_adaptive_filter_control_to_json(mip_jw_t *w, const mip_filter_adaptive_filter_control_t *in);
+int mip_filter_adaptive_filter_control_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_filter_adaptive_filter_control_t *out);
+void mip_filter_adaptive_filter_control_response_to_json(
+    mip_jw_t *w, const mip_filter_adaptive_filter_control_response_t *in);
+int mip_filter_adaptive_filter_control_response_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_filter_adaptive_filter_control_response_t *out);
+void mip_filter_multi_antenna_offset_to_json(mip_jw_t *w, const mip_filter_multi_antenna_offset_t *in);
+int mip_filter_multi_antenna_offset_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_filter_multi_antenna_offset_t *out);
+void mip_filter_multi_antenna_offset_response_to_json(mip_jw_t *w,
+                                                      const mip_filter_multi_antenna_offset_response_t *in);
+int mip_filter_multi_antenna_offset_response_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_filter_multi_antenna_offset_response_t *out);
+void mip_filter_relative_position_configuration_to_json(
+    mip_jw_t *w, const mip_filter_relative_position_configuration_t *in);
+int mip_filter_relative_position_configuration_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_relative_position_configuration_t *out);
+void mip_filter_relative_position_configuration_response_to_json(
+    mip_jw_t *w, const mip_filter_relative_position_configuration_response_t *in);
+int mip_filter_relative_position_configuration_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_relative_position_configuration_response_t *out);
+void mip_filter_reference_point_lever_arm_to_json(mip_jw_t *w,
+                                                  const mip_filter_reference_point_lever_arm_t *in);
+int mip_filter_reference_point_lever_arm_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_filter_reference_point_lever_arm_t *out);
+void mip_filter_reference_point_lever_arm_response_to_json(
+    mip_jw_t *w, const mip_filter_reference_point_lever_arm_response_t *in);
+int mip_filter_reference_point_lever_arm_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_reference_point_lever_arm_response_t *out);
+void mip_filter_speed_lever_arm_to_json(mip_jw_t *w, const mip_filter_speed_lever_arm_t *in);
+int mip_filter_speed_lever_arm_from_json(mip_jr_t *jr, size_t pos, mip_filter_speed_lever_arm_t *out);
+void mip_filter_speed_lever_arm_response_to_json(mip_jw_t *w,
+                                                 const mip_filter_speed_lever_arm_response_t *in);
+int mip_filter_speed_lever_arm_response_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_filter_speed_lever_arm_response_t *out);
+void mip_filter_wheeled_vehicle_constraint_control_to_json(
+    mip_jw_t *w, const mip_filter_wheeled_vehicle_constraint_control_t *in);
+int mip_filter_wheeled_vehicle_constraint_control_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_wheeled_vehicle_constraint_control_t *out);
+void mip_filter_wheeled_vehicle_constraint_control_response_to_json(
+    mip_jw_t *w, const mip_filter_wheeled_vehicle_constraint_control_response_t *in);
+int mip_filter_wheeled_vehicle_constraint_control_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_wheeled_vehicle_constraint_control_response_t *out);
+void mip_filter_gnss_antenna_calibration_control_to_json(
+    mip_jw_t *w, const mip_filter_gnss_antenna_calibration_control_t *in);
+int mip_filter_gnss_antenna_calibration_control_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_filter_gnss_antenna_calibration_control_t *out);
+void mip_filter_gnss_antenna_calibration_control_response_to_json(
+    mip_jw_t *w, const mip_filter_gnss_antenna_calibration_control_response_t *in);
+int mip_filter_gnss_antenna_calibration_control_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_gnss_antenna_calibration_control_response_t *out);
 void mip_gnss_receiver_info_to_json(mip_jw_t *w, const mip_gnss_receiver_info_t *in);
 int mip_gnss_receiver_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_info_t *out);
 void mip_gnss_receiver_info_response_to_json(mip_jw_t *w, const mip_gnss_receiver_info_response_t *in);

@@ -1285,6 +1285,652 @@ TEST(Vectors, external_heading_update_with_time_cv7) {
                  "uncertainty\":0.05000000074505806,\"type\":2}}]}\n");
 }
 
+TEST(Vectors, pitch_roll_aiding_control_write) {
+    check_vector("75650d04044b01013cc1", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":75,\"name\":\"pitch_roll_aiding_"
+                 "control\",\"values\":{\"function\":1,\"source\":1}}]}\n");
+}
+
+TEST(Vectors, pitch_roll_aiding_control_ack_published) {
+    check_vector("75650d0404f14700b9f0", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f14700b9f0\"}\n");
+}
+
+TEST(Vectors, pitch_roll_aiding_control_ack) {
+    check_vector("75650d0404f14b002b46", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":75,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, pitch_roll_aiding_control_read) {
+    check_vector("75650d03034b023a7f", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":75,\"name\":\"pitch_roll_aiding_"
+                 "control\",\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, pitch_roll_aiding_control_read_reply) {
+    check_vector("75650d0704f14b0003bb00ec5e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":75,\"ack_code\":0}},{\"descriptor\":187,\"name\":\"pitch_roll_"
+                 "aiding_control_response\",\"values\":{\"source\":0}}]}\n");
+}
+
+TEST(Vectors, altitude_aiding_control_write) {
+    check_vector("75650d040447010138b5", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":71,\"name\":\"altitude_aiding_"
+                 "control\",\"values\":{\"function\":1,\"source\":1}}]}\n");
+}
+
+TEST(Vectors, altitude_aiding_control_ack) {
+    check_vector("75650d0404f14700273e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":71,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, altitude_aiding_control_read_reply) {
+    check_vector("75650d0704f1470003b701e543", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":71,\"ack_code\":0}},{\"descriptor\":183,\"name\":\"altitude_aiding_"
+                 "control_response\",\"values\":{\"source\":1}}]}\n");
+}
+
+TEST(Vectors, mag_noise_std_dev_write) {
+    check_vector(
+        "75650d0f0f42013ca3d70a3ca3d70a3ca3d70a88d3", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":66,\"name\":\"mag_noise_std_dev\",\"values\":{"
+        "\"function\":1,\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}\n");
+}
+
+TEST(Vectors, mag_noise_std_dev_ack) {
+    check_vector("75650d0404f142002234", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":66,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, mag_noise_std_dev_read_reply) {
+    check_vector("75650d1204f142000eb13ca3d70a3d0000003f0000002b50", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":66,\"ack_code\":0}},{\"descriptor\":177,\"name\":\"mag_noise_std_"
+                 "dev_response\",\"values\":{\"noise\":[0.019999999552965164,0.03125,0.5]}}]}\n");
+}
+
+TEST(Vectors, gravity_noise_std_dev_write) {
+    check_vector("75650d0f0f28013c23d70a3c23d70a3c23d70aeee7", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\","
+                 "\"values\":{\"function\":1,\"noise\":[0.009999999776482582,0.009999999776482582,0."
+                 "009999999776482582]}}]}\n");
+}
+
+TEST(Vectors, gravity_noise_std_dev_ack) {
+    check_vector("75650d0404f128000800", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":40,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, gravity_noise_std_dev_read) {
+    check_vector("75650d030328021739", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\","
+                 "\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, gravity_noise_std_dev_read_reply) {
+    check_vector("75650d1204f128000e933c23d70a3c8000003e800000719e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":147,\"name\":\"gravity_noise_"
+                 "std_dev_response\",\"values\":{\"noise\":[0.009999999776482582,0.015625,0.25]}}]}\n");
+}
+
+TEST(Vectors, gravity_noise_std_dev_load) {
+    check_vector("75650d03032804193b", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\","
+                 "\"values\":{\"function\":4}}]}\n");
+}
+
+TEST(Vectors, pressure_altitude_noise_std_dev_write) {
+    check_vector("75650d070729013f800000de4e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":41,\"name\":\"pressure_altitude_noise_"
+                 "std_dev\",\"values\":{\"function\":1,\"noise\":1.0}}]}\n");
+}
+
+TEST(Vectors, pressure_altitude_noise_std_dev_write_published) {
+    check_vector("75650d050529013f800000de4e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d050529013f800000de4e\"}\n");
+}
+
+TEST(Vectors, pressure_altitude_noise_std_dev_ack) {
+    check_vector("75650d0404f129000902", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":41,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, pressure_altitude_noise_std_dev_ack_published) {
+    check_vector("75650d0404f1290097ac", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f1290097ac\"}\n");
+}
+
+TEST(Vectors, pressure_altitude_noise_std_dev_read_reply) {
+    check_vector("75650d0a04f1290006944020000009e2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":41,\"ack_code\":0}},{\"descriptor\":148,\"name\":\"pressure_"
+                 "altitude_noise_std_dev_response\",\"values\":{\"noise\":2.5}}]}\n");
+}
+
+TEST(Vectors, hard_iron_offset_noise_write) {
+    check_vector("75650d0f0f2b013a83126f3a83126f3a83126febd2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":43,\"name\":\"hard_iron_offset_"
+                 "noise\",\"values\":{\"function\":1,\"noise\":[0.0010000000474974513,0.0010000000474974513,"
+                 "0.0010000000474974513]}}]}\n");
+}
+
+TEST(Vectors, hard_iron_offset_noise_ack) {
+    check_vector("75650d0404f12b000b06", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":43,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, hard_iron_offset_noise_read_reply) {
+    check_vector("75650d1204f12b000e963a83126f3b03126f3b83126ff98c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":43,\"ack_code\":0}},{\"descriptor\":150,\"name\":\"hard_iron_offset_"
+                 "noise_response\",\"values\":{\"noise\":[0.0010000000474974513,0.0020000000949949026,0."
+                 "004000000189989805]}}]}\n");
+}
+
+TEST(Vectors, soft_iron_matrix_noise_write) {
+    check_vector("75650d27272c0138d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b717f18c",
+                 MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":44,\"name\":\"soft_iron_matrix_"
+                 "noise\",\"values\":{\"function\":1,\"noise\":[9.999999747378752e-05,9.999999747378752e-05,"
+                 "9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9."
+                 "999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05]}}]}\n");
+}
+
+TEST(Vectors, soft_iron_matrix_noise_table_published) {
+    check_vector("75650d0f0f2c0138d1b71738d1b71738d1b717f18c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0f0f2c0138d1b71738d1b71738d1b717f18c\"}\n");
+}
+
+TEST(Vectors, soft_iron_matrix_noise_ack) {
+    check_vector("75650d0404f12c000c08", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":44,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, soft_iron_matrix_noise_ack_published) {
+    check_vector("75650d0404f12c009ab2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f12c009ab2\"}\n");
+}
+
+TEST(Vectors, soft_iron_matrix_noise_read_reply) {
+    check_vector(
+        "75650d2a04f12c00269738d1b7170000000000000000000000003951b717000000000000000000000000399d49528fdc",
+        MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":44,\"ack_code\":0}},{\"descriptor\":151,\"name\":\"soft_iron_matrix_noise_"
+        "response\",\"values\":{\"noise\":[9.999999747378752e-05,0.0,0.0,0.0,0.00019999999494757503,0.0,0.0,"
+        "0.0,0.0003000000142492354]}}]}\n");
+}
+
+TEST(Vectors, zero_angular_rate_update_control_write) {
+    check_vector("75650d08082001010000000019c8", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":32,\"name\":\"zero_angular_rate_"
+                 "update_control\",\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.0}}]}\n");
+}
+
+TEST(Vectors, zero_angular_rate_update_control_ack) {
+    check_vector("75650d0404f1200000f0", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":32,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, zero_angular_rate_update_control_read_reply) {
+    check_vector(
+        "75650d0b04f12000078e013d4ccccdbf0b", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":32,\"ack_code\":0}},{\"descriptor\":142,\"name\":\"zero_angular_rate_update_"
+        "control_response\",\"values\":{\"enable\":1,\"threshold\":0.05000000074505806}}]}\n");
+}
+
+TEST(Vectors, zero_angular_rate_update_control_default) {
+    check_vector("75650d03032005122c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":32,\"name\":\"zero_angular_rate_"
+                 "update_control\",\"values\":{\"function\":5}}]}\n");
+}
+
+TEST(Vectors, tare_orientation_write) {
+    check_vector("75650d04042101071849", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\","
+                 "\"values\":{\"function\":1,\"axes\":7}}]}\n");
+}
+
+TEST(Vectors, tare_orientation_ack) {
+    check_vector("75650d0404f1210001f2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":33,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, tare_orientation_reset_all) {
+    check_vector("75650d04042101001142", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\","
+                 "\"values\":{\"function\":1,\"axes\":0}}]}\n");
+}
+
+TEST(Vectors, tare_orientation_save) {
+    check_vector("75650d03032103112c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\","
+                 "\"values\":{\"function\":3}}]}\n");
+}
+
+TEST(Vectors, commanded_zupt) {
+    check_vector("75650d0202220d17", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":34,\"name\":\"commanded_zupt\","
+                 "\"values\":{}}]}\n");
+}
+
+TEST(Vectors, commanded_zupt_ack) {
+    check_vector("75650d0404f1220002f4", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":34,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, commanded_zero_angular_rate_update) {
+    check_vector("75650d0202230e18", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":35,\"name\":\"commanded_zero_angular_"
+                 "rate_update\",\"values\":{}}]}\n");
+}
+
+TEST(Vectors, commanded_zero_angular_rate_update_ack) {
+    check_vector("75650d0404f1230003f6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":35,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, declination_source_write) {
+    check_vector("75650d0808430103000000003ec7", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":67,\"name\":\"declination_source\","
+                 "\"values\":{\"function\":1,\"source\":3,\"declination\":0.0}}]}\n");
+}
+
+TEST(Vectors, declination_source_ack) {
+    check_vector("75650d0404f143002336", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":67,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, declination_source_read_reply) {
+    check_vector("75650d0b04f1430007b202be800000235e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":67,\"ack_code\":0}},{\"descriptor\":178,\"name\":\"declination_"
+                 "source_response\",\"values\":{\"source\":2,\"declination\":-0.25}}]}\n");
+}
+
+TEST(Vectors, declination_source_write_none_cv7) {
+    check_vector("75650d0808430101000000003cbd", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":67,\"name\":\"declination_source\","
+                 "\"values\":{\"function\":1,\"source\":1,\"declination\":0.0}}]}\n");
+}
+
+TEST(Vectors, inclination_source_write) {
+    check_vector("75650d08084c0103000000004706", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":76,\"name\":\"inclination_source\","
+                 "\"values\":{\"function\":1,\"source\":3,\"inclination\":0.0}}]}\n");
+}
+
+TEST(Vectors, inclination_source_ack) {
+    check_vector("75650d0404f14c002c48", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":76,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, inclination_source_read_reply) {
+    check_vector("75650d0b04f14c0007bc033f900000c824", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":76,\"ack_code\":0}},{\"descriptor\":188,\"name\":\"inclination_"
+                 "source_response\",\"values\":{\"source\":3,\"inclination\":1.125}}]}\n");
+}
+
+TEST(Vectors, magnetic_field_magnitude_source_write) {
+    check_vector("75650d08084d01033f0000008709", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":77,\"name\":\"magnetic_field_"
+                 "magnitude_source\",\"values\":{\"function\":1,\"source\":3,\"magnitude\":0.5}}]}\n");
+}
+
+TEST(Vectors, magnetic_field_magnitude_source_ack) {
+    check_vector("75650d0404f14d002d4a", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":77,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, magnetic_field_magnitude_source_read_reply) {
+    check_vector("75650d0b04f14d0007bd013f0000003879", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":77,\"ack_code\":0}},{\"descriptor\":189,\"name\":\"magnetic_field_"
+                 "magnitude_source_response\",\"values\":{\"source\":1,\"magnitude\":0.5}}]}\n");
+}
+
+TEST(Vectors, gravity_magnitude_adaptive_measurement_write) {
+    check_vector(
+        "75650d1c1c4401013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f6fe8", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":68,\"name\":\"gravity_magnitude_adaptive_"
+        "measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":1.0,\"low_limit\":-0."
+        "20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,"
+        "\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.004000000189989805}}]}\n");
+}
+
+TEST(Vectors, gravity_magnitude_adaptive_measurement_ack) {
+    check_vector("75650d0404f144002438", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":68,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, gravity_magnitude_adaptive_measurement_ack_published) {
+    check_vector("75650d0404f14400b2e2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f14400b2e2\"}\n");
+}
+
+TEST(Vectors, gravity_magnitude_adaptive_measurement_auto_only) {
+    check_vector("75650d040444010236ad", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":68,\"name\":\"gravity_magnitude_"
+                 "adaptive_measurement\",\"values\":{\"function\":1,\"mode\":2}}]}\n");
+}
+
+TEST(Vectors, gravity_magnitude_adaptive_measurement_read_reply) {
+    check_vector(
+        "75650d1f04f144001bb3023f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f1989", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":68,\"ack_code\":0}},{\"descriptor\":179,\"name\":\"gravity_magnitude_"
+        "adaptive_measurement_response\",\"values\":{\"mode\":2,\"frequency\":1.0,\"low_limit\":-0."
+        "20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,"
+        "\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.004000000189989805}}]}\n");
+}
+
+TEST(Vectors, mag_magnitude_adaptive_measurement_write) {
+    check_vector(
+        "75650d1c1c4501013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f7003", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":69,\"name\":\"mag_magnitude_adaptive_"
+        "measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":1.0,\"low_limit\":-0."
+        "20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,"
+        "\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.004000000189989805}}]}\n");
+}
+
+TEST(Vectors, mag_magnitude_adaptive_measurement_ack) {
+    check_vector("75650d0404f14500253a", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":69,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, mag_magnitude_adaptive_measurement_ack_published) {
+    check_vector("75650d0404f14500b3e4", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f14500b3e4\"}\n");
+}
+
+TEST(Vectors, mag_magnitude_adaptive_measurement_disable) {
+    check_vector("75650d040445010035ae", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":69,\"name\":\"mag_magnitude_adaptive_"
+                 "measurement\",\"values\":{\"function\":1,\"mode\":0}}]}\n");
+}
+
+TEST(Vectors, mag_magnitude_adaptive_measurement_read_reply) {
+    check_vector("75650d1f04f145001bb401400000003e8000003f4000003e0000003e0000003c23d70a49ac", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":69,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"mag_magnitude_"
+                 "adaptive_measurement_response\",\"values\":{\"mode\":1,\"frequency\":2.0,\"low_limit\":0."
+                 "25,\"high_limit\":0.75,\"low_limit_uncertainty\":0.125,\"high_limit_uncertainty\":0.125,"
+                 "\"minimum_uncertainty\":0.009999999776482582}}]}\n");
+}
+
+TEST(Vectors, mag_dip_angle_adaptive_measurement_write) {
+    check_vector("75650d1414460101412000003e99999a3e4ccccd3c23d70a255f", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":70,\"name\":\"mag_dip_angle_adaptive_"
+                 "measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":10.0,\"high_limit\":0."
+                 "30000001192092896,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0."
+                 "009999999776482582}}]}\n");
+}
+
+TEST(Vectors, mag_dip_angle_adaptive_measurement_ack) {
+    check_vector("75650d0404f14600263c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":70,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, mag_dip_angle_adaptive_measurement_ack_published) {
+    check_vector("75650d0404f14600b4e6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f14600b4e6\"}\n");
+}
+
+TEST(Vectors, mag_dip_angle_adaptive_measurement_read_reply) {
+    check_vector(
+        "75650d1704f1460013b500412000003e99999a3e4ccccd3c23d70acfa6", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":70,\"ack_code\":0}},{\"descriptor\":181,\"name\":\"mag_dip_angle_adaptive_"
+        "measurement_response\",\"values\":{\"mode\":0,\"frequency\":10.0,\"high_limit\":0.30000001192092896,"
+        "\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.009999999776482582}}]}\n");
+}
+
+TEST(Vectors, mag_capture_auto_calibration_write) {
+    check_vector("75650d030327011536", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":39,\"name\":\"mag_capture_auto_"
+                 "calibration\",\"values\":{\"function\":1}}]}\n");
+}
+
+TEST(Vectors, mag_capture_auto_calibration_table_published) {
+    check_vector("75650d020227011536", MIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"75650d020227011536\"}\n");
+}
+
+TEST(Vectors, mag_capture_auto_calibration_ack) {
+    check_vector("75650d0404f1270007fe", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":39,\"ack_code\":0}}]}\n");
+}
+
+TEST(Vectors, mag_capture_auto_calibration_ack_published) {
+    check_vector("75650d0404f1270095a8", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d0404f1270095a8\"}\n");
+}
+
+TEST(Vectors, mag_capture_auto_calibration_save) {
+    check_vector("75650d030327031738", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":39,\"name\":\"mag_capture_auto_"
+                 "calibration\",\"values\":{\"function\":3}}]}\n");
+}
+
+TEST(Vectors, aiding_measurement_control_write) {
+    check_vector("75650d060650010004004871", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
+                 "control\",\"values\":{\"function\":1,\"source\":4,\"enable\":false}}]}\n");
+}
+
+TEST(Vectors, aiding_measurement_control_read) {
+    check_vector("75650d050550020001441e", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
+                 "control\",\"values\":{\"function\":2,\"source\":1}}]}\n");
+}
+
+TEST(Vectors, aiding_measurement_control_save_all) {
+    check_vector("75650d05055003ffff421d", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
+                 "control\",\"values\":{\"function\":3,\"source\":65535}}]}\n");
+}
+
+TEST(Vectors, aiding_measurement_control_read_reply) {
+    check_vector("75650d0904f1500005d00001010cce", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":80,\"ack_code\":0}},{\"descriptor\":208,\"name\":\"aiding_"
+                 "measurement_control_response\",\"values\":{\"source\":1,\"enable\":true}}]}\n");
+}
+
+TEST(Vectors, aiding_measurement_control_write_external_heading) {
+    check_vector("75650d060650010005014a74", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
+                 "control\",\"values\":{\"function\":1,\"source\":5,\"enable\":true}}]}\n");
+}
+
+TEST(Vectors, initialization_configuration_write_manual_llh) {
+    check_vector(
+        "75650d2b2b520100030042b4000040200000bfc000004231c000c292400042c900003f800000bf0000000000000002ba90",
+        MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\","
+        "\"values\":{\"function\":1,\"wait_for_run_command\":0,\"initial_cond_src\":3,\"auto_heading_"
+        "alignment_selector\":0,\"initial_heading\":90.0,\"initial_pitch\":2.5,\"initial_roll\":-1.5,"
+        "\"initial_position\":[44.4375,-73.125,100.5],\"initial_velocity\":[1.0,-0.5,0.0],\"reference_frame_"
+        "selector\":2}}]}\n");
+}
+
+TEST(Vectors, initialization_configuration_write_auto) {
+    check_vector(
+        "75650d2b2b5201010006000000000000000000000000000000000000000000000000000000000000000000000000019831",
+        MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\","
+        "\"values\":{\"function\":1,\"wait_for_run_command\":1,\"initial_cond_src\":0,\"auto_heading_"
+        "alignment_selector\":6,\"initial_heading\":0.0,\"initial_pitch\":0.0,\"initial_roll\":0.0,\"initial_"
+        "position\":[0.0,0.0,0.0],\"initial_velocity\":[0.0,0.0,0.0],\"reference_frame_selector\":1}}]}\n");
+}
+
+TEST(Vectors, initialization_configuration_read) {
+    check_vector("75650d03035202418d", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_"
+                 "configuration\",\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, initialization_configuration_read_reply) {
+    check_vector("75650d2e04f152002ad2000109c234000000000000000000004987e357ca93df524a73218e000000003e800000b"
+                 "e00000001d954",
+                 MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":82,\"ack_code\":0}},{\"descriptor\":210,\"name\":\"initialization_"
+                 "configuration_response\",\"values\":{\"wait_for_run_command\":0,\"initial_cond_src\":1,"
+                 "\"auto_heading_alignment_selector\":9,\"initial_heading\":-45.0,\"initial_pitch\":0.0,"
+                 "\"initial_roll\":0.0,\"initial_position\":[1113194.875,-4845481.0,3983459.5],\"initial_"
+                 "velocity\":[0.0,0.25,-0.125],\"reference_frame_selector\":1}}]}\n");
+}
+
+TEST(Vectors, adaptive_filter_control_write) {
+    check_vector("75650d06065301033a981c8d", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":83,\"name\":\"adaptive_filter_"
+                 "control\",\"values\":{\"function\":1,\"level\":3,\"time_limit\":15000}}]}\n");
+}
+
+TEST(Vectors, adaptive_filter_control_read_reply) {
+    check_vector("75650d0904f1530005d30001f405e2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"adaptive_filter_"
+                 "control_response\",\"values\":{\"level\":0,\"time_limit\":500}}]}\n");
+}
+
+TEST(Vectors, multi_antenna_offset_write) {
+    check_vector("75650d10105401023f000000be800000bf8000001a91", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":84,\"name\":\"multi_antenna_offset\","
+                 "\"values\":{\"function\":1,\"receiver_id\":2,\"antenna_offset\":[0.5,-0.25,-1.0]}}]}\n");
+}
+
+TEST(Vectors, multi_antenna_offset_read) {
+    check_vector("75650d040454020146de", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":84,\"name\":\"multi_antenna_offset\","
+                 "\"values\":{\"function\":2,\"receiver_id\":1}}]}\n");
+}
+
+TEST(Vectors, multi_antenna_offset_read_reply) {
+    check_vector("75650d1304f154000fd401bea3d70a3de147aebf23d70a3ffb", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":84,\"ack_code\":0}},{\"descriptor\":212,\"name\":\"multi_antenna_"
+                 "offset_response\",\"values\":{\"receiver_id\":1,\"antenna_offset\":[-0.3199999928474426,0."
+                 "10999999940395355,-0.6399999856948853]}}]}\n");
+}
+
+TEST(Vectors, relative_position_configuration_write) {
+    check_vector("75650d1d1d550101024046380000000000c052480000000000404ba00000000000bd4f", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":85,\"name\":\"relative_position_"
+                 "configuration\",\"values\":{\"function\":1,\"source\":1,\"reference_frame_selector\":2,"
+                 "\"reference_coordinates\":[44.4375,-73.125,55.25]}}]}\n");
+}
+
+TEST(Vectors, relative_position_configuration_read_reply) {
+    check_vector("75650d2004f155001cd500014130fc6ae86e47a0c1527bea41eb851f414e6431e0000000a3eb",
+                 MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":85,\"ack_code\":0}},{\"descriptor\":213,\"name\":\"relative_"
+                 "position_configuration_response\",\"values\":{\"source\":0,\"reference_frame_selector\":1,"
+                 "\"reference_coordinates\":[1113194.907932736,-4845481.03,3983459.75]}}]}\n");
+}
+
+TEST(Vectors, reference_point_lever_arm_write) {
+    check_vector(
+        "75650d10105601013fc0000000000000bf4000005db2", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":86,\"name\":\"reference_point_lever_arm\","
+        "\"values\":{\"function\":1,\"ref_point_sel\":1,\"lever_arm_offset\":[1.5,0.0,-0.75]}}]}\n");
+}
+
+TEST(Vectors, reference_point_lever_arm_read_reply) {
+    check_vector(
+        "75650d1304f156000fd6013fc0000000000000bf4000002944", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":86,\"ack_code\":0}},{\"descriptor\":214,\"name\":\"reference_point_lever_arm_"
+        "response\",\"values\":{\"ref_point_sel\":1,\"lever_arm_offset\":[1.5,0.0,-0.75]}}]}\n");
+}
+
+TEST(Vectors, speed_lever_arm_write) {
+    check_vector("75650d1010610101bf000000bf4000003e800000e68b", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":97,\"name\":\"speed_lever_arm\","
+                 "\"values\":{\"function\":1,\"source\":1,\"lever_arm_offset\":[-0.5,-0.75,0.25]}}]}\n");
+}
+
+TEST(Vectors, speed_lever_arm_read) {
+    check_vector("75650d04046102015305", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":97,\"name\":\"speed_lever_arm\","
+                 "\"values\":{\"function\":2,\"source\":1}}]}\n");
+}
+
+TEST(Vectors, speed_lever_arm_read_reply) {
+    check_vector("75650d1304f161000fe101bf000000bf4000003e800000bdcd", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":97,\"ack_code\":0}},{\"descriptor\":225,\"name\":\"speed_lever_arm_"
+                 "response\",\"values\":{\"source\":1,\"lever_arm_offset\":[-0.5,-0.75,0.25]}}]}\n");
+}
+
+TEST(Vectors, wheeled_vehicle_constraint_control_write) {
+    check_vector("75650d04046301015409", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":99,\"name\":\"wheeled_vehicle_"
+                 "constraint_control\",\"values\":{\"function\":1,\"enable\":1}}]}\n");
+}
+
+TEST(Vectors, wheeled_vehicle_constraint_control_read_reply) {
+    check_vector("75650d0704f1630003e3002c26", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+                 "\"command_descriptor\":99,\"ack_code\":0}},{\"descriptor\":227,\"name\":\"wheeled_vehicle_"
+                 "constraint_control_response\",\"values\":{\"enable\":0}}]}\n");
+}
+
+TEST(Vectors, gnss_antenna_calibration_control_write) {
+    check_vector("75650d08086401013f0000009ca0", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":100,\"name\":\"gnss_antenna_"
+                 "calibration_control\",\"values\":{\"function\":1,\"enable\":1,\"max_offset\":0.5}}]}\n");
+}
+
+TEST(Vectors, gnss_antenna_calibration_control_read_reply) {
+    check_vector(
+        "75650d0b04f1640007e4013dcccccdd9f3", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":228,\"name\":\"gnss_antenna_calibration_"
+        "control_response\",\"values\":{\"enable\":1,\"max_offset\":0.10000000149011612}}]}\n");
+}
+
+TEST(Vectors, two_settings_one_packet) {
+    check_vector("75650d06036302035302ad6b", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":99,\"name\":\"wheeled_vehicle_"
+                 "constraint_control\",\"values\":{\"function\":2}},{\"descriptor\":83,\"name\":\"adaptive_"
+                 "filter_control\",\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, two_settings_one_packet_reply) {
+    check_vector(
+        "75650d1004f1630003e30104f1530005d3023a982abd", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+        "\"command_descriptor\":99,\"ack_code\":0}},{\"descriptor\":227,\"name\":\"wheeled_vehicle_"
+        "constraint_control_response\",\"values\":{\"enable\":1}},{\"descriptor\":241,\"name\":\"ack_nack\","
+        "\"values\":{\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"adaptive_"
+        "filter_control_response\",\"values\":{\"level\":2,\"time_limit\":15000}}]}\n");
+}
+
 TEST(Vectors, receiver_info_command) {
     check_vector("75650e020201edfa", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":1,\"name\":\"receiver_info\","

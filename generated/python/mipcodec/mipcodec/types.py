@@ -48,6 +48,25 @@ class ActionType(_c.Enum):
     MESSAGE = 0x02  # Output a data packet.
 
 
+class AdaptiveFilterLevel(_c.Enum):
+    """Auto-adaptive filter operating level (u8)."""
+
+    OFF = 0x00  # Adaptive filtering off.
+    CONSERVATIVE = 0x01  # Conservative.
+    MODERATE = 0x02  # Moderate (default).
+    AGGRESSIVE = 0x03  # Aggressive.
+
+
+class AdaptiveMeasurementMode(_c.Enum):
+    """Adaptive measurement mode (u8)."""
+
+    DISABLED = 0x00  # No adaptive measurement.
+    FIXED = 0x01  # Fixed adaptive measurement using the specified filter and limit parameters.
+    # Auto-adaptive: the Kalman filter re-weights the measurement by its perceived quality (3DM-GX5 and later); limits
+    # are ignored.
+    AUTO = 0x02
+
+
 class AidingEchoMode(_c.Enum):
     """Aiding command echo mode (u8)."""
 
@@ -81,6 +100,21 @@ class AidingLlhValidFlags(_c.Bitfield):
     height = _c.bit(2)
 
 
+class AidingMeasurementSource(_c.Enum):
+    """Aiding measurement source (u16)."""
+
+    GNSS_POS_VEL = 0x00  # GNSS position and velocity.
+    GNSS_HEADING = 0x01  # GNSS heading (dual antenna).
+    ALTIMETER = 0x02  # Pressure altimeter (built-in sensor).
+    SPEED = 0x03  # Speed sensor / odometer.
+    MAGNETOMETER = 0x04  # Magnetometer (built-in sensor).
+    EXTERNAL_HEADING = 0x05  # External heading input.
+    EXTERNAL_ALTIMETER = 0x06  # External pressure altimeter input.
+    EXTERNAL_MAGNETOMETER = 0x07  # External magnetometer input.
+    BODY_FRAME_VEL = 0x08  # External body frame velocity input.
+    ALL = 0xFFFF  # All sources (for save, load and default).
+
+
 class AidingTimebase(_c.Enum):
     """Aiding measurement timebase (u8).
 
@@ -111,6 +145,13 @@ class AidingVectorValidFlags(_c.Bitfield):
     x = _c.bit(0)
     y = _c.bit(1)
     z = _c.bit(2)
+
+
+class AltitudeAidingSource(_c.Enum):
+    """Altitude aiding source (u8)."""
+
+    NONE = 0x00  # No altitude aiding (disabled).
+    PRESSURE = 0x01  # Pressure sensor aiding enabled.
 
 
 @_c.bitfield("u32")
@@ -241,6 +282,22 @@ class FilterGnssSource(_c.Enum):
     INTERNAL_2 = 0x04  # Internal GNSS receiver 2 only. (devices: cv7_ins)
 
 
+class FilterInitialConditionSource(_c.Enum):
+    """Navigation filter initial condition source (u8)."""
+
+    AUTO_POS_VEL_ATT = 0x00  # Automatic position, velocity and attitude.
+    AUTO_POS_VEL_PITCH_ROLL = 0x01  # Automatic position, velocity, pitch and roll; heading as specified.
+    AUTO_POS_VEL = 0x02  # Automatic position and velocity; attitude fully user-specified.
+    MANUAL = 0x03  # User-specified position, velocity and attitude.
+
+
+class FilterReferenceFrame(_c.Enum):
+    """Reference frame of user-specified positions and velocities (u8)."""
+
+    ECEF = 0x01  # WGS84 Earth-centered, Earth-fixed coordinates.
+    LLH = 0x02  # WGS84 latitude, longitude and height above ellipsoid.
+
+
 class FunctionSelector(_c.Enum):
     """Function selector (u8).
 
@@ -358,6 +415,27 @@ class Gx5BitFlags(_c.Bitfield):
     filter_solution_fault = _c.bit(24)
 
 
+@_c.bitfield("u8")
+class HeadingAlignmentMethods(_c.Bitfield):
+    """Allowed automatic heading alignment methods (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("dual_antenna", "dual_antenna", "DUAL_ANTENNA", 0, 1),
+        ("kinematic", "kinematic", "KINEMATIC", 1, 1),
+        ("magnetometer", "magnetometer", "MAGNETOMETER", 2, 1),
+        ("external", "external", "EXTERNAL", 3, 1),
+    )
+    DUAL_ANTENNA = 0x01  # bit 0: Dual-antenna GNSS alignment.
+    KINEMATIC = 0x02  # bit 1: GNSS kinematic alignment: the GNSS velocity (above 2 m/s) determines the initial heading.
+    MAGNETOMETER = 0x04  # bit 2: The internal magnetometer determines the initial heading.
+    EXTERNAL = 0x08  # bit 3: An external heading input determines the initial heading.
+
+    dual_antenna = _c.bit(0)
+    kinematic = _c.bit(1)
+    magnetometer = _c.bit(2)
+    external = _c.bit(3)
+
+
 class HeadingUpdateSource(_c.Enum):
     """Heading update source (u8).
 
@@ -375,6 +453,38 @@ class HeadingUpdateSource(_c.Enum):
     GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL = 0x07  # GNSS velocity vector, magnetometer and external heading messages.
 
 
+class MagneticParamSource(_c.Enum):
+    """Source of a magnetic field parameter (declination, inclination, magnitude) (u8).
+
+    Where the filter takes a local magnetic field parameter from: nowhere (a fixed fallback), the
+    internal World Magnetic Model, or a value the user supplies.
+    """
+
+    NONE = 0x01  # No source: no correction (declination, inclination) or a fixed 0.5 gauss (magnitude).
+    WMM = 0x02  # Internal World Magnetic Model at the current position estimate (default).
+    MANUAL = 0x03  # Value supplied by the user; the device does not validate it.
+
+
+class PitchRollAidingSource(_c.Enum):
+    """Pitch/roll aiding source (u8)."""
+
+    NONE = 0x00  # No pitch/roll aiding (disabled).
+    GRAVITY_VECTOR = 0x01  # Gravity vector aiding enabled.
+
+
+class ReferencePointSelector(_c.Enum):
+    """Filter reference point (u8)."""
+
+    VEH = 0x01  # The origin of the vehicle (the only value; the parameter is reserved and must be 1).
+
+
+class RelativePositionSource(_c.Enum):
+    """Reference location source for relative position outputs (u8)."""
+
+    AUTO = 0x00  # Automatic: the RTK base station location.
+    MANUAL = 0x01  # The reference coordinates given in the command.
+
+
 class SpartnConnectionType(_c.Enum):
     """SPARTN connection type (u8)."""
 
@@ -389,6 +499,27 @@ class SystemCommMode(_c.Enum):
     STANDARD = 0x01  # 3DM-GX5-45 MIP packets (default).
     SENSOR_DIRECT = 0x02  # Direct to the internal IMU: MIP IMU protocol.
     GNSS_DIRECT = 0x03  # Direct to the GNSS receiver: NMEA and UBX (GNSS models only).
+
+
+@_c.bitfield("u8")
+class TareAxes(_c.Bitfield):
+    """Tare orientation axes (u8 bitfield).
+
+    Axes to tare; 0 (no bit set) resets all axes.
+    """
+
+    _MEMBERS = (
+        ("roll", "roll", "ROLL", 0, 1),
+        ("pitch", "pitch", "PITCH", 1, 1),
+        ("yaw", "yaw", "YAW", 2, 1),
+    )
+    ROLL = 0x01  # bit 0: Tare the roll axis.
+    PITCH = 0x02  # bit 1: Tare the pitch axis.
+    YAW = 0x04  # bit 2: Tare the yaw axis.
+
+    roll = _c.bit(0)
+    pitch = _c.bit(1)
+    yaw = _c.bit(2)
 
 
 class ThresholdType(_c.Enum):

@@ -260,6 +260,297 @@ SAMPLES = [
             type=types.ExternalHeadingType.MAGNETIC_HEADING,
         ),
     ),
+    (
+        "filter.ZeroAngularRateUpdateControl",
+        lambda: filter.ZeroAngularRateUpdateControl(
+            function=types.FunctionSelector.DEFAULT, enable=193, threshold=-0.0
+        ),
+    ),
+    (
+        "filter.ZeroAngularRateUpdateControlResponse",
+        lambda: filter.ZeroAngularRateUpdateControlResponse(enable=16, threshold=-2.25),
+    ),
+    (
+        "filter.TareOrientation",
+        lambda: filter.TareOrientation(function=types.FunctionSelector.DEFAULT, axes=types.TareAxes(0x2)),
+    ),
+    ("filter.CommandedZupt", lambda: filter.CommandedZupt()),
+    ("filter.CommandedZeroAngularRateUpdate", lambda: filter.CommandedZeroAngularRateUpdate()),
+    (
+        "filter.MagCaptureAutoCalibration",
+        lambda: filter.MagCaptureAutoCalibration(function=types.FunctionSelector.SAVE),
+    ),
+    (
+        "filter.GravityNoiseStdDev",
+        lambda: filter.GravityNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=[1024.0, -0.0, 1.5]),
+    ),
+    ("filter.GravityNoiseStdDevResponse", lambda: filter.GravityNoiseStdDevResponse(noise=[-2.25, 0.375, 1024.0])),
+    (
+        "filter.PressureAltitudeNoiseStdDev",
+        lambda: filter.PressureAltitudeNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=-0.0),
+    ),
+    ("filter.PressureAltitudeNoiseStdDevResponse", lambda: filter.PressureAltitudeNoiseStdDevResponse(noise=1.5)),
+    (
+        "filter.HardIronOffsetNoise",
+        lambda: filter.HardIronOffsetNoise(function=types.FunctionSelector.DEFAULT, noise=[-2.25, 0.375, 1024.0]),
+    ),
+    ("filter.HardIronOffsetNoiseResponse", lambda: filter.HardIronOffsetNoiseResponse(noise=[-0.0, 1.5, -2.25])),
+    (
+        "filter.SoftIronMatrixNoise",
+        lambda: filter.SoftIronMatrixNoise(
+            function=types.FunctionSelector.DEFAULT, noise=[0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5]
+        ),
+    ),
+    (
+        "filter.SoftIronMatrixNoiseResponse",
+        lambda: filter.SoftIronMatrixNoiseResponse(noise=[-2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0]),
+    ),
+    (
+        "filter.MagNoiseStdDev",
+        lambda: filter.MagNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=[1.5, -2.25, 0.375]),
+    ),
+    ("filter.MagNoiseStdDevResponse", lambda: filter.MagNoiseStdDevResponse(noise=[1024.0, -0.0, 1.5])),
+    (
+        "filter.DeclinationSource",
+        lambda: filter.DeclinationSource(
+            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.WMM, declination=0.375
+        ),
+    ),
+    (
+        "filter.DeclinationSourceResponse",
+        lambda: filter.DeclinationSourceResponse(source=types.MagneticParamSource.NONE, declination=-0.0),
+    ),
+    (
+        "filter.GravityMagnitudeAdaptiveMeasurement",
+        lambda: filter.GravityMagnitudeAdaptiveMeasurement(
+            function=types.FunctionSelector.DEFAULT,
+            mode=types.AdaptiveMeasurementMode.AUTO,
+            frequency=-2.25,
+            low_limit=0.375,
+            high_limit=1024.0,
+            low_limit_uncertainty=-0.0,
+            high_limit_uncertainty=1.5,
+            minimum_uncertainty=-2.25,
+        ),
+    ),
+    (
+        "filter.GravityMagnitudeAdaptiveMeasurementResponse",
+        lambda: filter.GravityMagnitudeAdaptiveMeasurementResponse(
+            mode=types.AdaptiveMeasurementMode.DISABLED,
+            frequency=1024.0,
+            low_limit=-0.0,
+            high_limit=1.5,
+            low_limit_uncertainty=-2.25,
+            high_limit_uncertainty=0.375,
+            minimum_uncertainty=1024.0,
+        ),
+    ),
+    (
+        "filter.MagMagnitudeAdaptiveMeasurement",
+        lambda: filter.MagMagnitudeAdaptiveMeasurement(
+            function=types.FunctionSelector.DEFAULT,
+            mode=types.AdaptiveMeasurementMode.FIXED,
+            frequency=1.5,
+            low_limit=-2.25,
+            high_limit=0.375,
+            low_limit_uncertainty=1024.0,
+            high_limit_uncertainty=-0.0,
+            minimum_uncertainty=1.5,
+        ),
+    ),
+    (
+        "filter.MagMagnitudeAdaptiveMeasurementResponse",
+        lambda: filter.MagMagnitudeAdaptiveMeasurementResponse(
+            mode=types.AdaptiveMeasurementMode.AUTO,
+            frequency=0.375,
+            low_limit=1024.0,
+            high_limit=-0.0,
+            low_limit_uncertainty=1.5,
+            high_limit_uncertainty=-2.25,
+            minimum_uncertainty=0.375,
+        ),
+    ),
+    (
+        "filter.MagDipAngleAdaptiveMeasurement",
+        lambda: filter.MagDipAngleAdaptiveMeasurement(
+            function=types.FunctionSelector.DEFAULT,
+            mode=types.AdaptiveMeasurementMode.DISABLED,
+            frequency=-0.0,
+            high_limit=1.5,
+            high_limit_uncertainty=-2.25,
+            minimum_uncertainty=0.375,
+        ),
+    ),
+    (
+        "filter.MagDipAngleAdaptiveMeasurementResponse",
+        lambda: filter.MagDipAngleAdaptiveMeasurementResponse(
+            mode=types.AdaptiveMeasurementMode.AUTO,
+            frequency=-0.0,
+            high_limit=1.5,
+            high_limit_uncertainty=-2.25,
+            minimum_uncertainty=0.375,
+        ),
+    ),
+    (
+        "filter.AltitudeAidingControl",
+        lambda: filter.AltitudeAidingControl(
+            function=types.FunctionSelector.DEFAULT, source=types.AltitudeAidingSource.PRESSURE
+        ),
+    ),
+    (
+        "filter.AltitudeAidingControlResponse",
+        lambda: filter.AltitudeAidingControlResponse(source=types.AltitudeAidingSource.NONE),
+    ),
+    (
+        "filter.PitchRollAidingControl",
+        lambda: filter.PitchRollAidingControl(
+            function=types.FunctionSelector.DEFAULT, source=types.PitchRollAidingSource.GRAVITY_VECTOR
+        ),
+    ),
+    (
+        "filter.PitchRollAidingControlResponse",
+        lambda: filter.PitchRollAidingControlResponse(source=types.PitchRollAidingSource.NONE),
+    ),
+    (
+        "filter.InclinationSource",
+        lambda: filter.InclinationSource(
+            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.MANUAL, inclination=1024.0
+        ),
+    ),
+    (
+        "filter.InclinationSourceResponse",
+        lambda: filter.InclinationSourceResponse(source=types.MagneticParamSource.WMM, inclination=1.5),
+    ),
+    (
+        "filter.MagneticFieldMagnitudeSource",
+        lambda: filter.MagneticFieldMagnitudeSource(
+            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.NONE, magnitude=0.375
+        ),
+    ),
+    (
+        "filter.MagneticFieldMagnitudeSourceResponse",
+        lambda: filter.MagneticFieldMagnitudeSourceResponse(source=types.MagneticParamSource.MANUAL, magnitude=-0.0),
+    ),
+    (
+        "filter.AidingMeasurementControl",
+        lambda: filter.AidingMeasurementControl(
+            function=types.FunctionSelector.DEFAULT, source=types.AidingMeasurementSource.EXTERNAL_HEADING, enable=False
+        ),
+    ),
+    (
+        "filter.AidingMeasurementControlResponse",
+        lambda: filter.AidingMeasurementControlResponse(
+            source=types.AidingMeasurementSource.EXTERNAL_MAGNETOMETER, enable=False
+        ),
+    ),
+    (
+        "filter.InitializationConfiguration",
+        lambda: filter.InitializationConfiguration(
+            function=types.FunctionSelector.DEFAULT,
+            wait_for_run_command=165,
+            initial_cond_src=types.FilterInitialConditionSource.AUTO_POS_VEL,
+            auto_heading_alignment_selector=types.HeadingAlignmentMethods(0x8),
+            initial_heading=0.375,
+            initial_pitch=1024.0,
+            initial_roll=-0.0,
+            initial_position=[1.5, -2.25, 0.375],
+            initial_velocity=[1024.0, -0.0, 1.5],
+            reference_frame_selector=types.FilterReferenceFrame.LLH,
+        ),
+    ),
+    (
+        "filter.InitializationConfigurationResponse",
+        lambda: filter.InitializationConfigurationResponse(
+            wait_for_run_command=144,
+            initial_cond_src=types.FilterInitialConditionSource.MANUAL,
+            auto_heading_alignment_selector=types.HeadingAlignmentMethods(0x1),
+            initial_heading=1.5,
+            initial_pitch=-2.25,
+            initial_roll=0.375,
+            initial_position=[1024.0, -0.0, 1.5],
+            initial_velocity=[-2.25, 0.375, 1024.0],
+            reference_frame_selector=types.FilterReferenceFrame.ECEF,
+        ),
+    ),
+    (
+        "filter.AdaptiveFilterControl",
+        lambda: filter.AdaptiveFilterControl(
+            function=types.FunctionSelector.DEFAULT, level=types.AdaptiveFilterLevel.AGGRESSIVE, time_limit=160
+        ),
+    ),
+    (
+        "filter.AdaptiveFilterControlResponse",
+        lambda: filter.AdaptiveFilterControlResponse(level=types.AdaptiveFilterLevel.CONSERVATIVE, time_limit=234),
+    ),
+    (
+        "filter.MultiAntennaOffset",
+        lambda: filter.MultiAntennaOffset(
+            function=types.FunctionSelector.DEFAULT, receiver_id=20, antenna_offset=[1.5, -2.25, 0.375]
+        ),
+    ),
+    (
+        "filter.MultiAntennaOffsetResponse",
+        lambda: filter.MultiAntennaOffsetResponse(receiver_id=168, antenna_offset=[-0.0, 1.5, -2.25]),
+    ),
+    (
+        "filter.RelativePositionConfiguration",
+        lambda: filter.RelativePositionConfiguration(
+            function=types.FunctionSelector.DEFAULT,
+            source=types.RelativePositionSource.MANUAL,
+            reference_frame_selector=types.FilterReferenceFrame.ECEF,
+            reference_coordinates=[-0.0, 0.1, -2.5e-310],
+        ),
+    ),
+    (
+        "filter.RelativePositionConfigurationResponse",
+        lambda: filter.RelativePositionConfigurationResponse(
+            source=types.RelativePositionSource.AUTO,
+            reference_frame_selector=types.FilterReferenceFrame.LLH,
+            reference_coordinates=[-0.0, 0.1, -2.5e-310],
+        ),
+    ),
+    (
+        "filter.ReferencePointLeverArm",
+        lambda: filter.ReferencePointLeverArm(
+            function=types.FunctionSelector.DEFAULT,
+            ref_point_sel=types.ReferencePointSelector.VEH,
+            lever_arm_offset=[1024.0, -0.0, 1.5],
+        ),
+    ),
+    (
+        "filter.ReferencePointLeverArmResponse",
+        lambda: filter.ReferencePointLeverArmResponse(
+            ref_point_sel=types.ReferencePointSelector.VEH, lever_arm_offset=[0.375, 1024.0, -0.0]
+        ),
+    ),
+    (
+        "filter.SpeedLeverArm",
+        lambda: filter.SpeedLeverArm(
+            function=types.FunctionSelector.DEFAULT, source=229, lever_arm_offset=[-2.25, 0.375, 1024.0]
+        ),
+    ),
+    (
+        "filter.SpeedLeverArmResponse",
+        lambda: filter.SpeedLeverArmResponse(source=126, lever_arm_offset=[1.5, -2.25, 0.375]),
+    ),
+    (
+        "filter.WheeledVehicleConstraintControl",
+        lambda: filter.WheeledVehicleConstraintControl(function=types.FunctionSelector.DEFAULT, enable=23),
+    ),
+    (
+        "filter.WheeledVehicleConstraintControlResponse",
+        lambda: filter.WheeledVehicleConstraintControlResponse(enable=60),
+    ),
+    (
+        "filter.GnssAntennaCalibrationControl",
+        lambda: filter.GnssAntennaCalibrationControl(
+            function=types.FunctionSelector.DEFAULT, enable=97, max_offset=-2.25
+        ),
+    ),
+    (
+        "filter.GnssAntennaCalibrationControlResponse",
+        lambda: filter.GnssAntennaCalibrationControlResponse(enable=171, max_offset=1024.0),
+    ),
     ("gnss.ReceiverInfo", lambda: gnss.ReceiverInfo()),
     (
         "gnss.ReceiverInfoResponse",
@@ -267,14 +558,14 @@ SAMPLES = [
             num_receivers=2,
             receiver_info=[
                 types.GnssReceiverInfoEntry(
-                    receiver_id=230,
-                    mip_data_descriptor_set=16,
-                    description=b"pqr\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                    receiver_id=31,
+                    mip_data_descriptor_set=68,
+                    description=b"efg\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
                 ),
                 types.GnssReceiverInfoEntry(
-                    receiver_id=127,
-                    mip_data_descriptor_set=164,
-                    description=b"tuv\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                    receiver_id=179,
+                    mip_data_descriptor_set=216,
+                    description=b"ijk\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
                 ),
             ],
         ),
@@ -284,68 +575,68 @@ SAMPLES = [
         lambda: gnss.SignalConfiguration(
             function=types.FunctionSelector.DEFAULT,
             gps_enable=types.GnssGpsSignals(0x4),
-            glonass_enable=types.GnssGlonassSignals(0x2),
+            glonass_enable=types.GnssGlonassSignals(0x1),
             galileo_enable=types.GnssGalileoSignals(0x2),
             beidou_enable=types.GnssBeidouSignals(0x4),
-            reserved=[135, 172, 209, 246],
+            reserved=[187, 224, 10, 47],
         ),
     ),
     (
         "gnss.SignalConfigurationResponse",
         lambda: gnss.SignalConfigurationResponse(
             gps_enable=types.GnssGpsSignals(0x2),
-            glonass_enable=types.GnssGlonassSignals(0x2),
+            glonass_enable=types.GnssGlonassSignals(0x1),
             galileo_enable=types.GnssGalileoSignals(0x1),
             beidou_enable=types.GnssBeidouSignals(0x2),
-            reserved=[180, 217, 3, 40],
+            reserved=[232, 18, 55, 92],
         ),
     ),
     (
         "gnss.SpartnConfiguration",
         lambda: gnss.SpartnConfiguration(
             function=types.FunctionSelector.DEFAULT,
-            enable=77,
+            enable=129,
             type=types.SpartnConnectionType.NETWORK,
-            current_key_tow=151,
-            current_key_week=188,
-            current_key=b"opq\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
-            next_key_tow=11,
-            next_key_week=48,
-            next_key=b"rst\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            current_key_tow=203,
+            current_key_week=240,
+            current_key=b"def\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            next_key_tow=63,
+            next_key_week=100,
+            next_key=b"ghi\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
     (
         "gnss.SpartnConfigurationResponse",
         lambda: gnss.SpartnConfigurationResponse(
-            enable=122,
+            enable=174,
             type=types.SpartnConnectionType.NONE,
-            current_key_tow=196,
-            current_key_week=233,
-            current_key=b"wxy\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
-            next_key_tow=56,
-            next_key_week=93,
-            next_key=b"zab\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            current_key_tow=248,
+            current_key_week=34,
+            current_key=b"lmn\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            next_key_tow=108,
+            next_key_week=145,
+            next_key=b"opq\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
     (
         "aiding.FrameConfig",
         lambda: aiding.FrameConfig(
             function=types.FunctionSelector.DEFAULT,
-            frame_id=167,
+            frame_id=219,
             format=types.AidingFrameFormat.EULER,
-            tracking_enabled=True,
-            translation=[1.5, -2.25, 0.375],
-            rotation=types.AidingFrameEuler(euler=[1024.0, -0.0, 1.5]),
+            tracking_enabled=False,
+            translation=[-2.25, 0.375, 1024.0],
+            rotation=types.AidingFrameEuler(euler=[-0.0, 1.5, -2.25]),
         ),
     ),
     (
         "aiding.FrameConfigResponse",
         lambda: aiding.FrameConfigResponse(
-            frame_id=212,
+            frame_id=13,
             format=types.AidingFrameFormat.EULER,
-            tracking_enabled=True,
-            translation=[1024.0, -0.0, 1.5],
-            rotation=types.AidingFrameEuler(euler=[-2.25, 0.375, 1024.0]),
+            tracking_enabled=False,
+            translation=[-0.0, 1.5, -2.25],
+            rotation=types.AidingFrameEuler(euler=[0.375, 1024.0, -0.0]),
         ),
     ),
     (
@@ -356,93 +647,93 @@ SAMPLES = [
     (
         "aiding.EcefPosition",
         lambda: aiding.EcefPosition(
-            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=154, nanoseconds=191),
-            frame_id=228,
-            position=[-2.5e-310, 1e16, 123.456],
-            uncertainty=[-0.0, 1.5, -2.25],
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=206, nanoseconds=243),
+            frame_id=29,
+            position=[1e16, 123.456, -0.0],
+            uncertainty=[1.5, -2.25, 0.375],
             valid_flags=types.AidingVectorValidFlags(0x1),
         ),
     ),
     (
         "aiding.LlhPosition",
         lambda: aiding.LlhPosition(
-            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=96, nanoseconds=133),
-            frame_id=170,
-            latitude=123.456,
-            longitude=-0.0,
-            height=0.1,
-            uncertainty=[-2.25, 0.375, 1024.0],
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=148, nanoseconds=185),
+            frame_id=222,
+            latitude=-0.0,
+            longitude=0.1,
+            height=-2.5e-310,
+            uncertainty=[0.375, 1024.0, -0.0],
             valid_flags=types.AidingLlhValidFlags(0x1),
         ),
     ),
     (
         "aiding.HeightAboveEllipsoid",
         lambda: aiding.HeightAboveEllipsoid(
-            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=38, nanoseconds=75),
-            frame_id=112,
-            height=1.5,
-            uncertainty=-2.25,
-            valid_flags=223,
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=90, nanoseconds=127),
+            frame_id=164,
+            height=-2.25,
+            uncertainty=0.375,
+            valid_flags=24,
         ),
     ),
     (
         "aiding.EcefVelocity",
         lambda: aiding.EcefVelocity(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=83, nanoseconds=120),
-            frame_id=157,
-            velocity=[1024.0, -0.0, 1.5],
-            uncertainty=[-2.25, 0.375, 1024.0],
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=135, nanoseconds=172),
+            frame_id=209,
+            velocity=[-0.0, 1.5, -2.25],
+            uncertainty=[0.375, 1024.0, -0.0],
             valid_flags=types.AidingVectorValidFlags(0x4),
         ),
     ),
     (
         "aiding.NedVelocity",
         lambda: aiding.NedVelocity(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=25, nanoseconds=62),
-            frame_id=99,
-            velocity=[1.5, -2.25, 0.375],
-            uncertainty=[1024.0, -0.0, 1.5],
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=77, nanoseconds=114),
+            frame_id=151,
+            velocity=[-2.25, 0.375, 1024.0],
+            uncertainty=[-0.0, 1.5, -2.25],
             valid_flags=types.AidingVectorValidFlags(0x4),
         ),
     ),
     (
         "aiding.BodyFrameVelocity",
         lambda: aiding.BodyFrameVelocity(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=218, nanoseconds=4),
-            frame_id=41,
-            velocity=[0.375, 1024.0, -0.0],
-            uncertainty=[1.5, -2.25, 0.375],
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=19, nanoseconds=56),
+            frame_id=93,
+            velocity=[1024.0, -0.0, 1.5],
+            uncertainty=[-2.25, 0.375, 1024.0],
             valid_flags=types.AidingVectorValidFlags(0x4),
         ),
     ),
     (
         "aiding.TrueHeading",
         lambda: aiding.TrueHeading(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=160, nanoseconds=197),
-            frame_id=234,
-            heading=-0.0,
-            uncertainty=1.5,
-            valid_flags=94,
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=212, nanoseconds=249),
+            frame_id=35,
+            heading=1.5,
+            uncertainty=-2.25,
+            valid_flags=146,
         ),
     ),
     (
         "aiding.MagneticField",
         lambda: aiding.MagneticField(
-            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=205, nanoseconds=242),
-            frame_id=28,
-            magnetic_field=[0.375, 1024.0, -0.0],
-            uncertainty=[1.5, -2.25, 0.375],
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=6, nanoseconds=43),
+            frame_id=80,
+            magnetic_field=[1024.0, -0.0, 1.5],
+            uncertainty=[-2.25, 0.375, 1024.0],
             valid_flags=types.AidingVectorValidFlags(0x2),
         ),
     ),
     (
         "aiding.Pressure",
         lambda: aiding.Pressure(
-            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=147, nanoseconds=184),
-            frame_id=221,
-            pressure=-0.0,
-            uncertainty=1.5,
-            valid_flags=81,
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=199, nanoseconds=236),
+            frame_id=22,
+            pressure=1.5,
+            uncertainty=-2.25,
+            valid_flags=133,
         ),
     ),
     (
@@ -455,57 +746,57 @@ SAMPLES = [
         "system.CommunicationModeResponse",
         lambda: system.CommunicationModeResponse(mode=types.SystemCommMode.GNSS_DIRECT),
     ),
-    ("sensor.ScaledAccel", lambda: sensor.ScaledAccel(scaled_accel=[-0.0, 1.5, -2.25])),
-    ("sensor.ScaledGyro", lambda: sensor.ScaledGyro(scaled_gyro=[0.375, 1024.0, -0.0])),
-    ("sensor.ScaledMag", lambda: sensor.ScaledMag(scaled_mag=[1.5, -2.25, 0.375])),
-    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=23, ack_code=types.AckCode.COMMAND_TIMEOUT)),
-    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=97, mode=types.ActionGpioMode.DISABLED)),
+    ("sensor.ScaledAccel", lambda: sensor.ScaledAccel(scaled_accel=[1.5, -2.25, 0.375])),
+    ("sensor.ScaledGyro", lambda: sensor.ScaledGyro(scaled_gyro=[1024.0, -0.0, 1.5])),
+    ("sensor.ScaledMag", lambda: sensor.ScaledMag(scaled_mag=[-2.25, 0.375, 1024.0])),
+    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=75, ack_code=types.AckCode.UNKNOWN_COMMAND)),
+    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=149, mode=types.ActionGpioMode.ONESHOT_HIGH)),
     (
         "types.MessageParams",
-        lambda: types.MessageParams(desc_set=171, decimation=208, num_fields=2, descriptors=[245, 31]),
+        lambda: types.MessageParams(desc_set=223, decimation=9, num_fields=2, descriptors=[46, 83]),
     ),
-    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.MESSAGE, trigger_id=105)),
-    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[1024.0, -0.0, 1.5])),
-    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[-2.25, 0.375, 1024.0, -0.0])),
+    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.MESSAGE, trigger_id=157)),
+    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[-0.0, 1.5, -2.25])),
+    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[0.375, 1024.0, -0.0, 1.5])),
     (
         "types.AidingTime",
-        lambda: types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=187, nanoseconds=224),
+        lambda: types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=239, nanoseconds=25),
     ),
-    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=10, input_triggers=[47, 84, 121, 158])),
+    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=62, input_triggers=[99, 136, 173, 210])),
     (
         "types.DeviceInfo",
         lambda: types.DeviceInfo(
-            firmware_version=195,
-            model_name=b"vwx             ",
-            model_number=b"wxy             ",
-            serial_number=b"xyz             ",
-            lot_number=b"yza             ",
-            device_options=b"zab             ",
+            firmware_version=247,
+            model_name=b"klm             ",
+            model_number=b"lmn             ",
+            serial_number=b"mno             ",
+            lot_number=b"nop             ",
+            device_options=b"opq             ",
         ),
     ),
     (
         "types.GnssReceiverInfoEntry",
         lambda: types.GnssReceiverInfoEntry(
-            receiver_id=166,
-            mip_data_descriptor_set=203,
-            description=b"cde\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            receiver_id=218,
+            mip_data_descriptor_set=4,
+            description=b"rst\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
     (
         "types.ThresholdParams",
         lambda: types.ThresholdParams(
-            desc_set=26,
-            field_desc=63,
-            param_id=100,
-            type=types.ThresholdType.WINDOW,
-            low_thres=-2.5e-310,
-            high_thres=1e16,
+            desc_set=78,
+            field_desc=115,
+            param_id=152,
+            type=types.ThresholdType.INTERVAL,
+            low_thres=1e16,
+            high_thres=123.456,
         ),
     ),
-    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=248, mode=types.TriggerGpioMode.WHILE_LOW)),
+    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=49, mode=types.TriggerGpioMode.WHILE_HIGH)),
     (
         "types.TriggerStatusEntry",
-        lambda: types.TriggerStatusEntry(type=types.TriggerType.COMBINATION, status=types.TriggerStatus(0x2)),
+        lambda: types.TriggerStatusEntry(type=types.TriggerType.THRESHOLD, status=types.TriggerStatus(0x2)),
     ),
 ]
 
@@ -557,6 +848,13 @@ BITFIELD_MEMBERS = [
     (types.Gx5BitFlags, "magnetometer_fault", "MAGNETOMETER_FAULT", 9, 1, 0x200),
     (types.Gx5BitFlags, "pressure_sensor_fault", "PRESSURE_SENSOR_FAULT", 10, 1, 0x400),
     (types.Gx5BitFlags, "filter_solution_fault", "FILTER_SOLUTION_FAULT", 24, 1, 0x1000000),
+    (types.HeadingAlignmentMethods, "dual_antenna", "DUAL_ANTENNA", 0, 1, 0x1),
+    (types.HeadingAlignmentMethods, "kinematic", "KINEMATIC", 1, 1, 0x2),
+    (types.HeadingAlignmentMethods, "magnetometer", "MAGNETOMETER", 2, 1, 0x4),
+    (types.HeadingAlignmentMethods, "external", "EXTERNAL", 3, 1, 0x8),
+    (types.TareAxes, "roll", "ROLL", 0, 1, 0x1),
+    (types.TareAxes, "pitch", "PITCH", 1, 1, 0x2),
+    (types.TareAxes, "yaw", "YAW", 2, 1, 0x4),
     (types.TriggerStatus, "active", "ACTIVE", 0, 1, 0x1),
     (types.TriggerStatus, "enabled", "ENABLED", 1, 1, 0x2),
     (types.TriggerStatus, "test", "TEST", 2, 1, 0x4),

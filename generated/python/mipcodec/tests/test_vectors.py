@@ -1817,6 +1817,954 @@ CASES = [
         ],
     },
     {
+        "name": "pitch_roll_aiding_control_write",
+        "hex": "75650d04044b01013cc1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:14",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":75,"name":"pitch_roll_aiding_control","values":{"function":1,"source":1}}]}'
+        ],
+    },
+    {
+        "name": "pitch_roll_aiding_control_ack_published",
+        "hex": "75650d0404f14700b9f0",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:24",
+        "expect": ['{"offset":0,"skipped":"75650d0404f14700b9f0"}'],
+    },
+    {
+        "name": "pitch_roll_aiding_control_ack",
+        "hex": "75650d0404f14b002b46",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:38",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":75,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "pitch_roll_aiding_control_read",
+        "hex": "75650d03034b023a7f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:52",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":75,"name":"pitch_roll_aiding_control","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "pitch_roll_aiding_control_read_reply",
+        "hex": "75650d0704f14b0003bb00ec5e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:65",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":75,"ack_code":0}},{"descriptor":187,"name":"pitch_roll_aiding_control_response","values":{"source":0}}]}'
+        ],
+    },
+    {
+        "name": "altitude_aiding_control_write",
+        "hex": "75650d040447010138b5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:81",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":71,"name":"altitude_aiding_control","values":{"function":1,"source":1}}]}'
+        ],
+    },
+    {
+        "name": "altitude_aiding_control_ack",
+        "hex": "75650d0404f14700273e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:91",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":71,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "altitude_aiding_control_read_reply",
+        "hex": "75650d0704f1470003b701e543",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:100",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":71,"ack_code":0}},{"descriptor":183,"name":"altitude_aiding_control_response","values":{"source":1}}]}'
+        ],
+    },
+    {
+        "name": "mag_noise_std_dev_write",
+        "hex": "75650d0f0f42013ca3d70a3ca3d70a3ca3d70a88d3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:116",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":66,"name":"mag_noise_std_dev","values":{"function":1,"noise":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}'
+        ],
+    },
+    {
+        "name": "mag_noise_std_dev_ack",
+        "hex": "75650d0404f142002234",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:129",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":66,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_noise_std_dev_read_reply",
+        "hex": "75650d1204f142000eb13ca3d70a3d0000003f0000002b50",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:138",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":66,"ack_code":0}},{"descriptor":177,"name":"mag_noise_std_dev_response","values":{"noise":[0.019999999552965164,0.03125,0.5]}}]}'
+        ],
+    },
+    {
+        "name": "gravity_noise_std_dev_write",
+        "hex": "75650d0f0f28013c23d70a3c23d70a3c23d70aeee7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:154",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":40,"name":"gravity_noise_std_dev","values":{"function":1,"noise":[0.009999999776482582,0.009999999776482582,0.009999999776482582]}}]}'
+        ],
+    },
+    {
+        "name": "gravity_noise_std_dev_ack",
+        "hex": "75650d0404f128000800",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:170",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gravity_noise_std_dev_read",
+        "hex": "75650d030328021739",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:183",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":40,"name":"gravity_noise_std_dev","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "gravity_noise_std_dev_read_reply",
+        "hex": "75650d1204f128000e933c23d70a3c8000003e800000719e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:196",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":147,"name":"gravity_noise_std_dev_response","values":{"noise":[0.009999999776482582,0.015625,0.25]}}]}'
+        ],
+    },
+    {
+        "name": "gravity_noise_std_dev_load",
+        "hex": "75650d03032804193b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:212",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":40,"name":"gravity_noise_std_dev","values":{"function":4}}]}'
+        ],
+    },
+    {
+        "name": "pressure_altitude_noise_std_dev_write",
+        "hex": "75650d070729013f800000de4e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:225",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":41,"name":"pressure_altitude_noise_std_dev","values":{"function":1,"noise":1.0}}]}'
+        ],
+    },
+    {
+        "name": "pressure_altitude_noise_std_dev_write_published",
+        "hex": "75650d050529013f800000de4e",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:239",
+        "expect": ['{"offset":0,"skipped":"75650d050529013f800000de4e"}'],
+    },
+    {
+        "name": "pressure_altitude_noise_std_dev_ack",
+        "hex": "75650d0404f129000902",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:252",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":41,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "pressure_altitude_noise_std_dev_ack_published",
+        "hex": "75650d0404f1290097ac",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:266",
+        "expect": ['{"offset":0,"skipped":"75650d0404f1290097ac"}'],
+    },
+    {
+        "name": "pressure_altitude_noise_std_dev_read_reply",
+        "hex": "75650d0a04f1290006944020000009e2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:278",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":41,"ack_code":0}},{"descriptor":148,"name":"pressure_altitude_noise_std_dev_response","values":{"noise":2.5}}]}'
+        ],
+    },
+    {
+        "name": "hard_iron_offset_noise_write",
+        "hex": "75650d0f0f2b013a83126f3a83126f3a83126febd2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:294",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":43,"name":"hard_iron_offset_noise","values":{"function":1,"noise":[0.0010000000474974513,0.0010000000474974513,0.0010000000474974513]}}]}'
+        ],
+    },
+    {
+        "name": "hard_iron_offset_noise_ack",
+        "hex": "75650d0404f12b000b06",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:304",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":43,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "hard_iron_offset_noise_read_reply",
+        "hex": "75650d1204f12b000e963a83126f3b03126f3b83126ff98c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:313",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":43,"ack_code":0}},{"descriptor":150,"name":"hard_iron_offset_noise_response","values":{"noise":[0.0010000000474974513,0.0020000000949949026,0.004000000189989805]}}]}'
+        ],
+    },
+    {
+        "name": "soft_iron_matrix_noise_write",
+        "hex": "75650d27272c0138d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b717f18c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:329",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":44,"name":"soft_iron_matrix_noise","values":{"function":1,"noise":[9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05]}}]}'
+        ],
+    },
+    {
+        "name": "soft_iron_matrix_noise_table_published",
+        "hex": "75650d0f0f2c0138d1b71738d1b71738d1b717f18c",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:343",
+        "expect": ['{"offset":0,"skipped":"75650d0f0f2c0138d1b71738d1b71738d1b717f18c"}'],
+    },
+    {
+        "name": "soft_iron_matrix_noise_ack",
+        "hex": "75650d0404f12c000c08",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:357",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":44,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "soft_iron_matrix_noise_ack_published",
+        "hex": "75650d0404f12c009ab2",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:371",
+        "expect": ['{"offset":0,"skipped":"75650d0404f12c009ab2"}'],
+    },
+    {
+        "name": "soft_iron_matrix_noise_read_reply",
+        "hex": "75650d2a04f12c00269738d1b7170000000000000000000000003951b717000000000000000000000000399d49528fdc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:383",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":44,"ack_code":0}},{"descriptor":151,"name":"soft_iron_matrix_noise_response","values":{"noise":[9.999999747378752e-05,0.0,0.0,0.0,0.00019999999494757503,0.0,0.0,0.0,0.0003000000142492354]}}]}'
+        ],
+    },
+    {
+        "name": "zero_angular_rate_update_control_write",
+        "hex": "75650d08082001010000000019c8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:401",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":32,"name":"zero_angular_rate_update_control","values":{"function":1,"enable":1,"threshold":0.0}}]}'
+        ],
+    },
+    {
+        "name": "zero_angular_rate_update_control_ack",
+        "hex": "75650d0404f1200000f0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:411",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":32,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "zero_angular_rate_update_control_read_reply",
+        "hex": "75650d0b04f12000078e013d4ccccdbf0b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:420",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":32,"ack_code":0}},{"descriptor":142,"name":"zero_angular_rate_update_control_response","values":{"enable":1,"threshold":0.05000000074505806}}]}'
+        ],
+    },
+    {
+        "name": "zero_angular_rate_update_control_default",
+        "hex": "75650d03032005122c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:436",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":32,"name":"zero_angular_rate_update_control","values":{"function":5}}]}'
+        ],
+    },
+    {
+        "name": "tare_orientation_write",
+        "hex": "75650d04042101071849",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:450",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":33,"name":"tare_orientation","values":{"function":1,"axes":7}}]}'
+        ],
+    },
+    {
+        "name": "tare_orientation_ack",
+        "hex": "75650d0404f1210001f2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:460",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":33,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "tare_orientation_reset_all",
+        "hex": "75650d04042101001142",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:473",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":33,"name":"tare_orientation","values":{"function":1,"axes":0}}]}'
+        ],
+    },
+    {
+        "name": "tare_orientation_save",
+        "hex": "75650d03032103112c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:486",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":33,"name":"tare_orientation","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "commanded_zupt",
+        "hex": "75650d0202220d17",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:500",
+        "expect": ['{"offset":0,"set":13,"fields":[{"descriptor":34,"name":"commanded_zupt","values":{}}]}'],
+    },
+    {
+        "name": "commanded_zupt_ack",
+        "hex": "75650d0404f1220002f4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:510",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "commanded_zero_angular_rate_update",
+        "hex": "75650d0202230e18",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:519",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":35,"name":"commanded_zero_angular_rate_update","values":{}}]}'
+        ],
+    },
+    {
+        "name": "commanded_zero_angular_rate_update_ack",
+        "hex": "75650d0404f1230003f6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:529",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":35,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "declination_source_write",
+        "hex": "75650d0808430103000000003ec7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:539",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":67,"name":"declination_source","values":{"function":1,"source":3,"declination":0.0}}]}'
+        ],
+    },
+    {
+        "name": "declination_source_ack",
+        "hex": "75650d0404f143002336",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:548",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":67,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "declination_source_read_reply",
+        "hex": "75650d0b04f1430007b202be800000235e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:557",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":67,"ack_code":0}},{"descriptor":178,"name":"declination_source_response","values":{"source":2,"declination":-0.25}}]}'
+        ],
+    },
+    {
+        "name": "declination_source_write_none_cv7",
+        "hex": "75650d0808430101000000003cbd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:574",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":67,"name":"declination_source","values":{"function":1,"source":1,"declination":0.0}}]}'
+        ],
+    },
+    {
+        "name": "inclination_source_write",
+        "hex": "75650d08084c0103000000004706",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:588",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":76,"name":"inclination_source","values":{"function":1,"source":3,"inclination":0.0}}]}'
+        ],
+    },
+    {
+        "name": "inclination_source_ack",
+        "hex": "75650d0404f14c002c48",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:597",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":76,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "inclination_source_read_reply",
+        "hex": "75650d0b04f14c0007bc033f900000c824",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:606",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":76,"ack_code":0}},{"descriptor":188,"name":"inclination_source_response","values":{"source":3,"inclination":1.125}}]}'
+        ],
+    },
+    {
+        "name": "magnetic_field_magnitude_source_write",
+        "hex": "75650d08084d01033f0000008709",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:622",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":77,"name":"magnetic_field_magnitude_source","values":{"function":1,"source":3,"magnitude":0.5}}]}'
+        ],
+    },
+    {
+        "name": "magnetic_field_magnitude_source_ack",
+        "hex": "75650d0404f14d002d4a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:638",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":77,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "magnetic_field_magnitude_source_read_reply",
+        "hex": "75650d0b04f14d0007bd013f0000003879",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:647",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":77,"ack_code":0}},{"descriptor":189,"name":"magnetic_field_magnitude_source_response","values":{"source":1,"magnitude":0.5}}]}'
+        ],
+    },
+    {
+        "name": "gravity_magnitude_adaptive_measurement_write",
+        "hex": "75650d1c1c4401013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f6fe8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:664",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":68,"name":"gravity_magnitude_adaptive_measurement","values":{"function":1,"mode":1,"frequency":1.0,"low_limit":-0.20000000298023224,"high_limit":0.20000000298023224,"low_limit_uncertainty":0.20000000298023224,"high_limit_uncertainty":0.20000000298023224,"minimum_uncertainty":0.004000000189989805}}]}'
+        ],
+    },
+    {
+        "name": "gravity_magnitude_adaptive_measurement_ack",
+        "hex": "75650d0404f144002438",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:680",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":68,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gravity_magnitude_adaptive_measurement_ack_published",
+        "hex": "75650d0404f14400b2e2",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:694",
+        "expect": ['{"offset":0,"skipped":"75650d0404f14400b2e2"}'],
+    },
+    {
+        "name": "gravity_magnitude_adaptive_measurement_auto_only",
+        "hex": "75650d040444010236ad",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:706",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":68,"name":"gravity_magnitude_adaptive_measurement","values":{"function":1,"mode":2}}]}'
+        ],
+    },
+    {
+        "name": "gravity_magnitude_adaptive_measurement_read_reply",
+        "hex": "75650d1f04f144001bb3023f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f1989",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:720",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":68,"ack_code":0}},{"descriptor":179,"name":"gravity_magnitude_adaptive_measurement_response","values":{"mode":2,"frequency":1.0,"low_limit":-0.20000000298023224,"high_limit":0.20000000298023224,"low_limit_uncertainty":0.20000000298023224,"high_limit_uncertainty":0.20000000298023224,"minimum_uncertainty":0.004000000189989805}}]}'
+        ],
+    },
+    {
+        "name": "mag_magnitude_adaptive_measurement_write",
+        "hex": "75650d1c1c4501013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f7003",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:738",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":69,"name":"mag_magnitude_adaptive_measurement","values":{"function":1,"mode":1,"frequency":1.0,"low_limit":-0.20000000298023224,"high_limit":0.20000000298023224,"low_limit_uncertainty":0.20000000298023224,"high_limit_uncertainty":0.20000000298023224,"minimum_uncertainty":0.004000000189989805}}]}'
+        ],
+    },
+    {
+        "name": "mag_magnitude_adaptive_measurement_ack",
+        "hex": "75650d0404f14500253a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:754",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":69,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_magnitude_adaptive_measurement_ack_published",
+        "hex": "75650d0404f14500b3e4",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:768",
+        "expect": ['{"offset":0,"skipped":"75650d0404f14500b3e4"}'],
+    },
+    {
+        "name": "mag_magnitude_adaptive_measurement_disable",
+        "hex": "75650d040445010035ae",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:780",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":69,"name":"mag_magnitude_adaptive_measurement","values":{"function":1,"mode":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_magnitude_adaptive_measurement_read_reply",
+        "hex": "75650d1f04f145001bb401400000003e8000003f4000003e0000003e0000003c23d70a49ac",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:793",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":69,"ack_code":0}},{"descriptor":180,"name":"mag_magnitude_adaptive_measurement_response","values":{"mode":1,"frequency":2.0,"low_limit":0.25,"high_limit":0.75,"low_limit_uncertainty":0.125,"high_limit_uncertainty":0.125,"minimum_uncertainty":0.009999999776482582}}]}'
+        ],
+    },
+    {
+        "name": "mag_dip_angle_adaptive_measurement_write",
+        "hex": "75650d1414460101412000003e99999a3e4ccccd3c23d70a255f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:812",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":70,"name":"mag_dip_angle_adaptive_measurement","values":{"function":1,"mode":1,"frequency":10.0,"high_limit":0.30000001192092896,"high_limit_uncertainty":0.20000000298023224,"minimum_uncertainty":0.009999999776482582}}]}'
+        ],
+    },
+    {
+        "name": "mag_dip_angle_adaptive_measurement_ack",
+        "hex": "75650d0404f14600263c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:827",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":70,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_dip_angle_adaptive_measurement_ack_published",
+        "hex": "75650d0404f14600b4e6",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:841",
+        "expect": ['{"offset":0,"skipped":"75650d0404f14600b4e6"}'],
+    },
+    {
+        "name": "mag_dip_angle_adaptive_measurement_read_reply",
+        "hex": "75650d1704f1460013b500412000003e99999a3e4ccccd3c23d70acfa6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:853",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":70,"ack_code":0}},{"descriptor":181,"name":"mag_dip_angle_adaptive_measurement_response","values":{"mode":0,"frequency":10.0,"high_limit":0.30000001192092896,"high_limit_uncertainty":0.20000000298023224,"minimum_uncertainty":0.009999999776482582}}]}'
+        ],
+    },
+    {
+        "name": "mag_capture_auto_calibration_write",
+        "hex": "75650d030327011536",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:870",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":39,"name":"mag_capture_auto_calibration","values":{"function":1}}]}'
+        ],
+    },
+    {
+        "name": "mag_capture_auto_calibration_table_published",
+        "hex": "75650d020227011536",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:880",
+        "expect": ['{"offset":0,"skipped":"75650d020227011536"}'],
+    },
+    {
+        "name": "mag_capture_auto_calibration_ack",
+        "hex": "75650d0404f1270007fe",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:894",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":39,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_capture_auto_calibration_ack_published",
+        "hex": "75650d0404f1270095a8",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/filter_20_64.yaml:908",
+        "expect": ['{"offset":0,"skipped":"75650d0404f1270095a8"}'],
+    },
+    {
+        "name": "mag_capture_auto_calibration_save",
+        "hex": "75650d030327031738",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:920",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":39,"name":"mag_capture_auto_calibration","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "aiding_measurement_control_write",
+        "hex": "75650d060650010004004871",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:934",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":80,"name":"aiding_measurement_control","values":{"function":1,"source":4,"enable":false}}]}'
+        ],
+    },
+    {
+        "name": "aiding_measurement_control_read",
+        "hex": "75650d050550020001441e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:947",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":80,"name":"aiding_measurement_control","values":{"function":2,"source":1}}]}'
+        ],
+    },
+    {
+        "name": "aiding_measurement_control_save_all",
+        "hex": "75650d05055003ffff421d",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:960",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":80,"name":"aiding_measurement_control","values":{"function":3,"source":65535}}]}'
+        ],
+    },
+    {
+        "name": "aiding_measurement_control_read_reply",
+        "hex": "75650d0904f1500005d00001010cce",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:973",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":80,"ack_code":0}},{"descriptor":208,"name":"aiding_measurement_control_response","values":{"source":1,"enable":true}}]}'
+        ],
+    },
+    {
+        "name": "aiding_measurement_control_write_external_heading",
+        "hex": "75650d060650010005014a74",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:988",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":80,"name":"aiding_measurement_control","values":{"function":1,"source":5,"enable":true}}]}'
+        ],
+    },
+    {
+        "name": "initialization_configuration_write_manual_llh",
+        "hex": "75650d2b2b520100030042b4000040200000bfc000004231c000c292400042c900003f800000bf0000000000000002ba90",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1002",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":82,"name":"initialization_configuration","values":{"function":1,"wait_for_run_command":0,"initial_cond_src":3,"auto_heading_alignment_selector":0,"initial_heading":90.0,"initial_pitch":2.5,"initial_roll":-1.5,"initial_position":[44.4375,-73.125,100.5],"initial_velocity":[1.0,-0.5,0.0],"reference_frame_selector":2}}]}'
+        ],
+    },
+    {
+        "name": "initialization_configuration_write_auto",
+        "hex": "75650d2b2b5201010006000000000000000000000000000000000000000000000000000000000000000000000000019831",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1022",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":82,"name":"initialization_configuration","values":{"function":1,"wait_for_run_command":1,"initial_cond_src":0,"auto_heading_alignment_selector":6,"initial_heading":0.0,"initial_pitch":0.0,"initial_roll":0.0,"initial_position":[0.0,0.0,0.0],"initial_velocity":[0.0,0.0,0.0],"reference_frame_selector":1}}]}'
+        ],
+    },
+    {
+        "name": "initialization_configuration_read",
+        "hex": "75650d03035202418d",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1040",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":82,"name":"initialization_configuration","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "initialization_configuration_read_reply",
+        "hex": "75650d2e04f152002ad2000109c234000000000000000000004987e357ca93df524a73218e000000003e800000be00000001d954",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1052",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":82,"ack_code":0}},{"descriptor":210,"name":"initialization_configuration_response","values":{"wait_for_run_command":0,"initial_cond_src":1,"auto_heading_alignment_selector":9,"initial_heading":-45.0,"initial_pitch":0.0,"initial_roll":0.0,"initial_position":[1113194.875,-4845481.0,3983459.5],"initial_velocity":[0.0,0.25,-0.125],"reference_frame_selector":1}}]}'
+        ],
+    },
+    {
+        "name": "adaptive_filter_control_write",
+        "hex": "75650d06065301033a981c8d",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1075",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":83,"name":"adaptive_filter_control","values":{"function":1,"level":3,"time_limit":15000}}]}'
+        ],
+    },
+    {
+        "name": "adaptive_filter_control_read_reply",
+        "hex": "75650d0904f1530005d30001f405e2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1088",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":83,"ack_code":0}},{"descriptor":211,"name":"adaptive_filter_control_response","values":{"level":0,"time_limit":500}}]}'
+        ],
+    },
+    {
+        "name": "multi_antenna_offset_write",
+        "hex": "75650d10105401023f000000be800000bf8000001a91",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1104",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":84,"name":"multi_antenna_offset","values":{"function":1,"receiver_id":2,"antenna_offset":[0.5,-0.25,-1.0]}}]}'
+        ],
+    },
+    {
+        "name": "multi_antenna_offset_read",
+        "hex": "75650d040454020146de",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1118",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":84,"name":"multi_antenna_offset","values":{"function":2,"receiver_id":1}}]}'
+        ],
+    },
+    {
+        "name": "multi_antenna_offset_read_reply",
+        "hex": "75650d1304f154000fd401bea3d70a3de147aebf23d70a3ffb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1131",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":84,"ack_code":0}},{"descriptor":212,"name":"multi_antenna_offset_response","values":{"receiver_id":1,"antenna_offset":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}'
+        ],
+    },
+    {
+        "name": "relative_position_configuration_write",
+        "hex": "75650d1d1d550101024046380000000000c052480000000000404ba00000000000bd4f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1149",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":85,"name":"relative_position_configuration","values":{"function":1,"source":1,"reference_frame_selector":2,"reference_coordinates":[44.4375,-73.125,55.25]}}]}'
+        ],
+    },
+    {
+        "name": "relative_position_configuration_read_reply",
+        "hex": "75650d2004f155001cd500014130fc6ae86e47a0c1527bea41eb851f414e6431e0000000a3eb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1164",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":85,"ack_code":0}},{"descriptor":213,"name":"relative_position_configuration_response","values":{"source":0,"reference_frame_selector":1,"reference_coordinates":[1113194.907932736,-4845481.03,3983459.75]}}]}'
+        ],
+    },
+    {
+        "name": "reference_point_lever_arm_write",
+        "hex": "75650d10105601013fc0000000000000bf4000005db2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1182",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":86,"name":"reference_point_lever_arm","values":{"function":1,"ref_point_sel":1,"lever_arm_offset":[1.5,0.0,-0.75]}}]}'
+        ],
+    },
+    {
+        "name": "reference_point_lever_arm_read_reply",
+        "hex": "75650d1304f156000fd6013fc0000000000000bf4000002944",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1196",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":86,"ack_code":0}},{"descriptor":214,"name":"reference_point_lever_arm_response","values":{"ref_point_sel":1,"lever_arm_offset":[1.5,0.0,-0.75]}}]}'
+        ],
+    },
+    {
+        "name": "speed_lever_arm_write",
+        "hex": "75650d1010610101bf000000bf4000003e800000e68b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1212",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":97,"name":"speed_lever_arm","values":{"function":1,"source":1,"lever_arm_offset":[-0.5,-0.75,0.25]}}]}'
+        ],
+    },
+    {
+        "name": "speed_lever_arm_read",
+        "hex": "75650d04046102015305",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1226",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":97,"name":"speed_lever_arm","values":{"function":2,"source":1}}]}'
+        ],
+    },
+    {
+        "name": "speed_lever_arm_read_reply",
+        "hex": "75650d1304f161000fe101bf000000bf4000003e800000bdcd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1239",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":97,"ack_code":0}},{"descriptor":225,"name":"speed_lever_arm_response","values":{"source":1,"lever_arm_offset":[-0.5,-0.75,0.25]}}]}'
+        ],
+    },
+    {
+        "name": "wheeled_vehicle_constraint_control_write",
+        "hex": "75650d04046301015409",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1255",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":99,"name":"wheeled_vehicle_constraint_control","values":{"function":1,"enable":1}}]}'
+        ],
+    },
+    {
+        "name": "wheeled_vehicle_constraint_control_read_reply",
+        "hex": "75650d0704f1630003e3002c26",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1267",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":99,"ack_code":0}},{"descriptor":227,"name":"wheeled_vehicle_constraint_control_response","values":{"enable":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_antenna_calibration_control_write",
+        "hex": "75650d08086401013f0000009ca0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1283",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":100,"name":"gnss_antenna_calibration_control","values":{"function":1,"enable":1,"max_offset":0.5}}]}'
+        ],
+    },
+    {
+        "name": "gnss_antenna_calibration_control_read_reply",
+        "hex": "75650d0b04f1640007e4013dcccccdd9f3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1297",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":100,"ack_code":0}},{"descriptor":228,"name":"gnss_antenna_calibration_control_response","values":{"enable":1,"max_offset":0.10000000149011612}}]}'
+        ],
+    },
+    {
+        "name": "two_settings_one_packet",
+        "hex": "75650d06036302035302ad6b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1314",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":99,"name":"wheeled_vehicle_constraint_control","values":{"function":2}},{"descriptor":83,"name":"adaptive_filter_control","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "two_settings_one_packet_reply",
+        "hex": "75650d1004f1630003e30104f1530005d3023a982abd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_20_64.yaml:1328",
+        "expect": [
+            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":99,"ack_code":0}},{"descriptor":227,"name":"wheeled_vehicle_constraint_control_response","values":{"enable":1}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":83,"ack_code":0}},{"descriptor":211,"name":"adaptive_filter_control_response","values":{"level":2,"time_limit":15000}}]}'
+        ],
+    },
+    {
         "name": "receiver_info_command",
         "hex": "75650e020201edfa",
         "device": None,

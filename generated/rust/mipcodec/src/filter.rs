@@ -2797,6 +2797,5312 @@ impl crate::wire::Layout for ExternalHeadingUpdateWithTime {
     const NAME: &'static str = "external_heading_update_with_time";
 }
 
+/// Zero angular rate update control. Control the zero angular rate update: when the magnitude of the angular rate vector is at or below the threshold, the filter applies a zero angular rate update. Negative thresholds are NACK'd.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ZeroAngularRateUpdateControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// 0 disables, 1 enables the update. Sent for: write.
+    pub enable: Option<u8>,
+    /// Angular rate magnitude at or below which the update is applied. Units: rad/s. Sent for: write.
+    pub threshold: Option<f32>,
+}
+
+impl Default for ZeroAngularRateUpdateControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ZeroAngularRateUpdateControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        enable: None,
+        threshold: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_enable = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?)
+        } else {
+            None
+        };
+        let p_threshold = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("threshold"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            enable: p_enable,
+            threshold: p_threshold,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.enable {
+            optionals.present("enable")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        } else {
+            optionals.absent("enable");
+        }
+        if let Some(v) = &self.threshold {
+            optionals.present("threshold")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("threshold"))?;
+        } else {
+            optionals.absent("threshold");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.enable {
+            crate::json::key(w, &mut first, "enable")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.threshold {
+            crate::json::key(w, &mut first, "threshold")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ZeroAngularRateUpdateControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "enable", "threshold"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_enable = o.opt("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_threshold = o.opt("threshold", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            enable: p_enable,
+            threshold: p_threshold,
+        })
+    }
+}
+
+impl ZeroAngularRateUpdateControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for ZeroAngularRateUpdateControl {
+    const DESCRIPTOR: u8 = 0x20;
+    const NAME: &'static str = "zero_angular_rate_update_control";
+}
+
+/// Zero angular rate update control (response). Current zero angular rate update settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ZeroAngularRateUpdateControlResponse {
+    /// 0 disabled, 1 enabled.
+    pub enable: u8,
+    /// Angular rate threshold. Units: rad/s.
+    pub threshold: f32,
+}
+
+impl Default for ZeroAngularRateUpdateControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ZeroAngularRateUpdateControlResponse {
+    const ZERO: Self = Self {
+        enable: <u8 as crate::wire::Wire>::ZERO,
+        threshold: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
+        let p_threshold = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("threshold"))?;
+        Ok(Self {
+            enable: p_enable,
+            threshold: p_threshold,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.enable;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        let v = &self.threshold;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("threshold"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.enable;
+        crate::json::key(w, &mut first, "enable")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.threshold;
+        crate::json::key(w, &mut first, "threshold")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ZeroAngularRateUpdateControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["enable", "threshold"])?;
+        let p_enable = o.req("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_threshold = o.req("threshold", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            enable: p_enable,
+            threshold: p_threshold,
+        })
+    }
+}
+
+impl ZeroAngularRateUpdateControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for ZeroAngularRateUpdateControlResponse {
+    const DESCRIPTOR: u8 = 0x8E;
+    const NAME: &'static str = "zero_angular_rate_update_control_response";
+}
+
+/// Tare orientation. Use the current orientation relative to NED as the sensor-to-vehicle transformation for the selected axes. The filter must be initialized with a valid attitude, otherwise the command is NACK'd. Read is not supported.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TareOrientation {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Axes to tare; 0 resets all axes. Sent for: write.
+    pub axes: Option<crate::types::TareAxes>,
+}
+
+impl Default for TareOrientation {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for TareOrientation {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        axes: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_axes = if r.left() > 0 {
+            Some(
+                <crate::types::TareAxes as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("axes"))?,
+            )
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            axes: p_axes,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.axes {
+            optionals.present("axes")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("axes"))?;
+        } else {
+            optionals.absent("axes");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.axes {
+            crate::json::key(w, &mut first, "axes")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TareOrientation {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "axes"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_axes = o.opt(
+            "axes",
+            <crate::types::TareAxes as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            axes: p_axes,
+        })
+    }
+}
+
+impl TareOrientation {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for TareOrientation {
+    const DESCRIPTOR: u8 = 0x21;
+    const NAME: &'static str = "tare_orientation";
+}
+
+/// Commanded zero velocity update. Apply a zero velocity update now (at most 20 Hz).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CommandedZupt {}
+
+impl Default for CommandedZupt {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for CommandedZupt {
+    const ZERO: Self = Self {};
+    const FIXED_SIZE: Option<usize> = Some(0);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let _ = r;
+        Ok(Self {})
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let _ = w;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        w.write_str("{}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for CommandedZupt {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        crate::json_read::Obj::new(v, &[])?;
+        Ok(Self {})
+    }
+}
+
+impl CommandedZupt {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for CommandedZupt {
+    const DESCRIPTOR: u8 = 0x22;
+    const NAME: &'static str = "commanded_zupt";
+}
+
+/// Commanded zero angular rate update. Apply a zero angular rate update now (at most 10 Hz).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CommandedZeroAngularRateUpdate {}
+
+impl Default for CommandedZeroAngularRateUpdate {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for CommandedZeroAngularRateUpdate {
+    const ZERO: Self = Self {};
+    const FIXED_SIZE: Option<usize> = Some(0);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let _ = r;
+        Ok(Self {})
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let _ = w;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        w.write_str("{}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for CommandedZeroAngularRateUpdate {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        crate::json_read::Obj::new(v, &[])?;
+        Ok(Self {})
+    }
+}
+
+impl CommandedZeroAngularRateUpdate {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for CommandedZeroAngularRateUpdate {
+    const DESCRIPTOR: u8 = 0x23;
+    const NAME: &'static str = "commanded_zero_angular_rate_update";
+}
+
+/// Magnetometer capture auto calibration. Capture the current auto-calibration, fold it into the fixed hard and soft iron coefficients and reset the auto-calibration. Function save stores the coefficients as startup settings (like saving 0x0C,0x3A and 0x0C,0x3B).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagCaptureAutoCalibration {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+}
+
+impl Default for MagCaptureAutoCalibration {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagCaptureAutoCalibration {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        Ok(Self {
+            function: p_function,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagCaptureAutoCalibration {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+        })
+    }
+}
+
+impl MagCaptureAutoCalibration {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagCaptureAutoCalibration {
+    const DESCRIPTOR: u8 = 0x27;
+    const NAME: &'static str = "mag_capture_auto_calibration";
+}
+
+/// Gravity noise standard deviation. Expected gravity noise (1-sigma) per axis, used to tune the filter. Each value must be greater than 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GravityNoiseStdDev {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Gravity noise 1-sigma (x, y, z). Units: g. Sent for: write.
+    pub noise: Option<[f32; 3]>,
+}
+
+impl Default for GravityNoiseStdDev {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GravityNoiseStdDev {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        noise: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_noise = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.noise {
+            optionals.present("noise")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        } else {
+            optionals.absent("noise");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.noise {
+            crate::json::key(w, &mut first, "noise")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GravityNoiseStdDev {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "noise"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_noise = o.opt("noise", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+}
+
+impl GravityNoiseStdDev {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for GravityNoiseStdDev {
+    const DESCRIPTOR: u8 = 0x28;
+    const NAME: &'static str = "gravity_noise_std_dev";
+}
+
+/// Gravity noise standard deviation (response). Current gravity noise 1-sigma values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GravityNoiseStdDevResponse {
+    /// Gravity noise 1-sigma (x, y, z). Units: g.
+    pub noise: [f32; 3],
+}
+
+impl Default for GravityNoiseStdDevResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GravityNoiseStdDevResponse {
+    const ZERO: Self = Self {
+        noise: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(12);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
+        Ok(Self { noise: p_noise })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.noise;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.noise;
+        crate::json::key(w, &mut first, "noise")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GravityNoiseStdDevResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["noise"])?;
+        let p_noise = o.req("noise", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { noise: p_noise })
+    }
+}
+
+impl GravityNoiseStdDevResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for GravityNoiseStdDevResponse {
+    const DESCRIPTOR: u8 = 0x93;
+    const NAME: &'static str = "gravity_noise_std_dev_response";
+}
+
+/// Pressure altitude noise standard deviation. Expected pressure altitude noise (1-sigma). Lower values make the height estimate follow pressure changes faster but more exposed to air pressure fluctuations. Must be greater than 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PressureAltitudeNoiseStdDev {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Pressure altitude noise 1-sigma. Units: m. Sent for: write.
+    pub noise: Option<f32>,
+}
+
+impl Default for PressureAltitudeNoiseStdDev {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for PressureAltitudeNoiseStdDev {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        noise: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_noise = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.noise {
+            optionals.present("noise")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        } else {
+            optionals.absent("noise");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.noise {
+            crate::json::key(w, &mut first, "noise")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for PressureAltitudeNoiseStdDev {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "noise"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_noise = o.opt("noise", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+}
+
+impl PressureAltitudeNoiseStdDev {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for PressureAltitudeNoiseStdDev {
+    const DESCRIPTOR: u8 = 0x29;
+    const NAME: &'static str = "pressure_altitude_noise_std_dev";
+}
+
+/// Pressure altitude noise standard deviation (response). Current pressure altitude noise 1-sigma.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PressureAltitudeNoiseStdDevResponse {
+    /// Pressure altitude noise 1-sigma. Units: m.
+    pub noise: f32,
+}
+
+impl Default for PressureAltitudeNoiseStdDevResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for PressureAltitudeNoiseStdDevResponse {
+    const ZERO: Self = Self {
+        noise: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(4);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_noise = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
+        Ok(Self { noise: p_noise })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.noise;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.noise;
+        crate::json::key(w, &mut first, "noise")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for PressureAltitudeNoiseStdDevResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["noise"])?;
+        let p_noise = o.req("noise", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { noise: p_noise })
+    }
+}
+
+impl PressureAltitudeNoiseStdDevResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for PressureAltitudeNoiseStdDevResponse {
+    const DESCRIPTOR: u8 = 0x94;
+    const NAME: &'static str = "pressure_altitude_noise_std_dev_response";
+}
+
+/// Hard iron offset process noise. Expected hard iron offset process noise (1-sigma) per axis, used to tune the magnetometer auto-calibration states. Each value must be greater than 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HardIronOffsetNoise {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Hard iron offset noise 1-sigma (x, y, z). Units: gauss. Sent for: write.
+    pub noise: Option<[f32; 3]>,
+}
+
+impl Default for HardIronOffsetNoise {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for HardIronOffsetNoise {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        noise: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_noise = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.noise {
+            optionals.present("noise")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        } else {
+            optionals.absent("noise");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.noise {
+            crate::json::key(w, &mut first, "noise")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for HardIronOffsetNoise {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "noise"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_noise = o.opt("noise", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+}
+
+impl HardIronOffsetNoise {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for HardIronOffsetNoise {
+    const DESCRIPTOR: u8 = 0x2B;
+    const NAME: &'static str = "hard_iron_offset_noise";
+}
+
+/// Hard iron offset process noise (response). Current hard iron offset process noise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HardIronOffsetNoiseResponse {
+    /// Hard iron offset noise 1-sigma (x, y, z). Units: gauss.
+    pub noise: [f32; 3],
+}
+
+impl Default for HardIronOffsetNoiseResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for HardIronOffsetNoiseResponse {
+    const ZERO: Self = Self {
+        noise: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(12);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
+        Ok(Self { noise: p_noise })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.noise;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.noise;
+        crate::json::key(w, &mut first, "noise")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for HardIronOffsetNoiseResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["noise"])?;
+        let p_noise = o.req("noise", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { noise: p_noise })
+    }
+}
+
+impl HardIronOffsetNoiseResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for HardIronOffsetNoiseResponse {
+    const DESCRIPTOR: u8 = 0x96;
+    const NAME: &'static str = "hard_iron_offset_noise_response";
+}
+
+/// Soft iron matrix process noise. Expected soft iron matrix process noise (1-sigma), one value per matrix element, row by row (m11, m12, m13, m21, ... m33). Each value must be greater than 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SoftIronMatrixNoise {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Soft iron matrix noise 1-sigma, row-major m11..m33. Sent for: write.
+    pub noise: Option<[f32; 9]>,
+}
+
+impl Default for SoftIronMatrixNoise {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SoftIronMatrixNoise {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        noise: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_noise = if r.left() > 0 {
+            Some(<[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.noise {
+            optionals.present("noise")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        } else {
+            optionals.absent("noise");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.noise {
+            crate::json::key(w, &mut first, "noise")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SoftIronMatrixNoise {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "noise"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_noise = o.opt("noise", <[f32; 9] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+}
+
+impl SoftIronMatrixNoise {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for SoftIronMatrixNoise {
+    const DESCRIPTOR: u8 = 0x2C;
+    const NAME: &'static str = "soft_iron_matrix_noise";
+}
+
+/// Soft iron matrix process noise (response). Current soft iron matrix process noise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SoftIronMatrixNoiseResponse {
+    /// Soft iron matrix noise 1-sigma, row-major m11..m33.
+    pub noise: [f32; 9],
+}
+
+impl Default for SoftIronMatrixNoiseResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SoftIronMatrixNoiseResponse {
+    const ZERO: Self = Self {
+        noise: <[f32; 9] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(36);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_noise = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
+        Ok(Self { noise: p_noise })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.noise;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.noise;
+        crate::json::key(w, &mut first, "noise")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SoftIronMatrixNoiseResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["noise"])?;
+        let p_noise = o.req("noise", <[f32; 9] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { noise: p_noise })
+    }
+}
+
+impl SoftIronMatrixNoiseResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for SoftIronMatrixNoiseResponse {
+    const DESCRIPTOR: u8 = 0x97;
+    const NAME: &'static str = "soft_iron_matrix_noise_response";
+}
+
+/// Magnetometer noise standard deviation. Expected magnetometer noise (1-sigma) per axis, used to tune the filter. Each value must be greater than 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagNoiseStdDev {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Magnetometer noise 1-sigma (x, y, z). Units: gauss. Sent for: write.
+    pub noise: Option<[f32; 3]>,
+}
+
+impl Default for MagNoiseStdDev {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagNoiseStdDev {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        noise: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_noise = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.noise {
+            optionals.present("noise")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        } else {
+            optionals.absent("noise");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.noise {
+            crate::json::key(w, &mut first, "noise")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagNoiseStdDev {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "noise"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_noise = o.opt("noise", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            noise: p_noise,
+        })
+    }
+}
+
+impl MagNoiseStdDev {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagNoiseStdDev {
+    const DESCRIPTOR: u8 = 0x42;
+    const NAME: &'static str = "mag_noise_std_dev";
+}
+
+/// Magnetometer noise standard deviation (response). Current magnetometer noise 1-sigma values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagNoiseStdDevResponse {
+    /// Magnetometer noise 1-sigma (x, y, z). Units: gauss.
+    pub noise: [f32; 3],
+}
+
+impl Default for MagNoiseStdDevResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagNoiseStdDevResponse {
+    const ZERO: Self = Self {
+        noise: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(12);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
+        Ok(Self { noise: p_noise })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.noise;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("noise"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.noise;
+        crate::json::key(w, &mut first, "noise")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagNoiseStdDevResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["noise"])?;
+        let p_noise = o.req("noise", <[f32; 3] as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { noise: p_noise })
+    }
+}
+
+impl MagNoiseStdDevResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagNoiseStdDevResponse {
+    const DESCRIPTOR: u8 = 0xB1;
+    const NAME: &'static str = "mag_noise_std_dev_response";
+}
+
+/// Declination source. Source of the local magnetic declination used to convert between magnetic and true north. With a valid declination the device reports heading relative to true north.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DeclinationSource {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Declination source. Sent for: write.
+    pub source: Option<crate::types::MagneticParamSource>,
+    /// Manual declination angle (used when source is manual). Units: rad. Sent for: write.
+    pub declination: Option<f32>,
+}
+
+impl Default for DeclinationSource {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for DeclinationSource {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: None,
+        declination: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = if r.left() > 0 {
+            Some(
+                <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("source"))?,
+            )
+        } else {
+            None
+        };
+        let p_declination = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("declination"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            declination: p_declination,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.source {
+            optionals.present("source")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        } else {
+            optionals.absent("source");
+        }
+        if let Some(v) = &self.declination {
+            optionals.present("declination")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("declination"))?;
+        } else {
+            optionals.absent("declination");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.source {
+            crate::json::key(w, &mut first, "source")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.declination {
+            crate::json::key(w, &mut first, "declination")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for DeclinationSource {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source", "declination"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.opt(
+            "source",
+            <crate::types::MagneticParamSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_declination = o.opt(
+            "declination",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            declination: p_declination,
+        })
+    }
+}
+
+impl DeclinationSource {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for DeclinationSource {
+    const DESCRIPTOR: u8 = 0x43;
+    const NAME: &'static str = "declination_source";
+}
+
+/// Declination source (response). Current declination source and angle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DeclinationSourceResponse {
+    /// Declination source.
+    pub source: crate::types::MagneticParamSource,
+    /// Declination angle. Units: rad.
+    pub declination: f32,
+}
+
+impl Default for DeclinationSourceResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for DeclinationSourceResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::MagneticParamSource as crate::wire::Wire>::ZERO,
+        declination: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        let p_declination =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("declination"))?;
+        Ok(Self {
+            source: p_source,
+            declination: p_declination,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        let v = &self.declination;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("declination"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.declination;
+        crate::json::key(w, &mut first, "declination")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for DeclinationSourceResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source", "declination"])?;
+        let p_source = o.req(
+            "source",
+            <crate::types::MagneticParamSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_declination = o.req(
+            "declination",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            source: p_source,
+            declination: p_declination,
+        })
+    }
+}
+
+impl DeclinationSourceResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for DeclinationSourceResponse {
+    const DESCRIPTOR: u8 = 0xB2;
+    const NAME: &'static str = "declination_source_response";
+}
+
+/// Gravity magnitude error adaptive measurement. Configure the gravity (accelerometer) magnitude error adaptive measurement, which rejects or de-weights gravity-vector aiding while the measured acceleration magnitude is off. The filter and limit parameters are used only in fixed mode and may be left out: with only the function and mode, the other values keep their previous settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GravityMagnitudeAdaptiveMeasurement {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Disabled, fixed or auto-adaptive. Sent for: write.
+    pub mode: Option<crate::types::AdaptiveMeasurementMode>,
+    /// Low-pass filter cutoff frequency. Units: Hz. Sent for: write.
+    pub frequency: Option<f32>,
+    /// Low limit. Units: m/s^2. Sent for: write.
+    pub low_limit: Option<f32>,
+    /// High limit. Units: m/s^2. Sent for: write.
+    pub high_limit: Option<f32>,
+    /// Low limit uncertainty, 1-sigma. Units: m/s^2. Sent for: write.
+    pub low_limit_uncertainty: Option<f32>,
+    /// High limit uncertainty, 1-sigma. Units: m/s^2. Sent for: write.
+    pub high_limit_uncertainty: Option<f32>,
+    /// Minimum uncertainty, 1-sigma. Units: m/s^2. Sent for: write.
+    pub minimum_uncertainty: Option<f32>,
+}
+
+impl Default for GravityMagnitudeAdaptiveMeasurement {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GravityMagnitudeAdaptiveMeasurement {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        mode: None,
+        frequency: None,
+        low_limit: None,
+        high_limit: None,
+        low_limit_uncertainty: None,
+        high_limit_uncertainty: None,
+        minimum_uncertainty: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_mode = if r.left() > 0 {
+            Some(
+                <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("mode"))?,
+            )
+        } else {
+            None
+        };
+        let p_frequency = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frequency"))?)
+        } else {
+            None
+        };
+        let p_low_limit = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit"))?)
+        } else {
+            None
+        };
+        let p_high_limit = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit"))?)
+        } else {
+            None
+        };
+        let p_low_limit_uncertainty = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit_uncertainty"))?)
+        } else {
+            None
+        };
+        let p_high_limit_uncertainty = if r.left() > 0 {
+            Some(
+                <f32 as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("high_limit_uncertainty"))?,
+            )
+        } else {
+            None
+        };
+        let p_minimum_uncertainty = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("minimum_uncertainty"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.mode {
+            optionals.present("mode")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        } else {
+            optionals.absent("mode");
+        }
+        if let Some(v) = &self.frequency {
+            optionals.present("frequency")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("frequency"))?;
+        } else {
+            optionals.absent("frequency");
+        }
+        if let Some(v) = &self.low_limit {
+            optionals.present("low_limit")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit"))?;
+        } else {
+            optionals.absent("low_limit");
+        }
+        if let Some(v) = &self.high_limit {
+            optionals.present("high_limit")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit"))?;
+        } else {
+            optionals.absent("high_limit");
+        }
+        if let Some(v) = &self.low_limit_uncertainty {
+            optionals.present("low_limit_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit_uncertainty"))?;
+        } else {
+            optionals.absent("low_limit_uncertainty");
+        }
+        if let Some(v) = &self.high_limit_uncertainty {
+            optionals.present("high_limit_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit_uncertainty"))?;
+        } else {
+            optionals.absent("high_limit_uncertainty");
+        }
+        if let Some(v) = &self.minimum_uncertainty {
+            optionals.present("minimum_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("minimum_uncertainty"))?;
+        } else {
+            optionals.absent("minimum_uncertainty");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.mode {
+            crate::json::key(w, &mut first, "mode")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.frequency {
+            crate::json::key(w, &mut first, "frequency")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.low_limit {
+            crate::json::key(w, &mut first, "low_limit")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.high_limit {
+            crate::json::key(w, &mut first, "high_limit")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.low_limit_uncertainty {
+            crate::json::key(w, &mut first, "low_limit_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.high_limit_uncertainty {
+            crate::json::key(w, &mut first, "high_limit_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.minimum_uncertainty {
+            crate::json::key(w, &mut first, "minimum_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GravityMagnitudeAdaptiveMeasurement {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "function",
+                "mode",
+                "frequency",
+                "low_limit",
+                "high_limit",
+                "low_limit_uncertainty",
+                "high_limit_uncertainty",
+                "minimum_uncertainty",
+            ],
+        )?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_mode = o.opt(
+            "mode",
+            <crate::types::AdaptiveMeasurementMode as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_frequency = o.opt("frequency", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit = o.opt("low_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit = o.opt("high_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit_uncertainty = o.opt(
+            "low_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_high_limit_uncertainty = o.opt(
+            "high_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_minimum_uncertainty = o.opt(
+            "minimum_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+}
+
+impl GravityMagnitudeAdaptiveMeasurement {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for GravityMagnitudeAdaptiveMeasurement {
+    const DESCRIPTOR: u8 = 0x44;
+    const NAME: &'static str = "gravity_magnitude_adaptive_measurement";
+}
+
+/// Gravity magnitude error adaptive measurement (response). Current gravity magnitude adaptive measurement settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GravityMagnitudeAdaptiveMeasurementResponse {
+    /// Disabled, fixed or auto-adaptive.
+    pub mode: crate::types::AdaptiveMeasurementMode,
+    /// Low-pass filter cutoff frequency. Units: Hz.
+    pub frequency: f32,
+    /// Low limit. Units: m/s^2.
+    pub low_limit: f32,
+    /// High limit. Units: m/s^2.
+    pub high_limit: f32,
+    /// Low limit uncertainty, 1-sigma. Units: m/s^2.
+    pub low_limit_uncertainty: f32,
+    /// High limit uncertainty, 1-sigma. Units: m/s^2.
+    pub high_limit_uncertainty: f32,
+    /// Minimum uncertainty, 1-sigma. Units: m/s^2.
+    pub minimum_uncertainty: f32,
+}
+
+impl Default for GravityMagnitudeAdaptiveMeasurementResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GravityMagnitudeAdaptiveMeasurementResponse {
+    const ZERO: Self = Self {
+        mode: <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::ZERO,
+        frequency: <f32 as crate::wire::Wire>::ZERO,
+        low_limit: <f32 as crate::wire::Wire>::ZERO,
+        high_limit: <f32 as crate::wire::Wire>::ZERO,
+        low_limit_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+        high_limit_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+        minimum_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(25);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("mode"))?;
+        let p_frequency = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frequency"))?;
+        let p_low_limit = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit"))?;
+        let p_high_limit = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit"))?;
+        let p_low_limit_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit_uncertainty"))?;
+        let p_high_limit_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit_uncertainty"))?;
+        let p_minimum_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("minimum_uncertainty"))?;
+        Ok(Self {
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.mode;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        let v = &self.frequency;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("frequency"))?;
+        let v = &self.low_limit;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit"))?;
+        let v = &self.high_limit;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit"))?;
+        let v = &self.low_limit_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit_uncertainty"))?;
+        let v = &self.high_limit_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit_uncertainty"))?;
+        let v = &self.minimum_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("minimum_uncertainty"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.mode;
+        crate::json::key(w, &mut first, "mode")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.frequency;
+        crate::json::key(w, &mut first, "frequency")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.low_limit;
+        crate::json::key(w, &mut first, "low_limit")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_limit;
+        crate::json::key(w, &mut first, "high_limit")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.low_limit_uncertainty;
+        crate::json::key(w, &mut first, "low_limit_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_limit_uncertainty;
+        crate::json::key(w, &mut first, "high_limit_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.minimum_uncertainty;
+        crate::json::key(w, &mut first, "minimum_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GravityMagnitudeAdaptiveMeasurementResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "mode",
+                "frequency",
+                "low_limit",
+                "high_limit",
+                "low_limit_uncertainty",
+                "high_limit_uncertainty",
+                "minimum_uncertainty",
+            ],
+        )?;
+        let p_mode = o.req(
+            "mode",
+            <crate::types::AdaptiveMeasurementMode as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_frequency = o.req("frequency", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit = o.req("low_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit = o.req("high_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit_uncertainty = o.req(
+            "low_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_high_limit_uncertainty = o.req(
+            "high_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_minimum_uncertainty = o.req(
+            "minimum_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+}
+
+impl GravityMagnitudeAdaptiveMeasurementResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for GravityMagnitudeAdaptiveMeasurementResponse {
+    const DESCRIPTOR: u8 = 0xB3;
+    const NAME: &'static str = "gravity_magnitude_adaptive_measurement_response";
+}
+
+/// Magnetometer magnitude error adaptive measurement. Configure the magnetometer magnitude error adaptive measurement, which rejects magnetometer readings whose magnitude is outside the fixed or internally computed limits. The filter and limit parameters may be left out: with only the function and mode, the other values keep their previous settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagMagnitudeAdaptiveMeasurement {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Disabled, fixed or auto-adaptive. Sent for: write.
+    pub mode: Option<crate::types::AdaptiveMeasurementMode>,
+    /// Low-pass filter cutoff frequency. Units: Hz. Sent for: write.
+    pub frequency: Option<f32>,
+    /// Low limit. Units: gauss. Sent for: write.
+    pub low_limit: Option<f32>,
+    /// High limit. Units: gauss. Sent for: write.
+    pub high_limit: Option<f32>,
+    /// Low limit uncertainty, 1-sigma. Units: gauss. Sent for: write.
+    pub low_limit_uncertainty: Option<f32>,
+    /// High limit uncertainty, 1-sigma. Units: gauss. Sent for: write.
+    pub high_limit_uncertainty: Option<f32>,
+    /// Minimum uncertainty, 1-sigma. Units: gauss. Sent for: write.
+    pub minimum_uncertainty: Option<f32>,
+}
+
+impl Default for MagMagnitudeAdaptiveMeasurement {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagMagnitudeAdaptiveMeasurement {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        mode: None,
+        frequency: None,
+        low_limit: None,
+        high_limit: None,
+        low_limit_uncertainty: None,
+        high_limit_uncertainty: None,
+        minimum_uncertainty: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_mode = if r.left() > 0 {
+            Some(
+                <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("mode"))?,
+            )
+        } else {
+            None
+        };
+        let p_frequency = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frequency"))?)
+        } else {
+            None
+        };
+        let p_low_limit = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit"))?)
+        } else {
+            None
+        };
+        let p_high_limit = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit"))?)
+        } else {
+            None
+        };
+        let p_low_limit_uncertainty = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit_uncertainty"))?)
+        } else {
+            None
+        };
+        let p_high_limit_uncertainty = if r.left() > 0 {
+            Some(
+                <f32 as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("high_limit_uncertainty"))?,
+            )
+        } else {
+            None
+        };
+        let p_minimum_uncertainty = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("minimum_uncertainty"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.mode {
+            optionals.present("mode")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        } else {
+            optionals.absent("mode");
+        }
+        if let Some(v) = &self.frequency {
+            optionals.present("frequency")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("frequency"))?;
+        } else {
+            optionals.absent("frequency");
+        }
+        if let Some(v) = &self.low_limit {
+            optionals.present("low_limit")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit"))?;
+        } else {
+            optionals.absent("low_limit");
+        }
+        if let Some(v) = &self.high_limit {
+            optionals.present("high_limit")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit"))?;
+        } else {
+            optionals.absent("high_limit");
+        }
+        if let Some(v) = &self.low_limit_uncertainty {
+            optionals.present("low_limit_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit_uncertainty"))?;
+        } else {
+            optionals.absent("low_limit_uncertainty");
+        }
+        if let Some(v) = &self.high_limit_uncertainty {
+            optionals.present("high_limit_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit_uncertainty"))?;
+        } else {
+            optionals.absent("high_limit_uncertainty");
+        }
+        if let Some(v) = &self.minimum_uncertainty {
+            optionals.present("minimum_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("minimum_uncertainty"))?;
+        } else {
+            optionals.absent("minimum_uncertainty");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.mode {
+            crate::json::key(w, &mut first, "mode")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.frequency {
+            crate::json::key(w, &mut first, "frequency")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.low_limit {
+            crate::json::key(w, &mut first, "low_limit")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.high_limit {
+            crate::json::key(w, &mut first, "high_limit")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.low_limit_uncertainty {
+            crate::json::key(w, &mut first, "low_limit_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.high_limit_uncertainty {
+            crate::json::key(w, &mut first, "high_limit_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.minimum_uncertainty {
+            crate::json::key(w, &mut first, "minimum_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagMagnitudeAdaptiveMeasurement {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "function",
+                "mode",
+                "frequency",
+                "low_limit",
+                "high_limit",
+                "low_limit_uncertainty",
+                "high_limit_uncertainty",
+                "minimum_uncertainty",
+            ],
+        )?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_mode = o.opt(
+            "mode",
+            <crate::types::AdaptiveMeasurementMode as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_frequency = o.opt("frequency", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit = o.opt("low_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit = o.opt("high_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit_uncertainty = o.opt(
+            "low_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_high_limit_uncertainty = o.opt(
+            "high_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_minimum_uncertainty = o.opt(
+            "minimum_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+}
+
+impl MagMagnitudeAdaptiveMeasurement {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagMagnitudeAdaptiveMeasurement {
+    const DESCRIPTOR: u8 = 0x45;
+    const NAME: &'static str = "mag_magnitude_adaptive_measurement";
+}
+
+/// Magnetometer magnitude error adaptive measurement (response). Current magnetometer magnitude adaptive measurement settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagMagnitudeAdaptiveMeasurementResponse {
+    /// Disabled, fixed or auto-adaptive.
+    pub mode: crate::types::AdaptiveMeasurementMode,
+    /// Low-pass filter cutoff frequency. Units: Hz.
+    pub frequency: f32,
+    /// Low limit. Units: gauss.
+    pub low_limit: f32,
+    /// High limit. Units: gauss.
+    pub high_limit: f32,
+    /// Low limit uncertainty, 1-sigma. Units: gauss.
+    pub low_limit_uncertainty: f32,
+    /// High limit uncertainty, 1-sigma. Units: gauss.
+    pub high_limit_uncertainty: f32,
+    /// Minimum uncertainty, 1-sigma. Units: gauss.
+    pub minimum_uncertainty: f32,
+}
+
+impl Default for MagMagnitudeAdaptiveMeasurementResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagMagnitudeAdaptiveMeasurementResponse {
+    const ZERO: Self = Self {
+        mode: <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::ZERO,
+        frequency: <f32 as crate::wire::Wire>::ZERO,
+        low_limit: <f32 as crate::wire::Wire>::ZERO,
+        high_limit: <f32 as crate::wire::Wire>::ZERO,
+        low_limit_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+        high_limit_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+        minimum_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(25);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("mode"))?;
+        let p_frequency = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frequency"))?;
+        let p_low_limit = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit"))?;
+        let p_high_limit = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit"))?;
+        let p_low_limit_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("low_limit_uncertainty"))?;
+        let p_high_limit_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit_uncertainty"))?;
+        let p_minimum_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("minimum_uncertainty"))?;
+        Ok(Self {
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.mode;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        let v = &self.frequency;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("frequency"))?;
+        let v = &self.low_limit;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit"))?;
+        let v = &self.high_limit;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit"))?;
+        let v = &self.low_limit_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("low_limit_uncertainty"))?;
+        let v = &self.high_limit_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit_uncertainty"))?;
+        let v = &self.minimum_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("minimum_uncertainty"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.mode;
+        crate::json::key(w, &mut first, "mode")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.frequency;
+        crate::json::key(w, &mut first, "frequency")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.low_limit;
+        crate::json::key(w, &mut first, "low_limit")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_limit;
+        crate::json::key(w, &mut first, "high_limit")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.low_limit_uncertainty;
+        crate::json::key(w, &mut first, "low_limit_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_limit_uncertainty;
+        crate::json::key(w, &mut first, "high_limit_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.minimum_uncertainty;
+        crate::json::key(w, &mut first, "minimum_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagMagnitudeAdaptiveMeasurementResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "mode",
+                "frequency",
+                "low_limit",
+                "high_limit",
+                "low_limit_uncertainty",
+                "high_limit_uncertainty",
+                "minimum_uncertainty",
+            ],
+        )?;
+        let p_mode = o.req(
+            "mode",
+            <crate::types::AdaptiveMeasurementMode as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_frequency = o.req("frequency", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit = o.req("low_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit = o.req("high_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_low_limit_uncertainty = o.req(
+            "low_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_high_limit_uncertainty = o.req(
+            "high_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_minimum_uncertainty = o.req(
+            "minimum_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            mode: p_mode,
+            frequency: p_frequency,
+            low_limit: p_low_limit,
+            high_limit: p_high_limit,
+            low_limit_uncertainty: p_low_limit_uncertainty,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+}
+
+impl MagMagnitudeAdaptiveMeasurementResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagMagnitudeAdaptiveMeasurementResponse {
+    const DESCRIPTOR: u8 = 0xB4;
+    const NAME: &'static str = "mag_magnitude_adaptive_measurement_response";
+}
+
+/// Magnetometer dip angle error adaptive measurement. Configure the magnetometer dip angle error adaptive measurement, which rejects magnetometer readings whose dip angle error exceeds the limit. Ignored while an auto-adaptive magnetometer or gravity magnitude mode is selected. Only disabled (0) and fixed (1) are documented.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagDipAngleAdaptiveMeasurement {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Disabled (0) or fixed (1). Sent for: write.
+    pub mode: Option<crate::types::AdaptiveMeasurementMode>,
+    /// Low-pass filter cutoff frequency. Units: Hz. Sent for: write.
+    pub frequency: Option<f32>,
+    /// High limit of the dip angle error. Units: rad. Sent for: write.
+    pub high_limit: Option<f32>,
+    /// High limit uncertainty, 1-sigma. Units: rad. Sent for: write.
+    pub high_limit_uncertainty: Option<f32>,
+    /// Minimum uncertainty, 1-sigma. Units: rad. Sent for: write.
+    pub minimum_uncertainty: Option<f32>,
+}
+
+impl Default for MagDipAngleAdaptiveMeasurement {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagDipAngleAdaptiveMeasurement {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        mode: None,
+        frequency: None,
+        high_limit: None,
+        high_limit_uncertainty: None,
+        minimum_uncertainty: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_mode = if r.left() > 0 {
+            Some(
+                <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("mode"))?,
+            )
+        } else {
+            None
+        };
+        let p_frequency = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frequency"))?)
+        } else {
+            None
+        };
+        let p_high_limit = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit"))?)
+        } else {
+            None
+        };
+        let p_high_limit_uncertainty = if r.left() > 0 {
+            Some(
+                <f32 as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("high_limit_uncertainty"))?,
+            )
+        } else {
+            None
+        };
+        let p_minimum_uncertainty = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("minimum_uncertainty"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            mode: p_mode,
+            frequency: p_frequency,
+            high_limit: p_high_limit,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.mode {
+            optionals.present("mode")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        } else {
+            optionals.absent("mode");
+        }
+        if let Some(v) = &self.frequency {
+            optionals.present("frequency")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("frequency"))?;
+        } else {
+            optionals.absent("frequency");
+        }
+        if let Some(v) = &self.high_limit {
+            optionals.present("high_limit")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit"))?;
+        } else {
+            optionals.absent("high_limit");
+        }
+        if let Some(v) = &self.high_limit_uncertainty {
+            optionals.present("high_limit_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit_uncertainty"))?;
+        } else {
+            optionals.absent("high_limit_uncertainty");
+        }
+        if let Some(v) = &self.minimum_uncertainty {
+            optionals.present("minimum_uncertainty")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("minimum_uncertainty"))?;
+        } else {
+            optionals.absent("minimum_uncertainty");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.mode {
+            crate::json::key(w, &mut first, "mode")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.frequency {
+            crate::json::key(w, &mut first, "frequency")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.high_limit {
+            crate::json::key(w, &mut first, "high_limit")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.high_limit_uncertainty {
+            crate::json::key(w, &mut first, "high_limit_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.minimum_uncertainty {
+            crate::json::key(w, &mut first, "minimum_uncertainty")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagDipAngleAdaptiveMeasurement {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "function",
+                "mode",
+                "frequency",
+                "high_limit",
+                "high_limit_uncertainty",
+                "minimum_uncertainty",
+            ],
+        )?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_mode = o.opt(
+            "mode",
+            <crate::types::AdaptiveMeasurementMode as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_frequency = o.opt("frequency", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit = o.opt("high_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit_uncertainty = o.opt(
+            "high_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_minimum_uncertainty = o.opt(
+            "minimum_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            mode: p_mode,
+            frequency: p_frequency,
+            high_limit: p_high_limit,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+}
+
+impl MagDipAngleAdaptiveMeasurement {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagDipAngleAdaptiveMeasurement {
+    const DESCRIPTOR: u8 = 0x46;
+    const NAME: &'static str = "mag_dip_angle_adaptive_measurement";
+}
+
+/// Magnetometer dip angle error adaptive measurement (response). Current dip angle adaptive measurement settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagDipAngleAdaptiveMeasurementResponse {
+    /// Disabled (0) or fixed (1).
+    pub mode: crate::types::AdaptiveMeasurementMode,
+    /// Low-pass filter cutoff frequency. Units: Hz.
+    pub frequency: f32,
+    /// High limit of the dip angle error. Units: rad.
+    pub high_limit: f32,
+    /// High limit uncertainty, 1-sigma. Units: rad.
+    pub high_limit_uncertainty: f32,
+    /// Minimum uncertainty, 1-sigma. Units: rad.
+    pub minimum_uncertainty: f32,
+}
+
+impl Default for MagDipAngleAdaptiveMeasurementResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagDipAngleAdaptiveMeasurementResponse {
+    const ZERO: Self = Self {
+        mode: <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::ZERO,
+        frequency: <f32 as crate::wire::Wire>::ZERO,
+        high_limit: <f32 as crate::wire::Wire>::ZERO,
+        high_limit_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+        minimum_uncertainty: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(17);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("mode"))?;
+        let p_frequency = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frequency"))?;
+        let p_high_limit = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit"))?;
+        let p_high_limit_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("high_limit_uncertainty"))?;
+        let p_minimum_uncertainty =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("minimum_uncertainty"))?;
+        Ok(Self {
+            mode: p_mode,
+            frequency: p_frequency,
+            high_limit: p_high_limit,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.mode;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("mode"))?;
+        let v = &self.frequency;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("frequency"))?;
+        let v = &self.high_limit;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit"))?;
+        let v = &self.high_limit_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("high_limit_uncertainty"))?;
+        let v = &self.minimum_uncertainty;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("minimum_uncertainty"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.mode;
+        crate::json::key(w, &mut first, "mode")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.frequency;
+        crate::json::key(w, &mut first, "frequency")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_limit;
+        crate::json::key(w, &mut first, "high_limit")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.high_limit_uncertainty;
+        crate::json::key(w, &mut first, "high_limit_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.minimum_uncertainty;
+        crate::json::key(w, &mut first, "minimum_uncertainty")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagDipAngleAdaptiveMeasurementResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "mode",
+                "frequency",
+                "high_limit",
+                "high_limit_uncertainty",
+                "minimum_uncertainty",
+            ],
+        )?;
+        let p_mode = o.req(
+            "mode",
+            <crate::types::AdaptiveMeasurementMode as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_frequency = o.req("frequency", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit = o.req("high_limit", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_high_limit_uncertainty = o.req(
+            "high_limit_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_minimum_uncertainty = o.req(
+            "minimum_uncertainty",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            mode: p_mode,
+            frequency: p_frequency,
+            high_limit: p_high_limit,
+            high_limit_uncertainty: p_high_limit_uncertainty,
+            minimum_uncertainty: p_minimum_uncertainty,
+        })
+    }
+}
+
+impl MagDipAngleAdaptiveMeasurementResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagDipAngleAdaptiveMeasurementResponse {
+    const DESCRIPTOR: u8 = 0xB5;
+    const NAME: &'static str = "mag_dip_angle_adaptive_measurement_response";
+}
+
+/// Altitude aiding control. Select the altitude aiding input. GNSS is always the primary altitude; the aiding input improves it and bridges GNSS outages. Pressure altitude depends on weather and location and can vary by more than 40 m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AltitudeAidingControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Altitude aiding input (0 disabled, 1 pressure). Sent for: write.
+    pub source: Option<crate::types::AltitudeAidingSource>,
+}
+
+impl Default for AltitudeAidingControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AltitudeAidingControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = if r.left() > 0 {
+            Some(
+                <crate::types::AltitudeAidingSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("source"))?,
+            )
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.source {
+            optionals.present("source")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        } else {
+            optionals.absent("source");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.source {
+            crate::json::key(w, &mut first, "source")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AltitudeAidingControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.opt(
+            "source",
+            <crate::types::AltitudeAidingSource as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+        })
+    }
+}
+
+impl AltitudeAidingControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for AltitudeAidingControl {
+    const DESCRIPTOR: u8 = 0x47;
+    const NAME: &'static str = "altitude_aiding_control";
+}
+
+/// Altitude aiding control (response). Current altitude aiding input.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AltitudeAidingControlResponse {
+    /// Altitude aiding input.
+    pub source: crate::types::AltitudeAidingSource,
+}
+
+impl Default for AltitudeAidingControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AltitudeAidingControlResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::AltitudeAidingSource as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::AltitudeAidingSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        Ok(Self { source: p_source })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AltitudeAidingControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source"])?;
+        let p_source = o.req(
+            "source",
+            <crate::types::AltitudeAidingSource as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self { source: p_source })
+    }
+}
+
+impl AltitudeAidingControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for AltitudeAidingControlResponse {
+    const DESCRIPTOR: u8 = 0xB7;
+    const NAME: &'static str = "altitude_aiding_control_response";
+}
+
+/// Pitch/roll aiding control. Select the pitch/roll aiding input. Pitch and roll always come from the GNSS-corrected inertial solution; the aiding input improves it at low dynamics and during GNSS outages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PitchRollAidingControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Pitch/roll aiding input (0 disabled, 1 gravity vector). Sent for: write.
+    pub source: Option<crate::types::PitchRollAidingSource>,
+}
+
+impl Default for PitchRollAidingControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for PitchRollAidingControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = if r.left() > 0 {
+            Some(
+                <crate::types::PitchRollAidingSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("source"))?,
+            )
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.source {
+            optionals.present("source")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        } else {
+            optionals.absent("source");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.source {
+            crate::json::key(w, &mut first, "source")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for PitchRollAidingControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.opt(
+            "source",
+            <crate::types::PitchRollAidingSource as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+        })
+    }
+}
+
+impl PitchRollAidingControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for PitchRollAidingControl {
+    const DESCRIPTOR: u8 = 0x4B;
+    const NAME: &'static str = "pitch_roll_aiding_control";
+}
+
+/// Pitch/roll aiding control (response). Current pitch/roll aiding input.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PitchRollAidingControlResponse {
+    /// Pitch/roll aiding input.
+    pub source: crate::types::PitchRollAidingSource,
+}
+
+impl Default for PitchRollAidingControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for PitchRollAidingControlResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::PitchRollAidingSource as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::PitchRollAidingSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        Ok(Self { source: p_source })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for PitchRollAidingControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source"])?;
+        let p_source = o.req(
+            "source",
+            <crate::types::PitchRollAidingSource as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self { source: p_source })
+    }
+}
+
+impl PitchRollAidingControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for PitchRollAidingControlResponse {
+    const DESCRIPTOR: u8 = 0xBB;
+    const NAME: &'static str = "pitch_roll_aiding_control_response";
+}
+
+/// Inclination source. Source of the local magnetic inclination (dip angle), which matters for the magnetometer auto-calibration; without an accurate source, leave auto-calibration off.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InclinationSource {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Inclination source. Sent for: write.
+    pub source: Option<crate::types::MagneticParamSource>,
+    /// Manual inclination angle (used when source is manual). Units: rad. Sent for: write.
+    pub inclination: Option<f32>,
+}
+
+impl Default for InclinationSource {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for InclinationSource {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: None,
+        inclination: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = if r.left() > 0 {
+            Some(
+                <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("source"))?,
+            )
+        } else {
+            None
+        };
+        let p_inclination = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("inclination"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            inclination: p_inclination,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.source {
+            optionals.present("source")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        } else {
+            optionals.absent("source");
+        }
+        if let Some(v) = &self.inclination {
+            optionals.present("inclination")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("inclination"))?;
+        } else {
+            optionals.absent("inclination");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.source {
+            crate::json::key(w, &mut first, "source")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.inclination {
+            crate::json::key(w, &mut first, "inclination")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for InclinationSource {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source", "inclination"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.opt(
+            "source",
+            <crate::types::MagneticParamSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_inclination = o.opt(
+            "inclination",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            inclination: p_inclination,
+        })
+    }
+}
+
+impl InclinationSource {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for InclinationSource {
+    const DESCRIPTOR: u8 = 0x4C;
+    const NAME: &'static str = "inclination_source";
+}
+
+/// Inclination source (response). Current inclination source and angle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InclinationSourceResponse {
+    /// Inclination source.
+    pub source: crate::types::MagneticParamSource,
+    /// Inclination angle. Units: rad.
+    pub inclination: f32,
+}
+
+impl Default for InclinationSourceResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for InclinationSourceResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::MagneticParamSource as crate::wire::Wire>::ZERO,
+        inclination: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        let p_inclination =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("inclination"))?;
+        Ok(Self {
+            source: p_source,
+            inclination: p_inclination,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        let v = &self.inclination;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("inclination"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.inclination;
+        crate::json::key(w, &mut first, "inclination")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for InclinationSourceResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source", "inclination"])?;
+        let p_source = o.req(
+            "source",
+            <crate::types::MagneticParamSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_inclination = o.req(
+            "inclination",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            source: p_source,
+            inclination: p_inclination,
+        })
+    }
+}
+
+impl InclinationSourceResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for InclinationSourceResponse {
+    const DESCRIPTOR: u8 = 0xBC;
+    const NAME: &'static str = "inclination_source_response";
+}
+
+/// Magnetic field magnitude source. Source of the local magnetic field magnitude, used by the magnetometer auto-calibration and the magnetometer magnitude adaptive measurement. Source none uses a fixed 0.5 gauss.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagneticFieldMagnitudeSource {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Magnitude source. Sent for: write.
+    pub source: Option<crate::types::MagneticParamSource>,
+    /// Manual field magnitude (used when source is manual). Units: gauss. Sent for: write.
+    pub magnitude: Option<f32>,
+}
+
+impl Default for MagneticFieldMagnitudeSource {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagneticFieldMagnitudeSource {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: None,
+        magnitude: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = if r.left() > 0 {
+            Some(
+                <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("source"))?,
+            )
+        } else {
+            None
+        };
+        let p_magnitude = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("magnitude"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            magnitude: p_magnitude,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.source {
+            optionals.present("source")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        } else {
+            optionals.absent("source");
+        }
+        if let Some(v) = &self.magnitude {
+            optionals.present("magnitude")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("magnitude"))?;
+        } else {
+            optionals.absent("magnitude");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.source {
+            crate::json::key(w, &mut first, "source")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.magnitude {
+            crate::json::key(w, &mut first, "magnitude")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagneticFieldMagnitudeSource {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source", "magnitude"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.opt(
+            "source",
+            <crate::types::MagneticParamSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_magnitude = o.opt("magnitude", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            magnitude: p_magnitude,
+        })
+    }
+}
+
+impl MagneticFieldMagnitudeSource {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagneticFieldMagnitudeSource {
+    const DESCRIPTOR: u8 = 0x4D;
+    const NAME: &'static str = "magnetic_field_magnitude_source";
+}
+
+/// Magnetic field magnitude source (response). Current magnetic field magnitude source and value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MagneticFieldMagnitudeSourceResponse {
+    /// Magnitude source.
+    pub source: crate::types::MagneticParamSource,
+    /// Field magnitude. Units: gauss.
+    pub magnitude: f32,
+}
+
+impl Default for MagneticFieldMagnitudeSourceResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MagneticFieldMagnitudeSourceResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::MagneticParamSource as crate::wire::Wire>::ZERO,
+        magnitude: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        let p_magnitude = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("magnitude"))?;
+        Ok(Self {
+            source: p_source,
+            magnitude: p_magnitude,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        let v = &self.magnitude;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("magnitude"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.magnitude;
+        crate::json::key(w, &mut first, "magnitude")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagneticFieldMagnitudeSourceResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source", "magnitude"])?;
+        let p_source = o.req(
+            "source",
+            <crate::types::MagneticParamSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_magnitude = o.req("magnitude", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            source: p_source,
+            magnitude: p_magnitude,
+        })
+    }
+}
+
+impl MagneticFieldMagnitudeSourceResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MagneticFieldMagnitudeSourceResponse {
+    const DESCRIPTOR: u8 = 0xBD;
+    const NAME: &'static str = "magnetic_field_magnitude_source_response";
+}
+
+/// Aiding measurement control. Enable or disable an internal aiding measurement source. The source is sent with every function; ALL (0xFFFF) applies save, load and default to every source.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AidingMeasurementControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Aiding measurement source. Sent for: write, read, save, load, default.
+    pub source: crate::types::AidingMeasurementSource,
+    /// Whether the source is used. Sent for: write.
+    pub enable: Option<bool>,
+}
+
+impl Default for AidingMeasurementControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AidingMeasurementControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: <crate::types::AidingMeasurementSource as crate::wire::Wire>::ZERO,
+        enable: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = <crate::types::AidingMeasurementSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        let p_enable = if r.left() > 0 {
+            Some(<bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            enable: p_enable,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        if let Some(v) = &self.enable {
+            optionals.present("enable")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        } else {
+            optionals.absent("enable");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.enable {
+            crate::json::key(w, &mut first, "enable")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingMeasurementControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source", "enable"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.req(
+            "source",
+            <crate::types::AidingMeasurementSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_enable = o.opt("enable", <bool as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            enable: p_enable,
+        })
+    }
+}
+
+impl AidingMeasurementControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for AidingMeasurementControl {
+    const DESCRIPTOR: u8 = 0x50;
+    const NAME: &'static str = "aiding_measurement_control";
+}
+
+/// Aiding measurement control (response). Whether an aiding measurement source is enabled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AidingMeasurementControlResponse {
+    /// Aiding measurement source.
+    pub source: crate::types::AidingMeasurementSource,
+    /// Whether the source is used.
+    pub enable: bool,
+}
+
+impl Default for AidingMeasurementControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AidingMeasurementControlResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::AidingMeasurementSource as crate::wire::Wire>::ZERO,
+        enable: <bool as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(3);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::AidingMeasurementSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        let p_enable = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
+        Ok(Self {
+            source: p_source,
+            enable: p_enable,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        let v = &self.enable;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.enable;
+        crate::json::key(w, &mut first, "enable")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingMeasurementControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source", "enable"])?;
+        let p_source = o.req(
+            "source",
+            <crate::types::AidingMeasurementSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_enable = o.req("enable", <bool as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            source: p_source,
+            enable: p_enable,
+        })
+    }
+}
+
+impl AidingMeasurementControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for AidingMeasurementControlResponse {
+    const DESCRIPTOR: u8 = 0xD0;
+    const NAME: &'static str = "aiding_measurement_control_response";
+}
+
+/// Navigation filter initialization. Source and values of the initial conditions (position, velocity, attitude) of the navigation filter. Every parameter is always sent; the initial condition source decides which of the user values are used, and the reference frame selector gives the units of the position (ECEF: m; LLH: deg, deg, m) and the frame of the velocity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InitializationConfiguration {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Non-zero: initialize the filter only after a Run Navigation Filter (0x0D,0x05) command. Sent for: write.
+    pub wait_for_run_command: Option<u8>,
+    /// Which initial conditions are automatic and which user-specified. Sent for: write.
+    pub initial_cond_src: Option<crate::types::FilterInitialConditionSource>,
+    /// Allowed automatic heading alignment methods. Sent for: write.
+    pub auto_heading_alignment_selector: Option<crate::types::HeadingAlignmentMethods>,
+    /// User-specified initial heading. Units: deg. Sent for: write.
+    pub initial_heading: Option<f32>,
+    /// User-specified initial pitch. Units: deg. Sent for: write.
+    pub initial_pitch: Option<f32>,
+    /// User-specified initial roll. Units: deg. Sent for: write.
+    pub initial_roll: Option<f32>,
+    /// User-specified initial position (ECEF m, or LLH deg/deg/m, per reference_frame_selector). Sent for: write.
+    pub initial_position: Option<[f32; 3]>,
+    /// User-specified initial velocity, in the frame chosen by reference_frame_selector. Units: m/s. Sent for: write.
+    pub initial_velocity: Option<[f32; 3]>,
+    /// Frame of the initial position and velocity. Sent for: write.
+    pub reference_frame_selector: Option<crate::types::FilterReferenceFrame>,
+}
+
+impl Default for InitializationConfiguration {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for InitializationConfiguration {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        wait_for_run_command: None,
+        initial_cond_src: None,
+        auto_heading_alignment_selector: None,
+        initial_heading: None,
+        initial_pitch: None,
+        initial_roll: None,
+        initial_position: None,
+        initial_velocity: None,
+        reference_frame_selector: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_wait_for_run_command = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("wait_for_run_command"))?)
+        } else {
+            None
+        };
+        let p_initial_cond_src = if r.left() > 0 {
+            Some(
+                <crate::types::FilterInitialConditionSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("initial_cond_src"))?,
+            )
+        } else {
+            None
+        };
+        let p_auto_heading_alignment_selector = if r.left() > 0 {
+            Some(
+                <crate::types::HeadingAlignmentMethods as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("auto_heading_alignment_selector"))?,
+            )
+        } else {
+            None
+        };
+        let p_initial_heading = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_heading"))?)
+        } else {
+            None
+        };
+        let p_initial_pitch = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_pitch"))?)
+        } else {
+            None
+        };
+        let p_initial_roll = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_roll"))?)
+        } else {
+            None
+        };
+        let p_initial_position = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_position"))?)
+        } else {
+            None
+        };
+        let p_initial_velocity = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_velocity"))?)
+        } else {
+            None
+        };
+        let p_reference_frame_selector = if r.left() > 0 {
+            Some(
+                <crate::types::FilterReferenceFrame as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("reference_frame_selector"))?,
+            )
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            wait_for_run_command: p_wait_for_run_command,
+            initial_cond_src: p_initial_cond_src,
+            auto_heading_alignment_selector: p_auto_heading_alignment_selector,
+            initial_heading: p_initial_heading,
+            initial_pitch: p_initial_pitch,
+            initial_roll: p_initial_roll,
+            initial_position: p_initial_position,
+            initial_velocity: p_initial_velocity,
+            reference_frame_selector: p_reference_frame_selector,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.wait_for_run_command {
+            optionals.present("wait_for_run_command")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("wait_for_run_command"))?;
+        } else {
+            optionals.absent("wait_for_run_command");
+        }
+        if let Some(v) = &self.initial_cond_src {
+            optionals.present("initial_cond_src")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_cond_src"))?;
+        } else {
+            optionals.absent("initial_cond_src");
+        }
+        if let Some(v) = &self.auto_heading_alignment_selector {
+            optionals.present("auto_heading_alignment_selector")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("auto_heading_alignment_selector"))?;
+        } else {
+            optionals.absent("auto_heading_alignment_selector");
+        }
+        if let Some(v) = &self.initial_heading {
+            optionals.present("initial_heading")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_heading"))?;
+        } else {
+            optionals.absent("initial_heading");
+        }
+        if let Some(v) = &self.initial_pitch {
+            optionals.present("initial_pitch")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_pitch"))?;
+        } else {
+            optionals.absent("initial_pitch");
+        }
+        if let Some(v) = &self.initial_roll {
+            optionals.present("initial_roll")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_roll"))?;
+        } else {
+            optionals.absent("initial_roll");
+        }
+        if let Some(v) = &self.initial_position {
+            optionals.present("initial_position")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_position"))?;
+        } else {
+            optionals.absent("initial_position");
+        }
+        if let Some(v) = &self.initial_velocity {
+            optionals.present("initial_velocity")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_velocity"))?;
+        } else {
+            optionals.absent("initial_velocity");
+        }
+        if let Some(v) = &self.reference_frame_selector {
+            optionals.present("reference_frame_selector")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("reference_frame_selector"))?;
+        } else {
+            optionals.absent("reference_frame_selector");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.wait_for_run_command {
+            crate::json::key(w, &mut first, "wait_for_run_command")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.initial_cond_src {
+            crate::json::key(w, &mut first, "initial_cond_src")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.auto_heading_alignment_selector {
+            crate::json::key(w, &mut first, "auto_heading_alignment_selector")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.initial_heading {
+            crate::json::key(w, &mut first, "initial_heading")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.initial_pitch {
+            crate::json::key(w, &mut first, "initial_pitch")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.initial_roll {
+            crate::json::key(w, &mut first, "initial_roll")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.initial_position {
+            crate::json::key(w, &mut first, "initial_position")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.initial_velocity {
+            crate::json::key(w, &mut first, "initial_velocity")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.reference_frame_selector {
+            crate::json::key(w, &mut first, "reference_frame_selector")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for InitializationConfiguration {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "function",
+                "wait_for_run_command",
+                "initial_cond_src",
+                "auto_heading_alignment_selector",
+                "initial_heading",
+                "initial_pitch",
+                "initial_roll",
+                "initial_position",
+                "initial_velocity",
+                "reference_frame_selector",
+            ],
+        )?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_wait_for_run_command = o.opt(
+            "wait_for_run_command",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_cond_src = o.opt(
+            "initial_cond_src",
+            <crate::types::FilterInitialConditionSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_auto_heading_alignment_selector = o.opt(
+            "auto_heading_alignment_selector",
+            <crate::types::HeadingAlignmentMethods as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_heading = o.opt(
+            "initial_heading",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_pitch = o.opt(
+            "initial_pitch",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_roll = o.opt(
+            "initial_roll",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_position = o.opt(
+            "initial_position",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_velocity = o.opt(
+            "initial_velocity",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reference_frame_selector = o.opt(
+            "reference_frame_selector",
+            <crate::types::FilterReferenceFrame as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            wait_for_run_command: p_wait_for_run_command,
+            initial_cond_src: p_initial_cond_src,
+            auto_heading_alignment_selector: p_auto_heading_alignment_selector,
+            initial_heading: p_initial_heading,
+            initial_pitch: p_initial_pitch,
+            initial_roll: p_initial_roll,
+            initial_position: p_initial_position,
+            initial_velocity: p_initial_velocity,
+            reference_frame_selector: p_reference_frame_selector,
+        })
+    }
+}
+
+impl InitializationConfiguration {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for InitializationConfiguration {
+    const DESCRIPTOR: u8 = 0x52;
+    const NAME: &'static str = "initialization_configuration";
+}
+
+/// Navigation filter initialization (response). Current initial condition configuration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InitializationConfigurationResponse {
+    /// Non-zero: wait for the run command.
+    pub wait_for_run_command: u8,
+    /// Initial condition source.
+    pub initial_cond_src: crate::types::FilterInitialConditionSource,
+    /// Allowed automatic heading alignment methods.
+    pub auto_heading_alignment_selector: crate::types::HeadingAlignmentMethods,
+    /// User-specified initial heading. Units: deg.
+    pub initial_heading: f32,
+    /// User-specified initial pitch. Units: deg.
+    pub initial_pitch: f32,
+    /// User-specified initial roll. Units: deg.
+    pub initial_roll: f32,
+    /// User-specified initial position (ECEF m, or LLH deg/deg/m).
+    pub initial_position: [f32; 3],
+    /// User-specified initial velocity. Units: m/s.
+    pub initial_velocity: [f32; 3],
+    /// Frame of the initial position and velocity.
+    pub reference_frame_selector: crate::types::FilterReferenceFrame,
+}
+
+impl Default for InitializationConfigurationResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for InitializationConfigurationResponse {
+    const ZERO: Self = Self {
+        wait_for_run_command: <u8 as crate::wire::Wire>::ZERO,
+        initial_cond_src: <crate::types::FilterInitialConditionSource as crate::wire::Wire>::ZERO,
+        auto_heading_alignment_selector:
+            <crate::types::HeadingAlignmentMethods as crate::wire::Wire>::ZERO,
+        initial_heading: <f32 as crate::wire::Wire>::ZERO,
+        initial_pitch: <f32 as crate::wire::Wire>::ZERO,
+        initial_roll: <f32 as crate::wire::Wire>::ZERO,
+        initial_position: <[f32; 3] as crate::wire::Wire>::ZERO,
+        initial_velocity: <[f32; 3] as crate::wire::Wire>::ZERO,
+        reference_frame_selector: <crate::types::FilterReferenceFrame as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(40);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_wait_for_run_command =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("wait_for_run_command"))?;
+        let p_initial_cond_src =
+            <crate::types::FilterInitialConditionSource as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("initial_cond_src"))?;
+        let p_auto_heading_alignment_selector =
+            <crate::types::HeadingAlignmentMethods as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("auto_heading_alignment_selector"))?;
+        let p_initial_heading =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_heading"))?;
+        let p_initial_pitch =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_pitch"))?;
+        let p_initial_roll =
+            <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_roll"))?;
+        let p_initial_position =
+            <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_position"))?;
+        let p_initial_velocity =
+            <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("initial_velocity"))?;
+        let p_reference_frame_selector =
+            <crate::types::FilterReferenceFrame as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("reference_frame_selector"))?;
+        Ok(Self {
+            wait_for_run_command: p_wait_for_run_command,
+            initial_cond_src: p_initial_cond_src,
+            auto_heading_alignment_selector: p_auto_heading_alignment_selector,
+            initial_heading: p_initial_heading,
+            initial_pitch: p_initial_pitch,
+            initial_roll: p_initial_roll,
+            initial_position: p_initial_position,
+            initial_velocity: p_initial_velocity,
+            reference_frame_selector: p_reference_frame_selector,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.wait_for_run_command;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("wait_for_run_command"))?;
+        let v = &self.initial_cond_src;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_cond_src"))?;
+        let v = &self.auto_heading_alignment_selector;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("auto_heading_alignment_selector"))?;
+        let v = &self.initial_heading;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_heading"))?;
+        let v = &self.initial_pitch;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_pitch"))?;
+        let v = &self.initial_roll;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_roll"))?;
+        let v = &self.initial_position;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_position"))?;
+        let v = &self.initial_velocity;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("initial_velocity"))?;
+        let v = &self.reference_frame_selector;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reference_frame_selector"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.wait_for_run_command;
+        crate::json::key(w, &mut first, "wait_for_run_command")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.initial_cond_src;
+        crate::json::key(w, &mut first, "initial_cond_src")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.auto_heading_alignment_selector;
+        crate::json::key(w, &mut first, "auto_heading_alignment_selector")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.initial_heading;
+        crate::json::key(w, &mut first, "initial_heading")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.initial_pitch;
+        crate::json::key(w, &mut first, "initial_pitch")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.initial_roll;
+        crate::json::key(w, &mut first, "initial_roll")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.initial_position;
+        crate::json::key(w, &mut first, "initial_position")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.initial_velocity;
+        crate::json::key(w, &mut first, "initial_velocity")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reference_frame_selector;
+        crate::json::key(w, &mut first, "reference_frame_selector")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for InitializationConfigurationResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "wait_for_run_command",
+                "initial_cond_src",
+                "auto_heading_alignment_selector",
+                "initial_heading",
+                "initial_pitch",
+                "initial_roll",
+                "initial_position",
+                "initial_velocity",
+                "reference_frame_selector",
+            ],
+        )?;
+        let p_wait_for_run_command = o.req(
+            "wait_for_run_command",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_cond_src = o.req(
+            "initial_cond_src",
+            <crate::types::FilterInitialConditionSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_auto_heading_alignment_selector = o.req(
+            "auto_heading_alignment_selector",
+            <crate::types::HeadingAlignmentMethods as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_heading = o.req(
+            "initial_heading",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_pitch = o.req(
+            "initial_pitch",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_roll = o.req(
+            "initial_roll",
+            <f32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_position = o.req(
+            "initial_position",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_initial_velocity = o.req(
+            "initial_velocity",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reference_frame_selector = o.req(
+            "reference_frame_selector",
+            <crate::types::FilterReferenceFrame as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            wait_for_run_command: p_wait_for_run_command,
+            initial_cond_src: p_initial_cond_src,
+            auto_heading_alignment_selector: p_auto_heading_alignment_selector,
+            initial_heading: p_initial_heading,
+            initial_pitch: p_initial_pitch,
+            initial_roll: p_initial_roll,
+            initial_position: p_initial_position,
+            initial_velocity: p_initial_velocity,
+            reference_frame_selector: p_reference_frame_selector,
+        })
+    }
+}
+
+impl InitializationConfigurationResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for InitializationConfigurationResponse {
+    const DESCRIPTOR: u8 = 0xD2;
+    const NAME: &'static str = "initialization_configuration_response";
+}
+
+/// Adaptive filter control. Basic setup of the auto-adaptive filter: how aggressively it adjusts its statistical models, and how long measurements may be rejected before it enters recovery mode.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdaptiveFilterControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Auto-adaptive operating level. Sent for: write.
+    pub level: Option<crate::types::AdaptiveFilterLevel>,
+    /// Longest measurement rejection before recovery mode. Units: ms. Sent for: write.
+    pub time_limit: Option<u16>,
+}
+
+impl Default for AdaptiveFilterControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AdaptiveFilterControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        level: None,
+        time_limit: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_level = if r.left() > 0 {
+            Some(
+                <crate::types::AdaptiveFilterLevel as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("level"))?,
+            )
+        } else {
+            None
+        };
+        let p_time_limit = if r.left() > 0 {
+            Some(<u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_limit"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            level: p_level,
+            time_limit: p_time_limit,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.level {
+            optionals.present("level")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("level"))?;
+        } else {
+            optionals.absent("level");
+        }
+        if let Some(v) = &self.time_limit {
+            optionals.present("time_limit")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("time_limit"))?;
+        } else {
+            optionals.absent("time_limit");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.level {
+            crate::json::key(w, &mut first, "level")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.time_limit {
+            crate::json::key(w, &mut first, "time_limit")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AdaptiveFilterControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "level", "time_limit"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_level = o.opt(
+            "level",
+            <crate::types::AdaptiveFilterLevel as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_time_limit = o.opt("time_limit", <u16 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            level: p_level,
+            time_limit: p_time_limit,
+        })
+    }
+}
+
+impl AdaptiveFilterControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for AdaptiveFilterControl {
+    const DESCRIPTOR: u8 = 0x53;
+    const NAME: &'static str = "adaptive_filter_control";
+}
+
+/// Adaptive filter control (response). Current adaptive filter settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdaptiveFilterControlResponse {
+    /// Auto-adaptive operating level.
+    pub level: crate::types::AdaptiveFilterLevel,
+    /// Longest measurement rejection before recovery mode. Units: ms.
+    pub time_limit: u16,
+}
+
+impl Default for AdaptiveFilterControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for AdaptiveFilterControlResponse {
+    const ZERO: Self = Self {
+        level: <crate::types::AdaptiveFilterLevel as crate::wire::Wire>::ZERO,
+        time_limit: <u16 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(3);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_level = <crate::types::AdaptiveFilterLevel as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("level"))?;
+        let p_time_limit = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_limit"))?;
+        Ok(Self {
+            level: p_level,
+            time_limit: p_time_limit,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.level;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("level"))?;
+        let v = &self.time_limit;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("time_limit"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.level;
+        crate::json::key(w, &mut first, "level")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.time_limit;
+        crate::json::key(w, &mut first, "time_limit")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AdaptiveFilterControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["level", "time_limit"])?;
+        let p_level = o.req(
+            "level",
+            <crate::types::AdaptiveFilterLevel as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_time_limit = o.req("time_limit", <u16 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            level: p_level,
+            time_limit: p_time_limit,
+        })
+    }
+}
+
+impl AdaptiveFilterControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for AdaptiveFilterControlResponse {
+    const DESCRIPTOR: u8 = 0xD3;
+    const NAME: &'static str = "adaptive_filter_control_response";
+}
+
+/// GNSS multi-antenna offset. Antenna lever arm of one GNSS receiver, in the vehicle frame, for devices with several antennas. The offset magnitude is limited to 10 m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MultiAntennaOffset {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Receiver: 1, 2, . Sent for: write, read, save, load, default.
+    pub receiver_id: u8,
+    /// Antenna lever arm in the vehicle frame. Units: m. Sent for: write.
+    pub antenna_offset: Option<[f32; 3]>,
+}
+
+impl Default for MultiAntennaOffset {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MultiAntennaOffset {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        receiver_id: <u8 as crate::wire::Wire>::ZERO,
+        antenna_offset: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_receiver_id =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
+        let p_antenna_offset = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("antenna_offset"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            receiver_id: p_receiver_id,
+            antenna_offset: p_antenna_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        let v = &self.receiver_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("receiver_id"))?;
+        if let Some(v) = &self.antenna_offset {
+            optionals.present("antenna_offset")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("antenna_offset"))?;
+        } else {
+            optionals.absent("antenna_offset");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.receiver_id;
+        crate::json::key(w, &mut first, "receiver_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.antenna_offset {
+            crate::json::key(w, &mut first, "antenna_offset")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MultiAntennaOffset {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "receiver_id", "antenna_offset"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_receiver_id = o.req("receiver_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_antenna_offset = o.opt(
+            "antenna_offset",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            receiver_id: p_receiver_id,
+            antenna_offset: p_antenna_offset,
+        })
+    }
+}
+
+impl MultiAntennaOffset {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MultiAntennaOffset {
+    const DESCRIPTOR: u8 = 0x54;
+    const NAME: &'static str = "multi_antenna_offset";
+}
+
+/// GNSS multi-antenna offset (response). Current antenna lever arm of a receiver.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MultiAntennaOffsetResponse {
+    /// Receiver: 1, 2, .
+    pub receiver_id: u8,
+    /// Antenna lever arm in the vehicle frame. Units: m.
+    pub antenna_offset: [f32; 3],
+}
+
+impl Default for MultiAntennaOffsetResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for MultiAntennaOffsetResponse {
+    const ZERO: Self = Self {
+        receiver_id: <u8 as crate::wire::Wire>::ZERO,
+        antenna_offset: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(13);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_receiver_id =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
+        let p_antenna_offset =
+            <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("antenna_offset"))?;
+        Ok(Self {
+            receiver_id: p_receiver_id,
+            antenna_offset: p_antenna_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.receiver_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("receiver_id"))?;
+        let v = &self.antenna_offset;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("antenna_offset"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.receiver_id;
+        crate::json::key(w, &mut first, "receiver_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.antenna_offset;
+        crate::json::key(w, &mut first, "antenna_offset")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MultiAntennaOffsetResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["receiver_id", "antenna_offset"])?;
+        let p_receiver_id = o.req("receiver_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_antenna_offset = o.req(
+            "antenna_offset",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            receiver_id: p_receiver_id,
+            antenna_offset: p_antenna_offset,
+        })
+    }
+}
+
+impl MultiAntennaOffsetResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for MultiAntennaOffsetResponse {
+    const DESCRIPTOR: u8 = 0xD4;
+    const NAME: &'static str = "multi_antenna_offset_response";
+}
+
+/// Relative position configuration. Reference location of the filter's relative position outputs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RelativePositionConfiguration {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// 0 automatic (RTK base station), 1 manual. Sent for: write.
+    pub source: Option<crate::types::RelativePositionSource>,
+    /// Frame of the reference coordinates. Sent for: write.
+    pub reference_frame_selector: Option<crate::types::FilterReferenceFrame>,
+    /// Reference location (ECEF m, or LLH deg/deg/m). Sent for: write.
+    pub reference_coordinates: Option<[f64; 3]>,
+}
+
+impl Default for RelativePositionConfiguration {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for RelativePositionConfiguration {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: None,
+        reference_frame_selector: None,
+        reference_coordinates: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = if r.left() > 0 {
+            Some(
+                <crate::types::RelativePositionSource as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("source"))?,
+            )
+        } else {
+            None
+        };
+        let p_reference_frame_selector = if r.left() > 0 {
+            Some(
+                <crate::types::FilterReferenceFrame as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("reference_frame_selector"))?,
+            )
+        } else {
+            None
+        };
+        let p_reference_coordinates = if r.left() > 0 {
+            Some(
+                <[f64; 3] as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("reference_coordinates"))?,
+            )
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            reference_frame_selector: p_reference_frame_selector,
+            reference_coordinates: p_reference_coordinates,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.source {
+            optionals.present("source")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        } else {
+            optionals.absent("source");
+        }
+        if let Some(v) = &self.reference_frame_selector {
+            optionals.present("reference_frame_selector")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("reference_frame_selector"))?;
+        } else {
+            optionals.absent("reference_frame_selector");
+        }
+        if let Some(v) = &self.reference_coordinates {
+            optionals.present("reference_coordinates")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("reference_coordinates"))?;
+        } else {
+            optionals.absent("reference_coordinates");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.source {
+            crate::json::key(w, &mut first, "source")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.reference_frame_selector {
+            crate::json::key(w, &mut first, "reference_frame_selector")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.reference_coordinates {
+            crate::json::key(w, &mut first, "reference_coordinates")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for RelativePositionConfiguration {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "function",
+                "source",
+                "reference_frame_selector",
+                "reference_coordinates",
+            ],
+        )?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.opt(
+            "source",
+            <crate::types::RelativePositionSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reference_frame_selector = o.opt(
+            "reference_frame_selector",
+            <crate::types::FilterReferenceFrame as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reference_coordinates = o.opt(
+            "reference_coordinates",
+            <[f64; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            reference_frame_selector: p_reference_frame_selector,
+            reference_coordinates: p_reference_coordinates,
+        })
+    }
+}
+
+impl RelativePositionConfiguration {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for RelativePositionConfiguration {
+    const DESCRIPTOR: u8 = 0x55;
+    const NAME: &'static str = "relative_position_configuration";
+}
+
+/// Relative position configuration (response). Current relative position reference.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RelativePositionConfigurationResponse {
+    /// 0 automatic (RTK base station), 1 manual.
+    pub source: crate::types::RelativePositionSource,
+    /// Frame of the reference coordinates.
+    pub reference_frame_selector: crate::types::FilterReferenceFrame,
+    /// Reference location (ECEF m, or LLH deg/deg/m).
+    pub reference_coordinates: [f64; 3],
+}
+
+impl Default for RelativePositionConfigurationResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for RelativePositionConfigurationResponse {
+    const ZERO: Self = Self {
+        source: <crate::types::RelativePositionSource as crate::wire::Wire>::ZERO,
+        reference_frame_selector: <crate::types::FilterReferenceFrame as crate::wire::Wire>::ZERO,
+        reference_coordinates: <[f64; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(26);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <crate::types::RelativePositionSource as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("source"))?;
+        let p_reference_frame_selector =
+            <crate::types::FilterReferenceFrame as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("reference_frame_selector"))?;
+        let p_reference_coordinates = <[f64; 3] as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("reference_coordinates"))?;
+        Ok(Self {
+            source: p_source,
+            reference_frame_selector: p_reference_frame_selector,
+            reference_coordinates: p_reference_coordinates,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        let v = &self.reference_frame_selector;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reference_frame_selector"))?;
+        let v = &self.reference_coordinates;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reference_coordinates"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reference_frame_selector;
+        crate::json::key(w, &mut first, "reference_frame_selector")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reference_coordinates;
+        crate::json::key(w, &mut first, "reference_coordinates")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for RelativePositionConfigurationResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "source",
+                "reference_frame_selector",
+                "reference_coordinates",
+            ],
+        )?;
+        let p_source = o.req(
+            "source",
+            <crate::types::RelativePositionSource as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reference_frame_selector = o.req(
+            "reference_frame_selector",
+            <crate::types::FilterReferenceFrame as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reference_coordinates = o.req(
+            "reference_coordinates",
+            <[f64; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            source: p_source,
+            reference_frame_selector: p_reference_frame_selector,
+            reference_coordinates: p_reference_coordinates,
+        })
+    }
+}
+
+impl RelativePositionConfigurationResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for RelativePositionConfigurationResponse {
+    const DESCRIPTOR: u8 = 0xD5;
+    const NAME: &'static str = "relative_position_configuration_response";
+}
+
+/// Reference point lever arm. Lever arm from the sensor to the filter's reference point, in the vehicle frame. Moving the reference point offsets the filter position and velocity outputs according to attitude and angular rate. Limited to 10 m for the vehicle reference point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReferencePointLeverArm {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Reference point; reserved, must be 1 (vehicle). Sent for: write.
+    pub ref_point_sel: Option<crate::types::ReferencePointSelector>,
+    /// Lever arm in the vehicle frame. Units: m. Sent for: write.
+    pub lever_arm_offset: Option<[f32; 3]>,
+}
+
+impl Default for ReferencePointLeverArm {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ReferencePointLeverArm {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        ref_point_sel: None,
+        lever_arm_offset: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_ref_point_sel = if r.left() > 0 {
+            Some(
+                <crate::types::ReferencePointSelector as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("ref_point_sel"))?,
+            )
+        } else {
+            None
+        };
+        let p_lever_arm_offset = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("lever_arm_offset"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            ref_point_sel: p_ref_point_sel,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.ref_point_sel {
+            optionals.present("ref_point_sel")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("ref_point_sel"))?;
+        } else {
+            optionals.absent("ref_point_sel");
+        }
+        if let Some(v) = &self.lever_arm_offset {
+            optionals.present("lever_arm_offset")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("lever_arm_offset"))?;
+        } else {
+            optionals.absent("lever_arm_offset");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.ref_point_sel {
+            crate::json::key(w, &mut first, "ref_point_sel")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.lever_arm_offset {
+            crate::json::key(w, &mut first, "lever_arm_offset")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ReferencePointLeverArm {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "ref_point_sel", "lever_arm_offset"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_ref_point_sel = o.opt(
+            "ref_point_sel",
+            <crate::types::ReferencePointSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_lever_arm_offset = o.opt(
+            "lever_arm_offset",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            ref_point_sel: p_ref_point_sel,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+}
+
+impl ReferencePointLeverArm {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for ReferencePointLeverArm {
+    const DESCRIPTOR: u8 = 0x56;
+    const NAME: &'static str = "reference_point_lever_arm";
+}
+
+/// Reference point lever arm (response). Current reference point lever arm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReferencePointLeverArmResponse {
+    /// Reference point.
+    pub ref_point_sel: crate::types::ReferencePointSelector,
+    /// Lever arm in the vehicle frame. Units: m.
+    pub lever_arm_offset: [f32; 3],
+}
+
+impl Default for ReferencePointLeverArmResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ReferencePointLeverArmResponse {
+    const ZERO: Self = Self {
+        ref_point_sel: <crate::types::ReferencePointSelector as crate::wire::Wire>::ZERO,
+        lever_arm_offset: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(13);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_ref_point_sel =
+            <crate::types::ReferencePointSelector as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("ref_point_sel"))?;
+        let p_lever_arm_offset =
+            <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("lever_arm_offset"))?;
+        Ok(Self {
+            ref_point_sel: p_ref_point_sel,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.ref_point_sel;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("ref_point_sel"))?;
+        let v = &self.lever_arm_offset;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("lever_arm_offset"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.ref_point_sel;
+        crate::json::key(w, &mut first, "ref_point_sel")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.lever_arm_offset;
+        crate::json::key(w, &mut first, "lever_arm_offset")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ReferencePointLeverArmResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["ref_point_sel", "lever_arm_offset"])?;
+        let p_ref_point_sel = o.req(
+            "ref_point_sel",
+            <crate::types::ReferencePointSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_lever_arm_offset = o.req(
+            "lever_arm_offset",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            ref_point_sel: p_ref_point_sel,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+}
+
+impl ReferencePointLeverArmResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for ReferencePointLeverArmResponse {
+    const DESCRIPTOR: u8 = 0xD6;
+    const NAME: &'static str = "reference_point_lever_arm_response";
+}
+
+/// Measurement speed lever arm. Lever arm of the speed measurement point (e.g. an odometer on one wheel), in the vehicle frame, used to compensate the speed difference caused by vehicle rotation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedLeverArm {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// Speed source; reserved, must be 1. Sent for: write, read, save, load, default.
+    pub source: u8,
+    /// Lever arm in the vehicle frame. Units: m. Sent for: write.
+    pub lever_arm_offset: Option<[f32; 3]>,
+}
+
+impl Default for SpeedLeverArm {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SpeedLeverArm {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        source: <u8 as crate::wire::Wire>::ZERO,
+        lever_arm_offset: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_source = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("source"))?;
+        let p_lever_arm_offset = if r.left() > 0 {
+            Some(<[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("lever_arm_offset"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        if let Some(v) = &self.lever_arm_offset {
+            optionals.present("lever_arm_offset")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("lever_arm_offset"))?;
+        } else {
+            optionals.absent("lever_arm_offset");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.lever_arm_offset {
+            crate::json::key(w, &mut first, "lever_arm_offset")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SpeedLeverArm {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "source", "lever_arm_offset"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_source = o.req("source", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_lever_arm_offset = o.opt(
+            "lever_arm_offset",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            function: p_function,
+            source: p_source,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+}
+
+impl SpeedLeverArm {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for SpeedLeverArm {
+    const DESCRIPTOR: u8 = 0x61;
+    const NAME: &'static str = "speed_lever_arm";
+}
+
+/// Measurement speed lever arm (response). Current speed measurement lever arm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedLeverArmResponse {
+    /// Speed source (1).
+    pub source: u8,
+    /// Lever arm in the vehicle frame. Units: m.
+    pub lever_arm_offset: [f32; 3],
+}
+
+impl Default for SpeedLeverArmResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SpeedLeverArmResponse {
+    const ZERO: Self = Self {
+        source: <u8 as crate::wire::Wire>::ZERO,
+        lever_arm_offset: <[f32; 3] as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(13);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_source = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("source"))?;
+        let p_lever_arm_offset =
+            <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("lever_arm_offset"))?;
+        Ok(Self {
+            source: p_source,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.source;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source"))?;
+        let v = &self.lever_arm_offset;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("lever_arm_offset"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.source;
+        crate::json::key(w, &mut first, "source")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.lever_arm_offset;
+        crate::json::key(w, &mut first, "lever_arm_offset")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SpeedLeverArmResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["source", "lever_arm_offset"])?;
+        let p_source = o.req("source", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_lever_arm_offset = o.req(
+            "lever_arm_offset",
+            <[f32; 3] as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            source: p_source,
+            lever_arm_offset: p_lever_arm_offset,
+        })
+    }
+}
+
+impl SpeedLeverArmResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for SpeedLeverArmResponse {
+    const DESCRIPTOR: u8 = 0xE1;
+    const NAME: &'static str = "speed_lever_arm_response";
+}
+
+/// Wheeled vehicle constraint control. Enable the wheeled vehicle kinematic constraint: velocity is assumed to lie along the vehicle X axis. Helps heading for ground vehicles, especially with intermittent GNSS.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WheeledVehicleConstraintControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// 0 disables, 1 enables the constraint. Sent for: write.
+    pub enable: Option<u8>,
+}
+
+impl Default for WheeledVehicleConstraintControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for WheeledVehicleConstraintControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        enable: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_enable = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            enable: p_enable,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.enable {
+            optionals.present("enable")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        } else {
+            optionals.absent("enable");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.enable {
+            crate::json::key(w, &mut first, "enable")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for WheeledVehicleConstraintControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "enable"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_enable = o.opt("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            enable: p_enable,
+        })
+    }
+}
+
+impl WheeledVehicleConstraintControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for WheeledVehicleConstraintControl {
+    const DESCRIPTOR: u8 = 0x63;
+    const NAME: &'static str = "wheeled_vehicle_constraint_control";
+}
+
+/// Wheeled vehicle constraint control (response). Whether the wheeled vehicle constraint is enabled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WheeledVehicleConstraintControlResponse {
+    /// 0 disabled, 1 enabled.
+    pub enable: u8,
+}
+
+impl Default for WheeledVehicleConstraintControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for WheeledVehicleConstraintControlResponse {
+    const ZERO: Self = Self {
+        enable: <u8 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
+        Ok(Self { enable: p_enable })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.enable;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.enable;
+        crate::json::key(w, &mut first, "enable")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for WheeledVehicleConstraintControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["enable"])?;
+        let p_enable = o.req("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self { enable: p_enable })
+    }
+}
+
+impl WheeledVehicleConstraintControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for WheeledVehicleConstraintControlResponse {
+    const DESCRIPTOR: u8 = 0xE3;
+    const NAME: &'static str = "wheeled_vehicle_constraint_control_response";
+}
+
+/// GNSS antenna offset calibration control. Enable tracking of the GNSS antenna lever arm error, up to the given maximum offset error (CV7: default 0.1 m, at most 0.5 m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GnssAntennaCalibrationControl {
+    /// Function selector (sent first).
+    pub function: crate::types::FunctionSelector,
+    /// 0 disables, 1 enables lever arm error tracking. Sent for: write.
+    pub enable: Option<u8>,
+    /// Largest absolute lever arm offset error in the vehicle frame. Units: m. Sent for: write.
+    pub max_offset: Option<f32>,
+}
+
+impl Default for GnssAntennaCalibrationControl {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GnssAntennaCalibrationControl {
+    const ZERO: Self = Self {
+        function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
+        enable: None,
+        max_offset: None,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("function"))?;
+        let p_enable = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?)
+        } else {
+            None
+        };
+        let p_max_offset = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_offset"))?)
+        } else {
+            None
+        };
+        Ok(Self {
+            function: p_function,
+            enable: p_enable,
+            max_offset: p_max_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
+        let v = &self.function;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
+        if let Some(v) = &self.enable {
+            optionals.present("enable")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        } else {
+            optionals.absent("enable");
+        }
+        if let Some(v) = &self.max_offset {
+            optionals.present("max_offset")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_offset"))?;
+        } else {
+            optionals.absent("max_offset");
+        }
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.function;
+        crate::json::key(w, &mut first, "function")?;
+        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.enable {
+            crate::json::key(w, &mut first, "enable")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.max_offset {
+            crate::json::key(w, &mut first, "max_offset")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssAntennaCalibrationControl {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["function", "enable", "max_offset"])?;
+        let p_function = o.req(
+            "function",
+            <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_enable = o.opt("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_max_offset = o.opt("max_offset", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            function: p_function,
+            enable: p_enable,
+            max_offset: p_max_offset,
+        })
+    }
+}
+
+impl GnssAntennaCalibrationControl {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for GnssAntennaCalibrationControl {
+    const DESCRIPTOR: u8 = 0x64;
+    const NAME: &'static str = "gnss_antenna_calibration_control";
+}
+
+/// GNSS antenna offset calibration control (response). Current antenna lever arm calibration settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GnssAntennaCalibrationControlResponse {
+    /// 0 disabled, 1 enabled.
+    pub enable: u8,
+    /// Largest absolute lever arm offset error. Units: m.
+    pub max_offset: f32,
+}
+
+impl Default for GnssAntennaCalibrationControlResponse {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GnssAntennaCalibrationControlResponse {
+    const ZERO: Self = Self {
+        enable: <u8 as crate::wire::Wire>::ZERO,
+        max_offset: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
+        let p_max_offset = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_offset"))?;
+        Ok(Self {
+            enable: p_enable,
+            max_offset: p_max_offset,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.enable;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        let v = &self.max_offset;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_offset"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.enable;
+        crate::json::key(w, &mut first, "enable")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.max_offset;
+        crate::json::key(w, &mut first, "max_offset")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssAntennaCalibrationControlResponse {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["enable", "max_offset"])?;
+        let p_enable = o.req("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_max_offset = o.req("max_offset", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            enable: p_enable,
+            max_offset: p_max_offset,
+        })
+    }
+}
+
+impl GnssAntennaCalibrationControlResponse {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x0D;
+}
+
+impl crate::wire::Layout for GnssAntennaCalibrationControlResponse {
+    const DESCRIPTOR: u8 = 0xE4;
+    const NAME: &'static str = "gnss_antenna_calibration_control_response";
+}
+
 /// A decoded field of set 0x0D (`filter`).
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -2867,6 +8173,106 @@ pub enum SetField {
     ZuptControlResponse(ZuptControlResponse),
     /// `external_heading_update_with_time` (0x1F).
     ExternalHeadingUpdateWithTime(ExternalHeadingUpdateWithTime),
+    /// `zero_angular_rate_update_control` (0x20).
+    ZeroAngularRateUpdateControl(ZeroAngularRateUpdateControl),
+    /// `zero_angular_rate_update_control_response` (0x8E).
+    ZeroAngularRateUpdateControlResponse(ZeroAngularRateUpdateControlResponse),
+    /// `tare_orientation` (0x21).
+    TareOrientation(TareOrientation),
+    /// `commanded_zupt` (0x22).
+    CommandedZupt(CommandedZupt),
+    /// `commanded_zero_angular_rate_update` (0x23).
+    CommandedZeroAngularRateUpdate(CommandedZeroAngularRateUpdate),
+    /// `mag_capture_auto_calibration` (0x27).
+    MagCaptureAutoCalibration(MagCaptureAutoCalibration),
+    /// `gravity_noise_std_dev` (0x28).
+    GravityNoiseStdDev(GravityNoiseStdDev),
+    /// `gravity_noise_std_dev_response` (0x93).
+    GravityNoiseStdDevResponse(GravityNoiseStdDevResponse),
+    /// `pressure_altitude_noise_std_dev` (0x29).
+    PressureAltitudeNoiseStdDev(PressureAltitudeNoiseStdDev),
+    /// `pressure_altitude_noise_std_dev_response` (0x94).
+    PressureAltitudeNoiseStdDevResponse(PressureAltitudeNoiseStdDevResponse),
+    /// `hard_iron_offset_noise` (0x2B).
+    HardIronOffsetNoise(HardIronOffsetNoise),
+    /// `hard_iron_offset_noise_response` (0x96).
+    HardIronOffsetNoiseResponse(HardIronOffsetNoiseResponse),
+    /// `soft_iron_matrix_noise` (0x2C).
+    SoftIronMatrixNoise(SoftIronMatrixNoise),
+    /// `soft_iron_matrix_noise_response` (0x97).
+    SoftIronMatrixNoiseResponse(SoftIronMatrixNoiseResponse),
+    /// `mag_noise_std_dev` (0x42).
+    MagNoiseStdDev(MagNoiseStdDev),
+    /// `mag_noise_std_dev_response` (0xB1).
+    MagNoiseStdDevResponse(MagNoiseStdDevResponse),
+    /// `declination_source` (0x43).
+    DeclinationSource(DeclinationSource),
+    /// `declination_source_response` (0xB2).
+    DeclinationSourceResponse(DeclinationSourceResponse),
+    /// `gravity_magnitude_adaptive_measurement` (0x44).
+    GravityMagnitudeAdaptiveMeasurement(GravityMagnitudeAdaptiveMeasurement),
+    /// `gravity_magnitude_adaptive_measurement_response` (0xB3).
+    GravityMagnitudeAdaptiveMeasurementResponse(GravityMagnitudeAdaptiveMeasurementResponse),
+    /// `mag_magnitude_adaptive_measurement` (0x45).
+    MagMagnitudeAdaptiveMeasurement(MagMagnitudeAdaptiveMeasurement),
+    /// `mag_magnitude_adaptive_measurement_response` (0xB4).
+    MagMagnitudeAdaptiveMeasurementResponse(MagMagnitudeAdaptiveMeasurementResponse),
+    /// `mag_dip_angle_adaptive_measurement` (0x46).
+    MagDipAngleAdaptiveMeasurement(MagDipAngleAdaptiveMeasurement),
+    /// `mag_dip_angle_adaptive_measurement_response` (0xB5).
+    MagDipAngleAdaptiveMeasurementResponse(MagDipAngleAdaptiveMeasurementResponse),
+    /// `altitude_aiding_control` (0x47).
+    AltitudeAidingControl(AltitudeAidingControl),
+    /// `altitude_aiding_control_response` (0xB7).
+    AltitudeAidingControlResponse(AltitudeAidingControlResponse),
+    /// `pitch_roll_aiding_control` (0x4B).
+    PitchRollAidingControl(PitchRollAidingControl),
+    /// `pitch_roll_aiding_control_response` (0xBB).
+    PitchRollAidingControlResponse(PitchRollAidingControlResponse),
+    /// `inclination_source` (0x4C).
+    InclinationSource(InclinationSource),
+    /// `inclination_source_response` (0xBC).
+    InclinationSourceResponse(InclinationSourceResponse),
+    /// `magnetic_field_magnitude_source` (0x4D).
+    MagneticFieldMagnitudeSource(MagneticFieldMagnitudeSource),
+    /// `magnetic_field_magnitude_source_response` (0xBD).
+    MagneticFieldMagnitudeSourceResponse(MagneticFieldMagnitudeSourceResponse),
+    /// `aiding_measurement_control` (0x50).
+    AidingMeasurementControl(AidingMeasurementControl),
+    /// `aiding_measurement_control_response` (0xD0).
+    AidingMeasurementControlResponse(AidingMeasurementControlResponse),
+    /// `initialization_configuration` (0x52).
+    InitializationConfiguration(InitializationConfiguration),
+    /// `initialization_configuration_response` (0xD2).
+    InitializationConfigurationResponse(InitializationConfigurationResponse),
+    /// `adaptive_filter_control` (0x53).
+    AdaptiveFilterControl(AdaptiveFilterControl),
+    /// `adaptive_filter_control_response` (0xD3).
+    AdaptiveFilterControlResponse(AdaptiveFilterControlResponse),
+    /// `multi_antenna_offset` (0x54).
+    MultiAntennaOffset(MultiAntennaOffset),
+    /// `multi_antenna_offset_response` (0xD4).
+    MultiAntennaOffsetResponse(MultiAntennaOffsetResponse),
+    /// `relative_position_configuration` (0x55).
+    RelativePositionConfiguration(RelativePositionConfiguration),
+    /// `relative_position_configuration_response` (0xD5).
+    RelativePositionConfigurationResponse(RelativePositionConfigurationResponse),
+    /// `reference_point_lever_arm` (0x56).
+    ReferencePointLeverArm(ReferencePointLeverArm),
+    /// `reference_point_lever_arm_response` (0xD6).
+    ReferencePointLeverArmResponse(ReferencePointLeverArmResponse),
+    /// `speed_lever_arm` (0x61).
+    SpeedLeverArm(SpeedLeverArm),
+    /// `speed_lever_arm_response` (0xE1).
+    SpeedLeverArmResponse(SpeedLeverArmResponse),
+    /// `wheeled_vehicle_constraint_control` (0x63).
+    WheeledVehicleConstraintControl(WheeledVehicleConstraintControl),
+    /// `wheeled_vehicle_constraint_control_response` (0xE3).
+    WheeledVehicleConstraintControlResponse(WheeledVehicleConstraintControlResponse),
+    /// `gnss_antenna_calibration_control` (0x64).
+    GnssAntennaCalibrationControl(GnssAntennaCalibrationControl),
+    /// `gnss_antenna_calibration_control_response` (0xE4).
+    GnssAntennaCalibrationControlResponse(GnssAntennaCalibrationControlResponse),
 }
 
 impl SetField {
@@ -2906,6 +8312,56 @@ impl SetField {
             Self::ZuptControl(_) => 0x1E,
             Self::ZuptControlResponse(_) => 0x8D,
             Self::ExternalHeadingUpdateWithTime(_) => 0x1F,
+            Self::ZeroAngularRateUpdateControl(_) => 0x20,
+            Self::ZeroAngularRateUpdateControlResponse(_) => 0x8E,
+            Self::TareOrientation(_) => 0x21,
+            Self::CommandedZupt(_) => 0x22,
+            Self::CommandedZeroAngularRateUpdate(_) => 0x23,
+            Self::MagCaptureAutoCalibration(_) => 0x27,
+            Self::GravityNoiseStdDev(_) => 0x28,
+            Self::GravityNoiseStdDevResponse(_) => 0x93,
+            Self::PressureAltitudeNoiseStdDev(_) => 0x29,
+            Self::PressureAltitudeNoiseStdDevResponse(_) => 0x94,
+            Self::HardIronOffsetNoise(_) => 0x2B,
+            Self::HardIronOffsetNoiseResponse(_) => 0x96,
+            Self::SoftIronMatrixNoise(_) => 0x2C,
+            Self::SoftIronMatrixNoiseResponse(_) => 0x97,
+            Self::MagNoiseStdDev(_) => 0x42,
+            Self::MagNoiseStdDevResponse(_) => 0xB1,
+            Self::DeclinationSource(_) => 0x43,
+            Self::DeclinationSourceResponse(_) => 0xB2,
+            Self::GravityMagnitudeAdaptiveMeasurement(_) => 0x44,
+            Self::GravityMagnitudeAdaptiveMeasurementResponse(_) => 0xB3,
+            Self::MagMagnitudeAdaptiveMeasurement(_) => 0x45,
+            Self::MagMagnitudeAdaptiveMeasurementResponse(_) => 0xB4,
+            Self::MagDipAngleAdaptiveMeasurement(_) => 0x46,
+            Self::MagDipAngleAdaptiveMeasurementResponse(_) => 0xB5,
+            Self::AltitudeAidingControl(_) => 0x47,
+            Self::AltitudeAidingControlResponse(_) => 0xB7,
+            Self::PitchRollAidingControl(_) => 0x4B,
+            Self::PitchRollAidingControlResponse(_) => 0xBB,
+            Self::InclinationSource(_) => 0x4C,
+            Self::InclinationSourceResponse(_) => 0xBC,
+            Self::MagneticFieldMagnitudeSource(_) => 0x4D,
+            Self::MagneticFieldMagnitudeSourceResponse(_) => 0xBD,
+            Self::AidingMeasurementControl(_) => 0x50,
+            Self::AidingMeasurementControlResponse(_) => 0xD0,
+            Self::InitializationConfiguration(_) => 0x52,
+            Self::InitializationConfigurationResponse(_) => 0xD2,
+            Self::AdaptiveFilterControl(_) => 0x53,
+            Self::AdaptiveFilterControlResponse(_) => 0xD3,
+            Self::MultiAntennaOffset(_) => 0x54,
+            Self::MultiAntennaOffsetResponse(_) => 0xD4,
+            Self::RelativePositionConfiguration(_) => 0x55,
+            Self::RelativePositionConfigurationResponse(_) => 0xD5,
+            Self::ReferencePointLeverArm(_) => 0x56,
+            Self::ReferencePointLeverArmResponse(_) => 0xD6,
+            Self::SpeedLeverArm(_) => 0x61,
+            Self::SpeedLeverArmResponse(_) => 0xE1,
+            Self::WheeledVehicleConstraintControl(_) => 0x63,
+            Self::WheeledVehicleConstraintControlResponse(_) => 0xE3,
+            Self::GnssAntennaCalibrationControl(_) => 0x64,
+            Self::GnssAntennaCalibrationControlResponse(_) => 0xE4,
         }
     }
 
@@ -2945,6 +8401,76 @@ impl SetField {
             Self::ZuptControl(_) => "zupt_control",
             Self::ZuptControlResponse(_) => "zupt_control_response",
             Self::ExternalHeadingUpdateWithTime(_) => "external_heading_update_with_time",
+            Self::ZeroAngularRateUpdateControl(_) => "zero_angular_rate_update_control",
+            Self::ZeroAngularRateUpdateControlResponse(_) => {
+                "zero_angular_rate_update_control_response"
+            }
+            Self::TareOrientation(_) => "tare_orientation",
+            Self::CommandedZupt(_) => "commanded_zupt",
+            Self::CommandedZeroAngularRateUpdate(_) => "commanded_zero_angular_rate_update",
+            Self::MagCaptureAutoCalibration(_) => "mag_capture_auto_calibration",
+            Self::GravityNoiseStdDev(_) => "gravity_noise_std_dev",
+            Self::GravityNoiseStdDevResponse(_) => "gravity_noise_std_dev_response",
+            Self::PressureAltitudeNoiseStdDev(_) => "pressure_altitude_noise_std_dev",
+            Self::PressureAltitudeNoiseStdDevResponse(_) => {
+                "pressure_altitude_noise_std_dev_response"
+            }
+            Self::HardIronOffsetNoise(_) => "hard_iron_offset_noise",
+            Self::HardIronOffsetNoiseResponse(_) => "hard_iron_offset_noise_response",
+            Self::SoftIronMatrixNoise(_) => "soft_iron_matrix_noise",
+            Self::SoftIronMatrixNoiseResponse(_) => "soft_iron_matrix_noise_response",
+            Self::MagNoiseStdDev(_) => "mag_noise_std_dev",
+            Self::MagNoiseStdDevResponse(_) => "mag_noise_std_dev_response",
+            Self::DeclinationSource(_) => "declination_source",
+            Self::DeclinationSourceResponse(_) => "declination_source_response",
+            Self::GravityMagnitudeAdaptiveMeasurement(_) => {
+                "gravity_magnitude_adaptive_measurement"
+            }
+            Self::GravityMagnitudeAdaptiveMeasurementResponse(_) => {
+                "gravity_magnitude_adaptive_measurement_response"
+            }
+            Self::MagMagnitudeAdaptiveMeasurement(_) => "mag_magnitude_adaptive_measurement",
+            Self::MagMagnitudeAdaptiveMeasurementResponse(_) => {
+                "mag_magnitude_adaptive_measurement_response"
+            }
+            Self::MagDipAngleAdaptiveMeasurement(_) => "mag_dip_angle_adaptive_measurement",
+            Self::MagDipAngleAdaptiveMeasurementResponse(_) => {
+                "mag_dip_angle_adaptive_measurement_response"
+            }
+            Self::AltitudeAidingControl(_) => "altitude_aiding_control",
+            Self::AltitudeAidingControlResponse(_) => "altitude_aiding_control_response",
+            Self::PitchRollAidingControl(_) => "pitch_roll_aiding_control",
+            Self::PitchRollAidingControlResponse(_) => "pitch_roll_aiding_control_response",
+            Self::InclinationSource(_) => "inclination_source",
+            Self::InclinationSourceResponse(_) => "inclination_source_response",
+            Self::MagneticFieldMagnitudeSource(_) => "magnetic_field_magnitude_source",
+            Self::MagneticFieldMagnitudeSourceResponse(_) => {
+                "magnetic_field_magnitude_source_response"
+            }
+            Self::AidingMeasurementControl(_) => "aiding_measurement_control",
+            Self::AidingMeasurementControlResponse(_) => "aiding_measurement_control_response",
+            Self::InitializationConfiguration(_) => "initialization_configuration",
+            Self::InitializationConfigurationResponse(_) => "initialization_configuration_response",
+            Self::AdaptiveFilterControl(_) => "adaptive_filter_control",
+            Self::AdaptiveFilterControlResponse(_) => "adaptive_filter_control_response",
+            Self::MultiAntennaOffset(_) => "multi_antenna_offset",
+            Self::MultiAntennaOffsetResponse(_) => "multi_antenna_offset_response",
+            Self::RelativePositionConfiguration(_) => "relative_position_configuration",
+            Self::RelativePositionConfigurationResponse(_) => {
+                "relative_position_configuration_response"
+            }
+            Self::ReferencePointLeverArm(_) => "reference_point_lever_arm",
+            Self::ReferencePointLeverArmResponse(_) => "reference_point_lever_arm_response",
+            Self::SpeedLeverArm(_) => "speed_lever_arm",
+            Self::SpeedLeverArmResponse(_) => "speed_lever_arm_response",
+            Self::WheeledVehicleConstraintControl(_) => "wheeled_vehicle_constraint_control",
+            Self::WheeledVehicleConstraintControlResponse(_) => {
+                "wheeled_vehicle_constraint_control_response"
+            }
+            Self::GnssAntennaCalibrationControl(_) => "gnss_antenna_calibration_control",
+            Self::GnssAntennaCalibrationControlResponse(_) => {
+                "gnss_antenna_calibration_control_response"
+            }
         }
     }
 
@@ -2984,6 +8510,56 @@ impl SetField {
             Self::ZuptControl(_) => None,
             Self::ZuptControlResponse(_) => None,
             Self::ExternalHeadingUpdateWithTime(_) => None,
+            Self::ZeroAngularRateUpdateControl(_) => None,
+            Self::ZeroAngularRateUpdateControlResponse(_) => None,
+            Self::TareOrientation(_) => None,
+            Self::CommandedZupt(_) => None,
+            Self::CommandedZeroAngularRateUpdate(_) => None,
+            Self::MagCaptureAutoCalibration(_) => None,
+            Self::GravityNoiseStdDev(_) => None,
+            Self::GravityNoiseStdDevResponse(_) => None,
+            Self::PressureAltitudeNoiseStdDev(_) => None,
+            Self::PressureAltitudeNoiseStdDevResponse(_) => None,
+            Self::HardIronOffsetNoise(_) => None,
+            Self::HardIronOffsetNoiseResponse(_) => None,
+            Self::SoftIronMatrixNoise(_) => None,
+            Self::SoftIronMatrixNoiseResponse(_) => None,
+            Self::MagNoiseStdDev(_) => None,
+            Self::MagNoiseStdDevResponse(_) => None,
+            Self::DeclinationSource(_) => None,
+            Self::DeclinationSourceResponse(_) => None,
+            Self::GravityMagnitudeAdaptiveMeasurement(_) => None,
+            Self::GravityMagnitudeAdaptiveMeasurementResponse(_) => None,
+            Self::MagMagnitudeAdaptiveMeasurement(_) => None,
+            Self::MagMagnitudeAdaptiveMeasurementResponse(_) => None,
+            Self::MagDipAngleAdaptiveMeasurement(_) => None,
+            Self::MagDipAngleAdaptiveMeasurementResponse(_) => None,
+            Self::AltitudeAidingControl(_) => None,
+            Self::AltitudeAidingControlResponse(_) => None,
+            Self::PitchRollAidingControl(_) => None,
+            Self::PitchRollAidingControlResponse(_) => None,
+            Self::InclinationSource(_) => None,
+            Self::InclinationSourceResponse(_) => None,
+            Self::MagneticFieldMagnitudeSource(_) => None,
+            Self::MagneticFieldMagnitudeSourceResponse(_) => None,
+            Self::AidingMeasurementControl(_) => None,
+            Self::AidingMeasurementControlResponse(_) => None,
+            Self::InitializationConfiguration(_) => None,
+            Self::InitializationConfigurationResponse(_) => None,
+            Self::AdaptiveFilterControl(_) => None,
+            Self::AdaptiveFilterControlResponse(_) => None,
+            Self::MultiAntennaOffset(_) => None,
+            Self::MultiAntennaOffsetResponse(_) => None,
+            Self::RelativePositionConfiguration(_) => None,
+            Self::RelativePositionConfigurationResponse(_) => None,
+            Self::ReferencePointLeverArm(_) => None,
+            Self::ReferencePointLeverArmResponse(_) => None,
+            Self::SpeedLeverArm(_) => None,
+            Self::SpeedLeverArmResponse(_) => None,
+            Self::WheeledVehicleConstraintControl(_) => None,
+            Self::WheeledVehicleConstraintControlResponse(_) => None,
+            Self::GnssAntennaCalibrationControl(_) => None,
+            Self::GnssAntennaCalibrationControlResponse(_) => None,
         }
     }
 
@@ -3026,6 +8602,68 @@ impl SetField {
             Self::ZuptControl(v) => crate::wire::Layout::encode_data(v, w),
             Self::ZuptControlResponse(v) => crate::wire::Layout::encode_data(v, w),
             Self::ExternalHeadingUpdateWithTime(v) => crate::wire::Layout::encode_data(v, w),
+            Self::ZeroAngularRateUpdateControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::ZeroAngularRateUpdateControlResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::TareOrientation(v) => crate::wire::Layout::encode_data(v, w),
+            Self::CommandedZupt(v) => crate::wire::Layout::encode_data(v, w),
+            Self::CommandedZeroAngularRateUpdate(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagCaptureAutoCalibration(v) => crate::wire::Layout::encode_data(v, w),
+            Self::GravityNoiseStdDev(v) => crate::wire::Layout::encode_data(v, w),
+            Self::GravityNoiseStdDevResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::PressureAltitudeNoiseStdDev(v) => crate::wire::Layout::encode_data(v, w),
+            Self::PressureAltitudeNoiseStdDevResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::HardIronOffsetNoise(v) => crate::wire::Layout::encode_data(v, w),
+            Self::HardIronOffsetNoiseResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::SoftIronMatrixNoise(v) => crate::wire::Layout::encode_data(v, w),
+            Self::SoftIronMatrixNoiseResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagNoiseStdDev(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagNoiseStdDevResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::DeclinationSource(v) => crate::wire::Layout::encode_data(v, w),
+            Self::DeclinationSourceResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::GravityMagnitudeAdaptiveMeasurement(v) => crate::wire::Layout::encode_data(v, w),
+            Self::GravityMagnitudeAdaptiveMeasurementResponse(v) => {
+                crate::wire::Layout::encode_data(v, w)
+            }
+            Self::MagMagnitudeAdaptiveMeasurement(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagMagnitudeAdaptiveMeasurementResponse(v) => {
+                crate::wire::Layout::encode_data(v, w)
+            }
+            Self::MagDipAngleAdaptiveMeasurement(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagDipAngleAdaptiveMeasurementResponse(v) => {
+                crate::wire::Layout::encode_data(v, w)
+            }
+            Self::AltitudeAidingControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::AltitudeAidingControlResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::PitchRollAidingControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::PitchRollAidingControlResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::InclinationSource(v) => crate::wire::Layout::encode_data(v, w),
+            Self::InclinationSourceResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagneticFieldMagnitudeSource(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MagneticFieldMagnitudeSourceResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::AidingMeasurementControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::AidingMeasurementControlResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::InitializationConfiguration(v) => crate::wire::Layout::encode_data(v, w),
+            Self::InitializationConfigurationResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::AdaptiveFilterControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::AdaptiveFilterControlResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MultiAntennaOffset(v) => crate::wire::Layout::encode_data(v, w),
+            Self::MultiAntennaOffsetResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::RelativePositionConfiguration(v) => crate::wire::Layout::encode_data(v, w),
+            Self::RelativePositionConfigurationResponse(v) => {
+                crate::wire::Layout::encode_data(v, w)
+            }
+            Self::ReferencePointLeverArm(v) => crate::wire::Layout::encode_data(v, w),
+            Self::ReferencePointLeverArmResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::SpeedLeverArm(v) => crate::wire::Layout::encode_data(v, w),
+            Self::SpeedLeverArmResponse(v) => crate::wire::Layout::encode_data(v, w),
+            Self::WheeledVehicleConstraintControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::WheeledVehicleConstraintControlResponse(v) => {
+                crate::wire::Layout::encode_data(v, w)
+            }
+            Self::GnssAntennaCalibrationControl(v) => crate::wire::Layout::encode_data(v, w),
+            Self::GnssAntennaCalibrationControlResponse(v) => {
+                crate::wire::Layout::encode_data(v, w)
+            }
         }
     }
 
@@ -3065,6 +8703,58 @@ impl SetField {
             Self::ZuptControl(v) => crate::wire::Wire::write_json(v, w),
             Self::ZuptControlResponse(v) => crate::wire::Wire::write_json(v, w),
             Self::ExternalHeadingUpdateWithTime(v) => crate::wire::Wire::write_json(v, w),
+            Self::ZeroAngularRateUpdateControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::ZeroAngularRateUpdateControlResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::TareOrientation(v) => crate::wire::Wire::write_json(v, w),
+            Self::CommandedZupt(v) => crate::wire::Wire::write_json(v, w),
+            Self::CommandedZeroAngularRateUpdate(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagCaptureAutoCalibration(v) => crate::wire::Wire::write_json(v, w),
+            Self::GravityNoiseStdDev(v) => crate::wire::Wire::write_json(v, w),
+            Self::GravityNoiseStdDevResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::PressureAltitudeNoiseStdDev(v) => crate::wire::Wire::write_json(v, w),
+            Self::PressureAltitudeNoiseStdDevResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::HardIronOffsetNoise(v) => crate::wire::Wire::write_json(v, w),
+            Self::HardIronOffsetNoiseResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::SoftIronMatrixNoise(v) => crate::wire::Wire::write_json(v, w),
+            Self::SoftIronMatrixNoiseResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagNoiseStdDev(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagNoiseStdDevResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::DeclinationSource(v) => crate::wire::Wire::write_json(v, w),
+            Self::DeclinationSourceResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::GravityMagnitudeAdaptiveMeasurement(v) => crate::wire::Wire::write_json(v, w),
+            Self::GravityMagnitudeAdaptiveMeasurementResponse(v) => {
+                crate::wire::Wire::write_json(v, w)
+            }
+            Self::MagMagnitudeAdaptiveMeasurement(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagMagnitudeAdaptiveMeasurementResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagDipAngleAdaptiveMeasurement(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagDipAngleAdaptiveMeasurementResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::AltitudeAidingControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::AltitudeAidingControlResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::PitchRollAidingControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::PitchRollAidingControlResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::InclinationSource(v) => crate::wire::Wire::write_json(v, w),
+            Self::InclinationSourceResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagneticFieldMagnitudeSource(v) => crate::wire::Wire::write_json(v, w),
+            Self::MagneticFieldMagnitudeSourceResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::AidingMeasurementControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::AidingMeasurementControlResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::InitializationConfiguration(v) => crate::wire::Wire::write_json(v, w),
+            Self::InitializationConfigurationResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::AdaptiveFilterControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::AdaptiveFilterControlResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::MultiAntennaOffset(v) => crate::wire::Wire::write_json(v, w),
+            Self::MultiAntennaOffsetResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::RelativePositionConfiguration(v) => crate::wire::Wire::write_json(v, w),
+            Self::RelativePositionConfigurationResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::ReferencePointLeverArm(v) => crate::wire::Wire::write_json(v, w),
+            Self::ReferencePointLeverArmResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::SpeedLeverArm(v) => crate::wire::Wire::write_json(v, w),
+            Self::SpeedLeverArmResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::WheeledVehicleConstraintControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::WheeledVehicleConstraintControlResponse(v) => crate::wire::Wire::write_json(v, w),
+            Self::GnssAntennaCalibrationControl(v) => crate::wire::Wire::write_json(v, w),
+            Self::GnssAntennaCalibrationControlResponse(v) => crate::wire::Wire::write_json(v, w),
         }
     }
 
@@ -3201,6 +8891,206 @@ impl SetField {
                 <ExternalHeadingUpdateWithTime as crate::wire::Layout>::decode_data(data)
                     .map(Self::ExternalHeadingUpdateWithTime),
             ),
+            0x20 => Some(
+                <ZeroAngularRateUpdateControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::ZeroAngularRateUpdateControl),
+            ),
+            0x8E => Some(
+                <ZeroAngularRateUpdateControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::ZeroAngularRateUpdateControlResponse),
+            ),
+            0x21 => Some(
+                <TareOrientation as crate::wire::Layout>::decode_data(data)
+                    .map(Self::TareOrientation),
+            ),
+            0x22 => Some(
+                <CommandedZupt as crate::wire::Layout>::decode_data(data).map(Self::CommandedZupt),
+            ),
+            0x23 => Some(
+                <CommandedZeroAngularRateUpdate as crate::wire::Layout>::decode_data(data)
+                    .map(Self::CommandedZeroAngularRateUpdate),
+            ),
+            0x27 => Some(
+                <MagCaptureAutoCalibration as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagCaptureAutoCalibration),
+            ),
+            0x28 => Some(
+                <GravityNoiseStdDev as crate::wire::Layout>::decode_data(data)
+                    .map(Self::GravityNoiseStdDev),
+            ),
+            0x93 => Some(
+                <GravityNoiseStdDevResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::GravityNoiseStdDevResponse),
+            ),
+            0x29 => Some(
+                <PressureAltitudeNoiseStdDev as crate::wire::Layout>::decode_data(data)
+                    .map(Self::PressureAltitudeNoiseStdDev),
+            ),
+            0x94 => Some(
+                <PressureAltitudeNoiseStdDevResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::PressureAltitudeNoiseStdDevResponse),
+            ),
+            0x2B => Some(
+                <HardIronOffsetNoise as crate::wire::Layout>::decode_data(data)
+                    .map(Self::HardIronOffsetNoise),
+            ),
+            0x96 => Some(
+                <HardIronOffsetNoiseResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::HardIronOffsetNoiseResponse),
+            ),
+            0x2C => Some(
+                <SoftIronMatrixNoise as crate::wire::Layout>::decode_data(data)
+                    .map(Self::SoftIronMatrixNoise),
+            ),
+            0x97 => Some(
+                <SoftIronMatrixNoiseResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::SoftIronMatrixNoiseResponse),
+            ),
+            0x42 => Some(
+                <MagNoiseStdDev as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagNoiseStdDev),
+            ),
+            0xB1 => Some(
+                <MagNoiseStdDevResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagNoiseStdDevResponse),
+            ),
+            0x43 => Some(
+                <DeclinationSource as crate::wire::Layout>::decode_data(data)
+                    .map(Self::DeclinationSource),
+            ),
+            0xB2 => Some(
+                <DeclinationSourceResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::DeclinationSourceResponse),
+            ),
+            0x44 => Some(
+                <GravityMagnitudeAdaptiveMeasurement as crate::wire::Layout>::decode_data(data)
+                    .map(Self::GravityMagnitudeAdaptiveMeasurement),
+            ),
+            0xB3 => Some(
+                <GravityMagnitudeAdaptiveMeasurementResponse as crate::wire::Layout>::decode_data(
+                    data,
+                )
+                .map(Self::GravityMagnitudeAdaptiveMeasurementResponse),
+            ),
+            0x45 => Some(
+                <MagMagnitudeAdaptiveMeasurement as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagMagnitudeAdaptiveMeasurement),
+            ),
+            0xB4 => Some(
+                <MagMagnitudeAdaptiveMeasurementResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagMagnitudeAdaptiveMeasurementResponse),
+            ),
+            0x46 => Some(
+                <MagDipAngleAdaptiveMeasurement as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagDipAngleAdaptiveMeasurement),
+            ),
+            0xB5 => Some(
+                <MagDipAngleAdaptiveMeasurementResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagDipAngleAdaptiveMeasurementResponse),
+            ),
+            0x47 => Some(
+                <AltitudeAidingControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::AltitudeAidingControl),
+            ),
+            0xB7 => Some(
+                <AltitudeAidingControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::AltitudeAidingControlResponse),
+            ),
+            0x4B => Some(
+                <PitchRollAidingControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::PitchRollAidingControl),
+            ),
+            0xBB => Some(
+                <PitchRollAidingControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::PitchRollAidingControlResponse),
+            ),
+            0x4C => Some(
+                <InclinationSource as crate::wire::Layout>::decode_data(data)
+                    .map(Self::InclinationSource),
+            ),
+            0xBC => Some(
+                <InclinationSourceResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::InclinationSourceResponse),
+            ),
+            0x4D => Some(
+                <MagneticFieldMagnitudeSource as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagneticFieldMagnitudeSource),
+            ),
+            0xBD => Some(
+                <MagneticFieldMagnitudeSourceResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MagneticFieldMagnitudeSourceResponse),
+            ),
+            0x50 => Some(
+                <AidingMeasurementControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::AidingMeasurementControl),
+            ),
+            0xD0 => Some(
+                <AidingMeasurementControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::AidingMeasurementControlResponse),
+            ),
+            0x52 => Some(
+                <InitializationConfiguration as crate::wire::Layout>::decode_data(data)
+                    .map(Self::InitializationConfiguration),
+            ),
+            0xD2 => Some(
+                <InitializationConfigurationResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::InitializationConfigurationResponse),
+            ),
+            0x53 => Some(
+                <AdaptiveFilterControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::AdaptiveFilterControl),
+            ),
+            0xD3 => Some(
+                <AdaptiveFilterControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::AdaptiveFilterControlResponse),
+            ),
+            0x54 => Some(
+                <MultiAntennaOffset as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MultiAntennaOffset),
+            ),
+            0xD4 => Some(
+                <MultiAntennaOffsetResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::MultiAntennaOffsetResponse),
+            ),
+            0x55 => Some(
+                <RelativePositionConfiguration as crate::wire::Layout>::decode_data(data)
+                    .map(Self::RelativePositionConfiguration),
+            ),
+            0xD5 => Some(
+                <RelativePositionConfigurationResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::RelativePositionConfigurationResponse),
+            ),
+            0x56 => Some(
+                <ReferencePointLeverArm as crate::wire::Layout>::decode_data(data)
+                    .map(Self::ReferencePointLeverArm),
+            ),
+            0xD6 => Some(
+                <ReferencePointLeverArmResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::ReferencePointLeverArmResponse),
+            ),
+            0x61 => Some(
+                <SpeedLeverArm as crate::wire::Layout>::decode_data(data).map(Self::SpeedLeverArm),
+            ),
+            0xE1 => Some(
+                <SpeedLeverArmResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::SpeedLeverArmResponse),
+            ),
+            0x63 => Some(
+                <WheeledVehicleConstraintControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::WheeledVehicleConstraintControl),
+            ),
+            0xE3 => Some(
+                <WheeledVehicleConstraintControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::WheeledVehicleConstraintControlResponse),
+            ),
+            0x64 => Some(
+                <GnssAntennaCalibrationControl as crate::wire::Layout>::decode_data(data)
+                    .map(Self::GnssAntennaCalibrationControl),
+            ),
+            0xE4 => Some(
+                <GnssAntennaCalibrationControlResponse as crate::wire::Layout>::decode_data(data)
+                    .map(Self::GnssAntennaCalibrationControlResponse),
+            ),
             _ => None,
         }
     }
@@ -3216,276 +9106,583 @@ impl SetField {
             0x01 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <ResetFilter as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <ResetFilter as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::ResetFilter),
             ),
             0x02 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <SetInitialAttitude as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <SetInitialAttitude as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::SetInitialAttitude),
             ),
             0x03 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <SetInitialHeading as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <SetInitialHeading as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::SetInitialHeading),
             ),
             0x05 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <RunFilter as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <RunFilter as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::RunFilter),
             ),
             0x10 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <VehicleDynamicsMode as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <VehicleDynamicsMode as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::VehicleDynamicsMode),
             ),
             0x80 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <VehicleDynamicsModeResponse as crate::json_read::FromJson>::from_json(
-                            values,
-                        )
-                        .map_err(|e| e.at("values"))
+                        <VehicleDynamicsModeResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::VehicleDynamicsModeResponse),
             ),
             0x11 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <SensorToVehicleTransform as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <SensorToVehicleTransform as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::SensorToVehicleTransform),
             ),
             0x81 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <SensorToVehicleTransformResponse as crate::json_read::FromJson>::from_json(
-                            values,
-                        )
-                        .map_err(|e| e.at("values"))
+                        <SensorToVehicleTransformResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::SensorToVehicleTransformResponse),
             ),
             0x12 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <SensorToVehicleOffset as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <SensorToVehicleOffset as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::SensorToVehicleOffset),
             ),
             0x82 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <SensorToVehicleOffsetResponse as crate::json_read::FromJson>::from_json(
-                            values,
-                        )
-                        .map_err(|e| e.at("values"))
+                        <SensorToVehicleOffsetResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::SensorToVehicleOffsetResponse),
             ),
             0x13 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AntennaOffset as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AntennaOffset as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AntennaOffset),
             ),
             0x83 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AntennaOffsetResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AntennaOffsetResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AntennaOffsetResponse),
             ),
             0x14 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <EstimationControl as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <EstimationControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::EstimationControl),
             ),
             0x84 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <EstimationControlResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <EstimationControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::EstimationControlResponse),
             ),
             0x15 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <GnssSourceControl as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <GnssSourceControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::GnssSourceControl),
             ),
             0x86 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <GnssSourceControlResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <GnssSourceControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::GnssSourceControlResponse),
             ),
             0x16 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <ExternalGnssUpdate as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <ExternalGnssUpdate as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::ExternalGnssUpdate),
             ),
             0x17 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <ExternalHeadingUpdate as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <ExternalHeadingUpdate as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::ExternalHeadingUpdate),
             ),
             0x18 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <HeadingUpdateControl as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <HeadingUpdateControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::HeadingUpdateControl),
             ),
             0x87 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <HeadingUpdateControlResponse as crate::json_read::FromJson>::from_json(
-                            values,
-                        )
-                        .map_err(|e| e.at("values"))
+                        <HeadingUpdateControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::HeadingUpdateControlResponse),
             ),
             0x19 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AutoInitControl as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AutoInitControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AutoInitControl),
             ),
             0x88 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AutoInitControlResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AutoInitControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AutoInitControlResponse),
             ),
             0x1A => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AccelNoise as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AccelNoise as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AccelNoise),
             ),
             0x89 => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AccelNoiseResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AccelNoiseResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AccelNoiseResponse),
             ),
             0x1B => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <GyroNoise as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <GyroNoise as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::GyroNoise),
             ),
             0x8A => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <GyroNoiseResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <GyroNoiseResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::GyroNoiseResponse),
             ),
             0x1C => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AccelBiasModel as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AccelBiasModel as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AccelBiasModel),
             ),
             0x8B => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <AccelBiasModelResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <AccelBiasModelResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::AccelBiasModelResponse),
             ),
             0x1D => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <GyroBiasModel as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <GyroBiasModel as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::GyroBiasModel),
             ),
             0x8C => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <GyroBiasModelResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <GyroBiasModelResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::GyroBiasModelResponse),
             ),
             0x1E => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <ZuptControl as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <ZuptControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::ZuptControl),
             ),
             0x8D => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <ZuptControlResponse as crate::json_read::FromJson>::from_json(values)
-                            .map_err(|e| e.at("values"))
+                        <ZuptControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::ZuptControlResponse),
             ),
             0x1F => Some(
                 crate::dispatch::no_device(device)
                     .and_then(|()| {
-                        <ExternalHeadingUpdateWithTime as crate::json_read::FromJson>::from_json(
-                            values,
-                        )
-                        .map_err(|e| e.at("values"))
+                        <ExternalHeadingUpdateWithTime as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
                     })
                     .map(Self::ExternalHeadingUpdateWithTime),
+            ),
+            0x20 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <ZeroAngularRateUpdateControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::ZeroAngularRateUpdateControl),
+            ),
+            0x8E => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <ZeroAngularRateUpdateControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::ZeroAngularRateUpdateControlResponse),
+            ),
+            0x21 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <TareOrientation as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::TareOrientation),
+            ),
+            0x22 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <CommandedZupt as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::CommandedZupt),
+            ),
+            0x23 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <CommandedZeroAngularRateUpdate as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::CommandedZeroAngularRateUpdate),
+            ),
+            0x27 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagCaptureAutoCalibration as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagCaptureAutoCalibration),
+            ),
+            0x28 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <GravityNoiseStdDev as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::GravityNoiseStdDev),
+            ),
+            0x93 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <GravityNoiseStdDevResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::GravityNoiseStdDevResponse),
+            ),
+            0x29 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <PressureAltitudeNoiseStdDev as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::PressureAltitudeNoiseStdDev),
+            ),
+            0x94 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <PressureAltitudeNoiseStdDevResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::PressureAltitudeNoiseStdDevResponse),
+            ),
+            0x2B => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <HardIronOffsetNoise as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::HardIronOffsetNoise),
+            ),
+            0x96 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <HardIronOffsetNoiseResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::HardIronOffsetNoiseResponse),
+            ),
+            0x2C => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <SoftIronMatrixNoise as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::SoftIronMatrixNoise),
+            ),
+            0x97 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <SoftIronMatrixNoiseResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::SoftIronMatrixNoiseResponse),
+            ),
+            0x42 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagNoiseStdDev as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagNoiseStdDev),
+            ),
+            0xB1 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagNoiseStdDevResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagNoiseStdDevResponse),
+            ),
+            0x43 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <DeclinationSource as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::DeclinationSource),
+            ),
+            0xB2 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <DeclinationSourceResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::DeclinationSourceResponse),
+            ),
+            0x44 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <GravityMagnitudeAdaptiveMeasurement as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::GravityMagnitudeAdaptiveMeasurement),
+            ),
+            0xB3 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <GravityMagnitudeAdaptiveMeasurementResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::GravityMagnitudeAdaptiveMeasurementResponse),
+            ),
+            0x45 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagMagnitudeAdaptiveMeasurement as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagMagnitudeAdaptiveMeasurement),
+            ),
+            0xB4 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagMagnitudeAdaptiveMeasurementResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagMagnitudeAdaptiveMeasurementResponse),
+            ),
+            0x46 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagDipAngleAdaptiveMeasurement as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagDipAngleAdaptiveMeasurement),
+            ),
+            0xB5 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagDipAngleAdaptiveMeasurementResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagDipAngleAdaptiveMeasurementResponse),
+            ),
+            0x47 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <AltitudeAidingControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::AltitudeAidingControl),
+            ),
+            0xB7 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <AltitudeAidingControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::AltitudeAidingControlResponse),
+            ),
+            0x4B => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <PitchRollAidingControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::PitchRollAidingControl),
+            ),
+            0xBB => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <PitchRollAidingControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::PitchRollAidingControlResponse),
+            ),
+            0x4C => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <InclinationSource as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::InclinationSource),
+            ),
+            0xBC => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <InclinationSourceResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::InclinationSourceResponse),
+            ),
+            0x4D => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagneticFieldMagnitudeSource as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagneticFieldMagnitudeSource),
+            ),
+            0xBD => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MagneticFieldMagnitudeSourceResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MagneticFieldMagnitudeSourceResponse),
+            ),
+            0x50 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <AidingMeasurementControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::AidingMeasurementControl),
+            ),
+            0xD0 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <AidingMeasurementControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::AidingMeasurementControlResponse),
+            ),
+            0x52 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <InitializationConfiguration as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::InitializationConfiguration),
+            ),
+            0xD2 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <InitializationConfigurationResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::InitializationConfigurationResponse),
+            ),
+            0x53 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <AdaptiveFilterControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::AdaptiveFilterControl),
+            ),
+            0xD3 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <AdaptiveFilterControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::AdaptiveFilterControlResponse),
+            ),
+            0x54 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MultiAntennaOffset as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MultiAntennaOffset),
+            ),
+            0xD4 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <MultiAntennaOffsetResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::MultiAntennaOffsetResponse),
+            ),
+            0x55 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <RelativePositionConfiguration as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::RelativePositionConfiguration),
+            ),
+            0xD5 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <RelativePositionConfigurationResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::RelativePositionConfigurationResponse),
+            ),
+            0x56 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <ReferencePointLeverArm as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::ReferencePointLeverArm),
+            ),
+            0xD6 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <ReferencePointLeverArmResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::ReferencePointLeverArmResponse),
+            ),
+            0x61 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <SpeedLeverArm as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::SpeedLeverArm),
+            ),
+            0xE1 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <SpeedLeverArmResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::SpeedLeverArmResponse),
+            ),
+            0x63 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <WheeledVehicleConstraintControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::WheeledVehicleConstraintControl),
+            ),
+            0xE3 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <WheeledVehicleConstraintControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::WheeledVehicleConstraintControlResponse),
+            ),
+            0x64 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <GnssAntennaCalibrationControl as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::GnssAntennaCalibrationControl),
+            ),
+            0xE4 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <GnssAntennaCalibrationControlResponse as crate::json_read::FromJson>::from_json(values).map_err(|e| e.at("values"))
+                    })
+                    .map(Self::GnssAntennaCalibrationControlResponse),
             ),
             _ => None,
         }

@@ -490,6 +490,162 @@ impl crate::json_read::FromJson for ActionType {
     }
 }
 
+/// Auto-adaptive filter operating level.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AdaptiveFilterLevel(pub u8);
+
+impl AdaptiveFilterLevel {
+    /// Adaptive filtering off.
+    pub const OFF: Self = Self(0);
+    /// Conservative.
+    pub const CONSERVATIVE: Self = Self(1);
+    /// Moderate (default).
+    pub const MODERATE: Self = Self(2);
+    /// Aggressive.
+    pub const AGGRESSIVE: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("off"),
+            1 => Some("conservative"),
+            2 => Some("moderate"),
+            3 => Some("aggressive"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "off" => Some(Self::OFF),
+            "conservative" => Some(Self::CONSERVATIVE),
+            "moderate" => Some(Self::MODERATE),
+            "aggressive" => Some(Self::AGGRESSIVE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AdaptiveFilterLevel {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AdaptiveFilterLevel({} {})", self.0, name),
+            None => write!(f, "AdaptiveFilterLevel({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AdaptiveFilterLevel {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AdaptiveFilterLevel {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AdaptiveFilterLevel"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Adaptive measurement mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AdaptiveMeasurementMode(pub u8);
+
+impl AdaptiveMeasurementMode {
+    /// No adaptive measurement.
+    pub const DISABLED: Self = Self(0);
+    /// Fixed adaptive measurement using the specified filter and limit parameters.
+    pub const FIXED: Self = Self(1);
+    /// Auto-adaptive: the Kalman filter re-weights the measurement by its perceived quality (3DM-GX5 and later); limits are ignored.
+    pub const AUTO: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("disabled"),
+            1 => Some("fixed"),
+            2 => Some("auto"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "disabled" => Some(Self::DISABLED),
+            "fixed" => Some(Self::FIXED),
+            "auto" => Some(Self::AUTO),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AdaptiveMeasurementMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AdaptiveMeasurementMode({} {})", self.0, name),
+            None => write!(f, "AdaptiveMeasurementMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AdaptiveMeasurementMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AdaptiveMeasurementMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AdaptiveMeasurementMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// Aiding command echo mode.
 ///
 /// Values the spec does not list are kept as they are.
@@ -914,6 +1070,110 @@ impl crate::json_read::FromJson for AidingLlhValidFlags {
     }
 }
 
+/// Aiding measurement source.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AidingMeasurementSource(pub u16);
+
+impl AidingMeasurementSource {
+    /// GNSS position and velocity.
+    pub const GNSS_POS_VEL: Self = Self(0);
+    /// GNSS heading (dual antenna).
+    pub const GNSS_HEADING: Self = Self(1);
+    /// Pressure altimeter (built-in sensor).
+    pub const ALTIMETER: Self = Self(2);
+    /// Speed sensor / odometer.
+    pub const SPEED: Self = Self(3);
+    /// Magnetometer (built-in sensor).
+    pub const MAGNETOMETER: Self = Self(4);
+    /// External heading input.
+    pub const EXTERNAL_HEADING: Self = Self(5);
+    /// External pressure altimeter input.
+    pub const EXTERNAL_ALTIMETER: Self = Self(6);
+    /// External magnetometer input.
+    pub const EXTERNAL_MAGNETOMETER: Self = Self(7);
+    /// External body frame velocity input.
+    pub const BODY_FRAME_VEL: Self = Self(8);
+    /// All sources (for save, load and default).
+    pub const ALL: Self = Self(65535);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("gnss_pos_vel"),
+            1 => Some("gnss_heading"),
+            2 => Some("altimeter"),
+            3 => Some("speed"),
+            4 => Some("magnetometer"),
+            5 => Some("external_heading"),
+            6 => Some("external_altimeter"),
+            7 => Some("external_magnetometer"),
+            8 => Some("body_frame_vel"),
+            65535 => Some("all"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "gnss_pos_vel" => Some(Self::GNSS_POS_VEL),
+            "gnss_heading" => Some(Self::GNSS_HEADING),
+            "altimeter" => Some(Self::ALTIMETER),
+            "speed" => Some(Self::SPEED),
+            "magnetometer" => Some(Self::MAGNETOMETER),
+            "external_heading" => Some(Self::EXTERNAL_HEADING),
+            "external_altimeter" => Some(Self::EXTERNAL_ALTIMETER),
+            "external_magnetometer" => Some(Self::EXTERNAL_MAGNETOMETER),
+            "body_frame_vel" => Some(Self::BODY_FRAME_VEL),
+            "all" => Some(Self::ALL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AidingMeasurementSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AidingMeasurementSource({} {})", self.0, name),
+            None => write!(f, "AidingMeasurementSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AidingMeasurementSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AidingMeasurementSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AidingMeasurementSource"
+                ))
+            }),
+            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// Aiding measurement timestamp. Timestamp carried first in every aiding measurement command.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AidingTime {
@@ -1153,6 +1413,78 @@ impl crate::wire::Wire for AidingVectorValidFlags {
 impl crate::json_read::FromJson for AidingVectorValidFlags {
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
         <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Altitude aiding source.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AltitudeAidingSource(pub u8);
+
+impl AltitudeAidingSource {
+    /// No altitude aiding (disabled).
+    pub const NONE: Self = Self(0);
+    /// Pressure sensor aiding enabled.
+    pub const PRESSURE: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("pressure"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "pressure" => Some(Self::PRESSURE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AltitudeAidingSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AltitudeAidingSource({} {})", self.0, name),
+            None => write!(f, "AltitudeAidingSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AltitudeAidingSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AltitudeAidingSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AltitudeAidingSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
     }
 }
 
@@ -2050,6 +2382,158 @@ impl crate::json_read::FromJson for FilterGnssSource {
     }
 }
 
+/// Navigation filter initial condition source.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterInitialConditionSource(pub u8);
+
+impl FilterInitialConditionSource {
+    /// Automatic position, velocity and attitude.
+    pub const AUTO_POS_VEL_ATT: Self = Self(0);
+    /// Automatic position, velocity, pitch and roll; heading as specified.
+    pub const AUTO_POS_VEL_PITCH_ROLL: Self = Self(1);
+    /// Automatic position and velocity; attitude fully user-specified.
+    pub const AUTO_POS_VEL: Self = Self(2);
+    /// User-specified position, velocity and attitude.
+    pub const MANUAL: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("auto_pos_vel_att"),
+            1 => Some("auto_pos_vel_pitch_roll"),
+            2 => Some("auto_pos_vel"),
+            3 => Some("manual"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "auto_pos_vel_att" => Some(Self::AUTO_POS_VEL_ATT),
+            "auto_pos_vel_pitch_roll" => Some(Self::AUTO_POS_VEL_PITCH_ROLL),
+            "auto_pos_vel" => Some(Self::AUTO_POS_VEL),
+            "manual" => Some(Self::MANUAL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterInitialConditionSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterInitialConditionSource({} {})", self.0, name),
+            None => write!(f, "FilterInitialConditionSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterInitialConditionSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterInitialConditionSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterInitialConditionSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Reference frame of user-specified positions and velocities.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterReferenceFrame(pub u8);
+
+impl FilterReferenceFrame {
+    /// WGS84 Earth-centered, Earth-fixed coordinates.
+    pub const ECEF: Self = Self(1);
+    /// WGS84 latitude, longitude and height above ellipsoid.
+    pub const LLH: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("ecef"),
+            2 => Some("llh"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "ecef" => Some(Self::ECEF),
+            "llh" => Some(Self::LLH),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterReferenceFrame {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterReferenceFrame({} {})", self.0, name),
+            None => write!(f, "FilterReferenceFrame({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterReferenceFrame {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterReferenceFrame {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterReferenceFrame"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// Function selector. First parameter of settings commands; chooses what the command does. Only a read returns a response field (with the ack); parameters not needed for a function may be left out, or sent as placeholders.
 ///
 /// Values the spec does not list are kept as they are.
@@ -2720,6 +3204,103 @@ impl crate::json_read::FromJson for Gx5BitFlags {
     }
 }
 
+/// Allowed automatic heading alignment methods.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct HeadingAlignmentMethods(pub u8);
+
+impl HeadingAlignmentMethods {
+    /// Mask of `dual_antenna` (bit 0).
+    pub const DUAL_ANTENNA: u8 = 0x01;
+    /// Mask of `kinematic` (bit 1).
+    pub const KINEMATIC: u8 = 0x02;
+    /// Mask of `magnetometer` (bit 2).
+    pub const MAGNETOMETER: u8 = 0x04;
+    /// Mask of `external` (bit 3).
+    pub const EXTERNAL: u8 = 0x08;
+
+    /// Dual-antenna GNSS alignment. (bit 0)
+    pub const fn dual_antenna(self) -> bool {
+        self.0 & Self::DUAL_ANTENNA != 0
+    }
+
+    /// Sets or clears `dual_antenna` (bit 0).
+    pub fn set_dual_antenna(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DUAL_ANTENNA;
+        } else {
+            self.0 &= !Self::DUAL_ANTENNA;
+        }
+    }
+
+    /// GNSS kinematic alignment: the GNSS velocity (above 2 m/s) determines the initial heading. (bit 1)
+    pub const fn kinematic(self) -> bool {
+        self.0 & Self::KINEMATIC != 0
+    }
+
+    /// Sets or clears `kinematic` (bit 1).
+    pub fn set_kinematic(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::KINEMATIC;
+        } else {
+            self.0 &= !Self::KINEMATIC;
+        }
+    }
+
+    /// The internal magnetometer determines the initial heading. (bit 2)
+    pub const fn magnetometer(self) -> bool {
+        self.0 & Self::MAGNETOMETER != 0
+    }
+
+    /// Sets or clears `magnetometer` (bit 2).
+    pub fn set_magnetometer(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER;
+        } else {
+            self.0 &= !Self::MAGNETOMETER;
+        }
+    }
+
+    /// An external heading input determines the initial heading. (bit 3)
+    pub const fn external(self) -> bool {
+        self.0 & Self::EXTERNAL != 0
+    }
+
+    /// Sets or clears `external` (bit 3).
+    pub fn set_external(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::EXTERNAL;
+        } else {
+            self.0 &= !Self::EXTERNAL;
+        }
+    }
+}
+
+impl crate::wire::Wire for HeadingAlignmentMethods {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for HeadingAlignmentMethods {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// Heading update source. Which aiding sources the filter uses for heading updates.
 ///
 /// Values the spec does not list are kept as they are.
@@ -2811,6 +3392,82 @@ impl crate::json_read::FromJson for HeadingUpdateSource {
             crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
                 crate::json_read::JsonError::new(std::format!(
                     "\"{name}\" is not a value of HeadingUpdateSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Source of a magnetic field parameter (declination, inclination, magnitude). Where the filter takes a local magnetic field parameter from: nowhere (a fixed fallback), the internal World Magnetic Model, or a value the user supplies.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct MagneticParamSource(pub u8);
+
+impl MagneticParamSource {
+    /// No source: no correction (declination, inclination) or a fixed 0.5 gauss (magnitude).
+    pub const NONE: Self = Self(1);
+    /// Internal World Magnetic Model at the current position estimate (default).
+    pub const WMM: Self = Self(2);
+    /// Value supplied by the user; the device does not validate it.
+    pub const MANUAL: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("none"),
+            2 => Some("wmm"),
+            3 => Some("manual"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "wmm" => Some(Self::WMM),
+            "manual" => Some(Self::MANUAL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for MagneticParamSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "MagneticParamSource({} {})", self.0, name),
+            None => write!(f, "MagneticParamSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for MagneticParamSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for MagneticParamSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of MagneticParamSource"
                 ))
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
@@ -2913,6 +3570,218 @@ impl crate::json_read::FromJson for MessageParams {
             num_fields: p_num_fields,
             descriptors: p_descriptors,
         })
+    }
+}
+
+/// Pitch/roll aiding source.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct PitchRollAidingSource(pub u8);
+
+impl PitchRollAidingSource {
+    /// No pitch/roll aiding (disabled).
+    pub const NONE: Self = Self(0);
+    /// Gravity vector aiding enabled.
+    pub const GRAVITY_VECTOR: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("gravity_vector"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "gravity_vector" => Some(Self::GRAVITY_VECTOR),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for PitchRollAidingSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "PitchRollAidingSource({} {})", self.0, name),
+            None => write!(f, "PitchRollAidingSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for PitchRollAidingSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for PitchRollAidingSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of PitchRollAidingSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Filter reference point.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ReferencePointSelector(pub u8);
+
+impl ReferencePointSelector {
+    /// The origin of the vehicle (the only value; the parameter is reserved and must be 1).
+    pub const VEH: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("veh"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "veh" => Some(Self::VEH),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for ReferencePointSelector {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "ReferencePointSelector({} {})", self.0, name),
+            None => write!(f, "ReferencePointSelector({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for ReferencePointSelector {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ReferencePointSelector {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of ReferencePointSelector"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Reference location source for relative position outputs.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct RelativePositionSource(pub u8);
+
+impl RelativePositionSource {
+    /// Automatic: the RTK base station location.
+    pub const AUTO: Self = Self(0);
+    /// The reference coordinates given in the command.
+    pub const MANUAL: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("auto"),
+            1 => Some("manual"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "auto" => Some(Self::AUTO),
+            "manual" => Some(Self::MANUAL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for RelativePositionSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "RelativePositionSource({} {})", self.0, name),
+            None => write!(f, "RelativePositionSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for RelativePositionSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for RelativePositionSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of RelativePositionSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
     }
 }
 
@@ -3065,6 +3934,87 @@ impl crate::json_read::FromJson for SystemCommMode {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Tare orientation axes. Axes to tare; 0 (no bit set) resets all axes.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct TareAxes(pub u8);
+
+impl TareAxes {
+    /// Mask of `roll` (bit 0).
+    pub const ROLL: u8 = 0x01;
+    /// Mask of `pitch` (bit 1).
+    pub const PITCH: u8 = 0x02;
+    /// Mask of `yaw` (bit 2).
+    pub const YAW: u8 = 0x04;
+
+    /// Tare the roll axis. (bit 0)
+    pub const fn roll(self) -> bool {
+        self.0 & Self::ROLL != 0
+    }
+
+    /// Sets or clears `roll` (bit 0).
+    pub fn set_roll(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ROLL;
+        } else {
+            self.0 &= !Self::ROLL;
+        }
+    }
+
+    /// Tare the pitch axis. (bit 1)
+    pub const fn pitch(self) -> bool {
+        self.0 & Self::PITCH != 0
+    }
+
+    /// Sets or clears `pitch` (bit 1).
+    pub fn set_pitch(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PITCH;
+        } else {
+            self.0 &= !Self::PITCH;
+        }
+    }
+
+    /// Tare the yaw axis. (bit 2)
+    pub const fn yaw(self) -> bool {
+        self.0 & Self::YAW != 0
+    }
+
+    /// Sets or clears `yaw` (bit 2).
+    pub fn set_yaw(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::YAW;
+        } else {
+            self.0 &= !Self::YAW;
+        }
+    }
+}
+
+impl crate::wire::Wire for TareAxes {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for TareAxes {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 

@@ -1120,6 +1120,72 @@ fn bitfield_gx5bitflags_accessors() {
 }
 
 #[test]
+fn bitfield_headingalignmentmethods_accessors() {
+    use mipcodec::types::HeadingAlignmentMethods;
+    let mut v = HeadingAlignmentMethods(0);
+    v.set_dual_antenna(true);
+    assert_eq!(v.0, 0x01, "dual_antenna");
+    assert!(v.dual_antenna());
+    let mut v = HeadingAlignmentMethods(!0);
+    v.set_dual_antenna(false);
+    assert_eq!(v.0, !0x01, "dual_antenna");
+    assert!(!v.dual_antenna());
+    let mut v = HeadingAlignmentMethods(0);
+    v.set_kinematic(true);
+    assert_eq!(v.0, 0x02, "kinematic");
+    assert!(v.kinematic());
+    let mut v = HeadingAlignmentMethods(!0);
+    v.set_kinematic(false);
+    assert_eq!(v.0, !0x02, "kinematic");
+    assert!(!v.kinematic());
+    let mut v = HeadingAlignmentMethods(0);
+    v.set_magnetometer(true);
+    assert_eq!(v.0, 0x04, "magnetometer");
+    assert!(v.magnetometer());
+    let mut v = HeadingAlignmentMethods(!0);
+    v.set_magnetometer(false);
+    assert_eq!(v.0, !0x04, "magnetometer");
+    assert!(!v.magnetometer());
+    let mut v = HeadingAlignmentMethods(0);
+    v.set_external(true);
+    assert_eq!(v.0, 0x08, "external");
+    assert!(v.external());
+    let mut v = HeadingAlignmentMethods(!0);
+    v.set_external(false);
+    assert_eq!(v.0, !0x08, "external");
+    assert!(!v.external());
+}
+
+#[test]
+fn bitfield_tareaxes_accessors() {
+    use mipcodec::types::TareAxes;
+    let mut v = TareAxes(0);
+    v.set_roll(true);
+    assert_eq!(v.0, 0x01, "roll");
+    assert!(v.roll());
+    let mut v = TareAxes(!0);
+    v.set_roll(false);
+    assert_eq!(v.0, !0x01, "roll");
+    assert!(!v.roll());
+    let mut v = TareAxes(0);
+    v.set_pitch(true);
+    assert_eq!(v.0, 0x02, "pitch");
+    assert!(v.pitch());
+    let mut v = TareAxes(!0);
+    v.set_pitch(false);
+    assert_eq!(v.0, !0x02, "pitch");
+    assert!(!v.pitch());
+    let mut v = TareAxes(0);
+    v.set_yaw(true);
+    assert_eq!(v.0, 0x04, "yaw");
+    assert!(v.yaw());
+    let mut v = TareAxes(!0);
+    v.set_yaw(false);
+    assert_eq!(v.0, !0x04, "yaw");
+    assert!(!v.yaw());
+}
+
+#[test]
 fn bitfield_triggerstatus_accessors() {
     use mipcodec::types::TriggerStatus;
     let mut v = TriggerStatus(0);
@@ -1845,6 +1911,606 @@ fn fixed_layout_errors() {
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("1 unexpected bytes at offset 19".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZeroAngularRateUpdateControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZeroAngularRateUpdateControl::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZeroAngularRateUpdateControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ZeroAngularRateUpdateControlResponse::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::TareOrientation::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::TareOrientation::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::CommandedZupt::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::filter::CommandedZupt::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::CommandedZeroAngularRateUpdate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::filter::CommandedZeroAngularRateUpdate::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagCaptureAutoCalibration::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagCaptureAutoCalibration::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityNoiseStdDev::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityNoiseStdDev::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityNoiseStdDevResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityNoiseStdDevResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PressureAltitudeNoiseStdDev::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PressureAltitudeNoiseStdDev::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PressureAltitudeNoiseStdDevResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PressureAltitudeNoiseStdDevResponse::decode_data(&[0u8; 5])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 4".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HardIronOffsetNoise::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HardIronOffsetNoise::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HardIronOffsetNoiseResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::HardIronOffsetNoiseResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SoftIronMatrixNoise::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SoftIronMatrixNoise::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SoftIronMatrixNoiseResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SoftIronMatrixNoiseResponse::decode_data(&[0u8; 37])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 36".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagNoiseStdDev::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagNoiseStdDev::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagNoiseStdDevResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("noise[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagNoiseStdDevResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::DeclinationSource::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::DeclinationSource::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::DeclinationSourceResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::DeclinationSourceResponse::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityMagnitudeAdaptiveMeasurement::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityMagnitudeAdaptiveMeasurement::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagMagnitudeAdaptiveMeasurement::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagMagnitudeAdaptiveMeasurement::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagDipAngleAdaptiveMeasurement::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagDipAngleAdaptiveMeasurement::decode_data(&[0u8; 19])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 18".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse::decode_data(&[0u8; 18])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 17".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AltitudeAidingControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AltitudeAidingControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AltitudeAidingControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AltitudeAidingControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PitchRollAidingControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PitchRollAidingControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PitchRollAidingControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::PitchRollAidingControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InclinationSource::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InclinationSource::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InclinationSourceResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InclinationSourceResponse::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagneticFieldMagnitudeSource::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagneticFieldMagnitudeSource::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagneticFieldMagnitudeSourceResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MagneticFieldMagnitudeSourceResponse::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AidingMeasurementControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AidingMeasurementControl::decode_data(&[0u8; 5])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 4".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AidingMeasurementControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AidingMeasurementControlResponse::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InitializationConfiguration::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InitializationConfiguration::decode_data(&[0u8; 42])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 41".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InitializationConfigurationResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("wait_for_run_command: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::InitializationConfigurationResponse::decode_data(&[0u8; 41])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 40".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AdaptiveFilterControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AdaptiveFilterControl::decode_data(&[0u8; 5])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 4".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AdaptiveFilterControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("level: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::AdaptiveFilterControlResponse::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MultiAntennaOffset::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MultiAntennaOffset::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MultiAntennaOffsetResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::MultiAntennaOffsetResponse::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::RelativePositionConfiguration::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::RelativePositionConfiguration::decode_data(&[0u8; 28])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 27".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::RelativePositionConfigurationResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::RelativePositionConfigurationResponse::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ReferencePointLeverArm::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ReferencePointLeverArm::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ReferencePointLeverArmResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("ref_point_sel: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::ReferencePointLeverArmResponse::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SpeedLeverArm::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SpeedLeverArm::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SpeedLeverArmResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::SpeedLeverArmResponse::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::WheeledVehicleConstraintControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::WheeledVehicleConstraintControl::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::WheeledVehicleConstraintControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::WheeledVehicleConstraintControlResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssAntennaCalibrationControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssAntennaCalibrationControl::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssAntennaCalibrationControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter::GnssAntennaCalibrationControlResponse::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
     );
     assert_eq!(
         mipcodec::gnss::ReceiverInfo::decode_data(&[])
@@ -3007,6 +3673,977 @@ fn zero_values_round_trip_through_packets() {
             <ExternalHeadingUpdateWithTime as Layout>::DESCRIPTOR
         );
         assert_eq!(ExternalHeadingUpdateWithTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ZeroAngularRateUpdateControl;
+        let value = ZeroAngularRateUpdateControl::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::ZeroAngularRateUpdateControl::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ZeroAngularRateUpdateControl: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <ZeroAngularRateUpdateControl as Layout>::DESCRIPTOR
+        );
+        assert_eq!(ZeroAngularRateUpdateControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ZeroAngularRateUpdateControlResponse;
+        let value = ZeroAngularRateUpdateControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::ZeroAngularRateUpdateControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ZeroAngularRateUpdateControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <ZeroAngularRateUpdateControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            ZeroAngularRateUpdateControlResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::TareOrientation;
+        let value = TareOrientation::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::TareOrientation::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("TareOrientation: no field");
+        };
+        assert_eq!(descriptor, <TareOrientation as Layout>::DESCRIPTOR);
+        assert_eq!(TareOrientation::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::CommandedZupt;
+        let value = CommandedZupt::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::CommandedZupt::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CommandedZupt: no field");
+        };
+        assert_eq!(descriptor, <CommandedZupt as Layout>::DESCRIPTOR);
+        assert_eq!(CommandedZupt::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::CommandedZeroAngularRateUpdate;
+        let value = CommandedZeroAngularRateUpdate::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::CommandedZeroAngularRateUpdate::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CommandedZeroAngularRateUpdate: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <CommandedZeroAngularRateUpdate as Layout>::DESCRIPTOR
+        );
+        assert_eq!(CommandedZeroAngularRateUpdate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagCaptureAutoCalibration;
+        let value = MagCaptureAutoCalibration::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::MagCaptureAutoCalibration::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagCaptureAutoCalibration: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagCaptureAutoCalibration as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MagCaptureAutoCalibration::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GravityNoiseStdDev;
+        let value = GravityNoiseStdDev::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::GravityNoiseStdDev::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GravityNoiseStdDev: no field");
+        };
+        assert_eq!(descriptor, <GravityNoiseStdDev as Layout>::DESCRIPTOR);
+        assert_eq!(GravityNoiseStdDev::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GravityNoiseStdDevResponse;
+        let value = GravityNoiseStdDevResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::GravityNoiseStdDevResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GravityNoiseStdDevResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GravityNoiseStdDevResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GravityNoiseStdDevResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::PressureAltitudeNoiseStdDev;
+        let value = PressureAltitudeNoiseStdDev::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::PressureAltitudeNoiseStdDev::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PressureAltitudeNoiseStdDev: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <PressureAltitudeNoiseStdDev as Layout>::DESCRIPTOR
+        );
+        assert_eq!(PressureAltitudeNoiseStdDev::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::PressureAltitudeNoiseStdDevResponse;
+        let value = PressureAltitudeNoiseStdDevResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::PressureAltitudeNoiseStdDevResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PressureAltitudeNoiseStdDevResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <PressureAltitudeNoiseStdDevResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            PressureAltitudeNoiseStdDevResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::HardIronOffsetNoise;
+        let value = HardIronOffsetNoise::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::HardIronOffsetNoise::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HardIronOffsetNoise: no field");
+        };
+        assert_eq!(descriptor, <HardIronOffsetNoise as Layout>::DESCRIPTOR);
+        assert_eq!(HardIronOffsetNoise::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::HardIronOffsetNoiseResponse;
+        let value = HardIronOffsetNoiseResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::HardIronOffsetNoiseResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HardIronOffsetNoiseResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <HardIronOffsetNoiseResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(HardIronOffsetNoiseResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SoftIronMatrixNoise;
+        let value = SoftIronMatrixNoise::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SoftIronMatrixNoise::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SoftIronMatrixNoise: no field");
+        };
+        assert_eq!(descriptor, <SoftIronMatrixNoise as Layout>::DESCRIPTOR);
+        assert_eq!(SoftIronMatrixNoise::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SoftIronMatrixNoiseResponse;
+        let value = SoftIronMatrixNoiseResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::SoftIronMatrixNoiseResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SoftIronMatrixNoiseResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SoftIronMatrixNoiseResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SoftIronMatrixNoiseResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagNoiseStdDev;
+        let value = MagNoiseStdDev::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::MagNoiseStdDev::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagNoiseStdDev: no field");
+        };
+        assert_eq!(descriptor, <MagNoiseStdDev as Layout>::DESCRIPTOR);
+        assert_eq!(MagNoiseStdDev::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagNoiseStdDevResponse;
+        let value = MagNoiseStdDevResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::MagNoiseStdDevResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagNoiseStdDevResponse: no field");
+        };
+        assert_eq!(descriptor, <MagNoiseStdDevResponse as Layout>::DESCRIPTOR);
+        assert_eq!(MagNoiseStdDevResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::DeclinationSource;
+        let value = DeclinationSource::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::DeclinationSource::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeclinationSource: no field");
+        };
+        assert_eq!(descriptor, <DeclinationSource as Layout>::DESCRIPTOR);
+        assert_eq!(DeclinationSource::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::DeclinationSourceResponse;
+        let value = DeclinationSourceResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::DeclinationSourceResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeclinationSourceResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <DeclinationSourceResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(DeclinationSourceResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GravityMagnitudeAdaptiveMeasurement;
+        let value = GravityMagnitudeAdaptiveMeasurement::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::GravityMagnitudeAdaptiveMeasurement::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GravityMagnitudeAdaptiveMeasurement: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GravityMagnitudeAdaptiveMeasurement as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            GravityMagnitudeAdaptiveMeasurement::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse;
+        let value = GravityMagnitudeAdaptiveMeasurementResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GravityMagnitudeAdaptiveMeasurementResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GravityMagnitudeAdaptiveMeasurementResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            GravityMagnitudeAdaptiveMeasurementResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagMagnitudeAdaptiveMeasurement;
+        let value = MagMagnitudeAdaptiveMeasurement::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MagMagnitudeAdaptiveMeasurement::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagMagnitudeAdaptiveMeasurement: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagMagnitudeAdaptiveMeasurement as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MagMagnitudeAdaptiveMeasurement::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse;
+        let value = MagMagnitudeAdaptiveMeasurementResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagMagnitudeAdaptiveMeasurementResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagMagnitudeAdaptiveMeasurementResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MagMagnitudeAdaptiveMeasurementResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagDipAngleAdaptiveMeasurement;
+        let value = MagDipAngleAdaptiveMeasurement::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MagDipAngleAdaptiveMeasurement::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagDipAngleAdaptiveMeasurement: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagDipAngleAdaptiveMeasurement as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MagDipAngleAdaptiveMeasurement::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse;
+        let value = MagDipAngleAdaptiveMeasurementResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagDipAngleAdaptiveMeasurementResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagDipAngleAdaptiveMeasurementResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MagDipAngleAdaptiveMeasurementResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AltitudeAidingControl;
+        let value = AltitudeAidingControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AltitudeAidingControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AltitudeAidingControl: no field");
+        };
+        assert_eq!(descriptor, <AltitudeAidingControl as Layout>::DESCRIPTOR);
+        assert_eq!(AltitudeAidingControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AltitudeAidingControlResponse;
+        let value = AltitudeAidingControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::AltitudeAidingControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AltitudeAidingControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <AltitudeAidingControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(AltitudeAidingControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::PitchRollAidingControl;
+        let value = PitchRollAidingControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::PitchRollAidingControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PitchRollAidingControl: no field");
+        };
+        assert_eq!(descriptor, <PitchRollAidingControl as Layout>::DESCRIPTOR);
+        assert_eq!(PitchRollAidingControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::PitchRollAidingControlResponse;
+        let value = PitchRollAidingControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::PitchRollAidingControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PitchRollAidingControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <PitchRollAidingControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(PitchRollAidingControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::InclinationSource;
+        let value = InclinationSource::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::InclinationSource::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("InclinationSource: no field");
+        };
+        assert_eq!(descriptor, <InclinationSource as Layout>::DESCRIPTOR);
+        assert_eq!(InclinationSource::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::InclinationSourceResponse;
+        let value = InclinationSourceResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::InclinationSourceResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("InclinationSourceResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <InclinationSourceResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(InclinationSourceResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagneticFieldMagnitudeSource;
+        let value = MagneticFieldMagnitudeSource::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MagneticFieldMagnitudeSource::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagneticFieldMagnitudeSource: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagneticFieldMagnitudeSource as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MagneticFieldMagnitudeSource::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MagneticFieldMagnitudeSourceResponse;
+        let value = MagneticFieldMagnitudeSourceResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MagneticFieldMagnitudeSourceResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagneticFieldMagnitudeSourceResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagneticFieldMagnitudeSourceResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MagneticFieldMagnitudeSourceResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AidingMeasurementControl;
+        let value = AidingMeasurementControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AidingMeasurementControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AidingMeasurementControl: no field");
+        };
+        assert_eq!(descriptor, <AidingMeasurementControl as Layout>::DESCRIPTOR);
+        assert_eq!(AidingMeasurementControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AidingMeasurementControlResponse;
+        let value = AidingMeasurementControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::AidingMeasurementControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AidingMeasurementControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <AidingMeasurementControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            AidingMeasurementControlResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::InitializationConfiguration;
+        let value = InitializationConfiguration::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::InitializationConfiguration::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("InitializationConfiguration: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <InitializationConfiguration as Layout>::DESCRIPTOR
+        );
+        assert_eq!(InitializationConfiguration::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::InitializationConfigurationResponse;
+        let value = InitializationConfigurationResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::InitializationConfigurationResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("InitializationConfigurationResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <InitializationConfigurationResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            InitializationConfigurationResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AdaptiveFilterControl;
+        let value = AdaptiveFilterControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::AdaptiveFilterControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AdaptiveFilterControl: no field");
+        };
+        assert_eq!(descriptor, <AdaptiveFilterControl as Layout>::DESCRIPTOR);
+        assert_eq!(AdaptiveFilterControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::AdaptiveFilterControlResponse;
+        let value = AdaptiveFilterControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::AdaptiveFilterControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AdaptiveFilterControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <AdaptiveFilterControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(AdaptiveFilterControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MultiAntennaOffset;
+        let value = MultiAntennaOffset::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::MultiAntennaOffset::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MultiAntennaOffset: no field");
+        };
+        assert_eq!(descriptor, <MultiAntennaOffset as Layout>::DESCRIPTOR);
+        assert_eq!(MultiAntennaOffset::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::MultiAntennaOffsetResponse;
+        let value = MultiAntennaOffsetResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::MultiAntennaOffsetResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MultiAntennaOffsetResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MultiAntennaOffsetResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MultiAntennaOffsetResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::RelativePositionConfiguration;
+        let value = RelativePositionConfiguration::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::RelativePositionConfiguration::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("RelativePositionConfiguration: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <RelativePositionConfiguration as Layout>::DESCRIPTOR
+        );
+        assert_eq!(RelativePositionConfiguration::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::RelativePositionConfigurationResponse;
+        let value = RelativePositionConfigurationResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::RelativePositionConfigurationResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("RelativePositionConfigurationResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <RelativePositionConfigurationResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            RelativePositionConfigurationResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ReferencePointLeverArm;
+        let value = ReferencePointLeverArm::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::ReferencePointLeverArm::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ReferencePointLeverArm: no field");
+        };
+        assert_eq!(descriptor, <ReferencePointLeverArm as Layout>::DESCRIPTOR);
+        assert_eq!(ReferencePointLeverArm::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::ReferencePointLeverArmResponse;
+        let value = ReferencePointLeverArmResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::ReferencePointLeverArmResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ReferencePointLeverArmResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <ReferencePointLeverArmResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(ReferencePointLeverArmResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SpeedLeverArm;
+        let value = SpeedLeverArm::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SpeedLeverArm::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SpeedLeverArm: no field");
+        };
+        assert_eq!(descriptor, <SpeedLeverArm as Layout>::DESCRIPTOR);
+        assert_eq!(SpeedLeverArm::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::SpeedLeverArmResponse;
+        let value = SpeedLeverArmResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter::SpeedLeverArmResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SpeedLeverArmResponse: no field");
+        };
+        assert_eq!(descriptor, <SpeedLeverArmResponse as Layout>::DESCRIPTOR);
+        assert_eq!(SpeedLeverArmResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::WheeledVehicleConstraintControl;
+        let value = WheeledVehicleConstraintControl::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::WheeledVehicleConstraintControl::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("WheeledVehicleConstraintControl: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <WheeledVehicleConstraintControl as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            WheeledVehicleConstraintControl::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::WheeledVehicleConstraintControlResponse;
+        let value = WheeledVehicleConstraintControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::WheeledVehicleConstraintControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("WheeledVehicleConstraintControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <WheeledVehicleConstraintControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            WheeledVehicleConstraintControlResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GnssAntennaCalibrationControl;
+        let value = GnssAntennaCalibrationControl::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::GnssAntennaCalibrationControl::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAntennaCalibrationControl: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssAntennaCalibrationControl as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GnssAntennaCalibrationControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter::GnssAntennaCalibrationControlResponse;
+        let value = GnssAntennaCalibrationControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter::GnssAntennaCalibrationControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAntennaCalibrationControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssAntennaCalibrationControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            GnssAntennaCalibrationControlResponse::decode_data(data),
+            Ok(value)
+        );
         assert!(fields.next().is_none());
     }
     {

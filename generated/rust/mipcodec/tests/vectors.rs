@@ -2436,6 +2436,1247 @@ fn case_external_heading_update_with_time_cv7() {
     );
 }
 
+/// `pitch_roll_aiding_control_write` (tests/vectors/mip/filter_20_64.yaml:14)
+#[test]
+fn case_pitch_roll_aiding_control_write() {
+    check(
+        "75650d04044b01013cc1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":75,\"name\":\"pitch_roll_aiding_control\",\"values\":{\"function\":1,\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pitch_roll_aiding_control_ack_published` (tests/vectors/mip/filter_20_64.yaml:24)
+#[test]
+fn case_pitch_roll_aiding_control_ack_published() {
+    check(
+        "75650d0404f14700b9f0",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f14700b9f0\"}"],
+        true,
+    );
+}
+
+/// `pitch_roll_aiding_control_ack` (tests/vectors/mip/filter_20_64.yaml:38)
+#[test]
+fn case_pitch_roll_aiding_control_ack() {
+    check(
+        "75650d0404f14b002b46",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":75,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pitch_roll_aiding_control_read` (tests/vectors/mip/filter_20_64.yaml:52)
+#[test]
+fn case_pitch_roll_aiding_control_read() {
+    check(
+        "75650d03034b023a7f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":75,\"name\":\"pitch_roll_aiding_control\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pitch_roll_aiding_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:65)
+#[test]
+fn case_pitch_roll_aiding_control_read_reply() {
+    check(
+        "75650d0704f14b0003bb00ec5e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":75,\"ack_code\":0}},{\"descriptor\":187,\"name\":\"pitch_roll_aiding_control_response\",\"values\":{\"source\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `altitude_aiding_control_write` (tests/vectors/mip/filter_20_64.yaml:81)
+#[test]
+fn case_altitude_aiding_control_write() {
+    check(
+        "75650d040447010138b5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":71,\"name\":\"altitude_aiding_control\",\"values\":{\"function\":1,\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `altitude_aiding_control_ack` (tests/vectors/mip/filter_20_64.yaml:91)
+#[test]
+fn case_altitude_aiding_control_ack() {
+    check(
+        "75650d0404f14700273e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":71,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `altitude_aiding_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:100)
+#[test]
+fn case_altitude_aiding_control_read_reply() {
+    check(
+        "75650d0704f1470003b701e543",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":71,\"ack_code\":0}},{\"descriptor\":183,\"name\":\"altitude_aiding_control_response\",\"values\":{\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_noise_std_dev_write` (tests/vectors/mip/filter_20_64.yaml:116)
+#[test]
+fn case_mag_noise_std_dev_write() {
+    check(
+        "75650d0f0f42013ca3d70a3ca3d70a3ca3d70a88d3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":66,\"name\":\"mag_noise_std_dev\",\"values\":{\"function\":1,\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_noise_std_dev_ack` (tests/vectors/mip/filter_20_64.yaml:129)
+#[test]
+fn case_mag_noise_std_dev_ack() {
+    check(
+        "75650d0404f142002234",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":66,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_noise_std_dev_read_reply` (tests/vectors/mip/filter_20_64.yaml:138)
+#[test]
+fn case_mag_noise_std_dev_read_reply() {
+    check(
+        "75650d1204f142000eb13ca3d70a3d0000003f0000002b50",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":66,\"ack_code\":0}},{\"descriptor\":177,\"name\":\"mag_noise_std_dev_response\",\"values\":{\"noise\":[0.019999999552965164,0.03125,0.5]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_noise_std_dev_write` (tests/vectors/mip/filter_20_64.yaml:154)
+#[test]
+fn case_gravity_noise_std_dev_write() {
+    check(
+        "75650d0f0f28013c23d70a3c23d70a3c23d70aeee7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\",\"values\":{\"function\":1,\"noise\":[0.009999999776482582,0.009999999776482582,0.009999999776482582]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_noise_std_dev_ack` (tests/vectors/mip/filter_20_64.yaml:170)
+#[test]
+fn case_gravity_noise_std_dev_ack() {
+    check(
+        "75650d0404f128000800",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_noise_std_dev_read` (tests/vectors/mip/filter_20_64.yaml:183)
+#[test]
+fn case_gravity_noise_std_dev_read() {
+    check(
+        "75650d030328021739",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_noise_std_dev_read_reply` (tests/vectors/mip/filter_20_64.yaml:196)
+#[test]
+fn case_gravity_noise_std_dev_read_reply() {
+    check(
+        "75650d1204f128000e933c23d70a3c8000003e800000719e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":147,\"name\":\"gravity_noise_std_dev_response\",\"values\":{\"noise\":[0.009999999776482582,0.015625,0.25]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_noise_std_dev_load` (tests/vectors/mip/filter_20_64.yaml:212)
+#[test]
+fn case_gravity_noise_std_dev_load() {
+    check(
+        "75650d03032804193b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\",\"values\":{\"function\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pressure_altitude_noise_std_dev_write` (tests/vectors/mip/filter_20_64.yaml:225)
+#[test]
+fn case_pressure_altitude_noise_std_dev_write() {
+    check(
+        "75650d070729013f800000de4e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":41,\"name\":\"pressure_altitude_noise_std_dev\",\"values\":{\"function\":1,\"noise\":1.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pressure_altitude_noise_std_dev_write_published` (tests/vectors/mip/filter_20_64.yaml:239)
+#[test]
+fn case_pressure_altitude_noise_std_dev_write_published() {
+    check(
+        "75650d050529013f800000de4e",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d050529013f800000de4e\"}"],
+        true,
+    );
+}
+
+/// `pressure_altitude_noise_std_dev_ack` (tests/vectors/mip/filter_20_64.yaml:252)
+#[test]
+fn case_pressure_altitude_noise_std_dev_ack() {
+    check(
+        "75650d0404f129000902",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":41,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pressure_altitude_noise_std_dev_ack_published` (tests/vectors/mip/filter_20_64.yaml:266)
+#[test]
+fn case_pressure_altitude_noise_std_dev_ack_published() {
+    check(
+        "75650d0404f1290097ac",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f1290097ac\"}"],
+        true,
+    );
+}
+
+/// `pressure_altitude_noise_std_dev_read_reply` (tests/vectors/mip/filter_20_64.yaml:278)
+#[test]
+fn case_pressure_altitude_noise_std_dev_read_reply() {
+    check(
+        "75650d0a04f1290006944020000009e2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":41,\"ack_code\":0}},{\"descriptor\":148,\"name\":\"pressure_altitude_noise_std_dev_response\",\"values\":{\"noise\":2.5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `hard_iron_offset_noise_write` (tests/vectors/mip/filter_20_64.yaml:294)
+#[test]
+fn case_hard_iron_offset_noise_write() {
+    check(
+        "75650d0f0f2b013a83126f3a83126f3a83126febd2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":43,\"name\":\"hard_iron_offset_noise\",\"values\":{\"function\":1,\"noise\":[0.0010000000474974513,0.0010000000474974513,0.0010000000474974513]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `hard_iron_offset_noise_ack` (tests/vectors/mip/filter_20_64.yaml:304)
+#[test]
+fn case_hard_iron_offset_noise_ack() {
+    check(
+        "75650d0404f12b000b06",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":43,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `hard_iron_offset_noise_read_reply` (tests/vectors/mip/filter_20_64.yaml:313)
+#[test]
+fn case_hard_iron_offset_noise_read_reply() {
+    check(
+        "75650d1204f12b000e963a83126f3b03126f3b83126ff98c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":43,\"ack_code\":0}},{\"descriptor\":150,\"name\":\"hard_iron_offset_noise_response\",\"values\":{\"noise\":[0.0010000000474974513,0.0020000000949949026,0.004000000189989805]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `soft_iron_matrix_noise_write` (tests/vectors/mip/filter_20_64.yaml:329)
+#[test]
+fn case_soft_iron_matrix_noise_write() {
+    check(
+        "75650d27272c0138d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b717f18c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":44,\"name\":\"soft_iron_matrix_noise\",\"values\":{\"function\":1,\"noise\":[9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `soft_iron_matrix_noise_table_published` (tests/vectors/mip/filter_20_64.yaml:343)
+#[test]
+fn case_soft_iron_matrix_noise_table_published() {
+    check(
+        "75650d0f0f2c0138d1b71738d1b71738d1b717f18c",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0f0f2c0138d1b71738d1b71738d1b717f18c\"}"],
+        true,
+    );
+}
+
+/// `soft_iron_matrix_noise_ack` (tests/vectors/mip/filter_20_64.yaml:357)
+#[test]
+fn case_soft_iron_matrix_noise_ack() {
+    check(
+        "75650d0404f12c000c08",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":44,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `soft_iron_matrix_noise_ack_published` (tests/vectors/mip/filter_20_64.yaml:371)
+#[test]
+fn case_soft_iron_matrix_noise_ack_published() {
+    check(
+        "75650d0404f12c009ab2",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f12c009ab2\"}"],
+        true,
+    );
+}
+
+/// `soft_iron_matrix_noise_read_reply` (tests/vectors/mip/filter_20_64.yaml:383)
+#[test]
+fn case_soft_iron_matrix_noise_read_reply() {
+    check(
+        "75650d2a04f12c00269738d1b7170000000000000000000000003951b717000000000000000000000000399d49528fdc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":44,\"ack_code\":0}},{\"descriptor\":151,\"name\":\"soft_iron_matrix_noise_response\",\"values\":{\"noise\":[9.999999747378752e-05,0.0,0.0,0.0,0.00019999999494757503,0.0,0.0,0.0,0.0003000000142492354]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zero_angular_rate_update_control_write` (tests/vectors/mip/filter_20_64.yaml:401)
+#[test]
+fn case_zero_angular_rate_update_control_write() {
+    check(
+        "75650d08082001010000000019c8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":32,\"name\":\"zero_angular_rate_update_control\",\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zero_angular_rate_update_control_ack` (tests/vectors/mip/filter_20_64.yaml:411)
+#[test]
+fn case_zero_angular_rate_update_control_ack() {
+    check(
+        "75650d0404f1200000f0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":32,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zero_angular_rate_update_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:420)
+#[test]
+fn case_zero_angular_rate_update_control_read_reply() {
+    check(
+        "75650d0b04f12000078e013d4ccccdbf0b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":32,\"ack_code\":0}},{\"descriptor\":142,\"name\":\"zero_angular_rate_update_control_response\",\"values\":{\"enable\":1,\"threshold\":0.05000000074505806}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zero_angular_rate_update_control_default` (tests/vectors/mip/filter_20_64.yaml:436)
+#[test]
+fn case_zero_angular_rate_update_control_default() {
+    check(
+        "75650d03032005122c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":32,\"name\":\"zero_angular_rate_update_control\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `tare_orientation_write` (tests/vectors/mip/filter_20_64.yaml:450)
+#[test]
+fn case_tare_orientation_write() {
+    check(
+        "75650d04042101071849",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\",\"values\":{\"function\":1,\"axes\":7}}]}",
+        ],
+        false,
+    );
+}
+
+/// `tare_orientation_ack` (tests/vectors/mip/filter_20_64.yaml:460)
+#[test]
+fn case_tare_orientation_ack() {
+    check(
+        "75650d0404f1210001f2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":33,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `tare_orientation_reset_all` (tests/vectors/mip/filter_20_64.yaml:473)
+#[test]
+fn case_tare_orientation_reset_all() {
+    check(
+        "75650d04042101001142",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\",\"values\":{\"function\":1,\"axes\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `tare_orientation_save` (tests/vectors/mip/filter_20_64.yaml:486)
+#[test]
+fn case_tare_orientation_save() {
+    check(
+        "75650d03032103112c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `commanded_zupt` (tests/vectors/mip/filter_20_64.yaml:500)
+#[test]
+fn case_commanded_zupt() {
+    check(
+        "75650d0202220d17",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":34,\"name\":\"commanded_zupt\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `commanded_zupt_ack` (tests/vectors/mip/filter_20_64.yaml:510)
+#[test]
+fn case_commanded_zupt_ack() {
+    check(
+        "75650d0404f1220002f4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":34,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `commanded_zero_angular_rate_update` (tests/vectors/mip/filter_20_64.yaml:519)
+#[test]
+fn case_commanded_zero_angular_rate_update() {
+    check(
+        "75650d0202230e18",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":35,\"name\":\"commanded_zero_angular_rate_update\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `commanded_zero_angular_rate_update_ack` (tests/vectors/mip/filter_20_64.yaml:529)
+#[test]
+fn case_commanded_zero_angular_rate_update_ack() {
+    check(
+        "75650d0404f1230003f6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":35,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `declination_source_write` (tests/vectors/mip/filter_20_64.yaml:539)
+#[test]
+fn case_declination_source_write() {
+    check(
+        "75650d0808430103000000003ec7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":67,\"name\":\"declination_source\",\"values\":{\"function\":1,\"source\":3,\"declination\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `declination_source_ack` (tests/vectors/mip/filter_20_64.yaml:548)
+#[test]
+fn case_declination_source_ack() {
+    check(
+        "75650d0404f143002336",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":67,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `declination_source_read_reply` (tests/vectors/mip/filter_20_64.yaml:557)
+#[test]
+fn case_declination_source_read_reply() {
+    check(
+        "75650d0b04f1430007b202be800000235e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":67,\"ack_code\":0}},{\"descriptor\":178,\"name\":\"declination_source_response\",\"values\":{\"source\":2,\"declination\":-0.25}}]}",
+        ],
+        false,
+    );
+}
+
+/// `declination_source_write_none_cv7` (tests/vectors/mip/filter_20_64.yaml:574)
+#[test]
+fn case_declination_source_write_none_cv7() {
+    check(
+        "75650d0808430101000000003cbd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":67,\"name\":\"declination_source\",\"values\":{\"function\":1,\"source\":1,\"declination\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `inclination_source_write` (tests/vectors/mip/filter_20_64.yaml:588)
+#[test]
+fn case_inclination_source_write() {
+    check(
+        "75650d08084c0103000000004706",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":76,\"name\":\"inclination_source\",\"values\":{\"function\":1,\"source\":3,\"inclination\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `inclination_source_ack` (tests/vectors/mip/filter_20_64.yaml:597)
+#[test]
+fn case_inclination_source_ack() {
+    check(
+        "75650d0404f14c002c48",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":76,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `inclination_source_read_reply` (tests/vectors/mip/filter_20_64.yaml:606)
+#[test]
+fn case_inclination_source_read_reply() {
+    check(
+        "75650d0b04f14c0007bc033f900000c824",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":76,\"ack_code\":0}},{\"descriptor\":188,\"name\":\"inclination_source_response\",\"values\":{\"source\":3,\"inclination\":1.125}}]}",
+        ],
+        false,
+    );
+}
+
+/// `magnetic_field_magnitude_source_write` (tests/vectors/mip/filter_20_64.yaml:622)
+#[test]
+fn case_magnetic_field_magnitude_source_write() {
+    check(
+        "75650d08084d01033f0000008709",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":77,\"name\":\"magnetic_field_magnitude_source\",\"values\":{\"function\":1,\"source\":3,\"magnitude\":0.5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `magnetic_field_magnitude_source_ack` (tests/vectors/mip/filter_20_64.yaml:638)
+#[test]
+fn case_magnetic_field_magnitude_source_ack() {
+    check(
+        "75650d0404f14d002d4a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":77,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `magnetic_field_magnitude_source_read_reply` (tests/vectors/mip/filter_20_64.yaml:647)
+#[test]
+fn case_magnetic_field_magnitude_source_read_reply() {
+    check(
+        "75650d0b04f14d0007bd013f0000003879",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":77,\"ack_code\":0}},{\"descriptor\":189,\"name\":\"magnetic_field_magnitude_source_response\",\"values\":{\"source\":1,\"magnitude\":0.5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_magnitude_adaptive_measurement_write` (tests/vectors/mip/filter_20_64.yaml:664)
+#[test]
+fn case_gravity_magnitude_adaptive_measurement_write() {
+    check(
+        "75650d1c1c4401013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f6fe8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":68,\"name\":\"gravity_magnitude_adaptive_measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":1.0,\"low_limit\":-0.20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.004000000189989805}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_magnitude_adaptive_measurement_ack` (tests/vectors/mip/filter_20_64.yaml:680)
+#[test]
+fn case_gravity_magnitude_adaptive_measurement_ack() {
+    check(
+        "75650d0404f144002438",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":68,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_magnitude_adaptive_measurement_ack_published` (tests/vectors/mip/filter_20_64.yaml:694)
+#[test]
+fn case_gravity_magnitude_adaptive_measurement_ack_published() {
+    check(
+        "75650d0404f14400b2e2",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f14400b2e2\"}"],
+        true,
+    );
+}
+
+/// `gravity_magnitude_adaptive_measurement_auto_only` (tests/vectors/mip/filter_20_64.yaml:706)
+#[test]
+fn case_gravity_magnitude_adaptive_measurement_auto_only() {
+    check(
+        "75650d040444010236ad",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":68,\"name\":\"gravity_magnitude_adaptive_measurement\",\"values\":{\"function\":1,\"mode\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gravity_magnitude_adaptive_measurement_read_reply` (tests/vectors/mip/filter_20_64.yaml:720)
+#[test]
+fn case_gravity_magnitude_adaptive_measurement_read_reply() {
+    check(
+        "75650d1f04f144001bb3023f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f1989",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":68,\"ack_code\":0}},{\"descriptor\":179,\"name\":\"gravity_magnitude_adaptive_measurement_response\",\"values\":{\"mode\":2,\"frequency\":1.0,\"low_limit\":-0.20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.004000000189989805}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_magnitude_adaptive_measurement_write` (tests/vectors/mip/filter_20_64.yaml:738)
+#[test]
+fn case_mag_magnitude_adaptive_measurement_write() {
+    check(
+        "75650d1c1c4501013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f7003",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":69,\"name\":\"mag_magnitude_adaptive_measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":1.0,\"low_limit\":-0.20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.004000000189989805}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_magnitude_adaptive_measurement_ack` (tests/vectors/mip/filter_20_64.yaml:754)
+#[test]
+fn case_mag_magnitude_adaptive_measurement_ack() {
+    check(
+        "75650d0404f14500253a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":69,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_magnitude_adaptive_measurement_ack_published` (tests/vectors/mip/filter_20_64.yaml:768)
+#[test]
+fn case_mag_magnitude_adaptive_measurement_ack_published() {
+    check(
+        "75650d0404f14500b3e4",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f14500b3e4\"}"],
+        true,
+    );
+}
+
+/// `mag_magnitude_adaptive_measurement_disable` (tests/vectors/mip/filter_20_64.yaml:780)
+#[test]
+fn case_mag_magnitude_adaptive_measurement_disable() {
+    check(
+        "75650d040445010035ae",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":69,\"name\":\"mag_magnitude_adaptive_measurement\",\"values\":{\"function\":1,\"mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_magnitude_adaptive_measurement_read_reply` (tests/vectors/mip/filter_20_64.yaml:793)
+#[test]
+fn case_mag_magnitude_adaptive_measurement_read_reply() {
+    check(
+        "75650d1f04f145001bb401400000003e8000003f4000003e0000003e0000003c23d70a49ac",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":69,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"mag_magnitude_adaptive_measurement_response\",\"values\":{\"mode\":1,\"frequency\":2.0,\"low_limit\":0.25,\"high_limit\":0.75,\"low_limit_uncertainty\":0.125,\"high_limit_uncertainty\":0.125,\"minimum_uncertainty\":0.009999999776482582}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_dip_angle_adaptive_measurement_write` (tests/vectors/mip/filter_20_64.yaml:812)
+#[test]
+fn case_mag_dip_angle_adaptive_measurement_write() {
+    check(
+        "75650d1414460101412000003e99999a3e4ccccd3c23d70a255f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":70,\"name\":\"mag_dip_angle_adaptive_measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":10.0,\"high_limit\":0.30000001192092896,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.009999999776482582}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_dip_angle_adaptive_measurement_ack` (tests/vectors/mip/filter_20_64.yaml:827)
+#[test]
+fn case_mag_dip_angle_adaptive_measurement_ack() {
+    check(
+        "75650d0404f14600263c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":70,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_dip_angle_adaptive_measurement_ack_published` (tests/vectors/mip/filter_20_64.yaml:841)
+#[test]
+fn case_mag_dip_angle_adaptive_measurement_ack_published() {
+    check(
+        "75650d0404f14600b4e6",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f14600b4e6\"}"],
+        true,
+    );
+}
+
+/// `mag_dip_angle_adaptive_measurement_read_reply` (tests/vectors/mip/filter_20_64.yaml:853)
+#[test]
+fn case_mag_dip_angle_adaptive_measurement_read_reply() {
+    check(
+        "75650d1704f1460013b500412000003e99999a3e4ccccd3c23d70acfa6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":70,\"ack_code\":0}},{\"descriptor\":181,\"name\":\"mag_dip_angle_adaptive_measurement_response\",\"values\":{\"mode\":0,\"frequency\":10.0,\"high_limit\":0.30000001192092896,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0.009999999776482582}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_capture_auto_calibration_write` (tests/vectors/mip/filter_20_64.yaml:870)
+#[test]
+fn case_mag_capture_auto_calibration_write() {
+    check(
+        "75650d030327011536",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":39,\"name\":\"mag_capture_auto_calibration\",\"values\":{\"function\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_capture_auto_calibration_table_published` (tests/vectors/mip/filter_20_64.yaml:880)
+#[test]
+fn case_mag_capture_auto_calibration_table_published() {
+    check(
+        "75650d020227011536",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d020227011536\"}"],
+        true,
+    );
+}
+
+/// `mag_capture_auto_calibration_ack` (tests/vectors/mip/filter_20_64.yaml:894)
+#[test]
+fn case_mag_capture_auto_calibration_ack() {
+    check(
+        "75650d0404f1270007fe",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":39,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_capture_auto_calibration_ack_published` (tests/vectors/mip/filter_20_64.yaml:908)
+#[test]
+fn case_mag_capture_auto_calibration_ack_published() {
+    check(
+        "75650d0404f1270095a8",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650d0404f1270095a8\"}"],
+        true,
+    );
+}
+
+/// `mag_capture_auto_calibration_save` (tests/vectors/mip/filter_20_64.yaml:920)
+#[test]
+fn case_mag_capture_auto_calibration_save() {
+    check(
+        "75650d030327031738",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":39,\"name\":\"mag_capture_auto_calibration\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `aiding_measurement_control_write` (tests/vectors/mip/filter_20_64.yaml:934)
+#[test]
+fn case_aiding_measurement_control_write() {
+    check(
+        "75650d060650010004004871",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_control\",\"values\":{\"function\":1,\"source\":4,\"enable\":false}}]}",
+        ],
+        false,
+    );
+}
+
+/// `aiding_measurement_control_read` (tests/vectors/mip/filter_20_64.yaml:947)
+#[test]
+fn case_aiding_measurement_control_read() {
+    check(
+        "75650d050550020001441e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_control\",\"values\":{\"function\":2,\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `aiding_measurement_control_save_all` (tests/vectors/mip/filter_20_64.yaml:960)
+#[test]
+fn case_aiding_measurement_control_save_all() {
+    check(
+        "75650d05055003ffff421d",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_control\",\"values\":{\"function\":3,\"source\":65535}}]}",
+        ],
+        false,
+    );
+}
+
+/// `aiding_measurement_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:973)
+#[test]
+fn case_aiding_measurement_control_read_reply() {
+    check(
+        "75650d0904f1500005d00001010cce",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":80,\"ack_code\":0}},{\"descriptor\":208,\"name\":\"aiding_measurement_control_response\",\"values\":{\"source\":1,\"enable\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `aiding_measurement_control_write_external_heading` (tests/vectors/mip/filter_20_64.yaml:988)
+#[test]
+fn case_aiding_measurement_control_write_external_heading() {
+    check(
+        "75650d060650010005014a74",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_control\",\"values\":{\"function\":1,\"source\":5,\"enable\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `initialization_configuration_write_manual_llh` (tests/vectors/mip/filter_20_64.yaml:1002)
+#[test]
+fn case_initialization_configuration_write_manual_llh() {
+    check(
+        "75650d2b2b520100030042b4000040200000bfc000004231c000c292400042c900003f800000bf0000000000000002ba90",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\",\"values\":{\"function\":1,\"wait_for_run_command\":0,\"initial_cond_src\":3,\"auto_heading_alignment_selector\":0,\"initial_heading\":90.0,\"initial_pitch\":2.5,\"initial_roll\":-1.5,\"initial_position\":[44.4375,-73.125,100.5],\"initial_velocity\":[1.0,-0.5,0.0],\"reference_frame_selector\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `initialization_configuration_write_auto` (tests/vectors/mip/filter_20_64.yaml:1022)
+#[test]
+fn case_initialization_configuration_write_auto() {
+    check(
+        "75650d2b2b5201010006000000000000000000000000000000000000000000000000000000000000000000000000019831",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\",\"values\":{\"function\":1,\"wait_for_run_command\":1,\"initial_cond_src\":0,\"auto_heading_alignment_selector\":6,\"initial_heading\":0.0,\"initial_pitch\":0.0,\"initial_roll\":0.0,\"initial_position\":[0.0,0.0,0.0],\"initial_velocity\":[0.0,0.0,0.0],\"reference_frame_selector\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `initialization_configuration_read` (tests/vectors/mip/filter_20_64.yaml:1040)
+#[test]
+fn case_initialization_configuration_read() {
+    check(
+        "75650d03035202418d",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `initialization_configuration_read_reply` (tests/vectors/mip/filter_20_64.yaml:1052)
+#[test]
+fn case_initialization_configuration_read_reply() {
+    check(
+        "75650d2e04f152002ad2000109c234000000000000000000004987e357ca93df524a73218e000000003e800000be00000001d954",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":82,\"ack_code\":0}},{\"descriptor\":210,\"name\":\"initialization_configuration_response\",\"values\":{\"wait_for_run_command\":0,\"initial_cond_src\":1,\"auto_heading_alignment_selector\":9,\"initial_heading\":-45.0,\"initial_pitch\":0.0,\"initial_roll\":0.0,\"initial_position\":[1113194.875,-4845481.0,3983459.5],\"initial_velocity\":[0.0,0.25,-0.125],\"reference_frame_selector\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `adaptive_filter_control_write` (tests/vectors/mip/filter_20_64.yaml:1075)
+#[test]
+fn case_adaptive_filter_control_write() {
+    check(
+        "75650d06065301033a981c8d",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":83,\"name\":\"adaptive_filter_control\",\"values\":{\"function\":1,\"level\":3,\"time_limit\":15000}}]}",
+        ],
+        false,
+    );
+}
+
+/// `adaptive_filter_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:1088)
+#[test]
+fn case_adaptive_filter_control_read_reply() {
+    check(
+        "75650d0904f1530005d30001f405e2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"adaptive_filter_control_response\",\"values\":{\"level\":0,\"time_limit\":500}}]}",
+        ],
+        false,
+    );
+}
+
+/// `multi_antenna_offset_write` (tests/vectors/mip/filter_20_64.yaml:1104)
+#[test]
+fn case_multi_antenna_offset_write() {
+    check(
+        "75650d10105401023f000000be800000bf8000001a91",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":84,\"name\":\"multi_antenna_offset\",\"values\":{\"function\":1,\"receiver_id\":2,\"antenna_offset\":[0.5,-0.25,-1.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `multi_antenna_offset_read` (tests/vectors/mip/filter_20_64.yaml:1118)
+#[test]
+fn case_multi_antenna_offset_read() {
+    check(
+        "75650d040454020146de",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":84,\"name\":\"multi_antenna_offset\",\"values\":{\"function\":2,\"receiver_id\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `multi_antenna_offset_read_reply` (tests/vectors/mip/filter_20_64.yaml:1131)
+#[test]
+fn case_multi_antenna_offset_read_reply() {
+    check(
+        "75650d1304f154000fd401bea3d70a3de147aebf23d70a3ffb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":84,\"ack_code\":0}},{\"descriptor\":212,\"name\":\"multi_antenna_offset_response\",\"values\":{\"receiver_id\":1,\"antenna_offset\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `relative_position_configuration_write` (tests/vectors/mip/filter_20_64.yaml:1149)
+#[test]
+fn case_relative_position_configuration_write() {
+    check(
+        "75650d1d1d550101024046380000000000c052480000000000404ba00000000000bd4f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":85,\"name\":\"relative_position_configuration\",\"values\":{\"function\":1,\"source\":1,\"reference_frame_selector\":2,\"reference_coordinates\":[44.4375,-73.125,55.25]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `relative_position_configuration_read_reply` (tests/vectors/mip/filter_20_64.yaml:1164)
+#[test]
+fn case_relative_position_configuration_read_reply() {
+    check(
+        "75650d2004f155001cd500014130fc6ae86e47a0c1527bea41eb851f414e6431e0000000a3eb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":85,\"ack_code\":0}},{\"descriptor\":213,\"name\":\"relative_position_configuration_response\",\"values\":{\"source\":0,\"reference_frame_selector\":1,\"reference_coordinates\":[1113194.907932736,-4845481.03,3983459.75]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `reference_point_lever_arm_write` (tests/vectors/mip/filter_20_64.yaml:1182)
+#[test]
+fn case_reference_point_lever_arm_write() {
+    check(
+        "75650d10105601013fc0000000000000bf4000005db2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":86,\"name\":\"reference_point_lever_arm\",\"values\":{\"function\":1,\"ref_point_sel\":1,\"lever_arm_offset\":[1.5,0.0,-0.75]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `reference_point_lever_arm_read_reply` (tests/vectors/mip/filter_20_64.yaml:1196)
+#[test]
+fn case_reference_point_lever_arm_read_reply() {
+    check(
+        "75650d1304f156000fd6013fc0000000000000bf4000002944",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":86,\"ack_code\":0}},{\"descriptor\":214,\"name\":\"reference_point_lever_arm_response\",\"values\":{\"ref_point_sel\":1,\"lever_arm_offset\":[1.5,0.0,-0.75]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `speed_lever_arm_write` (tests/vectors/mip/filter_20_64.yaml:1212)
+#[test]
+fn case_speed_lever_arm_write() {
+    check(
+        "75650d1010610101bf000000bf4000003e800000e68b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":97,\"name\":\"speed_lever_arm\",\"values\":{\"function\":1,\"source\":1,\"lever_arm_offset\":[-0.5,-0.75,0.25]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `speed_lever_arm_read` (tests/vectors/mip/filter_20_64.yaml:1226)
+#[test]
+fn case_speed_lever_arm_read() {
+    check(
+        "75650d04046102015305",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":97,\"name\":\"speed_lever_arm\",\"values\":{\"function\":2,\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `speed_lever_arm_read_reply` (tests/vectors/mip/filter_20_64.yaml:1239)
+#[test]
+fn case_speed_lever_arm_read_reply() {
+    check(
+        "75650d1304f161000fe101bf000000bf4000003e800000bdcd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":97,\"ack_code\":0}},{\"descriptor\":225,\"name\":\"speed_lever_arm_response\",\"values\":{\"source\":1,\"lever_arm_offset\":[-0.5,-0.75,0.25]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `wheeled_vehicle_constraint_control_write` (tests/vectors/mip/filter_20_64.yaml:1255)
+#[test]
+fn case_wheeled_vehicle_constraint_control_write() {
+    check(
+        "75650d04046301015409",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":99,\"name\":\"wheeled_vehicle_constraint_control\",\"values\":{\"function\":1,\"enable\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `wheeled_vehicle_constraint_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:1267)
+#[test]
+fn case_wheeled_vehicle_constraint_control_read_reply() {
+    check(
+        "75650d0704f1630003e3002c26",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":99,\"ack_code\":0}},{\"descriptor\":227,\"name\":\"wheeled_vehicle_constraint_control_response\",\"values\":{\"enable\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_antenna_calibration_control_write` (tests/vectors/mip/filter_20_64.yaml:1283)
+#[test]
+fn case_gnss_antenna_calibration_control_write() {
+    check(
+        "75650d08086401013f0000009ca0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":100,\"name\":\"gnss_antenna_calibration_control\",\"values\":{\"function\":1,\"enable\":1,\"max_offset\":0.5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_antenna_calibration_control_read_reply` (tests/vectors/mip/filter_20_64.yaml:1297)
+#[test]
+fn case_gnss_antenna_calibration_control_read_reply() {
+    check(
+        "75650d0b04f1640007e4013dcccccdd9f3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":228,\"name\":\"gnss_antenna_calibration_control_response\",\"values\":{\"enable\":1,\"max_offset\":0.10000000149011612}}]}",
+        ],
+        false,
+    );
+}
+
+/// `two_settings_one_packet` (tests/vectors/mip/filter_20_64.yaml:1314)
+#[test]
+fn case_two_settings_one_packet() {
+    check(
+        "75650d06036302035302ad6b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":99,\"name\":\"wheeled_vehicle_constraint_control\",\"values\":{\"function\":2}},{\"descriptor\":83,\"name\":\"adaptive_filter_control\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `two_settings_one_packet_reply` (tests/vectors/mip/filter_20_64.yaml:1328)
+#[test]
+fn case_two_settings_one_packet_reply() {
+    check(
+        "75650d1004f1630003e30104f1530005d3023a982abd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":99,\"ack_code\":0}},{\"descriptor\":227,\"name\":\"wheeled_vehicle_constraint_control_response\",\"values\":{\"enable\":1}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"adaptive_filter_control_response\",\"values\":{\"level\":2,\"time_limit\":15000}}]}",
+        ],
+        false,
+    );
+}
+
 /// `receiver_info_command` (tests/vectors/mip/gnss.yaml:7)
 #[test]
 fn case_receiver_info_command() {

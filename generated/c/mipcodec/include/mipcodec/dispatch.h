@@ -105,31 +105,81 @@ typedef enum {
     MIP_FIELD_FILTER_ZUPT_CONTROL = 63,
     MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE = 64,
     MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME = 65,
-    MIP_FIELD_GNSS_RECEIVER_INFO = 66,
-    MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE = 67,
-    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION = 68,
-    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE = 69,
-    MIP_FIELD_GNSS_SPARTN_CONFIGURATION = 70,
-    MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE = 71,
-    MIP_FIELD_AIDING_FRAME_CONFIG = 72,
-    MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE = 73,
-    MIP_FIELD_AIDING_ECHO_CONTROL = 74,
-    MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE = 75,
-    MIP_FIELD_AIDING_ECEF_POSITION = 76,
-    MIP_FIELD_AIDING_LLH_POSITION = 77,
-    MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID = 78,
-    MIP_FIELD_AIDING_ECEF_VELOCITY = 79,
-    MIP_FIELD_AIDING_NED_VELOCITY = 80,
-    MIP_FIELD_AIDING_BODY_FRAME_VELOCITY = 81,
-    MIP_FIELD_AIDING_TRUE_HEADING = 82,
-    MIP_FIELD_AIDING_MAGNETIC_FIELD = 83,
-    MIP_FIELD_AIDING_PRESSURE = 84,
-    MIP_FIELD_SYSTEM_COMMUNICATION_MODE = 85,
-    MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE = 86,
-    MIP_FIELD_SENSOR_SCALED_ACCEL = 87,
-    MIP_FIELD_SENSOR_SCALED_GYRO = 88,
-    MIP_FIELD_SENSOR_SCALED_MAG = 89,
-    MIP_FIELD_COUNT = 90
+    MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL = 66,
+    MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE = 67,
+    MIP_FIELD_FILTER_TARE_ORIENTATION = 68,
+    MIP_FIELD_FILTER_COMMANDED_ZUPT = 69,
+    MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE = 70,
+    MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION = 71,
+    MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV = 72,
+    MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE = 73,
+    MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV = 74,
+    MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE = 75,
+    MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE = 76,
+    MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE = 77,
+    MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE = 78,
+    MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE = 79,
+    MIP_FIELD_FILTER_MAG_NOISE_STD_DEV = 80,
+    MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE = 81,
+    MIP_FIELD_FILTER_DECLINATION_SOURCE = 82,
+    MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE = 83,
+    MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT = 84,
+    MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE = 85,
+    MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT = 86,
+    MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE = 87,
+    MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT = 88,
+    MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE = 89,
+    MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL = 90,
+    MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE = 91,
+    MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL = 92,
+    MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE = 93,
+    MIP_FIELD_FILTER_INCLINATION_SOURCE = 94,
+    MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE = 95,
+    MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE = 96,
+    MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE = 97,
+    MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL = 98,
+    MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE = 99,
+    MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION = 100,
+    MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE = 101,
+    MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL = 102,
+    MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE = 103,
+    MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET = 104,
+    MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE = 105,
+    MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION = 106,
+    MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE = 107,
+    MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM = 108,
+    MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE = 109,
+    MIP_FIELD_FILTER_SPEED_LEVER_ARM = 110,
+    MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE = 111,
+    MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL = 112,
+    MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE = 113,
+    MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL = 114,
+    MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE = 115,
+    MIP_FIELD_GNSS_RECEIVER_INFO = 116,
+    MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE = 117,
+    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION = 118,
+    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE = 119,
+    MIP_FIELD_GNSS_SPARTN_CONFIGURATION = 120,
+    MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE = 121,
+    MIP_FIELD_AIDING_FRAME_CONFIG = 122,
+    MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE = 123,
+    MIP_FIELD_AIDING_ECHO_CONTROL = 124,
+    MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE = 125,
+    MIP_FIELD_AIDING_ECEF_POSITION = 126,
+    MIP_FIELD_AIDING_LLH_POSITION = 127,
+    MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID = 128,
+    MIP_FIELD_AIDING_ECEF_VELOCITY = 129,
+    MIP_FIELD_AIDING_NED_VELOCITY = 130,
+    MIP_FIELD_AIDING_BODY_FRAME_VELOCITY = 131,
+    MIP_FIELD_AIDING_TRUE_HEADING = 132,
+    MIP_FIELD_AIDING_MAGNETIC_FIELD = 133,
+    MIP_FIELD_AIDING_PRESSURE = 134,
+    MIP_FIELD_SYSTEM_COMMUNICATION_MODE = 135,
+    MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE = 136,
+    MIP_FIELD_SENSOR_SCALED_ACCEL = 137,
+    MIP_FIELD_SENSOR_SCALED_GYRO = 138,
+    MIP_FIELD_SENSOR_SCALED_MAG = 139,
+    MIP_FIELD_COUNT = 140
 } mip_field_id_t;
 
 /** A decoded field: which layout, and its value. */
@@ -201,6 +251,62 @@ typedef struct {
         mip_filter_zupt_control_t filter_zupt_control;
         mip_filter_zupt_control_response_t filter_zupt_control_response;
         mip_filter_external_heading_update_with_time_t filter_external_heading_update_with_time;
+        mip_filter_zero_angular_rate_update_control_t filter_zero_angular_rate_update_control;
+        mip_filter_zero_angular_rate_update_control_response_t
+            filter_zero_angular_rate_update_control_response;
+        mip_filter_tare_orientation_t filter_tare_orientation;
+        mip_filter_commanded_zupt_t filter_commanded_zupt;
+        mip_filter_commanded_zero_angular_rate_update_t filter_commanded_zero_angular_rate_update;
+        mip_filter_mag_capture_auto_calibration_t filter_mag_capture_auto_calibration;
+        mip_filter_gravity_noise_std_dev_t filter_gravity_noise_std_dev;
+        mip_filter_gravity_noise_std_dev_response_t filter_gravity_noise_std_dev_response;
+        mip_filter_pressure_altitude_noise_std_dev_t filter_pressure_altitude_noise_std_dev;
+        mip_filter_pressure_altitude_noise_std_dev_response_t filter_pressure_altitude_noise_std_dev_response;
+        mip_filter_hard_iron_offset_noise_t filter_hard_iron_offset_noise;
+        mip_filter_hard_iron_offset_noise_response_t filter_hard_iron_offset_noise_response;
+        mip_filter_soft_iron_matrix_noise_t filter_soft_iron_matrix_noise;
+        mip_filter_soft_iron_matrix_noise_response_t filter_soft_iron_matrix_noise_response;
+        mip_filter_mag_noise_std_dev_t filter_mag_noise_std_dev;
+        mip_filter_mag_noise_std_dev_response_t filter_mag_noise_std_dev_response;
+        mip_filter_declination_source_t filter_declination_source;
+        mip_filter_declination_source_response_t filter_declination_source_response;
+        mip_filter_gravity_magnitude_adaptive_measurement_t filter_gravity_magnitude_adaptive_measurement;
+        mip_filter_gravity_magnitude_adaptive_measurement_response_t
+            filter_gravity_magnitude_adaptive_measurement_response;
+        mip_filter_mag_magnitude_adaptive_measurement_t filter_mag_magnitude_adaptive_measurement;
+        mip_filter_mag_magnitude_adaptive_measurement_response_t
+            filter_mag_magnitude_adaptive_measurement_response;
+        mip_filter_mag_dip_angle_adaptive_measurement_t filter_mag_dip_angle_adaptive_measurement;
+        mip_filter_mag_dip_angle_adaptive_measurement_response_t
+            filter_mag_dip_angle_adaptive_measurement_response;
+        mip_filter_altitude_aiding_control_t filter_altitude_aiding_control;
+        mip_filter_altitude_aiding_control_response_t filter_altitude_aiding_control_response;
+        mip_filter_pitch_roll_aiding_control_t filter_pitch_roll_aiding_control;
+        mip_filter_pitch_roll_aiding_control_response_t filter_pitch_roll_aiding_control_response;
+        mip_filter_inclination_source_t filter_inclination_source;
+        mip_filter_inclination_source_response_t filter_inclination_source_response;
+        mip_filter_magnetic_field_magnitude_source_t filter_magnetic_field_magnitude_source;
+        mip_filter_magnetic_field_magnitude_source_response_t filter_magnetic_field_magnitude_source_response;
+        mip_filter_aiding_measurement_control_t filter_aiding_measurement_control;
+        mip_filter_aiding_measurement_control_response_t filter_aiding_measurement_control_response;
+        mip_filter_initialization_configuration_t filter_initialization_configuration;
+        mip_filter_initialization_configuration_response_t filter_initialization_configuration_response;
+        mip_filter_adaptive_filter_control_t filter_adaptive_filter_control;
+        mip_filter_adaptive_filter_control_response_t filter_adaptive_filter_control_response;
+        mip_filter_multi_antenna_offset_t filter_multi_antenna_offset;
+        mip_filter_multi_antenna_offset_response_t filter_multi_antenna_offset_response;
+        mip_filter_relative_position_configuration_t filter_relative_position_configuration;
+        mip_filter_relative_position_configuration_response_t filter_relative_position_configuration_response;
+        mip_filter_reference_point_lever_arm_t filter_reference_point_lever_arm;
+        mip_filter_reference_point_lever_arm_response_t filter_reference_point_lever_arm_response;
+        mip_filter_speed_lever_arm_t filter_speed_lever_arm;
+        mip_filter_speed_lever_arm_response_t filter_speed_lever_arm_response;
+        mip_filter_wheeled_vehicle_constraint_control_t filter_wheeled_vehicle_constraint_control;
+        mip_filter_wheeled_vehicle_constraint_control_response_t
+            filter_wheeled_vehicle_constraint_control_response;
+        mip_filter_gnss_antenna_calibration_control_t filter_gnss_antenna_calibration_control;
+        mip_filter_gnss_antenna_calibration_control_response_t
+            filter_gnss_antenna_calibration_control_response;
         mip_gnss_receiver_info_t gnss_receiver_info;
         mip_gnss_receiver_info_response_t gnss_receiver_info_response;
         mip_gnss_signal_configuration_t gnss_signal_configuration;

@@ -28,7 +28,7 @@ const char *mip_status_text(mip_status_t status);
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MIP_PATH_MAX_DEPTH 2
 /** Enough room for any message mip_decode_error_format() can produce. */
-#define MIP_ERROR_MESSAGE_MAX 254
+#define MIP_ERROR_MESSAGE_MAX 270
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {

@@ -48,6 +48,27 @@ typedef uint8_t mip_action_type_t;
 #define MIP_ACTION_TYPE_GPIO ((mip_action_type_t)1u)    /* Control the state of a GPIO pin. */
 #define MIP_ACTION_TYPE_MESSAGE ((mip_action_type_t)2u) /* Output a data packet. */
 
+/** Auto-adaptive filter operating level.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_adaptive_filter_level_t;
+#define MIP_ADAPTIVE_FILTER_LEVEL_OFF ((mip_adaptive_filter_level_t)0u)          /* Adaptive filtering off. */
+#define MIP_ADAPTIVE_FILTER_LEVEL_CONSERVATIVE ((mip_adaptive_filter_level_t)1u) /* Conservative. */
+#define MIP_ADAPTIVE_FILTER_LEVEL_MODERATE ((mip_adaptive_filter_level_t)2u)     /* Moderate (default). */
+#define MIP_ADAPTIVE_FILTER_LEVEL_AGGRESSIVE ((mip_adaptive_filter_level_t)3u)   /* Aggressive. */
+
+/** Adaptive measurement mode.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_adaptive_measurement_mode_t;
+#define MIP_ADAPTIVE_MEASUREMENT_MODE_DISABLED                                                               \
+    ((mip_adaptive_measurement_mode_t)0u) /* No adaptive measurement. */
+#define MIP_ADAPTIVE_MEASUREMENT_MODE_FIXED                                                                  \
+    ((mip_adaptive_measurement_mode_t)1u) /* Fixed adaptive measurement using the specified filter and limit \
+                                             parameters. */
+#define MIP_ADAPTIVE_MEASUREMENT_MODE_AUTO                                                                   \
+    ((mip_adaptive_measurement_mode_t)2u) /* Auto-adaptive: the Kalman filter re-weights the measurement by  \
+                                             its perceived quality (3DM-GX5 and later); limits are ignored.  \
+                                           */
+
 /** Aiding command echo mode.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_aiding_echo_mode_t;
@@ -79,6 +100,30 @@ typedef uint16_t mip_aiding_llh_valid_flags_t;
                                                                                      */
 #define MIP_AIDING_LLH_VALID_FLAGS_HEIGHT_SHIFT 2
 
+/** Aiding measurement source.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint16_t mip_aiding_measurement_source_t;
+#define MIP_AIDING_MEASUREMENT_SOURCE_GNSS_POS_VEL                                                           \
+    ((mip_aiding_measurement_source_t)0u) /* GNSS position and velocity. */
+#define MIP_AIDING_MEASUREMENT_SOURCE_GNSS_HEADING                                                           \
+    ((mip_aiding_measurement_source_t)1u) /* GNSS heading (dual antenna). */
+#define MIP_AIDING_MEASUREMENT_SOURCE_ALTIMETER                                                              \
+    ((mip_aiding_measurement_source_t)2u) /* Pressure altimeter (built-in sensor). */
+#define MIP_AIDING_MEASUREMENT_SOURCE_SPEED                                                                  \
+    ((mip_aiding_measurement_source_t)3u) /* Speed sensor / odometer. */
+#define MIP_AIDING_MEASUREMENT_SOURCE_MAGNETOMETER                                                           \
+    ((mip_aiding_measurement_source_t)4u) /* Magnetometer (built-in sensor). */
+#define MIP_AIDING_MEASUREMENT_SOURCE_EXTERNAL_HEADING                                                       \
+    ((mip_aiding_measurement_source_t)5u) /* External heading input. */
+#define MIP_AIDING_MEASUREMENT_SOURCE_EXTERNAL_ALTIMETER                                                     \
+    ((mip_aiding_measurement_source_t)6u) /* External pressure altimeter input. */
+#define MIP_AIDING_MEASUREMENT_SOURCE_EXTERNAL_MAGNETOMETER                                                  \
+    ((mip_aiding_measurement_source_t)7u) /* External magnetometer input. */
+#define MIP_AIDING_MEASUREMENT_SOURCE_BODY_FRAME_VEL                                                         \
+    ((mip_aiding_measurement_source_t)8u) /* External body frame velocity input. */
+#define MIP_AIDING_MEASUREMENT_SOURCE_ALL                                                                    \
+    ((mip_aiding_measurement_source_t)65535u) /* All sources (for save, load and default). */
+
 /** Aiding measurement timebase. Clock in which the timestamp of an aiding measurement is expressed.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_aiding_timebase_t;
@@ -105,6 +150,14 @@ typedef uint16_t mip_aiding_vector_valid_flags_t;
 #define MIP_AIDING_VECTOR_VALID_FLAGS_Z_MASK                                                                 \
     ((mip_aiding_vector_valid_flags_t)0x4u) /* bit 2: Z (or down) component valid. */
 #define MIP_AIDING_VECTOR_VALID_FLAGS_Z_SHIFT 2
+
+/** Altitude aiding source.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_altitude_aiding_source_t;
+#define MIP_ALTITUDE_AIDING_SOURCE_NONE                                                                      \
+    ((mip_altitude_aiding_source_t)0u) /* No altitude aiding (disabled). */
+#define MIP_ALTITUDE_AIDING_SOURCE_PRESSURE                                                                  \
+    ((mip_altitude_aiding_source_t)1u) /* Pressure sensor aiding enabled. */
 
 /** 3DM-CV7 commanded built-in test result.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
@@ -227,6 +280,28 @@ typedef uint8_t mip_filter_gnss_source_t;
 #define MIP_FILTER_GNSS_SOURCE_INTERNAL_2                                                                    \
     ((mip_filter_gnss_source_t)4u) /* Internal GNSS receiver 2 only. (devices: cv7_ins) */
 
+/** Navigation filter initial condition source.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_filter_initial_condition_source_t;
+#define MIP_FILTER_INITIAL_CONDITION_SOURCE_AUTO_POS_VEL_ATT                                                 \
+    ((mip_filter_initial_condition_source_t)0u) /* Automatic position, velocity and attitude. */
+#define MIP_FILTER_INITIAL_CONDITION_SOURCE_AUTO_POS_VEL_PITCH_ROLL                                          \
+    ((mip_filter_initial_condition_source_t)1u) /* Automatic position, velocity, pitch and roll; heading as  \
+                                                   specified. */
+#define MIP_FILTER_INITIAL_CONDITION_SOURCE_AUTO_POS_VEL                                                     \
+    ((mip_filter_initial_condition_source_t)2u) /* Automatic position and velocity; attitude fully           \
+                                                   user-specified. */
+#define MIP_FILTER_INITIAL_CONDITION_SOURCE_MANUAL                                                           \
+    ((mip_filter_initial_condition_source_t)3u) /* User-specified position, velocity and attitude. */
+
+/** Reference frame of user-specified positions and velocities.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_filter_reference_frame_t;
+#define MIP_FILTER_REFERENCE_FRAME_ECEF                                                                      \
+    ((mip_filter_reference_frame_t)1u) /* WGS84 Earth-centered, Earth-fixed coordinates. */
+#define MIP_FILTER_REFERENCE_FRAME_LLH                                                                       \
+    ((mip_filter_reference_frame_t)2u) /* WGS84 latitude, longitude and height above ellipsoid. */
+
 /** Function selector. First parameter of settings commands; chooses what the command does. Only a read
  * returns a response field (with the ack); parameters not needed for a function may be left out, or sent as
  * placeholders. An integer, so that values the spec does not list are kept. */
@@ -316,6 +391,26 @@ typedef uint32_t mip_gx5_bit_flags_t;
     ((mip_gx5_bit_flags_t)0x1000000u) /* bit 24: Kalman filter: solution fault. */
 #define MIP_GX5_BIT_FLAGS_FILTER_SOLUTION_FAULT_SHIFT 24
 
+/** Allowed automatic heading alignment methods.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_heading_alignment_methods_t;
+#define MIP_HEADING_ALIGNMENT_METHODS_DUAL_ANTENNA_MASK                                                      \
+    ((mip_heading_alignment_methods_t)0x1u) /* bit 0: Dual-antenna GNSS alignment. */
+#define MIP_HEADING_ALIGNMENT_METHODS_DUAL_ANTENNA_SHIFT 0
+#define MIP_HEADING_ALIGNMENT_METHODS_KINEMATIC_MASK                                                         \
+    ((mip_heading_alignment_methods_t)0x2u) /* bit 1: GNSS kinematic alignment: the GNSS velocity (above 2   \
+                                               m/s) determines the initial heading. */
+#define MIP_HEADING_ALIGNMENT_METHODS_KINEMATIC_SHIFT 1
+#define MIP_HEADING_ALIGNMENT_METHODS_MAGNETOMETER_MASK                                                      \
+    ((mip_heading_alignment_methods_t)0x4u) /* bit 2: The internal magnetometer determines the initial       \
+                                               heading. */
+#define MIP_HEADING_ALIGNMENT_METHODS_MAGNETOMETER_SHIFT 2
+#define MIP_HEADING_ALIGNMENT_METHODS_EXTERNAL_MASK                                                          \
+    ((mip_heading_alignment_methods_t)0x8u) /* bit 3: An external heading input determines the initial       \
+                                               heading. */
+#define MIP_HEADING_ALIGNMENT_METHODS_EXTERNAL_SHIFT 3
+
 /** Heading update source. Which aiding sources the filter uses for heading updates.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_heading_update_source_t;
@@ -339,6 +434,42 @@ typedef uint8_t mip_heading_update_source_t;
     ((mip_heading_update_source_t)7u) /* GNSS velocity vector, magnetometer and external heading messages.   \
                                        */
 
+/** Source of a magnetic field parameter (declination, inclination, magnitude). Where the filter takes a local
+ * magnetic field parameter from: nowhere (a fixed fallback), the internal World Magnetic Model, or a value
+ * the user supplies. An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_magnetic_param_source_t;
+#define MIP_MAGNETIC_PARAM_SOURCE_NONE                                                                       \
+    ((mip_magnetic_param_source_t)1u) /* No source: no correction (declination, inclination) or a fixed 0.5  \
+                                         gauss (magnitude). */
+#define MIP_MAGNETIC_PARAM_SOURCE_WMM                                                                        \
+    ((mip_magnetic_param_source_t)2u) /* Internal World Magnetic Model at the current position estimate      \
+                                         (default). */
+#define MIP_MAGNETIC_PARAM_SOURCE_MANUAL                                                                     \
+    ((mip_magnetic_param_source_t)3u) /* Value supplied by the user; the device does not validate it. */
+
+/** Pitch/roll aiding source.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_pitch_roll_aiding_source_t;
+#define MIP_PITCH_ROLL_AIDING_SOURCE_NONE                                                                    \
+    ((mip_pitch_roll_aiding_source_t)0u) /* No pitch/roll aiding (disabled). */
+#define MIP_PITCH_ROLL_AIDING_SOURCE_GRAVITY_VECTOR                                                          \
+    ((mip_pitch_roll_aiding_source_t)1u) /* Gravity vector aiding enabled. */
+
+/** Filter reference point.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_reference_point_selector_t;
+#define MIP_REFERENCE_POINT_SELECTOR_VEH                                                                     \
+    ((mip_reference_point_selector_t)1u) /* The origin of the vehicle (the only value; the parameter is      \
+                                            reserved and must be 1). */
+
+/** Reference location source for relative position outputs.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_relative_position_source_t;
+#define MIP_RELATIVE_POSITION_SOURCE_AUTO                                                                    \
+    ((mip_relative_position_source_t)0u) /* Automatic: the RTK base station location. */
+#define MIP_RELATIVE_POSITION_SOURCE_MANUAL                                                                  \
+    ((mip_relative_position_source_t)1u) /* The reference coordinates given in the command. */
+
 /** SPARTN connection type.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_spartn_connection_type_t;
@@ -356,6 +487,17 @@ typedef uint8_t mip_system_comm_mode_t;
     ((mip_system_comm_mode_t)2u) /* Direct to the internal IMU: MIP IMU protocol. */
 #define MIP_SYSTEM_COMM_MODE_GNSS_DIRECT                                                                     \
     ((mip_system_comm_mode_t)3u) /* Direct to the GNSS receiver: NMEA and UBX (GNSS models only). */
+
+/** Tare orientation axes. Axes to tare; 0 (no bit set) resets all axes.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_tare_axes_t;
+#define MIP_TARE_AXES_ROLL_MASK ((mip_tare_axes_t)0x1u) /* bit 0: Tare the roll axis. */
+#define MIP_TARE_AXES_ROLL_SHIFT 0
+#define MIP_TARE_AXES_PITCH_MASK ((mip_tare_axes_t)0x2u) /* bit 1: Tare the pitch axis. */
+#define MIP_TARE_AXES_PITCH_SHIFT 1
+#define MIP_TARE_AXES_YAW_MASK ((mip_tare_axes_t)0x4u) /* bit 2: Tare the yaw axis. */
+#define MIP_TARE_AXES_YAW_SHIFT 2
 
 /** Threshold comparison type.
  * An integer, so that values the spec does not list are kept. */

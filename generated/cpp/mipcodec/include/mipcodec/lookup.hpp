@@ -229,6 +229,156 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
         case 0x1F:
             f(Layouts<::mipcodec::filter::ExternalHeadingUpdateWithTime>{});
             return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::filter::ZeroAngularRateUpdateControl>{});
+            return Lookup::found;
+        case 0x8E:
+            f(Layouts<::mipcodec::filter::ZeroAngularRateUpdateControlResponse>{});
+            return Lookup::found;
+        case 0x21:
+            f(Layouts<::mipcodec::filter::TareOrientation>{});
+            return Lookup::found;
+        case 0x22:
+            f(Layouts<::mipcodec::filter::CommandedZupt>{});
+            return Lookup::found;
+        case 0x23:
+            f(Layouts<::mipcodec::filter::CommandedZeroAngularRateUpdate>{});
+            return Lookup::found;
+        case 0x27:
+            f(Layouts<::mipcodec::filter::MagCaptureAutoCalibration>{});
+            return Lookup::found;
+        case 0x28:
+            f(Layouts<::mipcodec::filter::GravityNoiseStdDev>{});
+            return Lookup::found;
+        case 0x93:
+            f(Layouts<::mipcodec::filter::GravityNoiseStdDevResponse>{});
+            return Lookup::found;
+        case 0x29:
+            f(Layouts<::mipcodec::filter::PressureAltitudeNoiseStdDev>{});
+            return Lookup::found;
+        case 0x94:
+            f(Layouts<::mipcodec::filter::PressureAltitudeNoiseStdDevResponse>{});
+            return Lookup::found;
+        case 0x2B:
+            f(Layouts<::mipcodec::filter::HardIronOffsetNoise>{});
+            return Lookup::found;
+        case 0x96:
+            f(Layouts<::mipcodec::filter::HardIronOffsetNoiseResponse>{});
+            return Lookup::found;
+        case 0x2C:
+            f(Layouts<::mipcodec::filter::SoftIronMatrixNoise>{});
+            return Lookup::found;
+        case 0x97:
+            f(Layouts<::mipcodec::filter::SoftIronMatrixNoiseResponse>{});
+            return Lookup::found;
+        case 0x42:
+            f(Layouts<::mipcodec::filter::MagNoiseStdDev>{});
+            return Lookup::found;
+        case 0xB1:
+            f(Layouts<::mipcodec::filter::MagNoiseStdDevResponse>{});
+            return Lookup::found;
+        case 0x43:
+            f(Layouts<::mipcodec::filter::DeclinationSource>{});
+            return Lookup::found;
+        case 0xB2:
+            f(Layouts<::mipcodec::filter::DeclinationSourceResponse>{});
+            return Lookup::found;
+        case 0x44:
+            f(Layouts<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement>{});
+            return Lookup::found;
+        case 0xB3:
+            f(Layouts<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse>{});
+            return Lookup::found;
+        case 0x45:
+            f(Layouts<::mipcodec::filter::MagMagnitudeAdaptiveMeasurement>{});
+            return Lookup::found;
+        case 0xB4:
+            f(Layouts<::mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse>{});
+            return Lookup::found;
+        case 0x46:
+            f(Layouts<::mipcodec::filter::MagDipAngleAdaptiveMeasurement>{});
+            return Lookup::found;
+        case 0xB5:
+            f(Layouts<::mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse>{});
+            return Lookup::found;
+        case 0x47:
+            f(Layouts<::mipcodec::filter::AltitudeAidingControl>{});
+            return Lookup::found;
+        case 0xB7:
+            f(Layouts<::mipcodec::filter::AltitudeAidingControlResponse>{});
+            return Lookup::found;
+        case 0x4B:
+            f(Layouts<::mipcodec::filter::PitchRollAidingControl>{});
+            return Lookup::found;
+        case 0xBB:
+            f(Layouts<::mipcodec::filter::PitchRollAidingControlResponse>{});
+            return Lookup::found;
+        case 0x4C:
+            f(Layouts<::mipcodec::filter::InclinationSource>{});
+            return Lookup::found;
+        case 0xBC:
+            f(Layouts<::mipcodec::filter::InclinationSourceResponse>{});
+            return Lookup::found;
+        case 0x4D:
+            f(Layouts<::mipcodec::filter::MagneticFieldMagnitudeSource>{});
+            return Lookup::found;
+        case 0xBD:
+            f(Layouts<::mipcodec::filter::MagneticFieldMagnitudeSourceResponse>{});
+            return Lookup::found;
+        case 0x50:
+            f(Layouts<::mipcodec::filter::AidingMeasurementControl>{});
+            return Lookup::found;
+        case 0xD0:
+            f(Layouts<::mipcodec::filter::AidingMeasurementControlResponse>{});
+            return Lookup::found;
+        case 0x52:
+            f(Layouts<::mipcodec::filter::InitializationConfiguration>{});
+            return Lookup::found;
+        case 0xD2:
+            f(Layouts<::mipcodec::filter::InitializationConfigurationResponse>{});
+            return Lookup::found;
+        case 0x53:
+            f(Layouts<::mipcodec::filter::AdaptiveFilterControl>{});
+            return Lookup::found;
+        case 0xD3:
+            f(Layouts<::mipcodec::filter::AdaptiveFilterControlResponse>{});
+            return Lookup::found;
+        case 0x54:
+            f(Layouts<::mipcodec::filter::MultiAntennaOffset>{});
+            return Lookup::found;
+        case 0xD4:
+            f(Layouts<::mipcodec::filter::MultiAntennaOffsetResponse>{});
+            return Lookup::found;
+        case 0x55:
+            f(Layouts<::mipcodec::filter::RelativePositionConfiguration>{});
+            return Lookup::found;
+        case 0xD5:
+            f(Layouts<::mipcodec::filter::RelativePositionConfigurationResponse>{});
+            return Lookup::found;
+        case 0x56:
+            f(Layouts<::mipcodec::filter::ReferencePointLeverArm>{});
+            return Lookup::found;
+        case 0xD6:
+            f(Layouts<::mipcodec::filter::ReferencePointLeverArmResponse>{});
+            return Lookup::found;
+        case 0x61:
+            f(Layouts<::mipcodec::filter::SpeedLeverArm>{});
+            return Lookup::found;
+        case 0xE1:
+            f(Layouts<::mipcodec::filter::SpeedLeverArmResponse>{});
+            return Lookup::found;
+        case 0x63:
+            f(Layouts<::mipcodec::filter::WheeledVehicleConstraintControl>{});
+            return Lookup::found;
+        case 0xE3:
+            f(Layouts<::mipcodec::filter::WheeledVehicleConstraintControlResponse>{});
+            return Lookup::found;
+        case 0x64:
+            f(Layouts<::mipcodec::filter::GnssAntennaCalibrationControl>{});
+            return Lookup::found;
+        case 0xE4:
+            f(Layouts<::mipcodec::filter::GnssAntennaCalibrationControlResponse>{});
+            return Lookup::found;
         default:
             break;
         }

@@ -183,6 +183,90 @@ inline bool from_string(const char *name, ActionType &out) {
     return false;
 }
 
+/// Auto-adaptive filter operating level. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AdaptiveFilterLevel : std::uint8_t {
+    off = 0,
+    conservative = 1,
+    moderate = 2,
+    aggressive = 3,
+};
+
+/// Spec name of a value ("off"), or nullptr when the value has no name.
+inline const char *to_string(AdaptiveFilterLevel v) {
+    if (v == AdaptiveFilterLevel::off) {
+        return "off";
+    }
+    if (v == AdaptiveFilterLevel::conservative) {
+        return "conservative";
+    }
+    if (v == AdaptiveFilterLevel::moderate) {
+        return "moderate";
+    }
+    if (v == AdaptiveFilterLevel::aggressive) {
+        return "aggressive";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AdaptiveFilterLevel &out) {
+    if (std::strcmp(name, "off") == 0) {
+        out = AdaptiveFilterLevel::off;
+        return true;
+    }
+    if (std::strcmp(name, "conservative") == 0) {
+        out = AdaptiveFilterLevel::conservative;
+        return true;
+    }
+    if (std::strcmp(name, "moderate") == 0) {
+        out = AdaptiveFilterLevel::moderate;
+        return true;
+    }
+    if (std::strcmp(name, "aggressive") == 0) {
+        out = AdaptiveFilterLevel::aggressive;
+        return true;
+    }
+    return false;
+}
+
+/// Adaptive measurement mode. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AdaptiveMeasurementMode : std::uint8_t {
+    disabled = 0,
+    fixed = 1,
+    auto_ = 2,
+};
+
+/// Spec name of a value ("disabled"), or nullptr when the value has no name.
+inline const char *to_string(AdaptiveMeasurementMode v) {
+    if (v == AdaptiveMeasurementMode::disabled) {
+        return "disabled";
+    }
+    if (v == AdaptiveMeasurementMode::fixed) {
+        return "fixed";
+    }
+    if (v == AdaptiveMeasurementMode::auto_) {
+        return "auto";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AdaptiveMeasurementMode &out) {
+    if (std::strcmp(name, "disabled") == 0) {
+        out = AdaptiveMeasurementMode::disabled;
+        return true;
+    }
+    if (std::strcmp(name, "fixed") == 0) {
+        out = AdaptiveMeasurementMode::fixed;
+        return true;
+    }
+    if (std::strcmp(name, "auto") == 0) {
+        out = AdaptiveMeasurementMode::auto_;
+        return true;
+    }
+    return false;
+}
+
 /// Aiding command echo mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AidingEchoMode : std::uint8_t {
     suppress_ack = 0,
@@ -298,6 +382,100 @@ class AidingLlhValidFlags {
     Raw raw_ = 0;
 };
 
+/// Aiding measurement source. Unknown values are kept (an enum class holds any std::uint16_t).
+enum class AidingMeasurementSource : std::uint16_t {
+    gnss_pos_vel = 0,
+    gnss_heading = 1,
+    altimeter = 2,
+    speed = 3,
+    magnetometer = 4,
+    external_heading = 5,
+    external_altimeter = 6,
+    external_magnetometer = 7,
+    body_frame_vel = 8,
+    all = 65535,
+};
+
+/// Spec name of a value ("gnss_pos_vel"), or nullptr when the value has no name.
+inline const char *to_string(AidingMeasurementSource v) {
+    if (v == AidingMeasurementSource::gnss_pos_vel) {
+        return "gnss_pos_vel";
+    }
+    if (v == AidingMeasurementSource::gnss_heading) {
+        return "gnss_heading";
+    }
+    if (v == AidingMeasurementSource::altimeter) {
+        return "altimeter";
+    }
+    if (v == AidingMeasurementSource::speed) {
+        return "speed";
+    }
+    if (v == AidingMeasurementSource::magnetometer) {
+        return "magnetometer";
+    }
+    if (v == AidingMeasurementSource::external_heading) {
+        return "external_heading";
+    }
+    if (v == AidingMeasurementSource::external_altimeter) {
+        return "external_altimeter";
+    }
+    if (v == AidingMeasurementSource::external_magnetometer) {
+        return "external_magnetometer";
+    }
+    if (v == AidingMeasurementSource::body_frame_vel) {
+        return "body_frame_vel";
+    }
+    if (v == AidingMeasurementSource::all) {
+        return "all";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AidingMeasurementSource &out) {
+    if (std::strcmp(name, "gnss_pos_vel") == 0) {
+        out = AidingMeasurementSource::gnss_pos_vel;
+        return true;
+    }
+    if (std::strcmp(name, "gnss_heading") == 0) {
+        out = AidingMeasurementSource::gnss_heading;
+        return true;
+    }
+    if (std::strcmp(name, "altimeter") == 0) {
+        out = AidingMeasurementSource::altimeter;
+        return true;
+    }
+    if (std::strcmp(name, "speed") == 0) {
+        out = AidingMeasurementSource::speed;
+        return true;
+    }
+    if (std::strcmp(name, "magnetometer") == 0) {
+        out = AidingMeasurementSource::magnetometer;
+        return true;
+    }
+    if (std::strcmp(name, "external_heading") == 0) {
+        out = AidingMeasurementSource::external_heading;
+        return true;
+    }
+    if (std::strcmp(name, "external_altimeter") == 0) {
+        out = AidingMeasurementSource::external_altimeter;
+        return true;
+    }
+    if (std::strcmp(name, "external_magnetometer") == 0) {
+        out = AidingMeasurementSource::external_magnetometer;
+        return true;
+    }
+    if (std::strcmp(name, "body_frame_vel") == 0) {
+        out = AidingMeasurementSource::body_frame_vel;
+        return true;
+    }
+    if (std::strcmp(name, "all") == 0) {
+        out = AidingMeasurementSource::all;
+        return true;
+    }
+    return false;
+}
+
 /// Aiding measurement timebase. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AidingTimebase : std::uint8_t {
     internal_reference = 1,
@@ -382,6 +560,36 @@ class AidingVectorValidFlags {
   private:
     Raw raw_ = 0;
 };
+
+/// Altitude aiding source. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AltitudeAidingSource : std::uint8_t {
+    none = 0,
+    pressure = 1,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(AltitudeAidingSource v) {
+    if (v == AltitudeAidingSource::none) {
+        return "none";
+    }
+    if (v == AltitudeAidingSource::pressure) {
+        return "pressure";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AltitudeAidingSource &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = AltitudeAidingSource::none;
+        return true;
+    }
+    if (std::strcmp(name, "pressure") == 0) {
+        out = AltitudeAidingSource::pressure;
+        return true;
+    }
+    return false;
+}
 
 /// 3DM-CV7 commanded built-in test result. Reserved and unnamed bits are kept in raw().
 class Cv7BitFlags {
@@ -780,6 +988,84 @@ inline bool from_string(const char *name, FilterGnssSource &out) {
     return false;
 }
 
+/// Navigation filter initial condition source. Unknown values are kept (an enum class holds any
+/// std::uint8_t).
+enum class FilterInitialConditionSource : std::uint8_t {
+    auto_pos_vel_att = 0,
+    auto_pos_vel_pitch_roll = 1,
+    auto_pos_vel = 2,
+    manual = 3,
+};
+
+/// Spec name of a value ("auto_pos_vel_att"), or nullptr when the value has no name.
+inline const char *to_string(FilterInitialConditionSource v) {
+    if (v == FilterInitialConditionSource::auto_pos_vel_att) {
+        return "auto_pos_vel_att";
+    }
+    if (v == FilterInitialConditionSource::auto_pos_vel_pitch_roll) {
+        return "auto_pos_vel_pitch_roll";
+    }
+    if (v == FilterInitialConditionSource::auto_pos_vel) {
+        return "auto_pos_vel";
+    }
+    if (v == FilterInitialConditionSource::manual) {
+        return "manual";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterInitialConditionSource &out) {
+    if (std::strcmp(name, "auto_pos_vel_att") == 0) {
+        out = FilterInitialConditionSource::auto_pos_vel_att;
+        return true;
+    }
+    if (std::strcmp(name, "auto_pos_vel_pitch_roll") == 0) {
+        out = FilterInitialConditionSource::auto_pos_vel_pitch_roll;
+        return true;
+    }
+    if (std::strcmp(name, "auto_pos_vel") == 0) {
+        out = FilterInitialConditionSource::auto_pos_vel;
+        return true;
+    }
+    if (std::strcmp(name, "manual") == 0) {
+        out = FilterInitialConditionSource::manual;
+        return true;
+    }
+    return false;
+}
+
+/// Reference frame of user-specified positions and velocities. Unknown values are kept (an enum class holds
+/// any std::uint8_t).
+enum class FilterReferenceFrame : std::uint8_t {
+    ecef = 1,
+    llh = 2,
+};
+
+/// Spec name of a value ("ecef"), or nullptr when the value has no name.
+inline const char *to_string(FilterReferenceFrame v) {
+    if (v == FilterReferenceFrame::ecef) {
+        return "ecef";
+    }
+    if (v == FilterReferenceFrame::llh) {
+        return "llh";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterReferenceFrame &out) {
+    if (std::strcmp(name, "ecef") == 0) {
+        out = FilterReferenceFrame::ecef;
+        return true;
+    }
+    if (std::strcmp(name, "llh") == 0) {
+        out = FilterReferenceFrame::llh;
+        return true;
+    }
+    return false;
+}
+
 /// Function selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FunctionSelector : std::uint8_t {
     write = 1,
@@ -1120,6 +1406,63 @@ class Gx5BitFlags {
     Raw raw_ = 0;
 };
 
+/// Allowed automatic heading alignment methods. Reserved and unnamed bits are kept in raw().
+class HeadingAlignmentMethods {
+  public:
+    using Raw = std::uint8_t;
+    constexpr HeadingAlignmentMethods() = default;
+    constexpr explicit HeadingAlignmentMethods(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw dual_antenna_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool dual_antenna() const {
+        return (raw_ & dual_antenna_mask) != 0;
+    }
+    constexpr void set_dual_antenna(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | dual_antenna_mask) : (raw_ & static_cast<Raw>(~dual_antenna_mask)));
+    }
+
+    static constexpr Raw kinematic_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool kinematic() const {
+        return (raw_ & kinematic_mask) != 0;
+    }
+    constexpr void set_kinematic(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | kinematic_mask) : (raw_ & static_cast<Raw>(~kinematic_mask)));
+    }
+
+    static constexpr Raw magnetometer_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool magnetometer() const {
+        return (raw_ & magnetometer_mask) != 0;
+    }
+    constexpr void set_magnetometer(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | magnetometer_mask) : (raw_ & static_cast<Raw>(~magnetometer_mask)));
+    }
+
+    static constexpr Raw external_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool external() const {
+        return (raw_ & external_mask) != 0;
+    }
+    constexpr void set_external(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | external_mask) : (raw_ & static_cast<Raw>(~external_mask)));
+    }
+    friend constexpr bool operator==(HeadingAlignmentMethods a, HeadingAlignmentMethods b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(HeadingAlignmentMethods a, HeadingAlignmentMethods b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// Heading update source. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class HeadingUpdateSource : std::uint8_t {
     none = 0,
@@ -1193,6 +1536,128 @@ inline bool from_string(const char *name, HeadingUpdateSource &out) {
     }
     if (std::strcmp(name, "gnss_velocity_magnetometer_and_external") == 0) {
         out = HeadingUpdateSource::gnss_velocity_magnetometer_and_external;
+        return true;
+    }
+    return false;
+}
+
+/// Source of a magnetic field parameter (declination, inclination, magnitude). Unknown values are kept (an
+/// enum class holds any std::uint8_t).
+enum class MagneticParamSource : std::uint8_t {
+    none = 1,
+    wmm = 2,
+    manual = 3,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(MagneticParamSource v) {
+    if (v == MagneticParamSource::none) {
+        return "none";
+    }
+    if (v == MagneticParamSource::wmm) {
+        return "wmm";
+    }
+    if (v == MagneticParamSource::manual) {
+        return "manual";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, MagneticParamSource &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = MagneticParamSource::none;
+        return true;
+    }
+    if (std::strcmp(name, "wmm") == 0) {
+        out = MagneticParamSource::wmm;
+        return true;
+    }
+    if (std::strcmp(name, "manual") == 0) {
+        out = MagneticParamSource::manual;
+        return true;
+    }
+    return false;
+}
+
+/// Pitch/roll aiding source. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class PitchRollAidingSource : std::uint8_t {
+    none = 0,
+    gravity_vector = 1,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(PitchRollAidingSource v) {
+    if (v == PitchRollAidingSource::none) {
+        return "none";
+    }
+    if (v == PitchRollAidingSource::gravity_vector) {
+        return "gravity_vector";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, PitchRollAidingSource &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = PitchRollAidingSource::none;
+        return true;
+    }
+    if (std::strcmp(name, "gravity_vector") == 0) {
+        out = PitchRollAidingSource::gravity_vector;
+        return true;
+    }
+    return false;
+}
+
+/// Filter reference point. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class ReferencePointSelector : std::uint8_t {
+    veh = 1,
+};
+
+/// Spec name of a value ("veh"), or nullptr when the value has no name.
+inline const char *to_string(ReferencePointSelector v) {
+    if (v == ReferencePointSelector::veh) {
+        return "veh";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, ReferencePointSelector &out) {
+    if (std::strcmp(name, "veh") == 0) {
+        out = ReferencePointSelector::veh;
+        return true;
+    }
+    return false;
+}
+
+/// Reference location source for relative position outputs. Unknown values are kept (an enum class holds any
+/// std::uint8_t).
+enum class RelativePositionSource : std::uint8_t {
+    auto_ = 0,
+    manual = 1,
+};
+
+/// Spec name of a value ("auto"), or nullptr when the value has no name.
+inline const char *to_string(RelativePositionSource v) {
+    if (v == RelativePositionSource::auto_) {
+        return "auto";
+    }
+    if (v == RelativePositionSource::manual) {
+        return "manual";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, RelativePositionSource &out) {
+    if (std::strcmp(name, "auto") == 0) {
+        out = RelativePositionSource::auto_;
+        return true;
+    }
+    if (std::strcmp(name, "manual") == 0) {
+        out = RelativePositionSource::manual;
         return true;
     }
     return false;
@@ -1273,6 +1738,53 @@ inline bool from_string(const char *name, SystemCommMode &out) {
     }
     return false;
 }
+
+/// Tare orientation axes. Reserved and unnamed bits are kept in raw().
+class TareAxes {
+  public:
+    using Raw = std::uint8_t;
+    constexpr TareAxes() = default;
+    constexpr explicit TareAxes(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw roll_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool roll() const {
+        return (raw_ & roll_mask) != 0;
+    }
+    constexpr void set_roll(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | roll_mask) : (raw_ & static_cast<Raw>(~roll_mask)));
+    }
+
+    static constexpr Raw pitch_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool pitch() const {
+        return (raw_ & pitch_mask) != 0;
+    }
+    constexpr void set_pitch(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pitch_mask) : (raw_ & static_cast<Raw>(~pitch_mask)));
+    }
+
+    static constexpr Raw yaw_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool yaw() const {
+        return (raw_ & yaw_mask) != 0;
+    }
+    constexpr void set_yaw(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | yaw_mask) : (raw_ & static_cast<Raw>(~yaw_mask)));
+    }
+    friend constexpr bool operator==(TareAxes a, TareAxes b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(TareAxes a, TareAxes b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// Threshold comparison type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ThresholdType : std::uint8_t {
@@ -1858,6 +2370,38 @@ template <> struct Codec<::mipcodec::types::Gx5BitFlags> {
     }
     static void write(Writer &w, const ::mipcodec::types::Gx5BitFlags &v) {
         Codec<std::uint32_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::HeadingAlignmentMethods> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::HeadingAlignmentMethods &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::HeadingAlignmentMethods &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::TareAxes> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::TareAxes &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::TareAxes &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
     }
 };
 

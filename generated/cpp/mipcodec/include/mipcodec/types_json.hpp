@@ -136,6 +136,34 @@ template <> struct Json<::mipcodec::types::Gx5BitFlags> {
     }
 };
 
+template <> struct Json<::mipcodec::types::HeadingAlignmentMethods> {
+    static void write(JsonWriter &w, const ::mipcodec::types::HeadingAlignmentMethods &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::HeadingAlignmentMethods &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::TareAxes> {
+    static void write(JsonWriter &w, const ::mipcodec::types::TareAxes &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::TareAxes &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::TriggerStatus> {
     static void write(JsonWriter &w, const ::mipcodec::types::TriggerStatus &v) {
         Json<std::uint8_t>::write(w, v.raw());

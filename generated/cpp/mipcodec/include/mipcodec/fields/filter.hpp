@@ -685,6 +685,1130 @@ struct ExternalHeadingUpdateWithTime {
     }
 };
 
+/// Zero angular rate update control (command, descriptor 0x20).
+struct ZeroAngularRateUpdateControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x20;
+    static constexpr const char *kName = "zero_angular_rate_update_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables the update.
+    std::optional<float>
+        threshold{}; ///< Angular rate magnitude at or below which the update is applied. [rad/s]
+    friend bool operator==(const ZeroAngularRateUpdateControl &a, const ZeroAngularRateUpdateControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.enable == b.enable && a.threshold == b.threshold;
+    }
+    friend bool operator!=(const ZeroAngularRateUpdateControl &a, const ZeroAngularRateUpdateControl &b) {
+        return !(a == b);
+    }
+};
+
+/// Zero angular rate update control (response) (response, descriptor 0x8E).
+struct ZeroAngularRateUpdateControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x8E;
+    static constexpr const char *kName = "zero_angular_rate_update_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
+    float threshold{};     ///< Angular rate threshold. [rad/s]
+    friend bool operator==(const ZeroAngularRateUpdateControlResponse &a,
+                           const ZeroAngularRateUpdateControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.enable == b.enable && a.threshold == b.threshold;
+    }
+    friend bool operator!=(const ZeroAngularRateUpdateControlResponse &a,
+                           const ZeroAngularRateUpdateControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Tare orientation (command, descriptor 0x21).
+struct TareOrientation {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x21;
+    static constexpr const char *kName = "tare_orientation";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};    ///< Function selector.
+    std::optional<::mipcodec::types::TareAxes> axes{}; ///< Axes to tare; 0 resets all axes.
+    friend bool operator==(const TareOrientation &a, const TareOrientation &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.axes == b.axes;
+    }
+    friend bool operator!=(const TareOrientation &a, const TareOrientation &b) {
+        return !(a == b);
+    }
+};
+
+/// Commanded zero velocity update (command, descriptor 0x22).
+struct CommandedZupt {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x22;
+    static constexpr const char *kName = "commanded_zupt";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    friend bool operator==(const CommandedZupt &a, const CommandedZupt &b) {
+        (void)a;
+        (void)b;
+        return true;
+    }
+    friend bool operator!=(const CommandedZupt &a, const CommandedZupt &b) {
+        return !(a == b);
+    }
+};
+
+/// Commanded zero angular rate update (command, descriptor 0x23).
+struct CommandedZeroAngularRateUpdate {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x23;
+    static constexpr const char *kName = "commanded_zero_angular_rate_update";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    friend bool operator==(const CommandedZeroAngularRateUpdate &a, const CommandedZeroAngularRateUpdate &b) {
+        (void)a;
+        (void)b;
+        return true;
+    }
+    friend bool operator!=(const CommandedZeroAngularRateUpdate &a, const CommandedZeroAngularRateUpdate &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer capture auto calibration (command, descriptor 0x27).
+struct MagCaptureAutoCalibration {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x27;
+    static constexpr const char *kName = "mag_capture_auto_calibration";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    friend bool operator==(const MagCaptureAutoCalibration &a, const MagCaptureAutoCalibration &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function;
+    }
+    friend bool operator!=(const MagCaptureAutoCalibration &a, const MagCaptureAutoCalibration &b) {
+        return !(a == b);
+    }
+};
+
+/// Gravity noise standard deviation (command, descriptor 0x28).
+struct GravityNoiseStdDev {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x28;
+    static constexpr const char *kName = "gravity_noise_std_dev";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> noise{};    ///< Gravity noise 1-sigma (x, y, z). [g]
+    friend bool operator==(const GravityNoiseStdDev &a, const GravityNoiseStdDev &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.noise == b.noise;
+    }
+    friend bool operator!=(const GravityNoiseStdDev &a, const GravityNoiseStdDev &b) {
+        return !(a == b);
+    }
+};
+
+/// Gravity noise standard deviation (response) (response, descriptor 0x93).
+struct GravityNoiseStdDevResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x93;
+    static constexpr const char *kName = "gravity_noise_std_dev_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> noise{}; ///< Gravity noise 1-sigma (x, y, z). [g]
+    friend bool operator==(const GravityNoiseStdDevResponse &a, const GravityNoiseStdDevResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.noise == b.noise;
+    }
+    friend bool operator!=(const GravityNoiseStdDevResponse &a, const GravityNoiseStdDevResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Pressure altitude noise standard deviation (command, descriptor 0x29).
+struct PressureAltitudeNoiseStdDev {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x29;
+    static constexpr const char *kName = "pressure_altitude_noise_std_dev";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<float> noise{};                   ///< Pressure altitude noise 1-sigma. [m]
+    friend bool operator==(const PressureAltitudeNoiseStdDev &a, const PressureAltitudeNoiseStdDev &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.noise == b.noise;
+    }
+    friend bool operator!=(const PressureAltitudeNoiseStdDev &a, const PressureAltitudeNoiseStdDev &b) {
+        return !(a == b);
+    }
+};
+
+/// Pressure altitude noise standard deviation (response) (response, descriptor 0x94).
+struct PressureAltitudeNoiseStdDevResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x94;
+    static constexpr const char *kName = "pressure_altitude_noise_std_dev_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    float noise{}; ///< Pressure altitude noise 1-sigma. [m]
+    friend bool operator==(const PressureAltitudeNoiseStdDevResponse &a,
+                           const PressureAltitudeNoiseStdDevResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.noise == b.noise;
+    }
+    friend bool operator!=(const PressureAltitudeNoiseStdDevResponse &a,
+                           const PressureAltitudeNoiseStdDevResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Hard iron offset process noise (command, descriptor 0x2B).
+struct HardIronOffsetNoise {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x2B;
+    static constexpr const char *kName = "hard_iron_offset_noise";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> noise{};    ///< Hard iron offset noise 1-sigma (x, y, z). [gauss]
+    friend bool operator==(const HardIronOffsetNoise &a, const HardIronOffsetNoise &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.noise == b.noise;
+    }
+    friend bool operator!=(const HardIronOffsetNoise &a, const HardIronOffsetNoise &b) {
+        return !(a == b);
+    }
+};
+
+/// Hard iron offset process noise (response) (response, descriptor 0x96).
+struct HardIronOffsetNoiseResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x96;
+    static constexpr const char *kName = "hard_iron_offset_noise_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> noise{}; ///< Hard iron offset noise 1-sigma (x, y, z). [gauss]
+    friend bool operator==(const HardIronOffsetNoiseResponse &a, const HardIronOffsetNoiseResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.noise == b.noise;
+    }
+    friend bool operator!=(const HardIronOffsetNoiseResponse &a, const HardIronOffsetNoiseResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Soft iron matrix process noise (command, descriptor 0x2C).
+struct SoftIronMatrixNoise {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x2C;
+    static constexpr const char *kName = "soft_iron_matrix_noise";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 9>> noise{};    ///< Soft iron matrix noise 1-sigma, row-major m11..m33.
+    friend bool operator==(const SoftIronMatrixNoise &a, const SoftIronMatrixNoise &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.noise == b.noise;
+    }
+    friend bool operator!=(const SoftIronMatrixNoise &a, const SoftIronMatrixNoise &b) {
+        return !(a == b);
+    }
+};
+
+/// Soft iron matrix process noise (response) (response, descriptor 0x97).
+struct SoftIronMatrixNoiseResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x97;
+    static constexpr const char *kName = "soft_iron_matrix_noise_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 9> noise{}; ///< Soft iron matrix noise 1-sigma, row-major m11..m33.
+    friend bool operator==(const SoftIronMatrixNoiseResponse &a, const SoftIronMatrixNoiseResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.noise == b.noise;
+    }
+    friend bool operator!=(const SoftIronMatrixNoiseResponse &a, const SoftIronMatrixNoiseResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer noise standard deviation (command, descriptor 0x42).
+struct MagNoiseStdDev {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x42;
+    static constexpr const char *kName = "mag_noise_std_dev";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> noise{};    ///< Magnetometer noise 1-sigma (x, y, z). [gauss]
+    friend bool operator==(const MagNoiseStdDev &a, const MagNoiseStdDev &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.noise == b.noise;
+    }
+    friend bool operator!=(const MagNoiseStdDev &a, const MagNoiseStdDev &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer noise standard deviation (response) (response, descriptor 0xB1).
+struct MagNoiseStdDevResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xB1;
+    static constexpr const char *kName = "mag_noise_std_dev_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> noise{}; ///< Magnetometer noise 1-sigma (x, y, z). [gauss]
+    friend bool operator==(const MagNoiseStdDevResponse &a, const MagNoiseStdDevResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.noise == b.noise;
+    }
+    friend bool operator!=(const MagNoiseStdDevResponse &a, const MagNoiseStdDevResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Declination source (command, descriptor 0x43).
+struct DeclinationSource {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x43;
+    static constexpr const char *kName = "declination_source";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                 ///< Function selector.
+    std::optional<::mipcodec::types::MagneticParamSource> source{}; ///< Declination source.
+    std::optional<float> declination{}; ///< Manual declination angle (used when source is manual). [rad]
+    friend bool operator==(const DeclinationSource &a, const DeclinationSource &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source && a.declination == b.declination;
+    }
+    friend bool operator!=(const DeclinationSource &a, const DeclinationSource &b) {
+        return !(a == b);
+    }
+};
+
+/// Declination source (response) (response, descriptor 0xB2).
+struct DeclinationSourceResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xB2;
+    static constexpr const char *kName = "declination_source_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::MagneticParamSource source{}; ///< Declination source.
+    float declination{};                             ///< Declination angle. [rad]
+    friend bool operator==(const DeclinationSourceResponse &a, const DeclinationSourceResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source && a.declination == b.declination;
+    }
+    friend bool operator!=(const DeclinationSourceResponse &a, const DeclinationSourceResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Gravity magnitude error adaptive measurement (command, descriptor 0x44).
+struct GravityMagnitudeAdaptiveMeasurement {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x44;
+    static constexpr const char *kName = "gravity_magnitude_adaptive_measurement";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                   ///< Function selector.
+    std::optional<::mipcodec::types::AdaptiveMeasurementMode> mode{}; ///< Disabled, fixed or auto-adaptive.
+    std::optional<float> frequency{};              ///< Low-pass filter cutoff frequency. [Hz]
+    std::optional<float> low_limit{};              ///< Low limit. [m/s^2]
+    std::optional<float> high_limit{};             ///< High limit. [m/s^2]
+    std::optional<float> low_limit_uncertainty{};  ///< Low limit uncertainty, 1-sigma. [m/s^2]
+    std::optional<float> high_limit_uncertainty{}; ///< High limit uncertainty, 1-sigma. [m/s^2]
+    std::optional<float> minimum_uncertainty{};    ///< Minimum uncertainty, 1-sigma. [m/s^2]
+    friend bool operator==(const GravityMagnitudeAdaptiveMeasurement &a,
+                           const GravityMagnitudeAdaptiveMeasurement &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.mode == b.mode && a.frequency == b.frequency &&
+               a.low_limit == b.low_limit && a.high_limit == b.high_limit &&
+               a.low_limit_uncertainty == b.low_limit_uncertainty &&
+               a.high_limit_uncertainty == b.high_limit_uncertainty &&
+               a.minimum_uncertainty == b.minimum_uncertainty;
+    }
+    friend bool operator!=(const GravityMagnitudeAdaptiveMeasurement &a,
+                           const GravityMagnitudeAdaptiveMeasurement &b) {
+        return !(a == b);
+    }
+};
+
+/// Gravity magnitude error adaptive measurement (response) (response, descriptor 0xB3).
+struct GravityMagnitudeAdaptiveMeasurementResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xB3;
+    static constexpr const char *kName = "gravity_magnitude_adaptive_measurement_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AdaptiveMeasurementMode mode{}; ///< Disabled, fixed or auto-adaptive.
+    float frequency{};                                 ///< Low-pass filter cutoff frequency. [Hz]
+    float low_limit{};                                 ///< Low limit. [m/s^2]
+    float high_limit{};                                ///< High limit. [m/s^2]
+    float low_limit_uncertainty{};                     ///< Low limit uncertainty, 1-sigma. [m/s^2]
+    float high_limit_uncertainty{};                    ///< High limit uncertainty, 1-sigma. [m/s^2]
+    float minimum_uncertainty{};                       ///< Minimum uncertainty, 1-sigma. [m/s^2]
+    friend bool operator==(const GravityMagnitudeAdaptiveMeasurementResponse &a,
+                           const GravityMagnitudeAdaptiveMeasurementResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.mode == b.mode && a.frequency == b.frequency && a.low_limit == b.low_limit &&
+               a.high_limit == b.high_limit && a.low_limit_uncertainty == b.low_limit_uncertainty &&
+               a.high_limit_uncertainty == b.high_limit_uncertainty &&
+               a.minimum_uncertainty == b.minimum_uncertainty;
+    }
+    friend bool operator!=(const GravityMagnitudeAdaptiveMeasurementResponse &a,
+                           const GravityMagnitudeAdaptiveMeasurementResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer magnitude error adaptive measurement (command, descriptor 0x45).
+struct MagMagnitudeAdaptiveMeasurement {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x45;
+    static constexpr const char *kName = "mag_magnitude_adaptive_measurement";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                   ///< Function selector.
+    std::optional<::mipcodec::types::AdaptiveMeasurementMode> mode{}; ///< Disabled, fixed or auto-adaptive.
+    std::optional<float> frequency{};              ///< Low-pass filter cutoff frequency. [Hz]
+    std::optional<float> low_limit{};              ///< Low limit. [gauss]
+    std::optional<float> high_limit{};             ///< High limit. [gauss]
+    std::optional<float> low_limit_uncertainty{};  ///< Low limit uncertainty, 1-sigma. [gauss]
+    std::optional<float> high_limit_uncertainty{}; ///< High limit uncertainty, 1-sigma. [gauss]
+    std::optional<float> minimum_uncertainty{};    ///< Minimum uncertainty, 1-sigma. [gauss]
+    friend bool operator==(const MagMagnitudeAdaptiveMeasurement &a,
+                           const MagMagnitudeAdaptiveMeasurement &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.mode == b.mode && a.frequency == b.frequency &&
+               a.low_limit == b.low_limit && a.high_limit == b.high_limit &&
+               a.low_limit_uncertainty == b.low_limit_uncertainty &&
+               a.high_limit_uncertainty == b.high_limit_uncertainty &&
+               a.minimum_uncertainty == b.minimum_uncertainty;
+    }
+    friend bool operator!=(const MagMagnitudeAdaptiveMeasurement &a,
+                           const MagMagnitudeAdaptiveMeasurement &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer magnitude error adaptive measurement (response) (response, descriptor 0xB4).
+struct MagMagnitudeAdaptiveMeasurementResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xB4;
+    static constexpr const char *kName = "mag_magnitude_adaptive_measurement_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AdaptiveMeasurementMode mode{}; ///< Disabled, fixed or auto-adaptive.
+    float frequency{};                                 ///< Low-pass filter cutoff frequency. [Hz]
+    float low_limit{};                                 ///< Low limit. [gauss]
+    float high_limit{};                                ///< High limit. [gauss]
+    float low_limit_uncertainty{};                     ///< Low limit uncertainty, 1-sigma. [gauss]
+    float high_limit_uncertainty{};                    ///< High limit uncertainty, 1-sigma. [gauss]
+    float minimum_uncertainty{};                       ///< Minimum uncertainty, 1-sigma. [gauss]
+    friend bool operator==(const MagMagnitudeAdaptiveMeasurementResponse &a,
+                           const MagMagnitudeAdaptiveMeasurementResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.mode == b.mode && a.frequency == b.frequency && a.low_limit == b.low_limit &&
+               a.high_limit == b.high_limit && a.low_limit_uncertainty == b.low_limit_uncertainty &&
+               a.high_limit_uncertainty == b.high_limit_uncertainty &&
+               a.minimum_uncertainty == b.minimum_uncertainty;
+    }
+    friend bool operator!=(const MagMagnitudeAdaptiveMeasurementResponse &a,
+                           const MagMagnitudeAdaptiveMeasurementResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer dip angle error adaptive measurement (command, descriptor 0x46).
+struct MagDipAngleAdaptiveMeasurement {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x46;
+    static constexpr const char *kName = "mag_dip_angle_adaptive_measurement";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                   ///< Function selector.
+    std::optional<::mipcodec::types::AdaptiveMeasurementMode> mode{}; ///< Disabled (0) or fixed (1).
+    std::optional<float> frequency{};              ///< Low-pass filter cutoff frequency. [Hz]
+    std::optional<float> high_limit{};             ///< High limit of the dip angle error. [rad]
+    std::optional<float> high_limit_uncertainty{}; ///< High limit uncertainty, 1-sigma. [rad]
+    std::optional<float> minimum_uncertainty{};    ///< Minimum uncertainty, 1-sigma. [rad]
+    friend bool operator==(const MagDipAngleAdaptiveMeasurement &a, const MagDipAngleAdaptiveMeasurement &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.mode == b.mode && a.frequency == b.frequency &&
+               a.high_limit == b.high_limit && a.high_limit_uncertainty == b.high_limit_uncertainty &&
+               a.minimum_uncertainty == b.minimum_uncertainty;
+    }
+    friend bool operator!=(const MagDipAngleAdaptiveMeasurement &a, const MagDipAngleAdaptiveMeasurement &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer dip angle error adaptive measurement (response) (response, descriptor 0xB5).
+struct MagDipAngleAdaptiveMeasurementResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xB5;
+    static constexpr const char *kName = "mag_dip_angle_adaptive_measurement_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AdaptiveMeasurementMode mode{}; ///< Disabled (0) or fixed (1).
+    float frequency{};                                 ///< Low-pass filter cutoff frequency. [Hz]
+    float high_limit{};                                ///< High limit of the dip angle error. [rad]
+    float high_limit_uncertainty{};                    ///< High limit uncertainty, 1-sigma. [rad]
+    float minimum_uncertainty{};                       ///< Minimum uncertainty, 1-sigma. [rad]
+    friend bool operator==(const MagDipAngleAdaptiveMeasurementResponse &a,
+                           const MagDipAngleAdaptiveMeasurementResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.mode == b.mode && a.frequency == b.frequency && a.high_limit == b.high_limit &&
+               a.high_limit_uncertainty == b.high_limit_uncertainty &&
+               a.minimum_uncertainty == b.minimum_uncertainty;
+    }
+    friend bool operator!=(const MagDipAngleAdaptiveMeasurementResponse &a,
+                           const MagDipAngleAdaptiveMeasurementResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Altitude aiding control (command, descriptor 0x47).
+struct AltitudeAidingControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x47;
+    static constexpr const char *kName = "altitude_aiding_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<::mipcodec::types::AltitudeAidingSource>
+        source{}; ///< Altitude aiding input (0 disabled, 1 pressure).
+    friend bool operator==(const AltitudeAidingControl &a, const AltitudeAidingControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source;
+    }
+    friend bool operator!=(const AltitudeAidingControl &a, const AltitudeAidingControl &b) {
+        return !(a == b);
+    }
+};
+
+/// Altitude aiding control (response) (response, descriptor 0xB7).
+struct AltitudeAidingControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xB7;
+    static constexpr const char *kName = "altitude_aiding_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AltitudeAidingSource source{}; ///< Altitude aiding input.
+    friend bool operator==(const AltitudeAidingControlResponse &a, const AltitudeAidingControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source;
+    }
+    friend bool operator!=(const AltitudeAidingControlResponse &a, const AltitudeAidingControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Pitch/roll aiding control (command, descriptor 0x4B).
+struct PitchRollAidingControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x4B;
+    static constexpr const char *kName = "pitch_roll_aiding_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<::mipcodec::types::PitchRollAidingSource>
+        source{}; ///< Pitch/roll aiding input (0 disabled, 1 gravity vector).
+    friend bool operator==(const PitchRollAidingControl &a, const PitchRollAidingControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source;
+    }
+    friend bool operator!=(const PitchRollAidingControl &a, const PitchRollAidingControl &b) {
+        return !(a == b);
+    }
+};
+
+/// Pitch/roll aiding control (response) (response, descriptor 0xBB).
+struct PitchRollAidingControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xBB;
+    static constexpr const char *kName = "pitch_roll_aiding_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::PitchRollAidingSource source{}; ///< Pitch/roll aiding input.
+    friend bool operator==(const PitchRollAidingControlResponse &a, const PitchRollAidingControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source;
+    }
+    friend bool operator!=(const PitchRollAidingControlResponse &a, const PitchRollAidingControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Inclination source (command, descriptor 0x4C).
+struct InclinationSource {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x4C;
+    static constexpr const char *kName = "inclination_source";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                 ///< Function selector.
+    std::optional<::mipcodec::types::MagneticParamSource> source{}; ///< Inclination source.
+    std::optional<float> inclination{}; ///< Manual inclination angle (used when source is manual). [rad]
+    friend bool operator==(const InclinationSource &a, const InclinationSource &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source && a.inclination == b.inclination;
+    }
+    friend bool operator!=(const InclinationSource &a, const InclinationSource &b) {
+        return !(a == b);
+    }
+};
+
+/// Inclination source (response) (response, descriptor 0xBC).
+struct InclinationSourceResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xBC;
+    static constexpr const char *kName = "inclination_source_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::MagneticParamSource source{}; ///< Inclination source.
+    float inclination{};                             ///< Inclination angle. [rad]
+    friend bool operator==(const InclinationSourceResponse &a, const InclinationSourceResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source && a.inclination == b.inclination;
+    }
+    friend bool operator!=(const InclinationSourceResponse &a, const InclinationSourceResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetic field magnitude source (command, descriptor 0x4D).
+struct MagneticFieldMagnitudeSource {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x4D;
+    static constexpr const char *kName = "magnetic_field_magnitude_source";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                 ///< Function selector.
+    std::optional<::mipcodec::types::MagneticParamSource> source{}; ///< Magnitude source.
+    std::optional<float> magnitude{}; ///< Manual field magnitude (used when source is manual). [gauss]
+    friend bool operator==(const MagneticFieldMagnitudeSource &a, const MagneticFieldMagnitudeSource &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source && a.magnitude == b.magnitude;
+    }
+    friend bool operator!=(const MagneticFieldMagnitudeSource &a, const MagneticFieldMagnitudeSource &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetic field magnitude source (response) (response, descriptor 0xBD).
+struct MagneticFieldMagnitudeSourceResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xBD;
+    static constexpr const char *kName = "magnetic_field_magnitude_source_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::MagneticParamSource source{}; ///< Magnitude source.
+    float magnitude{};                               ///< Field magnitude. [gauss]
+    friend bool operator==(const MagneticFieldMagnitudeSourceResponse &a,
+                           const MagneticFieldMagnitudeSourceResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source && a.magnitude == b.magnitude;
+    }
+    friend bool operator!=(const MagneticFieldMagnitudeSourceResponse &a,
+                           const MagneticFieldMagnitudeSourceResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Aiding measurement control (command, descriptor 0x50).
+struct AidingMeasurementControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x50;
+    static constexpr const char *kName = "aiding_measurement_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};      ///< Function selector.
+    ::mipcodec::types::AidingMeasurementSource source{}; ///< Aiding measurement source.
+    std::optional<bool> enable{};                        ///< Whether the source is used.
+    friend bool operator==(const AidingMeasurementControl &a, const AidingMeasurementControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source && a.enable == b.enable;
+    }
+    friend bool operator!=(const AidingMeasurementControl &a, const AidingMeasurementControl &b) {
+        return !(a == b);
+    }
+};
+
+/// Aiding measurement control (response) (response, descriptor 0xD0).
+struct AidingMeasurementControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xD0;
+    static constexpr const char *kName = "aiding_measurement_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AidingMeasurementSource source{}; ///< Aiding measurement source.
+    bool enable{};                                       ///< Whether the source is used.
+    friend bool operator==(const AidingMeasurementControlResponse &a,
+                           const AidingMeasurementControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source && a.enable == b.enable;
+    }
+    friend bool operator!=(const AidingMeasurementControlResponse &a,
+                           const AidingMeasurementControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Navigation filter initialization (command, descriptor 0x52).
+struct InitializationConfiguration {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x52;
+    static constexpr const char *kName = "initialization_configuration";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};     ///< Function selector.
+    std::optional<std::uint8_t> wait_for_run_command{}; ///< Non-zero: initialize the filter only after a Run
+                                                        ///< Navigation Filter (0x0D,0x05) command.
+    std::optional<::mipcodec::types::FilterInitialConditionSource>
+        initial_cond_src{}; ///< Which initial conditions are automatic and which user-specified.
+    std::optional<::mipcodec::types::HeadingAlignmentMethods>
+        auto_heading_alignment_selector{};                  ///< Allowed automatic heading alignment methods.
+    std::optional<float> initial_heading{};                 ///< User-specified initial heading. [deg]
+    std::optional<float> initial_pitch{};                   ///< User-specified initial pitch. [deg]
+    std::optional<float> initial_roll{};                    ///< User-specified initial roll. [deg]
+    std::optional<std::array<float, 3>> initial_position{}; ///< User-specified initial position (ECEF m, or
+                                                            ///< LLH deg/deg/m, per reference_frame_selector).
+    std::optional<std::array<float, 3>> initial_velocity{}; ///< User-specified initial velocity, in the frame
+                                                            ///< chosen by reference_frame_selector. [m/s]
+    std::optional<::mipcodec::types::FilterReferenceFrame>
+        reference_frame_selector{}; ///< Frame of the initial position and velocity.
+    friend bool operator==(const InitializationConfiguration &a, const InitializationConfiguration &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.wait_for_run_command == b.wait_for_run_command &&
+               a.initial_cond_src == b.initial_cond_src &&
+               a.auto_heading_alignment_selector == b.auto_heading_alignment_selector &&
+               a.initial_heading == b.initial_heading && a.initial_pitch == b.initial_pitch &&
+               a.initial_roll == b.initial_roll && a.initial_position == b.initial_position &&
+               a.initial_velocity == b.initial_velocity &&
+               a.reference_frame_selector == b.reference_frame_selector;
+    }
+    friend bool operator!=(const InitializationConfiguration &a, const InitializationConfiguration &b) {
+        return !(a == b);
+    }
+};
+
+/// Navigation filter initialization (response) (response, descriptor 0xD2).
+struct InitializationConfigurationResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xD2;
+    static constexpr const char *kName = "initialization_configuration_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t wait_for_run_command{}; ///< Non-zero: wait for the run command.
+    ::mipcodec::types::FilterInitialConditionSource initial_cond_src{}; ///< Initial condition source.
+    ::mipcodec::types::HeadingAlignmentMethods
+        auto_heading_alignment_selector{};   ///< Allowed automatic heading alignment methods.
+    float initial_heading{};                 ///< User-specified initial heading. [deg]
+    float initial_pitch{};                   ///< User-specified initial pitch. [deg]
+    float initial_roll{};                    ///< User-specified initial roll. [deg]
+    std::array<float, 3> initial_position{}; ///< User-specified initial position (ECEF m, or LLH deg/deg/m).
+    std::array<float, 3> initial_velocity{}; ///< User-specified initial velocity. [m/s]
+    ::mipcodec::types::FilterReferenceFrame
+        reference_frame_selector{}; ///< Frame of the initial position and velocity.
+    friend bool operator==(const InitializationConfigurationResponse &a,
+                           const InitializationConfigurationResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.wait_for_run_command == b.wait_for_run_command &&
+               a.initial_cond_src == b.initial_cond_src &&
+               a.auto_heading_alignment_selector == b.auto_heading_alignment_selector &&
+               a.initial_heading == b.initial_heading && a.initial_pitch == b.initial_pitch &&
+               a.initial_roll == b.initial_roll && a.initial_position == b.initial_position &&
+               a.initial_velocity == b.initial_velocity &&
+               a.reference_frame_selector == b.reference_frame_selector;
+    }
+    friend bool operator!=(const InitializationConfigurationResponse &a,
+                           const InitializationConfigurationResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Adaptive filter control (command, descriptor 0x53).
+struct AdaptiveFilterControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x53;
+    static constexpr const char *kName = "adaptive_filter_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};                ///< Function selector.
+    std::optional<::mipcodec::types::AdaptiveFilterLevel> level{}; ///< Auto-adaptive operating level.
+    std::optional<std::uint16_t> time_limit{}; ///< Longest measurement rejection before recovery mode. [ms]
+    friend bool operator==(const AdaptiveFilterControl &a, const AdaptiveFilterControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.level == b.level && a.time_limit == b.time_limit;
+    }
+    friend bool operator!=(const AdaptiveFilterControl &a, const AdaptiveFilterControl &b) {
+        return !(a == b);
+    }
+};
+
+/// Adaptive filter control (response) (response, descriptor 0xD3).
+struct AdaptiveFilterControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xD3;
+    static constexpr const char *kName = "adaptive_filter_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AdaptiveFilterLevel level{}; ///< Auto-adaptive operating level.
+    std::uint16_t time_limit{}; ///< Longest measurement rejection before recovery mode. [ms]
+    friend bool operator==(const AdaptiveFilterControlResponse &a, const AdaptiveFilterControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.level == b.level && a.time_limit == b.time_limit;
+    }
+    friend bool operator!=(const AdaptiveFilterControlResponse &a, const AdaptiveFilterControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS multi-antenna offset (command, descriptor 0x54).
+struct MultiAntennaOffset {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x54;
+    static constexpr const char *kName = "multi_antenna_offset";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};       ///< Function selector.
+    std::uint8_t receiver_id{};                           ///< Receiver: 1, 2, ...
+    std::optional<std::array<float, 3>> antenna_offset{}; ///< Antenna lever arm in the vehicle frame. [m]
+    friend bool operator==(const MultiAntennaOffset &a, const MultiAntennaOffset &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.receiver_id == b.receiver_id &&
+               a.antenna_offset == b.antenna_offset;
+    }
+    friend bool operator!=(const MultiAntennaOffset &a, const MultiAntennaOffset &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS multi-antenna offset (response) (response, descriptor 0xD4).
+struct MultiAntennaOffsetResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xD4;
+    static constexpr const char *kName = "multi_antenna_offset_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t receiver_id{};            ///< Receiver: 1, 2, ...
+    std::array<float, 3> antenna_offset{}; ///< Antenna lever arm in the vehicle frame. [m]
+    friend bool operator==(const MultiAntennaOffsetResponse &a, const MultiAntennaOffsetResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.receiver_id == b.receiver_id && a.antenna_offset == b.antenna_offset;
+    }
+    friend bool operator!=(const MultiAntennaOffsetResponse &a, const MultiAntennaOffsetResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Relative position configuration (command, descriptor 0x55).
+struct RelativePositionConfiguration {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x55;
+    static constexpr const char *kName = "relative_position_configuration";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<::mipcodec::types::RelativePositionSource>
+        source{}; ///< 0 automatic (RTK base station), 1 manual.
+    std::optional<::mipcodec::types::FilterReferenceFrame>
+        reference_frame_selector{}; ///< Frame of the reference coordinates.
+    std::optional<std::array<double, 3>>
+        reference_coordinates{}; ///< Reference location (ECEF m, or LLH deg/deg/m).
+    friend bool operator==(const RelativePositionConfiguration &a, const RelativePositionConfiguration &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source &&
+               a.reference_frame_selector == b.reference_frame_selector &&
+               a.reference_coordinates == b.reference_coordinates;
+    }
+    friend bool operator!=(const RelativePositionConfiguration &a, const RelativePositionConfiguration &b) {
+        return !(a == b);
+    }
+};
+
+/// Relative position configuration (response) (response, descriptor 0xD5).
+struct RelativePositionConfigurationResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xD5;
+    static constexpr const char *kName = "relative_position_configuration_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::RelativePositionSource source{}; ///< 0 automatic (RTK base station), 1 manual.
+    ::mipcodec::types::FilterReferenceFrame
+        reference_frame_selector{};                ///< Frame of the reference coordinates.
+    std::array<double, 3> reference_coordinates{}; ///< Reference location (ECEF m, or LLH deg/deg/m).
+    friend bool operator==(const RelativePositionConfigurationResponse &a,
+                           const RelativePositionConfigurationResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source && a.reference_frame_selector == b.reference_frame_selector &&
+               a.reference_coordinates == b.reference_coordinates;
+    }
+    friend bool operator!=(const RelativePositionConfigurationResponse &a,
+                           const RelativePositionConfigurationResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Reference point lever arm (command, descriptor 0x56).
+struct ReferencePointLeverArm {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x56;
+    static constexpr const char *kName = "reference_point_lever_arm";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<::mipcodec::types::ReferencePointSelector>
+        ref_point_sel{}; ///< Reference point; reserved, must be 1 (vehicle).
+    std::optional<std::array<float, 3>> lever_arm_offset{}; ///< Lever arm in the vehicle frame. [m]
+    friend bool operator==(const ReferencePointLeverArm &a, const ReferencePointLeverArm &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.ref_point_sel == b.ref_point_sel &&
+               a.lever_arm_offset == b.lever_arm_offset;
+    }
+    friend bool operator!=(const ReferencePointLeverArm &a, const ReferencePointLeverArm &b) {
+        return !(a == b);
+    }
+};
+
+/// Reference point lever arm (response) (response, descriptor 0xD6).
+struct ReferencePointLeverArmResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xD6;
+    static constexpr const char *kName = "reference_point_lever_arm_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::ReferencePointSelector ref_point_sel{}; ///< Reference point.
+    std::array<float, 3> lever_arm_offset{};                   ///< Lever arm in the vehicle frame. [m]
+    friend bool operator==(const ReferencePointLeverArmResponse &a, const ReferencePointLeverArmResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.ref_point_sel == b.ref_point_sel && a.lever_arm_offset == b.lever_arm_offset;
+    }
+    friend bool operator!=(const ReferencePointLeverArmResponse &a, const ReferencePointLeverArmResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Measurement speed lever arm (command, descriptor 0x61).
+struct SpeedLeverArm {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x61;
+    static constexpr const char *kName = "speed_lever_arm";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};         ///< Function selector.
+    std::uint8_t source{};                                  ///< Speed source; reserved, must be 1.
+    std::optional<std::array<float, 3>> lever_arm_offset{}; ///< Lever arm in the vehicle frame. [m]
+    friend bool operator==(const SpeedLeverArm &a, const SpeedLeverArm &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source &&
+               a.lever_arm_offset == b.lever_arm_offset;
+    }
+    friend bool operator!=(const SpeedLeverArm &a, const SpeedLeverArm &b) {
+        return !(a == b);
+    }
+};
+
+/// Measurement speed lever arm (response) (response, descriptor 0xE1).
+struct SpeedLeverArmResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xE1;
+    static constexpr const char *kName = "speed_lever_arm_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t source{};                   ///< Speed source (1).
+    std::array<float, 3> lever_arm_offset{}; ///< Lever arm in the vehicle frame. [m]
+    friend bool operator==(const SpeedLeverArmResponse &a, const SpeedLeverArmResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source && a.lever_arm_offset == b.lever_arm_offset;
+    }
+    friend bool operator!=(const SpeedLeverArmResponse &a, const SpeedLeverArmResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Wheeled vehicle constraint control (command, descriptor 0x63).
+struct WheeledVehicleConstraintControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x63;
+    static constexpr const char *kName = "wheeled_vehicle_constraint_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables the constraint.
+    friend bool operator==(const WheeledVehicleConstraintControl &a,
+                           const WheeledVehicleConstraintControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.enable == b.enable;
+    }
+    friend bool operator!=(const WheeledVehicleConstraintControl &a,
+                           const WheeledVehicleConstraintControl &b) {
+        return !(a == b);
+    }
+};
+
+/// Wheeled vehicle constraint control (response) (response, descriptor 0xE3).
+struct WheeledVehicleConstraintControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xE3;
+    static constexpr const char *kName = "wheeled_vehicle_constraint_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
+    friend bool operator==(const WheeledVehicleConstraintControlResponse &a,
+                           const WheeledVehicleConstraintControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.enable == b.enable;
+    }
+    friend bool operator!=(const WheeledVehicleConstraintControlResponse &a,
+                           const WheeledVehicleConstraintControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS antenna offset calibration control (command, descriptor 0x64).
+struct GnssAntennaCalibrationControl {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0x64;
+    static constexpr const char *kName = "gnss_antenna_calibration_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables lever arm error tracking.
+    std::optional<float> max_offset{}; ///< Largest absolute lever arm offset error in the vehicle frame. [m]
+    friend bool operator==(const GnssAntennaCalibrationControl &a, const GnssAntennaCalibrationControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.enable == b.enable && a.max_offset == b.max_offset;
+    }
+    friend bool operator!=(const GnssAntennaCalibrationControl &a, const GnssAntennaCalibrationControl &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS antenna offset calibration control (response) (response, descriptor 0xE4).
+struct GnssAntennaCalibrationControlResponse {
+    static constexpr std::uint8_t kSet = 0x0D;
+    static constexpr std::uint8_t kDescriptor = 0xE4;
+    static constexpr const char *kName = "gnss_antenna_calibration_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
+    float max_offset{};    ///< Largest absolute lever arm offset error. [m]
+    friend bool operator==(const GnssAntennaCalibrationControlResponse &a,
+                           const GnssAntennaCalibrationControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.enable == b.enable && a.max_offset == b.max_offset;
+    }
+    friend bool operator!=(const GnssAntennaCalibrationControlResponse &a,
+                           const GnssAntennaCalibrationControlResponse &b) {
+        return !(a == b);
+    }
+};
+
 } // namespace mipcodec::filter
 
 namespace mipcodec {
@@ -1723,6 +2847,2103 @@ template <> struct Codec<filter::ExternalHeadingUpdateWithTime> {
         write_value(w, v.heading);
         write_value(w, v.heading_uncertainty);
         write_value(w, v.type);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::ZeroAngularRateUpdateControl> {
+    static bool read(Reader &r, filter::ZeroAngularRateUpdateControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.threshold.emplace();
+            if (!read_value(r, (*v.threshold), err)) {
+                err.enter("threshold");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::ZeroAngularRateUpdateControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        if (v.threshold) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.threshold));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::ZeroAngularRateUpdateControlResponse> {
+    static bool read(Reader &r, filter::ZeroAngularRateUpdateControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        if (!read_value(r, v.threshold, err)) {
+            err.enter("threshold");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::ZeroAngularRateUpdateControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.enable);
+        write_value(w, v.threshold);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::TareOrientation> {
+    static bool read(Reader &r, filter::TareOrientation &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.axes.emplace();
+            if (!read_value(r, (*v.axes), err)) {
+                err.enter("axes");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::TareOrientation &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.axes) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.axes));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::CommandedZupt> {
+    static bool read(Reader &r, filter::CommandedZupt &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        return true;
+    }
+    static void write(Writer &w, const filter::CommandedZupt &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::CommandedZeroAngularRateUpdate> {
+    static bool read(Reader &r, filter::CommandedZeroAngularRateUpdate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        return true;
+    }
+    static void write(Writer &w, const filter::CommandedZeroAngularRateUpdate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagCaptureAutoCalibration> {
+    static bool read(Reader &r, filter::MagCaptureAutoCalibration &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagCaptureAutoCalibration &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::GravityNoiseStdDev> {
+    static bool read(Reader &r, filter::GravityNoiseStdDev &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.noise.emplace();
+            if (!read_fixed(r, (*v.noise), err)) {
+                err.enter("noise");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::GravityNoiseStdDev &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.noise) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.noise));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::GravityNoiseStdDevResponse> {
+    static bool read(Reader &r, filter::GravityNoiseStdDevResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.noise, err)) {
+            err.enter("noise");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::GravityNoiseStdDevResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.noise);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::PressureAltitudeNoiseStdDev> {
+    static bool read(Reader &r, filter::PressureAltitudeNoiseStdDev &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.noise.emplace();
+            if (!read_value(r, (*v.noise), err)) {
+                err.enter("noise");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::PressureAltitudeNoiseStdDev &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.noise) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.noise));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::PressureAltitudeNoiseStdDevResponse> {
+    static bool read(Reader &r, filter::PressureAltitudeNoiseStdDevResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.noise, err)) {
+            err.enter("noise");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::PressureAltitudeNoiseStdDevResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.noise);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::HardIronOffsetNoise> {
+    static bool read(Reader &r, filter::HardIronOffsetNoise &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.noise.emplace();
+            if (!read_fixed(r, (*v.noise), err)) {
+                err.enter("noise");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::HardIronOffsetNoise &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.noise) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.noise));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::HardIronOffsetNoiseResponse> {
+    static bool read(Reader &r, filter::HardIronOffsetNoiseResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.noise, err)) {
+            err.enter("noise");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::HardIronOffsetNoiseResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.noise);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::SoftIronMatrixNoise> {
+    static bool read(Reader &r, filter::SoftIronMatrixNoise &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.noise.emplace();
+            if (!read_fixed(r, (*v.noise), err)) {
+                err.enter("noise");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::SoftIronMatrixNoise &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.noise) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.noise));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::SoftIronMatrixNoiseResponse> {
+    static bool read(Reader &r, filter::SoftIronMatrixNoiseResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.noise, err)) {
+            err.enter("noise");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::SoftIronMatrixNoiseResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.noise);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagNoiseStdDev> {
+    static bool read(Reader &r, filter::MagNoiseStdDev &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.noise.emplace();
+            if (!read_fixed(r, (*v.noise), err)) {
+                err.enter("noise");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagNoiseStdDev &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.noise) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.noise));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagNoiseStdDevResponse> {
+    static bool read(Reader &r, filter::MagNoiseStdDevResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.noise, err)) {
+            err.enter("noise");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagNoiseStdDevResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.noise);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::DeclinationSource> {
+    static bool read(Reader &r, filter::DeclinationSource &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.declination.emplace();
+            if (!read_value(r, (*v.declination), err)) {
+                err.enter("declination");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::DeclinationSource &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        if (v.declination) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.declination));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::DeclinationSourceResponse> {
+    static bool read(Reader &r, filter::DeclinationSourceResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (!read_value(r, v.declination, err)) {
+            err.enter("declination");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::DeclinationSourceResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        write_value(w, v.declination);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurement> {
+    static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurement &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.mode.emplace();
+            if (!read_value(r, (*v.mode), err)) {
+                err.enter("mode");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.frequency.emplace();
+            if (!read_value(r, (*v.frequency), err)) {
+                err.enter("frequency");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.low_limit.emplace();
+            if (!read_value(r, (*v.low_limit), err)) {
+                err.enter("low_limit");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.high_limit.emplace();
+            if (!read_value(r, (*v.high_limit), err)) {
+                err.enter("high_limit");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.low_limit_uncertainty.emplace();
+            if (!read_value(r, (*v.low_limit_uncertainty), err)) {
+                err.enter("low_limit_uncertainty");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.high_limit_uncertainty.emplace();
+            if (!read_value(r, (*v.high_limit_uncertainty), err)) {
+                err.enter("high_limit_uncertainty");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.minimum_uncertainty.emplace();
+            if (!read_value(r, (*v.minimum_uncertainty), err)) {
+                err.enter("minimum_uncertainty");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::GravityMagnitudeAdaptiveMeasurement &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.mode) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.mode));
+        } else {
+            absent = true;
+        }
+        if (v.frequency) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.frequency));
+        } else {
+            absent = true;
+        }
+        if (v.low_limit) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.low_limit));
+        } else {
+            absent = true;
+        }
+        if (v.high_limit) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.high_limit));
+        } else {
+            absent = true;
+        }
+        if (v.low_limit_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.low_limit_uncertainty));
+        } else {
+            absent = true;
+        }
+        if (v.high_limit_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.high_limit_uncertainty));
+        } else {
+            absent = true;
+        }
+        if (v.minimum_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.minimum_uncertainty));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurementResponse> {
+    static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.mode, err)) {
+            err.enter("mode");
+            return false;
+        }
+        if (!read_value(r, v.frequency, err)) {
+            err.enter("frequency");
+            return false;
+        }
+        if (!read_value(r, v.low_limit, err)) {
+            err.enter("low_limit");
+            return false;
+        }
+        if (!read_value(r, v.high_limit, err)) {
+            err.enter("high_limit");
+            return false;
+        }
+        if (!read_value(r, v.low_limit_uncertainty, err)) {
+            err.enter("low_limit_uncertainty");
+            return false;
+        }
+        if (!read_value(r, v.high_limit_uncertainty, err)) {
+            err.enter("high_limit_uncertainty");
+            return false;
+        }
+        if (!read_value(r, v.minimum_uncertainty, err)) {
+            err.enter("minimum_uncertainty");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::GravityMagnitudeAdaptiveMeasurementResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.mode);
+        write_value(w, v.frequency);
+        write_value(w, v.low_limit);
+        write_value(w, v.high_limit);
+        write_value(w, v.low_limit_uncertainty);
+        write_value(w, v.high_limit_uncertainty);
+        write_value(w, v.minimum_uncertainty);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurement> {
+    static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurement &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.mode.emplace();
+            if (!read_value(r, (*v.mode), err)) {
+                err.enter("mode");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.frequency.emplace();
+            if (!read_value(r, (*v.frequency), err)) {
+                err.enter("frequency");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.low_limit.emplace();
+            if (!read_value(r, (*v.low_limit), err)) {
+                err.enter("low_limit");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.high_limit.emplace();
+            if (!read_value(r, (*v.high_limit), err)) {
+                err.enter("high_limit");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.low_limit_uncertainty.emplace();
+            if (!read_value(r, (*v.low_limit_uncertainty), err)) {
+                err.enter("low_limit_uncertainty");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.high_limit_uncertainty.emplace();
+            if (!read_value(r, (*v.high_limit_uncertainty), err)) {
+                err.enter("high_limit_uncertainty");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.minimum_uncertainty.emplace();
+            if (!read_value(r, (*v.minimum_uncertainty), err)) {
+                err.enter("minimum_uncertainty");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagMagnitudeAdaptiveMeasurement &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.mode) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.mode));
+        } else {
+            absent = true;
+        }
+        if (v.frequency) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.frequency));
+        } else {
+            absent = true;
+        }
+        if (v.low_limit) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.low_limit));
+        } else {
+            absent = true;
+        }
+        if (v.high_limit) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.high_limit));
+        } else {
+            absent = true;
+        }
+        if (v.low_limit_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.low_limit_uncertainty));
+        } else {
+            absent = true;
+        }
+        if (v.high_limit_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.high_limit_uncertainty));
+        } else {
+            absent = true;
+        }
+        if (v.minimum_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.minimum_uncertainty));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurementResponse> {
+    static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.mode, err)) {
+            err.enter("mode");
+            return false;
+        }
+        if (!read_value(r, v.frequency, err)) {
+            err.enter("frequency");
+            return false;
+        }
+        if (!read_value(r, v.low_limit, err)) {
+            err.enter("low_limit");
+            return false;
+        }
+        if (!read_value(r, v.high_limit, err)) {
+            err.enter("high_limit");
+            return false;
+        }
+        if (!read_value(r, v.low_limit_uncertainty, err)) {
+            err.enter("low_limit_uncertainty");
+            return false;
+        }
+        if (!read_value(r, v.high_limit_uncertainty, err)) {
+            err.enter("high_limit_uncertainty");
+            return false;
+        }
+        if (!read_value(r, v.minimum_uncertainty, err)) {
+            err.enter("minimum_uncertainty");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagMagnitudeAdaptiveMeasurementResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.mode);
+        write_value(w, v.frequency);
+        write_value(w, v.low_limit);
+        write_value(w, v.high_limit);
+        write_value(w, v.low_limit_uncertainty);
+        write_value(w, v.high_limit_uncertainty);
+        write_value(w, v.minimum_uncertainty);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagDipAngleAdaptiveMeasurement> {
+    static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurement &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.mode.emplace();
+            if (!read_value(r, (*v.mode), err)) {
+                err.enter("mode");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.frequency.emplace();
+            if (!read_value(r, (*v.frequency), err)) {
+                err.enter("frequency");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.high_limit.emplace();
+            if (!read_value(r, (*v.high_limit), err)) {
+                err.enter("high_limit");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.high_limit_uncertainty.emplace();
+            if (!read_value(r, (*v.high_limit_uncertainty), err)) {
+                err.enter("high_limit_uncertainty");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.minimum_uncertainty.emplace();
+            if (!read_value(r, (*v.minimum_uncertainty), err)) {
+                err.enter("minimum_uncertainty");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagDipAngleAdaptiveMeasurement &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.mode) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.mode));
+        } else {
+            absent = true;
+        }
+        if (v.frequency) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.frequency));
+        } else {
+            absent = true;
+        }
+        if (v.high_limit) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.high_limit));
+        } else {
+            absent = true;
+        }
+        if (v.high_limit_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.high_limit_uncertainty));
+        } else {
+            absent = true;
+        }
+        if (v.minimum_uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.minimum_uncertainty));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagDipAngleAdaptiveMeasurementResponse> {
+    static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurementResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.mode, err)) {
+            err.enter("mode");
+            return false;
+        }
+        if (!read_value(r, v.frequency, err)) {
+            err.enter("frequency");
+            return false;
+        }
+        if (!read_value(r, v.high_limit, err)) {
+            err.enter("high_limit");
+            return false;
+        }
+        if (!read_value(r, v.high_limit_uncertainty, err)) {
+            err.enter("high_limit_uncertainty");
+            return false;
+        }
+        if (!read_value(r, v.minimum_uncertainty, err)) {
+            err.enter("minimum_uncertainty");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagDipAngleAdaptiveMeasurementResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.mode);
+        write_value(w, v.frequency);
+        write_value(w, v.high_limit);
+        write_value(w, v.high_limit_uncertainty);
+        write_value(w, v.minimum_uncertainty);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::AltitudeAidingControl> {
+    static bool read(Reader &r, filter::AltitudeAidingControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::AltitudeAidingControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::AltitudeAidingControlResponse> {
+    static bool read(Reader &r, filter::AltitudeAidingControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::AltitudeAidingControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::PitchRollAidingControl> {
+    static bool read(Reader &r, filter::PitchRollAidingControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::PitchRollAidingControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::PitchRollAidingControlResponse> {
+    static bool read(Reader &r, filter::PitchRollAidingControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::PitchRollAidingControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::InclinationSource> {
+    static bool read(Reader &r, filter::InclinationSource &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.inclination.emplace();
+            if (!read_value(r, (*v.inclination), err)) {
+                err.enter("inclination");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::InclinationSource &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        if (v.inclination) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.inclination));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::InclinationSourceResponse> {
+    static bool read(Reader &r, filter::InclinationSourceResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (!read_value(r, v.inclination, err)) {
+            err.enter("inclination");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::InclinationSourceResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        write_value(w, v.inclination);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagneticFieldMagnitudeSource> {
+    static bool read(Reader &r, filter::MagneticFieldMagnitudeSource &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.magnitude.emplace();
+            if (!read_value(r, (*v.magnitude), err)) {
+                err.enter("magnitude");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagneticFieldMagnitudeSource &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        if (v.magnitude) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.magnitude));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MagneticFieldMagnitudeSourceResponse> {
+    static bool read(Reader &r, filter::MagneticFieldMagnitudeSourceResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (!read_value(r, v.magnitude, err)) {
+            err.enter("magnitude");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MagneticFieldMagnitudeSourceResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        write_value(w, v.magnitude);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::AidingMeasurementControl> {
+    static bool read(Reader &r, filter::AidingMeasurementControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::AidingMeasurementControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.source);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::AidingMeasurementControlResponse> {
+    static bool read(Reader &r, filter::AidingMeasurementControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::AidingMeasurementControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        write_value(w, v.enable);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::InitializationConfiguration> {
+    static bool read(Reader &r, filter::InitializationConfiguration &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.wait_for_run_command.emplace();
+            if (!read_value(r, (*v.wait_for_run_command), err)) {
+                err.enter("wait_for_run_command");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.initial_cond_src.emplace();
+            if (!read_value(r, (*v.initial_cond_src), err)) {
+                err.enter("initial_cond_src");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.auto_heading_alignment_selector.emplace();
+            if (!read_value(r, (*v.auto_heading_alignment_selector), err)) {
+                err.enter("auto_heading_alignment_selector");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.initial_heading.emplace();
+            if (!read_value(r, (*v.initial_heading), err)) {
+                err.enter("initial_heading");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.initial_pitch.emplace();
+            if (!read_value(r, (*v.initial_pitch), err)) {
+                err.enter("initial_pitch");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.initial_roll.emplace();
+            if (!read_value(r, (*v.initial_roll), err)) {
+                err.enter("initial_roll");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.initial_position.emplace();
+            if (!read_fixed(r, (*v.initial_position), err)) {
+                err.enter("initial_position");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.initial_velocity.emplace();
+            if (!read_fixed(r, (*v.initial_velocity), err)) {
+                err.enter("initial_velocity");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.reference_frame_selector.emplace();
+            if (!read_value(r, (*v.reference_frame_selector), err)) {
+                err.enter("reference_frame_selector");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::InitializationConfiguration &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.wait_for_run_command) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.wait_for_run_command));
+        } else {
+            absent = true;
+        }
+        if (v.initial_cond_src) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.initial_cond_src));
+        } else {
+            absent = true;
+        }
+        if (v.auto_heading_alignment_selector) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.auto_heading_alignment_selector));
+        } else {
+            absent = true;
+        }
+        if (v.initial_heading) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.initial_heading));
+        } else {
+            absent = true;
+        }
+        if (v.initial_pitch) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.initial_pitch));
+        } else {
+            absent = true;
+        }
+        if (v.initial_roll) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.initial_roll));
+        } else {
+            absent = true;
+        }
+        if (v.initial_position) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.initial_position));
+        } else {
+            absent = true;
+        }
+        if (v.initial_velocity) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.initial_velocity));
+        } else {
+            absent = true;
+        }
+        if (v.reference_frame_selector) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.reference_frame_selector));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::InitializationConfigurationResponse> {
+    static bool read(Reader &r, filter::InitializationConfigurationResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.wait_for_run_command, err)) {
+            err.enter("wait_for_run_command");
+            return false;
+        }
+        if (!read_value(r, v.initial_cond_src, err)) {
+            err.enter("initial_cond_src");
+            return false;
+        }
+        if (!read_value(r, v.auto_heading_alignment_selector, err)) {
+            err.enter("auto_heading_alignment_selector");
+            return false;
+        }
+        if (!read_value(r, v.initial_heading, err)) {
+            err.enter("initial_heading");
+            return false;
+        }
+        if (!read_value(r, v.initial_pitch, err)) {
+            err.enter("initial_pitch");
+            return false;
+        }
+        if (!read_value(r, v.initial_roll, err)) {
+            err.enter("initial_roll");
+            return false;
+        }
+        if (!read_fixed(r, v.initial_position, err)) {
+            err.enter("initial_position");
+            return false;
+        }
+        if (!read_fixed(r, v.initial_velocity, err)) {
+            err.enter("initial_velocity");
+            return false;
+        }
+        if (!read_value(r, v.reference_frame_selector, err)) {
+            err.enter("reference_frame_selector");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::InitializationConfigurationResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.wait_for_run_command);
+        write_value(w, v.initial_cond_src);
+        write_value(w, v.auto_heading_alignment_selector);
+        write_value(w, v.initial_heading);
+        write_value(w, v.initial_pitch);
+        write_value(w, v.initial_roll);
+        write_fixed(w, v.initial_position);
+        write_fixed(w, v.initial_velocity);
+        write_value(w, v.reference_frame_selector);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::AdaptiveFilterControl> {
+    static bool read(Reader &r, filter::AdaptiveFilterControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.level.emplace();
+            if (!read_value(r, (*v.level), err)) {
+                err.enter("level");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.time_limit.emplace();
+            if (!read_value(r, (*v.time_limit), err)) {
+                err.enter("time_limit");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::AdaptiveFilterControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.level) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.level));
+        } else {
+            absent = true;
+        }
+        if (v.time_limit) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.time_limit));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::AdaptiveFilterControlResponse> {
+    static bool read(Reader &r, filter::AdaptiveFilterControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.level, err)) {
+            err.enter("level");
+            return false;
+        }
+        if (!read_value(r, v.time_limit, err)) {
+            err.enter("time_limit");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::AdaptiveFilterControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.level);
+        write_value(w, v.time_limit);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MultiAntennaOffset> {
+    static bool read(Reader &r, filter::MultiAntennaOffset &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.receiver_id, err)) {
+            err.enter("receiver_id");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.antenna_offset.emplace();
+            if (!read_fixed(r, (*v.antenna_offset), err)) {
+                err.enter("antenna_offset");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MultiAntennaOffset &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.receiver_id);
+        if (v.antenna_offset) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.antenna_offset));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::MultiAntennaOffsetResponse> {
+    static bool read(Reader &r, filter::MultiAntennaOffsetResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.receiver_id, err)) {
+            err.enter("receiver_id");
+            return false;
+        }
+        if (!read_fixed(r, v.antenna_offset, err)) {
+            err.enter("antenna_offset");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::MultiAntennaOffsetResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.receiver_id);
+        write_fixed(w, v.antenna_offset);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::RelativePositionConfiguration> {
+    static bool read(Reader &r, filter::RelativePositionConfiguration &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.reference_frame_selector.emplace();
+            if (!read_value(r, (*v.reference_frame_selector), err)) {
+                err.enter("reference_frame_selector");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.reference_coordinates.emplace();
+            if (!read_fixed(r, (*v.reference_coordinates), err)) {
+                err.enter("reference_coordinates");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::RelativePositionConfiguration &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        if (v.reference_frame_selector) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.reference_frame_selector));
+        } else {
+            absent = true;
+        }
+        if (v.reference_coordinates) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.reference_coordinates));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::RelativePositionConfigurationResponse> {
+    static bool read(Reader &r, filter::RelativePositionConfigurationResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (!read_value(r, v.reference_frame_selector, err)) {
+            err.enter("reference_frame_selector");
+            return false;
+        }
+        if (!read_fixed(r, v.reference_coordinates, err)) {
+            err.enter("reference_coordinates");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::RelativePositionConfigurationResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        write_value(w, v.reference_frame_selector);
+        write_fixed(w, v.reference_coordinates);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::ReferencePointLeverArm> {
+    static bool read(Reader &r, filter::ReferencePointLeverArm &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.ref_point_sel.emplace();
+            if (!read_value(r, (*v.ref_point_sel), err)) {
+                err.enter("ref_point_sel");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.lever_arm_offset.emplace();
+            if (!read_fixed(r, (*v.lever_arm_offset), err)) {
+                err.enter("lever_arm_offset");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::ReferencePointLeverArm &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.ref_point_sel) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.ref_point_sel));
+        } else {
+            absent = true;
+        }
+        if (v.lever_arm_offset) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.lever_arm_offset));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::ReferencePointLeverArmResponse> {
+    static bool read(Reader &r, filter::ReferencePointLeverArmResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.ref_point_sel, err)) {
+            err.enter("ref_point_sel");
+            return false;
+        }
+        if (!read_fixed(r, v.lever_arm_offset, err)) {
+            err.enter("lever_arm_offset");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::ReferencePointLeverArmResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.ref_point_sel);
+        write_fixed(w, v.lever_arm_offset);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::SpeedLeverArm> {
+    static bool read(Reader &r, filter::SpeedLeverArm &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.lever_arm_offset.emplace();
+            if (!read_fixed(r, (*v.lever_arm_offset), err)) {
+                err.enter("lever_arm_offset");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::SpeedLeverArm &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.source);
+        if (v.lever_arm_offset) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.lever_arm_offset));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::SpeedLeverArmResponse> {
+    static bool read(Reader &r, filter::SpeedLeverArmResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        if (!read_fixed(r, v.lever_arm_offset, err)) {
+            err.enter("lever_arm_offset");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::SpeedLeverArmResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        write_fixed(w, v.lever_arm_offset);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::WheeledVehicleConstraintControl> {
+    static bool read(Reader &r, filter::WheeledVehicleConstraintControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::WheeledVehicleConstraintControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::WheeledVehicleConstraintControlResponse> {
+    static bool read(Reader &r, filter::WheeledVehicleConstraintControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::WheeledVehicleConstraintControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.enable);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::GnssAntennaCalibrationControl> {
+    static bool read(Reader &r, filter::GnssAntennaCalibrationControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.max_offset.emplace();
+            if (!read_value(r, (*v.max_offset), err)) {
+                err.enter("max_offset");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::GnssAntennaCalibrationControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        if (v.max_offset) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.max_offset));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<filter::GnssAntennaCalibrationControlResponse> {
+    static bool read(Reader &r, filter::GnssAntennaCalibrationControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        if (!read_value(r, v.max_offset, err)) {
+            err.enter("max_offset");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const filter::GnssAntennaCalibrationControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.enable);
+        write_value(w, v.max_offset);
         (void)absent;
     }
 };
