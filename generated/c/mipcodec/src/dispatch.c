@@ -78,6 +78,118 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, "event_action_config", NULL, MIP_DEVICE_ANY, 0x2F},
     {MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, "event_action_config_response", NULL, MIP_DEVICE_ANY,
      0xB9},
+    {MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45, "device_startup_settings", "gx5_45", MIP_DEVICE_GX5_45,
+     0x30},
+    {MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_CV7_INS, "device_startup_settings", "cv7_ins",
+     MIP_DEVICE_CV7_INS, 0x30},
+    {MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER, "sensor_to_vehicle_euler", NULL, MIP_DEVICE_ANY, 0x31},
+    {MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE, "sensor_to_vehicle_euler_response", NULL,
+     MIP_DEVICE_ANY, 0xB1},
+    {MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION, "sensor_to_vehicle_quaternion", NULL, MIP_DEVICE_ANY,
+     0x32},
+    {MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE, "sensor_to_vehicle_quaternion_response", NULL,
+     MIP_DEVICE_ANY, 0xB2},
+    {MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM, "sensor_to_vehicle_dcm", NULL, MIP_DEVICE_ANY, 0x33},
+    {MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE, "sensor_to_vehicle_dcm_response", NULL, MIP_DEVICE_ANY,
+     0xB3},
+    {MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45, "accel_bias", "gx5_45", MIP_DEVICE_GX5_45, 0x37},
+    {MIP_FIELD_THREEDM_ACCEL_BIAS_CV7_INS, "accel_bias", "cv7_ins", MIP_DEVICE_CV7_INS, 0x37},
+    {MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE, "accel_bias_response", NULL, MIP_DEVICE_ANY, 0x9A},
+    {MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45, "gyro_bias", "gx5_45", MIP_DEVICE_GX5_45, 0x38},
+    {MIP_FIELD_THREEDM_GYRO_BIAS_CV7_INS, "gyro_bias", "cv7_ins", MIP_DEVICE_CV7_INS, 0x38},
+    {MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE, "gyro_bias_response", NULL, MIP_DEVICE_ANY, 0x9B},
+    {MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS, "capture_gyro_bias", NULL, MIP_DEVICE_ANY, 0x39},
+    {MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45, "mag_hard_iron_offset", "gx5_45", MIP_DEVICE_GX5_45,
+     0x3A},
+    {MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_CV7_INS, "mag_hard_iron_offset", "cv7_ins", MIP_DEVICE_CV7_INS,
+     0x3A},
+    {MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE, "mag_hard_iron_offset_response", NULL, MIP_DEVICE_ANY,
+     0x9C},
+    {MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45, "mag_soft_iron_matrix", "gx5_45", MIP_DEVICE_GX5_45,
+     0x3B},
+    {MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_CV7_INS, "mag_soft_iron_matrix", "cv7_ins", MIP_DEVICE_CV7_INS,
+     0x3B},
+    {MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE, "mag_soft_iron_matrix_response", NULL, MIP_DEVICE_ANY,
+     0x9D},
+    {MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE, "coning_sculling_enable", NULL, MIP_DEVICE_ANY, 0x3E},
+    {MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE, "coning_sculling_enable_response", NULL,
+     MIP_DEVICE_ANY, 0x9E},
+    {MIP_FIELD_THREEDM_UART_BAUDRATE, "uart_baudrate", NULL, MIP_DEVICE_ANY, 0x40},
+    {MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE, "uart_baudrate_response", NULL, MIP_DEVICE_ANY, 0x87},
+    {MIP_FIELD_THREEDM_GPIO_CONFIG, "gpio_config", NULL, MIP_DEVICE_ANY, 0x41},
+    {MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE, "gpio_config_response", NULL, MIP_DEVICE_ANY, 0xC1},
+    {MIP_FIELD_THREEDM_GPIO_STATE, "gpio_state", NULL, MIP_DEVICE_ANY, 0x42},
+    {MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE, "gpio_state_response", NULL, MIP_DEVICE_ANY, 0xC2},
+    {MIP_FIELD_THREEDM_ODOMETER_CONFIG, "odometer_config", NULL, MIP_DEVICE_ANY, 0x43},
+    {MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE, "odometer_config_response", NULL, MIP_DEVICE_ANY, 0xC3},
+    {MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER, "advanced_lowpass_filter", NULL, MIP_DEVICE_ANY, 0x50},
+    {MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE, "advanced_lowpass_filter_response", NULL,
+     MIP_DEVICE_ANY, 0x8B},
+    {MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER, "complementary_filter", NULL, MIP_DEVICE_ANY, 0x51},
+    {MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE, "complementary_filter_response", NULL, MIP_DEVICE_ANY,
+     0x97},
+    {MIP_FIELD_THREEDM_SENSOR_RANGE, "sensor_range", NULL, MIP_DEVICE_ANY, 0x52},
+    {MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE, "sensor_range_response", NULL, MIP_DEVICE_ANY, 0xD2},
+    {MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES, "get_calibrated_sensor_ranges", NULL, MIP_DEVICE_ANY,
+     0x53},
+    {MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES, "calibrated_sensor_ranges", NULL, MIP_DEVICE_ANY, 0xD3},
+    {MIP_FIELD_THREEDM_LOWPASS_FILTER, "lowpass_filter", NULL, MIP_DEVICE_ANY, 0x54},
+    {MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE, "lowpass_filter_response", NULL, MIP_DEVICE_ANY, 0xD4},
+    {MIP_FIELD_THREEDM_POLL_IMU_DATA, "poll_imu_data", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_THREEDM_POLL_GNSS_DATA, "poll_gnss_data", NULL, MIP_DEVICE_ANY, 0x02},
+    {MIP_FIELD_THREEDM_POLL_FILTER_DATA, "poll_filter_data", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_THREEDM_POLL_NMEA_DATA, "poll_nmea_data", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_THREEDM_POLL_DATA, "poll_data", NULL, MIP_DEVICE_ANY, 0x0D},
+    {MIP_FIELD_THREEDM_GET_IMU_BASE_RATE, "get_imu_base_rate", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_THREEDM_IMU_BASE_RATE, "imu_base_rate", NULL, MIP_DEVICE_ANY, 0x83},
+    {MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE, "get_gnss_base_rate", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_THREEDM_GNSS_BASE_RATE, "gnss_base_rate", NULL, MIP_DEVICE_ANY, 0x84},
+    {MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE, "get_filter_base_rate", NULL, MIP_DEVICE_ANY, 0x0B},
+    {MIP_FIELD_THREEDM_FILTER_BASE_RATE, "filter_base_rate", NULL, MIP_DEVICE_ANY, 0x8A},
+    {MIP_FIELD_THREEDM_GET_BASE_RATE, "get_base_rate", NULL, MIP_DEVICE_ANY, 0x0E},
+    {MIP_FIELD_THREEDM_BASE_RATE, "base_rate", NULL, MIP_DEVICE_ANY, 0x8E},
+    {MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT, "imu_message_format", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE, "imu_message_format_response", NULL, MIP_DEVICE_ANY,
+     0x80},
+    {MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT, "gnss_message_format", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE, "gnss_message_format_response", NULL, MIP_DEVICE_ANY,
+     0x81},
+    {MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT, "filter_message_format", NULL, MIP_DEVICE_ANY, 0x0A},
+    {MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE, "filter_message_format_response", NULL, MIP_DEVICE_ANY,
+     0x82},
+    {MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT, "nmea_message_format", NULL, MIP_DEVICE_ANY, 0x0C},
+    {MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE, "nmea_message_format_response", NULL, MIP_DEVICE_ANY,
+     0x8C},
+    {MIP_FIELD_THREEDM_MESSAGE_FORMAT, "message_format", NULL, MIP_DEVICE_ANY, 0x0F},
+    {MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE, "message_format_response", NULL, MIP_DEVICE_ANY, 0x8F},
+    {MIP_FIELD_THREEDM_FACTORY_STREAMING, "factory_streaming", NULL, MIP_DEVICE_ANY, 0x10},
+    {MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45, "data_stream_control", "gx5_45", MIP_DEVICE_GX5_45, 0x11},
+    {MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_CV7_INS, "data_stream_control", "cv7_ins", MIP_DEVICE_CV7_INS,
+     0x11},
+    {MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45, "data_stream_control_response", "gx5_45",
+     MIP_DEVICE_GX5_45, 0x85},
+    {MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_CV7_INS, "data_stream_control_response", "cv7_ins",
+     MIP_DEVICE_CV7_INS, 0x85},
+    {MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE, "raw_rtcm_message", NULL, MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS, "gnss_constellation_settings", NULL, MIP_DEVICE_ANY,
+     0x21},
+    {MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE, "gnss_constellation_settings_response", NULL,
+     MIP_DEVICE_ANY, 0xA0},
+    {MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS, "gnss_sbas_settings", NULL, MIP_DEVICE_ANY, 0x22},
+    {MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE, "gnss_sbas_settings_response", NULL, MIP_DEVICE_ANY,
+     0xA1},
+    {MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL, "gnss_assisted_fix_control", NULL, MIP_DEVICE_ANY, 0x23},
+    {MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE, "gnss_assisted_fix_control_response", NULL,
+     MIP_DEVICE_ANY, 0xA2},
+    {MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE, "gnss_assist_time_update", NULL, MIP_DEVICE_ANY, 0x24},
+    {MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE, "gnss_assist_time_update_response", NULL,
+     MIP_DEVICE_ANY, 0xA3},
+    {MIP_FIELD_THREEDM_PPS_SOURCE, "pps_source", NULL, MIP_DEVICE_ANY, 0x28},
+    {MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE, "pps_source_response", NULL, MIP_DEVICE_ANY, 0xA8},
+    {MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS, "get_supported_events", NULL, MIP_DEVICE_ANY, 0x2A},
+    {MIP_FIELD_THREEDM_SUPPORTED_EVENTS, "supported_events", NULL, MIP_DEVICE_ANY, 0xB4},
+    {MIP_FIELD_THREEDM_DEVICE_STATUS, "device_status", NULL, MIP_DEVICE_ANY, 0x64},
+    {MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE, "device_status_response", NULL, MIP_DEVICE_ANY, 0x90},
     {MIP_FIELD_FILTER_RESET_FILTER, "reset_filter", NULL, MIP_DEVICE_ANY, 0x01},
     {MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE, "set_initial_attitude", NULL, MIP_DEVICE_ANY, 0x02},
     {MIP_FIELD_FILTER_SET_INITIAL_HEADING, "set_initial_heading", NULL, MIP_DEVICE_ANY, 0x03},
@@ -226,167 +338,252 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_SENSOR_SCALED_MAG, "scaled_mag", NULL, MIP_DEVICE_ANY, 0x06},
 };
 
-static const mip_field_info_t k_fields[137] = {
-    {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                    /* 0 */
-    {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                       /* 1 */
-    {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                         /* 2 */
-    {"get_device_info", 0x03, MIP_FIELD_BASE_GET_DEVICE_INFO, 1},                                 /* 3 */
-    {"device_info", 0x81, MIP_FIELD_BASE_DEVICE_INFO, 1},                                         /* 4 */
-    {"get_device_descriptors", 0x04, MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},                   /* 5 */
-    {"device_descriptors", 0x82, MIP_FIELD_BASE_DEVICE_DESCRIPTORS, 1},                           /* 6 */
-    {"built_in_test", 0x05, MIP_FIELD_BASE_BUILT_IN_TEST, 1},                                     /* 7 */
-    {"built_in_test_result", 0x83, MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},                /* 8 */
-    {"resume", 0x06, MIP_FIELD_BASE_RESUME, 1},                                                   /* 9 */
-    {"get_extended_descriptors", 0x07, MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},               /* 10 */
-    {"extended_descriptors", 0x86, MIP_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},                       /* 11 */
-    {"continuous_bit", 0x08, MIP_FIELD_BASE_CONTINUOUS_BIT, 1},                                   /* 12 */
-    {"continuous_bit_result", 0x88, MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},                     /* 13 */
-    {"comm_port_speed", 0x09, MIP_FIELD_BASE_COMM_PORT_SPEED, 1},                                 /* 14 */
-    {"comm_port_speed_response", 0x89, MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},               /* 15 */
-    {"gps_time_update", 0x72, MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},                          /* 16 */
-    {"gps_week", 0x84, MIP_FIELD_BASE_GPS_WEEK, 1},                                               /* 17 */
-    {"gps_seconds", 0x85, MIP_FIELD_BASE_GPS_SECONDS, 1},                                         /* 18 */
-    {"device_reset", 0x7E, MIP_FIELD_BASE_DEVICE_RESET, 1},                                       /* 19 */
-    {"event_control", 0x2B, MIP_FIELD_THREEDM_EVENT_CONTROL, 1},                                  /* 20 */
-    {"event_control_response", 0xB5, MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},                /* 21 */
-    {"get_event_trigger_status", 0x2C, MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},            /* 22 */
-    {"event_trigger_status", 0xB6, MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},                    /* 23 */
-    {"get_event_action_status", 0x2D, MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},              /* 24 */
-    {"event_action_status", 0xB7, MIP_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},                      /* 25 */
-    {"event_trigger_config", 0x2E, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},                    /* 26 */
-    {"event_trigger_config_response", 0xB8, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1},  /* 27 */
-    {"event_action_config", 0x2F, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},                      /* 28 */
-    {"event_action_config_response", 0xB9, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},    /* 29 */
-    {"reset_filter", 0x01, MIP_FIELD_FILTER_RESET_FILTER, 1},                                     /* 30 */
-    {"set_initial_attitude", 0x02, MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE, 1},                     /* 31 */
-    {"set_initial_heading", 0x03, MIP_FIELD_FILTER_SET_INITIAL_HEADING, 1},                       /* 32 */
-    {"run_filter", 0x05, MIP_FIELD_FILTER_RUN_FILTER, 1},                                         /* 33 */
-    {"vehicle_dynamics_mode", 0x10, MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE, 1},                   /* 34 */
-    {"vehicle_dynamics_mode_response", 0x80, MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE, 1}, /* 35 */
-    {"sensor_to_vehicle_transform", 0x11, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM, 1},       /* 36 */
+static const mip_field_info_t k_fields[214] = {
+    {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                   /* 0 */
+    {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                      /* 1 */
+    {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                        /* 2 */
+    {"get_device_info", 0x03, MIP_FIELD_BASE_GET_DEVICE_INFO, 1},                                /* 3 */
+    {"device_info", 0x81, MIP_FIELD_BASE_DEVICE_INFO, 1},                                        /* 4 */
+    {"get_device_descriptors", 0x04, MIP_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},                  /* 5 */
+    {"device_descriptors", 0x82, MIP_FIELD_BASE_DEVICE_DESCRIPTORS, 1},                          /* 6 */
+    {"built_in_test", 0x05, MIP_FIELD_BASE_BUILT_IN_TEST, 1},                                    /* 7 */
+    {"built_in_test_result", 0x83, MIP_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},               /* 8 */
+    {"resume", 0x06, MIP_FIELD_BASE_RESUME, 1},                                                  /* 9 */
+    {"get_extended_descriptors", 0x07, MIP_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},              /* 10 */
+    {"extended_descriptors", 0x86, MIP_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},                      /* 11 */
+    {"continuous_bit", 0x08, MIP_FIELD_BASE_CONTINUOUS_BIT, 1},                                  /* 12 */
+    {"continuous_bit_result", 0x88, MIP_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},                    /* 13 */
+    {"comm_port_speed", 0x09, MIP_FIELD_BASE_COMM_PORT_SPEED, 1},                                /* 14 */
+    {"comm_port_speed_response", 0x89, MIP_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},              /* 15 */
+    {"gps_time_update", 0x72, MIP_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},                         /* 16 */
+    {"gps_week", 0x84, MIP_FIELD_BASE_GPS_WEEK, 1},                                              /* 17 */
+    {"gps_seconds", 0x85, MIP_FIELD_BASE_GPS_SECONDS, 1},                                        /* 18 */
+    {"device_reset", 0x7E, MIP_FIELD_BASE_DEVICE_RESET, 1},                                      /* 19 */
+    {"event_control", 0x2B, MIP_FIELD_THREEDM_EVENT_CONTROL, 1},                                 /* 20 */
+    {"event_control_response", 0xB5, MIP_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},               /* 21 */
+    {"get_event_trigger_status", 0x2C, MIP_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},           /* 22 */
+    {"event_trigger_status", 0xB6, MIP_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},                   /* 23 */
+    {"get_event_action_status", 0x2D, MIP_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},             /* 24 */
+    {"event_action_status", 0xB7, MIP_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},                     /* 25 */
+    {"event_trigger_config", 0x2E, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},                   /* 26 */
+    {"event_trigger_config_response", 0xB8, MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1}, /* 27 */
+    {"event_action_config", 0x2F, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},                     /* 28 */
+    {"event_action_config_response", 0xB9, MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},   /* 29 */
+    {"device_startup_settings", 0x30, MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45, 2},      /* 30 */
+    {"sensor_to_vehicle_euler", 0x31, MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER, 1},             /* 31 */
+    {"sensor_to_vehicle_euler_response", 0xB1, MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE,
+     1},                                                                                       /* 32 */
+    {"sensor_to_vehicle_quaternion", 0x32, MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION, 1}, /* 33 */
+    {"sensor_to_vehicle_quaternion_response", 0xB2, MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE,
+     1},                                                                                             /* 34 */
+    {"sensor_to_vehicle_dcm", 0x33, MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM, 1},                     /* 35 */
+    {"sensor_to_vehicle_dcm_response", 0xB3, MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE, 1},   /* 36 */
+    {"accel_bias", 0x37, MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45, 2},                                    /* 37 */
+    {"accel_bias_response", 0x9A, MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE, 1},                         /* 38 */
+    {"gyro_bias", 0x38, MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45, 2},                                      /* 39 */
+    {"gyro_bias_response", 0x9B, MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE, 1},                           /* 40 */
+    {"capture_gyro_bias", 0x39, MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS, 1},                             /* 41 */
+    {"mag_hard_iron_offset", 0x3A, MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45, 2},                /* 42 */
+    {"mag_hard_iron_offset_response", 0x9C, MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE, 1},     /* 43 */
+    {"mag_soft_iron_matrix", 0x3B, MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45, 2},                /* 44 */
+    {"mag_soft_iron_matrix_response", 0x9D, MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE, 1},     /* 45 */
+    {"coning_sculling_enable", 0x3E, MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE, 1},                   /* 46 */
+    {"coning_sculling_enable_response", 0x9E, MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE, 1}, /* 47 */
+    {"uart_baudrate", 0x40, MIP_FIELD_THREEDM_UART_BAUDRATE, 1},                                     /* 48 */
+    {"uart_baudrate_response", 0x87, MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE, 1},                   /* 49 */
+    {"gpio_config", 0x41, MIP_FIELD_THREEDM_GPIO_CONFIG, 1},                                         /* 50 */
+    {"gpio_config_response", 0xC1, MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE, 1},                       /* 51 */
+    {"gpio_state", 0x42, MIP_FIELD_THREEDM_GPIO_STATE, 1},                                           /* 52 */
+    {"gpio_state_response", 0xC2, MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE, 1},                         /* 53 */
+    {"odometer_config", 0x43, MIP_FIELD_THREEDM_ODOMETER_CONFIG, 1},                                 /* 54 */
+    {"odometer_config_response", 0xC3, MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE, 1},               /* 55 */
+    {"advanced_lowpass_filter", 0x50, MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER, 1},                 /* 56 */
+    {"advanced_lowpass_filter_response", 0x8B, MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE,
+     1},                                                                                              /* 57 */
+    {"complementary_filter", 0x51, MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER, 1},                        /* 58 */
+    {"complementary_filter_response", 0x97, MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE, 1},      /* 59 */
+    {"sensor_range", 0x52, MIP_FIELD_THREEDM_SENSOR_RANGE, 1},                                        /* 60 */
+    {"sensor_range_response", 0xD2, MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE, 1},                      /* 61 */
+    {"get_calibrated_sensor_ranges", 0x53, MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES, 1},        /* 62 */
+    {"calibrated_sensor_ranges", 0xD3, MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES, 1},                /* 63 */
+    {"lowpass_filter", 0x54, MIP_FIELD_THREEDM_LOWPASS_FILTER, 1},                                    /* 64 */
+    {"lowpass_filter_response", 0xD4, MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE, 1},                  /* 65 */
+    {"poll_imu_data", 0x01, MIP_FIELD_THREEDM_POLL_IMU_DATA, 1},                                      /* 66 */
+    {"poll_gnss_data", 0x02, MIP_FIELD_THREEDM_POLL_GNSS_DATA, 1},                                    /* 67 */
+    {"poll_filter_data", 0x03, MIP_FIELD_THREEDM_POLL_FILTER_DATA, 1},                                /* 68 */
+    {"poll_nmea_data", 0x04, MIP_FIELD_THREEDM_POLL_NMEA_DATA, 1},                                    /* 69 */
+    {"poll_data", 0x0D, MIP_FIELD_THREEDM_POLL_DATA, 1},                                              /* 70 */
+    {"get_imu_base_rate", 0x06, MIP_FIELD_THREEDM_GET_IMU_BASE_RATE, 1},                              /* 71 */
+    {"imu_base_rate", 0x83, MIP_FIELD_THREEDM_IMU_BASE_RATE, 1},                                      /* 72 */
+    {"get_gnss_base_rate", 0x07, MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE, 1},                            /* 73 */
+    {"gnss_base_rate", 0x84, MIP_FIELD_THREEDM_GNSS_BASE_RATE, 1},                                    /* 74 */
+    {"get_filter_base_rate", 0x0B, MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE, 1},                        /* 75 */
+    {"filter_base_rate", 0x8A, MIP_FIELD_THREEDM_FILTER_BASE_RATE, 1},                                /* 76 */
+    {"get_base_rate", 0x0E, MIP_FIELD_THREEDM_GET_BASE_RATE, 1},                                      /* 77 */
+    {"base_rate", 0x8E, MIP_FIELD_THREEDM_BASE_RATE, 1},                                              /* 78 */
+    {"imu_message_format", 0x08, MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT, 1},                            /* 79 */
+    {"imu_message_format_response", 0x80, MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE, 1},          /* 80 */
+    {"gnss_message_format", 0x09, MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT, 1},                          /* 81 */
+    {"gnss_message_format_response", 0x81, MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE, 1},        /* 82 */
+    {"filter_message_format", 0x0A, MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT, 1},                      /* 83 */
+    {"filter_message_format_response", 0x82, MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE, 1},    /* 84 */
+    {"nmea_message_format", 0x0C, MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT, 1},                          /* 85 */
+    {"nmea_message_format_response", 0x8C, MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE, 1},        /* 86 */
+    {"message_format", 0x0F, MIP_FIELD_THREEDM_MESSAGE_FORMAT, 1},                                    /* 87 */
+    {"message_format_response", 0x8F, MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE, 1},                  /* 88 */
+    {"factory_streaming", 0x10, MIP_FIELD_THREEDM_FACTORY_STREAMING, 1},                              /* 89 */
+    {"data_stream_control", 0x11, MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45, 2},                   /* 90 */
+    {"data_stream_control_response", 0x85, MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45, 2}, /* 91 */
+    {"raw_rtcm_message", 0x20, MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE, 1},                                /* 92 */
+    {"gnss_constellation_settings", 0x21, MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS, 1},          /* 93 */
+    {"gnss_constellation_settings_response", 0xA0, MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE,
+     1},                                                                                     /* 94 */
+    {"gnss_sbas_settings", 0x22, MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS, 1},                   /* 95 */
+    {"gnss_sbas_settings_response", 0xA1, MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE, 1}, /* 96 */
+    {"gnss_assisted_fix_control", 0x23, MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL, 1},     /* 97 */
+    {"gnss_assisted_fix_control_response", 0xA2, MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE,
+     1},                                                                             /* 98 */
+    {"gnss_assist_time_update", 0x24, MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE, 1}, /* 99 */
+    {"gnss_assist_time_update_response", 0xA3, MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE,
+     1},                                                                                          /* 100 */
+    {"pps_source", 0x28, MIP_FIELD_THREEDM_PPS_SOURCE, 1},                                        /* 101 */
+    {"pps_source_response", 0xA8, MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE, 1},                      /* 102 */
+    {"get_supported_events", 0x2A, MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS, 1},                    /* 103 */
+    {"supported_events", 0xB4, MIP_FIELD_THREEDM_SUPPORTED_EVENTS, 1},                            /* 104 */
+    {"device_status", 0x64, MIP_FIELD_THREEDM_DEVICE_STATUS, 1},                                  /* 105 */
+    {"device_status_response", 0x90, MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE, 1},                /* 106 */
+    {"reset_filter", 0x01, MIP_FIELD_FILTER_RESET_FILTER, 1},                                     /* 107 */
+    {"set_initial_attitude", 0x02, MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE, 1},                     /* 108 */
+    {"set_initial_heading", 0x03, MIP_FIELD_FILTER_SET_INITIAL_HEADING, 1},                       /* 109 */
+    {"run_filter", 0x05, MIP_FIELD_FILTER_RUN_FILTER, 1},                                         /* 110 */
+    {"vehicle_dynamics_mode", 0x10, MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE, 1},                   /* 111 */
+    {"vehicle_dynamics_mode_response", 0x80, MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE, 1}, /* 112 */
+    {"sensor_to_vehicle_transform", 0x11, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM, 1},       /* 113 */
     {"sensor_to_vehicle_transform_response", 0x81, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE,
-     1},                                                                              /* 37 */
-    {"sensor_to_vehicle_offset", 0x12, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET, 1}, /* 38 */
+     1},                                                                              /* 114 */
+    {"sensor_to_vehicle_offset", 0x12, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET, 1}, /* 115 */
     {"sensor_to_vehicle_offset_response", 0x82, MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE,
-     1},                                                                                            /* 39 */
-    {"antenna_offset", 0x13, MIP_FIELD_FILTER_ANTENNA_OFFSET, 1},                                   /* 40 */
-    {"antenna_offset_response", 0x83, MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE, 1},                 /* 41 */
-    {"estimation_control", 0x14, MIP_FIELD_FILTER_ESTIMATION_CONTROL, 1},                           /* 42 */
-    {"estimation_control_response", 0x84, MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE, 1},         /* 43 */
-    {"gnss_source_control", 0x15, MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL, 1},                         /* 44 */
-    {"gnss_source_control_response", 0x86, MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE, 1},       /* 45 */
-    {"external_gnss_update", 0x16, MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE, 1},                       /* 46 */
-    {"external_heading_update", 0x17, MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE, 1},                 /* 47 */
-    {"heading_update_control", 0x18, MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL, 1},                   /* 48 */
-    {"heading_update_control_response", 0x87, MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE, 1}, /* 49 */
-    {"auto_init_control", 0x19, MIP_FIELD_FILTER_AUTO_INIT_CONTROL, 1},                             /* 50 */
-    {"auto_init_control_response", 0x88, MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE, 1},           /* 51 */
-    {"accel_noise", 0x1A, MIP_FIELD_FILTER_ACCEL_NOISE, 1},                                         /* 52 */
-    {"accel_noise_response", 0x89, MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE, 1},                       /* 53 */
-    {"gyro_noise", 0x1B, MIP_FIELD_FILTER_GYRO_NOISE, 1},                                           /* 54 */
-    {"gyro_noise_response", 0x8A, MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE, 1},                         /* 55 */
-    {"accel_bias_model", 0x1C, MIP_FIELD_FILTER_ACCEL_BIAS_MODEL, 1},                               /* 56 */
-    {"accel_bias_model_response", 0x8B, MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE, 1},             /* 57 */
-    {"gyro_bias_model", 0x1D, MIP_FIELD_FILTER_GYRO_BIAS_MODEL, 1},                                 /* 58 */
-    {"gyro_bias_model_response", 0x8C, MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE, 1},               /* 59 */
-    {"zupt_control", 0x1E, MIP_FIELD_FILTER_ZUPT_CONTROL, 1},                                       /* 60 */
-    {"zupt_control_response", 0x8D, MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, 1},                     /* 61 */
+     1},                                                                                            /* 116 */
+    {"antenna_offset", 0x13, MIP_FIELD_FILTER_ANTENNA_OFFSET, 1},                                   /* 117 */
+    {"antenna_offset_response", 0x83, MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE, 1},                 /* 118 */
+    {"estimation_control", 0x14, MIP_FIELD_FILTER_ESTIMATION_CONTROL, 1},                           /* 119 */
+    {"estimation_control_response", 0x84, MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE, 1},         /* 120 */
+    {"gnss_source_control", 0x15, MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL, 1},                         /* 121 */
+    {"gnss_source_control_response", 0x86, MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE, 1},       /* 122 */
+    {"external_gnss_update", 0x16, MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE, 1},                       /* 123 */
+    {"external_heading_update", 0x17, MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE, 1},                 /* 124 */
+    {"heading_update_control", 0x18, MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL, 1},                   /* 125 */
+    {"heading_update_control_response", 0x87, MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE, 1}, /* 126 */
+    {"auto_init_control", 0x19, MIP_FIELD_FILTER_AUTO_INIT_CONTROL, 1},                             /* 127 */
+    {"auto_init_control_response", 0x88, MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE, 1},           /* 128 */
+    {"accel_noise", 0x1A, MIP_FIELD_FILTER_ACCEL_NOISE, 1},                                         /* 129 */
+    {"accel_noise_response", 0x89, MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE, 1},                       /* 130 */
+    {"gyro_noise", 0x1B, MIP_FIELD_FILTER_GYRO_NOISE, 1},                                           /* 131 */
+    {"gyro_noise_response", 0x8A, MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE, 1},                         /* 132 */
+    {"accel_bias_model", 0x1C, MIP_FIELD_FILTER_ACCEL_BIAS_MODEL, 1},                               /* 133 */
+    {"accel_bias_model_response", 0x8B, MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE, 1},             /* 134 */
+    {"gyro_bias_model", 0x1D, MIP_FIELD_FILTER_GYRO_BIAS_MODEL, 1},                                 /* 135 */
+    {"gyro_bias_model_response", 0x8C, MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE, 1},               /* 136 */
+    {"zupt_control", 0x1E, MIP_FIELD_FILTER_ZUPT_CONTROL, 1},                                       /* 137 */
+    {"zupt_control_response", 0x8D, MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, 1},                     /* 138 */
     {"external_heading_update_with_time", 0x1F, MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME,
-     1},                                                                                              /* 62 */
-    {"zero_angular_rate_update_control", 0x20, MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL, 1}, /* 63 */
+     1}, /* 139 */
+    {"zero_angular_rate_update_control", 0x20, MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL,
+     1}, /* 140 */
     {"zero_angular_rate_update_control_response", 0x8E,
-     MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE, 1},  /* 64 */
-    {"tare_orientation", 0x21, MIP_FIELD_FILTER_TARE_ORIENTATION, 1}, /* 65 */
-    {"commanded_zupt", 0x22, MIP_FIELD_FILTER_COMMANDED_ZUPT, 1},     /* 66 */
+     MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE, 1},  /* 141 */
+    {"tare_orientation", 0x21, MIP_FIELD_FILTER_TARE_ORIENTATION, 1}, /* 142 */
+    {"commanded_zupt", 0x22, MIP_FIELD_FILTER_COMMANDED_ZUPT, 1},     /* 143 */
     {"commanded_zero_angular_rate_update", 0x23, MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE,
-     1},                                                                                            /* 67 */
-    {"mag_capture_auto_calibration", 0x27, MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION, 1},       /* 68 */
-    {"gravity_noise_std_dev", 0x28, MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV, 1},                     /* 69 */
-    {"gravity_noise_std_dev_response", 0x93, MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE, 1},   /* 70 */
-    {"pressure_altitude_noise_std_dev", 0x29, MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV, 1}, /* 71 */
+     1},                                                                                            /* 144 */
+    {"mag_capture_auto_calibration", 0x27, MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION, 1},       /* 145 */
+    {"gravity_noise_std_dev", 0x28, MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV, 1},                     /* 146 */
+    {"gravity_noise_std_dev_response", 0x93, MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE, 1},   /* 147 */
+    {"pressure_altitude_noise_std_dev", 0x29, MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV, 1}, /* 148 */
     {"pressure_altitude_noise_std_dev_response", 0x94,
-     MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE, 1},                                 /* 72 */
-    {"hard_iron_offset_noise", 0x2B, MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE, 1},                   /* 73 */
-    {"hard_iron_offset_noise_response", 0x96, MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE, 1}, /* 74 */
-    {"soft_iron_matrix_noise", 0x2C, MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE, 1},                   /* 75 */
-    {"soft_iron_matrix_noise_response", 0x97, MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE, 1}, /* 76 */
-    {"mag_noise_std_dev", 0x42, MIP_FIELD_FILTER_MAG_NOISE_STD_DEV, 1},                             /* 77 */
-    {"mag_noise_std_dev_response", 0xB1, MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE, 1},           /* 78 */
-    {"declination_source", 0x43, MIP_FIELD_FILTER_DECLINATION_SOURCE, 1},                           /* 79 */
-    {"declination_source_response", 0xB2, MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE, 1},         /* 80 */
+     MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE, 1},                                 /* 149 */
+    {"hard_iron_offset_noise", 0x2B, MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE, 1},                   /* 150 */
+    {"hard_iron_offset_noise_response", 0x96, MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE, 1}, /* 151 */
+    {"soft_iron_matrix_noise", 0x2C, MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE, 1},                   /* 152 */
+    {"soft_iron_matrix_noise_response", 0x97, MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE, 1}, /* 153 */
+    {"mag_noise_std_dev", 0x42, MIP_FIELD_FILTER_MAG_NOISE_STD_DEV, 1},                             /* 154 */
+    {"mag_noise_std_dev_response", 0xB1, MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE, 1},           /* 155 */
+    {"declination_source", 0x43, MIP_FIELD_FILTER_DECLINATION_SOURCE, 1},                           /* 156 */
+    {"declination_source_response", 0xB2, MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE, 1},         /* 157 */
     {"gravity_magnitude_adaptive_measurement", 0x44, MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT,
-     1}, /* 81 */
+     1}, /* 158 */
     {"gravity_magnitude_adaptive_measurement_response", 0xB3,
-     MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 82 */
+     MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 159 */
     {"mag_magnitude_adaptive_measurement", 0x45, MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT,
-     1}, /* 83 */
+     1}, /* 160 */
     {"mag_magnitude_adaptive_measurement_response", 0xB4,
-     MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 84 */
+     MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 161 */
     {"mag_dip_angle_adaptive_measurement", 0x46, MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT,
-     1}, /* 85 */
+     1}, /* 162 */
     {"mag_dip_angle_adaptive_measurement_response", 0xB5,
-     MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},                                /* 86 */
-    {"altitude_aiding_control", 0x47, MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL, 1},                   /* 87 */
-    {"altitude_aiding_control_response", 0xB7, MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE, 1}, /* 88 */
-    {"pitch_roll_aiding_control", 0x4B, MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL, 1},               /* 89 */
+     MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},              /* 163 */
+    {"altitude_aiding_control", 0x47, MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL, 1}, /* 164 */
+    {"altitude_aiding_control_response", 0xB7, MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE,
+     1},                                                                                /* 165 */
+    {"pitch_roll_aiding_control", 0x4B, MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL, 1}, /* 166 */
     {"pitch_roll_aiding_control_response", 0xBB, MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE,
-     1},                                                                                            /* 90 */
-    {"inclination_source", 0x4C, MIP_FIELD_FILTER_INCLINATION_SOURCE, 1},                           /* 91 */
-    {"inclination_source_response", 0xBC, MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE, 1},         /* 92 */
-    {"magnetic_field_magnitude_source", 0x4D, MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE, 1}, /* 93 */
+     1},                                                                                            /* 167 */
+    {"inclination_source", 0x4C, MIP_FIELD_FILTER_INCLINATION_SOURCE, 1},                           /* 168 */
+    {"inclination_source_response", 0xBC, MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE, 1},         /* 169 */
+    {"magnetic_field_magnitude_source", 0x4D, MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE, 1}, /* 170 */
     {"magnetic_field_magnitude_source_response", 0xBD,
-     MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE, 1},                       /* 94 */
-    {"aiding_measurement_control", 0x50, MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL, 1}, /* 95 */
+     MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE, 1},                       /* 171 */
+    {"aiding_measurement_control", 0x50, MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL, 1}, /* 172 */
     {"aiding_measurement_control_response", 0xD0, MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE,
-     1},                                                                                      /* 96 */
-    {"initialization_configuration", 0x52, MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION, 1}, /* 97 */
+     1},                                                                                      /* 173 */
+    {"initialization_configuration", 0x52, MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION, 1}, /* 174 */
     {"initialization_configuration_response", 0xD2, MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE,
-     1},                                                                            /* 98 */
-    {"adaptive_filter_control", 0x53, MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL, 1}, /* 99 */
+     1},                                                                            /* 175 */
+    {"adaptive_filter_control", 0x53, MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL, 1}, /* 176 */
     {"adaptive_filter_control_response", 0xD3, MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE,
-     1},                                                                                            /* 100 */
-    {"multi_antenna_offset", 0x54, MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET, 1},                       /* 101 */
-    {"multi_antenna_offset_response", 0xD4, MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE, 1},     /* 102 */
-    {"relative_position_configuration", 0x55, MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION, 1}, /* 103 */
+     1},                                                                                            /* 177 */
+    {"multi_antenna_offset", 0x54, MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET, 1},                       /* 178 */
+    {"multi_antenna_offset_response", 0xD4, MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE, 1},     /* 179 */
+    {"relative_position_configuration", 0x55, MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION, 1}, /* 180 */
     {"relative_position_configuration_response", 0xD5,
-     MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE, 1},                     /* 104 */
-    {"reference_point_lever_arm", 0x56, MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM, 1}, /* 105 */
+     MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE, 1},                     /* 181 */
+    {"reference_point_lever_arm", 0x56, MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM, 1}, /* 182 */
     {"reference_point_lever_arm_response", 0xD6, MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE,
-     1},                                                                              /* 106 */
-    {"speed_lever_arm", 0x61, MIP_FIELD_FILTER_SPEED_LEVER_ARM, 1},                   /* 107 */
-    {"speed_lever_arm_response", 0xE1, MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE, 1}, /* 108 */
+     1},                                                                              /* 183 */
+    {"speed_lever_arm", 0x61, MIP_FIELD_FILTER_SPEED_LEVER_ARM, 1},                   /* 184 */
+    {"speed_lever_arm_response", 0xE1, MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE, 1}, /* 185 */
     {"wheeled_vehicle_constraint_control", 0x63, MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL,
-     1}, /* 109 */
+     1}, /* 186 */
     {"wheeled_vehicle_constraint_control_response", 0xE3,
-     MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE, 1}, /* 110 */
+     MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE, 1}, /* 187 */
     {"gnss_antenna_calibration_control", 0x64, MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL,
-     1}, /* 111 */
+     1}, /* 188 */
     {"gnss_antenna_calibration_control_response", 0xE4,
-     MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE, 1},                          /* 112 */
-    {"receiver_info", 0x01, MIP_FIELD_GNSS_RECEIVER_INFO, 1},                                 /* 113 */
-    {"receiver_info_response", 0x81, MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},               /* 114 */
-    {"signal_configuration", 0x02, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},                   /* 115 */
-    {"signal_configuration_response", 0x82, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1}, /* 116 */
-    {"spartn_configuration", 0x20, MIP_FIELD_GNSS_SPARTN_CONFIGURATION, 1},                   /* 117 */
-    {"spartn_configuration_response", 0xA0, MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1}, /* 118 */
-    {"frame_config", 0x01, MIP_FIELD_AIDING_FRAME_CONFIG, 1},                                 /* 119 */
-    {"frame_config_response", 0x81, MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},               /* 120 */
-    {"echo_control", 0x1F, MIP_FIELD_AIDING_ECHO_CONTROL, 1},                                 /* 121 */
-    {"echo_control_response", 0x9F, MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},               /* 122 */
-    {"ecef_position", 0x21, MIP_FIELD_AIDING_ECEF_POSITION, 1},                               /* 123 */
-    {"llh_position", 0x22, MIP_FIELD_AIDING_LLH_POSITION, 1},                                 /* 124 */
-    {"height_above_ellipsoid", 0x23, MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},             /* 125 */
-    {"ecef_velocity", 0x28, MIP_FIELD_AIDING_ECEF_VELOCITY, 1},                               /* 126 */
-    {"ned_velocity", 0x29, MIP_FIELD_AIDING_NED_VELOCITY, 1},                                 /* 127 */
-    {"body_frame_velocity", 0x2A, MIP_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},                   /* 128 */
-    {"true_heading", 0x31, MIP_FIELD_AIDING_TRUE_HEADING, 1},                                 /* 129 */
-    {"magnetic_field", 0x32, MIP_FIELD_AIDING_MAGNETIC_FIELD, 1},                             /* 130 */
-    {"pressure", 0x33, MIP_FIELD_AIDING_PRESSURE, 1},                                         /* 131 */
-    {"communication_mode", 0x10, MIP_FIELD_SYSTEM_COMMUNICATION_MODE, 1},                     /* 132 */
-    {"communication_mode_response", 0x90, MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},   /* 133 */
-    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 134 */
-    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 135 */
-    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 136 */
+     MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE, 1},                          /* 189 */
+    {"receiver_info", 0x01, MIP_FIELD_GNSS_RECEIVER_INFO, 1},                                 /* 190 */
+    {"receiver_info_response", 0x81, MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},               /* 191 */
+    {"signal_configuration", 0x02, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},                   /* 192 */
+    {"signal_configuration_response", 0x82, MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1}, /* 193 */
+    {"spartn_configuration", 0x20, MIP_FIELD_GNSS_SPARTN_CONFIGURATION, 1},                   /* 194 */
+    {"spartn_configuration_response", 0xA0, MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1}, /* 195 */
+    {"frame_config", 0x01, MIP_FIELD_AIDING_FRAME_CONFIG, 1},                                 /* 196 */
+    {"frame_config_response", 0x81, MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},               /* 197 */
+    {"echo_control", 0x1F, MIP_FIELD_AIDING_ECHO_CONTROL, 1},                                 /* 198 */
+    {"echo_control_response", 0x9F, MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},               /* 199 */
+    {"ecef_position", 0x21, MIP_FIELD_AIDING_ECEF_POSITION, 1},                               /* 200 */
+    {"llh_position", 0x22, MIP_FIELD_AIDING_LLH_POSITION, 1},                                 /* 201 */
+    {"height_above_ellipsoid", 0x23, MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},             /* 202 */
+    {"ecef_velocity", 0x28, MIP_FIELD_AIDING_ECEF_VELOCITY, 1},                               /* 203 */
+    {"ned_velocity", 0x29, MIP_FIELD_AIDING_NED_VELOCITY, 1},                                 /* 204 */
+    {"body_frame_velocity", 0x2A, MIP_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},                   /* 205 */
+    {"true_heading", 0x31, MIP_FIELD_AIDING_TRUE_HEADING, 1},                                 /* 206 */
+    {"magnetic_field", 0x32, MIP_FIELD_AIDING_MAGNETIC_FIELD, 1},                             /* 207 */
+    {"pressure", 0x33, MIP_FIELD_AIDING_PRESSURE, 1},                                         /* 208 */
+    {"communication_mode", 0x10, MIP_FIELD_SYSTEM_COMMUNICATION_MODE, 1},                     /* 209 */
+    {"communication_mode_response", 0x90, MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},   /* 210 */
+    {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 211 */
+    {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 212 */
+    {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 213 */
 };
 
 const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
@@ -465,245 +662,399 @@ static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *se
             return &k_fields[28]; /* event_action_config */
         case 0xB9:
             return &k_fields[29]; /* event_action_config_response */
+        case 0x30:
+            return &k_fields[30]; /* device_startup_settings */
+        case 0x31:
+            return &k_fields[31]; /* sensor_to_vehicle_euler */
+        case 0xB1:
+            return &k_fields[32]; /* sensor_to_vehicle_euler_response */
+        case 0x32:
+            return &k_fields[33]; /* sensor_to_vehicle_quaternion */
+        case 0xB2:
+            return &k_fields[34]; /* sensor_to_vehicle_quaternion_response */
+        case 0x33:
+            return &k_fields[35]; /* sensor_to_vehicle_dcm */
+        case 0xB3:
+            return &k_fields[36]; /* sensor_to_vehicle_dcm_response */
+        case 0x37:
+            return &k_fields[37]; /* accel_bias */
+        case 0x9A:
+            return &k_fields[38]; /* accel_bias_response */
+        case 0x38:
+            return &k_fields[39]; /* gyro_bias */
+        case 0x9B:
+            return &k_fields[40]; /* gyro_bias_response */
+        case 0x39:
+            return &k_fields[41]; /* capture_gyro_bias */
+        case 0x3A:
+            return &k_fields[42]; /* mag_hard_iron_offset */
+        case 0x9C:
+            return &k_fields[43]; /* mag_hard_iron_offset_response */
+        case 0x3B:
+            return &k_fields[44]; /* mag_soft_iron_matrix */
+        case 0x9D:
+            return &k_fields[45]; /* mag_soft_iron_matrix_response */
+        case 0x3E:
+            return &k_fields[46]; /* coning_sculling_enable */
+        case 0x9E:
+            return &k_fields[47]; /* coning_sculling_enable_response */
+        case 0x40:
+            return &k_fields[48]; /* uart_baudrate */
+        case 0x87:
+            return &k_fields[49]; /* uart_baudrate_response */
+        case 0x41:
+            return &k_fields[50]; /* gpio_config */
+        case 0xC1:
+            return &k_fields[51]; /* gpio_config_response */
+        case 0x42:
+            return &k_fields[52]; /* gpio_state */
+        case 0xC2:
+            return &k_fields[53]; /* gpio_state_response */
+        case 0x43:
+            return &k_fields[54]; /* odometer_config */
+        case 0xC3:
+            return &k_fields[55]; /* odometer_config_response */
+        case 0x50:
+            return &k_fields[56]; /* advanced_lowpass_filter */
+        case 0x8B:
+            return &k_fields[57]; /* advanced_lowpass_filter_response */
+        case 0x51:
+            return &k_fields[58]; /* complementary_filter */
+        case 0x97:
+            return &k_fields[59]; /* complementary_filter_response */
+        case 0x52:
+            return &k_fields[60]; /* sensor_range */
+        case 0xD2:
+            return &k_fields[61]; /* sensor_range_response */
+        case 0x53:
+            return &k_fields[62]; /* get_calibrated_sensor_ranges */
+        case 0xD3:
+            return &k_fields[63]; /* calibrated_sensor_ranges */
+        case 0x54:
+            return &k_fields[64]; /* lowpass_filter */
+        case 0xD4:
+            return &k_fields[65]; /* lowpass_filter_response */
+        case 0x01:
+            return &k_fields[66]; /* poll_imu_data */
+        case 0x02:
+            return &k_fields[67]; /* poll_gnss_data */
+        case 0x03:
+            return &k_fields[68]; /* poll_filter_data */
+        case 0x04:
+            return &k_fields[69]; /* poll_nmea_data */
+        case 0x0D:
+            return &k_fields[70]; /* poll_data */
+        case 0x06:
+            return &k_fields[71]; /* get_imu_base_rate */
+        case 0x83:
+            return &k_fields[72]; /* imu_base_rate */
+        case 0x07:
+            return &k_fields[73]; /* get_gnss_base_rate */
+        case 0x84:
+            return &k_fields[74]; /* gnss_base_rate */
+        case 0x0B:
+            return &k_fields[75]; /* get_filter_base_rate */
+        case 0x8A:
+            return &k_fields[76]; /* filter_base_rate */
+        case 0x0E:
+            return &k_fields[77]; /* get_base_rate */
+        case 0x8E:
+            return &k_fields[78]; /* base_rate */
+        case 0x08:
+            return &k_fields[79]; /* imu_message_format */
+        case 0x80:
+            return &k_fields[80]; /* imu_message_format_response */
+        case 0x09:
+            return &k_fields[81]; /* gnss_message_format */
+        case 0x81:
+            return &k_fields[82]; /* gnss_message_format_response */
+        case 0x0A:
+            return &k_fields[83]; /* filter_message_format */
+        case 0x82:
+            return &k_fields[84]; /* filter_message_format_response */
+        case 0x0C:
+            return &k_fields[85]; /* nmea_message_format */
+        case 0x8C:
+            return &k_fields[86]; /* nmea_message_format_response */
+        case 0x0F:
+            return &k_fields[87]; /* message_format */
+        case 0x8F:
+            return &k_fields[88]; /* message_format_response */
+        case 0x10:
+            return &k_fields[89]; /* factory_streaming */
+        case 0x11:
+            return &k_fields[90]; /* data_stream_control */
+        case 0x85:
+            return &k_fields[91]; /* data_stream_control_response */
+        case 0x20:
+            return &k_fields[92]; /* raw_rtcm_message */
+        case 0x21:
+            return &k_fields[93]; /* gnss_constellation_settings */
+        case 0xA0:
+            return &k_fields[94]; /* gnss_constellation_settings_response */
+        case 0x22:
+            return &k_fields[95]; /* gnss_sbas_settings */
+        case 0xA1:
+            return &k_fields[96]; /* gnss_sbas_settings_response */
+        case 0x23:
+            return &k_fields[97]; /* gnss_assisted_fix_control */
+        case 0xA2:
+            return &k_fields[98]; /* gnss_assisted_fix_control_response */
+        case 0x24:
+            return &k_fields[99]; /* gnss_assist_time_update */
+        case 0xA3:
+            return &k_fields[100]; /* gnss_assist_time_update_response */
+        case 0x28:
+            return &k_fields[101]; /* pps_source */
+        case 0xA8:
+            return &k_fields[102]; /* pps_source_response */
+        case 0x2A:
+            return &k_fields[103]; /* get_supported_events */
+        case 0xB4:
+            return &k_fields[104]; /* supported_events */
+        case 0x64:
+            return &k_fields[105]; /* device_status */
+        case 0x90:
+            return &k_fields[106]; /* device_status_response */
         default:
             return NULL;
         }
     case 0x0D: /* filter */
         switch (descriptor) {
         case 0x01:
-            return &k_fields[30]; /* reset_filter */
+            return &k_fields[107]; /* reset_filter */
         case 0x02:
-            return &k_fields[31]; /* set_initial_attitude */
+            return &k_fields[108]; /* set_initial_attitude */
         case 0x03:
-            return &k_fields[32]; /* set_initial_heading */
+            return &k_fields[109]; /* set_initial_heading */
         case 0x05:
-            return &k_fields[33]; /* run_filter */
+            return &k_fields[110]; /* run_filter */
         case 0x10:
-            return &k_fields[34]; /* vehicle_dynamics_mode */
+            return &k_fields[111]; /* vehicle_dynamics_mode */
         case 0x80:
-            return &k_fields[35]; /* vehicle_dynamics_mode_response */
+            return &k_fields[112]; /* vehicle_dynamics_mode_response */
         case 0x11:
-            return &k_fields[36]; /* sensor_to_vehicle_transform */
+            return &k_fields[113]; /* sensor_to_vehicle_transform */
         case 0x81:
-            return &k_fields[37]; /* sensor_to_vehicle_transform_response */
+            return &k_fields[114]; /* sensor_to_vehicle_transform_response */
         case 0x12:
-            return &k_fields[38]; /* sensor_to_vehicle_offset */
+            return &k_fields[115]; /* sensor_to_vehicle_offset */
         case 0x82:
-            return &k_fields[39]; /* sensor_to_vehicle_offset_response */
+            return &k_fields[116]; /* sensor_to_vehicle_offset_response */
         case 0x13:
-            return &k_fields[40]; /* antenna_offset */
+            return &k_fields[117]; /* antenna_offset */
         case 0x83:
-            return &k_fields[41]; /* antenna_offset_response */
+            return &k_fields[118]; /* antenna_offset_response */
         case 0x14:
-            return &k_fields[42]; /* estimation_control */
+            return &k_fields[119]; /* estimation_control */
         case 0x84:
-            return &k_fields[43]; /* estimation_control_response */
+            return &k_fields[120]; /* estimation_control_response */
         case 0x15:
-            return &k_fields[44]; /* gnss_source_control */
+            return &k_fields[121]; /* gnss_source_control */
         case 0x86:
-            return &k_fields[45]; /* gnss_source_control_response */
+            return &k_fields[122]; /* gnss_source_control_response */
         case 0x16:
-            return &k_fields[46]; /* external_gnss_update */
+            return &k_fields[123]; /* external_gnss_update */
         case 0x17:
-            return &k_fields[47]; /* external_heading_update */
+            return &k_fields[124]; /* external_heading_update */
         case 0x18:
-            return &k_fields[48]; /* heading_update_control */
+            return &k_fields[125]; /* heading_update_control */
         case 0x87:
-            return &k_fields[49]; /* heading_update_control_response */
+            return &k_fields[126]; /* heading_update_control_response */
         case 0x19:
-            return &k_fields[50]; /* auto_init_control */
+            return &k_fields[127]; /* auto_init_control */
         case 0x88:
-            return &k_fields[51]; /* auto_init_control_response */
+            return &k_fields[128]; /* auto_init_control_response */
         case 0x1A:
-            return &k_fields[52]; /* accel_noise */
+            return &k_fields[129]; /* accel_noise */
         case 0x89:
-            return &k_fields[53]; /* accel_noise_response */
+            return &k_fields[130]; /* accel_noise_response */
         case 0x1B:
-            return &k_fields[54]; /* gyro_noise */
+            return &k_fields[131]; /* gyro_noise */
         case 0x8A:
-            return &k_fields[55]; /* gyro_noise_response */
+            return &k_fields[132]; /* gyro_noise_response */
         case 0x1C:
-            return &k_fields[56]; /* accel_bias_model */
+            return &k_fields[133]; /* accel_bias_model */
         case 0x8B:
-            return &k_fields[57]; /* accel_bias_model_response */
+            return &k_fields[134]; /* accel_bias_model_response */
         case 0x1D:
-            return &k_fields[58]; /* gyro_bias_model */
+            return &k_fields[135]; /* gyro_bias_model */
         case 0x8C:
-            return &k_fields[59]; /* gyro_bias_model_response */
+            return &k_fields[136]; /* gyro_bias_model_response */
         case 0x1E:
-            return &k_fields[60]; /* zupt_control */
+            return &k_fields[137]; /* zupt_control */
         case 0x8D:
-            return &k_fields[61]; /* zupt_control_response */
+            return &k_fields[138]; /* zupt_control_response */
         case 0x1F:
-            return &k_fields[62]; /* external_heading_update_with_time */
+            return &k_fields[139]; /* external_heading_update_with_time */
         case 0x20:
-            return &k_fields[63]; /* zero_angular_rate_update_control */
+            return &k_fields[140]; /* zero_angular_rate_update_control */
         case 0x8E:
-            return &k_fields[64]; /* zero_angular_rate_update_control_response */
+            return &k_fields[141]; /* zero_angular_rate_update_control_response */
         case 0x21:
-            return &k_fields[65]; /* tare_orientation */
+            return &k_fields[142]; /* tare_orientation */
         case 0x22:
-            return &k_fields[66]; /* commanded_zupt */
+            return &k_fields[143]; /* commanded_zupt */
         case 0x23:
-            return &k_fields[67]; /* commanded_zero_angular_rate_update */
+            return &k_fields[144]; /* commanded_zero_angular_rate_update */
         case 0x27:
-            return &k_fields[68]; /* mag_capture_auto_calibration */
+            return &k_fields[145]; /* mag_capture_auto_calibration */
         case 0x28:
-            return &k_fields[69]; /* gravity_noise_std_dev */
+            return &k_fields[146]; /* gravity_noise_std_dev */
         case 0x93:
-            return &k_fields[70]; /* gravity_noise_std_dev_response */
+            return &k_fields[147]; /* gravity_noise_std_dev_response */
         case 0x29:
-            return &k_fields[71]; /* pressure_altitude_noise_std_dev */
+            return &k_fields[148]; /* pressure_altitude_noise_std_dev */
         case 0x94:
-            return &k_fields[72]; /* pressure_altitude_noise_std_dev_response */
+            return &k_fields[149]; /* pressure_altitude_noise_std_dev_response */
         case 0x2B:
-            return &k_fields[73]; /* hard_iron_offset_noise */
+            return &k_fields[150]; /* hard_iron_offset_noise */
         case 0x96:
-            return &k_fields[74]; /* hard_iron_offset_noise_response */
+            return &k_fields[151]; /* hard_iron_offset_noise_response */
         case 0x2C:
-            return &k_fields[75]; /* soft_iron_matrix_noise */
+            return &k_fields[152]; /* soft_iron_matrix_noise */
         case 0x97:
-            return &k_fields[76]; /* soft_iron_matrix_noise_response */
+            return &k_fields[153]; /* soft_iron_matrix_noise_response */
         case 0x42:
-            return &k_fields[77]; /* mag_noise_std_dev */
+            return &k_fields[154]; /* mag_noise_std_dev */
         case 0xB1:
-            return &k_fields[78]; /* mag_noise_std_dev_response */
+            return &k_fields[155]; /* mag_noise_std_dev_response */
         case 0x43:
-            return &k_fields[79]; /* declination_source */
+            return &k_fields[156]; /* declination_source */
         case 0xB2:
-            return &k_fields[80]; /* declination_source_response */
+            return &k_fields[157]; /* declination_source_response */
         case 0x44:
-            return &k_fields[81]; /* gravity_magnitude_adaptive_measurement */
+            return &k_fields[158]; /* gravity_magnitude_adaptive_measurement */
         case 0xB3:
-            return &k_fields[82]; /* gravity_magnitude_adaptive_measurement_response */
+            return &k_fields[159]; /* gravity_magnitude_adaptive_measurement_response */
         case 0x45:
-            return &k_fields[83]; /* mag_magnitude_adaptive_measurement */
+            return &k_fields[160]; /* mag_magnitude_adaptive_measurement */
         case 0xB4:
-            return &k_fields[84]; /* mag_magnitude_adaptive_measurement_response */
+            return &k_fields[161]; /* mag_magnitude_adaptive_measurement_response */
         case 0x46:
-            return &k_fields[85]; /* mag_dip_angle_adaptive_measurement */
+            return &k_fields[162]; /* mag_dip_angle_adaptive_measurement */
         case 0xB5:
-            return &k_fields[86]; /* mag_dip_angle_adaptive_measurement_response */
+            return &k_fields[163]; /* mag_dip_angle_adaptive_measurement_response */
         case 0x47:
-            return &k_fields[87]; /* altitude_aiding_control */
+            return &k_fields[164]; /* altitude_aiding_control */
         case 0xB7:
-            return &k_fields[88]; /* altitude_aiding_control_response */
+            return &k_fields[165]; /* altitude_aiding_control_response */
         case 0x4B:
-            return &k_fields[89]; /* pitch_roll_aiding_control */
+            return &k_fields[166]; /* pitch_roll_aiding_control */
         case 0xBB:
-            return &k_fields[90]; /* pitch_roll_aiding_control_response */
+            return &k_fields[167]; /* pitch_roll_aiding_control_response */
         case 0x4C:
-            return &k_fields[91]; /* inclination_source */
+            return &k_fields[168]; /* inclination_source */
         case 0xBC:
-            return &k_fields[92]; /* inclination_source_response */
+            return &k_fields[169]; /* inclination_source_response */
         case 0x4D:
-            return &k_fields[93]; /* magnetic_field_magnitude_source */
+            return &k_fields[170]; /* magnetic_field_magnitude_source */
         case 0xBD:
-            return &k_fields[94]; /* magnetic_field_magnitude_source_response */
+            return &k_fields[171]; /* magnetic_field_magnitude_source_response */
         case 0x50:
-            return &k_fields[95]; /* aiding_measurement_control */
+            return &k_fields[172]; /* aiding_measurement_control */
         case 0xD0:
-            return &k_fields[96]; /* aiding_measurement_control_response */
+            return &k_fields[173]; /* aiding_measurement_control_response */
         case 0x52:
-            return &k_fields[97]; /* initialization_configuration */
+            return &k_fields[174]; /* initialization_configuration */
         case 0xD2:
-            return &k_fields[98]; /* initialization_configuration_response */
+            return &k_fields[175]; /* initialization_configuration_response */
         case 0x53:
-            return &k_fields[99]; /* adaptive_filter_control */
+            return &k_fields[176]; /* adaptive_filter_control */
         case 0xD3:
-            return &k_fields[100]; /* adaptive_filter_control_response */
+            return &k_fields[177]; /* adaptive_filter_control_response */
         case 0x54:
-            return &k_fields[101]; /* multi_antenna_offset */
+            return &k_fields[178]; /* multi_antenna_offset */
         case 0xD4:
-            return &k_fields[102]; /* multi_antenna_offset_response */
+            return &k_fields[179]; /* multi_antenna_offset_response */
         case 0x55:
-            return &k_fields[103]; /* relative_position_configuration */
+            return &k_fields[180]; /* relative_position_configuration */
         case 0xD5:
-            return &k_fields[104]; /* relative_position_configuration_response */
+            return &k_fields[181]; /* relative_position_configuration_response */
         case 0x56:
-            return &k_fields[105]; /* reference_point_lever_arm */
+            return &k_fields[182]; /* reference_point_lever_arm */
         case 0xD6:
-            return &k_fields[106]; /* reference_point_lever_arm_response */
+            return &k_fields[183]; /* reference_point_lever_arm_response */
         case 0x61:
-            return &k_fields[107]; /* speed_lever_arm */
+            return &k_fields[184]; /* speed_lever_arm */
         case 0xE1:
-            return &k_fields[108]; /* speed_lever_arm_response */
+            return &k_fields[185]; /* speed_lever_arm_response */
         case 0x63:
-            return &k_fields[109]; /* wheeled_vehicle_constraint_control */
+            return &k_fields[186]; /* wheeled_vehicle_constraint_control */
         case 0xE3:
-            return &k_fields[110]; /* wheeled_vehicle_constraint_control_response */
+            return &k_fields[187]; /* wheeled_vehicle_constraint_control_response */
         case 0x64:
-            return &k_fields[111]; /* gnss_antenna_calibration_control */
+            return &k_fields[188]; /* gnss_antenna_calibration_control */
         case 0xE4:
-            return &k_fields[112]; /* gnss_antenna_calibration_control_response */
+            return &k_fields[189]; /* gnss_antenna_calibration_control_response */
         default:
             return NULL;
         }
     case 0x0E: /* gnss */
         switch (descriptor) {
         case 0x01:
-            return &k_fields[113]; /* receiver_info */
+            return &k_fields[190]; /* receiver_info */
         case 0x81:
-            return &k_fields[114]; /* receiver_info_response */
+            return &k_fields[191]; /* receiver_info_response */
         case 0x02:
-            return &k_fields[115]; /* signal_configuration */
+            return &k_fields[192]; /* signal_configuration */
         case 0x82:
-            return &k_fields[116]; /* signal_configuration_response */
+            return &k_fields[193]; /* signal_configuration_response */
         case 0x20:
-            return &k_fields[117]; /* spartn_configuration */
+            return &k_fields[194]; /* spartn_configuration */
         case 0xA0:
-            return &k_fields[118]; /* spartn_configuration_response */
+            return &k_fields[195]; /* spartn_configuration_response */
         default:
             return NULL;
         }
     case 0x13: /* aiding */
         switch (descriptor) {
         case 0x01:
-            return &k_fields[119]; /* frame_config */
+            return &k_fields[196]; /* frame_config */
         case 0x81:
-            return &k_fields[120]; /* frame_config_response */
+            return &k_fields[197]; /* frame_config_response */
         case 0x1F:
-            return &k_fields[121]; /* echo_control */
+            return &k_fields[198]; /* echo_control */
         case 0x9F:
-            return &k_fields[122]; /* echo_control_response */
+            return &k_fields[199]; /* echo_control_response */
         case 0x21:
-            return &k_fields[123]; /* ecef_position */
+            return &k_fields[200]; /* ecef_position */
         case 0x22:
-            return &k_fields[124]; /* llh_position */
+            return &k_fields[201]; /* llh_position */
         case 0x23:
-            return &k_fields[125]; /* height_above_ellipsoid */
+            return &k_fields[202]; /* height_above_ellipsoid */
         case 0x28:
-            return &k_fields[126]; /* ecef_velocity */
+            return &k_fields[203]; /* ecef_velocity */
         case 0x29:
-            return &k_fields[127]; /* ned_velocity */
+            return &k_fields[204]; /* ned_velocity */
         case 0x2A:
-            return &k_fields[128]; /* body_frame_velocity */
+            return &k_fields[205]; /* body_frame_velocity */
         case 0x31:
-            return &k_fields[129]; /* true_heading */
+            return &k_fields[206]; /* true_heading */
         case 0x32:
-            return &k_fields[130]; /* magnetic_field */
+            return &k_fields[207]; /* magnetic_field */
         case 0x33:
-            return &k_fields[131]; /* pressure */
+            return &k_fields[208]; /* pressure */
         default:
             return NULL;
         }
     case 0x7F: /* system */
         switch (descriptor) {
         case 0x10:
-            return &k_fields[132]; /* communication_mode */
+            return &k_fields[209]; /* communication_mode */
         case 0x90:
-            return &k_fields[133]; /* communication_mode_response */
+            return &k_fields[210]; /* communication_mode_response */
         default:
             return NULL;
         }
     case 0x80: /* sensor */
         switch (descriptor) {
         case 0x04:
-            return &k_fields[134]; /* scaled_accel */
+            return &k_fields[211]; /* scaled_accel */
         case 0x05:
-            return &k_fields[135]; /* scaled_gyro */
+            return &k_fields[212]; /* scaled_gyro */
         case 0x06:
-            return &k_fields[136]; /* scaled_mag */
+            return &k_fields[213]; /* scaled_mag */
         default:
             return NULL;
         }
@@ -817,6 +1168,217 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         return mip_threedm_event_action_config_response_decode(
             data, len, &out->u.threedm_event_action_config_response, err);
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45:
+        return mip_threedm_device_startup_settings_gx5_45_decode(
+            data, len, &out->u.threedm_device_startup_settings_gx5_45, err);
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_CV7_INS:
+        return mip_threedm_device_startup_settings_cv7_ins_decode(
+            data, len, &out->u.threedm_device_startup_settings_cv7_ins, err);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER:
+        return mip_threedm_sensor_to_vehicle_euler_decode(data, len, &out->u.threedm_sensor_to_vehicle_euler,
+                                                          err);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_euler_response_decode(
+            data, len, &out->u.threedm_sensor_to_vehicle_euler_response, err);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION:
+        return mip_threedm_sensor_to_vehicle_quaternion_decode(
+            data, len, &out->u.threedm_sensor_to_vehicle_quaternion, err);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_quaternion_response_decode(
+            data, len, &out->u.threedm_sensor_to_vehicle_quaternion_response, err);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM:
+        return mip_threedm_sensor_to_vehicle_dcm_decode(data, len, &out->u.threedm_sensor_to_vehicle_dcm,
+                                                        err);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_dcm_response_decode(
+            data, len, &out->u.threedm_sensor_to_vehicle_dcm_response, err);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45:
+        return mip_threedm_accel_bias_gx5_45_decode(data, len, &out->u.threedm_accel_bias_gx5_45, err);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_CV7_INS:
+        return mip_threedm_accel_bias_cv7_ins_decode(data, len, &out->u.threedm_accel_bias_cv7_ins, err);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE:
+        return mip_threedm_accel_bias_response_decode(data, len, &out->u.threedm_accel_bias_response, err);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45:
+        return mip_threedm_gyro_bias_gx5_45_decode(data, len, &out->u.threedm_gyro_bias_gx5_45, err);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_CV7_INS:
+        return mip_threedm_gyro_bias_cv7_ins_decode(data, len, &out->u.threedm_gyro_bias_cv7_ins, err);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE:
+        return mip_threedm_gyro_bias_response_decode(data, len, &out->u.threedm_gyro_bias_response, err);
+    case MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS:
+        return mip_threedm_capture_gyro_bias_decode(data, len, &out->u.threedm_capture_gyro_bias, err);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45:
+        return mip_threedm_mag_hard_iron_offset_gx5_45_decode(
+            data, len, &out->u.threedm_mag_hard_iron_offset_gx5_45, err);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_CV7_INS:
+        return mip_threedm_mag_hard_iron_offset_cv7_ins_decode(
+            data, len, &out->u.threedm_mag_hard_iron_offset_cv7_ins, err);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE:
+        return mip_threedm_mag_hard_iron_offset_response_decode(
+            data, len, &out->u.threedm_mag_hard_iron_offset_response, err);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45:
+        return mip_threedm_mag_soft_iron_matrix_gx5_45_decode(
+            data, len, &out->u.threedm_mag_soft_iron_matrix_gx5_45, err);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_CV7_INS:
+        return mip_threedm_mag_soft_iron_matrix_cv7_ins_decode(
+            data, len, &out->u.threedm_mag_soft_iron_matrix_cv7_ins, err);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE:
+        return mip_threedm_mag_soft_iron_matrix_response_decode(
+            data, len, &out->u.threedm_mag_soft_iron_matrix_response, err);
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE:
+        return mip_threedm_coning_sculling_enable_decode(data, len, &out->u.threedm_coning_sculling_enable,
+                                                         err);
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE:
+        return mip_threedm_coning_sculling_enable_response_decode(
+            data, len, &out->u.threedm_coning_sculling_enable_response, err);
+    case MIP_FIELD_THREEDM_UART_BAUDRATE:
+        return mip_threedm_uart_baudrate_decode(data, len, &out->u.threedm_uart_baudrate, err);
+    case MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE:
+        return mip_threedm_uart_baudrate_response_decode(data, len, &out->u.threedm_uart_baudrate_response,
+                                                         err);
+    case MIP_FIELD_THREEDM_GPIO_CONFIG:
+        return mip_threedm_gpio_config_decode(data, len, &out->u.threedm_gpio_config, err);
+    case MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE:
+        return mip_threedm_gpio_config_response_decode(data, len, &out->u.threedm_gpio_config_response, err);
+    case MIP_FIELD_THREEDM_GPIO_STATE:
+        return mip_threedm_gpio_state_decode(data, len, &out->u.threedm_gpio_state, err);
+    case MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE:
+        return mip_threedm_gpio_state_response_decode(data, len, &out->u.threedm_gpio_state_response, err);
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG:
+        return mip_threedm_odometer_config_decode(data, len, &out->u.threedm_odometer_config, err);
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE:
+        return mip_threedm_odometer_config_response_decode(data, len,
+                                                           &out->u.threedm_odometer_config_response, err);
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER:
+        return mip_threedm_advanced_lowpass_filter_decode(data, len, &out->u.threedm_advanced_lowpass_filter,
+                                                          err);
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE:
+        return mip_threedm_advanced_lowpass_filter_response_decode(
+            data, len, &out->u.threedm_advanced_lowpass_filter_response, err);
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER:
+        return mip_threedm_complementary_filter_decode(data, len, &out->u.threedm_complementary_filter, err);
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE:
+        return mip_threedm_complementary_filter_response_decode(
+            data, len, &out->u.threedm_complementary_filter_response, err);
+    case MIP_FIELD_THREEDM_SENSOR_RANGE:
+        return mip_threedm_sensor_range_decode(data, len, &out->u.threedm_sensor_range, err);
+    case MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE:
+        return mip_threedm_sensor_range_response_decode(data, len, &out->u.threedm_sensor_range_response,
+                                                        err);
+    case MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES:
+        return mip_threedm_get_calibrated_sensor_ranges_decode(
+            data, len, &out->u.threedm_get_calibrated_sensor_ranges, err);
+    case MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES:
+        return mip_threedm_calibrated_sensor_ranges_decode(data, len,
+                                                           &out->u.threedm_calibrated_sensor_ranges, err);
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER:
+        return mip_threedm_lowpass_filter_decode(data, len, &out->u.threedm_lowpass_filter, err);
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE:
+        return mip_threedm_lowpass_filter_response_decode(data, len, &out->u.threedm_lowpass_filter_response,
+                                                          err);
+    case MIP_FIELD_THREEDM_POLL_IMU_DATA:
+        return mip_threedm_poll_imu_data_decode(data, len, &out->u.threedm_poll_imu_data, err);
+    case MIP_FIELD_THREEDM_POLL_GNSS_DATA:
+        return mip_threedm_poll_gnss_data_decode(data, len, &out->u.threedm_poll_gnss_data, err);
+    case MIP_FIELD_THREEDM_POLL_FILTER_DATA:
+        return mip_threedm_poll_filter_data_decode(data, len, &out->u.threedm_poll_filter_data, err);
+    case MIP_FIELD_THREEDM_POLL_NMEA_DATA:
+        return mip_threedm_poll_nmea_data_decode(data, len, &out->u.threedm_poll_nmea_data, err);
+    case MIP_FIELD_THREEDM_POLL_DATA:
+        return mip_threedm_poll_data_decode(data, len, &out->u.threedm_poll_data, err);
+    case MIP_FIELD_THREEDM_GET_IMU_BASE_RATE:
+        return mip_threedm_get_imu_base_rate_decode(data, len, &out->u.threedm_get_imu_base_rate, err);
+    case MIP_FIELD_THREEDM_IMU_BASE_RATE:
+        return mip_threedm_imu_base_rate_decode(data, len, &out->u.threedm_imu_base_rate, err);
+    case MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE:
+        return mip_threedm_get_gnss_base_rate_decode(data, len, &out->u.threedm_get_gnss_base_rate, err);
+    case MIP_FIELD_THREEDM_GNSS_BASE_RATE:
+        return mip_threedm_gnss_base_rate_decode(data, len, &out->u.threedm_gnss_base_rate, err);
+    case MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE:
+        return mip_threedm_get_filter_base_rate_decode(data, len, &out->u.threedm_get_filter_base_rate, err);
+    case MIP_FIELD_THREEDM_FILTER_BASE_RATE:
+        return mip_threedm_filter_base_rate_decode(data, len, &out->u.threedm_filter_base_rate, err);
+    case MIP_FIELD_THREEDM_GET_BASE_RATE:
+        return mip_threedm_get_base_rate_decode(data, len, &out->u.threedm_get_base_rate, err);
+    case MIP_FIELD_THREEDM_BASE_RATE:
+        return mip_threedm_base_rate_decode(data, len, &out->u.threedm_base_rate, err);
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT:
+        return mip_threedm_imu_message_format_decode(data, len, &out->u.threedm_imu_message_format, err);
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_imu_message_format_response_decode(
+            data, len, &out->u.threedm_imu_message_format_response, err);
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT:
+        return mip_threedm_gnss_message_format_decode(data, len, &out->u.threedm_gnss_message_format, err);
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_gnss_message_format_response_decode(
+            data, len, &out->u.threedm_gnss_message_format_response, err);
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT:
+        return mip_threedm_filter_message_format_decode(data, len, &out->u.threedm_filter_message_format,
+                                                        err);
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_filter_message_format_response_decode(
+            data, len, &out->u.threedm_filter_message_format_response, err);
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT:
+        return mip_threedm_nmea_message_format_decode(data, len, &out->u.threedm_nmea_message_format, err);
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_nmea_message_format_response_decode(
+            data, len, &out->u.threedm_nmea_message_format_response, err);
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT:
+        return mip_threedm_message_format_decode(data, len, &out->u.threedm_message_format, err);
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_message_format_response_decode(data, len, &out->u.threedm_message_format_response,
+                                                          err);
+    case MIP_FIELD_THREEDM_FACTORY_STREAMING:
+        return mip_threedm_factory_streaming_decode(data, len, &out->u.threedm_factory_streaming, err);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45:
+        return mip_threedm_data_stream_control_gx5_45_decode(data, len,
+                                                             &out->u.threedm_data_stream_control_gx5_45, err);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_CV7_INS:
+        return mip_threedm_data_stream_control_cv7_ins_decode(
+            data, len, &out->u.threedm_data_stream_control_cv7_ins, err);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45:
+        return mip_threedm_data_stream_control_response_gx5_45_decode(
+            data, len, &out->u.threedm_data_stream_control_response_gx5_45, err);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_CV7_INS:
+        return mip_threedm_data_stream_control_response_cv7_ins_decode(
+            data, len, &out->u.threedm_data_stream_control_response_cv7_ins, err);
+    case MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE:
+        return mip_threedm_raw_rtcm_message_decode(data, len, &out->u.threedm_raw_rtcm_message, err);
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS:
+        return mip_threedm_gnss_constellation_settings_decode(
+            data, len, &out->u.threedm_gnss_constellation_settings, err);
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE:
+        return mip_threedm_gnss_constellation_settings_response_decode(
+            data, len, &out->u.threedm_gnss_constellation_settings_response, err);
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS:
+        return mip_threedm_gnss_sbas_settings_decode(data, len, &out->u.threedm_gnss_sbas_settings, err);
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE:
+        return mip_threedm_gnss_sbas_settings_response_decode(
+            data, len, &out->u.threedm_gnss_sbas_settings_response, err);
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL:
+        return mip_threedm_gnss_assisted_fix_control_decode(data, len,
+                                                            &out->u.threedm_gnss_assisted_fix_control, err);
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE:
+        return mip_threedm_gnss_assisted_fix_control_response_decode(
+            data, len, &out->u.threedm_gnss_assisted_fix_control_response, err);
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE:
+        return mip_threedm_gnss_assist_time_update_decode(data, len, &out->u.threedm_gnss_assist_time_update,
+                                                          err);
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE:
+        return mip_threedm_gnss_assist_time_update_response_decode(
+            data, len, &out->u.threedm_gnss_assist_time_update_response, err);
+    case MIP_FIELD_THREEDM_PPS_SOURCE:
+        return mip_threedm_pps_source_decode(data, len, &out->u.threedm_pps_source, err);
+    case MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE:
+        return mip_threedm_pps_source_response_decode(data, len, &out->u.threedm_pps_source_response, err);
+    case MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS:
+        return mip_threedm_get_supported_events_decode(data, len, &out->u.threedm_get_supported_events, err);
+    case MIP_FIELD_THREEDM_SUPPORTED_EVENTS:
+        return mip_threedm_supported_events_decode(data, len, &out->u.threedm_supported_events, err);
+    case MIP_FIELD_THREEDM_DEVICE_STATUS:
+        return mip_threedm_device_status_decode(data, len, &out->u.threedm_device_status, err);
+    case MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE:
+        return mip_threedm_device_status_response_decode(data, len, &out->u.threedm_device_status_response,
+                                                         err);
     case MIP_FIELD_FILTER_RESET_FILTER:
         return mip_filter_reset_filter_decode(data, len, &out->u.filter_reset_filter, err);
     case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:
@@ -1219,6 +1781,226 @@ mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         return mip_threedm_event_action_config_response_encode(&value->u.threedm_event_action_config_response,
                                                                buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45:
+        return mip_threedm_device_startup_settings_gx5_45_encode(
+            &value->u.threedm_device_startup_settings_gx5_45, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_CV7_INS:
+        return mip_threedm_device_startup_settings_cv7_ins_encode(
+            &value->u.threedm_device_startup_settings_cv7_ins, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER:
+        return mip_threedm_sensor_to_vehicle_euler_encode(&value->u.threedm_sensor_to_vehicle_euler, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_euler_response_encode(
+            &value->u.threedm_sensor_to_vehicle_euler_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION:
+        return mip_threedm_sensor_to_vehicle_quaternion_encode(&value->u.threedm_sensor_to_vehicle_quaternion,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_quaternion_response_encode(
+            &value->u.threedm_sensor_to_vehicle_quaternion_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM:
+        return mip_threedm_sensor_to_vehicle_dcm_encode(&value->u.threedm_sensor_to_vehicle_dcm, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_dcm_response_encode(
+            &value->u.threedm_sensor_to_vehicle_dcm_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45:
+        return mip_threedm_accel_bias_gx5_45_encode(&value->u.threedm_accel_bias_gx5_45, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_CV7_INS:
+        return mip_threedm_accel_bias_cv7_ins_encode(&value->u.threedm_accel_bias_cv7_ins, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE:
+        return mip_threedm_accel_bias_response_encode(&value->u.threedm_accel_bias_response, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45:
+        return mip_threedm_gyro_bias_gx5_45_encode(&value->u.threedm_gyro_bias_gx5_45, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_CV7_INS:
+        return mip_threedm_gyro_bias_cv7_ins_encode(&value->u.threedm_gyro_bias_cv7_ins, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE:
+        return mip_threedm_gyro_bias_response_encode(&value->u.threedm_gyro_bias_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS:
+        return mip_threedm_capture_gyro_bias_encode(&value->u.threedm_capture_gyro_bias, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45:
+        return mip_threedm_mag_hard_iron_offset_gx5_45_encode(&value->u.threedm_mag_hard_iron_offset_gx5_45,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_CV7_INS:
+        return mip_threedm_mag_hard_iron_offset_cv7_ins_encode(&value->u.threedm_mag_hard_iron_offset_cv7_ins,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE:
+        return mip_threedm_mag_hard_iron_offset_response_encode(
+            &value->u.threedm_mag_hard_iron_offset_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45:
+        return mip_threedm_mag_soft_iron_matrix_gx5_45_encode(&value->u.threedm_mag_soft_iron_matrix_gx5_45,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_CV7_INS:
+        return mip_threedm_mag_soft_iron_matrix_cv7_ins_encode(&value->u.threedm_mag_soft_iron_matrix_cv7_ins,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE:
+        return mip_threedm_mag_soft_iron_matrix_response_encode(
+            &value->u.threedm_mag_soft_iron_matrix_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE:
+        return mip_threedm_coning_sculling_enable_encode(&value->u.threedm_coning_sculling_enable, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE:
+        return mip_threedm_coning_sculling_enable_response_encode(
+            &value->u.threedm_coning_sculling_enable_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_UART_BAUDRATE:
+        return mip_threedm_uart_baudrate_encode(&value->u.threedm_uart_baudrate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE:
+        return mip_threedm_uart_baudrate_response_encode(&value->u.threedm_uart_baudrate_response, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_THREEDM_GPIO_CONFIG:
+        return mip_threedm_gpio_config_encode(&value->u.threedm_gpio_config, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE:
+        return mip_threedm_gpio_config_response_encode(&value->u.threedm_gpio_config_response, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_THREEDM_GPIO_STATE:
+        return mip_threedm_gpio_state_encode(&value->u.threedm_gpio_state, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE:
+        return mip_threedm_gpio_state_response_encode(&value->u.threedm_gpio_state_response, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG:
+        return mip_threedm_odometer_config_encode(&value->u.threedm_odometer_config, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE:
+        return mip_threedm_odometer_config_response_encode(&value->u.threedm_odometer_config_response, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER:
+        return mip_threedm_advanced_lowpass_filter_encode(&value->u.threedm_advanced_lowpass_filter, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE:
+        return mip_threedm_advanced_lowpass_filter_response_encode(
+            &value->u.threedm_advanced_lowpass_filter_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER:
+        return mip_threedm_complementary_filter_encode(&value->u.threedm_complementary_filter, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE:
+        return mip_threedm_complementary_filter_response_encode(
+            &value->u.threedm_complementary_filter_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_SENSOR_RANGE:
+        return mip_threedm_sensor_range_encode(&value->u.threedm_sensor_range, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE:
+        return mip_threedm_sensor_range_response_encode(&value->u.threedm_sensor_range_response, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES:
+        return mip_threedm_get_calibrated_sensor_ranges_encode(&value->u.threedm_get_calibrated_sensor_ranges,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES:
+        return mip_threedm_calibrated_sensor_ranges_encode(&value->u.threedm_calibrated_sensor_ranges, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER:
+        return mip_threedm_lowpass_filter_encode(&value->u.threedm_lowpass_filter, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE:
+        return mip_threedm_lowpass_filter_response_encode(&value->u.threedm_lowpass_filter_response, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_THREEDM_POLL_IMU_DATA:
+        return mip_threedm_poll_imu_data_encode(&value->u.threedm_poll_imu_data, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_POLL_GNSS_DATA:
+        return mip_threedm_poll_gnss_data_encode(&value->u.threedm_poll_gnss_data, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_POLL_FILTER_DATA:
+        return mip_threedm_poll_filter_data_encode(&value->u.threedm_poll_filter_data, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_POLL_NMEA_DATA:
+        return mip_threedm_poll_nmea_data_encode(&value->u.threedm_poll_nmea_data, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_POLL_DATA:
+        return mip_threedm_poll_data_encode(&value->u.threedm_poll_data, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GET_IMU_BASE_RATE:
+        return mip_threedm_get_imu_base_rate_encode(&value->u.threedm_get_imu_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_IMU_BASE_RATE:
+        return mip_threedm_imu_base_rate_encode(&value->u.threedm_imu_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE:
+        return mip_threedm_get_gnss_base_rate_encode(&value->u.threedm_get_gnss_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_BASE_RATE:
+        return mip_threedm_gnss_base_rate_encode(&value->u.threedm_gnss_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE:
+        return mip_threedm_get_filter_base_rate_encode(&value->u.threedm_get_filter_base_rate, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_THREEDM_FILTER_BASE_RATE:
+        return mip_threedm_filter_base_rate_encode(&value->u.threedm_filter_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GET_BASE_RATE:
+        return mip_threedm_get_base_rate_encode(&value->u.threedm_get_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_BASE_RATE:
+        return mip_threedm_base_rate_encode(&value->u.threedm_base_rate, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT:
+        return mip_threedm_imu_message_format_encode(&value->u.threedm_imu_message_format, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_imu_message_format_response_encode(&value->u.threedm_imu_message_format_response,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT:
+        return mip_threedm_gnss_message_format_encode(&value->u.threedm_gnss_message_format, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_gnss_message_format_response_encode(&value->u.threedm_gnss_message_format_response,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT:
+        return mip_threedm_filter_message_format_encode(&value->u.threedm_filter_message_format, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_filter_message_format_response_encode(
+            &value->u.threedm_filter_message_format_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT:
+        return mip_threedm_nmea_message_format_encode(&value->u.threedm_nmea_message_format, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_nmea_message_format_response_encode(&value->u.threedm_nmea_message_format_response,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT:
+        return mip_threedm_message_format_encode(&value->u.threedm_message_format, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_message_format_response_encode(&value->u.threedm_message_format_response, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_THREEDM_FACTORY_STREAMING:
+        return mip_threedm_factory_streaming_encode(&value->u.threedm_factory_streaming, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45:
+        return mip_threedm_data_stream_control_gx5_45_encode(&value->u.threedm_data_stream_control_gx5_45,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_CV7_INS:
+        return mip_threedm_data_stream_control_cv7_ins_encode(&value->u.threedm_data_stream_control_cv7_ins,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45:
+        return mip_threedm_data_stream_control_response_gx5_45_encode(
+            &value->u.threedm_data_stream_control_response_gx5_45, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_CV7_INS:
+        return mip_threedm_data_stream_control_response_cv7_ins_encode(
+            &value->u.threedm_data_stream_control_response_cv7_ins, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE:
+        return mip_threedm_raw_rtcm_message_encode(&value->u.threedm_raw_rtcm_message, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS:
+        return mip_threedm_gnss_constellation_settings_encode(&value->u.threedm_gnss_constellation_settings,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE:
+        return mip_threedm_gnss_constellation_settings_response_encode(
+            &value->u.threedm_gnss_constellation_settings_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS:
+        return mip_threedm_gnss_sbas_settings_encode(&value->u.threedm_gnss_sbas_settings, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE:
+        return mip_threedm_gnss_sbas_settings_response_encode(&value->u.threedm_gnss_sbas_settings_response,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL:
+        return mip_threedm_gnss_assisted_fix_control_encode(&value->u.threedm_gnss_assisted_fix_control, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE:
+        return mip_threedm_gnss_assisted_fix_control_response_encode(
+            &value->u.threedm_gnss_assisted_fix_control_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE:
+        return mip_threedm_gnss_assist_time_update_encode(&value->u.threedm_gnss_assist_time_update, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE:
+        return mip_threedm_gnss_assist_time_update_response_encode(
+            &value->u.threedm_gnss_assist_time_update_response, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_PPS_SOURCE:
+        return mip_threedm_pps_source_encode(&value->u.threedm_pps_source, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE:
+        return mip_threedm_pps_source_response_encode(&value->u.threedm_pps_source_response, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS:
+        return mip_threedm_get_supported_events_encode(&value->u.threedm_get_supported_events, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_THREEDM_SUPPORTED_EVENTS:
+        return mip_threedm_supported_events_encode(&value->u.threedm_supported_events, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DEVICE_STATUS:
+        return mip_threedm_device_status_encode(&value->u.threedm_device_status, buf, cap, len_out);
+    case MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE:
+        return mip_threedm_device_status_response_encode(&value->u.threedm_device_status_response, buf, cap,
+                                                         len_out);
     case MIP_FIELD_FILTER_RESET_FILTER:
         return mip_filter_reset_filter_encode(&value->u.filter_reset_filter, buf, cap, len_out);
     case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:
@@ -1608,6 +2390,271 @@ void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
         return;
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         mip_threedm_event_action_config_response_to_json(w, &value->u.threedm_event_action_config_response);
+        return;
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45:
+        mip_threedm_device_startup_settings_gx5_45_to_json(w,
+                                                           &value->u.threedm_device_startup_settings_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_CV7_INS:
+        mip_threedm_device_startup_settings_cv7_ins_to_json(
+            w, &value->u.threedm_device_startup_settings_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER:
+        mip_threedm_sensor_to_vehicle_euler_to_json(w, &value->u.threedm_sensor_to_vehicle_euler);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE:
+        mip_threedm_sensor_to_vehicle_euler_response_to_json(
+            w, &value->u.threedm_sensor_to_vehicle_euler_response);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION:
+        mip_threedm_sensor_to_vehicle_quaternion_to_json(w, &value->u.threedm_sensor_to_vehicle_quaternion);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE:
+        mip_threedm_sensor_to_vehicle_quaternion_response_to_json(
+            w, &value->u.threedm_sensor_to_vehicle_quaternion_response);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM:
+        mip_threedm_sensor_to_vehicle_dcm_to_json(w, &value->u.threedm_sensor_to_vehicle_dcm);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE:
+        mip_threedm_sensor_to_vehicle_dcm_response_to_json(w,
+                                                           &value->u.threedm_sensor_to_vehicle_dcm_response);
+        return;
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45:
+        mip_threedm_accel_bias_gx5_45_to_json(w, &value->u.threedm_accel_bias_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_CV7_INS:
+        mip_threedm_accel_bias_cv7_ins_to_json(w, &value->u.threedm_accel_bias_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE:
+        mip_threedm_accel_bias_response_to_json(w, &value->u.threedm_accel_bias_response);
+        return;
+    case MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45:
+        mip_threedm_gyro_bias_gx5_45_to_json(w, &value->u.threedm_gyro_bias_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_GYRO_BIAS_CV7_INS:
+        mip_threedm_gyro_bias_cv7_ins_to_json(w, &value->u.threedm_gyro_bias_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE:
+        mip_threedm_gyro_bias_response_to_json(w, &value->u.threedm_gyro_bias_response);
+        return;
+    case MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS:
+        mip_threedm_capture_gyro_bias_to_json(w, &value->u.threedm_capture_gyro_bias);
+        return;
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45:
+        mip_threedm_mag_hard_iron_offset_gx5_45_to_json(w, &value->u.threedm_mag_hard_iron_offset_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_CV7_INS:
+        mip_threedm_mag_hard_iron_offset_cv7_ins_to_json(w, &value->u.threedm_mag_hard_iron_offset_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE:
+        mip_threedm_mag_hard_iron_offset_response_to_json(w, &value->u.threedm_mag_hard_iron_offset_response);
+        return;
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45:
+        mip_threedm_mag_soft_iron_matrix_gx5_45_to_json(w, &value->u.threedm_mag_soft_iron_matrix_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_CV7_INS:
+        mip_threedm_mag_soft_iron_matrix_cv7_ins_to_json(w, &value->u.threedm_mag_soft_iron_matrix_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE:
+        mip_threedm_mag_soft_iron_matrix_response_to_json(w, &value->u.threedm_mag_soft_iron_matrix_response);
+        return;
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE:
+        mip_threedm_coning_sculling_enable_to_json(w, &value->u.threedm_coning_sculling_enable);
+        return;
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE:
+        mip_threedm_coning_sculling_enable_response_to_json(
+            w, &value->u.threedm_coning_sculling_enable_response);
+        return;
+    case MIP_FIELD_THREEDM_UART_BAUDRATE:
+        mip_threedm_uart_baudrate_to_json(w, &value->u.threedm_uart_baudrate);
+        return;
+    case MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE:
+        mip_threedm_uart_baudrate_response_to_json(w, &value->u.threedm_uart_baudrate_response);
+        return;
+    case MIP_FIELD_THREEDM_GPIO_CONFIG:
+        mip_threedm_gpio_config_to_json(w, &value->u.threedm_gpio_config);
+        return;
+    case MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE:
+        mip_threedm_gpio_config_response_to_json(w, &value->u.threedm_gpio_config_response);
+        return;
+    case MIP_FIELD_THREEDM_GPIO_STATE:
+        mip_threedm_gpio_state_to_json(w, &value->u.threedm_gpio_state);
+        return;
+    case MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE:
+        mip_threedm_gpio_state_response_to_json(w, &value->u.threedm_gpio_state_response);
+        return;
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG:
+        mip_threedm_odometer_config_to_json(w, &value->u.threedm_odometer_config);
+        return;
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE:
+        mip_threedm_odometer_config_response_to_json(w, &value->u.threedm_odometer_config_response);
+        return;
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER:
+        mip_threedm_advanced_lowpass_filter_to_json(w, &value->u.threedm_advanced_lowpass_filter);
+        return;
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE:
+        mip_threedm_advanced_lowpass_filter_response_to_json(
+            w, &value->u.threedm_advanced_lowpass_filter_response);
+        return;
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER:
+        mip_threedm_complementary_filter_to_json(w, &value->u.threedm_complementary_filter);
+        return;
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE:
+        mip_threedm_complementary_filter_response_to_json(w, &value->u.threedm_complementary_filter_response);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_RANGE:
+        mip_threedm_sensor_range_to_json(w, &value->u.threedm_sensor_range);
+        return;
+    case MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE:
+        mip_threedm_sensor_range_response_to_json(w, &value->u.threedm_sensor_range_response);
+        return;
+    case MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES:
+        mip_threedm_get_calibrated_sensor_ranges_to_json(w, &value->u.threedm_get_calibrated_sensor_ranges);
+        return;
+    case MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES:
+        mip_threedm_calibrated_sensor_ranges_to_json(w, &value->u.threedm_calibrated_sensor_ranges);
+        return;
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER:
+        mip_threedm_lowpass_filter_to_json(w, &value->u.threedm_lowpass_filter);
+        return;
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE:
+        mip_threedm_lowpass_filter_response_to_json(w, &value->u.threedm_lowpass_filter_response);
+        return;
+    case MIP_FIELD_THREEDM_POLL_IMU_DATA:
+        mip_threedm_poll_imu_data_to_json(w, &value->u.threedm_poll_imu_data);
+        return;
+    case MIP_FIELD_THREEDM_POLL_GNSS_DATA:
+        mip_threedm_poll_gnss_data_to_json(w, &value->u.threedm_poll_gnss_data);
+        return;
+    case MIP_FIELD_THREEDM_POLL_FILTER_DATA:
+        mip_threedm_poll_filter_data_to_json(w, &value->u.threedm_poll_filter_data);
+        return;
+    case MIP_FIELD_THREEDM_POLL_NMEA_DATA:
+        mip_threedm_poll_nmea_data_to_json(w, &value->u.threedm_poll_nmea_data);
+        return;
+    case MIP_FIELD_THREEDM_POLL_DATA:
+        mip_threedm_poll_data_to_json(w, &value->u.threedm_poll_data);
+        return;
+    case MIP_FIELD_THREEDM_GET_IMU_BASE_RATE:
+        mip_threedm_get_imu_base_rate_to_json(w, &value->u.threedm_get_imu_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_IMU_BASE_RATE:
+        mip_threedm_imu_base_rate_to_json(w, &value->u.threedm_imu_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE:
+        mip_threedm_get_gnss_base_rate_to_json(w, &value->u.threedm_get_gnss_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_BASE_RATE:
+        mip_threedm_gnss_base_rate_to_json(w, &value->u.threedm_gnss_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE:
+        mip_threedm_get_filter_base_rate_to_json(w, &value->u.threedm_get_filter_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_FILTER_BASE_RATE:
+        mip_threedm_filter_base_rate_to_json(w, &value->u.threedm_filter_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_GET_BASE_RATE:
+        mip_threedm_get_base_rate_to_json(w, &value->u.threedm_get_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_BASE_RATE:
+        mip_threedm_base_rate_to_json(w, &value->u.threedm_base_rate);
+        return;
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT:
+        mip_threedm_imu_message_format_to_json(w, &value->u.threedm_imu_message_format);
+        return;
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE:
+        mip_threedm_imu_message_format_response_to_json(w, &value->u.threedm_imu_message_format_response);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT:
+        mip_threedm_gnss_message_format_to_json(w, &value->u.threedm_gnss_message_format);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE:
+        mip_threedm_gnss_message_format_response_to_json(w, &value->u.threedm_gnss_message_format_response);
+        return;
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT:
+        mip_threedm_filter_message_format_to_json(w, &value->u.threedm_filter_message_format);
+        return;
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE:
+        mip_threedm_filter_message_format_response_to_json(w,
+                                                           &value->u.threedm_filter_message_format_response);
+        return;
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT:
+        mip_threedm_nmea_message_format_to_json(w, &value->u.threedm_nmea_message_format);
+        return;
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE:
+        mip_threedm_nmea_message_format_response_to_json(w, &value->u.threedm_nmea_message_format_response);
+        return;
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT:
+        mip_threedm_message_format_to_json(w, &value->u.threedm_message_format);
+        return;
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE:
+        mip_threedm_message_format_response_to_json(w, &value->u.threedm_message_format_response);
+        return;
+    case MIP_FIELD_THREEDM_FACTORY_STREAMING:
+        mip_threedm_factory_streaming_to_json(w, &value->u.threedm_factory_streaming);
+        return;
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45:
+        mip_threedm_data_stream_control_gx5_45_to_json(w, &value->u.threedm_data_stream_control_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_CV7_INS:
+        mip_threedm_data_stream_control_cv7_ins_to_json(w, &value->u.threedm_data_stream_control_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45:
+        mip_threedm_data_stream_control_response_gx5_45_to_json(
+            w, &value->u.threedm_data_stream_control_response_gx5_45);
+        return;
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_CV7_INS:
+        mip_threedm_data_stream_control_response_cv7_ins_to_json(
+            w, &value->u.threedm_data_stream_control_response_cv7_ins);
+        return;
+    case MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE:
+        mip_threedm_raw_rtcm_message_to_json(w, &value->u.threedm_raw_rtcm_message);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS:
+        mip_threedm_gnss_constellation_settings_to_json(w, &value->u.threedm_gnss_constellation_settings);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE:
+        mip_threedm_gnss_constellation_settings_response_to_json(
+            w, &value->u.threedm_gnss_constellation_settings_response);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS:
+        mip_threedm_gnss_sbas_settings_to_json(w, &value->u.threedm_gnss_sbas_settings);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE:
+        mip_threedm_gnss_sbas_settings_response_to_json(w, &value->u.threedm_gnss_sbas_settings_response);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL:
+        mip_threedm_gnss_assisted_fix_control_to_json(w, &value->u.threedm_gnss_assisted_fix_control);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE:
+        mip_threedm_gnss_assisted_fix_control_response_to_json(
+            w, &value->u.threedm_gnss_assisted_fix_control_response);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE:
+        mip_threedm_gnss_assist_time_update_to_json(w, &value->u.threedm_gnss_assist_time_update);
+        return;
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE:
+        mip_threedm_gnss_assist_time_update_response_to_json(
+            w, &value->u.threedm_gnss_assist_time_update_response);
+        return;
+    case MIP_FIELD_THREEDM_PPS_SOURCE:
+        mip_threedm_pps_source_to_json(w, &value->u.threedm_pps_source);
+        return;
+    case MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE:
+        mip_threedm_pps_source_response_to_json(w, &value->u.threedm_pps_source_response);
+        return;
+    case MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS:
+        mip_threedm_get_supported_events_to_json(w, &value->u.threedm_get_supported_events);
+        return;
+    case MIP_FIELD_THREEDM_SUPPORTED_EVENTS:
+        mip_threedm_supported_events_to_json(w, &value->u.threedm_supported_events);
+        return;
+    case MIP_FIELD_THREEDM_DEVICE_STATUS:
+        mip_threedm_device_status_to_json(w, &value->u.threedm_device_status);
+        return;
+    case MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE:
+        mip_threedm_device_status_response_to_json(w, &value->u.threedm_device_status_response);
         return;
     case MIP_FIELD_FILTER_RESET_FILTER:
         mip_filter_reset_filter_to_json(w, &value->u.filter_reset_filter);
@@ -2043,6 +3090,214 @@ int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_v
     case MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE:
         return mip_threedm_event_action_config_response_from_json(
             jr, pos, &value->u.threedm_event_action_config_response);
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45:
+        return mip_threedm_device_startup_settings_gx5_45_from_json(
+            jr, pos, &value->u.threedm_device_startup_settings_gx5_45);
+    case MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_CV7_INS:
+        return mip_threedm_device_startup_settings_cv7_ins_from_json(
+            jr, pos, &value->u.threedm_device_startup_settings_cv7_ins);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER:
+        return mip_threedm_sensor_to_vehicle_euler_from_json(jr, pos,
+                                                             &value->u.threedm_sensor_to_vehicle_euler);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_euler_response_from_json(
+            jr, pos, &value->u.threedm_sensor_to_vehicle_euler_response);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION:
+        return mip_threedm_sensor_to_vehicle_quaternion_from_json(
+            jr, pos, &value->u.threedm_sensor_to_vehicle_quaternion);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_quaternion_response_from_json(
+            jr, pos, &value->u.threedm_sensor_to_vehicle_quaternion_response);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM:
+        return mip_threedm_sensor_to_vehicle_dcm_from_json(jr, pos, &value->u.threedm_sensor_to_vehicle_dcm);
+    case MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE:
+        return mip_threedm_sensor_to_vehicle_dcm_response_from_json(
+            jr, pos, &value->u.threedm_sensor_to_vehicle_dcm_response);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45:
+        return mip_threedm_accel_bias_gx5_45_from_json(jr, pos, &value->u.threedm_accel_bias_gx5_45);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_CV7_INS:
+        return mip_threedm_accel_bias_cv7_ins_from_json(jr, pos, &value->u.threedm_accel_bias_cv7_ins);
+    case MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE:
+        return mip_threedm_accel_bias_response_from_json(jr, pos, &value->u.threedm_accel_bias_response);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45:
+        return mip_threedm_gyro_bias_gx5_45_from_json(jr, pos, &value->u.threedm_gyro_bias_gx5_45);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_CV7_INS:
+        return mip_threedm_gyro_bias_cv7_ins_from_json(jr, pos, &value->u.threedm_gyro_bias_cv7_ins);
+    case MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE:
+        return mip_threedm_gyro_bias_response_from_json(jr, pos, &value->u.threedm_gyro_bias_response);
+    case MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS:
+        return mip_threedm_capture_gyro_bias_from_json(jr, pos, &value->u.threedm_capture_gyro_bias);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45:
+        return mip_threedm_mag_hard_iron_offset_gx5_45_from_json(
+            jr, pos, &value->u.threedm_mag_hard_iron_offset_gx5_45);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_CV7_INS:
+        return mip_threedm_mag_hard_iron_offset_cv7_ins_from_json(
+            jr, pos, &value->u.threedm_mag_hard_iron_offset_cv7_ins);
+    case MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE:
+        return mip_threedm_mag_hard_iron_offset_response_from_json(
+            jr, pos, &value->u.threedm_mag_hard_iron_offset_response);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45:
+        return mip_threedm_mag_soft_iron_matrix_gx5_45_from_json(
+            jr, pos, &value->u.threedm_mag_soft_iron_matrix_gx5_45);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_CV7_INS:
+        return mip_threedm_mag_soft_iron_matrix_cv7_ins_from_json(
+            jr, pos, &value->u.threedm_mag_soft_iron_matrix_cv7_ins);
+    case MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE:
+        return mip_threedm_mag_soft_iron_matrix_response_from_json(
+            jr, pos, &value->u.threedm_mag_soft_iron_matrix_response);
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE:
+        return mip_threedm_coning_sculling_enable_from_json(jr, pos,
+                                                            &value->u.threedm_coning_sculling_enable);
+    case MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE:
+        return mip_threedm_coning_sculling_enable_response_from_json(
+            jr, pos, &value->u.threedm_coning_sculling_enable_response);
+    case MIP_FIELD_THREEDM_UART_BAUDRATE:
+        return mip_threedm_uart_baudrate_from_json(jr, pos, &value->u.threedm_uart_baudrate);
+    case MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE:
+        return mip_threedm_uart_baudrate_response_from_json(jr, pos,
+                                                            &value->u.threedm_uart_baudrate_response);
+    case MIP_FIELD_THREEDM_GPIO_CONFIG:
+        return mip_threedm_gpio_config_from_json(jr, pos, &value->u.threedm_gpio_config);
+    case MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE:
+        return mip_threedm_gpio_config_response_from_json(jr, pos, &value->u.threedm_gpio_config_response);
+    case MIP_FIELD_THREEDM_GPIO_STATE:
+        return mip_threedm_gpio_state_from_json(jr, pos, &value->u.threedm_gpio_state);
+    case MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE:
+        return mip_threedm_gpio_state_response_from_json(jr, pos, &value->u.threedm_gpio_state_response);
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG:
+        return mip_threedm_odometer_config_from_json(jr, pos, &value->u.threedm_odometer_config);
+    case MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE:
+        return mip_threedm_odometer_config_response_from_json(jr, pos,
+                                                              &value->u.threedm_odometer_config_response);
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER:
+        return mip_threedm_advanced_lowpass_filter_from_json(jr, pos,
+                                                             &value->u.threedm_advanced_lowpass_filter);
+    case MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE:
+        return mip_threedm_advanced_lowpass_filter_response_from_json(
+            jr, pos, &value->u.threedm_advanced_lowpass_filter_response);
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER:
+        return mip_threedm_complementary_filter_from_json(jr, pos, &value->u.threedm_complementary_filter);
+    case MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE:
+        return mip_threedm_complementary_filter_response_from_json(
+            jr, pos, &value->u.threedm_complementary_filter_response);
+    case MIP_FIELD_THREEDM_SENSOR_RANGE:
+        return mip_threedm_sensor_range_from_json(jr, pos, &value->u.threedm_sensor_range);
+    case MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE:
+        return mip_threedm_sensor_range_response_from_json(jr, pos, &value->u.threedm_sensor_range_response);
+    case MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES:
+        return mip_threedm_get_calibrated_sensor_ranges_from_json(
+            jr, pos, &value->u.threedm_get_calibrated_sensor_ranges);
+    case MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES:
+        return mip_threedm_calibrated_sensor_ranges_from_json(jr, pos,
+                                                              &value->u.threedm_calibrated_sensor_ranges);
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER:
+        return mip_threedm_lowpass_filter_from_json(jr, pos, &value->u.threedm_lowpass_filter);
+    case MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE:
+        return mip_threedm_lowpass_filter_response_from_json(jr, pos,
+                                                             &value->u.threedm_lowpass_filter_response);
+    case MIP_FIELD_THREEDM_POLL_IMU_DATA:
+        return mip_threedm_poll_imu_data_from_json(jr, pos, &value->u.threedm_poll_imu_data);
+    case MIP_FIELD_THREEDM_POLL_GNSS_DATA:
+        return mip_threedm_poll_gnss_data_from_json(jr, pos, &value->u.threedm_poll_gnss_data);
+    case MIP_FIELD_THREEDM_POLL_FILTER_DATA:
+        return mip_threedm_poll_filter_data_from_json(jr, pos, &value->u.threedm_poll_filter_data);
+    case MIP_FIELD_THREEDM_POLL_NMEA_DATA:
+        return mip_threedm_poll_nmea_data_from_json(jr, pos, &value->u.threedm_poll_nmea_data);
+    case MIP_FIELD_THREEDM_POLL_DATA:
+        return mip_threedm_poll_data_from_json(jr, pos, &value->u.threedm_poll_data);
+    case MIP_FIELD_THREEDM_GET_IMU_BASE_RATE:
+        return mip_threedm_get_imu_base_rate_from_json(jr, pos, &value->u.threedm_get_imu_base_rate);
+    case MIP_FIELD_THREEDM_IMU_BASE_RATE:
+        return mip_threedm_imu_base_rate_from_json(jr, pos, &value->u.threedm_imu_base_rate);
+    case MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE:
+        return mip_threedm_get_gnss_base_rate_from_json(jr, pos, &value->u.threedm_get_gnss_base_rate);
+    case MIP_FIELD_THREEDM_GNSS_BASE_RATE:
+        return mip_threedm_gnss_base_rate_from_json(jr, pos, &value->u.threedm_gnss_base_rate);
+    case MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE:
+        return mip_threedm_get_filter_base_rate_from_json(jr, pos, &value->u.threedm_get_filter_base_rate);
+    case MIP_FIELD_THREEDM_FILTER_BASE_RATE:
+        return mip_threedm_filter_base_rate_from_json(jr, pos, &value->u.threedm_filter_base_rate);
+    case MIP_FIELD_THREEDM_GET_BASE_RATE:
+        return mip_threedm_get_base_rate_from_json(jr, pos, &value->u.threedm_get_base_rate);
+    case MIP_FIELD_THREEDM_BASE_RATE:
+        return mip_threedm_base_rate_from_json(jr, pos, &value->u.threedm_base_rate);
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT:
+        return mip_threedm_imu_message_format_from_json(jr, pos, &value->u.threedm_imu_message_format);
+    case MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_imu_message_format_response_from_json(
+            jr, pos, &value->u.threedm_imu_message_format_response);
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT:
+        return mip_threedm_gnss_message_format_from_json(jr, pos, &value->u.threedm_gnss_message_format);
+    case MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_gnss_message_format_response_from_json(
+            jr, pos, &value->u.threedm_gnss_message_format_response);
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT:
+        return mip_threedm_filter_message_format_from_json(jr, pos, &value->u.threedm_filter_message_format);
+    case MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_filter_message_format_response_from_json(
+            jr, pos, &value->u.threedm_filter_message_format_response);
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT:
+        return mip_threedm_nmea_message_format_from_json(jr, pos, &value->u.threedm_nmea_message_format);
+    case MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_nmea_message_format_response_from_json(
+            jr, pos, &value->u.threedm_nmea_message_format_response);
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT:
+        return mip_threedm_message_format_from_json(jr, pos, &value->u.threedm_message_format);
+    case MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE:
+        return mip_threedm_message_format_response_from_json(jr, pos,
+                                                             &value->u.threedm_message_format_response);
+    case MIP_FIELD_THREEDM_FACTORY_STREAMING:
+        return mip_threedm_factory_streaming_from_json(jr, pos, &value->u.threedm_factory_streaming);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45:
+        return mip_threedm_data_stream_control_gx5_45_from_json(jr, pos,
+                                                                &value->u.threedm_data_stream_control_gx5_45);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_CV7_INS:
+        return mip_threedm_data_stream_control_cv7_ins_from_json(
+            jr, pos, &value->u.threedm_data_stream_control_cv7_ins);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45:
+        return mip_threedm_data_stream_control_response_gx5_45_from_json(
+            jr, pos, &value->u.threedm_data_stream_control_response_gx5_45);
+    case MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_CV7_INS:
+        return mip_threedm_data_stream_control_response_cv7_ins_from_json(
+            jr, pos, &value->u.threedm_data_stream_control_response_cv7_ins);
+    case MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE:
+        return mip_threedm_raw_rtcm_message_from_json(jr, pos, &value->u.threedm_raw_rtcm_message);
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS:
+        return mip_threedm_gnss_constellation_settings_from_json(
+            jr, pos, &value->u.threedm_gnss_constellation_settings);
+    case MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE:
+        return mip_threedm_gnss_constellation_settings_response_from_json(
+            jr, pos, &value->u.threedm_gnss_constellation_settings_response);
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS:
+        return mip_threedm_gnss_sbas_settings_from_json(jr, pos, &value->u.threedm_gnss_sbas_settings);
+    case MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE:
+        return mip_threedm_gnss_sbas_settings_response_from_json(
+            jr, pos, &value->u.threedm_gnss_sbas_settings_response);
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL:
+        return mip_threedm_gnss_assisted_fix_control_from_json(jr, pos,
+                                                               &value->u.threedm_gnss_assisted_fix_control);
+    case MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE:
+        return mip_threedm_gnss_assisted_fix_control_response_from_json(
+            jr, pos, &value->u.threedm_gnss_assisted_fix_control_response);
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE:
+        return mip_threedm_gnss_assist_time_update_from_json(jr, pos,
+                                                             &value->u.threedm_gnss_assist_time_update);
+    case MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE:
+        return mip_threedm_gnss_assist_time_update_response_from_json(
+            jr, pos, &value->u.threedm_gnss_assist_time_update_response);
+    case MIP_FIELD_THREEDM_PPS_SOURCE:
+        return mip_threedm_pps_source_from_json(jr, pos, &value->u.threedm_pps_source);
+    case MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE:
+        return mip_threedm_pps_source_response_from_json(jr, pos, &value->u.threedm_pps_source_response);
+    case MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS:
+        return mip_threedm_get_supported_events_from_json(jr, pos, &value->u.threedm_get_supported_events);
+    case MIP_FIELD_THREEDM_SUPPORTED_EVENTS:
+        return mip_threedm_supported_events_from_json(jr, pos, &value->u.threedm_supported_events);
+    case MIP_FIELD_THREEDM_DEVICE_STATUS:
+        return mip_threedm_device_status_from_json(jr, pos, &value->u.threedm_device_status);
+    case MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE:
+        return mip_threedm_device_status_response_from_json(jr, pos,
+                                                            &value->u.threedm_device_status_response);
     case MIP_FIELD_FILTER_RESET_FILTER:
         return mip_filter_reset_filter_from_json(jr, pos, &value->u.filter_reset_filter);
     case MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE:

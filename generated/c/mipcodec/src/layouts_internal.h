@@ -92,6 +92,263 @@ void mip_threedm_event_action_config_response_to_json(mip_jw_t *w,
                                                       const mip_threedm_event_action_config_response_t *in);
 int mip_threedm_event_action_config_response_from_json(mip_jr_t *jr, size_t pos,
                                                        mip_threedm_event_action_config_response_t *out);
+void mip_threedm_device_startup_settings_gx5_45_to_json(
+    mip_jw_t *w, const mip_threedm_device_startup_settings_gx5_45_t *in);
+int mip_threedm_device_startup_settings_gx5_45_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_threedm_device_startup_settings_gx5_45_t *out);
+void mip_threedm_device_startup_settings_cv7_ins_to_json(
+    mip_jw_t *w, const mip_threedm_device_startup_settings_cv7_ins_t *in);
+int mip_threedm_device_startup_settings_cv7_ins_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_threedm_device_startup_settings_cv7_ins_t *out);
+void mip_threedm_sensor_to_vehicle_euler_to_json(mip_jw_t *w,
+                                                 const mip_threedm_sensor_to_vehicle_euler_t *in);
+int mip_threedm_sensor_to_vehicle_euler_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_threedm_sensor_to_vehicle_euler_t *out);
+void mip_threedm_sensor_to_vehicle_euler_response_to_json(
+    mip_jw_t *w, const mip_threedm_sensor_to_vehicle_euler_response_t *in);
+int mip_threedm_sensor_to_vehicle_euler_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_sensor_to_vehicle_euler_response_t *out);
+void mip_threedm_sensor_to_vehicle_quaternion_to_json(mip_jw_t *w,
+                                                      const mip_threedm_sensor_to_vehicle_quaternion_t *in);
+int mip_threedm_sensor_to_vehicle_quaternion_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_threedm_sensor_to_vehicle_quaternion_t *out);
+void mip_threedm_sensor_to_vehicle_quaternion_response_to_json(
+    mip_jw_t *w, const mip_threedm_sensor_to_vehicle_quaternion_response_t *in);
+int mip_threedm_sensor_to_vehicle_quaternion_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_sensor_to_vehicle_quaternion_response_t *out);
+void mip_threedm_sensor_to_vehicle_dcm_to_json(mip_jw_t *w, const mip_threedm_sensor_to_vehicle_dcm_t *in);
+int mip_threedm_sensor_to_vehicle_dcm_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_threedm_sensor_to_vehicle_dcm_t *out);
+void mip_threedm_sensor_to_vehicle_dcm_response_to_json(
+    mip_jw_t *w, const mip_threedm_sensor_to_vehicle_dcm_response_t *in);
+int mip_threedm_sensor_to_vehicle_dcm_response_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_threedm_sensor_to_vehicle_dcm_response_t *out);
+void mip_threedm_accel_bias_gx5_45_to_json(mip_jw_t *w, const mip_threedm_accel_bias_gx5_45_t *in);
+int mip_threedm_accel_bias_gx5_45_from_json(mip_jr_t *jr, size_t pos, mip_threedm_accel_bias_gx5_45_t *out);
+void mip_threedm_accel_bias_cv7_ins_to_json(mip_jw_t *w, const mip_threedm_accel_bias_cv7_ins_t *in);
+int mip_threedm_accel_bias_cv7_ins_from_json(mip_jr_t *jr, size_t pos, mip_threedm_accel_bias_cv7_ins_t *out);
+void mip_threedm_accel_bias_response_to_json(mip_jw_t *w, const mip_threedm_accel_bias_response_t *in);
+int mip_threedm_accel_bias_response_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_threedm_accel_bias_response_t *out);
+void mip_threedm_gyro_bias_gx5_45_to_json(mip_jw_t *w, const mip_threedm_gyro_bias_gx5_45_t *in);
+int mip_threedm_gyro_bias_gx5_45_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gyro_bias_gx5_45_t *out);
+void mip_threedm_gyro_bias_cv7_ins_to_json(mip_jw_t *w, const mip_threedm_gyro_bias_cv7_ins_t *in);
+int mip_threedm_gyro_bias_cv7_ins_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gyro_bias_cv7_ins_t *out);
+void mip_threedm_gyro_bias_response_to_json(mip_jw_t *w, const mip_threedm_gyro_bias_response_t *in);
+int mip_threedm_gyro_bias_response_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gyro_bias_response_t *out);
+void mip_threedm_capture_gyro_bias_to_json(mip_jw_t *w, const mip_threedm_capture_gyro_bias_t *in);
+int mip_threedm_capture_gyro_bias_from_json(mip_jr_t *jr, size_t pos, mip_threedm_capture_gyro_bias_t *out);
+void mip_threedm_mag_hard_iron_offset_gx5_45_to_json(mip_jw_t *w,
+                                                     const mip_threedm_mag_hard_iron_offset_gx5_45_t *in);
+int mip_threedm_mag_hard_iron_offset_gx5_45_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_threedm_mag_hard_iron_offset_gx5_45_t *out);
+void mip_threedm_mag_hard_iron_offset_cv7_ins_to_json(mip_jw_t *w,
+                                                      const mip_threedm_mag_hard_iron_offset_cv7_ins_t *in);
+int mip_threedm_mag_hard_iron_offset_cv7_ins_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_threedm_mag_hard_iron_offset_cv7_ins_t *out);
+void mip_threedm_mag_hard_iron_offset_response_to_json(mip_jw_t *w,
+                                                       const mip_threedm_mag_hard_iron_offset_response_t *in);
+int mip_threedm_mag_hard_iron_offset_response_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_threedm_mag_hard_iron_offset_response_t *out);
+void mip_threedm_mag_soft_iron_matrix_gx5_45_to_json(mip_jw_t *w,
+                                                     const mip_threedm_mag_soft_iron_matrix_gx5_45_t *in);
+int mip_threedm_mag_soft_iron_matrix_gx5_45_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_threedm_mag_soft_iron_matrix_gx5_45_t *out);
+void mip_threedm_mag_soft_iron_matrix_cv7_ins_to_json(mip_jw_t *w,
+                                                      const mip_threedm_mag_soft_iron_matrix_cv7_ins_t *in);
+int mip_threedm_mag_soft_iron_matrix_cv7_ins_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_threedm_mag_soft_iron_matrix_cv7_ins_t *out);
+void mip_threedm_mag_soft_iron_matrix_response_to_json(mip_jw_t *w,
+                                                       const mip_threedm_mag_soft_iron_matrix_response_t *in);
+int mip_threedm_mag_soft_iron_matrix_response_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_threedm_mag_soft_iron_matrix_response_t *out);
+void mip_threedm_coning_sculling_enable_to_json(mip_jw_t *w, const mip_threedm_coning_sculling_enable_t *in);
+int mip_threedm_coning_sculling_enable_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_threedm_coning_sculling_enable_t *out);
+void mip_threedm_coning_sculling_enable_response_to_json(
+    mip_jw_t *w, const mip_threedm_coning_sculling_enable_response_t *in);
+int mip_threedm_coning_sculling_enable_response_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_threedm_coning_sculling_enable_response_t *out);
+void mip_threedm_uart_baudrate_to_json(mip_jw_t *w, const mip_threedm_uart_baudrate_t *in);
+int mip_threedm_uart_baudrate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_uart_baudrate_t *out);
+void mip_threedm_uart_baudrate_response_to_json(mip_jw_t *w, const mip_threedm_uart_baudrate_response_t *in);
+int mip_threedm_uart_baudrate_response_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_threedm_uart_baudrate_response_t *out);
+void mip_threedm_gpio_config_to_json(mip_jw_t *w, const mip_threedm_gpio_config_t *in);
+int mip_threedm_gpio_config_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gpio_config_t *out);
+void mip_threedm_gpio_config_response_to_json(mip_jw_t *w, const mip_threedm_gpio_config_response_t *in);
+int mip_threedm_gpio_config_response_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_threedm_gpio_config_response_t *out);
+void mip_threedm_gpio_state_to_json(mip_jw_t *w, const mip_threedm_gpio_state_t *in);
+int mip_threedm_gpio_state_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gpio_state_t *out);
+void mip_threedm_gpio_state_response_to_json(mip_jw_t *w, const mip_threedm_gpio_state_response_t *in);
+int mip_threedm_gpio_state_response_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_threedm_gpio_state_response_t *out);
+void mip_threedm_odometer_config_to_json(mip_jw_t *w, const mip_threedm_odometer_config_t *in);
+int mip_threedm_odometer_config_from_json(mip_jr_t *jr, size_t pos, mip_threedm_odometer_config_t *out);
+void mip_threedm_odometer_config_response_to_json(mip_jw_t *w,
+                                                  const mip_threedm_odometer_config_response_t *in);
+int mip_threedm_odometer_config_response_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_threedm_odometer_config_response_t *out);
+void mip_threedm_advanced_lowpass_filter_to_json(mip_jw_t *w,
+                                                 const mip_threedm_advanced_lowpass_filter_t *in);
+int mip_threedm_advanced_lowpass_filter_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_threedm_advanced_lowpass_filter_t *out);
+void mip_threedm_advanced_lowpass_filter_response_to_json(
+    mip_jw_t *w, const mip_threedm_advanced_lowpass_filter_response_t *in);
+int mip_threedm_advanced_lowpass_filter_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_advanced_lowpass_filter_response_t *out);
+void mip_threedm_complementary_filter_to_json(mip_jw_t *w, const mip_threedm_complementary_filter_t *in);
+int mip_threedm_complementary_filter_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_threedm_complementary_filter_t *out);
+void mip_threedm_complementary_filter_response_to_json(mip_jw_t *w,
+                                                       const mip_threedm_complementary_filter_response_t *in);
+int mip_threedm_complementary_filter_response_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_threedm_complementary_filter_response_t *out);
+void mip_threedm_sensor_range_to_json(mip_jw_t *w, const mip_threedm_sensor_range_t *in);
+int mip_threedm_sensor_range_from_json(mip_jr_t *jr, size_t pos, mip_threedm_sensor_range_t *out);
+void mip_threedm_sensor_range_response_to_json(mip_jw_t *w, const mip_threedm_sensor_range_response_t *in);
+int mip_threedm_sensor_range_response_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_threedm_sensor_range_response_t *out);
+void mip_threedm_get_calibrated_sensor_ranges_to_json(mip_jw_t *w,
+                                                      const mip_threedm_get_calibrated_sensor_ranges_t *in);
+int mip_threedm_get_calibrated_sensor_ranges_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_threedm_get_calibrated_sensor_ranges_t *out);
+void mip_threedm_calibrated_sensor_ranges_to_json(mip_jw_t *w,
+                                                  const mip_threedm_calibrated_sensor_ranges_t *in);
+int mip_threedm_calibrated_sensor_ranges_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_threedm_calibrated_sensor_ranges_t *out);
+void mip_threedm_lowpass_filter_to_json(mip_jw_t *w, const mip_threedm_lowpass_filter_t *in);
+int mip_threedm_lowpass_filter_from_json(mip_jr_t *jr, size_t pos, mip_threedm_lowpass_filter_t *out);
+void mip_threedm_lowpass_filter_response_to_json(mip_jw_t *w,
+                                                 const mip_threedm_lowpass_filter_response_t *in);
+int mip_threedm_lowpass_filter_response_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_threedm_lowpass_filter_response_t *out);
+void mip_threedm_poll_imu_data_to_json(mip_jw_t *w, const mip_threedm_poll_imu_data_t *in);
+int mip_threedm_poll_imu_data_from_json(mip_jr_t *jr, size_t pos, mip_threedm_poll_imu_data_t *out);
+void mip_threedm_poll_gnss_data_to_json(mip_jw_t *w, const mip_threedm_poll_gnss_data_t *in);
+int mip_threedm_poll_gnss_data_from_json(mip_jr_t *jr, size_t pos, mip_threedm_poll_gnss_data_t *out);
+void mip_threedm_poll_filter_data_to_json(mip_jw_t *w, const mip_threedm_poll_filter_data_t *in);
+int mip_threedm_poll_filter_data_from_json(mip_jr_t *jr, size_t pos, mip_threedm_poll_filter_data_t *out);
+void mip_threedm_poll_nmea_data_to_json(mip_jw_t *w, const mip_threedm_poll_nmea_data_t *in);
+int mip_threedm_poll_nmea_data_from_json(mip_jr_t *jr, size_t pos, mip_threedm_poll_nmea_data_t *out);
+void mip_threedm_poll_data_to_json(mip_jw_t *w, const mip_threedm_poll_data_t *in);
+int mip_threedm_poll_data_from_json(mip_jr_t *jr, size_t pos, mip_threedm_poll_data_t *out);
+void mip_threedm_get_imu_base_rate_to_json(mip_jw_t *w, const mip_threedm_get_imu_base_rate_t *in);
+int mip_threedm_get_imu_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_get_imu_base_rate_t *out);
+void mip_threedm_imu_base_rate_to_json(mip_jw_t *w, const mip_threedm_imu_base_rate_t *in);
+int mip_threedm_imu_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_imu_base_rate_t *out);
+void mip_threedm_get_gnss_base_rate_to_json(mip_jw_t *w, const mip_threedm_get_gnss_base_rate_t *in);
+int mip_threedm_get_gnss_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_get_gnss_base_rate_t *out);
+void mip_threedm_gnss_base_rate_to_json(mip_jw_t *w, const mip_threedm_gnss_base_rate_t *in);
+int mip_threedm_gnss_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gnss_base_rate_t *out);
+void mip_threedm_get_filter_base_rate_to_json(mip_jw_t *w, const mip_threedm_get_filter_base_rate_t *in);
+int mip_threedm_get_filter_base_rate_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_threedm_get_filter_base_rate_t *out);
+void mip_threedm_filter_base_rate_to_json(mip_jw_t *w, const mip_threedm_filter_base_rate_t *in);
+int mip_threedm_filter_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_filter_base_rate_t *out);
+void mip_threedm_get_base_rate_to_json(mip_jw_t *w, const mip_threedm_get_base_rate_t *in);
+int mip_threedm_get_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_get_base_rate_t *out);
+void mip_threedm_base_rate_to_json(mip_jw_t *w, const mip_threedm_base_rate_t *in);
+int mip_threedm_base_rate_from_json(mip_jr_t *jr, size_t pos, mip_threedm_base_rate_t *out);
+void mip_threedm_imu_message_format_to_json(mip_jw_t *w, const mip_threedm_imu_message_format_t *in);
+int mip_threedm_imu_message_format_from_json(mip_jr_t *jr, size_t pos, mip_threedm_imu_message_format_t *out);
+void mip_threedm_imu_message_format_response_to_json(mip_jw_t *w,
+                                                     const mip_threedm_imu_message_format_response_t *in);
+int mip_threedm_imu_message_format_response_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_threedm_imu_message_format_response_t *out);
+void mip_threedm_gnss_message_format_to_json(mip_jw_t *w, const mip_threedm_gnss_message_format_t *in);
+int mip_threedm_gnss_message_format_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_threedm_gnss_message_format_t *out);
+void mip_threedm_gnss_message_format_response_to_json(mip_jw_t *w,
+                                                      const mip_threedm_gnss_message_format_response_t *in);
+int mip_threedm_gnss_message_format_response_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_threedm_gnss_message_format_response_t *out);
+void mip_threedm_filter_message_format_to_json(mip_jw_t *w, const mip_threedm_filter_message_format_t *in);
+int mip_threedm_filter_message_format_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_threedm_filter_message_format_t *out);
+void mip_threedm_filter_message_format_response_to_json(
+    mip_jw_t *w, const mip_threedm_filter_message_format_response_t *in);
+int mip_threedm_filter_message_format_response_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_threedm_filter_message_format_response_t *out);
+void mip_threedm_nmea_message_format_to_json(mip_jw_t *w, const mip_threedm_nmea_message_format_t *in);
+int mip_threedm_nmea_message_format_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_threedm_nmea_message_format_t *out);
+void mip_threedm_nmea_message_format_response_to_json(mip_jw_t *w,
+                                                      const mip_threedm_nmea_message_format_response_t *in);
+int mip_threedm_nmea_message_format_response_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_threedm_nmea_message_format_response_t *out);
+void mip_threedm_message_format_to_json(mip_jw_t *w, const mip_threedm_message_format_t *in);
+int mip_threedm_message_format_from_json(mip_jr_t *jr, size_t pos, mip_threedm_message_format_t *out);
+void mip_threedm_message_format_response_to_json(mip_jw_t *w,
+                                                 const mip_threedm_message_format_response_t *in);
+int mip_threedm_message_format_response_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_threedm_message_format_response_t *out);
+void mip_threedm_factory_streaming_to_json(mip_jw_t *w, const mip_threedm_factory_streaming_t *in);
+int mip_threedm_factory_streaming_from_json(mip_jr_t *jr, size_t pos, mip_threedm_factory_streaming_t *out);
+void mip_threedm_data_stream_control_gx5_45_to_json(mip_jw_t *w,
+                                                    const mip_threedm_data_stream_control_gx5_45_t *in);
+int mip_threedm_data_stream_control_gx5_45_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_threedm_data_stream_control_gx5_45_t *out);
+void mip_threedm_data_stream_control_cv7_ins_to_json(mip_jw_t *w,
+                                                     const mip_threedm_data_stream_control_cv7_ins_t *in);
+int mip_threedm_data_stream_control_cv7_ins_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_threedm_data_stream_control_cv7_ins_t *out);
+void mip_threedm_data_stream_control_response_gx5_45_to_json(
+    mip_jw_t *w, const mip_threedm_data_stream_control_response_gx5_45_t *in);
+int mip_threedm_data_stream_control_response_gx5_45_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_data_stream_control_response_gx5_45_t *out);
+void mip_threedm_data_stream_control_response_cv7_ins_to_json(
+    mip_jw_t *w, const mip_threedm_data_stream_control_response_cv7_ins_t *in);
+int mip_threedm_data_stream_control_response_cv7_ins_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_data_stream_control_response_cv7_ins_t *out);
+void mip_threedm_raw_rtcm_message_to_json(mip_jw_t *w, const mip_threedm_raw_rtcm_message_t *in);
+int mip_threedm_raw_rtcm_message_from_json(mip_jr_t *jr, size_t pos, mip_threedm_raw_rtcm_message_t *out);
+void mip_threedm_gnss_constellation_settings_to_json(mip_jw_t *w,
+                                                     const mip_threedm_gnss_constellation_settings_t *in);
+int mip_threedm_gnss_constellation_settings_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_threedm_gnss_constellation_settings_t *out);
+void mip_threedm_gnss_constellation_settings_response_to_json(
+    mip_jw_t *w, const mip_threedm_gnss_constellation_settings_response_t *in);
+int mip_threedm_gnss_constellation_settings_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_gnss_constellation_settings_response_t *out);
+void mip_threedm_gnss_sbas_settings_to_json(mip_jw_t *w, const mip_threedm_gnss_sbas_settings_t *in);
+int mip_threedm_gnss_sbas_settings_from_json(mip_jr_t *jr, size_t pos, mip_threedm_gnss_sbas_settings_t *out);
+void mip_threedm_gnss_sbas_settings_response_to_json(mip_jw_t *w,
+                                                     const mip_threedm_gnss_sbas_settings_response_t *in);
+int mip_threedm_gnss_sbas_settings_response_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_threedm_gnss_sbas_settings_response_t *out);
+void mip_threedm_gnss_assisted_fix_control_to_json(mip_jw_t *w,
+                                                   const mip_threedm_gnss_assisted_fix_control_t *in);
+int mip_threedm_gnss_assisted_fix_control_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_threedm_gnss_assisted_fix_control_t *out);
+void mip_threedm_gnss_assisted_fix_control_response_to_json(
+    mip_jw_t *w, const mip_threedm_gnss_assisted_fix_control_response_t *in);
+int mip_threedm_gnss_assisted_fix_control_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_gnss_assisted_fix_control_response_t *out);
+void mip_threedm_gnss_assist_time_update_to_json(mip_jw_t *w,
+                                                 const mip_threedm_gnss_assist_time_update_t *in);
+int mip_threedm_gnss_assist_time_update_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_threedm_gnss_assist_time_update_t *out);
+void mip_threedm_gnss_assist_time_update_response_to_json(
+    mip_jw_t *w, const mip_threedm_gnss_assist_time_update_response_t *in);
+int mip_threedm_gnss_assist_time_update_response_from_json(
+    mip_jr_t *jr, size_t pos, mip_threedm_gnss_assist_time_update_response_t *out);
+void mip_threedm_pps_source_to_json(mip_jw_t *w, const mip_threedm_pps_source_t *in);
+int mip_threedm_pps_source_from_json(mip_jr_t *jr, size_t pos, mip_threedm_pps_source_t *out);
+void mip_threedm_pps_source_response_to_json(mip_jw_t *w, const mip_threedm_pps_source_response_t *in);
+int mip_threedm_pps_source_response_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_threedm_pps_source_response_t *out);
+void mip_threedm_get_supported_events_to_json(mip_jw_t *w, const mip_threedm_get_supported_events_t *in);
+int mip_threedm_get_supported_events_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_threedm_get_supported_events_t *out);
+void mip_threedm_supported_events_to_json(mip_jw_t *w, const mip_threedm_supported_events_t *in);
+int mip_threedm_supported_events_from_json(mip_jr_t *jr, size_t pos, mip_threedm_supported_events_t *out);
+void mip_threedm_device_status_to_json(mip_jw_t *w, const mip_threedm_device_status_t *in);
+int mip_threedm_device_status_from_json(mip_jr_t *jr, size_t pos, mip_threedm_device_status_t *out);
+void mip_threedm_device_status_response_to_json(mip_jw_t *w, const mip_threedm_device_status_response_t *in);
+int mip_threedm_device_status_response_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_threedm_device_status_response_t *out);
 void mip_filter_reset_filter_to_json(mip_jw_t *w, const mip_filter_reset_filter_t *in);
 int mip_filter_reset_filter_from_json(mip_jr_t *jr, size_t pos, mip_filter_reset_filter_t *out);
 void mip_filter_set_initial_attitude_to_json(mip_jw_t *w, const mip_filter_set_initial_attitude_t *in);

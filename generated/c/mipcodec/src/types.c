@@ -657,6 +657,208 @@ int mip_combination_params_from_json(mip_jr_t *jr, size_t pos, mip_combination_p
     return 0;
 }
 
+/* ---- ConstellationSettings */
+
+int mip_constellation_settings_read(mip_reader_t *r, mip_constellation_settings_t *out) {
+    mip_rd_push(r, "constellation_id");
+    if (mip_rd_u8(r, &out->constellation_id)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "enable");
+    if (mip_rd_u8(r, &out->enable)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_channels");
+    if (mip_rd_u8(r, &out->reserved_channels)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "max_channels");
+    if (mip_rd_u8(r, &out->max_channels)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "option_flags");
+    if (mip_rd_u16(r, &out->option_flags)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_constellation_settings_write(mip_writer_t *w, const mip_constellation_settings_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->constellation_id)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->enable)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_channels)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->max_channels)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->option_flags)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_constellation_settings_to_json(mip_jw_t *w, const mip_constellation_settings_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "constellation_id");
+    mip_jw_u8(w, &in->constellation_id);
+    mip_jw_key(w, &first, "enable");
+    mip_jw_u8(w, &in->enable);
+    mip_jw_key(w, &first, "reserved_channels");
+    mip_jw_u8(w, &in->reserved_channels);
+    mip_jw_key(w, &first, "max_channels");
+    mip_jw_u8(w, &in->max_channels);
+    mip_jw_key(w, &first, "option_flags");
+    mip_jw_u16(w, &in->option_flags);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_constellation_settings_from_json(mip_jr_t *jr, size_t pos, mip_constellation_settings_t *out) {
+    static const char *const keys[] = {"constellation_id", "enable", "reserved_channels", "max_channels",
+                                       "option_flags"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 5)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "constellation_id", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"constellation_id\"");
+    }
+    {
+        mip_jr_push(jr, "constellation_id");
+        if (mip_jr_u8(jr, vp, &out->constellation_id)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "enable", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"enable\"");
+    }
+    {
+        mip_jr_push(jr, "enable");
+        if (mip_jr_u8(jr, vp, &out->enable)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_channels", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_channels\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_channels");
+        if (mip_jr_u8(jr, vp, &out->reserved_channels)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "max_channels", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"max_channels\"");
+    }
+    {
+        mip_jr_push(jr, "max_channels");
+        if (mip_jr_u8(jr, vp, &out->max_channels)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "option_flags", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"option_flags\"");
+    }
+    {
+        mip_jr_push(jr, "option_flags");
+        if (mip_jr_u16(jr, vp, &out->option_flags)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- DescriptorRate */
+
+int mip_descriptor_rate_read(mip_reader_t *r, mip_descriptor_rate_t *out) {
+    mip_rd_push(r, "descriptor");
+    if (mip_rd_u8(r, &out->descriptor)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "decimation");
+    if (mip_rd_u16(r, &out->decimation)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_descriptor_rate_write(mip_writer_t *w, const mip_descriptor_rate_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->descriptor)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->decimation)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_descriptor_rate_to_json(mip_jw_t *w, const mip_descriptor_rate_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "descriptor");
+    mip_jw_u8(w, &in->descriptor);
+    mip_jw_key(w, &first, "decimation");
+    mip_jw_u16(w, &in->decimation);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_descriptor_rate_from_json(mip_jr_t *jr, size_t pos, mip_descriptor_rate_t *out) {
+    static const char *const keys[] = {"descriptor", "decimation"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "descriptor", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"descriptor\"");
+    }
+    {
+        mip_jr_push(jr, "descriptor");
+        if (mip_jr_u8(jr, vp, &out->descriptor)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "decimation", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"decimation\"");
+    }
+    {
+        mip_jr_push(jr, "decimation");
+        if (mip_jr_u16(jr, vp, &out->decimation)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
 /* ---- DeviceInfo */
 
 int mip_device_info_read(mip_reader_t *r, mip_device_info_t *out) {
@@ -895,6 +1097,1509 @@ int mip_gnss_receiver_info_entry_from_json(mip_jr_t *jr, size_t pos, mip_gnss_re
         mip_jr_push(jr, "description");
         if (mip_jr_chars(jr, vp, out->description, 32)) {
             return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GpioBehaviorUnused */
+
+int mip_gpio_behavior_unused_read(mip_reader_t *r, mip_gpio_behavior_unused_t *out) {
+    mip_rd_push(r, "behavior");
+    if (mip_rd_u8(r, &out->behavior)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gpio_behavior_unused_write(mip_writer_t *w, const mip_gpio_behavior_unused_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->behavior)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gpio_behavior_unused_to_json(mip_jw_t *w, const mip_gpio_behavior_unused_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "behavior");
+    mip_jw_u8(w, &in->behavior);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gpio_behavior_unused_from_json(mip_jr_t *jr, size_t pos, mip_gpio_behavior_unused_t *out) {
+    static const char *const keys[] = {"behavior"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "behavior", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"behavior\"");
+    }
+    {
+        mip_jr_push(jr, "behavior");
+        if (mip_jr_u8(jr, vp, &out->behavior)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GpioBehaviorIo */
+
+int mip_gpio_behavior_io_read(mip_reader_t *r, mip_gpio_behavior_io_t *out) {
+    mip_rd_push(r, "behavior");
+    if (mip_rd_u8(r, &out->behavior)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gpio_behavior_io_write(mip_writer_t *w, const mip_gpio_behavior_io_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->behavior)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gpio_behavior_io_to_json(mip_jw_t *w, const mip_gpio_behavior_io_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "behavior");
+    mip_jw_u8(w, &in->behavior);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gpio_behavior_io_from_json(mip_jr_t *jr, size_t pos, mip_gpio_behavior_io_t *out) {
+    static const char *const keys[] = {"behavior"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "behavior", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"behavior\"");
+    }
+    {
+        mip_jr_push(jr, "behavior");
+        if (mip_jr_u8(jr, vp, &out->behavior)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GpioBehaviorPps */
+
+int mip_gpio_behavior_pps_read(mip_reader_t *r, mip_gpio_behavior_pps_t *out) {
+    mip_rd_push(r, "behavior");
+    if (mip_rd_u8(r, &out->behavior)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gpio_behavior_pps_write(mip_writer_t *w, const mip_gpio_behavior_pps_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->behavior)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gpio_behavior_pps_to_json(mip_jw_t *w, const mip_gpio_behavior_pps_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "behavior");
+    mip_jw_u8(w, &in->behavior);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gpio_behavior_pps_from_json(mip_jr_t *jr, size_t pos, mip_gpio_behavior_pps_t *out) {
+    static const char *const keys[] = {"behavior"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "behavior", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"behavior\"");
+    }
+    {
+        mip_jr_push(jr, "behavior");
+        if (mip_jr_u8(jr, vp, &out->behavior)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GpioBehaviorEncoder */
+
+int mip_gpio_behavior_encoder_read(mip_reader_t *r, mip_gpio_behavior_encoder_t *out) {
+    mip_rd_push(r, "behavior");
+    if (mip_rd_u8(r, &out->behavior)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gpio_behavior_encoder_write(mip_writer_t *w, const mip_gpio_behavior_encoder_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->behavior)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gpio_behavior_encoder_to_json(mip_jw_t *w, const mip_gpio_behavior_encoder_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "behavior");
+    mip_jw_u8(w, &in->behavior);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gpio_behavior_encoder_from_json(mip_jr_t *jr, size_t pos, mip_gpio_behavior_encoder_t *out) {
+    static const char *const keys[] = {"behavior"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "behavior", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"behavior\"");
+    }
+    {
+        mip_jr_push(jr, "behavior");
+        if (mip_jr_u8(jr, vp, &out->behavior)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GpioBehaviorTimestamp */
+
+int mip_gpio_behavior_timestamp_read(mip_reader_t *r, mip_gpio_behavior_timestamp_t *out) {
+    mip_rd_push(r, "behavior");
+    if (mip_rd_u8(r, &out->behavior)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gpio_behavior_timestamp_write(mip_writer_t *w, const mip_gpio_behavior_timestamp_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->behavior)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gpio_behavior_timestamp_to_json(mip_jw_t *w, const mip_gpio_behavior_timestamp_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "behavior");
+    mip_jw_u8(w, &in->behavior);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gpio_behavior_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_gpio_behavior_timestamp_t *out) {
+    static const char *const keys[] = {"behavior"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "behavior", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"behavior\"");
+    }
+    {
+        mip_jr_push(jr, "behavior");
+        if (mip_jr_u8(jr, vp, &out->behavior)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- GpioBehaviorUart */
+
+int mip_gpio_behavior_uart_read(mip_reader_t *r, mip_gpio_behavior_uart_t *out) {
+    mip_rd_push(r, "behavior");
+    if (mip_rd_u8(r, &out->behavior)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gpio_behavior_uart_write(mip_writer_t *w, const mip_gpio_behavior_uart_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->behavior)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gpio_behavior_uart_to_json(mip_jw_t *w, const mip_gpio_behavior_uart_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "behavior");
+    mip_jw_u8(w, &in->behavior);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gpio_behavior_uart_from_json(mip_jr_t *jr, size_t pos, mip_gpio_behavior_uart_t *out) {
+    static const char *const keys[] = {"behavior"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 1)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "behavior", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"behavior\"");
+    }
+    {
+        mip_jr_push(jr, "behavior");
+        if (mip_jr_u8(jr, vp, &out->behavior)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- Gx5BasicStatus */
+
+int mip_gx5_basic_status_read(mip_reader_t *r, mip_gx5_basic_status_t *out) {
+    mip_rd_push(r, "status_flags");
+    if (mip_rd_u32(r, &out->status_flags)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "system_state");
+    if (mip_rd_u16(r, &out->system_state)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "system_timer");
+    if (mip_rd_u32(r, &out->system_timer)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gx5_basic_status_write(mip_writer_t *w, const mip_gx5_basic_status_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u32(w, &in->status_flags)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->system_state)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->system_timer)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gx5_basic_status_to_json(mip_jw_t *w, const mip_gx5_basic_status_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "status_flags");
+    mip_jw_u32(w, &in->status_flags);
+    mip_jw_key(w, &first, "system_state");
+    mip_jw_u16(w, &in->system_state);
+    mip_jw_key(w, &first, "system_timer");
+    mip_jw_u32(w, &in->system_timer);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gx5_basic_status_from_json(mip_jr_t *jr, size_t pos, mip_gx5_basic_status_t *out) {
+    static const char *const keys[] = {"status_flags", "system_state", "system_timer"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 3)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "status_flags", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"status_flags\"");
+    }
+    {
+        mip_jr_push(jr, "status_flags");
+        if (mip_jr_u32(jr, vp, &out->status_flags)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "system_state", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_state\"");
+    }
+    {
+        mip_jr_push(jr, "system_state");
+        if (mip_jr_u16(jr, vp, &out->system_state)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "system_timer", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_timer\"");
+    }
+    {
+        mip_jr_push(jr, "system_timer");
+        if (mip_jr_u32(jr, vp, &out->system_timer)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- Gx5DiagnosticStatus */
+
+int mip_gx5_diagnostic_status_read(mip_reader_t *r, mip_gx5_diagnostic_status_t *out) {
+    mip_rd_push(r, "status_flags");
+    if (mip_rd_u32(r, &out->status_flags)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "system_state");
+    if (mip_rd_u16(r, &out->system_state)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "system_timer");
+    if (mip_rd_u32(r, &out->system_timer)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_power_state");
+    if (mip_rd_u8(r, &out->gnss_power_state)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "pps_pulse_count");
+    if (mip_rd_u32(r, &out->pps_pulse_count)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "last_pps_time");
+    if (mip_rd_u32(r, &out->last_pps_time)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_stream_enabled");
+    if (mip_rd_u8(r, &out->imu_stream_enabled)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_stream_enabled");
+    if (mip_rd_u8(r, &out->gnss_stream_enabled)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "filter_stream_enabled");
+    if (mip_rd_u8(r, &out->filter_stream_enabled)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_dropped_packets");
+    if (mip_rd_u32(r, &out->imu_dropped_packets)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_dropped_packets");
+    if (mip_rd_u32(r, &out->gnss_dropped_packets)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "filter_dropped_packets");
+    if (mip_rd_u32(r, &out->filter_dropped_packets)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "com_bytes_written");
+    if (mip_rd_u32(r, &out->com_bytes_written)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "com_bytes_read");
+    if (mip_rd_u32(r, &out->com_bytes_read)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "com_write_overruns");
+    if (mip_rd_u32(r, &out->com_write_overruns)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_parse_errors");
+    if (mip_rd_u32(r, &out->imu_parse_errors)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_messages_read");
+    if (mip_rd_u32(r, &out->imu_messages_read)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "last_imu_message_time");
+    if (mip_rd_u32(r, &out->last_imu_message_time)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_parse_errors");
+    if (mip_rd_u32(r, &out->gnss_parse_errors)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_messages_read");
+    if (mip_rd_u32(r, &out->gnss_messages_read)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "last_gnss_message_time");
+    if (mip_rd_u32(r, &out->last_gnss_message_time)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gx5_diagnostic_status_write(mip_writer_t *w, const mip_gx5_diagnostic_status_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u32(w, &in->status_flags)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->system_state)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->system_timer)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->gnss_power_state)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->pps_pulse_count)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->last_pps_time)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->imu_stream_enabled)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->gnss_stream_enabled)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->filter_stream_enabled)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->imu_dropped_packets)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->gnss_dropped_packets)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->filter_dropped_packets)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->com_bytes_written)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->com_bytes_read)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->com_write_overruns)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->imu_parse_errors)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->imu_messages_read)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->last_imu_message_time)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->gnss_parse_errors)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->gnss_messages_read)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u32(w, &in->last_gnss_message_time)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gx5_diagnostic_status_to_json(mip_jw_t *w, const mip_gx5_diagnostic_status_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "status_flags");
+    mip_jw_u32(w, &in->status_flags);
+    mip_jw_key(w, &first, "system_state");
+    mip_jw_u16(w, &in->system_state);
+    mip_jw_key(w, &first, "system_timer");
+    mip_jw_u32(w, &in->system_timer);
+    mip_jw_key(w, &first, "gnss_power_state");
+    mip_jw_u8(w, &in->gnss_power_state);
+    mip_jw_key(w, &first, "pps_pulse_count");
+    mip_jw_u32(w, &in->pps_pulse_count);
+    mip_jw_key(w, &first, "last_pps_time");
+    mip_jw_u32(w, &in->last_pps_time);
+    mip_jw_key(w, &first, "imu_stream_enabled");
+    mip_jw_u8(w, &in->imu_stream_enabled);
+    mip_jw_key(w, &first, "gnss_stream_enabled");
+    mip_jw_u8(w, &in->gnss_stream_enabled);
+    mip_jw_key(w, &first, "filter_stream_enabled");
+    mip_jw_u8(w, &in->filter_stream_enabled);
+    mip_jw_key(w, &first, "imu_dropped_packets");
+    mip_jw_u32(w, &in->imu_dropped_packets);
+    mip_jw_key(w, &first, "gnss_dropped_packets");
+    mip_jw_u32(w, &in->gnss_dropped_packets);
+    mip_jw_key(w, &first, "filter_dropped_packets");
+    mip_jw_u32(w, &in->filter_dropped_packets);
+    mip_jw_key(w, &first, "com_bytes_written");
+    mip_jw_u32(w, &in->com_bytes_written);
+    mip_jw_key(w, &first, "com_bytes_read");
+    mip_jw_u32(w, &in->com_bytes_read);
+    mip_jw_key(w, &first, "com_write_overruns");
+    mip_jw_u32(w, &in->com_write_overruns);
+    mip_jw_key(w, &first, "imu_parse_errors");
+    mip_jw_u32(w, &in->imu_parse_errors);
+    mip_jw_key(w, &first, "imu_messages_read");
+    mip_jw_u32(w, &in->imu_messages_read);
+    mip_jw_key(w, &first, "last_imu_message_time");
+    mip_jw_u32(w, &in->last_imu_message_time);
+    mip_jw_key(w, &first, "gnss_parse_errors");
+    mip_jw_u32(w, &in->gnss_parse_errors);
+    mip_jw_key(w, &first, "gnss_messages_read");
+    mip_jw_u32(w, &in->gnss_messages_read);
+    mip_jw_key(w, &first, "last_gnss_message_time");
+    mip_jw_u32(w, &in->last_gnss_message_time);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gx5_diagnostic_status_from_json(mip_jr_t *jr, size_t pos, mip_gx5_diagnostic_status_t *out) {
+    static const char *const keys[] = {
+        "status_flags",          "system_state",          "system_timer",         "gnss_power_state",
+        "pps_pulse_count",       "last_pps_time",         "imu_stream_enabled",   "gnss_stream_enabled",
+        "filter_stream_enabled", "imu_dropped_packets",   "gnss_dropped_packets", "filter_dropped_packets",
+        "com_bytes_written",     "com_bytes_read",        "com_write_overruns",   "imu_parse_errors",
+        "imu_messages_read",     "last_imu_message_time", "gnss_parse_errors",    "gnss_messages_read",
+        "last_gnss_message_time"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 21)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "status_flags", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"status_flags\"");
+    }
+    {
+        mip_jr_push(jr, "status_flags");
+        if (mip_jr_u32(jr, vp, &out->status_flags)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "system_state", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_state\"");
+    }
+    {
+        mip_jr_push(jr, "system_state");
+        if (mip_jr_u16(jr, vp, &out->system_state)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "system_timer", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_timer\"");
+    }
+    {
+        mip_jr_push(jr, "system_timer");
+        if (mip_jr_u32(jr, vp, &out->system_timer)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_power_state", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_power_state\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_power_state");
+        if (mip_jr_u8(jr, vp, &out->gnss_power_state)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "pps_pulse_count", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"pps_pulse_count\"");
+    }
+    {
+        mip_jr_push(jr, "pps_pulse_count");
+        if (mip_jr_u32(jr, vp, &out->pps_pulse_count)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "last_pps_time", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"last_pps_time\"");
+    }
+    {
+        mip_jr_push(jr, "last_pps_time");
+        if (mip_jr_u32(jr, vp, &out->last_pps_time)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_stream_enabled", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_stream_enabled\"");
+    }
+    {
+        mip_jr_push(jr, "imu_stream_enabled");
+        if (mip_jr_u8(jr, vp, &out->imu_stream_enabled)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_stream_enabled", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_stream_enabled\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_stream_enabled");
+        if (mip_jr_u8(jr, vp, &out->gnss_stream_enabled)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "filter_stream_enabled", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"filter_stream_enabled\"");
+    }
+    {
+        mip_jr_push(jr, "filter_stream_enabled");
+        if (mip_jr_u8(jr, vp, &out->filter_stream_enabled)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_dropped_packets", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_dropped_packets\"");
+    }
+    {
+        mip_jr_push(jr, "imu_dropped_packets");
+        if (mip_jr_u32(jr, vp, &out->imu_dropped_packets)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_dropped_packets", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_dropped_packets\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_dropped_packets");
+        if (mip_jr_u32(jr, vp, &out->gnss_dropped_packets)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "filter_dropped_packets", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"filter_dropped_packets\"");
+    }
+    {
+        mip_jr_push(jr, "filter_dropped_packets");
+        if (mip_jr_u32(jr, vp, &out->filter_dropped_packets)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "com_bytes_written", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"com_bytes_written\"");
+    }
+    {
+        mip_jr_push(jr, "com_bytes_written");
+        if (mip_jr_u32(jr, vp, &out->com_bytes_written)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "com_bytes_read", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"com_bytes_read\"");
+    }
+    {
+        mip_jr_push(jr, "com_bytes_read");
+        if (mip_jr_u32(jr, vp, &out->com_bytes_read)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "com_write_overruns", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"com_write_overruns\"");
+    }
+    {
+        mip_jr_push(jr, "com_write_overruns");
+        if (mip_jr_u32(jr, vp, &out->com_write_overruns)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_parse_errors", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_parse_errors\"");
+    }
+    {
+        mip_jr_push(jr, "imu_parse_errors");
+        if (mip_jr_u32(jr, vp, &out->imu_parse_errors)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_messages_read", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_messages_read\"");
+    }
+    {
+        mip_jr_push(jr, "imu_messages_read");
+        if (mip_jr_u32(jr, vp, &out->imu_messages_read)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "last_imu_message_time", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"last_imu_message_time\"");
+    }
+    {
+        mip_jr_push(jr, "last_imu_message_time");
+        if (mip_jr_u32(jr, vp, &out->last_imu_message_time)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_parse_errors", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_parse_errors\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_parse_errors");
+        if (mip_jr_u32(jr, vp, &out->gnss_parse_errors)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_messages_read", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_messages_read\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_messages_read");
+        if (mip_jr_u32(jr, vp, &out->gnss_messages_read)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "last_gnss_message_time", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"last_gnss_message_time\"");
+    }
+    {
+        mip_jr_push(jr, "last_gnss_message_time");
+        if (mip_jr_u32(jr, vp, &out->last_gnss_message_time)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- Gx5PollDescriptor */
+
+int mip_gx5_poll_descriptor_read(mip_reader_t *r, mip_gx5_poll_descriptor_t *out) {
+    mip_rd_push(r, "descriptor");
+    if (mip_rd_u8(r, &out->descriptor)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved");
+    if (mip_rd_u16(r, &out->reserved)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_gx5_poll_descriptor_write(mip_writer_t *w, const mip_gx5_poll_descriptor_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->descriptor)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->reserved)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_gx5_poll_descriptor_to_json(mip_jw_t *w, const mip_gx5_poll_descriptor_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "descriptor");
+    mip_jw_u8(w, &in->descriptor);
+    mip_jw_key(w, &first, "reserved");
+    mip_jw_u16(w, &in->reserved);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_gx5_poll_descriptor_from_json(mip_jr_t *jr, size_t pos, mip_gx5_poll_descriptor_t *out) {
+    static const char *const keys[] = {"descriptor", "reserved"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "descriptor", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"descriptor\"");
+    }
+    {
+        mip_jr_push(jr, "descriptor");
+        if (mip_jr_u8(jr, vp, &out->descriptor)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved\"");
+    }
+    {
+        mip_jr_push(jr, "reserved");
+        if (mip_jr_u16(jr, vp, &out->reserved)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- NmeaMessage */
+
+int mip_nmea_message_read(mip_reader_t *r, mip_nmea_message_t *out) {
+    mip_rd_push(r, "message_id");
+    if (mip_rd_u8(r, &out->message_id)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "talker_id");
+    if (mip_rd_u8(r, &out->talker_id)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "source_desc_set");
+    if (mip_rd_u8(r, &out->source_desc_set)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "decimation");
+    if (mip_rd_u16(r, &out->decimation)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_nmea_message_write(mip_writer_t *w, const mip_nmea_message_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->message_id)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->talker_id)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->source_desc_set)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u16(w, &in->decimation)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_nmea_message_to_json(mip_jw_t *w, const mip_nmea_message_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "message_id");
+    mip_jw_u8(w, &in->message_id);
+    mip_jw_key(w, &first, "talker_id");
+    mip_jw_u8(w, &in->talker_id);
+    mip_jw_key(w, &first, "source_desc_set");
+    mip_jw_u8(w, &in->source_desc_set);
+    mip_jw_key(w, &first, "decimation");
+    mip_jw_u16(w, &in->decimation);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_nmea_message_from_json(mip_jr_t *jr, size_t pos, mip_nmea_message_t *out) {
+    static const char *const keys[] = {"message_id", "talker_id", "source_desc_set", "decimation"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 4)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "message_id", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"message_id\"");
+    }
+    {
+        mip_jr_push(jr, "message_id");
+        if (mip_jr_u8(jr, vp, &out->message_id)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "talker_id", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"talker_id\"");
+    }
+    {
+        mip_jr_push(jr, "talker_id");
+        if (mip_jr_u8(jr, vp, &out->talker_id)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "source_desc_set", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"source_desc_set\"");
+    }
+    {
+        mip_jr_push(jr, "source_desc_set");
+        if (mip_jr_u8(jr, vp, &out->source_desc_set)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "decimation", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"decimation\"");
+    }
+    {
+        mip_jr_push(jr, "decimation");
+        if (mip_jr_u16(jr, vp, &out->decimation)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- SensorRangeEntry */
+
+int mip_sensor_range_entry_read(mip_reader_t *r, mip_sensor_range_entry_t *out) {
+    mip_rd_push(r, "setting");
+    if (mip_rd_u8(r, &out->setting)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "range");
+    if (mip_rd_f32(r, &out->range)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_sensor_range_entry_write(mip_writer_t *w, const mip_sensor_range_entry_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->setting)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_f32(w, &in->range)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_sensor_range_entry_to_json(mip_jw_t *w, const mip_sensor_range_entry_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "setting");
+    mip_jw_u8(w, &in->setting);
+    mip_jw_key(w, &first, "range");
+    mip_jw_f32(w, &in->range);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_sensor_range_entry_from_json(mip_jr_t *jr, size_t pos, mip_sensor_range_entry_t *out) {
+    static const char *const keys[] = {"setting", "range"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "setting", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"setting\"");
+    }
+    {
+        mip_jr_push(jr, "setting");
+        if (mip_jr_u8(jr, vp, &out->setting)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "range", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"range\"");
+    }
+    {
+        mip_jr_push(jr, "range");
+        if (mip_jr_f32(jr, vp, &out->range)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- SupportedActionType */
+
+int mip_supported_action_type_read(mip_reader_t *r, mip_supported_action_type_t *out) {
+    mip_rd_push(r, "type");
+    if (mip_rd_u8(r, &out->type)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "count");
+    if (mip_rd_u8(r, &out->count)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_supported_action_type_write(mip_writer_t *w, const mip_supported_action_type_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->count)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_supported_action_type_to_json(mip_jw_t *w, const mip_supported_action_type_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "type");
+    mip_jw_u8(w, &in->type);
+    mip_jw_key(w, &first, "count");
+    mip_jw_u8(w, &in->count);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_supported_action_type_from_json(mip_jr_t *jr, size_t pos, mip_supported_action_type_t *out) {
+    static const char *const keys[] = {"type", "count"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "type", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"type\"");
+    }
+    {
+        mip_jr_push(jr, "type");
+        if (mip_jr_u8(jr, vp, &out->type)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "count", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"count\"");
+    }
+    {
+        mip_jr_push(jr, "count");
+        if (mip_jr_u8(jr, vp, &out->count)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- SupportedActions */
+
+int mip_supported_actions_read(mip_reader_t *r, mip_supported_actions_t *out) {
+    size_t i;
+    mip_rd_push(r, "max_instances");
+    if (mip_rd_u8(r, &out->max_instances)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "num_entries");
+    if (mip_rd_u8(r, &out->num_entries)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "entries");
+    if (out->num_entries > 125) {
+        return mip_rd_count_error(r, (uint64_t)out->num_entries, 125);
+    }
+    for (i = 0; i < (size_t)out->num_entries; i++) {
+        mip_rd_index(r, i);
+        if (mip_supported_action_type_read(r, &out->entries[i])) {
+            return -1;
+        }
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_supported_actions_write(mip_writer_t *w, const mip_supported_actions_t *in) {
+    mip_status_t st;
+    size_t i;
+    if ((st = mip_wr_u8(w, &in->max_instances)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->num_entries)) != MIP_OK) {
+        return st;
+    }
+    if (in->num_entries > 125) {
+        return MIP_ERR_INVALID;
+    }
+    for (i = 0; i < (size_t)in->num_entries; i++) {
+        if ((st = mip_supported_action_type_write(w, &in->entries[i])) != MIP_OK) {
+            return st;
+        }
+    }
+    return MIP_OK;
+}
+
+void mip_supported_actions_to_json(mip_jw_t *w, const mip_supported_actions_t *in) {
+    int first = 1;
+    size_t i;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "max_instances");
+    mip_jw_u8(w, &in->max_instances);
+    mip_jw_key(w, &first, "num_entries");
+    mip_jw_u8(w, &in->num_entries);
+    mip_jw_key(w, &first, "entries");
+    mip_jw_raw(w, "[", 1);
+    for (i = 0; i < (size_t)in->num_entries && i < 125; i++) {
+        mip_jw_sep(w, i);
+        mip_supported_action_type_to_json(w, &in->entries[i]);
+    }
+    mip_jw_raw(w, "]", 1);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_supported_actions_from_json(mip_jr_t *jr, size_t pos, mip_supported_actions_t *out) {
+    static const char *const keys[] = {"max_instances", "num_entries", "entries"};
+    size_t vp = 0;
+    int found;
+    size_t i;
+    size_t it = 0;
+    size_t ep = 0;
+    if (mip_jr_object(jr, pos, keys, 3)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "max_instances", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"max_instances\"");
+    }
+    {
+        mip_jr_push(jr, "max_instances");
+        if (mip_jr_u8(jr, vp, &out->max_instances)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "num_entries", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"num_entries\"");
+    }
+    {
+        mip_jr_push(jr, "num_entries");
+        if (mip_jr_u8(jr, vp, &out->num_entries)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "entries", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"entries\"");
+    }
+    {
+        mip_jr_push(jr, "entries");
+        if (mip_jr_array(jr, vp, &it)) {
+            return -1;
+        }
+        for (i = 0;; i++) {
+            int more = mip_jr_next(jr, &it, &ep);
+            if (more < 0) {
+                return -1;
+            }
+            if (!more) {
+                break;
+            }
+            if (i >= 125) {
+                return mip_jr_fail(jr, "more than 125 elements");
+            }
+            mip_jr_index(jr, i);
+            if (mip_supported_action_type_from_json(jr, ep, &out->entries[i])) {
+                return -1;
+            }
+        }
+        mip_jr_index(jr, SIZE_MAX);
+        if (i != (size_t)out->num_entries) {
+            return mip_jr_fail(jr, "%zu elements but num_entries is %zu", i, (size_t)out->num_entries);
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- SupportedTriggerType */
+
+int mip_supported_trigger_type_read(mip_reader_t *r, mip_supported_trigger_type_t *out) {
+    mip_rd_push(r, "type");
+    if (mip_rd_u8(r, &out->type)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "count");
+    if (mip_rd_u8(r, &out->count)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_supported_trigger_type_write(mip_writer_t *w, const mip_supported_trigger_type_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->count)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_supported_trigger_type_to_json(mip_jw_t *w, const mip_supported_trigger_type_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "type");
+    mip_jw_u8(w, &in->type);
+    mip_jw_key(w, &first, "count");
+    mip_jw_u8(w, &in->count);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_supported_trigger_type_from_json(mip_jr_t *jr, size_t pos, mip_supported_trigger_type_t *out) {
+    static const char *const keys[] = {"type", "count"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 2)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "type", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"type\"");
+    }
+    {
+        mip_jr_push(jr, "type");
+        if (mip_jr_u8(jr, vp, &out->type)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "count", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"count\"");
+    }
+    {
+        mip_jr_push(jr, "count");
+        if (mip_jr_u8(jr, vp, &out->count)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
+/* ---- SupportedTriggers */
+
+int mip_supported_triggers_read(mip_reader_t *r, mip_supported_triggers_t *out) {
+    size_t i;
+    mip_rd_push(r, "max_instances");
+    if (mip_rd_u8(r, &out->max_instances)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "num_entries");
+    if (mip_rd_u8(r, &out->num_entries)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "entries");
+    if (out->num_entries > 125) {
+        return mip_rd_count_error(r, (uint64_t)out->num_entries, 125);
+    }
+    for (i = 0; i < (size_t)out->num_entries; i++) {
+        mip_rd_index(r, i);
+        if (mip_supported_trigger_type_read(r, &out->entries[i])) {
+            return -1;
+        }
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_supported_triggers_write(mip_writer_t *w, const mip_supported_triggers_t *in) {
+    mip_status_t st;
+    size_t i;
+    if ((st = mip_wr_u8(w, &in->max_instances)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->num_entries)) != MIP_OK) {
+        return st;
+    }
+    if (in->num_entries > 125) {
+        return MIP_ERR_INVALID;
+    }
+    for (i = 0; i < (size_t)in->num_entries; i++) {
+        if ((st = mip_supported_trigger_type_write(w, &in->entries[i])) != MIP_OK) {
+            return st;
+        }
+    }
+    return MIP_OK;
+}
+
+void mip_supported_triggers_to_json(mip_jw_t *w, const mip_supported_triggers_t *in) {
+    int first = 1;
+    size_t i;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "max_instances");
+    mip_jw_u8(w, &in->max_instances);
+    mip_jw_key(w, &first, "num_entries");
+    mip_jw_u8(w, &in->num_entries);
+    mip_jw_key(w, &first, "entries");
+    mip_jw_raw(w, "[", 1);
+    for (i = 0; i < (size_t)in->num_entries && i < 125; i++) {
+        mip_jw_sep(w, i);
+        mip_supported_trigger_type_to_json(w, &in->entries[i]);
+    }
+    mip_jw_raw(w, "]", 1);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_supported_triggers_from_json(mip_jr_t *jr, size_t pos, mip_supported_triggers_t *out) {
+    static const char *const keys[] = {"max_instances", "num_entries", "entries"};
+    size_t vp = 0;
+    int found;
+    size_t i;
+    size_t it = 0;
+    size_t ep = 0;
+    if (mip_jr_object(jr, pos, keys, 3)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "max_instances", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"max_instances\"");
+    }
+    {
+        mip_jr_push(jr, "max_instances");
+        if (mip_jr_u8(jr, vp, &out->max_instances)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "num_entries", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"num_entries\"");
+    }
+    {
+        mip_jr_push(jr, "num_entries");
+        if (mip_jr_u8(jr, vp, &out->num_entries)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "entries", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"entries\"");
+    }
+    {
+        mip_jr_push(jr, "entries");
+        if (mip_jr_array(jr, vp, &it)) {
+            return -1;
+        }
+        for (i = 0;; i++) {
+            int more = mip_jr_next(jr, &it, &ep);
+            if (more < 0) {
+                return -1;
+            }
+            if (!more) {
+                break;
+            }
+            if (i >= 125) {
+                return mip_jr_fail(jr, "more than 125 elements");
+            }
+            mip_jr_index(jr, i);
+            if (mip_supported_trigger_type_from_json(jr, ep, &out->entries[i])) {
+                return -1;
+            }
+        }
+        mip_jr_index(jr, SIZE_MAX);
+        if (i != (size_t)out->num_entries) {
+            return mip_jr_fail(jr, "%zu elements but num_entries is %zu", i, (size_t)out->num_entries);
         }
         mip_jr_pop(jr);
     }
@@ -1306,6 +3011,214 @@ int mip_aiding_frame_rotation_from_json(mip_jr_t *jr, size_t pos, mip_aiding_fra
         return mip_aiding_frame_euler_from_json(jr, pos, &out->euler);
     case MIP_AIDING_FRAME_FORMAT_QUATERNION:
         return mip_aiding_frame_quaternion_from_json(jr, pos, &out->quaternion);
+    default:
+        (void)pos;
+        (void)out;
+        return mip_jr_fail(jr, "no member for selector value %llu", (unsigned long long)selector);
+    }
+}
+
+/* ---- GpioBehavior (selected by mip_gpio_feature_t) */
+
+int mip_gpio_behavior_read(mip_reader_t *r, mip_gpio_feature_t selector, mip_gpio_behavior_t *out) {
+    switch (selector) {
+    case MIP_GPIO_FEATURE_UNUSED:
+        return mip_gpio_behavior_unused_read(r, &out->unused);
+    case MIP_GPIO_FEATURE_GPIO:
+        return mip_gpio_behavior_io_read(r, &out->gpio);
+    case MIP_GPIO_FEATURE_PPS:
+        return mip_gpio_behavior_pps_read(r, &out->pps);
+    case MIP_GPIO_FEATURE_ENCODER:
+        return mip_gpio_behavior_encoder_read(r, &out->encoder);
+    case MIP_GPIO_FEATURE_TIMESTAMP:
+        return mip_gpio_behavior_timestamp_read(r, &out->timestamp);
+    case MIP_GPIO_FEATURE_UART:
+        return mip_gpio_behavior_uart_read(r, &out->uart);
+    default:
+        return mip_rd_selector_error_u(r, (uint64_t)selector);
+    }
+}
+
+mip_status_t mip_gpio_behavior_write(mip_writer_t *w, mip_gpio_feature_t selector,
+                                     const mip_gpio_behavior_t *in) {
+    switch (selector) {
+    case MIP_GPIO_FEATURE_UNUSED:
+        return mip_gpio_behavior_unused_write(w, &in->unused);
+    case MIP_GPIO_FEATURE_GPIO:
+        return mip_gpio_behavior_io_write(w, &in->gpio);
+    case MIP_GPIO_FEATURE_PPS:
+        return mip_gpio_behavior_pps_write(w, &in->pps);
+    case MIP_GPIO_FEATURE_ENCODER:
+        return mip_gpio_behavior_encoder_write(w, &in->encoder);
+    case MIP_GPIO_FEATURE_TIMESTAMP:
+        return mip_gpio_behavior_timestamp_write(w, &in->timestamp);
+    case MIP_GPIO_FEATURE_UART:
+        return mip_gpio_behavior_uart_write(w, &in->uart);
+    default:
+        (void)w;
+        (void)in;
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_gpio_behavior_to_json(mip_jw_t *w, mip_gpio_feature_t selector, const mip_gpio_behavior_t *in) {
+    switch (selector) {
+    case MIP_GPIO_FEATURE_UNUSED:
+        mip_gpio_behavior_unused_to_json(w, &in->unused);
+        return;
+    case MIP_GPIO_FEATURE_GPIO:
+        mip_gpio_behavior_io_to_json(w, &in->gpio);
+        return;
+    case MIP_GPIO_FEATURE_PPS:
+        mip_gpio_behavior_pps_to_json(w, &in->pps);
+        return;
+    case MIP_GPIO_FEATURE_ENCODER:
+        mip_gpio_behavior_encoder_to_json(w, &in->encoder);
+        return;
+    case MIP_GPIO_FEATURE_TIMESTAMP:
+        mip_gpio_behavior_timestamp_to_json(w, &in->timestamp);
+        return;
+    case MIP_GPIO_FEATURE_UART:
+        mip_gpio_behavior_uart_to_json(w, &in->uart);
+        return;
+    default:
+        (void)in;
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_gpio_behavior_from_json(mip_jr_t *jr, size_t pos, mip_gpio_feature_t selector,
+                                mip_gpio_behavior_t *out) {
+    switch (selector) {
+    case MIP_GPIO_FEATURE_UNUSED:
+        return mip_gpio_behavior_unused_from_json(jr, pos, &out->unused);
+    case MIP_GPIO_FEATURE_GPIO:
+        return mip_gpio_behavior_io_from_json(jr, pos, &out->gpio);
+    case MIP_GPIO_FEATURE_PPS:
+        return mip_gpio_behavior_pps_from_json(jr, pos, &out->pps);
+    case MIP_GPIO_FEATURE_ENCODER:
+        return mip_gpio_behavior_encoder_from_json(jr, pos, &out->encoder);
+    case MIP_GPIO_FEATURE_TIMESTAMP:
+        return mip_gpio_behavior_timestamp_from_json(jr, pos, &out->timestamp);
+    case MIP_GPIO_FEATURE_UART:
+        return mip_gpio_behavior_uart_from_json(jr, pos, &out->uart);
+    default:
+        (void)pos;
+        (void)out;
+        return mip_jr_fail(jr, "no member for selector value %llu", (unsigned long long)selector);
+    }
+}
+
+/* ---- Gx5DeviceStatus (selected by mip_device_status_selector_t) */
+
+int mip_gx5_device_status_read(mip_reader_t *r, mip_device_status_selector_t selector,
+                               mip_gx5_device_status_t *out) {
+    switch (selector) {
+    case MIP_DEVICE_STATUS_SELECTOR_BASIC:
+        return mip_gx5_basic_status_read(r, &out->basic);
+    case MIP_DEVICE_STATUS_SELECTOR_DIAGNOSTIC:
+        return mip_gx5_diagnostic_status_read(r, &out->diagnostic);
+    default:
+        return mip_rd_selector_error_u(r, (uint64_t)selector);
+    }
+}
+
+mip_status_t mip_gx5_device_status_write(mip_writer_t *w, mip_device_status_selector_t selector,
+                                         const mip_gx5_device_status_t *in) {
+    switch (selector) {
+    case MIP_DEVICE_STATUS_SELECTOR_BASIC:
+        return mip_gx5_basic_status_write(w, &in->basic);
+    case MIP_DEVICE_STATUS_SELECTOR_DIAGNOSTIC:
+        return mip_gx5_diagnostic_status_write(w, &in->diagnostic);
+    default:
+        (void)w;
+        (void)in;
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_gx5_device_status_to_json(mip_jw_t *w, mip_device_status_selector_t selector,
+                                   const mip_gx5_device_status_t *in) {
+    switch (selector) {
+    case MIP_DEVICE_STATUS_SELECTOR_BASIC:
+        mip_gx5_basic_status_to_json(w, &in->basic);
+        return;
+    case MIP_DEVICE_STATUS_SELECTOR_DIAGNOSTIC:
+        mip_gx5_diagnostic_status_to_json(w, &in->diagnostic);
+        return;
+    default:
+        (void)in;
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_gx5_device_status_from_json(mip_jr_t *jr, size_t pos, mip_device_status_selector_t selector,
+                                    mip_gx5_device_status_t *out) {
+    switch (selector) {
+    case MIP_DEVICE_STATUS_SELECTOR_BASIC:
+        return mip_gx5_basic_status_from_json(jr, pos, &out->basic);
+    case MIP_DEVICE_STATUS_SELECTOR_DIAGNOSTIC:
+        return mip_gx5_diagnostic_status_from_json(jr, pos, &out->diagnostic);
+    default:
+        (void)pos;
+        (void)out;
+        return mip_jr_fail(jr, "no member for selector value %llu", (unsigned long long)selector);
+    }
+}
+
+/* ---- SupportedEventsInfo (selected by mip_supported_events_query_t) */
+
+int mip_supported_events_info_read(mip_reader_t *r, mip_supported_events_query_t selector,
+                                   mip_supported_events_info_t *out) {
+    switch (selector) {
+    case MIP_SUPPORTED_EVENTS_QUERY_TRIGGER_TYPES:
+        return mip_supported_triggers_read(r, &out->trigger_types);
+    case MIP_SUPPORTED_EVENTS_QUERY_ACTION_TYPES:
+        return mip_supported_actions_read(r, &out->action_types);
+    default:
+        return mip_rd_selector_error_u(r, (uint64_t)selector);
+    }
+}
+
+mip_status_t mip_supported_events_info_write(mip_writer_t *w, mip_supported_events_query_t selector,
+                                             const mip_supported_events_info_t *in) {
+    switch (selector) {
+    case MIP_SUPPORTED_EVENTS_QUERY_TRIGGER_TYPES:
+        return mip_supported_triggers_write(w, &in->trigger_types);
+    case MIP_SUPPORTED_EVENTS_QUERY_ACTION_TYPES:
+        return mip_supported_actions_write(w, &in->action_types);
+    default:
+        (void)w;
+        (void)in;
+        return MIP_ERR_INVALID;
+    }
+}
+
+void mip_supported_events_info_to_json(mip_jw_t *w, mip_supported_events_query_t selector,
+                                       const mip_supported_events_info_t *in) {
+    switch (selector) {
+    case MIP_SUPPORTED_EVENTS_QUERY_TRIGGER_TYPES:
+        mip_supported_triggers_to_json(w, &in->trigger_types);
+        return;
+    case MIP_SUPPORTED_EVENTS_QUERY_ACTION_TYPES:
+        mip_supported_actions_to_json(w, &in->action_types);
+        return;
+    default:
+        (void)in;
+        mip_jw_lit(w, "null");
+        return;
+    }
+}
+
+int mip_supported_events_info_from_json(mip_jr_t *jr, size_t pos, mip_supported_events_query_t selector,
+                                        mip_supported_events_info_t *out) {
+    switch (selector) {
+    case MIP_SUPPORTED_EVENTS_QUERY_TRIGGER_TYPES:
+        return mip_supported_triggers_from_json(jr, pos, &out->trigger_types);
+    case MIP_SUPPORTED_EVENTS_QUERY_ACTION_TYPES:
+        return mip_supported_actions_from_json(jr, pos, &out->action_types);
     default:
         (void)pos;
         (void)out;

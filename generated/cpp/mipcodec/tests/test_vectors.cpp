@@ -5,6 +5,1854 @@
 
 using mipcodec_test::check_vector;
 
+// startup_settings_save_gx5
+TEST(Vectors, startup_settings_save_gx5) {
+    check_vector("75650c030330031f45", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
+                     "settings\",\"device\":\"gx5_45\",\"values\":{\"function\":3}}]}",
+                 });
+}
+
+// startup_settings_ack
+TEST(Vectors, startup_settings_ack) {
+    check_vector("75650c0404f130000f0a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":48,\"ack_code\":0}}]}",
+                 });
+}
+
+// startup_settings_read_gx5
+TEST(Vectors, startup_settings_read_gx5) {
+    check_vector("75650c030330021e44", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
+                     "settings\",\"device\":\"gx5_45\",\"values\":{\"function\":2}}]}",
+                 });
+}
+
+// startup_settings_load_cv7
+TEST(Vectors, startup_settings_load_cv7) {
+    check_vector("75650c030330042046", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
+                     "settings\",\"device\":\"cv7_ins\",\"values\":{\"function\":4}}]}",
+                 });
+}
+
+// startup_settings_default_cv7
+TEST(Vectors, startup_settings_default_cv7) {
+    check_vector("75650c030330052147", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
+                     "settings\",\"device\":\"cv7_ins\",\"values\":{\"function\":5}}]}",
+                 });
+}
+
+// sensor_to_vehicle_euler_example_2
+TEST(Vectors, sensor_to_vehicle_euler_example_2) {
+    check_vector(
+        "75650c0f0f3101bfc90ff90000000000000000c60f", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\","
+            "\"values\":{\"function\":1,\"roll\":-1.5707999467849731,\"pitch\":0.0,\"yaw\":0.0}}]}",
+        });
+}
+
+// sensor_to_vehicle_euler_example_3
+TEST(Vectors, sensor_to_vehicle_euler_example_3) {
+    check_vector("75650c0f0f3101000000003fc90ff93fc90ff9563d", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_"
+                     "euler\",\"values\":{\"function\":1,\"roll\":0.0,\"pitch\":1.5707999467849731,\"yaw\":1."
+                     "5707999467849731}}]}",
+                 });
+}
+
+// sensor_to_vehicle_euler_read
+TEST(Vectors, sensor_to_vehicle_euler_read) {
+    check_vector("75650c030331021f46", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_"
+                     "euler\",\"values\":{\"function\":2}}]}",
+                 });
+}
+
+// sensor_to_vehicle_euler_reply
+TEST(Vectors, sensor_to_vehicle_euler_reply) {
+    check_vector("75650c1204f131000eb1000000003fc90ff93fc90ff9fdd3", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":49,\"ack_code\":0}},{\"descriptor\":177,\"name\":"
+                     "\"sensor_to_vehicle_euler_response\",\"values\":{\"roll\":0.0,\"pitch\":1."
+                     "5707999467849731,\"yaw\":1.5707999467849731}}]}",
+                 });
+}
+
+// sensor_to_vehicle_quaternion_write_identity
+TEST(Vectors, sensor_to_vehicle_quaternion_write_identity) {
+    check_vector("75650c131332013f800000000000000000000000000000fe17", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":50,\"name\":\"sensor_to_vehicle_"
+                     "quaternion\",\"values\":{\"function\":1,\"q\":[1.0,0.0,0.0,0.0]}}]}",
+                 });
+}
+
+// sensor_to_vehicle_quaternion_reply
+TEST(Vectors, sensor_to_vehicle_quaternion_reply) {
+    check_vector("75650c1604f1320012b23f0000003f0000003f0000003f000000e3cc", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":50,\"ack_code\":0}},{\"descriptor\":178,\"name\":"
+                     "\"sensor_to_vehicle_quaternion_response\",\"values\":{\"q\":[0.5,0.5,0.5,0.5]}}]}",
+                 });
+}
+
+// sensor_to_vehicle_dcm_example_2
+TEST(Vectors, sensor_to_vehicle_dcm_example_2) {
+    check_vector("75650c272733013f800000000000000000000000000000000000003f80000000000000bf800000000000002529",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":51,\"name\":\"sensor_to_vehicle_"
+                     "dcm\",\"values\":{\"function\":1,\"dcm\":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}",
+                 });
+}
+
+// sensor_to_vehicle_dcm_example_3
+TEST(Vectors, sensor_to_vehicle_dcm_example_3) {
+    check_vector("75650c2727330100000000bf8000000000000000000000000000003f800000bf8000000000000000000000a529",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":51,\"name\":\"sensor_to_vehicle_"
+                     "dcm\",\"values\":{\"function\":1,\"dcm\":[0.0,-1.0,0.0,0.0,0.0,1.0,-1.0,0.0,0.0]}}]}",
+                 });
+}
+
+// sensor_to_vehicle_dcm_reply
+TEST(Vectors, sensor_to_vehicle_dcm_reply) {
+    check_vector(
+        "75650c2a04f1330026b33f800000000000000000000000000000000000003f80000000000000bf80000000000000cee5",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":51,\"ack_code\":0}},{\"descriptor\":179,\"name\":\"sensor_to_vehicle_dcm_"
+            "response\",\"values\":{\"dcm\":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}",
+        });
+}
+
+// accel_bias_write_zero_gx5
+TEST(Vectors, accel_bias_write_zero_gx5) {
+    check_vector("75650c0f0f37010000000000000000000000003c75", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\","
+                     "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"bias\":[0.0,0.0,0.0]}}]}",
+                 });
+}
+
+// accel_bias_ack
+TEST(Vectors, accel_bias_ack) {
+    check_vector("75650c0404f137001618", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":55,\"ack_code\":0}}]}",
+                 });
+}
+
+// accel_bias_write_no_ack_gx5
+TEST(Vectors, accel_bias_write_no_ack_gx5) {
+    check_vector("75650c0f0f37063b03126fba83126f00000000be32", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\","
+                     "\"device\":\"gx5_45\",\"values\":{\"function\":6,\"bias\":[0.0020000000949949026,-0."
+                     "0010000000474974513,0.0]}}]}",
+                 });
+}
+
+// accel_bias_read_full_length_gx5
+TEST(Vectors, accel_bias_read_full_length_gx5) {
+    check_vector("75650c0f0f37020000000000000000000000003d82", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\","
+                     "\"device\":\"gx5_45\",\"values\":{\"function\":2,\"bias\":[0.0,0.0,0.0]}}]}",
+                 });
+}
+
+// accel_bias_write_cv7
+TEST(Vectors, accel_bias_write_cv7) {
+    check_vector("75650c0f0f37013e800000be0000003d8000007541", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\","
+                     "\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"bias\":[0.25,-0.125,0.0625]}}]}",
+                 });
+}
+
+// accel_bias_read_cv7
+TEST(Vectors, accel_bias_read_cv7) {
+    check_vector("75650c030337022552", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\","
+                     "\"device\":\"cv7_ins\",\"values\":{\"function\":2}}]}",
+                 });
+}
+
+// accel_bias_reply
+TEST(Vectors, accel_bias_reply) {
+    check_vector("75650c1204f137000e9a3e800000be0000003d80000005b8", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":55,\"ack_code\":0}},{\"descriptor\":154,\"name\":"
+                     "\"accel_bias_response\",\"values\":{\"bias\":[0.25,-0.125,0.0625]}}]}",
+                 });
+}
+
+// gyro_bias_write_zero_gx5
+TEST(Vectors, gyro_bias_write_zero_gx5) {
+    check_vector("75650c0f0f38010000000000000000000000003d83", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\","
+                     "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"bias\":[0.0,0.0,0.0]}}]}",
+                 });
+}
+
+// gyro_bias_ack
+TEST(Vectors, gyro_bias_ack) {
+    check_vector("75650c0404f13800171a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":56,\"ack_code\":0}}]}",
+                 });
+}
+
+// gyro_bias_save_cv7
+TEST(Vectors, gyro_bias_save_cv7) {
+    check_vector("75650c030338032755", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\","
+                     "\"device\":\"cv7_ins\",\"values\":{\"function\":3}}]}",
+                 });
+}
+
+// gyro_bias_write_cv7
+TEST(Vectors, gyro_bias_write_cv7) {
+    check_vector("75650c0f0f38013b03126fba83126f3a03126f7883", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\","
+                     "\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"bias\":[0.0020000000949949026,-0."
+                     "0010000000474974513,0.0005000000237487257]}}]}",
+                 });
+}
+
+// gyro_bias_reply
+TEST(Vectors, gyro_bias_reply) {
+    check_vector(
+        "75650c1204f138000e9b3b03126fba83126f3a03126f0909", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":56,\"ack_code\":0}},{\"descriptor\":155,\"name\":\"gyro_bias_response\","
+            "\"values\":{\"bias\":[0.0020000000949949026,-0.0010000000474974513,0.0005000000237487257]}}]}",
+        });
+}
+
+// capture_gyro_bias_command
+TEST(Vectors, capture_gyro_bias_command) {
+    check_vector("75650c04043927105ee0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":57,\"name\":\"capture_gyro_bias\","
+                     "\"values\":{\"averaging_time_ms\":10000}}]}",
+                 });
+}
+
+// capture_gyro_bias_reply
+TEST(Vectors, capture_gyro_bias_reply) {
+    check_vector("75650c1204f139000e9b000000000000000000000000cf19", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":57,\"ack_code\":0}},{\"descriptor\":155,\"name\":"
+                     "\"gyro_bias_response\",\"values\":{\"bias\":[0.0,0.0,0.0]}}]}",
+                 });
+}
+
+// capture_gyro_bias_short_cv7
+TEST(Vectors, capture_gyro_bias_short_cv7) {
+    check_vector("75650c04043903e81270", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":57,\"name\":\"capture_gyro_bias\","
+                     "\"values\":{\"averaging_time_ms\":1000}}]}",
+                 });
+}
+
+// mag_hard_iron_write_zero_gx5
+TEST(Vectors, mag_hard_iron_write_zero_gx5) {
+    check_vector("75650c0f0f3a010000000000000000000000003f9f", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":58,\"name\":\"mag_hard_iron_"
+                     "offset\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}",
+                 });
+}
+
+// mag_hard_iron_ack
+TEST(Vectors, mag_hard_iron_ack) {
+    check_vector("75650c0404f13a00191e", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":58,\"ack_code\":0}}]}",
+                 });
+}
+
+// mag_hard_iron_write_cv7
+TEST(Vectors, mag_hard_iron_write_cv7) {
+    check_vector("75650c0f0f3a013da3d70abdf5c28f3eb333335ad8", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":58,\"name\":\"mag_hard_iron_"
+                     "offset\",\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"offset\":[0."
+                     "07999999821186066,-0.11999999731779099,0.3499999940395355]}}]}",
+                 });
+}
+
+// mag_hard_iron_reply
+TEST(Vectors, mag_hard_iron_reply) {
+    check_vector("75650c1204f13a000e9c3da3d70abdf5c28f3eb33333ec6f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":58,\"ack_code\":0}},{\"descriptor\":156,\"name\":"
+                     "\"mag_hard_iron_offset_response\",\"values\":{\"offset\":[0.07999999821186066,-0."
+                     "11999999731779099,0.3499999940395355]}}]}",
+                 });
+}
+
+// mag_soft_iron_write_identity_gx5
+TEST(Vectors, mag_soft_iron_write_identity_gx5) {
+    check_vector("75650c27273b013f8000000000000000000000000000003f8000000000000000000000000000003f800000ad59",
+                 "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":59,\"name\":\"mag_soft_iron_"
+                     "matrix\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"matrix\":[1.0,0.0,0.0,0.0,"
+                     "1.0,0.0,0.0,0.0,1.0]}}]}",
+                 });
+}
+
+// mag_soft_iron_ack
+TEST(Vectors, mag_soft_iron_ack) {
+    check_vector("75650c0404f13b001a20", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":59,\"ack_code\":0}}]}",
+                 });
+}
+
+// mag_soft_iron_default_cv7
+TEST(Vectors, mag_soft_iron_default_cv7) {
+    check_vector("75650c03033b052c5d", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":59,\"name\":\"mag_soft_iron_"
+                     "matrix\",\"device\":\"cv7_ins\",\"values\":{\"function\":5}}]}",
+                 });
+}
+
+// mag_soft_iron_reply
+TEST(Vectors, mag_soft_iron_reply) {
+    check_vector(
+        "75650c2a04f13b00269d3f828f5c3c23d70abcf5c28f3c23d70a3f7ae1483ca3d70abcf5c28f3ca3d70a3f8000005487",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":59,\"ack_code\":0}},{\"descriptor\":157,\"name\":\"mag_soft_iron_matrix_"
+            "response\",\"values\":{\"matrix\":[1.0199999809265137,0.009999999776482582,-0."
+            "029999999329447746,0.009999999776482582,0.9800000190734863,0.019999999552965164,-0."
+            "029999999329447746,0.019999999552965164,1.0]}}]}",
+        });
+}
+
+// coning_sculling_enable_write
+TEST(Vectors, coning_sculling_enable_write) {
+    check_vector("75650c04043e01012e94", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":62,\"name\":\"coning_sculling_"
+                     "enable\",\"values\":{\"function\":1,\"enable\":true}}]}",
+                 });
+}
+
+// coning_sculling_enable_ack
+TEST(Vectors, coning_sculling_enable_ack) {
+    check_vector("75650c0404f13e001d26", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":62,\"ack_code\":0}}]}",
+                 });
+}
+
+// coning_sculling_enable_read_reply
+TEST(Vectors, coning_sculling_enable_read_reply) {
+    check_vector("75650c0704f13e00039e00c1da", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":62,\"ack_code\":0}},{\"descriptor\":158,\"name\":"
+                     "\"coning_sculling_enable_response\",\"values\":{\"enable\":false}}]}",
+                 });
+}
+
+// uart_baudrate_write_115200
+TEST(Vectors, uart_baudrate_write_115200) {
+    check_vector("75650c070740010001c200f8da", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":64,\"name\":\"uart_baudrate\","
+                     "\"values\":{\"function\":1,\"baud\":115200}}]}",
+                 });
+}
+
+// uart_baudrate_ack
+TEST(Vectors, uart_baudrate_ack) {
+    check_vector("75650c0404f140001f2a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":64,\"ack_code\":0}}]}",
+                 });
+}
+
+// uart_baudrate_read
+TEST(Vectors, uart_baudrate_read) {
+    check_vector("75650c030340022e64", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":64,\"name\":\"uart_baudrate\","
+                     "\"values\":{\"function\":2}}]}",
+                 });
+}
+
+// uart_baudrate_reply_921600
+TEST(Vectors, uart_baudrate_reply_921600) {
+    check_vector("75650c0a04f140000687000e1000d037", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":64,\"ack_code\":0}},{\"descriptor\":135,\"name\":"
+                     "\"uart_baudrate_response\",\"values\":{\"baud\":921600}}]}",
+                 });
+}
+
+// gpio_config_timestamp_falling_pullup
+TEST(Vectors, gpio_config_timestamp_falling_pullup) {
+    check_vector(
+        "75650c07074101010402044171", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":1,\"feature\":4,\"behavior\":{\"behavior\":2},\"pin_mode\":4}}]}",
+        });
+}
+
+// gpio_config_output_low_pin1
+TEST(Vectors, gpio_config_output_low_pin1) {
+    check_vector(
+        "75650c07074101010102003a64", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":1,\"feature\":1,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}",
+        });
+}
+
+// gpio_config_input_pullup_pin3
+TEST(Vectors, gpio_config_input_pullup_pin3) {
+    check_vector(
+        "75650c07074101030101043f6e", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":3,\"feature\":1,\"behavior\":{\"behavior\":1},\"pin_mode\":4}}]}",
+        });
+}
+
+// gpio_config_output_low_pin4
+TEST(Vectors, gpio_config_output_low_pin4) {
+    check_vector(
+        "75650c07074101040102003d70", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":4,\"feature\":1,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}",
+        });
+}
+
+// gpio_state_write_high_pin4
+TEST(Vectors, gpio_state_write_high_pin4) {
+    check_vector("75650c05054201040138e4", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\","
+                     "\"values\":{\"function\":1,\"pin\":4,\"state\":true}}]}",
+                 });
+}
+
+// gpio_state_write_low_pin4
+TEST(Vectors, gpio_state_write_low_pin4) {
+    check_vector("75650c05054201040037e3", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\","
+                     "\"values\":{\"function\":1,\"pin\":4,\"state\":false}}]}",
+                 });
+}
+
+// gpio_config_uart_port2_rx_pin2
+TEST(Vectors, gpio_config_uart_port2_rx_pin2) {
+    check_vector(
+        "75650c07074101020522005fb4", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":2,\"feature\":5,\"behavior\":{\"behavior\":34},\"pin_mode\":0}}]}",
+        });
+}
+
+// gpio_config_pps_input_open_drain
+TEST(Vectors, gpio_config_pps_input_open_drain) {
+    check_vector(
+        "75650c07074101010201013b66", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":1,\"feature\":2,\"behavior\":{\"behavior\":1},\"pin_mode\":1}}]}",
+        });
+}
+
+// gpio_config_encoder_b_pulldown
+TEST(Vectors, gpio_config_encoder_b_pulldown) {
+    check_vector(
+        "75650c07074101040302024178", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":4,\"feature\":3,\"behavior\":{\"behavior\":2},\"pin_mode\":2}}]}",
+        });
+}
+
+// gpio_config_unused_pin3
+TEST(Vectors, gpio_config_unused_pin3) {
+    check_vector(
+        "75650c07074101030000003965", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
+            "\"function\":1,\"pin\":3,\"feature\":0,\"behavior\":{\"behavior\":0},\"pin_mode\":0}}]}",
+        });
+}
+
+// gpio_config_save_all
+TEST(Vectors, gpio_config_save_all) {
+    check_vector("75650c040441030032a0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\","
+                     "\"values\":{\"function\":3,\"pin\":0}}]}",
+                 });
+}
+
+// gpio_config_read_pin1
+TEST(Vectors, gpio_config_read_pin1) {
+    check_vector("75650c0404410201329f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\","
+                     "\"values\":{\"function\":2,\"pin\":1}}]}",
+                 });
+}
+
+// gpio_config_reply_pps_output
+TEST(Vectors, gpio_config_reply_pps_output) {
+    check_vector(
+        "75650c0a04f1410006c101020200f225", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":65,\"ack_code\":0}},{\"descriptor\":193,\"name\":\"gpio_config_"
+            "response\",\"values\":{\"pin\":1,\"feature\":2,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}",
+        });
+}
+
+// gpio_config_reply_timestamp_either
+TEST(Vectors, gpio_config_reply_timestamp_either) {
+    check_vector(
+        "75650c0a04f1410006c102040304fa35", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":65,\"ack_code\":0}},{\"descriptor\":193,\"name\":\"gpio_config_"
+            "response\",\"values\":{\"pin\":2,\"feature\":4,\"behavior\":{\"behavior\":3},\"pin_mode\":4}}]}",
+        });
+}
+
+// gpio_state_read_pin3
+TEST(Vectors, gpio_state_read_pin3) {
+    check_vector("75650c040442020335a4", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\","
+                     "\"values\":{\"function\":2,\"pin\":3}}]}",
+                 });
+}
+
+// gpio_state_reply_pin3_high
+TEST(Vectors, gpio_state_reply_pin3_high) {
+    check_vector("75650c0804f1420004c20301ef33", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":66,\"ack_code\":0}},{\"descriptor\":194,\"name\":"
+                     "\"gpio_state_response\",\"values\":{\"pin\":3,\"state\":true}}]}",
+                 });
+}
+
+// odometer_config_write_quadrature
+TEST(Vectors, odometer_config_write_quadrature) {
+    check_vector(
+        "75650c0c0c430102447a00003c23d70a4293", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":67,\"name\":\"odometer_config\",\"values\":"
+            "{\"function\":1,\"mode\":2,\"scaling\":1000.0,\"uncertainty\":0.009999999776482582}}]}",
+        });
+}
+
+// odometer_config_reply_disabled
+TEST(Vectors, odometer_config_reply_disabled) {
+    check_vector(
+        "75650c0f04f143000bc300c37a00003d800000f54f", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":67,\"ack_code\":0}},{\"descriptor\":195,\"name\":\"odometer_config_"
+            "response\",\"values\":{\"mode\":0,\"scaling\":-250.0,\"uncertainty\":0.0625}}]}",
+        });
+}
+
+// advanced_lowpass_filter_write_accel
+TEST(Vectors, advanced_lowpass_filter_write_accel) {
+    check_vector("75650c090950010401000000004e80", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_"
+                     "filter\",\"values\":{\"function\":1,\"target_descriptor\":4,\"enable\":true,\"manual\":"
+                     "false,\"frequency\":0,\"reserved\":0}}]}",
+                 });
+}
+
+// advanced_lowpass_filter_ack
+TEST(Vectors, advanced_lowpass_filter_ack) {
+    check_vector("75650c0404f150002f4a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":80,\"ack_code\":0}}]}",
+                 });
+}
+
+// advanced_lowpass_filter_read_gyro
+TEST(Vectors, advanced_lowpass_filter_read_gyro) {
+    check_vector("75650c040450020545d0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_"
+                     "filter\",\"values\":{\"function\":2,\"target_descriptor\":5}}]}",
+                 });
+}
+
+// advanced_lowpass_filter_reply_gyro
+TEST(Vectors, advanced_lowpass_filter_reply_gyro) {
+    check_vector("75650c0c04f15000088b0501010064003526", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":80,\"ack_code\":0}},{\"descriptor\":139,\"name\":"
+                     "\"advanced_lowpass_filter_response\",\"values\":{\"target_descriptor\":5,\"enable\":"
+                     "true,\"manual\":true,\"frequency\":100,\"reserved\":0}}]}",
+                 });
+}
+
+// advanced_lowpass_filter_default_all_cv7
+TEST(Vectors, advanced_lowpass_filter_default_all_cv7) {
+    check_vector("75650c040450050043d1", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_"
+                     "filter\",\"values\":{\"function\":5,\"target_descriptor\":0}}]}",
+                 });
+}
+
+// complementary_filter_write
+TEST(Vectors, complementary_filter_write) {
+    check_vector("75650c0d0d5101010140a0000040a000001452", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":81,\"name\":\"complementary_"
+                     "filter\",\"values\":{\"function\":1,\"pitch_roll_enable\":true,\"heading_enable\":true,"
+                     "\"pitch_roll_time_constant\":5.0,\"heading_time_constant\":5.0}}]}",
+                 });
+}
+
+// complementary_filter_ack
+TEST(Vectors, complementary_filter_ack) {
+    check_vector("75650c0404f15100304c", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":81,\"ack_code\":0}}]}",
+                 });
+}
+
+// complementary_filter_reply
+TEST(Vectors, complementary_filter_reply) {
+    check_vector("75650c1004f151000c97010041200000447a0000ffd5", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":81,\"ack_code\":0}},{\"descriptor\":151,\"name\":"
+                     "\"complementary_filter_response\",\"values\":{\"pitch_roll_enable\":true,\"heading_"
+                     "enable\":false,\"pitch_roll_time_constant\":10.0,\"heading_time_constant\":1000.0}}]}",
+                 });
+}
+
+// sensor_range_write_accel_8g
+TEST(Vectors, sensor_range_write_accel_8g) {
+    check_vector("75650c0505520101034720", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":82,\"name\":\"sensor_range\","
+                     "\"values\":{\"function\":1,\"sensor\":1,\"setting\":3}}]}",
+                 });
+}
+
+// sensor_range_save_all
+TEST(Vectors, sensor_range_save_all) {
+    check_vector("75650c040452030043d3", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":82,\"name\":\"sensor_range\","
+                     "\"values\":{\"function\":3,\"sensor\":0}}]}",
+                 });
+}
+
+// sensor_range_reply_gyro
+TEST(Vectors, sensor_range_reply_gyro) {
+    check_vector("75650c0804f1520004d202020fc2", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":82,\"ack_code\":0}},{\"descriptor\":210,\"name\":"
+                     "\"sensor_range_response\",\"values\":{\"sensor\":2,\"setting\":2}}]}",
+                 });
+}
+
+// get_calibrated_sensor_ranges_accel
+TEST(Vectors, get_calibrated_sensor_ranges_accel) {
+    check_vector("75650c030353014089", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":83,\"name\":\"get_calibrated_"
+                     "sensor_ranges\",\"values\":{\"sensor\":1}}]}",
+                 });
+}
+
+// calibrated_sensor_ranges_accel
+TEST(Vectors, calibrated_sensor_ranges_accel) {
+    check_vector(
+        "75650c1704f1530013d30103024080000003410000000441800000fa6b", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"calibrated_sensor_"
+            "ranges\",\"values\":{\"sensor\":1,\"num_ranges\":3,\"ranges\":[{\"setting\":2,\"range\":4.0},{"
+            "\"setting\":3,\"range\":8.0},{\"setting\":4,\"range\":16.0}]}}]}",
+        });
+}
+
+// lowpass_filter_write_accel_manual
+TEST(Vectors, lowpass_filter_write_accel_manual) {
+    check_vector("75650c0b0b540180040101424800006152", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\","
+                     "\"values\":{\"function\":1,\"desc_set\":128,\"field_desc\":4,\"enable\":true,"
+                     "\"manual\":true,\"frequency\":50.0}}]}",
+                 });
+}
+
+// lowpass_filter_read_comp_rate
+TEST(Vectors, lowpass_filter_read_comp_rate) {
+    check_vector("75650c05055402820ed638", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\","
+                     "\"values\":{\"function\":2,\"desc_set\":130,\"field_desc\":14}}]}",
+                 });
+}
+
+// lowpass_filter_reply_auto
+TEST(Vectors, lowpass_filter_reply_auto) {
+    check_vector("75650c0e04f154000ad4820e010041c80000b592", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":84,\"ack_code\":0}},{\"descriptor\":212,\"name\":"
+                     "\"lowpass_filter_response\",\"values\":{\"desc_set\":130,\"field_desc\":14,\"enable\":"
+                     "true,\"manual\":false,\"frequency\":25.0}}]}",
+                 });
+}
+
+// lowpass_filter_default_all
+TEST(Vectors, lowpass_filter_default_all) {
+    check_vector("75650c050554050000492f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\","
+                     "\"values\":{\"function\":5,\"desc_set\":0,\"field_desc\":0}}]}",
+                 });
+}
+
+// capture_gyro_bias_reply_table_published (rejected)
+TEST(Vectors, capture_gyro_bias_reply_table_published) {
+    check_vector("75650c0404f139000e9b000000000000000000000000cf19", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c0404f139000e9b000000000000000000000000cf19\"}",
+                 });
+}
+
+// mag_soft_iron_copy_paste_published (rejected)
+TEST(Vectors, mag_soft_iron_copy_paste_published) {
+    check_vector(
+        "75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59", nullptr, true,
+        {
+            "{\"offset\":0,\"skipped\":"
+            "\"75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59\"}",
+        });
+}
+
+// mag_soft_iron_ack_table_published (rejected)
+TEST(Vectors, mag_soft_iron_ack_table_published) {
+    check_vector("75650c1204f13b001a20", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c1204f13b001a20\"}",
+                 });
+}
+
+// coning_sculling_enable_ack_table_published (rejected)
+TEST(Vectors, coning_sculling_enable_ack_table_published) {
+    check_vector("75650c0404f138001d26", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c0404f138001d26\"}",
+                 });
+}
+
+// advanced_lowpass_filter_table_published (rejected)
+TEST(Vectors, advanced_lowpass_filter_table_published) {
+    check_vector("75650c090950010401000000004c6d", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c090950010401000000004c6d\"}",
+                 });
+}
+
+// complementary_filter_copy_paste_published (rejected)
+TEST(Vectors, complementary_filter_copy_paste_published) {
+    check_vector("75650c09095101040100000000", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c09095101040100000000\"}",
+                 });
+}
+
+// setup_imu_message_format_write
+TEST(Vectors, setup_imu_message_format_write) {
+    check_vector("75650c0d0d08010312000a04000a05000a45f2", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                     "\"values\":{\"function\":1,\"num_descriptors\":3,\"descriptors\":[{\"descriptor\":18,"
+                     "\"decimation\":10},{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,"
+                     "\"decimation\":10}]}}]}",
+                 });
+}
+
+// setup_imu_message_format_ack
+TEST(Vectors, setup_imu_message_format_ack) {
+    check_vector("75650c0404f10800e7ba", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":8,\"ack_code\":0}}]}",
+                 });
+}
+
+// imu_message_format_write_ack_table_published (rejected)
+TEST(Vectors, imu_message_format_write_ack_table_published) {
+    check_vector("75650c0404f10100e7ba", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c0404f10100e7ba\"}",
+                 });
+}
+
+// setup_filter_message_format_write
+TEST(Vectors, setup_filter_message_format_write) {
+    check_vector(
+        "75650c13130a010511000a10000a01000a02000a03000a7562", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
+            "\"values\":{\"function\":1,\"num_descriptors\":5,\"descriptors\":[{\"descriptor\":17,"
+            "\"decimation\":10},{\"descriptor\":16,\"decimation\":10},{\"descriptor\":1,\"decimation\":10},{"
+            "\"descriptor\":2,\"decimation\":10},{\"descriptor\":3,\"decimation\":10}]}}]}",
+        });
+}
+
+// filter_message_format_ack
+TEST(Vectors, filter_message_format_ack) {
+    check_vector("75650c0404f10a00e9be", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
+                 });
+}
+
+// save_message_formats_command
+TEST(Vectors, save_message_formats_command) {
+    check_vector("75650c0804080300040a03000e31", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                     "\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}},{\"descriptor\":"
+                     "10,\"name\":\"filter_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,"
+                     "\"descriptors\":[]}}]}",
+                 });
+}
+
+// message_formats_two_acks
+TEST(Vectors, message_formats_two_acks) {
+    check_vector("75650c0804f1080004f10a00ea71", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":"
+                     "\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
+                 });
+}
+
+// save_message_formats_reply_table_published (rejected)
+TEST(Vectors, save_message_formats_reply_table_published) {
+    check_vector("75650c0804f1080004f10a00e9be", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}",
+                 });
+}
+
+// setup_enable_streams_command
+TEST(Vectors, setup_enable_streams_command) {
+    check_vector("75650c0a0511010101051101030124cc", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_"
+                     "control\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,"
+                     "\"enable\":1}},{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_"
+                     "45\",\"values\":{\"function\":1,\"device_selector\":3,\"enable\":1}}]}",
+                 });
+}
+
+// setup_enable_streams_reply
+TEST(Vectors, setup_enable_streams_reply) {
+    check_vector("75650c0804f1110004f11100fab5", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":"
+                     "\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
+                 });
+}
+
+// setup_poll_cf_euler
+TEST(Vectors, setup_poll_cf_euler) {
+    check_vector(
+        "75650c07070100010c000002fc", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{"
+            "\"option\":0,\"num_descriptors\":1,\"descriptors\":[{\"descriptor\":12,\"reserved\":0}]}}]}",
+        });
+}
+
+// setup_poll_cf_euler_table_published (rejected)
+TEST(Vectors, setup_poll_cf_euler_table_published) {
+    check_vector("75650c070701000006000002fc", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c070701000006000002fc\"}",
+                 });
+}
+
+// poll_imu_ack
+TEST(Vectors, poll_imu_ack) {
+    check_vector("75650c0404f10100e0ac", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+                 });
+}
+
+// poll_imu_stored_format
+TEST(Vectors, poll_imu_stored_format) {
+    check_vector("75650c0404010000efda", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\","
+                     "\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// poll_imu_specified_format
+TEST(Vectors, poll_imu_specified_format) {
+    check_vector("75650c0a0a0100020400000500000627", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\","
+                     "\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,"
+                     "\"reserved\":0},{\"descriptor\":5,\"reserved\":0}]}}]}",
+                 });
+}
+
+// poll_imu_suppress_ack
+TEST(Vectors, poll_imu_suppress_ack) {
+    check_vector(
+        "75650c0707010101040000fbe9", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{"
+            "\"option\":1,\"num_descriptors\":1,\"descriptors\":[{\"descriptor\":4,\"reserved\":0}]}}]}",
+        });
+}
+
+// poll_gnss_stored_format
+TEST(Vectors, poll_gnss_stored_format) {
+    check_vector("75650c0404020000f0dd", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":2,\"name\":\"poll_gnss_data\","
+                     "\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// poll_gnss_specified_format
+TEST(Vectors, poll_gnss_specified_format) {
+    check_vector("75650c0a0a020002030000050000062a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":2,\"name\":\"poll_gnss_data\","
+                     "\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,"
+                     "\"reserved\":0},{\"descriptor\":5,\"reserved\":0}]}}]}",
+                 });
+}
+
+// poll_gnss_ack
+TEST(Vectors, poll_gnss_ack) {
+    check_vector("75650c0404f10200e1ae", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":2,\"ack_code\":0}}]}",
+                 });
+}
+
+// poll_filter_stored_format
+TEST(Vectors, poll_filter_stored_format) {
+    check_vector("75650c0404030000f1e0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":3,\"name\":\"poll_filter_data\","
+                     "\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// poll_filter_specified_format
+TEST(Vectors, poll_filter_specified_format) {
+    check_vector("75650c0a0a030002010000020000021e", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":3,\"name\":\"poll_filter_data\","
+                     "\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,"
+                     "\"reserved\":0},{\"descriptor\":2,\"reserved\":0}]}}]}",
+                 });
+}
+
+// poll_filter_ack
+TEST(Vectors, poll_filter_ack) {
+    check_vector("75650c0404f10300e2b0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":3,\"ack_code\":0}}]}",
+                 });
+}
+
+// get_imu_base_rate_command
+TEST(Vectors, get_imu_base_rate_command) {
+    check_vector("75650c020206f0f7", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":6,\"name\":\"get_imu_base_rate\","
+                     "\"values\":{}}]}",
+                 });
+}
+
+// get_imu_base_rate_reply
+TEST(Vectors, get_imu_base_rate_reply) {
+    check_vector("75650c0804f1060004830064d46b", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":6,\"ack_code\":0}},{\"descriptor\":131,\"name\":"
+                     "\"imu_base_rate\",\"values\":{\"rate\":100}}]}",
+                 });
+}
+
+// get_gnss_base_rate_command
+TEST(Vectors, get_gnss_base_rate_command) {
+    check_vector("75650c020207f1f8", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":7,\"name\":\"get_gnss_base_rate\","
+                     "\"values\":{}}]}",
+                 });
+}
+
+// get_gnss_base_rate_reply
+TEST(Vectors, get_gnss_base_rate_reply) {
+    check_vector("75650c0804f10700048400047614", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":7,\"ack_code\":0}},{\"descriptor\":132,\"name\":"
+                     "\"gnss_base_rate\",\"values\":{\"rate\":4}}]}",
+                 });
+}
+
+// get_filter_base_rate_command
+TEST(Vectors, get_filter_base_rate_command) {
+    check_vector("75650c02020bf5fc", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":11,\"name\":\"get_filter_base_"
+                     "rate\",\"values\":{}}]}",
+                 });
+}
+
+// get_filter_base_rate_reply
+TEST(Vectors, get_filter_base_rate_reply) {
+    check_vector("75650c0804f10b00048a0064e09e", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":11,\"ack_code\":0}},{\"descriptor\":138,\"name\":"
+                     "\"filter_base_rate\",\"values\":{\"rate\":100}}]}",
+                 });
+}
+
+// imu_message_format_write
+TEST(Vectors, imu_message_format_write) {
+    check_vector("75650c0a0a08010204000a05000a22a0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                     "\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,"
+                     "\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+                 });
+}
+
+// imu_message_format_read
+TEST(Vectors, imu_message_format_read) {
+    check_vector("75650c0404080200f8f3", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                     "\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// imu_message_format_read_reply
+TEST(Vectors, imu_message_format_read_reply) {
+    check_vector("75650c0d04f1080009800203000a04000a9606", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":"
+                     "\"imu_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":3,\"decimation\":10},{\"descriptor\":4,\"decimation\":10}]}}]}",
+                 });
+}
+
+// imu_message_format_read_reply_table_published (rejected)
+TEST(Vectors, imu_message_format_read_reply_table_published) {
+    check_vector("75650c0d04f1080009800203000a04000a980f", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c0d04f1080009800203000a04000a980f\"}",
+                 });
+}
+
+// imu_message_format_load
+TEST(Vectors, imu_message_format_load) {
+    check_vector("75650c0404080400faf7", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                     "\"values\":{\"function\":4,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// gnss_message_format_write
+TEST(Vectors, gnss_message_format_write) {
+    check_vector("75650c0a0a0901020300040500041685", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_"
+                     "format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":3,\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}",
+                 });
+}
+
+// gnss_message_format_ack
+TEST(Vectors, gnss_message_format_ack) {
+    check_vector("75650c0404f10900e8bc", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":9,\"ack_code\":0}}]}",
+                 });
+}
+
+// gnss_message_format_read
+TEST(Vectors, gnss_message_format_read) {
+    check_vector("75650c0404090200f9f6", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_"
+                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// gnss_message_format_read_table_published (rejected)
+TEST(Vectors, gnss_message_format_read_table_published) {
+    check_vector("75650c0404090200f9f3", nullptr, true,
+                 {
+                     "{\"offset\":0,\"skipped\":\"75650c0404090200f9f3\"}",
+                 });
+}
+
+// gnss_message_format_read_reply
+TEST(Vectors, gnss_message_format_read_reply) {
+    check_vector("75650c0d04f109000981020300040500048dfe", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":9,\"ack_code\":0}},{\"descriptor\":129,\"name\":"
+                     "\"gnss_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":3,\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}",
+                 });
+}
+
+// filter_message_format_write
+TEST(Vectors, filter_message_format_write) {
+    check_vector("75650c0a0a0a01020100010200010c6a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_"
+                     "format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":1,\"decimation\":1},{\"descriptor\":2,\"decimation\":1}]}}]}",
+                 });
+}
+
+// filter_message_format_write_copy_paste_published
+TEST(Vectors, filter_message_format_write_copy_paste_published) {
+    check_vector("75650c0a0a0901020300040500041685", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_"
+                     "format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":3,\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}",
+                 });
+}
+
+// filter_message_format_read
+TEST(Vectors, filter_message_format_read) {
+    check_vector("75650c04040a0200faf9", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_"
+                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// filter_message_format_read_copy_paste_published
+TEST(Vectors, filter_message_format_read_copy_paste_published) {
+    check_vector("75650c0404090200f9f6", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_"
+                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                 });
+}
+
+// filter_message_format_read_reply
+TEST(Vectors, filter_message_format_read_reply) {
+    check_vector("75650c0d04f10a0009820201000102000184ed", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":10,\"ack_code\":0}},{\"descriptor\":130,\"name\":"
+                     "\"filter_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":1,\"decimation\":1},{\"descriptor\":2,\"decimation\":1}]}}]}",
+                 });
+}
+
+// two_message_formats_in_one_packet
+TEST(Vectors, two_message_formats_in_one_packet) {
+    check_vector(
+        "75650c200d08010312000a04000a05000a130a010511000a10000a01000a02000a03000ad43d", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+            "\"values\":{\"function\":1,\"num_descriptors\":3,\"descriptors\":[{\"descriptor\":18,"
+            "\"decimation\":10},{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}},"
+            "{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":1,\"num_"
+            "descriptors\":5,\"descriptors\":[{\"descriptor\":17,\"decimation\":10},{\"descriptor\":16,"
+            "\"decimation\":10},{\"descriptor\":1,\"decimation\":10},{\"descriptor\":2,\"decimation\":10},{"
+            "\"descriptor\":3,\"decimation\":10}]}}]}",
+        });
+}
+
+// data_stream_imu_on
+TEST(Vectors, data_stream_imu_on) {
+    check_vector(
+        "75650c050511010101041a", "gx5_45", false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
+            "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":1}}]}",
+        });
+}
+
+// data_stream_imu_off
+TEST(Vectors, data_stream_imu_off) {
+    check_vector(
+        "75650c0505110101000319", "gx5_45", false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
+            "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":0}}]}",
+        });
+}
+
+// data_stream_ack
+TEST(Vectors, data_stream_ack) {
+    check_vector("75650c0404f11100f0cc", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
+                 });
+}
+
+// data_stream_gx5_read_filter
+TEST(Vectors, data_stream_gx5_read_filter) {
+    check_vector(
+        "75650c0505110203000620", "gx5_45", false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
+            "\"device\":\"gx5_45\",\"values\":{\"function\":2,\"device_selector\":3,\"enable\":0}}]}",
+        });
+}
+
+// data_stream_gx5_read_reply
+TEST(Vectors, data_stream_gx5_read_reply) {
+    check_vector(
+        "75650c0804f11100048503018156", "gx5_45", false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"data_stream_control_"
+            "response\",\"device\":\"gx5_45\",\"values\":{\"device_selector\":3,\"enabled\":1}}]}",
+        });
+}
+
+// gnss_constellation_settings_write
+TEST(Vectors, gnss_constellation_settings_write) {
+    check_vector("75650c121221010020020001081000000601080e0000845a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
+                     "settings\",\"values\":{\"function\":1,\"max_channels\":32,\"config_count\":2,"
+                     "\"settings\":[{\"constellation_id\":0,\"enable\":1,\"reserved_channels\":8,\"max_"
+                     "channels\":16,\"option_flags\":0},{\"constellation_id\":6,\"enable\":1,\"reserved_"
+                     "channels\":8,\"max_channels\":14,\"option_flags\":0}]}}]}",
+                 });
+}
+
+// gnss_constellation_settings_ack
+TEST(Vectors, gnss_constellation_settings_ack) {
+    check_vector("75650c0404f1210000ec", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":33,\"ack_code\":0}}]}",
+                 });
+}
+
+// gnss_constellation_settings_read
+TEST(Vectors, gnss_constellation_settings_read) {
+    check_vector(
+        "75650c06062102000000157a", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
+            "settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0,\"settings\":[]}}]}",
+        });
+}
+
+// gnss_constellation_settings_read_reply
+TEST(Vectors, gnss_constellation_settings_read_reply) {
+    check_vector(
+        "75650c2304f121001fa000200020040001081000000601080e0000010101030000050100030001683c", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":33,\"ack_code\":0}},{\"descriptor\":160,\"name\":\"gnss_constellation_"
+            "settings_response\",\"values\":{\"max_channels_available\":32,\"max_channels\":32,\"config_"
+            "count\":4,\"settings\":[{\"constellation_id\":0,\"enable\":1,\"reserved_channels\":8,\"max_"
+            "channels\":16,\"option_flags\":0},{\"constellation_id\":6,\"enable\":1,\"reserved_channels\":8,"
+            "\"max_channels\":14,\"option_flags\":0},{\"constellation_id\":1,\"enable\":1,\"reserved_"
+            "channels\":1,\"max_channels\":3,\"option_flags\":0},{\"constellation_id\":5,\"enable\":1,"
+            "\"reserved_channels\":0,\"max_channels\":3,\"option_flags\":1}]}}]}",
+        });
+}
+
+// gnss_sbas_settings_write
+TEST(Vectors, gnss_sbas_settings_write) {
+    check_vector("75650c0b0b22010100030200780079165c", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_"
+                     "settings\",\"values\":{\"function\":1,\"enable_sbas\":1,\"sbas_options\":3,\"num_"
+                     "included_prns\":2,\"included_prns\":[120,121]}}]}",
+                 });
+}
+
+// gnss_sbas_settings_ack
+TEST(Vectors, gnss_sbas_settings_ack) {
+    check_vector("75650c0404f1220001ee", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":34,\"ack_code\":0}}]}",
+                 });
+}
+
+// gnss_sbas_settings_read_reply_three_prns
+TEST(Vectors, gnss_sbas_settings_read_reply_three_prns) {
+    check_vector("75650c1004f122000ca10100070300780079007a30d5", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":161,\"name\":"
+                     "\"gnss_sbas_settings_response\",\"values\":{\"enable_sbas\":1,\"sbas_options\":7,\"num_"
+                     "included_prns\":3,\"included_prns\":[120,121,122]}}]}",
+                 });
+}
+
+// gnss_sbas_settings_read_short
+TEST(Vectors, gnss_sbas_settings_read_short) {
+    check_vector("75650c030322021028", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_"
+                     "settings\",\"values\":{\"function\":2}}]}",
+                 });
+}
+
+// gnss_sbas_settings_write_include_all
+TEST(Vectors, gnss_sbas_settings_write_include_all) {
+    check_vector(
+        "75650c07072201010003001ba9", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\","
+            "\"values\":{\"function\":1,\"enable_sbas\":1,\"sbas_options\":3,\"num_included_prns\":0}}]}",
+        });
+}
+
+// gnss_sbas_settings_read_reply_disabled
+TEST(Vectors, gnss_sbas_settings_read_reply_disabled) {
+    check_vector("75650c0a04f1220006a100000000ae7f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":161,\"name\":"
+                     "\"gnss_sbas_settings_response\",\"values\":{\"enable_sbas\":0,\"sbas_options\":0,\"num_"
+                     "included_prns\":0,\"included_prns\":[]}}]}",
+                 });
+}
+
+// gnss_assisted_fix_enable
+TEST(Vectors, gnss_assisted_fix_enable) {
+    check_vector("75650c0505230101ff1460", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_"
+                     "control\",\"values\":{\"function\":1,\"option\":1,\"flags\":255}}]}",
+                 });
+}
+
+// gnss_assisted_fix_ack
+TEST(Vectors, gnss_assisted_fix_ack) {
+    check_vector("75650c0404f1230002f0", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":35,\"ack_code\":0}}]}",
+                 });
+}
+
+// gnss_assisted_fix_read
+TEST(Vectors, gnss_assisted_fix_read) {
+    check_vector("75650c0505230200ff1461", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_"
+                     "control\",\"values\":{\"function\":2,\"option\":0,\"flags\":255}}]}",
+                 });
+}
+
+// gnss_assisted_fix_read_reply
+TEST(Vectors, gnss_assisted_fix_read_reply) {
+    check_vector("75650c0804f1230004a201ffac13", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":35,\"ack_code\":0}},{\"descriptor\":162,\"name\":"
+                     "\"gnss_assisted_fix_control_response\",\"values\":{\"option\":1,\"flags\":255}}]}",
+                 });
+}
+
+// gnss_assist_time_update_command
+TEST(Vectors, gnss_assist_time_update_command) {
+    check_vector(
+        "75650c1111240140e722c6b851eb85078140a000001deb", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
+            "\"values\":{\"function\":1,\"tow\":47382.21,\"week_number\":1921,\"accuracy\":5.0}}]}",
+        });
+}
+
+// gnss_assist_time_update_ack
+TEST(Vectors, gnss_assist_time_update_ack) {
+    check_vector("75650c0404f1240003f2", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":36,\"ack_code\":0}}]}",
+                 });
+}
+
+// gnss_assist_time_update_read
+TEST(Vectors, gnss_assist_time_update_read) {
+    check_vector("75650c1111240200000000000000000000000000002e12", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                     "update\",\"values\":{\"function\":2,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}",
+                 });
+}
+
+// gnss_assist_time_update_read_reply
+TEST(Vectors, gnss_assist_time_update_read_reply) {
+    check_vector(
+        "75650c1404f1240010a340e722c6b851eb85078140a00000b6e7", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":36,\"ack_code\":0}},{\"descriptor\":163,\"name\":\"gnss_assist_time_"
+            "update_response\",\"values\":{\"tow\":47382.21,\"week_number\":1921,\"accuracy\":5.0}}]}",
+        });
+}
+
+// device_status_basic_command
+TEST(Vectors, device_status_basic_command) {
+    check_vector("75650c050564186b01d87f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":100,\"name\":\"device_status\","
+                     "\"values\":{\"model_number\":6251,\"status_selector\":1}}]}",
+                 });
+}
+
+// device_status_basic_reply
+TEST(Vectors, device_status_basic_reply) {
+    check_vector("75650c1304f164000f90186b010000000000010000ea60c0cc", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":144,\"name\":"
+                     "\"device_status_response\",\"values\":{\"model_number\":6251,\"status_selector\":1,"
+                     "\"status\":{\"status_flags\":0,\"system_state\":1,\"system_timer\":60000}}}]}",
+                 });
+}
+
+// device_status_diagnostic_command
+TEST(Vectors, device_status_diagnostic_command) {
+    check_vector("75650c050564186b02d980", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":100,\"name\":\"device_status\","
+                     "\"values\":{\"model_number\":6251,\"status_selector\":2}}]}",
+                 });
+}
+
+// device_status_diagnostic_reply
+TEST(Vectors, device_status_diagnostic_reply) {
+    check_vector(
+        "75650c4f04f164004b90186b020000000000010000ea60010000003c0000e86c0101010000000000000000000000000001e2"
+        "40000003150000000000000000000075300000ea5e00000002000000f00000e9663669",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"device_status_"
+            "response\",\"values\":{\"model_number\":6251,\"status_selector\":2,\"status\":{\"status_flags\":"
+            "0,\"system_state\":1,\"system_timer\":60000,\"gnss_power_state\":1,\"pps_pulse_count\":60,"
+            "\"last_pps_time\":59500,\"imu_stream_enabled\":1,\"gnss_stream_enabled\":1,\"filter_stream_"
+            "enabled\":1,\"imu_dropped_packets\":0,\"gnss_dropped_packets\":0,\"filter_dropped_packets\":0,"
+            "\"com_bytes_written\":123456,\"com_bytes_read\":789,\"com_write_overruns\":0,\"imu_parse_"
+            "errors\":0,\"imu_messages_read\":30000,\"last_imu_message_time\":59998,\"gnss_parse_errors\":2,"
+            "\"gnss_messages_read\":240,\"last_gnss_message_time\":59750}}}]}",
+        });
+}
+
+// raw_rtcm_message_command
+TEST(Vectors, raw_rtcm_message_command) {
+    check_vector("75650c080820664100a0fcc019f4", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":32,\"name\":\"raw_rtcm_message\","
+                     "\"values\":{\"data\":[102,65,0,160,252,192]}}]}",
+                 });
+}
+
+// raw_rtcm_message_ack
+TEST(Vectors, raw_rtcm_message_ack) {
+    check_vector("75650c0404f12000ffea", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":32,\"ack_code\":0}}]}",
+                 });
+}
+
+// get_base_rate_sensor_command
+TEST(Vectors, get_base_rate_sensor_command) {
+    check_vector("75650c03030e807a7e", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":14,\"name\":\"get_base_rate\","
+                     "\"values\":{\"desc_set\":128}}]}",
+                 });
+}
+
+// get_base_rate_sensor_reply
+TEST(Vectors, get_base_rate_sensor_reply) {
+    check_vector("75650c0904f10e00058e8003e8f058", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":14,\"ack_code\":0}},{\"descriptor\":142,\"name\":"
+                     "\"base_rate\",\"values\":{\"desc_set\":128,\"rate\":1000}}]}",
+                 });
+}
+
+// pps_source_write_generated
+TEST(Vectors, pps_source_write_generated) {
+    check_vector("75650c04042801041b55", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\","
+                     "\"values\":{\"function\":1,\"source\":4}}]}",
+                 });
+}
+
+// pps_source_ack
+TEST(Vectors, pps_source_ack) {
+    check_vector("75650c0404f1280007fa", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
+                 });
+}
+
+// pps_source_save
+TEST(Vectors, pps_source_save) {
+    check_vector("75650c030328031735", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\","
+                     "\"values\":{\"function\":3}}]}",
+                 });
+}
+
+// pps_source_write_disabled
+TEST(Vectors, pps_source_write_disabled) {
+    check_vector("75650c04042801001751", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\","
+                     "\"values\":{\"function\":1,\"source\":0}}]}",
+                 });
+}
+
+// pps_source_load
+TEST(Vectors, pps_source_load) {
+    check_vector("75650c030328041836", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\","
+                     "\"values\":{\"function\":4}}]}",
+                 });
+}
+
+// pps_source_load_copy_paste_published
+TEST(Vectors, pps_source_load_copy_paste_published) {
+    check_vector("75650c0404f128040bfe", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":40,\"ack_code\":4}}]}",
+                 });
+}
+
+// pps_source_default_save_read
+TEST(Vectors, pps_source_default_save_read) {
+    check_vector(
+        "75650c090328050328030328027a4a", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{"
+            "\"function\":5}},{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":3}},{"
+            "\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":2}}]}",
+        });
+}
+
+// pps_source_default_save_read_reply
+TEST(Vectors, pps_source_default_save_read_reply) {
+    check_vector("75650c0f04f1280004f1280004f1280003a801f8d9", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":241,\"name\":"
+                     "\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":"
+                     "241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{"
+                     "\"descriptor\":168,\"name\":\"pps_source_response\",\"values\":{\"source\":1}}]}",
+                 });
+}
+
+// pps_source_write_gpio
+TEST(Vectors, pps_source_write_gpio) {
+    check_vector("75650c04042801031a54", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\","
+                     "\"values\":{\"function\":1,\"source\":3}}]}",
+                 });
+}
+
+// pps_source_read_reply_receiver_2
+TEST(Vectors, pps_source_read_reply_receiver_2) {
+    check_vector("75650c0704f1280003a802b782", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":168,\"name\":"
+                     "\"pps_source_response\",\"values\":{\"source\":2}}]}",
+                 });
+}
+
+// factory_streaming_overwrite
+TEST(Vectors, factory_streaming_overwrite) {
+    check_vector("75650c0404100000fe07", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":16,\"name\":\"factory_streaming\","
+                     "\"values\":{\"action\":0,\"reserved\":0}}]}",
+                 });
+}
+
+// poll_nmea_data_one_sentence
+TEST(Vectors, poll_nmea_data_one_sentence) {
+    check_vector("75650c0909040001010191000595c3", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":4,\"name\":\"poll_nmea_data\","
+                     "\"values\":{\"suppress_ack\":false,\"count\":1,\"format_entries\":[{\"message_id\":1,"
+                     "\"talker_id\":1,\"source_desc_set\":145,\"decimation\":5}]}}]}",
+                 });
+}
+
+// nmea_message_format_write
+TEST(Vectors, nmea_message_format_write) {
+    check_vector("75650c0e0e0c0102010182000a04029100013732", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":12,\"name\":\"nmea_message_"
+                     "format\",\"values\":{\"function\":1,\"count\":2,\"format_entries\":[{\"message_id\":1,"
+                     "\"talker_id\":1,\"source_desc_set\":130,\"decimation\":10},{\"message_id\":4,\"talker_"
+                     "id\":2,\"source_desc_set\":145,\"decimation\":1}]}}]}",
+                 });
+}
+
+// nmea_message_format_read
+TEST(Vectors, nmea_message_format_read) {
+    check_vector("75650c03030c02fafc", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":12,\"name\":\"nmea_message_"
+                     "format\",\"values\":{\"function\":2}}]}",
+                 });
+}
+
+// nmea_message_format_read_reply
+TEST(Vectors, nmea_message_format_read_reply) {
+    check_vector("75650c1104f10c000d8c02010182000a0402910001b919", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":12,\"ack_code\":0}},{\"descriptor\":140,\"name\":"
+                     "\"nmea_message_format_response\",\"values\":{\"count\":2,\"format_entries\":[{"
+                     "\"message_id\":1,\"talker_id\":1,\"source_desc_set\":130,\"decimation\":10},{\"message_"
+                     "id\":4,\"talker_id\":2,\"source_desc_set\":145,\"decimation\":1}]}}]}",
+                 });
+}
+
+// poll_data_sensor_suppress_ack
+TEST(Vectors, poll_data_sensor_suppress_ack) {
+    check_vector(
+        "75650c07070d80010204058db3", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":13,\"name\":\"poll_data\",\"values\":{"
+            "\"desc_set\":128,\"suppress_ack\":true,\"num_descriptors\":2,\"descriptors\":[4,5]}}]}",
+        });
+}
+
+// message_format_write_sensor
+TEST(Vectors, message_format_write_sensor) {
+    check_vector("75650c0b0b0f01800204000a05000aab00", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\","
+                     "\"values\":{\"function\":1,\"desc_set\":128,\"num_descriptors\":2,\"descriptors\":[{"
+                     "\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+                 });
+}
+
+// message_format_read_sensor
+TEST(Vectors, message_format_read_sensor) {
+    check_vector("75650c04040f02807f88", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\","
+                     "\"values\":{\"function\":2,\"desc_set\":128}}]}",
+                 });
+}
+
+// message_format_read_sensor_reply
+TEST(Vectors, message_format_read_sensor_reply) {
+    check_vector(
+        "75650c0e04f10f000a8f800204000a05000a307c", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":15,\"ack_code\":0}},{\"descriptor\":143,\"name\":\"message_format_"
+            "response\",\"values\":{\"desc_set\":128,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":"
+            "4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+        });
+}
+
+// message_format_save_all
+TEST(Vectors, message_format_save_all) {
+    check_vector("75650c04040f0300000a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\","
+                     "\"values\":{\"function\":3,\"desc_set\":0}}]}",
+                 });
+}
+
+// factory_streaming_merge
+TEST(Vectors, factory_streaming_merge) {
+    check_vector("75650c0404100100ff09", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":16,\"name\":\"factory_streaming\","
+                     "\"values\":{\"action\":1,\"reserved\":0}}]}",
+                 });
+}
+
+// data_stream_cv7_enable_filter
+TEST(Vectors, data_stream_cv7_enable_filter) {
+    check_vector(
+        "75650c050511018201851c", "cv7_ins", false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
+            "\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"desc_set\":130,\"enable\":true}}]}",
+        });
+}
+
+// data_stream_cv7_read_filter
+TEST(Vectors, data_stream_cv7_read_filter) {
+    check_vector("75650c04041102828390", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_"
+                     "control\",\"device\":\"cv7_ins\",\"values\":{\"function\":2,\"desc_set\":130}}]}",
+                 });
+}
+
+// data_stream_cv7_read_filter_reply
+TEST(Vectors, data_stream_cv7_read_filter_reply) {
+    check_vector(
+        "75650c0804f11100048582010054", "cv7_ins", false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"data_stream_control_"
+            "response\",\"device\":\"cv7_ins\",\"values\":{\"desc_set\":130,\"enabled\":true}}]}",
+        });
+}
+
+// data_stream_cv7_save_all
+TEST(Vectors, data_stream_cv7_save_all) {
+    check_vector("75650c04041103000210", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_"
+                     "control\",\"device\":\"cv7_ins\",\"values\":{\"function\":3,\"desc_set\":0}}]}",
+                 });
+}
+
+// get_supported_events_triggers
+TEST(Vectors, get_supported_events_triggers) {
+    check_vector("75650c03032a011737", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":42,\"name\":\"get_supported_"
+                     "events\",\"values\":{\"query\":1}}]}",
+                 });
+}
+
+// get_supported_events_triggers_reply
+TEST(Vectors, get_supported_events_triggers_reply) {
+    check_vector(
+        "75650c0f04f12a000bb4010c03010402080308fd58", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
+            "\"command_descriptor\":42,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"supported_events\","
+            "\"values\":{\"query\":1,\"info\":{\"max_instances\":12,\"num_entries\":3,\"entries\":[{\"type\":"
+            "1,\"count\":4},{\"type\":2,\"count\":8},{\"type\":3,\"count\":8}]}}}]}",
+        });
+}
+
+// get_supported_events_actions
+TEST(Vectors, get_supported_events_actions) {
+    check_vector("75650c03032a021838", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":42,\"name\":\"get_supported_"
+                     "events\",\"values\":{\"query\":2}}]}",
+                 });
+}
+
+// get_supported_events_actions_reply
+TEST(Vectors, get_supported_events_actions_reply) {
+    check_vector("75650c0d04f12a0009b4020c0201060208f040", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "\"values\":{\"command_descriptor\":42,\"ack_code\":0}},{\"descriptor\":180,\"name\":"
+                     "\"supported_events\",\"values\":{\"query\":2,\"info\":{\"max_instances\":12,\"num_"
+                     "entries\":2,\"entries\":[{\"type\":1,\"count\":6},{\"type\":2,\"count\":8}]}}}]}",
+                 });
+}
+
 // frame_config_write_antenna_offset
 TEST(Vectors, frame_config_write_antenna_offset) {
     check_vector("7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1", nullptr, false,

@@ -154,6 +154,23 @@ class AltitudeAidingSource(_c.Enum):
     PRESSURE = 0x01  # Pressure sensor aiding enabled.
 
 
+class AssistedFixOption(_c.Enum):
+    """Assisted fix option (u8)."""
+
+    NONE = 0x00  # No assisted fix (default).
+    ENABLED = 0x01  # Assisted fix enabled.
+
+
+@_c.bitfield("u16")
+class ConstellationOptions(_c.Bitfield):
+    """GNSS constellation option flags (u16 bitfield)."""
+
+    _MEMBERS = (("l1saif", "l1saif", "L1SAIF", 0, 1),)
+    L1SAIF = 0x0001  # bit 0: L1SAIF signal (QZSS only).
+
+    l1saif = _c.bit(0)
+
+
 @_c.bitfield("u32")
 class Cv7BitFlags(_c.Bitfield):
     """3DM-CV7 commanded built-in test result (u32 bitfield)."""
@@ -215,6 +232,13 @@ class Cv7BitFlags(_c.Bitfield):
     reserved = _c.bits(24, 8)
 
 
+class DeviceStatusSelector(_c.Enum):
+    """Device status selector (u8)."""
+
+    BASIC = 0x01  # Basic status structure.
+    DIAGNOSTIC = 0x02  # Diagnostic status structure.
+
+
 @_c.bitfield("u16")
 class EstimationControlFlags(_c.Bitfield):
     """Estimation control flags (u16 bitfield).
@@ -268,6 +292,14 @@ class ExternalHeadingType(_c.Enum):
 
     TRUE_HEADING = 0x01  # True heading (from true north).
     MAGNETIC_HEADING = 0x02  # Magnetic heading (from magnetic north).
+
+
+class FactoryStreamingAction(_c.Enum):
+    """Factory streaming action (u8)."""
+
+    OVERWRITE = 0x00  # Replace the message formats, dropping the descriptors already there.
+    MERGE = 0x01  # Merge the support descriptors into the existing formats (order may change).
+    ADD = 0x02  # Append the support descriptors to the existing formats (duplicates possible).
 
 
 class FilterGnssSource(_c.Enum):
@@ -383,6 +415,92 @@ class GnssGpsSignals(_c.Bitfield):
     l5 = _c.bit(2)
 
 
+class GpioEncoderBehavior(_c.Enum):
+    """GPIO behavior for the ENCODER feature (u8)."""
+
+    UNUSED = 0x00  # No behavior.
+    ENCODER_A = 0x01  # ENCODER_A: quadrature input A; one pin at most (the latest command wins).
+    ENCODER_B = 0x02  # ENCODER_B: quadrature input B; one pin at most (the latest command wins).
+
+
+class GpioFeature(_c.Enum):
+    """GPIO pin feature (u8).
+
+    What a user GPIO pin is used for; selects how the behavior byte is read.
+    """
+
+    UNUSED = 0x00  # Pin not used; reading its state may or may not work.
+    GPIO = 0x01  # General purpose input or output (direct control or monitoring of the pin state).
+    PPS = 0x02  # Pulse-per-second input or output.
+    ENCODER = 0x03  # Motor encoder / odometer input.
+    TIMESTAMP = 0x04  # Precision timestamping of edges (for event triggers, 0x0C,0x2E).
+    UART = 0x05  # UART data or control line.
+
+
+class GpioIoBehavior(_c.Enum):
+    """GPIO behavior for the GPIO feature (u8)."""
+
+    UNUSED = 0x00  # No behavior.
+    INPUT = 0x01  # GPIO_INPUT: the pin is an input that can be streamed or polled (the default).
+    OUTPUT_LOW = 0x02  # GPIO_OUTPUT_LOW: output, initially low (restored at startup if saved).
+    OUTPUT_HIGH = 0x03  # GPIO_OUTPUT_HIGH: output, initially high (restored at startup if saved).
+
+
+@_c.bitfield("u8")
+class GpioPinMode(_c.Bitfield):
+    """GPIO pin electrical mode (u8 bitfield).
+
+    Electrical configuration of a GPIO pin; which combinations a (feature, behavior) pair supports
+    is listed in the User GPIO pin-mode table (line 1338).
+    """
+
+    _MEMBERS = (
+        ("open_drain", "open_drain", "OPEN_DRAIN", 0, 1),
+        ("pulldown", "pulldown", "PULLDOWN", 1, 1),
+        ("pullup", "pullup", "PULLUP", 2, 1),
+    )
+    OPEN_DRAIN = 0x01  # bit 0: Open-drain output: LOW or floating instead of LOW or HIGH; usually with a pull-up.
+    PULLDOWN = 0x02  # bit 1: Internal pull-down resistor enabled (not with pullup).
+    PULLUP = 0x04  # bit 2: Internal pull-up resistor enabled (not with pulldown); may lower the allowed input voltage.
+
+    open_drain = _c.bit(0)
+    pulldown = _c.bit(1)
+    pullup = _c.bit(2)
+
+
+class GpioPpsBehavior(_c.Enum):
+    """GPIO behavior for the PPS feature (u8)."""
+
+    UNUSED = 0x00  # No behavior.
+    INPUT = 0x01  # PPS_INPUT: receives the PPS signal; one pin at most; needs PPS source GPIO (0x0C,0x28).
+    OUTPUT = 0x02  # PPS_OUTPUT: transmits the device's PPS signal.
+
+
+class GpioTimestampBehavior(_c.Enum):
+    """GPIO behavior for the TIMESTAMP feature (u8)."""
+
+    UNUSED = 0x00  # No behavior.
+    RISING = 0x01  # TIMESTAMP_RISING: rising edges are timestamped.
+    FALLING = 0x02  # TIMESTAMP_FALLING: falling edges are timestamped.
+    EITHER = 0x03  # TIMESTAMP_EITHER: both edges are timestamped.
+
+
+class GpioUartBehavior(_c.Enum):
+    """GPIO behavior for the UART feature (u8)."""
+
+    UNUSED = 0x00  # No behavior.
+    PORT2_TX = 0x21  # UART_PORT2_TX: UART port 2 transmit.
+    PORT2_RX = 0x22  # UART_PORT2_RX: UART port 2 receive.
+    PORT3_TX = 0x31  # UART_PORT3_TX: UART port 3 transmit.
+    PORT3_RX = 0x32  # UART_PORT3_RX: UART port 3 receive.
+
+
+class GpioUnusedBehavior(_c.Enum):
+    """GPIO behavior for the UNUSED feature (u8)."""
+
+    UNUSED = 0x00  # No behavior (0 unless otherwise specified).
+
+
 class GpsTimeField(_c.Enum):
     """GPS time field selector (u8)."""
 
@@ -413,6 +531,37 @@ class Gx5BitFlags(_c.Bitfield):
     magnetometer_fault = _c.bit(9)
     pressure_sensor_fault = _c.bit(10)
     filter_solution_fault = _c.bit(24)
+
+
+class Gx5ConstellationId(_c.Enum):
+    """GNSS constellation ID (GX5-45 constellation settings) (u8)."""
+
+    GPS = 0x00  # GPS (G1-G32).
+    SBAS = 0x01  # SBAS (S120-S158).
+    GALILEO = 0x02  # Galileo (E1-E36).
+    BEIDOU = 0x03  # BeiDou (B1-B37).
+    QZSS = 0x05  # QZSS (Q1-Q5).
+    GLONASS = 0x06  # GLONASS (R1-R32).
+
+
+class Gx5PollOption(_c.Enum):
+    """Poll option selector (u8).
+
+    First byte of the GX5-45 poll commands; chooses whether the ACK/NACK is sent.
+    """
+
+    NORMAL = 0x00  # Normal ACK/NACK reply.
+    SUPPRESS_ACK = 0x01  # No ACK/NACK reply; only the data packet is sent.
+
+
+class Gx5StreamSelector(_c.Enum):
+    """Continuous data stream selector (GX5-45) (u8).
+
+    Which data stream the GX5-45 Enable/Disable Continuous Data Stream command controls.
+    """
+
+    IMU = 0x01  # IMU data stream (set 0x80).
+    ESTIMATION_FILTER = 0x03  # Estimation filter data stream (set 0x82).
 
 
 @_c.bitfield("u8")
@@ -465,11 +614,28 @@ class MagneticParamSource(_c.Enum):
     MANUAL = 0x03  # Value supplied by the user; the device does not validate it.
 
 
+class OdometerMode(_c.Enum):
+    """Odometer mode (u8)."""
+
+    DISABLED = 0x00  # Encoder disabled.
+    QUADRATURE = 0x02  # Quadrature encoder mode.
+
+
 class PitchRollAidingSource(_c.Enum):
     """Pitch/roll aiding source (u8)."""
 
     NONE = 0x00  # No pitch/roll aiding (disabled).
     GRAVITY_VECTOR = 0x01  # Gravity vector aiding enabled.
+
+
+class PpsSource(_c.Enum):
+    """PPS source (u8)."""
+
+    DISABLED = 0x00  # No PPS (the table says it is not valid as a command value; see note).
+    RECEIVER_1 = 0x01  # PPS from GNSS receiver 1.
+    RECEIVER_2 = 0x02  # PPS from GNSS receiver 2.
+    GPIO = 0x03  # PPS applied to a GPIO pin (pin chosen with GPIO Configuration 0x0C,0x41).
+    GENERATED = 0x04  # PPS generated from the system oscillator.
 
 
 class ReferencePointSelector(_c.Enum):
@@ -485,12 +651,47 @@ class RelativePositionSource(_c.Enum):
     MANUAL = 0x01  # The reference coordinates given in the command.
 
 
+@_c.bitfield("u16")
+class SbasOptions(_c.Bitfield):
+    """SBAS options (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("enable_ranging", "enable_ranging", "ENABLE_RANGING", 0, 1),
+        ("enable_corrections", "enable_corrections", "ENABLE_CORRECTIONS", 1, 1),
+        ("apply_integrity", "apply_integrity", "APPLY_INTEGRITY", 2, 1),
+    )
+    ENABLE_RANGING = 0x0001  # bit 0: Use SBAS pseudoranges in the position solution (GX5-45 default on).
+    ENABLE_CORRECTIONS = 0x0002  # bit 1: Use SBAS differential corrections (GX5-45 default on).
+    APPLY_INTEGRITY = 0x0004  # bit 2: Use SBAS integrity information; only satellites with integrity data are used.
+
+    enable_ranging = _c.bit(0)
+    enable_corrections = _c.bit(1)
+    apply_integrity = _c.bit(2)
+
+
+class SensorRangeType(_c.Enum):
+    """Sensor whose range is set or queried (u8)."""
+
+    ALL = 0x00  # All sensors; only with save, load and default.
+    ACCEL = 0x01  # Accelerometer; range in g.
+    GYRO = 0x02  # Gyroscope; range in degrees/s.
+    MAG = 0x03  # Magnetometer; range in Gauss.
+    PRESS = 0x04  # Pressure sensor; range in hPa.
+
+
 class SpartnConnectionType(_c.Enum):
     """SPARTN connection type (u8)."""
 
     NONE = 0x00  # No SPARTN connection.
     NETWORK = 0x01  # Corrections over a network connection (e.g. NTRIP).
     L_BAND = 0x02  # Corrections from an L-band correction receiver.
+
+
+class SupportedEventsQuery(_c.Enum):
+    """Supported events query (u8)."""
+
+    TRIGGER_TYPES = 0x01  # Report the supported trigger types and how many of each.
+    ACTION_TYPES = 0x02  # Report the supported action types and how many of each.
 
 
 class SystemCommMode(_c.Enum):
@@ -705,6 +906,45 @@ class CombinationParams(_c.Struct):
 
 
 @_dc.dataclass
+class ConstellationSettings(_c.Struct):
+    """GNSS constellation configuration entry (struct, 6 bytes)."""
+
+    constellation_id: Gx5ConstellationId = Gx5ConstellationId.GPS  # Constellation.
+    enable: int = 0  # 0x00 disable, 0x01 enable.
+    # Tracking channels reserved for this constellation (0-32; all constellations together at most 32).
+    reserved_channels: int = 0
+    max_channels: int = 0  # Maximum tracking channels for this constellation (0-32, not below reserved_channels).
+    option_flags: ConstellationOptions = ConstellationOptions(0)  # Constellation options.
+
+    _ATTRS = ("constellation_id", "enable", "reserved_channels", "max_channels", "option_flags")
+    _OPS = (
+        _c.Run(
+            _c.P("constellation_id", _c.enum(Gx5ConstellationId, "u8")),
+            _c.P("enable", _c.U8),
+            _c.P("reserved_channels", _c.U8),
+            _c.P("max_channels", _c.U8),
+            _c.P("option_flags", _c.flags(ConstellationOptions)),
+        ),
+    )
+    _SIZE = 6
+
+
+@_dc.dataclass
+class DescriptorRate(_c.Struct):
+    """Descriptor and rate decimation (struct, 3 bytes).
+
+    One entry of a message format list.
+    """
+
+    descriptor: int = 0  # Data field descriptor.
+    decimation: int = 0  # Rate decimation: the field is output at base rate / decimation.
+
+    _ATTRS = ("descriptor", "decimation")
+    _OPS = (_c.Run(_c.P("descriptor", _c.U8), _c.P("decimation", _c.U16)),)
+    _SIZE = 3
+
+
+@_dc.dataclass
 class DeviceInfo(_c.Struct):
     """Device information (struct, 82 bytes).
 
@@ -748,6 +988,320 @@ class GnssReceiverInfoEntry(_c.Struct):
         _c.Run(_c.P("receiver_id", _c.U8), _c.P("mip_data_descriptor_set", _c.U8), _c.P("description", _c.string(32))),
     )
     _SIZE = 34
+
+
+@_dc.dataclass
+class GpioBehaviorUnused(_c.Struct):
+    """GpioBehaviorUnused (struct, 1 bytes)."""
+
+    behavior: GpioUnusedBehavior = GpioUnusedBehavior.UNUSED  # Behavior value (0).
+
+    _ATTRS = ("behavior",)
+    _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioUnusedBehavior, "u8"))),)
+    _SIZE = 1
+
+
+@_dc.dataclass
+class GpioBehaviorIo(_c.Struct):
+    """GpioBehaviorIo (struct, 1 bytes)."""
+
+    behavior: GpioIoBehavior = GpioIoBehavior.UNUSED  # Input, or output with its initial state.
+
+    _ATTRS = ("behavior",)
+    _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioIoBehavior, "u8"))),)
+    _SIZE = 1
+
+
+@_dc.dataclass
+class GpioBehaviorPps(_c.Struct):
+    """GpioBehaviorPps (struct, 1 bytes)."""
+
+    behavior: GpioPpsBehavior = GpioPpsBehavior.UNUSED  # PPS input or output.
+
+    _ATTRS = ("behavior",)
+    _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioPpsBehavior, "u8"))),)
+    _SIZE = 1
+
+
+@_dc.dataclass
+class GpioBehaviorEncoder(_c.Struct):
+    """GpioBehaviorEncoder (struct, 1 bytes)."""
+
+    behavior: GpioEncoderBehavior = GpioEncoderBehavior.UNUSED  # Quadrature channel A or B.
+
+    _ATTRS = ("behavior",)
+    _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioEncoderBehavior, "u8"))),)
+    _SIZE = 1
+
+
+@_dc.dataclass
+class GpioBehaviorTimestamp(_c.Struct):
+    """GpioBehaviorTimestamp (struct, 1 bytes)."""
+
+    behavior: GpioTimestampBehavior = GpioTimestampBehavior.UNUSED  # Which edges are timestamped.
+
+    _ATTRS = ("behavior",)
+    _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioTimestampBehavior, "u8"))),)
+    _SIZE = 1
+
+
+@_dc.dataclass
+class GpioBehaviorUart(_c.Struct):
+    """GpioBehaviorUart (struct, 1 bytes)."""
+
+    behavior: GpioUartBehavior = GpioUartBehavior.UNUSED  # UART port and direction.
+
+    _ATTRS = ("behavior",)
+    _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioUartBehavior, "u8"))),)
+    _SIZE = 1
+
+
+class GpioBehavior(_c.Union):
+    """GPIO behavior, read according to the feature (union selected by GpioFeature).
+
+    The behavior byte's meaning depends on the feature: the same number names a different behavior
+    per feature (2 is GPIO_OUTPUT_LOW for GPIO, PPS_OUTPUT for PPS, ENCODER_B for ENCODER,
+    TIMESTAMP_FALLING for TIMESTAMP). Every member is one u8.
+
+    The value of a union parameter is the selected member's struct, or None for a member without
+    data.
+    """
+
+    _SELECTOR = GpioFeature
+    _MEMBERS = {
+        0x00: GpioBehaviorUnused,  # unused: Feature UNUSED: behavior 0.
+        0x01: GpioBehaviorIo,  # gpio: Feature GPIO: GPIO_INPUT / GPIO_OUTPUT_LOW / GPIO_OUTPUT_HIGH.
+        0x02: GpioBehaviorPps,  # pps: Feature PPS: PPS_INPUT / PPS_OUTPUT.
+        0x03: GpioBehaviorEncoder,  # encoder: Feature ENCODER: ENCODER_A / ENCODER_B.
+        0x04: GpioBehaviorTimestamp,  # timestamp: Feature TIMESTAMP: TIMESTAMP_RISING / _FALLING / _EITHER.
+        0x05: GpioBehaviorUart,  # uart: Feature UART: UART_PORT2_TX/RX, UART_PORT3_TX/RX.
+    }
+
+
+@_dc.dataclass
+class Gx5BasicStatus(_c.Struct):
+    """GX5-45 basic device status (struct, 10 bytes).
+
+    Remainder of the basic device status reply after the model number and selector echoes.
+    """
+
+    status_flags: int = 0  # Status flags (reserved).
+    system_state: int = 0  # System state (values not documented).
+    system_timer: int = 0  # Time since start-up. [ms]
+
+    _ATTRS = ("status_flags", "system_state", "system_timer")
+    _OPS = (_c.Run(_c.P("status_flags", _c.U32), _c.P("system_state", _c.U16), _c.P("system_timer", _c.U32)),)
+    _SIZE = 10
+
+
+@_dc.dataclass
+class Gx5DiagnosticStatus(_c.Struct):
+    """GX5-45 diagnostic device status (struct, 70 bytes).
+
+    Remainder of the diagnostic device status reply after the model number and selector echoes.
+    """
+
+    status_flags: int = 0  # Status flags (reserved).
+    system_state: int = 0  # System state (values not documented).
+    system_timer: int = 0  # Time since start-up. [ms]
+    gnss_power_state: int = 0  # GNSS receiver power: 1 on, 0 off.
+    pps_pulse_count: int = 0  # Number of 1PPS pulses received. [count]
+    last_pps_time: int = 0  # System timer value at the last 1PPS pulse. [ms]
+    imu_stream_enabled: int = 0  # IMU stream: 1 on, 0 off.
+    gnss_stream_enabled: int = 0  # GNSS stream: 1 on, 0 off.
+    filter_stream_enabled: int = 0  # Estimation filter stream: 1 on, 0 off.
+    imu_dropped_packets: int = 0  # Outgoing IMU stream packets dropped. [count]
+    gnss_dropped_packets: int = 0  # Outgoing GNSS stream packets dropped. [count]
+    filter_dropped_packets: int = 0  # Outgoing estimation filter stream packets dropped. [count]
+    com_bytes_written: int = 0  # Bytes written to the com port. [count]
+    com_bytes_read: int = 0  # Bytes read from the com port. [count]
+    com_write_overruns: int = 0  # Overruns when writing to the com port. [count]
+    imu_parse_errors: int = 0  # IMU message parsing errors. [count]
+    imu_messages_read: int = 0  # IMU messages read in total. [count]
+    last_imu_message_time: int = 0  # System timer value at the last IMU message read. [ms]
+    gnss_parse_errors: int = 0  # GNSS message parsing errors. [count]
+    gnss_messages_read: int = 0  # GNSS messages read in total. [count]
+    last_gnss_message_time: int = 0  # System timer value at the last GNSS message read. [ms]
+
+    _ATTRS = (
+        "status_flags",
+        "system_state",
+        "system_timer",
+        "gnss_power_state",
+        "pps_pulse_count",
+        "last_pps_time",
+        "imu_stream_enabled",
+        "gnss_stream_enabled",
+        "filter_stream_enabled",
+        "imu_dropped_packets",
+        "gnss_dropped_packets",
+        "filter_dropped_packets",
+        "com_bytes_written",
+        "com_bytes_read",
+        "com_write_overruns",
+        "imu_parse_errors",
+        "imu_messages_read",
+        "last_imu_message_time",
+        "gnss_parse_errors",
+        "gnss_messages_read",
+        "last_gnss_message_time",
+    )
+    _OPS = (
+        _c.Run(
+            _c.P("status_flags", _c.U32),
+            _c.P("system_state", _c.U16),
+            _c.P("system_timer", _c.U32),
+            _c.P("gnss_power_state", _c.U8),
+            _c.P("pps_pulse_count", _c.U32),
+            _c.P("last_pps_time", _c.U32),
+            _c.P("imu_stream_enabled", _c.U8),
+            _c.P("gnss_stream_enabled", _c.U8),
+            _c.P("filter_stream_enabled", _c.U8),
+            _c.P("imu_dropped_packets", _c.U32),
+            _c.P("gnss_dropped_packets", _c.U32),
+            _c.P("filter_dropped_packets", _c.U32),
+            _c.P("com_bytes_written", _c.U32),
+            _c.P("com_bytes_read", _c.U32),
+            _c.P("com_write_overruns", _c.U32),
+            _c.P("imu_parse_errors", _c.U32),
+            _c.P("imu_messages_read", _c.U32),
+            _c.P("last_imu_message_time", _c.U32),
+            _c.P("gnss_parse_errors", _c.U32),
+            _c.P("gnss_messages_read", _c.U32),
+            _c.P("last_gnss_message_time", _c.U32),
+        ),
+    )
+    _SIZE = 70
+
+
+class Gx5DeviceStatus(_c.Union):
+    """GX5-45 device status structure (union selected by DeviceStatusSelector).
+
+    The value of a union parameter is the selected member's struct, or None for a member without
+    data.
+    """
+
+    _SELECTOR = DeviceStatusSelector
+    _MEMBERS = {
+        0x01: Gx5BasicStatus,  # basic
+        0x02: Gx5DiagnosticStatus,  # diagnostic
+    }
+
+
+@_dc.dataclass
+class Gx5PollDescriptor(_c.Struct):
+    """Poll format entry (GX5-45) (struct, 3 bytes)."""
+
+    descriptor: int = 0  # Data field descriptor to include in the polled packet.
+    reserved: int = 0  # Reserved; 0 in every example.
+
+    _ATTRS = ("descriptor", "reserved")
+    _OPS = (_c.Run(_c.P("descriptor", _c.U8), _c.P("reserved", _c.U16)),)
+    _SIZE = 3
+
+
+@_dc.dataclass
+class NmeaMessage(_c.Struct):
+    """NMEA message format entry (struct, 5 bytes)."""
+
+    # NMEA sentence type (GGA, GLL, GSV, RMC, VTG, HDT, ZDA, GST, PMSRA, PMSRR; codes not documented).
+    message_id: int = 0
+    talker_id: int = 0  # Talker ID (GN, GP, GA, GL; ignored for GSV and proprietary sentences; codes not documented).
+    source_desc_set: int = 0  # Data descriptor set the sentence is built from (IMU, filter, GNSS 1 or 2).
+    decimation: int = 0  # Decimation relative to the base rate of the source descriptor set.
+
+    _ATTRS = ("message_id", "talker_id", "source_desc_set", "decimation")
+    _OPS = (
+        _c.Run(
+            _c.P("message_id", _c.U8),
+            _c.P("talker_id", _c.U8),
+            _c.P("source_desc_set", _c.U8),
+            _c.P("decimation", _c.U16),
+        ),
+    )
+    _SIZE = 5
+
+
+@_dc.dataclass
+class SensorRangeEntry(_c.Struct):
+    """Calibrated sensor range entry (struct, 5 bytes)."""
+
+    setting: int = 0  # Value to use as setting in Sensor Range (0x0C,0x52).
+    range: float = 0.0  # Range this setting gives; units depend on the sensor (see SensorRangeType).
+
+    _ATTRS = ("setting", "range")
+    _OPS = (_c.Run(_c.P("setting", _c.U8), _c.P("range", _c.F32)),)
+    _SIZE = 5
+
+
+@_dc.dataclass
+class SupportedActionType(_c.Struct):
+    """Supported action type (struct, 2 bytes)."""
+
+    type: ActionType = ActionType.NONE  # Action type, as in Event Action Configuration (0x0C,0x2F).
+    count: int = 0  # Maximum number of instances of this type.
+
+    _ATTRS = ("type", "count")
+    _OPS = (_c.Run(_c.P("type", _c.enum(ActionType, "u8")), _c.P("count", _c.U8)),)
+    _SIZE = 2
+
+
+@_dc.dataclass
+class SupportedActions(_c.Struct):
+    """Supported actions (query = action types) (struct, 2..252 bytes)."""
+
+    max_instances: int = 0  # Number of action slots; instance numbers run 1..max_instances.
+    num_entries: int = 0  # Number of supported action types.
+    # Supported action types. (count: num_entries)
+    entries: _ty.List[SupportedActionType] = _dc.field(default_factory=list)
+
+    _ATTRS = ("max_instances", "num_entries", "entries")
+    _OPS = (
+        _c.Run(_c.P("max_instances", _c.U8), _c.P("num_entries", _c.U8)),
+        _c.Counted("entries", SupportedActionType, count="num_entries", maximum=125),
+    )
+
+
+@_dc.dataclass
+class SupportedTriggerType(_c.Struct):
+    """Supported trigger type (struct, 2 bytes)."""
+
+    type: TriggerType = TriggerType.NONE  # Trigger type, as in Event Trigger Configuration (0x0C,0x2E).
+    count: int = 0  # Maximum number of instances of this type.
+
+    _ATTRS = ("type", "count")
+    _OPS = (_c.Run(_c.P("type", _c.enum(TriggerType, "u8")), _c.P("count", _c.U8)),)
+    _SIZE = 2
+
+
+@_dc.dataclass
+class SupportedTriggers(_c.Struct):
+    """Supported triggers (query = trigger types) (struct, 2..252 bytes)."""
+
+    max_instances: int = 0  # Number of trigger slots; instance numbers run 1..max_instances.
+    num_entries: int = 0  # Number of supported trigger types.
+    # Supported trigger types. (count: num_entries)
+    entries: _ty.List[SupportedTriggerType] = _dc.field(default_factory=list)
+
+    _ATTRS = ("max_instances", "num_entries", "entries")
+    _OPS = (
+        _c.Run(_c.P("max_instances", _c.U8), _c.P("num_entries", _c.U8)),
+        _c.Counted("entries", SupportedTriggerType, count="num_entries", maximum=125),
+    )
+
+
+class SupportedEventsInfo(_c.Union):
+    """Supported event types, by query (union selected by SupportedEventsQuery).
+
+    The value of a union parameter is the selected member's struct, or None for a member without
+    data.
+    """
+
+    _SELECTOR = SupportedEventsQuery
+    _MEMBERS = {
+        0x01: SupportedTriggers,  # trigger_types
+        0x02: SupportedActions,  # action_types
+    }
 
 
 @_dc.dataclass

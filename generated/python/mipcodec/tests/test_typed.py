@@ -132,9 +132,506 @@ SAMPLES = [
             parameters=types.ActionGpioParams(pin=155, mode=types.ActionGpioMode.ACTIVE_HIGH),
         ),
     ),
+    (
+        "threedm.DeviceStartupSettings_gx5_45",
+        lambda: threedm.DeviceStartupSettings_gx5_45(function=types.FunctionSelector.DEFAULT),
+    ),
+    (
+        "threedm.DeviceStartupSettings_cv7_ins",
+        lambda: threedm.DeviceStartupSettings_cv7_ins(function=types.FunctionSelector.DEFAULT),
+    ),
+    (
+        "threedm.SensorToVehicleEuler",
+        lambda: threedm.SensorToVehicleEuler(function=types.FunctionSelector.DEFAULT, roll=-0.0, pitch=1.5, yaw=-2.25),
+    ),
+    (
+        "threedm.SensorToVehicleEulerResponse",
+        lambda: threedm.SensorToVehicleEulerResponse(roll=0.375, pitch=1024.0, yaw=-0.0),
+    ),
+    (
+        "threedm.SensorToVehicleQuaternion",
+        lambda: threedm.SensorToVehicleQuaternion(
+            function=types.FunctionSelector.DEFAULT, q=[1.5, -2.25, 0.375, 1024.0]
+        ),
+    ),
+    (
+        "threedm.SensorToVehicleQuaternionResponse",
+        lambda: threedm.SensorToVehicleQuaternionResponse(q=[-0.0, 1.5, -2.25, 0.375]),
+    ),
+    (
+        "threedm.SensorToVehicleDcm",
+        lambda: threedm.SensorToVehicleDcm(
+            function=types.FunctionSelector.DEFAULT, dcm=[1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25]
+        ),
+    ),
+    (
+        "threedm.SensorToVehicleDcmResponse",
+        lambda: threedm.SensorToVehicleDcmResponse(dcm=[0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5]),
+    ),
+    (
+        "threedm.AccelBias_gx5_45",
+        lambda: threedm.AccelBias_gx5_45(function=types.FunctionSelector.WRITE_NO_ACK, bias=[-2.25, 0.375, 1024.0]),
+    ),
+    (
+        "threedm.AccelBias_cv7_ins",
+        lambda: threedm.AccelBias_cv7_ins(function=types.FunctionSelector.DEFAULT, bias=[-0.0, 1.5, -2.25]),
+    ),
+    ("threedm.AccelBiasResponse", lambda: threedm.AccelBiasResponse(bias=[0.375, 1024.0, -0.0])),
+    (
+        "threedm.GyroBias_gx5_45",
+        lambda: threedm.GyroBias_gx5_45(function=types.FunctionSelector.WRITE_NO_ACK, bias=[1.5, -2.25, 0.375]),
+    ),
+    (
+        "threedm.GyroBias_cv7_ins",
+        lambda: threedm.GyroBias_cv7_ins(function=types.FunctionSelector.DEFAULT, bias=[1024.0, -0.0, 1.5]),
+    ),
+    ("threedm.GyroBiasResponse", lambda: threedm.GyroBiasResponse(bias=[-2.25, 0.375, 1024.0])),
+    ("threedm.CaptureGyroBias", lambda: threedm.CaptureGyroBias(averaging_time_ms=71)),
+    (
+        "threedm.MagHardIronOffset_gx5_45",
+        lambda: threedm.MagHardIronOffset_gx5_45(
+            function=types.FunctionSelector.WRITE_NO_ACK, offset=[1.5, -2.25, 0.375]
+        ),
+    ),
+    (
+        "threedm.MagHardIronOffset_cv7_ins",
+        lambda: threedm.MagHardIronOffset_cv7_ins(function=types.FunctionSelector.DEFAULT, offset=[1024.0, -0.0, 1.5]),
+    ),
+    ("threedm.MagHardIronOffsetResponse", lambda: threedm.MagHardIronOffsetResponse(offset=[-2.25, 0.375, 1024.0])),
+    (
+        "threedm.MagSoftIronMatrix_gx5_45",
+        lambda: threedm.MagSoftIronMatrix_gx5_45(
+            function=types.FunctionSelector.WRITE_NO_ACK,
+            matrix=[-0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375],
+        ),
+    ),
+    (
+        "threedm.MagSoftIronMatrix_cv7_ins",
+        lambda: threedm.MagSoftIronMatrix_cv7_ins(
+            function=types.FunctionSelector.DEFAULT, matrix=[1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25]
+        ),
+    ),
+    (
+        "threedm.MagSoftIronMatrixResponse",
+        lambda: threedm.MagSoftIronMatrixResponse(matrix=[0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5]),
+    ),
+    (
+        "threedm.ConingScullingEnable",
+        lambda: threedm.ConingScullingEnable(function=types.FunctionSelector.DEFAULT, enable=True),
+    ),
+    ("threedm.ConingScullingEnableResponse", lambda: threedm.ConingScullingEnableResponse(enable=False)),
+    ("threedm.UartBaudrate", lambda: threedm.UartBaudrate(function=types.FunctionSelector.DEFAULT, baud=8)),
+    ("threedm.UartBaudrateResponse", lambda: threedm.UartBaudrateResponse(baud=45)),
+    (
+        "threedm.GpioConfig",
+        lambda: threedm.GpioConfig(
+            function=types.FunctionSelector.DEFAULT,
+            pin=82,
+            feature=types.GpioFeature.UNUSED,
+            behavior=types.GpioBehaviorUnused(behavior=types.GpioUnusedBehavior.UNUSED),
+            pin_mode=types.GpioPinMode(0x4),
+        ),
+    ),
+    (
+        "threedm.GpioConfigResponse",
+        lambda: threedm.GpioConfigResponse(
+            pin=193,
+            feature=types.GpioFeature.UNUSED,
+            behavior=types.GpioBehaviorUnused(behavior=types.GpioUnusedBehavior.UNUSED),
+            pin_mode=types.GpioPinMode(0x4),
+        ),
+    ),
+    ("threedm.GpioState", lambda: threedm.GpioState(function=types.FunctionSelector.READ, pin=53, state=False)),
+    ("threedm.GpioStateResponse", lambda: threedm.GpioStateResponse(pin=127, state=False)),
+    (
+        "threedm.OdometerConfig",
+        lambda: threedm.OdometerConfig(
+            function=types.FunctionSelector.DEFAULT,
+            mode=types.OdometerMode.QUADRATURE,
+            scaling=-2.25,
+            uncertainty=0.375,
+        ),
+    ),
+    (
+        "threedm.OdometerConfigResponse",
+        lambda: threedm.OdometerConfigResponse(mode=types.OdometerMode.DISABLED, scaling=-0.0, uncertainty=1.5),
+    ),
+    (
+        "threedm.AdvancedLowpassFilter",
+        lambda: threedm.AdvancedLowpassFilter(
+            function=types.FunctionSelector.DEFAULT,
+            target_descriptor=172,
+            enable=False,
+            manual=True,
+            frequency=32,
+            reserved=69,
+        ),
+    ),
+    (
+        "threedm.AdvancedLowpassFilterResponse",
+        lambda: threedm.AdvancedLowpassFilterResponse(
+            target_descriptor=106, enable=True, manual=False, frequency=217, reserved=3
+        ),
+    ),
+    (
+        "threedm.ComplementaryFilter",
+        lambda: threedm.ComplementaryFilter(
+            function=types.FunctionSelector.DEFAULT,
+            pitch_roll_enable=True,
+            heading_enable=False,
+            pitch_roll_time_constant=1024.0,
+            heading_time_constant=-0.0,
+        ),
+    ),
+    (
+        "threedm.ComplementaryFilterResponse",
+        lambda: threedm.ComplementaryFilterResponse(
+            pitch_roll_enable=True, heading_enable=False, pitch_roll_time_constant=0.375, heading_time_constant=1024.0
+        ),
+    ),
+    (
+        "threedm.SensorRange",
+        lambda: threedm.SensorRange(
+            function=types.FunctionSelector.DEFAULT, sensor=types.SensorRangeType.PRESS, setting=122
+        ),
+    ),
+    (
+        "threedm.SensorRangeResponse",
+        lambda: threedm.SensorRangeResponse(sensor=types.SensorRangeType.ACCEL, setting=196),
+    ),
+    ("threedm.GetCalibratedSensorRanges", lambda: threedm.GetCalibratedSensorRanges(sensor=types.SensorRangeType.MAG)),
+    (
+        "threedm.CalibratedSensorRanges",
+        lambda: threedm.CalibratedSensorRanges(
+            sensor=types.SensorRangeType.PRESS,
+            num_ranges=2,
+            ranges=[types.SensorRangeEntry(setting=93, range=0.375), types.SensorRangeEntry(setting=204, range=1.5)],
+        ),
+    ),
+    (
+        "threedm.LowpassFilter",
+        lambda: threedm.LowpassFilter(
+            function=types.FunctionSelector.DEFAULT,
+            desc_set=27,
+            field_desc=64,
+            enable=True,
+            manual=False,
+            frequency=1.5,
+        ),
+    ),
+    (
+        "threedm.LowpassFilterResponse",
+        lambda: threedm.LowpassFilterResponse(desc_set=212, field_desc=249, enable=False, manual=True, frequency=1.5),
+    ),
+    (
+        "threedm.PollImuData",
+        lambda: threedm.PollImuData(
+            option=types.Gx5PollOption.SUPPRESS_ACK,
+            num_descriptors=2,
+            descriptors=[
+                types.Gx5PollDescriptor(descriptor=220, reserved=6),
+                types.Gx5PollDescriptor(descriptor=80, reserved=117),
+            ],
+        ),
+    ),
+    (
+        "threedm.PollGnssData",
+        lambda: threedm.PollGnssData(
+            option=types.Gx5PollOption.NORMAL,
+            num_descriptors=2,
+            descriptors=[
+                types.Gx5PollDescriptor(descriptor=228, reserved=14),
+                types.Gx5PollDescriptor(descriptor=88, reserved=125),
+            ],
+        ),
+    ),
+    (
+        "threedm.PollFilterData",
+        lambda: threedm.PollFilterData(
+            option=types.Gx5PollOption.SUPPRESS_ACK,
+            num_descriptors=2,
+            descriptors=[
+                types.Gx5PollDescriptor(descriptor=236, reserved=22),
+                types.Gx5PollDescriptor(descriptor=96, reserved=133),
+            ],
+        ),
+    ),
+    (
+        "threedm.PollNmeaData",
+        lambda: threedm.PollNmeaData(
+            suppress_ack=False,
+            count=2,
+            format_entries=[
+                types.NmeaMessage(message_id=244, talker_id=30, source_desc_set=67, decimation=104),
+                types.NmeaMessage(message_id=178, talker_id=215, source_desc_set=1, decimation=38),
+            ],
+        ),
+    ),
+    (
+        "threedm.PollData",
+        lambda: threedm.PollData(desc_set=75, suppress_ack=False, num_descriptors=2, descriptors=[149, 186]),
+    ),
+    ("threedm.GetImuBaseRate", lambda: threedm.GetImuBaseRate()),
+    ("threedm.ImuBaseRate", lambda: threedm.ImuBaseRate(rate=223)),
+    ("threedm.GetGnssBaseRate", lambda: threedm.GetGnssBaseRate()),
+    ("threedm.GnssBaseRate", lambda: threedm.GnssBaseRate(rate=9)),
+    ("threedm.GetFilterBaseRate", lambda: threedm.GetFilterBaseRate()),
+    ("threedm.FilterBaseRate", lambda: threedm.FilterBaseRate(rate=46)),
+    ("threedm.GetBaseRate", lambda: threedm.GetBaseRate(desc_set=83)),
+    ("threedm.BaseRate", lambda: threedm.BaseRate(desc_set=120, rate=157)),
+    (
+        "threedm.ImuMessageFormat",
+        lambda: threedm.ImuMessageFormat(
+            function=types.FunctionSelector.DEFAULT,
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=231, decimation=17),
+                types.DescriptorRate(descriptor=91, decimation=128),
+            ],
+        ),
+    ),
+    (
+        "threedm.ImuMessageFormatResponse",
+        lambda: threedm.ImuMessageFormatResponse(
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=202, decimation=239),
+                types.DescriptorRate(descriptor=62, decimation=99),
+            ],
+        ),
+    ),
+    (
+        "threedm.GnssMessageFormat",
+        lambda: threedm.GnssMessageFormat(
+            function=types.FunctionSelector.DEFAULT,
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=173, decimation=210),
+                types.DescriptorRate(descriptor=33, decimation=70),
+            ],
+        ),
+    ),
+    (
+        "threedm.GnssMessageFormatResponse",
+        lambda: threedm.GnssMessageFormatResponse(
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=144, decimation=181),
+                types.DescriptorRate(descriptor=4, decimation=41),
+            ],
+        ),
+    ),
+    (
+        "threedm.FilterMessageFormat",
+        lambda: threedm.FilterMessageFormat(
+            function=types.FunctionSelector.DEFAULT,
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=115, decimation=152),
+                types.DescriptorRate(descriptor=226, decimation=12),
+            ],
+        ),
+    ),
+    (
+        "threedm.FilterMessageFormatResponse",
+        lambda: threedm.FilterMessageFormatResponse(
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=86, decimation=123),
+                types.DescriptorRate(descriptor=197, decimation=234),
+            ],
+        ),
+    ),
+    (
+        "threedm.NmeaMessageFormat",
+        lambda: threedm.NmeaMessageFormat(
+            function=types.FunctionSelector.DEFAULT,
+            count=2,
+            format_entries=[
+                types.NmeaMessage(message_id=57, talker_id=94, source_desc_set=131, decimation=168),
+                types.NmeaMessage(message_id=242, talker_id=28, source_desc_set=65, decimation=102),
+            ],
+        ),
+    ),
+    (
+        "threedm.NmeaMessageFormatResponse",
+        lambda: threedm.NmeaMessageFormatResponse(
+            count=2,
+            format_entries=[
+                types.NmeaMessage(message_id=176, talker_id=213, source_desc_set=250, decimation=36),
+                types.NmeaMessage(message_id=110, talker_id=147, source_desc_set=184, decimation=221),
+            ],
+        ),
+    ),
+    (
+        "threedm.MessageFormat",
+        lambda: threedm.MessageFormat(
+            function=types.FunctionSelector.DEFAULT,
+            desc_set=7,
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=81, decimation=118),
+                types.DescriptorRate(descriptor=192, decimation=229),
+            ],
+        ),
+    ),
+    (
+        "threedm.MessageFormatResponse",
+        lambda: threedm.MessageFormatResponse(
+            desc_set=15,
+            num_descriptors=2,
+            descriptors=[
+                types.DescriptorRate(descriptor=89, decimation=126),
+                types.DescriptorRate(descriptor=200, decimation=237),
+            ],
+        ),
+    ),
+    (
+        "threedm.FactoryStreaming",
+        lambda: threedm.FactoryStreaming(action=types.FactoryStreamingAction.OVERWRITE, reserved=60),
+    ),
+    (
+        "threedm.DataStreamControl_gx5_45",
+        lambda: threedm.DataStreamControl_gx5_45(
+            function=types.FunctionSelector.DEFAULT,
+            device_selector=types.Gx5StreamSelector.ESTIMATION_FILTER,
+            enable=134,
+        ),
+    ),
+    (
+        "threedm.DataStreamControl_cv7_ins",
+        lambda: threedm.DataStreamControl_cv7_ins(function=types.FunctionSelector.DEFAULT, desc_set=171, enable=False),
+    ),
+    (
+        "threedm.DataStreamControlResponse_gx5_45",
+        lambda: threedm.DataStreamControlResponse_gx5_45(
+            device_selector=types.Gx5StreamSelector.ESTIMATION_FILTER, enabled=31
+        ),
+    ),
+    (
+        "threedm.DataStreamControlResponse_cv7_ins",
+        lambda: threedm.DataStreamControlResponse_cv7_ins(desc_set=68, enabled=False),
+    ),
+    ("threedm.RawRtcmMessage", lambda: threedm.RawRtcmMessage(data=[142, 179])),
+    (
+        "threedm.GnssConstellationSettings",
+        lambda: threedm.GnssConstellationSettings(
+            function=types.FunctionSelector.DEFAULT,
+            max_channels=216,
+            config_count=2,
+            settings=[
+                types.ConstellationSettings(
+                    constellation_id=types.Gx5ConstellationId.GLONASS,
+                    enable=76,
+                    reserved_channels=113,
+                    max_channels=150,
+                    option_flags=types.ConstellationOptions(0x1),
+                ),
+                types.ConstellationSettings(
+                    constellation_id=types.Gx5ConstellationId.GLONASS,
+                    enable=47,
+                    reserved_channels=84,
+                    max_channels=121,
+                    option_flags=types.ConstellationOptions(0x1),
+                ),
+            ],
+        ),
+    ),
+    (
+        "threedm.GnssConstellationSettingsResponse",
+        lambda: threedm.GnssConstellationSettingsResponse(
+            max_channels_available=195,
+            max_channels=232,
+            config_count=2,
+            settings=[
+                types.ConstellationSettings(
+                    constellation_id=types.Gx5ConstellationId.SBAS,
+                    enable=92,
+                    reserved_channels=129,
+                    max_channels=166,
+                    option_flags=types.ConstellationOptions(0x1),
+                ),
+                types.ConstellationSettings(
+                    constellation_id=types.Gx5ConstellationId.SBAS,
+                    enable=63,
+                    reserved_channels=100,
+                    max_channels=137,
+                    option_flags=types.ConstellationOptions(0x1),
+                ),
+            ],
+        ),
+    ),
+    (
+        "threedm.GnssSbasSettings",
+        lambda: threedm.GnssSbasSettings(
+            function=types.FunctionSelector.DEFAULT,
+            enable_sbas=211,
+            sbas_options=types.SbasOptions(0x2),
+            num_included_prns=2,
+            included_prns=[34, 71],
+        ),
+    ),
+    (
+        "threedm.GnssSbasSettingsResponse",
+        lambda: threedm.GnssSbasSettingsResponse(
+            enable_sbas=108, sbas_options=types.SbasOptions(0x4), num_included_prns=2, included_prns=[182, 219]
+        ),
+    ),
+    (
+        "threedm.GnssAssistedFixControl",
+        lambda: threedm.GnssAssistedFixControl(
+            function=types.FunctionSelector.DEFAULT, option=types.AssistedFixOption.NONE, flags=42
+        ),
+    ),
+    (
+        "threedm.GnssAssistedFixControlResponse",
+        lambda: threedm.GnssAssistedFixControlResponse(option=types.AssistedFixOption.NONE, flags=116),
+    ),
+    (
+        "threedm.GnssAssistTimeUpdate",
+        lambda: threedm.GnssAssistTimeUpdate(
+            function=types.FunctionSelector.READ, tow=-0.0, week_number=190, accuracy=-2.25
+        ),
+    ),
+    (
+        "threedm.GnssAssistTimeUpdateResponse",
+        lambda: threedm.GnssAssistTimeUpdateResponse(tow=1e16, week_number=50, accuracy=-0.0),
+    ),
+    (
+        "threedm.PpsSource",
+        lambda: threedm.PpsSource(function=types.FunctionSelector.DEFAULT, source=types.PpsSource.DISABLED),
+    ),
+    ("threedm.PpsSourceResponse", lambda: threedm.PpsSourceResponse(source=types.PpsSource.RECEIVER_1)),
+    ("threedm.GetSupportedEvents", lambda: threedm.GetSupportedEvents(query=types.SupportedEventsQuery.TRIGGER_TYPES)),
+    (
+        "threedm.SupportedEvents",
+        lambda: threedm.SupportedEvents(
+            query=types.SupportedEventsQuery.TRIGGER_TYPES,
+            info=types.SupportedTriggers(
+                max_instances=235,
+                num_entries=2,
+                entries=[
+                    types.SupportedTriggerType(type=types.TriggerType.COMBINATION, count=95),
+                    types.SupportedTriggerType(type=types.TriggerType.THRESHOLD, count=206),
+                ],
+            ),
+        ),
+    ),
+    (
+        "threedm.DeviceStatus",
+        lambda: threedm.DeviceStatus(model_number=243, status_selector=types.DeviceStatusSelector.DIAGNOSTIC),
+    ),
+    (
+        "threedm.DeviceStatusResponse",
+        lambda: threedm.DeviceStatusResponse(
+            model_number=66,
+            status_selector=types.DeviceStatusSelector.BASIC,
+            status=types.Gx5BasicStatus(status_flags=103, system_state=140, system_timer=177),
+        ),
+    ),
     ("filter.ResetFilter", lambda: filter.ResetFilter()),
-    ("filter.SetInitialAttitude", lambda: filter.SetInitialAttitude(roll=-0.0, pitch=1.5, heading=-2.25)),
-    ("filter.SetInitialHeading", lambda: filter.SetInitialHeading(heading=0.375)),
+    ("filter.SetInitialAttitude", lambda: filter.SetInitialAttitude(roll=-2.25, pitch=0.375, heading=1024.0)),
+    ("filter.SetInitialHeading", lambda: filter.SetInitialHeading(heading=-0.0)),
     ("filter.RunFilter", lambda: filter.RunFilter()),
     (
         "filter.VehicleDynamicsMode",
@@ -149,32 +646,35 @@ SAMPLES = [
     (
         "filter.SensorToVehicleTransform",
         lambda: filter.SensorToVehicleTransform(
-            function=types.FunctionSelector.DEFAULT, roll=1.5, pitch=-2.25, yaw=0.375
+            function=types.FunctionSelector.DEFAULT, roll=0.375, pitch=1024.0, yaw=-0.0
         ),
     ),
     (
         "filter.SensorToVehicleTransformResponse",
-        lambda: filter.SensorToVehicleTransformResponse(roll=1024.0, pitch=-0.0, yaw=1.5),
+        lambda: filter.SensorToVehicleTransformResponse(roll=1.5, pitch=-2.25, yaw=0.375),
     ),
     (
         "filter.SensorToVehicleOffset",
-        lambda: filter.SensorToVehicleOffset(function=types.FunctionSelector.DEFAULT, offset=[-2.25, 0.375, 1024.0]),
+        lambda: filter.SensorToVehicleOffset(function=types.FunctionSelector.DEFAULT, offset=[1024.0, -0.0, 1.5]),
     ),
-    ("filter.SensorToVehicleOffsetResponse", lambda: filter.SensorToVehicleOffsetResponse(offset=[-0.0, 1.5, -2.25])),
+    (
+        "filter.SensorToVehicleOffsetResponse",
+        lambda: filter.SensorToVehicleOffsetResponse(offset=[-2.25, 0.375, 1024.0]),
+    ),
     (
         "filter.AntennaOffset",
-        lambda: filter.AntennaOffset(function=types.FunctionSelector.DEFAULT, offset=[0.375, 1024.0, -0.0]),
+        lambda: filter.AntennaOffset(function=types.FunctionSelector.DEFAULT, offset=[-0.0, 1.5, -2.25]),
     ),
-    ("filter.AntennaOffsetResponse", lambda: filter.AntennaOffsetResponse(offset=[1.5, -2.25, 0.375])),
+    ("filter.AntennaOffsetResponse", lambda: filter.AntennaOffsetResponse(offset=[0.375, 1024.0, -0.0])),
     (
         "filter.EstimationControl",
         lambda: filter.EstimationControl(
-            function=types.FunctionSelector.DEFAULT, flags=types.EstimationControlFlags(0x4)
+            function=types.FunctionSelector.DEFAULT, flags=types.EstimationControlFlags(0x40)
         ),
     ),
     (
         "filter.EstimationControlResponse",
-        lambda: filter.EstimationControlResponse(flags=types.EstimationControlFlags(0x8)),
+        lambda: filter.EstimationControlResponse(flags=types.EstimationControlFlags(0xFF80)),
     ),
     (
         "filter.GnssSourceControl",
@@ -189,90 +689,92 @@ SAMPLES = [
     (
         "filter.ExternalGnssUpdate",
         lambda: filter.ExternalGnssUpdate(
-            gps_tow=1e16,
-            gps_week=47,
-            latitude=-0.0,
-            longitude=0.1,
-            height=-2.5e-310,
-            velocity=[0.375, 1024.0, -0.0],
-            position_uncertainty=[1.5, -2.25, 0.375],
-            velocity_uncertainty=[1024.0, -0.0, 1.5],
+            gps_tow=-0.0,
+            gps_week=32,
+            latitude=-2.5e-310,
+            longitude=1e16,
+            height=123.456,
+            velocity=[-0.0, 1.5, -2.25],
+            position_uncertainty=[0.375, 1024.0, -0.0],
+            velocity_uncertainty=[1.5, -2.25, 0.375],
         ),
     ),
     (
         "filter.ExternalHeadingUpdate",
         lambda: filter.ExternalHeadingUpdate(
-            heading=-2.25, heading_uncertainty=0.375, type=types.ExternalHeadingType.TRUE_HEADING
+            heading=1024.0, heading_uncertainty=-0.0, type=types.ExternalHeadingType.TRUE_HEADING
         ),
     ),
     (
         "filter.HeadingUpdateControl",
         lambda: filter.HeadingUpdateControl(
-            function=types.FunctionSelector.DEFAULT,
-            source=types.HeadingUpdateSource.GNSS_VELOCITY_MAGNETOMETER_AND_EXTERNAL,
+            function=types.FunctionSelector.DEFAULT, source=types.HeadingUpdateSource.EXTERNAL
         ),
     ),
     (
         "filter.HeadingUpdateControlResponse",
-        lambda: filter.HeadingUpdateControlResponse(source=types.HeadingUpdateSource.NONE),
+        lambda: filter.HeadingUpdateControlResponse(source=types.HeadingUpdateSource.GNSS_VELOCITY_AND_MAGNETOMETER),
     ),
-    ("filter.AutoInitControl", lambda: filter.AutoInitControl(function=types.FunctionSelector.DEFAULT, enable=211)),
-    ("filter.AutoInitControlResponse", lambda: filter.AutoInitControlResponse(enable=248)),
+    ("filter.AutoInitControl", lambda: filter.AutoInitControl(function=types.FunctionSelector.DEFAULT, enable=196)),
+    ("filter.AutoInitControlResponse", lambda: filter.AutoInitControlResponse(enable=233)),
     (
         "filter.AccelNoise",
-        lambda: filter.AccelNoise(function=types.FunctionSelector.DEFAULT, noise=[1024.0, -0.0, 1.5]),
+        lambda: filter.AccelNoise(function=types.FunctionSelector.DEFAULT, noise=[1.5, -2.25, 0.375]),
     ),
-    ("filter.AccelNoiseResponse", lambda: filter.AccelNoiseResponse(noise=[-2.25, 0.375, 1024.0])),
-    ("filter.GyroNoise", lambda: filter.GyroNoise(function=types.FunctionSelector.DEFAULT, noise=[-0.0, 1.5, -2.25])),
-    ("filter.GyroNoiseResponse", lambda: filter.GyroNoiseResponse(noise=[0.375, 1024.0, -0.0])),
+    ("filter.AccelNoiseResponse", lambda: filter.AccelNoiseResponse(noise=[1024.0, -0.0, 1.5])),
+    (
+        "filter.GyroNoise",
+        lambda: filter.GyroNoise(function=types.FunctionSelector.DEFAULT, noise=[-2.25, 0.375, 1024.0]),
+    ),
+    ("filter.GyroNoiseResponse", lambda: filter.GyroNoiseResponse(noise=[-0.0, 1.5, -2.25])),
     (
         "filter.AccelBiasModel",
         lambda: filter.AccelBiasModel(
-            function=types.FunctionSelector.DEFAULT, beta=[1.5, -2.25, 0.375], noise=[1024.0, -0.0, 1.5]
-        ),
-    ),
-    (
-        "filter.AccelBiasModelResponse",
-        lambda: filter.AccelBiasModelResponse(beta=[-2.25, 0.375, 1024.0], noise=[-0.0, 1.5, -2.25]),
-    ),
-    (
-        "filter.GyroBiasModel",
-        lambda: filter.GyroBiasModel(
             function=types.FunctionSelector.DEFAULT, beta=[0.375, 1024.0, -0.0], noise=[1.5, -2.25, 0.375]
         ),
     ),
     (
+        "filter.AccelBiasModelResponse",
+        lambda: filter.AccelBiasModelResponse(beta=[1024.0, -0.0, 1.5], noise=[-2.25, 0.375, 1024.0]),
+    ),
+    (
+        "filter.GyroBiasModel",
+        lambda: filter.GyroBiasModel(
+            function=types.FunctionSelector.DEFAULT, beta=[-0.0, 1.5, -2.25], noise=[0.375, 1024.0, -0.0]
+        ),
+    ),
+    (
         "filter.GyroBiasModelResponse",
-        lambda: filter.GyroBiasModelResponse(beta=[1024.0, -0.0, 1.5], noise=[-2.25, 0.375, 1024.0]),
+        lambda: filter.GyroBiasModelResponse(beta=[1.5, -2.25, 0.375], noise=[1024.0, -0.0, 1.5]),
     ),
     (
         "filter.ZuptControl",
-        lambda: filter.ZuptControl(function=types.FunctionSelector.DEFAULT, enable=111, threshold=1.5),
+        lambda: filter.ZuptControl(function=types.FunctionSelector.DEFAULT, enable=96, threshold=0.375),
     ),
-    ("filter.ZuptControlResponse", lambda: filter.ZuptControlResponse(enable=185, threshold=0.375)),
+    ("filter.ZuptControlResponse", lambda: filter.ZuptControlResponse(enable=170, threshold=-0.0)),
     (
         "filter.ExternalHeadingUpdateWithTime",
         lambda: filter.ExternalHeadingUpdateWithTime(
-            gps_tow=123.456,
-            gps_week=45,
-            heading=1.5,
-            heading_uncertainty=-2.25,
+            gps_tow=0.1,
+            gps_week=30,
+            heading=0.375,
+            heading_uncertainty=1024.0,
             type=types.ExternalHeadingType.MAGNETIC_HEADING,
         ),
     ),
     (
         "filter.ZeroAngularRateUpdateControl",
         lambda: filter.ZeroAngularRateUpdateControl(
-            function=types.FunctionSelector.DEFAULT, enable=193, threshold=-0.0
+            function=types.FunctionSelector.DEFAULT, enable=178, threshold=-2.25
         ),
     ),
     (
         "filter.ZeroAngularRateUpdateControlResponse",
-        lambda: filter.ZeroAngularRateUpdateControlResponse(enable=16, threshold=-2.25),
+        lambda: filter.ZeroAngularRateUpdateControlResponse(enable=1, threshold=1024.0),
     ),
     (
         "filter.TareOrientation",
-        lambda: filter.TareOrientation(function=types.FunctionSelector.DEFAULT, axes=types.TareAxes(0x2)),
+        lambda: filter.TareOrientation(function=types.FunctionSelector.DEFAULT, axes=types.TareAxes(0x1)),
     ),
     ("filter.CommandedZupt", lambda: filter.CommandedZupt()),
     ("filter.CommandedZeroAngularRateUpdate", lambda: filter.CommandedZeroAngularRateUpdate()),
@@ -282,61 +784,49 @@ SAMPLES = [
     ),
     (
         "filter.GravityNoiseStdDev",
-        lambda: filter.GravityNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=[1024.0, -0.0, 1.5]),
+        lambda: filter.GravityNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=[1.5, -2.25, 0.375]),
     ),
-    ("filter.GravityNoiseStdDevResponse", lambda: filter.GravityNoiseStdDevResponse(noise=[-2.25, 0.375, 1024.0])),
+    ("filter.GravityNoiseStdDevResponse", lambda: filter.GravityNoiseStdDevResponse(noise=[1024.0, -0.0, 1.5])),
     (
         "filter.PressureAltitudeNoiseStdDev",
-        lambda: filter.PressureAltitudeNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=-0.0),
+        lambda: filter.PressureAltitudeNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=-2.25),
     ),
-    ("filter.PressureAltitudeNoiseStdDevResponse", lambda: filter.PressureAltitudeNoiseStdDevResponse(noise=1.5)),
+    ("filter.PressureAltitudeNoiseStdDevResponse", lambda: filter.PressureAltitudeNoiseStdDevResponse(noise=0.375)),
     (
         "filter.HardIronOffsetNoise",
-        lambda: filter.HardIronOffsetNoise(function=types.FunctionSelector.DEFAULT, noise=[-2.25, 0.375, 1024.0]),
+        lambda: filter.HardIronOffsetNoise(function=types.FunctionSelector.DEFAULT, noise=[1024.0, -0.0, 1.5]),
     ),
-    ("filter.HardIronOffsetNoiseResponse", lambda: filter.HardIronOffsetNoiseResponse(noise=[-0.0, 1.5, -2.25])),
+    ("filter.HardIronOffsetNoiseResponse", lambda: filter.HardIronOffsetNoiseResponse(noise=[-2.25, 0.375, 1024.0])),
     (
         "filter.SoftIronMatrixNoise",
         lambda: filter.SoftIronMatrixNoise(
-            function=types.FunctionSelector.DEFAULT, noise=[0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5]
+            function=types.FunctionSelector.DEFAULT, noise=[-0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375]
         ),
     ),
     (
         "filter.SoftIronMatrixNoiseResponse",
-        lambda: filter.SoftIronMatrixNoiseResponse(noise=[-2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0]),
+        lambda: filter.SoftIronMatrixNoiseResponse(noise=[1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25]),
     ),
     (
         "filter.MagNoiseStdDev",
-        lambda: filter.MagNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=[1.5, -2.25, 0.375]),
+        lambda: filter.MagNoiseStdDev(function=types.FunctionSelector.DEFAULT, noise=[0.375, 1024.0, -0.0]),
     ),
-    ("filter.MagNoiseStdDevResponse", lambda: filter.MagNoiseStdDevResponse(noise=[1024.0, -0.0, 1.5])),
+    ("filter.MagNoiseStdDevResponse", lambda: filter.MagNoiseStdDevResponse(noise=[1.5, -2.25, 0.375])),
     (
         "filter.DeclinationSource",
         lambda: filter.DeclinationSource(
-            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.WMM, declination=0.375
+            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.NONE, declination=-0.0
         ),
     ),
     (
         "filter.DeclinationSourceResponse",
-        lambda: filter.DeclinationSourceResponse(source=types.MagneticParamSource.NONE, declination=-0.0),
+        lambda: filter.DeclinationSourceResponse(source=types.MagneticParamSource.MANUAL, declination=-2.25),
     ),
     (
         "filter.GravityMagnitudeAdaptiveMeasurement",
         lambda: filter.GravityMagnitudeAdaptiveMeasurement(
             function=types.FunctionSelector.DEFAULT,
-            mode=types.AdaptiveMeasurementMode.AUTO,
-            frequency=-2.25,
-            low_limit=0.375,
-            high_limit=1024.0,
-            low_limit_uncertainty=-0.0,
-            high_limit_uncertainty=1.5,
-            minimum_uncertainty=-2.25,
-        ),
-    ),
-    (
-        "filter.GravityMagnitudeAdaptiveMeasurementResponse",
-        lambda: filter.GravityMagnitudeAdaptiveMeasurementResponse(
-            mode=types.AdaptiveMeasurementMode.DISABLED,
+            mode=types.AdaptiveMeasurementMode.FIXED,
             frequency=1024.0,
             low_limit=-0.0,
             high_limit=1.5,
@@ -346,10 +836,9 @@ SAMPLES = [
         ),
     ),
     (
-        "filter.MagMagnitudeAdaptiveMeasurement",
-        lambda: filter.MagMagnitudeAdaptiveMeasurement(
-            function=types.FunctionSelector.DEFAULT,
-            mode=types.AdaptiveMeasurementMode.FIXED,
+        "filter.GravityMagnitudeAdaptiveMeasurementResponse",
+        lambda: filter.GravityMagnitudeAdaptiveMeasurementResponse(
+            mode=types.AdaptiveMeasurementMode.AUTO,
             frequency=1.5,
             low_limit=-2.25,
             high_limit=0.375,
@@ -359,9 +848,10 @@ SAMPLES = [
         ),
     ),
     (
-        "filter.MagMagnitudeAdaptiveMeasurementResponse",
-        lambda: filter.MagMagnitudeAdaptiveMeasurementResponse(
-            mode=types.AdaptiveMeasurementMode.AUTO,
+        "filter.MagMagnitudeAdaptiveMeasurement",
+        lambda: filter.MagMagnitudeAdaptiveMeasurement(
+            function=types.FunctionSelector.DEFAULT,
+            mode=types.AdaptiveMeasurementMode.DISABLED,
             frequency=0.375,
             low_limit=1024.0,
             high_limit=-0.0,
@@ -371,24 +861,36 @@ SAMPLES = [
         ),
     ),
     (
+        "filter.MagMagnitudeAdaptiveMeasurementResponse",
+        lambda: filter.MagMagnitudeAdaptiveMeasurementResponse(
+            mode=types.AdaptiveMeasurementMode.FIXED,
+            frequency=-0.0,
+            low_limit=1.5,
+            high_limit=-2.25,
+            low_limit_uncertainty=0.375,
+            high_limit_uncertainty=1024.0,
+            minimum_uncertainty=-0.0,
+        ),
+    ),
+    (
         "filter.MagDipAngleAdaptiveMeasurement",
         lambda: filter.MagDipAngleAdaptiveMeasurement(
             function=types.FunctionSelector.DEFAULT,
-            mode=types.AdaptiveMeasurementMode.DISABLED,
-            frequency=-0.0,
-            high_limit=1.5,
-            high_limit_uncertainty=-2.25,
-            minimum_uncertainty=0.375,
+            mode=types.AdaptiveMeasurementMode.AUTO,
+            frequency=-2.25,
+            high_limit=0.375,
+            high_limit_uncertainty=1024.0,
+            minimum_uncertainty=-0.0,
         ),
     ),
     (
         "filter.MagDipAngleAdaptiveMeasurementResponse",
         lambda: filter.MagDipAngleAdaptiveMeasurementResponse(
-            mode=types.AdaptiveMeasurementMode.AUTO,
-            frequency=-0.0,
-            high_limit=1.5,
-            high_limit_uncertainty=-2.25,
-            minimum_uncertainty=0.375,
+            mode=types.AdaptiveMeasurementMode.FIXED,
+            frequency=-2.25,
+            high_limit=0.375,
+            high_limit_uncertainty=1024.0,
+            minimum_uncertainty=-0.0,
         ),
     ),
     (
@@ -414,83 +916,83 @@ SAMPLES = [
     (
         "filter.InclinationSource",
         lambda: filter.InclinationSource(
-            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.MANUAL, inclination=1024.0
+            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.WMM, inclination=1.5
         ),
     ),
     (
         "filter.InclinationSourceResponse",
-        lambda: filter.InclinationSourceResponse(source=types.MagneticParamSource.WMM, inclination=1.5),
+        lambda: filter.InclinationSourceResponse(source=types.MagneticParamSource.NONE, inclination=0.375),
     ),
     (
         "filter.MagneticFieldMagnitudeSource",
         lambda: filter.MagneticFieldMagnitudeSource(
-            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.NONE, magnitude=0.375
+            function=types.FunctionSelector.DEFAULT, source=types.MagneticParamSource.MANUAL, magnitude=-0.0
         ),
     ),
     (
         "filter.MagneticFieldMagnitudeSourceResponse",
-        lambda: filter.MagneticFieldMagnitudeSourceResponse(source=types.MagneticParamSource.MANUAL, magnitude=-0.0),
+        lambda: filter.MagneticFieldMagnitudeSourceResponse(source=types.MagneticParamSource.WMM, magnitude=-2.25),
     ),
     (
         "filter.AidingMeasurementControl",
         lambda: filter.AidingMeasurementControl(
-            function=types.FunctionSelector.DEFAULT, source=types.AidingMeasurementSource.EXTERNAL_HEADING, enable=False
+            function=types.FunctionSelector.DEFAULT,
+            source=types.AidingMeasurementSource.EXTERNAL_MAGNETOMETER,
+            enable=False,
         ),
     ),
     (
         "filter.AidingMeasurementControlResponse",
-        lambda: filter.AidingMeasurementControlResponse(
-            source=types.AidingMeasurementSource.EXTERNAL_MAGNETOMETER, enable=False
-        ),
+        lambda: filter.AidingMeasurementControlResponse(source=types.AidingMeasurementSource.ALL, enable=False),
     ),
     (
         "filter.InitializationConfiguration",
         lambda: filter.InitializationConfiguration(
             function=types.FunctionSelector.DEFAULT,
-            wait_for_run_command=165,
+            wait_for_run_command=150,
             initial_cond_src=types.FilterInitialConditionSource.AUTO_POS_VEL,
             auto_heading_alignment_selector=types.HeadingAlignmentMethods(0x8),
-            initial_heading=0.375,
-            initial_pitch=1024.0,
-            initial_roll=-0.0,
-            initial_position=[1.5, -2.25, 0.375],
-            initial_velocity=[1024.0, -0.0, 1.5],
+            initial_heading=-0.0,
+            initial_pitch=1.5,
+            initial_roll=-2.25,
+            initial_position=[0.375, 1024.0, -0.0],
+            initial_velocity=[1.5, -2.25, 0.375],
             reference_frame_selector=types.FilterReferenceFrame.LLH,
         ),
     ),
     (
         "filter.InitializationConfigurationResponse",
         lambda: filter.InitializationConfigurationResponse(
-            wait_for_run_command=144,
+            wait_for_run_command=129,
             initial_cond_src=types.FilterInitialConditionSource.MANUAL,
             auto_heading_alignment_selector=types.HeadingAlignmentMethods(0x1),
-            initial_heading=1.5,
-            initial_pitch=-2.25,
-            initial_roll=0.375,
-            initial_position=[1024.0, -0.0, 1.5],
-            initial_velocity=[-2.25, 0.375, 1024.0],
+            initial_heading=0.375,
+            initial_pitch=1024.0,
+            initial_roll=-0.0,
+            initial_position=[1.5, -2.25, 0.375],
+            initial_velocity=[1024.0, -0.0, 1.5],
             reference_frame_selector=types.FilterReferenceFrame.ECEF,
         ),
     ),
     (
         "filter.AdaptiveFilterControl",
         lambda: filter.AdaptiveFilterControl(
-            function=types.FunctionSelector.DEFAULT, level=types.AdaptiveFilterLevel.AGGRESSIVE, time_limit=160
+            function=types.FunctionSelector.DEFAULT, level=types.AdaptiveFilterLevel.AGGRESSIVE, time_limit=145
         ),
     ),
     (
         "filter.AdaptiveFilterControlResponse",
-        lambda: filter.AdaptiveFilterControlResponse(level=types.AdaptiveFilterLevel.CONSERVATIVE, time_limit=234),
+        lambda: filter.AdaptiveFilterControlResponse(level=types.AdaptiveFilterLevel.CONSERVATIVE, time_limit=219),
     ),
     (
         "filter.MultiAntennaOffset",
         lambda: filter.MultiAntennaOffset(
-            function=types.FunctionSelector.DEFAULT, receiver_id=20, antenna_offset=[1.5, -2.25, 0.375]
+            function=types.FunctionSelector.DEFAULT, receiver_id=5, antenna_offset=[0.375, 1024.0, -0.0]
         ),
     ),
     (
         "filter.MultiAntennaOffsetResponse",
-        lambda: filter.MultiAntennaOffsetResponse(receiver_id=168, antenna_offset=[-0.0, 1.5, -2.25]),
+        lambda: filter.MultiAntennaOffsetResponse(receiver_id=153, antenna_offset=[-2.25, 0.375, 1024.0]),
     ),
     (
         "filter.RelativePositionConfiguration",
@@ -498,7 +1000,7 @@ SAMPLES = [
             function=types.FunctionSelector.DEFAULT,
             source=types.RelativePositionSource.MANUAL,
             reference_frame_selector=types.FilterReferenceFrame.ECEF,
-            reference_coordinates=[-0.0, 0.1, -2.5e-310],
+            reference_coordinates=[-2.5e-310, 1e16, 123.456],
         ),
     ),
     (
@@ -506,7 +1008,7 @@ SAMPLES = [
         lambda: filter.RelativePositionConfigurationResponse(
             source=types.RelativePositionSource.AUTO,
             reference_frame_selector=types.FilterReferenceFrame.LLH,
-            reference_coordinates=[-0.0, 0.1, -2.5e-310],
+            reference_coordinates=[-2.5e-310, 1e16, 123.456],
         ),
     ),
     (
@@ -514,42 +1016,42 @@ SAMPLES = [
         lambda: filter.ReferencePointLeverArm(
             function=types.FunctionSelector.DEFAULT,
             ref_point_sel=types.ReferencePointSelector.VEH,
-            lever_arm_offset=[1024.0, -0.0, 1.5],
+            lever_arm_offset=[1.5, -2.25, 0.375],
         ),
     ),
     (
         "filter.ReferencePointLeverArmResponse",
         lambda: filter.ReferencePointLeverArmResponse(
-            ref_point_sel=types.ReferencePointSelector.VEH, lever_arm_offset=[0.375, 1024.0, -0.0]
+            ref_point_sel=types.ReferencePointSelector.VEH, lever_arm_offset=[-0.0, 1.5, -2.25]
         ),
     ),
     (
         "filter.SpeedLeverArm",
         lambda: filter.SpeedLeverArm(
-            function=types.FunctionSelector.DEFAULT, source=229, lever_arm_offset=[-2.25, 0.375, 1024.0]
+            function=types.FunctionSelector.DEFAULT, source=214, lever_arm_offset=[1024.0, -0.0, 1.5]
         ),
     ),
     (
         "filter.SpeedLeverArmResponse",
-        lambda: filter.SpeedLeverArmResponse(source=126, lever_arm_offset=[1.5, -2.25, 0.375]),
+        lambda: filter.SpeedLeverArmResponse(source=111, lever_arm_offset=[0.375, 1024.0, -0.0]),
     ),
     (
         "filter.WheeledVehicleConstraintControl",
-        lambda: filter.WheeledVehicleConstraintControl(function=types.FunctionSelector.DEFAULT, enable=23),
+        lambda: filter.WheeledVehicleConstraintControl(function=types.FunctionSelector.DEFAULT, enable=8),
     ),
     (
         "filter.WheeledVehicleConstraintControlResponse",
-        lambda: filter.WheeledVehicleConstraintControlResponse(enable=60),
+        lambda: filter.WheeledVehicleConstraintControlResponse(enable=45),
     ),
     (
         "filter.GnssAntennaCalibrationControl",
         lambda: filter.GnssAntennaCalibrationControl(
-            function=types.FunctionSelector.DEFAULT, enable=97, max_offset=-2.25
+            function=types.FunctionSelector.DEFAULT, enable=82, max_offset=1024.0
         ),
     ),
     (
         "filter.GnssAntennaCalibrationControlResponse",
-        lambda: filter.GnssAntennaCalibrationControlResponse(enable=171, max_offset=1024.0),
+        lambda: filter.GnssAntennaCalibrationControlResponse(enable=156, max_offset=1.5),
     ),
     ("gnss.ReceiverInfo", lambda: gnss.ReceiverInfo()),
     (
@@ -558,14 +1060,14 @@ SAMPLES = [
             num_receivers=2,
             receiver_info=[
                 types.GnssReceiverInfoEntry(
-                    receiver_id=31,
-                    mip_data_descriptor_set=68,
-                    description=b"efg\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                    receiver_id=16,
+                    mip_data_descriptor_set=53,
+                    description=b"yza\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
                 ),
                 types.GnssReceiverInfoEntry(
-                    receiver_id=179,
-                    mip_data_descriptor_set=216,
-                    description=b"ijk\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+                    receiver_id=164,
+                    mip_data_descriptor_set=201,
+                    description=b"cde\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
                 ),
             ],
         ),
@@ -574,55 +1076,65 @@ SAMPLES = [
         "gnss.SignalConfiguration",
         lambda: gnss.SignalConfiguration(
             function=types.FunctionSelector.DEFAULT,
-            gps_enable=types.GnssGpsSignals(0x4),
+            gps_enable=types.GnssGpsSignals(0x2),
             glonass_enable=types.GnssGlonassSignals(0x1),
-            galileo_enable=types.GnssGalileoSignals(0x2),
-            beidou_enable=types.GnssBeidouSignals(0x4),
-            reserved=[187, 224, 10, 47],
+            galileo_enable=types.GnssGalileoSignals(0x1),
+            beidou_enable=types.GnssBeidouSignals(0x2),
+            reserved=[172, 209, 246, 32],
         ),
     ),
     (
         "gnss.SignalConfigurationResponse",
         lambda: gnss.SignalConfigurationResponse(
-            gps_enable=types.GnssGpsSignals(0x2),
+            gps_enable=types.GnssGpsSignals(0x1),
             glonass_enable=types.GnssGlonassSignals(0x1),
-            galileo_enable=types.GnssGalileoSignals(0x1),
-            beidou_enable=types.GnssBeidouSignals(0x2),
-            reserved=[232, 18, 55, 92],
+            galileo_enable=types.GnssGalileoSignals(0x4),
+            beidou_enable=types.GnssBeidouSignals(0x1),
+            reserved=[217, 3, 40, 77],
         ),
     ),
     (
         "gnss.SpartnConfiguration",
         lambda: gnss.SpartnConfiguration(
             function=types.FunctionSelector.DEFAULT,
-            enable=129,
-            type=types.SpartnConnectionType.NETWORK,
-            current_key_tow=203,
-            current_key_week=240,
-            current_key=b"def\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
-            next_key_tow=63,
-            next_key_week=100,
-            next_key=b"ghi\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            enable=114,
+            type=types.SpartnConnectionType.NONE,
+            current_key_tow=188,
+            current_key_week=225,
+            current_key=b"xyz\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            next_key_tow=48,
+            next_key_week=85,
+            next_key=b"abc\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
     (
         "gnss.SpartnConfigurationResponse",
         lambda: gnss.SpartnConfigurationResponse(
-            enable=174,
-            type=types.SpartnConnectionType.NONE,
-            current_key_tow=248,
-            current_key_week=34,
-            current_key=b"lmn\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
-            next_key_tow=108,
-            next_key_week=145,
-            next_key=b"opq\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            enable=159,
+            type=types.SpartnConnectionType.L_BAND,
+            current_key_tow=233,
+            current_key_week=19,
+            current_key=b"fgh\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            next_key_tow=93,
+            next_key_week=130,
+            next_key=b"ijk\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
     (
         "aiding.FrameConfig",
         lambda: aiding.FrameConfig(
             function=types.FunctionSelector.DEFAULT,
-            frame_id=219,
+            frame_id=204,
+            format=types.AidingFrameFormat.EULER,
+            tracking_enabled=False,
+            translation=[1024.0, -0.0, 1.5],
+            rotation=types.AidingFrameEuler(euler=[-2.25, 0.375, 1024.0]),
+        ),
+    ),
+    (
+        "aiding.FrameConfigResponse",
+        lambda: aiding.FrameConfigResponse(
+            frame_id=249,
             format=types.AidingFrameFormat.EULER,
             tracking_enabled=False,
             translation=[-2.25, 0.375, 1024.0],
@@ -630,173 +1142,232 @@ SAMPLES = [
         ),
     ),
     (
-        "aiding.FrameConfigResponse",
-        lambda: aiding.FrameConfigResponse(
-            frame_id=13,
-            format=types.AidingFrameFormat.EULER,
-            tracking_enabled=False,
-            translation=[-0.0, 1.5, -2.25],
-            rotation=types.AidingFrameEuler(euler=[0.375, 1024.0, -0.0]),
-        ),
-    ),
-    (
         "aiding.EchoControl",
-        lambda: aiding.EchoControl(function=types.FunctionSelector.DEFAULT, mode=types.AidingEchoMode.RESPONSE),
+        lambda: aiding.EchoControl(function=types.FunctionSelector.DEFAULT, mode=types.AidingEchoMode.STANDARD),
     ),
-    ("aiding.EchoControlResponse", lambda: aiding.EchoControlResponse(mode=types.AidingEchoMode.SUPPRESS_ACK)),
+    ("aiding.EchoControlResponse", lambda: aiding.EchoControlResponse(mode=types.AidingEchoMode.RESPONSE)),
     (
         "aiding.EcefPosition",
         lambda: aiding.EcefPosition(
-            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=206, nanoseconds=243),
-            frame_id=29,
-            position=[1e16, 123.456, -0.0],
-            uncertainty=[1.5, -2.25, 0.375],
-            valid_flags=types.AidingVectorValidFlags(0x1),
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=191, nanoseconds=228),
+            frame_id=14,
+            position=[-0.0, 0.1, -2.5e-310],
+            uncertainty=[0.375, 1024.0, -0.0],
+            valid_flags=types.AidingVectorValidFlags(0x4),
         ),
     ),
     (
         "aiding.LlhPosition",
         lambda: aiding.LlhPosition(
-            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=148, nanoseconds=185),
-            frame_id=222,
-            latitude=-0.0,
-            longitude=0.1,
-            height=-2.5e-310,
-            uncertainty=[0.375, 1024.0, -0.0],
-            valid_flags=types.AidingLlhValidFlags(0x1),
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=133, nanoseconds=170),
+            frame_id=207,
+            latitude=-2.5e-310,
+            longitude=1e16,
+            height=123.456,
+            uncertainty=[-0.0, 1.5, -2.25],
+            valid_flags=types.AidingLlhValidFlags(0x4),
         ),
     ),
     (
         "aiding.HeightAboveEllipsoid",
         lambda: aiding.HeightAboveEllipsoid(
-            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=90, nanoseconds=127),
-            frame_id=164,
-            height=-2.25,
-            uncertainty=0.375,
-            valid_flags=24,
+            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=75, nanoseconds=112),
+            frame_id=149,
+            height=1024.0,
+            uncertainty=-0.0,
+            valid_flags=9,
         ),
     ),
     (
         "aiding.EcefVelocity",
         lambda: aiding.EcefVelocity(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=135, nanoseconds=172),
-            frame_id=209,
-            velocity=[-0.0, 1.5, -2.25],
-            uncertainty=[0.375, 1024.0, -0.0],
-            valid_flags=types.AidingVectorValidFlags(0x4),
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=120, nanoseconds=157),
+            frame_id=194,
+            velocity=[-2.25, 0.375, 1024.0],
+            uncertainty=[-0.0, 1.5, -2.25],
+            valid_flags=types.AidingVectorValidFlags(0x2),
         ),
     ),
     (
         "aiding.NedVelocity",
         lambda: aiding.NedVelocity(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=77, nanoseconds=114),
-            frame_id=151,
-            velocity=[-2.25, 0.375, 1024.0],
-            uncertainty=[-0.0, 1.5, -2.25],
-            valid_flags=types.AidingVectorValidFlags(0x4),
-        ),
-    ),
-    (
-        "aiding.BodyFrameVelocity",
-        lambda: aiding.BodyFrameVelocity(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=19, nanoseconds=56),
-            frame_id=93,
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=62, nanoseconds=99),
+            frame_id=136,
             velocity=[1024.0, -0.0, 1.5],
-            uncertainty=[-2.25, 0.375, 1024.0],
-            valid_flags=types.AidingVectorValidFlags(0x4),
-        ),
-    ),
-    (
-        "aiding.TrueHeading",
-        lambda: aiding.TrueHeading(
-            time=types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=212, nanoseconds=249),
-            frame_id=35,
-            heading=1.5,
-            uncertainty=-2.25,
-            valid_flags=146,
-        ),
-    ),
-    (
-        "aiding.MagneticField",
-        lambda: aiding.MagneticField(
-            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=6, nanoseconds=43),
-            frame_id=80,
-            magnetic_field=[1024.0, -0.0, 1.5],
             uncertainty=[-2.25, 0.375, 1024.0],
             valid_flags=types.AidingVectorValidFlags(0x2),
         ),
     ),
     (
+        "aiding.BodyFrameVelocity",
+        lambda: aiding.BodyFrameVelocity(
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=4, nanoseconds=41),
+            frame_id=78,
+            velocity=[1.5, -2.25, 0.375],
+            uncertainty=[1024.0, -0.0, 1.5],
+            valid_flags=types.AidingVectorValidFlags(0x2),
+        ),
+    ),
+    (
+        "aiding.TrueHeading",
+        lambda: aiding.TrueHeading(
+            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=197, nanoseconds=234),
+            frame_id=20,
+            heading=0.375,
+            uncertainty=1024.0,
+            valid_flags=131,
+        ),
+    ),
+    (
+        "aiding.MagneticField",
+        lambda: aiding.MagneticField(
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=242, nanoseconds=28),
+            frame_id=65,
+            magnetic_field=[1.5, -2.25, 0.375],
+            uncertainty=[1024.0, -0.0, 1.5],
+            valid_flags=types.AidingVectorValidFlags(0x1),
+        ),
+    ),
+    (
         "aiding.Pressure",
         lambda: aiding.Pressure(
-            time=types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=199, nanoseconds=236),
-            frame_id=22,
-            pressure=1.5,
-            uncertainty=-2.25,
-            valid_flags=133,
+            time=types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=184, nanoseconds=221),
+            frame_id=7,
+            pressure=0.375,
+            uncertainty=1024.0,
+            valid_flags=118,
         ),
     ),
     (
         "system.CommunicationMode",
-        lambda: system.CommunicationMode(
-            function=types.FunctionSelector.DEFAULT, mode=types.SystemCommMode.SENSOR_DIRECT
-        ),
+        lambda: system.CommunicationMode(function=types.FunctionSelector.DEFAULT, mode=types.SystemCommMode.STANDARD),
     ),
     (
         "system.CommunicationModeResponse",
-        lambda: system.CommunicationModeResponse(mode=types.SystemCommMode.GNSS_DIRECT),
+        lambda: system.CommunicationModeResponse(mode=types.SystemCommMode.SENSOR_DIRECT),
     ),
-    ("sensor.ScaledAccel", lambda: sensor.ScaledAccel(scaled_accel=[1.5, -2.25, 0.375])),
-    ("sensor.ScaledGyro", lambda: sensor.ScaledGyro(scaled_gyro=[1024.0, -0.0, 1.5])),
-    ("sensor.ScaledMag", lambda: sensor.ScaledMag(scaled_mag=[-2.25, 0.375, 1024.0])),
-    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=75, ack_code=types.AckCode.UNKNOWN_COMMAND)),
-    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=149, mode=types.ActionGpioMode.ONESHOT_HIGH)),
+    ("sensor.ScaledAccel", lambda: sensor.ScaledAccel(scaled_accel=[0.375, 1024.0, -0.0])),
+    ("sensor.ScaledGyro", lambda: sensor.ScaledGyro(scaled_gyro=[1.5, -2.25, 0.375])),
+    ("sensor.ScaledMag", lambda: sensor.ScaledMag(scaled_mag=[1024.0, -0.0, 1.5])),
+    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=60, ack_code=types.AckCode.COMMAND_FAILED)),
+    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=134, mode=types.ActionGpioMode.TOGGLE)),
     (
         "types.MessageParams",
-        lambda: types.MessageParams(desc_set=223, decimation=9, num_fields=2, descriptors=[46, 83]),
+        lambda: types.MessageParams(desc_set=208, decimation=245, num_fields=2, descriptors=[31, 68]),
     ),
-    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.MESSAGE, trigger_id=157)),
-    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[-0.0, 1.5, -2.25])),
-    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[0.375, 1024.0, -0.0, 1.5])),
+    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.GPIO, trigger_id=142)),
+    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[-2.25, 0.375, 1024.0])),
+    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[-0.0, 1.5, -2.25, 0.375])),
     (
         "types.AidingTime",
-        lambda: types.AidingTime(timebase=types.AidingTimebase.TIME_OF_ARRIVAL, reserved=239, nanoseconds=25),
+        lambda: types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=224, nanoseconds=10),
     ),
-    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=62, input_triggers=[99, 136, 173, 210])),
+    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=47, input_triggers=[84, 121, 158, 195])),
+    (
+        "types.ConstellationSettings",
+        lambda: types.ConstellationSettings(
+            constellation_id=types.Gx5ConstellationId.BEIDOU,
+            enable=18,
+            reserved_channels=55,
+            max_channels=92,
+            option_flags=types.ConstellationOptions(0x1),
+        ),
+    ),
+    ("types.DescriptorRate", lambda: types.DescriptorRate(descriptor=166, decimation=203)),
     (
         "types.DeviceInfo",
         lambda: types.DeviceInfo(
-            firmware_version=247,
-            model_name=b"klm             ",
-            model_number=b"lmn             ",
-            serial_number=b"mno             ",
-            lot_number=b"nop             ",
-            device_options=b"opq             ",
+            firmware_version=240,
+            model_name=b"lmn             ",
+            model_number=b"mno             ",
+            serial_number=b"nop             ",
+            lot_number=b"opq             ",
+            device_options=b"pqr             ",
         ),
     ),
     (
         "types.GnssReceiverInfoEntry",
         lambda: types.GnssReceiverInfoEntry(
-            receiver_id=218,
-            mip_data_descriptor_set=4,
-            description=b"rst\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            receiver_id=211,
+            mip_data_descriptor_set=248,
+            description=b"stu\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+        ),
+    ),
+    ("types.GpioBehaviorUnused", lambda: types.GpioBehaviorUnused(behavior=types.GpioUnusedBehavior.UNUSED)),
+    ("types.GpioBehaviorIo", lambda: types.GpioBehaviorIo(behavior=types.GpioIoBehavior.OUTPUT_LOW)),
+    ("types.GpioBehaviorPps", lambda: types.GpioBehaviorPps(behavior=types.GpioPpsBehavior.UNUSED)),
+    ("types.GpioBehaviorEncoder", lambda: types.GpioBehaviorEncoder(behavior=types.GpioEncoderBehavior.ENCODER_A)),
+    ("types.GpioBehaviorTimestamp", lambda: types.GpioBehaviorTimestamp(behavior=types.GpioTimestampBehavior.RISING)),
+    ("types.GpioBehaviorUart", lambda: types.GpioBehaviorUart(behavior=types.GpioUartBehavior.PORT2_RX)),
+    ("types.Gx5BasicStatus", lambda: types.Gx5BasicStatus(status_flags=42, system_state=79, system_timer=116)),
+    (
+        "types.Gx5DiagnosticStatus",
+        lambda: types.Gx5DiagnosticStatus(
+            status_flags=153,
+            system_state=190,
+            system_timer=227,
+            gnss_power_state=13,
+            pps_pulse_count=50,
+            last_pps_time=87,
+            imu_stream_enabled=124,
+            gnss_stream_enabled=161,
+            filter_stream_enabled=198,
+            imu_dropped_packets=235,
+            gnss_dropped_packets=21,
+            filter_dropped_packets=58,
+            com_bytes_written=95,
+            com_bytes_read=132,
+            com_write_overruns=169,
+            imu_parse_errors=206,
+            imu_messages_read=243,
+            last_imu_message_time=29,
+            gnss_parse_errors=66,
+            gnss_messages_read=103,
+            last_gnss_message_time=140,
+        ),
+    ),
+    ("types.Gx5PollDescriptor", lambda: types.Gx5PollDescriptor(descriptor=177, reserved=214)),
+    ("types.NmeaMessage", lambda: types.NmeaMessage(message_id=0, talker_id=37, source_desc_set=74, decimation=111)),
+    ("types.SensorRangeEntry", lambda: types.SensorRangeEntry(setting=148, range=-0.0)),
+    ("types.SupportedActionType", lambda: types.SupportedActionType(type=types.ActionType.NONE, count=8)),
+    (
+        "types.SupportedActions",
+        lambda: types.SupportedActions(
+            max_instances=45,
+            num_entries=2,
+            entries=[
+                types.SupportedActionType(type=types.ActionType.GPIO, count=156),
+                types.SupportedActionType(type=types.ActionType.GPIO, count=16),
+            ],
+        ),
+    ),
+    ("types.SupportedTriggerType", lambda: types.SupportedTriggerType(type=types.TriggerType.NONE, count=90)),
+    (
+        "types.SupportedTriggers",
+        lambda: types.SupportedTriggers(
+            max_instances=127,
+            num_entries=2,
+            entries=[
+                types.SupportedTriggerType(type=types.TriggerType.NONE, count=238),
+                types.SupportedTriggerType(type=types.TriggerType.COMBINATION, count=98),
+            ],
         ),
     ),
     (
         "types.ThresholdParams",
         lambda: types.ThresholdParams(
-            desc_set=78,
-            field_desc=115,
-            param_id=152,
-            type=types.ThresholdType.INTERVAL,
+            desc_set=135,
+            field_desc=172,
+            param_id=209,
+            type=types.ThresholdType.WINDOW,
             low_thres=1e16,
             high_thres=123.456,
         ),
     ),
-    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=49, mode=types.TriggerGpioMode.WHILE_HIGH)),
+    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=106, mode=types.TriggerGpioMode.DISABLED)),
     (
         "types.TriggerStatusEntry",
-        lambda: types.TriggerStatusEntry(type=types.TriggerType.THRESHOLD, status=types.TriggerStatus(0x2)),
+        lambda: types.TriggerStatusEntry(type=types.TriggerType.GPIO, status=types.TriggerStatus(0x1)),
     ),
 ]
 
@@ -807,6 +1378,7 @@ BITFIELD_MEMBERS = [
     (types.AidingVectorValidFlags, "x", "X", 0, 1, 0x1),
     (types.AidingVectorValidFlags, "y", "Y", 1, 1, 0x2),
     (types.AidingVectorValidFlags, "z", "Z", 2, 1, 0x4),
+    (types.ConstellationOptions, "l1saif", "L1SAIF", 0, 1, 0x1),
     (types.Cv7BitFlags, "general_hardware_fault", "GENERAL_HARDWARE_FAULT", 0, 1, 0x1),
     (types.Cv7BitFlags, "general_firmware_fault", "GENERAL_FIRMWARE_FAULT", 1, 1, 0x2),
     (types.Cv7BitFlags, "timing_overload", "TIMING_OVERLOAD", 2, 1, 0x4),
@@ -843,6 +1415,9 @@ BITFIELD_MEMBERS = [
     (types.GnssGpsSignals, "l1ca", "L1CA", 0, 1, 0x1),
     (types.GnssGpsSignals, "l2c", "L2C", 1, 1, 0x2),
     (types.GnssGpsSignals, "l5", "L5", 2, 1, 0x4),
+    (types.GpioPinMode, "open_drain", "OPEN_DRAIN", 0, 1, 0x1),
+    (types.GpioPinMode, "pulldown", "PULLDOWN", 1, 1, 0x2),
+    (types.GpioPinMode, "pullup", "PULLUP", 2, 1, 0x4),
     (types.Gx5BitFlags, "processor_wdt_reset", "PROCESSOR_WDT_RESET", 0, 1, 0x1),
     (types.Gx5BitFlags, "imu_communication_fault", "IMU_COMMUNICATION_FAULT", 8, 1, 0x100),
     (types.Gx5BitFlags, "magnetometer_fault", "MAGNETOMETER_FAULT", 9, 1, 0x200),
@@ -852,6 +1427,9 @@ BITFIELD_MEMBERS = [
     (types.HeadingAlignmentMethods, "kinematic", "KINEMATIC", 1, 1, 0x2),
     (types.HeadingAlignmentMethods, "magnetometer", "MAGNETOMETER", 2, 1, 0x4),
     (types.HeadingAlignmentMethods, "external", "EXTERNAL", 3, 1, 0x8),
+    (types.SbasOptions, "enable_ranging", "ENABLE_RANGING", 0, 1, 0x1),
+    (types.SbasOptions, "enable_corrections", "ENABLE_CORRECTIONS", 1, 1, 0x2),
+    (types.SbasOptions, "apply_integrity", "APPLY_INTEGRITY", 2, 1, 0x4),
     (types.TareAxes, "roll", "ROLL", 0, 1, 0x1),
     (types.TareAxes, "pitch", "PITCH", 1, 1, 0x2),
     (types.TareAxes, "yaw", "YAW", 2, 1, 0x4),

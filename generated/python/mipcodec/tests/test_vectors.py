@@ -7,6 +7,1864 @@ from mipcodec import decode_bytes, decode_stream, encode_lines
 
 CASES = [
     {
+        "name": "startup_settings_save_gx5",
+        "hex": "75650c030330031f45",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:13",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":48,"name":"device_startup_settings","device":"gx5_45","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "startup_settings_ack",
+        "hex": "75650c0404f130000f0a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:24",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":48,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "startup_settings_read_gx5",
+        "hex": "75650c030330021e44",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:33",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":48,"name":"device_startup_settings","device":"gx5_45","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "startup_settings_load_cv7",
+        "hex": "75650c030330042046",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:47",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":48,"name":"device_startup_settings","device":"cv7_ins","values":{"function":4}}]}'
+        ],
+    },
+    {
+        "name": "startup_settings_default_cv7",
+        "hex": "75650c030330052147",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:60",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":48,"name":"device_startup_settings","device":"cv7_ins","values":{"function":5}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_euler_example_2",
+        "hex": "75650c0f0f3101bfc90ff90000000000000000c60f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:76",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":49,"name":"sensor_to_vehicle_euler","values":{"function":1,"roll":-1.5707999467849731,"pitch":0.0,"yaw":0.0}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_euler_example_3",
+        "hex": "75650c0f0f3101000000003fc90ff93fc90ff9563d",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:96",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":49,"name":"sensor_to_vehicle_euler","values":{"function":1,"roll":0.0,"pitch":1.5707999467849731,"yaw":1.5707999467849731}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_euler_read",
+        "hex": "75650c030331021f46",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:116",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":49,"name":"sensor_to_vehicle_euler","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_euler_reply",
+        "hex": "75650c1204f131000eb1000000003fc90ff93fc90ff9fdd3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:128",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":49,"ack_code":0}},{"descriptor":177,"name":"sensor_to_vehicle_euler_response","values":{"roll":0.0,"pitch":1.5707999467849731,"yaw":1.5707999467849731}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_quaternion_write_identity",
+        "hex": "75650c131332013f800000000000000000000000000000fe17",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:148",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":50,"name":"sensor_to_vehicle_quaternion","values":{"function":1,"q":[1.0,0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_quaternion_reply",
+        "hex": "75650c1604f1320012b23f0000003f0000003f0000003f000000e3cc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:161",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":50,"ack_code":0}},{"descriptor":178,"name":"sensor_to_vehicle_quaternion_response","values":{"q":[0.5,0.5,0.5,0.5]}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_dcm_example_2",
+        "hex": "75650c272733013f800000000000000000000000000000000000003f80000000000000bf800000000000002529",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:175",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":51,"name":"sensor_to_vehicle_dcm","values":{"function":1,"dcm":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_dcm_example_3",
+        "hex": "75650c2727330100000000bf8000000000000000000000000000003f800000bf8000000000000000000000a529",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:193",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":51,"name":"sensor_to_vehicle_dcm","values":{"function":1,"dcm":[0.0,-1.0,0.0,0.0,0.0,1.0,-1.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "sensor_to_vehicle_dcm_reply",
+        "hex": "75650c2a04f1330026b33f800000000000000000000000000000000000003f80000000000000bf80000000000000cee5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:210",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":51,"ack_code":0}},{"descriptor":179,"name":"sensor_to_vehicle_dcm_response","values":{"dcm":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_write_zero_gx5",
+        "hex": "75650c0f0f37010000000000000000000000003c75",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:229",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":55,"name":"accel_bias","device":"gx5_45","values":{"function":1,"bias":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_ack",
+        "hex": "75650c0404f137001618",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:240",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":55,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_write_no_ack_gx5",
+        "hex": "75650c0f0f37063b03126fba83126f00000000be32",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:249",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":55,"name":"accel_bias","device":"gx5_45","values":{"function":6,"bias":[0.0020000000949949026,-0.0010000000474974513,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_read_full_length_gx5",
+        "hex": "75650c0f0f37020000000000000000000000003d82",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:264",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":55,"name":"accel_bias","device":"gx5_45","values":{"function":2,"bias":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_write_cv7",
+        "hex": "75650c0f0f37013e800000be0000003d8000007541",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:280",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":55,"name":"accel_bias","device":"cv7_ins","values":{"function":1,"bias":[0.25,-0.125,0.0625]}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_read_cv7",
+        "hex": "75650c030337022552",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:294",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":55,"name":"accel_bias","device":"cv7_ins","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "accel_bias_reply",
+        "hex": "75650c1204f137000e9a3e800000be0000003d80000005b8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:307",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":55,"ack_code":0}},{"descriptor":154,"name":"accel_bias_response","values":{"bias":[0.25,-0.125,0.0625]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_write_zero_gx5",
+        "hex": "75650c0f0f38010000000000000000000000003d83",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:325",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":56,"name":"gyro_bias","device":"gx5_45","values":{"function":1,"bias":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_ack",
+        "hex": "75650c0404f13800171a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:336",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":56,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_save_cv7",
+        "hex": "75650c030338032755",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:345",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":56,"name":"gyro_bias","device":"cv7_ins","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_write_cv7",
+        "hex": "75650c0f0f38013b03126fba83126f3a03126f7883",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:359",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":56,"name":"gyro_bias","device":"cv7_ins","values":{"function":1,"bias":[0.0020000000949949026,-0.0010000000474974513,0.0005000000237487257]}}]}'
+        ],
+    },
+    {
+        "name": "gyro_bias_reply",
+        "hex": "75650c1204f138000e9b3b03126fba83126f3a03126f0909",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:373",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":56,"ack_code":0}},{"descriptor":155,"name":"gyro_bias_response","values":{"bias":[0.0020000000949949026,-0.0010000000474974513,0.0005000000237487257]}}]}'
+        ],
+    },
+    {
+        "name": "capture_gyro_bias_command",
+        "hex": "75650c04043927105ee0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:389",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":57,"name":"capture_gyro_bias","values":{"averaging_time_ms":10000}}]}'
+        ],
+    },
+    {
+        "name": "capture_gyro_bias_reply",
+        "hex": "75650c1204f139000e9b000000000000000000000000cf19",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:399",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":57,"ack_code":0}},{"descriptor":155,"name":"gyro_bias_response","values":{"bias":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "capture_gyro_bias_short_cv7",
+        "hex": "75650c04043903e81270",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:416",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":57,"name":"capture_gyro_bias","values":{"averaging_time_ms":1000}}]}'
+        ],
+    },
+    {
+        "name": "mag_hard_iron_write_zero_gx5",
+        "hex": "75650c0f0f3a010000000000000000000000003f9f",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:430",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":58,"name":"mag_hard_iron_offset","device":"gx5_45","values":{"function":1,"offset":[0.0,0.0,0.0]}}]}'
+        ],
+    },
+    {
+        "name": "mag_hard_iron_ack",
+        "hex": "75650c0404f13a00191e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:441",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":58,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_hard_iron_write_cv7",
+        "hex": "75650c0f0f3a013da3d70abdf5c28f3eb333335ad8",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:450",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":58,"name":"mag_hard_iron_offset","device":"cv7_ins","values":{"function":1,"offset":[0.07999999821186066,-0.11999999731779099,0.3499999940395355]}}]}'
+        ],
+    },
+    {
+        "name": "mag_hard_iron_reply",
+        "hex": "75650c1204f13a000e9c3da3d70abdf5c28f3eb33333ec6f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:464",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":58,"ack_code":0}},{"descriptor":156,"name":"mag_hard_iron_offset_response","values":{"offset":[0.07999999821186066,-0.11999999731779099,0.3499999940395355]}}]}'
+        ],
+    },
+    {
+        "name": "mag_soft_iron_write_identity_gx5",
+        "hex": "75650c27273b013f8000000000000000000000000000003f8000000000000000000000000000003f800000ad59",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:480",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":59,"name":"mag_soft_iron_matrix","device":"gx5_45","values":{"function":1,"matrix":[1.0,0.0,0.0,0.0,1.0,0.0,0.0,0.0,1.0]}}]}'
+        ],
+    },
+    {
+        "name": "mag_soft_iron_ack",
+        "hex": "75650c0404f13b001a20",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:498",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":59,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "mag_soft_iron_default_cv7",
+        "hex": "75650c03033b052c5d",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:512",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":59,"name":"mag_soft_iron_matrix","device":"cv7_ins","values":{"function":5}}]}'
+        ],
+    },
+    {
+        "name": "mag_soft_iron_reply",
+        "hex": "75650c2a04f13b00269d3f828f5c3c23d70abcf5c28f3c23d70a3f7ae1483ca3d70abcf5c28f3ca3d70a3f8000005487",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:526",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":59,"ack_code":0}},{"descriptor":157,"name":"mag_soft_iron_matrix_response","values":{"matrix":[1.0199999809265137,0.009999999776482582,-0.029999999329447746,0.009999999776482582,0.9800000190734863,0.019999999552965164,-0.029999999329447746,0.019999999552965164,1.0]}}]}'
+        ],
+    },
+    {
+        "name": "coning_sculling_enable_write",
+        "hex": "75650c04043e01012e94",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:548",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":62,"name":"coning_sculling_enable","values":{"function":1,"enable":true}}]}'
+        ],
+    },
+    {
+        "name": "coning_sculling_enable_ack",
+        "hex": "75650c0404f13e001d26",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:558",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":62,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "coning_sculling_enable_read_reply",
+        "hex": "75650c0704f13e00039e00c1da",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:572",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":62,"ack_code":0}},{"descriptor":158,"name":"coning_sculling_enable_response","values":{"enable":false}}]}'
+        ],
+    },
+    {
+        "name": "uart_baudrate_write_115200",
+        "hex": "75650c070740010001c200f8da",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:588",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":64,"name":"uart_baudrate","values":{"function":1,"baud":115200}}]}'
+        ],
+    },
+    {
+        "name": "uart_baudrate_ack",
+        "hex": "75650c0404f140001f2a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:598",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":64,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "uart_baudrate_read",
+        "hex": "75650c030340022e64",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:607",
+        "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":64,"name":"uart_baudrate","values":{"function":2}}]}'],
+    },
+    {
+        "name": "uart_baudrate_reply_921600",
+        "hex": "75650c0a04f140000687000e1000d037",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:619",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":64,"ack_code":0}},{"descriptor":135,"name":"uart_baudrate_response","values":{"baud":921600}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_timestamp_falling_pullup",
+        "hex": "75650c07074101010402044171",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:636",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":1,"feature":4,"behavior":{"behavior":2},"pin_mode":4}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_output_low_pin1",
+        "hex": "75650c07074101010102003a64",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:652",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":1,"feature":1,"behavior":{"behavior":2},"pin_mode":0}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_input_pullup_pin3",
+        "hex": "75650c07074101030101043f6e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:668",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":3,"feature":1,"behavior":{"behavior":1},"pin_mode":4}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_output_low_pin4",
+        "hex": "75650c07074101040102003d70",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:684",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":4,"feature":1,"behavior":{"behavior":2},"pin_mode":0}}]}'
+        ],
+    },
+    {
+        "name": "gpio_state_write_high_pin4",
+        "hex": "75650c05054201040138e4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:700",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":66,"name":"gpio_state","values":{"function":1,"pin":4,"state":true}}]}'
+        ],
+    },
+    {
+        "name": "gpio_state_write_low_pin4",
+        "hex": "75650c05054201040037e3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:709",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":66,"name":"gpio_state","values":{"function":1,"pin":4,"state":false}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_uart_port2_rx_pin2",
+        "hex": "75650c07074101020522005fb4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:719",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":2,"feature":5,"behavior":{"behavior":34},"pin_mode":0}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_pps_input_open_drain",
+        "hex": "75650c07074101010201013b66",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:740",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":1,"feature":2,"behavior":{"behavior":1},"pin_mode":1}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_encoder_b_pulldown",
+        "hex": "75650c07074101040302024178",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:761",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":4,"feature":3,"behavior":{"behavior":2},"pin_mode":2}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_unused_pin3",
+        "hex": "75650c07074101030000003965",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:782",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":1,"pin":3,"feature":0,"behavior":{"behavior":0},"pin_mode":0}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_save_all",
+        "hex": "75650c040441030032a0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:802",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":3,"pin":0}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_read_pin1",
+        "hex": "75650c0404410201329f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:814",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":65,"name":"gpio_config","values":{"function":2,"pin":1}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_reply_pps_output",
+        "hex": "75650c0a04f1410006c101020200f225",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:826",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":65,"ack_code":0}},{"descriptor":193,"name":"gpio_config_response","values":{"pin":1,"feature":2,"behavior":{"behavior":2},"pin_mode":0}}]}'
+        ],
+    },
+    {
+        "name": "gpio_config_reply_timestamp_either",
+        "hex": "75650c0a04f1410006c102040304fa35",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:847",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":65,"ack_code":0}},{"descriptor":193,"name":"gpio_config_response","values":{"pin":2,"feature":4,"behavior":{"behavior":3},"pin_mode":4}}]}'
+        ],
+    },
+    {
+        "name": "gpio_state_read_pin3",
+        "hex": "75650c040442020335a4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:868",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":66,"name":"gpio_state","values":{"function":2,"pin":3}}]}'
+        ],
+    },
+    {
+        "name": "gpio_state_reply_pin3_high",
+        "hex": "75650c0804f1420004c20301ef33",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:880",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":66,"ack_code":0}},{"descriptor":194,"name":"gpio_state_response","values":{"pin":3,"state":true}}]}'
+        ],
+    },
+    {
+        "name": "odometer_config_write_quadrature",
+        "hex": "75650c0c0c430102447a00003c23d70a4293",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:896",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":67,"name":"odometer_config","values":{"function":1,"mode":2,"scaling":1000.0,"uncertainty":0.009999999776482582}}]}'
+        ],
+    },
+    {
+        "name": "odometer_config_reply_disabled",
+        "hex": "75650c0f04f143000bc300c37a00003d800000f54f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:916",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":67,"ack_code":0}},{"descriptor":195,"name":"odometer_config_response","values":{"mode":0,"scaling":-250.0,"uncertainty":0.0625}}]}'
+        ],
+    },
+    {
+        "name": "advanced_lowpass_filter_write_accel",
+        "hex": "75650c090950010401000000004e80",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:938",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":80,"name":"advanced_lowpass_filter","values":{"function":1,"target_descriptor":4,"enable":true,"manual":false,"frequency":0,"reserved":0}}]}'
+        ],
+    },
+    {
+        "name": "advanced_lowpass_filter_ack",
+        "hex": "75650c0404f150002f4a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:959",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":80,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "advanced_lowpass_filter_read_gyro",
+        "hex": "75650c040450020545d0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:968",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":80,"name":"advanced_lowpass_filter","values":{"function":2,"target_descriptor":5}}]}'
+        ],
+    },
+    {
+        "name": "advanced_lowpass_filter_reply_gyro",
+        "hex": "75650c0c04f15000088b0501010064003526",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:980",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":80,"ack_code":0}},{"descriptor":139,"name":"advanced_lowpass_filter_response","values":{"target_descriptor":5,"enable":true,"manual":true,"frequency":100,"reserved":0}}]}'
+        ],
+    },
+    {
+        "name": "advanced_lowpass_filter_default_all_cv7",
+        "hex": "75650c040450050043d1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1003",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":80,"name":"advanced_lowpass_filter","values":{"function":5,"target_descriptor":0}}]}'
+        ],
+    },
+    {
+        "name": "complementary_filter_write",
+        "hex": "75650c0d0d5101010140a0000040a000001452",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1015",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":81,"name":"complementary_filter","values":{"function":1,"pitch_roll_enable":true,"heading_enable":true,"pitch_roll_time_constant":5.0,"heading_time_constant":5.0}}]}'
+        ],
+    },
+    {
+        "name": "complementary_filter_ack",
+        "hex": "75650c0404f15100304c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1038",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":81,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "complementary_filter_reply",
+        "hex": "75650c1004f151000c97010041200000447a0000ffd5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1051",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":81,"ack_code":0}},{"descriptor":151,"name":"complementary_filter_response","values":{"pitch_roll_enable":true,"heading_enable":false,"pitch_roll_time_constant":10.0,"heading_time_constant":1000.0}}]}'
+        ],
+    },
+    {
+        "name": "sensor_range_write_accel_8g",
+        "hex": "75650c0505520101034720",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1076",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":82,"name":"sensor_range","values":{"function":1,"sensor":1,"setting":3}}]}'
+        ],
+    },
+    {
+        "name": "sensor_range_save_all",
+        "hex": "75650c040452030043d3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1089",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":82,"name":"sensor_range","values":{"function":3,"sensor":0}}]}'
+        ],
+    },
+    {
+        "name": "sensor_range_reply_gyro",
+        "hex": "75650c0804f1520004d202020fc2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1101",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":82,"ack_code":0}},{"descriptor":210,"name":"sensor_range_response","values":{"sensor":2,"setting":2}}]}'
+        ],
+    },
+    {
+        "name": "get_calibrated_sensor_ranges_accel",
+        "hex": "75650c030353014089",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1116",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":83,"name":"get_calibrated_sensor_ranges","values":{"sensor":1}}]}'
+        ],
+    },
+    {
+        "name": "calibrated_sensor_ranges_accel",
+        "hex": "75650c1704f1530013d30103024080000003410000000441800000fa6b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1128",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":83,"ack_code":0}},{"descriptor":211,"name":"calibrated_sensor_ranges","values":{"sensor":1,"num_ranges":3,"ranges":[{"setting":2,"range":4.0},{"setting":3,"range":8.0},{"setting":4,"range":16.0}]}}]}'
+        ],
+    },
+    {
+        "name": "lowpass_filter_write_accel_manual",
+        "hex": "75650c0b0b540180040101424800006152",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1150",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":84,"name":"lowpass_filter","values":{"function":1,"desc_set":128,"field_desc":4,"enable":true,"manual":true,"frequency":50.0}}]}'
+        ],
+    },
+    {
+        "name": "lowpass_filter_read_comp_rate",
+        "hex": "75650c05055402820ed638",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1173",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":84,"name":"lowpass_filter","values":{"function":2,"desc_set":130,"field_desc":14}}]}'
+        ],
+    },
+    {
+        "name": "lowpass_filter_reply_auto",
+        "hex": "75650c0e04f154000ad4820e010041c80000b592",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1187",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":84,"ack_code":0}},{"descriptor":212,"name":"lowpass_filter_response","values":{"desc_set":130,"field_desc":14,"enable":true,"manual":false,"frequency":25.0}}]}'
+        ],
+    },
+    {
+        "name": "lowpass_filter_default_all",
+        "hex": "75650c050554050000492f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_config.yaml:1209",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":84,"name":"lowpass_filter","values":{"function":5,"desc_set":0,"field_desc":0}}]}'
+        ],
+    },
+    {
+        "name": "capture_gyro_bias_reply_table_published",
+        "hex": "75650c0404f139000e9b000000000000000000000000cf19",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_config.yaml:1225",
+        "expect": ['{"offset":0,"skipped":"75650c0404f139000e9b000000000000000000000000cf19"}'],
+    },
+    {
+        "name": "mag_soft_iron_copy_paste_published",
+        "hex": "75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_config.yaml:1239",
+        "expect": [
+            '{"offset":0,"skipped":"75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59"}'
+        ],
+    },
+    {
+        "name": "mag_soft_iron_ack_table_published",
+        "hex": "75650c1204f13b001a20",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_config.yaml:1253",
+        "expect": ['{"offset":0,"skipped":"75650c1204f13b001a20"}'],
+    },
+    {
+        "name": "coning_sculling_enable_ack_table_published",
+        "hex": "75650c0404f138001d26",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_config.yaml:1266",
+        "expect": ['{"offset":0,"skipped":"75650c0404f138001d26"}'],
+    },
+    {
+        "name": "advanced_lowpass_filter_table_published",
+        "hex": "75650c090950010401000000004c6d",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_config.yaml:1279",
+        "expect": ['{"offset":0,"skipped":"75650c090950010401000000004c6d"}'],
+    },
+    {
+        "name": "complementary_filter_copy_paste_published",
+        "hex": "75650c09095101040100000000",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_config.yaml:1292",
+        "expect": ['{"offset":0,"skipped":"75650c09095101040100000000"}'],
+    },
+    {
+        "name": "setup_imu_message_format_write",
+        "hex": "75650c0d0d08010312000a04000a05000a45f2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:12",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":1,"num_descriptors":3,"descriptors":[{"descriptor":18,"decimation":10},{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "setup_imu_message_format_ack",
+        "hex": "75650c0404f10800e7ba",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:30",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "imu_message_format_write_ack_table_published",
+        "hex": "75650c0404f10100e7ba",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:39",
+        "expect": ['{"offset":0,"skipped":"75650c0404f10100e7ba"}'],
+    },
+    {
+        "name": "setup_filter_message_format_write",
+        "hex": "75650c13130a010511000a10000a01000a02000a03000a7562",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:52",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":1,"num_descriptors":5,"descriptors":[{"descriptor":17,"decimation":10},{"descriptor":16,"decimation":10},{"descriptor":1,"decimation":10},{"descriptor":2,"decimation":10},{"descriptor":3,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_ack",
+        "hex": "75650c0404f10a00e9be",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:72",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":10,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "save_message_formats_command",
+        "hex": "75650c0804080300040a03000e31",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:82",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":3,"num_descriptors":0,"descriptors":[]}},{"descriptor":10,"name":"filter_message_format","values":{"function":3,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "message_formats_two_acks",
+        "hex": "75650c0804f1080004f10a00ea71",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:93",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":10,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "save_message_formats_reply_table_published",
+        "hex": "75650c0804f1080004f10a00e9be",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:106",
+        "expect": ['{"offset":0,"skipped":"75650c0804f1080004f10a00e9be"}'],
+    },
+    {
+        "name": "setup_enable_streams_command",
+        "hex": "75650c0a0511010101051101030124cc",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:119",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":1,"device_selector":1,"enable":1}},{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":1,"device_selector":3,"enable":1}}]}'
+        ],
+    },
+    {
+        "name": "setup_enable_streams_reply",
+        "hex": "75650c0804f1110004f11100fab5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:131",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "setup_poll_cf_euler",
+        "hex": "75650c07070100010c000002fc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:141",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":1,"name":"poll_imu_data","values":{"option":0,"num_descriptors":1,"descriptors":[{"descriptor":12,"reserved":0}]}}]}'
+        ],
+    },
+    {
+        "name": "setup_poll_cf_euler_table_published",
+        "hex": "75650c070701000006000002fc",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:153",
+        "expect": ['{"offset":0,"skipped":"75650c070701000006000002fc"}'],
+    },
+    {
+        "name": "poll_imu_ack",
+        "hex": "75650c0404f10100e0ac",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:168",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "poll_imu_stored_format",
+        "hex": "75650c0404010000efda",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:180",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":1,"name":"poll_imu_data","values":{"option":0,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "poll_imu_specified_format",
+        "hex": "75650c0a0a0100020400000500000627",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:192",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":1,"name":"poll_imu_data","values":{"option":0,"num_descriptors":2,"descriptors":[{"descriptor":4,"reserved":0},{"descriptor":5,"reserved":0}]}}]}'
+        ],
+    },
+    {
+        "name": "poll_imu_suppress_ack",
+        "hex": "75650c0707010101040000fbe9",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:204",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":1,"name":"poll_imu_data","values":{"option":1,"num_descriptors":1,"descriptors":[{"descriptor":4,"reserved":0}]}}]}'
+        ],
+    },
+    {
+        "name": "poll_gnss_stored_format",
+        "hex": "75650c0404020000f0dd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:218",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":2,"name":"poll_gnss_data","values":{"option":0,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "poll_gnss_specified_format",
+        "hex": "75650c0a0a020002030000050000062a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:228",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":2,"name":"poll_gnss_data","values":{"option":0,"num_descriptors":2,"descriptors":[{"descriptor":3,"reserved":0},{"descriptor":5,"reserved":0}]}}]}'
+        ],
+    },
+    {
+        "name": "poll_gnss_ack",
+        "hex": "75650c0404f10200e1ae",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:240",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":2,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "poll_filter_stored_format",
+        "hex": "75650c0404030000f1e0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:249",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":3,"name":"poll_filter_data","values":{"option":0,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "poll_filter_specified_format",
+        "hex": "75650c0a0a030002010000020000021e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:259",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":3,"name":"poll_filter_data","values":{"option":0,"num_descriptors":2,"descriptors":[{"descriptor":1,"reserved":0},{"descriptor":2,"reserved":0}]}}]}'
+        ],
+    },
+    {
+        "name": "poll_filter_ack",
+        "hex": "75650c0404f10300e2b0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:271",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":3,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "get_imu_base_rate_command",
+        "hex": "75650c020206f0f7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:281",
+        "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":6,"name":"get_imu_base_rate","values":{}}]}'],
+    },
+    {
+        "name": "get_imu_base_rate_reply",
+        "hex": "75650c0804f1060004830064d46b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:291",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":6,"ack_code":0}},{"descriptor":131,"name":"imu_base_rate","values":{"rate":100}}]}'
+        ],
+    },
+    {
+        "name": "get_gnss_base_rate_command",
+        "hex": "75650c020207f1f8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:302",
+        "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":7,"name":"get_gnss_base_rate","values":{}}]}'],
+    },
+    {
+        "name": "get_gnss_base_rate_reply",
+        "hex": "75650c0804f10700048400047614",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:312",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":7,"ack_code":0}},{"descriptor":132,"name":"gnss_base_rate","values":{"rate":4}}]}'
+        ],
+    },
+    {
+        "name": "get_filter_base_rate_command",
+        "hex": "75650c02020bf5fc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:322",
+        "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":11,"name":"get_filter_base_rate","values":{}}]}'],
+    },
+    {
+        "name": "get_filter_base_rate_reply",
+        "hex": "75650c0804f10b00048a0064e09e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:332",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":11,"ack_code":0}},{"descriptor":138,"name":"filter_base_rate","values":{"rate":100}}]}'
+        ],
+    },
+    {
+        "name": "imu_message_format_write",
+        "hex": "75650c0a0a08010204000a05000a22a0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:343",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "imu_message_format_read",
+        "hex": "75650c0404080200f8f3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:355",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "imu_message_format_read_reply",
+        "hex": "75650c0d04f1080009800203000a04000a9606",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:365",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}},{"descriptor":128,"name":"imu_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":10},{"descriptor":4,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "imu_message_format_read_reply_table_published",
+        "hex": "75650c0d04f1080009800203000a04000a980f",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:381",
+        "expect": ['{"offset":0,"skipped":"75650c0d04f1080009800203000a04000a980f"}'],
+    },
+    {
+        "name": "imu_message_format_load",
+        "hex": "75650c0404080400faf7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:394",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":4,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_message_format_write",
+        "hex": "75650c0a0a0901020300040500041685",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:404",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":4},{"descriptor":5,"decimation":4}]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_message_format_ack",
+        "hex": "75650c0404f10900e8bc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:416",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":9,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_message_format_read",
+        "hex": "75650c0404090200f9f6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:425",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_message_format_read_table_published",
+        "hex": "75650c0404090200f9f3",
+        "device": None,
+        "rejected": True,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:434",
+        "expect": ['{"offset":0,"skipped":"75650c0404090200f9f3"}'],
+    },
+    {
+        "name": "gnss_message_format_read_reply",
+        "hex": "75650c0d04f109000981020300040500048dfe",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:446",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":9,"ack_code":0}},{"descriptor":129,"name":"gnss_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":4},{"descriptor":5,"decimation":4}]}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_write",
+        "hex": "75650c0a0a0a01020100010200010c6a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:458",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":1,"decimation":1},{"descriptor":2,"decimation":1}]}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_write_copy_paste_published",
+        "hex": "75650c0a0a0901020300040500041685",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:469",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":4},{"descriptor":5,"decimation":4}]}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_read",
+        "hex": "75650c04040a0200faf9",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:488",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_read_copy_paste_published",
+        "hex": "75650c0404090200f9f6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:497",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_read_reply",
+        "hex": "75650c0d04f10a0009820201000102000184ed",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:513",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":10,"ack_code":0}},{"descriptor":130,"name":"filter_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":1,"decimation":1},{"descriptor":2,"decimation":1}]}}]}'
+        ],
+    },
+    {
+        "name": "two_message_formats_in_one_packet",
+        "hex": "75650c200d08010312000a04000a05000a130a010511000a10000a01000a02000a03000ad43d",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:526",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":1,"num_descriptors":3,"descriptors":[{"descriptor":18,"decimation":10},{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}},{"descriptor":10,"name":"filter_message_format","values":{"function":1,"num_descriptors":5,"descriptors":[{"descriptor":17,"decimation":10},{"descriptor":16,"decimation":10},{"descriptor":1,"decimation":10},{"descriptor":2,"decimation":10},{"descriptor":3,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_imu_on",
+        "hex": "75650c050511010101041a",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:554",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":1,"device_selector":1,"enable":1}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_imu_off",
+        "hex": "75650c0505110101000319",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:565",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":1,"device_selector":1,"enable":0}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_ack",
+        "hex": "75650c0404f11100f0cc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:575",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_gx5_read_filter",
+        "hex": "75650c0505110203000620",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:584",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":2,"device_selector":3,"enable":0}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_gx5_read_reply",
+        "hex": "75650c0804f11100048503018156",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:598",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":133,"name":"data_stream_control_response","device":"gx5_45","values":{"device_selector":3,"enabled":1}}]}'
+        ],
+    },
+    {
+        "name": "gnss_constellation_settings_write",
+        "hex": "75650c121221010020020001081000000601080e0000845a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:613",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":1,"max_channels":32,"config_count":2,"settings":[{"constellation_id":0,"enable":1,"reserved_channels":8,"max_channels":16,"option_flags":0},{"constellation_id":6,"enable":1,"reserved_channels":8,"max_channels":14,"option_flags":0}]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_constellation_settings_ack",
+        "hex": "75650c0404f1210000ec",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:631",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":33,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_constellation_settings_read",
+        "hex": "75650c06062102000000157a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:640",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":2,"max_channels":0,"config_count":0,"settings":[]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_constellation_settings_read_reply",
+        "hex": "75650c2304f121001fa000200020040001081000000601080e0000010101030000050100030001683c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:652",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":33,"ack_code":0}},{"descriptor":160,"name":"gnss_constellation_settings_response","values":{"max_channels_available":32,"max_channels":32,"config_count":4,"settings":[{"constellation_id":0,"enable":1,"reserved_channels":8,"max_channels":16,"option_flags":0},{"constellation_id":6,"enable":1,"reserved_channels":8,"max_channels":14,"option_flags":0},{"constellation_id":1,"enable":1,"reserved_channels":1,"max_channels":3,"option_flags":0},{"constellation_id":5,"enable":1,"reserved_channels":0,"max_channels":3,"option_flags":1}]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_sbas_settings_write",
+        "hex": "75650c0b0b22010100030200780079165c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:680",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":34,"name":"gnss_sbas_settings","values":{"function":1,"enable_sbas":1,"sbas_options":3,"num_included_prns":2,"included_prns":[120,121]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_sbas_settings_ack",
+        "hex": "75650c0404f1220001ee",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:697",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_sbas_settings_read_reply_three_prns",
+        "hex": "75650c1004f122000ca10100070300780079007a30d5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:706",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}},{"descriptor":161,"name":"gnss_sbas_settings_response","values":{"enable_sbas":1,"sbas_options":7,"num_included_prns":3,"included_prns":[120,121,122]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_sbas_settings_read_short",
+        "hex": "75650c030322021028",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:727",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":34,"name":"gnss_sbas_settings","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "gnss_sbas_settings_write_include_all",
+        "hex": "75650c07072201010003001ba9",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:737",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":34,"name":"gnss_sbas_settings","values":{"function":1,"enable_sbas":1,"sbas_options":3,"num_included_prns":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_sbas_settings_read_reply_disabled",
+        "hex": "75650c0a04f1220006a100000000ae7f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:752",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}},{"descriptor":161,"name":"gnss_sbas_settings_response","values":{"enable_sbas":0,"sbas_options":0,"num_included_prns":0,"included_prns":[]}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assisted_fix_enable",
+        "hex": "75650c0505230101ff1460",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:766",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":35,"name":"gnss_assisted_fix_control","values":{"function":1,"option":1,"flags":255}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assisted_fix_ack",
+        "hex": "75650c0404f1230002f0",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:776",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":35,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assisted_fix_read",
+        "hex": "75650c0505230200ff1461",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:785",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":35,"name":"gnss_assisted_fix_control","values":{"function":2,"option":0,"flags":255}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assisted_fix_read_reply",
+        "hex": "75650c0804f1230004a201ffac13",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:797",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":35,"ack_code":0}},{"descriptor":162,"name":"gnss_assisted_fix_control_response","values":{"option":1,"flags":255}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assist_time_update_command",
+        "hex": "75650c1111240140e722c6b851eb85078140a000001deb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:809",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":47382.21,"week_number":1921,"accuracy":5.0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assist_time_update_ack",
+        "hex": "75650c0404f1240003f2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:823",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":36,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assist_time_update_read",
+        "hex": "75650c1111240200000000000000000000000000002e12",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:832",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":2,"tow":0.0,"week_number":0,"accuracy":0.0}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assist_time_update_read_reply",
+        "hex": "75650c1404f1240010a340e722c6b851eb85078140a00000b6e7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:844",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":36,"ack_code":0}},{"descriptor":163,"name":"gnss_assist_time_update_response","values":{"tow":47382.21,"week_number":1921,"accuracy":5.0}}]}'
+        ],
+    },
+    {
+        "name": "device_status_basic_command",
+        "hex": "75650c050564186b01d87f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:858",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":100,"name":"device_status","values":{"model_number":6251,"status_selector":1}}]}'
+        ],
+    },
+    {
+        "name": "device_status_basic_reply",
+        "hex": "75650c1304f164000f90186b010000000000010000ea60c0cc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:868",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":100,"ack_code":0}},{"descriptor":144,"name":"device_status_response","values":{"model_number":6251,"status_selector":1,"status":{"status_flags":0,"system_state":1,"system_timer":60000}}}]}'
+        ],
+    },
+    {
+        "name": "device_status_diagnostic_command",
+        "hex": "75650c050564186b02d980",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:890",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":100,"name":"device_status","values":{"model_number":6251,"status_selector":2}}]}'
+        ],
+    },
+    {
+        "name": "device_status_diagnostic_reply",
+        "hex": "75650c4f04f164004b90186b020000000000010000ea60010000003c0000e86c0101010000000000000000000000000001e240000003150000000000000000000075300000ea5e00000002000000f00000e9663669",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:900",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":100,"ack_code":0}},{"descriptor":144,"name":"device_status_response","values":{"model_number":6251,"status_selector":2,"status":{"status_flags":0,"system_state":1,"system_timer":60000,"gnss_power_state":1,"pps_pulse_count":60,"last_pps_time":59500,"imu_stream_enabled":1,"gnss_stream_enabled":1,"filter_stream_enabled":1,"imu_dropped_packets":0,"gnss_dropped_packets":0,"filter_dropped_packets":0,"com_bytes_written":123456,"com_bytes_read":789,"com_write_overruns":0,"imu_parse_errors":0,"imu_messages_read":30000,"last_imu_message_time":59998,"gnss_parse_errors":2,"gnss_messages_read":240,"last_gnss_message_time":59750}}}]}'
+        ],
+    },
+    {
+        "name": "raw_rtcm_message_command",
+        "hex": "75650c080820664100a0fcc019f4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:948",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":32,"name":"raw_rtcm_message","values":{"data":[102,65,0,160,252,192]}}]}'
+        ],
+    },
+    {
+        "name": "raw_rtcm_message_ack",
+        "hex": "75650c0404f12000ffea",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:960",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":32,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "get_base_rate_sensor_command",
+        "hex": "75650c03030e807a7e",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:970",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":14,"name":"get_base_rate","values":{"desc_set":128}}]}'
+        ],
+    },
+    {
+        "name": "get_base_rate_sensor_reply",
+        "hex": "75650c0904f10e00058e8003e8f058",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:979",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":14,"ack_code":0}},{"descriptor":142,"name":"base_rate","values":{"desc_set":128,"rate":1000}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_write_generated",
+        "hex": "75650c04042801041b55",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:989",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":1,"source":4}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_ack",
+        "hex": "75650c0404f1280007fa",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:998",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_save",
+        "hex": "75650c030328031735",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1008",
+        "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":3}}]}'],
+    },
+    {
+        "name": "pps_source_write_disabled",
+        "hex": "75650c04042801001751",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1017",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":1,"source":0}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_load",
+        "hex": "75650c030328041836",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1026",
+        "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":4}}]}'],
+    },
+    {
+        "name": "pps_source_load_copy_paste_published",
+        "hex": "75650c0404f128040bfe",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1038",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":4}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_default_save_read",
+        "hex": "75650c090328050328030328027a4a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1056",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":5}},{"descriptor":40,"name":"pps_source","values":{"function":3}},{"descriptor":40,"name":"pps_source","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_default_save_read_reply",
+        "hex": "75650c0f04f1280004f1280004f1280003a801f8d9",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1067",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":168,"name":"pps_source_response","values":{"source":1}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_write_gpio",
+        "hex": "75650c04042801031a54",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1080",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":1,"source":3}}]}'
+        ],
+    },
+    {
+        "name": "pps_source_read_reply_receiver_2",
+        "hex": "75650c0704f1280003a802b782",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1090",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":168,"name":"pps_source_response","values":{"source":2}}]}'
+        ],
+    },
+    {
+        "name": "factory_streaming_overwrite",
+        "hex": "75650c0404100000fe07",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1101",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":16,"name":"factory_streaming","values":{"action":0,"reserved":0}}]}'
+        ],
+    },
+    {
+        "name": "poll_nmea_data_one_sentence",
+        "hex": "75650c0909040001010191000595c3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1111",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":4,"name":"poll_nmea_data","values":{"suppress_ack":false,"count":1,"format_entries":[{"message_id":1,"talker_id":1,"source_desc_set":145,"decimation":5}]}}]}'
+        ],
+    },
+    {
+        "name": "nmea_message_format_write",
+        "hex": "75650c0e0e0c0102010182000a04029100013732",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1126",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":12,"name":"nmea_message_format","values":{"function":1,"count":2,"format_entries":[{"message_id":1,"talker_id":1,"source_desc_set":130,"decimation":10},{"message_id":4,"talker_id":2,"source_desc_set":145,"decimation":1}]}}]}'
+        ],
+    },
+    {
+        "name": "nmea_message_format_read",
+        "hex": "75650c03030c02fafc",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1146",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":12,"name":"nmea_message_format","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "nmea_message_format_read_reply",
+        "hex": "75650c1104f10c000d8c02010182000a0402910001b919",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1156",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":12,"ack_code":0}},{"descriptor":140,"name":"nmea_message_format_response","values":{"count":2,"format_entries":[{"message_id":1,"talker_id":1,"source_desc_set":130,"decimation":10},{"message_id":4,"talker_id":2,"source_desc_set":145,"decimation":1}]}}]}'
+        ],
+    },
+    {
+        "name": "poll_data_sensor_suppress_ack",
+        "hex": "75650c07070d80010204058db3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1175",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":13,"name":"poll_data","values":{"desc_set":128,"suppress_ack":true,"num_descriptors":2,"descriptors":[4,5]}}]}'
+        ],
+    },
+    {
+        "name": "message_format_write_sensor",
+        "hex": "75650c0b0b0f01800204000a05000aab00",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1187",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":15,"name":"message_format","values":{"function":1,"desc_set":128,"num_descriptors":2,"descriptors":[{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "message_format_read_sensor",
+        "hex": "75650c04040f02807f88",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1201",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":15,"name":"message_format","values":{"function":2,"desc_set":128}}]}'
+        ],
+    },
+    {
+        "name": "message_format_read_sensor_reply",
+        "hex": "75650c0e04f10f000a8f800204000a05000a307c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1211",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":15,"ack_code":0}},{"descriptor":143,"name":"message_format_response","values":{"desc_set":128,"num_descriptors":2,"descriptors":[{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
+        ],
+    },
+    {
+        "name": "message_format_save_all",
+        "hex": "75650c04040f0300000a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1226",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":15,"name":"message_format","values":{"function":3,"desc_set":0}}]}'
+        ],
+    },
+    {
+        "name": "factory_streaming_merge",
+        "hex": "75650c0404100100ff09",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1236",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":16,"name":"factory_streaming","values":{"action":1,"reserved":0}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_cv7_enable_filter",
+        "hex": "75650c050511018201851c",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1246",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"cv7_ins","values":{"function":1,"desc_set":130,"enable":true}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_cv7_read_filter",
+        "hex": "75650c04041102828390",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1257",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"cv7_ins","values":{"function":2,"desc_set":130}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_cv7_read_filter_reply",
+        "hex": "75650c0804f11100048582010054",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1268",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":133,"name":"data_stream_control_response","device":"cv7_ins","values":{"desc_set":130,"enabled":true}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_cv7_save_all",
+        "hex": "75650c04041103000210",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1280",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"cv7_ins","values":{"function":3,"desc_set":0}}]}'
+        ],
+    },
+    {
+        "name": "get_supported_events_triggers",
+        "hex": "75650c03032a011737",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1291",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":42,"name":"get_supported_events","values":{"query":1}}]}'
+        ],
+    },
+    {
+        "name": "get_supported_events_triggers_reply",
+        "hex": "75650c0f04f12a000bb4010c03010402080308fd58",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1301",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":42,"ack_code":0}},{"descriptor":180,"name":"supported_events","values":{"query":1,"info":{"max_instances":12,"num_entries":3,"entries":[{"type":1,"count":4},{"type":2,"count":8},{"type":3,"count":8}]}}}]}'
+        ],
+    },
+    {
+        "name": "get_supported_events_actions",
+        "hex": "75650c03032a021838",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1323",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":42,"name":"get_supported_events","values":{"query":2}}]}'
+        ],
+    },
+    {
+        "name": "get_supported_events_actions_reply",
+        "hex": "75650c0d04f12a0009b4020c0201060208f040",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1333",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":42,"ack_code":0}},{"descriptor":180,"name":"supported_events","values":{"query":2,"info":{"max_instances":12,"num_entries":2,"entries":[{"type":1,"count":6},{"type":2,"count":8}]}}}]}'
+        ],
+    },
+    {
         "name": "frame_config_write_antenna_offset",
         "hex": "7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1",
         "device": None,

@@ -1488,6 +1488,78 @@ impl crate::json_read::FromJson for AltitudeAidingSource {
     }
 }
 
+/// Assisted fix option.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct AssistedFixOption(pub u8);
+
+impl AssistedFixOption {
+    /// No assisted fix (default).
+    pub const NONE: Self = Self(0);
+    /// Assisted fix enabled.
+    pub const ENABLED: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("enabled"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "enabled" => Some(Self::ENABLED),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for AssistedFixOption {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "AssistedFixOption({} {})", self.0, name),
+            None => write!(f, "AssistedFixOption({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for AssistedFixOption {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for AssistedFixOption {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of AssistedFixOption"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// CombinationParams.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CombinationParams {
@@ -1557,6 +1629,181 @@ impl crate::json_read::FromJson for CombinationParams {
         Ok(Self {
             logic_table: p_logic_table,
             input_triggers: p_input_triggers,
+        })
+    }
+}
+
+/// GNSS constellation option flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ConstellationOptions(pub u16);
+
+impl ConstellationOptions {
+    /// Mask of `l1saif` (bit 0).
+    pub const L1SAIF: u16 = 0x0001;
+
+    /// L1SAIF signal (QZSS only). (bit 0)
+    pub const fn l1saif(self) -> bool {
+        self.0 & Self::L1SAIF != 0
+    }
+
+    /// Sets or clears `l1saif` (bit 0).
+    pub fn set_l1saif(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::L1SAIF;
+        } else {
+            self.0 &= !Self::L1SAIF;
+        }
+    }
+}
+
+impl crate::wire::Wire for ConstellationOptions {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ConstellationOptions {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS constellation configuration entry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConstellationSettings {
+    /// Constellation.
+    pub constellation_id: crate::types::Gx5ConstellationId,
+    /// 0x00 disable, 0x01 enable.
+    pub enable: u8,
+    /// Tracking channels reserved for this constellation (0-32; all constellations together at most 32).
+    pub reserved_channels: u8,
+    /// Maximum tracking channels for this constellation (0-32, not below reserved_channels).
+    pub max_channels: u8,
+    /// Constellation options.
+    pub option_flags: crate::types::ConstellationOptions,
+}
+
+impl Default for ConstellationSettings {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for ConstellationSettings {
+    const ZERO: Self = Self {
+        constellation_id: <crate::types::Gx5ConstellationId as crate::wire::Wire>::ZERO,
+        enable: <u8 as crate::wire::Wire>::ZERO,
+        reserved_channels: <u8 as crate::wire::Wire>::ZERO,
+        max_channels: <u8 as crate::wire::Wire>::ZERO,
+        option_flags: <crate::types::ConstellationOptions as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(6);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_constellation_id = <crate::types::Gx5ConstellationId as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("constellation_id"))?;
+        let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
+        let p_reserved_channels =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_channels"))?;
+        let p_max_channels =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_channels"))?;
+        let p_option_flags = <crate::types::ConstellationOptions as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("option_flags"))?;
+        Ok(Self {
+            constellation_id: p_constellation_id,
+            enable: p_enable,
+            reserved_channels: p_reserved_channels,
+            max_channels: p_max_channels,
+            option_flags: p_option_flags,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.constellation_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("constellation_id"))?;
+        let v = &self.enable;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        let v = &self.reserved_channels;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_channels"))?;
+        let v = &self.max_channels;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_channels"))?;
+        let v = &self.option_flags;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("option_flags"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.constellation_id;
+        crate::json::key(w, &mut first, "constellation_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.enable;
+        crate::json::key(w, &mut first, "enable")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_channels;
+        crate::json::key(w, &mut first, "reserved_channels")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.max_channels;
+        crate::json::key(w, &mut first, "max_channels")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.option_flags;
+        crate::json::key(w, &mut first, "option_flags")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ConstellationSettings {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "constellation_id",
+                "enable",
+                "reserved_channels",
+                "max_channels",
+                "option_flags",
+            ],
+        )?;
+        let p_constellation_id = o.req(
+            "constellation_id",
+            <crate::types::Gx5ConstellationId as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_enable = o.req("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_reserved_channels = o.req(
+            "reserved_channels",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_max_channels = o.req(
+            "max_channels",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_option_flags = o.req(
+            "option_flags",
+            <crate::types::ConstellationOptions as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            constellation_id: p_constellation_id,
+            enable: p_enable,
+            reserved_channels: p_reserved_channels,
+            max_channels: p_max_channels,
+            option_flags: p_option_flags,
         })
     }
 }
@@ -1846,6 +2093,71 @@ impl crate::json_read::FromJson for Cv7BitFlags {
     }
 }
 
+/// Descriptor and rate decimation. One entry of a message format list.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DescriptorRate {
+    /// Data field descriptor.
+    pub descriptor: u8,
+    /// Rate decimation: the field is output at base rate / decimation.
+    pub decimation: u16,
+}
+
+impl Default for DescriptorRate {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for DescriptorRate {
+    const ZERO: Self = Self {
+        descriptor: <u8 as crate::wire::Wire>::ZERO,
+        decimation: <u16 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(3);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_descriptor = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("descriptor"))?;
+        let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
+        Ok(Self {
+            descriptor: p_descriptor,
+            decimation: p_decimation,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.descriptor;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("descriptor"))?;
+        let v = &self.decimation;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("decimation"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.descriptor;
+        crate::json::key(w, &mut first, "descriptor")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.decimation;
+        crate::json::key(w, &mut first, "decimation")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for DescriptorRate {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["descriptor", "decimation"])?;
+        let p_descriptor = o.req("descriptor", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_decimation = o.req("decimation", <u16 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            descriptor: p_descriptor,
+            decimation: p_decimation,
+        })
+    }
+}
+
 /// Device information. Firmware version and five 16-character identification strings, padded with spaces.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DeviceInfo {
@@ -1990,6 +2302,78 @@ impl crate::json_read::FromJson for DeviceInfo {
             lot_number: p_lot_number,
             device_options: p_device_options,
         })
+    }
+}
+
+/// Device status selector.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct DeviceStatusSelector(pub u8);
+
+impl DeviceStatusSelector {
+    /// Basic status structure.
+    pub const BASIC: Self = Self(1);
+    /// Diagnostic status structure.
+    pub const DIAGNOSTIC: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("basic"),
+            2 => Some("diagnostic"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "basic" => Some(Self::BASIC),
+            "diagnostic" => Some(Self::DIAGNOSTIC),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for DeviceStatusSelector {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "DeviceStatusSelector({} {})", self.0, name),
+            None => write!(f, "DeviceStatusSelector({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for DeviceStatusSelector {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for DeviceStatusSelector {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of DeviceStatusSelector"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
     }
 }
 
@@ -2295,6 +2679,82 @@ impl crate::json_read::FromJson for ExternalHeadingType {
             crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
                 crate::json_read::JsonError::new(std::format!(
                     "\"{name}\" is not a value of ExternalHeadingType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Factory streaming action.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FactoryStreamingAction(pub u8);
+
+impl FactoryStreamingAction {
+    /// Replace the message formats, dropping the descriptors already there.
+    pub const OVERWRITE: Self = Self(0);
+    /// Merge the support descriptors into the existing formats (order may change).
+    pub const MERGE: Self = Self(1);
+    /// Append the support descriptors to the existing formats (duplicates possible).
+    pub const ADD: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("overwrite"),
+            1 => Some("merge"),
+            2 => Some("add"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "overwrite" => Some(Self::OVERWRITE),
+            "merge" => Some(Self::MERGE),
+            "add" => Some(Self::ADD),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FactoryStreamingAction {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FactoryStreamingAction({} {})", self.0, name),
+            None => write!(f, "FactoryStreamingAction({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FactoryStreamingAction {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FactoryStreamingAction {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FactoryStreamingAction"
                 ))
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
@@ -3019,6 +3479,1106 @@ impl crate::json_read::FromJson for GnssReceiverInfoEntry {
     }
 }
 
+/// GPIO behavior, read according to the feature. The behavior byte's meaning depends on the feature: the same number names a different behavior per feature (2 is GPIO_OUTPUT_LOW for GPIO, PPS_OUTPUT for PPS, ENCODER_B for ENCODER, TIMESTAMP_FALLING for TIMESTAMP). Every member is one u8.
+///
+/// A union: the member is chosen by the value of an earlier selector parameter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GpioBehavior {
+    /// Feature UNUSED: behavior 0.
+    Unused(crate::types::GpioBehaviorUnused),
+    /// Feature GPIO: GPIO_INPUT / GPIO_OUTPUT_LOW / GPIO_OUTPUT_HIGH.
+    Gpio(crate::types::GpioBehaviorIo),
+    /// Feature PPS: PPS_INPUT / PPS_OUTPUT.
+    Pps(crate::types::GpioBehaviorPps),
+    /// Feature ENCODER: ENCODER_A / ENCODER_B.
+    Encoder(crate::types::GpioBehaviorEncoder),
+    /// Feature TIMESTAMP: TIMESTAMP_RISING / _FALLING / _EITHER.
+    Timestamp(crate::types::GpioBehaviorTimestamp),
+    /// Feature UART: UART_PORT2_TX/RX, UART_PORT3_TX/RX.
+    Uart(crate::types::GpioBehaviorUart),
+}
+
+impl GpioBehavior {
+    /// The first member with zero values.
+    pub const ZERO: Self =
+        Self::Unused(<crate::types::GpioBehaviorUnused as crate::wire::Wire>::ZERO);
+
+    /// Selector value of this member.
+    pub fn selector_value(&self) -> u8 {
+        match self {
+            Self::Unused(_) => 0,
+            Self::Gpio(_) => 1,
+            Self::Pps(_) => 2,
+            Self::Encoder(_) => 3,
+            Self::Timestamp(_) => 4,
+            Self::Uart(_) => 5,
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    pub fn decode_selected(
+        r: &mut crate::wire::Reader<'_>,
+        selector: u8,
+    ) -> Result<Self, crate::error::DecodeError> {
+        match selector {
+            0 => {
+                <crate::types::GpioBehaviorUnused as crate::wire::Wire>::decode(r).map(Self::Unused)
+            }
+            1 => <crate::types::GpioBehaviorIo as crate::wire::Wire>::decode(r).map(Self::Gpio),
+            2 => <crate::types::GpioBehaviorPps as crate::wire::Wire>::decode(r).map(Self::Pps),
+            3 => <crate::types::GpioBehaviorEncoder as crate::wire::Wire>::decode(r)
+                .map(Self::Encoder),
+            4 => <crate::types::GpioBehaviorTimestamp as crate::wire::Wire>::decode(r)
+                .map(Self::Timestamp),
+            5 => <crate::types::GpioBehaviorUart as crate::wire::Wire>::decode(r).map(Self::Uart),
+            value => {
+                let _ = r;
+                Err(crate::error::DecodeError::new(
+                    crate::error::DecodeErrorKind::NoMember {
+                        value: i128::from(value),
+                    },
+                ))
+            }
+        }
+    }
+
+    /// Writes the member after checking that `selector` chooses it.
+    pub fn encode_selected(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+        selector: u8,
+    ) -> Result<(), crate::error::EncodeError> {
+        if self.selector_value() != selector {
+            return Err(crate::error::EncodeError::new(
+                crate::error::EncodeErrorKind::UnionMismatch {
+                    value: i128::from(selector),
+                },
+            ));
+        }
+        match self {
+            Self::Unused(v) => crate::wire::Wire::encode(v, w),
+            Self::Gpio(v) => crate::wire::Wire::encode(v, w),
+            Self::Pps(v) => crate::wire::Wire::encode(v, w),
+            Self::Encoder(v) => crate::wire::Wire::encode(v, w),
+            Self::Timestamp(v) => crate::wire::Wire::encode(v, w),
+            Self::Uart(v) => crate::wire::Wire::encode(v, w),
+        }
+    }
+
+    /// Writes the member's struct, or `null` for a member without data.
+    pub fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::Unused(v) => crate::wire::Wire::write_json(v, w),
+            Self::Gpio(v) => crate::wire::Wire::write_json(v, w),
+            Self::Pps(v) => crate::wire::Wire::write_json(v, w),
+            Self::Encoder(v) => crate::wire::Wire::write_json(v, w),
+            Self::Timestamp(v) => crate::wire::Wire::write_json(v, w),
+            Self::Uart(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    #[cfg(feature = "std")]
+    pub fn from_json_selected(
+        v: &crate::json_read::Json,
+        selector: u8,
+    ) -> Result<Self, crate::json_read::JsonError> {
+        match selector {
+            0 => <crate::types::GpioBehaviorUnused as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Unused),
+            1 => <crate::types::GpioBehaviorIo as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Gpio),
+            2 => <crate::types::GpioBehaviorPps as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Pps),
+            3 => <crate::types::GpioBehaviorEncoder as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Encoder),
+            4 => <crate::types::GpioBehaviorTimestamp as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Timestamp),
+            5 => <crate::types::GpioBehaviorUart as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Uart),
+            value => Err(crate::json_read::JsonError::new(std::format!(
+                "no member for selector value {value}"
+            ))),
+        }
+    }
+}
+
+/// GpioBehaviorEncoder.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpioBehaviorEncoder {
+    /// Quadrature channel A or B.
+    pub behavior: crate::types::GpioEncoderBehavior,
+}
+
+impl Default for GpioBehaviorEncoder {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GpioBehaviorEncoder {
+    const ZERO: Self = Self {
+        behavior: <crate::types::GpioEncoderBehavior as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_behavior = <crate::types::GpioEncoderBehavior as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("behavior"))?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.behavior;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("behavior"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.behavior;
+        crate::json::key(w, &mut first, "behavior")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioBehaviorEncoder {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["behavior"])?;
+        let p_behavior = o.req(
+            "behavior",
+            <crate::types::GpioEncoderBehavior as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+}
+
+/// GpioBehaviorIo.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpioBehaviorIo {
+    /// Input, or output with its initial state.
+    pub behavior: crate::types::GpioIoBehavior,
+}
+
+impl Default for GpioBehaviorIo {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GpioBehaviorIo {
+    const ZERO: Self = Self {
+        behavior: <crate::types::GpioIoBehavior as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_behavior = <crate::types::GpioIoBehavior as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("behavior"))?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.behavior;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("behavior"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.behavior;
+        crate::json::key(w, &mut first, "behavior")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioBehaviorIo {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["behavior"])?;
+        let p_behavior = o.req(
+            "behavior",
+            <crate::types::GpioIoBehavior as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+}
+
+/// GpioBehaviorPps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpioBehaviorPps {
+    /// PPS input or output.
+    pub behavior: crate::types::GpioPpsBehavior,
+}
+
+impl Default for GpioBehaviorPps {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GpioBehaviorPps {
+    const ZERO: Self = Self {
+        behavior: <crate::types::GpioPpsBehavior as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_behavior = <crate::types::GpioPpsBehavior as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("behavior"))?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.behavior;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("behavior"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.behavior;
+        crate::json::key(w, &mut first, "behavior")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioBehaviorPps {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["behavior"])?;
+        let p_behavior = o.req(
+            "behavior",
+            <crate::types::GpioPpsBehavior as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+}
+
+/// GpioBehaviorTimestamp.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpioBehaviorTimestamp {
+    /// Which edges are timestamped.
+    pub behavior: crate::types::GpioTimestampBehavior,
+}
+
+impl Default for GpioBehaviorTimestamp {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GpioBehaviorTimestamp {
+    const ZERO: Self = Self {
+        behavior: <crate::types::GpioTimestampBehavior as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_behavior = <crate::types::GpioTimestampBehavior as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("behavior"))?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.behavior;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("behavior"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.behavior;
+        crate::json::key(w, &mut first, "behavior")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioBehaviorTimestamp {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["behavior"])?;
+        let p_behavior = o.req(
+            "behavior",
+            <crate::types::GpioTimestampBehavior as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+}
+
+/// GpioBehaviorUart.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpioBehaviorUart {
+    /// UART port and direction.
+    pub behavior: crate::types::GpioUartBehavior,
+}
+
+impl Default for GpioBehaviorUart {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GpioBehaviorUart {
+    const ZERO: Self = Self {
+        behavior: <crate::types::GpioUartBehavior as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_behavior = <crate::types::GpioUartBehavior as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("behavior"))?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.behavior;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("behavior"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.behavior;
+        crate::json::key(w, &mut first, "behavior")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioBehaviorUart {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["behavior"])?;
+        let p_behavior = o.req(
+            "behavior",
+            <crate::types::GpioUartBehavior as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+}
+
+/// GpioBehaviorUnused.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpioBehaviorUnused {
+    /// Behavior value (0).
+    pub behavior: crate::types::GpioUnusedBehavior,
+}
+
+impl Default for GpioBehaviorUnused {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for GpioBehaviorUnused {
+    const ZERO: Self = Self {
+        behavior: <crate::types::GpioUnusedBehavior as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(1);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_behavior = <crate::types::GpioUnusedBehavior as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("behavior"))?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.behavior;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("behavior"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.behavior;
+        crate::json::key(w, &mut first, "behavior")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioBehaviorUnused {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["behavior"])?;
+        let p_behavior = o.req(
+            "behavior",
+            <crate::types::GpioUnusedBehavior as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            behavior: p_behavior,
+        })
+    }
+}
+
+/// GPIO behavior for the ENCODER feature.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioEncoderBehavior(pub u8);
+
+impl GpioEncoderBehavior {
+    /// No behavior.
+    pub const UNUSED: Self = Self(0);
+    /// ENCODER_A: quadrature input A; one pin at most (the latest command wins).
+    pub const ENCODER_A: Self = Self(1);
+    /// ENCODER_B: quadrature input B; one pin at most (the latest command wins).
+    pub const ENCODER_B: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            1 => Some("encoder_a"),
+            2 => Some("encoder_b"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            "encoder_a" => Some(Self::ENCODER_A),
+            "encoder_b" => Some(Self::ENCODER_B),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioEncoderBehavior {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioEncoderBehavior({} {})", self.0, name),
+            None => write!(f, "GpioEncoderBehavior({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioEncoderBehavior {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioEncoderBehavior {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioEncoderBehavior"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO pin feature. What a user GPIO pin is used for; selects how the behavior byte is read.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioFeature(pub u8);
+
+impl GpioFeature {
+    /// Pin not used; reading its state may or may not work.
+    pub const UNUSED: Self = Self(0);
+    /// General purpose input or output (direct control or monitoring of the pin state).
+    pub const GPIO: Self = Self(1);
+    /// Pulse-per-second input or output.
+    pub const PPS: Self = Self(2);
+    /// Motor encoder / odometer input.
+    pub const ENCODER: Self = Self(3);
+    /// Precision timestamping of edges (for event triggers, 0x0C,0x2E).
+    pub const TIMESTAMP: Self = Self(4);
+    /// UART data or control line.
+    pub const UART: Self = Self(5);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            1 => Some("gpio"),
+            2 => Some("pps"),
+            3 => Some("encoder"),
+            4 => Some("timestamp"),
+            5 => Some("uart"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            "gpio" => Some(Self::GPIO),
+            "pps" => Some(Self::PPS),
+            "encoder" => Some(Self::ENCODER),
+            "timestamp" => Some(Self::TIMESTAMP),
+            "uart" => Some(Self::UART),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioFeature {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioFeature({} {})", self.0, name),
+            None => write!(f, "GpioFeature({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioFeature {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioFeature {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioFeature"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO behavior for the GPIO feature.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioIoBehavior(pub u8);
+
+impl GpioIoBehavior {
+    /// No behavior.
+    pub const UNUSED: Self = Self(0);
+    /// GPIO_INPUT: the pin is an input that can be streamed or polled (the default).
+    pub const INPUT: Self = Self(1);
+    /// GPIO_OUTPUT_LOW: output, initially low (restored at startup if saved).
+    pub const OUTPUT_LOW: Self = Self(2);
+    /// GPIO_OUTPUT_HIGH: output, initially high (restored at startup if saved).
+    pub const OUTPUT_HIGH: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            1 => Some("input"),
+            2 => Some("output_low"),
+            3 => Some("output_high"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            "input" => Some(Self::INPUT),
+            "output_low" => Some(Self::OUTPUT_LOW),
+            "output_high" => Some(Self::OUTPUT_HIGH),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioIoBehavior {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioIoBehavior({} {})", self.0, name),
+            None => write!(f, "GpioIoBehavior({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioIoBehavior {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioIoBehavior {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioIoBehavior"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO pin electrical mode. Electrical configuration of a GPIO pin; which combinations a (feature, behavior) pair supports is listed in the User GPIO pin-mode table (line 1338).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GpioPinMode(pub u8);
+
+impl GpioPinMode {
+    /// Mask of `open_drain` (bit 0).
+    pub const OPEN_DRAIN: u8 = 0x01;
+    /// Mask of `pulldown` (bit 1).
+    pub const PULLDOWN: u8 = 0x02;
+    /// Mask of `pullup` (bit 2).
+    pub const PULLUP: u8 = 0x04;
+
+    /// Open-drain output: LOW or floating instead of LOW or HIGH; usually with a pull-up. (bit 0)
+    pub const fn open_drain(self) -> bool {
+        self.0 & Self::OPEN_DRAIN != 0
+    }
+
+    /// Sets or clears `open_drain` (bit 0).
+    pub fn set_open_drain(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::OPEN_DRAIN;
+        } else {
+            self.0 &= !Self::OPEN_DRAIN;
+        }
+    }
+
+    /// Internal pull-down resistor enabled (not with pullup). (bit 1)
+    pub const fn pulldown(self) -> bool {
+        self.0 & Self::PULLDOWN != 0
+    }
+
+    /// Sets or clears `pulldown` (bit 1).
+    pub fn set_pulldown(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PULLDOWN;
+        } else {
+            self.0 &= !Self::PULLDOWN;
+        }
+    }
+
+    /// Internal pull-up resistor enabled (not with pulldown); may lower the allowed input voltage. (bit 2)
+    pub const fn pullup(self) -> bool {
+        self.0 & Self::PULLUP != 0
+    }
+
+    /// Sets or clears `pullup` (bit 2).
+    pub fn set_pullup(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PULLUP;
+        } else {
+            self.0 &= !Self::PULLUP;
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioPinMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioPinMode {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GPIO behavior for the PPS feature.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioPpsBehavior(pub u8);
+
+impl GpioPpsBehavior {
+    /// No behavior.
+    pub const UNUSED: Self = Self(0);
+    /// PPS_INPUT: receives the PPS signal; one pin at most; needs PPS source GPIO (0x0C,0x28).
+    pub const INPUT: Self = Self(1);
+    /// PPS_OUTPUT: transmits the device's PPS signal.
+    pub const OUTPUT: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            1 => Some("input"),
+            2 => Some("output"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            "input" => Some(Self::INPUT),
+            "output" => Some(Self::OUTPUT),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioPpsBehavior {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioPpsBehavior({} {})", self.0, name),
+            None => write!(f, "GpioPpsBehavior({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioPpsBehavior {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioPpsBehavior {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioPpsBehavior"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO behavior for the TIMESTAMP feature.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioTimestampBehavior(pub u8);
+
+impl GpioTimestampBehavior {
+    /// No behavior.
+    pub const UNUSED: Self = Self(0);
+    /// TIMESTAMP_RISING: rising edges are timestamped.
+    pub const RISING: Self = Self(1);
+    /// TIMESTAMP_FALLING: falling edges are timestamped.
+    pub const FALLING: Self = Self(2);
+    /// TIMESTAMP_EITHER: both edges are timestamped.
+    pub const EITHER: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            1 => Some("rising"),
+            2 => Some("falling"),
+            3 => Some("either"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            "rising" => Some(Self::RISING),
+            "falling" => Some(Self::FALLING),
+            "either" => Some(Self::EITHER),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioTimestampBehavior {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioTimestampBehavior({} {})", self.0, name),
+            None => write!(f, "GpioTimestampBehavior({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioTimestampBehavior {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioTimestampBehavior {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioTimestampBehavior"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO behavior for the UART feature.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioUartBehavior(pub u8);
+
+impl GpioUartBehavior {
+    /// No behavior.
+    pub const UNUSED: Self = Self(0);
+    /// UART_PORT2_TX: UART port 2 transmit.
+    pub const PORT2_TX: Self = Self(33);
+    /// UART_PORT2_RX: UART port 2 receive.
+    pub const PORT2_RX: Self = Self(34);
+    /// UART_PORT3_TX: UART port 3 transmit.
+    pub const PORT3_TX: Self = Self(49);
+    /// UART_PORT3_RX: UART port 3 receive.
+    pub const PORT3_RX: Self = Self(50);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            33 => Some("port2_tx"),
+            34 => Some("port2_rx"),
+            49 => Some("port3_tx"),
+            50 => Some("port3_rx"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            "port2_tx" => Some(Self::PORT2_TX),
+            "port2_rx" => Some(Self::PORT2_RX),
+            "port3_tx" => Some(Self::PORT3_TX),
+            "port3_rx" => Some(Self::PORT3_RX),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioUartBehavior {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioUartBehavior({} {})", self.0, name),
+            None => write!(f, "GpioUartBehavior({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioUartBehavior {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioUartBehavior {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioUartBehavior"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GPIO behavior for the UNUSED feature.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GpioUnusedBehavior(pub u8);
+
+impl GpioUnusedBehavior {
+    /// No behavior (0 unless otherwise specified).
+    pub const UNUSED: Self = Self(0);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unused"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unused" => Some(Self::UNUSED),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GpioUnusedBehavior {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GpioUnusedBehavior({} {})", self.0, name),
+            None => write!(f, "GpioUnusedBehavior({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GpioUnusedBehavior {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioUnusedBehavior {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GpioUnusedBehavior"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// GPS time field selector.
 ///
 /// Values the spec does not list are kept as they are.
@@ -3088,6 +4648,95 @@ impl crate::json_read::FromJson for GpsTimeField {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// GX5-45 basic device status. Remainder of the basic device status reply after the model number and selector echoes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gx5BasicStatus {
+    /// Status flags (reserved).
+    pub status_flags: u32,
+    /// System state (values not documented).
+    pub system_state: u16,
+    /// Time since start-up. Units: ms.
+    pub system_timer: u32,
+}
+
+impl Default for Gx5BasicStatus {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for Gx5BasicStatus {
+    const ZERO: Self = Self {
+        status_flags: <u32 as crate::wire::Wire>::ZERO,
+        system_state: <u16 as crate::wire::Wire>::ZERO,
+        system_timer: <u32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(10);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_status_flags =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("status_flags"))?;
+        let p_system_state =
+            <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("system_state"))?;
+        let p_system_timer =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("system_timer"))?;
+        Ok(Self {
+            status_flags: p_status_flags,
+            system_state: p_system_state,
+            system_timer: p_system_timer,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.status_flags;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("status_flags"))?;
+        let v = &self.system_state;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_state"))?;
+        let v = &self.system_timer;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_timer"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.status_flags;
+        crate::json::key(w, &mut first, "status_flags")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.system_state;
+        crate::json::key(w, &mut first, "system_state")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.system_timer;
+        crate::json::key(w, &mut first, "system_timer")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5BasicStatus {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["status_flags", "system_state", "system_timer"])?;
+        let p_status_flags = o.req(
+            "status_flags",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_system_state = o.req(
+            "system_state",
+            <u16 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_system_timer = o.req(
+            "system_timer",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            status_flags: p_status_flags,
+            system_state: p_system_state,
+            system_timer: p_system_timer,
+        })
     }
 }
 
@@ -3201,6 +4850,794 @@ impl crate::wire::Wire for Gx5BitFlags {
 impl crate::json_read::FromJson for Gx5BitFlags {
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
         <u32 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS constellation ID (GX5-45 constellation settings).
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Gx5ConstellationId(pub u8);
+
+impl Gx5ConstellationId {
+    /// GPS (G1-G32).
+    pub const GPS: Self = Self(0);
+    /// SBAS (S120-S158).
+    pub const SBAS: Self = Self(1);
+    /// Galileo (E1-E36).
+    pub const GALILEO: Self = Self(2);
+    /// BeiDou (B1-B37).
+    pub const BEIDOU: Self = Self(3);
+    /// QZSS (Q1-Q5).
+    pub const QZSS: Self = Self(5);
+    /// GLONASS (R1-R32).
+    pub const GLONASS: Self = Self(6);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("gps"),
+            1 => Some("sbas"),
+            2 => Some("galileo"),
+            3 => Some("beidou"),
+            5 => Some("qzss"),
+            6 => Some("glonass"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "gps" => Some(Self::GPS),
+            "sbas" => Some(Self::SBAS),
+            "galileo" => Some(Self::GALILEO),
+            "beidou" => Some(Self::BEIDOU),
+            "qzss" => Some(Self::QZSS),
+            "glonass" => Some(Self::GLONASS),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for Gx5ConstellationId {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "Gx5ConstellationId({} {})", self.0, name),
+            None => write!(f, "Gx5ConstellationId({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for Gx5ConstellationId {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5ConstellationId {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of Gx5ConstellationId"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GX5-45 device status structure.
+///
+/// A union: the member is chosen by the value of an earlier selector parameter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Gx5DeviceStatus {
+    /// Selected by basic (1).
+    Basic(crate::types::Gx5BasicStatus),
+    /// Selected by diagnostic (2).
+    Diagnostic(crate::types::Gx5DiagnosticStatus),
+}
+
+impl Gx5DeviceStatus {
+    /// The first member with zero values.
+    pub const ZERO: Self = Self::Basic(<crate::types::Gx5BasicStatus as crate::wire::Wire>::ZERO);
+
+    /// Selector value of this member.
+    pub fn selector_value(&self) -> u8 {
+        match self {
+            Self::Basic(_) => 1,
+            Self::Diagnostic(_) => 2,
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    pub fn decode_selected(
+        r: &mut crate::wire::Reader<'_>,
+        selector: u8,
+    ) -> Result<Self, crate::error::DecodeError> {
+        match selector {
+            1 => <crate::types::Gx5BasicStatus as crate::wire::Wire>::decode(r).map(Self::Basic),
+            2 => <crate::types::Gx5DiagnosticStatus as crate::wire::Wire>::decode(r)
+                .map(Self::Diagnostic),
+            value => {
+                let _ = r;
+                Err(crate::error::DecodeError::new(
+                    crate::error::DecodeErrorKind::NoMember {
+                        value: i128::from(value),
+                    },
+                ))
+            }
+        }
+    }
+
+    /// Writes the member after checking that `selector` chooses it.
+    pub fn encode_selected(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+        selector: u8,
+    ) -> Result<(), crate::error::EncodeError> {
+        if self.selector_value() != selector {
+            return Err(crate::error::EncodeError::new(
+                crate::error::EncodeErrorKind::UnionMismatch {
+                    value: i128::from(selector),
+                },
+            ));
+        }
+        match self {
+            Self::Basic(v) => crate::wire::Wire::encode(v, w),
+            Self::Diagnostic(v) => crate::wire::Wire::encode(v, w),
+        }
+    }
+
+    /// Writes the member's struct, or `null` for a member without data.
+    pub fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::Basic(v) => crate::wire::Wire::write_json(v, w),
+            Self::Diagnostic(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    #[cfg(feature = "std")]
+    pub fn from_json_selected(
+        v: &crate::json_read::Json,
+        selector: u8,
+    ) -> Result<Self, crate::json_read::JsonError> {
+        match selector {
+            1 => <crate::types::Gx5BasicStatus as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Basic),
+            2 => <crate::types::Gx5DiagnosticStatus as crate::json_read::FromJson>::from_json(v)
+                .map(Self::Diagnostic),
+            value => Err(crate::json_read::JsonError::new(std::format!(
+                "no member for selector value {value}"
+            ))),
+        }
+    }
+}
+
+/// GX5-45 diagnostic device status. Remainder of the diagnostic device status reply after the model number and selector echoes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gx5DiagnosticStatus {
+    /// Status flags (reserved).
+    pub status_flags: u32,
+    /// System state (values not documented).
+    pub system_state: u16,
+    /// Time since start-up. Units: ms.
+    pub system_timer: u32,
+    /// GNSS receiver power: 1 on, 0 off.
+    pub gnss_power_state: u8,
+    /// Number of 1PPS pulses received. Units: count.
+    pub pps_pulse_count: u32,
+    /// System timer value at the last 1PPS pulse. Units: ms.
+    pub last_pps_time: u32,
+    /// IMU stream: 1 on, 0 off.
+    pub imu_stream_enabled: u8,
+    /// GNSS stream: 1 on, 0 off.
+    pub gnss_stream_enabled: u8,
+    /// Estimation filter stream: 1 on, 0 off.
+    pub filter_stream_enabled: u8,
+    /// Outgoing IMU stream packets dropped. Units: count.
+    pub imu_dropped_packets: u32,
+    /// Outgoing GNSS stream packets dropped. Units: count.
+    pub gnss_dropped_packets: u32,
+    /// Outgoing estimation filter stream packets dropped. Units: count.
+    pub filter_dropped_packets: u32,
+    /// Bytes written to the com port. Units: count.
+    pub com_bytes_written: u32,
+    /// Bytes read from the com port. Units: count.
+    pub com_bytes_read: u32,
+    /// Overruns when writing to the com port. Units: count.
+    pub com_write_overruns: u32,
+    /// IMU message parsing errors. Units: count.
+    pub imu_parse_errors: u32,
+    /// IMU messages read in total. Units: count.
+    pub imu_messages_read: u32,
+    /// System timer value at the last IMU message read. Units: ms.
+    pub last_imu_message_time: u32,
+    /// GNSS message parsing errors. Units: count.
+    pub gnss_parse_errors: u32,
+    /// GNSS messages read in total. Units: count.
+    pub gnss_messages_read: u32,
+    /// System timer value at the last GNSS message read. Units: ms.
+    pub last_gnss_message_time: u32,
+}
+
+impl Default for Gx5DiagnosticStatus {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for Gx5DiagnosticStatus {
+    const ZERO: Self = Self {
+        status_flags: <u32 as crate::wire::Wire>::ZERO,
+        system_state: <u16 as crate::wire::Wire>::ZERO,
+        system_timer: <u32 as crate::wire::Wire>::ZERO,
+        gnss_power_state: <u8 as crate::wire::Wire>::ZERO,
+        pps_pulse_count: <u32 as crate::wire::Wire>::ZERO,
+        last_pps_time: <u32 as crate::wire::Wire>::ZERO,
+        imu_stream_enabled: <u8 as crate::wire::Wire>::ZERO,
+        gnss_stream_enabled: <u8 as crate::wire::Wire>::ZERO,
+        filter_stream_enabled: <u8 as crate::wire::Wire>::ZERO,
+        imu_dropped_packets: <u32 as crate::wire::Wire>::ZERO,
+        gnss_dropped_packets: <u32 as crate::wire::Wire>::ZERO,
+        filter_dropped_packets: <u32 as crate::wire::Wire>::ZERO,
+        com_bytes_written: <u32 as crate::wire::Wire>::ZERO,
+        com_bytes_read: <u32 as crate::wire::Wire>::ZERO,
+        com_write_overruns: <u32 as crate::wire::Wire>::ZERO,
+        imu_parse_errors: <u32 as crate::wire::Wire>::ZERO,
+        imu_messages_read: <u32 as crate::wire::Wire>::ZERO,
+        last_imu_message_time: <u32 as crate::wire::Wire>::ZERO,
+        gnss_parse_errors: <u32 as crate::wire::Wire>::ZERO,
+        gnss_messages_read: <u32 as crate::wire::Wire>::ZERO,
+        last_gnss_message_time: <u32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(70);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_status_flags =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("status_flags"))?;
+        let p_system_state =
+            <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("system_state"))?;
+        let p_system_timer =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("system_timer"))?;
+        let p_gnss_power_state =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gnss_power_state"))?;
+        let p_pps_pulse_count =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pps_pulse_count"))?;
+        let p_last_pps_time =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("last_pps_time"))?;
+        let p_imu_stream_enabled =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("imu_stream_enabled"))?;
+        let p_gnss_stream_enabled =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gnss_stream_enabled"))?;
+        let p_filter_stream_enabled =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("filter_stream_enabled"))?;
+        let p_imu_dropped_packets =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("imu_dropped_packets"))?;
+        let p_gnss_dropped_packets =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gnss_dropped_packets"))?;
+        let p_filter_dropped_packets =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("filter_dropped_packets"))?;
+        let p_com_bytes_written =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("com_bytes_written"))?;
+        let p_com_bytes_read =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("com_bytes_read"))?;
+        let p_com_write_overruns =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("com_write_overruns"))?;
+        let p_imu_parse_errors =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("imu_parse_errors"))?;
+        let p_imu_messages_read =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("imu_messages_read"))?;
+        let p_last_imu_message_time =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("last_imu_message_time"))?;
+        let p_gnss_parse_errors =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gnss_parse_errors"))?;
+        let p_gnss_messages_read =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gnss_messages_read"))?;
+        let p_last_gnss_message_time =
+            <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("last_gnss_message_time"))?;
+        Ok(Self {
+            status_flags: p_status_flags,
+            system_state: p_system_state,
+            system_timer: p_system_timer,
+            gnss_power_state: p_gnss_power_state,
+            pps_pulse_count: p_pps_pulse_count,
+            last_pps_time: p_last_pps_time,
+            imu_stream_enabled: p_imu_stream_enabled,
+            gnss_stream_enabled: p_gnss_stream_enabled,
+            filter_stream_enabled: p_filter_stream_enabled,
+            imu_dropped_packets: p_imu_dropped_packets,
+            gnss_dropped_packets: p_gnss_dropped_packets,
+            filter_dropped_packets: p_filter_dropped_packets,
+            com_bytes_written: p_com_bytes_written,
+            com_bytes_read: p_com_bytes_read,
+            com_write_overruns: p_com_write_overruns,
+            imu_parse_errors: p_imu_parse_errors,
+            imu_messages_read: p_imu_messages_read,
+            last_imu_message_time: p_last_imu_message_time,
+            gnss_parse_errors: p_gnss_parse_errors,
+            gnss_messages_read: p_gnss_messages_read,
+            last_gnss_message_time: p_last_gnss_message_time,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.status_flags;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("status_flags"))?;
+        let v = &self.system_state;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_state"))?;
+        let v = &self.system_timer;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_timer"))?;
+        let v = &self.gnss_power_state;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_power_state"))?;
+        let v = &self.pps_pulse_count;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("pps_pulse_count"))?;
+        let v = &self.last_pps_time;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("last_pps_time"))?;
+        let v = &self.imu_stream_enabled;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_stream_enabled"))?;
+        let v = &self.gnss_stream_enabled;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_stream_enabled"))?;
+        let v = &self.filter_stream_enabled;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("filter_stream_enabled"))?;
+        let v = &self.imu_dropped_packets;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_dropped_packets"))?;
+        let v = &self.gnss_dropped_packets;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_dropped_packets"))?;
+        let v = &self.filter_dropped_packets;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("filter_dropped_packets"))?;
+        let v = &self.com_bytes_written;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("com_bytes_written"))?;
+        let v = &self.com_bytes_read;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("com_bytes_read"))?;
+        let v = &self.com_write_overruns;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("com_write_overruns"))?;
+        let v = &self.imu_parse_errors;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_parse_errors"))?;
+        let v = &self.imu_messages_read;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_messages_read"))?;
+        let v = &self.last_imu_message_time;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("last_imu_message_time"))?;
+        let v = &self.gnss_parse_errors;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_parse_errors"))?;
+        let v = &self.gnss_messages_read;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_messages_read"))?;
+        let v = &self.last_gnss_message_time;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("last_gnss_message_time"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.status_flags;
+        crate::json::key(w, &mut first, "status_flags")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.system_state;
+        crate::json::key(w, &mut first, "system_state")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.system_timer;
+        crate::json::key(w, &mut first, "system_timer")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_power_state;
+        crate::json::key(w, &mut first, "gnss_power_state")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.pps_pulse_count;
+        crate::json::key(w, &mut first, "pps_pulse_count")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.last_pps_time;
+        crate::json::key(w, &mut first, "last_pps_time")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_stream_enabled;
+        crate::json::key(w, &mut first, "imu_stream_enabled")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_stream_enabled;
+        crate::json::key(w, &mut first, "gnss_stream_enabled")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.filter_stream_enabled;
+        crate::json::key(w, &mut first, "filter_stream_enabled")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_dropped_packets;
+        crate::json::key(w, &mut first, "imu_dropped_packets")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_dropped_packets;
+        crate::json::key(w, &mut first, "gnss_dropped_packets")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.filter_dropped_packets;
+        crate::json::key(w, &mut first, "filter_dropped_packets")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.com_bytes_written;
+        crate::json::key(w, &mut first, "com_bytes_written")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.com_bytes_read;
+        crate::json::key(w, &mut first, "com_bytes_read")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.com_write_overruns;
+        crate::json::key(w, &mut first, "com_write_overruns")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_parse_errors;
+        crate::json::key(w, &mut first, "imu_parse_errors")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_messages_read;
+        crate::json::key(w, &mut first, "imu_messages_read")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.last_imu_message_time;
+        crate::json::key(w, &mut first, "last_imu_message_time")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_parse_errors;
+        crate::json::key(w, &mut first, "gnss_parse_errors")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_messages_read;
+        crate::json::key(w, &mut first, "gnss_messages_read")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.last_gnss_message_time;
+        crate::json::key(w, &mut first, "last_gnss_message_time")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5DiagnosticStatus {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "status_flags",
+                "system_state",
+                "system_timer",
+                "gnss_power_state",
+                "pps_pulse_count",
+                "last_pps_time",
+                "imu_stream_enabled",
+                "gnss_stream_enabled",
+                "filter_stream_enabled",
+                "imu_dropped_packets",
+                "gnss_dropped_packets",
+                "filter_dropped_packets",
+                "com_bytes_written",
+                "com_bytes_read",
+                "com_write_overruns",
+                "imu_parse_errors",
+                "imu_messages_read",
+                "last_imu_message_time",
+                "gnss_parse_errors",
+                "gnss_messages_read",
+                "last_gnss_message_time",
+            ],
+        )?;
+        let p_status_flags = o.req(
+            "status_flags",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_system_state = o.req(
+            "system_state",
+            <u16 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_system_timer = o.req(
+            "system_timer",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_power_state = o.req(
+            "gnss_power_state",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_pps_pulse_count = o.req(
+            "pps_pulse_count",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_last_pps_time = o.req(
+            "last_pps_time",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_stream_enabled = o.req(
+            "imu_stream_enabled",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_stream_enabled = o.req(
+            "gnss_stream_enabled",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_filter_stream_enabled = o.req(
+            "filter_stream_enabled",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_dropped_packets = o.req(
+            "imu_dropped_packets",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_dropped_packets = o.req(
+            "gnss_dropped_packets",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_filter_dropped_packets = o.req(
+            "filter_dropped_packets",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_com_bytes_written = o.req(
+            "com_bytes_written",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_com_bytes_read = o.req(
+            "com_bytes_read",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_com_write_overruns = o.req(
+            "com_write_overruns",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_parse_errors = o.req(
+            "imu_parse_errors",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_messages_read = o.req(
+            "imu_messages_read",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_last_imu_message_time = o.req(
+            "last_imu_message_time",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_parse_errors = o.req(
+            "gnss_parse_errors",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_messages_read = o.req(
+            "gnss_messages_read",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_last_gnss_message_time = o.req(
+            "last_gnss_message_time",
+            <u32 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            status_flags: p_status_flags,
+            system_state: p_system_state,
+            system_timer: p_system_timer,
+            gnss_power_state: p_gnss_power_state,
+            pps_pulse_count: p_pps_pulse_count,
+            last_pps_time: p_last_pps_time,
+            imu_stream_enabled: p_imu_stream_enabled,
+            gnss_stream_enabled: p_gnss_stream_enabled,
+            filter_stream_enabled: p_filter_stream_enabled,
+            imu_dropped_packets: p_imu_dropped_packets,
+            gnss_dropped_packets: p_gnss_dropped_packets,
+            filter_dropped_packets: p_filter_dropped_packets,
+            com_bytes_written: p_com_bytes_written,
+            com_bytes_read: p_com_bytes_read,
+            com_write_overruns: p_com_write_overruns,
+            imu_parse_errors: p_imu_parse_errors,
+            imu_messages_read: p_imu_messages_read,
+            last_imu_message_time: p_last_imu_message_time,
+            gnss_parse_errors: p_gnss_parse_errors,
+            gnss_messages_read: p_gnss_messages_read,
+            last_gnss_message_time: p_last_gnss_message_time,
+        })
+    }
+}
+
+/// Poll format entry (GX5-45).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gx5PollDescriptor {
+    /// Data field descriptor to include in the polled packet.
+    pub descriptor: u8,
+    /// Reserved; 0 in every example.
+    pub reserved: u16,
+}
+
+impl Default for Gx5PollDescriptor {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for Gx5PollDescriptor {
+    const ZERO: Self = Self {
+        descriptor: <u8 as crate::wire::Wire>::ZERO,
+        reserved: <u16 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(3);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_descriptor = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("descriptor"))?;
+        let p_reserved = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved"))?;
+        Ok(Self {
+            descriptor: p_descriptor,
+            reserved: p_reserved,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.descriptor;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("descriptor"))?;
+        let v = &self.reserved;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.descriptor;
+        crate::json::key(w, &mut first, "descriptor")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved;
+        crate::json::key(w, &mut first, "reserved")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5PollDescriptor {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["descriptor", "reserved"])?;
+        let p_descriptor = o.req("descriptor", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_reserved = o.req("reserved", <u16 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            descriptor: p_descriptor,
+            reserved: p_reserved,
+        })
+    }
+}
+
+/// Poll option selector. First byte of the GX5-45 poll commands; chooses whether the ACK/NACK is sent.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Gx5PollOption(pub u8);
+
+impl Gx5PollOption {
+    /// Normal ACK/NACK reply.
+    pub const NORMAL: Self = Self(0);
+    /// No ACK/NACK reply; only the data packet is sent.
+    pub const SUPPRESS_ACK: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("normal"),
+            1 => Some("suppress_ack"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "normal" => Some(Self::NORMAL),
+            "suppress_ack" => Some(Self::SUPPRESS_ACK),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for Gx5PollOption {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "Gx5PollOption({} {})", self.0, name),
+            None => write!(f, "Gx5PollOption({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for Gx5PollOption {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5PollOption {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of Gx5PollOption"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Continuous data stream selector (GX5-45). Which data stream the GX5-45 Enable/Disable Continuous Data Stream command controls.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Gx5StreamSelector(pub u8);
+
+impl Gx5StreamSelector {
+    /// IMU data stream (set 0x80).
+    pub const IMU: Self = Self(1);
+    /// Estimation filter data stream (set 0x82).
+    pub const ESTIMATION_FILTER: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("imu"),
+            3 => Some("estimation_filter"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "imu" => Some(Self::IMU),
+            "estimation_filter" => Some(Self::ESTIMATION_FILTER),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for Gx5StreamSelector {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "Gx5StreamSelector({} {})", self.0, name),
+            None => write!(f, "Gx5StreamSelector({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for Gx5StreamSelector {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Gx5StreamSelector {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of Gx5StreamSelector"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
     }
 }
 
@@ -3573,6 +6010,174 @@ impl crate::json_read::FromJson for MessageParams {
     }
 }
 
+/// NMEA message format entry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NmeaMessage {
+    /// NMEA sentence type (GGA, GLL, GSV, RMC, VTG, HDT, ZDA, GST, PMSRA, PMSRR; codes not documented).
+    pub message_id: u8,
+    /// Talker ID (GN, GP, GA, GL; ignored for GSV and proprietary sentences; codes not documented).
+    pub talker_id: u8,
+    /// Data descriptor set the sentence is built from (IMU, filter, GNSS 1 or 2).
+    pub source_desc_set: u8,
+    /// Decimation relative to the base rate of the source descriptor set.
+    pub decimation: u16,
+}
+
+impl Default for NmeaMessage {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for NmeaMessage {
+    const ZERO: Self = Self {
+        message_id: <u8 as crate::wire::Wire>::ZERO,
+        talker_id: <u8 as crate::wire::Wire>::ZERO,
+        source_desc_set: <u8 as crate::wire::Wire>::ZERO,
+        decimation: <u16 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_message_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("message_id"))?;
+        let p_talker_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("talker_id"))?;
+        let p_source_desc_set =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("source_desc_set"))?;
+        let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
+        Ok(Self {
+            message_id: p_message_id,
+            talker_id: p_talker_id,
+            source_desc_set: p_source_desc_set,
+            decimation: p_decimation,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.message_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("message_id"))?;
+        let v = &self.talker_id;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("talker_id"))?;
+        let v = &self.source_desc_set;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("source_desc_set"))?;
+        let v = &self.decimation;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("decimation"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.message_id;
+        crate::json::key(w, &mut first, "message_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.talker_id;
+        crate::json::key(w, &mut first, "talker_id")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.source_desc_set;
+        crate::json::key(w, &mut first, "source_desc_set")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.decimation;
+        crate::json::key(w, &mut first, "decimation")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for NmeaMessage {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &["message_id", "talker_id", "source_desc_set", "decimation"],
+        )?;
+        let p_message_id = o.req("message_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_talker_id = o.req("talker_id", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_source_desc_set = o.req(
+            "source_desc_set",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_decimation = o.req("decimation", <u16 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            message_id: p_message_id,
+            talker_id: p_talker_id,
+            source_desc_set: p_source_desc_set,
+            decimation: p_decimation,
+        })
+    }
+}
+
+/// Odometer mode.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct OdometerMode(pub u8);
+
+impl OdometerMode {
+    /// Encoder disabled.
+    pub const DISABLED: Self = Self(0);
+    /// Quadrature encoder mode.
+    pub const QUADRATURE: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("disabled"),
+            2 => Some("quadrature"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "disabled" => Some(Self::DISABLED),
+            "quadrature" => Some(Self::QUADRATURE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for OdometerMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "OdometerMode({} {})", self.0, name),
+            None => write!(f, "OdometerMode({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for OdometerMode {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for OdometerMode {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of OdometerMode"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// Pitch/roll aiding source.
 ///
 /// Values the spec does not list are kept as they are.
@@ -3638,6 +6243,90 @@ impl crate::json_read::FromJson for PitchRollAidingSource {
             crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
                 crate::json_read::JsonError::new(std::format!(
                     "\"{name}\" is not a value of PitchRollAidingSource"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// PPS source.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct PpsSource(pub u8);
+
+impl PpsSource {
+    /// No PPS (the table says it is not valid as a command value; see note).
+    pub const DISABLED: Self = Self(0);
+    /// PPS from GNSS receiver 1.
+    pub const RECEIVER_1: Self = Self(1);
+    /// PPS from GNSS receiver 2.
+    pub const RECEIVER_2: Self = Self(2);
+    /// PPS applied to a GPIO pin (pin chosen with GPIO Configuration 0x0C,0x41).
+    pub const GPIO: Self = Self(3);
+    /// PPS generated from the system oscillator.
+    pub const GENERATED: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("disabled"),
+            1 => Some("receiver_1"),
+            2 => Some("receiver_2"),
+            3 => Some("gpio"),
+            4 => Some("generated"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "disabled" => Some(Self::DISABLED),
+            "receiver_1" => Some(Self::RECEIVER_1),
+            "receiver_2" => Some(Self::RECEIVER_2),
+            "gpio" => Some(Self::GPIO),
+            "generated" => Some(Self::GENERATED),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for PpsSource {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "PpsSource({} {})", self.0, name),
+            None => write!(f, "PpsSource({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for PpsSource {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for PpsSource {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of PpsSource"
                 ))
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
@@ -3785,6 +6474,236 @@ impl crate::json_read::FromJson for RelativePositionSource {
     }
 }
 
+/// SBAS options.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SbasOptions(pub u16);
+
+impl SbasOptions {
+    /// Mask of `enable_ranging` (bit 0).
+    pub const ENABLE_RANGING: u16 = 0x0001;
+    /// Mask of `enable_corrections` (bit 1).
+    pub const ENABLE_CORRECTIONS: u16 = 0x0002;
+    /// Mask of `apply_integrity` (bit 2).
+    pub const APPLY_INTEGRITY: u16 = 0x0004;
+
+    /// Use SBAS pseudoranges in the position solution (GX5-45 default on). (bit 0)
+    pub const fn enable_ranging(self) -> bool {
+        self.0 & Self::ENABLE_RANGING != 0
+    }
+
+    /// Sets or clears `enable_ranging` (bit 0).
+    pub fn set_enable_ranging(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ENABLE_RANGING;
+        } else {
+            self.0 &= !Self::ENABLE_RANGING;
+        }
+    }
+
+    /// Use SBAS differential corrections (GX5-45 default on). (bit 1)
+    pub const fn enable_corrections(self) -> bool {
+        self.0 & Self::ENABLE_CORRECTIONS != 0
+    }
+
+    /// Sets or clears `enable_corrections` (bit 1).
+    pub fn set_enable_corrections(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ENABLE_CORRECTIONS;
+        } else {
+            self.0 &= !Self::ENABLE_CORRECTIONS;
+        }
+    }
+
+    /// Use SBAS integrity information; only satellites with integrity data are used. (bit 2)
+    pub const fn apply_integrity(self) -> bool {
+        self.0 & Self::APPLY_INTEGRITY != 0
+    }
+
+    /// Sets or clears `apply_integrity` (bit 2).
+    pub fn set_apply_integrity(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::APPLY_INTEGRITY;
+        } else {
+            self.0 &= !Self::APPLY_INTEGRITY;
+        }
+    }
+}
+
+impl crate::wire::Wire for SbasOptions {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SbasOptions {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Calibrated sensor range entry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SensorRangeEntry {
+    /// Value to use as setting in Sensor Range (0x0C,0x52).
+    pub setting: u8,
+    /// Range this setting gives; units depend on the sensor (see SensorRangeType).
+    pub range: f32,
+}
+
+impl Default for SensorRangeEntry {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SensorRangeEntry {
+    const ZERO: Self = Self {
+        setting: <u8 as crate::wire::Wire>::ZERO,
+        range: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(5);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_setting = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("setting"))?;
+        let p_range = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("range"))?;
+        Ok(Self {
+            setting: p_setting,
+            range: p_range,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.setting;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("setting"))?;
+        let v = &self.range;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("range"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.setting;
+        crate::json::key(w, &mut first, "setting")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.range;
+        crate::json::key(w, &mut first, "range")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SensorRangeEntry {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["setting", "range"])?;
+        let p_setting = o.req("setting", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_range = o.req("range", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            setting: p_setting,
+            range: p_range,
+        })
+    }
+}
+
+/// Sensor whose range is set or queried.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SensorRangeType(pub u8);
+
+impl SensorRangeType {
+    /// All sensors; only with save, load and default.
+    pub const ALL: Self = Self(0);
+    /// Accelerometer; range in g.
+    pub const ACCEL: Self = Self(1);
+    /// Gyroscope; range in degrees/s.
+    pub const GYRO: Self = Self(2);
+    /// Magnetometer; range in Gauss.
+    pub const MAG: Self = Self(3);
+    /// Pressure sensor; range in hPa.
+    pub const PRESS: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("all"),
+            1 => Some("accel"),
+            2 => Some("gyro"),
+            3 => Some("mag"),
+            4 => Some("press"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "all" => Some(Self::ALL),
+            "accel" => Some(Self::ACCEL),
+            "gyro" => Some(Self::GYRO),
+            "mag" => Some(Self::MAG),
+            "press" => Some(Self::PRESS),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for SensorRangeType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "SensorRangeType({} {})", self.0, name),
+            None => write!(f, "SensorRangeType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for SensorRangeType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SensorRangeType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of SensorRangeType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// SPARTN connection type.
 ///
 /// Values the spec does not list are kept as they are.
@@ -3858,6 +6777,483 @@ impl crate::json_read::FromJson for SpartnConnectionType {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Supported action type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SupportedActionType {
+    /// Action type, as in Event Action Configuration (0x0C,0x2F).
+    pub r#type: crate::types::ActionType,
+    /// Maximum number of instances of this type.
+    pub count: u8,
+}
+
+impl Default for SupportedActionType {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SupportedActionType {
+    const ZERO: Self = Self {
+        r#type: <crate::types::ActionType as crate::wire::Wire>::ZERO,
+        count: <u8 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_type =
+            <crate::types::ActionType as crate::wire::Wire>::decode(r).map_err(|e| e.at("type"))?;
+        let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
+        Ok(Self {
+            r#type: p_type,
+            count: p_count,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.r#type;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("type"))?;
+        let v = &self.count;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("count"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.r#type;
+        crate::json::key(w, &mut first, "type")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.count;
+        crate::json::key(w, &mut first, "count")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SupportedActionType {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["type", "count"])?;
+        let p_type = o.req(
+            "type",
+            <crate::types::ActionType as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_count = o.req("count", <u8 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            r#type: p_type,
+            count: p_count,
+        })
+    }
+}
+
+/// Supported actions (query = action types).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SupportedActions {
+    /// Number of action slots; instance numbers run 1..max_instances.
+    pub max_instances: u8,
+    /// Number of supported action types.
+    pub num_entries: u8,
+    /// Supported action types.
+    pub entries: crate::bounded::BoundedVec<crate::types::SupportedActionType, 125>,
+}
+
+impl Default for SupportedActions {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SupportedActions {
+    const ZERO: Self = Self {
+        max_instances: <u8 as crate::wire::Wire>::ZERO,
+        num_entries: <u8 as crate::wire::Wire>::ZERO,
+        entries: <crate::bounded::BoundedVec<crate::types::SupportedActionType, 125> as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_max_instances =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_instances"))?;
+        let p_num_entries =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_entries"))?;
+        let p_entries =
+            crate::bounded::BoundedVec::<crate::types::SupportedActionType, 125>::decode_counted(
+                r,
+                u64::from(p_num_entries),
+            )
+            .map_err(|e| e.at("entries"))?;
+        Ok(Self {
+            max_instances: p_max_instances,
+            num_entries: p_num_entries,
+            entries: p_entries,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.max_instances;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_instances"))?;
+        let v = &self.num_entries;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_entries"))?;
+        let v = &self.entries;
+        v.encode_counted(w, u64::from(self.num_entries))
+            .map_err(|e| e.at("entries"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.max_instances;
+        crate::json::key(w, &mut first, "max_instances")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.num_entries;
+        crate::json::key(w, &mut first, "num_entries")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.entries;
+        crate::json::key(w, &mut first, "entries")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SupportedActions {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["max_instances", "num_entries", "entries"])?;
+        let p_max_instances = o.req(
+            "max_instances",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_num_entries = o.req("num_entries", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_entries = o.req("entries", <crate::bounded::BoundedVec<crate::types::SupportedActionType, 125> as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            max_instances: p_max_instances,
+            num_entries: p_num_entries,
+            entries: p_entries,
+        })
+    }
+}
+
+/// Supported event types, by query.
+///
+/// A union: the member is chosen by the value of an earlier selector parameter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SupportedEventsInfo {
+    /// Selected by trigger_types (1).
+    TriggerTypes(crate::types::SupportedTriggers),
+    /// Selected by action_types (2).
+    ActionTypes(crate::types::SupportedActions),
+}
+
+impl SupportedEventsInfo {
+    /// The first member with zero values.
+    pub const ZERO: Self =
+        Self::TriggerTypes(<crate::types::SupportedTriggers as crate::wire::Wire>::ZERO);
+
+    /// Selector value of this member.
+    pub fn selector_value(&self) -> u8 {
+        match self {
+            Self::TriggerTypes(_) => 1,
+            Self::ActionTypes(_) => 2,
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    pub fn decode_selected(
+        r: &mut crate::wire::Reader<'_>,
+        selector: u8,
+    ) -> Result<Self, crate::error::DecodeError> {
+        match selector {
+            1 => <crate::types::SupportedTriggers as crate::wire::Wire>::decode(r)
+                .map(Self::TriggerTypes),
+            2 => <crate::types::SupportedActions as crate::wire::Wire>::decode(r)
+                .map(Self::ActionTypes),
+            value => {
+                let _ = r;
+                Err(crate::error::DecodeError::new(
+                    crate::error::DecodeErrorKind::NoMember {
+                        value: i128::from(value),
+                    },
+                ))
+            }
+        }
+    }
+
+    /// Writes the member after checking that `selector` chooses it.
+    pub fn encode_selected(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+        selector: u8,
+    ) -> Result<(), crate::error::EncodeError> {
+        if self.selector_value() != selector {
+            return Err(crate::error::EncodeError::new(
+                crate::error::EncodeErrorKind::UnionMismatch {
+                    value: i128::from(selector),
+                },
+            ));
+        }
+        match self {
+            Self::TriggerTypes(v) => crate::wire::Wire::encode(v, w),
+            Self::ActionTypes(v) => crate::wire::Wire::encode(v, w),
+        }
+    }
+
+    /// Writes the member's struct, or `null` for a member without data.
+    pub fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::TriggerTypes(v) => crate::wire::Wire::write_json(v, w),
+            Self::ActionTypes(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Reads the member selected by `selector`.
+    #[cfg(feature = "std")]
+    pub fn from_json_selected(
+        v: &crate::json_read::Json,
+        selector: u8,
+    ) -> Result<Self, crate::json_read::JsonError> {
+        match selector {
+            1 => <crate::types::SupportedTriggers as crate::json_read::FromJson>::from_json(v)
+                .map(Self::TriggerTypes),
+            2 => <crate::types::SupportedActions as crate::json_read::FromJson>::from_json(v)
+                .map(Self::ActionTypes),
+            value => Err(crate::json_read::JsonError::new(std::format!(
+                "no member for selector value {value}"
+            ))),
+        }
+    }
+}
+
+/// Supported events query.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SupportedEventsQuery(pub u8);
+
+impl SupportedEventsQuery {
+    /// Report the supported trigger types and how many of each.
+    pub const TRIGGER_TYPES: Self = Self(1);
+    /// Report the supported action types and how many of each.
+    pub const ACTION_TYPES: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("trigger_types"),
+            2 => Some("action_types"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "trigger_types" => Some(Self::TRIGGER_TYPES),
+            "action_types" => Some(Self::ACTION_TYPES),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for SupportedEventsQuery {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "SupportedEventsQuery({} {})", self.0, name),
+            None => write!(f, "SupportedEventsQuery({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for SupportedEventsQuery {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SupportedEventsQuery {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of SupportedEventsQuery"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Supported trigger type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SupportedTriggerType {
+    /// Trigger type, as in Event Trigger Configuration (0x0C,0x2E).
+    pub r#type: crate::types::TriggerType,
+    /// Maximum number of instances of this type.
+    pub count: u8,
+}
+
+impl Default for SupportedTriggerType {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SupportedTriggerType {
+    const ZERO: Self = Self {
+        r#type: <crate::types::TriggerType as crate::wire::Wire>::ZERO,
+        count: <u8 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("type"))?;
+        let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
+        Ok(Self {
+            r#type: p_type,
+            count: p_count,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.r#type;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("type"))?;
+        let v = &self.count;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("count"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.r#type;
+        crate::json::key(w, &mut first, "type")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.count;
+        crate::json::key(w, &mut first, "count")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SupportedTriggerType {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["type", "count"])?;
+        let p_type = o.req(
+            "type",
+            <crate::types::TriggerType as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_count = o.req("count", <u8 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            r#type: p_type,
+            count: p_count,
+        })
+    }
+}
+
+/// Supported triggers (query = trigger types).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SupportedTriggers {
+    /// Number of trigger slots; instance numbers run 1..max_instances.
+    pub max_instances: u8,
+    /// Number of supported trigger types.
+    pub num_entries: u8,
+    /// Supported trigger types.
+    pub entries: crate::bounded::BoundedVec<crate::types::SupportedTriggerType, 125>,
+}
+
+impl Default for SupportedTriggers {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for SupportedTriggers {
+    const ZERO: Self = Self {
+        max_instances: <u8 as crate::wire::Wire>::ZERO,
+        num_entries: <u8 as crate::wire::Wire>::ZERO,
+        entries: <crate::bounded::BoundedVec<crate::types::SupportedTriggerType, 125> as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = None;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_max_instances =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_instances"))?;
+        let p_num_entries =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_entries"))?;
+        let p_entries =
+            crate::bounded::BoundedVec::<crate::types::SupportedTriggerType, 125>::decode_counted(
+                r,
+                u64::from(p_num_entries),
+            )
+            .map_err(|e| e.at("entries"))?;
+        Ok(Self {
+            max_instances: p_max_instances,
+            num_entries: p_num_entries,
+            entries: p_entries,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.max_instances;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_instances"))?;
+        let v = &self.num_entries;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_entries"))?;
+        let v = &self.entries;
+        v.encode_counted(w, u64::from(self.num_entries))
+            .map_err(|e| e.at("entries"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.max_instances;
+        crate::json::key(w, &mut first, "max_instances")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.num_entries;
+        crate::json::key(w, &mut first, "num_entries")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.entries;
+        crate::json::key(w, &mut first, "entries")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SupportedTriggers {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["max_instances", "num_entries", "entries"])?;
+        let p_max_instances = o.req(
+            "max_instances",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_num_entries = o.req("num_entries", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_entries = o.req("entries", <crate::bounded::BoundedVec<crate::types::SupportedTriggerType, 125> as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            max_instances: p_max_instances,
+            num_entries: p_num_entries,
+            entries: p_entries,
+        })
     }
 }
 

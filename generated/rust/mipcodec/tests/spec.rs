@@ -757,6 +757,19 @@ fn bitfield_aidingvectorvalidflags_accessors() {
 }
 
 #[test]
+fn bitfield_constellationoptions_accessors() {
+    use mipcodec::types::ConstellationOptions;
+    let mut v = ConstellationOptions(0);
+    v.set_l1saif(true);
+    assert_eq!(v.0, 0x01, "l1saif");
+    assert!(v.l1saif());
+    let mut v = ConstellationOptions(!0);
+    v.set_l1saif(false);
+    assert_eq!(v.0, !0x01, "l1saif");
+    assert!(!v.l1saif());
+}
+
+#[test]
 fn bitfield_cv7bitflags_accessors() {
     use mipcodec::types::Cv7BitFlags;
     let mut v = Cv7BitFlags(0);
@@ -1075,6 +1088,35 @@ fn bitfield_gnssgpssignals_accessors() {
 }
 
 #[test]
+fn bitfield_gpiopinmode_accessors() {
+    use mipcodec::types::GpioPinMode;
+    let mut v = GpioPinMode(0);
+    v.set_open_drain(true);
+    assert_eq!(v.0, 0x01, "open_drain");
+    assert!(v.open_drain());
+    let mut v = GpioPinMode(!0);
+    v.set_open_drain(false);
+    assert_eq!(v.0, !0x01, "open_drain");
+    assert!(!v.open_drain());
+    let mut v = GpioPinMode(0);
+    v.set_pulldown(true);
+    assert_eq!(v.0, 0x02, "pulldown");
+    assert!(v.pulldown());
+    let mut v = GpioPinMode(!0);
+    v.set_pulldown(false);
+    assert_eq!(v.0, !0x02, "pulldown");
+    assert!(!v.pulldown());
+    let mut v = GpioPinMode(0);
+    v.set_pullup(true);
+    assert_eq!(v.0, 0x04, "pullup");
+    assert!(v.pullup());
+    let mut v = GpioPinMode(!0);
+    v.set_pullup(false);
+    assert_eq!(v.0, !0x04, "pullup");
+    assert!(!v.pullup());
+}
+
+#[test]
 fn bitfield_gx5bitflags_accessors() {
     use mipcodec::types::Gx5BitFlags;
     let mut v = Gx5BitFlags(0);
@@ -1154,6 +1196,35 @@ fn bitfield_headingalignmentmethods_accessors() {
     v.set_external(false);
     assert_eq!(v.0, !0x08, "external");
     assert!(!v.external());
+}
+
+#[test]
+fn bitfield_sbasoptions_accessors() {
+    use mipcodec::types::SbasOptions;
+    let mut v = SbasOptions(0);
+    v.set_enable_ranging(true);
+    assert_eq!(v.0, 0x01, "enable_ranging");
+    assert!(v.enable_ranging());
+    let mut v = SbasOptions(!0);
+    v.set_enable_ranging(false);
+    assert_eq!(v.0, !0x01, "enable_ranging");
+    assert!(!v.enable_ranging());
+    let mut v = SbasOptions(0);
+    v.set_enable_corrections(true);
+    assert_eq!(v.0, 0x02, "enable_corrections");
+    assert!(v.enable_corrections());
+    let mut v = SbasOptions(!0);
+    v.set_enable_corrections(false);
+    assert_eq!(v.0, !0x02, "enable_corrections");
+    assert!(!v.enable_corrections());
+    let mut v = SbasOptions(0);
+    v.set_apply_integrity(true);
+    assert_eq!(v.0, 0x04, "apply_integrity");
+    assert!(v.apply_integrity());
+    let mut v = SbasOptions(!0);
+    v.set_apply_integrity(false);
+    assert_eq!(v.0, !0x04, "apply_integrity");
+    assert!(!v.apply_integrity());
 }
 
 #[test]
@@ -1515,6 +1586,858 @@ fn fixed_layout_errors() {
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("instance: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStartupSettingsGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStartupSettingsGx5_45::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStartupSettingsCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStartupSettingsCv7Ins::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleEuler::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleEuler::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleEulerResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("roll: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleEulerResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleQuaternion::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleQuaternion::decode_data(&[0u8; 18])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 17".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleQuaternionResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("q[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleQuaternionResponse::decode_data(&[0u8; 17])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 16".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleDcm::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleDcm::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleDcmResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("dcm[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorToVehicleDcmResponse::decode_data(&[0u8; 37])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 36".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AccelBiasGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AccelBiasGx5_45::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AccelBiasCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AccelBiasCv7Ins::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AccelBiasResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AccelBiasResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GyroBiasGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GyroBiasGx5_45::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GyroBiasCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GyroBiasCv7Ins::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GyroBiasResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GyroBiasResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::CaptureGyroBias::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("averaging_time_ms: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::CaptureGyroBias::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagHardIronOffsetGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagHardIronOffsetGx5_45::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagHardIronOffsetCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagHardIronOffsetCv7Ins::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagHardIronOffsetResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("offset[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagHardIronOffsetResponse::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagSoftIronMatrixGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagSoftIronMatrixGx5_45::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagSoftIronMatrixCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagSoftIronMatrixCv7Ins::decode_data(&[0u8; 38])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 37".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagSoftIronMatrixResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("matrix[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MagSoftIronMatrixResponse::decode_data(&[0u8; 37])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 36".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ConingScullingEnable::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ConingScullingEnable::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ConingScullingEnableResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ConingScullingEnableResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::UartBaudrate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::UartBaudrate::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::UartBaudrateResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("baud: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::UartBaudrateResponse::decode_data(&[0u8; 5])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 4".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GpioConfig::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GpioConfigResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("pin: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GpioState::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GpioState::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GpioStateResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("pin: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GpioStateResponse::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::OdometerConfig::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::OdometerConfig::decode_data(&[0u8; 11])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 10".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::OdometerConfigResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("mode: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::OdometerConfigResponse::decode_data(&[0u8; 10])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 9".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AdvancedLowpassFilter::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AdvancedLowpassFilter::decode_data(&[0u8; 8])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 7".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AdvancedLowpassFilterResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("target_descriptor: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::AdvancedLowpassFilterResponse::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ComplementaryFilter::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ComplementaryFilter::decode_data(&[0u8; 12])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 11".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ComplementaryFilterResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("pitch_roll_enable: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ComplementaryFilterResponse::decode_data(&[0u8; 11])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 10".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorRange::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorRange::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorRangeResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("sensor: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SensorRangeResponse::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetCalibratedSensorRanges::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("sensor: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetCalibratedSensorRanges::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::CalibratedSensorRanges::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("sensor: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::LowpassFilter::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::LowpassFilter::decode_data(&[0u8; 10])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 9".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::LowpassFilterResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("desc_set: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::LowpassFilterResponse::decode_data(&[0u8; 9])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 8".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PollImuData::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("option: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PollGnssData::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("option: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PollFilterData::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("option: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PollNmeaData::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("suppress_ack: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PollData::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("desc_set: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetImuBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetImuBaseRate::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ImuBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("rate: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ImuBaseRate::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetGnssBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetGnssBaseRate::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("rate: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssBaseRate::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetFilterBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Ok(()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetFilterBaseRate::decode_data(&[0u8; 1])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 0".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::FilterBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("rate: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::FilterBaseRate::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetBaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("desc_set: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetBaseRate::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::BaseRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("desc_set: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::BaseRate::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ImuMessageFormat::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::ImuMessageFormatResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("num_descriptors: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssMessageFormat::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssMessageFormatResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("num_descriptors: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::FilterMessageFormat::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::FilterMessageFormatResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("num_descriptors: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::NmeaMessageFormat::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::NmeaMessageFormatResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("count: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MessageFormat::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::MessageFormatResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("desc_set: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::FactoryStreaming::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("action: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::FactoryStreaming::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlGx5_45::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlCv7Ins::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlResponseGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("device_selector: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlResponseGx5_45::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlResponseCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("desc_set: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DataStreamControlResponseCv7Ins::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssConstellationSettings::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssConstellationSettingsResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("max_channels_available: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssSbasSettings::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssSbasSettingsResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("enable_sbas: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistedFixControl::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistedFixControl::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistedFixControlResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("option: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistedFixControlResponse::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistTimeUpdate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistTimeUpdate::decode_data(&[0u8; 16])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 15".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistTimeUpdateResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GnssAssistTimeUpdateResponse::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PpsSource::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PpsSource::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PpsSourceResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("source: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::PpsSourceResponse::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetSupportedEvents::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("query: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::GetSupportedEvents::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::SupportedEvents::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("query: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("model_number: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStatus::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::threedm::DeviceStatusResponse::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("model_number: needs 2 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
         mipcodec::filter::ResetFilter::decode_data(&[])
@@ -3121,6 +4044,1020 @@ fn zero_values_round_trip_through_packets() {
         };
         assert_eq!(descriptor, <EventControlResponse as Layout>::DESCRIPTOR);
         assert_eq!(EventControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DeviceStartupSettingsGx5_45;
+        let value = DeviceStartupSettingsGx5_45::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::DeviceStartupSettingsGx5_45::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeviceStartupSettingsGx5_45: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <DeviceStartupSettingsGx5_45 as Layout>::DESCRIPTOR
+        );
+        assert_eq!(DeviceStartupSettingsGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DeviceStartupSettingsCv7Ins;
+        let value = DeviceStartupSettingsCv7Ins::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::DeviceStartupSettingsCv7Ins::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeviceStartupSettingsCv7Ins: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <DeviceStartupSettingsCv7Ins as Layout>::DESCRIPTOR
+        );
+        assert_eq!(DeviceStartupSettingsCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorToVehicleEuler;
+        let value = SensorToVehicleEuler::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::SensorToVehicleEuler::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleEuler: no field");
+        };
+        assert_eq!(descriptor, <SensorToVehicleEuler as Layout>::DESCRIPTOR);
+        assert_eq!(SensorToVehicleEuler::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorToVehicleEulerResponse;
+        let value = SensorToVehicleEulerResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::SensorToVehicleEulerResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleEulerResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SensorToVehicleEulerResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SensorToVehicleEulerResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorToVehicleQuaternion;
+        let value = SensorToVehicleQuaternion::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::SensorToVehicleQuaternion::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleQuaternion: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SensorToVehicleQuaternion as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SensorToVehicleQuaternion::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorToVehicleQuaternionResponse;
+        let value = SensorToVehicleQuaternionResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::SensorToVehicleQuaternionResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleQuaternionResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SensorToVehicleQuaternionResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            SensorToVehicleQuaternionResponse::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorToVehicleDcm;
+        let value = SensorToVehicleDcm::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::SensorToVehicleDcm::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleDcm: no field");
+        };
+        assert_eq!(descriptor, <SensorToVehicleDcm as Layout>::DESCRIPTOR);
+        assert_eq!(SensorToVehicleDcm::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorToVehicleDcmResponse;
+        let value = SensorToVehicleDcmResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::SensorToVehicleDcmResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorToVehicleDcmResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <SensorToVehicleDcmResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(SensorToVehicleDcmResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::AccelBiasGx5_45;
+        let value = AccelBiasGx5_45::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::AccelBiasGx5_45::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBiasGx5_45: no field");
+        };
+        assert_eq!(descriptor, <AccelBiasGx5_45 as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBiasGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::AccelBiasCv7Ins;
+        let value = AccelBiasCv7Ins::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::AccelBiasCv7Ins::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBiasCv7Ins: no field");
+        };
+        assert_eq!(descriptor, <AccelBiasCv7Ins as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBiasCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::AccelBiasResponse;
+        let value = AccelBiasResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::AccelBiasResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBiasResponse: no field");
+        };
+        assert_eq!(descriptor, <AccelBiasResponse as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBiasResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GyroBiasGx5_45;
+        let value = GyroBiasGx5_45::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GyroBiasGx5_45::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBiasGx5_45: no field");
+        };
+        assert_eq!(descriptor, <GyroBiasGx5_45 as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBiasGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GyroBiasCv7Ins;
+        let value = GyroBiasCv7Ins::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GyroBiasCv7Ins::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBiasCv7Ins: no field");
+        };
+        assert_eq!(descriptor, <GyroBiasCv7Ins as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBiasCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GyroBiasResponse;
+        let value = GyroBiasResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GyroBiasResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBiasResponse: no field");
+        };
+        assert_eq!(descriptor, <GyroBiasResponse as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBiasResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::CaptureGyroBias;
+        let value = CaptureGyroBias::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::CaptureGyroBias::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CaptureGyroBias: no field");
+        };
+        assert_eq!(descriptor, <CaptureGyroBias as Layout>::DESCRIPTOR);
+        assert_eq!(CaptureGyroBias::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::MagHardIronOffsetGx5_45;
+        let value = MagHardIronOffsetGx5_45::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::MagHardIronOffsetGx5_45::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagHardIronOffsetGx5_45: no field");
+        };
+        assert_eq!(descriptor, <MagHardIronOffsetGx5_45 as Layout>::DESCRIPTOR);
+        assert_eq!(MagHardIronOffsetGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::MagHardIronOffsetCv7Ins;
+        let value = MagHardIronOffsetCv7Ins::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::MagHardIronOffsetCv7Ins::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagHardIronOffsetCv7Ins: no field");
+        };
+        assert_eq!(descriptor, <MagHardIronOffsetCv7Ins as Layout>::DESCRIPTOR);
+        assert_eq!(MagHardIronOffsetCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::MagHardIronOffsetResponse;
+        let value = MagHardIronOffsetResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::MagHardIronOffsetResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagHardIronOffsetResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagHardIronOffsetResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MagHardIronOffsetResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::MagSoftIronMatrixGx5_45;
+        let value = MagSoftIronMatrixGx5_45::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::MagSoftIronMatrixGx5_45::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagSoftIronMatrixGx5_45: no field");
+        };
+        assert_eq!(descriptor, <MagSoftIronMatrixGx5_45 as Layout>::DESCRIPTOR);
+        assert_eq!(MagSoftIronMatrixGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::MagSoftIronMatrixCv7Ins;
+        let value = MagSoftIronMatrixCv7Ins::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::MagSoftIronMatrixCv7Ins::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagSoftIronMatrixCv7Ins: no field");
+        };
+        assert_eq!(descriptor, <MagSoftIronMatrixCv7Ins as Layout>::DESCRIPTOR);
+        assert_eq!(MagSoftIronMatrixCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::MagSoftIronMatrixResponse;
+        let value = MagSoftIronMatrixResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::MagSoftIronMatrixResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagSoftIronMatrixResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagSoftIronMatrixResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MagSoftIronMatrixResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::ConingScullingEnable;
+        let value = ConingScullingEnable::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::ConingScullingEnable::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ConingScullingEnable: no field");
+        };
+        assert_eq!(descriptor, <ConingScullingEnable as Layout>::DESCRIPTOR);
+        assert_eq!(ConingScullingEnable::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::ConingScullingEnableResponse;
+        let value = ConingScullingEnableResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::ConingScullingEnableResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ConingScullingEnableResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <ConingScullingEnableResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(ConingScullingEnableResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::UartBaudrate;
+        let value = UartBaudrate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::UartBaudrate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("UartBaudrate: no field");
+        };
+        assert_eq!(descriptor, <UartBaudrate as Layout>::DESCRIPTOR);
+        assert_eq!(UartBaudrate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::UartBaudrateResponse;
+        let value = UartBaudrateResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::UartBaudrateResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("UartBaudrateResponse: no field");
+        };
+        assert_eq!(descriptor, <UartBaudrateResponse as Layout>::DESCRIPTOR);
+        assert_eq!(UartBaudrateResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GpioState;
+        let value = GpioState::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GpioState::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpioState: no field");
+        };
+        assert_eq!(descriptor, <GpioState as Layout>::DESCRIPTOR);
+        assert_eq!(GpioState::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GpioStateResponse;
+        let value = GpioStateResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GpioStateResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpioStateResponse: no field");
+        };
+        assert_eq!(descriptor, <GpioStateResponse as Layout>::DESCRIPTOR);
+        assert_eq!(GpioStateResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::OdometerConfig;
+        let value = OdometerConfig::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::OdometerConfig::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("OdometerConfig: no field");
+        };
+        assert_eq!(descriptor, <OdometerConfig as Layout>::DESCRIPTOR);
+        assert_eq!(OdometerConfig::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::OdometerConfigResponse;
+        let value = OdometerConfigResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::OdometerConfigResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("OdometerConfigResponse: no field");
+        };
+        assert_eq!(descriptor, <OdometerConfigResponse as Layout>::DESCRIPTOR);
+        assert_eq!(OdometerConfigResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::AdvancedLowpassFilter;
+        let value = AdvancedLowpassFilter::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::AdvancedLowpassFilter::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AdvancedLowpassFilter: no field");
+        };
+        assert_eq!(descriptor, <AdvancedLowpassFilter as Layout>::DESCRIPTOR);
+        assert_eq!(AdvancedLowpassFilter::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::AdvancedLowpassFilterResponse;
+        let value = AdvancedLowpassFilterResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::AdvancedLowpassFilterResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AdvancedLowpassFilterResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <AdvancedLowpassFilterResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(AdvancedLowpassFilterResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::ComplementaryFilter;
+        let value = ComplementaryFilter::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::ComplementaryFilter::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ComplementaryFilter: no field");
+        };
+        assert_eq!(descriptor, <ComplementaryFilter as Layout>::DESCRIPTOR);
+        assert_eq!(ComplementaryFilter::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::ComplementaryFilterResponse;
+        let value = ComplementaryFilterResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::ComplementaryFilterResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ComplementaryFilterResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <ComplementaryFilterResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(ComplementaryFilterResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorRange;
+        let value = SensorRange::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::SensorRange::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorRange: no field");
+        };
+        assert_eq!(descriptor, <SensorRange as Layout>::DESCRIPTOR);
+        assert_eq!(SensorRange::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::SensorRangeResponse;
+        let value = SensorRangeResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::SensorRangeResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SensorRangeResponse: no field");
+        };
+        assert_eq!(descriptor, <SensorRangeResponse as Layout>::DESCRIPTOR);
+        assert_eq!(SensorRangeResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GetCalibratedSensorRanges;
+        let value = GetCalibratedSensorRanges::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::GetCalibratedSensorRanges::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GetCalibratedSensorRanges: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GetCalibratedSensorRanges as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GetCalibratedSensorRanges::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::LowpassFilter;
+        let value = LowpassFilter::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::LowpassFilter::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LowpassFilter: no field");
+        };
+        assert_eq!(descriptor, <LowpassFilter as Layout>::DESCRIPTOR);
+        assert_eq!(LowpassFilter::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::LowpassFilterResponse;
+        let value = LowpassFilterResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::LowpassFilterResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LowpassFilterResponse: no field");
+        };
+        assert_eq!(descriptor, <LowpassFilterResponse as Layout>::DESCRIPTOR);
+        assert_eq!(LowpassFilterResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GetImuBaseRate;
+        let value = GetImuBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GetImuBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GetImuBaseRate: no field");
+        };
+        assert_eq!(descriptor, <GetImuBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(GetImuBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::ImuBaseRate;
+        let value = ImuBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::ImuBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ImuBaseRate: no field");
+        };
+        assert_eq!(descriptor, <ImuBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(ImuBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GetGnssBaseRate;
+        let value = GetGnssBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GetGnssBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GetGnssBaseRate: no field");
+        };
+        assert_eq!(descriptor, <GetGnssBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(GetGnssBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GnssBaseRate;
+        let value = GnssBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GnssBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssBaseRate: no field");
+        };
+        assert_eq!(descriptor, <GnssBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(GnssBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GetFilterBaseRate;
+        let value = GetFilterBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GetFilterBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GetFilterBaseRate: no field");
+        };
+        assert_eq!(descriptor, <GetFilterBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(GetFilterBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::FilterBaseRate;
+        let value = FilterBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::FilterBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FilterBaseRate: no field");
+        };
+        assert_eq!(descriptor, <FilterBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(FilterBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GetBaseRate;
+        let value = GetBaseRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GetBaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GetBaseRate: no field");
+        };
+        assert_eq!(descriptor, <GetBaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(GetBaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::BaseRate;
+        let value = BaseRate::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::threedm::BaseRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("BaseRate: no field");
+        };
+        assert_eq!(descriptor, <BaseRate as Layout>::DESCRIPTOR);
+        assert_eq!(BaseRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::FactoryStreaming;
+        let value = FactoryStreaming::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::FactoryStreaming::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FactoryStreaming: no field");
+        };
+        assert_eq!(descriptor, <FactoryStreaming as Layout>::DESCRIPTOR);
+        assert_eq!(FactoryStreaming::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DataStreamControlGx5_45;
+        let value = DataStreamControlGx5_45::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::DataStreamControlGx5_45::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DataStreamControlGx5_45: no field");
+        };
+        assert_eq!(descriptor, <DataStreamControlGx5_45 as Layout>::DESCRIPTOR);
+        assert_eq!(DataStreamControlGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DataStreamControlCv7Ins;
+        let value = DataStreamControlCv7Ins::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::DataStreamControlCv7Ins::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DataStreamControlCv7Ins: no field");
+        };
+        assert_eq!(descriptor, <DataStreamControlCv7Ins as Layout>::DESCRIPTOR);
+        assert_eq!(DataStreamControlCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DataStreamControlResponseGx5_45;
+        let value = DataStreamControlResponseGx5_45::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::DataStreamControlResponseGx5_45::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DataStreamControlResponseGx5_45: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <DataStreamControlResponseGx5_45 as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            DataStreamControlResponseGx5_45::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DataStreamControlResponseCv7Ins;
+        let value = DataStreamControlResponseCv7Ins::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::DataStreamControlResponseCv7Ins::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DataStreamControlResponseCv7Ins: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <DataStreamControlResponseCv7Ins as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            DataStreamControlResponseCv7Ins::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GnssAssistedFixControl;
+        let value = GnssAssistedFixControl::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GnssAssistedFixControl::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAssistedFixControl: no field");
+        };
+        assert_eq!(descriptor, <GnssAssistedFixControl as Layout>::DESCRIPTOR);
+        assert_eq!(GnssAssistedFixControl::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GnssAssistedFixControlResponse;
+        let value = GnssAssistedFixControlResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::GnssAssistedFixControlResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAssistedFixControlResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssAssistedFixControlResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GnssAssistedFixControlResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GnssAssistTimeUpdate;
+        let value = GnssAssistTimeUpdate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GnssAssistTimeUpdate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAssistTimeUpdate: no field");
+        };
+        assert_eq!(descriptor, <GnssAssistTimeUpdate as Layout>::DESCRIPTOR);
+        assert_eq!(GnssAssistTimeUpdate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GnssAssistTimeUpdateResponse;
+        let value = GnssAssistTimeUpdateResponse::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::threedm::GnssAssistTimeUpdateResponse::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAssistTimeUpdateResponse: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssAssistTimeUpdateResponse as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GnssAssistTimeUpdateResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::PpsSource;
+        let value = PpsSource::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::threedm::PpsSource::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PpsSource: no field");
+        };
+        assert_eq!(descriptor, <PpsSource as Layout>::DESCRIPTOR);
+        assert_eq!(PpsSource::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::PpsSourceResponse;
+        let value = PpsSourceResponse::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::PpsSourceResponse::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PpsSourceResponse: no field");
+        };
+        assert_eq!(descriptor, <PpsSourceResponse as Layout>::DESCRIPTOR);
+        assert_eq!(PpsSourceResponse::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::GetSupportedEvents;
+        let value = GetSupportedEvents::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::GetSupportedEvents::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GetSupportedEvents: no field");
+        };
+        assert_eq!(descriptor, <GetSupportedEvents as Layout>::DESCRIPTOR);
+        assert_eq!(GetSupportedEvents::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::threedm::DeviceStatus;
+        let value = DeviceStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::threedm::DeviceStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeviceStatus: no field");
+        };
+        assert_eq!(descriptor, <DeviceStatus as Layout>::DESCRIPTOR);
+        assert_eq!(DeviceStatus::decode_data(data), Ok(value));
         assert!(fields.next().is_none());
     }
     {

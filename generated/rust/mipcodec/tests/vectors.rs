@@ -38,6 +38,2443 @@ fn check(hex: &str, device: Option<&str>, expect: &[&str], rejected: bool) {
     );
 }
 
+/// `startup_settings_save_gx5` (tests/vectors/mip/3dm_config.yaml:13)
+#[test]
+fn case_startup_settings_save_gx5() {
+    check(
+        "75650c030330031f45",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_settings\",\"device\":\"gx5_45\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `startup_settings_ack` (tests/vectors/mip/3dm_config.yaml:24)
+#[test]
+fn case_startup_settings_ack() {
+    check(
+        "75650c0404f130000f0a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":48,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `startup_settings_read_gx5` (tests/vectors/mip/3dm_config.yaml:33)
+#[test]
+fn case_startup_settings_read_gx5() {
+    check(
+        "75650c030330021e44",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_settings\",\"device\":\"gx5_45\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `startup_settings_load_cv7` (tests/vectors/mip/3dm_config.yaml:47)
+#[test]
+fn case_startup_settings_load_cv7() {
+    check(
+        "75650c030330042046",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_settings\",\"device\":\"cv7_ins\",\"values\":{\"function\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `startup_settings_default_cv7` (tests/vectors/mip/3dm_config.yaml:60)
+#[test]
+fn case_startup_settings_default_cv7() {
+    check(
+        "75650c030330052147",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_settings\",\"device\":\"cv7_ins\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_euler_example_2` (tests/vectors/mip/3dm_config.yaml:76)
+#[test]
+fn case_sensor_to_vehicle_euler_example_2() {
+    check(
+        "75650c0f0f3101bfc90ff90000000000000000c60f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\",\"values\":{\"function\":1,\"roll\":-1.5707999467849731,\"pitch\":0.0,\"yaw\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_euler_example_3` (tests/vectors/mip/3dm_config.yaml:96)
+#[test]
+fn case_sensor_to_vehicle_euler_example_3() {
+    check(
+        "75650c0f0f3101000000003fc90ff93fc90ff9563d",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\",\"values\":{\"function\":1,\"roll\":0.0,\"pitch\":1.5707999467849731,\"yaw\":1.5707999467849731}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_euler_read` (tests/vectors/mip/3dm_config.yaml:116)
+#[test]
+fn case_sensor_to_vehicle_euler_read() {
+    check(
+        "75650c030331021f46",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_euler_reply` (tests/vectors/mip/3dm_config.yaml:128)
+#[test]
+fn case_sensor_to_vehicle_euler_reply() {
+    check(
+        "75650c1204f131000eb1000000003fc90ff93fc90ff9fdd3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":49,\"ack_code\":0}},{\"descriptor\":177,\"name\":\"sensor_to_vehicle_euler_response\",\"values\":{\"roll\":0.0,\"pitch\":1.5707999467849731,\"yaw\":1.5707999467849731}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_quaternion_write_identity` (tests/vectors/mip/3dm_config.yaml:148)
+#[test]
+fn case_sensor_to_vehicle_quaternion_write_identity() {
+    check(
+        "75650c131332013f800000000000000000000000000000fe17",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":50,\"name\":\"sensor_to_vehicle_quaternion\",\"values\":{\"function\":1,\"q\":[1.0,0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_quaternion_reply` (tests/vectors/mip/3dm_config.yaml:161)
+#[test]
+fn case_sensor_to_vehicle_quaternion_reply() {
+    check(
+        "75650c1604f1320012b23f0000003f0000003f0000003f000000e3cc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":50,\"ack_code\":0}},{\"descriptor\":178,\"name\":\"sensor_to_vehicle_quaternion_response\",\"values\":{\"q\":[0.5,0.5,0.5,0.5]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_dcm_example_2` (tests/vectors/mip/3dm_config.yaml:175)
+#[test]
+fn case_sensor_to_vehicle_dcm_example_2() {
+    check(
+        "75650c272733013f800000000000000000000000000000000000003f80000000000000bf800000000000002529",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":51,\"name\":\"sensor_to_vehicle_dcm\",\"values\":{\"function\":1,\"dcm\":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_dcm_example_3` (tests/vectors/mip/3dm_config.yaml:193)
+#[test]
+fn case_sensor_to_vehicle_dcm_example_3() {
+    check(
+        "75650c2727330100000000bf8000000000000000000000000000003f800000bf8000000000000000000000a529",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":51,\"name\":\"sensor_to_vehicle_dcm\",\"values\":{\"function\":1,\"dcm\":[0.0,-1.0,0.0,0.0,0.0,1.0,-1.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_to_vehicle_dcm_reply` (tests/vectors/mip/3dm_config.yaml:210)
+#[test]
+fn case_sensor_to_vehicle_dcm_reply() {
+    check(
+        "75650c2a04f1330026b33f800000000000000000000000000000000000003f80000000000000bf80000000000000cee5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":51,\"ack_code\":0}},{\"descriptor\":179,\"name\":\"sensor_to_vehicle_dcm_response\",\"values\":{\"dcm\":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_write_zero_gx5` (tests/vectors/mip/3dm_config.yaml:229)
+#[test]
+fn case_accel_bias_write_zero_gx5() {
+    check(
+        "75650c0f0f37010000000000000000000000003c75",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"bias\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_ack` (tests/vectors/mip/3dm_config.yaml:240)
+#[test]
+fn case_accel_bias_ack() {
+    check(
+        "75650c0404f137001618",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":55,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_write_no_ack_gx5` (tests/vectors/mip/3dm_config.yaml:249)
+#[test]
+fn case_accel_bias_write_no_ack_gx5() {
+    check(
+        "75650c0f0f37063b03126fba83126f00000000be32",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":\"gx5_45\",\"values\":{\"function\":6,\"bias\":[0.0020000000949949026,-0.0010000000474974513,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_read_full_length_gx5` (tests/vectors/mip/3dm_config.yaml:264)
+#[test]
+fn case_accel_bias_read_full_length_gx5() {
+    check(
+        "75650c0f0f37020000000000000000000000003d82",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":\"gx5_45\",\"values\":{\"function\":2,\"bias\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_write_cv7` (tests/vectors/mip/3dm_config.yaml:280)
+#[test]
+fn case_accel_bias_write_cv7() {
+    check(
+        "75650c0f0f37013e800000be0000003d8000007541",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"bias\":[0.25,-0.125,0.0625]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_read_cv7` (tests/vectors/mip/3dm_config.yaml:294)
+#[test]
+fn case_accel_bias_read_cv7() {
+    check(
+        "75650c030337022552",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":\"cv7_ins\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `accel_bias_reply` (tests/vectors/mip/3dm_config.yaml:307)
+#[test]
+fn case_accel_bias_reply() {
+    check(
+        "75650c1204f137000e9a3e800000be0000003d80000005b8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":55,\"ack_code\":0}},{\"descriptor\":154,\"name\":\"accel_bias_response\",\"values\":{\"bias\":[0.25,-0.125,0.0625]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_write_zero_gx5` (tests/vectors/mip/3dm_config.yaml:325)
+#[test]
+fn case_gyro_bias_write_zero_gx5() {
+    check(
+        "75650c0f0f38010000000000000000000000003d83",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"bias\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_ack` (tests/vectors/mip/3dm_config.yaml:336)
+#[test]
+fn case_gyro_bias_ack() {
+    check(
+        "75650c0404f13800171a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":56,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_save_cv7` (tests/vectors/mip/3dm_config.yaml:345)
+#[test]
+fn case_gyro_bias_save_cv7() {
+    check(
+        "75650c030338032755",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\",\"device\":\"cv7_ins\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_write_cv7` (tests/vectors/mip/3dm_config.yaml:359)
+#[test]
+fn case_gyro_bias_write_cv7() {
+    check(
+        "75650c0f0f38013b03126fba83126f3a03126f7883",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\",\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"bias\":[0.0020000000949949026,-0.0010000000474974513,0.0005000000237487257]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gyro_bias_reply` (tests/vectors/mip/3dm_config.yaml:373)
+#[test]
+fn case_gyro_bias_reply() {
+    check(
+        "75650c1204f138000e9b3b03126fba83126f3a03126f0909",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":56,\"ack_code\":0}},{\"descriptor\":155,\"name\":\"gyro_bias_response\",\"values\":{\"bias\":[0.0020000000949949026,-0.0010000000474974513,0.0005000000237487257]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `capture_gyro_bias_command` (tests/vectors/mip/3dm_config.yaml:389)
+#[test]
+fn case_capture_gyro_bias_command() {
+    check(
+        "75650c04043927105ee0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":57,\"name\":\"capture_gyro_bias\",\"values\":{\"averaging_time_ms\":10000}}]}",
+        ],
+        false,
+    );
+}
+
+/// `capture_gyro_bias_reply` (tests/vectors/mip/3dm_config.yaml:399)
+#[test]
+fn case_capture_gyro_bias_reply() {
+    check(
+        "75650c1204f139000e9b000000000000000000000000cf19",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":57,\"ack_code\":0}},{\"descriptor\":155,\"name\":\"gyro_bias_response\",\"values\":{\"bias\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `capture_gyro_bias_short_cv7` (tests/vectors/mip/3dm_config.yaml:416)
+#[test]
+fn case_capture_gyro_bias_short_cv7() {
+    check(
+        "75650c04043903e81270",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":57,\"name\":\"capture_gyro_bias\",\"values\":{\"averaging_time_ms\":1000}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_hard_iron_write_zero_gx5` (tests/vectors/mip/3dm_config.yaml:430)
+#[test]
+fn case_mag_hard_iron_write_zero_gx5() {
+    check(
+        "75650c0f0f3a010000000000000000000000003f9f",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":58,\"name\":\"mag_hard_iron_offset\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_hard_iron_ack` (tests/vectors/mip/3dm_config.yaml:441)
+#[test]
+fn case_mag_hard_iron_ack() {
+    check(
+        "75650c0404f13a00191e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":58,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_hard_iron_write_cv7` (tests/vectors/mip/3dm_config.yaml:450)
+#[test]
+fn case_mag_hard_iron_write_cv7() {
+    check(
+        "75650c0f0f3a013da3d70abdf5c28f3eb333335ad8",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":58,\"name\":\"mag_hard_iron_offset\",\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"offset\":[0.07999999821186066,-0.11999999731779099,0.3499999940395355]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_hard_iron_reply` (tests/vectors/mip/3dm_config.yaml:464)
+#[test]
+fn case_mag_hard_iron_reply() {
+    check(
+        "75650c1204f13a000e9c3da3d70abdf5c28f3eb33333ec6f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":58,\"ack_code\":0}},{\"descriptor\":156,\"name\":\"mag_hard_iron_offset_response\",\"values\":{\"offset\":[0.07999999821186066,-0.11999999731779099,0.3499999940395355]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_soft_iron_write_identity_gx5` (tests/vectors/mip/3dm_config.yaml:480)
+#[test]
+fn case_mag_soft_iron_write_identity_gx5() {
+    check(
+        "75650c27273b013f8000000000000000000000000000003f8000000000000000000000000000003f800000ad59",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":59,\"name\":\"mag_soft_iron_matrix\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"matrix\":[1.0,0.0,0.0,0.0,1.0,0.0,0.0,0.0,1.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_soft_iron_ack` (tests/vectors/mip/3dm_config.yaml:498)
+#[test]
+fn case_mag_soft_iron_ack() {
+    check(
+        "75650c0404f13b001a20",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":59,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_soft_iron_default_cv7` (tests/vectors/mip/3dm_config.yaml:512)
+#[test]
+fn case_mag_soft_iron_default_cv7() {
+    check(
+        "75650c03033b052c5d",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":59,\"name\":\"mag_soft_iron_matrix\",\"device\":\"cv7_ins\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mag_soft_iron_reply` (tests/vectors/mip/3dm_config.yaml:526)
+#[test]
+fn case_mag_soft_iron_reply() {
+    check(
+        "75650c2a04f13b00269d3f828f5c3c23d70abcf5c28f3c23d70a3f7ae1483ca3d70abcf5c28f3ca3d70a3f8000005487",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":59,\"ack_code\":0}},{\"descriptor\":157,\"name\":\"mag_soft_iron_matrix_response\",\"values\":{\"matrix\":[1.0199999809265137,0.009999999776482582,-0.029999999329447746,0.009999999776482582,0.9800000190734863,0.019999999552965164,-0.029999999329447746,0.019999999552965164,1.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `coning_sculling_enable_write` (tests/vectors/mip/3dm_config.yaml:548)
+#[test]
+fn case_coning_sculling_enable_write() {
+    check(
+        "75650c04043e01012e94",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":62,\"name\":\"coning_sculling_enable\",\"values\":{\"function\":1,\"enable\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `coning_sculling_enable_ack` (tests/vectors/mip/3dm_config.yaml:558)
+#[test]
+fn case_coning_sculling_enable_ack() {
+    check(
+        "75650c0404f13e001d26",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":62,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `coning_sculling_enable_read_reply` (tests/vectors/mip/3dm_config.yaml:572)
+#[test]
+fn case_coning_sculling_enable_read_reply() {
+    check(
+        "75650c0704f13e00039e00c1da",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":62,\"ack_code\":0}},{\"descriptor\":158,\"name\":\"coning_sculling_enable_response\",\"values\":{\"enable\":false}}]}",
+        ],
+        false,
+    );
+}
+
+/// `uart_baudrate_write_115200` (tests/vectors/mip/3dm_config.yaml:588)
+#[test]
+fn case_uart_baudrate_write_115200() {
+    check(
+        "75650c070740010001c200f8da",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":64,\"name\":\"uart_baudrate\",\"values\":{\"function\":1,\"baud\":115200}}]}",
+        ],
+        false,
+    );
+}
+
+/// `uart_baudrate_ack` (tests/vectors/mip/3dm_config.yaml:598)
+#[test]
+fn case_uart_baudrate_ack() {
+    check(
+        "75650c0404f140001f2a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":64,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `uart_baudrate_read` (tests/vectors/mip/3dm_config.yaml:607)
+#[test]
+fn case_uart_baudrate_read() {
+    check(
+        "75650c030340022e64",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":64,\"name\":\"uart_baudrate\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `uart_baudrate_reply_921600` (tests/vectors/mip/3dm_config.yaml:619)
+#[test]
+fn case_uart_baudrate_reply_921600() {
+    check(
+        "75650c0a04f140000687000e1000d037",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":64,\"ack_code\":0}},{\"descriptor\":135,\"name\":\"uart_baudrate_response\",\"values\":{\"baud\":921600}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_timestamp_falling_pullup` (tests/vectors/mip/3dm_config.yaml:636)
+#[test]
+fn case_gpio_config_timestamp_falling_pullup() {
+    check(
+        "75650c07074101010402044171",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":1,\"feature\":4,\"behavior\":{\"behavior\":2},\"pin_mode\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_output_low_pin1` (tests/vectors/mip/3dm_config.yaml:652)
+#[test]
+fn case_gpio_config_output_low_pin1() {
+    check(
+        "75650c07074101010102003a64",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":1,\"feature\":1,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_input_pullup_pin3` (tests/vectors/mip/3dm_config.yaml:668)
+#[test]
+fn case_gpio_config_input_pullup_pin3() {
+    check(
+        "75650c07074101030101043f6e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":3,\"feature\":1,\"behavior\":{\"behavior\":1},\"pin_mode\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_output_low_pin4` (tests/vectors/mip/3dm_config.yaml:684)
+#[test]
+fn case_gpio_config_output_low_pin4() {
+    check(
+        "75650c07074101040102003d70",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":4,\"feature\":1,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_state_write_high_pin4` (tests/vectors/mip/3dm_config.yaml:700)
+#[test]
+fn case_gpio_state_write_high_pin4() {
+    check(
+        "75650c05054201040138e4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\",\"values\":{\"function\":1,\"pin\":4,\"state\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_state_write_low_pin4` (tests/vectors/mip/3dm_config.yaml:709)
+#[test]
+fn case_gpio_state_write_low_pin4() {
+    check(
+        "75650c05054201040037e3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\",\"values\":{\"function\":1,\"pin\":4,\"state\":false}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_uart_port2_rx_pin2` (tests/vectors/mip/3dm_config.yaml:719)
+#[test]
+fn case_gpio_config_uart_port2_rx_pin2() {
+    check(
+        "75650c07074101020522005fb4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":2,\"feature\":5,\"behavior\":{\"behavior\":34},\"pin_mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_pps_input_open_drain` (tests/vectors/mip/3dm_config.yaml:740)
+#[test]
+fn case_gpio_config_pps_input_open_drain() {
+    check(
+        "75650c07074101010201013b66",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":1,\"feature\":2,\"behavior\":{\"behavior\":1},\"pin_mode\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_encoder_b_pulldown` (tests/vectors/mip/3dm_config.yaml:761)
+#[test]
+fn case_gpio_config_encoder_b_pulldown() {
+    check(
+        "75650c07074101040302024178",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":4,\"feature\":3,\"behavior\":{\"behavior\":2},\"pin_mode\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_unused_pin3` (tests/vectors/mip/3dm_config.yaml:782)
+#[test]
+fn case_gpio_config_unused_pin3() {
+    check(
+        "75650c07074101030000003965",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":1,\"pin\":3,\"feature\":0,\"behavior\":{\"behavior\":0},\"pin_mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_save_all` (tests/vectors/mip/3dm_config.yaml:802)
+#[test]
+fn case_gpio_config_save_all() {
+    check(
+        "75650c040441030032a0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":3,\"pin\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_read_pin1` (tests/vectors/mip/3dm_config.yaml:814)
+#[test]
+fn case_gpio_config_read_pin1() {
+    check(
+        "75650c0404410201329f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{\"function\":2,\"pin\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_reply_pps_output` (tests/vectors/mip/3dm_config.yaml:826)
+#[test]
+fn case_gpio_config_reply_pps_output() {
+    check(
+        "75650c0a04f1410006c101020200f225",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":65,\"ack_code\":0}},{\"descriptor\":193,\"name\":\"gpio_config_response\",\"values\":{\"pin\":1,\"feature\":2,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_config_reply_timestamp_either` (tests/vectors/mip/3dm_config.yaml:847)
+#[test]
+fn case_gpio_config_reply_timestamp_either() {
+    check(
+        "75650c0a04f1410006c102040304fa35",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":65,\"ack_code\":0}},{\"descriptor\":193,\"name\":\"gpio_config_response\",\"values\":{\"pin\":2,\"feature\":4,\"behavior\":{\"behavior\":3},\"pin_mode\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_state_read_pin3` (tests/vectors/mip/3dm_config.yaml:868)
+#[test]
+fn case_gpio_state_read_pin3() {
+    check(
+        "75650c040442020335a4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\",\"values\":{\"function\":2,\"pin\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gpio_state_reply_pin3_high` (tests/vectors/mip/3dm_config.yaml:880)
+#[test]
+fn case_gpio_state_reply_pin3_high() {
+    check(
+        "75650c0804f1420004c20301ef33",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":66,\"ack_code\":0}},{\"descriptor\":194,\"name\":\"gpio_state_response\",\"values\":{\"pin\":3,\"state\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `odometer_config_write_quadrature` (tests/vectors/mip/3dm_config.yaml:896)
+#[test]
+fn case_odometer_config_write_quadrature() {
+    check(
+        "75650c0c0c430102447a00003c23d70a4293",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":67,\"name\":\"odometer_config\",\"values\":{\"function\":1,\"mode\":2,\"scaling\":1000.0,\"uncertainty\":0.009999999776482582}}]}",
+        ],
+        false,
+    );
+}
+
+/// `odometer_config_reply_disabled` (tests/vectors/mip/3dm_config.yaml:916)
+#[test]
+fn case_odometer_config_reply_disabled() {
+    check(
+        "75650c0f04f143000bc300c37a00003d800000f54f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":67,\"ack_code\":0}},{\"descriptor\":195,\"name\":\"odometer_config_response\",\"values\":{\"mode\":0,\"scaling\":-250.0,\"uncertainty\":0.0625}}]}",
+        ],
+        false,
+    );
+}
+
+/// `advanced_lowpass_filter_write_accel` (tests/vectors/mip/3dm_config.yaml:938)
+#[test]
+fn case_advanced_lowpass_filter_write_accel() {
+    check(
+        "75650c090950010401000000004e80",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_filter\",\"values\":{\"function\":1,\"target_descriptor\":4,\"enable\":true,\"manual\":false,\"frequency\":0,\"reserved\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `advanced_lowpass_filter_ack` (tests/vectors/mip/3dm_config.yaml:959)
+#[test]
+fn case_advanced_lowpass_filter_ack() {
+    check(
+        "75650c0404f150002f4a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":80,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `advanced_lowpass_filter_read_gyro` (tests/vectors/mip/3dm_config.yaml:968)
+#[test]
+fn case_advanced_lowpass_filter_read_gyro() {
+    check(
+        "75650c040450020545d0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_filter\",\"values\":{\"function\":2,\"target_descriptor\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `advanced_lowpass_filter_reply_gyro` (tests/vectors/mip/3dm_config.yaml:980)
+#[test]
+fn case_advanced_lowpass_filter_reply_gyro() {
+    check(
+        "75650c0c04f15000088b0501010064003526",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":80,\"ack_code\":0}},{\"descriptor\":139,\"name\":\"advanced_lowpass_filter_response\",\"values\":{\"target_descriptor\":5,\"enable\":true,\"manual\":true,\"frequency\":100,\"reserved\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `advanced_lowpass_filter_default_all_cv7` (tests/vectors/mip/3dm_config.yaml:1003)
+#[test]
+fn case_advanced_lowpass_filter_default_all_cv7() {
+    check(
+        "75650c040450050043d1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_filter\",\"values\":{\"function\":5,\"target_descriptor\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `complementary_filter_write` (tests/vectors/mip/3dm_config.yaml:1015)
+#[test]
+fn case_complementary_filter_write() {
+    check(
+        "75650c0d0d5101010140a0000040a000001452",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":81,\"name\":\"complementary_filter\",\"values\":{\"function\":1,\"pitch_roll_enable\":true,\"heading_enable\":true,\"pitch_roll_time_constant\":5.0,\"heading_time_constant\":5.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `complementary_filter_ack` (tests/vectors/mip/3dm_config.yaml:1038)
+#[test]
+fn case_complementary_filter_ack() {
+    check(
+        "75650c0404f15100304c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":81,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `complementary_filter_reply` (tests/vectors/mip/3dm_config.yaml:1051)
+#[test]
+fn case_complementary_filter_reply() {
+    check(
+        "75650c1004f151000c97010041200000447a0000ffd5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":81,\"ack_code\":0}},{\"descriptor\":151,\"name\":\"complementary_filter_response\",\"values\":{\"pitch_roll_enable\":true,\"heading_enable\":false,\"pitch_roll_time_constant\":10.0,\"heading_time_constant\":1000.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_range_write_accel_8g` (tests/vectors/mip/3dm_config.yaml:1076)
+#[test]
+fn case_sensor_range_write_accel_8g() {
+    check(
+        "75650c0505520101034720",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":82,\"name\":\"sensor_range\",\"values\":{\"function\":1,\"sensor\":1,\"setting\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_range_save_all` (tests/vectors/mip/3dm_config.yaml:1089)
+#[test]
+fn case_sensor_range_save_all() {
+    check(
+        "75650c040452030043d3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":82,\"name\":\"sensor_range\",\"values\":{\"function\":3,\"sensor\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sensor_range_reply_gyro` (tests/vectors/mip/3dm_config.yaml:1101)
+#[test]
+fn case_sensor_range_reply_gyro() {
+    check(
+        "75650c0804f1520004d202020fc2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":82,\"ack_code\":0}},{\"descriptor\":210,\"name\":\"sensor_range_response\",\"values\":{\"sensor\":2,\"setting\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_calibrated_sensor_ranges_accel` (tests/vectors/mip/3dm_config.yaml:1116)
+#[test]
+fn case_get_calibrated_sensor_ranges_accel() {
+    check(
+        "75650c030353014089",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":83,\"name\":\"get_calibrated_sensor_ranges\",\"values\":{\"sensor\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `calibrated_sensor_ranges_accel` (tests/vectors/mip/3dm_config.yaml:1128)
+#[test]
+fn case_calibrated_sensor_ranges_accel() {
+    check(
+        "75650c1704f1530013d30103024080000003410000000441800000fa6b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"calibrated_sensor_ranges\",\"values\":{\"sensor\":1,\"num_ranges\":3,\"ranges\":[{\"setting\":2,\"range\":4.0},{\"setting\":3,\"range\":8.0},{\"setting\":4,\"range\":16.0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `lowpass_filter_write_accel_manual` (tests/vectors/mip/3dm_config.yaml:1150)
+#[test]
+fn case_lowpass_filter_write_accel_manual() {
+    check(
+        "75650c0b0b540180040101424800006152",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\",\"values\":{\"function\":1,\"desc_set\":128,\"field_desc\":4,\"enable\":true,\"manual\":true,\"frequency\":50.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `lowpass_filter_read_comp_rate` (tests/vectors/mip/3dm_config.yaml:1173)
+#[test]
+fn case_lowpass_filter_read_comp_rate() {
+    check(
+        "75650c05055402820ed638",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\",\"values\":{\"function\":2,\"desc_set\":130,\"field_desc\":14}}]}",
+        ],
+        false,
+    );
+}
+
+/// `lowpass_filter_reply_auto` (tests/vectors/mip/3dm_config.yaml:1187)
+#[test]
+fn case_lowpass_filter_reply_auto() {
+    check(
+        "75650c0e04f154000ad4820e010041c80000b592",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":84,\"ack_code\":0}},{\"descriptor\":212,\"name\":\"lowpass_filter_response\",\"values\":{\"desc_set\":130,\"field_desc\":14,\"enable\":true,\"manual\":false,\"frequency\":25.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `lowpass_filter_default_all` (tests/vectors/mip/3dm_config.yaml:1209)
+#[test]
+fn case_lowpass_filter_default_all() {
+    check(
+        "75650c050554050000492f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\",\"values\":{\"function\":5,\"desc_set\":0,\"field_desc\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `capture_gyro_bias_reply_table_published` (tests/vectors/mip/3dm_config.yaml:1225)
+#[test]
+fn case_capture_gyro_bias_reply_table_published() {
+    check(
+        "75650c0404f139000e9b000000000000000000000000cf19",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0404f139000e9b000000000000000000000000cf19\"}"],
+        true,
+    );
+}
+
+/// `mag_soft_iron_copy_paste_published` (tests/vectors/mip/3dm_config.yaml:1239)
+#[test]
+fn case_mag_soft_iron_copy_paste_published() {
+    check(
+        "75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59\"}",
+        ],
+        true,
+    );
+}
+
+/// `mag_soft_iron_ack_table_published` (tests/vectors/mip/3dm_config.yaml:1253)
+#[test]
+fn case_mag_soft_iron_ack_table_published() {
+    check(
+        "75650c1204f13b001a20",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c1204f13b001a20\"}"],
+        true,
+    );
+}
+
+/// `coning_sculling_enable_ack_table_published` (tests/vectors/mip/3dm_config.yaml:1266)
+#[test]
+fn case_coning_sculling_enable_ack_table_published() {
+    check(
+        "75650c0404f138001d26",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0404f138001d26\"}"],
+        true,
+    );
+}
+
+/// `advanced_lowpass_filter_table_published` (tests/vectors/mip/3dm_config.yaml:1279)
+#[test]
+fn case_advanced_lowpass_filter_table_published() {
+    check(
+        "75650c090950010401000000004c6d",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c090950010401000000004c6d\"}"],
+        true,
+    );
+}
+
+/// `complementary_filter_copy_paste_published` (tests/vectors/mip/3dm_config.yaml:1292)
+#[test]
+fn case_complementary_filter_copy_paste_published() {
+    check(
+        "75650c09095101040100000000",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c09095101040100000000\"}"],
+        true,
+    );
+}
+
+/// `setup_imu_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:12)
+#[test]
+fn case_setup_imu_message_format_write() {
+    check(
+        "75650c0d0d08010312000a04000a05000a45f2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":1,\"num_descriptors\":3,\"descriptors\":[{\"descriptor\":18,\"decimation\":10},{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `setup_imu_message_format_ack` (tests/vectors/mip/3dm_streaming.yaml:30)
+#[test]
+fn case_setup_imu_message_format_ack() {
+    check(
+        "75650c0404f10800e7ba",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `imu_message_format_write_ack_table_published` (tests/vectors/mip/3dm_streaming.yaml:39)
+#[test]
+fn case_imu_message_format_write_ack_table_published() {
+    check(
+        "75650c0404f10100e7ba",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0404f10100e7ba\"}"],
+        true,
+    );
+}
+
+/// `setup_filter_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:52)
+#[test]
+fn case_setup_filter_message_format_write() {
+    check(
+        "75650c13130a010511000a10000a01000a02000a03000a7562",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":1,\"num_descriptors\":5,\"descriptors\":[{\"descriptor\":17,\"decimation\":10},{\"descriptor\":16,\"decimation\":10},{\"descriptor\":1,\"decimation\":10},{\"descriptor\":2,\"decimation\":10},{\"descriptor\":3,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_ack` (tests/vectors/mip/3dm_streaming.yaml:72)
+#[test]
+fn case_filter_message_format_ack() {
+    check(
+        "75650c0404f10a00e9be",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `save_message_formats_command` (tests/vectors/mip/3dm_streaming.yaml:82)
+#[test]
+fn case_save_message_formats_command() {
+    check(
+        "75650c0804080300040a03000e31",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}},{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `message_formats_two_acks` (tests/vectors/mip/3dm_streaming.yaml:93)
+#[test]
+fn case_message_formats_two_acks() {
+    check(
+        "75650c0804f1080004f10a00ea71",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `save_message_formats_reply_table_published` (tests/vectors/mip/3dm_streaming.yaml:106)
+#[test]
+fn case_save_message_formats_reply_table_published() {
+    check(
+        "75650c0804f1080004f10a00e9be",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}"],
+        true,
+    );
+}
+
+/// `setup_enable_streams_command` (tests/vectors/mip/3dm_streaming.yaml:119)
+#[test]
+fn case_setup_enable_streams_command() {
+    check(
+        "75650c0a0511010101051101030124cc",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":1}},{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":3,\"enable\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `setup_enable_streams_reply` (tests/vectors/mip/3dm_streaming.yaml:131)
+#[test]
+fn case_setup_enable_streams_reply() {
+    check(
+        "75650c0804f1110004f11100fab5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `setup_poll_cf_euler` (tests/vectors/mip/3dm_streaming.yaml:141)
+#[test]
+fn case_setup_poll_cf_euler() {
+    check(
+        "75650c07070100010c000002fc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{\"option\":0,\"num_descriptors\":1,\"descriptors\":[{\"descriptor\":12,\"reserved\":0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `setup_poll_cf_euler_table_published` (tests/vectors/mip/3dm_streaming.yaml:153)
+#[test]
+fn case_setup_poll_cf_euler_table_published() {
+    check(
+        "75650c070701000006000002fc",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c070701000006000002fc\"}"],
+        true,
+    );
+}
+
+/// `poll_imu_ack` (tests/vectors/mip/3dm_streaming.yaml:168)
+#[test]
+fn case_poll_imu_ack() {
+    check(
+        "75650c0404f10100e0ac",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_imu_stored_format` (tests/vectors/mip/3dm_streaming.yaml:180)
+#[test]
+fn case_poll_imu_stored_format() {
+    check(
+        "75650c0404010000efda",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_imu_specified_format` (tests/vectors/mip/3dm_streaming.yaml:192)
+#[test]
+fn case_poll_imu_specified_format() {
+    check(
+        "75650c0a0a0100020400000500000627",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,\"reserved\":0},{\"descriptor\":5,\"reserved\":0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_imu_suppress_ack` (tests/vectors/mip/3dm_streaming.yaml:204)
+#[test]
+fn case_poll_imu_suppress_ack() {
+    check(
+        "75650c0707010101040000fbe9",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{\"option\":1,\"num_descriptors\":1,\"descriptors\":[{\"descriptor\":4,\"reserved\":0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_gnss_stored_format` (tests/vectors/mip/3dm_streaming.yaml:218)
+#[test]
+fn case_poll_gnss_stored_format() {
+    check(
+        "75650c0404020000f0dd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":2,\"name\":\"poll_gnss_data\",\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_gnss_specified_format` (tests/vectors/mip/3dm_streaming.yaml:228)
+#[test]
+fn case_poll_gnss_specified_format() {
+    check(
+        "75650c0a0a020002030000050000062a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":2,\"name\":\"poll_gnss_data\",\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,\"reserved\":0},{\"descriptor\":5,\"reserved\":0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_gnss_ack` (tests/vectors/mip/3dm_streaming.yaml:240)
+#[test]
+fn case_poll_gnss_ack() {
+    check(
+        "75650c0404f10200e1ae",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":2,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_filter_stored_format` (tests/vectors/mip/3dm_streaming.yaml:249)
+#[test]
+fn case_poll_filter_stored_format() {
+    check(
+        "75650c0404030000f1e0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":3,\"name\":\"poll_filter_data\",\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_filter_specified_format` (tests/vectors/mip/3dm_streaming.yaml:259)
+#[test]
+fn case_poll_filter_specified_format() {
+    check(
+        "75650c0a0a030002010000020000021e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":3,\"name\":\"poll_filter_data\",\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,\"reserved\":0},{\"descriptor\":2,\"reserved\":0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_filter_ack` (tests/vectors/mip/3dm_streaming.yaml:271)
+#[test]
+fn case_poll_filter_ack() {
+    check(
+        "75650c0404f10300e2b0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":3,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_imu_base_rate_command` (tests/vectors/mip/3dm_streaming.yaml:281)
+#[test]
+fn case_get_imu_base_rate_command() {
+    check(
+        "75650c020206f0f7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":6,\"name\":\"get_imu_base_rate\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_imu_base_rate_reply` (tests/vectors/mip/3dm_streaming.yaml:291)
+#[test]
+fn case_get_imu_base_rate_reply() {
+    check(
+        "75650c0804f1060004830064d46b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":6,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"imu_base_rate\",\"values\":{\"rate\":100}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_gnss_base_rate_command` (tests/vectors/mip/3dm_streaming.yaml:302)
+#[test]
+fn case_get_gnss_base_rate_command() {
+    check(
+        "75650c020207f1f8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":7,\"name\":\"get_gnss_base_rate\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_gnss_base_rate_reply` (tests/vectors/mip/3dm_streaming.yaml:312)
+#[test]
+fn case_get_gnss_base_rate_reply() {
+    check(
+        "75650c0804f10700048400047614",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":7,\"ack_code\":0}},{\"descriptor\":132,\"name\":\"gnss_base_rate\",\"values\":{\"rate\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_filter_base_rate_command` (tests/vectors/mip/3dm_streaming.yaml:322)
+#[test]
+fn case_get_filter_base_rate_command() {
+    check(
+        "75650c02020bf5fc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":11,\"name\":\"get_filter_base_rate\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_filter_base_rate_reply` (tests/vectors/mip/3dm_streaming.yaml:332)
+#[test]
+fn case_get_filter_base_rate_reply() {
+    check(
+        "75650c0804f10b00048a0064e09e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":11,\"ack_code\":0}},{\"descriptor\":138,\"name\":\"filter_base_rate\",\"values\":{\"rate\":100}}]}",
+        ],
+        false,
+    );
+}
+
+/// `imu_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:343)
+#[test]
+fn case_imu_message_format_write() {
+    check(
+        "75650c0a0a08010204000a05000a22a0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `imu_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:355)
+#[test]
+fn case_imu_message_format_read() {
+    check(
+        "75650c0404080200f8f3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `imu_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:365)
+#[test]
+fn case_imu_message_format_read_reply() {
+    check(
+        "75650c0d04f1080009800203000a04000a9606",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"imu_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,\"decimation\":10},{\"descriptor\":4,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `imu_message_format_read_reply_table_published` (tests/vectors/mip/3dm_streaming.yaml:381)
+#[test]
+fn case_imu_message_format_read_reply_table_published() {
+    check(
+        "75650c0d04f1080009800203000a04000a980f",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0d04f1080009800203000a04000a980f\"}"],
+        true,
+    );
+}
+
+/// `imu_message_format_load` (tests/vectors/mip/3dm_streaming.yaml:394)
+#[test]
+fn case_imu_message_format_load() {
+    check(
+        "75650c0404080400faf7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":4,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:404)
+#[test]
+fn case_gnss_message_format_write() {
+    check(
+        "75650c0a0a0901020300040500041685",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_message_format_ack` (tests/vectors/mip/3dm_streaming.yaml:416)
+#[test]
+fn case_gnss_message_format_ack() {
+    check(
+        "75650c0404f10900e8bc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":9,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:425)
+#[test]
+fn case_gnss_message_format_read() {
+    check(
+        "75650c0404090200f9f6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_message_format_read_table_published` (tests/vectors/mip/3dm_streaming.yaml:434)
+#[test]
+fn case_gnss_message_format_read_table_published() {
+    check(
+        "75650c0404090200f9f3",
+        None,
+        &["{\"offset\":0,\"skipped\":\"75650c0404090200f9f3\"}"],
+        true,
+    );
+}
+
+/// `gnss_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:446)
+#[test]
+fn case_gnss_message_format_read_reply() {
+    check(
+        "75650c0d04f109000981020300040500048dfe",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":9,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"gnss_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:458)
+#[test]
+fn case_filter_message_format_write() {
+    check(
+        "75650c0a0a0a01020100010200010c6a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,\"decimation\":1},{\"descriptor\":2,\"decimation\":1}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_write_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:469)
+#[test]
+fn case_filter_message_format_write_copy_paste_published() {
+    check(
+        "75650c0a0a0901020300040500041685",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:488)
+#[test]
+fn case_filter_message_format_read() {
+    check(
+        "75650c04040a0200faf9",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_read_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:497)
+#[test]
+fn case_filter_message_format_read_copy_paste_published() {
+    check(
+        "75650c0404090200f9f6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:513)
+#[test]
+fn case_filter_message_format_read_reply() {
+    check(
+        "75650c0d04f10a0009820201000102000184ed",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"filter_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,\"decimation\":1},{\"descriptor\":2,\"decimation\":1}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `two_message_formats_in_one_packet` (tests/vectors/mip/3dm_streaming.yaml:526)
+#[test]
+fn case_two_message_formats_in_one_packet() {
+    check(
+        "75650c200d08010312000a04000a05000a130a010511000a10000a01000a02000a03000ad43d",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":1,\"num_descriptors\":3,\"descriptors\":[{\"descriptor\":18,\"decimation\":10},{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}},{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":1,\"num_descriptors\":5,\"descriptors\":[{\"descriptor\":17,\"decimation\":10},{\"descriptor\":16,\"decimation\":10},{\"descriptor\":1,\"decimation\":10},{\"descriptor\":2,\"decimation\":10},{\"descriptor\":3,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_imu_on` (tests/vectors/mip/3dm_streaming.yaml:554)
+#[test]
+fn case_data_stream_imu_on() {
+    check(
+        "75650c050511010101041a",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_imu_off` (tests/vectors/mip/3dm_streaming.yaml:565)
+#[test]
+fn case_data_stream_imu_off() {
+    check(
+        "75650c0505110101000319",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_ack` (tests/vectors/mip/3dm_streaming.yaml:575)
+#[test]
+fn case_data_stream_ack() {
+    check(
+        "75650c0404f11100f0cc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_gx5_read_filter` (tests/vectors/mip/3dm_streaming.yaml:584)
+#[test]
+fn case_data_stream_gx5_read_filter() {
+    check(
+        "75650c0505110203000620",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{\"function\":2,\"device_selector\":3,\"enable\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_gx5_read_reply` (tests/vectors/mip/3dm_streaming.yaml:598)
+#[test]
+fn case_data_stream_gx5_read_reply() {
+    check(
+        "75650c0804f11100048503018156",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"data_stream_control_response\",\"device\":\"gx5_45\",\"values\":{\"device_selector\":3,\"enabled\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_constellation_settings_write` (tests/vectors/mip/3dm_streaming.yaml:613)
+#[test]
+fn case_gnss_constellation_settings_write() {
+    check(
+        "75650c121221010020020001081000000601080e0000845a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_settings\",\"values\":{\"function\":1,\"max_channels\":32,\"config_count\":2,\"settings\":[{\"constellation_id\":0,\"enable\":1,\"reserved_channels\":8,\"max_channels\":16,\"option_flags\":0},{\"constellation_id\":6,\"enable\":1,\"reserved_channels\":8,\"max_channels\":14,\"option_flags\":0}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_constellation_settings_ack` (tests/vectors/mip/3dm_streaming.yaml:631)
+#[test]
+fn case_gnss_constellation_settings_ack() {
+    check(
+        "75650c0404f1210000ec",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":33,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_constellation_settings_read` (tests/vectors/mip/3dm_streaming.yaml:640)
+#[test]
+fn case_gnss_constellation_settings_read() {
+    check(
+        "75650c06062102000000157a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0,\"settings\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_constellation_settings_read_reply` (tests/vectors/mip/3dm_streaming.yaml:652)
+#[test]
+fn case_gnss_constellation_settings_read_reply() {
+    check(
+        "75650c2304f121001fa000200020040001081000000601080e0000010101030000050100030001683c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":33,\"ack_code\":0}},{\"descriptor\":160,\"name\":\"gnss_constellation_settings_response\",\"values\":{\"max_channels_available\":32,\"max_channels\":32,\"config_count\":4,\"settings\":[{\"constellation_id\":0,\"enable\":1,\"reserved_channels\":8,\"max_channels\":16,\"option_flags\":0},{\"constellation_id\":6,\"enable\":1,\"reserved_channels\":8,\"max_channels\":14,\"option_flags\":0},{\"constellation_id\":1,\"enable\":1,\"reserved_channels\":1,\"max_channels\":3,\"option_flags\":0},{\"constellation_id\":5,\"enable\":1,\"reserved_channels\":0,\"max_channels\":3,\"option_flags\":1}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_sbas_settings_write` (tests/vectors/mip/3dm_streaming.yaml:680)
+#[test]
+fn case_gnss_sbas_settings_write() {
+    check(
+        "75650c0b0b22010100030200780079165c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\",\"values\":{\"function\":1,\"enable_sbas\":1,\"sbas_options\":3,\"num_included_prns\":2,\"included_prns\":[120,121]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_sbas_settings_ack` (tests/vectors/mip/3dm_streaming.yaml:697)
+#[test]
+fn case_gnss_sbas_settings_ack() {
+    check(
+        "75650c0404f1220001ee",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":34,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_sbas_settings_read_reply_three_prns` (tests/vectors/mip/3dm_streaming.yaml:706)
+#[test]
+fn case_gnss_sbas_settings_read_reply_three_prns() {
+    check(
+        "75650c1004f122000ca10100070300780079007a30d5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":161,\"name\":\"gnss_sbas_settings_response\",\"values\":{\"enable_sbas\":1,\"sbas_options\":7,\"num_included_prns\":3,\"included_prns\":[120,121,122]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_sbas_settings_read_short` (tests/vectors/mip/3dm_streaming.yaml:727)
+#[test]
+fn case_gnss_sbas_settings_read_short() {
+    check(
+        "75650c030322021028",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_sbas_settings_write_include_all` (tests/vectors/mip/3dm_streaming.yaml:737)
+#[test]
+fn case_gnss_sbas_settings_write_include_all() {
+    check(
+        "75650c07072201010003001ba9",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\",\"values\":{\"function\":1,\"enable_sbas\":1,\"sbas_options\":3,\"num_included_prns\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_sbas_settings_read_reply_disabled` (tests/vectors/mip/3dm_streaming.yaml:752)
+#[test]
+fn case_gnss_sbas_settings_read_reply_disabled() {
+    check(
+        "75650c0a04f1220006a100000000ae7f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":161,\"name\":\"gnss_sbas_settings_response\",\"values\":{\"enable_sbas\":0,\"sbas_options\":0,\"num_included_prns\":0,\"included_prns\":[]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assisted_fix_enable` (tests/vectors/mip/3dm_streaming.yaml:766)
+#[test]
+fn case_gnss_assisted_fix_enable() {
+    check(
+        "75650c0505230101ff1460",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_control\",\"values\":{\"function\":1,\"option\":1,\"flags\":255}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assisted_fix_ack` (tests/vectors/mip/3dm_streaming.yaml:776)
+#[test]
+fn case_gnss_assisted_fix_ack() {
+    check(
+        "75650c0404f1230002f0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":35,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assisted_fix_read` (tests/vectors/mip/3dm_streaming.yaml:785)
+#[test]
+fn case_gnss_assisted_fix_read() {
+    check(
+        "75650c0505230200ff1461",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_control\",\"values\":{\"function\":2,\"option\":0,\"flags\":255}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assisted_fix_read_reply` (tests/vectors/mip/3dm_streaming.yaml:797)
+#[test]
+fn case_gnss_assisted_fix_read_reply() {
+    check(
+        "75650c0804f1230004a201ffac13",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":35,\"ack_code\":0}},{\"descriptor\":162,\"name\":\"gnss_assisted_fix_control_response\",\"values\":{\"option\":1,\"flags\":255}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assist_time_update_command` (tests/vectors/mip/3dm_streaming.yaml:809)
+#[test]
+fn case_gnss_assist_time_update_command() {
+    check(
+        "75650c1111240140e722c6b851eb85078140a000001deb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":47382.21,\"week_number\":1921,\"accuracy\":5.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assist_time_update_ack` (tests/vectors/mip/3dm_streaming.yaml:823)
+#[test]
+fn case_gnss_assist_time_update_ack() {
+    check(
+        "75650c0404f1240003f2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":36,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assist_time_update_read` (tests/vectors/mip/3dm_streaming.yaml:832)
+#[test]
+fn case_gnss_assist_time_update_read() {
+    check(
+        "75650c1111240200000000000000000000000000002e12",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":2,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assist_time_update_read_reply` (tests/vectors/mip/3dm_streaming.yaml:844)
+#[test]
+fn case_gnss_assist_time_update_read_reply() {
+    check(
+        "75650c1404f1240010a340e722c6b851eb85078140a00000b6e7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":36,\"ack_code\":0}},{\"descriptor\":163,\"name\":\"gnss_assist_time_update_response\",\"values\":{\"tow\":47382.21,\"week_number\":1921,\"accuracy\":5.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `device_status_basic_command` (tests/vectors/mip/3dm_streaming.yaml:858)
+#[test]
+fn case_device_status_basic_command() {
+    check(
+        "75650c050564186b01d87f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":100,\"name\":\"device_status\",\"values\":{\"model_number\":6251,\"status_selector\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `device_status_basic_reply` (tests/vectors/mip/3dm_streaming.yaml:868)
+#[test]
+fn case_device_status_basic_reply() {
+    check(
+        "75650c1304f164000f90186b010000000000010000ea60c0cc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"device_status_response\",\"values\":{\"model_number\":6251,\"status_selector\":1,\"status\":{\"status_flags\":0,\"system_state\":1,\"system_timer\":60000}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `device_status_diagnostic_command` (tests/vectors/mip/3dm_streaming.yaml:890)
+#[test]
+fn case_device_status_diagnostic_command() {
+    check(
+        "75650c050564186b02d980",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":100,\"name\":\"device_status\",\"values\":{\"model_number\":6251,\"status_selector\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `device_status_diagnostic_reply` (tests/vectors/mip/3dm_streaming.yaml:900)
+#[test]
+fn case_device_status_diagnostic_reply() {
+    check(
+        "75650c4f04f164004b90186b020000000000010000ea60010000003c0000e86c0101010000000000000000000000000001e240000003150000000000000000000075300000ea5e00000002000000f00000e9663669",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"device_status_response\",\"values\":{\"model_number\":6251,\"status_selector\":2,\"status\":{\"status_flags\":0,\"system_state\":1,\"system_timer\":60000,\"gnss_power_state\":1,\"pps_pulse_count\":60,\"last_pps_time\":59500,\"imu_stream_enabled\":1,\"gnss_stream_enabled\":1,\"filter_stream_enabled\":1,\"imu_dropped_packets\":0,\"gnss_dropped_packets\":0,\"filter_dropped_packets\":0,\"com_bytes_written\":123456,\"com_bytes_read\":789,\"com_write_overruns\":0,\"imu_parse_errors\":0,\"imu_messages_read\":30000,\"last_imu_message_time\":59998,\"gnss_parse_errors\":2,\"gnss_messages_read\":240,\"last_gnss_message_time\":59750}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `raw_rtcm_message_command` (tests/vectors/mip/3dm_streaming.yaml:948)
+#[test]
+fn case_raw_rtcm_message_command() {
+    check(
+        "75650c080820664100a0fcc019f4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":32,\"name\":\"raw_rtcm_message\",\"values\":{\"data\":[102,65,0,160,252,192]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `raw_rtcm_message_ack` (tests/vectors/mip/3dm_streaming.yaml:960)
+#[test]
+fn case_raw_rtcm_message_ack() {
+    check(
+        "75650c0404f12000ffea",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":32,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_base_rate_sensor_command` (tests/vectors/mip/3dm_streaming.yaml:970)
+#[test]
+fn case_get_base_rate_sensor_command() {
+    check(
+        "75650c03030e807a7e",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":14,\"name\":\"get_base_rate\",\"values\":{\"desc_set\":128}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_base_rate_sensor_reply` (tests/vectors/mip/3dm_streaming.yaml:979)
+#[test]
+fn case_get_base_rate_sensor_reply() {
+    check(
+        "75650c0904f10e00058e8003e8f058",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":14,\"ack_code\":0}},{\"descriptor\":142,\"name\":\"base_rate\",\"values\":{\"desc_set\":128,\"rate\":1000}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_write_generated` (tests/vectors/mip/3dm_streaming.yaml:989)
+#[test]
+fn case_pps_source_write_generated() {
+    check(
+        "75650c04042801041b55",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":1,\"source\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_ack` (tests/vectors/mip/3dm_streaming.yaml:998)
+#[test]
+fn case_pps_source_ack() {
+    check(
+        "75650c0404f1280007fa",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_save` (tests/vectors/mip/3dm_streaming.yaml:1008)
+#[test]
+fn case_pps_source_save() {
+    check(
+        "75650c030328031735",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_write_disabled` (tests/vectors/mip/3dm_streaming.yaml:1017)
+#[test]
+fn case_pps_source_write_disabled() {
+    check(
+        "75650c04042801001751",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":1,\"source\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_load` (tests/vectors/mip/3dm_streaming.yaml:1026)
+#[test]
+fn case_pps_source_load() {
+    check(
+        "75650c030328041836",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_load_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:1038)
+#[test]
+fn case_pps_source_load_copy_paste_published() {
+    check(
+        "75650c0404f128040bfe",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":4}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_default_save_read` (tests/vectors/mip/3dm_streaming.yaml:1056)
+#[test]
+fn case_pps_source_default_save_read() {
+    check(
+        "75650c090328050328030328027a4a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":5}},{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":3}},{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_default_save_read_reply` (tests/vectors/mip/3dm_streaming.yaml:1067)
+#[test]
+fn case_pps_source_default_save_read_reply() {
+    check(
+        "75650c0f04f1280004f1280004f1280003a801f8d9",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":168,\"name\":\"pps_source_response\",\"values\":{\"source\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_write_gpio` (tests/vectors/mip/3dm_streaming.yaml:1080)
+#[test]
+fn case_pps_source_write_gpio() {
+    check(
+        "75650c04042801031a54",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":1,\"source\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `pps_source_read_reply_receiver_2` (tests/vectors/mip/3dm_streaming.yaml:1090)
+#[test]
+fn case_pps_source_read_reply_receiver_2() {
+    check(
+        "75650c0704f1280003a802b782",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":168,\"name\":\"pps_source_response\",\"values\":{\"source\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `factory_streaming_overwrite` (tests/vectors/mip/3dm_streaming.yaml:1101)
+#[test]
+fn case_factory_streaming_overwrite() {
+    check(
+        "75650c0404100000fe07",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":16,\"name\":\"factory_streaming\",\"values\":{\"action\":0,\"reserved\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_nmea_data_one_sentence` (tests/vectors/mip/3dm_streaming.yaml:1111)
+#[test]
+fn case_poll_nmea_data_one_sentence() {
+    check(
+        "75650c0909040001010191000595c3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":4,\"name\":\"poll_nmea_data\",\"values\":{\"suppress_ack\":false,\"count\":1,\"format_entries\":[{\"message_id\":1,\"talker_id\":1,\"source_desc_set\":145,\"decimation\":5}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `nmea_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:1126)
+#[test]
+fn case_nmea_message_format_write() {
+    check(
+        "75650c0e0e0c0102010182000a04029100013732",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":12,\"name\":\"nmea_message_format\",\"values\":{\"function\":1,\"count\":2,\"format_entries\":[{\"message_id\":1,\"talker_id\":1,\"source_desc_set\":130,\"decimation\":10},{\"message_id\":4,\"talker_id\":2,\"source_desc_set\":145,\"decimation\":1}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `nmea_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:1146)
+#[test]
+fn case_nmea_message_format_read() {
+    check(
+        "75650c03030c02fafc",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":12,\"name\":\"nmea_message_format\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `nmea_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:1156)
+#[test]
+fn case_nmea_message_format_read_reply() {
+    check(
+        "75650c1104f10c000d8c02010182000a0402910001b919",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":12,\"ack_code\":0}},{\"descriptor\":140,\"name\":\"nmea_message_format_response\",\"values\":{\"count\":2,\"format_entries\":[{\"message_id\":1,\"talker_id\":1,\"source_desc_set\":130,\"decimation\":10},{\"message_id\":4,\"talker_id\":2,\"source_desc_set\":145,\"decimation\":1}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `poll_data_sensor_suppress_ack` (tests/vectors/mip/3dm_streaming.yaml:1175)
+#[test]
+fn case_poll_data_sensor_suppress_ack() {
+    check(
+        "75650c07070d80010204058db3",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":13,\"name\":\"poll_data\",\"values\":{\"desc_set\":128,\"suppress_ack\":true,\"num_descriptors\":2,\"descriptors\":[4,5]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `message_format_write_sensor` (tests/vectors/mip/3dm_streaming.yaml:1187)
+#[test]
+fn case_message_format_write_sensor() {
+    check(
+        "75650c0b0b0f01800204000a05000aab00",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\",\"values\":{\"function\":1,\"desc_set\":128,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `message_format_read_sensor` (tests/vectors/mip/3dm_streaming.yaml:1201)
+#[test]
+fn case_message_format_read_sensor() {
+    check(
+        "75650c04040f02807f88",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\",\"values\":{\"function\":2,\"desc_set\":128}}]}",
+        ],
+        false,
+    );
+}
+
+/// `message_format_read_sensor_reply` (tests/vectors/mip/3dm_streaming.yaml:1211)
+#[test]
+fn case_message_format_read_sensor_reply() {
+    check(
+        "75650c0e04f10f000a8f800204000a05000a307c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":15,\"ack_code\":0}},{\"descriptor\":143,\"name\":\"message_format_response\",\"values\":{\"desc_set\":128,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `message_format_save_all` (tests/vectors/mip/3dm_streaming.yaml:1226)
+#[test]
+fn case_message_format_save_all() {
+    check(
+        "75650c04040f0300000a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\",\"values\":{\"function\":3,\"desc_set\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `factory_streaming_merge` (tests/vectors/mip/3dm_streaming.yaml:1236)
+#[test]
+fn case_factory_streaming_merge() {
+    check(
+        "75650c0404100100ff09",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":16,\"name\":\"factory_streaming\",\"values\":{\"action\":1,\"reserved\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_cv7_enable_filter` (tests/vectors/mip/3dm_streaming.yaml:1246)
+#[test]
+fn case_data_stream_cv7_enable_filter() {
+    check(
+        "75650c050511018201851c",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"desc_set\":130,\"enable\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_cv7_read_filter` (tests/vectors/mip/3dm_streaming.yaml:1257)
+#[test]
+fn case_data_stream_cv7_read_filter() {
+    check(
+        "75650c04041102828390",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"cv7_ins\",\"values\":{\"function\":2,\"desc_set\":130}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_cv7_read_filter_reply` (tests/vectors/mip/3dm_streaming.yaml:1268)
+#[test]
+fn case_data_stream_cv7_read_filter_reply() {
+    check(
+        "75650c0804f11100048582010054",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"data_stream_control_response\",\"device\":\"cv7_ins\",\"values\":{\"desc_set\":130,\"enabled\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_cv7_save_all` (tests/vectors/mip/3dm_streaming.yaml:1280)
+#[test]
+fn case_data_stream_cv7_save_all() {
+    check(
+        "75650c04041103000210",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"cv7_ins\",\"values\":{\"function\":3,\"desc_set\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_supported_events_triggers` (tests/vectors/mip/3dm_streaming.yaml:1291)
+#[test]
+fn case_get_supported_events_triggers() {
+    check(
+        "75650c03032a011737",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":42,\"name\":\"get_supported_events\",\"values\":{\"query\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_supported_events_triggers_reply` (tests/vectors/mip/3dm_streaming.yaml:1301)
+#[test]
+fn case_get_supported_events_triggers_reply() {
+    check(
+        "75650c0f04f12a000bb4010c03010402080308fd58",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":42,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"supported_events\",\"values\":{\"query\":1,\"info\":{\"max_instances\":12,\"num_entries\":3,\"entries\":[{\"type\":1,\"count\":4},{\"type\":2,\"count\":8},{\"type\":3,\"count\":8}]}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_supported_events_actions` (tests/vectors/mip/3dm_streaming.yaml:1323)
+#[test]
+fn case_get_supported_events_actions() {
+    check(
+        "75650c03032a021838",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":42,\"name\":\"get_supported_events\",\"values\":{\"query\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `get_supported_events_actions_reply` (tests/vectors/mip/3dm_streaming.yaml:1333)
+#[test]
+fn case_get_supported_events_actions_reply() {
+    check(
+        "75650c0d04f12a0009b4020c0201060208f040",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":42,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"supported_events\",\"values\":{\"query\":2,\"info\":{\"max_instances\":12,\"num_entries\":2,\"entries\":[{\"type\":1,\"count\":6},{\"type\":2,\"count\":8}]}}}]}",
+        ],
+        false,
+    );
+}
+
 /// `frame_config_write_antenna_offset` (tests/vectors/mip/aiding.yaml:13)
 #[test]
 fn case_frame_config_write_antenna_offset() {

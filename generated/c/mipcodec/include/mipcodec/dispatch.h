@@ -72,114 +72,198 @@ typedef enum {
     MIP_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE = 30,
     MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG = 31,
     MIP_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE = 32,
-    MIP_FIELD_FILTER_RESET_FILTER = 33,
-    MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE = 34,
-    MIP_FIELD_FILTER_SET_INITIAL_HEADING = 35,
-    MIP_FIELD_FILTER_RUN_FILTER = 36,
-    MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE = 37,
-    MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE = 38,
-    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM = 39,
-    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE = 40,
-    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET = 41,
-    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE = 42,
-    MIP_FIELD_FILTER_ANTENNA_OFFSET = 43,
-    MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE = 44,
-    MIP_FIELD_FILTER_ESTIMATION_CONTROL = 45,
-    MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE = 46,
-    MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL = 47,
-    MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE = 48,
-    MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE = 49,
-    MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE = 50,
-    MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL = 51,
-    MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE = 52,
-    MIP_FIELD_FILTER_AUTO_INIT_CONTROL = 53,
-    MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE = 54,
-    MIP_FIELD_FILTER_ACCEL_NOISE = 55,
-    MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE = 56,
-    MIP_FIELD_FILTER_GYRO_NOISE = 57,
-    MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE = 58,
-    MIP_FIELD_FILTER_ACCEL_BIAS_MODEL = 59,
-    MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE = 60,
-    MIP_FIELD_FILTER_GYRO_BIAS_MODEL = 61,
-    MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE = 62,
-    MIP_FIELD_FILTER_ZUPT_CONTROL = 63,
-    MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE = 64,
-    MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME = 65,
-    MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL = 66,
-    MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE = 67,
-    MIP_FIELD_FILTER_TARE_ORIENTATION = 68,
-    MIP_FIELD_FILTER_COMMANDED_ZUPT = 69,
-    MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE = 70,
-    MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION = 71,
-    MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV = 72,
-    MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE = 73,
-    MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV = 74,
-    MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE = 75,
-    MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE = 76,
-    MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE = 77,
-    MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE = 78,
-    MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE = 79,
-    MIP_FIELD_FILTER_MAG_NOISE_STD_DEV = 80,
-    MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE = 81,
-    MIP_FIELD_FILTER_DECLINATION_SOURCE = 82,
-    MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE = 83,
-    MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT = 84,
-    MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE = 85,
-    MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT = 86,
-    MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE = 87,
-    MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT = 88,
-    MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE = 89,
-    MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL = 90,
-    MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE = 91,
-    MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL = 92,
-    MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE = 93,
-    MIP_FIELD_FILTER_INCLINATION_SOURCE = 94,
-    MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE = 95,
-    MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE = 96,
-    MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE = 97,
-    MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL = 98,
-    MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE = 99,
-    MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION = 100,
-    MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE = 101,
-    MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL = 102,
-    MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE = 103,
-    MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET = 104,
-    MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE = 105,
-    MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION = 106,
-    MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE = 107,
-    MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM = 108,
-    MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE = 109,
-    MIP_FIELD_FILTER_SPEED_LEVER_ARM = 110,
-    MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE = 111,
-    MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL = 112,
-    MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE = 113,
-    MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL = 114,
-    MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE = 115,
-    MIP_FIELD_GNSS_RECEIVER_INFO = 116,
-    MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE = 117,
-    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION = 118,
-    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE = 119,
-    MIP_FIELD_GNSS_SPARTN_CONFIGURATION = 120,
-    MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE = 121,
-    MIP_FIELD_AIDING_FRAME_CONFIG = 122,
-    MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE = 123,
-    MIP_FIELD_AIDING_ECHO_CONTROL = 124,
-    MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE = 125,
-    MIP_FIELD_AIDING_ECEF_POSITION = 126,
-    MIP_FIELD_AIDING_LLH_POSITION = 127,
-    MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID = 128,
-    MIP_FIELD_AIDING_ECEF_VELOCITY = 129,
-    MIP_FIELD_AIDING_NED_VELOCITY = 130,
-    MIP_FIELD_AIDING_BODY_FRAME_VELOCITY = 131,
-    MIP_FIELD_AIDING_TRUE_HEADING = 132,
-    MIP_FIELD_AIDING_MAGNETIC_FIELD = 133,
-    MIP_FIELD_AIDING_PRESSURE = 134,
-    MIP_FIELD_SYSTEM_COMMUNICATION_MODE = 135,
-    MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE = 136,
-    MIP_FIELD_SENSOR_SCALED_ACCEL = 137,
-    MIP_FIELD_SENSOR_SCALED_GYRO = 138,
-    MIP_FIELD_SENSOR_SCALED_MAG = 139,
-    MIP_FIELD_COUNT = 140
+    MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45 = 33,
+    MIP_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_CV7_INS = 34,
+    MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER = 35,
+    MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE = 36,
+    MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION = 37,
+    MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE = 38,
+    MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM = 39,
+    MIP_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE = 40,
+    MIP_FIELD_THREEDM_ACCEL_BIAS_GX5_45 = 41,
+    MIP_FIELD_THREEDM_ACCEL_BIAS_CV7_INS = 42,
+    MIP_FIELD_THREEDM_ACCEL_BIAS_RESPONSE = 43,
+    MIP_FIELD_THREEDM_GYRO_BIAS_GX5_45 = 44,
+    MIP_FIELD_THREEDM_GYRO_BIAS_CV7_INS = 45,
+    MIP_FIELD_THREEDM_GYRO_BIAS_RESPONSE = 46,
+    MIP_FIELD_THREEDM_CAPTURE_GYRO_BIAS = 47,
+    MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45 = 48,
+    MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_CV7_INS = 49,
+    MIP_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE = 50,
+    MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45 = 51,
+    MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_CV7_INS = 52,
+    MIP_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE = 53,
+    MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE = 54,
+    MIP_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE = 55,
+    MIP_FIELD_THREEDM_UART_BAUDRATE = 56,
+    MIP_FIELD_THREEDM_UART_BAUDRATE_RESPONSE = 57,
+    MIP_FIELD_THREEDM_GPIO_CONFIG = 58,
+    MIP_FIELD_THREEDM_GPIO_CONFIG_RESPONSE = 59,
+    MIP_FIELD_THREEDM_GPIO_STATE = 60,
+    MIP_FIELD_THREEDM_GPIO_STATE_RESPONSE = 61,
+    MIP_FIELD_THREEDM_ODOMETER_CONFIG = 62,
+    MIP_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE = 63,
+    MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER = 64,
+    MIP_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE = 65,
+    MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER = 66,
+    MIP_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE = 67,
+    MIP_FIELD_THREEDM_SENSOR_RANGE = 68,
+    MIP_FIELD_THREEDM_SENSOR_RANGE_RESPONSE = 69,
+    MIP_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES = 70,
+    MIP_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES = 71,
+    MIP_FIELD_THREEDM_LOWPASS_FILTER = 72,
+    MIP_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE = 73,
+    MIP_FIELD_THREEDM_POLL_IMU_DATA = 74,
+    MIP_FIELD_THREEDM_POLL_GNSS_DATA = 75,
+    MIP_FIELD_THREEDM_POLL_FILTER_DATA = 76,
+    MIP_FIELD_THREEDM_POLL_NMEA_DATA = 77,
+    MIP_FIELD_THREEDM_POLL_DATA = 78,
+    MIP_FIELD_THREEDM_GET_IMU_BASE_RATE = 79,
+    MIP_FIELD_THREEDM_IMU_BASE_RATE = 80,
+    MIP_FIELD_THREEDM_GET_GNSS_BASE_RATE = 81,
+    MIP_FIELD_THREEDM_GNSS_BASE_RATE = 82,
+    MIP_FIELD_THREEDM_GET_FILTER_BASE_RATE = 83,
+    MIP_FIELD_THREEDM_FILTER_BASE_RATE = 84,
+    MIP_FIELD_THREEDM_GET_BASE_RATE = 85,
+    MIP_FIELD_THREEDM_BASE_RATE = 86,
+    MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT = 87,
+    MIP_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE = 88,
+    MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT = 89,
+    MIP_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE = 90,
+    MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT = 91,
+    MIP_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE = 92,
+    MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT = 93,
+    MIP_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE = 94,
+    MIP_FIELD_THREEDM_MESSAGE_FORMAT = 95,
+    MIP_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE = 96,
+    MIP_FIELD_THREEDM_FACTORY_STREAMING = 97,
+    MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45 = 98,
+    MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_CV7_INS = 99,
+    MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45 = 100,
+    MIP_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_CV7_INS = 101,
+    MIP_FIELD_THREEDM_RAW_RTCM_MESSAGE = 102,
+    MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS = 103,
+    MIP_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE = 104,
+    MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS = 105,
+    MIP_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE = 106,
+    MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL = 107,
+    MIP_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE = 108,
+    MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE = 109,
+    MIP_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE = 110,
+    MIP_FIELD_THREEDM_PPS_SOURCE = 111,
+    MIP_FIELD_THREEDM_PPS_SOURCE_RESPONSE = 112,
+    MIP_FIELD_THREEDM_GET_SUPPORTED_EVENTS = 113,
+    MIP_FIELD_THREEDM_SUPPORTED_EVENTS = 114,
+    MIP_FIELD_THREEDM_DEVICE_STATUS = 115,
+    MIP_FIELD_THREEDM_DEVICE_STATUS_RESPONSE = 116,
+    MIP_FIELD_FILTER_RESET_FILTER = 117,
+    MIP_FIELD_FILTER_SET_INITIAL_ATTITUDE = 118,
+    MIP_FIELD_FILTER_SET_INITIAL_HEADING = 119,
+    MIP_FIELD_FILTER_RUN_FILTER = 120,
+    MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE = 121,
+    MIP_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE = 122,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM = 123,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE = 124,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET = 125,
+    MIP_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE = 126,
+    MIP_FIELD_FILTER_ANTENNA_OFFSET = 127,
+    MIP_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE = 128,
+    MIP_FIELD_FILTER_ESTIMATION_CONTROL = 129,
+    MIP_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE = 130,
+    MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL = 131,
+    MIP_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE = 132,
+    MIP_FIELD_FILTER_EXTERNAL_GNSS_UPDATE = 133,
+    MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE = 134,
+    MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL = 135,
+    MIP_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE = 136,
+    MIP_FIELD_FILTER_AUTO_INIT_CONTROL = 137,
+    MIP_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE = 138,
+    MIP_FIELD_FILTER_ACCEL_NOISE = 139,
+    MIP_FIELD_FILTER_ACCEL_NOISE_RESPONSE = 140,
+    MIP_FIELD_FILTER_GYRO_NOISE = 141,
+    MIP_FIELD_FILTER_GYRO_NOISE_RESPONSE = 142,
+    MIP_FIELD_FILTER_ACCEL_BIAS_MODEL = 143,
+    MIP_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE = 144,
+    MIP_FIELD_FILTER_GYRO_BIAS_MODEL = 145,
+    MIP_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE = 146,
+    MIP_FIELD_FILTER_ZUPT_CONTROL = 147,
+    MIP_FIELD_FILTER_ZUPT_CONTROL_RESPONSE = 148,
+    MIP_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME = 149,
+    MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL = 150,
+    MIP_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE = 151,
+    MIP_FIELD_FILTER_TARE_ORIENTATION = 152,
+    MIP_FIELD_FILTER_COMMANDED_ZUPT = 153,
+    MIP_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE = 154,
+    MIP_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION = 155,
+    MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV = 156,
+    MIP_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE = 157,
+    MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV = 158,
+    MIP_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE = 159,
+    MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE = 160,
+    MIP_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE = 161,
+    MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE = 162,
+    MIP_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE = 163,
+    MIP_FIELD_FILTER_MAG_NOISE_STD_DEV = 164,
+    MIP_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE = 165,
+    MIP_FIELD_FILTER_DECLINATION_SOURCE = 166,
+    MIP_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE = 167,
+    MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT = 168,
+    MIP_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE = 169,
+    MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT = 170,
+    MIP_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE = 171,
+    MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT = 172,
+    MIP_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE = 173,
+    MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL = 174,
+    MIP_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE = 175,
+    MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL = 176,
+    MIP_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE = 177,
+    MIP_FIELD_FILTER_INCLINATION_SOURCE = 178,
+    MIP_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE = 179,
+    MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE = 180,
+    MIP_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE = 181,
+    MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL = 182,
+    MIP_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE = 183,
+    MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION = 184,
+    MIP_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE = 185,
+    MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL = 186,
+    MIP_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE = 187,
+    MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET = 188,
+    MIP_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE = 189,
+    MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION = 190,
+    MIP_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE = 191,
+    MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM = 192,
+    MIP_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE = 193,
+    MIP_FIELD_FILTER_SPEED_LEVER_ARM = 194,
+    MIP_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE = 195,
+    MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL = 196,
+    MIP_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE = 197,
+    MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL = 198,
+    MIP_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE = 199,
+    MIP_FIELD_GNSS_RECEIVER_INFO = 200,
+    MIP_FIELD_GNSS_RECEIVER_INFO_RESPONSE = 201,
+    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION = 202,
+    MIP_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE = 203,
+    MIP_FIELD_GNSS_SPARTN_CONFIGURATION = 204,
+    MIP_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE = 205,
+    MIP_FIELD_AIDING_FRAME_CONFIG = 206,
+    MIP_FIELD_AIDING_FRAME_CONFIG_RESPONSE = 207,
+    MIP_FIELD_AIDING_ECHO_CONTROL = 208,
+    MIP_FIELD_AIDING_ECHO_CONTROL_RESPONSE = 209,
+    MIP_FIELD_AIDING_ECEF_POSITION = 210,
+    MIP_FIELD_AIDING_LLH_POSITION = 211,
+    MIP_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID = 212,
+    MIP_FIELD_AIDING_ECEF_VELOCITY = 213,
+    MIP_FIELD_AIDING_NED_VELOCITY = 214,
+    MIP_FIELD_AIDING_BODY_FRAME_VELOCITY = 215,
+    MIP_FIELD_AIDING_TRUE_HEADING = 216,
+    MIP_FIELD_AIDING_MAGNETIC_FIELD = 217,
+    MIP_FIELD_AIDING_PRESSURE = 218,
+    MIP_FIELD_SYSTEM_COMMUNICATION_MODE = 219,
+    MIP_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE = 220,
+    MIP_FIELD_SENSOR_SCALED_ACCEL = 221,
+    MIP_FIELD_SENSOR_SCALED_GYRO = 222,
+    MIP_FIELD_SENSOR_SCALED_MAG = 223,
+    MIP_FIELD_COUNT = 224
 } mip_field_id_t;
 
 /** A decoded field: which layout, and its value. */
@@ -218,6 +302,90 @@ typedef struct {
         mip_threedm_event_trigger_config_response_t threedm_event_trigger_config_response;
         mip_threedm_event_action_config_t threedm_event_action_config;
         mip_threedm_event_action_config_response_t threedm_event_action_config_response;
+        mip_threedm_device_startup_settings_gx5_45_t threedm_device_startup_settings_gx5_45;
+        mip_threedm_device_startup_settings_cv7_ins_t threedm_device_startup_settings_cv7_ins;
+        mip_threedm_sensor_to_vehicle_euler_t threedm_sensor_to_vehicle_euler;
+        mip_threedm_sensor_to_vehicle_euler_response_t threedm_sensor_to_vehicle_euler_response;
+        mip_threedm_sensor_to_vehicle_quaternion_t threedm_sensor_to_vehicle_quaternion;
+        mip_threedm_sensor_to_vehicle_quaternion_response_t threedm_sensor_to_vehicle_quaternion_response;
+        mip_threedm_sensor_to_vehicle_dcm_t threedm_sensor_to_vehicle_dcm;
+        mip_threedm_sensor_to_vehicle_dcm_response_t threedm_sensor_to_vehicle_dcm_response;
+        mip_threedm_accel_bias_gx5_45_t threedm_accel_bias_gx5_45;
+        mip_threedm_accel_bias_cv7_ins_t threedm_accel_bias_cv7_ins;
+        mip_threedm_accel_bias_response_t threedm_accel_bias_response;
+        mip_threedm_gyro_bias_gx5_45_t threedm_gyro_bias_gx5_45;
+        mip_threedm_gyro_bias_cv7_ins_t threedm_gyro_bias_cv7_ins;
+        mip_threedm_gyro_bias_response_t threedm_gyro_bias_response;
+        mip_threedm_capture_gyro_bias_t threedm_capture_gyro_bias;
+        mip_threedm_mag_hard_iron_offset_gx5_45_t threedm_mag_hard_iron_offset_gx5_45;
+        mip_threedm_mag_hard_iron_offset_cv7_ins_t threedm_mag_hard_iron_offset_cv7_ins;
+        mip_threedm_mag_hard_iron_offset_response_t threedm_mag_hard_iron_offset_response;
+        mip_threedm_mag_soft_iron_matrix_gx5_45_t threedm_mag_soft_iron_matrix_gx5_45;
+        mip_threedm_mag_soft_iron_matrix_cv7_ins_t threedm_mag_soft_iron_matrix_cv7_ins;
+        mip_threedm_mag_soft_iron_matrix_response_t threedm_mag_soft_iron_matrix_response;
+        mip_threedm_coning_sculling_enable_t threedm_coning_sculling_enable;
+        mip_threedm_coning_sculling_enable_response_t threedm_coning_sculling_enable_response;
+        mip_threedm_uart_baudrate_t threedm_uart_baudrate;
+        mip_threedm_uart_baudrate_response_t threedm_uart_baudrate_response;
+        mip_threedm_gpio_config_t threedm_gpio_config;
+        mip_threedm_gpio_config_response_t threedm_gpio_config_response;
+        mip_threedm_gpio_state_t threedm_gpio_state;
+        mip_threedm_gpio_state_response_t threedm_gpio_state_response;
+        mip_threedm_odometer_config_t threedm_odometer_config;
+        mip_threedm_odometer_config_response_t threedm_odometer_config_response;
+        mip_threedm_advanced_lowpass_filter_t threedm_advanced_lowpass_filter;
+        mip_threedm_advanced_lowpass_filter_response_t threedm_advanced_lowpass_filter_response;
+        mip_threedm_complementary_filter_t threedm_complementary_filter;
+        mip_threedm_complementary_filter_response_t threedm_complementary_filter_response;
+        mip_threedm_sensor_range_t threedm_sensor_range;
+        mip_threedm_sensor_range_response_t threedm_sensor_range_response;
+        mip_threedm_get_calibrated_sensor_ranges_t threedm_get_calibrated_sensor_ranges;
+        mip_threedm_calibrated_sensor_ranges_t threedm_calibrated_sensor_ranges;
+        mip_threedm_lowpass_filter_t threedm_lowpass_filter;
+        mip_threedm_lowpass_filter_response_t threedm_lowpass_filter_response;
+        mip_threedm_poll_imu_data_t threedm_poll_imu_data;
+        mip_threedm_poll_gnss_data_t threedm_poll_gnss_data;
+        mip_threedm_poll_filter_data_t threedm_poll_filter_data;
+        mip_threedm_poll_nmea_data_t threedm_poll_nmea_data;
+        mip_threedm_poll_data_t threedm_poll_data;
+        mip_threedm_get_imu_base_rate_t threedm_get_imu_base_rate;
+        mip_threedm_imu_base_rate_t threedm_imu_base_rate;
+        mip_threedm_get_gnss_base_rate_t threedm_get_gnss_base_rate;
+        mip_threedm_gnss_base_rate_t threedm_gnss_base_rate;
+        mip_threedm_get_filter_base_rate_t threedm_get_filter_base_rate;
+        mip_threedm_filter_base_rate_t threedm_filter_base_rate;
+        mip_threedm_get_base_rate_t threedm_get_base_rate;
+        mip_threedm_base_rate_t threedm_base_rate;
+        mip_threedm_imu_message_format_t threedm_imu_message_format;
+        mip_threedm_imu_message_format_response_t threedm_imu_message_format_response;
+        mip_threedm_gnss_message_format_t threedm_gnss_message_format;
+        mip_threedm_gnss_message_format_response_t threedm_gnss_message_format_response;
+        mip_threedm_filter_message_format_t threedm_filter_message_format;
+        mip_threedm_filter_message_format_response_t threedm_filter_message_format_response;
+        mip_threedm_nmea_message_format_t threedm_nmea_message_format;
+        mip_threedm_nmea_message_format_response_t threedm_nmea_message_format_response;
+        mip_threedm_message_format_t threedm_message_format;
+        mip_threedm_message_format_response_t threedm_message_format_response;
+        mip_threedm_factory_streaming_t threedm_factory_streaming;
+        mip_threedm_data_stream_control_gx5_45_t threedm_data_stream_control_gx5_45;
+        mip_threedm_data_stream_control_cv7_ins_t threedm_data_stream_control_cv7_ins;
+        mip_threedm_data_stream_control_response_gx5_45_t threedm_data_stream_control_response_gx5_45;
+        mip_threedm_data_stream_control_response_cv7_ins_t threedm_data_stream_control_response_cv7_ins;
+        mip_threedm_raw_rtcm_message_t threedm_raw_rtcm_message;
+        mip_threedm_gnss_constellation_settings_t threedm_gnss_constellation_settings;
+        mip_threedm_gnss_constellation_settings_response_t threedm_gnss_constellation_settings_response;
+        mip_threedm_gnss_sbas_settings_t threedm_gnss_sbas_settings;
+        mip_threedm_gnss_sbas_settings_response_t threedm_gnss_sbas_settings_response;
+        mip_threedm_gnss_assisted_fix_control_t threedm_gnss_assisted_fix_control;
+        mip_threedm_gnss_assisted_fix_control_response_t threedm_gnss_assisted_fix_control_response;
+        mip_threedm_gnss_assist_time_update_t threedm_gnss_assist_time_update;
+        mip_threedm_gnss_assist_time_update_response_t threedm_gnss_assist_time_update_response;
+        mip_threedm_pps_source_t threedm_pps_source;
+        mip_threedm_pps_source_response_t threedm_pps_source_response;
+        mip_threedm_get_supported_events_t threedm_get_supported_events;
+        mip_threedm_supported_events_t threedm_supported_events;
+        mip_threedm_device_status_t threedm_device_status;
+        mip_threedm_device_status_response_t threedm_device_status_response;
         mip_filter_reset_filter_t filter_reset_filter;
         mip_filter_set_initial_attitude_t filter_set_initial_attitude;
         mip_filter_set_initial_heading_t filter_set_initial_heading;

@@ -26,9 +26,9 @@ typedef enum {
 const char *mip_status_text(mip_status_t status);
 
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
-#define MIP_PATH_MAX_DEPTH 2
+#define MIP_PATH_MAX_DEPTH 3
 /** Enough room for any message mip_decode_error_format() can produce. */
-#define MIP_ERROR_MESSAGE_MAX 270
+#define MIP_ERROR_MESSAGE_MAX 325
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {

@@ -159,6 +159,20 @@ typedef uint8_t mip_altitude_aiding_source_t;
 #define MIP_ALTITUDE_AIDING_SOURCE_PRESSURE                                                                  \
     ((mip_altitude_aiding_source_t)1u) /* Pressure sensor aiding enabled. */
 
+/** Assisted fix option.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_assisted_fix_option_t;
+#define MIP_ASSISTED_FIX_OPTION_NONE ((mip_assisted_fix_option_t)0u)    /* No assisted fix (default). */
+#define MIP_ASSISTED_FIX_OPTION_ENABLED ((mip_assisted_fix_option_t)1u) /* Assisted fix enabled. */
+
+/** GNSS constellation option flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_constellation_options_t;
+#define MIP_CONSTELLATION_OPTIONS_L1SAIF_MASK                                                                \
+    ((mip_constellation_options_t)0x1u) /* bit 0: L1SAIF signal (QZSS only). */
+#define MIP_CONSTELLATION_OPTIONS_L1SAIF_SHIFT 0
+
 /** 3DM-CV7 commanded built-in test result.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
  * (value & X_MASK) >> X_SHIFT. */
@@ -218,6 +232,13 @@ typedef uint32_t mip_cv7_bit_flags_t;
     ((mip_cv7_bit_flags_t)0xFF000000u) /* bits 24-31: (reserved) Reserved. */
 #define MIP_CV7_BIT_FLAGS_RESERVED_SHIFT 24
 
+/** Device status selector.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_device_status_selector_t;
+#define MIP_DEVICE_STATUS_SELECTOR_BASIC ((mip_device_status_selector_t)1u) /* Basic status structure. */
+#define MIP_DEVICE_STATUS_SELECTOR_DIAGNOSTIC                                                                \
+    ((mip_device_status_selector_t)2u) /* Diagnostic status structure. */
+
 /** Estimation control flags. Which optional states the Kalman filter estimates.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
  * (value & X_MASK) >> X_SHIFT. */
@@ -265,6 +286,19 @@ typedef uint8_t mip_external_heading_type_t;
     ((mip_external_heading_type_t)1u) /* True heading (from true north). */
 #define MIP_EXTERNAL_HEADING_TYPE_MAGNETIC_HEADING                                                           \
     ((mip_external_heading_type_t)2u) /* Magnetic heading (from magnetic north). */
+
+/** Factory streaming action.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_factory_streaming_action_t;
+#define MIP_FACTORY_STREAMING_ACTION_OVERWRITE                                                               \
+    ((mip_factory_streaming_action_t)0u) /* Replace the message formats, dropping the descriptors already    \
+                                            there. */
+#define MIP_FACTORY_STREAMING_ACTION_MERGE                                                                   \
+    ((mip_factory_streaming_action_t)1u) /* Merge the support descriptors into the existing formats (order   \
+                                            may change). */
+#define MIP_FACTORY_STREAMING_ACTION_ADD                                                                     \
+    ((mip_factory_streaming_action_t)2u) /* Append the support descriptors to the existing formats           \
+                                            (duplicates possible). */
 
 /** Filter GNSS source. Where the filter takes its GNSS position and velocity updates from.
  * An integer, so that values the spec does not list are kept. */
@@ -362,6 +396,101 @@ typedef uint8_t mip_gnss_gps_signals_t;
 #define MIP_GNSS_GPS_SIGNALS_L5_MASK ((mip_gnss_gps_signals_t)0x4u) /* bit 2: Enable L5. */
 #define MIP_GNSS_GPS_SIGNALS_L5_SHIFT 2
 
+/** GPIO behavior for the ENCODER feature.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_encoder_behavior_t;
+#define MIP_GPIO_ENCODER_BEHAVIOR_UNUSED ((mip_gpio_encoder_behavior_t)0u) /* No behavior. */
+#define MIP_GPIO_ENCODER_BEHAVIOR_ENCODER_A                                                                  \
+    ((mip_gpio_encoder_behavior_t)1u) /* ENCODER_A: quadrature input A; one pin at most (the latest command  \
+                                         wins). */
+#define MIP_GPIO_ENCODER_BEHAVIOR_ENCODER_B                                                                  \
+    ((mip_gpio_encoder_behavior_t)2u) /* ENCODER_B: quadrature input B; one pin at most (the latest command  \
+                                         wins). */
+
+/** GPIO pin feature. What a user GPIO pin is used for; selects how the behavior byte is read.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_feature_t;
+#define MIP_GPIO_FEATURE_UNUSED                                                                              \
+    ((mip_gpio_feature_t)0u) /* Pin not used; reading its state may or may not work. */
+#define MIP_GPIO_FEATURE_GPIO                                                                                \
+    ((mip_gpio_feature_t)1u) /* General purpose input or output (direct control or monitoring of the pin     \
+                                state). */
+#define MIP_GPIO_FEATURE_PPS ((mip_gpio_feature_t)2u)     /* Pulse-per-second input or output. */
+#define MIP_GPIO_FEATURE_ENCODER ((mip_gpio_feature_t)3u) /* Motor encoder / odometer input. */
+#define MIP_GPIO_FEATURE_TIMESTAMP                                                                           \
+    ((mip_gpio_feature_t)4u) /* Precision timestamping of edges (for event triggers, 0x0C,0x2E). */
+#define MIP_GPIO_FEATURE_UART ((mip_gpio_feature_t)5u) /* UART data or control line. */
+
+/** GPIO behavior for the GPIO feature.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_io_behavior_t;
+#define MIP_GPIO_IO_BEHAVIOR_UNUSED ((mip_gpio_io_behavior_t)0u) /* No behavior. */
+#define MIP_GPIO_IO_BEHAVIOR_INPUT                                                                           \
+    ((mip_gpio_io_behavior_t)1u) /* GPIO_INPUT: the pin is an input that can be streamed or polled (the      \
+                                    default). */
+#define MIP_GPIO_IO_BEHAVIOR_OUTPUT_LOW                                                                      \
+    ((mip_gpio_io_behavior_t)2u) /* GPIO_OUTPUT_LOW: output, initially low (restored at startup if saved).   \
+                                  */
+#define MIP_GPIO_IO_BEHAVIOR_OUTPUT_HIGH                                                                     \
+    ((mip_gpio_io_behavior_t)3u) /* GPIO_OUTPUT_HIGH: output, initially high (restored at startup if saved). \
+                                  */
+
+/** GPIO pin electrical mode. Electrical configuration of a GPIO pin; which combinations a (feature, behavior)
+ * pair supports is listed in the User GPIO pin-mode table (line 1338). The whole integer is kept (reserved
+ * bits too); members are read with the masks below: (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gpio_pin_mode_t;
+#define MIP_GPIO_PIN_MODE_OPEN_DRAIN_MASK                                                                    \
+    ((mip_gpio_pin_mode_t)0x1u) /* bit 0: Open-drain output: LOW or floating instead of LOW or HIGH; usually \
+                                   with a pull-up. */
+#define MIP_GPIO_PIN_MODE_OPEN_DRAIN_SHIFT 0
+#define MIP_GPIO_PIN_MODE_PULLDOWN_MASK                                                                      \
+    ((mip_gpio_pin_mode_t)0x2u) /* bit 1: Internal pull-down resistor enabled (not with pullup). */
+#define MIP_GPIO_PIN_MODE_PULLDOWN_SHIFT 1
+#define MIP_GPIO_PIN_MODE_PULLUP_MASK                                                                        \
+    ((mip_gpio_pin_mode_t)0x4u) /* bit 2: Internal pull-up resistor enabled (not with pulldown); may lower   \
+                                   the allowed input voltage. */
+#define MIP_GPIO_PIN_MODE_PULLUP_SHIFT 2
+
+/** GPIO behavior for the PPS feature.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_pps_behavior_t;
+#define MIP_GPIO_PPS_BEHAVIOR_UNUSED ((mip_gpio_pps_behavior_t)0u) /* No behavior. */
+#define MIP_GPIO_PPS_BEHAVIOR_INPUT                                                                          \
+    ((mip_gpio_pps_behavior_t)1u) /* PPS_INPUT: receives the PPS signal; one pin at most; needs PPS source   \
+                                     GPIO (0x0C,0x28). */
+#define MIP_GPIO_PPS_BEHAVIOR_OUTPUT                                                                         \
+    ((mip_gpio_pps_behavior_t)2u) /* PPS_OUTPUT: transmits the device's PPS signal. */
+
+/** GPIO behavior for the TIMESTAMP feature.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_timestamp_behavior_t;
+#define MIP_GPIO_TIMESTAMP_BEHAVIOR_UNUSED ((mip_gpio_timestamp_behavior_t)0u) /* No behavior. */
+#define MIP_GPIO_TIMESTAMP_BEHAVIOR_RISING                                                                   \
+    ((mip_gpio_timestamp_behavior_t)1u) /* TIMESTAMP_RISING: rising edges are timestamped. */
+#define MIP_GPIO_TIMESTAMP_BEHAVIOR_FALLING                                                                  \
+    ((mip_gpio_timestamp_behavior_t)2u) /* TIMESTAMP_FALLING: falling edges are timestamped. */
+#define MIP_GPIO_TIMESTAMP_BEHAVIOR_EITHER                                                                   \
+    ((mip_gpio_timestamp_behavior_t)3u) /* TIMESTAMP_EITHER: both edges are timestamped. */
+
+/** GPIO behavior for the UART feature.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_uart_behavior_t;
+#define MIP_GPIO_UART_BEHAVIOR_UNUSED ((mip_gpio_uart_behavior_t)0u) /* No behavior. */
+#define MIP_GPIO_UART_BEHAVIOR_PORT2_TX                                                                      \
+    ((mip_gpio_uart_behavior_t)33u) /* UART_PORT2_TX: UART port 2 transmit. */
+#define MIP_GPIO_UART_BEHAVIOR_PORT2_RX                                                                      \
+    ((mip_gpio_uart_behavior_t)34u) /* UART_PORT2_RX: UART port 2 receive. */
+#define MIP_GPIO_UART_BEHAVIOR_PORT3_TX                                                                      \
+    ((mip_gpio_uart_behavior_t)49u) /* UART_PORT3_TX: UART port 3 transmit. */
+#define MIP_GPIO_UART_BEHAVIOR_PORT3_RX                                                                      \
+    ((mip_gpio_uart_behavior_t)50u) /* UART_PORT3_RX: UART port 3 receive. */
+
+/** GPIO behavior for the UNUSED feature.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gpio_unused_behavior_t;
+#define MIP_GPIO_UNUSED_BEHAVIOR_UNUSED                                                                      \
+    ((mip_gpio_unused_behavior_t)0u) /* No behavior (0 unless otherwise specified). */
+
 /** GPS time field selector.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_gps_time_field_t;
@@ -390,6 +519,30 @@ typedef uint32_t mip_gx5_bit_flags_t;
 #define MIP_GX5_BIT_FLAGS_FILTER_SOLUTION_FAULT_MASK                                                         \
     ((mip_gx5_bit_flags_t)0x1000000u) /* bit 24: Kalman filter: solution fault. */
 #define MIP_GX5_BIT_FLAGS_FILTER_SOLUTION_FAULT_SHIFT 24
+
+/** GNSS constellation ID (GX5-45 constellation settings).
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gx5_constellation_id_t;
+#define MIP_GX5_CONSTELLATION_ID_GPS ((mip_gx5_constellation_id_t)0u)     /* GPS (G1-G32). */
+#define MIP_GX5_CONSTELLATION_ID_SBAS ((mip_gx5_constellation_id_t)1u)    /* SBAS (S120-S158). */
+#define MIP_GX5_CONSTELLATION_ID_GALILEO ((mip_gx5_constellation_id_t)2u) /* Galileo (E1-E36). */
+#define MIP_GX5_CONSTELLATION_ID_BEIDOU ((mip_gx5_constellation_id_t)3u)  /* BeiDou (B1-B37). */
+#define MIP_GX5_CONSTELLATION_ID_QZSS ((mip_gx5_constellation_id_t)5u)    /* QZSS (Q1-Q5). */
+#define MIP_GX5_CONSTELLATION_ID_GLONASS ((mip_gx5_constellation_id_t)6u) /* GLONASS (R1-R32). */
+
+/** Poll option selector. First byte of the GX5-45 poll commands; chooses whether the ACK/NACK is sent.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gx5_poll_option_t;
+#define MIP_GX5_POLL_OPTION_NORMAL ((mip_gx5_poll_option_t)0u) /* Normal ACK/NACK reply. */
+#define MIP_GX5_POLL_OPTION_SUPPRESS_ACK                                                                     \
+    ((mip_gx5_poll_option_t)1u) /* No ACK/NACK reply; only the data packet is sent. */
+
+/** Continuous data stream selector (GX5-45). Which data stream the GX5-45 Enable/Disable Continuous Data
+ * Stream command controls. An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gx5_stream_selector_t;
+#define MIP_GX5_STREAM_SELECTOR_IMU ((mip_gx5_stream_selector_t)1u) /* IMU data stream (set 0x80). */
+#define MIP_GX5_STREAM_SELECTOR_ESTIMATION_FILTER                                                            \
+    ((mip_gx5_stream_selector_t)3u) /* Estimation filter data stream (set 0x82). */
 
 /** Allowed automatic heading alignment methods.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
@@ -447,6 +600,12 @@ typedef uint8_t mip_magnetic_param_source_t;
 #define MIP_MAGNETIC_PARAM_SOURCE_MANUAL                                                                     \
     ((mip_magnetic_param_source_t)3u) /* Value supplied by the user; the device does not validate it. */
 
+/** Odometer mode.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_odometer_mode_t;
+#define MIP_ODOMETER_MODE_DISABLED ((mip_odometer_mode_t)0u)   /* Encoder disabled. */
+#define MIP_ODOMETER_MODE_QUADRATURE ((mip_odometer_mode_t)2u) /* Quadrature encoder mode. */
+
 /** Pitch/roll aiding source.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_pitch_roll_aiding_source_t;
@@ -454,6 +613,17 @@ typedef uint8_t mip_pitch_roll_aiding_source_t;
     ((mip_pitch_roll_aiding_source_t)0u) /* No pitch/roll aiding (disabled). */
 #define MIP_PITCH_ROLL_AIDING_SOURCE_GRAVITY_VECTOR                                                          \
     ((mip_pitch_roll_aiding_source_t)1u) /* Gravity vector aiding enabled. */
+
+/** PPS source.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_pps_source_t;
+#define MIP_PPS_SOURCE_DISABLED                                                                              \
+    ((mip_pps_source_t)0u) /* No PPS (the table says it is not valid as a command value; see note). */
+#define MIP_PPS_SOURCE_RECEIVER_1 ((mip_pps_source_t)1u) /* PPS from GNSS receiver 1. */
+#define MIP_PPS_SOURCE_RECEIVER_2 ((mip_pps_source_t)2u) /* PPS from GNSS receiver 2. */
+#define MIP_PPS_SOURCE_GPIO                                                                                  \
+    ((mip_pps_source_t)3u) /* PPS applied to a GPIO pin (pin chosen with GPIO Configuration 0x0C,0x41). */
+#define MIP_PPS_SOURCE_GENERATED ((mip_pps_source_t)4u) /* PPS generated from the system oscillator. */
 
 /** Filter reference point.
  * An integer, so that values the spec does not list are kept. */
@@ -470,6 +640,32 @@ typedef uint8_t mip_relative_position_source_t;
 #define MIP_RELATIVE_POSITION_SOURCE_MANUAL                                                                  \
     ((mip_relative_position_source_t)1u) /* The reference coordinates given in the command. */
 
+/** SBAS options.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_sbas_options_t;
+#define MIP_SBAS_OPTIONS_ENABLE_RANGING_MASK                                                                 \
+    ((mip_sbas_options_t)0x1u) /* bit 0: Use SBAS pseudoranges in the position solution (GX5-45 default on). \
+                                */
+#define MIP_SBAS_OPTIONS_ENABLE_RANGING_SHIFT 0
+#define MIP_SBAS_OPTIONS_ENABLE_CORRECTIONS_MASK                                                             \
+    ((mip_sbas_options_t)0x2u) /* bit 1: Use SBAS differential corrections (GX5-45 default on). */
+#define MIP_SBAS_OPTIONS_ENABLE_CORRECTIONS_SHIFT 1
+#define MIP_SBAS_OPTIONS_APPLY_INTEGRITY_MASK                                                                \
+    ((mip_sbas_options_t)0x4u) /* bit 2: Use SBAS integrity information; only satellites with integrity data \
+                                  are used. */
+#define MIP_SBAS_OPTIONS_APPLY_INTEGRITY_SHIFT 2
+
+/** Sensor whose range is set or queried.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_sensor_range_type_t;
+#define MIP_SENSOR_RANGE_TYPE_ALL                                                                            \
+    ((mip_sensor_range_type_t)0u) /* All sensors; only with save, load and default. */
+#define MIP_SENSOR_RANGE_TYPE_ACCEL ((mip_sensor_range_type_t)1u) /* Accelerometer; range in g. */
+#define MIP_SENSOR_RANGE_TYPE_GYRO ((mip_sensor_range_type_t)2u)  /* Gyroscope; range in degrees/s. */
+#define MIP_SENSOR_RANGE_TYPE_MAG ((mip_sensor_range_type_t)3u)   /* Magnetometer; range in Gauss. */
+#define MIP_SENSOR_RANGE_TYPE_PRESS ((mip_sensor_range_type_t)4u) /* Pressure sensor; range in hPa. */
+
 /** SPARTN connection type.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_spartn_connection_type_t;
@@ -478,6 +674,14 @@ typedef uint8_t mip_spartn_connection_type_t;
     ((mip_spartn_connection_type_t)1u) /* Corrections over a network connection (e.g. NTRIP). */
 #define MIP_SPARTN_CONNECTION_TYPE_L_BAND                                                                    \
     ((mip_spartn_connection_type_t)2u) /* Corrections from an L-band correction receiver. */
+
+/** Supported events query.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_supported_events_query_t;
+#define MIP_SUPPORTED_EVENTS_QUERY_TRIGGER_TYPES                                                             \
+    ((mip_supported_events_query_t)1u) /* Report the supported trigger types and how many of each. */
+#define MIP_SUPPORTED_EVENTS_QUERY_ACTION_TYPES                                                              \
+    ((mip_supported_events_query_t)2u) /* Report the supported action types and how many of each. */
 
 /** Communication mode.
  * An integer, so that values the spec does not list are kept. */
@@ -618,6 +822,23 @@ typedef struct {
     uint8_t input_triggers[4]; /* Trigger IDs of the inputs; 0 for unused inputs. */
 } mip_combination_params_t;
 
+/** GNSS constellation configuration entry.  */
+typedef struct {
+    mip_gx5_constellation_id_t constellation_id; /* Constellation. */
+    uint8_t enable;                              /* 0x00 disable, 0x01 enable. */
+    uint8_t reserved_channels; /* Tracking channels reserved for this constellation (0-32; all constellations
+                                  together at most 32). */
+    uint8_t max_channels;      /* Maximum tracking channels for this constellation (0-32, not below
+                                  reserved_channels). */
+    mip_constellation_options_t option_flags; /* Constellation options. */
+} mip_constellation_settings_t;
+
+/** Descriptor and rate decimation. One entry of a message format list. */
+typedef struct {
+    uint8_t descriptor;  /* Data field descriptor. */
+    uint16_t decimation; /* Rate decimation: the field is output at base rate / decimation. */
+} mip_descriptor_rate_t;
+
 /** Device information. Firmware version and five 16-character identification strings, padded with spaces. */
 typedef struct {
     uint16_t firmware_version; /* Firmware version number. */
@@ -634,6 +855,149 @@ typedef struct {
     uint8_t mip_data_descriptor_set; /* MIP data descriptor set of this receiver's data. */
     char description[32];            /* ASCII, comma-delimited: module name/model, firmware version. */
 } mip_gnss_receiver_info_entry_t;
+
+/** GpioBehaviorUnused.  */
+typedef struct {
+    mip_gpio_unused_behavior_t behavior; /* Behavior value (0). */
+} mip_gpio_behavior_unused_t;
+
+/** GpioBehaviorIo.  */
+typedef struct {
+    mip_gpio_io_behavior_t behavior; /* Input, or output with its initial state. */
+} mip_gpio_behavior_io_t;
+
+/** GpioBehaviorPps.  */
+typedef struct {
+    mip_gpio_pps_behavior_t behavior; /* PPS input or output. */
+} mip_gpio_behavior_pps_t;
+
+/** GpioBehaviorEncoder.  */
+typedef struct {
+    mip_gpio_encoder_behavior_t behavior; /* Quadrature channel A or B. */
+} mip_gpio_behavior_encoder_t;
+
+/** GpioBehaviorTimestamp.  */
+typedef struct {
+    mip_gpio_timestamp_behavior_t behavior; /* Which edges are timestamped. */
+} mip_gpio_behavior_timestamp_t;
+
+/** GpioBehaviorUart.  */
+typedef struct {
+    mip_gpio_uart_behavior_t behavior; /* UART port and direction. */
+} mip_gpio_behavior_uart_t;
+
+/** GPIO behavior, read according to the feature. The behavior byte's meaning depends on the feature: the same
+ * number names a different behavior per feature (2 is GPIO_OUTPUT_LOW for GPIO, PPS_OUTPUT for PPS, ENCODER_B
+ * for ENCODER, TIMESTAMP_FALLING for TIMESTAMP). Every member is one u8. The member is chosen by a parameter
+ * of type mip_gpio_feature_t next to it. */
+typedef union {
+    mip_gpio_behavior_unused_t unused; /* unused: Feature UNUSED: behavior 0. */
+    mip_gpio_behavior_io_t gpio; /* gpio: Feature GPIO: GPIO_INPUT / GPIO_OUTPUT_LOW / GPIO_OUTPUT_HIGH. */
+    mip_gpio_behavior_pps_t pps; /* pps: Feature PPS: PPS_INPUT / PPS_OUTPUT. */
+    mip_gpio_behavior_encoder_t encoder; /* encoder: Feature ENCODER: ENCODER_A / ENCODER_B. */
+    mip_gpio_behavior_timestamp_t
+        timestamp;                 /* timestamp: Feature TIMESTAMP: TIMESTAMP_RISING / _FALLING / _EITHER. */
+    mip_gpio_behavior_uart_t uart; /* uart: Feature UART: UART_PORT2_TX/RX, UART_PORT3_TX/RX. */
+    uint8_t none_;                 /* members without data */
+} mip_gpio_behavior_t;
+
+/** GX5-45 basic device status. Remainder of the basic device status reply after the model number and selector
+ * echoes. */
+typedef struct {
+    uint32_t status_flags; /* Status flags (reserved). */
+    uint16_t system_state; /* System state (values not documented). */
+    uint32_t system_timer; /* Time since start-up. [ms] */
+} mip_gx5_basic_status_t;
+
+/** GX5-45 diagnostic device status. Remainder of the diagnostic device status reply after the model number
+ * and selector echoes. */
+typedef struct {
+    uint32_t status_flags;           /* Status flags (reserved). */
+    uint16_t system_state;           /* System state (values not documented). */
+    uint32_t system_timer;           /* Time since start-up. [ms] */
+    uint8_t gnss_power_state;        /* GNSS receiver power: 1 on, 0 off. */
+    uint32_t pps_pulse_count;        /* Number of 1PPS pulses received. [count] */
+    uint32_t last_pps_time;          /* System timer value at the last 1PPS pulse. [ms] */
+    uint8_t imu_stream_enabled;      /* IMU stream: 1 on, 0 off. */
+    uint8_t gnss_stream_enabled;     /* GNSS stream: 1 on, 0 off. */
+    uint8_t filter_stream_enabled;   /* Estimation filter stream: 1 on, 0 off. */
+    uint32_t imu_dropped_packets;    /* Outgoing IMU stream packets dropped. [count] */
+    uint32_t gnss_dropped_packets;   /* Outgoing GNSS stream packets dropped. [count] */
+    uint32_t filter_dropped_packets; /* Outgoing estimation filter stream packets dropped. [count] */
+    uint32_t com_bytes_written;      /* Bytes written to the com port. [count] */
+    uint32_t com_bytes_read;         /* Bytes read from the com port. [count] */
+    uint32_t com_write_overruns;     /* Overruns when writing to the com port. [count] */
+    uint32_t imu_parse_errors;       /* IMU message parsing errors. [count] */
+    uint32_t imu_messages_read;      /* IMU messages read in total. [count] */
+    uint32_t last_imu_message_time;  /* System timer value at the last IMU message read. [ms] */
+    uint32_t gnss_parse_errors;      /* GNSS message parsing errors. [count] */
+    uint32_t gnss_messages_read;     /* GNSS messages read in total. [count] */
+    uint32_t last_gnss_message_time; /* System timer value at the last GNSS message read. [ms] */
+} mip_gx5_diagnostic_status_t;
+
+/** GX5-45 device status structure.
+ * The member is chosen by a parameter of type mip_device_status_selector_t next to it. */
+typedef union {
+    mip_gx5_basic_status_t basic;           /* basic:  */
+    mip_gx5_diagnostic_status_t diagnostic; /* diagnostic:  */
+    uint8_t none_;                          /* members without data */
+} mip_gx5_device_status_t;
+
+/** Poll format entry (GX5-45).  */
+typedef struct {
+    uint8_t descriptor; /* Data field descriptor to include in the polled packet. */
+    uint16_t reserved;  /* Reserved; 0 in every example. */
+} mip_gx5_poll_descriptor_t;
+
+/** NMEA message format entry.  */
+typedef struct {
+    uint8_t message_id; /* NMEA sentence type (GGA, GLL, GSV, RMC, VTG, HDT, ZDA, GST, PMSRA, PMSRR; codes not
+                           documented). */
+    uint8_t talker_id;  /* Talker ID (GN, GP, GA, GL; ignored for GSV and proprietary sentences; codes not
+                           documented). */
+    uint8_t source_desc_set; /* Data descriptor set the sentence is built from (IMU, filter, GNSS 1 or 2). */
+    uint16_t decimation;     /* Decimation relative to the base rate of the source descriptor set. */
+} mip_nmea_message_t;
+
+/** Calibrated sensor range entry.  */
+typedef struct {
+    uint8_t setting; /* Value to use as setting in Sensor Range (0x0C,0x52). */
+    float range;     /* Range this setting gives; units depend on the sensor (see SensorRangeType). */
+} mip_sensor_range_entry_t;
+
+/** Supported action type.  */
+typedef struct {
+    mip_action_type_t type; /* Action type, as in Event Action Configuration (0x0C,0x2F). */
+    uint8_t count;          /* Maximum number of instances of this type. */
+} mip_supported_action_type_t;
+
+/** Supported actions (query = action types).  */
+typedef struct {
+    uint8_t max_instances; /* Number of action slots; instance numbers run 1..max_instances. */
+    uint8_t num_entries;   /* Number of supported action types. */
+    mip_supported_action_type_t entries[125]; /* Supported action types. */
+} mip_supported_actions_t;
+
+/** Supported trigger type.  */
+typedef struct {
+    mip_trigger_type_t type; /* Trigger type, as in Event Trigger Configuration (0x0C,0x2E). */
+    uint8_t count;           /* Maximum number of instances of this type. */
+} mip_supported_trigger_type_t;
+
+/** Supported triggers (query = trigger types).  */
+typedef struct {
+    uint8_t max_instances; /* Number of trigger slots; instance numbers run 1..max_instances. */
+    uint8_t num_entries;   /* Number of supported trigger types. */
+    mip_supported_trigger_type_t entries[125]; /* Supported trigger types. */
+} mip_supported_triggers_t;
+
+/** Supported event types, by query.
+ * The member is chosen by a parameter of type mip_supported_events_query_t next to it. */
+typedef union {
+    mip_supported_triggers_t trigger_types; /* trigger_types:  */
+    mip_supported_actions_t action_types;   /* action_types:  */
+    uint8_t none_;                          /* members without data */
+} mip_supported_events_info_t;
 
 /** ThresholdParams.  */
 typedef struct {

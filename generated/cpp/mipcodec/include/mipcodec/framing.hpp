@@ -37,6 +37,6 @@ inline constexpr bool kBigEndian = true;
 /// Longest parameter path a decode error can name (e.g. "entries[2].rate").
 inline constexpr std::size_t kMaxErrorPath = 48;
 /// Deepest JSON nesting of a canonical line.
-inline constexpr std::size_t kMaxJsonDepth = 10;
+inline constexpr std::size_t kMaxJsonDepth = 11;
 
 } // namespace mipcodec

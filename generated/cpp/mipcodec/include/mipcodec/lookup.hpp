@@ -123,6 +123,242 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
         case 0xB9:
             f(Layouts<::mipcodec::threedm::EventActionConfigResponse>{});
             return Lookup::found;
+        case 0x30:
+            f(Layouts<::mipcodec::threedm::DeviceStartupSettingsGx545,
+                      ::mipcodec::threedm::DeviceStartupSettingsCv7Ins>{});
+            return Lookup::found;
+        case 0x31:
+            f(Layouts<::mipcodec::threedm::SensorToVehicleEuler>{});
+            return Lookup::found;
+        case 0xB1:
+            f(Layouts<::mipcodec::threedm::SensorToVehicleEulerResponse>{});
+            return Lookup::found;
+        case 0x32:
+            f(Layouts<::mipcodec::threedm::SensorToVehicleQuaternion>{});
+            return Lookup::found;
+        case 0xB2:
+            f(Layouts<::mipcodec::threedm::SensorToVehicleQuaternionResponse>{});
+            return Lookup::found;
+        case 0x33:
+            f(Layouts<::mipcodec::threedm::SensorToVehicleDcm>{});
+            return Lookup::found;
+        case 0xB3:
+            f(Layouts<::mipcodec::threedm::SensorToVehicleDcmResponse>{});
+            return Lookup::found;
+        case 0x37:
+            f(Layouts<::mipcodec::threedm::AccelBiasGx545, ::mipcodec::threedm::AccelBiasCv7Ins>{});
+            return Lookup::found;
+        case 0x9A:
+            f(Layouts<::mipcodec::threedm::AccelBiasResponse>{});
+            return Lookup::found;
+        case 0x38:
+            f(Layouts<::mipcodec::threedm::GyroBiasGx545, ::mipcodec::threedm::GyroBiasCv7Ins>{});
+            return Lookup::found;
+        case 0x9B:
+            f(Layouts<::mipcodec::threedm::GyroBiasResponse>{});
+            return Lookup::found;
+        case 0x39:
+            f(Layouts<::mipcodec::threedm::CaptureGyroBias>{});
+            return Lookup::found;
+        case 0x3A:
+            f(Layouts<::mipcodec::threedm::MagHardIronOffsetGx545,
+                      ::mipcodec::threedm::MagHardIronOffsetCv7Ins>{});
+            return Lookup::found;
+        case 0x9C:
+            f(Layouts<::mipcodec::threedm::MagHardIronOffsetResponse>{});
+            return Lookup::found;
+        case 0x3B:
+            f(Layouts<::mipcodec::threedm::MagSoftIronMatrixGx545,
+                      ::mipcodec::threedm::MagSoftIronMatrixCv7Ins>{});
+            return Lookup::found;
+        case 0x9D:
+            f(Layouts<::mipcodec::threedm::MagSoftIronMatrixResponse>{});
+            return Lookup::found;
+        case 0x3E:
+            f(Layouts<::mipcodec::threedm::ConingScullingEnable>{});
+            return Lookup::found;
+        case 0x9E:
+            f(Layouts<::mipcodec::threedm::ConingScullingEnableResponse>{});
+            return Lookup::found;
+        case 0x40:
+            f(Layouts<::mipcodec::threedm::UartBaudrate>{});
+            return Lookup::found;
+        case 0x87:
+            f(Layouts<::mipcodec::threedm::UartBaudrateResponse>{});
+            return Lookup::found;
+        case 0x41:
+            f(Layouts<::mipcodec::threedm::GpioConfig>{});
+            return Lookup::found;
+        case 0xC1:
+            f(Layouts<::mipcodec::threedm::GpioConfigResponse>{});
+            return Lookup::found;
+        case 0x42:
+            f(Layouts<::mipcodec::threedm::GpioState>{});
+            return Lookup::found;
+        case 0xC2:
+            f(Layouts<::mipcodec::threedm::GpioStateResponse>{});
+            return Lookup::found;
+        case 0x43:
+            f(Layouts<::mipcodec::threedm::OdometerConfig>{});
+            return Lookup::found;
+        case 0xC3:
+            f(Layouts<::mipcodec::threedm::OdometerConfigResponse>{});
+            return Lookup::found;
+        case 0x50:
+            f(Layouts<::mipcodec::threedm::AdvancedLowpassFilter>{});
+            return Lookup::found;
+        case 0x8B:
+            f(Layouts<::mipcodec::threedm::AdvancedLowpassFilterResponse>{});
+            return Lookup::found;
+        case 0x51:
+            f(Layouts<::mipcodec::threedm::ComplementaryFilter>{});
+            return Lookup::found;
+        case 0x97:
+            f(Layouts<::mipcodec::threedm::ComplementaryFilterResponse>{});
+            return Lookup::found;
+        case 0x52:
+            f(Layouts<::mipcodec::threedm::SensorRange>{});
+            return Lookup::found;
+        case 0xD2:
+            f(Layouts<::mipcodec::threedm::SensorRangeResponse>{});
+            return Lookup::found;
+        case 0x53:
+            f(Layouts<::mipcodec::threedm::GetCalibratedSensorRanges>{});
+            return Lookup::found;
+        case 0xD3:
+            f(Layouts<::mipcodec::threedm::CalibratedSensorRanges>{});
+            return Lookup::found;
+        case 0x54:
+            f(Layouts<::mipcodec::threedm::LowpassFilter>{});
+            return Lookup::found;
+        case 0xD4:
+            f(Layouts<::mipcodec::threedm::LowpassFilterResponse>{});
+            return Lookup::found;
+        case 0x01:
+            f(Layouts<::mipcodec::threedm::PollImuData>{});
+            return Lookup::found;
+        case 0x02:
+            f(Layouts<::mipcodec::threedm::PollGnssData>{});
+            return Lookup::found;
+        case 0x03:
+            f(Layouts<::mipcodec::threedm::PollFilterData>{});
+            return Lookup::found;
+        case 0x04:
+            f(Layouts<::mipcodec::threedm::PollNmeaData>{});
+            return Lookup::found;
+        case 0x0D:
+            f(Layouts<::mipcodec::threedm::PollData>{});
+            return Lookup::found;
+        case 0x06:
+            f(Layouts<::mipcodec::threedm::GetImuBaseRate>{});
+            return Lookup::found;
+        case 0x83:
+            f(Layouts<::mipcodec::threedm::ImuBaseRate>{});
+            return Lookup::found;
+        case 0x07:
+            f(Layouts<::mipcodec::threedm::GetGnssBaseRate>{});
+            return Lookup::found;
+        case 0x84:
+            f(Layouts<::mipcodec::threedm::GnssBaseRate>{});
+            return Lookup::found;
+        case 0x0B:
+            f(Layouts<::mipcodec::threedm::GetFilterBaseRate>{});
+            return Lookup::found;
+        case 0x8A:
+            f(Layouts<::mipcodec::threedm::FilterBaseRate>{});
+            return Lookup::found;
+        case 0x0E:
+            f(Layouts<::mipcodec::threedm::GetBaseRate>{});
+            return Lookup::found;
+        case 0x8E:
+            f(Layouts<::mipcodec::threedm::BaseRate>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::threedm::ImuMessageFormat>{});
+            return Lookup::found;
+        case 0x80:
+            f(Layouts<::mipcodec::threedm::ImuMessageFormatResponse>{});
+            return Lookup::found;
+        case 0x09:
+            f(Layouts<::mipcodec::threedm::GnssMessageFormat>{});
+            return Lookup::found;
+        case 0x81:
+            f(Layouts<::mipcodec::threedm::GnssMessageFormatResponse>{});
+            return Lookup::found;
+        case 0x0A:
+            f(Layouts<::mipcodec::threedm::FilterMessageFormat>{});
+            return Lookup::found;
+        case 0x82:
+            f(Layouts<::mipcodec::threedm::FilterMessageFormatResponse>{});
+            return Lookup::found;
+        case 0x0C:
+            f(Layouts<::mipcodec::threedm::NmeaMessageFormat>{});
+            return Lookup::found;
+        case 0x8C:
+            f(Layouts<::mipcodec::threedm::NmeaMessageFormatResponse>{});
+            return Lookup::found;
+        case 0x0F:
+            f(Layouts<::mipcodec::threedm::MessageFormat>{});
+            return Lookup::found;
+        case 0x8F:
+            f(Layouts<::mipcodec::threedm::MessageFormatResponse>{});
+            return Lookup::found;
+        case 0x10:
+            f(Layouts<::mipcodec::threedm::FactoryStreaming>{});
+            return Lookup::found;
+        case 0x11:
+            f(Layouts<::mipcodec::threedm::DataStreamControlGx545,
+                      ::mipcodec::threedm::DataStreamControlCv7Ins>{});
+            return Lookup::found;
+        case 0x85:
+            f(Layouts<::mipcodec::threedm::DataStreamControlResponseGx545,
+                      ::mipcodec::threedm::DataStreamControlResponseCv7Ins>{});
+            return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::threedm::RawRtcmMessage>{});
+            return Lookup::found;
+        case 0x21:
+            f(Layouts<::mipcodec::threedm::GnssConstellationSettings>{});
+            return Lookup::found;
+        case 0xA0:
+            f(Layouts<::mipcodec::threedm::GnssConstellationSettingsResponse>{});
+            return Lookup::found;
+        case 0x22:
+            f(Layouts<::mipcodec::threedm::GnssSbasSettings>{});
+            return Lookup::found;
+        case 0xA1:
+            f(Layouts<::mipcodec::threedm::GnssSbasSettingsResponse>{});
+            return Lookup::found;
+        case 0x23:
+            f(Layouts<::mipcodec::threedm::GnssAssistedFixControl>{});
+            return Lookup::found;
+        case 0xA2:
+            f(Layouts<::mipcodec::threedm::GnssAssistedFixControlResponse>{});
+            return Lookup::found;
+        case 0x24:
+            f(Layouts<::mipcodec::threedm::GnssAssistTimeUpdate>{});
+            return Lookup::found;
+        case 0xA3:
+            f(Layouts<::mipcodec::threedm::GnssAssistTimeUpdateResponse>{});
+            return Lookup::found;
+        case 0x28:
+            f(Layouts<::mipcodec::threedm::PpsSource>{});
+            return Lookup::found;
+        case 0xA8:
+            f(Layouts<::mipcodec::threedm::PpsSourceResponse>{});
+            return Lookup::found;
+        case 0x2A:
+            f(Layouts<::mipcodec::threedm::GetSupportedEvents>{});
+            return Lookup::found;
+        case 0xB4:
+            f(Layouts<::mipcodec::threedm::SupportedEvents>{});
+            return Lookup::found;
+        case 0x64:
+            f(Layouts<::mipcodec::threedm::DeviceStatus>{});
+            return Lookup::found;
+        case 0x90:
+            f(Layouts<::mipcodec::threedm::DeviceStatusResponse>{});
+            return Lookup::found;
         default:
             break;
         }

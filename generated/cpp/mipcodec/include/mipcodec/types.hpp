@@ -591,6 +591,67 @@ inline bool from_string(const char *name, AltitudeAidingSource &out) {
     return false;
 }
 
+/// Assisted fix option. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class AssistedFixOption : std::uint8_t {
+    none = 0,
+    enabled = 1,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(AssistedFixOption v) {
+    if (v == AssistedFixOption::none) {
+        return "none";
+    }
+    if (v == AssistedFixOption::enabled) {
+        return "enabled";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, AssistedFixOption &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = AssistedFixOption::none;
+        return true;
+    }
+    if (std::strcmp(name, "enabled") == 0) {
+        out = AssistedFixOption::enabled;
+        return true;
+    }
+    return false;
+}
+
+/// GNSS constellation option flags. Reserved and unnamed bits are kept in raw().
+class ConstellationOptions {
+  public:
+    using Raw = std::uint16_t;
+    constexpr ConstellationOptions() = default;
+    constexpr explicit ConstellationOptions(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw l1saif_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool l1saif() const {
+        return (raw_ & l1saif_mask) != 0;
+    }
+    constexpr void set_l1saif(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | l1saif_mask) : (raw_ & static_cast<Raw>(~l1saif_mask)));
+    }
+    friend constexpr bool operator==(ConstellationOptions a, ConstellationOptions b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(ConstellationOptions a, ConstellationOptions b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// 3DM-CV7 commanded built-in test result. Reserved and unnamed bits are kept in raw().
 class Cv7BitFlags {
   public:
@@ -772,6 +833,36 @@ class Cv7BitFlags {
     Raw raw_ = 0;
 };
 
+/// Device status selector. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class DeviceStatusSelector : std::uint8_t {
+    basic = 1,
+    diagnostic = 2,
+};
+
+/// Spec name of a value ("basic"), or nullptr when the value has no name.
+inline const char *to_string(DeviceStatusSelector v) {
+    if (v == DeviceStatusSelector::basic) {
+        return "basic";
+    }
+    if (v == DeviceStatusSelector::diagnostic) {
+        return "diagnostic";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, DeviceStatusSelector &out) {
+    if (std::strcmp(name, "basic") == 0) {
+        out = DeviceStatusSelector::basic;
+        return true;
+    }
+    if (std::strcmp(name, "diagnostic") == 0) {
+        out = DeviceStatusSelector::diagnostic;
+        return true;
+    }
+    return false;
+}
+
 /// Estimation control flags. Reserved and unnamed bits are kept in raw().
 class EstimationControlFlags {
   public:
@@ -937,6 +1028,44 @@ inline bool from_string(const char *name, ExternalHeadingType &out) {
     }
     if (std::strcmp(name, "magnetic_heading") == 0) {
         out = ExternalHeadingType::magnetic_heading;
+        return true;
+    }
+    return false;
+}
+
+/// Factory streaming action. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class FactoryStreamingAction : std::uint8_t {
+    overwrite = 0,
+    merge = 1,
+    add = 2,
+};
+
+/// Spec name of a value ("overwrite"), or nullptr when the value has no name.
+inline const char *to_string(FactoryStreamingAction v) {
+    if (v == FactoryStreamingAction::overwrite) {
+        return "overwrite";
+    }
+    if (v == FactoryStreamingAction::merge) {
+        return "merge";
+    }
+    if (v == FactoryStreamingAction::add) {
+        return "add";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FactoryStreamingAction &out) {
+    if (std::strcmp(name, "overwrite") == 0) {
+        out = FactoryStreamingAction::overwrite;
+        return true;
+    }
+    if (std::strcmp(name, "merge") == 0) {
+        out = FactoryStreamingAction::merge;
+        return true;
+    }
+    if (std::strcmp(name, "add") == 0) {
+        out = FactoryStreamingAction::add;
         return true;
     }
     return false;
@@ -1308,6 +1437,359 @@ class GnssGpsSignals {
     Raw raw_ = 0;
 };
 
+/// GPIO behavior for the ENCODER feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioEncoderBehavior : std::uint8_t {
+    unused = 0,
+    encoder_a = 1,
+    encoder_b = 2,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioEncoderBehavior v) {
+    if (v == GpioEncoderBehavior::unused) {
+        return "unused";
+    }
+    if (v == GpioEncoderBehavior::encoder_a) {
+        return "encoder_a";
+    }
+    if (v == GpioEncoderBehavior::encoder_b) {
+        return "encoder_b";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioEncoderBehavior &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioEncoderBehavior::unused;
+        return true;
+    }
+    if (std::strcmp(name, "encoder_a") == 0) {
+        out = GpioEncoderBehavior::encoder_a;
+        return true;
+    }
+    if (std::strcmp(name, "encoder_b") == 0) {
+        out = GpioEncoderBehavior::encoder_b;
+        return true;
+    }
+    return false;
+}
+
+/// GPIO pin feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioFeature : std::uint8_t {
+    unused = 0,
+    gpio = 1,
+    pps = 2,
+    encoder = 3,
+    timestamp = 4,
+    uart = 5,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioFeature v) {
+    if (v == GpioFeature::unused) {
+        return "unused";
+    }
+    if (v == GpioFeature::gpio) {
+        return "gpio";
+    }
+    if (v == GpioFeature::pps) {
+        return "pps";
+    }
+    if (v == GpioFeature::encoder) {
+        return "encoder";
+    }
+    if (v == GpioFeature::timestamp) {
+        return "timestamp";
+    }
+    if (v == GpioFeature::uart) {
+        return "uart";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioFeature &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioFeature::unused;
+        return true;
+    }
+    if (std::strcmp(name, "gpio") == 0) {
+        out = GpioFeature::gpio;
+        return true;
+    }
+    if (std::strcmp(name, "pps") == 0) {
+        out = GpioFeature::pps;
+        return true;
+    }
+    if (std::strcmp(name, "encoder") == 0) {
+        out = GpioFeature::encoder;
+        return true;
+    }
+    if (std::strcmp(name, "timestamp") == 0) {
+        out = GpioFeature::timestamp;
+        return true;
+    }
+    if (std::strcmp(name, "uart") == 0) {
+        out = GpioFeature::uart;
+        return true;
+    }
+    return false;
+}
+
+/// GPIO behavior for the GPIO feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioIoBehavior : std::uint8_t {
+    unused = 0,
+    input = 1,
+    output_low = 2,
+    output_high = 3,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioIoBehavior v) {
+    if (v == GpioIoBehavior::unused) {
+        return "unused";
+    }
+    if (v == GpioIoBehavior::input) {
+        return "input";
+    }
+    if (v == GpioIoBehavior::output_low) {
+        return "output_low";
+    }
+    if (v == GpioIoBehavior::output_high) {
+        return "output_high";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioIoBehavior &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioIoBehavior::unused;
+        return true;
+    }
+    if (std::strcmp(name, "input") == 0) {
+        out = GpioIoBehavior::input;
+        return true;
+    }
+    if (std::strcmp(name, "output_low") == 0) {
+        out = GpioIoBehavior::output_low;
+        return true;
+    }
+    if (std::strcmp(name, "output_high") == 0) {
+        out = GpioIoBehavior::output_high;
+        return true;
+    }
+    return false;
+}
+
+/// GPIO pin electrical mode. Reserved and unnamed bits are kept in raw().
+class GpioPinMode {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GpioPinMode() = default;
+    constexpr explicit GpioPinMode(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw open_drain_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool open_drain() const {
+        return (raw_ & open_drain_mask) != 0;
+    }
+    constexpr void set_open_drain(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | open_drain_mask) : (raw_ & static_cast<Raw>(~open_drain_mask)));
+    }
+
+    static constexpr Raw pulldown_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool pulldown() const {
+        return (raw_ & pulldown_mask) != 0;
+    }
+    constexpr void set_pulldown(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pulldown_mask) : (raw_ & static_cast<Raw>(~pulldown_mask)));
+    }
+
+    static constexpr Raw pullup_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool pullup() const {
+        return (raw_ & pullup_mask) != 0;
+    }
+    constexpr void set_pullup(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pullup_mask) : (raw_ & static_cast<Raw>(~pullup_mask)));
+    }
+    friend constexpr bool operator==(GpioPinMode a, GpioPinMode b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GpioPinMode a, GpioPinMode b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GPIO behavior for the PPS feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioPpsBehavior : std::uint8_t {
+    unused = 0,
+    input = 1,
+    output = 2,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioPpsBehavior v) {
+    if (v == GpioPpsBehavior::unused) {
+        return "unused";
+    }
+    if (v == GpioPpsBehavior::input) {
+        return "input";
+    }
+    if (v == GpioPpsBehavior::output) {
+        return "output";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioPpsBehavior &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioPpsBehavior::unused;
+        return true;
+    }
+    if (std::strcmp(name, "input") == 0) {
+        out = GpioPpsBehavior::input;
+        return true;
+    }
+    if (std::strcmp(name, "output") == 0) {
+        out = GpioPpsBehavior::output;
+        return true;
+    }
+    return false;
+}
+
+/// GPIO behavior for the TIMESTAMP feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioTimestampBehavior : std::uint8_t {
+    unused = 0,
+    rising = 1,
+    falling = 2,
+    either = 3,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioTimestampBehavior v) {
+    if (v == GpioTimestampBehavior::unused) {
+        return "unused";
+    }
+    if (v == GpioTimestampBehavior::rising) {
+        return "rising";
+    }
+    if (v == GpioTimestampBehavior::falling) {
+        return "falling";
+    }
+    if (v == GpioTimestampBehavior::either) {
+        return "either";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioTimestampBehavior &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioTimestampBehavior::unused;
+        return true;
+    }
+    if (std::strcmp(name, "rising") == 0) {
+        out = GpioTimestampBehavior::rising;
+        return true;
+    }
+    if (std::strcmp(name, "falling") == 0) {
+        out = GpioTimestampBehavior::falling;
+        return true;
+    }
+    if (std::strcmp(name, "either") == 0) {
+        out = GpioTimestampBehavior::either;
+        return true;
+    }
+    return false;
+}
+
+/// GPIO behavior for the UART feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioUartBehavior : std::uint8_t {
+    unused = 0,
+    port2_tx = 33,
+    port2_rx = 34,
+    port3_tx = 49,
+    port3_rx = 50,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioUartBehavior v) {
+    if (v == GpioUartBehavior::unused) {
+        return "unused";
+    }
+    if (v == GpioUartBehavior::port2_tx) {
+        return "port2_tx";
+    }
+    if (v == GpioUartBehavior::port2_rx) {
+        return "port2_rx";
+    }
+    if (v == GpioUartBehavior::port3_tx) {
+        return "port3_tx";
+    }
+    if (v == GpioUartBehavior::port3_rx) {
+        return "port3_rx";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioUartBehavior &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioUartBehavior::unused;
+        return true;
+    }
+    if (std::strcmp(name, "port2_tx") == 0) {
+        out = GpioUartBehavior::port2_tx;
+        return true;
+    }
+    if (std::strcmp(name, "port2_rx") == 0) {
+        out = GpioUartBehavior::port2_rx;
+        return true;
+    }
+    if (std::strcmp(name, "port3_tx") == 0) {
+        out = GpioUartBehavior::port3_tx;
+        return true;
+    }
+    if (std::strcmp(name, "port3_rx") == 0) {
+        out = GpioUartBehavior::port3_rx;
+        return true;
+    }
+    return false;
+}
+
+/// GPIO behavior for the UNUSED feature. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GpioUnusedBehavior : std::uint8_t {
+    unused = 0,
+};
+
+/// Spec name of a value ("unused"), or nullptr when the value has no name.
+inline const char *to_string(GpioUnusedBehavior v) {
+    if (v == GpioUnusedBehavior::unused) {
+        return "unused";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GpioUnusedBehavior &out) {
+    if (std::strcmp(name, "unused") == 0) {
+        out = GpioUnusedBehavior::unused;
+        return true;
+    }
+    return false;
+}
+
 /// GPS time field selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpsTimeField : std::uint8_t {
     week_number = 1,
@@ -1405,6 +1887,129 @@ class Gx5BitFlags {
   private:
     Raw raw_ = 0;
 };
+
+/// GNSS constellation ID (GX5-45 constellation settings). Unknown values are kept (an enum class holds any
+/// std::uint8_t).
+enum class Gx5ConstellationId : std::uint8_t {
+    gps = 0,
+    sbas = 1,
+    galileo = 2,
+    beidou = 3,
+    qzss = 5,
+    glonass = 6,
+};
+
+/// Spec name of a value ("gps"), or nullptr when the value has no name.
+inline const char *to_string(Gx5ConstellationId v) {
+    if (v == Gx5ConstellationId::gps) {
+        return "gps";
+    }
+    if (v == Gx5ConstellationId::sbas) {
+        return "sbas";
+    }
+    if (v == Gx5ConstellationId::galileo) {
+        return "galileo";
+    }
+    if (v == Gx5ConstellationId::beidou) {
+        return "beidou";
+    }
+    if (v == Gx5ConstellationId::qzss) {
+        return "qzss";
+    }
+    if (v == Gx5ConstellationId::glonass) {
+        return "glonass";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, Gx5ConstellationId &out) {
+    if (std::strcmp(name, "gps") == 0) {
+        out = Gx5ConstellationId::gps;
+        return true;
+    }
+    if (std::strcmp(name, "sbas") == 0) {
+        out = Gx5ConstellationId::sbas;
+        return true;
+    }
+    if (std::strcmp(name, "galileo") == 0) {
+        out = Gx5ConstellationId::galileo;
+        return true;
+    }
+    if (std::strcmp(name, "beidou") == 0) {
+        out = Gx5ConstellationId::beidou;
+        return true;
+    }
+    if (std::strcmp(name, "qzss") == 0) {
+        out = Gx5ConstellationId::qzss;
+        return true;
+    }
+    if (std::strcmp(name, "glonass") == 0) {
+        out = Gx5ConstellationId::glonass;
+        return true;
+    }
+    return false;
+}
+
+/// Poll option selector. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class Gx5PollOption : std::uint8_t {
+    normal = 0,
+    suppress_ack = 1,
+};
+
+/// Spec name of a value ("normal"), or nullptr when the value has no name.
+inline const char *to_string(Gx5PollOption v) {
+    if (v == Gx5PollOption::normal) {
+        return "normal";
+    }
+    if (v == Gx5PollOption::suppress_ack) {
+        return "suppress_ack";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, Gx5PollOption &out) {
+    if (std::strcmp(name, "normal") == 0) {
+        out = Gx5PollOption::normal;
+        return true;
+    }
+    if (std::strcmp(name, "suppress_ack") == 0) {
+        out = Gx5PollOption::suppress_ack;
+        return true;
+    }
+    return false;
+}
+
+/// Continuous data stream selector (GX5-45). Unknown values are kept (an enum class holds any std::uint8_t).
+enum class Gx5StreamSelector : std::uint8_t {
+    imu = 1,
+    estimation_filter = 3,
+};
+
+/// Spec name of a value ("imu"), or nullptr when the value has no name.
+inline const char *to_string(Gx5StreamSelector v) {
+    if (v == Gx5StreamSelector::imu) {
+        return "imu";
+    }
+    if (v == Gx5StreamSelector::estimation_filter) {
+        return "estimation_filter";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, Gx5StreamSelector &out) {
+    if (std::strcmp(name, "imu") == 0) {
+        out = Gx5StreamSelector::imu;
+        return true;
+    }
+    if (std::strcmp(name, "estimation_filter") == 0) {
+        out = Gx5StreamSelector::estimation_filter;
+        return true;
+    }
+    return false;
+}
 
 /// Allowed automatic heading alignment methods. Reserved and unnamed bits are kept in raw().
 class HeadingAlignmentMethods {
@@ -1580,6 +2185,36 @@ inline bool from_string(const char *name, MagneticParamSource &out) {
     return false;
 }
 
+/// Odometer mode. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class OdometerMode : std::uint8_t {
+    disabled = 0,
+    quadrature = 2,
+};
+
+/// Spec name of a value ("disabled"), or nullptr when the value has no name.
+inline const char *to_string(OdometerMode v) {
+    if (v == OdometerMode::disabled) {
+        return "disabled";
+    }
+    if (v == OdometerMode::quadrature) {
+        return "quadrature";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, OdometerMode &out) {
+    if (std::strcmp(name, "disabled") == 0) {
+        out = OdometerMode::disabled;
+        return true;
+    }
+    if (std::strcmp(name, "quadrature") == 0) {
+        out = OdometerMode::quadrature;
+        return true;
+    }
+    return false;
+}
+
 /// Pitch/roll aiding source. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class PitchRollAidingSource : std::uint8_t {
     none = 0,
@@ -1605,6 +2240,60 @@ inline bool from_string(const char *name, PitchRollAidingSource &out) {
     }
     if (std::strcmp(name, "gravity_vector") == 0) {
         out = PitchRollAidingSource::gravity_vector;
+        return true;
+    }
+    return false;
+}
+
+/// PPS source. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class PpsSource : std::uint8_t {
+    disabled = 0,
+    receiver_1 = 1,
+    receiver_2 = 2,
+    gpio = 3,
+    generated = 4,
+};
+
+/// Spec name of a value ("disabled"), or nullptr when the value has no name.
+inline const char *to_string(PpsSource v) {
+    if (v == PpsSource::disabled) {
+        return "disabled";
+    }
+    if (v == PpsSource::receiver_1) {
+        return "receiver_1";
+    }
+    if (v == PpsSource::receiver_2) {
+        return "receiver_2";
+    }
+    if (v == PpsSource::gpio) {
+        return "gpio";
+    }
+    if (v == PpsSource::generated) {
+        return "generated";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, PpsSource &out) {
+    if (std::strcmp(name, "disabled") == 0) {
+        out = PpsSource::disabled;
+        return true;
+    }
+    if (std::strcmp(name, "receiver_1") == 0) {
+        out = PpsSource::receiver_1;
+        return true;
+    }
+    if (std::strcmp(name, "receiver_2") == 0) {
+        out = PpsSource::receiver_2;
+        return true;
+    }
+    if (std::strcmp(name, "gpio") == 0) {
+        out = PpsSource::gpio;
+        return true;
+    }
+    if (std::strcmp(name, "generated") == 0) {
+        out = PpsSource::generated;
         return true;
     }
     return false;
@@ -1663,6 +2352,110 @@ inline bool from_string(const char *name, RelativePositionSource &out) {
     return false;
 }
 
+/// SBAS options. Reserved and unnamed bits are kept in raw().
+class SbasOptions {
+  public:
+    using Raw = std::uint16_t;
+    constexpr SbasOptions() = default;
+    constexpr explicit SbasOptions(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw enable_ranging_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool enable_ranging() const {
+        return (raw_ & enable_ranging_mask) != 0;
+    }
+    constexpr void set_enable_ranging(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | enable_ranging_mask)
+                                   : (raw_ & static_cast<Raw>(~enable_ranging_mask)));
+    }
+
+    static constexpr Raw enable_corrections_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool enable_corrections() const {
+        return (raw_ & enable_corrections_mask) != 0;
+    }
+    constexpr void set_enable_corrections(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | enable_corrections_mask)
+                                   : (raw_ & static_cast<Raw>(~enable_corrections_mask)));
+    }
+
+    static constexpr Raw apply_integrity_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool apply_integrity() const {
+        return (raw_ & apply_integrity_mask) != 0;
+    }
+    constexpr void set_apply_integrity(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | apply_integrity_mask)
+                                   : (raw_ & static_cast<Raw>(~apply_integrity_mask)));
+    }
+    friend constexpr bool operator==(SbasOptions a, SbasOptions b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(SbasOptions a, SbasOptions b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Sensor whose range is set or queried. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class SensorRangeType : std::uint8_t {
+    all = 0,
+    accel = 1,
+    gyro = 2,
+    mag = 3,
+    press = 4,
+};
+
+/// Spec name of a value ("all"), or nullptr when the value has no name.
+inline const char *to_string(SensorRangeType v) {
+    if (v == SensorRangeType::all) {
+        return "all";
+    }
+    if (v == SensorRangeType::accel) {
+        return "accel";
+    }
+    if (v == SensorRangeType::gyro) {
+        return "gyro";
+    }
+    if (v == SensorRangeType::mag) {
+        return "mag";
+    }
+    if (v == SensorRangeType::press) {
+        return "press";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, SensorRangeType &out) {
+    if (std::strcmp(name, "all") == 0) {
+        out = SensorRangeType::all;
+        return true;
+    }
+    if (std::strcmp(name, "accel") == 0) {
+        out = SensorRangeType::accel;
+        return true;
+    }
+    if (std::strcmp(name, "gyro") == 0) {
+        out = SensorRangeType::gyro;
+        return true;
+    }
+    if (std::strcmp(name, "mag") == 0) {
+        out = SensorRangeType::mag;
+        return true;
+    }
+    if (std::strcmp(name, "press") == 0) {
+        out = SensorRangeType::press;
+        return true;
+    }
+    return false;
+}
+
 /// SPARTN connection type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class SpartnConnectionType : std::uint8_t {
     none = 0,
@@ -1696,6 +2489,36 @@ inline bool from_string(const char *name, SpartnConnectionType &out) {
     }
     if (std::strcmp(name, "l_band") == 0) {
         out = SpartnConnectionType::l_band;
+        return true;
+    }
+    return false;
+}
+
+/// Supported events query. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class SupportedEventsQuery : std::uint8_t {
+    trigger_types = 1,
+    action_types = 2,
+};
+
+/// Spec name of a value ("trigger_types"), or nullptr when the value has no name.
+inline const char *to_string(SupportedEventsQuery v) {
+    if (v == SupportedEventsQuery::trigger_types) {
+        return "trigger_types";
+    }
+    if (v == SupportedEventsQuery::action_types) {
+        return "action_types";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, SupportedEventsQuery &out) {
+    if (std::strcmp(name, "trigger_types") == 0) {
+        out = SupportedEventsQuery::trigger_types;
+        return true;
+    }
+    if (std::strcmp(name, "action_types") == 0) {
+        out = SupportedEventsQuery::action_types;
         return true;
     }
     return false;
@@ -2128,6 +2951,41 @@ struct CombinationParams {
     }
 };
 
+/// GNSS constellation configuration entry
+struct ConstellationSettings {
+    ::mipcodec::types::Gx5ConstellationId constellation_id{}; ///< Constellation.
+    std::uint8_t enable{};                                    ///< 0x00 disable, 0x01 enable.
+    std::uint8_t reserved_channels{}; ///< Tracking channels reserved for this constellation (0-32; all
+                                      ///< constellations together at most 32).
+    std::uint8_t max_channels{};      ///< Maximum tracking channels for this constellation (0-32, not below
+                                      ///< reserved_channels).
+    ::mipcodec::types::ConstellationOptions option_flags{}; ///< Constellation options.
+    friend bool operator==(const ConstellationSettings &a, const ConstellationSettings &b) {
+        (void)a;
+        (void)b;
+        return true && a.constellation_id == b.constellation_id && a.enable == b.enable &&
+               a.reserved_channels == b.reserved_channels && a.max_channels == b.max_channels &&
+               a.option_flags == b.option_flags;
+    }
+    friend bool operator!=(const ConstellationSettings &a, const ConstellationSettings &b) {
+        return !(a == b);
+    }
+};
+
+/// Descriptor and rate decimation
+struct DescriptorRate {
+    std::uint8_t descriptor{};  ///< Data field descriptor.
+    std::uint16_t decimation{}; ///< Rate decimation: the field is output at base rate / decimation.
+    friend bool operator==(const DescriptorRate &a, const DescriptorRate &b) {
+        (void)a;
+        (void)b;
+        return true && a.descriptor == b.descriptor && a.decimation == b.decimation;
+    }
+    friend bool operator!=(const DescriptorRate &a, const DescriptorRate &b) {
+        return !(a == b);
+    }
+};
+
 /// Device information
 struct DeviceInfo {
     std::uint16_t firmware_version{};      ///< Firmware version number.
@@ -2160,6 +3018,298 @@ struct GnssReceiverInfoEntry {
                a.mip_data_descriptor_set == b.mip_data_descriptor_set && a.description == b.description;
     }
     friend bool operator!=(const GnssReceiverInfoEntry &a, const GnssReceiverInfoEntry &b) {
+        return !(a == b);
+    }
+};
+
+/// GpioBehaviorUnused
+struct GpioBehaviorUnused {
+    ::mipcodec::types::GpioUnusedBehavior behavior{}; ///< Behavior value (0).
+    friend bool operator==(const GpioBehaviorUnused &a, const GpioBehaviorUnused &b) {
+        (void)a;
+        (void)b;
+        return true && a.behavior == b.behavior;
+    }
+    friend bool operator!=(const GpioBehaviorUnused &a, const GpioBehaviorUnused &b) {
+        return !(a == b);
+    }
+};
+
+/// GpioBehaviorIo
+struct GpioBehaviorIo {
+    ::mipcodec::types::GpioIoBehavior behavior{}; ///< Input, or output with its initial state.
+    friend bool operator==(const GpioBehaviorIo &a, const GpioBehaviorIo &b) {
+        (void)a;
+        (void)b;
+        return true && a.behavior == b.behavior;
+    }
+    friend bool operator!=(const GpioBehaviorIo &a, const GpioBehaviorIo &b) {
+        return !(a == b);
+    }
+};
+
+/// GpioBehaviorPps
+struct GpioBehaviorPps {
+    ::mipcodec::types::GpioPpsBehavior behavior{}; ///< PPS input or output.
+    friend bool operator==(const GpioBehaviorPps &a, const GpioBehaviorPps &b) {
+        (void)a;
+        (void)b;
+        return true && a.behavior == b.behavior;
+    }
+    friend bool operator!=(const GpioBehaviorPps &a, const GpioBehaviorPps &b) {
+        return !(a == b);
+    }
+};
+
+/// GpioBehaviorEncoder
+struct GpioBehaviorEncoder {
+    ::mipcodec::types::GpioEncoderBehavior behavior{}; ///< Quadrature channel A or B.
+    friend bool operator==(const GpioBehaviorEncoder &a, const GpioBehaviorEncoder &b) {
+        (void)a;
+        (void)b;
+        return true && a.behavior == b.behavior;
+    }
+    friend bool operator!=(const GpioBehaviorEncoder &a, const GpioBehaviorEncoder &b) {
+        return !(a == b);
+    }
+};
+
+/// GpioBehaviorTimestamp
+struct GpioBehaviorTimestamp {
+    ::mipcodec::types::GpioTimestampBehavior behavior{}; ///< Which edges are timestamped.
+    friend bool operator==(const GpioBehaviorTimestamp &a, const GpioBehaviorTimestamp &b) {
+        (void)a;
+        (void)b;
+        return true && a.behavior == b.behavior;
+    }
+    friend bool operator!=(const GpioBehaviorTimestamp &a, const GpioBehaviorTimestamp &b) {
+        return !(a == b);
+    }
+};
+
+/// GpioBehaviorUart
+struct GpioBehaviorUart {
+    ::mipcodec::types::GpioUartBehavior behavior{}; ///< UART port and direction.
+    friend bool operator==(const GpioBehaviorUart &a, const GpioBehaviorUart &b) {
+        (void)a;
+        (void)b;
+        return true && a.behavior == b.behavior;
+    }
+    friend bool operator!=(const GpioBehaviorUart &a, const GpioBehaviorUart &b) {
+        return !(a == b);
+    }
+};
+
+/// GPIO behavior, read according to the feature: the member chosen by a ::mipcodec::types::GpioFeature
+/// parameter (index 0, std::monostate, for members without data).
+struct GpioBehavior {
+    std::variant<std::monostate, ::mipcodec::types::GpioBehaviorUnused, ::mipcodec::types::GpioBehaviorIo,
+                 ::mipcodec::types::GpioBehaviorPps, ::mipcodec::types::GpioBehaviorEncoder,
+                 ::mipcodec::types::GpioBehaviorTimestamp, ::mipcodec::types::GpioBehaviorUart>
+        value;
+    friend bool operator==(const GpioBehavior &a, const GpioBehavior &b) {
+        return a.value == b.value;
+    }
+    friend bool operator!=(const GpioBehavior &a, const GpioBehavior &b) {
+        return !(a == b);
+    }
+};
+
+/// GX5-45 basic device status
+struct Gx5BasicStatus {
+    std::uint32_t status_flags{}; ///< Status flags (reserved).
+    std::uint16_t system_state{}; ///< System state (values not documented).
+    std::uint32_t system_timer{}; ///< Time since start-up. [ms]
+    friend bool operator==(const Gx5BasicStatus &a, const Gx5BasicStatus &b) {
+        (void)a;
+        (void)b;
+        return true && a.status_flags == b.status_flags && a.system_state == b.system_state &&
+               a.system_timer == b.system_timer;
+    }
+    friend bool operator!=(const Gx5BasicStatus &a, const Gx5BasicStatus &b) {
+        return !(a == b);
+    }
+};
+
+/// GX5-45 diagnostic device status
+struct Gx5DiagnosticStatus {
+    std::uint32_t status_flags{};           ///< Status flags (reserved).
+    std::uint16_t system_state{};           ///< System state (values not documented).
+    std::uint32_t system_timer{};           ///< Time since start-up. [ms]
+    std::uint8_t gnss_power_state{};        ///< GNSS receiver power: 1 on, 0 off.
+    std::uint32_t pps_pulse_count{};        ///< Number of 1PPS pulses received. [count]
+    std::uint32_t last_pps_time{};          ///< System timer value at the last 1PPS pulse. [ms]
+    std::uint8_t imu_stream_enabled{};      ///< IMU stream: 1 on, 0 off.
+    std::uint8_t gnss_stream_enabled{};     ///< GNSS stream: 1 on, 0 off.
+    std::uint8_t filter_stream_enabled{};   ///< Estimation filter stream: 1 on, 0 off.
+    std::uint32_t imu_dropped_packets{};    ///< Outgoing IMU stream packets dropped. [count]
+    std::uint32_t gnss_dropped_packets{};   ///< Outgoing GNSS stream packets dropped. [count]
+    std::uint32_t filter_dropped_packets{}; ///< Outgoing estimation filter stream packets dropped. [count]
+    std::uint32_t com_bytes_written{};      ///< Bytes written to the com port. [count]
+    std::uint32_t com_bytes_read{};         ///< Bytes read from the com port. [count]
+    std::uint32_t com_write_overruns{};     ///< Overruns when writing to the com port. [count]
+    std::uint32_t imu_parse_errors{};       ///< IMU message parsing errors. [count]
+    std::uint32_t imu_messages_read{};      ///< IMU messages read in total. [count]
+    std::uint32_t last_imu_message_time{};  ///< System timer value at the last IMU message read. [ms]
+    std::uint32_t gnss_parse_errors{};      ///< GNSS message parsing errors. [count]
+    std::uint32_t gnss_messages_read{};     ///< GNSS messages read in total. [count]
+    std::uint32_t last_gnss_message_time{}; ///< System timer value at the last GNSS message read. [ms]
+    friend bool operator==(const Gx5DiagnosticStatus &a, const Gx5DiagnosticStatus &b) {
+        (void)a;
+        (void)b;
+        return true && a.status_flags == b.status_flags && a.system_state == b.system_state &&
+               a.system_timer == b.system_timer && a.gnss_power_state == b.gnss_power_state &&
+               a.pps_pulse_count == b.pps_pulse_count && a.last_pps_time == b.last_pps_time &&
+               a.imu_stream_enabled == b.imu_stream_enabled &&
+               a.gnss_stream_enabled == b.gnss_stream_enabled &&
+               a.filter_stream_enabled == b.filter_stream_enabled &&
+               a.imu_dropped_packets == b.imu_dropped_packets &&
+               a.gnss_dropped_packets == b.gnss_dropped_packets &&
+               a.filter_dropped_packets == b.filter_dropped_packets &&
+               a.com_bytes_written == b.com_bytes_written && a.com_bytes_read == b.com_bytes_read &&
+               a.com_write_overruns == b.com_write_overruns && a.imu_parse_errors == b.imu_parse_errors &&
+               a.imu_messages_read == b.imu_messages_read &&
+               a.last_imu_message_time == b.last_imu_message_time &&
+               a.gnss_parse_errors == b.gnss_parse_errors && a.gnss_messages_read == b.gnss_messages_read &&
+               a.last_gnss_message_time == b.last_gnss_message_time;
+    }
+    friend bool operator!=(const Gx5DiagnosticStatus &a, const Gx5DiagnosticStatus &b) {
+        return !(a == b);
+    }
+};
+
+/// GX5-45 device status structure: the member chosen by a ::mipcodec::types::DeviceStatusSelector parameter
+/// (index 0, std::monostate, for members without data).
+struct Gx5DeviceStatus {
+    std::variant<std::monostate, ::mipcodec::types::Gx5BasicStatus, ::mipcodec::types::Gx5DiagnosticStatus>
+        value;
+    friend bool operator==(const Gx5DeviceStatus &a, const Gx5DeviceStatus &b) {
+        return a.value == b.value;
+    }
+    friend bool operator!=(const Gx5DeviceStatus &a, const Gx5DeviceStatus &b) {
+        return !(a == b);
+    }
+};
+
+/// Poll format entry (GX5-45)
+struct Gx5PollDescriptor {
+    std::uint8_t descriptor{}; ///< Data field descriptor to include in the polled packet.
+    std::uint16_t reserved{};  ///< Reserved; 0 in every example.
+    friend bool operator==(const Gx5PollDescriptor &a, const Gx5PollDescriptor &b) {
+        (void)a;
+        (void)b;
+        return true && a.descriptor == b.descriptor && a.reserved == b.reserved;
+    }
+    friend bool operator!=(const Gx5PollDescriptor &a, const Gx5PollDescriptor &b) {
+        return !(a == b);
+    }
+};
+
+/// NMEA message format entry
+struct NmeaMessage {
+    std::uint8_t message_id{}; ///< NMEA sentence type (GGA, GLL, GSV, RMC, VTG, HDT, ZDA, GST, PMSRA, PMSRR;
+                               ///< codes not documented).
+    std::uint8_t talker_id{}; ///< Talker ID (GN, GP, GA, GL; ignored for GSV and proprietary sentences; codes
+                              ///< not documented).
+    std::uint8_t
+        source_desc_set{}; ///< Data descriptor set the sentence is built from (IMU, filter, GNSS 1 or 2).
+    std::uint16_t decimation{}; ///< Decimation relative to the base rate of the source descriptor set.
+    friend bool operator==(const NmeaMessage &a, const NmeaMessage &b) {
+        (void)a;
+        (void)b;
+        return true && a.message_id == b.message_id && a.talker_id == b.talker_id &&
+               a.source_desc_set == b.source_desc_set && a.decimation == b.decimation;
+    }
+    friend bool operator!=(const NmeaMessage &a, const NmeaMessage &b) {
+        return !(a == b);
+    }
+};
+
+/// Calibrated sensor range entry
+struct SensorRangeEntry {
+    std::uint8_t setting{}; ///< Value to use as setting in Sensor Range (0x0C,0x52).
+    float range{};          ///< Range this setting gives; units depend on the sensor (see SensorRangeType).
+    friend bool operator==(const SensorRangeEntry &a, const SensorRangeEntry &b) {
+        (void)a;
+        (void)b;
+        return true && a.setting == b.setting && a.range == b.range;
+    }
+    friend bool operator!=(const SensorRangeEntry &a, const SensorRangeEntry &b) {
+        return !(a == b);
+    }
+};
+
+/// Supported action type
+struct SupportedActionType {
+    ::mipcodec::types::ActionType type{}; ///< Action type, as in Event Action Configuration (0x0C,0x2F).
+    std::uint8_t count{};                 ///< Maximum number of instances of this type.
+    friend bool operator==(const SupportedActionType &a, const SupportedActionType &b) {
+        (void)a;
+        (void)b;
+        return true && a.type == b.type && a.count == b.count;
+    }
+    friend bool operator!=(const SupportedActionType &a, const SupportedActionType &b) {
+        return !(a == b);
+    }
+};
+
+/// Supported actions (query = action types)
+struct SupportedActions {
+    std::uint8_t max_instances{}; ///< Number of action slots; instance numbers run 1..max_instances.
+    std::uint8_t num_entries{};   ///< Number of supported action types.
+    ::mipcodec::BoundedVector<::mipcodec::types::SupportedActionType, 125>
+        entries{}; ///< Supported action types.
+    friend bool operator==(const SupportedActions &a, const SupportedActions &b) {
+        (void)a;
+        (void)b;
+        return true && a.max_instances == b.max_instances && a.num_entries == b.num_entries &&
+               a.entries == b.entries;
+    }
+    friend bool operator!=(const SupportedActions &a, const SupportedActions &b) {
+        return !(a == b);
+    }
+};
+
+/// Supported trigger type
+struct SupportedTriggerType {
+    ::mipcodec::types::TriggerType type{}; ///< Trigger type, as in Event Trigger Configuration (0x0C,0x2E).
+    std::uint8_t count{};                  ///< Maximum number of instances of this type.
+    friend bool operator==(const SupportedTriggerType &a, const SupportedTriggerType &b) {
+        (void)a;
+        (void)b;
+        return true && a.type == b.type && a.count == b.count;
+    }
+    friend bool operator!=(const SupportedTriggerType &a, const SupportedTriggerType &b) {
+        return !(a == b);
+    }
+};
+
+/// Supported triggers (query = trigger types)
+struct SupportedTriggers {
+    std::uint8_t max_instances{}; ///< Number of trigger slots; instance numbers run 1..max_instances.
+    std::uint8_t num_entries{};   ///< Number of supported trigger types.
+    ::mipcodec::BoundedVector<::mipcodec::types::SupportedTriggerType, 125>
+        entries{}; ///< Supported trigger types.
+    friend bool operator==(const SupportedTriggers &a, const SupportedTriggers &b) {
+        (void)a;
+        (void)b;
+        return true && a.max_instances == b.max_instances && a.num_entries == b.num_entries &&
+               a.entries == b.entries;
+    }
+    friend bool operator!=(const SupportedTriggers &a, const SupportedTriggers &b) {
+        return !(a == b);
+    }
+};
+
+/// Supported event types, by query: the member chosen by a ::mipcodec::types::SupportedEventsQuery parameter
+/// (index 0, std::monostate, for members without data).
+struct SupportedEventsInfo {
+    std::variant<std::monostate, ::mipcodec::types::SupportedTriggers, ::mipcodec::types::SupportedActions>
+        value;
+    friend bool operator==(const SupportedEventsInfo &a, const SupportedEventsInfo &b) {
+        return a.value == b.value;
+    }
+    friend bool operator!=(const SupportedEventsInfo &a, const SupportedEventsInfo &b) {
         return !(a == b);
     }
 };
@@ -2261,6 +3411,22 @@ template <> struct Codec<::mipcodec::types::AidingVectorValidFlags> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::ConstellationOptions> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::ConstellationOptions &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::ConstellationOptions &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::Cv7BitFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint32_t);
@@ -2357,6 +3523,22 @@ template <> struct Codec<::mipcodec::types::GnssGpsSignals> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::GpioPinMode> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GpioPinMode &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioPinMode &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::Gx5BitFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint32_t);
@@ -2386,6 +3568,22 @@ template <> struct Codec<::mipcodec::types::HeadingAlignmentMethods> {
     }
     static void write(Writer &w, const ::mipcodec::types::HeadingAlignmentMethods &v) {
         Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SbasOptions> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::SbasOptions &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SbasOptions &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
     }
 };
 
@@ -2708,6 +3906,75 @@ template <> struct Codec<::mipcodec::types::CombinationParams> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::ConstellationSettings> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 6;
+    static bool read(Reader &r, ::mipcodec::types::ConstellationSettings &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.constellation_id, err)) {
+            err.enter("constellation_id");
+            return false;
+        }
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        if (!read_value(r, v.reserved_channels, err)) {
+            err.enter("reserved_channels");
+            return false;
+        }
+        if (!read_value(r, v.max_channels, err)) {
+            err.enter("max_channels");
+            return false;
+        }
+        if (!read_value(r, v.option_flags, err)) {
+            err.enter("option_flags");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::ConstellationSettings &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.constellation_id);
+        write_value(w, v.enable);
+        write_value(w, v.reserved_channels);
+        write_value(w, v.max_channels);
+        write_value(w, v.option_flags);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::DescriptorRate> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 3;
+    static bool read(Reader &r, ::mipcodec::types::DescriptorRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.descriptor, err)) {
+            err.enter("descriptor");
+            return false;
+        }
+        if (!read_value(r, v.decimation, err)) {
+            err.enter("decimation");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::DescriptorRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.descriptor);
+        write_value(w, v.decimation);
+        (void)absent;
+    }
+};
+
 template <> struct Codec<::mipcodec::types::DeviceInfo> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 82;
@@ -2784,6 +4051,672 @@ template <> struct Codec<::mipcodec::types::GnssReceiverInfoEntry> {
         write_value(w, v.mip_data_descriptor_set);
         write_string(w, v.description);
         (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehaviorUnused> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 1;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUnused &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.behavior, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorUnused &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.behavior);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehaviorIo> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 1;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorIo &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.behavior, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorIo &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.behavior);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehaviorPps> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 1;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorPps &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.behavior, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorPps &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.behavior);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehaviorEncoder> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 1;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorEncoder &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.behavior, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorEncoder &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.behavior);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehaviorTimestamp> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 1;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorTimestamp &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.behavior, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorTimestamp &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.behavior);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehaviorUart> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 1;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUart &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.behavior, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorUart &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.behavior);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioBehavior> {
+    static constexpr bool kFixedSize = false;
+    static constexpr std::size_t kSize = 0;
+    static bool read(Reader &r, ::mipcodec::types::GpioBehavior &v, ::mipcodec::types::GpioFeature selector,
+                     DecodeError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(0)) { // unused
+            v.value.emplace<1>();
+            return Codec<::mipcodec::types::GpioBehaviorUnused>::read(r, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(1)) { // gpio
+            v.value.emplace<2>();
+            return Codec<::mipcodec::types::GpioBehaviorIo>::read(r, std::get<2>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // pps
+            v.value.emplace<3>();
+            return Codec<::mipcodec::types::GpioBehaviorPps>::read(r, std::get<3>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(3)) { // encoder
+            v.value.emplace<4>();
+            return Codec<::mipcodec::types::GpioBehaviorEncoder>::read(r, std::get<4>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(4)) { // timestamp
+            v.value.emplace<5>();
+            return Codec<::mipcodec::types::GpioBehaviorTimestamp>::read(r, std::get<5>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(5)) { // uart
+            v.value.emplace<6>();
+            return Codec<::mipcodec::types::GpioBehaviorUart>::read(r, std::get<6>(v.value), err);
+        }
+        (void)r;
+        err = no_union_member_error(raw);
+        return false;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioBehavior &v,
+                      ::mipcodec::types::GpioFeature selector) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(0)) { // unused
+            if (v.value.index() != 1) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::GpioBehaviorUnused>::write(w, std::get<1>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(1)) { // gpio
+            if (v.value.index() != 2) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::GpioBehaviorIo>::write(w, std::get<2>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // pps
+            if (v.value.index() != 3) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::GpioBehaviorPps>::write(w, std::get<3>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(3)) { // encoder
+            if (v.value.index() != 4) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::GpioBehaviorEncoder>::write(w, std::get<4>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(4)) { // timestamp
+            if (v.value.index() != 5) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::GpioBehaviorTimestamp>::write(w, std::get<5>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(5)) { // uart
+            if (v.value.index() != 6) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::GpioBehaviorUart>::write(w, std::get<6>(v.value));
+            return;
+        }
+        w.fail(EncodeError::union_mismatch);
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Gx5BasicStatus> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 10;
+    static bool read(Reader &r, ::mipcodec::types::Gx5BasicStatus &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.status_flags, err)) {
+            err.enter("status_flags");
+            return false;
+        }
+        if (!read_value(r, v.system_state, err)) {
+            err.enter("system_state");
+            return false;
+        }
+        if (!read_value(r, v.system_timer, err)) {
+            err.enter("system_timer");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Gx5BasicStatus &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.status_flags);
+        write_value(w, v.system_state);
+        write_value(w, v.system_timer);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Gx5DiagnosticStatus> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 70;
+    static bool read(Reader &r, ::mipcodec::types::Gx5DiagnosticStatus &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.status_flags, err)) {
+            err.enter("status_flags");
+            return false;
+        }
+        if (!read_value(r, v.system_state, err)) {
+            err.enter("system_state");
+            return false;
+        }
+        if (!read_value(r, v.system_timer, err)) {
+            err.enter("system_timer");
+            return false;
+        }
+        if (!read_value(r, v.gnss_power_state, err)) {
+            err.enter("gnss_power_state");
+            return false;
+        }
+        if (!read_value(r, v.pps_pulse_count, err)) {
+            err.enter("pps_pulse_count");
+            return false;
+        }
+        if (!read_value(r, v.last_pps_time, err)) {
+            err.enter("last_pps_time");
+            return false;
+        }
+        if (!read_value(r, v.imu_stream_enabled, err)) {
+            err.enter("imu_stream_enabled");
+            return false;
+        }
+        if (!read_value(r, v.gnss_stream_enabled, err)) {
+            err.enter("gnss_stream_enabled");
+            return false;
+        }
+        if (!read_value(r, v.filter_stream_enabled, err)) {
+            err.enter("filter_stream_enabled");
+            return false;
+        }
+        if (!read_value(r, v.imu_dropped_packets, err)) {
+            err.enter("imu_dropped_packets");
+            return false;
+        }
+        if (!read_value(r, v.gnss_dropped_packets, err)) {
+            err.enter("gnss_dropped_packets");
+            return false;
+        }
+        if (!read_value(r, v.filter_dropped_packets, err)) {
+            err.enter("filter_dropped_packets");
+            return false;
+        }
+        if (!read_value(r, v.com_bytes_written, err)) {
+            err.enter("com_bytes_written");
+            return false;
+        }
+        if (!read_value(r, v.com_bytes_read, err)) {
+            err.enter("com_bytes_read");
+            return false;
+        }
+        if (!read_value(r, v.com_write_overruns, err)) {
+            err.enter("com_write_overruns");
+            return false;
+        }
+        if (!read_value(r, v.imu_parse_errors, err)) {
+            err.enter("imu_parse_errors");
+            return false;
+        }
+        if (!read_value(r, v.imu_messages_read, err)) {
+            err.enter("imu_messages_read");
+            return false;
+        }
+        if (!read_value(r, v.last_imu_message_time, err)) {
+            err.enter("last_imu_message_time");
+            return false;
+        }
+        if (!read_value(r, v.gnss_parse_errors, err)) {
+            err.enter("gnss_parse_errors");
+            return false;
+        }
+        if (!read_value(r, v.gnss_messages_read, err)) {
+            err.enter("gnss_messages_read");
+            return false;
+        }
+        if (!read_value(r, v.last_gnss_message_time, err)) {
+            err.enter("last_gnss_message_time");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Gx5DiagnosticStatus &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.status_flags);
+        write_value(w, v.system_state);
+        write_value(w, v.system_timer);
+        write_value(w, v.gnss_power_state);
+        write_value(w, v.pps_pulse_count);
+        write_value(w, v.last_pps_time);
+        write_value(w, v.imu_stream_enabled);
+        write_value(w, v.gnss_stream_enabled);
+        write_value(w, v.filter_stream_enabled);
+        write_value(w, v.imu_dropped_packets);
+        write_value(w, v.gnss_dropped_packets);
+        write_value(w, v.filter_dropped_packets);
+        write_value(w, v.com_bytes_written);
+        write_value(w, v.com_bytes_read);
+        write_value(w, v.com_write_overruns);
+        write_value(w, v.imu_parse_errors);
+        write_value(w, v.imu_messages_read);
+        write_value(w, v.last_imu_message_time);
+        write_value(w, v.gnss_parse_errors);
+        write_value(w, v.gnss_messages_read);
+        write_value(w, v.last_gnss_message_time);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Gx5DeviceStatus> {
+    static constexpr bool kFixedSize = false;
+    static constexpr std::size_t kSize = 0;
+    static bool read(Reader &r, ::mipcodec::types::Gx5DeviceStatus &v,
+                     ::mipcodec::types::DeviceStatusSelector selector, DecodeError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // basic
+            v.value.emplace<1>();
+            return Codec<::mipcodec::types::Gx5BasicStatus>::read(r, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // diagnostic
+            v.value.emplace<2>();
+            return Codec<::mipcodec::types::Gx5DiagnosticStatus>::read(r, std::get<2>(v.value), err);
+        }
+        (void)r;
+        err = no_union_member_error(raw);
+        return false;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Gx5DeviceStatus &v,
+                      ::mipcodec::types::DeviceStatusSelector selector) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // basic
+            if (v.value.index() != 1) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::Gx5BasicStatus>::write(w, std::get<1>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // diagnostic
+            if (v.value.index() != 2) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::Gx5DiagnosticStatus>::write(w, std::get<2>(v.value));
+            return;
+        }
+        w.fail(EncodeError::union_mismatch);
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Gx5PollDescriptor> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 3;
+    static bool read(Reader &r, ::mipcodec::types::Gx5PollDescriptor &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.descriptor, err)) {
+            err.enter("descriptor");
+            return false;
+        }
+        if (!read_value(r, v.reserved, err)) {
+            err.enter("reserved");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Gx5PollDescriptor &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.descriptor);
+        write_value(w, v.reserved);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::NmeaMessage> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 5;
+    static bool read(Reader &r, ::mipcodec::types::NmeaMessage &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.message_id, err)) {
+            err.enter("message_id");
+            return false;
+        }
+        if (!read_value(r, v.talker_id, err)) {
+            err.enter("talker_id");
+            return false;
+        }
+        if (!read_value(r, v.source_desc_set, err)) {
+            err.enter("source_desc_set");
+            return false;
+        }
+        if (!read_value(r, v.decimation, err)) {
+            err.enter("decimation");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::NmeaMessage &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.message_id);
+        write_value(w, v.talker_id);
+        write_value(w, v.source_desc_set);
+        write_value(w, v.decimation);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SensorRangeEntry> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 5;
+    static bool read(Reader &r, ::mipcodec::types::SensorRangeEntry &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.setting, err)) {
+            err.enter("setting");
+            return false;
+        }
+        if (!read_value(r, v.range, err)) {
+            err.enter("range");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SensorRangeEntry &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.setting);
+        write_value(w, v.range);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SupportedActionType> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 2;
+    static bool read(Reader &r, ::mipcodec::types::SupportedActionType &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.type, err)) {
+            err.enter("type");
+            return false;
+        }
+        if (!read_value(r, v.count, err)) {
+            err.enter("count");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SupportedActionType &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.type);
+        write_value(w, v.count);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SupportedActions> {
+    static constexpr bool kFixedSize = false;
+    static constexpr std::size_t kSize = 0;
+    static bool read(Reader &r, ::mipcodec::types::SupportedActions &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.max_instances, err)) {
+            err.enter("max_instances");
+            return false;
+        }
+        if (!read_value(r, v.num_entries, err)) {
+            err.enter("num_entries");
+            return false;
+        }
+        if (!read_counted(r, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
+            err.enter("entries");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SupportedActions &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.max_instances);
+        write_value(w, v.num_entries);
+        write_counted(w, v.entries, static_cast<std::uint64_t>(v.num_entries));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SupportedTriggerType> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 2;
+    static bool read(Reader &r, ::mipcodec::types::SupportedTriggerType &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.type, err)) {
+            err.enter("type");
+            return false;
+        }
+        if (!read_value(r, v.count, err)) {
+            err.enter("count");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SupportedTriggerType &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.type);
+        write_value(w, v.count);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SupportedTriggers> {
+    static constexpr bool kFixedSize = false;
+    static constexpr std::size_t kSize = 0;
+    static bool read(Reader &r, ::mipcodec::types::SupportedTriggers &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.max_instances, err)) {
+            err.enter("max_instances");
+            return false;
+        }
+        if (!read_value(r, v.num_entries, err)) {
+            err.enter("num_entries");
+            return false;
+        }
+        if (!read_counted(r, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
+            err.enter("entries");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SupportedTriggers &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.max_instances);
+        write_value(w, v.num_entries);
+        write_counted(w, v.entries, static_cast<std::uint64_t>(v.num_entries));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SupportedEventsInfo> {
+    static constexpr bool kFixedSize = false;
+    static constexpr std::size_t kSize = 0;
+    static bool read(Reader &r, ::mipcodec::types::SupportedEventsInfo &v,
+                     ::mipcodec::types::SupportedEventsQuery selector, DecodeError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // trigger_types
+            v.value.emplace<1>();
+            return Codec<::mipcodec::types::SupportedTriggers>::read(r, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // action_types
+            v.value.emplace<2>();
+            return Codec<::mipcodec::types::SupportedActions>::read(r, std::get<2>(v.value), err);
+        }
+        (void)r;
+        err = no_union_member_error(raw);
+        return false;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SupportedEventsInfo &v,
+                      ::mipcodec::types::SupportedEventsQuery selector) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // trigger_types
+            if (v.value.index() != 1) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::SupportedTriggers>::write(w, std::get<1>(v.value));
+            return;
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // action_types
+            if (v.value.index() != 2) {
+                w.fail(EncodeError::union_mismatch);
+                return;
+            }
+            Codec<::mipcodec::types::SupportedActions>::write(w, std::get<2>(v.value));
+            return;
+        }
+        w.fail(EncodeError::union_mismatch);
     }
 };
 

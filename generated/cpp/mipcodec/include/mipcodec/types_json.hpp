@@ -38,6 +38,20 @@ template <> struct Json<::mipcodec::types::AidingVectorValidFlags> {
     }
 };
 
+template <> struct Json<::mipcodec::types::ConstellationOptions> {
+    static void write(JsonWriter &w, const ::mipcodec::types::ConstellationOptions &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::ConstellationOptions &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::Cv7BitFlags> {
     static void write(JsonWriter &w, const ::mipcodec::types::Cv7BitFlags &v) {
         Json<std::uint32_t>::write(w, v.raw());
@@ -122,6 +136,20 @@ template <> struct Json<::mipcodec::types::GnssGpsSignals> {
     }
 };
 
+template <> struct Json<::mipcodec::types::GpioPinMode> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioPinMode &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GpioPinMode &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::Gx5BitFlags> {
     static void write(JsonWriter &w, const ::mipcodec::types::Gx5BitFlags &v) {
         Json<std::uint32_t>::write(w, v.raw());
@@ -143,6 +171,20 @@ template <> struct Json<::mipcodec::types::HeadingAlignmentMethods> {
     static bool read(const json::Value &x, ::mipcodec::types::HeadingAlignmentMethods &v, JsonError &err) {
         std::uint8_t raw{};
         if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SbasOptions> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SbasOptions &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::SbasOptions &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
             return false;
         }
         v.set_raw(raw);
@@ -546,6 +588,124 @@ template <> struct Json<::mipcodec::types::CombinationParams> {
     }
 };
 
+template <> struct Json<::mipcodec::types::ConstellationSettings> {
+    static void write(JsonWriter &w, const ::mipcodec::types::ConstellationSettings &v) {
+        w.begin_object();
+        w.key("constellation_id");
+        json_write_value(w, v.constellation_id);
+        w.key("enable");
+        json_write_value(w, v.enable);
+        w.key("reserved_channels");
+        json_write_value(w, v.reserved_channels);
+        w.key("max_channels");
+        json_write_value(w, v.max_channels);
+        w.key("option_flags");
+        json_write_value(w, v.option_flags);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::ConstellationSettings &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "constellation_id",
+                                   "enable",
+                                   "reserved_channels",
+                                   "max_channels",
+                                   "option_flags",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("constellation_id")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.constellation_id, err)) {
+                err.enter("constellation_id");
+                return false;
+            }
+        } else {
+            return err.missing("constellation_id");
+        }
+        if (const json::Value *found = in.find("enable")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.enable, err)) {
+                err.enter("enable");
+                return false;
+            }
+        } else {
+            return err.missing("enable");
+        }
+        if (const json::Value *found = in.find("reserved_channels")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_channels, err)) {
+                err.enter("reserved_channels");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_channels");
+        }
+        if (const json::Value *found = in.find("max_channels")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.max_channels, err)) {
+                err.enter("max_channels");
+                return false;
+            }
+        } else {
+            return err.missing("max_channels");
+        }
+        if (const json::Value *found = in.find("option_flags")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.option_flags, err)) {
+                err.enter("option_flags");
+                return false;
+            }
+        } else {
+            return err.missing("option_flags");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::DescriptorRate> {
+    static void write(JsonWriter &w, const ::mipcodec::types::DescriptorRate &v) {
+        w.begin_object();
+        w.key("descriptor");
+        json_write_value(w, v.descriptor);
+        w.key("decimation");
+        json_write_value(w, v.decimation);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::DescriptorRate &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "descriptor",
+                                   "decimation",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("descriptor")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.descriptor, err)) {
+                err.enter("descriptor");
+                return false;
+            }
+        } else {
+            return err.missing("descriptor");
+        }
+        if (const json::Value *found = in.find("decimation")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.decimation, err)) {
+                err.enter("decimation");
+                return false;
+            }
+        } else {
+            return err.missing("decimation");
+        }
+        (void)v;
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::DeviceInfo> {
     static void write(JsonWriter &w, const ::mipcodec::types::DeviceInfo &v) {
         w.begin_object();
@@ -685,6 +845,944 @@ template <> struct Json<::mipcodec::types::GnssReceiverInfoEntry> {
         }
         (void)v;
         return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehaviorUnused> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorUnused &v) {
+        w.begin_object();
+        w.key("behavior");
+        json_write_value(w, v.behavior);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorUnused &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "behavior",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("behavior")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.behavior, err)) {
+                err.enter("behavior");
+                return false;
+            }
+        } else {
+            return err.missing("behavior");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehaviorIo> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorIo &v) {
+        w.begin_object();
+        w.key("behavior");
+        json_write_value(w, v.behavior);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorIo &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "behavior",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("behavior")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.behavior, err)) {
+                err.enter("behavior");
+                return false;
+            }
+        } else {
+            return err.missing("behavior");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehaviorPps> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorPps &v) {
+        w.begin_object();
+        w.key("behavior");
+        json_write_value(w, v.behavior);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorPps &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "behavior",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("behavior")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.behavior, err)) {
+                err.enter("behavior");
+                return false;
+            }
+        } else {
+            return err.missing("behavior");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehaviorEncoder> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorEncoder &v) {
+        w.begin_object();
+        w.key("behavior");
+        json_write_value(w, v.behavior);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorEncoder &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "behavior",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("behavior")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.behavior, err)) {
+                err.enter("behavior");
+                return false;
+            }
+        } else {
+            return err.missing("behavior");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehaviorTimestamp> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorTimestamp &v) {
+        w.begin_object();
+        w.key("behavior");
+        json_write_value(w, v.behavior);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorTimestamp &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "behavior",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("behavior")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.behavior, err)) {
+                err.enter("behavior");
+                return false;
+            }
+        } else {
+            return err.missing("behavior");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehaviorUart> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorUart &v) {
+        w.begin_object();
+        w.key("behavior");
+        json_write_value(w, v.behavior);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorUart &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "behavior",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("behavior")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.behavior, err)) {
+                err.enter("behavior");
+                return false;
+            }
+        } else {
+            return err.missing("behavior");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioBehavior> {
+    /// The selected member's object, or null for a member without data.
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehavior &v) {
+        switch (v.value.index()) {
+        case 1:
+            Json<::mipcodec::types::GpioBehaviorUnused>::write(w, std::get<1>(v.value));
+            return;
+        case 2:
+            Json<::mipcodec::types::GpioBehaviorIo>::write(w, std::get<2>(v.value));
+            return;
+        case 3:
+            Json<::mipcodec::types::GpioBehaviorPps>::write(w, std::get<3>(v.value));
+            return;
+        case 4:
+            Json<::mipcodec::types::GpioBehaviorEncoder>::write(w, std::get<4>(v.value));
+            return;
+        case 5:
+            Json<::mipcodec::types::GpioBehaviorTimestamp>::write(w, std::get<5>(v.value));
+            return;
+        case 6:
+            Json<::mipcodec::types::GpioBehaviorUart>::write(w, std::get<6>(v.value));
+            return;
+        default:
+            w.null();
+            return;
+        }
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GpioBehavior &v,
+                     ::mipcodec::types::GpioFeature selector, JsonError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(0)) { // unused
+            v.value.emplace<1>();
+            return Json<::mipcodec::types::GpioBehaviorUnused>::read(x, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(1)) { // gpio
+            v.value.emplace<2>();
+            return Json<::mipcodec::types::GpioBehaviorIo>::read(x, std::get<2>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // pps
+            v.value.emplace<3>();
+            return Json<::mipcodec::types::GpioBehaviorPps>::read(x, std::get<3>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(3)) { // encoder
+            v.value.emplace<4>();
+            return Json<::mipcodec::types::GpioBehaviorEncoder>::read(x, std::get<4>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(4)) { // timestamp
+            v.value.emplace<5>();
+            return Json<::mipcodec::types::GpioBehaviorTimestamp>::read(x, std::get<5>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(5)) { // uart
+            v.value.emplace<6>();
+            return Json<::mipcodec::types::GpioBehaviorUart>::read(x, std::get<6>(v.value), err);
+        }
+        (void)x;
+        return err.fail("no member for selector value " + std::to_string(raw));
+    }
+};
+
+template <> struct Json<::mipcodec::types::Gx5BasicStatus> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5BasicStatus &v) {
+        w.begin_object();
+        w.key("status_flags");
+        json_write_value(w, v.status_flags);
+        w.key("system_state");
+        json_write_value(w, v.system_state);
+        w.key("system_timer");
+        json_write_value(w, v.system_timer);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::Gx5BasicStatus &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "status_flags",
+                                   "system_state",
+                                   "system_timer",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("status_flags")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.status_flags, err)) {
+                err.enter("status_flags");
+                return false;
+            }
+        } else {
+            return err.missing("status_flags");
+        }
+        if (const json::Value *found = in.find("system_state")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_state, err)) {
+                err.enter("system_state");
+                return false;
+            }
+        } else {
+            return err.missing("system_state");
+        }
+        if (const json::Value *found = in.find("system_timer")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_timer, err)) {
+                err.enter("system_timer");
+                return false;
+            }
+        } else {
+            return err.missing("system_timer");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Gx5DiagnosticStatus> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5DiagnosticStatus &v) {
+        w.begin_object();
+        w.key("status_flags");
+        json_write_value(w, v.status_flags);
+        w.key("system_state");
+        json_write_value(w, v.system_state);
+        w.key("system_timer");
+        json_write_value(w, v.system_timer);
+        w.key("gnss_power_state");
+        json_write_value(w, v.gnss_power_state);
+        w.key("pps_pulse_count");
+        json_write_value(w, v.pps_pulse_count);
+        w.key("last_pps_time");
+        json_write_value(w, v.last_pps_time);
+        w.key("imu_stream_enabled");
+        json_write_value(w, v.imu_stream_enabled);
+        w.key("gnss_stream_enabled");
+        json_write_value(w, v.gnss_stream_enabled);
+        w.key("filter_stream_enabled");
+        json_write_value(w, v.filter_stream_enabled);
+        w.key("imu_dropped_packets");
+        json_write_value(w, v.imu_dropped_packets);
+        w.key("gnss_dropped_packets");
+        json_write_value(w, v.gnss_dropped_packets);
+        w.key("filter_dropped_packets");
+        json_write_value(w, v.filter_dropped_packets);
+        w.key("com_bytes_written");
+        json_write_value(w, v.com_bytes_written);
+        w.key("com_bytes_read");
+        json_write_value(w, v.com_bytes_read);
+        w.key("com_write_overruns");
+        json_write_value(w, v.com_write_overruns);
+        w.key("imu_parse_errors");
+        json_write_value(w, v.imu_parse_errors);
+        w.key("imu_messages_read");
+        json_write_value(w, v.imu_messages_read);
+        w.key("last_imu_message_time");
+        json_write_value(w, v.last_imu_message_time);
+        w.key("gnss_parse_errors");
+        json_write_value(w, v.gnss_parse_errors);
+        w.key("gnss_messages_read");
+        json_write_value(w, v.gnss_messages_read);
+        w.key("last_gnss_message_time");
+        json_write_value(w, v.last_gnss_message_time);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::Gx5DiagnosticStatus &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "status_flags",        "system_state",         "system_timer",
+                                   "gnss_power_state",    "pps_pulse_count",      "last_pps_time",
+                                   "imu_stream_enabled",  "gnss_stream_enabled",  "filter_stream_enabled",
+                                   "imu_dropped_packets", "gnss_dropped_packets", "filter_dropped_packets",
+                                   "com_bytes_written",   "com_bytes_read",       "com_write_overruns",
+                                   "imu_parse_errors",    "imu_messages_read",    "last_imu_message_time",
+                                   "gnss_parse_errors",   "gnss_messages_read",   "last_gnss_message_time",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("status_flags")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.status_flags, err)) {
+                err.enter("status_flags");
+                return false;
+            }
+        } else {
+            return err.missing("status_flags");
+        }
+        if (const json::Value *found = in.find("system_state")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_state, err)) {
+                err.enter("system_state");
+                return false;
+            }
+        } else {
+            return err.missing("system_state");
+        }
+        if (const json::Value *found = in.find("system_timer")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_timer, err)) {
+                err.enter("system_timer");
+                return false;
+            }
+        } else {
+            return err.missing("system_timer");
+        }
+        if (const json::Value *found = in.find("gnss_power_state")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_power_state, err)) {
+                err.enter("gnss_power_state");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_power_state");
+        }
+        if (const json::Value *found = in.find("pps_pulse_count")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.pps_pulse_count, err)) {
+                err.enter("pps_pulse_count");
+                return false;
+            }
+        } else {
+            return err.missing("pps_pulse_count");
+        }
+        if (const json::Value *found = in.find("last_pps_time")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.last_pps_time, err)) {
+                err.enter("last_pps_time");
+                return false;
+            }
+        } else {
+            return err.missing("last_pps_time");
+        }
+        if (const json::Value *found = in.find("imu_stream_enabled")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_stream_enabled, err)) {
+                err.enter("imu_stream_enabled");
+                return false;
+            }
+        } else {
+            return err.missing("imu_stream_enabled");
+        }
+        if (const json::Value *found = in.find("gnss_stream_enabled")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_stream_enabled, err)) {
+                err.enter("gnss_stream_enabled");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_stream_enabled");
+        }
+        if (const json::Value *found = in.find("filter_stream_enabled")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.filter_stream_enabled, err)) {
+                err.enter("filter_stream_enabled");
+                return false;
+            }
+        } else {
+            return err.missing("filter_stream_enabled");
+        }
+        if (const json::Value *found = in.find("imu_dropped_packets")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_dropped_packets, err)) {
+                err.enter("imu_dropped_packets");
+                return false;
+            }
+        } else {
+            return err.missing("imu_dropped_packets");
+        }
+        if (const json::Value *found = in.find("gnss_dropped_packets")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_dropped_packets, err)) {
+                err.enter("gnss_dropped_packets");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_dropped_packets");
+        }
+        if (const json::Value *found = in.find("filter_dropped_packets")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.filter_dropped_packets, err)) {
+                err.enter("filter_dropped_packets");
+                return false;
+            }
+        } else {
+            return err.missing("filter_dropped_packets");
+        }
+        if (const json::Value *found = in.find("com_bytes_written")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.com_bytes_written, err)) {
+                err.enter("com_bytes_written");
+                return false;
+            }
+        } else {
+            return err.missing("com_bytes_written");
+        }
+        if (const json::Value *found = in.find("com_bytes_read")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.com_bytes_read, err)) {
+                err.enter("com_bytes_read");
+                return false;
+            }
+        } else {
+            return err.missing("com_bytes_read");
+        }
+        if (const json::Value *found = in.find("com_write_overruns")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.com_write_overruns, err)) {
+                err.enter("com_write_overruns");
+                return false;
+            }
+        } else {
+            return err.missing("com_write_overruns");
+        }
+        if (const json::Value *found = in.find("imu_parse_errors")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_parse_errors, err)) {
+                err.enter("imu_parse_errors");
+                return false;
+            }
+        } else {
+            return err.missing("imu_parse_errors");
+        }
+        if (const json::Value *found = in.find("imu_messages_read")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_messages_read, err)) {
+                err.enter("imu_messages_read");
+                return false;
+            }
+        } else {
+            return err.missing("imu_messages_read");
+        }
+        if (const json::Value *found = in.find("last_imu_message_time")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.last_imu_message_time, err)) {
+                err.enter("last_imu_message_time");
+                return false;
+            }
+        } else {
+            return err.missing("last_imu_message_time");
+        }
+        if (const json::Value *found = in.find("gnss_parse_errors")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_parse_errors, err)) {
+                err.enter("gnss_parse_errors");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_parse_errors");
+        }
+        if (const json::Value *found = in.find("gnss_messages_read")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_messages_read, err)) {
+                err.enter("gnss_messages_read");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_messages_read");
+        }
+        if (const json::Value *found = in.find("last_gnss_message_time")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.last_gnss_message_time, err)) {
+                err.enter("last_gnss_message_time");
+                return false;
+            }
+        } else {
+            return err.missing("last_gnss_message_time");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Gx5DeviceStatus> {
+    /// The selected member's object, or null for a member without data.
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5DeviceStatus &v) {
+        switch (v.value.index()) {
+        case 1:
+            Json<::mipcodec::types::Gx5BasicStatus>::write(w, std::get<1>(v.value));
+            return;
+        case 2:
+            Json<::mipcodec::types::Gx5DiagnosticStatus>::write(w, std::get<2>(v.value));
+            return;
+        default:
+            w.null();
+            return;
+        }
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Gx5DeviceStatus &v,
+                     ::mipcodec::types::DeviceStatusSelector selector, JsonError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // basic
+            v.value.emplace<1>();
+            return Json<::mipcodec::types::Gx5BasicStatus>::read(x, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // diagnostic
+            v.value.emplace<2>();
+            return Json<::mipcodec::types::Gx5DiagnosticStatus>::read(x, std::get<2>(v.value), err);
+        }
+        (void)x;
+        return err.fail("no member for selector value " + std::to_string(raw));
+    }
+};
+
+template <> struct Json<::mipcodec::types::Gx5PollDescriptor> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5PollDescriptor &v) {
+        w.begin_object();
+        w.key("descriptor");
+        json_write_value(w, v.descriptor);
+        w.key("reserved");
+        json_write_value(w, v.reserved);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::Gx5PollDescriptor &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "descriptor",
+                                   "reserved",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("descriptor")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.descriptor, err)) {
+                err.enter("descriptor");
+                return false;
+            }
+        } else {
+            return err.missing("descriptor");
+        }
+        if (const json::Value *found = in.find("reserved")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved, err)) {
+                err.enter("reserved");
+                return false;
+            }
+        } else {
+            return err.missing("reserved");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::NmeaMessage> {
+    static void write(JsonWriter &w, const ::mipcodec::types::NmeaMessage &v) {
+        w.begin_object();
+        w.key("message_id");
+        json_write_value(w, v.message_id);
+        w.key("talker_id");
+        json_write_value(w, v.talker_id);
+        w.key("source_desc_set");
+        json_write_value(w, v.source_desc_set);
+        w.key("decimation");
+        json_write_value(w, v.decimation);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::NmeaMessage &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "message_id",
+                                   "talker_id",
+                                   "source_desc_set",
+                                   "decimation",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("message_id")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.message_id, err)) {
+                err.enter("message_id");
+                return false;
+            }
+        } else {
+            return err.missing("message_id");
+        }
+        if (const json::Value *found = in.find("talker_id")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.talker_id, err)) {
+                err.enter("talker_id");
+                return false;
+            }
+        } else {
+            return err.missing("talker_id");
+        }
+        if (const json::Value *found = in.find("source_desc_set")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.source_desc_set, err)) {
+                err.enter("source_desc_set");
+                return false;
+            }
+        } else {
+            return err.missing("source_desc_set");
+        }
+        if (const json::Value *found = in.find("decimation")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.decimation, err)) {
+                err.enter("decimation");
+                return false;
+            }
+        } else {
+            return err.missing("decimation");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SensorRangeEntry> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SensorRangeEntry &v) {
+        w.begin_object();
+        w.key("setting");
+        json_write_value(w, v.setting);
+        w.key("range");
+        json_write_value(w, v.range);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::SensorRangeEntry &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "setting",
+                                   "range",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("setting")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.setting, err)) {
+                err.enter("setting");
+                return false;
+            }
+        } else {
+            return err.missing("setting");
+        }
+        if (const json::Value *found = in.find("range")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.range, err)) {
+                err.enter("range");
+                return false;
+            }
+        } else {
+            return err.missing("range");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SupportedActionType> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedActionType &v) {
+        w.begin_object();
+        w.key("type");
+        json_write_value(w, v.type);
+        w.key("count");
+        json_write_value(w, v.count);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedActionType &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "type",
+                                   "count",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("type")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.type, err)) {
+                err.enter("type");
+                return false;
+            }
+        } else {
+            return err.missing("type");
+        }
+        if (const json::Value *found = in.find("count")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.count, err)) {
+                err.enter("count");
+                return false;
+            }
+        } else {
+            return err.missing("count");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SupportedActions> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedActions &v) {
+        w.begin_object();
+        w.key("max_instances");
+        json_write_value(w, v.max_instances);
+        w.key("num_entries");
+        json_write_value(w, v.num_entries);
+        w.key("entries");
+        json_write_array(w, v.entries);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedActions &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "max_instances",
+                                   "num_entries",
+                                   "entries",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("max_instances")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.max_instances, err)) {
+                err.enter("max_instances");
+                return false;
+            }
+        } else {
+            return err.missing("max_instances");
+        }
+        if (const json::Value *found = in.find("num_entries")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.num_entries, err)) {
+                err.enter("num_entries");
+                return false;
+            }
+        } else {
+            return err.missing("num_entries");
+        }
+        if (const json::Value *found = in.find("entries")) {
+            const json::Value &x = *found;
+            if (!json_read_counted(x, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
+                err.enter("entries");
+                return false;
+            }
+        } else {
+            return err.missing("entries");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SupportedTriggerType> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedTriggerType &v) {
+        w.begin_object();
+        w.key("type");
+        json_write_value(w, v.type);
+        w.key("count");
+        json_write_value(w, v.count);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedTriggerType &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "type",
+                                   "count",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("type")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.type, err)) {
+                err.enter("type");
+                return false;
+            }
+        } else {
+            return err.missing("type");
+        }
+        if (const json::Value *found = in.find("count")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.count, err)) {
+                err.enter("count");
+                return false;
+            }
+        } else {
+            return err.missing("count");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SupportedTriggers> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedTriggers &v) {
+        w.begin_object();
+        w.key("max_instances");
+        json_write_value(w, v.max_instances);
+        w.key("num_entries");
+        json_write_value(w, v.num_entries);
+        w.key("entries");
+        json_write_array(w, v.entries);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedTriggers &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "max_instances",
+                                   "num_entries",
+                                   "entries",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("max_instances")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.max_instances, err)) {
+                err.enter("max_instances");
+                return false;
+            }
+        } else {
+            return err.missing("max_instances");
+        }
+        if (const json::Value *found = in.find("num_entries")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.num_entries, err)) {
+                err.enter("num_entries");
+                return false;
+            }
+        } else {
+            return err.missing("num_entries");
+        }
+        if (const json::Value *found = in.find("entries")) {
+            const json::Value &x = *found;
+            if (!json_read_counted(x, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
+                err.enter("entries");
+                return false;
+            }
+        } else {
+            return err.missing("entries");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SupportedEventsInfo> {
+    /// The selected member's object, or null for a member without data.
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedEventsInfo &v) {
+        switch (v.value.index()) {
+        case 1:
+            Json<::mipcodec::types::SupportedTriggers>::write(w, std::get<1>(v.value));
+            return;
+        case 2:
+            Json<::mipcodec::types::SupportedActions>::write(w, std::get<2>(v.value));
+            return;
+        default:
+            w.null();
+            return;
+        }
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::SupportedEventsInfo &v,
+                     ::mipcodec::types::SupportedEventsQuery selector, JsonError &err) {
+        const auto raw = static_cast<std::uint8_t>(selector);
+        if (raw == static_cast<std::uint8_t>(1)) { // trigger_types
+            v.value.emplace<1>();
+            return Json<::mipcodec::types::SupportedTriggers>::read(x, std::get<1>(v.value), err);
+        }
+        if (raw == static_cast<std::uint8_t>(2)) { // action_types
+            v.value.emplace<2>();
+            return Json<::mipcodec::types::SupportedActions>::read(x, std::get<2>(v.value), err);
+        }
+        (void)x;
+        return err.fail("no member for selector value " + std::to_string(raw));
     }
 };
 

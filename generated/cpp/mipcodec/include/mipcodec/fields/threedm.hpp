@@ -229,6 +229,1803 @@ struct EventActionConfigResponse {
     }
 };
 
+/// Device startup settings (command, descriptor 0x30, layout of device gx5_45).
+struct DeviceStartupSettingsGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x30;
+    static constexpr const char *kName = "device_startup_settings";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    friend bool operator==(const DeviceStartupSettingsGx545 &a, const DeviceStartupSettingsGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function;
+    }
+    friend bool operator!=(const DeviceStartupSettingsGx545 &a, const DeviceStartupSettingsGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Device startup settings (command, descriptor 0x30, layout of device cv7_ins).
+struct DeviceStartupSettingsCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x30;
+    static constexpr const char *kName = "device_startup_settings";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    friend bool operator==(const DeviceStartupSettingsCv7Ins &a, const DeviceStartupSettingsCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function;
+    }
+    friend bool operator!=(const DeviceStartupSettingsCv7Ins &a, const DeviceStartupSettingsCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor-to-vehicle frame transformation (Euler) (command, descriptor 0x31).
+struct SensorToVehicleEuler {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x31;
+    static constexpr const char *kName = "sensor_to_vehicle_euler";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<float> roll{};                    ///< Roll angle. [rad]
+    std::optional<float> pitch{};                   ///< Pitch angle. [rad]
+    std::optional<float> yaw{};                     ///< Yaw angle. [rad]
+    friend bool operator==(const SensorToVehicleEuler &a, const SensorToVehicleEuler &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    }
+    friend bool operator!=(const SensorToVehicleEuler &a, const SensorToVehicleEuler &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor-to-vehicle frame transformation (Euler) (response) (response, descriptor 0xB1).
+struct SensorToVehicleEulerResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xB1;
+    static constexpr const char *kName = "sensor_to_vehicle_euler_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    float roll{};  ///< Roll angle. [rad]
+    float pitch{}; ///< Pitch angle. [rad]
+    float yaw{};   ///< Yaw angle. [rad]
+    friend bool operator==(const SensorToVehicleEulerResponse &a, const SensorToVehicleEulerResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    }
+    friend bool operator!=(const SensorToVehicleEulerResponse &a, const SensorToVehicleEulerResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor-to-vehicle frame transformation (quaternion) (command, descriptor 0x32).
+struct SensorToVehicleQuaternion {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x32;
+    static constexpr const char *kName = "sensor_to_vehicle_quaternion";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 4>> q{};        ///< Unit quaternion of the transformation, [w, i, j, k].
+    friend bool operator==(const SensorToVehicleQuaternion &a, const SensorToVehicleQuaternion &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.q == b.q;
+    }
+    friend bool operator!=(const SensorToVehicleQuaternion &a, const SensorToVehicleQuaternion &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor-to-vehicle frame transformation (quaternion) (response) (response, descriptor 0xB2).
+struct SensorToVehicleQuaternionResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xB2;
+    static constexpr const char *kName = "sensor_to_vehicle_quaternion_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 4> q{}; ///< Unit quaternion of the transformation, [w, i, j, k].
+    friend bool operator==(const SensorToVehicleQuaternionResponse &a,
+                           const SensorToVehicleQuaternionResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.q == b.q;
+    }
+    friend bool operator!=(const SensorToVehicleQuaternionResponse &a,
+                           const SensorToVehicleQuaternionResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor-to-vehicle frame transformation (direction cosine matrix) (command, descriptor 0x33).
+struct SensorToVehicleDcm {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x33;
+    static constexpr const char *kName = "sensor_to_vehicle_dcm";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 9>> dcm{};      ///< Direction cosine matrix, row-major.
+    friend bool operator==(const SensorToVehicleDcm &a, const SensorToVehicleDcm &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.dcm == b.dcm;
+    }
+    friend bool operator!=(const SensorToVehicleDcm &a, const SensorToVehicleDcm &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor-to-vehicle frame transformation (DCM) (response) (response, descriptor 0xB3).
+struct SensorToVehicleDcmResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xB3;
+    static constexpr const char *kName = "sensor_to_vehicle_dcm_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 9> dcm{}; ///< Direction cosine matrix, row-major.
+    friend bool operator==(const SensorToVehicleDcmResponse &a, const SensorToVehicleDcmResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.dcm == b.dcm;
+    }
+    friend bool operator!=(const SensorToVehicleDcmResponse &a, const SensorToVehicleDcmResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Accelerometer bias (command, descriptor 0x37, layout of device gx5_45).
+struct AccelBiasGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x37;
+    static constexpr const char *kName = "accel_bias";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z accelerometer bias. [g]
+    friend bool operator==(const AccelBiasGx545 &a, const AccelBiasGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.bias == b.bias;
+    }
+    friend bool operator!=(const AccelBiasGx545 &a, const AccelBiasGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Accelerometer bias (command, descriptor 0x37, layout of device cv7_ins).
+struct AccelBiasCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x37;
+    static constexpr const char *kName = "accel_bias";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z accelerometer bias in the sensor frame. [g]
+    friend bool operator==(const AccelBiasCv7Ins &a, const AccelBiasCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.bias == b.bias;
+    }
+    friend bool operator!=(const AccelBiasCv7Ins &a, const AccelBiasCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Accelerometer bias (response) (response, descriptor 0x9A).
+struct AccelBiasResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x9A;
+    static constexpr const char *kName = "accel_bias_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> bias{}; ///< X, Y, Z accelerometer bias in the sensor frame. [g]
+    friend bool operator==(const AccelBiasResponse &a, const AccelBiasResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.bias == b.bias;
+    }
+    friend bool operator!=(const AccelBiasResponse &a, const AccelBiasResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Gyro bias (command, descriptor 0x38, layout of device gx5_45).
+struct GyroBiasGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x38;
+    static constexpr const char *kName = "gyro_bias";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z gyro bias. [rad/s]
+    friend bool operator==(const GyroBiasGx545 &a, const GyroBiasGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.bias == b.bias;
+    }
+    friend bool operator!=(const GyroBiasGx545 &a, const GyroBiasGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Gyro bias (command, descriptor 0x38, layout of device cv7_ins).
+struct GyroBiasCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x38;
+    static constexpr const char *kName = "gyro_bias";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z gyro bias in the sensor frame. [rad/s]
+    friend bool operator==(const GyroBiasCv7Ins &a, const GyroBiasCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.bias == b.bias;
+    }
+    friend bool operator!=(const GyroBiasCv7Ins &a, const GyroBiasCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Gyro bias (response) (response, descriptor 0x9B).
+struct GyroBiasResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x9B;
+    static constexpr const char *kName = "gyro_bias_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> bias{}; ///< X, Y, Z gyro bias in the sensor frame. [rad/s]
+    friend bool operator==(const GyroBiasResponse &a, const GyroBiasResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.bias == b.bias;
+    }
+    friend bool operator!=(const GyroBiasResponse &a, const GyroBiasResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Capture gyro bias (command, descriptor 0x39).
+struct CaptureGyroBias {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x39;
+    static constexpr const char *kName = "capture_gyro_bias";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t averaging_time_ms{}; ///< Sampling time, 1000 to 30000 ms. [ms]
+    friend bool operator==(const CaptureGyroBias &a, const CaptureGyroBias &b) {
+        (void)a;
+        (void)b;
+        return true && a.averaging_time_ms == b.averaging_time_ms;
+    }
+    friend bool operator!=(const CaptureGyroBias &a, const CaptureGyroBias &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer hard iron offset (command, descriptor 0x3A, layout of device gx5_45).
+struct MagHardIronOffsetGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x3A;
+    static constexpr const char *kName = "mag_hard_iron_offset";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> offset{};   ///< X, Y, Z hard iron offset. [gauss]
+    friend bool operator==(const MagHardIronOffsetGx545 &a, const MagHardIronOffsetGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.offset == b.offset;
+    }
+    friend bool operator!=(const MagHardIronOffsetGx545 &a, const MagHardIronOffsetGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer hard iron offset (command, descriptor 0x3A, layout of device cv7_ins).
+struct MagHardIronOffsetCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x3A;
+    static constexpr const char *kName = "mag_hard_iron_offset";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 3>> offset{};   ///< X, Y, Z hard iron offset in the sensor frame. [gauss]
+    friend bool operator==(const MagHardIronOffsetCv7Ins &a, const MagHardIronOffsetCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.offset == b.offset;
+    }
+    friend bool operator!=(const MagHardIronOffsetCv7Ins &a, const MagHardIronOffsetCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer hard iron offset (response) (response, descriptor 0x9C).
+struct MagHardIronOffsetResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x9C;
+    static constexpr const char *kName = "mag_hard_iron_offset_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> offset{}; ///< X, Y, Z hard iron offset in the sensor frame. [gauss]
+    friend bool operator==(const MagHardIronOffsetResponse &a, const MagHardIronOffsetResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.offset == b.offset;
+    }
+    friend bool operator!=(const MagHardIronOffsetResponse &a, const MagHardIronOffsetResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer soft iron matrix (command, descriptor 0x3B, layout of device gx5_45).
+struct MagSoftIronMatrixGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x3B;
+    static constexpr const char *kName = "mag_soft_iron_matrix";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 9>> matrix{};   ///< Soft iron matrix m11..m33, row-major (dimensionless).
+    friend bool operator==(const MagSoftIronMatrixGx545 &a, const MagSoftIronMatrixGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.matrix == b.matrix;
+    }
+    friend bool operator!=(const MagSoftIronMatrixGx545 &a, const MagSoftIronMatrixGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer soft iron matrix (command, descriptor 0x3B, layout of device cv7_ins).
+struct MagSoftIronMatrixCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x3B;
+    static constexpr const char *kName = "mag_soft_iron_matrix";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::array<float, 9>> matrix{};   ///< Soft iron matrix, row-major (dimensionless).
+    friend bool operator==(const MagSoftIronMatrixCv7Ins &a, const MagSoftIronMatrixCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.matrix == b.matrix;
+    }
+    friend bool operator!=(const MagSoftIronMatrixCv7Ins &a, const MagSoftIronMatrixCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Magnetometer soft iron matrix (response) (response, descriptor 0x9D).
+struct MagSoftIronMatrixResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x9D;
+    static constexpr const char *kName = "mag_soft_iron_matrix_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 9> matrix{}; ///< Soft iron matrix, row-major (dimensionless).
+    friend bool operator==(const MagSoftIronMatrixResponse &a, const MagSoftIronMatrixResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.matrix == b.matrix;
+    }
+    friend bool operator!=(const MagSoftIronMatrixResponse &a, const MagSoftIronMatrixResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Coning and sculling enable (command, descriptor 0x3E).
+struct ConingScullingEnable {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x3E;
+    static constexpr const char *kName = "coning_sculling_enable";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<bool>
+        enable{}; ///< True enables coning and sculling compensation (0x01), false disables it (0x00).
+    friend bool operator==(const ConingScullingEnable &a, const ConingScullingEnable &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.enable == b.enable;
+    }
+    friend bool operator!=(const ConingScullingEnable &a, const ConingScullingEnable &b) {
+        return !(a == b);
+    }
+};
+
+/// Coning and sculling enable (response) (response, descriptor 0x9E).
+struct ConingScullingEnableResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x9E;
+    static constexpr const char *kName = "coning_sculling_enable_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    bool enable{}; ///< True if coning and sculling compensation is enabled.
+    friend bool operator==(const ConingScullingEnableResponse &a, const ConingScullingEnableResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.enable == b.enable;
+    }
+    friend bool operator!=(const ConingScullingEnableResponse &a, const ConingScullingEnableResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// UART baud rate (command, descriptor 0x40).
+struct UartBaudrate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x40;
+    static constexpr const char *kName = "uart_baudrate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::uint32_t> baud{}; ///< New baud rate; must be a rate the device supports. [bit/s]
+    friend bool operator==(const UartBaudrate &a, const UartBaudrate &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.baud == b.baud;
+    }
+    friend bool operator!=(const UartBaudrate &a, const UartBaudrate &b) {
+        return !(a == b);
+    }
+};
+
+/// UART baud rate (response) (response, descriptor 0x87).
+struct UartBaudrateResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x87;
+    static constexpr const char *kName = "uart_baudrate_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint32_t baud{}; ///< Current baud rate. [bit/s]
+    friend bool operator==(const UartBaudrateResponse &a, const UartBaudrateResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.baud == b.baud;
+    }
+    friend bool operator!=(const UartBaudrateResponse &a, const UartBaudrateResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GPIO configuration (command, descriptor 0x41).
+struct GpioConfig {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x41;
+    static constexpr const char *kName = "gpio_config";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t pin{}; ///< GPIO pin number from 1; 0 selects all pins for save, load and default.
+    std::optional<::mipcodec::types::GpioFeature> feature{}; ///< What the pin is used for.
+    std::optional<::mipcodec::types::GpioBehavior>
+        behavior{}; ///< Role of the pin within the feature (meaning depends on feature).
+    std::optional<::mipcodec::types::GpioPinMode> pin_mode{}; ///< Electrical mode of the pin.
+    friend bool operator==(const GpioConfig &a, const GpioConfig &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.pin == b.pin && a.feature == b.feature &&
+               a.behavior == b.behavior && a.pin_mode == b.pin_mode;
+    }
+    friend bool operator!=(const GpioConfig &a, const GpioConfig &b) {
+        return !(a == b);
+    }
+};
+
+/// GPIO configuration (response) (response, descriptor 0xC1).
+struct GpioConfigResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xC1;
+    static constexpr const char *kName = "gpio_config_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t pin{};                         ///< GPIO pin number from 1.
+    ::mipcodec::types::GpioFeature feature{};   ///< What the pin is used for.
+    ::mipcodec::types::GpioBehavior behavior{}; ///< Role of the pin within the feature.
+    ::mipcodec::types::GpioPinMode pin_mode{};  ///< Electrical mode of the pin.
+    friend bool operator==(const GpioConfigResponse &a, const GpioConfigResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.pin == b.pin && a.feature == b.feature && a.behavior == b.behavior &&
+               a.pin_mode == b.pin_mode;
+    }
+    friend bool operator!=(const GpioConfigResponse &a, const GpioConfigResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GPIO state (command, descriptor 0x42).
+struct GpioState {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x42;
+    static constexpr const char *kName = "gpio_state";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t pin{};                             ///< GPIO pin number from 1 (not 0).
+    std::optional<bool> state{};                    ///< Pin state (true = high).
+    friend bool operator==(const GpioState &a, const GpioState &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.pin == b.pin && a.state == b.state;
+    }
+    friend bool operator!=(const GpioState &a, const GpioState &b) {
+        return !(a == b);
+    }
+};
+
+/// GPIO state (response) (response, descriptor 0xC2).
+struct GpioStateResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xC2;
+    static constexpr const char *kName = "gpio_state_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t pin{}; ///< GPIO pin number from 1.
+    bool state{};       ///< Pin state (true = high).
+    friend bool operator==(const GpioStateResponse &a, const GpioStateResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.pin == b.pin && a.state == b.state;
+    }
+    friend bool operator!=(const GpioStateResponse &a, const GpioStateResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Odometer configuration (command, descriptor 0x43).
+struct OdometerConfig {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x43;
+    static constexpr const char *kName = "odometer_config";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};        ///< Function selector.
+    std::optional<::mipcodec::types::OdometerMode> mode{}; ///< Odometer mode.
+    std::optional<float> scaling{}; ///< Encoder pulses per metre (N / (2 pi R), N pulses per revolution, R
+                                    ///< wheel radius); negative if the encoder turns backwards. [pulses/m]
+    std::optional<float> uncertainty{}; ///< 1-sigma uncertainty of the pulses-to-distance scale. [m/m]
+    friend bool operator==(const OdometerConfig &a, const OdometerConfig &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.mode == b.mode && a.scaling == b.scaling &&
+               a.uncertainty == b.uncertainty;
+    }
+    friend bool operator!=(const OdometerConfig &a, const OdometerConfig &b) {
+        return !(a == b);
+    }
+};
+
+/// Odometer configuration (response) (response, descriptor 0xC3).
+struct OdometerConfigResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xC3;
+    static constexpr const char *kName = "odometer_config_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::OdometerMode mode{}; ///< Odometer mode.
+    float scaling{};                        ///< Encoder pulses per metre. [pulses/m]
+    float uncertainty{};                    ///< 1-sigma uncertainty of the scale. [m/m]
+    friend bool operator==(const OdometerConfigResponse &a, const OdometerConfigResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.mode == b.mode && a.scaling == b.scaling && a.uncertainty == b.uncertainty;
+    }
+    friend bool operator!=(const OdometerConfigResponse &a, const OdometerConfigResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Advanced low-pass filter settings (command, descriptor 0x50).
+struct AdvancedLowpassFilter {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x50;
+    static constexpr const char *kName = "advanced_lowpass_filter";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t target_descriptor{}; ///< Field descriptor in the sensor set (0x80) of the filtered quantity;
+                                      ///< 0 = all (CV7, not for read).
+    std::optional<bool> enable{};     ///< Apply the low-pass filter.
+    std::optional<bool> manual{}; ///< Use the cutoff given below; false sets it to half the reporting rate.
+    std::optional<std::uint16_t>
+        frequency{}; ///< -3 dB cutoff frequency (at most 250 Hz on GX5-45); ignored when not manual. [Hz]
+    std::optional<std::uint8_t> reserved{}; ///< Reserved, send 0.
+    friend bool operator==(const AdvancedLowpassFilter &a, const AdvancedLowpassFilter &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.target_descriptor == b.target_descriptor &&
+               a.enable == b.enable && a.manual == b.manual && a.frequency == b.frequency &&
+               a.reserved == b.reserved;
+    }
+    friend bool operator!=(const AdvancedLowpassFilter &a, const AdvancedLowpassFilter &b) {
+        return !(a == b);
+    }
+};
+
+/// Advanced low-pass filter settings (response) (response, descriptor 0x8B).
+struct AdvancedLowpassFilterResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x8B;
+    static constexpr const char *kName = "advanced_lowpass_filter_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t target_descriptor{}; ///< Field descriptor of the filtered quantity.
+    bool enable{};                    ///< True if the filter is enabled.
+    bool manual{};                    ///< True if the cutoff was set manually.
+    std::uint16_t frequency{};        ///< -3 dB cutoff frequency (unspecified in automatic mode). [Hz]
+    std::uint8_t reserved{};          ///< Reserved; ignore.
+    friend bool operator==(const AdvancedLowpassFilterResponse &a, const AdvancedLowpassFilterResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.target_descriptor == b.target_descriptor && a.enable == b.enable &&
+               a.manual == b.manual && a.frequency == b.frequency && a.reserved == b.reserved;
+    }
+    friend bool operator!=(const AdvancedLowpassFilterResponse &a, const AdvancedLowpassFilterResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter settings (command, descriptor 0x51).
+struct ComplementaryFilter {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x51;
+    static constexpr const char *kName = "complementary_filter";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<bool> pitch_roll_enable{};        ///< Enable pitch/roll (up) correction.
+    std::optional<bool> heading_enable{}; ///< Enable heading (north) correction; needs a magnetometer.
+    std::optional<float> pitch_roll_time_constant{}; ///< Time constant of the pitch/roll correction. [s]
+    std::optional<float> heading_time_constant{};    ///< Time constant of the heading correction. [s]
+    friend bool operator==(const ComplementaryFilter &a, const ComplementaryFilter &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.pitch_roll_enable == b.pitch_roll_enable &&
+               a.heading_enable == b.heading_enable &&
+               a.pitch_roll_time_constant == b.pitch_roll_time_constant &&
+               a.heading_time_constant == b.heading_time_constant;
+    }
+    friend bool operator!=(const ComplementaryFilter &a, const ComplementaryFilter &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter settings (response) (response, descriptor 0x97).
+struct ComplementaryFilterResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x97;
+    static constexpr const char *kName = "complementary_filter_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    bool pitch_roll_enable{};         ///< Pitch/roll (up) correction enabled.
+    bool heading_enable{};            ///< Heading (north) correction enabled.
+    float pitch_roll_time_constant{}; ///< Time constant of the pitch/roll correction. [s]
+    float heading_time_constant{};    ///< Time constant of the heading correction. [s]
+    friend bool operator==(const ComplementaryFilterResponse &a, const ComplementaryFilterResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.pitch_roll_enable == b.pitch_roll_enable && a.heading_enable == b.heading_enable &&
+               a.pitch_roll_time_constant == b.pitch_roll_time_constant &&
+               a.heading_time_constant == b.heading_time_constant;
+    }
+    friend bool operator!=(const ComplementaryFilterResponse &a, const ComplementaryFilterResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor range (command, descriptor 0x52).
+struct SensorRange {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x52;
+    static constexpr const char *kName = "sensor_range";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    ::mipcodec::types::SensorRangeType
+        sensor{};                          ///< Sensor to configure; all only for save, load and default.
+    std::optional<std::uint8_t> setting{}; ///< Range setting value (from 0x0C,0x53).
+    friend bool operator==(const SensorRange &a, const SensorRange &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.sensor == b.sensor && a.setting == b.setting;
+    }
+    friend bool operator!=(const SensorRange &a, const SensorRange &b) {
+        return !(a == b);
+    }
+};
+
+/// Sensor range (response) (response, descriptor 0xD2).
+struct SensorRangeResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xD2;
+    static constexpr const char *kName = "sensor_range_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::SensorRangeType sensor{}; ///< Sensor.
+    std::uint8_t setting{};                      ///< Range setting value.
+    friend bool operator==(const SensorRangeResponse &a, const SensorRangeResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.sensor == b.sensor && a.setting == b.setting;
+    }
+    friend bool operator!=(const SensorRangeResponse &a, const SensorRangeResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Get calibrated sensor ranges (command, descriptor 0x53).
+struct GetCalibratedSensorRanges {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x53;
+    static constexpr const char *kName = "get_calibrated_sensor_ranges";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::SensorRangeType sensor{}; ///< Sensor to query (not all).
+    friend bool operator==(const GetCalibratedSensorRanges &a, const GetCalibratedSensorRanges &b) {
+        (void)a;
+        (void)b;
+        return true && a.sensor == b.sensor;
+    }
+    friend bool operator!=(const GetCalibratedSensorRanges &a, const GetCalibratedSensorRanges &b) {
+        return !(a == b);
+    }
+};
+
+/// Calibrated sensor ranges (response, descriptor 0xD3).
+struct CalibratedSensorRanges {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xD3;
+    static constexpr const char *kName = "calibrated_sensor_ranges";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::SensorRangeType sensor{}; ///< Sensor from the command.
+    std::uint8_t num_ranges{};                   ///< Number of supported ranges.
+    ::mipcodec::BoundedVector<::mipcodec::types::SensorRangeEntry, 50>
+        ranges{}; ///< Supported (setting, range) pairs.
+    friend bool operator==(const CalibratedSensorRanges &a, const CalibratedSensorRanges &b) {
+        (void)a;
+        (void)b;
+        return true && a.sensor == b.sensor && a.num_ranges == b.num_ranges && a.ranges == b.ranges;
+    }
+    friend bool operator!=(const CalibratedSensorRanges &a, const CalibratedSensorRanges &b) {
+        return !(a == b);
+    }
+};
+
+/// Low-pass anti-aliasing filter (command, descriptor 0x54).
+struct LowpassFilter {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x54;
+    static constexpr const char *kName = "lowpass_filter";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t desc_set{}; ///< Descriptor set of the filtered quantity (0 = all, not for read).
+    std::uint8_t
+        field_desc{}; ///< Field descriptor of the filtered quantity (0 = all in the set, not for read).
+    std::optional<bool> enable{}; ///< Enable the filter.
+    std::optional<bool> manual{}; ///< Use the given frequency; false tracks half the message rate.
+    std::optional<float>
+        frequency{}; ///< Cutoff frequency (read back in automatic mode: the actual cutoff). [Hz]
+    friend bool operator==(const LowpassFilter &a, const LowpassFilter &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.desc_set == b.desc_set && a.field_desc == b.field_desc &&
+               a.enable == b.enable && a.manual == b.manual && a.frequency == b.frequency;
+    }
+    friend bool operator!=(const LowpassFilter &a, const LowpassFilter &b) {
+        return !(a == b);
+    }
+};
+
+/// Low-pass anti-aliasing filter (response) (response, descriptor 0xD4).
+struct LowpassFilterResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xD4;
+    static constexpr const char *kName = "lowpass_filter_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t desc_set{};   ///< Descriptor set of the filtered quantity.
+    std::uint8_t field_desc{}; ///< Field descriptor of the filtered quantity.
+    bool enable{};             ///< True if the filter is enabled.
+    bool manual{};             ///< True if the frequency was set manually.
+    float frequency{};         ///< Cutoff frequency (the actual one in automatic mode). [Hz]
+    friend bool operator==(const LowpassFilterResponse &a, const LowpassFilterResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.desc_set == b.desc_set && a.field_desc == b.field_desc && a.enable == b.enable &&
+               a.manual == b.manual && a.frequency == b.frequency;
+    }
+    friend bool operator!=(const LowpassFilterResponse &a, const LowpassFilterResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Poll IMU data (command, descriptor 0x01).
+struct PollImuData {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x01;
+    static constexpr const char *kName = "poll_imu_data";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::Gx5PollOption option{}; ///< Whether to send the ACK/NACK.
+    std::uint8_t num_descriptors{};            ///< Number of descriptors; 0 uses the stored message format.
+    ::mipcodec::BoundedVector<::mipcodec::types::Gx5PollDescriptor, 83>
+        descriptors{}; ///< Descriptors to poll, in output order.
+    friend bool operator==(const PollImuData &a, const PollImuData &b) {
+        (void)a;
+        (void)b;
+        return true && a.option == b.option && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const PollImuData &a, const PollImuData &b) {
+        return !(a == b);
+    }
+};
+
+/// Poll GNSS data (command, descriptor 0x02).
+struct PollGnssData {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x02;
+    static constexpr const char *kName = "poll_gnss_data";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::Gx5PollOption option{}; ///< Whether to send the ACK/NACK.
+    std::uint8_t num_descriptors{};            ///< Number of descriptors; 0 uses the stored message format.
+    ::mipcodec::BoundedVector<::mipcodec::types::Gx5PollDescriptor, 83>
+        descriptors{}; ///< Descriptors to poll, in output order.
+    friend bool operator==(const PollGnssData &a, const PollGnssData &b) {
+        (void)a;
+        (void)b;
+        return true && a.option == b.option && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const PollGnssData &a, const PollGnssData &b) {
+        return !(a == b);
+    }
+};
+
+/// Poll estimation filter data (command, descriptor 0x03).
+struct PollFilterData {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x03;
+    static constexpr const char *kName = "poll_filter_data";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::Gx5PollOption option{}; ///< Whether to send the ACK/NACK.
+    std::uint8_t num_descriptors{};            ///< Number of descriptors; 0 uses the stored message format.
+    ::mipcodec::BoundedVector<::mipcodec::types::Gx5PollDescriptor, 83>
+        descriptors{}; ///< Descriptors to poll, in output order.
+    friend bool operator==(const PollFilterData &a, const PollFilterData &b) {
+        (void)a;
+        (void)b;
+        return true && a.option == b.option && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const PollFilterData &a, const PollFilterData &b) {
+        return !(a == b);
+    }
+};
+
+/// Poll NMEA data (command, descriptor 0x04).
+struct PollNmeaData {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x04;
+    static constexpr const char *kName = "poll_nmea_data";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    bool suppress_ack{};  ///< Do not send the ACK/NACK reply.
+    std::uint8_t count{}; ///< Number of format entries.
+    ::mipcodec::BoundedVector<::mipcodec::types::NmeaMessage, 50> format_entries{}; ///< Sentences to produce.
+    friend bool operator==(const PollNmeaData &a, const PollNmeaData &b) {
+        (void)a;
+        (void)b;
+        return true && a.suppress_ack == b.suppress_ack && a.count == b.count &&
+               a.format_entries == b.format_entries;
+    }
+    friend bool operator!=(const PollNmeaData &a, const PollNmeaData &b) {
+        return !(a == b);
+    }
+};
+
+/// Poll data (command, descriptor 0x0D).
+struct PollData {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x0D;
+    static constexpr const char *kName = "poll_data";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t desc_set{};                                    ///< Data descriptor set to poll.
+    bool suppress_ack{};                                        ///< Do not send the ACK/NACK reply.
+    std::uint8_t num_descriptors{};                             ///< Number of descriptors.
+    ::mipcodec::BoundedVector<std::uint8_t, 250> descriptors{}; ///< Field descriptors, in output order.
+    friend bool operator==(const PollData &a, const PollData &b) {
+        (void)a;
+        (void)b;
+        return true && a.desc_set == b.desc_set && a.suppress_ack == b.suppress_ack &&
+               a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const PollData &a, const PollData &b) {
+        return !(a == b);
+    }
+};
+
+/// Get IMU data base rate (command, descriptor 0x06).
+struct GetImuBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x06;
+    static constexpr const char *kName = "get_imu_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    friend bool operator==(const GetImuBaseRate &a, const GetImuBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true;
+    }
+    friend bool operator!=(const GetImuBaseRate &a, const GetImuBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// IMU data base rate (response, descriptor 0x83).
+struct ImuBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x83;
+    static constexpr const char *kName = "imu_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t rate{}; ///< Base rate used for rate decimation calculations. [Hz]
+    friend bool operator==(const ImuBaseRate &a, const ImuBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true && a.rate == b.rate;
+    }
+    friend bool operator!=(const ImuBaseRate &a, const ImuBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// Get GNSS data base rate (command, descriptor 0x07).
+struct GetGnssBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x07;
+    static constexpr const char *kName = "get_gnss_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    friend bool operator==(const GetGnssBaseRate &a, const GetGnssBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true;
+    }
+    friend bool operator!=(const GetGnssBaseRate &a, const GetGnssBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS data base rate (response, descriptor 0x84).
+struct GnssBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x84;
+    static constexpr const char *kName = "gnss_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t rate{}; ///< Base rate used for rate decimation calculations. [Hz]
+    friend bool operator==(const GnssBaseRate &a, const GnssBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true && a.rate == b.rate;
+    }
+    friend bool operator!=(const GnssBaseRate &a, const GnssBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// Get estimation filter data base rate (command, descriptor 0x0B).
+struct GetFilterBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x0B;
+    static constexpr const char *kName = "get_filter_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    friend bool operator==(const GetFilterBaseRate &a, const GetFilterBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true;
+    }
+    friend bool operator!=(const GetFilterBaseRate &a, const GetFilterBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// Estimation filter data base rate (response, descriptor 0x8A).
+struct FilterBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x8A;
+    static constexpr const char *kName = "filter_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t rate{}; ///< Base rate used for rate decimation calculations. [Hz]
+    friend bool operator==(const FilterBaseRate &a, const FilterBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true && a.rate == b.rate;
+    }
+    friend bool operator!=(const FilterBaseRate &a, const FilterBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// Get data base rate (command, descriptor 0x0E).
+struct GetBaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x0E;
+    static constexpr const char *kName = "get_base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t desc_set{}; ///< Data descriptor set (must be supported).
+    friend bool operator==(const GetBaseRate &a, const GetBaseRate &b) {
+        (void)a;
+        (void)b;
+        return true && a.desc_set == b.desc_set;
+    }
+    friend bool operator!=(const GetBaseRate &a, const GetBaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// Data base rate (response, descriptor 0x8E).
+struct BaseRate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x8E;
+    static constexpr const char *kName = "base_rate";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t desc_set{}; ///< Echo of the descriptor set in the command.
+    std::uint16_t rate{};    ///< Base rate; 0 means variable or unknown (data sent as it arrives). [Hz]
+    friend bool operator==(const BaseRate &a, const BaseRate &b) {
+        (void)a;
+        (void)b;
+        return true && a.desc_set == b.desc_set && a.rate == b.rate;
+    }
+    friend bool operator!=(const BaseRate &a, const BaseRate &b) {
+        return !(a == b);
+    }
+};
+
+/// IMU message format (command, descriptor 0x08).
+struct ImuMessageFormat {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x08;
+    static constexpr const char *kName = "imu_message_format";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t num_descriptors{}; ///< Number of descriptors (0 for every function except write).
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+        descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
+    friend bool operator==(const ImuMessageFormat &a, const ImuMessageFormat &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const ImuMessageFormat &a, const ImuMessageFormat &b) {
+        return !(a == b);
+    }
+};
+
+/// Current IMU message format (response, descriptor 0x80).
+struct ImuMessageFormatResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x80;
+    static constexpr const char *kName = "imu_message_format_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t num_descriptors{}; ///< Number of descriptors.
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 84>
+        descriptors{}; ///< Descriptors and rate decimations.
+    friend bool operator==(const ImuMessageFormatResponse &a, const ImuMessageFormatResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const ImuMessageFormatResponse &a, const ImuMessageFormatResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS message format (command, descriptor 0x09).
+struct GnssMessageFormat {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x09;
+    static constexpr const char *kName = "gnss_message_format";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t num_descriptors{}; ///< Number of descriptors (0 for every function except write).
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+        descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
+    friend bool operator==(const GnssMessageFormat &a, const GnssMessageFormat &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const GnssMessageFormat &a, const GnssMessageFormat &b) {
+        return !(a == b);
+    }
+};
+
+/// Current GNSS message format (response, descriptor 0x81).
+struct GnssMessageFormatResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x81;
+    static constexpr const char *kName = "gnss_message_format_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t num_descriptors{}; ///< Number of descriptors.
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 84>
+        descriptors{}; ///< Descriptors and rate decimations.
+    friend bool operator==(const GnssMessageFormatResponse &a, const GnssMessageFormatResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const GnssMessageFormatResponse &a, const GnssMessageFormatResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Estimation filter message format (command, descriptor 0x0A).
+struct FilterMessageFormat {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x0A;
+    static constexpr const char *kName = "filter_message_format";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t num_descriptors{}; ///< Number of descriptors (0 for every function except write).
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+        descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
+    friend bool operator==(const FilterMessageFormat &a, const FilterMessageFormat &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const FilterMessageFormat &a, const FilterMessageFormat &b) {
+        return !(a == b);
+    }
+};
+
+/// Current estimation filter message format (response, descriptor 0x82).
+struct FilterMessageFormatResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x82;
+    static constexpr const char *kName = "filter_message_format_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t num_descriptors{}; ///< Number of descriptors.
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 84>
+        descriptors{}; ///< Descriptors and rate decimations.
+    friend bool operator==(const FilterMessageFormatResponse &a, const FilterMessageFormatResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const FilterMessageFormatResponse &a, const FilterMessageFormatResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// NMEA message format (command, descriptor 0x0C).
+struct NmeaMessageFormat {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x0C;
+    static constexpr const char *kName = "nmea_message_format";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::uint8_t> count{};            ///< Number of format entries.
+    std::optional<::mipcodec::BoundedVector<::mipcodec::types::NmeaMessage, 50>>
+        format_entries{}; ///< Sentences, talkers, sources and decimations.
+    friend bool operator==(const NmeaMessageFormat &a, const NmeaMessageFormat &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.count == b.count && a.format_entries == b.format_entries;
+    }
+    friend bool operator!=(const NmeaMessageFormat &a, const NmeaMessageFormat &b) {
+        return !(a == b);
+    }
+};
+
+/// Current NMEA message format (response, descriptor 0x8C).
+struct NmeaMessageFormatResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x8C;
+    static constexpr const char *kName = "nmea_message_format_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t count{}; ///< Number of format entries.
+    ::mipcodec::BoundedVector<::mipcodec::types::NmeaMessage, 50>
+        format_entries{}; ///< Sentences, talkers, sources and decimations.
+    friend bool operator==(const NmeaMessageFormatResponse &a, const NmeaMessageFormatResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.count == b.count && a.format_entries == b.format_entries;
+    }
+    friend bool operator!=(const NmeaMessageFormatResponse &a, const NmeaMessageFormatResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Message format (command, descriptor 0x0F).
+struct MessageFormat {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x0F;
+    static constexpr const char *kName = "message_format";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t desc_set{}; ///< Data descriptor set; 0 means all sets for save, load and default.
+    std::optional<std::uint8_t> num_descriptors{}; ///< Number of descriptors.
+    std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
+        descriptors{}; ///< Descriptors and decimations.
+    friend bool operator==(const MessageFormat &a, const MessageFormat &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.desc_set == b.desc_set &&
+               a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const MessageFormat &a, const MessageFormat &b) {
+        return !(a == b);
+    }
+};
+
+/// Current message format (response, descriptor 0x8F).
+struct MessageFormatResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x8F;
+    static constexpr const char *kName = "message_format_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t desc_set{};        ///< Echo of the descriptor set in the command.
+    std::uint8_t num_descriptors{}; ///< Number of descriptors.
+    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+        descriptors{}; ///< Descriptors and decimations.
+    friend bool operator==(const MessageFormatResponse &a, const MessageFormatResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.desc_set == b.desc_set && a.num_descriptors == b.num_descriptors &&
+               a.descriptors == b.descriptors;
+    }
+    friend bool operator!=(const MessageFormatResponse &a, const MessageFormatResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Factory streaming (command, descriptor 0x10).
+struct FactoryStreaming {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x10;
+    static constexpr const char *kName = "factory_streaming";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FactoryStreamingAction
+        action{};            ///< How to combine the support descriptors with the current formats.
+    std::uint8_t reserved{}; ///< Reserved; set to 0x00.
+    friend bool operator==(const FactoryStreaming &a, const FactoryStreaming &b) {
+        (void)a;
+        (void)b;
+        return true && a.action == b.action && a.reserved == b.reserved;
+    }
+    friend bool operator!=(const FactoryStreaming &a, const FactoryStreaming &b) {
+        return !(a == b);
+    }
+};
+
+/// Data stream control (command, descriptor 0x11, layout of device gx5_45).
+struct DataStreamControlGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x11;
+    static constexpr const char *kName = "data_stream_control";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::FunctionSelector function{};         ///< Function selector.
+    ::mipcodec::types::Gx5StreamSelector device_selector{}; ///< Stream to control.
+    std::uint8_t enable{}; ///< 0x00 disable, 0x01 enable (default); ignored except for write.
+    friend bool operator==(const DataStreamControlGx545 &a, const DataStreamControlGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.device_selector == b.device_selector &&
+               a.enable == b.enable;
+    }
+    friend bool operator!=(const DataStreamControlGx545 &a, const DataStreamControlGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Data stream control (command, descriptor 0x11, layout of device cv7_ins).
+struct DataStreamControlCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x11;
+    static constexpr const char *kName = "data_stream_control";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint8_t
+        desc_set{}; ///< Data descriptor set of the stream; 0 means all streams for save, load and default.
+    std::optional<bool> enable{}; ///< Enable (true) or disable (false) the stream.
+    friend bool operator==(const DataStreamControlCv7Ins &a, const DataStreamControlCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.desc_set == b.desc_set && a.enable == b.enable;
+    }
+    friend bool operator!=(const DataStreamControlCv7Ins &a, const DataStreamControlCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Data stream control (response) (response, descriptor 0x85, layout of device gx5_45).
+struct DataStreamControlResponseGx545 {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x85;
+    static constexpr const char *kName = "data_stream_control_response";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "gx5_45";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
+
+    ::mipcodec::types::Gx5StreamSelector device_selector{}; ///< Stream.
+    std::uint8_t enabled{}; ///< Current enable flag: 0x00 disabled, 0x01 enabled.
+    friend bool operator==(const DataStreamControlResponseGx545 &a, const DataStreamControlResponseGx545 &b) {
+        (void)a;
+        (void)b;
+        return true && a.device_selector == b.device_selector && a.enabled == b.enabled;
+    }
+    friend bool operator!=(const DataStreamControlResponseGx545 &a, const DataStreamControlResponseGx545 &b) {
+        return !(a == b);
+    }
+};
+
+/// Data stream control (response) (response, descriptor 0x85, layout of device cv7_ins).
+struct DataStreamControlResponseCv7Ins {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x85;
+    static constexpr const char *kName = "data_stream_control_response";
+    static constexpr bool kHasVariants = true;
+    static constexpr const char *kDevice = "cv7_ins";
+    static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
+
+    std::uint8_t desc_set{}; ///< Data descriptor set of the stream.
+    bool enabled{};          ///< Whether the stream is enabled.
+    friend bool operator==(const DataStreamControlResponseCv7Ins &a,
+                           const DataStreamControlResponseCv7Ins &b) {
+        (void)a;
+        (void)b;
+        return true && a.desc_set == b.desc_set && a.enabled == b.enabled;
+    }
+    friend bool operator!=(const DataStreamControlResponseCv7Ins &a,
+                           const DataStreamControlResponseCv7Ins &b) {
+        return !(a == b);
+    }
+};
+
+/// Raw RTCM 2.3 message (command, descriptor 0x20).
+struct RawRtcmMessage {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x20;
+    static constexpr const char *kName = "raw_rtcm_message";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::BoundedVector<std::uint8_t, 253> data{}; ///< Raw RTCM 2.3 bytes, passed through unchanged.
+    friend bool operator==(const RawRtcmMessage &a, const RawRtcmMessage &b) {
+        (void)a;
+        (void)b;
+        return true && a.data == b.data;
+    }
+    friend bool operator!=(const RawRtcmMessage &a, const RawRtcmMessage &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS constellation settings (command, descriptor 0x21).
+struct GnssConstellationSettings {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x21;
+    static constexpr const char *kName = "gnss_constellation_settings";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::uint16_t
+        max_channels{}; ///< Maximum tracking channels to use in total (0 up to the available channels).
+    std::uint8_t config_count{}; ///< Number of constellation entries.
+    ::mipcodec::BoundedVector<::mipcodec::types::ConstellationSettings, 41>
+        settings{}; ///< Per-constellation settings.
+    friend bool operator==(const GnssConstellationSettings &a, const GnssConstellationSettings &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.max_channels == b.max_channels &&
+               a.config_count == b.config_count && a.settings == b.settings;
+    }
+    friend bool operator!=(const GnssConstellationSettings &a, const GnssConstellationSettings &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS constellation settings (response) (response, descriptor 0xA0).
+struct GnssConstellationSettingsResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xA0;
+    static constexpr const char *kName = "gnss_constellation_settings_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t max_channels_available{}; ///< Tracking channels the receiver has.
+    std::uint16_t max_channels{};           ///< Maximum tracking channels to use in total.
+    std::uint8_t config_count{};            ///< Number of constellation entries.
+    ::mipcodec::BoundedVector<::mipcodec::types::ConstellationSettings, 41>
+        settings{}; ///< Per-constellation settings.
+    friend bool operator==(const GnssConstellationSettingsResponse &a,
+                           const GnssConstellationSettingsResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.max_channels_available == b.max_channels_available &&
+               a.max_channels == b.max_channels && a.config_count == b.config_count &&
+               a.settings == b.settings;
+    }
+    friend bool operator!=(const GnssConstellationSettingsResponse &a,
+                           const GnssConstellationSettingsResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS SBAS settings (command, descriptor 0x22).
+struct GnssSbasSettings {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x22;
+    static constexpr const char *kName = "gnss_sbas_settings";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    std::optional<std::uint8_t> enable_sbas{};      ///< 0 SBAS disabled, 1 SBAS enabled (default).
+    std::optional<::mipcodec::types::SbasOptions> sbas_options{}; ///< SBAS options.
+    std::optional<std::uint8_t> num_included_prns{}; ///< Number of SBAS PRNs listed; 0 includes all.
+    std::optional<::mipcodec::BoundedVector<std::uint16_t, 124>>
+        included_prns{}; ///< SBAS PRNs to search for.
+    friend bool operator==(const GnssSbasSettings &a, const GnssSbasSettings &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.enable_sbas == b.enable_sbas &&
+               a.sbas_options == b.sbas_options && a.num_included_prns == b.num_included_prns &&
+               a.included_prns == b.included_prns;
+    }
+    friend bool operator!=(const GnssSbasSettings &a, const GnssSbasSettings &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS SBAS settings (response) (response, descriptor 0xA1).
+struct GnssSbasSettingsResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xA1;
+    static constexpr const char *kName = "gnss_sbas_settings_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint8_t enable_sbas{};                    ///< 0 SBAS disabled, 1 SBAS enabled.
+    ::mipcodec::types::SbasOptions sbas_options{}; ///< SBAS options.
+    std::uint8_t num_included_prns{};              ///< Number of SBAS PRNs listed; 0 means all.
+    ::mipcodec::BoundedVector<std::uint16_t, 124> included_prns{}; ///< SBAS PRNs searched for.
+    friend bool operator==(const GnssSbasSettingsResponse &a, const GnssSbasSettingsResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.enable_sbas == b.enable_sbas && a.sbas_options == b.sbas_options &&
+               a.num_included_prns == b.num_included_prns && a.included_prns == b.included_prns;
+    }
+    friend bool operator!=(const GnssSbasSettingsResponse &a, const GnssSbasSettingsResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS assisted fix control (command, descriptor 0x23).
+struct GnssAssistedFixControl {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x23;
+    static constexpr const char *kName = "gnss_assisted_fix_control";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    ::mipcodec::types::AssistedFixOption option{};  ///< Assisted fix on or off.
+    std::uint8_t flags{};                           ///< No flags defined; set to 0xFF.
+    friend bool operator==(const GnssAssistedFixControl &a, const GnssAssistedFixControl &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.option == b.option && a.flags == b.flags;
+    }
+    friend bool operator!=(const GnssAssistedFixControl &a, const GnssAssistedFixControl &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS assisted fix control (response) (response, descriptor 0xA2).
+struct GnssAssistedFixControlResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xA2;
+    static constexpr const char *kName = "gnss_assisted_fix_control_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::AssistedFixOption option{}; ///< Assisted fix on or off.
+    std::uint8_t flags{};                          ///< Assisted fix flags.
+    friend bool operator==(const GnssAssistedFixControlResponse &a, const GnssAssistedFixControlResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.option == b.option && a.flags == b.flags;
+    }
+    friend bool operator!=(const GnssAssistedFixControlResponse &a, const GnssAssistedFixControlResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS assist time update (command, descriptor 0x24).
+struct GnssAssistTimeUpdate {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x24;
+    static constexpr const char *kName = "gnss_assist_time_update";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
+    double tow{};                                   ///< GPS time of week. [s]
+    std::uint16_t week_number{};                    ///< GPS week number.
+    float accuracy{};                               ///< Accuracy of the given time. [s]
+    friend bool operator==(const GnssAssistTimeUpdate &a, const GnssAssistTimeUpdate &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.tow == b.tow && a.week_number == b.week_number &&
+               a.accuracy == b.accuracy;
+    }
+    friend bool operator!=(const GnssAssistTimeUpdate &a, const GnssAssistTimeUpdate &b) {
+        return !(a == b);
+    }
+};
+
+/// GNSS assist time update (response) (response, descriptor 0xA3).
+struct GnssAssistTimeUpdateResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xA3;
+    static constexpr const char *kName = "gnss_assist_time_update_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    double tow{};                ///< GPS time of week. [s]
+    std::uint16_t week_number{}; ///< GPS week number.
+    float accuracy{};            ///< Time accuracy. [s]
+    friend bool operator==(const GnssAssistTimeUpdateResponse &a, const GnssAssistTimeUpdateResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.tow == b.tow && a.week_number == b.week_number && a.accuracy == b.accuracy;
+    }
+    friend bool operator!=(const GnssAssistTimeUpdateResponse &a, const GnssAssistTimeUpdateResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// PPS source control (command, descriptor 0x28).
+struct PpsSource {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x28;
+    static constexpr const char *kName = "pps_source";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::FunctionSelector function{};       ///< Function selector.
+    std::optional<::mipcodec::types::PpsSource> source{}; ///< PPS source.
+    friend bool operator==(const PpsSource &a, const PpsSource &b) {
+        (void)a;
+        (void)b;
+        return true && a.function == b.function && a.source == b.source;
+    }
+    friend bool operator!=(const PpsSource &a, const PpsSource &b) {
+        return !(a == b);
+    }
+};
+
+/// PPS source (response) (response, descriptor 0xA8).
+struct PpsSourceResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xA8;
+    static constexpr const char *kName = "pps_source_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::PpsSource source{}; ///< PPS source.
+    friend bool operator==(const PpsSourceResponse &a, const PpsSourceResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.source == b.source;
+    }
+    friend bool operator!=(const PpsSourceResponse &a, const PpsSourceResponse &b) {
+        return !(a == b);
+    }
+};
+
+/// Get supported events (command, descriptor 0x2A).
+struct GetSupportedEvents {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x2A;
+    static constexpr const char *kName = "get_supported_events";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::SupportedEventsQuery query{}; ///< Trigger types or action types.
+    friend bool operator==(const GetSupportedEvents &a, const GetSupportedEvents &b) {
+        (void)a;
+        (void)b;
+        return true && a.query == b.query;
+    }
+    friend bool operator!=(const GetSupportedEvents &a, const GetSupportedEvents &b) {
+        return !(a == b);
+    }
+};
+
+/// Supported events (response, descriptor 0xB4).
+struct SupportedEvents {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0xB4;
+    static constexpr const char *kName = "supported_events";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::SupportedEventsQuery query{}; ///< Echo of the query.
+    ::mipcodec::types::SupportedEventsInfo info{};   ///< Slots and supported types.
+    friend bool operator==(const SupportedEvents &a, const SupportedEvents &b) {
+        (void)a;
+        (void)b;
+        return true && a.query == b.query && a.info == b.info;
+    }
+    friend bool operator!=(const SupportedEvents &a, const SupportedEvents &b) {
+        return !(a == b);
+    }
+};
+
+/// Device status (command, descriptor 0x64).
+struct DeviceStatus {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x64;
+    static constexpr const char *kName = "device_status";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t model_number{}; ///< Device model number; 6251 (0x186B) for the 3DM-GX5-45.
+    ::mipcodec::types::DeviceStatusSelector status_selector{}; ///< Which status structure to return.
+    friend bool operator==(const DeviceStatus &a, const DeviceStatus &b) {
+        (void)a;
+        (void)b;
+        return true && a.model_number == b.model_number && a.status_selector == b.status_selector;
+    }
+    friend bool operator!=(const DeviceStatus &a, const DeviceStatus &b) {
+        return !(a == b);
+    }
+};
+
+/// Device status (response) (response, descriptor 0x90).
+struct DeviceStatusResponse {
+    static constexpr std::uint8_t kSet = 0x0C;
+    static constexpr std::uint8_t kDescriptor = 0x90;
+    static constexpr const char *kName = "device_status_response";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::uint16_t model_number{};                              ///< Echo of the model number.
+    ::mipcodec::types::DeviceStatusSelector status_selector{}; ///< Echo of the status selector.
+    ::mipcodec::types::Gx5DeviceStatus status{};               ///< The selected status structure.
+    friend bool operator==(const DeviceStatusResponse &a, const DeviceStatusResponse &b) {
+        (void)a;
+        (void)b;
+        return true && a.model_number == b.model_number && a.status_selector == b.status_selector &&
+               a.status == b.status;
+    }
+    friend bool operator!=(const DeviceStatusResponse &a, const DeviceStatusResponse &b) {
+        return !(a == b);
+    }
+};
+
 } // namespace mipcodec::threedm
 
 namespace mipcodec {
@@ -594,6 +2391,2780 @@ template <> struct Codec<threedm::EventActionConfigResponse> {
         write_value(w, v.trigger);
         write_value(w, v.type);
         ::mipcodec::Codec<::mipcodec::types::ActionParams>::write(w, v.parameters, v.type);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DeviceStartupSettingsGx545> {
+    static bool read(Reader &r, threedm::DeviceStartupSettingsGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DeviceStartupSettingsGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DeviceStartupSettingsCv7Ins> {
+    static bool read(Reader &r, threedm::DeviceStartupSettingsCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DeviceStartupSettingsCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorToVehicleEuler> {
+    static bool read(Reader &r, threedm::SensorToVehicleEuler &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.roll.emplace();
+            if (!read_value(r, (*v.roll), err)) {
+                err.enter("roll");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.pitch.emplace();
+            if (!read_value(r, (*v.pitch), err)) {
+                err.enter("pitch");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.yaw.emplace();
+            if (!read_value(r, (*v.yaw), err)) {
+                err.enter("yaw");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorToVehicleEuler &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.roll) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.roll));
+        } else {
+            absent = true;
+        }
+        if (v.pitch) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.pitch));
+        } else {
+            absent = true;
+        }
+        if (v.yaw) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.yaw));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorToVehicleEulerResponse> {
+    static bool read(Reader &r, threedm::SensorToVehicleEulerResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.roll, err)) {
+            err.enter("roll");
+            return false;
+        }
+        if (!read_value(r, v.pitch, err)) {
+            err.enter("pitch");
+            return false;
+        }
+        if (!read_value(r, v.yaw, err)) {
+            err.enter("yaw");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorToVehicleEulerResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.roll);
+        write_value(w, v.pitch);
+        write_value(w, v.yaw);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorToVehicleQuaternion> {
+    static bool read(Reader &r, threedm::SensorToVehicleQuaternion &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.q.emplace();
+            if (!read_fixed(r, (*v.q), err)) {
+                err.enter("q");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorToVehicleQuaternion &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.q) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.q));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorToVehicleQuaternionResponse> {
+    static bool read(Reader &r, threedm::SensorToVehicleQuaternionResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.q, err)) {
+            err.enter("q");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorToVehicleQuaternionResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.q);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorToVehicleDcm> {
+    static bool read(Reader &r, threedm::SensorToVehicleDcm &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.dcm.emplace();
+            if (!read_fixed(r, (*v.dcm), err)) {
+                err.enter("dcm");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorToVehicleDcm &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.dcm) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.dcm));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorToVehicleDcmResponse> {
+    static bool read(Reader &r, threedm::SensorToVehicleDcmResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.dcm, err)) {
+            err.enter("dcm");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorToVehicleDcmResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.dcm);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::AccelBiasGx545> {
+    static bool read(Reader &r, threedm::AccelBiasGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.bias.emplace();
+            if (!read_fixed(r, (*v.bias), err)) {
+                err.enter("bias");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::AccelBiasGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.bias) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.bias));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::AccelBiasCv7Ins> {
+    static bool read(Reader &r, threedm::AccelBiasCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.bias.emplace();
+            if (!read_fixed(r, (*v.bias), err)) {
+                err.enter("bias");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::AccelBiasCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.bias) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.bias));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::AccelBiasResponse> {
+    static bool read(Reader &r, threedm::AccelBiasResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.bias, err)) {
+            err.enter("bias");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::AccelBiasResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.bias);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GyroBiasGx545> {
+    static bool read(Reader &r, threedm::GyroBiasGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.bias.emplace();
+            if (!read_fixed(r, (*v.bias), err)) {
+                err.enter("bias");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GyroBiasGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.bias) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.bias));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GyroBiasCv7Ins> {
+    static bool read(Reader &r, threedm::GyroBiasCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.bias.emplace();
+            if (!read_fixed(r, (*v.bias), err)) {
+                err.enter("bias");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GyroBiasCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.bias) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.bias));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GyroBiasResponse> {
+    static bool read(Reader &r, threedm::GyroBiasResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.bias, err)) {
+            err.enter("bias");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GyroBiasResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.bias);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::CaptureGyroBias> {
+    static bool read(Reader &r, threedm::CaptureGyroBias &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.averaging_time_ms, err)) {
+            err.enter("averaging_time_ms");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::CaptureGyroBias &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.averaging_time_ms);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MagHardIronOffsetGx545> {
+    static bool read(Reader &r, threedm::MagHardIronOffsetGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.offset.emplace();
+            if (!read_fixed(r, (*v.offset), err)) {
+                err.enter("offset");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MagHardIronOffsetGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.offset) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.offset));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MagHardIronOffsetCv7Ins> {
+    static bool read(Reader &r, threedm::MagHardIronOffsetCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.offset.emplace();
+            if (!read_fixed(r, (*v.offset), err)) {
+                err.enter("offset");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MagHardIronOffsetCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.offset) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.offset));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MagHardIronOffsetResponse> {
+    static bool read(Reader &r, threedm::MagHardIronOffsetResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.offset, err)) {
+            err.enter("offset");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MagHardIronOffsetResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.offset);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MagSoftIronMatrixGx545> {
+    static bool read(Reader &r, threedm::MagSoftIronMatrixGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.matrix.emplace();
+            if (!read_fixed(r, (*v.matrix), err)) {
+                err.enter("matrix");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MagSoftIronMatrixGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.matrix) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.matrix));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MagSoftIronMatrixCv7Ins> {
+    static bool read(Reader &r, threedm::MagSoftIronMatrixCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.matrix.emplace();
+            if (!read_fixed(r, (*v.matrix), err)) {
+                err.enter("matrix");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MagSoftIronMatrixCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.matrix) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_fixed(w, (*v.matrix));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MagSoftIronMatrixResponse> {
+    static bool read(Reader &r, threedm::MagSoftIronMatrixResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.matrix, err)) {
+            err.enter("matrix");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MagSoftIronMatrixResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.matrix);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ConingScullingEnable> {
+    static bool read(Reader &r, threedm::ConingScullingEnable &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ConingScullingEnable &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ConingScullingEnableResponse> {
+    static bool read(Reader &r, threedm::ConingScullingEnableResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ConingScullingEnableResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.enable);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::UartBaudrate> {
+    static bool read(Reader &r, threedm::UartBaudrate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.baud.emplace();
+            if (!read_value(r, (*v.baud), err)) {
+                err.enter("baud");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::UartBaudrate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.baud) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.baud));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::UartBaudrateResponse> {
+    static bool read(Reader &r, threedm::UartBaudrateResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.baud, err)) {
+            err.enter("baud");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::UartBaudrateResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.baud);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GpioConfig> {
+    static bool read(Reader &r, threedm::GpioConfig &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.pin, err)) {
+            err.enter("pin");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.feature.emplace();
+            if (!read_value(r, (*v.feature), err)) {
+                err.enter("feature");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.behavior.emplace();
+            if (!::mipcodec::Codec<::mipcodec::types::GpioBehavior>::read(
+                    r, (*v.behavior), v.feature.value_or(::mipcodec::types::GpioFeature{}), err)) {
+                err.enter("behavior");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.pin_mode.emplace();
+            if (!read_value(r, (*v.pin_mode), err)) {
+                err.enter("pin_mode");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GpioConfig &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.pin);
+        if (v.feature) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.feature));
+        } else {
+            absent = true;
+        }
+        if (v.behavior) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            ::mipcodec::Codec<::mipcodec::types::GpioBehavior>::write(
+                w, (*v.behavior), v.feature.value_or(::mipcodec::types::GpioFeature{}));
+        } else {
+            absent = true;
+        }
+        if (v.pin_mode) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.pin_mode));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GpioConfigResponse> {
+    static bool read(Reader &r, threedm::GpioConfigResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.pin, err)) {
+            err.enter("pin");
+            return false;
+        }
+        if (!read_value(r, v.feature, err)) {
+            err.enter("feature");
+            return false;
+        }
+        if (!::mipcodec::Codec<::mipcodec::types::GpioBehavior>::read(r, v.behavior, v.feature, err)) {
+            err.enter("behavior");
+            return false;
+        }
+        if (!read_value(r, v.pin_mode, err)) {
+            err.enter("pin_mode");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GpioConfigResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.pin);
+        write_value(w, v.feature);
+        ::mipcodec::Codec<::mipcodec::types::GpioBehavior>::write(w, v.behavior, v.feature);
+        write_value(w, v.pin_mode);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GpioState> {
+    static bool read(Reader &r, threedm::GpioState &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.pin, err)) {
+            err.enter("pin");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.state.emplace();
+            if (!read_value(r, (*v.state), err)) {
+                err.enter("state");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GpioState &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.pin);
+        if (v.state) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.state));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GpioStateResponse> {
+    static bool read(Reader &r, threedm::GpioStateResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.pin, err)) {
+            err.enter("pin");
+            return false;
+        }
+        if (!read_value(r, v.state, err)) {
+            err.enter("state");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GpioStateResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.pin);
+        write_value(w, v.state);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::OdometerConfig> {
+    static bool read(Reader &r, threedm::OdometerConfig &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.mode.emplace();
+            if (!read_value(r, (*v.mode), err)) {
+                err.enter("mode");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.scaling.emplace();
+            if (!read_value(r, (*v.scaling), err)) {
+                err.enter("scaling");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.uncertainty.emplace();
+            if (!read_value(r, (*v.uncertainty), err)) {
+                err.enter("uncertainty");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::OdometerConfig &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.mode) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.mode));
+        } else {
+            absent = true;
+        }
+        if (v.scaling) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.scaling));
+        } else {
+            absent = true;
+        }
+        if (v.uncertainty) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.uncertainty));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::OdometerConfigResponse> {
+    static bool read(Reader &r, threedm::OdometerConfigResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.mode, err)) {
+            err.enter("mode");
+            return false;
+        }
+        if (!read_value(r, v.scaling, err)) {
+            err.enter("scaling");
+            return false;
+        }
+        if (!read_value(r, v.uncertainty, err)) {
+            err.enter("uncertainty");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::OdometerConfigResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.mode);
+        write_value(w, v.scaling);
+        write_value(w, v.uncertainty);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::AdvancedLowpassFilter> {
+    static bool read(Reader &r, threedm::AdvancedLowpassFilter &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.target_descriptor, err)) {
+            err.enter("target_descriptor");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.manual.emplace();
+            if (!read_value(r, (*v.manual), err)) {
+                err.enter("manual");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.frequency.emplace();
+            if (!read_value(r, (*v.frequency), err)) {
+                err.enter("frequency");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.reserved.emplace();
+            if (!read_value(r, (*v.reserved), err)) {
+                err.enter("reserved");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::AdvancedLowpassFilter &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.target_descriptor);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        if (v.manual) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.manual));
+        } else {
+            absent = true;
+        }
+        if (v.frequency) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.frequency));
+        } else {
+            absent = true;
+        }
+        if (v.reserved) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.reserved));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::AdvancedLowpassFilterResponse> {
+    static bool read(Reader &r, threedm::AdvancedLowpassFilterResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.target_descriptor, err)) {
+            err.enter("target_descriptor");
+            return false;
+        }
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        if (!read_value(r, v.manual, err)) {
+            err.enter("manual");
+            return false;
+        }
+        if (!read_value(r, v.frequency, err)) {
+            err.enter("frequency");
+            return false;
+        }
+        if (!read_value(r, v.reserved, err)) {
+            err.enter("reserved");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::AdvancedLowpassFilterResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.target_descriptor);
+        write_value(w, v.enable);
+        write_value(w, v.manual);
+        write_value(w, v.frequency);
+        write_value(w, v.reserved);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ComplementaryFilter> {
+    static bool read(Reader &r, threedm::ComplementaryFilter &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.pitch_roll_enable.emplace();
+            if (!read_value(r, (*v.pitch_roll_enable), err)) {
+                err.enter("pitch_roll_enable");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.heading_enable.emplace();
+            if (!read_value(r, (*v.heading_enable), err)) {
+                err.enter("heading_enable");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.pitch_roll_time_constant.emplace();
+            if (!read_value(r, (*v.pitch_roll_time_constant), err)) {
+                err.enter("pitch_roll_time_constant");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.heading_time_constant.emplace();
+            if (!read_value(r, (*v.heading_time_constant), err)) {
+                err.enter("heading_time_constant");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ComplementaryFilter &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.pitch_roll_enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.pitch_roll_enable));
+        } else {
+            absent = true;
+        }
+        if (v.heading_enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.heading_enable));
+        } else {
+            absent = true;
+        }
+        if (v.pitch_roll_time_constant) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.pitch_roll_time_constant));
+        } else {
+            absent = true;
+        }
+        if (v.heading_time_constant) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.heading_time_constant));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ComplementaryFilterResponse> {
+    static bool read(Reader &r, threedm::ComplementaryFilterResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.pitch_roll_enable, err)) {
+            err.enter("pitch_roll_enable");
+            return false;
+        }
+        if (!read_value(r, v.heading_enable, err)) {
+            err.enter("heading_enable");
+            return false;
+        }
+        if (!read_value(r, v.pitch_roll_time_constant, err)) {
+            err.enter("pitch_roll_time_constant");
+            return false;
+        }
+        if (!read_value(r, v.heading_time_constant, err)) {
+            err.enter("heading_time_constant");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ComplementaryFilterResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.pitch_roll_enable);
+        write_value(w, v.heading_enable);
+        write_value(w, v.pitch_roll_time_constant);
+        write_value(w, v.heading_time_constant);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorRange> {
+    static bool read(Reader &r, threedm::SensorRange &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.sensor, err)) {
+            err.enter("sensor");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.setting.emplace();
+            if (!read_value(r, (*v.setting), err)) {
+                err.enter("setting");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorRange &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.sensor);
+        if (v.setting) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.setting));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SensorRangeResponse> {
+    static bool read(Reader &r, threedm::SensorRangeResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.sensor, err)) {
+            err.enter("sensor");
+            return false;
+        }
+        if (!read_value(r, v.setting, err)) {
+            err.enter("setting");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SensorRangeResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.sensor);
+        write_value(w, v.setting);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GetCalibratedSensorRanges> {
+    static bool read(Reader &r, threedm::GetCalibratedSensorRanges &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.sensor, err)) {
+            err.enter("sensor");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GetCalibratedSensorRanges &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.sensor);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::CalibratedSensorRanges> {
+    static bool read(Reader &r, threedm::CalibratedSensorRanges &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.sensor, err)) {
+            err.enter("sensor");
+            return false;
+        }
+        if (!read_value(r, v.num_ranges, err)) {
+            err.enter("num_ranges");
+            return false;
+        }
+        if (!read_counted(r, v.ranges, static_cast<std::uint64_t>(v.num_ranges), err)) {
+            err.enter("ranges");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::CalibratedSensorRanges &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.sensor);
+        write_value(w, v.num_ranges);
+        write_counted(w, v.ranges, static_cast<std::uint64_t>(v.num_ranges));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::LowpassFilter> {
+    static bool read(Reader &r, threedm::LowpassFilter &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (!read_value(r, v.field_desc, err)) {
+            err.enter("field_desc");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.manual.emplace();
+            if (!read_value(r, (*v.manual), err)) {
+                err.enter("manual");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.frequency.emplace();
+            if (!read_value(r, (*v.frequency), err)) {
+                err.enter("frequency");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::LowpassFilter &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.desc_set);
+        write_value(w, v.field_desc);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        if (v.manual) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.manual));
+        } else {
+            absent = true;
+        }
+        if (v.frequency) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.frequency));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::LowpassFilterResponse> {
+    static bool read(Reader &r, threedm::LowpassFilterResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (!read_value(r, v.field_desc, err)) {
+            err.enter("field_desc");
+            return false;
+        }
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        if (!read_value(r, v.manual, err)) {
+            err.enter("manual");
+            return false;
+        }
+        if (!read_value(r, v.frequency, err)) {
+            err.enter("frequency");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::LowpassFilterResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.desc_set);
+        write_value(w, v.field_desc);
+        write_value(w, v.enable);
+        write_value(w, v.manual);
+        write_value(w, v.frequency);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PollImuData> {
+    static bool read(Reader &r, threedm::PollImuData &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.option, err)) {
+            err.enter("option");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PollImuData &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.option);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PollGnssData> {
+    static bool read(Reader &r, threedm::PollGnssData &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.option, err)) {
+            err.enter("option");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PollGnssData &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.option);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PollFilterData> {
+    static bool read(Reader &r, threedm::PollFilterData &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.option, err)) {
+            err.enter("option");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PollFilterData &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.option);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PollNmeaData> {
+    static bool read(Reader &r, threedm::PollNmeaData &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.suppress_ack, err)) {
+            err.enter("suppress_ack");
+            return false;
+        }
+        if (!read_value(r, v.count, err)) {
+            err.enter("count");
+            return false;
+        }
+        if (!read_counted(r, v.format_entries, static_cast<std::uint64_t>(v.count), err)) {
+            err.enter("format_entries");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PollNmeaData &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.suppress_ack);
+        write_value(w, v.count);
+        write_counted(w, v.format_entries, static_cast<std::uint64_t>(v.count));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PollData> {
+    static bool read(Reader &r, threedm::PollData &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (!read_value(r, v.suppress_ack, err)) {
+            err.enter("suppress_ack");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PollData &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.desc_set);
+        write_value(w, v.suppress_ack);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GetImuBaseRate> {
+    static bool read(Reader &r, threedm::GetImuBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        return true;
+    }
+    static void write(Writer &w, const threedm::GetImuBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ImuBaseRate> {
+    static bool read(Reader &r, threedm::ImuBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.rate, err)) {
+            err.enter("rate");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ImuBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.rate);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GetGnssBaseRate> {
+    static bool read(Reader &r, threedm::GetGnssBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        return true;
+    }
+    static void write(Writer &w, const threedm::GetGnssBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssBaseRate> {
+    static bool read(Reader &r, threedm::GnssBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.rate, err)) {
+            err.enter("rate");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.rate);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GetFilterBaseRate> {
+    static bool read(Reader &r, threedm::GetFilterBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        return true;
+    }
+    static void write(Writer &w, const threedm::GetFilterBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::FilterBaseRate> {
+    static bool read(Reader &r, threedm::FilterBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.rate, err)) {
+            err.enter("rate");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::FilterBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.rate);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GetBaseRate> {
+    static bool read(Reader &r, threedm::GetBaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GetBaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.desc_set);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::BaseRate> {
+    static bool read(Reader &r, threedm::BaseRate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (!read_value(r, v.rate, err)) {
+            err.enter("rate");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::BaseRate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.desc_set);
+        write_value(w, v.rate);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ImuMessageFormat> {
+    static bool read(Reader &r, threedm::ImuMessageFormat &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ImuMessageFormat &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::ImuMessageFormatResponse> {
+    static bool read(Reader &r, threedm::ImuMessageFormatResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::ImuMessageFormatResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssMessageFormat> {
+    static bool read(Reader &r, threedm::GnssMessageFormat &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssMessageFormat &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssMessageFormatResponse> {
+    static bool read(Reader &r, threedm::GnssMessageFormatResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssMessageFormatResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::FilterMessageFormat> {
+    static bool read(Reader &r, threedm::FilterMessageFormat &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::FilterMessageFormat &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::FilterMessageFormatResponse> {
+    static bool read(Reader &r, threedm::FilterMessageFormatResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::FilterMessageFormatResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::NmeaMessageFormat> {
+    static bool read(Reader &r, threedm::NmeaMessageFormat &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.count.emplace();
+            if (!read_value(r, (*v.count), err)) {
+                err.enter("count");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.format_entries.emplace();
+            if (!read_counted(r, (*v.format_entries), static_cast<std::uint64_t>(v.count.value_or(0)), err)) {
+                err.enter("format_entries");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::NmeaMessageFormat &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.count) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.count));
+        } else {
+            absent = true;
+        }
+        if (v.format_entries) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.format_entries), static_cast<std::uint64_t>(v.count.value_or(0)));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::NmeaMessageFormatResponse> {
+    static bool read(Reader &r, threedm::NmeaMessageFormatResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.count, err)) {
+            err.enter("count");
+            return false;
+        }
+        if (!read_counted(r, v.format_entries, static_cast<std::uint64_t>(v.count), err)) {
+            err.enter("format_entries");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::NmeaMessageFormatResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.count);
+        write_counted(w, v.format_entries, static_cast<std::uint64_t>(v.count));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MessageFormat> {
+    static bool read(Reader &r, threedm::MessageFormat &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.num_descriptors.emplace();
+            if (!read_value(r, (*v.num_descriptors), err)) {
+                err.enter("num_descriptors");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.descriptors.emplace();
+            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
+                              err)) {
+                err.enter("descriptors");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MessageFormat &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.desc_set);
+        if (v.num_descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.num_descriptors));
+        } else {
+            absent = true;
+        }
+        if (v.descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::MessageFormatResponse> {
+    static bool read(Reader &r, threedm::MessageFormatResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (!read_value(r, v.num_descriptors, err)) {
+            err.enter("num_descriptors");
+            return false;
+        }
+        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            err.enter("descriptors");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::MessageFormatResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.desc_set);
+        write_value(w, v.num_descriptors);
+        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::FactoryStreaming> {
+    static bool read(Reader &r, threedm::FactoryStreaming &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.action, err)) {
+            err.enter("action");
+            return false;
+        }
+        if (!read_value(r, v.reserved, err)) {
+            err.enter("reserved");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::FactoryStreaming &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.action);
+        write_value(w, v.reserved);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DataStreamControlGx545> {
+    static bool read(Reader &r, threedm::DataStreamControlGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.device_selector, err)) {
+            err.enter("device_selector");
+            return false;
+        }
+        if (!read_value(r, v.enable, err)) {
+            err.enter("enable");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DataStreamControlGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.device_selector);
+        write_value(w, v.enable);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DataStreamControlCv7Ins> {
+    static bool read(Reader &r, threedm::DataStreamControlCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DataStreamControlCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.desc_set);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DataStreamControlResponseGx545> {
+    static bool read(Reader &r, threedm::DataStreamControlResponseGx545 &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.device_selector, err)) {
+            err.enter("device_selector");
+            return false;
+        }
+        if (!read_value(r, v.enabled, err)) {
+            err.enter("enabled");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DataStreamControlResponseGx545 &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.device_selector);
+        write_value(w, v.enabled);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DataStreamControlResponseCv7Ins> {
+    static bool read(Reader &r, threedm::DataStreamControlResponseCv7Ins &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.desc_set, err)) {
+            err.enter("desc_set");
+            return false;
+        }
+        if (!read_value(r, v.enabled, err)) {
+            err.enter("enabled");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DataStreamControlResponseCv7Ins &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.desc_set);
+        write_value(w, v.enabled);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::RawRtcmMessage> {
+    static bool read(Reader &r, threedm::RawRtcmMessage &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_remaining(r, v.data, err)) {
+            err.enter("data");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::RawRtcmMessage &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_remaining(w, v.data);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssConstellationSettings> {
+    static bool read(Reader &r, threedm::GnssConstellationSettings &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.max_channels, err)) {
+            err.enter("max_channels");
+            return false;
+        }
+        if (!read_value(r, v.config_count, err)) {
+            err.enter("config_count");
+            return false;
+        }
+        if (!read_counted(r, v.settings, static_cast<std::uint64_t>(v.config_count), err)) {
+            err.enter("settings");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssConstellationSettings &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.max_channels);
+        write_value(w, v.config_count);
+        write_counted(w, v.settings, static_cast<std::uint64_t>(v.config_count));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssConstellationSettingsResponse> {
+    static bool read(Reader &r, threedm::GnssConstellationSettingsResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.max_channels_available, err)) {
+            err.enter("max_channels_available");
+            return false;
+        }
+        if (!read_value(r, v.max_channels, err)) {
+            err.enter("max_channels");
+            return false;
+        }
+        if (!read_value(r, v.config_count, err)) {
+            err.enter("config_count");
+            return false;
+        }
+        if (!read_counted(r, v.settings, static_cast<std::uint64_t>(v.config_count), err)) {
+            err.enter("settings");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssConstellationSettingsResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.max_channels_available);
+        write_value(w, v.max_channels);
+        write_value(w, v.config_count);
+        write_counted(w, v.settings, static_cast<std::uint64_t>(v.config_count));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssSbasSettings> {
+    static bool read(Reader &r, threedm::GnssSbasSettings &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.enable_sbas.emplace();
+            if (!read_value(r, (*v.enable_sbas), err)) {
+                err.enter("enable_sbas");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.sbas_options.emplace();
+            if (!read_value(r, (*v.sbas_options), err)) {
+                err.enter("sbas_options");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.num_included_prns.emplace();
+            if (!read_value(r, (*v.num_included_prns), err)) {
+                err.enter("num_included_prns");
+                return false;
+            }
+        }
+        if (r.left() > 0) {
+            v.included_prns.emplace();
+            if (!read_counted(r, (*v.included_prns),
+                              static_cast<std::uint64_t>(v.num_included_prns.value_or(0)), err)) {
+                err.enter("included_prns");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssSbasSettings &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.enable_sbas) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable_sbas));
+        } else {
+            absent = true;
+        }
+        if (v.sbas_options) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.sbas_options));
+        } else {
+            absent = true;
+        }
+        if (v.num_included_prns) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.num_included_prns));
+        } else {
+            absent = true;
+        }
+        if (v.included_prns) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.included_prns), static_cast<std::uint64_t>(v.num_included_prns.value_or(0)));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssSbasSettingsResponse> {
+    static bool read(Reader &r, threedm::GnssSbasSettingsResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.enable_sbas, err)) {
+            err.enter("enable_sbas");
+            return false;
+        }
+        if (!read_value(r, v.sbas_options, err)) {
+            err.enter("sbas_options");
+            return false;
+        }
+        if (!read_value(r, v.num_included_prns, err)) {
+            err.enter("num_included_prns");
+            return false;
+        }
+        if (!read_counted(r, v.included_prns, static_cast<std::uint64_t>(v.num_included_prns), err)) {
+            err.enter("included_prns");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssSbasSettingsResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.enable_sbas);
+        write_value(w, v.sbas_options);
+        write_value(w, v.num_included_prns);
+        write_counted(w, v.included_prns, static_cast<std::uint64_t>(v.num_included_prns));
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssAssistedFixControl> {
+    static bool read(Reader &r, threedm::GnssAssistedFixControl &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.option, err)) {
+            err.enter("option");
+            return false;
+        }
+        if (!read_value(r, v.flags, err)) {
+            err.enter("flags");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssAssistedFixControl &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.option);
+        write_value(w, v.flags);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssAssistedFixControlResponse> {
+    static bool read(Reader &r, threedm::GnssAssistedFixControlResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.option, err)) {
+            err.enter("option");
+            return false;
+        }
+        if (!read_value(r, v.flags, err)) {
+            err.enter("flags");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssAssistedFixControlResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.option);
+        write_value(w, v.flags);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssAssistTimeUpdate> {
+    static bool read(Reader &r, threedm::GnssAssistTimeUpdate &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (!read_value(r, v.tow, err)) {
+            err.enter("tow");
+            return false;
+        }
+        if (!read_value(r, v.week_number, err)) {
+            err.enter("week_number");
+            return false;
+        }
+        if (!read_value(r, v.accuracy, err)) {
+            err.enter("accuracy");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssAssistTimeUpdate &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        write_value(w, v.tow);
+        write_value(w, v.week_number);
+        write_value(w, v.accuracy);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GnssAssistTimeUpdateResponse> {
+    static bool read(Reader &r, threedm::GnssAssistTimeUpdateResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.tow, err)) {
+            err.enter("tow");
+            return false;
+        }
+        if (!read_value(r, v.week_number, err)) {
+            err.enter("week_number");
+            return false;
+        }
+        if (!read_value(r, v.accuracy, err)) {
+            err.enter("accuracy");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GnssAssistTimeUpdateResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.tow);
+        write_value(w, v.week_number);
+        write_value(w, v.accuracy);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PpsSource> {
+    static bool read(Reader &r, threedm::PpsSource &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.function, err)) {
+            err.enter("function");
+            return false;
+        }
+        if (r.left() > 0) {
+            v.source.emplace();
+            if (!read_value(r, (*v.source), err)) {
+                err.enter("source");
+                return false;
+            }
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PpsSource &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.function);
+        if (v.source) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.source));
+        } else {
+            absent = true;
+        }
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::PpsSourceResponse> {
+    static bool read(Reader &r, threedm::PpsSourceResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.source, err)) {
+            err.enter("source");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::PpsSourceResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.source);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::GetSupportedEvents> {
+    static bool read(Reader &r, threedm::GetSupportedEvents &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.query, err)) {
+            err.enter("query");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::GetSupportedEvents &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.query);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::SupportedEvents> {
+    static bool read(Reader &r, threedm::SupportedEvents &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.query, err)) {
+            err.enter("query");
+            return false;
+        }
+        if (!::mipcodec::Codec<::mipcodec::types::SupportedEventsInfo>::read(r, v.info, v.query, err)) {
+            err.enter("info");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::SupportedEvents &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.query);
+        ::mipcodec::Codec<::mipcodec::types::SupportedEventsInfo>::write(w, v.info, v.query);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DeviceStatus> {
+    static bool read(Reader &r, threedm::DeviceStatus &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.model_number, err)) {
+            err.enter("model_number");
+            return false;
+        }
+        if (!read_value(r, v.status_selector, err)) {
+            err.enter("status_selector");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DeviceStatus &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.model_number);
+        write_value(w, v.status_selector);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<threedm::DeviceStatusResponse> {
+    static bool read(Reader &r, threedm::DeviceStatusResponse &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.model_number, err)) {
+            err.enter("model_number");
+            return false;
+        }
+        if (!read_value(r, v.status_selector, err)) {
+            err.enter("status_selector");
+            return false;
+        }
+        if (!::mipcodec::Codec<::mipcodec::types::Gx5DeviceStatus>::read(r, v.status, v.status_selector,
+                                                                         err)) {
+            err.enter("status");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const threedm::DeviceStatusResponse &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.model_number);
+        write_value(w, v.status_selector);
+        ::mipcodec::Codec<::mipcodec::types::Gx5DeviceStatus>::write(w, v.status, v.status_selector);
         (void)absent;
     }
 };
