@@ -198,12 +198,12 @@ def _walk_variations(vals: Values, params: list[dict], device: str | None, funct
 
 
 def _drop_empty_trailing(values: dict, params: list[dict]) -> dict:
-    """An optional union parameter whose member carries no data occupies no bytes; when it is
-    the last value, a decoder cannot tell it from absent, and docs/conformance.md §4 prints
-    absent optional parameters by leaving them out."""
+    """An optional union parameter whose member carries no data, or an optional counted array of
+    length 0, occupies no bytes; when it is the last value, a decoder cannot tell it from
+    absent, and docs/conformance.md §4 prints absent optional parameters by leaving them out."""
     optional = {p["name"] for p in params if p["optional"]}
     names = list(values)
-    while names and names[-1] in optional and values[names[-1]] is None:
+    while names and names[-1] in optional and values[names[-1]] in (None, []):
         names.pop()
     return {n: values[n] for n in names}
 
