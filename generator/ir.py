@@ -758,13 +758,30 @@ class Builder:
                     f"{owner}: ack suppression by function '{ack['function']}', which the command does not support",
                     "one of the command's functions",
                 )
-            if "param" in ack and not any(q["name"] == ack["param"] for q in params):
+            target = next((q for q in params if q["name"] == ack.get("param")), None)
+            if "param" in ack and target is None:
                 self.err(
                     sf,
                     path + ("ack_suppressed_by", "param"),
                     f"{owner}: ack suppression by parameter '{ack['param']}', which does not exist",
                     "a parameter of this command",
                 )
+            if "value" in ack:
+                ack = dict(ack)
+                enum = self.types.get(target["type"].get("name")) if target and target["type"]["kind"] == "enum" else None
+                if "param" not in ack:
+                    self.err(sf, path + ("ack_suppressed_by", "value"), f"{owner}: value without param", "param: <name>")
+                elif isinstance(ack["value"], str):
+                    names = {v["name"]: v["value"] for v in enum["values"]} if enum else {}
+                    if ack["value"] not in names:
+                        self.err(
+                            sf,
+                            path + ("ack_suppressed_by", "value"),
+                            f"{owner}: ack suppression value '{ack['value']}' is not a value of parameter {ack['param']}",
+                            "one of " + ", ".join(names) if names else "an integer (the parameter is not an enum)",
+                        )
+                    else:
+                        ack["value"] = names[ack["value"]]
         sources = self._sources(sf, path + ("sources",), src.get("sources", []))
         if device is not None:
             devs = self._devices_of(sources)

@@ -46,6 +46,14 @@ def _errors(spec: Path) -> list[str]:
 
 
 CASES = [
+    (
+        "ack suppression value not in the enum",
+        "commands.yaml",
+        "ack_suppressed_by: {param: suppress_ack}",
+        "ack_suppressed_by: {param: mode, value: loud}",
+        "ack suppression value 'loud' is not a value of parameter mode",
+        "ack_suppressed_by",
+    ),
     # (id, file, old, new, expected message part, line needle in the edited file)
     (
         "duplicate descriptor",
