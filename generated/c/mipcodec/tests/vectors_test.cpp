@@ -1768,55 +1768,6 @@ TEST(Vectors, device_info_every_string_byte) {
                  "fc\\u00fd\\u00fe\\u00ff\"}}}]}\n");
 }
 
-TEST(Vectors, ack_imu_message_format) {
-    check_vector("75650c0404f10800e7ba", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":8,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, ack_filter_message_format) {
-    check_vector("75650c0404f10a00e9be", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":10,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, two_acks_save_formats_published) {
-    check_vector("75650c0804f1080004f10a00e9be", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}\n");
-}
-
-TEST(Vectors, two_acks_save_formats) {
-    check_vector("75650c0804f1080004f10a00ea71", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\","
-                 "\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, two_acks_enable_streams) {
-    check_vector("75650c0804f1110004f11100fab5", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\","
-                 "\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, ack_poll_data) {
-    check_vector("75650c0404f10100e0ac", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":1,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, ack_initialize_attitude) {
-    check_vector("75650d0404f10200e2b4", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":2,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, ack_pps_source) {
-    check_vector("75650c0404f1280007fa", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
-                 "\"command_descriptor\":40,\"ack_code\":0}}]}\n");
-}
-
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(
         "75650c07072e01010101042af4", MIP_DEVICE_ANY,
@@ -3465,8 +3416,8 @@ TEST(Vectors, unknown_set_and_descriptor) {
 }
 
 TEST(Vectors, ack_in_undefined_command_set) {
-    check_vector("75657f0404f11000627c", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
+    check_vector("75657e0404f110006176", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
                  "{\"command_descriptor\":16,\"ack_code\":0}}]}\n");
 }
 

@@ -2535,79 +2535,6 @@ TEST(Vectors, device_info_every_string_byte) {
         });
 }
 
-// ack_imu_message_format
-TEST(Vectors, ack_imu_message_format) {
-    check_vector("75650c0404f10800e7ba", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":8,\"ack_code\":0}}]}",
-                 });
-}
-
-// ack_filter_message_format
-TEST(Vectors, ack_filter_message_format) {
-    check_vector("75650c0404f10a00e9be", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
-                 });
-}
-
-// two_acks_save_formats_published (rejected)
-TEST(Vectors, two_acks_save_formats_published) {
-    check_vector("75650c0804f1080004f10a00e9be", nullptr, true,
-                 {
-                     "{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}",
-                 });
-}
-
-// two_acks_save_formats
-TEST(Vectors, two_acks_save_formats) {
-    check_vector("75650c0804f1080004f10a00ea71", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":"
-                     "\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
-                 });
-}
-
-// two_acks_enable_streams
-TEST(Vectors, two_acks_enable_streams) {
-    check_vector("75650c0804f1110004f11100fab5", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":"
-                     "\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
-                 });
-}
-
-// ack_poll_data
-TEST(Vectors, ack_poll_data) {
-    check_vector("75650c0404f10100e0ac", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
-                 });
-}
-
-// ack_initialize_attitude
-TEST(Vectors, ack_initialize_attitude) {
-    check_vector("75650d0404f10200e2b4", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":2,\"ack_code\":0}}]}",
-                 });
-}
-
-// ack_pps_source
-TEST(Vectors, ack_pps_source) {
-    check_vector("75650c0404f1280007fa", nullptr, false,
-                 {
-                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
-                     "\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
-                 });
-}
-
 // event_trigger_gpio_edge
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(
@@ -5017,9 +4944,9 @@ TEST(Vectors, unknown_set_and_descriptor) {
 
 // ack_in_undefined_command_set
 TEST(Vectors, ack_in_undefined_command_set) {
-    check_vector("75657f0404f11000627c", nullptr, false,
+    check_vector("75657e0404f110006176", nullptr, false,
                  {
-                     "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
+                     "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
                      "\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
                  });
 }

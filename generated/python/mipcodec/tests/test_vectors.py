@@ -2505,84 +2505,6 @@ CASES = [
         ],
     },
     {
-        "name": "ack_imu_message_format",
-        "hex": "75650c0404f10800e7ba",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:493",
-        "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}}]}'
-        ],
-    },
-    {
-        "name": "ack_filter_message_format",
-        "hex": "75650c0404f10a00e9be",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:501",
-        "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":10,"ack_code":0}}]}'
-        ],
-    },
-    {
-        "name": "two_acks_save_formats_published",
-        "hex": "75650c0804f1080004f10a00e9be",
-        "device": None,
-        "rejected": True,
-        "where": "tests/vectors/mip/base.yaml:509",
-        "expect": ['{"offset":0,"skipped":"75650c0804f1080004f10a00e9be"}'],
-    },
-    {
-        "name": "two_acks_save_formats",
-        "hex": "75650c0804f1080004f10a00ea71",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:521",
-        "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":10,"ack_code":0}}]}'
-        ],
-    },
-    {
-        "name": "two_acks_enable_streams",
-        "hex": "75650c0804f1110004f11100fab5",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:533",
-        "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}}]}'
-        ],
-    },
-    {
-        "name": "ack_poll_data",
-        "hex": "75650c0404f10100e0ac",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:542",
-        "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":1,"ack_code":0}}]}'
-        ],
-    },
-    {
-        "name": "ack_initialize_attitude",
-        "hex": "75650d0404f10200e2b4",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:552",
-        "expect": [
-            '{"offset":0,"set":13,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":2,"ack_code":0}}]}'
-        ],
-    },
-    {
-        "name": "ack_pps_source",
-        "hex": "75650c0404f1280007fa",
-        "device": None,
-        "rejected": False,
-        "where": "tests/vectors/mip/base.yaml:560",
-        "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}}]}'
-        ],
-    },
-    {
         "name": "event_trigger_gpio_edge",
         "hex": "75650c07072e01010101042af4",
         "device": None,
@@ -4990,12 +4912,12 @@ CASES = [
     },
     {
         "name": "ack_in_undefined_command_set",
-        "hex": "75657f0404f11000627c",
+        "hex": "75657e0404f110006176",
         "device": None,
         "rejected": False,
         "where": "tests/vectors/mip/streams.yaml:119",
         "expect": [
-            '{"offset":0,"set":127,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":0}}]}'
+            '{"offset":0,"set":126,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":16,"ack_code":0}}]}'
         ],
     },
     {

@@ -3340,108 +3340,6 @@ fn case_device_info_every_string_byte() {
     );
 }
 
-/// `ack_imu_message_format` (tests/vectors/mip/base.yaml:493)
-#[test]
-fn case_ack_imu_message_format() {
-    check(
-        "75650c0404f10800e7ba",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `ack_filter_message_format` (tests/vectors/mip/base.yaml:501)
-#[test]
-fn case_ack_filter_message_format() {
-    check(
-        "75650c0404f10a00e9be",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `two_acks_save_formats_published` (tests/vectors/mip/base.yaml:509)
-#[test]
-fn case_two_acks_save_formats_published() {
-    check(
-        "75650c0804f1080004f10a00e9be",
-        None,
-        &["{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}"],
-        true,
-    );
-}
-
-/// `two_acks_save_formats` (tests/vectors/mip/base.yaml:521)
-#[test]
-fn case_two_acks_save_formats() {
-    check(
-        "75650c0804f1080004f10a00ea71",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `two_acks_enable_streams` (tests/vectors/mip/base.yaml:533)
-#[test]
-fn case_two_acks_enable_streams() {
-    check(
-        "75650c0804f1110004f11100fab5",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `ack_poll_data` (tests/vectors/mip/base.yaml:542)
-#[test]
-fn case_ack_poll_data() {
-    check(
-        "75650c0404f10100e0ac",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `ack_initialize_attitude` (tests/vectors/mip/base.yaml:552)
-#[test]
-fn case_ack_initialize_attitude() {
-    check(
-        "75650d0404f10200e2b4",
-        None,
-        &[
-            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":2,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `ack_pps_source` (tests/vectors/mip/base.yaml:560)
-#[test]
-fn case_ack_pps_source() {
-    check(
-        "75650c0404f1280007fa",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":40,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
 /// `event_trigger_gpio_edge` (tests/vectors/mip/events.yaml:6)
 #[test]
 fn case_event_trigger_gpio_edge() {
@@ -6601,10 +6499,10 @@ fn case_unknown_set_and_descriptor() {
 #[test]
 fn case_ack_in_undefined_command_set() {
     check(
-        "75657f0404f11000627c",
+        "75657e0404f110006176",
         None,
         &[
-            "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
+            "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
         ],
         false,
     );
