@@ -768,9 +768,13 @@ class Builder:
                 )
             if "value" in ack:
                 ack = dict(ack)
-                enum = self.types.get(target["type"].get("name")) if target and target["type"]["kind"] == "enum" else None
+                enum = (
+                    self.types.get(target["type"].get("name")) if target and target["type"]["kind"] == "enum" else None
+                )
                 if "param" not in ack:
-                    self.err(sf, path + ("ack_suppressed_by", "value"), f"{owner}: value without param", "param: <name>")
+                    self.err(
+                        sf, path + ("ack_suppressed_by", "value"), f"{owner}: value without param", "param: <name>"
+                    )
                 elif isinstance(ack["value"], str):
                     names = {v["name"]: v["value"] for v in enum["values"]} if enum else {}
                     if ack["value"] not in names:
