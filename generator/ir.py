@@ -244,6 +244,7 @@ class Builder:
                     "name": v["name"],
                     "value": v["value"],
                     "description": v.get("description", ""),
+                    "manual_name": v.get("manual_name"),
                     "devices": v.get("devices"),
                 }
             )
@@ -309,6 +310,7 @@ class Builder:
                     "reserved": bool(m.get("reserved")),
                     "alias": bool(m.get("alias")),
                     "description": m.get("description", ""),
+                    "manual_name": m.get("manual_name"),
                     "devices": m.get("devices"),
                 }
             )
@@ -604,6 +606,7 @@ class Builder:
                 "name": name,
                 "description": p.get("description", ""),
                 "units": p.get("units"),
+                "manual_name": p.get("manual_name"),
                 "type": tref,
                 "alias": alias,
                 "count": count,
@@ -892,6 +895,13 @@ class Builder:
                         f"shared descriptor 0x{f['id']:02X} is below 0x{shared['first_descriptor']:02X}",
                         f">= 0x{shared['first_descriptor']:02X}",
                     )
+                if f.get("sample_timestamp") and not is_shared:
+                    self.err(
+                        sf,
+                        fp + ("sample_timestamp",),
+                        f"{d['name']}.{f['name']}: only a shared data field can identify a sample",
+                        "sample_timestamp only in the shared data set",
+                    )
                 if f.get("repeats") and f["role"] != "data":
                     self.err(sf, fp + ("repeats",), f"{d['name']}.{f['name']}: only data fields repeat", "no repeats")
                 given = [k for k in ("params", "layout", "variants") if k in f]
@@ -962,6 +972,8 @@ class Builder:
                         "devices": devices,
                         "notes": f.get("notes", []),
                         "repeats": bool(f.get("repeats")),
+                        "manual_name": f.get("manual_name"),
+                        "sample_timestamp": bool(f.get("sample_timestamp")),
                         "variants": variants,
                         "_sf": sf,
                         "_path": fp,
