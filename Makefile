@@ -6,11 +6,12 @@ VENV := .venv
 PY := $(VENV)/bin/python
 LANGS := c cpp python rust
 MANUALS ?= ../shared/manuals
+CAPTURE ?= ../shared/captures/mip_data.bin
 export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
 
-.PHONY: all generate test test-generator test-conformance test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all generate test test-generator test-conformance test-capture test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -25,7 +26,7 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 	$(PY) -m generator
 	@mkdir -p build && touch $@
 
-test: generate test-generator $(addprefix test-,$(LANGS)) test-conformance
+test: generate test-generator $(addprefix test-,$(LANGS)) test-conformance test-capture
 
 test-generator: $(VENV)/.stamp
 	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian
@@ -37,6 +38,15 @@ $(addprefix test-,$(LANGS)): test-%: generate
 
 test-conformance: generate
 	$(PY) -m pytest -q tests/conformance
+
+# The device capture decodes completely and identically in the four languages (run when the
+# file exists; `make test` says so when it does not).
+test-capture: generate
+ifneq ($(wildcard $(CAPTURE)),)
+	$(PY) tests/conformance/check_capture.py $(CAPTURE)
+else
+	@echo "test-capture: $(CAPTURE) not found: the device-capture check did not run"
+endif
 
 # The C library built for a big-endian host (s390x, run under qemu-user). Not part of `make test`:
 # needs gcc-s390x-linux-gnu, libc6-dev-s390x-cross and qemu-user (installed by .ci/run).
