@@ -83,6 +83,7 @@ class Builder:
                     "framing": framing,
                     "set_kinds": p["set_kinds"],
                     "shared_data": p.get("shared_data"),
+                    "samples": self._samples(sets, framing),
                     "function_selector": p.get("function_selector"),
                     "reserved_fields": reserved,
                     "types": [self.types[n] for n in sorted(self.types)],
@@ -108,6 +109,34 @@ class Builder:
         # Largest data a single field can carry.
         f["max_field_data"] = min(f["max_payload"] - 2, 255 - f["field_length_adjust"])
         return f
+
+    # ---------------------------------------------------------------- samples
+    def _samples(self, sets: list[dict], framing: dict) -> dict | None:
+        """The sample-grouping rule of docs/conformance.md section 6, derived from the spec.
+
+        `data_sets`: the data sets that group continuation packets (one tracker slot each);
+        `first_shared`: shared descriptors start here; `timestamps`: the shared fields whose value
+        identifies a sample, with their fixed data size; `max_key`: bytes of the largest key.
+        """
+        shared = self.pf.data.get("shared_data")
+        if not shared:
+            return None
+        stamps = []
+        for s in sets:
+            for f in s["fields"]:
+                if not f.get("sample_timestamp"):
+                    continue
+                size = f["variants"][0]["size"]
+                if len(f["variants"]) != 1 or not size["fixed"]:
+                    continue  # reported by _sets
+                stamps.append({"descriptor": f["id"], "size": size["min"]})
+        data = [s["id"] for s in sets if s["kind"] == "data" and not s["shared"]]
+        return {
+            "data_sets": data,
+            "first_shared": shared["first_descriptor"],
+            "timestamps": stamps,
+            "max_key": sum(framing["field_header_size"] + t["size"] for t in stamps),
+        }
 
     # ---------------------------------------------------------------- sources & notes
     def _sources(self, sf: SpecFile, path: tuple, sources: list[dict]) -> list[dict]:
@@ -1032,6 +1061,13 @@ class Builder:
                     for src in f["sources"]
                     if "stated_length" in src
                 ]
+                if f.get("sample_timestamp") and (len(f["variants"]) != 1 or not f["size"]["fixed"]):
+                    self.err(
+                        f["_sf"],
+                        f["_path"] + ("sample_timestamp",),
+                        f"{s['name']}.{f['name']}: a sample timestamp needs one fixed-size layout",
+                        "fixed-size parameters, no variants",
+                    )
                 del f["_sf"], f["_path"]
             del s["_sf"]
         return sets

@@ -8,6 +8,7 @@ Layout of a package (namespace = protocols[].package):
   include/<pkg>/checksum.hpp         Fletcher-16
   include/<pkg>/packet.hpp           PacketBuilder, PacketView, FieldIterator
   include/<pkg>/parser.hpp           StreamParser (docs/conformance.md section 1)
+  include/<pkg>/samples.hpp          SampleTracker, SampleGrouper (continuation packets, section 6)
   include/<pkg>/devices.hpp          Device enum, set kinds
   include/<pkg>/types.hpp            <pkg>::types: enums, bitfields, structs, unions (+ Codec)
   include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec)
@@ -636,6 +637,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),
             "bitfield_test": P.bitfield_test(),
+            "sample_rule": proto.get("samples") or {"data_sets": [], "first_shared": 256, "timestamps": [], "max_key": 0},
         }
         plain = {
             "framing.hpp": "framing.hpp.j2",
@@ -643,6 +645,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "checksum.hpp": "checksum.hpp.j2",
             "packet.hpp": "packet.hpp.j2",
             "parser.hpp": "parser.hpp.j2",
+            "samples.hpp": "samples.hpp.j2",
             "devices.hpp": "devices.hpp.j2",
             "types.hpp": "types.hpp.j2",
             "types_json.hpp": "types_json.hpp.j2",

@@ -817,6 +817,7 @@ _TEMPLATES = [
     ("json_read.rs.j2", "src/json_read.rs"),
     ("parser.rs.j2", "src/parser.rs"),
     ("fields.rs.j2", "src/fields.rs"),
+    ("samples.rs.j2", "src/samples.rs"),
     ("builder.rs.j2", "src/builder.rs"),
     ("types.rs.j2", "src/types.rs"),
     ("reserved.rs.j2", "src/reserved.rs"),
@@ -840,6 +841,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         ctx["floats"] = model.float_cases()
         ctx["bitfields"] = model.bitfield_cases()
         ctx["short_cases"] = model.short_cases()
+        ctx["sample_rule"] = proto.get("samples") or {"data_sets": [], "first_shared": 256, "timestamps": [], "max_key": 0}
         root = f"rust/{model.package}/"
         for tpl, out in _TEMPLATES:
             files[root + out.format(package=model.package)] = env.get_template(f"rust/{tpl}").render(**ctx)

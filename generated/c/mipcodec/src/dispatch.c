@@ -336,9 +336,77 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_SENSOR_SCALED_ACCEL, "scaled_accel", NULL, MIP_DEVICE_ANY, 0x04},
     {MIP_FIELD_SENSOR_SCALED_GYRO, "scaled_gyro", NULL, MIP_DEVICE_ANY, 0x05},
     {MIP_FIELD_SENSOR_SCALED_MAG, "scaled_mag", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_FILTER_DATA_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_FILTER_DATA_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x02},
+    {MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, "attitude_quaternion", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_FILTER_DATA_ATTITUDE_DCM, "attitude_dcm", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_FILTER_DATA_EULER_ANGLES, "euler_angles", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_FILTER_DATA_GYRO_BIAS, "gyro_bias", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_FILTER_DATA_ACCEL_BIAS, "accel_bias", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY, "llh_position_uncertainty", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY, "ned_velocity_uncertainty", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY, "euler_angles_uncertainty", NULL, MIP_DEVICE_ANY, 0x0A},
+    {MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY, "gyro_bias_uncertainty", NULL, MIP_DEVICE_ANY, 0x0B},
+    {MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY, "accel_bias_uncertainty", NULL, MIP_DEVICE_ANY, 0x0C},
+    {MIP_FIELD_FILTER_DATA_LINEAR_ACCEL, "linear_accel", NULL, MIP_DEVICE_ANY, 0x0D},
+    {MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE, "comp_angular_rate", NULL, MIP_DEVICE_ANY, 0x0E},
+    {MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE, "wgs84_gravity_magnitude", NULL, MIP_DEVICE_ANY, 0x0F},
+    {MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45, "filter_status", "gx5_45", MIP_DEVICE_GX5_45, 0x10},
+    {MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS, "filter_status", "cv7_ins", MIP_DEVICE_CV7_INS, 0x10},
+    {MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP, "gps_timestamp", NULL, MIP_DEVICE_ANY, 0x11},
+    {MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY, "quaternion_attitude_uncertainty", NULL,
+     MIP_DEVICE_ANY, 0x12},
+    {MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR, "gravity_vector", NULL, MIP_DEVICE_ANY, 0x13},
+    {MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE, "heading_update_state", NULL, MIP_DEVICE_ANY, 0x14},
+    {MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL, "magnetic_model", NULL, MIP_DEVICE_ANY, 0x15},
+    {MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR, "gyro_scale_factor", NULL, MIP_DEVICE_ANY, 0x16},
+    {MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR, "accel_scale_factor", NULL, MIP_DEVICE_ANY, 0x17},
+    {MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY, "gyro_scale_factor_uncertainty", NULL,
+     MIP_DEVICE_ANY, 0x18},
+    {MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY, "accel_scale_factor_uncertainty", NULL,
+     MIP_DEVICE_ANY, 0x19},
+    {MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL, "compensated_accel", NULL, MIP_DEVICE_ANY, 0x1C},
+    {MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE, "standard_atmosphere", NULL, MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE, "pressure_altitude", NULL, MIP_DEVICE_ANY, 0x21},
+    {MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET, "mag_auto_hard_iron_offset", NULL, MIP_DEVICE_ANY,
+     0x25},
+    {MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX, "mag_auto_soft_iron_matrix", NULL, MIP_DEVICE_ANY,
+     0x26},
+    {MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY, "mag_auto_hard_iron_offset_uncertainty",
+     NULL, MIP_DEVICE_ANY, 0x28},
+    {MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY, "mag_auto_soft_iron_matrix_uncertainty",
+     NULL, MIP_DEVICE_ANY, 0x29},
+    {MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION, "gnss_antenna_offset_correction", NULL,
+     MIP_DEVICE_ANY, 0x30},
+    {MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY,
+     "gnss_antenna_offset_correction_uncertainty", NULL, MIP_DEVICE_ANY, 0x31},
+    {MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION, "multi_antenna_offset_correction", NULL,
+     MIP_DEVICE_ANY, 0x34},
+    {MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY,
+     "multi_antenna_offset_correction_uncertainty", NULL, MIP_DEVICE_ANY, 0x35},
+    {MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY, "ecef_position_uncertainty", NULL, MIP_DEVICE_ANY,
+     0x36},
+    {MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY, "ecef_velocity_uncertainty", NULL, MIP_DEVICE_ANY,
+     0x37},
+    {MIP_FIELD_FILTER_DATA_ECEF_POSITION, "ecef_position", NULL, MIP_DEVICE_ANY, 0x40},
+    {MIP_FIELD_FILTER_DATA_ECEF_VELOCITY, "ecef_velocity", NULL, MIP_DEVICE_ANY, 0x41},
+    {MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION, "ned_relative_position", NULL, MIP_DEVICE_ANY, 0x42},
+    {MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS, "gnss_position_aiding_status", NULL, MIP_DEVICE_ANY,
+     0x43},
+    {MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY, "aiding_measurement_summary", NULL, MIP_DEVICE_ANY,
+     0x46},
+    {MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR, "odometer_scale_factor_error", NULL, MIP_DEVICE_ANY,
+     0x47},
+    {MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY, "odometer_scale_factor_error_uncertainty",
+     NULL, MIP_DEVICE_ANY, 0x48},
+    {MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS, "gnss_dual_antenna_status", NULL, MIP_DEVICE_ANY, 0x49},
+    {MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR, "aiding_frame_config_error", NULL, MIP_DEVICE_ANY,
+     0x50},
+    {MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, "aiding_frame_config_error_uncertainty",
+     NULL, MIP_DEVICE_ANY, 0x51},
 };
 
-static const mip_field_info_t k_fields[214] = {
+static const mip_field_info_t k_fields[262] = {
     {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                   /* 0 */
     {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                      /* 1 */
     {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                        /* 2 */
@@ -584,6 +652,64 @@ static const mip_field_info_t k_fields[214] = {
     {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 211 */
     {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 212 */
     {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 213 */
+    {"llh_position", 0x01, MIP_FIELD_FILTER_DATA_LLH_POSITION, 1},                            /* 214 */
+    {"ned_velocity", 0x02, MIP_FIELD_FILTER_DATA_NED_VELOCITY, 1},                            /* 215 */
+    {"attitude_quaternion", 0x03, MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, 1},              /* 216 */
+    {"attitude_dcm", 0x04, MIP_FIELD_FILTER_DATA_ATTITUDE_DCM, 1},                            /* 217 */
+    {"euler_angles", 0x05, MIP_FIELD_FILTER_DATA_EULER_ANGLES, 1},                            /* 218 */
+    {"gyro_bias", 0x06, MIP_FIELD_FILTER_DATA_GYRO_BIAS, 1},                                  /* 219 */
+    {"accel_bias", 0x07, MIP_FIELD_FILTER_DATA_ACCEL_BIAS, 1},                                /* 220 */
+    {"llh_position_uncertainty", 0x08, MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY, 1},    /* 221 */
+    {"ned_velocity_uncertainty", 0x09, MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY, 1},    /* 222 */
+    {"euler_angles_uncertainty", 0x0A, MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY, 1},    /* 223 */
+    {"gyro_bias_uncertainty", 0x0B, MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY, 1},          /* 224 */
+    {"accel_bias_uncertainty", 0x0C, MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY, 1},        /* 225 */
+    {"linear_accel", 0x0D, MIP_FIELD_FILTER_DATA_LINEAR_ACCEL, 1},                            /* 226 */
+    {"comp_angular_rate", 0x0E, MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE, 1},                  /* 227 */
+    {"wgs84_gravity_magnitude", 0x0F, MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE, 1},      /* 228 */
+    {"filter_status", 0x10, MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45, 2},                   /* 229 */
+    {"gps_timestamp", 0x11, MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP, 1},                          /* 230 */
+    {"quaternion_attitude_uncertainty", 0x12, MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY,
+     1},                                                                                             /* 231 */
+    {"gravity_vector", 0x13, MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR, 1},                               /* 232 */
+    {"heading_update_state", 0x14, MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE, 1},                   /* 233 */
+    {"magnetic_model", 0x15, MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL, 1},                               /* 234 */
+    {"gyro_scale_factor", 0x16, MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR, 1},                         /* 235 */
+    {"accel_scale_factor", 0x17, MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR, 1},                       /* 236 */
+    {"gyro_scale_factor_uncertainty", 0x18, MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY, 1}, /* 237 */
+    {"accel_scale_factor_uncertainty", 0x19, MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY,
+     1},                                                                                     /* 238 */
+    {"compensated_accel", 0x1C, MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL, 1},                 /* 239 */
+    {"standard_atmosphere", 0x20, MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE, 1},             /* 240 */
+    {"pressure_altitude", 0x21, MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE, 1},                 /* 241 */
+    {"mag_auto_hard_iron_offset", 0x25, MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET, 1}, /* 242 */
+    {"mag_auto_soft_iron_matrix", 0x26, MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX, 1}, /* 243 */
+    {"mag_auto_hard_iron_offset_uncertainty", 0x28,
+     MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY, 1}, /* 244 */
+    {"mag_auto_soft_iron_matrix_uncertainty", 0x29,
+     MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY, 1}, /* 245 */
+    {"gnss_antenna_offset_correction", 0x30, MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION,
+     1}, /* 246 */
+    {"gnss_antenna_offset_correction_uncertainty", 0x31,
+     MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1}, /* 247 */
+    {"multi_antenna_offset_correction", 0x34, MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION,
+     1}, /* 248 */
+    {"multi_antenna_offset_correction_uncertainty", 0x35,
+     MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1},                      /* 249 */
+    {"ecef_position_uncertainty", 0x36, MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY, 1},     /* 250 */
+    {"ecef_velocity_uncertainty", 0x37, MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY, 1},     /* 251 */
+    {"ecef_position", 0x40, MIP_FIELD_FILTER_DATA_ECEF_POSITION, 1},                             /* 252 */
+    {"ecef_velocity", 0x41, MIP_FIELD_FILTER_DATA_ECEF_VELOCITY, 1},                             /* 253 */
+    {"ned_relative_position", 0x42, MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION, 1},             /* 254 */
+    {"gnss_position_aiding_status", 0x43, MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS, 1}, /* 255 */
+    {"aiding_measurement_summary", 0x46, MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY, 1},   /* 256 */
+    {"odometer_scale_factor_error", 0x47, MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR, 1}, /* 257 */
+    {"odometer_scale_factor_error_uncertainty", 0x48,
+     MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY, 1},                      /* 258 */
+    {"gnss_dual_antenna_status", 0x49, MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS, 1},   /* 259 */
+    {"aiding_frame_config_error", 0x50, MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR, 1}, /* 260 */
+    {"aiding_frame_config_error_uncertainty", 0x51,
+     MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, 1}, /* 261 */
 };
 
 const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
@@ -1055,6 +1181,107 @@ static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *se
             return &k_fields[212]; /* scaled_gyro */
         case 0x06:
             return &k_fields[213]; /* scaled_mag */
+        default:
+            return NULL;
+        }
+    case 0x82: /* filter_data */
+        switch (descriptor) {
+        case 0x01:
+            return &k_fields[214]; /* llh_position */
+        case 0x02:
+            return &k_fields[215]; /* ned_velocity */
+        case 0x03:
+            return &k_fields[216]; /* attitude_quaternion */
+        case 0x04:
+            return &k_fields[217]; /* attitude_dcm */
+        case 0x05:
+            return &k_fields[218]; /* euler_angles */
+        case 0x06:
+            return &k_fields[219]; /* gyro_bias */
+        case 0x07:
+            return &k_fields[220]; /* accel_bias */
+        case 0x08:
+            return &k_fields[221]; /* llh_position_uncertainty */
+        case 0x09:
+            return &k_fields[222]; /* ned_velocity_uncertainty */
+        case 0x0A:
+            return &k_fields[223]; /* euler_angles_uncertainty */
+        case 0x0B:
+            return &k_fields[224]; /* gyro_bias_uncertainty */
+        case 0x0C:
+            return &k_fields[225]; /* accel_bias_uncertainty */
+        case 0x0D:
+            return &k_fields[226]; /* linear_accel */
+        case 0x0E:
+            return &k_fields[227]; /* comp_angular_rate */
+        case 0x0F:
+            return &k_fields[228]; /* wgs84_gravity_magnitude */
+        case 0x10:
+            return &k_fields[229]; /* filter_status */
+        case 0x11:
+            return &k_fields[230]; /* gps_timestamp */
+        case 0x12:
+            return &k_fields[231]; /* quaternion_attitude_uncertainty */
+        case 0x13:
+            return &k_fields[232]; /* gravity_vector */
+        case 0x14:
+            return &k_fields[233]; /* heading_update_state */
+        case 0x15:
+            return &k_fields[234]; /* magnetic_model */
+        case 0x16:
+            return &k_fields[235]; /* gyro_scale_factor */
+        case 0x17:
+            return &k_fields[236]; /* accel_scale_factor */
+        case 0x18:
+            return &k_fields[237]; /* gyro_scale_factor_uncertainty */
+        case 0x19:
+            return &k_fields[238]; /* accel_scale_factor_uncertainty */
+        case 0x1C:
+            return &k_fields[239]; /* compensated_accel */
+        case 0x20:
+            return &k_fields[240]; /* standard_atmosphere */
+        case 0x21:
+            return &k_fields[241]; /* pressure_altitude */
+        case 0x25:
+            return &k_fields[242]; /* mag_auto_hard_iron_offset */
+        case 0x26:
+            return &k_fields[243]; /* mag_auto_soft_iron_matrix */
+        case 0x28:
+            return &k_fields[244]; /* mag_auto_hard_iron_offset_uncertainty */
+        case 0x29:
+            return &k_fields[245]; /* mag_auto_soft_iron_matrix_uncertainty */
+        case 0x30:
+            return &k_fields[246]; /* gnss_antenna_offset_correction */
+        case 0x31:
+            return &k_fields[247]; /* gnss_antenna_offset_correction_uncertainty */
+        case 0x34:
+            return &k_fields[248]; /* multi_antenna_offset_correction */
+        case 0x35:
+            return &k_fields[249]; /* multi_antenna_offset_correction_uncertainty */
+        case 0x36:
+            return &k_fields[250]; /* ecef_position_uncertainty */
+        case 0x37:
+            return &k_fields[251]; /* ecef_velocity_uncertainty */
+        case 0x40:
+            return &k_fields[252]; /* ecef_position */
+        case 0x41:
+            return &k_fields[253]; /* ecef_velocity */
+        case 0x42:
+            return &k_fields[254]; /* ned_relative_position */
+        case 0x43:
+            return &k_fields[255]; /* gnss_position_aiding_status */
+        case 0x46:
+            return &k_fields[256]; /* aiding_measurement_summary */
+        case 0x47:
+            return &k_fields[257]; /* odometer_scale_factor_error */
+        case 0x48:
+            return &k_fields[258]; /* odometer_scale_factor_error_uncertainty */
+        case 0x49:
+            return &k_fields[259]; /* gnss_dual_antenna_status */
+        case 0x50:
+            return &k_fields[260]; /* aiding_frame_config_error */
+        case 0x51:
+            return &k_fields[261]; /* aiding_frame_config_error_uncertainty */
         default:
             return NULL;
         }
@@ -1654,6 +1881,141 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
         return mip_sensor_scaled_gyro_decode(data, len, &out->u.sensor_scaled_gyro, err);
     case MIP_FIELD_SENSOR_SCALED_MAG:
         return mip_sensor_scaled_mag_decode(data, len, &out->u.sensor_scaled_mag, err);
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION:
+        return mip_filter_data_llh_position_decode(data, len, &out->u.filter_data_llh_position, err);
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
+        return mip_filter_data_ned_velocity_decode(data, len, &out->u.filter_data_ned_velocity, err);
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION:
+        return mip_filter_data_attitude_quaternion_decode(data, len, &out->u.filter_data_attitude_quaternion,
+                                                          err);
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_DCM:
+        return mip_filter_data_attitude_dcm_decode(data, len, &out->u.filter_data_attitude_dcm, err);
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES:
+        return mip_filter_data_euler_angles_decode(data, len, &out->u.filter_data_euler_angles, err);
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS:
+        return mip_filter_data_gyro_bias_decode(data, len, &out->u.filter_data_gyro_bias, err);
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS:
+        return mip_filter_data_accel_bias_decode(data, len, &out->u.filter_data_accel_bias, err);
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY:
+        return mip_filter_data_llh_position_uncertainty_decode(
+            data, len, &out->u.filter_data_llh_position_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY:
+        return mip_filter_data_ned_velocity_uncertainty_decode(
+            data, len, &out->u.filter_data_ned_velocity_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY:
+        return mip_filter_data_euler_angles_uncertainty_decode(
+            data, len, &out->u.filter_data_euler_angles_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY:
+        return mip_filter_data_gyro_bias_uncertainty_decode(data, len,
+                                                            &out->u.filter_data_gyro_bias_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY:
+        return mip_filter_data_accel_bias_uncertainty_decode(data, len,
+                                                             &out->u.filter_data_accel_bias_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_LINEAR_ACCEL:
+        return mip_filter_data_linear_accel_decode(data, len, &out->u.filter_data_linear_accel, err);
+    case MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE:
+        return mip_filter_data_comp_angular_rate_decode(data, len, &out->u.filter_data_comp_angular_rate,
+                                                        err);
+    case MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE:
+        return mip_filter_data_wgs84_gravity_magnitude_decode(
+            data, len, &out->u.filter_data_wgs84_gravity_magnitude, err);
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45:
+        return mip_filter_data_filter_status_gx5_45_decode(data, len,
+                                                           &out->u.filter_data_filter_status_gx5_45, err);
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS:
+        return mip_filter_data_filter_status_cv7_ins_decode(data, len,
+                                                            &out->u.filter_data_filter_status_cv7_ins, err);
+    case MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP:
+        return mip_filter_data_gps_timestamp_decode(data, len, &out->u.filter_data_gps_timestamp, err);
+    case MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY:
+        return mip_filter_data_quaternion_attitude_uncertainty_decode(
+            data, len, &out->u.filter_data_quaternion_attitude_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR:
+        return mip_filter_data_gravity_vector_decode(data, len, &out->u.filter_data_gravity_vector, err);
+    case MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE:
+        return mip_filter_data_heading_update_state_decode(data, len,
+                                                           &out->u.filter_data_heading_update_state, err);
+    case MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL:
+        return mip_filter_data_magnetic_model_decode(data, len, &out->u.filter_data_magnetic_model, err);
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR:
+        return mip_filter_data_gyro_scale_factor_decode(data, len, &out->u.filter_data_gyro_scale_factor,
+                                                        err);
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR:
+        return mip_filter_data_accel_scale_factor_decode(data, len, &out->u.filter_data_accel_scale_factor,
+                                                         err);
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY:
+        return mip_filter_data_gyro_scale_factor_uncertainty_decode(
+            data, len, &out->u.filter_data_gyro_scale_factor_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY:
+        return mip_filter_data_accel_scale_factor_uncertainty_decode(
+            data, len, &out->u.filter_data_accel_scale_factor_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL:
+        return mip_filter_data_compensated_accel_decode(data, len, &out->u.filter_data_compensated_accel,
+                                                        err);
+    case MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE:
+        return mip_filter_data_standard_atmosphere_decode(data, len, &out->u.filter_data_standard_atmosphere,
+                                                          err);
+    case MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE:
+        return mip_filter_data_pressure_altitude_decode(data, len, &out->u.filter_data_pressure_altitude,
+                                                        err);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET:
+        return mip_filter_data_mag_auto_hard_iron_offset_decode(
+            data, len, &out->u.filter_data_mag_auto_hard_iron_offset, err);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX:
+        return mip_filter_data_mag_auto_soft_iron_matrix_decode(
+            data, len, &out->u.filter_data_mag_auto_soft_iron_matrix, err);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY:
+        return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
+            data, len, &out->u.filter_data_mag_auto_hard_iron_offset_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY:
+        return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
+            data, len, &out->u.filter_data_mag_auto_soft_iron_matrix_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION:
+        return mip_filter_data_gnss_antenna_offset_correction_decode(
+            data, len, &out->u.filter_data_gnss_antenna_offset_correction, err);
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        return mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
+            data, len, &out->u.filter_data_gnss_antenna_offset_correction_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION:
+        return mip_filter_data_multi_antenna_offset_correction_decode(
+            data, len, &out->u.filter_data_multi_antenna_offset_correction, err);
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        return mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
+            data, len, &out->u.filter_data_multi_antenna_offset_correction_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY:
+        return mip_filter_data_ecef_position_uncertainty_decode(
+            data, len, &out->u.filter_data_ecef_position_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY:
+        return mip_filter_data_ecef_velocity_uncertainty_decode(
+            data, len, &out->u.filter_data_ecef_velocity_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION:
+        return mip_filter_data_ecef_position_decode(data, len, &out->u.filter_data_ecef_position, err);
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY:
+        return mip_filter_data_ecef_velocity_decode(data, len, &out->u.filter_data_ecef_velocity, err);
+    case MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION:
+        return mip_filter_data_ned_relative_position_decode(data, len,
+                                                            &out->u.filter_data_ned_relative_position, err);
+    case MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS:
+        return mip_filter_data_gnss_position_aiding_status_decode(
+            data, len, &out->u.filter_data_gnss_position_aiding_status, err);
+    case MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY:
+        return mip_filter_data_aiding_measurement_summary_decode(
+            data, len, &out->u.filter_data_aiding_measurement_summary, err);
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR:
+        return mip_filter_data_odometer_scale_factor_error_decode(
+            data, len, &out->u.filter_data_odometer_scale_factor_error, err);
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY:
+        return mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
+            data, len, &out->u.filter_data_odometer_scale_factor_error_uncertainty, err);
+    case MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS:
+        return mip_filter_data_gnss_dual_antenna_status_decode(
+            data, len, &out->u.filter_data_gnss_dual_antenna_status, err);
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR:
+        return mip_filter_data_aiding_frame_config_error_decode(
+            data, len, &out->u.filter_data_aiding_frame_config_error, err);
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
+        return mip_filter_data_aiding_frame_config_error_uncertainty_decode(
+            data, len, &out->u.filter_data_aiding_frame_config_error_uncertainty, err);
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:
@@ -2286,6 +2648,141 @@ mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size
         return mip_sensor_scaled_gyro_encode(&value->u.sensor_scaled_gyro, buf, cap, len_out);
     case MIP_FIELD_SENSOR_SCALED_MAG:
         return mip_sensor_scaled_mag_encode(&value->u.sensor_scaled_mag, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION:
+        return mip_filter_data_llh_position_encode(&value->u.filter_data_llh_position, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
+        return mip_filter_data_ned_velocity_encode(&value->u.filter_data_ned_velocity, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION:
+        return mip_filter_data_attitude_quaternion_encode(&value->u.filter_data_attitude_quaternion, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_DCM:
+        return mip_filter_data_attitude_dcm_encode(&value->u.filter_data_attitude_dcm, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES:
+        return mip_filter_data_euler_angles_encode(&value->u.filter_data_euler_angles, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS:
+        return mip_filter_data_gyro_bias_encode(&value->u.filter_data_gyro_bias, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS:
+        return mip_filter_data_accel_bias_encode(&value->u.filter_data_accel_bias, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY:
+        return mip_filter_data_llh_position_uncertainty_encode(&value->u.filter_data_llh_position_uncertainty,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY:
+        return mip_filter_data_ned_velocity_uncertainty_encode(&value->u.filter_data_ned_velocity_uncertainty,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY:
+        return mip_filter_data_euler_angles_uncertainty_encode(&value->u.filter_data_euler_angles_uncertainty,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY:
+        return mip_filter_data_gyro_bias_uncertainty_encode(&value->u.filter_data_gyro_bias_uncertainty, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY:
+        return mip_filter_data_accel_bias_uncertainty_encode(&value->u.filter_data_accel_bias_uncertainty,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_LINEAR_ACCEL:
+        return mip_filter_data_linear_accel_encode(&value->u.filter_data_linear_accel, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE:
+        return mip_filter_data_comp_angular_rate_encode(&value->u.filter_data_comp_angular_rate, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE:
+        return mip_filter_data_wgs84_gravity_magnitude_encode(&value->u.filter_data_wgs84_gravity_magnitude,
+                                                              buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45:
+        return mip_filter_data_filter_status_gx5_45_encode(&value->u.filter_data_filter_status_gx5_45, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS:
+        return mip_filter_data_filter_status_cv7_ins_encode(&value->u.filter_data_filter_status_cv7_ins, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP:
+        return mip_filter_data_gps_timestamp_encode(&value->u.filter_data_gps_timestamp, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY:
+        return mip_filter_data_quaternion_attitude_uncertainty_encode(
+            &value->u.filter_data_quaternion_attitude_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR:
+        return mip_filter_data_gravity_vector_encode(&value->u.filter_data_gravity_vector, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE:
+        return mip_filter_data_heading_update_state_encode(&value->u.filter_data_heading_update_state, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL:
+        return mip_filter_data_magnetic_model_encode(&value->u.filter_data_magnetic_model, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR:
+        return mip_filter_data_gyro_scale_factor_encode(&value->u.filter_data_gyro_scale_factor, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR:
+        return mip_filter_data_accel_scale_factor_encode(&value->u.filter_data_accel_scale_factor, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY:
+        return mip_filter_data_gyro_scale_factor_uncertainty_encode(
+            &value->u.filter_data_gyro_scale_factor_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY:
+        return mip_filter_data_accel_scale_factor_uncertainty_encode(
+            &value->u.filter_data_accel_scale_factor_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL:
+        return mip_filter_data_compensated_accel_encode(&value->u.filter_data_compensated_accel, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE:
+        return mip_filter_data_standard_atmosphere_encode(&value->u.filter_data_standard_atmosphere, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE:
+        return mip_filter_data_pressure_altitude_encode(&value->u.filter_data_pressure_altitude, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET:
+        return mip_filter_data_mag_auto_hard_iron_offset_encode(
+            &value->u.filter_data_mag_auto_hard_iron_offset, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX:
+        return mip_filter_data_mag_auto_soft_iron_matrix_encode(
+            &value->u.filter_data_mag_auto_soft_iron_matrix, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY:
+        return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
+            &value->u.filter_data_mag_auto_hard_iron_offset_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY:
+        return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
+            &value->u.filter_data_mag_auto_soft_iron_matrix_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION:
+        return mip_filter_data_gnss_antenna_offset_correction_encode(
+            &value->u.filter_data_gnss_antenna_offset_correction, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        return mip_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
+            &value->u.filter_data_gnss_antenna_offset_correction_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION:
+        return mip_filter_data_multi_antenna_offset_correction_encode(
+            &value->u.filter_data_multi_antenna_offset_correction, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        return mip_filter_data_multi_antenna_offset_correction_uncertainty_encode(
+            &value->u.filter_data_multi_antenna_offset_correction_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY:
+        return mip_filter_data_ecef_position_uncertainty_encode(
+            &value->u.filter_data_ecef_position_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY:
+        return mip_filter_data_ecef_velocity_uncertainty_encode(
+            &value->u.filter_data_ecef_velocity_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION:
+        return mip_filter_data_ecef_position_encode(&value->u.filter_data_ecef_position, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY:
+        return mip_filter_data_ecef_velocity_encode(&value->u.filter_data_ecef_velocity, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION:
+        return mip_filter_data_ned_relative_position_encode(&value->u.filter_data_ned_relative_position, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS:
+        return mip_filter_data_gnss_position_aiding_status_encode(
+            &value->u.filter_data_gnss_position_aiding_status, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY:
+        return mip_filter_data_aiding_measurement_summary_encode(
+            &value->u.filter_data_aiding_measurement_summary, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR:
+        return mip_filter_data_odometer_scale_factor_error_encode(
+            &value->u.filter_data_odometer_scale_factor_error, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY:
+        return mip_filter_data_odometer_scale_factor_error_uncertainty_encode(
+            &value->u.filter_data_odometer_scale_factor_error_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS:
+        return mip_filter_data_gnss_dual_antenna_status_encode(&value->u.filter_data_gnss_dual_antenna_status,
+                                                               buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR:
+        return mip_filter_data_aiding_frame_config_error_encode(
+            &value->u.filter_data_aiding_frame_config_error, buf, cap, len_out);
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
+        return mip_filter_data_aiding_frame_config_error_uncertainty_encode(
+            &value->u.filter_data_aiding_frame_config_error_uncertainty, buf, cap, len_out);
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:
@@ -3008,6 +3505,167 @@ void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
     case MIP_FIELD_SENSOR_SCALED_MAG:
         mip_sensor_scaled_mag_to_json(w, &value->u.sensor_scaled_mag);
         return;
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION:
+        mip_filter_data_llh_position_to_json(w, &value->u.filter_data_llh_position);
+        return;
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
+        mip_filter_data_ned_velocity_to_json(w, &value->u.filter_data_ned_velocity);
+        return;
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION:
+        mip_filter_data_attitude_quaternion_to_json(w, &value->u.filter_data_attitude_quaternion);
+        return;
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_DCM:
+        mip_filter_data_attitude_dcm_to_json(w, &value->u.filter_data_attitude_dcm);
+        return;
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES:
+        mip_filter_data_euler_angles_to_json(w, &value->u.filter_data_euler_angles);
+        return;
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS:
+        mip_filter_data_gyro_bias_to_json(w, &value->u.filter_data_gyro_bias);
+        return;
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS:
+        mip_filter_data_accel_bias_to_json(w, &value->u.filter_data_accel_bias);
+        return;
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY:
+        mip_filter_data_llh_position_uncertainty_to_json(w, &value->u.filter_data_llh_position_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY:
+        mip_filter_data_ned_velocity_uncertainty_to_json(w, &value->u.filter_data_ned_velocity_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY:
+        mip_filter_data_euler_angles_uncertainty_to_json(w, &value->u.filter_data_euler_angles_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY:
+        mip_filter_data_gyro_bias_uncertainty_to_json(w, &value->u.filter_data_gyro_bias_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY:
+        mip_filter_data_accel_bias_uncertainty_to_json(w, &value->u.filter_data_accel_bias_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_LINEAR_ACCEL:
+        mip_filter_data_linear_accel_to_json(w, &value->u.filter_data_linear_accel);
+        return;
+    case MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE:
+        mip_filter_data_comp_angular_rate_to_json(w, &value->u.filter_data_comp_angular_rate);
+        return;
+    case MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE:
+        mip_filter_data_wgs84_gravity_magnitude_to_json(w, &value->u.filter_data_wgs84_gravity_magnitude);
+        return;
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45:
+        mip_filter_data_filter_status_gx5_45_to_json(w, &value->u.filter_data_filter_status_gx5_45);
+        return;
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS:
+        mip_filter_data_filter_status_cv7_ins_to_json(w, &value->u.filter_data_filter_status_cv7_ins);
+        return;
+    case MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP:
+        mip_filter_data_gps_timestamp_to_json(w, &value->u.filter_data_gps_timestamp);
+        return;
+    case MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY:
+        mip_filter_data_quaternion_attitude_uncertainty_to_json(
+            w, &value->u.filter_data_quaternion_attitude_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR:
+        mip_filter_data_gravity_vector_to_json(w, &value->u.filter_data_gravity_vector);
+        return;
+    case MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE:
+        mip_filter_data_heading_update_state_to_json(w, &value->u.filter_data_heading_update_state);
+        return;
+    case MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL:
+        mip_filter_data_magnetic_model_to_json(w, &value->u.filter_data_magnetic_model);
+        return;
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR:
+        mip_filter_data_gyro_scale_factor_to_json(w, &value->u.filter_data_gyro_scale_factor);
+        return;
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR:
+        mip_filter_data_accel_scale_factor_to_json(w, &value->u.filter_data_accel_scale_factor);
+        return;
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY:
+        mip_filter_data_gyro_scale_factor_uncertainty_to_json(
+            w, &value->u.filter_data_gyro_scale_factor_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY:
+        mip_filter_data_accel_scale_factor_uncertainty_to_json(
+            w, &value->u.filter_data_accel_scale_factor_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL:
+        mip_filter_data_compensated_accel_to_json(w, &value->u.filter_data_compensated_accel);
+        return;
+    case MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE:
+        mip_filter_data_standard_atmosphere_to_json(w, &value->u.filter_data_standard_atmosphere);
+        return;
+    case MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE:
+        mip_filter_data_pressure_altitude_to_json(w, &value->u.filter_data_pressure_altitude);
+        return;
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET:
+        mip_filter_data_mag_auto_hard_iron_offset_to_json(w, &value->u.filter_data_mag_auto_hard_iron_offset);
+        return;
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX:
+        mip_filter_data_mag_auto_soft_iron_matrix_to_json(w, &value->u.filter_data_mag_auto_soft_iron_matrix);
+        return;
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY:
+        mip_filter_data_mag_auto_hard_iron_offset_uncertainty_to_json(
+            w, &value->u.filter_data_mag_auto_hard_iron_offset_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY:
+        mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_to_json(
+            w, &value->u.filter_data_mag_auto_soft_iron_matrix_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION:
+        mip_filter_data_gnss_antenna_offset_correction_to_json(
+            w, &value->u.filter_data_gnss_antenna_offset_correction);
+        return;
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        mip_filter_data_gnss_antenna_offset_correction_uncertainty_to_json(
+            w, &value->u.filter_data_gnss_antenna_offset_correction_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION:
+        mip_filter_data_multi_antenna_offset_correction_to_json(
+            w, &value->u.filter_data_multi_antenna_offset_correction);
+        return;
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        mip_filter_data_multi_antenna_offset_correction_uncertainty_to_json(
+            w, &value->u.filter_data_multi_antenna_offset_correction_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY:
+        mip_filter_data_ecef_position_uncertainty_to_json(w, &value->u.filter_data_ecef_position_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY:
+        mip_filter_data_ecef_velocity_uncertainty_to_json(w, &value->u.filter_data_ecef_velocity_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION:
+        mip_filter_data_ecef_position_to_json(w, &value->u.filter_data_ecef_position);
+        return;
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY:
+        mip_filter_data_ecef_velocity_to_json(w, &value->u.filter_data_ecef_velocity);
+        return;
+    case MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION:
+        mip_filter_data_ned_relative_position_to_json(w, &value->u.filter_data_ned_relative_position);
+        return;
+    case MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS:
+        mip_filter_data_gnss_position_aiding_status_to_json(
+            w, &value->u.filter_data_gnss_position_aiding_status);
+        return;
+    case MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY:
+        mip_filter_data_aiding_measurement_summary_to_json(w,
+                                                           &value->u.filter_data_aiding_measurement_summary);
+        return;
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR:
+        mip_filter_data_odometer_scale_factor_error_to_json(
+            w, &value->u.filter_data_odometer_scale_factor_error);
+        return;
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY:
+        mip_filter_data_odometer_scale_factor_error_uncertainty_to_json(
+            w, &value->u.filter_data_odometer_scale_factor_error_uncertainty);
+        return;
+    case MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS:
+        mip_filter_data_gnss_dual_antenna_status_to_json(w, &value->u.filter_data_gnss_dual_antenna_status);
+        return;
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR:
+        mip_filter_data_aiding_frame_config_error_to_json(w, &value->u.filter_data_aiding_frame_config_error);
+        return;
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
+        mip_filter_data_aiding_frame_config_error_uncertainty_to_json(
+            w, &value->u.filter_data_aiding_frame_config_error_uncertainty);
+        return;
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:
@@ -3569,6 +4227,137 @@ int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_v
         return mip_sensor_scaled_gyro_from_json(jr, pos, &value->u.sensor_scaled_gyro);
     case MIP_FIELD_SENSOR_SCALED_MAG:
         return mip_sensor_scaled_mag_from_json(jr, pos, &value->u.sensor_scaled_mag);
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION:
+        return mip_filter_data_llh_position_from_json(jr, pos, &value->u.filter_data_llh_position);
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
+        return mip_filter_data_ned_velocity_from_json(jr, pos, &value->u.filter_data_ned_velocity);
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION:
+        return mip_filter_data_attitude_quaternion_from_json(jr, pos,
+                                                             &value->u.filter_data_attitude_quaternion);
+    case MIP_FIELD_FILTER_DATA_ATTITUDE_DCM:
+        return mip_filter_data_attitude_dcm_from_json(jr, pos, &value->u.filter_data_attitude_dcm);
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES:
+        return mip_filter_data_euler_angles_from_json(jr, pos, &value->u.filter_data_euler_angles);
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS:
+        return mip_filter_data_gyro_bias_from_json(jr, pos, &value->u.filter_data_gyro_bias);
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS:
+        return mip_filter_data_accel_bias_from_json(jr, pos, &value->u.filter_data_accel_bias);
+    case MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY:
+        return mip_filter_data_llh_position_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_llh_position_uncertainty);
+    case MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY:
+        return mip_filter_data_ned_velocity_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_ned_velocity_uncertainty);
+    case MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY:
+        return mip_filter_data_euler_angles_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_euler_angles_uncertainty);
+    case MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY:
+        return mip_filter_data_gyro_bias_uncertainty_from_json(jr, pos,
+                                                               &value->u.filter_data_gyro_bias_uncertainty);
+    case MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY:
+        return mip_filter_data_accel_bias_uncertainty_from_json(jr, pos,
+                                                                &value->u.filter_data_accel_bias_uncertainty);
+    case MIP_FIELD_FILTER_DATA_LINEAR_ACCEL:
+        return mip_filter_data_linear_accel_from_json(jr, pos, &value->u.filter_data_linear_accel);
+    case MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE:
+        return mip_filter_data_comp_angular_rate_from_json(jr, pos, &value->u.filter_data_comp_angular_rate);
+    case MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE:
+        return mip_filter_data_wgs84_gravity_magnitude_from_json(
+            jr, pos, &value->u.filter_data_wgs84_gravity_magnitude);
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45:
+        return mip_filter_data_filter_status_gx5_45_from_json(jr, pos,
+                                                              &value->u.filter_data_filter_status_gx5_45);
+    case MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS:
+        return mip_filter_data_filter_status_cv7_ins_from_json(jr, pos,
+                                                               &value->u.filter_data_filter_status_cv7_ins);
+    case MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP:
+        return mip_filter_data_gps_timestamp_from_json(jr, pos, &value->u.filter_data_gps_timestamp);
+    case MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY:
+        return mip_filter_data_quaternion_attitude_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_quaternion_attitude_uncertainty);
+    case MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR:
+        return mip_filter_data_gravity_vector_from_json(jr, pos, &value->u.filter_data_gravity_vector);
+    case MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE:
+        return mip_filter_data_heading_update_state_from_json(jr, pos,
+                                                              &value->u.filter_data_heading_update_state);
+    case MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL:
+        return mip_filter_data_magnetic_model_from_json(jr, pos, &value->u.filter_data_magnetic_model);
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR:
+        return mip_filter_data_gyro_scale_factor_from_json(jr, pos, &value->u.filter_data_gyro_scale_factor);
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR:
+        return mip_filter_data_accel_scale_factor_from_json(jr, pos,
+                                                            &value->u.filter_data_accel_scale_factor);
+    case MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY:
+        return mip_filter_data_gyro_scale_factor_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_gyro_scale_factor_uncertainty);
+    case MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY:
+        return mip_filter_data_accel_scale_factor_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_accel_scale_factor_uncertainty);
+    case MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL:
+        return mip_filter_data_compensated_accel_from_json(jr, pos, &value->u.filter_data_compensated_accel);
+    case MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE:
+        return mip_filter_data_standard_atmosphere_from_json(jr, pos,
+                                                             &value->u.filter_data_standard_atmosphere);
+    case MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE:
+        return mip_filter_data_pressure_altitude_from_json(jr, pos, &value->u.filter_data_pressure_altitude);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET:
+        return mip_filter_data_mag_auto_hard_iron_offset_from_json(
+            jr, pos, &value->u.filter_data_mag_auto_hard_iron_offset);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX:
+        return mip_filter_data_mag_auto_soft_iron_matrix_from_json(
+            jr, pos, &value->u.filter_data_mag_auto_soft_iron_matrix);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY:
+        return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_mag_auto_hard_iron_offset_uncertainty);
+    case MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY:
+        return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_mag_auto_soft_iron_matrix_uncertainty);
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION:
+        return mip_filter_data_gnss_antenna_offset_correction_from_json(
+            jr, pos, &value->u.filter_data_gnss_antenna_offset_correction);
+    case MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        return mip_filter_data_gnss_antenna_offset_correction_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_gnss_antenna_offset_correction_uncertainty);
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION:
+        return mip_filter_data_multi_antenna_offset_correction_from_json(
+            jr, pos, &value->u.filter_data_multi_antenna_offset_correction);
+    case MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY:
+        return mip_filter_data_multi_antenna_offset_correction_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_multi_antenna_offset_correction_uncertainty);
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY:
+        return mip_filter_data_ecef_position_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_ecef_position_uncertainty);
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY:
+        return mip_filter_data_ecef_velocity_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_ecef_velocity_uncertainty);
+    case MIP_FIELD_FILTER_DATA_ECEF_POSITION:
+        return mip_filter_data_ecef_position_from_json(jr, pos, &value->u.filter_data_ecef_position);
+    case MIP_FIELD_FILTER_DATA_ECEF_VELOCITY:
+        return mip_filter_data_ecef_velocity_from_json(jr, pos, &value->u.filter_data_ecef_velocity);
+    case MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION:
+        return mip_filter_data_ned_relative_position_from_json(jr, pos,
+                                                               &value->u.filter_data_ned_relative_position);
+    case MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS:
+        return mip_filter_data_gnss_position_aiding_status_from_json(
+            jr, pos, &value->u.filter_data_gnss_position_aiding_status);
+    case MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY:
+        return mip_filter_data_aiding_measurement_summary_from_json(
+            jr, pos, &value->u.filter_data_aiding_measurement_summary);
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR:
+        return mip_filter_data_odometer_scale_factor_error_from_json(
+            jr, pos, &value->u.filter_data_odometer_scale_factor_error);
+    case MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY:
+        return mip_filter_data_odometer_scale_factor_error_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_odometer_scale_factor_error_uncertainty);
+    case MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS:
+        return mip_filter_data_gnss_dual_antenna_status_from_json(
+            jr, pos, &value->u.filter_data_gnss_dual_antenna_status);
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR:
+        return mip_filter_data_aiding_frame_config_error_from_json(
+            jr, pos, &value->u.filter_data_aiding_frame_config_error);
+    case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
+        return mip_filter_data_aiding_frame_config_error_uncertainty_from_json(
+            jr, pos, &value->u.filter_data_aiding_frame_config_error_uncertainty);
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:

@@ -687,6 +687,173 @@ void mip_sensor_scaled_gyro_to_json(mip_jw_t *w, const mip_sensor_scaled_gyro_t 
 int mip_sensor_scaled_gyro_from_json(mip_jr_t *jr, size_t pos, mip_sensor_scaled_gyro_t *out);
 void mip_sensor_scaled_mag_to_json(mip_jw_t *w, const mip_sensor_scaled_mag_t *in);
 int mip_sensor_scaled_mag_from_json(mip_jr_t *jr, size_t pos, mip_sensor_scaled_mag_t *out);
+void mip_filter_data_llh_position_to_json(mip_jw_t *w, const mip_filter_data_llh_position_t *in);
+int mip_filter_data_llh_position_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_llh_position_t *out);
+void mip_filter_data_ned_velocity_to_json(mip_jw_t *w, const mip_filter_data_ned_velocity_t *in);
+int mip_filter_data_ned_velocity_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_ned_velocity_t *out);
+void mip_filter_data_attitude_quaternion_to_json(mip_jw_t *w,
+                                                 const mip_filter_data_attitude_quaternion_t *in);
+int mip_filter_data_attitude_quaternion_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_filter_data_attitude_quaternion_t *out);
+void mip_filter_data_attitude_dcm_to_json(mip_jw_t *w, const mip_filter_data_attitude_dcm_t *in);
+int mip_filter_data_attitude_dcm_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_attitude_dcm_t *out);
+void mip_filter_data_euler_angles_to_json(mip_jw_t *w, const mip_filter_data_euler_angles_t *in);
+int mip_filter_data_euler_angles_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_euler_angles_t *out);
+void mip_filter_data_gyro_bias_to_json(mip_jw_t *w, const mip_filter_data_gyro_bias_t *in);
+int mip_filter_data_gyro_bias_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_gyro_bias_t *out);
+void mip_filter_data_accel_bias_to_json(mip_jw_t *w, const mip_filter_data_accel_bias_t *in);
+int mip_filter_data_accel_bias_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_accel_bias_t *out);
+void mip_filter_data_llh_position_uncertainty_to_json(mip_jw_t *w,
+                                                      const mip_filter_data_llh_position_uncertainty_t *in);
+int mip_filter_data_llh_position_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_filter_data_llh_position_uncertainty_t *out);
+void mip_filter_data_ned_velocity_uncertainty_to_json(mip_jw_t *w,
+                                                      const mip_filter_data_ned_velocity_uncertainty_t *in);
+int mip_filter_data_ned_velocity_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_filter_data_ned_velocity_uncertainty_t *out);
+void mip_filter_data_euler_angles_uncertainty_to_json(mip_jw_t *w,
+                                                      const mip_filter_data_euler_angles_uncertainty_t *in);
+int mip_filter_data_euler_angles_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_filter_data_euler_angles_uncertainty_t *out);
+void mip_filter_data_gyro_bias_uncertainty_to_json(mip_jw_t *w,
+                                                   const mip_filter_data_gyro_bias_uncertainty_t *in);
+int mip_filter_data_gyro_bias_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_filter_data_gyro_bias_uncertainty_t *out);
+void mip_filter_data_accel_bias_uncertainty_to_json(mip_jw_t *w,
+                                                    const mip_filter_data_accel_bias_uncertainty_t *in);
+int mip_filter_data_accel_bias_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_filter_data_accel_bias_uncertainty_t *out);
+void mip_filter_data_linear_accel_to_json(mip_jw_t *w, const mip_filter_data_linear_accel_t *in);
+int mip_filter_data_linear_accel_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_linear_accel_t *out);
+void mip_filter_data_comp_angular_rate_to_json(mip_jw_t *w, const mip_filter_data_comp_angular_rate_t *in);
+int mip_filter_data_comp_angular_rate_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_data_comp_angular_rate_t *out);
+void mip_filter_data_wgs84_gravity_magnitude_to_json(mip_jw_t *w,
+                                                     const mip_filter_data_wgs84_gravity_magnitude_t *in);
+int mip_filter_data_wgs84_gravity_magnitude_from_json(mip_jr_t *jr, size_t pos,
+                                                      mip_filter_data_wgs84_gravity_magnitude_t *out);
+void mip_filter_data_filter_status_gx5_45_to_json(mip_jw_t *w,
+                                                  const mip_filter_data_filter_status_gx5_45_t *in);
+int mip_filter_data_filter_status_gx5_45_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_filter_data_filter_status_gx5_45_t *out);
+void mip_filter_data_filter_status_cv7_ins_to_json(mip_jw_t *w,
+                                                   const mip_filter_data_filter_status_cv7_ins_t *in);
+int mip_filter_data_filter_status_cv7_ins_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_filter_data_filter_status_cv7_ins_t *out);
+void mip_filter_data_gps_timestamp_to_json(mip_jw_t *w, const mip_filter_data_gps_timestamp_t *in);
+int mip_filter_data_gps_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_gps_timestamp_t *out);
+void mip_filter_data_quaternion_attitude_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_quaternion_attitude_uncertainty_t *in);
+int mip_filter_data_quaternion_attitude_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_quaternion_attitude_uncertainty_t *out);
+void mip_filter_data_gravity_vector_to_json(mip_jw_t *w, const mip_filter_data_gravity_vector_t *in);
+int mip_filter_data_gravity_vector_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_gravity_vector_t *out);
+void mip_filter_data_heading_update_state_to_json(mip_jw_t *w,
+                                                  const mip_filter_data_heading_update_state_t *in);
+int mip_filter_data_heading_update_state_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_filter_data_heading_update_state_t *out);
+void mip_filter_data_magnetic_model_to_json(mip_jw_t *w, const mip_filter_data_magnetic_model_t *in);
+int mip_filter_data_magnetic_model_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_magnetic_model_t *out);
+void mip_filter_data_gyro_scale_factor_to_json(mip_jw_t *w, const mip_filter_data_gyro_scale_factor_t *in);
+int mip_filter_data_gyro_scale_factor_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_data_gyro_scale_factor_t *out);
+void mip_filter_data_accel_scale_factor_to_json(mip_jw_t *w, const mip_filter_data_accel_scale_factor_t *in);
+int mip_filter_data_accel_scale_factor_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_filter_data_accel_scale_factor_t *out);
+void mip_filter_data_gyro_scale_factor_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_gyro_scale_factor_uncertainty_t *in);
+int mip_filter_data_gyro_scale_factor_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_gyro_scale_factor_uncertainty_t *out);
+void mip_filter_data_accel_scale_factor_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_accel_scale_factor_uncertainty_t *in);
+int mip_filter_data_accel_scale_factor_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_accel_scale_factor_uncertainty_t *out);
+void mip_filter_data_compensated_accel_to_json(mip_jw_t *w, const mip_filter_data_compensated_accel_t *in);
+int mip_filter_data_compensated_accel_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_data_compensated_accel_t *out);
+void mip_filter_data_standard_atmosphere_to_json(mip_jw_t *w,
+                                                 const mip_filter_data_standard_atmosphere_t *in);
+int mip_filter_data_standard_atmosphere_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_filter_data_standard_atmosphere_t *out);
+void mip_filter_data_pressure_altitude_to_json(mip_jw_t *w, const mip_filter_data_pressure_altitude_t *in);
+int mip_filter_data_pressure_altitude_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_filter_data_pressure_altitude_t *out);
+void mip_filter_data_mag_auto_hard_iron_offset_to_json(mip_jw_t *w,
+                                                       const mip_filter_data_mag_auto_hard_iron_offset_t *in);
+int mip_filter_data_mag_auto_hard_iron_offset_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_data_mag_auto_hard_iron_offset_t *out);
+void mip_filter_data_mag_auto_soft_iron_matrix_to_json(mip_jw_t *w,
+                                                       const mip_filter_data_mag_auto_soft_iron_matrix_t *in);
+int mip_filter_data_mag_auto_soft_iron_matrix_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_data_mag_auto_soft_iron_matrix_t *out);
+void mip_filter_data_mag_auto_hard_iron_offset_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *in);
+int mip_filter_data_mag_auto_hard_iron_offset_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out);
+void mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *in);
+int mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out);
+void mip_filter_data_gnss_antenna_offset_correction_to_json(
+    mip_jw_t *w, const mip_filter_data_gnss_antenna_offset_correction_t *in);
+int mip_filter_data_gnss_antenna_offset_correction_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_gnss_antenna_offset_correction_t *out);
+void mip_filter_data_gnss_antenna_offset_correction_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *in);
+int mip_filter_data_gnss_antenna_offset_correction_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out);
+void mip_filter_data_multi_antenna_offset_correction_to_json(
+    mip_jw_t *w, const mip_filter_data_multi_antenna_offset_correction_t *in);
+int mip_filter_data_multi_antenna_offset_correction_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_multi_antenna_offset_correction_t *out);
+void mip_filter_data_multi_antenna_offset_correction_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_multi_antenna_offset_correction_uncertainty_t *in);
+int mip_filter_data_multi_antenna_offset_correction_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out);
+void mip_filter_data_ecef_position_uncertainty_to_json(mip_jw_t *w,
+                                                       const mip_filter_data_ecef_position_uncertainty_t *in);
+int mip_filter_data_ecef_position_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_data_ecef_position_uncertainty_t *out);
+void mip_filter_data_ecef_velocity_uncertainty_to_json(mip_jw_t *w,
+                                                       const mip_filter_data_ecef_velocity_uncertainty_t *in);
+int mip_filter_data_ecef_velocity_uncertainty_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_data_ecef_velocity_uncertainty_t *out);
+void mip_filter_data_ecef_position_to_json(mip_jw_t *w, const mip_filter_data_ecef_position_t *in);
+int mip_filter_data_ecef_position_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_ecef_position_t *out);
+void mip_filter_data_ecef_velocity_to_json(mip_jw_t *w, const mip_filter_data_ecef_velocity_t *in);
+int mip_filter_data_ecef_velocity_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_ecef_velocity_t *out);
+void mip_filter_data_ned_relative_position_to_json(mip_jw_t *w,
+                                                   const mip_filter_data_ned_relative_position_t *in);
+int mip_filter_data_ned_relative_position_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_filter_data_ned_relative_position_t *out);
+void mip_filter_data_gnss_position_aiding_status_to_json(
+    mip_jw_t *w, const mip_filter_data_gnss_position_aiding_status_t *in);
+int mip_filter_data_gnss_position_aiding_status_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_filter_data_gnss_position_aiding_status_t *out);
+void mip_filter_data_aiding_measurement_summary_to_json(
+    mip_jw_t *w, const mip_filter_data_aiding_measurement_summary_t *in);
+int mip_filter_data_aiding_measurement_summary_from_json(mip_jr_t *jr, size_t pos,
+                                                         mip_filter_data_aiding_measurement_summary_t *out);
+void mip_filter_data_odometer_scale_factor_error_to_json(
+    mip_jw_t *w, const mip_filter_data_odometer_scale_factor_error_t *in);
+int mip_filter_data_odometer_scale_factor_error_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_filter_data_odometer_scale_factor_error_t *out);
+void mip_filter_data_odometer_scale_factor_error_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_odometer_scale_factor_error_uncertainty_t *in);
+int mip_filter_data_odometer_scale_factor_error_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out);
+void mip_filter_data_gnss_dual_antenna_status_to_json(mip_jw_t *w,
+                                                      const mip_filter_data_gnss_dual_antenna_status_t *in);
+int mip_filter_data_gnss_dual_antenna_status_from_json(mip_jr_t *jr, size_t pos,
+                                                       mip_filter_data_gnss_dual_antenna_status_t *out);
+void mip_filter_data_aiding_frame_config_error_to_json(mip_jw_t *w,
+                                                       const mip_filter_data_aiding_frame_config_error_t *in);
+int mip_filter_data_aiding_frame_config_error_from_json(mip_jr_t *jr, size_t pos,
+                                                        mip_filter_data_aiding_frame_config_error_t *out);
+void mip_filter_data_aiding_frame_config_error_uncertainty_to_json(
+    mip_jw_t *w, const mip_filter_data_aiding_frame_config_error_uncertainty_t *in);
+int mip_filter_data_aiding_frame_config_error_uncertainty_from_json(
+    mip_jr_t *jr, size_t pos, mip_filter_data_aiding_frame_config_error_uncertainty_t *out);
 
 /* The "values" object of a decoded field. */
 void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value);

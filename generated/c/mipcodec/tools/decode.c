@@ -1,9 +1,9 @@
-/* mipcodec-decode [--device ID] [FILE|-]: binary stream -> canonical JSON lines
+/* mipcodec-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
  * (docs/conformance.md section 5). Generated: do not edit. */
 #include "mipcodec/mipcodec.h"
 #include "read_all.h"
 
-static const char k_usage[] = "usage: mipcodec-decode [--device ID] [FILE|-]\n";
+static const char k_usage[] = "usage: mipcodec-decode [--device ID] [--samples] [FILE|-]\n";
 
 typedef struct {
     const unsigned char *input;
@@ -11,6 +11,8 @@ typedef struct {
     char *line;
     size_t line_cap;
     int failed;
+    int samples;
+    mip_sample_tracker_t tracker;
 } decode_ctx_t;
 
 static int grow(decode_ctx_t *ctx, size_t need) {
@@ -47,6 +49,18 @@ static void on_event(void *arg, const mip_event_t *ev) {
         }
         need = format(ctx, ev);
     }
+    if (ctx->samples && ev->kind == MIP_EVENT_PACKET) {
+        mip_sample_info_t info;
+        const char *at = strstr(ctx->line, ",\"fields\":");
+        if (at && mip_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
+            size_t head = (size_t)(at - ctx->line);
+            fwrite(ctx->line, 1, head, stdout);
+            fprintf(stdout, ",\"sample\":%llu", (unsigned long long)info.number);
+            fwrite(at, 1, need - head, stdout);
+            fputc('\n', stdout);
+            return;
+        }
+    }
     fwrite(ctx->line, 1, need, stdout);
     fputc('\n', stdout);
 }
@@ -69,7 +83,9 @@ int main(int argc, char **argv) {
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *id = NULL;
-        if (strcmp(a, "--device") == 0) {
+        if (strcmp(a, "--samples") == 0) {
+            ctx.samples = 1;
+        } else if (strcmp(a, "--device") == 0) {
             if (i + 1 >= argc) {
                 return usage_error("--device needs a device id");
             }
@@ -116,6 +132,7 @@ int main(int argc, char **argv) {
         return 2;
     }
     mip_parser_init(&parser);
+    mip_sample_tracker_init(&ctx.tracker);
     mip_parser_feed(&parser, input, len, on_event, &ctx);
     mip_parser_flush(&parser, on_event, &ctx);
     free(ctx.line);

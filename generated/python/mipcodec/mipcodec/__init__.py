@@ -1,16 +1,17 @@
 """MicroStrain MIP: typed encoder/decoder generated from the protocol spec.
 
-Modules: one per descriptor set (base, threedm, filter, gnss, aiding, system, sensor) holding a
+Modules: one per descriptor set (base, threedm, filter, gnss, aiding, system, sensor, filter_data) holding a
 dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);
 `reserved` (fields reserved in every set of a kind); `framing` (checksum, packet builder, stream
-parser, field splitter); `packets` (dispatch and canonical JSON lines); `cli` (decode/encode).
+parser, field splitter); `packets` (dispatch and canonical JSON lines); `samples` (continuation
+packets grouped by shared timestamp); `cli` (decode/encode).
 
     from mipcodec import Parser, PacketBuilder, decode_packet
     for event in Parser().feed(data):
         ...
 """
 
-from . import aiding, base, filter, gnss, reserved, sensor, system, threedm, types
+from . import aiding, base, filter, filter_data, gnss, reserved, sensor, system, threedm, types
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
@@ -38,11 +39,13 @@ from .packets import (
     encode_lines,
 )
 from .registry import DEVICES, lookup
+from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 
 __all__ = [
     "aiding",
     "base",
     "filter",
+    "filter_data",
     "gnss",
     "reserved",
     "sensor",
@@ -77,4 +80,8 @@ __all__ = [
     "encode_lines",
     "DEVICES",
     "lookup",
+    "Sample",
+    "SampleGrouper",
+    "SampleTracker",
+    "sample_key",
 ]

@@ -1,6 +1,6 @@
 """Command-line tools (docs/conformance.md section 5).
 
-    python -m mipcodec decode [--device ID] [FILE|-]   binary stream -> canonical JSON lines
+    python -m mipcodec decode [--device ID] [--samples] [FILE|-]   binary stream -> canonical JSON lines
     python -m mipcodec encode                         JSON lines on stdin -> bytes on stdout
 
 decode: exit 0; usage or I/O errors: one line on stderr, exit 2.
@@ -15,11 +15,12 @@ from typing import BinaryIO, List, Optional
 
 from . import registry
 from .codec import EncodeError
-from .framing import Parser
+from .framing import Parser, RawPacket
 from .packets import encode_line, event_line
+from .samples import SampleTracker
 
 PROG = "mipcodec"
-USAGE = f"usage: python -m {PROG} decode [--device ID] [FILE|-] | python -m {PROG} encode"
+USAGE = f"usage: python -m {PROG} decode [--device ID] [--samples] [FILE|-] | python -m {PROG} encode"
 CHUNK = 1 << 16
 
 
@@ -30,16 +31,19 @@ class UsageError(Exception):
 def _decode_args(args: List[str]) -> tuple:
     device: Optional[str] = None
     path: Optional[str] = None
+    samples = False
     i = 0
     while i < len(args):
         a = args[i]
-        if a == "--device":
+        if a == "--samples":
+            samples = True
+        elif a == "--device":
             if i + 1 >= len(args):
                 raise UsageError("--device needs a device id")
             device = args[i + 1]
             i += 2
             continue
-        if a.startswith("--device="):
+        elif a.startswith("--device="):
             device = a[len("--device=") :]
         elif a == "-" or not a.startswith("-"):
             if path is not None:
@@ -50,11 +54,11 @@ def _decode_args(args: List[str]) -> tuple:
         i += 1
     if device is not None and device not in registry.DEVICES:
         raise UsageError(f"unknown device {device!r} (expected one of: {', '.join(registry.DEVICES)})")
-    return device, path
+    return device, path, samples
 
 
 def _decode(args: List[str]) -> int:
-    device, path = _decode_args(args)
+    device, path, samples = _decode_args(args)
     if path is None or path == "-":
         source: BinaryIO = sys.stdin.buffer
         close = False
@@ -67,6 +71,16 @@ def _decode(args: List[str]) -> int:
         close = True
     out = sys.stdout
     parser = Parser()
+    tracker = SampleTracker() if samples else None
+
+    def line(event: object) -> str:
+        text = event_line(event, device)
+        placed = tracker.feed(event.data) if tracker is not None and isinstance(event, RawPacket) else None
+        if placed is not None:
+            at = text.index(',"fields":')
+            text = text[:at] + ',"sample":' + str(placed[0]) + text[at:]
+        return text
+
     read = getattr(source, "read1", source.read)  # read1: do not wait for a full chunk from a live stream
     try:
         while True:
@@ -78,10 +92,10 @@ def _decode(args: List[str]) -> int:
             if not chunk:
                 break
             for event in parser.feed(chunk):
-                out.write(event_line(event, device) + "\n")
+                out.write(line(event) + "\n")
             out.flush()
         for event in parser.flush():
-            out.write(event_line(event, device) + "\n")
+            out.write(line(event) + "\n")
         out.flush()
     finally:
         if close:

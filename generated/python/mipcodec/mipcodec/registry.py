@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Dict, Optional, Tuple
 
-from . import aiding, base, filter, gnss, reserved, sensor, system, threedm
+from . import aiding, base, filter, filter_data, gnss, reserved, sensor, system, threedm
 
 DEVICES: Tuple[str, ...] = ("gx5_45", "cv7_ins")
 
@@ -20,6 +20,7 @@ SET_NAMES: Dict[int, str] = {
     0x13: "aiding",
     0x7F: "system",
     0x80: "sensor",
+    0x82: "filter_data",
 }
 
 SET_KINDS: Tuple[Tuple[str, int, int], ...] = (
@@ -243,6 +244,54 @@ FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
     (0x80, 0x04): (sensor.ScaledAccel,),
     (0x80, 0x05): (sensor.ScaledGyro,),
     (0x80, 0x06): (sensor.ScaledMag,),
+    (0x82, 0x01): (filter_data.LlhPosition,),
+    (0x82, 0x02): (filter_data.NedVelocity,),
+    (0x82, 0x03): (filter_data.AttitudeQuaternion,),
+    (0x82, 0x04): (filter_data.AttitudeDcm,),
+    (0x82, 0x05): (filter_data.EulerAngles,),
+    (0x82, 0x06): (filter_data.GyroBias,),
+    (0x82, 0x07): (filter_data.AccelBias,),
+    (0x82, 0x08): (filter_data.LlhPositionUncertainty,),
+    (0x82, 0x09): (filter_data.NedVelocityUncertainty,),
+    (0x82, 0x0A): (filter_data.EulerAnglesUncertainty,),
+    (0x82, 0x0B): (filter_data.GyroBiasUncertainty,),
+    (0x82, 0x0C): (filter_data.AccelBiasUncertainty,),
+    (0x82, 0x0D): (filter_data.LinearAccel,),
+    (0x82, 0x0E): (filter_data.CompAngularRate,),
+    (0x82, 0x0F): (filter_data.Wgs84GravityMagnitude,),
+    (0x82, 0x10): (filter_data.FilterStatus_gx5_45, filter_data.FilterStatus_cv7_ins),
+    (0x82, 0x11): (filter_data.GpsTimestamp,),
+    (0x82, 0x12): (filter_data.QuaternionAttitudeUncertainty,),
+    (0x82, 0x13): (filter_data.GravityVector,),
+    (0x82, 0x14): (filter_data.HeadingUpdateState,),
+    (0x82, 0x15): (filter_data.MagneticModel,),
+    (0x82, 0x16): (filter_data.GyroScaleFactor,),
+    (0x82, 0x17): (filter_data.AccelScaleFactor,),
+    (0x82, 0x18): (filter_data.GyroScaleFactorUncertainty,),
+    (0x82, 0x19): (filter_data.AccelScaleFactorUncertainty,),
+    (0x82, 0x1C): (filter_data.CompensatedAccel,),
+    (0x82, 0x20): (filter_data.StandardAtmosphere,),
+    (0x82, 0x21): (filter_data.PressureAltitude,),
+    (0x82, 0x25): (filter_data.MagAutoHardIronOffset,),
+    (0x82, 0x26): (filter_data.MagAutoSoftIronMatrix,),
+    (0x82, 0x28): (filter_data.MagAutoHardIronOffsetUncertainty,),
+    (0x82, 0x29): (filter_data.MagAutoSoftIronMatrixUncertainty,),
+    (0x82, 0x30): (filter_data.GnssAntennaOffsetCorrection,),
+    (0x82, 0x31): (filter_data.GnssAntennaOffsetCorrectionUncertainty,),
+    (0x82, 0x34): (filter_data.MultiAntennaOffsetCorrection,),
+    (0x82, 0x35): (filter_data.MultiAntennaOffsetCorrectionUncertainty,),
+    (0x82, 0x36): (filter_data.EcefPositionUncertainty,),
+    (0x82, 0x37): (filter_data.EcefVelocityUncertainty,),
+    (0x82, 0x40): (filter_data.EcefPosition,),
+    (0x82, 0x41): (filter_data.EcefVelocity,),
+    (0x82, 0x42): (filter_data.NedRelativePosition,),
+    (0x82, 0x43): (filter_data.GnssPositionAidingStatus,),
+    (0x82, 0x46): (filter_data.AidingMeasurementSummary,),
+    (0x82, 0x47): (filter_data.OdometerScaleFactorError,),
+    (0x82, 0x48): (filter_data.OdometerScaleFactorErrorUncertainty,),
+    (0x82, 0x49): (filter_data.GnssDualAntennaStatus,),
+    (0x82, 0x50): (filter_data.AidingFrameConfigError,),
+    (0x82, 0x51): (filter_data.AidingFrameConfigErrorUncertainty,),
 }
 
 RESERVED: Dict[str, Dict[int, Tuple[type, ...]]] = {

@@ -302,6 +302,170 @@ class FactoryStreamingAction(_c.Enum):
     ADD = 0x02  # Append the support descriptors to the existing formats (duplicates possible).
 
 
+@_c.bitfield("u8")
+class FilterAidingMeasurementIndicator(_c.Bitfield):
+    """Aiding measurement indicator (u8 bitfield).
+
+    State of one aiding measurement over the last measurement interval.
+    """
+
+    _MEMBERS = (
+        ("enabled", "enabled", "ENABLED", 0, 1),
+        ("used", "used", "USED", 1, 1),
+        ("residual_high_warning", "residual_high_warning", "RESIDUAL_HIGH_WARNING", 2, 1),
+        ("sample_time_warning", "sample_time_warning", "SAMPLE_TIME_WARNING", 3, 1),
+        ("configuration_error", "configuration_error", "CONFIGURATION_ERROR", 4, 1),
+        ("max_num_meas_exceeded", "max_num_meas_exceeded", "MAX_NUM_MEAS_EXCEEDED", 5, 1),
+    )
+    ENABLED = 0x01  # bit 0: The measurement is enabled.
+    USED = 0x02  # bit 1: The measurement was used by the filter.
+    RESIDUAL_HIGH_WARNING = 0x04  # bit 2: Measurement residual is high.
+    SAMPLE_TIME_WARNING = 0x08  # bit 3: Problem with the measurement's sample time.
+    CONFIGURATION_ERROR = 0x10  # bit 4: The measurement is misconfigured.
+    MAX_NUM_MEAS_EXCEEDED = 0x20  # bit 5: More measurements than the filter can process.
+
+    enabled = _c.bit(0)
+    used = _c.bit(1)
+    residual_high_warning = _c.bit(2)
+    sample_time_warning = _c.bit(3)
+    configuration_error = _c.bit(4)
+    max_num_meas_exceeded = _c.bit(5)
+
+
+class FilterAidingMeasurementType(_c.Enum):
+    """Aiding measurement type (u8).
+
+    Which aiding measurement an Aiding Measurement Summary (0x82,0x46) describes. Values 0x20 and
+    above are the measurements commanded through the Aiding command set (0x13); their value is the
+    descriptor of that command.
+    """
+
+    GNSS = 0x01  # GNSS receiver measurement.
+    DUAL_ANTENNA = 0x02  # GNSS dual-antenna heading.
+    HEADING = 0x03  # Heading measurement.
+    PRESSURE = 0x04  # Pressure (barometric altitude).
+    MAGNETOMETER = 0x05  # Magnetometer.
+    SPEED = 0x06  # Speed sensor (odometer).
+    AIDING_POS_ECEF = 0x21  # ECEF position aiding command (0x13,0x21).
+    AIDING_POS_LLH = 0x22  # LLH position aiding command (0x13,0x22).
+    AIDING_HEIGHT_ABOVE_ELLIPSOID = 0x23  # Height above ellipsoid aiding command (0x13,0x23).
+    AIDING_VEL_ECEF = 0x28  # ECEF velocity aiding command (0x13,0x28).
+    AIDING_VEL_NED = 0x29  # NED velocity aiding command (0x13,0x29).
+    AIDING_VEL_BODY_FRAME = 0x2A  # Body-frame velocity aiding command (0x13,0x2A).
+    AIDING_HEADING_TRUE = 0x31  # True heading aiding command (0x13,0x31).
+    AIDING_MAGNETIC_FIELD = 0x32  # Magnetic field aiding command (0x13,0x32).
+    AIDING_PRESSURE = 0x33  # Pressure aiding command (0x13,0x33).
+
+
+class FilterDualAntennaFixType(_c.Enum):
+    """Dual-antenna fix type (u8).
+
+    Kind of GNSS dual-antenna heading solution.
+    """
+
+    FIX_NONE = 0x00  # No dual-antenna fix.
+    FIX_DA_FLOAT = 0x01  # Dual-antenna float solution.
+    FIX_DA_FIXED = 0x02  # Dual-antenna fixed (integer) solution.
+
+
+@_c.bitfield("u16")
+class FilterDualAntennaStatusFlags(_c.Bitfield):
+    """Dual-antenna status flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("rcv_1_data_valid", "rcv_1_data_valid", "RCV_1_DATA_VALID", 0, 1),
+        ("rcv_2_data_valid", "rcv_2_data_valid", "RCV_2_DATA_VALID", 1, 1),
+        ("antenna_offsets_valid", "antenna_offsets_valid", "ANTENNA_OFFSETS_VALID", 2, 1),
+    )
+    RCV_1_DATA_VALID = 0x0001  # bit 0: Data from receiver 1 are valid.
+    RCV_2_DATA_VALID = 0x0002  # bit 1: Data from receiver 2 are valid.
+    ANTENNA_OFFSETS_VALID = 0x0004  # bit 2: The antenna offsets are valid.
+
+    rcv_1_data_valid = _c.bit(0)
+    rcv_2_data_valid = _c.bit(1)
+    antenna_offsets_valid = _c.bit(2)
+
+
+class FilterDynamicsModeCv7(_c.Enum):
+    """Filter dynamics mode (3DM-CV7) (u16).
+
+    Dynamics mode reported in Status (0x82,0x10) by the CV7 (GQ7-family filter).
+    """
+
+    DEFAULT = 0x01  # Default dynamics mode (printed GQ7_DEFAULT).
+
+
+class FilterDynamicsModeGx5(_c.Enum):
+    """Filter dynamics mode (3DM-GX5-45) (u16).
+
+    Vehicle dynamics mode the GX5-45 filter runs with, as reported in Filter Status (0x82,0x10).
+    """
+
+    PORTABLE = 0x01  # Portable (low-acceleration applications).
+    AUTOMOTIVE = 0x02  # Automotive (wheeled vehicles, low vertical acceleration).
+    AIRBORNE = 0x03  # Airborne (up to 2 g).
+
+
+@_c.bitfield("u16")
+class FilterGnssAidingStatusFlags(_c.Bitfield):
+    """GNSS position aiding status (u16 bitfield).
+
+    What the filter does with the measurements of one GNSS receiver.
+    """
+
+    _MEMBERS = (
+        ("tight_coupling", "tight_coupling", "TIGHT_COUPLING", 0, 1),
+        ("differential", "differential", "DIFFERENTIAL", 1, 1),
+        ("integer_fix", "integer_fix", "INTEGER_FIX", 2, 1),
+        ("gps_l1", "gps_l1", "GPS_L1", 3, 1),
+        ("gps_l2", "gps_l2", "GPS_L2", 4, 1),
+        ("gps_l5", "gps_l5", "GPS_L5", 5, 1),
+        ("glo_l1", "glo_l1", "GLO_L1", 6, 1),
+        ("glo_l2", "glo_l2", "GLO_L2", 7, 1),
+        ("gal_e1", "gal_e1", "GAL_E1", 8, 1),
+        ("gal_e5", "gal_e5", "GAL_E5", 9, 1),
+        ("gal_e6", "gal_e6", "GAL_E6", 10, 1),
+        ("bei_b1", "bei_b1", "BEI_B1", 11, 1),
+        ("bei_b2", "bei_b2", "BEI_B2", 12, 1),
+        ("bei_b3", "bei_b3", "BEI_B3", 13, 1),
+        ("no_fix", "no_fix", "NO_FIX", 14, 1),
+        ("config_error", "config_error", "CONFIG_ERROR", 15, 1),
+    )
+    TIGHT_COUPLING = 0x0001  # bit 0: The filter is processing raw range information from this receiver.
+    DIFFERENTIAL = 0x0002  # bit 1: The filter is processing RTK corrections from this receiver.
+    INTEGER_FIX = 0x0004  # bit 2: The filter has an RTK integer fix from this receiver.
+    GPS_L1 = 0x0008  # bit 3: GPS L1 measurements used.
+    GPS_L2 = 0x0010  # bit 4: GPS L2 measurements used.
+    GPS_L5 = 0x0020  # bit 5: GPS L5 measurements used.
+    GLO_L1 = 0x0040  # bit 6: GLONASS L1 measurements used.
+    GLO_L2 = 0x0080  # bit 7: GLONASS L2 measurements used.
+    GAL_E1 = 0x0100  # bit 8: Galileo E1 measurements used.
+    GAL_E5 = 0x0200  # bit 9: Galileo E5 measurements used.
+    GAL_E6 = 0x0400  # bit 10: Galileo E6 measurements used.
+    BEI_B1 = 0x0800  # bit 11: BeiDou B1 measurements used.
+    BEI_B2 = 0x1000  # bit 12: BeiDou B2 measurements used.
+    BEI_B3 = 0x2000  # bit 13: BeiDou B3 measurements used.
+    NO_FIX = 0x4000  # bit 14: This receiver reports no position fix.
+    CONFIG_ERROR = 0x8000  # bit 15: Probably a problem with this receiver's antenna offset.
+
+    tight_coupling = _c.bit(0)
+    differential = _c.bit(1)
+    integer_fix = _c.bit(2)
+    gps_l1 = _c.bit(3)
+    gps_l2 = _c.bit(4)
+    gps_l5 = _c.bit(5)
+    glo_l1 = _c.bit(6)
+    glo_l2 = _c.bit(7)
+    gal_e1 = _c.bit(8)
+    gal_e5 = _c.bit(9)
+    gal_e6 = _c.bit(10)
+    bei_b1 = _c.bit(11)
+    bei_b2 = _c.bit(12)
+    bei_b3 = _c.bit(13)
+    no_fix = _c.bit(14)
+    config_error = _c.bit(15)
+
+
 class FilterGnssSource(_c.Enum):
     """Filter GNSS source (u8).
 
@@ -314,6 +478,38 @@ class FilterGnssSource(_c.Enum):
     INTERNAL_2 = 0x04  # Internal GNSS receiver 2 only. (devices: cv7_ins)
 
 
+@_c.bitfield("u16")
+class FilterHeadingSourceFlags(_c.Bitfield):
+    """Heading update sources in use (u16 bitfield).
+
+    Sources currently providing heading updates; 0 means none (heading updates disabled).
+    """
+
+    _MEMBERS = (
+        ("magnetometer", "magnetometer", "MAGNETOMETER", 0, 1),
+        ("gnss_velocity", "gnss_velocity", "GNSS_VELOCITY", 1, 1),
+        ("external", "external", "EXTERNAL", 2, 1),
+    )
+    MAGNETOMETER = 0x0001  # bit 0: Internal magnetometer.
+    GNSS_VELOCITY = 0x0002  # bit 1: GNSS velocity vector.
+    EXTERNAL = 0x0004  # bit 2: External Heading Update messages (0x0D,0x17), with or without timestamp (0x0D,0x1F).
+
+    magnetometer = _c.bit(0)
+    gnss_velocity = _c.bit(1)
+    external = _c.bit(2)
+
+
+@_c.bitfield("u16")
+class FilterHeadingUpdateValidFlags(_c.Bitfield):
+    """Heading update state valid flags (u16 bitfield)."""
+
+    _MEMBERS = (("updated_within_2s", "updated_within_2s", "UPDATED_WITHIN_2S", 0, 1),)
+    # bit 0: The heading update source provided data within the last 2 seconds (0: no update for 2 seconds).
+    UPDATED_WITHIN_2S = 0x0001
+
+    updated_within_2s = _c.bit(0)
+
+
 class FilterInitialConditionSource(_c.Enum):
     """Navigation filter initial condition source (u8)."""
 
@@ -323,11 +519,205 @@ class FilterInitialConditionSource(_c.Enum):
     MANUAL = 0x03  # User-specified position, velocity and attitude.
 
 
+class FilterModeCv7(_c.Enum):
+    """Filter mode (3DM-CV7) (u16).
+
+    Mode the CV7 navigation filter has reached, reported as the filter state in Status (0x82,0x10);
+    it depends on the initial conditions the filter was given.
+    """
+
+    INIT = 0x01  # Initialization: initial conditions incomplete or invalid, or waiting for user input.
+    VERT_GYRO = 0x02  # Vertical gyro: valid pitch and roll, heading relative to the initial heading.
+    AHRS = 0x03  # AHRS: as vertical gyro, with an absolute heading reference.
+    FULL_NAV = 0x04  # Full navigation: valid position, velocity, pitch, roll and heading.
+
+
+@_c.bitfield("u16")
+class FilterOutputValidFlags(_c.Bitfield):
+    """Filter output valid flags (u16 bitfield).
+
+    Valid flags of a filter output field: 0x0000 the values are invalid, 0x0001 they are valid.
+    """
+
+    _MEMBERS = (("valid", "valid", "VALID", 0, 1),)
+    VALID = 0x0001  # bit 0: The values of this field are valid.
+
+    valid = _c.bit(0)
+
+
 class FilterReferenceFrame(_c.Enum):
     """Reference frame of user-specified positions and velocities (u8)."""
 
     ECEF = 0x01  # WGS84 Earth-centered, Earth-fixed coordinates.
     LLH = 0x02  # WGS84 latitude, longitude and height above ellipsoid.
+
+
+class FilterStateGx5(_c.Enum):
+    """Filter state (3DM-GX5-45) (u16).
+
+    Operating state of the GX5-45 estimation filter, reported in Filter Status (0x82,0x10).
+    """
+
+    STARTUP = 0x00  # Filter starting up.
+    INIT = 0x01  # Initializing; the status flags tell what is still missing.
+    RUN_SOLUTION_VALID = 0x02  # Running, the solution is valid.
+    RUN_SOLUTION_ERROR = 0x03  # Running, the solution has an error; the status flags tell which.
+
+
+@_c.bitfield("u16")
+class FilterStatusFlagsCv7(_c.Bitfield):
+    """Filter status flags (3DM-CV7) (u16 bitfield).
+
+    CV7 (GQ7-family) filter status flags: the filter condition in bits 0-1 (1 stable, 2 converging,
+    3 unstable/recovering), estimate warnings in bits 2-10 and solution error flags in bits 12-15.
+    """
+
+    _MEMBERS = (
+        ("filter_condition", "filter_condition", "FILTER_CONDITION", 0, 2),
+        ("roll_pitch_warning", "roll_pitch_warning", "ROLL_PITCH_WARNING", 2, 1),
+        ("heading_warning", "heading_warning", "HEADING_WARNING", 3, 1),
+        ("position_warning", "position_warning", "POSITION_WARNING", 4, 1),
+        ("velocity_warning", "velocity_warning", "VELOCITY_WARNING", 5, 1),
+        ("imu_bias_warning", "imu_bias_warning", "IMU_BIAS_WARNING", 6, 1),
+        ("gnss_clk_warning", "gnss_clk_warning", "GNSS_CLK_WARNING", 7, 1),
+        ("antenna_lever_arm_warning", "antenna_lever_arm_warning", "ANTENNA_LEVER_ARM_WARNING", 8, 1),
+        ("mounting_transform_warning", "mounting_transform_warning", "MOUNTING_TRANSFORM_WARNING", 9, 1),
+        ("time_sync_warning", "time_sync_warning", "TIME_SYNC_WARNING", 10, 1),
+        ("reserved", "reserved", "RESERVED", 11, 1),
+        ("solution_error", "solution_error", "SOLUTION_ERROR", 12, 4),
+    )
+    FILTER_CONDITION = 0x0003  # bits 0-1: Filter condition: 1 stable, 2 converging, 3 unstable/recovering.
+    ROLL_PITCH_WARNING = 0x0004  # bit 2: Low confidence in roll/pitch (e.g. sensor not aligned with the vehicle frame).
+    HEADING_WARNING = 0x0008  # bit 3: Low confidence in heading (heading source not valid).
+    POSITION_WARNING = 0x0010  # bit 4: Low confidence in position.
+    VELOCITY_WARNING = 0x0020  # bit 5: Low confidence in velocity.
+    IMU_BIAS_WARNING = 0x0040  # bit 6: IMU bias estimate warning (gyro bias high).
+    GNSS_CLK_WARNING = 0x0080  # bit 7: GNSS clock warning (affects the filter timestamp).
+    ANTENNA_LEVER_ARM_WARNING = 0x0100  # bit 8: Antenna lever arm offsets are likely incorrect.
+    MOUNTING_TRANSFORM_WARNING = 0x0200  # bit 9: Mounting transform is likely incorrect.
+    # bit 10: No time synchronization (PPS) pulse detected, or external heading timestamp too old.
+    TIME_SYNC_WARNING = 0x0400
+    RESERVED = 0x0800  # bit 11: Not listed. (reserved)
+    # bits 12-15: Filter computation error flags (NaN in the solution); if any is set, all filter outputs are invalid.
+    SOLUTION_ERROR = 0xF000
+
+    filter_condition = _c.bits(0, 2)
+    roll_pitch_warning = _c.bit(2)
+    heading_warning = _c.bit(3)
+    position_warning = _c.bit(4)
+    velocity_warning = _c.bit(5)
+    imu_bias_warning = _c.bit(6)
+    gnss_clk_warning = _c.bit(7)
+    antenna_lever_arm_warning = _c.bit(8)
+    mounting_transform_warning = _c.bit(9)
+    time_sync_warning = _c.bit(10)
+    reserved = _c.bit(11)
+    solution_error = _c.bits(12, 4)
+
+
+@_c.bitfield("u16")
+class FilterStatusFlagsGx5(_c.Bitfield):
+    """Filter status flags (3DM-GX5-45) (u16 bitfield).
+
+    GX5-45 filter status flags. Bits 12 and 13 mean different things depending on the filter state:
+    in the initialization state they say what is not initialized, while running they are estimate
+    warnings.
+    """
+
+    _MEMBERS = (
+        ("run_imu_unavailable", "run_imu_unavailable", "RUN_IMU_UNAVAILABLE", 0, 1),
+        ("run_gps_unavailable", "run_gps_unavailable", "RUN_GPS_UNAVAILABLE", 1, 1),
+        ("reserved", "reserved", "RESERVED", 2, 1),
+        ("run_matrix_singularity", "run_matrix_singularity", "RUN_MATRIX_SINGULARITY", 3, 1),
+        ("run_position_covariance_warning", "run_position_covariance_warning", "RUN_POSITION_COVARIANCE_WARNING", 4, 1),
+        ("run_velocity_covariance_warning", "run_velocity_covariance_warning", "RUN_VELOCITY_COVARIANCE_WARNING", 5, 1),
+        ("run_attitude_covariance_warning", "run_attitude_covariance_warning", "RUN_ATTITUDE_COVARIANCE_WARNING", 6, 1),
+        ("run_nan_in_solution_warning", "run_nan_in_solution_warning", "RUN_NAN_IN_SOLUTION_WARNING", 7, 1),
+        ("run_gyro_bias_est_high_warning", "run_gyro_bias_est_high_warning", "RUN_GYRO_BIAS_EST_HIGH_WARNING", 8, 1),
+        ("run_accel_bias_est_high_warning", "run_accel_bias_est_high_warning", "RUN_ACCEL_BIAS_EST_HIGH_WARNING", 9, 1),
+        (
+            "run_gyro_scale_factor_est_high_warning",
+            "run_gyro_scale_factor_est_high_warning",
+            "RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING",
+            10,
+            1,
+        ),
+        (
+            "run_accel_scale_factor_est_high_warning",
+            "run_accel_scale_factor_est_high_warning",
+            "RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING",
+            11,
+            1,
+        ),
+        ("run_mag_bias_est_high_warning", "run_mag_bias_est_high_warning", "RUN_MAG_BIAS_EST_HIGH_WARNING", 12, 1),
+        (
+            "run_ant_offset_correction_est_high_warning",
+            "run_ant_offset_correction_est_high_warning",
+            "RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING",
+            13,
+            1,
+        ),
+        (
+            "run_mag_hard_iron_est_high_warning",
+            "run_mag_hard_iron_est_high_warning",
+            "RUN_MAG_HARD_IRON_EST_HIGH_WARNING",
+            14,
+            1,
+        ),
+        (
+            "run_mag_soft_iron_est_high_warning",
+            "run_mag_soft_iron_est_high_warning",
+            "RUN_MAG_SOFT_IRON_EST_HIGH_WARNING",
+            15,
+            1,
+        ),
+        ("init_no_attitude", "init_no_attitude", "INIT_NO_ATTITUDE", 12, 1),
+        ("init_no_position_velocity", "init_no_position_velocity", "INIT_NO_POSITION_VELOCITY", 13, 1),
+    )
+    RUN_IMU_UNAVAILABLE = 0x0001  # bit 0: Running: IMU unavailable.
+    RUN_GPS_UNAVAILABLE = 0x0002  # bit 1: Running: GNSS unavailable.
+    RESERVED = 0x0004  # bit 2: Not listed (0x0004). (reserved)
+    RUN_MATRIX_SINGULARITY = 0x0008  # bit 3: Running: matrix singularity in the calculation.
+    # bit 4: Running: position covariance high (some axis beyond normal limits).
+    RUN_POSITION_COVARIANCE_WARNING = 0x0010
+    # bit 5: Running: velocity covariance high (some axis beyond normal limits).
+    RUN_VELOCITY_COVARIANCE_WARNING = 0x0020
+    # bit 6: Running: attitude covariance high (some axis beyond normal limits).
+    RUN_ATTITUDE_COVARIANCE_WARNING = 0x0040
+    RUN_NAN_IN_SOLUTION_WARNING = 0x0080  # bit 7: Running: NaN in the solution.
+    RUN_GYRO_BIAS_EST_HIGH_WARNING = 0x0100  # bit 8: Running: gyro bias estimate high.
+    RUN_ACCEL_BIAS_EST_HIGH_WARNING = 0x0200  # bit 9: Running: accel bias estimate high.
+    RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING = 0x0400  # bit 10: Running: gyro scale factor estimate high.
+    RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING = 0x0800  # bit 11: Running: accel scale factor estimate high.
+    RUN_MAG_BIAS_EST_HIGH_WARNING = 0x1000  # bit 12: Running: magnetometer bias estimate high.
+    # bit 13: Running: GNSS antenna offset correction estimate high.
+    RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING = 0x2000
+    RUN_MAG_HARD_IRON_EST_HIGH_WARNING = 0x4000  # bit 14: Running: hard iron offset estimate high.
+    RUN_MAG_SOFT_IRON_EST_HIGH_WARNING = 0x8000  # bit 15: Running: soft iron correction estimate high.
+    # bit 12: Initialization: attitude not initialized (same bit as run_mag_bias_est_high_warning). (alias mask)
+    INIT_NO_ATTITUDE = 0x1000
+    # bit 13: Initialization: position and velocity not initialized (same bit as
+    # run_ant_offset_correction_est_high_warning). (alias mask)
+    INIT_NO_POSITION_VELOCITY = 0x2000
+
+    run_imu_unavailable = _c.bit(0)
+    run_gps_unavailable = _c.bit(1)
+    reserved = _c.bit(2)
+    run_matrix_singularity = _c.bit(3)
+    run_position_covariance_warning = _c.bit(4)
+    run_velocity_covariance_warning = _c.bit(5)
+    run_attitude_covariance_warning = _c.bit(6)
+    run_nan_in_solution_warning = _c.bit(7)
+    run_gyro_bias_est_high_warning = _c.bit(8)
+    run_accel_bias_est_high_warning = _c.bit(9)
+    run_gyro_scale_factor_est_high_warning = _c.bit(10)
+    run_accel_scale_factor_est_high_warning = _c.bit(11)
+    run_mag_bias_est_high_warning = _c.bit(12)
+    run_ant_offset_correction_est_high_warning = _c.bit(13)
+    run_mag_hard_iron_est_high_warning = _c.bit(14)
+    run_mag_soft_iron_est_high_warning = _c.bit(15)
+    init_no_attitude = _c.bit(12)
+    init_no_position_velocity = _c.bit(13)
 
 
 class FunctionSelector(_c.Enum):

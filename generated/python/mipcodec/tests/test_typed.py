@@ -3,7 +3,7 @@
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
 import pytest
-from mipcodec import aiding, base, filter, gnss, reserved, sensor, system, threedm, types
+from mipcodec import aiding, base, filter, filter_data, gnss, reserved, sensor, system, threedm, types
 from mipcodec.canonical import loads
 from mipcodec.framing import MAX_FIELD_DATA, PacketBuilder
 from mipcodec.packets import DecodedField, decode_packet
@@ -1249,125 +1249,428 @@ SAMPLES = [
     ("sensor.ScaledAccel", lambda: sensor.ScaledAccel(scaled_accel=[0.375, 1024.0, -0.0])),
     ("sensor.ScaledGyro", lambda: sensor.ScaledGyro(scaled_gyro=[1.5, -2.25, 0.375])),
     ("sensor.ScaledMag", lambda: sensor.ScaledMag(scaled_mag=[1024.0, -0.0, 1.5])),
-    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=60, ack_code=types.AckCode.COMMAND_FAILED)),
-    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=134, mode=types.ActionGpioMode.TOGGLE)),
+    (
+        "filter_data.LlhPosition",
+        lambda: filter_data.LlhPosition(
+            latitude=-2.5e-310, longitude=1e16, ellipsoid_height=123.456, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.NedVelocity",
+        lambda: filter_data.NedVelocity(
+            north=1.5, east=-2.25, down=0.375, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.AttitudeQuaternion",
+        lambda: filter_data.AttitudeQuaternion(
+            q=[-0.0, 1.5, -2.25, 0.375], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.AttitudeDcm",
+        lambda: filter_data.AttitudeDcm(
+            dcm=[-0.0, 1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375],
+            valid_flags=types.FilterOutputValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.EulerAngles",
+        lambda: filter_data.EulerAngles(roll=-0.0, pitch=1.5, yaw=-2.25, valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.GyroBias",
+        lambda: filter_data.GyroBias(bias=[1024.0, -0.0, 1.5], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.AccelBias",
+        lambda: filter_data.AccelBias(bias=[0.375, 1024.0, -0.0], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.LlhPositionUncertainty",
+        lambda: filter_data.LlhPositionUncertainty(
+            north=-2.25, east=0.375, down=1024.0, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.NedVelocityUncertainty",
+        lambda: filter_data.NedVelocityUncertainty(
+            north=1.5, east=-2.25, down=0.375, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.EulerAnglesUncertainty",
+        lambda: filter_data.EulerAnglesUncertainty(
+            roll=-0.0, pitch=1.5, yaw=-2.25, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.GyroBiasUncertainty",
+        lambda: filter_data.GyroBiasUncertainty(
+            bias_uncertainty=[1024.0, -0.0, 1.5], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.AccelBiasUncertainty",
+        lambda: filter_data.AccelBiasUncertainty(
+            bias_uncertainty=[0.375, 1024.0, -0.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.LinearAccel",
+        lambda: filter_data.LinearAccel(accel=[-2.25, 0.375, 1024.0], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.CompAngularRate",
+        lambda: filter_data.CompAngularRate(gyro=[1.5, -2.25, 0.375], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.Wgs84GravityMagnitude",
+        lambda: filter_data.Wgs84GravityMagnitude(
+            gravity_magnitude=-0.0, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.FilterStatus_gx5_45",
+        lambda: filter_data.FilterStatus_gx5_45(
+            filter_state=types.FilterStateGx5.INIT,
+            dynamics_mode=types.FilterDynamicsModeGx5.AIRBORNE,
+            status_flags=types.FilterStatusFlagsGx5(0x80),
+        ),
+    ),
+    (
+        "filter_data.FilterStatus_cv7_ins",
+        lambda: filter_data.FilterStatus_cv7_ins(
+            filter_state=types.FilterModeCv7.INIT,
+            dynamics_mode=types.FilterDynamicsModeCv7.DEFAULT,
+            status_flags=types.FilterStatusFlagsCv7(0x80),
+        ),
+    ),
+    (
+        "filter_data.GpsTimestamp",
+        lambda: filter_data.GpsTimestamp(tow=1e16, week_number=214, valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.QuaternionAttitudeUncertainty",
+        lambda: filter_data.QuaternionAttitudeUncertainty(
+            q=[1.5, -2.25, 0.375, 1024.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.GravityVector",
+        lambda: filter_data.GravityVector(gravity=[1.5, -2.25, 0.375], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.HeadingUpdateState",
+        lambda: filter_data.HeadingUpdateState(
+            heading=-0.0,
+            heading_uncertainty=1.5,
+            source=types.FilterHeadingSourceFlags(0x1),
+            valid_flags=types.FilterHeadingUpdateValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.MagneticModel",
+        lambda: filter_data.MagneticModel(
+            intensity_north=1024.0,
+            intensity_east=-0.0,
+            intensity_down=1.5,
+            inclination=-2.25,
+            declination=0.375,
+            valid_flags=types.FilterOutputValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.GyroScaleFactor",
+        lambda: filter_data.GyroScaleFactor(
+            scale_factor=[-0.0, 1.5, -2.25], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.AccelScaleFactor",
+        lambda: filter_data.AccelScaleFactor(
+            scale_factor=[1024.0, -0.0, 1.5], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.GyroScaleFactorUncertainty",
+        lambda: filter_data.GyroScaleFactorUncertainty(
+            scale_factor_uncertainty=[0.375, 1024.0, -0.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.AccelScaleFactorUncertainty",
+        lambda: filter_data.AccelScaleFactorUncertainty(
+            scale_factor_uncertainty=[-2.25, 0.375, 1024.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.CompensatedAccel",
+        lambda: filter_data.CompensatedAccel(accel=[1.5, -2.25, 0.375], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.StandardAtmosphere",
+        lambda: filter_data.StandardAtmosphere(
+            geometric_altitude=-0.0,
+            geopotential_altitude=1.5,
+            temperature=-2.25,
+            pressure=0.375,
+            density=1024.0,
+            valid_flags=types.FilterOutputValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.PressureAltitude",
+        lambda: filter_data.PressureAltitude(pressure_altitude=1.5, valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.MagAutoHardIronOffset",
+        lambda: filter_data.MagAutoHardIronOffset(
+            hard_iron_offset=[0.375, 1024.0, -0.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.MagAutoSoftIronMatrix",
+        lambda: filter_data.MagAutoSoftIronMatrix(
+            soft_iron_matrix=[-2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0, -0.0],
+            valid_flags=types.FilterOutputValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.MagAutoHardIronOffsetUncertainty",
+        lambda: filter_data.MagAutoHardIronOffsetUncertainty(
+            hard_iron_offset_uncertainty=[-2.25, 0.375, 1024.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.MagAutoSoftIronMatrixUncertainty",
+        lambda: filter_data.MagAutoSoftIronMatrixUncertainty(
+            soft_iron_matrix_uncertainty=[1.5, -2.25, 0.375, 1024.0, -0.0, 1.5, -2.25, 0.375, 1024.0],
+            valid_flags=types.FilterOutputValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.GnssAntennaOffsetCorrection",
+        lambda: filter_data.GnssAntennaOffsetCorrection(
+            offset=[1.5, -2.25, 0.375], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.GnssAntennaOffsetCorrectionUncertainty",
+        lambda: filter_data.GnssAntennaOffsetCorrectionUncertainty(
+            offset_uncertainty=[-0.0, 1.5, -2.25], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.MultiAntennaOffsetCorrection",
+        lambda: filter_data.MultiAntennaOffsetCorrection(
+            receiver_id=96, offset=[-0.0, 1.5, -2.25], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.MultiAntennaOffsetCorrectionUncertainty",
+        lambda: filter_data.MultiAntennaOffsetCorrectionUncertainty(
+            receiver_id=30, offset_uncertainty=[-0.0, 1.5, -2.25], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.EcefPositionUncertainty",
+        lambda: filter_data.EcefPositionUncertainty(
+            position_uncertainty=[1024.0, -0.0, 1.5], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.EcefVelocityUncertainty",
+        lambda: filter_data.EcefVelocityUncertainty(
+            velocity_uncertainty=[0.375, 1024.0, -0.0], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.EcefPosition",
+        lambda: filter_data.EcefPosition(
+            position=[-2.5e-310, 1e16, 123.456], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.EcefVelocity",
+        lambda: filter_data.EcefVelocity(velocity=[1.5, -2.25, 0.375], valid_flags=types.FilterOutputValidFlags(0x1)),
+    ),
+    (
+        "filter_data.NedRelativePosition",
+        lambda: filter_data.NedRelativePosition(
+            relative_position=[-0.0, 0.1, -2.5e-310], valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.GnssPositionAidingStatus",
+        lambda: filter_data.GnssPositionAidingStatus(
+            receiver_id=202,
+            time_of_week=-0.0,
+            status=types.FilterGnssAidingStatusFlags(0x2),
+            reserved=[62, 99, 136, 173, 210, 247, 33, 70],
+        ),
+    ),
+    (
+        "filter_data.AidingMeasurementSummary",
+        lambda: filter_data.AidingMeasurementSummary(
+            time_of_week=-0.0,
+            source=144,
+            type=types.FilterAidingMeasurementType.DUAL_ANTENNA,
+            indicator=types.FilterAidingMeasurementIndicator(0x20),
+        ),
+    ),
+    (
+        "filter_data.OdometerScaleFactorError",
+        lambda: filter_data.OdometerScaleFactorError(
+            scale_factor_error=1024.0, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.OdometerScaleFactorErrorUncertainty",
+        lambda: filter_data.OdometerScaleFactorErrorUncertainty(
+            scale_factor_error_uncertainty=1.5, valid_flags=types.FilterOutputValidFlags(0x1)
+        ),
+    ),
+    (
+        "filter_data.GnssDualAntennaStatus",
+        lambda: filter_data.GnssDualAntennaStatus(
+            time_of_week=0.375,
+            heading=1024.0,
+            heading_uncertainty=-0.0,
+            fix_type=types.FilterDualAntennaFixType.FIX_DA_FLOAT,
+            status_flags=types.FilterDualAntennaStatusFlags(0x4),
+            valid_flags=types.FilterOutputValidFlags(0x1),
+        ),
+    ),
+    (
+        "filter_data.AidingFrameConfigError",
+        lambda: filter_data.AidingFrameConfigError(
+            frame_id=123, translation=[-0.0, 1.5, -2.25], attitude=[0.375, 1024.0, -0.0, 1.5]
+        ),
+    ),
+    (
+        "filter_data.AidingFrameConfigErrorUncertainty",
+        lambda: filter_data.AidingFrameConfigErrorUncertainty(
+            frame_id=168, translation_uncertainty=[0.375, 1024.0, -0.0], attitude_uncertainty=[1.5, -2.25, 0.375]
+        ),
+    ),
+    ("reserved.AckNack", lambda: reserved.AckNack(command_descriptor=176, ack_code=types.AckCode.OK)),
+    ("types.ActionGpioParams", lambda: types.ActionGpioParams(pin=250, mode=types.ActionGpioMode.ONESHOT_LOW)),
     (
         "types.MessageParams",
-        lambda: types.MessageParams(desc_set=208, decimation=245, num_fields=2, descriptors=[31, 68]),
+        lambda: types.MessageParams(desc_set=73, decimation=110, num_fields=2, descriptors=[147, 184]),
     ),
-    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.GPIO, trigger_id=142)),
-    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[-2.25, 0.375, 1024.0])),
-    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[-0.0, 1.5, -2.25, 0.375])),
+    ("types.ActionStatusEntry", lambda: types.ActionStatusEntry(action_type=types.ActionType.NONE, trigger_id=7)),
+    ("types.AidingFrameEuler", lambda: types.AidingFrameEuler(euler=[1024.0, -0.0, 1.5])),
+    ("types.AidingFrameQuaternion", lambda: types.AidingFrameQuaternion(quaternion=[-2.25, 0.375, 1024.0, -0.0])),
     (
         "types.AidingTime",
-        lambda: types.AidingTime(timebase=types.AidingTimebase.EXTERNAL_TIME, reserved=224, nanoseconds=10),
+        lambda: types.AidingTime(timebase=types.AidingTimebase.INTERNAL_REFERENCE, reserved=89, nanoseconds=126),
     ),
-    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=47, input_triggers=[84, 121, 158, 195])),
+    ("types.CombinationParams", lambda: types.CombinationParams(logic_table=163, input_triggers=[200, 237, 23, 60])),
     (
         "types.ConstellationSettings",
         lambda: types.ConstellationSettings(
-            constellation_id=types.Gx5ConstellationId.BEIDOU,
-            enable=18,
-            reserved_channels=55,
-            max_channels=92,
+            constellation_id=types.Gx5ConstellationId.GALILEO,
+            enable=134,
+            reserved_channels=171,
+            max_channels=208,
             option_flags=types.ConstellationOptions(0x1),
         ),
     ),
-    ("types.DescriptorRate", lambda: types.DescriptorRate(descriptor=166, decimation=203)),
+    ("types.DescriptorRate", lambda: types.DescriptorRate(descriptor=31, decimation=68)),
     (
         "types.DeviceInfo",
         lambda: types.DeviceInfo(
-            firmware_version=240,
-            model_name=b"lmn             ",
-            model_number=b"mno             ",
-            serial_number=b"nop             ",
-            lot_number=b"opq             ",
-            device_options=b"pqr             ",
+            firmware_version=105,
+            model_name=b"efg             ",
+            model_number=b"fgh             ",
+            serial_number=b"ghi             ",
+            lot_number=b"hij             ",
+            device_options=b"ijk             ",
         ),
     ),
     (
         "types.GnssReceiverInfoEntry",
         lambda: types.GnssReceiverInfoEntry(
-            receiver_id=211,
-            mip_data_descriptor_set=248,
-            description=b"stu\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
+            receiver_id=76,
+            mip_data_descriptor_set=113,
+            description=b"lmn\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00",
         ),
     ),
     ("types.GpioBehaviorUnused", lambda: types.GpioBehaviorUnused(behavior=types.GpioUnusedBehavior.UNUSED)),
-    ("types.GpioBehaviorIo", lambda: types.GpioBehaviorIo(behavior=types.GpioIoBehavior.OUTPUT_LOW)),
-    ("types.GpioBehaviorPps", lambda: types.GpioBehaviorPps(behavior=types.GpioPpsBehavior.UNUSED)),
-    ("types.GpioBehaviorEncoder", lambda: types.GpioBehaviorEncoder(behavior=types.GpioEncoderBehavior.ENCODER_A)),
-    ("types.GpioBehaviorTimestamp", lambda: types.GpioBehaviorTimestamp(behavior=types.GpioTimestampBehavior.RISING)),
-    ("types.GpioBehaviorUart", lambda: types.GpioBehaviorUart(behavior=types.GpioUartBehavior.PORT2_RX)),
-    ("types.Gx5BasicStatus", lambda: types.Gx5BasicStatus(status_flags=42, system_state=79, system_timer=116)),
+    ("types.GpioBehaviorIo", lambda: types.GpioBehaviorIo(behavior=types.GpioIoBehavior.INPUT)),
+    ("types.GpioBehaviorPps", lambda: types.GpioBehaviorPps(behavior=types.GpioPpsBehavior.OUTPUT)),
+    ("types.GpioBehaviorEncoder", lambda: types.GpioBehaviorEncoder(behavior=types.GpioEncoderBehavior.UNUSED)),
+    ("types.GpioBehaviorTimestamp", lambda: types.GpioBehaviorTimestamp(behavior=types.GpioTimestampBehavior.UNUSED)),
+    ("types.GpioBehaviorUart", lambda: types.GpioBehaviorUart(behavior=types.GpioUartBehavior.PORT3_RX)),
+    ("types.Gx5BasicStatus", lambda: types.Gx5BasicStatus(status_flags=158, system_state=195, system_timer=232)),
     (
         "types.Gx5DiagnosticStatus",
         lambda: types.Gx5DiagnosticStatus(
-            status_flags=153,
-            system_state=190,
-            system_timer=227,
-            gnss_power_state=13,
-            pps_pulse_count=50,
-            last_pps_time=87,
-            imu_stream_enabled=124,
-            gnss_stream_enabled=161,
-            filter_stream_enabled=198,
-            imu_dropped_packets=235,
-            gnss_dropped_packets=21,
-            filter_dropped_packets=58,
-            com_bytes_written=95,
-            com_bytes_read=132,
-            com_write_overruns=169,
-            imu_parse_errors=206,
-            imu_messages_read=243,
-            last_imu_message_time=29,
-            gnss_parse_errors=66,
-            gnss_messages_read=103,
-            last_gnss_message_time=140,
+            status_flags=18,
+            system_state=55,
+            system_timer=92,
+            gnss_power_state=129,
+            pps_pulse_count=166,
+            last_pps_time=203,
+            imu_stream_enabled=240,
+            gnss_stream_enabled=26,
+            filter_stream_enabled=63,
+            imu_dropped_packets=100,
+            gnss_dropped_packets=137,
+            filter_dropped_packets=174,
+            com_bytes_written=211,
+            com_bytes_read=248,
+            com_write_overruns=34,
+            imu_parse_errors=71,
+            imu_messages_read=108,
+            last_imu_message_time=145,
+            gnss_parse_errors=182,
+            gnss_messages_read=219,
+            last_gnss_message_time=5,
         ),
     ),
-    ("types.Gx5PollDescriptor", lambda: types.Gx5PollDescriptor(descriptor=177, reserved=214)),
-    ("types.NmeaMessage", lambda: types.NmeaMessage(message_id=0, talker_id=37, source_desc_set=74, decimation=111)),
-    ("types.SensorRangeEntry", lambda: types.SensorRangeEntry(setting=148, range=-0.0)),
-    ("types.SupportedActionType", lambda: types.SupportedActionType(type=types.ActionType.NONE, count=8)),
+    ("types.Gx5PollDescriptor", lambda: types.Gx5PollDescriptor(descriptor=42, reserved=79)),
+    (
+        "types.NmeaMessage",
+        lambda: types.NmeaMessage(message_id=116, talker_id=153, source_desc_set=190, decimation=227),
+    ),
+    ("types.SensorRangeEntry", lambda: types.SensorRangeEntry(setting=13, range=-2.25)),
+    ("types.SupportedActionType", lambda: types.SupportedActionType(type=types.ActionType.MESSAGE, count=124)),
     (
         "types.SupportedActions",
         lambda: types.SupportedActions(
-            max_instances=45,
+            max_instances=161,
             num_entries=2,
             entries=[
-                types.SupportedActionType(type=types.ActionType.GPIO, count=156),
-                types.SupportedActionType(type=types.ActionType.GPIO, count=16),
+                types.SupportedActionType(type=types.ActionType.NONE, count=21),
+                types.SupportedActionType(type=types.ActionType.NONE, count=132),
             ],
         ),
     ),
-    ("types.SupportedTriggerType", lambda: types.SupportedTriggerType(type=types.TriggerType.NONE, count=90)),
+    ("types.SupportedTriggerType", lambda: types.SupportedTriggerType(type=types.TriggerType.COMBINATION, count=206)),
     (
         "types.SupportedTriggers",
         lambda: types.SupportedTriggers(
-            max_instances=127,
+            max_instances=243,
             num_entries=2,
             entries=[
-                types.SupportedTriggerType(type=types.TriggerType.NONE, count=238),
-                types.SupportedTriggerType(type=types.TriggerType.COMBINATION, count=98),
+                types.SupportedTriggerType(type=types.TriggerType.COMBINATION, count=103),
+                types.SupportedTriggerType(type=types.TriggerType.THRESHOLD, count=214),
             ],
         ),
     ),
     (
         "types.ThresholdParams",
         lambda: types.ThresholdParams(
-            desc_set=135,
-            field_desc=172,
-            param_id=209,
-            type=types.ThresholdType.WINDOW,
-            low_thres=1e16,
-            high_thres=123.456,
+            desc_set=0, field_desc=37, param_id=74, type=types.ThresholdType.INTERVAL, low_thres=-0.0, high_thres=0.1
         ),
     ),
-    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=106, mode=types.TriggerGpioMode.DISABLED)),
+    ("types.TriggerGpioParams", lambda: types.TriggerGpioParams(pin=222, mode=types.TriggerGpioMode.EDGE)),
     (
         "types.TriggerStatusEntry",
-        lambda: types.TriggerStatusEntry(type=types.TriggerType.GPIO, status=types.TriggerStatus(0x1)),
+        lambda: types.TriggerStatusEntry(type=types.TriggerType.NONE, status=types.TriggerStatus(0x4)),
     ),
 ]
 
@@ -1404,6 +1707,101 @@ BITFIELD_MEMBERS = [
     (types.EstimationControlFlags, "hard_iron_auto_cal", "HARD_IRON_AUTO_CAL", 5, 1, 0x20),
     (types.EstimationControlFlags, "soft_iron_auto_cal", "SOFT_IRON_AUTO_CAL", 6, 1, 0x40),
     (types.EstimationControlFlags, "reserved", "RESERVED", 7, 9, 0xFF80),
+    (types.FilterAidingMeasurementIndicator, "enabled", "ENABLED", 0, 1, 0x1),
+    (types.FilterAidingMeasurementIndicator, "used", "USED", 1, 1, 0x2),
+    (types.FilterAidingMeasurementIndicator, "residual_high_warning", "RESIDUAL_HIGH_WARNING", 2, 1, 0x4),
+    (types.FilterAidingMeasurementIndicator, "sample_time_warning", "SAMPLE_TIME_WARNING", 3, 1, 0x8),
+    (types.FilterAidingMeasurementIndicator, "configuration_error", "CONFIGURATION_ERROR", 4, 1, 0x10),
+    (types.FilterAidingMeasurementIndicator, "max_num_meas_exceeded", "MAX_NUM_MEAS_EXCEEDED", 5, 1, 0x20),
+    (types.FilterDualAntennaStatusFlags, "rcv_1_data_valid", "RCV_1_DATA_VALID", 0, 1, 0x1),
+    (types.FilterDualAntennaStatusFlags, "rcv_2_data_valid", "RCV_2_DATA_VALID", 1, 1, 0x2),
+    (types.FilterDualAntennaStatusFlags, "antenna_offsets_valid", "ANTENNA_OFFSETS_VALID", 2, 1, 0x4),
+    (types.FilterGnssAidingStatusFlags, "tight_coupling", "TIGHT_COUPLING", 0, 1, 0x1),
+    (types.FilterGnssAidingStatusFlags, "differential", "DIFFERENTIAL", 1, 1, 0x2),
+    (types.FilterGnssAidingStatusFlags, "integer_fix", "INTEGER_FIX", 2, 1, 0x4),
+    (types.FilterGnssAidingStatusFlags, "gps_l1", "GPS_L1", 3, 1, 0x8),
+    (types.FilterGnssAidingStatusFlags, "gps_l2", "GPS_L2", 4, 1, 0x10),
+    (types.FilterGnssAidingStatusFlags, "gps_l5", "GPS_L5", 5, 1, 0x20),
+    (types.FilterGnssAidingStatusFlags, "glo_l1", "GLO_L1", 6, 1, 0x40),
+    (types.FilterGnssAidingStatusFlags, "glo_l2", "GLO_L2", 7, 1, 0x80),
+    (types.FilterGnssAidingStatusFlags, "gal_e1", "GAL_E1", 8, 1, 0x100),
+    (types.FilterGnssAidingStatusFlags, "gal_e5", "GAL_E5", 9, 1, 0x200),
+    (types.FilterGnssAidingStatusFlags, "gal_e6", "GAL_E6", 10, 1, 0x400),
+    (types.FilterGnssAidingStatusFlags, "bei_b1", "BEI_B1", 11, 1, 0x800),
+    (types.FilterGnssAidingStatusFlags, "bei_b2", "BEI_B2", 12, 1, 0x1000),
+    (types.FilterGnssAidingStatusFlags, "bei_b3", "BEI_B3", 13, 1, 0x2000),
+    (types.FilterGnssAidingStatusFlags, "no_fix", "NO_FIX", 14, 1, 0x4000),
+    (types.FilterGnssAidingStatusFlags, "config_error", "CONFIG_ERROR", 15, 1, 0x8000),
+    (types.FilterHeadingSourceFlags, "magnetometer", "MAGNETOMETER", 0, 1, 0x1),
+    (types.FilterHeadingSourceFlags, "gnss_velocity", "GNSS_VELOCITY", 1, 1, 0x2),
+    (types.FilterHeadingSourceFlags, "external", "EXTERNAL", 2, 1, 0x4),
+    (types.FilterHeadingUpdateValidFlags, "updated_within_2s", "UPDATED_WITHIN_2S", 0, 1, 0x1),
+    (types.FilterOutputValidFlags, "valid", "VALID", 0, 1, 0x1),
+    (types.FilterStatusFlagsCv7, "filter_condition", "FILTER_CONDITION", 0, 2, 0x3),
+    (types.FilterStatusFlagsCv7, "roll_pitch_warning", "ROLL_PITCH_WARNING", 2, 1, 0x4),
+    (types.FilterStatusFlagsCv7, "heading_warning", "HEADING_WARNING", 3, 1, 0x8),
+    (types.FilterStatusFlagsCv7, "position_warning", "POSITION_WARNING", 4, 1, 0x10),
+    (types.FilterStatusFlagsCv7, "velocity_warning", "VELOCITY_WARNING", 5, 1, 0x20),
+    (types.FilterStatusFlagsCv7, "imu_bias_warning", "IMU_BIAS_WARNING", 6, 1, 0x40),
+    (types.FilterStatusFlagsCv7, "gnss_clk_warning", "GNSS_CLK_WARNING", 7, 1, 0x80),
+    (types.FilterStatusFlagsCv7, "antenna_lever_arm_warning", "ANTENNA_LEVER_ARM_WARNING", 8, 1, 0x100),
+    (types.FilterStatusFlagsCv7, "mounting_transform_warning", "MOUNTING_TRANSFORM_WARNING", 9, 1, 0x200),
+    (types.FilterStatusFlagsCv7, "time_sync_warning", "TIME_SYNC_WARNING", 10, 1, 0x400),
+    (types.FilterStatusFlagsCv7, "reserved", "RESERVED", 11, 1, 0x800),
+    (types.FilterStatusFlagsCv7, "solution_error", "SOLUTION_ERROR", 12, 4, 0xF000),
+    (types.FilterStatusFlagsGx5, "run_imu_unavailable", "RUN_IMU_UNAVAILABLE", 0, 1, 0x1),
+    (types.FilterStatusFlagsGx5, "run_gps_unavailable", "RUN_GPS_UNAVAILABLE", 1, 1, 0x2),
+    (types.FilterStatusFlagsGx5, "reserved", "RESERVED", 2, 1, 0x4),
+    (types.FilterStatusFlagsGx5, "run_matrix_singularity", "RUN_MATRIX_SINGULARITY", 3, 1, 0x8),
+    (types.FilterStatusFlagsGx5, "run_position_covariance_warning", "RUN_POSITION_COVARIANCE_WARNING", 4, 1, 0x10),
+    (types.FilterStatusFlagsGx5, "run_velocity_covariance_warning", "RUN_VELOCITY_COVARIANCE_WARNING", 5, 1, 0x20),
+    (types.FilterStatusFlagsGx5, "run_attitude_covariance_warning", "RUN_ATTITUDE_COVARIANCE_WARNING", 6, 1, 0x40),
+    (types.FilterStatusFlagsGx5, "run_nan_in_solution_warning", "RUN_NAN_IN_SOLUTION_WARNING", 7, 1, 0x80),
+    (types.FilterStatusFlagsGx5, "run_gyro_bias_est_high_warning", "RUN_GYRO_BIAS_EST_HIGH_WARNING", 8, 1, 0x100),
+    (types.FilterStatusFlagsGx5, "run_accel_bias_est_high_warning", "RUN_ACCEL_BIAS_EST_HIGH_WARNING", 9, 1, 0x200),
+    (
+        types.FilterStatusFlagsGx5,
+        "run_gyro_scale_factor_est_high_warning",
+        "RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING",
+        10,
+        1,
+        0x400,
+    ),
+    (
+        types.FilterStatusFlagsGx5,
+        "run_accel_scale_factor_est_high_warning",
+        "RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING",
+        11,
+        1,
+        0x800,
+    ),
+    (types.FilterStatusFlagsGx5, "run_mag_bias_est_high_warning", "RUN_MAG_BIAS_EST_HIGH_WARNING", 12, 1, 0x1000),
+    (
+        types.FilterStatusFlagsGx5,
+        "run_ant_offset_correction_est_high_warning",
+        "RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING",
+        13,
+        1,
+        0x2000,
+    ),
+    (
+        types.FilterStatusFlagsGx5,
+        "run_mag_hard_iron_est_high_warning",
+        "RUN_MAG_HARD_IRON_EST_HIGH_WARNING",
+        14,
+        1,
+        0x4000,
+    ),
+    (
+        types.FilterStatusFlagsGx5,
+        "run_mag_soft_iron_est_high_warning",
+        "RUN_MAG_SOFT_IRON_EST_HIGH_WARNING",
+        15,
+        1,
+        0x8000,
+    ),
+    (types.FilterStatusFlagsGx5, "init_no_attitude", "INIT_NO_ATTITUDE", 12, 1, 0x1000),
+    (types.FilterStatusFlagsGx5, "init_no_position_velocity", "INIT_NO_POSITION_VELOCITY", 13, 1, 0x2000),
     (types.GnssBeidouSignals, "b1", "B1", 0, 1, 0x1),
     (types.GnssBeidouSignals, "b2", "B2", 1, 1, 0x2),
     (types.GnssBeidouSignals, "b2a", "B2A", 2, 1, 0x4),

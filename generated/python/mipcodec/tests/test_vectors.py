@@ -4545,6 +4545,186 @@ CASES = [
         ],
     },
     {
+        "name": "filter_nav_stream_gx5",
+        "hex": "756582560e1141151802000000000898000108100003000200831c014046400000000000c052500000000000405e080000000000000110023fc00000be8000003e000000000114033f000000bf0000003f000000bf00000000011085",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:20",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":17,"name":"gps_timestamp","values":{"tow":345600.5,"week_number":2200,"valid_flags":1}},{"descriptor":16,"name":"filter_status","device":"gx5_45","values":{"filter_state":3,"dynamics_mode":2,"status_flags":131}},{"descriptor":1,"name":"llh_position","values":{"latitude":44.5,"longitude":-73.25,"ellipsoid_height":120.125,"valid_flags":1}},{"descriptor":2,"name":"ned_velocity","values":{"north":1.5,"east":-0.25,"down":0.125,"valid_flags":1}},{"descriptor":3,"name":"attitude_quaternion","values":{"q":[0.5,-0.5,0.5,-0.5],"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_status_gx5_initializing",
+        "hex": "756582080810000100033000b04d",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:59",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":16,"name":"filter_status","device":"gx5_45","values":{"filter_state":1,"dynamics_mode":3,"status_flags":12288}}]}'
+        ],
+    },
+    {
+        "name": "filter_status_cv7_faq_4_1_1025",
+        "hex": "75658208081000040001040186ff",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:80",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":16,"name":"filter_status","device":"cv7_ins","values":{"filter_state":4,"dynamics_mode":1,"status_flags":1025}}]}'
+        ],
+    },
+    {
+        "name": "filter_status_cv7_converging_warnings",
+        "hex": "75658208081000020001108a1996",
+        "device": "cv7_ins",
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:96",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":16,"name":"filter_status","device":"cv7_ins","values":{"filter_state":2,"dynamics_mode":1,"status_flags":4234}}]}'
+        ],
+    },
+    {
+        "name": "filter_attitude_fields",
+        "hex": "7565825c2804000000003f80000000000000bf800000000000000000000000000000000000003f800000000110053e800000be0000003fc000000001100a3c0000003c8000003d800000000014123b0000003b8000003c0000003c800000000117b7",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:112",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":4,"name":"attitude_dcm","values":{"dcm":[0.0,1.0,0.0,-1.0,0.0,0.0,0.0,0.0,1.0],"valid_flags":1}},{"descriptor":5,"name":"euler_angles","values":{"roll":0.25,"pitch":-0.125,"yaw":1.5,"valid_flags":1}},{"descriptor":10,"name":"euler_angles_uncertainty","values":{"roll":0.0078125,"pitch":0.015625,"yaw":0.0625,"valid_flags":0}},{"descriptor":18,"name":"quaternion_attitude_uncertainty","values":{"q":[0.001953125,0.00390625,0.0078125,0.015625],"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_bias_and_uncertainty_fields",
+        "hex": "7565826010063a800000bb0000003a000000000110073d000000bd8000003e0000000001100b39800000398000003a0000000001100c3c0000003c0000003c800000000110083fa000003fa0000040200000000110093e0000003e0000003e8000000000f5c1",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:139",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":6,"name":"gyro_bias","values":{"bias":[0.0009765625,-0.001953125,0.00048828125],"valid_flags":1}},{"descriptor":7,"name":"accel_bias","values":{"bias":[0.03125,-0.0625,0.125],"valid_flags":1}},{"descriptor":11,"name":"gyro_bias_uncertainty","values":{"bias_uncertainty":[0.000244140625,0.000244140625,0.00048828125],"valid_flags":1}},{"descriptor":12,"name":"accel_bias_uncertainty","values":{"bias_uncertainty":[0.0078125,0.0078125,0.015625],"valid_flags":1}},{"descriptor":8,"name":"llh_position_uncertainty","values":{"north":1.25,"east":1.25,"down":2.5,"valid_flags":1}},{"descriptor":9,"name":"ned_velocity_uncertainty","values":{"north":0.125,"east":0.125,"down":0.25,"valid_flags":0}}]}'
+        ],
+    },
+    {
+        "name": "filter_compensated_inertial_gx5",
+        "hex": "75658228100d3f000000bfa00000000000000001100e3d800000bd0000003f8000000001080f411d000000010e41",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_01_12.yaml:171",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":13,"name":"linear_accel","values":{"accel":[0.5,-1.25,0.0],"valid_flags":1}},{"descriptor":14,"name":"comp_angular_rate","values":{"gyro":[0.0625,-0.03125,1.0],"valid_flags":1}},{"descriptor":15,"name":"wgs84_gravity_magnitude","values":{"gravity_magnitude":9.8125,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_gravity_comp_accel_pressure_alt_mag_model",
+        "hex": "7565824010133f000000be800000411c00000001101c3fc00000c0000000c11c00000001082144800000000018153e800000bd0000003f0000003f800000be0000000001b593",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:5",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":19,"name":"gravity_vector","values":{"gravity":[0.5,-0.25,9.75],"valid_flags":1}},{"descriptor":28,"name":"compensated_accel","values":{"accel":[1.5,-2.0,-9.75],"valid_flags":1}},{"descriptor":33,"name":"pressure_altitude","values":{"pressure_altitude":1024.0,"valid_flags":0}},{"descriptor":21,"name":"magnetic_model","values":{"intensity_north":0.25,"intensity_east":-0.03125,"intensity_down":0.5,"inclination":1.0,"declination":-0.125,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_scale_factors",
+        "hex": "7565824010163c000000bb8000000000000000011017ba8000003b00000039800000000110183d8000003d8000003e000000000010193d0000003c8000003f0000000001d2e6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:57",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":22,"name":"gyro_scale_factor","values":{"scale_factor":[0.0078125,-0.00390625,0.0],"valid_flags":1}},{"descriptor":23,"name":"accel_scale_factor","values":{"scale_factor":[-0.0009765625,0.001953125,0.000244140625],"valid_flags":1}},{"descriptor":24,"name":"gyro_scale_factor_uncertainty","values":{"scale_factor_uncertainty":[0.0625,0.0625,0.125],"valid_flags":0}},{"descriptor":25,"name":"accel_scale_factor_uncertainty","values":{"scale_factor_uncertainty":[0.03125,0.015625,0.5],"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_heading_update_state_standard_atmosphere",
+        "hex": "756582260e143fc000003d80000000050001182044800000447fe000410800004460b0003f88000000016a9d",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:102",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":20,"name":"heading_update_state","values":{"heading":1.5,"heading_uncertainty":0.0625,"source":5,"valid_flags":1}},{"descriptor":32,"name":"standard_atmosphere","values":{"geometric_altitude":1024.0,"geopotential_altitude":1023.5,"temperature":8.5,"pressure":898.75,"density":1.0625,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_heading_update_state_gnss_velocity_stale",
+        "hex": "7565820e0e14c04000003e800000000200004cdf",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:137",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":20,"name":"heading_update_state","values":{"heading":-3.0,"heading_uncertainty":0.25,"source":2,"valid_flags":0}}]}'
+        ],
+    },
+    {
+        "name": "filter_mag_auto_hard_soft_iron",
+        "hex": "7565827010253e000000bd8000003e800000000110283c0000003c0000003c800000000128263f8000003c80000000000000bc8000003f7800000000000000000000000000003f840000000128293b0000003b0000003b0000003b8000003b8000003b8000003c0000003c0000003c00000000000fb2",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:158",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":37,"name":"mag_auto_hard_iron_offset","values":{"hard_iron_offset":[0.125,-0.0625,0.25],"valid_flags":1}},{"descriptor":40,"name":"mag_auto_hard_iron_offset_uncertainty","values":{"hard_iron_offset_uncertainty":[0.0078125,0.0078125,0.015625],"valid_flags":1}},{"descriptor":38,"name":"mag_auto_soft_iron_matrix","values":{"soft_iron_matrix":[1.0,0.015625,0.0,-0.015625,0.96875,0.0,0.0,0.0,1.03125],"valid_flags":1}},{"descriptor":41,"name":"mag_auto_soft_iron_matrix_uncertainty","values":{"soft_iron_matrix_uncertainty":[0.001953125,0.001953125,0.001953125,0.00390625,0.00390625,0.00390625,0.0078125,0.0078125,0.0078125],"valid_flags":0}}]}'
+        ],
+    },
+    {
+        "name": "filter_gnss_antenna_offset_correction",
+        "hex": "7565822010303f000000be8000003f900000000110313d8000003d8000003e000000000002fb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:207",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":48,"name":"gnss_antenna_offset_correction","values":{"offset":[0.5,-0.25,1.125],"valid_flags":1}},{"descriptor":49,"name":"gnss_antenna_offset_correction_uncertainty","values":{"offset_uncertainty":[0.0625,0.0625,0.125],"valid_flags":0}}]}'
+        ],
+    },
+    {
+        "name": "filter_multi_antenna_offset_correction_two_receivers",
+        "hex": "756582441134013d000000bd800000000000000001113402be0000003e8000003f00000000001135013c8000003c8000003d00000000011135023e8000003e8000003f000000000063a9",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:234",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":52,"name":"multi_antenna_offset_correction","values":{"receiver_id":1,"offset":[0.03125,-0.0625,0.0],"valid_flags":1}},{"descriptor":52,"name":"multi_antenna_offset_correction","values":{"receiver_id":2,"offset":[-0.125,0.25,0.5],"valid_flags":0}},{"descriptor":53,"name":"multi_antenna_offset_correction_uncertainty","values":{"receiver_id":1,"offset_uncertainty":[0.015625,0.015625,0.03125],"valid_flags":1}},{"descriptor":53,"name":"multi_antenna_offset_correction_uncertainty","values":{"receiver_id":2,"offset_uncertainty":[0.25,0.25,0.5],"valid_flags":0}}]}'
+        ],
+    },
+    {
+        "name": "filter_ecef_and_relative_position_velocity",
+        "hex": "756582681c40c133a8ce80000000c152030850000000414f1e10e0000000000110413fc00000be80000000000000000110363fa000003fa0000040200000000110373d8000003d8000003e00000000001c424059200000000000c039400000000000400000000000000000019b63",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:282",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":64,"name":"ecef_position","values":{"position":[-1288398.5,-4721697.25,4078625.75],"valid_flags":1}},{"descriptor":65,"name":"ecef_velocity","values":{"velocity":[1.5,-0.25,0.0],"valid_flags":1}},{"descriptor":54,"name":"ecef_position_uncertainty","values":{"position_uncertainty":[1.25,1.25,2.5],"valid_flags":1}},{"descriptor":55,"name":"ecef_velocity_uncertainty","values":{"velocity_uncertainty":[0.0625,0.0625,0.125],"valid_flags":0}},{"descriptor":66,"name":"ned_relative_position","values":{"relative_position":[100.5,-25.25,2.0],"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_aiding_status_summary_dual_antenna_odometer",
+        "hex": "7565824611430148a8c010095e0000000000000000094648a8c010000103094648a8c01001310d134948a8c0103f4000003c800000020007000108473c800000000108483b8000000001f8b3",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:336",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":67,"name":"gnss_position_aiding_status","values":{"receiver_id":1,"time_of_week":345600.5,"status":2398,"reserved":[0,0,0,0,0,0,0,0]}},{"descriptor":70,"name":"aiding_measurement_summary","values":{"time_of_week":345600.5,"source":0,"type":1,"indicator":3}},{"descriptor":70,"name":"aiding_measurement_summary","values":{"time_of_week":345600.5,"source":1,"type":49,"indicator":13}},{"descriptor":73,"name":"gnss_dual_antenna_status","values":{"time_of_week":345600.5,"heading":0.75,"heading_uncertainty":0.015625,"fix_type":2,"status_flags":7,"valid_flags":1}},{"descriptor":71,"name":"odometer_scale_factor_error","values":{"scale_factor_error":0.015625,"valid_flags":1}},{"descriptor":72,"name":"odometer_scale_factor_error_uncertainty","values":{"scale_factor_error_uncertainty":0.00390625,"valid_flags":1}}]}'
+        ],
+    },
+    {
+        "name": "filter_gnss_aiding_status_no_fix_config_error",
+        "hex": "7565822d11430200000000c00100000000000000000946000000000006301349000000000000000000000000000001000082ef",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:409",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":67,"name":"gnss_position_aiding_status","values":{"receiver_id":2,"time_of_week":0.0,"status":49153,"reserved":[0,0,0,0,0,0,0,0]}},{"descriptor":70,"name":"aiding_measurement_summary","values":{"time_of_week":0.0,"source":0,"type":6,"indicator":48}},{"descriptor":73,"name":"gnss_dual_antenna_status","values":{"time_of_week":0.0,"heading":0.0,"heading_uncertainty":0.0,"fix_type":0,"status_flags":1,"valid_flags":0}}]}'
+        ],
+    },
+    {
+        "name": "filter_aiding_frame_config_error",
+        "hex": "7565823a1f50013e000000be800000000000003f000000bf0000003f0000003f0000001b51013d8000003d8000003d0000003c0000003c0000003c80000056fb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/filter_data_13_51.yaml:455",
+        "expect": [
+            '{"offset":0,"set":130,"fields":[{"descriptor":80,"name":"aiding_frame_config_error","values":{"frame_id":1,"translation":[0.125,-0.25,0.0],"attitude":[0.5,-0.5,0.5,0.5]}},{"descriptor":81,"name":"aiding_frame_config_error_uncertainty","values":{"frame_id":1,"translation_uncertainty":[0.0625,0.0625,0.03125],"attitude_uncertainty":[0.0078125,0.0078125,0.015625]}}]}'
+        ],
+    },
+    {
         "name": "receiver_info_command",
         "hex": "75650e020201edfa",
         "device": None,

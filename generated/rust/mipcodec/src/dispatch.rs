@@ -69,7 +69,7 @@ pub fn set_kind(set: u8) -> Option<SetKind> {
 
 /// Whether the spec defines descriptor set `set`.
 pub fn set_defined(set: u8) -> bool {
-    matches!(set, 0x01 | 0x0C | 0x0D | 0x0E | 0x13 | 0x7F | 0x80)
+    matches!(set, 0x01 | 0x0C | 0x0D | 0x0E | 0x13 | 0x7F | 0x80 | 0x82)
 }
 
 /// A decoded field, by the group that defines it.
@@ -90,6 +90,8 @@ pub enum FieldValue {
     System(crate::system::SetField),
     /// A field of set 0x80.
     Sensor(crate::sensor::SetField),
+    /// A field of set 0x82.
+    FilterData(crate::filter_data::SetField),
     /// A reserved field.
     Reserved(crate::reserved::ReservedField),
 }
@@ -105,6 +107,7 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.descriptor(),
             FieldValue::System(v) => v.descriptor(),
             FieldValue::Sensor(v) => v.descriptor(),
+            FieldValue::FilterData(v) => v.descriptor(),
             FieldValue::Reserved(v) => v.descriptor(),
         }
     }
@@ -119,6 +122,7 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.name(),
             FieldValue::System(v) => v.name(),
             FieldValue::Sensor(v) => v.name(),
+            FieldValue::FilterData(v) => v.name(),
             FieldValue::Reserved(v) => v.name(),
         }
     }
@@ -133,6 +137,7 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.device(),
             FieldValue::System(v) => v.device(),
             FieldValue::Sensor(v) => v.device(),
+            FieldValue::FilterData(v) => v.device(),
             FieldValue::Reserved(v) => v.device(),
         }
     }
@@ -147,6 +152,7 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.encode_data(w),
             FieldValue::System(v) => v.encode_data(w),
             FieldValue::Sensor(v) => v.encode_data(w),
+            FieldValue::FilterData(v) => v.encode_data(w),
             FieldValue::Reserved(v) => v.encode_data(w),
         }
     }
@@ -161,6 +167,7 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.write_values_json(w),
             FieldValue::System(v) => v.write_values_json(w),
             FieldValue::Sensor(v) => v.write_values_json(w),
+            FieldValue::FilterData(v) => v.write_values_json(w),
             FieldValue::Reserved(v) => v.write_values_json(w),
         }
     }
@@ -203,6 +210,8 @@ impl FieldValue {
                 .map(|r| r.map(FieldValue::System)),
             0x80 => crate::sensor::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Sensor)),
+            0x82 => crate::filter_data::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::FilterData)),
             _ => None,
         };
         if let Some(result) = found {
@@ -246,6 +255,8 @@ pub fn decode_field(
                 .map(|r| r.map(FieldValue::System)),
             0x80 => crate::sensor::SetField::decode(descriptor, data, device)
                 .map(|r| r.map(FieldValue::Sensor)),
+            0x82 => crate::filter_data::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::FilterData)),
             _ => None,
         };
     if let Some(result) = found {

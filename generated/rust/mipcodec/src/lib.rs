@@ -1,7 +1,8 @@
 //! MicroStrain MIP: codec generated from `spec/mip/` by `python -m generator`. Do not edit.
 //!
 //! The core is `no_std` and allocation-free: bounded arrays ([`bounded::BoundedVec`]), a stream
-//! parser whose state is one maximum packet ([`parser::Parser`]), a packet builder
+//! parser whose state is one maximum packet ([`parser::Parser`]), a sample tracker for
+//! continuation packets ([`samples`]), a packet builder
 //! ([`builder::PacketBuilder`]), a field iterator ([`fields::Packet`]), typed values for every
 //! field (one module per descriptor set, [`reserved`], [`types`]) and the canonical JSON writer
 //! ([`json`]). The default `std` feature adds the JSON reader ([`json_read`]), the text helpers
@@ -49,6 +50,7 @@ pub mod json;
 pub mod json_read;
 pub mod parser;
 pub mod reserved;
+pub mod samples;
 #[cfg(feature = "std")]
 pub mod text;
 pub mod types;
@@ -57,6 +59,7 @@ pub mod wire;
 pub mod aiding;
 pub mod base;
 pub mod filter;
+pub mod filter_data;
 pub mod gnss;
 pub mod sensor;
 pub mod system;

@@ -6,11 +6,13 @@ use crate::dispatch::{write_packet_json, write_skip_json, Device, FieldValue};
 use crate::fields::Packet;
 use crate::json_read::{hex_bytes, parse, FromJson, Json, JsonError, Obj};
 use crate::parser::{Event, Parser};
+use crate::samples::SampleTracker;
 
 /// Decodes a byte stream fed in chunks into canonical JSON lines.
 pub struct StreamDecoder {
     parser: Parser,
     device: Option<Device>,
+    samples: Option<SampleTracker>,
     // Input bytes from stream offset `hist_base` on, kept to print skipped bytes.
     hist: Vec<u8>,
     hist_base: u64,
@@ -22,7 +24,9 @@ fn write_event(
     hist: &[u8],
     hist_base: u64,
     device: Option<Device>,
+    samples: &mut Option<SampleTracker>,
 ) {
+    let start_of_line = out.len();
     // Writing to a String cannot fail.
     let _ = match event {
         Event::Skip { offset, count } => {
@@ -30,7 +34,15 @@ fn write_event(
             write_skip_json(out, offset, &hist[start..start + count as usize])
         }
         Event::Packet { offset, bytes } => match Packet::new(bytes) {
-            Some(packet) => write_packet_json(out, offset, &packet, device),
+            Some(packet) => {
+                let r = write_packet_json(out, offset, &packet, device);
+                let place = samples.as_mut().and_then(|t| t.feed(&packet));
+                if let (Some(place), Some(at)) = (place, out[start_of_line..].find(",\"fields\":"))
+                {
+                    out.insert_str(start_of_line + at, &format!(",\"sample\":{}", place.number));
+                }
+                r
+            }
             None => Ok(()),
         },
     };
@@ -43,25 +55,35 @@ impl StreamDecoder {
         Self {
             parser: Parser::new(),
             device,
+            samples: None,
             hist: Vec::new(),
             hist_base: 0,
         }
     }
 
+    /// Numbers the samples of data packets (`"sample":N`, `docs/conformance.md` §6).
+    pub fn with_samples(mut self) -> Self {
+        self.samples = Some(SampleTracker::new());
+        self
+    }
+
     /// Feeds `chunk`; appends the lines of completed events to `out`.
     pub fn feed(&mut self, chunk: &[u8], out: &mut String) {
         self.hist.extend_from_slice(chunk);
-        let (hist, base, device) = (&self.hist, self.hist_base, self.device);
-        self.parser
-            .feed(chunk, |event| write_event(out, event, hist, base, device));
+        let (hist, base, device, samples) =
+            (&self.hist, self.hist_base, self.device, &mut self.samples);
+        self.parser.feed(chunk, |event| {
+            write_event(out, event, hist, base, device, samples)
+        });
         self.trim();
     }
 
     /// End of input: appends the remaining lines to `out`.
     pub fn finish(&mut self, out: &mut String) {
-        let (hist, base, device) = (&self.hist, self.hist_base, self.device);
+        let (hist, base, device, samples) =
+            (&self.hist, self.hist_base, self.device, &mut self.samples);
         self.parser
-            .flush(|event| write_event(out, event, hist, base, device));
+            .flush(|event| write_event(out, event, hist, base, device, samples));
         self.trim();
     }
 

@@ -2762,6 +2762,849 @@ impl crate::json_read::FromJson for FactoryStreamingAction {
     }
 }
 
+/// Aiding measurement indicator. State of one aiding measurement over the last measurement interval.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterAidingMeasurementIndicator(pub u8);
+
+impl FilterAidingMeasurementIndicator {
+    /// Mask of `enabled` (bit 0).
+    pub const ENABLED: u8 = 0x01;
+    /// Mask of `used` (bit 1).
+    pub const USED: u8 = 0x02;
+    /// Mask of `residual_high_warning` (bit 2).
+    pub const RESIDUAL_HIGH_WARNING: u8 = 0x04;
+    /// Mask of `sample_time_warning` (bit 3).
+    pub const SAMPLE_TIME_WARNING: u8 = 0x08;
+    /// Mask of `configuration_error` (bit 4).
+    pub const CONFIGURATION_ERROR: u8 = 0x10;
+    /// Mask of `max_num_meas_exceeded` (bit 5).
+    pub const MAX_NUM_MEAS_EXCEEDED: u8 = 0x20;
+
+    /// The measurement is enabled. (bit 0)
+    pub const fn enabled(self) -> bool {
+        self.0 & Self::ENABLED != 0
+    }
+
+    /// Sets or clears `enabled` (bit 0).
+    pub fn set_enabled(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ENABLED;
+        } else {
+            self.0 &= !Self::ENABLED;
+        }
+    }
+
+    /// The measurement was used by the filter. (bit 1)
+    pub const fn used(self) -> bool {
+        self.0 & Self::USED != 0
+    }
+
+    /// Sets or clears `used` (bit 1).
+    pub fn set_used(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::USED;
+        } else {
+            self.0 &= !Self::USED;
+        }
+    }
+
+    /// Measurement residual is high. (bit 2)
+    pub const fn residual_high_warning(self) -> bool {
+        self.0 & Self::RESIDUAL_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `residual_high_warning` (bit 2).
+    pub fn set_residual_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESIDUAL_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RESIDUAL_HIGH_WARNING;
+        }
+    }
+
+    /// Problem with the measurement's sample time. (bit 3)
+    pub const fn sample_time_warning(self) -> bool {
+        self.0 & Self::SAMPLE_TIME_WARNING != 0
+    }
+
+    /// Sets or clears `sample_time_warning` (bit 3).
+    pub fn set_sample_time_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SAMPLE_TIME_WARNING;
+        } else {
+            self.0 &= !Self::SAMPLE_TIME_WARNING;
+        }
+    }
+
+    /// The measurement is misconfigured. (bit 4)
+    pub const fn configuration_error(self) -> bool {
+        self.0 & Self::CONFIGURATION_ERROR != 0
+    }
+
+    /// Sets or clears `configuration_error` (bit 4).
+    pub fn set_configuration_error(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CONFIGURATION_ERROR;
+        } else {
+            self.0 &= !Self::CONFIGURATION_ERROR;
+        }
+    }
+
+    /// More measurements than the filter can process. (bit 5)
+    pub const fn max_num_meas_exceeded(self) -> bool {
+        self.0 & Self::MAX_NUM_MEAS_EXCEEDED != 0
+    }
+
+    /// Sets or clears `max_num_meas_exceeded` (bit 5).
+    pub fn set_max_num_meas_exceeded(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAX_NUM_MEAS_EXCEEDED;
+        } else {
+            self.0 &= !Self::MAX_NUM_MEAS_EXCEEDED;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterAidingMeasurementIndicator {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterAidingMeasurementIndicator {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Aiding measurement type. Which aiding measurement an Aiding Measurement Summary (0x82,0x46) describes. Values 0x20 and above are the measurements commanded through the Aiding command set (0x13); their value is the descriptor of that command.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterAidingMeasurementType(pub u8);
+
+impl FilterAidingMeasurementType {
+    /// GNSS receiver measurement.
+    pub const GNSS: Self = Self(1);
+    /// GNSS dual-antenna heading.
+    pub const DUAL_ANTENNA: Self = Self(2);
+    /// Heading measurement.
+    pub const HEADING: Self = Self(3);
+    /// Pressure (barometric altitude).
+    pub const PRESSURE: Self = Self(4);
+    /// Magnetometer.
+    pub const MAGNETOMETER: Self = Self(5);
+    /// Speed sensor (odometer).
+    pub const SPEED: Self = Self(6);
+    /// ECEF position aiding command (0x13,0x21).
+    pub const AIDING_POS_ECEF: Self = Self(33);
+    /// LLH position aiding command (0x13,0x22).
+    pub const AIDING_POS_LLH: Self = Self(34);
+    /// Height above ellipsoid aiding command (0x13,0x23).
+    pub const AIDING_HEIGHT_ABOVE_ELLIPSOID: Self = Self(35);
+    /// ECEF velocity aiding command (0x13,0x28).
+    pub const AIDING_VEL_ECEF: Self = Self(40);
+    /// NED velocity aiding command (0x13,0x29).
+    pub const AIDING_VEL_NED: Self = Self(41);
+    /// Body-frame velocity aiding command (0x13,0x2A).
+    pub const AIDING_VEL_BODY_FRAME: Self = Self(42);
+    /// True heading aiding command (0x13,0x31).
+    pub const AIDING_HEADING_TRUE: Self = Self(49);
+    /// Magnetic field aiding command (0x13,0x32).
+    pub const AIDING_MAGNETIC_FIELD: Self = Self(50);
+    /// Pressure aiding command (0x13,0x33).
+    pub const AIDING_PRESSURE: Self = Self(51);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("gnss"),
+            2 => Some("dual_antenna"),
+            3 => Some("heading"),
+            4 => Some("pressure"),
+            5 => Some("magnetometer"),
+            6 => Some("speed"),
+            33 => Some("aiding_pos_ecef"),
+            34 => Some("aiding_pos_llh"),
+            35 => Some("aiding_height_above_ellipsoid"),
+            40 => Some("aiding_vel_ecef"),
+            41 => Some("aiding_vel_ned"),
+            42 => Some("aiding_vel_body_frame"),
+            49 => Some("aiding_heading_true"),
+            50 => Some("aiding_magnetic_field"),
+            51 => Some("aiding_pressure"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "gnss" => Some(Self::GNSS),
+            "dual_antenna" => Some(Self::DUAL_ANTENNA),
+            "heading" => Some(Self::HEADING),
+            "pressure" => Some(Self::PRESSURE),
+            "magnetometer" => Some(Self::MAGNETOMETER),
+            "speed" => Some(Self::SPEED),
+            "aiding_pos_ecef" => Some(Self::AIDING_POS_ECEF),
+            "aiding_pos_llh" => Some(Self::AIDING_POS_LLH),
+            "aiding_height_above_ellipsoid" => Some(Self::AIDING_HEIGHT_ABOVE_ELLIPSOID),
+            "aiding_vel_ecef" => Some(Self::AIDING_VEL_ECEF),
+            "aiding_vel_ned" => Some(Self::AIDING_VEL_NED),
+            "aiding_vel_body_frame" => Some(Self::AIDING_VEL_BODY_FRAME),
+            "aiding_heading_true" => Some(Self::AIDING_HEADING_TRUE),
+            "aiding_magnetic_field" => Some(Self::AIDING_MAGNETIC_FIELD),
+            "aiding_pressure" => Some(Self::AIDING_PRESSURE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterAidingMeasurementType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterAidingMeasurementType({} {})", self.0, name),
+            None => write!(f, "FilterAidingMeasurementType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterAidingMeasurementType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterAidingMeasurementType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterAidingMeasurementType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Dual-antenna fix type. Kind of GNSS dual-antenna heading solution.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterDualAntennaFixType(pub u8);
+
+impl FilterDualAntennaFixType {
+    /// No dual-antenna fix.
+    pub const FIX_NONE: Self = Self(0);
+    /// Dual-antenna float solution.
+    pub const FIX_DA_FLOAT: Self = Self(1);
+    /// Dual-antenna fixed (integer) solution.
+    pub const FIX_DA_FIXED: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("fix_none"),
+            1 => Some("fix_da_float"),
+            2 => Some("fix_da_fixed"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "fix_none" => Some(Self::FIX_NONE),
+            "fix_da_float" => Some(Self::FIX_DA_FLOAT),
+            "fix_da_fixed" => Some(Self::FIX_DA_FIXED),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterDualAntennaFixType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterDualAntennaFixType({} {})", self.0, name),
+            None => write!(f, "FilterDualAntennaFixType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterDualAntennaFixType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterDualAntennaFixType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterDualAntennaFixType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Dual-antenna status flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterDualAntennaStatusFlags(pub u16);
+
+impl FilterDualAntennaStatusFlags {
+    /// Mask of `rcv_1_data_valid` (bit 0).
+    pub const RCV_1_DATA_VALID: u16 = 0x0001;
+    /// Mask of `rcv_2_data_valid` (bit 1).
+    pub const RCV_2_DATA_VALID: u16 = 0x0002;
+    /// Mask of `antenna_offsets_valid` (bit 2).
+    pub const ANTENNA_OFFSETS_VALID: u16 = 0x0004;
+
+    /// Data from receiver 1 are valid. (bit 0)
+    pub const fn rcv_1_data_valid(self) -> bool {
+        self.0 & Self::RCV_1_DATA_VALID != 0
+    }
+
+    /// Sets or clears `rcv_1_data_valid` (bit 0).
+    pub fn set_rcv_1_data_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RCV_1_DATA_VALID;
+        } else {
+            self.0 &= !Self::RCV_1_DATA_VALID;
+        }
+    }
+
+    /// Data from receiver 2 are valid. (bit 1)
+    pub const fn rcv_2_data_valid(self) -> bool {
+        self.0 & Self::RCV_2_DATA_VALID != 0
+    }
+
+    /// Sets or clears `rcv_2_data_valid` (bit 1).
+    pub fn set_rcv_2_data_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RCV_2_DATA_VALID;
+        } else {
+            self.0 &= !Self::RCV_2_DATA_VALID;
+        }
+    }
+
+    /// The antenna offsets are valid. (bit 2)
+    pub const fn antenna_offsets_valid(self) -> bool {
+        self.0 & Self::ANTENNA_OFFSETS_VALID != 0
+    }
+
+    /// Sets or clears `antenna_offsets_valid` (bit 2).
+    pub fn set_antenna_offsets_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_OFFSETS_VALID;
+        } else {
+            self.0 &= !Self::ANTENNA_OFFSETS_VALID;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterDualAntennaStatusFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterDualAntennaStatusFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Filter dynamics mode (3DM-CV7). Dynamics mode reported in Status (0x82,0x10) by the CV7 (GQ7-family filter).
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterDynamicsModeCv7(pub u16);
+
+impl FilterDynamicsModeCv7 {
+    /// Default dynamics mode (printed GQ7_DEFAULT).
+    pub const DEFAULT: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("default"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "default" => Some(Self::DEFAULT),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterDynamicsModeCv7 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterDynamicsModeCv7({} {})", self.0, name),
+            None => write!(f, "FilterDynamicsModeCv7({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterDynamicsModeCv7 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterDynamicsModeCv7 {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterDynamicsModeCv7"
+                ))
+            }),
+            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Filter dynamics mode (3DM-GX5-45). Vehicle dynamics mode the GX5-45 filter runs with, as reported in Filter Status (0x82,0x10).
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterDynamicsModeGx5(pub u16);
+
+impl FilterDynamicsModeGx5 {
+    /// Portable (low-acceleration applications).
+    pub const PORTABLE: Self = Self(1);
+    /// Automotive (wheeled vehicles, low vertical acceleration).
+    pub const AUTOMOTIVE: Self = Self(2);
+    /// Airborne (up to 2 g).
+    pub const AIRBORNE: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("portable"),
+            2 => Some("automotive"),
+            3 => Some("airborne"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "portable" => Some(Self::PORTABLE),
+            "automotive" => Some(Self::AUTOMOTIVE),
+            "airborne" => Some(Self::AIRBORNE),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterDynamicsModeGx5 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterDynamicsModeGx5({} {})", self.0, name),
+            None => write!(f, "FilterDynamicsModeGx5({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterDynamicsModeGx5 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterDynamicsModeGx5 {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterDynamicsModeGx5"
+                ))
+            }),
+            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GNSS position aiding status. What the filter does with the measurements of one GNSS receiver.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterGnssAidingStatusFlags(pub u16);
+
+impl FilterGnssAidingStatusFlags {
+    /// Mask of `tight_coupling` (bit 0).
+    pub const TIGHT_COUPLING: u16 = 0x0001;
+    /// Mask of `differential` (bit 1).
+    pub const DIFFERENTIAL: u16 = 0x0002;
+    /// Mask of `integer_fix` (bit 2).
+    pub const INTEGER_FIX: u16 = 0x0004;
+    /// Mask of `gps_l1` (bit 3).
+    pub const GPS_L1: u16 = 0x0008;
+    /// Mask of `gps_l2` (bit 4).
+    pub const GPS_L2: u16 = 0x0010;
+    /// Mask of `gps_l5` (bit 5).
+    pub const GPS_L5: u16 = 0x0020;
+    /// Mask of `glo_l1` (bit 6).
+    pub const GLO_L1: u16 = 0x0040;
+    /// Mask of `glo_l2` (bit 7).
+    pub const GLO_L2: u16 = 0x0080;
+    /// Mask of `gal_e1` (bit 8).
+    pub const GAL_E1: u16 = 0x0100;
+    /// Mask of `gal_e5` (bit 9).
+    pub const GAL_E5: u16 = 0x0200;
+    /// Mask of `gal_e6` (bit 10).
+    pub const GAL_E6: u16 = 0x0400;
+    /// Mask of `bei_b1` (bit 11).
+    pub const BEI_B1: u16 = 0x0800;
+    /// Mask of `bei_b2` (bit 12).
+    pub const BEI_B2: u16 = 0x1000;
+    /// Mask of `bei_b3` (bit 13).
+    pub const BEI_B3: u16 = 0x2000;
+    /// Mask of `no_fix` (bit 14).
+    pub const NO_FIX: u16 = 0x4000;
+    /// Mask of `config_error` (bit 15).
+    pub const CONFIG_ERROR: u16 = 0x8000;
+
+    /// The filter is processing raw range information from this receiver. (bit 0)
+    pub const fn tight_coupling(self) -> bool {
+        self.0 & Self::TIGHT_COUPLING != 0
+    }
+
+    /// Sets or clears `tight_coupling` (bit 0).
+    pub fn set_tight_coupling(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIGHT_COUPLING;
+        } else {
+            self.0 &= !Self::TIGHT_COUPLING;
+        }
+    }
+
+    /// The filter is processing RTK corrections from this receiver. (bit 1)
+    pub const fn differential(self) -> bool {
+        self.0 & Self::DIFFERENTIAL != 0
+    }
+
+    /// Sets or clears `differential` (bit 1).
+    pub fn set_differential(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DIFFERENTIAL;
+        } else {
+            self.0 &= !Self::DIFFERENTIAL;
+        }
+    }
+
+    /// The filter has an RTK integer fix from this receiver. (bit 2)
+    pub const fn integer_fix(self) -> bool {
+        self.0 & Self::INTEGER_FIX != 0
+    }
+
+    /// Sets or clears `integer_fix` (bit 2).
+    pub fn set_integer_fix(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::INTEGER_FIX;
+        } else {
+            self.0 &= !Self::INTEGER_FIX;
+        }
+    }
+
+    /// GPS L1 measurements used. (bit 3)
+    pub const fn gps_l1(self) -> bool {
+        self.0 & Self::GPS_L1 != 0
+    }
+
+    /// Sets or clears `gps_l1` (bit 3).
+    pub fn set_gps_l1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GPS_L1;
+        } else {
+            self.0 &= !Self::GPS_L1;
+        }
+    }
+
+    /// GPS L2 measurements used. (bit 4)
+    pub const fn gps_l2(self) -> bool {
+        self.0 & Self::GPS_L2 != 0
+    }
+
+    /// Sets or clears `gps_l2` (bit 4).
+    pub fn set_gps_l2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GPS_L2;
+        } else {
+            self.0 &= !Self::GPS_L2;
+        }
+    }
+
+    /// GPS L5 measurements used. (bit 5)
+    pub const fn gps_l5(self) -> bool {
+        self.0 & Self::GPS_L5 != 0
+    }
+
+    /// Sets or clears `gps_l5` (bit 5).
+    pub fn set_gps_l5(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GPS_L5;
+        } else {
+            self.0 &= !Self::GPS_L5;
+        }
+    }
+
+    /// GLONASS L1 measurements used. (bit 6)
+    pub const fn glo_l1(self) -> bool {
+        self.0 & Self::GLO_L1 != 0
+    }
+
+    /// Sets or clears `glo_l1` (bit 6).
+    pub fn set_glo_l1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GLO_L1;
+        } else {
+            self.0 &= !Self::GLO_L1;
+        }
+    }
+
+    /// GLONASS L2 measurements used. (bit 7)
+    pub const fn glo_l2(self) -> bool {
+        self.0 & Self::GLO_L2 != 0
+    }
+
+    /// Sets or clears `glo_l2` (bit 7).
+    pub fn set_glo_l2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GLO_L2;
+        } else {
+            self.0 &= !Self::GLO_L2;
+        }
+    }
+
+    /// Galileo E1 measurements used. (bit 8)
+    pub const fn gal_e1(self) -> bool {
+        self.0 & Self::GAL_E1 != 0
+    }
+
+    /// Sets or clears `gal_e1` (bit 8).
+    pub fn set_gal_e1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GAL_E1;
+        } else {
+            self.0 &= !Self::GAL_E1;
+        }
+    }
+
+    /// Galileo E5 measurements used. (bit 9)
+    pub const fn gal_e5(self) -> bool {
+        self.0 & Self::GAL_E5 != 0
+    }
+
+    /// Sets or clears `gal_e5` (bit 9).
+    pub fn set_gal_e5(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GAL_E5;
+        } else {
+            self.0 &= !Self::GAL_E5;
+        }
+    }
+
+    /// Galileo E6 measurements used. (bit 10)
+    pub const fn gal_e6(self) -> bool {
+        self.0 & Self::GAL_E6 != 0
+    }
+
+    /// Sets or clears `gal_e6` (bit 10).
+    pub fn set_gal_e6(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GAL_E6;
+        } else {
+            self.0 &= !Self::GAL_E6;
+        }
+    }
+
+    /// BeiDou B1 measurements used. (bit 11)
+    pub const fn bei_b1(self) -> bool {
+        self.0 & Self::BEI_B1 != 0
+    }
+
+    /// Sets or clears `bei_b1` (bit 11).
+    pub fn set_bei_b1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BEI_B1;
+        } else {
+            self.0 &= !Self::BEI_B1;
+        }
+    }
+
+    /// BeiDou B2 measurements used. (bit 12)
+    pub const fn bei_b2(self) -> bool {
+        self.0 & Self::BEI_B2 != 0
+    }
+
+    /// Sets or clears `bei_b2` (bit 12).
+    pub fn set_bei_b2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BEI_B2;
+        } else {
+            self.0 &= !Self::BEI_B2;
+        }
+    }
+
+    /// BeiDou B3 measurements used. (bit 13)
+    pub const fn bei_b3(self) -> bool {
+        self.0 & Self::BEI_B3 != 0
+    }
+
+    /// Sets or clears `bei_b3` (bit 13).
+    pub fn set_bei_b3(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BEI_B3;
+        } else {
+            self.0 &= !Self::BEI_B3;
+        }
+    }
+
+    /// This receiver reports no position fix. (bit 14)
+    pub const fn no_fix(self) -> bool {
+        self.0 & Self::NO_FIX != 0
+    }
+
+    /// Sets or clears `no_fix` (bit 14).
+    pub fn set_no_fix(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::NO_FIX;
+        } else {
+            self.0 &= !Self::NO_FIX;
+        }
+    }
+
+    /// Probably a problem with this receiver's antenna offset. (bit 15)
+    pub const fn config_error(self) -> bool {
+        self.0 & Self::CONFIG_ERROR != 0
+    }
+
+    /// Sets or clears `config_error` (bit 15).
+    pub fn set_config_error(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CONFIG_ERROR;
+        } else {
+            self.0 &= !Self::CONFIG_ERROR;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterGnssAidingStatusFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterGnssAidingStatusFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// Filter GNSS source. Where the filter takes its GNSS position and velocity updates from.
 ///
 /// Values the spec does not list are kept as they are.
@@ -2839,6 +3682,136 @@ impl crate::json_read::FromJson for FilterGnssSource {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Heading update sources in use. Sources currently providing heading updates; 0 means none (heading updates disabled).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterHeadingSourceFlags(pub u16);
+
+impl FilterHeadingSourceFlags {
+    /// Mask of `magnetometer` (bit 0).
+    pub const MAGNETOMETER: u16 = 0x0001;
+    /// Mask of `gnss_velocity` (bit 1).
+    pub const GNSS_VELOCITY: u16 = 0x0002;
+    /// Mask of `external` (bit 2).
+    pub const EXTERNAL: u16 = 0x0004;
+
+    /// Internal magnetometer. (bit 0)
+    pub const fn magnetometer(self) -> bool {
+        self.0 & Self::MAGNETOMETER != 0
+    }
+
+    /// Sets or clears `magnetometer` (bit 0).
+    pub fn set_magnetometer(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER;
+        } else {
+            self.0 &= !Self::MAGNETOMETER;
+        }
+    }
+
+    /// GNSS velocity vector. (bit 1)
+    pub const fn gnss_velocity(self) -> bool {
+        self.0 & Self::GNSS_VELOCITY != 0
+    }
+
+    /// Sets or clears `gnss_velocity` (bit 1).
+    pub fn set_gnss_velocity(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_VELOCITY;
+        } else {
+            self.0 &= !Self::GNSS_VELOCITY;
+        }
+    }
+
+    /// External Heading Update messages (0x0D,0x17), with or without timestamp (0x0D,0x1F). (bit 2)
+    pub const fn external(self) -> bool {
+        self.0 & Self::EXTERNAL != 0
+    }
+
+    /// Sets or clears `external` (bit 2).
+    pub fn set_external(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::EXTERNAL;
+        } else {
+            self.0 &= !Self::EXTERNAL;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterHeadingSourceFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterHeadingSourceFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Heading update state valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterHeadingUpdateValidFlags(pub u16);
+
+impl FilterHeadingUpdateValidFlags {
+    /// Mask of `updated_within_2s` (bit 0).
+    pub const UPDATED_WITHIN_2S: u16 = 0x0001;
+
+    /// The heading update source provided data within the last 2 seconds (0: no update for 2 seconds). (bit 0)
+    pub const fn updated_within_2s(self) -> bool {
+        self.0 & Self::UPDATED_WITHIN_2S != 0
+    }
+
+    /// Sets or clears `updated_within_2s` (bit 0).
+    pub fn set_updated_within_2s(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::UPDATED_WITHIN_2S;
+        } else {
+            self.0 &= !Self::UPDATED_WITHIN_2S;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterHeadingUpdateValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterHeadingUpdateValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -2922,6 +3895,135 @@ impl crate::json_read::FromJson for FilterInitialConditionSource {
     }
 }
 
+/// Filter mode (3DM-CV7). Mode the CV7 navigation filter has reached, reported as the filter state in Status (0x82,0x10); it depends on the initial conditions the filter was given.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterModeCv7(pub u16);
+
+impl FilterModeCv7 {
+    /// Initialization: initial conditions incomplete or invalid, or waiting for user input.
+    pub const INIT: Self = Self(1);
+    /// Vertical gyro: valid pitch and roll, heading relative to the initial heading.
+    pub const VERT_GYRO: Self = Self(2);
+    /// AHRS: as vertical gyro, with an absolute heading reference.
+    pub const AHRS: Self = Self(3);
+    /// Full navigation: valid position, velocity, pitch, roll and heading.
+    pub const FULL_NAV: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("init"),
+            2 => Some("vert_gyro"),
+            3 => Some("ahrs"),
+            4 => Some("full_nav"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "init" => Some(Self::INIT),
+            "vert_gyro" => Some(Self::VERT_GYRO),
+            "ahrs" => Some(Self::AHRS),
+            "full_nav" => Some(Self::FULL_NAV),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterModeCv7 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterModeCv7({} {})", self.0, name),
+            None => write!(f, "FilterModeCv7({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterModeCv7 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterModeCv7 {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterModeCv7"
+                ))
+            }),
+            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Filter output valid flags. Valid flags of a filter output field: 0x0000 the values are invalid, 0x0001 they are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterOutputValidFlags(pub u16);
+
+impl FilterOutputValidFlags {
+    /// Mask of `valid` (bit 0).
+    pub const VALID: u16 = 0x0001;
+
+    /// The values of this field are valid. (bit 0)
+    pub const fn valid(self) -> bool {
+        self.0 & Self::VALID != 0
+    }
+
+    /// Sets or clears `valid` (bit 0).
+    pub fn set_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VALID;
+        } else {
+            self.0 &= !Self::VALID;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterOutputValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterOutputValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// Reference frame of user-specified positions and velocities.
 ///
 /// Values the spec does not list are kept as they are.
@@ -2991,6 +4093,624 @@ impl crate::json_read::FromJson for FilterReferenceFrame {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Filter state (3DM-GX5-45). Operating state of the GX5-45 estimation filter, reported in Filter Status (0x82,0x10).
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FilterStateGx5(pub u16);
+
+impl FilterStateGx5 {
+    /// Filter starting up.
+    pub const STARTUP: Self = Self(0);
+    /// Initializing; the status flags tell what is still missing.
+    pub const INIT: Self = Self(1);
+    /// Running, the solution is valid.
+    pub const RUN_SOLUTION_VALID: Self = Self(2);
+    /// Running, the solution has an error; the status flags tell which.
+    pub const RUN_SOLUTION_ERROR: Self = Self(3);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("startup"),
+            1 => Some("init"),
+            2 => Some("run_solution_valid"),
+            3 => Some("run_solution_error"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "startup" => Some(Self::STARTUP),
+            "init" => Some(Self::INIT),
+            "run_solution_valid" => Some(Self::RUN_SOLUTION_VALID),
+            "run_solution_error" => Some(Self::RUN_SOLUTION_ERROR),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for FilterStateGx5 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "FilterStateGx5({} {})", self.0, name),
+            None => write!(f, "FilterStateGx5({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterStateGx5 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterStateGx5 {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of FilterStateGx5"
+                ))
+            }),
+            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Filter status flags (3DM-CV7). CV7 (GQ7-family) filter status flags: the filter condition in bits 0-1 (1 stable, 2 converging, 3 unstable/recovering), estimate warnings in bits 2-10 and solution error flags in bits 12-15.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterStatusFlagsCv7(pub u16);
+
+impl FilterStatusFlagsCv7 {
+    /// Mask of `filter_condition` (bits 0..=1).
+    pub const FILTER_CONDITION: u16 = 0x0003;
+    /// Mask of `roll_pitch_warning` (bit 2).
+    pub const ROLL_PITCH_WARNING: u16 = 0x0004;
+    /// Mask of `heading_warning` (bit 3).
+    pub const HEADING_WARNING: u16 = 0x0008;
+    /// Mask of `position_warning` (bit 4).
+    pub const POSITION_WARNING: u16 = 0x0010;
+    /// Mask of `velocity_warning` (bit 5).
+    pub const VELOCITY_WARNING: u16 = 0x0020;
+    /// Mask of `imu_bias_warning` (bit 6).
+    pub const IMU_BIAS_WARNING: u16 = 0x0040;
+    /// Mask of `gnss_clk_warning` (bit 7).
+    pub const GNSS_CLK_WARNING: u16 = 0x0080;
+    /// Mask of `antenna_lever_arm_warning` (bit 8).
+    pub const ANTENNA_LEVER_ARM_WARNING: u16 = 0x0100;
+    /// Mask of `mounting_transform_warning` (bit 9).
+    pub const MOUNTING_TRANSFORM_WARNING: u16 = 0x0200;
+    /// Mask of `time_sync_warning` (bit 10).
+    pub const TIME_SYNC_WARNING: u16 = 0x0400;
+    /// Mask of `reserved` (bit 11).
+    pub const RESERVED: u16 = 0x0800;
+    /// Mask of `solution_error` (bits 12..=15).
+    pub const SOLUTION_ERROR: u16 = 0xF000;
+
+    /// Filter condition: 1 stable, 2 converging, 3 unstable/recovering. (bits 0..=1)
+    pub const fn filter_condition(self) -> u16 {
+        self.0 & Self::FILTER_CONDITION
+    }
+
+    /// Sets `filter_condition` (bits 0..=1); higher bits of `v` are ignored.
+    pub fn set_filter_condition(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FILTER_CONDITION) | (v & Self::FILTER_CONDITION);
+    }
+
+    /// Low confidence in roll/pitch (e.g. sensor not aligned with the vehicle frame). (bit 2)
+    pub const fn roll_pitch_warning(self) -> bool {
+        self.0 & Self::ROLL_PITCH_WARNING != 0
+    }
+
+    /// Sets or clears `roll_pitch_warning` (bit 2).
+    pub fn set_roll_pitch_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ROLL_PITCH_WARNING;
+        } else {
+            self.0 &= !Self::ROLL_PITCH_WARNING;
+        }
+    }
+
+    /// Low confidence in heading (heading source not valid). (bit 3)
+    pub const fn heading_warning(self) -> bool {
+        self.0 & Self::HEADING_WARNING != 0
+    }
+
+    /// Sets or clears `heading_warning` (bit 3).
+    pub fn set_heading_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEADING_WARNING;
+        } else {
+            self.0 &= !Self::HEADING_WARNING;
+        }
+    }
+
+    /// Low confidence in position. (bit 4)
+    pub const fn position_warning(self) -> bool {
+        self.0 & Self::POSITION_WARNING != 0
+    }
+
+    /// Sets or clears `position_warning` (bit 4).
+    pub fn set_position_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::POSITION_WARNING;
+        } else {
+            self.0 &= !Self::POSITION_WARNING;
+        }
+    }
+
+    /// Low confidence in velocity. (bit 5)
+    pub const fn velocity_warning(self) -> bool {
+        self.0 & Self::VELOCITY_WARNING != 0
+    }
+
+    /// Sets or clears `velocity_warning` (bit 5).
+    pub fn set_velocity_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VELOCITY_WARNING;
+        } else {
+            self.0 &= !Self::VELOCITY_WARNING;
+        }
+    }
+
+    /// IMU bias estimate warning (gyro bias high). (bit 6)
+    pub const fn imu_bias_warning(self) -> bool {
+        self.0 & Self::IMU_BIAS_WARNING != 0
+    }
+
+    /// Sets or clears `imu_bias_warning` (bit 6).
+    pub fn set_imu_bias_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_BIAS_WARNING;
+        } else {
+            self.0 &= !Self::IMU_BIAS_WARNING;
+        }
+    }
+
+    /// GNSS clock warning (affects the filter timestamp). (bit 7)
+    pub const fn gnss_clk_warning(self) -> bool {
+        self.0 & Self::GNSS_CLK_WARNING != 0
+    }
+
+    /// Sets or clears `gnss_clk_warning` (bit 7).
+    pub fn set_gnss_clk_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_CLK_WARNING;
+        } else {
+            self.0 &= !Self::GNSS_CLK_WARNING;
+        }
+    }
+
+    /// Antenna lever arm offsets are likely incorrect. (bit 8)
+    pub const fn antenna_lever_arm_warning(self) -> bool {
+        self.0 & Self::ANTENNA_LEVER_ARM_WARNING != 0
+    }
+
+    /// Sets or clears `antenna_lever_arm_warning` (bit 8).
+    pub fn set_antenna_lever_arm_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_LEVER_ARM_WARNING;
+        } else {
+            self.0 &= !Self::ANTENNA_LEVER_ARM_WARNING;
+        }
+    }
+
+    /// Mounting transform is likely incorrect. (bit 9)
+    pub const fn mounting_transform_warning(self) -> bool {
+        self.0 & Self::MOUNTING_TRANSFORM_WARNING != 0
+    }
+
+    /// Sets or clears `mounting_transform_warning` (bit 9).
+    pub fn set_mounting_transform_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MOUNTING_TRANSFORM_WARNING;
+        } else {
+            self.0 &= !Self::MOUNTING_TRANSFORM_WARNING;
+        }
+    }
+
+    /// No time synchronization (PPS) pulse detected, or external heading timestamp too old. (bit 10)
+    pub const fn time_sync_warning(self) -> bool {
+        self.0 & Self::TIME_SYNC_WARNING != 0
+    }
+
+    /// Sets or clears `time_sync_warning` (bit 10).
+    pub fn set_time_sync_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIME_SYNC_WARNING;
+        } else {
+            self.0 &= !Self::TIME_SYNC_WARNING;
+        }
+    }
+
+    /// Not listed. Reserved. (bit 11)
+    pub const fn reserved(self) -> bool {
+        self.0 & Self::RESERVED != 0
+    }
+
+    /// Sets or clears `reserved` (bit 11).
+    pub fn set_reserved(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED;
+        } else {
+            self.0 &= !Self::RESERVED;
+        }
+    }
+
+    /// Filter computation error flags (NaN in the solution); if any is set, all filter outputs are invalid. (bits 12..=15)
+    pub const fn solution_error(self) -> u16 {
+        (self.0 & Self::SOLUTION_ERROR) >> 12
+    }
+
+    /// Sets `solution_error` (bits 12..=15); higher bits of `v` are ignored.
+    pub fn set_solution_error(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::SOLUTION_ERROR) | ((v << 12) & Self::SOLUTION_ERROR);
+    }
+}
+
+impl crate::wire::Wire for FilterStatusFlagsCv7 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterStatusFlagsCv7 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Filter status flags (3DM-GX5-45). GX5-45 filter status flags. Bits 12 and 13 mean different things depending on the filter state: in the initialization state they say what is not initialized, while running they are estimate warnings.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct FilterStatusFlagsGx5(pub u16);
+
+impl FilterStatusFlagsGx5 {
+    /// Mask of `run_imu_unavailable` (bit 0).
+    pub const RUN_IMU_UNAVAILABLE: u16 = 0x0001;
+    /// Mask of `run_gps_unavailable` (bit 1).
+    pub const RUN_GPS_UNAVAILABLE: u16 = 0x0002;
+    /// Mask of `reserved` (bit 2).
+    pub const RESERVED: u16 = 0x0004;
+    /// Mask of `run_matrix_singularity` (bit 3).
+    pub const RUN_MATRIX_SINGULARITY: u16 = 0x0008;
+    /// Mask of `run_position_covariance_warning` (bit 4).
+    pub const RUN_POSITION_COVARIANCE_WARNING: u16 = 0x0010;
+    /// Mask of `run_velocity_covariance_warning` (bit 5).
+    pub const RUN_VELOCITY_COVARIANCE_WARNING: u16 = 0x0020;
+    /// Mask of `run_attitude_covariance_warning` (bit 6).
+    pub const RUN_ATTITUDE_COVARIANCE_WARNING: u16 = 0x0040;
+    /// Mask of `run_nan_in_solution_warning` (bit 7).
+    pub const RUN_NAN_IN_SOLUTION_WARNING: u16 = 0x0080;
+    /// Mask of `run_gyro_bias_est_high_warning` (bit 8).
+    pub const RUN_GYRO_BIAS_EST_HIGH_WARNING: u16 = 0x0100;
+    /// Mask of `run_accel_bias_est_high_warning` (bit 9).
+    pub const RUN_ACCEL_BIAS_EST_HIGH_WARNING: u16 = 0x0200;
+    /// Mask of `run_gyro_scale_factor_est_high_warning` (bit 10).
+    pub const RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING: u16 = 0x0400;
+    /// Mask of `run_accel_scale_factor_est_high_warning` (bit 11).
+    pub const RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING: u16 = 0x0800;
+    /// Mask of `run_mag_bias_est_high_warning` (bit 12).
+    pub const RUN_MAG_BIAS_EST_HIGH_WARNING: u16 = 0x1000;
+    /// Mask of `run_ant_offset_correction_est_high_warning` (bit 13).
+    pub const RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING: u16 = 0x2000;
+    /// Mask of `run_mag_hard_iron_est_high_warning` (bit 14).
+    pub const RUN_MAG_HARD_IRON_EST_HIGH_WARNING: u16 = 0x4000;
+    /// Mask of `run_mag_soft_iron_est_high_warning` (bit 15).
+    pub const RUN_MAG_SOFT_IRON_EST_HIGH_WARNING: u16 = 0x8000;
+    /// Mask of `init_no_attitude` (bit 12).
+    pub const INIT_NO_ATTITUDE: u16 = 0x1000;
+    /// Mask of `init_no_position_velocity` (bit 13).
+    pub const INIT_NO_POSITION_VELOCITY: u16 = 0x2000;
+
+    /// Running: IMU unavailable. (bit 0)
+    pub const fn run_imu_unavailable(self) -> bool {
+        self.0 & Self::RUN_IMU_UNAVAILABLE != 0
+    }
+
+    /// Sets or clears `run_imu_unavailable` (bit 0).
+    pub fn set_run_imu_unavailable(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_IMU_UNAVAILABLE;
+        } else {
+            self.0 &= !Self::RUN_IMU_UNAVAILABLE;
+        }
+    }
+
+    /// Running: GNSS unavailable. (bit 1)
+    pub const fn run_gps_unavailable(self) -> bool {
+        self.0 & Self::RUN_GPS_UNAVAILABLE != 0
+    }
+
+    /// Sets or clears `run_gps_unavailable` (bit 1).
+    pub fn set_run_gps_unavailable(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_GPS_UNAVAILABLE;
+        } else {
+            self.0 &= !Self::RUN_GPS_UNAVAILABLE;
+        }
+    }
+
+    /// Not listed (0x0004). Reserved. (bit 2)
+    pub const fn reserved(self) -> bool {
+        self.0 & Self::RESERVED != 0
+    }
+
+    /// Sets or clears `reserved` (bit 2).
+    pub fn set_reserved(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED;
+        } else {
+            self.0 &= !Self::RESERVED;
+        }
+    }
+
+    /// Running: matrix singularity in the calculation. (bit 3)
+    pub const fn run_matrix_singularity(self) -> bool {
+        self.0 & Self::RUN_MATRIX_SINGULARITY != 0
+    }
+
+    /// Sets or clears `run_matrix_singularity` (bit 3).
+    pub fn set_run_matrix_singularity(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_MATRIX_SINGULARITY;
+        } else {
+            self.0 &= !Self::RUN_MATRIX_SINGULARITY;
+        }
+    }
+
+    /// Running: position covariance high (some axis beyond normal limits). (bit 4)
+    pub const fn run_position_covariance_warning(self) -> bool {
+        self.0 & Self::RUN_POSITION_COVARIANCE_WARNING != 0
+    }
+
+    /// Sets or clears `run_position_covariance_warning` (bit 4).
+    pub fn set_run_position_covariance_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_POSITION_COVARIANCE_WARNING;
+        } else {
+            self.0 &= !Self::RUN_POSITION_COVARIANCE_WARNING;
+        }
+    }
+
+    /// Running: velocity covariance high (some axis beyond normal limits). (bit 5)
+    pub const fn run_velocity_covariance_warning(self) -> bool {
+        self.0 & Self::RUN_VELOCITY_COVARIANCE_WARNING != 0
+    }
+
+    /// Sets or clears `run_velocity_covariance_warning` (bit 5).
+    pub fn set_run_velocity_covariance_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_VELOCITY_COVARIANCE_WARNING;
+        } else {
+            self.0 &= !Self::RUN_VELOCITY_COVARIANCE_WARNING;
+        }
+    }
+
+    /// Running: attitude covariance high (some axis beyond normal limits). (bit 6)
+    pub const fn run_attitude_covariance_warning(self) -> bool {
+        self.0 & Self::RUN_ATTITUDE_COVARIANCE_WARNING != 0
+    }
+
+    /// Sets or clears `run_attitude_covariance_warning` (bit 6).
+    pub fn set_run_attitude_covariance_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_ATTITUDE_COVARIANCE_WARNING;
+        } else {
+            self.0 &= !Self::RUN_ATTITUDE_COVARIANCE_WARNING;
+        }
+    }
+
+    /// Running: NaN in the solution. (bit 7)
+    pub const fn run_nan_in_solution_warning(self) -> bool {
+        self.0 & Self::RUN_NAN_IN_SOLUTION_WARNING != 0
+    }
+
+    /// Sets or clears `run_nan_in_solution_warning` (bit 7).
+    pub fn set_run_nan_in_solution_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_NAN_IN_SOLUTION_WARNING;
+        } else {
+            self.0 &= !Self::RUN_NAN_IN_SOLUTION_WARNING;
+        }
+    }
+
+    /// Running: gyro bias estimate high. (bit 8)
+    pub const fn run_gyro_bias_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_GYRO_BIAS_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_gyro_bias_est_high_warning` (bit 8).
+    pub fn set_run_gyro_bias_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_GYRO_BIAS_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_GYRO_BIAS_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: accel bias estimate high. (bit 9)
+    pub const fn run_accel_bias_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_ACCEL_BIAS_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_accel_bias_est_high_warning` (bit 9).
+    pub fn set_run_accel_bias_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_ACCEL_BIAS_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_ACCEL_BIAS_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: gyro scale factor estimate high. (bit 10)
+    pub const fn run_gyro_scale_factor_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_gyro_scale_factor_est_high_warning` (bit 10).
+    pub fn set_run_gyro_scale_factor_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: accel scale factor estimate high. (bit 11)
+    pub const fn run_accel_scale_factor_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_accel_scale_factor_est_high_warning` (bit 11).
+    pub fn set_run_accel_scale_factor_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: magnetometer bias estimate high. (bit 12)
+    pub const fn run_mag_bias_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_MAG_BIAS_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_mag_bias_est_high_warning` (bit 12).
+    pub fn set_run_mag_bias_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_MAG_BIAS_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_MAG_BIAS_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: GNSS antenna offset correction estimate high. (bit 13)
+    pub const fn run_ant_offset_correction_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_ant_offset_correction_est_high_warning` (bit 13).
+    pub fn set_run_ant_offset_correction_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: hard iron offset estimate high. (bit 14)
+    pub const fn run_mag_hard_iron_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_MAG_HARD_IRON_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_mag_hard_iron_est_high_warning` (bit 14).
+    pub fn set_run_mag_hard_iron_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_MAG_HARD_IRON_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_MAG_HARD_IRON_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Running: soft iron correction estimate high. (bit 15)
+    pub const fn run_mag_soft_iron_est_high_warning(self) -> bool {
+        self.0 & Self::RUN_MAG_SOFT_IRON_EST_HIGH_WARNING != 0
+    }
+
+    /// Sets or clears `run_mag_soft_iron_est_high_warning` (bit 15).
+    pub fn set_run_mag_soft_iron_est_high_warning(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RUN_MAG_SOFT_IRON_EST_HIGH_WARNING;
+        } else {
+            self.0 &= !Self::RUN_MAG_SOFT_IRON_EST_HIGH_WARNING;
+        }
+    }
+
+    /// Initialization: attitude not initialized (same bit as run_mag_bias_est_high_warning). (bit 12)
+    pub const fn init_no_attitude(self) -> bool {
+        self.0 & Self::INIT_NO_ATTITUDE != 0
+    }
+
+    /// Sets or clears `init_no_attitude` (bit 12).
+    pub fn set_init_no_attitude(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::INIT_NO_ATTITUDE;
+        } else {
+            self.0 &= !Self::INIT_NO_ATTITUDE;
+        }
+    }
+
+    /// Initialization: position and velocity not initialized (same bit as run_ant_offset_correction_est_high_warning). (bit 13)
+    pub const fn init_no_position_velocity(self) -> bool {
+        self.0 & Self::INIT_NO_POSITION_VELOCITY != 0
+    }
+
+    /// Sets or clears `init_no_position_velocity` (bit 13).
+    pub fn set_init_no_position_velocity(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::INIT_NO_POSITION_VELOCITY;
+        } else {
+            self.0 &= !Self::INIT_NO_POSITION_VELOCITY;
+        }
+    }
+}
+
+impl crate::wire::Wire for FilterStatusFlagsGx5 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for FilterStatusFlagsGx5 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 

@@ -980,6 +980,526 @@ fn bitfield_estimationcontrolflags_accessors() {
 }
 
 #[test]
+fn bitfield_filteraidingmeasurementindicator_accessors() {
+    use mipcodec::types::FilterAidingMeasurementIndicator;
+    let mut v = FilterAidingMeasurementIndicator(0);
+    v.set_enabled(true);
+    assert_eq!(v.0, 0x01, "enabled");
+    assert!(v.enabled());
+    let mut v = FilterAidingMeasurementIndicator(!0);
+    v.set_enabled(false);
+    assert_eq!(v.0, !0x01, "enabled");
+    assert!(!v.enabled());
+    let mut v = FilterAidingMeasurementIndicator(0);
+    v.set_used(true);
+    assert_eq!(v.0, 0x02, "used");
+    assert!(v.used());
+    let mut v = FilterAidingMeasurementIndicator(!0);
+    v.set_used(false);
+    assert_eq!(v.0, !0x02, "used");
+    assert!(!v.used());
+    let mut v = FilterAidingMeasurementIndicator(0);
+    v.set_residual_high_warning(true);
+    assert_eq!(v.0, 0x04, "residual_high_warning");
+    assert!(v.residual_high_warning());
+    let mut v = FilterAidingMeasurementIndicator(!0);
+    v.set_residual_high_warning(false);
+    assert_eq!(v.0, !0x04, "residual_high_warning");
+    assert!(!v.residual_high_warning());
+    let mut v = FilterAidingMeasurementIndicator(0);
+    v.set_sample_time_warning(true);
+    assert_eq!(v.0, 0x08, "sample_time_warning");
+    assert!(v.sample_time_warning());
+    let mut v = FilterAidingMeasurementIndicator(!0);
+    v.set_sample_time_warning(false);
+    assert_eq!(v.0, !0x08, "sample_time_warning");
+    assert!(!v.sample_time_warning());
+    let mut v = FilterAidingMeasurementIndicator(0);
+    v.set_configuration_error(true);
+    assert_eq!(v.0, 0x10, "configuration_error");
+    assert!(v.configuration_error());
+    let mut v = FilterAidingMeasurementIndicator(!0);
+    v.set_configuration_error(false);
+    assert_eq!(v.0, !0x10, "configuration_error");
+    assert!(!v.configuration_error());
+    let mut v = FilterAidingMeasurementIndicator(0);
+    v.set_max_num_meas_exceeded(true);
+    assert_eq!(v.0, 0x20, "max_num_meas_exceeded");
+    assert!(v.max_num_meas_exceeded());
+    let mut v = FilterAidingMeasurementIndicator(!0);
+    v.set_max_num_meas_exceeded(false);
+    assert_eq!(v.0, !0x20, "max_num_meas_exceeded");
+    assert!(!v.max_num_meas_exceeded());
+}
+
+#[test]
+fn bitfield_filterdualantennastatusflags_accessors() {
+    use mipcodec::types::FilterDualAntennaStatusFlags;
+    let mut v = FilterDualAntennaStatusFlags(0);
+    v.set_rcv_1_data_valid(true);
+    assert_eq!(v.0, 0x01, "rcv_1_data_valid");
+    assert!(v.rcv_1_data_valid());
+    let mut v = FilterDualAntennaStatusFlags(!0);
+    v.set_rcv_1_data_valid(false);
+    assert_eq!(v.0, !0x01, "rcv_1_data_valid");
+    assert!(!v.rcv_1_data_valid());
+    let mut v = FilterDualAntennaStatusFlags(0);
+    v.set_rcv_2_data_valid(true);
+    assert_eq!(v.0, 0x02, "rcv_2_data_valid");
+    assert!(v.rcv_2_data_valid());
+    let mut v = FilterDualAntennaStatusFlags(!0);
+    v.set_rcv_2_data_valid(false);
+    assert_eq!(v.0, !0x02, "rcv_2_data_valid");
+    assert!(!v.rcv_2_data_valid());
+    let mut v = FilterDualAntennaStatusFlags(0);
+    v.set_antenna_offsets_valid(true);
+    assert_eq!(v.0, 0x04, "antenna_offsets_valid");
+    assert!(v.antenna_offsets_valid());
+    let mut v = FilterDualAntennaStatusFlags(!0);
+    v.set_antenna_offsets_valid(false);
+    assert_eq!(v.0, !0x04, "antenna_offsets_valid");
+    assert!(!v.antenna_offsets_valid());
+}
+
+#[test]
+fn bitfield_filtergnssaidingstatusflags_accessors() {
+    use mipcodec::types::FilterGnssAidingStatusFlags;
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_tight_coupling(true);
+    assert_eq!(v.0, 0x01, "tight_coupling");
+    assert!(v.tight_coupling());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_tight_coupling(false);
+    assert_eq!(v.0, !0x01, "tight_coupling");
+    assert!(!v.tight_coupling());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_differential(true);
+    assert_eq!(v.0, 0x02, "differential");
+    assert!(v.differential());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_differential(false);
+    assert_eq!(v.0, !0x02, "differential");
+    assert!(!v.differential());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_integer_fix(true);
+    assert_eq!(v.0, 0x04, "integer_fix");
+    assert!(v.integer_fix());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_integer_fix(false);
+    assert_eq!(v.0, !0x04, "integer_fix");
+    assert!(!v.integer_fix());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_gps_l1(true);
+    assert_eq!(v.0, 0x08, "gps_l1");
+    assert!(v.gps_l1());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_gps_l1(false);
+    assert_eq!(v.0, !0x08, "gps_l1");
+    assert!(!v.gps_l1());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_gps_l2(true);
+    assert_eq!(v.0, 0x10, "gps_l2");
+    assert!(v.gps_l2());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_gps_l2(false);
+    assert_eq!(v.0, !0x10, "gps_l2");
+    assert!(!v.gps_l2());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_gps_l5(true);
+    assert_eq!(v.0, 0x20, "gps_l5");
+    assert!(v.gps_l5());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_gps_l5(false);
+    assert_eq!(v.0, !0x20, "gps_l5");
+    assert!(!v.gps_l5());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_glo_l1(true);
+    assert_eq!(v.0, 0x40, "glo_l1");
+    assert!(v.glo_l1());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_glo_l1(false);
+    assert_eq!(v.0, !0x40, "glo_l1");
+    assert!(!v.glo_l1());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_glo_l2(true);
+    assert_eq!(v.0, 0x80, "glo_l2");
+    assert!(v.glo_l2());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_glo_l2(false);
+    assert_eq!(v.0, !0x80, "glo_l2");
+    assert!(!v.glo_l2());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_gal_e1(true);
+    assert_eq!(v.0, 0x100, "gal_e1");
+    assert!(v.gal_e1());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_gal_e1(false);
+    assert_eq!(v.0, !0x100, "gal_e1");
+    assert!(!v.gal_e1());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_gal_e5(true);
+    assert_eq!(v.0, 0x200, "gal_e5");
+    assert!(v.gal_e5());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_gal_e5(false);
+    assert_eq!(v.0, !0x200, "gal_e5");
+    assert!(!v.gal_e5());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_gal_e6(true);
+    assert_eq!(v.0, 0x400, "gal_e6");
+    assert!(v.gal_e6());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_gal_e6(false);
+    assert_eq!(v.0, !0x400, "gal_e6");
+    assert!(!v.gal_e6());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_bei_b1(true);
+    assert_eq!(v.0, 0x800, "bei_b1");
+    assert!(v.bei_b1());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_bei_b1(false);
+    assert_eq!(v.0, !0x800, "bei_b1");
+    assert!(!v.bei_b1());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_bei_b2(true);
+    assert_eq!(v.0, 0x1000, "bei_b2");
+    assert!(v.bei_b2());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_bei_b2(false);
+    assert_eq!(v.0, !0x1000, "bei_b2");
+    assert!(!v.bei_b2());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_bei_b3(true);
+    assert_eq!(v.0, 0x2000, "bei_b3");
+    assert!(v.bei_b3());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_bei_b3(false);
+    assert_eq!(v.0, !0x2000, "bei_b3");
+    assert!(!v.bei_b3());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_no_fix(true);
+    assert_eq!(v.0, 0x4000, "no_fix");
+    assert!(v.no_fix());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_no_fix(false);
+    assert_eq!(v.0, !0x4000, "no_fix");
+    assert!(!v.no_fix());
+    let mut v = FilterGnssAidingStatusFlags(0);
+    v.set_config_error(true);
+    assert_eq!(v.0, 0x8000, "config_error");
+    assert!(v.config_error());
+    let mut v = FilterGnssAidingStatusFlags(!0);
+    v.set_config_error(false);
+    assert_eq!(v.0, !0x8000, "config_error");
+    assert!(!v.config_error());
+}
+
+#[test]
+fn bitfield_filterheadingsourceflags_accessors() {
+    use mipcodec::types::FilterHeadingSourceFlags;
+    let mut v = FilterHeadingSourceFlags(0);
+    v.set_magnetometer(true);
+    assert_eq!(v.0, 0x01, "magnetometer");
+    assert!(v.magnetometer());
+    let mut v = FilterHeadingSourceFlags(!0);
+    v.set_magnetometer(false);
+    assert_eq!(v.0, !0x01, "magnetometer");
+    assert!(!v.magnetometer());
+    let mut v = FilterHeadingSourceFlags(0);
+    v.set_gnss_velocity(true);
+    assert_eq!(v.0, 0x02, "gnss_velocity");
+    assert!(v.gnss_velocity());
+    let mut v = FilterHeadingSourceFlags(!0);
+    v.set_gnss_velocity(false);
+    assert_eq!(v.0, !0x02, "gnss_velocity");
+    assert!(!v.gnss_velocity());
+    let mut v = FilterHeadingSourceFlags(0);
+    v.set_external(true);
+    assert_eq!(v.0, 0x04, "external");
+    assert!(v.external());
+    let mut v = FilterHeadingSourceFlags(!0);
+    v.set_external(false);
+    assert_eq!(v.0, !0x04, "external");
+    assert!(!v.external());
+}
+
+#[test]
+fn bitfield_filterheadingupdatevalidflags_accessors() {
+    use mipcodec::types::FilterHeadingUpdateValidFlags;
+    let mut v = FilterHeadingUpdateValidFlags(0);
+    v.set_updated_within_2s(true);
+    assert_eq!(v.0, 0x01, "updated_within_2s");
+    assert!(v.updated_within_2s());
+    let mut v = FilterHeadingUpdateValidFlags(!0);
+    v.set_updated_within_2s(false);
+    assert_eq!(v.0, !0x01, "updated_within_2s");
+    assert!(!v.updated_within_2s());
+}
+
+#[test]
+fn bitfield_filteroutputvalidflags_accessors() {
+    use mipcodec::types::FilterOutputValidFlags;
+    let mut v = FilterOutputValidFlags(0);
+    v.set_valid(true);
+    assert_eq!(v.0, 0x01, "valid");
+    assert!(v.valid());
+    let mut v = FilterOutputValidFlags(!0);
+    v.set_valid(false);
+    assert_eq!(v.0, !0x01, "valid");
+    assert!(!v.valid());
+}
+
+#[test]
+fn bitfield_filterstatusflagscv7_accessors() {
+    use mipcodec::types::FilterStatusFlagsCv7;
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_filter_condition(0x03);
+    assert_eq!(v.0, 0x03, "filter_condition");
+    assert_eq!(v.filter_condition(), 0x03);
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_filter_condition(0);
+    assert_eq!(v.0, !0x03, "filter_condition");
+    assert_eq!(v.filter_condition(), 0);
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_roll_pitch_warning(true);
+    assert_eq!(v.0, 0x04, "roll_pitch_warning");
+    assert!(v.roll_pitch_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_roll_pitch_warning(false);
+    assert_eq!(v.0, !0x04, "roll_pitch_warning");
+    assert!(!v.roll_pitch_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_heading_warning(true);
+    assert_eq!(v.0, 0x08, "heading_warning");
+    assert!(v.heading_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_heading_warning(false);
+    assert_eq!(v.0, !0x08, "heading_warning");
+    assert!(!v.heading_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_position_warning(true);
+    assert_eq!(v.0, 0x10, "position_warning");
+    assert!(v.position_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_position_warning(false);
+    assert_eq!(v.0, !0x10, "position_warning");
+    assert!(!v.position_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_velocity_warning(true);
+    assert_eq!(v.0, 0x20, "velocity_warning");
+    assert!(v.velocity_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_velocity_warning(false);
+    assert_eq!(v.0, !0x20, "velocity_warning");
+    assert!(!v.velocity_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_imu_bias_warning(true);
+    assert_eq!(v.0, 0x40, "imu_bias_warning");
+    assert!(v.imu_bias_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_imu_bias_warning(false);
+    assert_eq!(v.0, !0x40, "imu_bias_warning");
+    assert!(!v.imu_bias_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_gnss_clk_warning(true);
+    assert_eq!(v.0, 0x80, "gnss_clk_warning");
+    assert!(v.gnss_clk_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_gnss_clk_warning(false);
+    assert_eq!(v.0, !0x80, "gnss_clk_warning");
+    assert!(!v.gnss_clk_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_antenna_lever_arm_warning(true);
+    assert_eq!(v.0, 0x100, "antenna_lever_arm_warning");
+    assert!(v.antenna_lever_arm_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_antenna_lever_arm_warning(false);
+    assert_eq!(v.0, !0x100, "antenna_lever_arm_warning");
+    assert!(!v.antenna_lever_arm_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_mounting_transform_warning(true);
+    assert_eq!(v.0, 0x200, "mounting_transform_warning");
+    assert!(v.mounting_transform_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_mounting_transform_warning(false);
+    assert_eq!(v.0, !0x200, "mounting_transform_warning");
+    assert!(!v.mounting_transform_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_time_sync_warning(true);
+    assert_eq!(v.0, 0x400, "time_sync_warning");
+    assert!(v.time_sync_warning());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_time_sync_warning(false);
+    assert_eq!(v.0, !0x400, "time_sync_warning");
+    assert!(!v.time_sync_warning());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_reserved(true);
+    assert_eq!(v.0, 0x800, "reserved");
+    assert!(v.reserved());
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_reserved(false);
+    assert_eq!(v.0, !0x800, "reserved");
+    assert!(!v.reserved());
+    let mut v = FilterStatusFlagsCv7(0);
+    v.set_solution_error(0x0F);
+    assert_eq!(v.0, 0xF000, "solution_error");
+    assert_eq!(v.solution_error(), 0x0F);
+    let mut v = FilterStatusFlagsCv7(!0);
+    v.set_solution_error(0);
+    assert_eq!(v.0, !0xF000, "solution_error");
+    assert_eq!(v.solution_error(), 0);
+}
+
+#[test]
+fn bitfield_filterstatusflagsgx5_accessors() {
+    use mipcodec::types::FilterStatusFlagsGx5;
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_imu_unavailable(true);
+    assert_eq!(v.0, 0x01, "run_imu_unavailable");
+    assert!(v.run_imu_unavailable());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_imu_unavailable(false);
+    assert_eq!(v.0, !0x01, "run_imu_unavailable");
+    assert!(!v.run_imu_unavailable());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_gps_unavailable(true);
+    assert_eq!(v.0, 0x02, "run_gps_unavailable");
+    assert!(v.run_gps_unavailable());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_gps_unavailable(false);
+    assert_eq!(v.0, !0x02, "run_gps_unavailable");
+    assert!(!v.run_gps_unavailable());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_reserved(true);
+    assert_eq!(v.0, 0x04, "reserved");
+    assert!(v.reserved());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_reserved(false);
+    assert_eq!(v.0, !0x04, "reserved");
+    assert!(!v.reserved());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_matrix_singularity(true);
+    assert_eq!(v.0, 0x08, "run_matrix_singularity");
+    assert!(v.run_matrix_singularity());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_matrix_singularity(false);
+    assert_eq!(v.0, !0x08, "run_matrix_singularity");
+    assert!(!v.run_matrix_singularity());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_position_covariance_warning(true);
+    assert_eq!(v.0, 0x10, "run_position_covariance_warning");
+    assert!(v.run_position_covariance_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_position_covariance_warning(false);
+    assert_eq!(v.0, !0x10, "run_position_covariance_warning");
+    assert!(!v.run_position_covariance_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_velocity_covariance_warning(true);
+    assert_eq!(v.0, 0x20, "run_velocity_covariance_warning");
+    assert!(v.run_velocity_covariance_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_velocity_covariance_warning(false);
+    assert_eq!(v.0, !0x20, "run_velocity_covariance_warning");
+    assert!(!v.run_velocity_covariance_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_attitude_covariance_warning(true);
+    assert_eq!(v.0, 0x40, "run_attitude_covariance_warning");
+    assert!(v.run_attitude_covariance_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_attitude_covariance_warning(false);
+    assert_eq!(v.0, !0x40, "run_attitude_covariance_warning");
+    assert!(!v.run_attitude_covariance_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_nan_in_solution_warning(true);
+    assert_eq!(v.0, 0x80, "run_nan_in_solution_warning");
+    assert!(v.run_nan_in_solution_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_nan_in_solution_warning(false);
+    assert_eq!(v.0, !0x80, "run_nan_in_solution_warning");
+    assert!(!v.run_nan_in_solution_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_gyro_bias_est_high_warning(true);
+    assert_eq!(v.0, 0x100, "run_gyro_bias_est_high_warning");
+    assert!(v.run_gyro_bias_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_gyro_bias_est_high_warning(false);
+    assert_eq!(v.0, !0x100, "run_gyro_bias_est_high_warning");
+    assert!(!v.run_gyro_bias_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_accel_bias_est_high_warning(true);
+    assert_eq!(v.0, 0x200, "run_accel_bias_est_high_warning");
+    assert!(v.run_accel_bias_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_accel_bias_est_high_warning(false);
+    assert_eq!(v.0, !0x200, "run_accel_bias_est_high_warning");
+    assert!(!v.run_accel_bias_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_gyro_scale_factor_est_high_warning(true);
+    assert_eq!(v.0, 0x400, "run_gyro_scale_factor_est_high_warning");
+    assert!(v.run_gyro_scale_factor_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_gyro_scale_factor_est_high_warning(false);
+    assert_eq!(v.0, !0x400, "run_gyro_scale_factor_est_high_warning");
+    assert!(!v.run_gyro_scale_factor_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_accel_scale_factor_est_high_warning(true);
+    assert_eq!(v.0, 0x800, "run_accel_scale_factor_est_high_warning");
+    assert!(v.run_accel_scale_factor_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_accel_scale_factor_est_high_warning(false);
+    assert_eq!(v.0, !0x800, "run_accel_scale_factor_est_high_warning");
+    assert!(!v.run_accel_scale_factor_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_mag_bias_est_high_warning(true);
+    assert_eq!(v.0, 0x1000, "run_mag_bias_est_high_warning");
+    assert!(v.run_mag_bias_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_mag_bias_est_high_warning(false);
+    assert_eq!(v.0, !0x1000, "run_mag_bias_est_high_warning");
+    assert!(!v.run_mag_bias_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_ant_offset_correction_est_high_warning(true);
+    assert_eq!(v.0, 0x2000, "run_ant_offset_correction_est_high_warning");
+    assert!(v.run_ant_offset_correction_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_ant_offset_correction_est_high_warning(false);
+    assert_eq!(v.0, !0x2000, "run_ant_offset_correction_est_high_warning");
+    assert!(!v.run_ant_offset_correction_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_mag_hard_iron_est_high_warning(true);
+    assert_eq!(v.0, 0x4000, "run_mag_hard_iron_est_high_warning");
+    assert!(v.run_mag_hard_iron_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_mag_hard_iron_est_high_warning(false);
+    assert_eq!(v.0, !0x4000, "run_mag_hard_iron_est_high_warning");
+    assert!(!v.run_mag_hard_iron_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_run_mag_soft_iron_est_high_warning(true);
+    assert_eq!(v.0, 0x8000, "run_mag_soft_iron_est_high_warning");
+    assert!(v.run_mag_soft_iron_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_run_mag_soft_iron_est_high_warning(false);
+    assert_eq!(v.0, !0x8000, "run_mag_soft_iron_est_high_warning");
+    assert!(!v.run_mag_soft_iron_est_high_warning());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_init_no_attitude(true);
+    assert_eq!(v.0, 0x1000, "init_no_attitude");
+    assert!(v.init_no_attitude());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_init_no_attitude(false);
+    assert_eq!(v.0, !0x1000, "init_no_attitude");
+    assert!(!v.init_no_attitude());
+    let mut v = FilterStatusFlagsGx5(0);
+    v.set_init_no_position_velocity(true);
+    assert_eq!(v.0, 0x2000, "init_no_position_velocity");
+    assert!(v.init_no_position_velocity());
+    let mut v = FilterStatusFlagsGx5(!0);
+    v.set_init_no_position_velocity(false);
+    assert_eq!(v.0, !0x2000, "init_no_position_velocity");
+    assert!(!v.init_no_position_velocity());
+}
+
+#[test]
 fn bitfield_gnssbeidousignals_accessors() {
     use mipcodec::types::GnssBeidouSignals;
     let mut v = GnssBeidouSignals(0);
@@ -3704,6 +4224,594 @@ fn fixed_layout_errors() {
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::LlhPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("latitude: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::LlhPosition::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::NedVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("north: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::NedVelocity::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AttitudeQuaternion::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("q[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AttitudeQuaternion::decode_data(&[0u8; 19])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 18".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AttitudeDcm::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("dcm[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AttitudeDcm::decode_data(&[0u8; 39])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 38".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EulerAngles::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("roll: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EulerAngles::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroBias::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroBias::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelBias::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelBias::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::LlhPositionUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("north: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::LlhPositionUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::NedVelocityUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("north: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::NedVelocityUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EulerAnglesUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("roll: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EulerAnglesUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroBiasUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroBiasUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelBiasUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelBiasUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::LinearAccel::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("accel[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::LinearAccel::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::CompAngularRate::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gyro[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::CompAngularRate::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::Wgs84GravityMagnitude::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gravity_magnitude: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::Wgs84GravityMagnitude::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::FilterStatusGx5_45::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("filter_state: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::FilterStatusGx5_45::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::FilterStatusCv7Ins::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("filter_state: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::FilterStatusCv7Ins::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GpsTimestamp::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GpsTimestamp::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::QuaternionAttitudeUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("q[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::QuaternionAttitudeUncertainty::decode_data(&[0u8; 19])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 18".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GravityVector::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gravity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GravityVector::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::HeadingUpdateState::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("heading: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::HeadingUpdateState::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagneticModel::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("intensity_north: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagneticModel::decode_data(&[0u8; 23])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 22".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroScaleFactor::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scale_factor[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroScaleFactor::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelScaleFactor::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scale_factor[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelScaleFactor::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroScaleFactorUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scale_factor_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GyroScaleFactorUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelScaleFactorUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scale_factor_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AccelScaleFactorUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::CompensatedAccel::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("accel[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::CompensatedAccel::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::StandardAtmosphere::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("geometric_altitude: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::StandardAtmosphere::decode_data(&[0u8; 23])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 22".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::PressureAltitude::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("pressure_altitude: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::PressureAltitude::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoHardIronOffset::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("hard_iron_offset[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoHardIronOffset::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoSoftIronMatrix::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("soft_iron_matrix[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoSoftIronMatrix::decode_data(&[0u8; 39])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 38".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoHardIronOffsetUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("hard_iron_offset_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoHardIronOffsetUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("soft_iron_matrix_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty::decode_data(&[0u8; 39])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 38".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssAntennaOffsetCorrection::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("offset[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssAntennaOffsetCorrection::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("offset_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MultiAntennaOffsetCorrection::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MultiAntennaOffsetCorrection::decode_data(&[0u8; 16])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 15".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty::decode_data(&[0u8; 16])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 15".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefPositionUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("position_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefPositionUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefVelocityUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity_uncertainty[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefVelocityUncertainty::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("position[0]: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefPosition::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::EcefVelocity::decode_data(&[0u8; 15])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 14".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::NedRelativePosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("relative_position[0]: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::NedRelativePosition::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssPositionAidingStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssPositionAidingStatus::decode_data(&[0u8; 16])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 15".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AidingMeasurementSummary::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time_of_week: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AidingMeasurementSummary::decode_data(&[0u8; 8])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 7".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::OdometerScaleFactorError::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scale_factor_error: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::OdometerScaleFactorError::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::OdometerScaleFactorErrorUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scale_factor_error_uncertainty: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::OdometerScaleFactorErrorUncertainty::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssDualAntennaStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time_of_week: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::GnssDualAntennaStatus::decode_data(&[0u8; 18])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 17".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AidingFrameConfigError::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("frame_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AidingFrameConfigError::decode_data(&[0u8; 30])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 29".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AidingFrameConfigErrorUncertainty::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("frame_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::filter_data::AidingFrameConfigErrorUncertainty::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
     );
     assert_eq!(
         mipcodec::reserved::AckNack::decode_data(&[])
@@ -6917,6 +8025,865 @@ fn zero_values_round_trip_through_packets() {
         };
         assert_eq!(descriptor, <ScaledMag as Layout>::DESCRIPTOR);
         assert_eq!(ScaledMag::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::LlhPosition;
+        let value = LlhPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::LlhPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPosition: no field");
+        };
+        assert_eq!(descriptor, <LlhPosition as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::NedVelocity;
+        let value = NedVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::NedVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocity: no field");
+        };
+        assert_eq!(descriptor, <NedVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AttitudeQuaternion;
+        let value = AttitudeQuaternion::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::AttitudeQuaternion::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AttitudeQuaternion: no field");
+        };
+        assert_eq!(descriptor, <AttitudeQuaternion as Layout>::DESCRIPTOR);
+        assert_eq!(AttitudeQuaternion::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AttitudeDcm;
+        let value = AttitudeDcm::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::AttitudeDcm::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AttitudeDcm: no field");
+        };
+        assert_eq!(descriptor, <AttitudeDcm as Layout>::DESCRIPTOR);
+        assert_eq!(AttitudeDcm::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::EulerAngles;
+        let value = EulerAngles::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::EulerAngles::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EulerAngles: no field");
+        };
+        assert_eq!(descriptor, <EulerAngles as Layout>::DESCRIPTOR);
+        assert_eq!(EulerAngles::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GyroBias;
+        let value = GyroBias::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::GyroBias::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBias: no field");
+        };
+        assert_eq!(descriptor, <GyroBias as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBias::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AccelBias;
+        let value = AccelBias::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::AccelBias::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBias: no field");
+        };
+        assert_eq!(descriptor, <AccelBias as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBias::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::LlhPositionUncertainty;
+        let value = LlhPositionUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::LlhPositionUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPositionUncertainty: no field");
+        };
+        assert_eq!(descriptor, <LlhPositionUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPositionUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::NedVelocityUncertainty;
+        let value = NedVelocityUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::NedVelocityUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocityUncertainty: no field");
+        };
+        assert_eq!(descriptor, <NedVelocityUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocityUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::EulerAnglesUncertainty;
+        let value = EulerAnglesUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::EulerAnglesUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EulerAnglesUncertainty: no field");
+        };
+        assert_eq!(descriptor, <EulerAnglesUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(EulerAnglesUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GyroBiasUncertainty;
+        let value = GyroBiasUncertainty::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::GyroBiasUncertainty::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroBiasUncertainty: no field");
+        };
+        assert_eq!(descriptor, <GyroBiasUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(GyroBiasUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AccelBiasUncertainty;
+        let value = AccelBiasUncertainty::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::AccelBiasUncertainty::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelBiasUncertainty: no field");
+        };
+        assert_eq!(descriptor, <AccelBiasUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(AccelBiasUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::LinearAccel;
+        let value = LinearAccel::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::LinearAccel::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LinearAccel: no field");
+        };
+        assert_eq!(descriptor, <LinearAccel as Layout>::DESCRIPTOR);
+        assert_eq!(LinearAccel::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::CompAngularRate;
+        let value = CompAngularRate::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::CompAngularRate::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CompAngularRate: no field");
+        };
+        assert_eq!(descriptor, <CompAngularRate as Layout>::DESCRIPTOR);
+        assert_eq!(CompAngularRate::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::Wgs84GravityMagnitude;
+        let value = Wgs84GravityMagnitude::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::Wgs84GravityMagnitude::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Wgs84GravityMagnitude: no field");
+        };
+        assert_eq!(descriptor, <Wgs84GravityMagnitude as Layout>::DESCRIPTOR);
+        assert_eq!(Wgs84GravityMagnitude::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::FilterStatusGx5_45;
+        let value = FilterStatusGx5_45::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::FilterStatusGx5_45::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FilterStatusGx5_45: no field");
+        };
+        assert_eq!(descriptor, <FilterStatusGx5_45 as Layout>::DESCRIPTOR);
+        assert_eq!(FilterStatusGx5_45::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::FilterStatusCv7Ins;
+        let value = FilterStatusCv7Ins::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::FilterStatusCv7Ins::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FilterStatusCv7Ins: no field");
+        };
+        assert_eq!(descriptor, <FilterStatusCv7Ins as Layout>::DESCRIPTOR);
+        assert_eq!(FilterStatusCv7Ins::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GpsTimestamp;
+        let value = GpsTimestamp::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::GpsTimestamp::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsTimestamp: no field");
+        };
+        assert_eq!(descriptor, <GpsTimestamp as Layout>::DESCRIPTOR);
+        assert_eq!(GpsTimestamp::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::QuaternionAttitudeUncertainty;
+        let value = QuaternionAttitudeUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::QuaternionAttitudeUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("QuaternionAttitudeUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <QuaternionAttitudeUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(QuaternionAttitudeUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GravityVector;
+        let value = GravityVector::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::GravityVector::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GravityVector: no field");
+        };
+        assert_eq!(descriptor, <GravityVector as Layout>::DESCRIPTOR);
+        assert_eq!(GravityVector::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::HeadingUpdateState;
+        let value = HeadingUpdateState::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::HeadingUpdateState::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HeadingUpdateState: no field");
+        };
+        assert_eq!(descriptor, <HeadingUpdateState as Layout>::DESCRIPTOR);
+        assert_eq!(HeadingUpdateState::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MagneticModel;
+        let value = MagneticModel::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::MagneticModel::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagneticModel: no field");
+        };
+        assert_eq!(descriptor, <MagneticModel as Layout>::DESCRIPTOR);
+        assert_eq!(MagneticModel::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GyroScaleFactor;
+        let value = GyroScaleFactor::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::GyroScaleFactor::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroScaleFactor: no field");
+        };
+        assert_eq!(descriptor, <GyroScaleFactor as Layout>::DESCRIPTOR);
+        assert_eq!(GyroScaleFactor::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AccelScaleFactor;
+        let value = AccelScaleFactor::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::AccelScaleFactor::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelScaleFactor: no field");
+        };
+        assert_eq!(descriptor, <AccelScaleFactor as Layout>::DESCRIPTOR);
+        assert_eq!(AccelScaleFactor::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GyroScaleFactorUncertainty;
+        let value = GyroScaleFactorUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::GyroScaleFactorUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GyroScaleFactorUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GyroScaleFactorUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GyroScaleFactorUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AccelScaleFactorUncertainty;
+        let value = AccelScaleFactorUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::AccelScaleFactorUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AccelScaleFactorUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <AccelScaleFactorUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(AccelScaleFactorUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::CompensatedAccel;
+        let value = CompensatedAccel::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::CompensatedAccel::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CompensatedAccel: no field");
+        };
+        assert_eq!(descriptor, <CompensatedAccel as Layout>::DESCRIPTOR);
+        assert_eq!(CompensatedAccel::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::StandardAtmosphere;
+        let value = StandardAtmosphere::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::StandardAtmosphere::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("StandardAtmosphere: no field");
+        };
+        assert_eq!(descriptor, <StandardAtmosphere as Layout>::DESCRIPTOR);
+        assert_eq!(StandardAtmosphere::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::PressureAltitude;
+        let value = PressureAltitude::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::PressureAltitude::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("PressureAltitude: no field");
+        };
+        assert_eq!(descriptor, <PressureAltitude as Layout>::DESCRIPTOR);
+        assert_eq!(PressureAltitude::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MagAutoHardIronOffset;
+        let value = MagAutoHardIronOffset::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::MagAutoHardIronOffset::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagAutoHardIronOffset: no field");
+        };
+        assert_eq!(descriptor, <MagAutoHardIronOffset as Layout>::DESCRIPTOR);
+        assert_eq!(MagAutoHardIronOffset::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MagAutoSoftIronMatrix;
+        let value = MagAutoSoftIronMatrix::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::MagAutoSoftIronMatrix::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagAutoSoftIronMatrix: no field");
+        };
+        assert_eq!(descriptor, <MagAutoSoftIronMatrix as Layout>::DESCRIPTOR);
+        assert_eq!(MagAutoSoftIronMatrix::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MagAutoHardIronOffsetUncertainty;
+        let value = MagAutoHardIronOffsetUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::MagAutoHardIronOffsetUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagAutoHardIronOffsetUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagAutoHardIronOffsetUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MagAutoHardIronOffsetUncertainty::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty;
+        let value = MagAutoSoftIronMatrixUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MagAutoSoftIronMatrixUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MagAutoSoftIronMatrixUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MagAutoSoftIronMatrixUncertainty::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GnssAntennaOffsetCorrection;
+        let value = GnssAntennaOffsetCorrection::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::GnssAntennaOffsetCorrection::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAntennaOffsetCorrection: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssAntennaOffsetCorrection as Layout>::DESCRIPTOR
+        );
+        assert_eq!(GnssAntennaOffsetCorrection::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty;
+        let value = GnssAntennaOffsetCorrectionUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssAntennaOffsetCorrectionUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <GnssAntennaOffsetCorrectionUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            GnssAntennaOffsetCorrectionUncertainty::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MultiAntennaOffsetCorrection;
+        let value = MultiAntennaOffsetCorrection::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::MultiAntennaOffsetCorrection::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MultiAntennaOffsetCorrection: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MultiAntennaOffsetCorrection as Layout>::DESCRIPTOR
+        );
+        assert_eq!(MultiAntennaOffsetCorrection::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty;
+        let value = MultiAntennaOffsetCorrectionUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("MultiAntennaOffsetCorrectionUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <MultiAntennaOffsetCorrectionUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            MultiAntennaOffsetCorrectionUncertainty::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::EcefPositionUncertainty;
+        let value = EcefPositionUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::EcefPositionUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefPositionUncertainty: no field");
+        };
+        assert_eq!(descriptor, <EcefPositionUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(EcefPositionUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::EcefVelocityUncertainty;
+        let value = EcefVelocityUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::EcefVelocityUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefVelocityUncertainty: no field");
+        };
+        assert_eq!(descriptor, <EcefVelocityUncertainty as Layout>::DESCRIPTOR);
+        assert_eq!(EcefVelocityUncertainty::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::EcefPosition;
+        let value = EcefPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::EcefPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefPosition: no field");
+        };
+        assert_eq!(descriptor, <EcefPosition as Layout>::DESCRIPTOR);
+        assert_eq!(EcefPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::EcefVelocity;
+        let value = EcefVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::EcefVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefVelocity: no field");
+        };
+        assert_eq!(descriptor, <EcefVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(EcefVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::NedRelativePosition;
+        let value = NedRelativePosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::filter_data::NedRelativePosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedRelativePosition: no field");
+        };
+        assert_eq!(descriptor, <NedRelativePosition as Layout>::DESCRIPTOR);
+        assert_eq!(NedRelativePosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GnssPositionAidingStatus;
+        let value = GnssPositionAidingStatus::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::GnssPositionAidingStatus::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssPositionAidingStatus: no field");
+        };
+        assert_eq!(descriptor, <GnssPositionAidingStatus as Layout>::DESCRIPTOR);
+        assert_eq!(GnssPositionAidingStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AidingMeasurementSummary;
+        let value = AidingMeasurementSummary::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::AidingMeasurementSummary::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AidingMeasurementSummary: no field");
+        };
+        assert_eq!(descriptor, <AidingMeasurementSummary as Layout>::DESCRIPTOR);
+        assert_eq!(AidingMeasurementSummary::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::OdometerScaleFactorError;
+        let value = OdometerScaleFactorError::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::OdometerScaleFactorError::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("OdometerScaleFactorError: no field");
+        };
+        assert_eq!(descriptor, <OdometerScaleFactorError as Layout>::DESCRIPTOR);
+        assert_eq!(OdometerScaleFactorError::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::OdometerScaleFactorErrorUncertainty;
+        let value = OdometerScaleFactorErrorUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::OdometerScaleFactorErrorUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("OdometerScaleFactorErrorUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <OdometerScaleFactorErrorUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            OdometerScaleFactorErrorUncertainty::decode_data(data),
+            Ok(value)
+        );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::GnssDualAntennaStatus;
+        let value = GnssDualAntennaStatus::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::GnssDualAntennaStatus::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GnssDualAntennaStatus: no field");
+        };
+        assert_eq!(descriptor, <GnssDualAntennaStatus as Layout>::DESCRIPTOR);
+        assert_eq!(GnssDualAntennaStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AidingFrameConfigError;
+        let value = AidingFrameConfigError::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::AidingFrameConfigError::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AidingFrameConfigError: no field");
+        };
+        assert_eq!(descriptor, <AidingFrameConfigError as Layout>::DESCRIPTOR);
+        assert_eq!(AidingFrameConfigError::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::filter_data::AidingFrameConfigErrorUncertainty;
+        let value = AidingFrameConfigErrorUncertainty::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::filter_data::AidingFrameConfigErrorUncertainty::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("AidingFrameConfigErrorUncertainty: no field");
+        };
+        assert_eq!(
+            descriptor,
+            <AidingFrameConfigErrorUncertainty as Layout>::DESCRIPTOR
+        );
+        assert_eq!(
+            AidingFrameConfigErrorUncertainty::decode_data(data),
+            Ok(value)
+        );
         assert!(fields.next().is_none());
     }
     {

@@ -11,6 +11,7 @@
 #include "mipcodec/sets/aiding.h"
 #include "mipcodec/sets/system.h"
 #include "mipcodec/sets/sensor.h"
+#include "mipcodec/sets/filter_data.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -263,7 +264,56 @@ typedef enum {
     MIP_FIELD_SENSOR_SCALED_ACCEL = 221,
     MIP_FIELD_SENSOR_SCALED_GYRO = 222,
     MIP_FIELD_SENSOR_SCALED_MAG = 223,
-    MIP_FIELD_COUNT = 224
+    MIP_FIELD_FILTER_DATA_LLH_POSITION = 224,
+    MIP_FIELD_FILTER_DATA_NED_VELOCITY = 225,
+    MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION = 226,
+    MIP_FIELD_FILTER_DATA_ATTITUDE_DCM = 227,
+    MIP_FIELD_FILTER_DATA_EULER_ANGLES = 228,
+    MIP_FIELD_FILTER_DATA_GYRO_BIAS = 229,
+    MIP_FIELD_FILTER_DATA_ACCEL_BIAS = 230,
+    MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY = 231,
+    MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY = 232,
+    MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY = 233,
+    MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY = 234,
+    MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY = 235,
+    MIP_FIELD_FILTER_DATA_LINEAR_ACCEL = 236,
+    MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE = 237,
+    MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE = 238,
+    MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45 = 239,
+    MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS = 240,
+    MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP = 241,
+    MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY = 242,
+    MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR = 243,
+    MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE = 244,
+    MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL = 245,
+    MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR = 246,
+    MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR = 247,
+    MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY = 248,
+    MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY = 249,
+    MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL = 250,
+    MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE = 251,
+    MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE = 252,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET = 253,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX = 254,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY = 255,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY = 256,
+    MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION = 257,
+    MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY = 258,
+    MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION = 259,
+    MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY = 260,
+    MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY = 261,
+    MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY = 262,
+    MIP_FIELD_FILTER_DATA_ECEF_POSITION = 263,
+    MIP_FIELD_FILTER_DATA_ECEF_VELOCITY = 264,
+    MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION = 265,
+    MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS = 266,
+    MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY = 267,
+    MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR = 268,
+    MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY = 269,
+    MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS = 270,
+    MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR = 271,
+    MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY = 272,
+    MIP_FIELD_COUNT = 273
 } mip_field_id_t;
 
 /** A decoded field: which layout, and its value. */
@@ -499,6 +549,61 @@ typedef struct {
         mip_sensor_scaled_accel_t sensor_scaled_accel;
         mip_sensor_scaled_gyro_t sensor_scaled_gyro;
         mip_sensor_scaled_mag_t sensor_scaled_mag;
+        mip_filter_data_llh_position_t filter_data_llh_position;
+        mip_filter_data_ned_velocity_t filter_data_ned_velocity;
+        mip_filter_data_attitude_quaternion_t filter_data_attitude_quaternion;
+        mip_filter_data_attitude_dcm_t filter_data_attitude_dcm;
+        mip_filter_data_euler_angles_t filter_data_euler_angles;
+        mip_filter_data_gyro_bias_t filter_data_gyro_bias;
+        mip_filter_data_accel_bias_t filter_data_accel_bias;
+        mip_filter_data_llh_position_uncertainty_t filter_data_llh_position_uncertainty;
+        mip_filter_data_ned_velocity_uncertainty_t filter_data_ned_velocity_uncertainty;
+        mip_filter_data_euler_angles_uncertainty_t filter_data_euler_angles_uncertainty;
+        mip_filter_data_gyro_bias_uncertainty_t filter_data_gyro_bias_uncertainty;
+        mip_filter_data_accel_bias_uncertainty_t filter_data_accel_bias_uncertainty;
+        mip_filter_data_linear_accel_t filter_data_linear_accel;
+        mip_filter_data_comp_angular_rate_t filter_data_comp_angular_rate;
+        mip_filter_data_wgs84_gravity_magnitude_t filter_data_wgs84_gravity_magnitude;
+        mip_filter_data_filter_status_gx5_45_t filter_data_filter_status_gx5_45;
+        mip_filter_data_filter_status_cv7_ins_t filter_data_filter_status_cv7_ins;
+        mip_filter_data_gps_timestamp_t filter_data_gps_timestamp;
+        mip_filter_data_quaternion_attitude_uncertainty_t filter_data_quaternion_attitude_uncertainty;
+        mip_filter_data_gravity_vector_t filter_data_gravity_vector;
+        mip_filter_data_heading_update_state_t filter_data_heading_update_state;
+        mip_filter_data_magnetic_model_t filter_data_magnetic_model;
+        mip_filter_data_gyro_scale_factor_t filter_data_gyro_scale_factor;
+        mip_filter_data_accel_scale_factor_t filter_data_accel_scale_factor;
+        mip_filter_data_gyro_scale_factor_uncertainty_t filter_data_gyro_scale_factor_uncertainty;
+        mip_filter_data_accel_scale_factor_uncertainty_t filter_data_accel_scale_factor_uncertainty;
+        mip_filter_data_compensated_accel_t filter_data_compensated_accel;
+        mip_filter_data_standard_atmosphere_t filter_data_standard_atmosphere;
+        mip_filter_data_pressure_altitude_t filter_data_pressure_altitude;
+        mip_filter_data_mag_auto_hard_iron_offset_t filter_data_mag_auto_hard_iron_offset;
+        mip_filter_data_mag_auto_soft_iron_matrix_t filter_data_mag_auto_soft_iron_matrix;
+        mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t
+            filter_data_mag_auto_hard_iron_offset_uncertainty;
+        mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t
+            filter_data_mag_auto_soft_iron_matrix_uncertainty;
+        mip_filter_data_gnss_antenna_offset_correction_t filter_data_gnss_antenna_offset_correction;
+        mip_filter_data_gnss_antenna_offset_correction_uncertainty_t
+            filter_data_gnss_antenna_offset_correction_uncertainty;
+        mip_filter_data_multi_antenna_offset_correction_t filter_data_multi_antenna_offset_correction;
+        mip_filter_data_multi_antenna_offset_correction_uncertainty_t
+            filter_data_multi_antenna_offset_correction_uncertainty;
+        mip_filter_data_ecef_position_uncertainty_t filter_data_ecef_position_uncertainty;
+        mip_filter_data_ecef_velocity_uncertainty_t filter_data_ecef_velocity_uncertainty;
+        mip_filter_data_ecef_position_t filter_data_ecef_position;
+        mip_filter_data_ecef_velocity_t filter_data_ecef_velocity;
+        mip_filter_data_ned_relative_position_t filter_data_ned_relative_position;
+        mip_filter_data_gnss_position_aiding_status_t filter_data_gnss_position_aiding_status;
+        mip_filter_data_aiding_measurement_summary_t filter_data_aiding_measurement_summary;
+        mip_filter_data_odometer_scale_factor_error_t filter_data_odometer_scale_factor_error;
+        mip_filter_data_odometer_scale_factor_error_uncertainty_t
+            filter_data_odometer_scale_factor_error_uncertainty;
+        mip_filter_data_gnss_dual_antenna_status_t filter_data_gnss_dual_antenna_status;
+        mip_filter_data_aiding_frame_config_error_t filter_data_aiding_frame_config_error;
+        mip_filter_data_aiding_frame_config_error_uncertainty_t
+            filter_data_aiding_frame_config_error_uncertainty;
     } u;
 } mip_field_value_t;
 

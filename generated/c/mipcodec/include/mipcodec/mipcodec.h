@@ -7,6 +7,7 @@
 #include "mipcodec/framing.h"
 #include "mipcodec/parser.h"
 #include "mipcodec/field_iter.h"
+#include "mipcodec/samples.h"
 #include "mipcodec/types.h"
 #include "mipcodec/reserved.h"
 #include "mipcodec/sets/base.h"
@@ -16,6 +17,7 @@
 #include "mipcodec/sets/aiding.h"
 #include "mipcodec/sets/system.h"
 #include "mipcodec/sets/sensor.h"
+#include "mipcodec/sets/filter_data.h"
 #include "mipcodec/dispatch.h"
 #include "mipcodec/json.h"
 

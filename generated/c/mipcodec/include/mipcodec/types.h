@@ -300,6 +300,163 @@ typedef uint8_t mip_factory_streaming_action_t;
     ((mip_factory_streaming_action_t)2u) /* Append the support descriptors to the existing formats           \
                                             (duplicates possible). */
 
+/** Aiding measurement indicator. State of one aiding measurement over the last measurement interval.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_filter_aiding_measurement_indicator_t;
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_ENABLED_MASK                                                 \
+    ((mip_filter_aiding_measurement_indicator_t)0x1u) /* bit 0: The measurement is enabled. */
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_ENABLED_SHIFT 0
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_USED_MASK                                                    \
+    ((mip_filter_aiding_measurement_indicator_t)0x2u) /* bit 1: The measurement was used by the filter. */
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_USED_SHIFT 1
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_RESIDUAL_HIGH_WARNING_MASK                                   \
+    ((mip_filter_aiding_measurement_indicator_t)0x4u) /* bit 2: Measurement residual is high. */
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_RESIDUAL_HIGH_WARNING_SHIFT 2
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_SAMPLE_TIME_WARNING_MASK                                     \
+    ((mip_filter_aiding_measurement_indicator_t)0x8u) /* bit 3: Problem with the measurement's sample time.  \
+                                                       */
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_SAMPLE_TIME_WARNING_SHIFT 3
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_CONFIGURATION_ERROR_MASK                                     \
+    ((mip_filter_aiding_measurement_indicator_t)0x10u) /* bit 4: The measurement is misconfigured. */
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_CONFIGURATION_ERROR_SHIFT 4
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_MAX_NUM_MEAS_EXCEEDED_MASK                                   \
+    ((mip_filter_aiding_measurement_indicator_t)0x20u) /* bit 5: More measurements than the filter can       \
+                                                          process. */
+#define MIP_FILTER_AIDING_MEASUREMENT_INDICATOR_MAX_NUM_MEAS_EXCEEDED_SHIFT 5
+
+/** Aiding measurement type. Which aiding measurement an Aiding Measurement Summary (0x82,0x46) describes.
+ * Values 0x20 and above are the measurements commanded through the Aiding command set (0x13); their value is
+ * the descriptor of that command. An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_filter_aiding_measurement_type_t;
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_GNSS                                                              \
+    ((mip_filter_aiding_measurement_type_t)1u) /* GNSS receiver measurement. */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_DUAL_ANTENNA                                                      \
+    ((mip_filter_aiding_measurement_type_t)2u) /* GNSS dual-antenna heading. */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_HEADING                                                           \
+    ((mip_filter_aiding_measurement_type_t)3u) /* Heading measurement. */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_PRESSURE                                                          \
+    ((mip_filter_aiding_measurement_type_t)4u) /* Pressure (barometric altitude). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_MAGNETOMETER                                                      \
+    ((mip_filter_aiding_measurement_type_t)5u) /* Magnetometer. */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_SPEED                                                             \
+    ((mip_filter_aiding_measurement_type_t)6u) /* Speed sensor (odometer). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_POS_ECEF                                                   \
+    ((mip_filter_aiding_measurement_type_t)33u) /* ECEF position aiding command (0x13,0x21). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_POS_LLH                                                    \
+    ((mip_filter_aiding_measurement_type_t)34u) /* LLH position aiding command (0x13,0x22). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_HEIGHT_ABOVE_ELLIPSOID                                     \
+    ((mip_filter_aiding_measurement_type_t)35u) /* Height above ellipsoid aiding command (0x13,0x23). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_VEL_ECEF                                                   \
+    ((mip_filter_aiding_measurement_type_t)40u) /* ECEF velocity aiding command (0x13,0x28). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_VEL_NED                                                    \
+    ((mip_filter_aiding_measurement_type_t)41u) /* NED velocity aiding command (0x13,0x29). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_VEL_BODY_FRAME                                             \
+    ((mip_filter_aiding_measurement_type_t)42u) /* Body-frame velocity aiding command (0x13,0x2A). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_HEADING_TRUE                                               \
+    ((mip_filter_aiding_measurement_type_t)49u) /* True heading aiding command (0x13,0x31). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_MAGNETIC_FIELD                                             \
+    ((mip_filter_aiding_measurement_type_t)50u) /* Magnetic field aiding command (0x13,0x32). */
+#define MIP_FILTER_AIDING_MEASUREMENT_TYPE_AIDING_PRESSURE                                                   \
+    ((mip_filter_aiding_measurement_type_t)51u) /* Pressure aiding command (0x13,0x33). */
+
+/** Dual-antenna fix type. Kind of GNSS dual-antenna heading solution.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_filter_dual_antenna_fix_type_t;
+#define MIP_FILTER_DUAL_ANTENNA_FIX_TYPE_FIX_NONE                                                            \
+    ((mip_filter_dual_antenna_fix_type_t)0u) /* No dual-antenna fix. */
+#define MIP_FILTER_DUAL_ANTENNA_FIX_TYPE_FIX_DA_FLOAT                                                        \
+    ((mip_filter_dual_antenna_fix_type_t)1u) /* Dual-antenna float solution. */
+#define MIP_FILTER_DUAL_ANTENNA_FIX_TYPE_FIX_DA_FIXED                                                        \
+    ((mip_filter_dual_antenna_fix_type_t)2u) /* Dual-antenna fixed (integer) solution. */
+
+/** Dual-antenna status flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_dual_antenna_status_flags_t;
+#define MIP_FILTER_DUAL_ANTENNA_STATUS_FLAGS_RCV_1_DATA_VALID_MASK                                           \
+    ((mip_filter_dual_antenna_status_flags_t)0x1u) /* bit 0: Data from receiver 1 are valid. */
+#define MIP_FILTER_DUAL_ANTENNA_STATUS_FLAGS_RCV_1_DATA_VALID_SHIFT 0
+#define MIP_FILTER_DUAL_ANTENNA_STATUS_FLAGS_RCV_2_DATA_VALID_MASK                                           \
+    ((mip_filter_dual_antenna_status_flags_t)0x2u) /* bit 1: Data from receiver 2 are valid. */
+#define MIP_FILTER_DUAL_ANTENNA_STATUS_FLAGS_RCV_2_DATA_VALID_SHIFT 1
+#define MIP_FILTER_DUAL_ANTENNA_STATUS_FLAGS_ANTENNA_OFFSETS_VALID_MASK                                      \
+    ((mip_filter_dual_antenna_status_flags_t)0x4u) /* bit 2: The antenna offsets are valid. */
+#define MIP_FILTER_DUAL_ANTENNA_STATUS_FLAGS_ANTENNA_OFFSETS_VALID_SHIFT 2
+
+/** Filter dynamics mode (3DM-CV7). Dynamics mode reported in Status (0x82,0x10) by the CV7 (GQ7-family
+ * filter). An integer, so that values the spec does not list are kept. */
+typedef uint16_t mip_filter_dynamics_mode_cv7_t;
+#define MIP_FILTER_DYNAMICS_MODE_CV7_DEFAULT                                                                 \
+    ((mip_filter_dynamics_mode_cv7_t)1u) /* Default dynamics mode (printed GQ7_DEFAULT). */
+
+/** Filter dynamics mode (3DM-GX5-45). Vehicle dynamics mode the GX5-45 filter runs with, as reported in
+ * Filter Status (0x82,0x10). An integer, so that values the spec does not list are kept. */
+typedef uint16_t mip_filter_dynamics_mode_gx5_t;
+#define MIP_FILTER_DYNAMICS_MODE_GX5_PORTABLE                                                                \
+    ((mip_filter_dynamics_mode_gx5_t)1u) /* Portable (low-acceleration applications). */
+#define MIP_FILTER_DYNAMICS_MODE_GX5_AUTOMOTIVE                                                              \
+    ((mip_filter_dynamics_mode_gx5_t)2u) /* Automotive (wheeled vehicles, low vertical acceleration). */
+#define MIP_FILTER_DYNAMICS_MODE_GX5_AIRBORNE ((mip_filter_dynamics_mode_gx5_t)3u) /* Airborne (up to 2 g).  \
+                                                                                    */
+
+/** GNSS position aiding status. What the filter does with the measurements of one GNSS receiver.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_gnss_aiding_status_flags_t;
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_TIGHT_COUPLING_MASK                                              \
+    ((mip_filter_gnss_aiding_status_flags_t)0x1u) /* bit 0: The filter is processing raw range information   \
+                                                     from this receiver. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_TIGHT_COUPLING_SHIFT 0
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_DIFFERENTIAL_MASK                                                \
+    ((mip_filter_gnss_aiding_status_flags_t)0x2u) /* bit 1: The filter is processing RTK corrections from    \
+                                                     this receiver. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_DIFFERENTIAL_SHIFT 1
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_INTEGER_FIX_MASK                                                 \
+    ((mip_filter_gnss_aiding_status_flags_t)0x4u) /* bit 2: The filter has an RTK integer fix from this      \
+                                                     receiver. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_INTEGER_FIX_SHIFT 2
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GPS_L1_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x8u) /* bit 3: GPS L1 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GPS_L1_SHIFT 3
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GPS_L2_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x10u) /* bit 4: GPS L2 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GPS_L2_SHIFT 4
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GPS_L5_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x20u) /* bit 5: GPS L5 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GPS_L5_SHIFT 5
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GLO_L1_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x40u) /* bit 6: GLONASS L1 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GLO_L1_SHIFT 6
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GLO_L2_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x80u) /* bit 7: GLONASS L2 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GLO_L2_SHIFT 7
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GAL_E1_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x100u) /* bit 8: Galileo E1 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GAL_E1_SHIFT 8
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GAL_E5_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x200u) /* bit 9: Galileo E5 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GAL_E5_SHIFT 9
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GAL_E6_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x400u) /* bit 10: Galileo E6 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_GAL_E6_SHIFT 10
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_BEI_B1_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x800u) /* bit 11: BeiDou B1 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_BEI_B1_SHIFT 11
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_BEI_B2_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x1000u) /* bit 12: BeiDou B2 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_BEI_B2_SHIFT 12
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_BEI_B3_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x2000u) /* bit 13: BeiDou B3 measurements used. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_BEI_B3_SHIFT 13
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_NO_FIX_MASK                                                      \
+    ((mip_filter_gnss_aiding_status_flags_t)0x4000u) /* bit 14: This receiver reports no position fix. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_NO_FIX_SHIFT 14
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_CONFIG_ERROR_MASK                                                \
+    ((mip_filter_gnss_aiding_status_flags_t)0x8000u) /* bit 15: Probably a problem with this receiver's      \
+                                                        antenna offset. */
+#define MIP_FILTER_GNSS_AIDING_STATUS_FLAGS_CONFIG_ERROR_SHIFT 15
+
 /** Filter GNSS source. Where the filter takes its GNSS position and velocity updates from.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_filter_gnss_source_t;
@@ -313,6 +470,30 @@ typedef uint8_t mip_filter_gnss_source_t;
     ((mip_filter_gnss_source_t)3u) /* Internal GNSS receiver 1 only. (devices: cv7_ins) */
 #define MIP_FILTER_GNSS_SOURCE_INTERNAL_2                                                                    \
     ((mip_filter_gnss_source_t)4u) /* Internal GNSS receiver 2 only. (devices: cv7_ins) */
+
+/** Heading update sources in use. Sources currently providing heading updates; 0 means none (heading updates
+ * disabled). The whole integer is kept (reserved bits too); members are read with the masks below: (value &
+ * X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_heading_source_flags_t;
+#define MIP_FILTER_HEADING_SOURCE_FLAGS_MAGNETOMETER_MASK                                                    \
+    ((mip_filter_heading_source_flags_t)0x1u) /* bit 0: Internal magnetometer. */
+#define MIP_FILTER_HEADING_SOURCE_FLAGS_MAGNETOMETER_SHIFT 0
+#define MIP_FILTER_HEADING_SOURCE_FLAGS_GNSS_VELOCITY_MASK                                                   \
+    ((mip_filter_heading_source_flags_t)0x2u) /* bit 1: GNSS velocity vector. */
+#define MIP_FILTER_HEADING_SOURCE_FLAGS_GNSS_VELOCITY_SHIFT 1
+#define MIP_FILTER_HEADING_SOURCE_FLAGS_EXTERNAL_MASK                                                        \
+    ((mip_filter_heading_source_flags_t)0x4u) /* bit 2: External Heading Update messages (0x0D,0x17), with   \
+                                                 or without timestamp (0x0D,0x1F). */
+#define MIP_FILTER_HEADING_SOURCE_FLAGS_EXTERNAL_SHIFT 2
+
+/** Heading update state valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_heading_update_valid_flags_t;
+#define MIP_FILTER_HEADING_UPDATE_VALID_FLAGS_UPDATED_WITHIN_2S_MASK                                         \
+    ((mip_filter_heading_update_valid_flags_t)0x1u) /* bit 0: The heading update source provided data within \
+                                                       the last 2 seconds (0: no update for 2 seconds). */
+#define MIP_FILTER_HEADING_UPDATE_VALID_FLAGS_UPDATED_WITHIN_2S_SHIFT 0
 
 /** Navigation filter initial condition source.
  * An integer, so that values the spec does not list are kept. */
@@ -328,6 +509,29 @@ typedef uint8_t mip_filter_initial_condition_source_t;
 #define MIP_FILTER_INITIAL_CONDITION_SOURCE_MANUAL                                                           \
     ((mip_filter_initial_condition_source_t)3u) /* User-specified position, velocity and attitude. */
 
+/** Filter mode (3DM-CV7). Mode the CV7 navigation filter has reached, reported as the filter state in Status
+ * (0x82,0x10); it depends on the initial conditions the filter was given. An integer, so that values the spec
+ * does not list are kept. */
+typedef uint16_t mip_filter_mode_cv7_t;
+#define MIP_FILTER_MODE_CV7_INIT                                                                             \
+    ((mip_filter_mode_cv7_t)1u) /* Initialization: initial conditions incomplete or invalid, or waiting for  \
+                                   user input. */
+#define MIP_FILTER_MODE_CV7_VERT_GYRO                                                                        \
+    ((mip_filter_mode_cv7_t)2u) /* Vertical gyro: valid pitch and roll, heading relative to the initial      \
+                                   heading. */
+#define MIP_FILTER_MODE_CV7_AHRS                                                                             \
+    ((mip_filter_mode_cv7_t)3u) /* AHRS: as vertical gyro, with an absolute heading reference. */
+#define MIP_FILTER_MODE_CV7_FULL_NAV                                                                         \
+    ((mip_filter_mode_cv7_t)4u) /* Full navigation: valid position, velocity, pitch, roll and heading. */
+
+/** Filter output valid flags. Valid flags of a filter output field: 0x0000 the values are invalid, 0x0001
+ * they are valid. The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_output_valid_flags_t;
+#define MIP_FILTER_OUTPUT_VALID_FLAGS_VALID_MASK                                                             \
+    ((mip_filter_output_valid_flags_t)0x1u) /* bit 0: The values of this field are valid. */
+#define MIP_FILTER_OUTPUT_VALID_FLAGS_VALID_SHIFT 0
+
 /** Reference frame of user-specified positions and velocities.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_filter_reference_frame_t;
@@ -335,6 +539,130 @@ typedef uint8_t mip_filter_reference_frame_t;
     ((mip_filter_reference_frame_t)1u) /* WGS84 Earth-centered, Earth-fixed coordinates. */
 #define MIP_FILTER_REFERENCE_FRAME_LLH                                                                       \
     ((mip_filter_reference_frame_t)2u) /* WGS84 latitude, longitude and height above ellipsoid. */
+
+/** Filter state (3DM-GX5-45). Operating state of the GX5-45 estimation filter, reported in Filter Status
+ * (0x82,0x10). An integer, so that values the spec does not list are kept. */
+typedef uint16_t mip_filter_state_gx5_t;
+#define MIP_FILTER_STATE_GX5_STARTUP ((mip_filter_state_gx5_t)0u) /* Filter starting up. */
+#define MIP_FILTER_STATE_GX5_INIT                                                                            \
+    ((mip_filter_state_gx5_t)1u) /* Initializing; the status flags tell what is still missing. */
+#define MIP_FILTER_STATE_GX5_RUN_SOLUTION_VALID                                                              \
+    ((mip_filter_state_gx5_t)2u) /* Running, the solution is valid. */
+#define MIP_FILTER_STATE_GX5_RUN_SOLUTION_ERROR                                                              \
+    ((mip_filter_state_gx5_t)3u) /* Running, the solution has an error; the status flags tell which. */
+
+/** Filter status flags (3DM-CV7). CV7 (GQ7-family) filter status flags: the filter condition in bits 0-1 (1
+ * stable, 2 converging, 3 unstable/recovering), estimate warnings in bits 2-10 and solution error flags in
+ * bits 12-15. The whole integer is kept (reserved bits too); members are read with the masks below: (value &
+ * X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_status_flags_cv7_t;
+#define MIP_FILTER_STATUS_FLAGS_CV7_FILTER_CONDITION_MASK                                                    \
+    ((mip_filter_status_flags_cv7_t)0x3u) /* bits 0-1: Filter condition: 1 stable, 2 converging, 3           \
+                                             unstable/recovering. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_FILTER_CONDITION_SHIFT 0
+#define MIP_FILTER_STATUS_FLAGS_CV7_ROLL_PITCH_WARNING_MASK                                                  \
+    ((mip_filter_status_flags_cv7_t)0x4u) /* bit 2: Low confidence in roll/pitch (e.g. sensor not aligned    \
+                                             with the vehicle frame). */
+#define MIP_FILTER_STATUS_FLAGS_CV7_ROLL_PITCH_WARNING_SHIFT 2
+#define MIP_FILTER_STATUS_FLAGS_CV7_HEADING_WARNING_MASK                                                     \
+    ((mip_filter_status_flags_cv7_t)0x8u) /* bit 3: Low confidence in heading (heading source not valid). */
+#define MIP_FILTER_STATUS_FLAGS_CV7_HEADING_WARNING_SHIFT 3
+#define MIP_FILTER_STATUS_FLAGS_CV7_POSITION_WARNING_MASK                                                    \
+    ((mip_filter_status_flags_cv7_t)0x10u) /* bit 4: Low confidence in position. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_POSITION_WARNING_SHIFT 4
+#define MIP_FILTER_STATUS_FLAGS_CV7_VELOCITY_WARNING_MASK                                                    \
+    ((mip_filter_status_flags_cv7_t)0x20u) /* bit 5: Low confidence in velocity. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_VELOCITY_WARNING_SHIFT 5
+#define MIP_FILTER_STATUS_FLAGS_CV7_IMU_BIAS_WARNING_MASK                                                    \
+    ((mip_filter_status_flags_cv7_t)0x40u) /* bit 6: IMU bias estimate warning (gyro bias high). */
+#define MIP_FILTER_STATUS_FLAGS_CV7_IMU_BIAS_WARNING_SHIFT 6
+#define MIP_FILTER_STATUS_FLAGS_CV7_GNSS_CLK_WARNING_MASK                                                    \
+    ((mip_filter_status_flags_cv7_t)0x80u) /* bit 7: GNSS clock warning (affects the filter timestamp). */
+#define MIP_FILTER_STATUS_FLAGS_CV7_GNSS_CLK_WARNING_SHIFT 7
+#define MIP_FILTER_STATUS_FLAGS_CV7_ANTENNA_LEVER_ARM_WARNING_MASK                                           \
+    ((mip_filter_status_flags_cv7_t)0x100u) /* bit 8: Antenna lever arm offsets are likely incorrect. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_ANTENNA_LEVER_ARM_WARNING_SHIFT 8
+#define MIP_FILTER_STATUS_FLAGS_CV7_MOUNTING_TRANSFORM_WARNING_MASK                                          \
+    ((mip_filter_status_flags_cv7_t)0x200u) /* bit 9: Mounting transform is likely incorrect. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_MOUNTING_TRANSFORM_WARNING_SHIFT 9
+#define MIP_FILTER_STATUS_FLAGS_CV7_TIME_SYNC_WARNING_MASK                                                   \
+    ((mip_filter_status_flags_cv7_t)0x400u) /* bit 10: No time synchronization (PPS) pulse detected, or      \
+                                               external heading timestamp too old. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_TIME_SYNC_WARNING_SHIFT 10
+#define MIP_FILTER_STATUS_FLAGS_CV7_RESERVED_MASK                                                            \
+    ((mip_filter_status_flags_cv7_t)0x800u) /* bit 11: (reserved) Not listed. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_RESERVED_SHIFT 11
+#define MIP_FILTER_STATUS_FLAGS_CV7_SOLUTION_ERROR_MASK                                                      \
+    ((mip_filter_status_flags_cv7_t)0xF000u) /* bits 12-15: Filter computation error flags (NaN in the       \
+                                                solution); if any is set, all filter outputs are invalid. */
+#define MIP_FILTER_STATUS_FLAGS_CV7_SOLUTION_ERROR_SHIFT 12
+
+/** Filter status flags (3DM-GX5-45). GX5-45 filter status flags. Bits 12 and 13 mean different things
+ * depending on the filter state: in the initialization state they say what is not initialized, while running
+ * they are estimate warnings. The whole integer is kept (reserved bits too); members are read with the masks
+ * below: (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_filter_status_flags_gx5_t;
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_IMU_UNAVAILABLE_MASK                                                 \
+    ((mip_filter_status_flags_gx5_t)0x1u) /* bit 0: Running: IMU unavailable. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_IMU_UNAVAILABLE_SHIFT 0
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_GPS_UNAVAILABLE_MASK                                                 \
+    ((mip_filter_status_flags_gx5_t)0x2u) /* bit 1: Running: GNSS unavailable. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_GPS_UNAVAILABLE_SHIFT 1
+#define MIP_FILTER_STATUS_FLAGS_GX5_RESERVED_MASK                                                            \
+    ((mip_filter_status_flags_gx5_t)0x4u) /* bit 2: (reserved) Not listed (0x0004). */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RESERVED_SHIFT 2
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MATRIX_SINGULARITY_MASK                                              \
+    ((mip_filter_status_flags_gx5_t)0x8u) /* bit 3: Running: matrix singularity in the calculation. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MATRIX_SINGULARITY_SHIFT 3
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_POSITION_COVARIANCE_WARNING_MASK                                     \
+    ((mip_filter_status_flags_gx5_t)0x10u) /* bit 4: Running: position covariance high (some axis beyond     \
+                                              normal limits). */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_POSITION_COVARIANCE_WARNING_SHIFT 4
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_VELOCITY_COVARIANCE_WARNING_MASK                                     \
+    ((mip_filter_status_flags_gx5_t)0x20u) /* bit 5: Running: velocity covariance high (some axis beyond     \
+                                              normal limits). */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_VELOCITY_COVARIANCE_WARNING_SHIFT 5
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ATTITUDE_COVARIANCE_WARNING_MASK                                     \
+    ((mip_filter_status_flags_gx5_t)0x40u) /* bit 6: Running: attitude covariance high (some axis beyond     \
+                                              normal limits). */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ATTITUDE_COVARIANCE_WARNING_SHIFT 6
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_NAN_IN_SOLUTION_WARNING_MASK                                         \
+    ((mip_filter_status_flags_gx5_t)0x80u) /* bit 7: Running: NaN in the solution. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_NAN_IN_SOLUTION_WARNING_SHIFT 7
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_GYRO_BIAS_EST_HIGH_WARNING_MASK                                      \
+    ((mip_filter_status_flags_gx5_t)0x100u) /* bit 8: Running: gyro bias estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_GYRO_BIAS_EST_HIGH_WARNING_SHIFT 8
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ACCEL_BIAS_EST_HIGH_WARNING_MASK                                     \
+    ((mip_filter_status_flags_gx5_t)0x200u) /* bit 9: Running: accel bias estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ACCEL_BIAS_EST_HIGH_WARNING_SHIFT 9
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING_MASK                              \
+    ((mip_filter_status_flags_gx5_t)0x400u) /* bit 10: Running: gyro scale factor estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_GYRO_SCALE_FACTOR_EST_HIGH_WARNING_SHIFT 10
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING_MASK                             \
+    ((mip_filter_status_flags_gx5_t)0x800u) /* bit 11: Running: accel scale factor estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ACCEL_SCALE_FACTOR_EST_HIGH_WARNING_SHIFT 11
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MAG_BIAS_EST_HIGH_WARNING_MASK                                       \
+    ((mip_filter_status_flags_gx5_t)0x1000u) /* bit 12: Running: magnetometer bias estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MAG_BIAS_EST_HIGH_WARNING_SHIFT 12
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING_MASK                          \
+    ((mip_filter_status_flags_gx5_t)0x2000u) /* bit 13: Running: GNSS antenna offset correction estimate     \
+                                                high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_ANT_OFFSET_CORRECTION_EST_HIGH_WARNING_SHIFT 13
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MAG_HARD_IRON_EST_HIGH_WARNING_MASK                                  \
+    ((mip_filter_status_flags_gx5_t)0x4000u) /* bit 14: Running: hard iron offset estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MAG_HARD_IRON_EST_HIGH_WARNING_SHIFT 14
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MAG_SOFT_IRON_EST_HIGH_WARNING_MASK                                  \
+    ((mip_filter_status_flags_gx5_t)0x8000u) /* bit 15: Running: soft iron correction estimate high. */
+#define MIP_FILTER_STATUS_FLAGS_GX5_RUN_MAG_SOFT_IRON_EST_HIGH_WARNING_SHIFT 15
+#define MIP_FILTER_STATUS_FLAGS_GX5_INIT_NO_ATTITUDE_MASK                                                    \
+    ((mip_filter_status_flags_gx5_t)0x1000u) /* bit 12: Initialization: attitude not initialized (same bit   \
+                                                as run_mag_bias_est_high_warning). */
+#define MIP_FILTER_STATUS_FLAGS_GX5_INIT_NO_ATTITUDE_SHIFT 12
+#define MIP_FILTER_STATUS_FLAGS_GX5_INIT_NO_POSITION_VELOCITY_MASK                                           \
+    ((mip_filter_status_flags_gx5_t)0x2000u) /* bit 13: Initialization: position and velocity not            \
+                                                initialized (same bit as                                     \
+                                                run_ant_offset_correction_est_high_warning). */
+#define MIP_FILTER_STATUS_FLAGS_GX5_INIT_NO_POSITION_VELOCITY_SHIFT 13
 
 /** Function selector. First parameter of settings commands; chooses what the command does. Only a read
  * returns a response field (with the ack); parameters not needed for a function may be left out, or sent as

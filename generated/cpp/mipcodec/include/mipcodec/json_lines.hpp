@@ -17,6 +17,7 @@
 #include "mipcodec/lookup.hpp"
 #include "mipcodec/packet.hpp"
 #include "mipcodec/parser.hpp"
+#include "mipcodec/samples.hpp"
 #include "mipcodec/types_json.hpp"
 #include "mipcodec/fields/base_json.hpp"
 #include "mipcodec/fields/threedm_json.hpp"
@@ -25,6 +26,7 @@
 #include "mipcodec/fields/aiding_json.hpp"
 #include "mipcodec/fields/system_json.hpp"
 #include "mipcodec/fields/sensor_json.hpp"
+#include "mipcodec/fields/filter_data_json.hpp"
 #include "mipcodec/fields/reserved_json.hpp"
 
 namespace mipcodec {
@@ -105,17 +107,24 @@ inline void write_skip_json(JsonWriter &w, std::uint64_t offset, const std::uint
 }
 
 /// Decodes a whole input, fed to a StreamParser `chunk` bytes at a time, into canonical JSON
-/// lines; on_line(const std::string&) receives each line without its newline.
+/// lines; on_line(const std::string&) receives each line without its newline. With `samples`,
+/// data packets carry their sample number (docs/conformance.md section 6).
 template <class OnLine>
 void decode_to_json_lines(const std::uint8_t *input, std::size_t size, std::size_t chunk,
-                          const std::optional<Device> &device, OnLine &&on_line) {
+                          const std::optional<Device> &device, OnLine &&on_line, bool samples = false) {
     StreamParser parser;
+    SampleTracker tracker;
     std::string line;
     auto on_event = [&](const StreamEvent &e) {
         line.clear();
         JsonWriter w(string_sink, &line);
         if (e.kind == StreamEvent::Kind::packet) {
             write_packet_json(w, e.offset, e.packet, device);
+            const std::optional<SamplePlace> place = samples ? tracker.feed(e.packet) : std::nullopt;
+            const std::size_t at = line.find(",\"fields\":");
+            if (place && at != std::string::npos) {
+                line.insert(at, ",\"sample\":" + std::to_string(place->number));
+            }
         } else {
             write_skip_json(w, e.offset, input + e.offset, static_cast<std::size_t>(e.count));
         }

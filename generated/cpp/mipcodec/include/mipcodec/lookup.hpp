@@ -13,6 +13,7 @@
 #include "mipcodec/fields/aiding.hpp"
 #include "mipcodec/fields/system.hpp"
 #include "mipcodec/fields/sensor.hpp"
+#include "mipcodec/fields/filter_data.hpp"
 #include "mipcodec/fields/reserved.hpp"
 
 namespace mipcodec {
@@ -714,6 +715,158 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
             return Lookup::found;
         case 0x06:
             f(Layouts<::mipcodec::sensor::ScaledMag>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x82:
+        known_set = true;
+        switch (descriptor) {
+        case 0x01:
+            f(Layouts<::mipcodec::filter_data::LlhPosition>{});
+            return Lookup::found;
+        case 0x02:
+            f(Layouts<::mipcodec::filter_data::NedVelocity>{});
+            return Lookup::found;
+        case 0x03:
+            f(Layouts<::mipcodec::filter_data::AttitudeQuaternion>{});
+            return Lookup::found;
+        case 0x04:
+            f(Layouts<::mipcodec::filter_data::AttitudeDcm>{});
+            return Lookup::found;
+        case 0x05:
+            f(Layouts<::mipcodec::filter_data::EulerAngles>{});
+            return Lookup::found;
+        case 0x06:
+            f(Layouts<::mipcodec::filter_data::GyroBias>{});
+            return Lookup::found;
+        case 0x07:
+            f(Layouts<::mipcodec::filter_data::AccelBias>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::filter_data::LlhPositionUncertainty>{});
+            return Lookup::found;
+        case 0x09:
+            f(Layouts<::mipcodec::filter_data::NedVelocityUncertainty>{});
+            return Lookup::found;
+        case 0x0A:
+            f(Layouts<::mipcodec::filter_data::EulerAnglesUncertainty>{});
+            return Lookup::found;
+        case 0x0B:
+            f(Layouts<::mipcodec::filter_data::GyroBiasUncertainty>{});
+            return Lookup::found;
+        case 0x0C:
+            f(Layouts<::mipcodec::filter_data::AccelBiasUncertainty>{});
+            return Lookup::found;
+        case 0x0D:
+            f(Layouts<::mipcodec::filter_data::LinearAccel>{});
+            return Lookup::found;
+        case 0x0E:
+            f(Layouts<::mipcodec::filter_data::CompAngularRate>{});
+            return Lookup::found;
+        case 0x0F:
+            f(Layouts<::mipcodec::filter_data::Wgs84GravityMagnitude>{});
+            return Lookup::found;
+        case 0x10:
+            f(Layouts<::mipcodec::filter_data::FilterStatusGx545,
+                      ::mipcodec::filter_data::FilterStatusCv7Ins>{});
+            return Lookup::found;
+        case 0x11:
+            f(Layouts<::mipcodec::filter_data::GpsTimestamp>{});
+            return Lookup::found;
+        case 0x12:
+            f(Layouts<::mipcodec::filter_data::QuaternionAttitudeUncertainty>{});
+            return Lookup::found;
+        case 0x13:
+            f(Layouts<::mipcodec::filter_data::GravityVector>{});
+            return Lookup::found;
+        case 0x14:
+            f(Layouts<::mipcodec::filter_data::HeadingUpdateState>{});
+            return Lookup::found;
+        case 0x15:
+            f(Layouts<::mipcodec::filter_data::MagneticModel>{});
+            return Lookup::found;
+        case 0x16:
+            f(Layouts<::mipcodec::filter_data::GyroScaleFactor>{});
+            return Lookup::found;
+        case 0x17:
+            f(Layouts<::mipcodec::filter_data::AccelScaleFactor>{});
+            return Lookup::found;
+        case 0x18:
+            f(Layouts<::mipcodec::filter_data::GyroScaleFactorUncertainty>{});
+            return Lookup::found;
+        case 0x19:
+            f(Layouts<::mipcodec::filter_data::AccelScaleFactorUncertainty>{});
+            return Lookup::found;
+        case 0x1C:
+            f(Layouts<::mipcodec::filter_data::CompensatedAccel>{});
+            return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::filter_data::StandardAtmosphere>{});
+            return Lookup::found;
+        case 0x21:
+            f(Layouts<::mipcodec::filter_data::PressureAltitude>{});
+            return Lookup::found;
+        case 0x25:
+            f(Layouts<::mipcodec::filter_data::MagAutoHardIronOffset>{});
+            return Lookup::found;
+        case 0x26:
+            f(Layouts<::mipcodec::filter_data::MagAutoSoftIronMatrix>{});
+            return Lookup::found;
+        case 0x28:
+            f(Layouts<::mipcodec::filter_data::MagAutoHardIronOffsetUncertainty>{});
+            return Lookup::found;
+        case 0x29:
+            f(Layouts<::mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty>{});
+            return Lookup::found;
+        case 0x30:
+            f(Layouts<::mipcodec::filter_data::GnssAntennaOffsetCorrection>{});
+            return Lookup::found;
+        case 0x31:
+            f(Layouts<::mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty>{});
+            return Lookup::found;
+        case 0x34:
+            f(Layouts<::mipcodec::filter_data::MultiAntennaOffsetCorrection>{});
+            return Lookup::found;
+        case 0x35:
+            f(Layouts<::mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty>{});
+            return Lookup::found;
+        case 0x36:
+            f(Layouts<::mipcodec::filter_data::EcefPositionUncertainty>{});
+            return Lookup::found;
+        case 0x37:
+            f(Layouts<::mipcodec::filter_data::EcefVelocityUncertainty>{});
+            return Lookup::found;
+        case 0x40:
+            f(Layouts<::mipcodec::filter_data::EcefPosition>{});
+            return Lookup::found;
+        case 0x41:
+            f(Layouts<::mipcodec::filter_data::EcefVelocity>{});
+            return Lookup::found;
+        case 0x42:
+            f(Layouts<::mipcodec::filter_data::NedRelativePosition>{});
+            return Lookup::found;
+        case 0x43:
+            f(Layouts<::mipcodec::filter_data::GnssPositionAidingStatus>{});
+            return Lookup::found;
+        case 0x46:
+            f(Layouts<::mipcodec::filter_data::AidingMeasurementSummary>{});
+            return Lookup::found;
+        case 0x47:
+            f(Layouts<::mipcodec::filter_data::OdometerScaleFactorError>{});
+            return Lookup::found;
+        case 0x48:
+            f(Layouts<::mipcodec::filter_data::OdometerScaleFactorErrorUncertainty>{});
+            return Lookup::found;
+        case 0x49:
+            f(Layouts<::mipcodec::filter_data::GnssDualAntennaStatus>{});
+            return Lookup::found;
+        case 0x50:
+            f(Layouts<::mipcodec::filter_data::AidingFrameConfigError>{});
+            return Lookup::found;
+        case 0x51:
+            f(Layouts<::mipcodec::filter_data::AidingFrameConfigErrorUncertainty>{});
             return Lookup::found;
         default:
             break;

@@ -10,5 +10,6 @@
 #include "mipcodec/lookup.hpp"
 #include "mipcodec/packet.hpp"
 #include "mipcodec/parser.hpp"
+#include "mipcodec/samples.hpp"
 #include "mipcodec/types.hpp"
 #include "mipcodec/wire.hpp"

@@ -1071,6 +1071,518 @@ inline bool from_string(const char *name, FactoryStreamingAction &out) {
     return false;
 }
 
+/// Aiding measurement indicator. Reserved and unnamed bits are kept in raw().
+class FilterAidingMeasurementIndicator {
+  public:
+    using Raw = std::uint8_t;
+    constexpr FilterAidingMeasurementIndicator() = default;
+    constexpr explicit FilterAidingMeasurementIndicator(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw enabled_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool enabled() const {
+        return (raw_ & enabled_mask) != 0;
+    }
+    constexpr void set_enabled(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | enabled_mask) : (raw_ & static_cast<Raw>(~enabled_mask)));
+    }
+
+    static constexpr Raw used_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool used() const {
+        return (raw_ & used_mask) != 0;
+    }
+    constexpr void set_used(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | used_mask) : (raw_ & static_cast<Raw>(~used_mask)));
+    }
+
+    static constexpr Raw residual_high_warning_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool residual_high_warning() const {
+        return (raw_ & residual_high_warning_mask) != 0;
+    }
+    constexpr void set_residual_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | residual_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~residual_high_warning_mask)));
+    }
+
+    static constexpr Raw sample_time_warning_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool sample_time_warning() const {
+        return (raw_ & sample_time_warning_mask) != 0;
+    }
+    constexpr void set_sample_time_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | sample_time_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~sample_time_warning_mask)));
+    }
+
+    static constexpr Raw configuration_error_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool configuration_error() const {
+        return (raw_ & configuration_error_mask) != 0;
+    }
+    constexpr void set_configuration_error(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | configuration_error_mask)
+                                   : (raw_ & static_cast<Raw>(~configuration_error_mask)));
+    }
+
+    static constexpr Raw max_num_meas_exceeded_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool max_num_meas_exceeded() const {
+        return (raw_ & max_num_meas_exceeded_mask) != 0;
+    }
+    constexpr void set_max_num_meas_exceeded(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | max_num_meas_exceeded_mask)
+                                   : (raw_ & static_cast<Raw>(~max_num_meas_exceeded_mask)));
+    }
+    friend constexpr bool operator==(FilterAidingMeasurementIndicator a, FilterAidingMeasurementIndicator b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterAidingMeasurementIndicator a, FilterAidingMeasurementIndicator b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Aiding measurement type. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class FilterAidingMeasurementType : std::uint8_t {
+    gnss = 1,
+    dual_antenna = 2,
+    heading = 3,
+    pressure = 4,
+    magnetometer = 5,
+    speed = 6,
+    aiding_pos_ecef = 33,
+    aiding_pos_llh = 34,
+    aiding_height_above_ellipsoid = 35,
+    aiding_vel_ecef = 40,
+    aiding_vel_ned = 41,
+    aiding_vel_body_frame = 42,
+    aiding_heading_true = 49,
+    aiding_magnetic_field = 50,
+    aiding_pressure = 51,
+};
+
+/// Spec name of a value ("gnss"), or nullptr when the value has no name.
+inline const char *to_string(FilterAidingMeasurementType v) {
+    if (v == FilterAidingMeasurementType::gnss) {
+        return "gnss";
+    }
+    if (v == FilterAidingMeasurementType::dual_antenna) {
+        return "dual_antenna";
+    }
+    if (v == FilterAidingMeasurementType::heading) {
+        return "heading";
+    }
+    if (v == FilterAidingMeasurementType::pressure) {
+        return "pressure";
+    }
+    if (v == FilterAidingMeasurementType::magnetometer) {
+        return "magnetometer";
+    }
+    if (v == FilterAidingMeasurementType::speed) {
+        return "speed";
+    }
+    if (v == FilterAidingMeasurementType::aiding_pos_ecef) {
+        return "aiding_pos_ecef";
+    }
+    if (v == FilterAidingMeasurementType::aiding_pos_llh) {
+        return "aiding_pos_llh";
+    }
+    if (v == FilterAidingMeasurementType::aiding_height_above_ellipsoid) {
+        return "aiding_height_above_ellipsoid";
+    }
+    if (v == FilterAidingMeasurementType::aiding_vel_ecef) {
+        return "aiding_vel_ecef";
+    }
+    if (v == FilterAidingMeasurementType::aiding_vel_ned) {
+        return "aiding_vel_ned";
+    }
+    if (v == FilterAidingMeasurementType::aiding_vel_body_frame) {
+        return "aiding_vel_body_frame";
+    }
+    if (v == FilterAidingMeasurementType::aiding_heading_true) {
+        return "aiding_heading_true";
+    }
+    if (v == FilterAidingMeasurementType::aiding_magnetic_field) {
+        return "aiding_magnetic_field";
+    }
+    if (v == FilterAidingMeasurementType::aiding_pressure) {
+        return "aiding_pressure";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterAidingMeasurementType &out) {
+    if (std::strcmp(name, "gnss") == 0) {
+        out = FilterAidingMeasurementType::gnss;
+        return true;
+    }
+    if (std::strcmp(name, "dual_antenna") == 0) {
+        out = FilterAidingMeasurementType::dual_antenna;
+        return true;
+    }
+    if (std::strcmp(name, "heading") == 0) {
+        out = FilterAidingMeasurementType::heading;
+        return true;
+    }
+    if (std::strcmp(name, "pressure") == 0) {
+        out = FilterAidingMeasurementType::pressure;
+        return true;
+    }
+    if (std::strcmp(name, "magnetometer") == 0) {
+        out = FilterAidingMeasurementType::magnetometer;
+        return true;
+    }
+    if (std::strcmp(name, "speed") == 0) {
+        out = FilterAidingMeasurementType::speed;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_pos_ecef") == 0) {
+        out = FilterAidingMeasurementType::aiding_pos_ecef;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_pos_llh") == 0) {
+        out = FilterAidingMeasurementType::aiding_pos_llh;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_height_above_ellipsoid") == 0) {
+        out = FilterAidingMeasurementType::aiding_height_above_ellipsoid;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_vel_ecef") == 0) {
+        out = FilterAidingMeasurementType::aiding_vel_ecef;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_vel_ned") == 0) {
+        out = FilterAidingMeasurementType::aiding_vel_ned;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_vel_body_frame") == 0) {
+        out = FilterAidingMeasurementType::aiding_vel_body_frame;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_heading_true") == 0) {
+        out = FilterAidingMeasurementType::aiding_heading_true;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_magnetic_field") == 0) {
+        out = FilterAidingMeasurementType::aiding_magnetic_field;
+        return true;
+    }
+    if (std::strcmp(name, "aiding_pressure") == 0) {
+        out = FilterAidingMeasurementType::aiding_pressure;
+        return true;
+    }
+    return false;
+}
+
+/// Dual-antenna fix type. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class FilterDualAntennaFixType : std::uint8_t {
+    fix_none = 0,
+    fix_da_float = 1,
+    fix_da_fixed = 2,
+};
+
+/// Spec name of a value ("fix_none"), or nullptr when the value has no name.
+inline const char *to_string(FilterDualAntennaFixType v) {
+    if (v == FilterDualAntennaFixType::fix_none) {
+        return "fix_none";
+    }
+    if (v == FilterDualAntennaFixType::fix_da_float) {
+        return "fix_da_float";
+    }
+    if (v == FilterDualAntennaFixType::fix_da_fixed) {
+        return "fix_da_fixed";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterDualAntennaFixType &out) {
+    if (std::strcmp(name, "fix_none") == 0) {
+        out = FilterDualAntennaFixType::fix_none;
+        return true;
+    }
+    if (std::strcmp(name, "fix_da_float") == 0) {
+        out = FilterDualAntennaFixType::fix_da_float;
+        return true;
+    }
+    if (std::strcmp(name, "fix_da_fixed") == 0) {
+        out = FilterDualAntennaFixType::fix_da_fixed;
+        return true;
+    }
+    return false;
+}
+
+/// Dual-antenna status flags. Reserved and unnamed bits are kept in raw().
+class FilterDualAntennaStatusFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterDualAntennaStatusFlags() = default;
+    constexpr explicit FilterDualAntennaStatusFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw rcv_1_data_valid_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool rcv_1_data_valid() const {
+        return (raw_ & rcv_1_data_valid_mask) != 0;
+    }
+    constexpr void set_rcv_1_data_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | rcv_1_data_valid_mask)
+                                   : (raw_ & static_cast<Raw>(~rcv_1_data_valid_mask)));
+    }
+
+    static constexpr Raw rcv_2_data_valid_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool rcv_2_data_valid() const {
+        return (raw_ & rcv_2_data_valid_mask) != 0;
+    }
+    constexpr void set_rcv_2_data_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | rcv_2_data_valid_mask)
+                                   : (raw_ & static_cast<Raw>(~rcv_2_data_valid_mask)));
+    }
+
+    static constexpr Raw antenna_offsets_valid_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool antenna_offsets_valid() const {
+        return (raw_ & antenna_offsets_valid_mask) != 0;
+    }
+    constexpr void set_antenna_offsets_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_offsets_valid_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_offsets_valid_mask)));
+    }
+    friend constexpr bool operator==(FilterDualAntennaStatusFlags a, FilterDualAntennaStatusFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterDualAntennaStatusFlags a, FilterDualAntennaStatusFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Filter dynamics mode (3DM-CV7). Unknown values are kept (an enum class holds any std::uint16_t).
+enum class FilterDynamicsModeCv7 : std::uint16_t {
+    default_ = 1,
+};
+
+/// Spec name of a value ("default"), or nullptr when the value has no name.
+inline const char *to_string(FilterDynamicsModeCv7 v) {
+    if (v == FilterDynamicsModeCv7::default_) {
+        return "default";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterDynamicsModeCv7 &out) {
+    if (std::strcmp(name, "default") == 0) {
+        out = FilterDynamicsModeCv7::default_;
+        return true;
+    }
+    return false;
+}
+
+/// Filter dynamics mode (3DM-GX5-45). Unknown values are kept (an enum class holds any std::uint16_t).
+enum class FilterDynamicsModeGx5 : std::uint16_t {
+    portable = 1,
+    automotive = 2,
+    airborne = 3,
+};
+
+/// Spec name of a value ("portable"), or nullptr when the value has no name.
+inline const char *to_string(FilterDynamicsModeGx5 v) {
+    if (v == FilterDynamicsModeGx5::portable) {
+        return "portable";
+    }
+    if (v == FilterDynamicsModeGx5::automotive) {
+        return "automotive";
+    }
+    if (v == FilterDynamicsModeGx5::airborne) {
+        return "airborne";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterDynamicsModeGx5 &out) {
+    if (std::strcmp(name, "portable") == 0) {
+        out = FilterDynamicsModeGx5::portable;
+        return true;
+    }
+    if (std::strcmp(name, "automotive") == 0) {
+        out = FilterDynamicsModeGx5::automotive;
+        return true;
+    }
+    if (std::strcmp(name, "airborne") == 0) {
+        out = FilterDynamicsModeGx5::airborne;
+        return true;
+    }
+    return false;
+}
+
+/// GNSS position aiding status. Reserved and unnamed bits are kept in raw().
+class FilterGnssAidingStatusFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterGnssAidingStatusFlags() = default;
+    constexpr explicit FilterGnssAidingStatusFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tight_coupling_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tight_coupling() const {
+        return (raw_ & tight_coupling_mask) != 0;
+    }
+    constexpr void set_tight_coupling(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tight_coupling_mask)
+                                   : (raw_ & static_cast<Raw>(~tight_coupling_mask)));
+    }
+
+    static constexpr Raw differential_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool differential() const {
+        return (raw_ & differential_mask) != 0;
+    }
+    constexpr void set_differential(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | differential_mask) : (raw_ & static_cast<Raw>(~differential_mask)));
+    }
+
+    static constexpr Raw integer_fix_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool integer_fix() const {
+        return (raw_ & integer_fix_mask) != 0;
+    }
+    constexpr void set_integer_fix(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | integer_fix_mask) : (raw_ & static_cast<Raw>(~integer_fix_mask)));
+    }
+
+    static constexpr Raw gps_l1_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool gps_l1() const {
+        return (raw_ & gps_l1_mask) != 0;
+    }
+    constexpr void set_gps_l1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gps_l1_mask) : (raw_ & static_cast<Raw>(~gps_l1_mask)));
+    }
+
+    static constexpr Raw gps_l2_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool gps_l2() const {
+        return (raw_ & gps_l2_mask) != 0;
+    }
+    constexpr void set_gps_l2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gps_l2_mask) : (raw_ & static_cast<Raw>(~gps_l2_mask)));
+    }
+
+    static constexpr Raw gps_l5_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool gps_l5() const {
+        return (raw_ & gps_l5_mask) != 0;
+    }
+    constexpr void set_gps_l5(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gps_l5_mask) : (raw_ & static_cast<Raw>(~gps_l5_mask)));
+    }
+
+    static constexpr Raw glo_l1_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool glo_l1() const {
+        return (raw_ & glo_l1_mask) != 0;
+    }
+    constexpr void set_glo_l1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | glo_l1_mask) : (raw_ & static_cast<Raw>(~glo_l1_mask)));
+    }
+
+    static constexpr Raw glo_l2_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool glo_l2() const {
+        return (raw_ & glo_l2_mask) != 0;
+    }
+    constexpr void set_glo_l2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | glo_l2_mask) : (raw_ & static_cast<Raw>(~glo_l2_mask)));
+    }
+
+    static constexpr Raw gal_e1_mask = static_cast<Raw>(0x100ULL);
+    constexpr bool gal_e1() const {
+        return (raw_ & gal_e1_mask) != 0;
+    }
+    constexpr void set_gal_e1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gal_e1_mask) : (raw_ & static_cast<Raw>(~gal_e1_mask)));
+    }
+
+    static constexpr Raw gal_e5_mask = static_cast<Raw>(0x200ULL);
+    constexpr bool gal_e5() const {
+        return (raw_ & gal_e5_mask) != 0;
+    }
+    constexpr void set_gal_e5(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gal_e5_mask) : (raw_ & static_cast<Raw>(~gal_e5_mask)));
+    }
+
+    static constexpr Raw gal_e6_mask = static_cast<Raw>(0x400ULL);
+    constexpr bool gal_e6() const {
+        return (raw_ & gal_e6_mask) != 0;
+    }
+    constexpr void set_gal_e6(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gal_e6_mask) : (raw_ & static_cast<Raw>(~gal_e6_mask)));
+    }
+
+    static constexpr Raw bei_b1_mask = static_cast<Raw>(0x800ULL);
+    constexpr bool bei_b1() const {
+        return (raw_ & bei_b1_mask) != 0;
+    }
+    constexpr void set_bei_b1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | bei_b1_mask) : (raw_ & static_cast<Raw>(~bei_b1_mask)));
+    }
+
+    static constexpr Raw bei_b2_mask = static_cast<Raw>(0x1000ULL);
+    constexpr bool bei_b2() const {
+        return (raw_ & bei_b2_mask) != 0;
+    }
+    constexpr void set_bei_b2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | bei_b2_mask) : (raw_ & static_cast<Raw>(~bei_b2_mask)));
+    }
+
+    static constexpr Raw bei_b3_mask = static_cast<Raw>(0x2000ULL);
+    constexpr bool bei_b3() const {
+        return (raw_ & bei_b3_mask) != 0;
+    }
+    constexpr void set_bei_b3(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | bei_b3_mask) : (raw_ & static_cast<Raw>(~bei_b3_mask)));
+    }
+
+    static constexpr Raw no_fix_mask = static_cast<Raw>(0x4000ULL);
+    constexpr bool no_fix() const {
+        return (raw_ & no_fix_mask) != 0;
+    }
+    constexpr void set_no_fix(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | no_fix_mask) : (raw_ & static_cast<Raw>(~no_fix_mask)));
+    }
+
+    static constexpr Raw config_error_mask = static_cast<Raw>(0x8000ULL);
+    constexpr bool config_error() const {
+        return (raw_ & config_error_mask) != 0;
+    }
+    constexpr void set_config_error(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | config_error_mask) : (raw_ & static_cast<Raw>(~config_error_mask)));
+    }
+    friend constexpr bool operator==(FilterGnssAidingStatusFlags a, FilterGnssAidingStatusFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterGnssAidingStatusFlags a, FilterGnssAidingStatusFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// Filter GNSS source. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FilterGnssSource : std::uint8_t {
     all_internal = 1,
@@ -1116,6 +1628,87 @@ inline bool from_string(const char *name, FilterGnssSource &out) {
     }
     return false;
 }
+
+/// Heading update sources in use. Reserved and unnamed bits are kept in raw().
+class FilterHeadingSourceFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterHeadingSourceFlags() = default;
+    constexpr explicit FilterHeadingSourceFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw magnetometer_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool magnetometer() const {
+        return (raw_ & magnetometer_mask) != 0;
+    }
+    constexpr void set_magnetometer(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | magnetometer_mask) : (raw_ & static_cast<Raw>(~magnetometer_mask)));
+    }
+
+    static constexpr Raw gnss_velocity_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool gnss_velocity() const {
+        return (raw_ & gnss_velocity_mask) != 0;
+    }
+    constexpr void set_gnss_velocity(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_velocity_mask)
+                                   : (raw_ & static_cast<Raw>(~gnss_velocity_mask)));
+    }
+
+    static constexpr Raw external_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool external() const {
+        return (raw_ & external_mask) != 0;
+    }
+    constexpr void set_external(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | external_mask) : (raw_ & static_cast<Raw>(~external_mask)));
+    }
+    friend constexpr bool operator==(FilterHeadingSourceFlags a, FilterHeadingSourceFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterHeadingSourceFlags a, FilterHeadingSourceFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Heading update state valid flags. Reserved and unnamed bits are kept in raw().
+class FilterHeadingUpdateValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterHeadingUpdateValidFlags() = default;
+    constexpr explicit FilterHeadingUpdateValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw updated_within_2s_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool updated_within_2s() const {
+        return (raw_ & updated_within_2s_mask) != 0;
+    }
+    constexpr void set_updated_within_2s(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | updated_within_2s_mask)
+                                   : (raw_ & static_cast<Raw>(~updated_within_2s_mask)));
+    }
+    friend constexpr bool operator==(FilterHeadingUpdateValidFlags a, FilterHeadingUpdateValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterHeadingUpdateValidFlags a, FilterHeadingUpdateValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// Navigation filter initial condition source. Unknown values are kept (an enum class holds any
 /// std::uint8_t).
@@ -1164,6 +1757,83 @@ inline bool from_string(const char *name, FilterInitialConditionSource &out) {
     return false;
 }
 
+/// Filter mode (3DM-CV7). Unknown values are kept (an enum class holds any std::uint16_t).
+enum class FilterModeCv7 : std::uint16_t {
+    init = 1,
+    vert_gyro = 2,
+    ahrs = 3,
+    full_nav = 4,
+};
+
+/// Spec name of a value ("init"), or nullptr when the value has no name.
+inline const char *to_string(FilterModeCv7 v) {
+    if (v == FilterModeCv7::init) {
+        return "init";
+    }
+    if (v == FilterModeCv7::vert_gyro) {
+        return "vert_gyro";
+    }
+    if (v == FilterModeCv7::ahrs) {
+        return "ahrs";
+    }
+    if (v == FilterModeCv7::full_nav) {
+        return "full_nav";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterModeCv7 &out) {
+    if (std::strcmp(name, "init") == 0) {
+        out = FilterModeCv7::init;
+        return true;
+    }
+    if (std::strcmp(name, "vert_gyro") == 0) {
+        out = FilterModeCv7::vert_gyro;
+        return true;
+    }
+    if (std::strcmp(name, "ahrs") == 0) {
+        out = FilterModeCv7::ahrs;
+        return true;
+    }
+    if (std::strcmp(name, "full_nav") == 0) {
+        out = FilterModeCv7::full_nav;
+        return true;
+    }
+    return false;
+}
+
+/// Filter output valid flags. Reserved and unnamed bits are kept in raw().
+class FilterOutputValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterOutputValidFlags() = default;
+    constexpr explicit FilterOutputValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw valid_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool valid() const {
+        return (raw_ & valid_mask) != 0;
+    }
+    constexpr void set_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | valid_mask) : (raw_ & static_cast<Raw>(~valid_mask)));
+    }
+    friend constexpr bool operator==(FilterOutputValidFlags a, FilterOutputValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterOutputValidFlags a, FilterOutputValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// Reference frame of user-specified positions and velocities. Unknown values are kept (an enum class holds
 /// any std::uint8_t).
 enum class FilterReferenceFrame : std::uint8_t {
@@ -1194,6 +1864,370 @@ inline bool from_string(const char *name, FilterReferenceFrame &out) {
     }
     return false;
 }
+
+/// Filter state (3DM-GX5-45). Unknown values are kept (an enum class holds any std::uint16_t).
+enum class FilterStateGx5 : std::uint16_t {
+    startup = 0,
+    init = 1,
+    run_solution_valid = 2,
+    run_solution_error = 3,
+};
+
+/// Spec name of a value ("startup"), or nullptr when the value has no name.
+inline const char *to_string(FilterStateGx5 v) {
+    if (v == FilterStateGx5::startup) {
+        return "startup";
+    }
+    if (v == FilterStateGx5::init) {
+        return "init";
+    }
+    if (v == FilterStateGx5::run_solution_valid) {
+        return "run_solution_valid";
+    }
+    if (v == FilterStateGx5::run_solution_error) {
+        return "run_solution_error";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, FilterStateGx5 &out) {
+    if (std::strcmp(name, "startup") == 0) {
+        out = FilterStateGx5::startup;
+        return true;
+    }
+    if (std::strcmp(name, "init") == 0) {
+        out = FilterStateGx5::init;
+        return true;
+    }
+    if (std::strcmp(name, "run_solution_valid") == 0) {
+        out = FilterStateGx5::run_solution_valid;
+        return true;
+    }
+    if (std::strcmp(name, "run_solution_error") == 0) {
+        out = FilterStateGx5::run_solution_error;
+        return true;
+    }
+    return false;
+}
+
+/// Filter status flags (3DM-CV7). Reserved and unnamed bits are kept in raw().
+class FilterStatusFlagsCv7 {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterStatusFlagsCv7() = default;
+    constexpr explicit FilterStatusFlagsCv7(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw filter_condition_mask = static_cast<Raw>(0x3ULL);
+    /// Bits 0..1, shifted down.
+    constexpr Raw filter_condition() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3ULL) >> 0);
+    }
+    constexpr void set_filter_condition(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3ULL));
+    }
+
+    static constexpr Raw roll_pitch_warning_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool roll_pitch_warning() const {
+        return (raw_ & roll_pitch_warning_mask) != 0;
+    }
+    constexpr void set_roll_pitch_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | roll_pitch_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~roll_pitch_warning_mask)));
+    }
+
+    static constexpr Raw heading_warning_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool heading_warning() const {
+        return (raw_ & heading_warning_mask) != 0;
+    }
+    constexpr void set_heading_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | heading_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~heading_warning_mask)));
+    }
+
+    static constexpr Raw position_warning_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool position_warning() const {
+        return (raw_ & position_warning_mask) != 0;
+    }
+    constexpr void set_position_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | position_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~position_warning_mask)));
+    }
+
+    static constexpr Raw velocity_warning_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool velocity_warning() const {
+        return (raw_ & velocity_warning_mask) != 0;
+    }
+    constexpr void set_velocity_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | velocity_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~velocity_warning_mask)));
+    }
+
+    static constexpr Raw imu_bias_warning_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool imu_bias_warning() const {
+        return (raw_ & imu_bias_warning_mask) != 0;
+    }
+    constexpr void set_imu_bias_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_bias_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_bias_warning_mask)));
+    }
+
+    static constexpr Raw gnss_clk_warning_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool gnss_clk_warning() const {
+        return (raw_ & gnss_clk_warning_mask) != 0;
+    }
+    constexpr void set_gnss_clk_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_clk_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~gnss_clk_warning_mask)));
+    }
+
+    static constexpr Raw antenna_lever_arm_warning_mask = static_cast<Raw>(0x100ULL);
+    constexpr bool antenna_lever_arm_warning() const {
+        return (raw_ & antenna_lever_arm_warning_mask) != 0;
+    }
+    constexpr void set_antenna_lever_arm_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_lever_arm_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_lever_arm_warning_mask)));
+    }
+
+    static constexpr Raw mounting_transform_warning_mask = static_cast<Raw>(0x200ULL);
+    constexpr bool mounting_transform_warning() const {
+        return (raw_ & mounting_transform_warning_mask) != 0;
+    }
+    constexpr void set_mounting_transform_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | mounting_transform_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~mounting_transform_warning_mask)));
+    }
+
+    static constexpr Raw time_sync_warning_mask = static_cast<Raw>(0x400ULL);
+    constexpr bool time_sync_warning() const {
+        return (raw_ & time_sync_warning_mask) != 0;
+    }
+    constexpr void set_time_sync_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | time_sync_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~time_sync_warning_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0x800ULL);
+    constexpr bool reserved() const {
+        return (raw_ & reserved_mask) != 0;
+    }
+    constexpr void set_reserved(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_mask) : (raw_ & static_cast<Raw>(~reserved_mask)));
+    }
+
+    static constexpr Raw solution_error_mask = static_cast<Raw>(0xF000ULL);
+    /// Bits 12..15, shifted down.
+    constexpr Raw solution_error() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xF000ULL) >> 12);
+    }
+    constexpr void set_solution_error(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xF000ULL) |
+                                ((static_cast<std::uint64_t>(value) << 12) & 0xF000ULL));
+    }
+    friend constexpr bool operator==(FilterStatusFlagsCv7 a, FilterStatusFlagsCv7 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterStatusFlagsCv7 a, FilterStatusFlagsCv7 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Filter status flags (3DM-GX5-45). Reserved and unnamed bits are kept in raw().
+class FilterStatusFlagsGx5 {
+  public:
+    using Raw = std::uint16_t;
+    constexpr FilterStatusFlagsGx5() = default;
+    constexpr explicit FilterStatusFlagsGx5(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw run_imu_unavailable_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool run_imu_unavailable() const {
+        return (raw_ & run_imu_unavailable_mask) != 0;
+    }
+    constexpr void set_run_imu_unavailable(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_imu_unavailable_mask)
+                                   : (raw_ & static_cast<Raw>(~run_imu_unavailable_mask)));
+    }
+
+    static constexpr Raw run_gps_unavailable_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool run_gps_unavailable() const {
+        return (raw_ & run_gps_unavailable_mask) != 0;
+    }
+    constexpr void set_run_gps_unavailable(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_gps_unavailable_mask)
+                                   : (raw_ & static_cast<Raw>(~run_gps_unavailable_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool reserved() const {
+        return (raw_ & reserved_mask) != 0;
+    }
+    constexpr void set_reserved(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_mask) : (raw_ & static_cast<Raw>(~reserved_mask)));
+    }
+
+    static constexpr Raw run_matrix_singularity_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool run_matrix_singularity() const {
+        return (raw_ & run_matrix_singularity_mask) != 0;
+    }
+    constexpr void set_run_matrix_singularity(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_matrix_singularity_mask)
+                                   : (raw_ & static_cast<Raw>(~run_matrix_singularity_mask)));
+    }
+
+    static constexpr Raw run_position_covariance_warning_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool run_position_covariance_warning() const {
+        return (raw_ & run_position_covariance_warning_mask) != 0;
+    }
+    constexpr void set_run_position_covariance_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_position_covariance_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_position_covariance_warning_mask)));
+    }
+
+    static constexpr Raw run_velocity_covariance_warning_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool run_velocity_covariance_warning() const {
+        return (raw_ & run_velocity_covariance_warning_mask) != 0;
+    }
+    constexpr void set_run_velocity_covariance_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_velocity_covariance_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_velocity_covariance_warning_mask)));
+    }
+
+    static constexpr Raw run_attitude_covariance_warning_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool run_attitude_covariance_warning() const {
+        return (raw_ & run_attitude_covariance_warning_mask) != 0;
+    }
+    constexpr void set_run_attitude_covariance_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_attitude_covariance_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_attitude_covariance_warning_mask)));
+    }
+
+    static constexpr Raw run_nan_in_solution_warning_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool run_nan_in_solution_warning() const {
+        return (raw_ & run_nan_in_solution_warning_mask) != 0;
+    }
+    constexpr void set_run_nan_in_solution_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_nan_in_solution_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_nan_in_solution_warning_mask)));
+    }
+
+    static constexpr Raw run_gyro_bias_est_high_warning_mask = static_cast<Raw>(0x100ULL);
+    constexpr bool run_gyro_bias_est_high_warning() const {
+        return (raw_ & run_gyro_bias_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_gyro_bias_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_gyro_bias_est_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_gyro_bias_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_accel_bias_est_high_warning_mask = static_cast<Raw>(0x200ULL);
+    constexpr bool run_accel_bias_est_high_warning() const {
+        return (raw_ & run_accel_bias_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_accel_bias_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_accel_bias_est_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_accel_bias_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_gyro_scale_factor_est_high_warning_mask = static_cast<Raw>(0x400ULL);
+    constexpr bool run_gyro_scale_factor_est_high_warning() const {
+        return (raw_ & run_gyro_scale_factor_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_gyro_scale_factor_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_gyro_scale_factor_est_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_gyro_scale_factor_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_accel_scale_factor_est_high_warning_mask = static_cast<Raw>(0x800ULL);
+    constexpr bool run_accel_scale_factor_est_high_warning() const {
+        return (raw_ & run_accel_scale_factor_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_accel_scale_factor_est_high_warning(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | run_accel_scale_factor_est_high_warning_mask)
+                                : (raw_ & static_cast<Raw>(~run_accel_scale_factor_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_mag_bias_est_high_warning_mask = static_cast<Raw>(0x1000ULL);
+    constexpr bool run_mag_bias_est_high_warning() const {
+        return (raw_ & run_mag_bias_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_mag_bias_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_mag_bias_est_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_mag_bias_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_ant_offset_correction_est_high_warning_mask = static_cast<Raw>(0x2000ULL);
+    constexpr bool run_ant_offset_correction_est_high_warning() const {
+        return (raw_ & run_ant_offset_correction_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_ant_offset_correction_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(
+            on ? (raw_ | run_ant_offset_correction_est_high_warning_mask)
+               : (raw_ & static_cast<Raw>(~run_ant_offset_correction_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_mag_hard_iron_est_high_warning_mask = static_cast<Raw>(0x4000ULL);
+    constexpr bool run_mag_hard_iron_est_high_warning() const {
+        return (raw_ & run_mag_hard_iron_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_mag_hard_iron_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_mag_hard_iron_est_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_mag_hard_iron_est_high_warning_mask)));
+    }
+
+    static constexpr Raw run_mag_soft_iron_est_high_warning_mask = static_cast<Raw>(0x8000ULL);
+    constexpr bool run_mag_soft_iron_est_high_warning() const {
+        return (raw_ & run_mag_soft_iron_est_high_warning_mask) != 0;
+    }
+    constexpr void set_run_mag_soft_iron_est_high_warning(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | run_mag_soft_iron_est_high_warning_mask)
+                                   : (raw_ & static_cast<Raw>(~run_mag_soft_iron_est_high_warning_mask)));
+    }
+
+    static constexpr Raw init_no_attitude_mask = static_cast<Raw>(0x1000ULL);
+    constexpr bool init_no_attitude() const {
+        return (raw_ & init_no_attitude_mask) != 0;
+    }
+    constexpr void set_init_no_attitude(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | init_no_attitude_mask)
+                                   : (raw_ & static_cast<Raw>(~init_no_attitude_mask)));
+    }
+
+    static constexpr Raw init_no_position_velocity_mask = static_cast<Raw>(0x2000ULL);
+    constexpr bool init_no_position_velocity() const {
+        return (raw_ & init_no_position_velocity_mask) != 0;
+    }
+    constexpr void set_init_no_position_velocity(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | init_no_position_velocity_mask)
+                                   : (raw_ & static_cast<Raw>(~init_no_position_velocity_mask)));
+    }
+    friend constexpr bool operator==(FilterStatusFlagsGx5 a, FilterStatusFlagsGx5 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(FilterStatusFlagsGx5 a, FilterStatusFlagsGx5 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// Function selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FunctionSelector : std::uint8_t {
@@ -3455,6 +4489,134 @@ template <> struct Codec<::mipcodec::types::EstimationControlFlags> {
         return true;
     }
     static void write(Writer &w, const ::mipcodec::types::EstimationControlFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterAidingMeasurementIndicator> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterAidingMeasurementIndicator &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterAidingMeasurementIndicator &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterDualAntennaStatusFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterDualAntennaStatusFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterDualAntennaStatusFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterGnssAidingStatusFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterGnssAidingStatusFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterGnssAidingStatusFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterHeadingSourceFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterHeadingSourceFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterHeadingSourceFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterHeadingUpdateValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterHeadingUpdateValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterHeadingUpdateValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterOutputValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterOutputValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterOutputValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterStatusFlagsCv7> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterStatusFlagsCv7 &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterStatusFlagsCv7 &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::FilterStatusFlagsGx5> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::FilterStatusFlagsGx5 &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::FilterStatusFlagsGx5 &v) {
         Codec<std::uint16_t>::write(w, v.raw());
     }
 };

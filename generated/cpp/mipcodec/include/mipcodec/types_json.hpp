@@ -80,6 +80,122 @@ template <> struct Json<::mipcodec::types::EstimationControlFlags> {
     }
 };
 
+template <> struct Json<::mipcodec::types::FilterAidingMeasurementIndicator> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterAidingMeasurementIndicator &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterAidingMeasurementIndicator &v,
+                     JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterDualAntennaStatusFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterDualAntennaStatusFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterDualAntennaStatusFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterGnssAidingStatusFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterGnssAidingStatusFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterGnssAidingStatusFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterHeadingSourceFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterHeadingSourceFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterHeadingSourceFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterHeadingUpdateValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterHeadingUpdateValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterHeadingUpdateValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterOutputValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterOutputValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterOutputValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterStatusFlagsCv7> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterStatusFlagsCv7 &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterStatusFlagsCv7 &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::FilterStatusFlagsGx5> {
+    static void write(JsonWriter &w, const ::mipcodec::types::FilterStatusFlagsGx5 &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::FilterStatusFlagsGx5 &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::GnssBeidouSignals> {
     static void write(JsonWriter &w, const ::mipcodec::types::GnssBeidouSignals &v) {
         Json<std::uint8_t>::write(w, v.raw());

@@ -1,4 +1,4 @@
-//! `mipcodec-decode [--device ID] [FILE|-]`: reads a binary stream (FILE, or stdin when
+//! `mipcodec-decode [--device ID] [--samples] [FILE|-]`: reads a binary stream (FILE, or stdin when
 //! FILE is absent or `-`) and prints the canonical JSON lines of `docs/conformance.md` §4.
 //! Exit status: 0, or 2 for usage and I/O errors (one line on stderr).
 
@@ -11,7 +11,7 @@ use mipcodec::Device;
 const PROG: &str = "mipcodec-decode";
 
 fn usage_error(message: &str) -> ExitCode {
-    eprintln!("{PROG}: {message} (usage: {PROG} [--device ID] [FILE|-])");
+    eprintln!("{PROG}: {message} (usage: {PROG} [--device ID] [--samples] [FILE|-])");
     ExitCode::from(2)
 }
 
@@ -27,6 +27,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut device: Option<Device> = None;
     let mut file: Option<String> = None;
+    let mut samples = false;
     let mut i = 0;
     while i < args.len() {
         let arg = args[i].as_str();
@@ -49,9 +50,11 @@ fn main() -> ExitCode {
                     ))
                 }
             }
+        } else if arg == "--samples" {
+            samples = true;
         } else if arg == "-h" || arg == "--help" {
             println!(
-                "usage: {PROG} [--device ID] [FILE|-]    (devices: {})",
+                "usage: {PROG} [--device ID] [--samples] [FILE|-]    (devices: {})",
                 device_ids()
             );
             return ExitCode::SUCCESS;
@@ -77,6 +80,9 @@ fn main() -> ExitCode {
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let mut decoder = StreamDecoder::new(device);
+    if samples {
+        decoder = decoder.with_samples();
+    }
     let mut buf = vec![0u8; 1 << 16];
     let mut text = String::new();
     loop {

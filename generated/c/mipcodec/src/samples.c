@@ -1,0 +1,98 @@
+/* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6).
+ * Generated: do not edit. */
+#include "mipcodec/samples.h"
+
+#include <string.h>
+
+#include "mipcodec/field_iter.h"
+
+static const uint8_t k_data_sets[MIP_SAMPLE_SETS] = {0x80, 0x82};
+#define TIMESTAMPS 0
+
+static bool is_shared(uint8_t descriptor) {
+    return descriptor >= 0xD0;
+}
+
+static int slot_of(uint8_t set) {
+    int i;
+    for (i = 0; i < MIP_SAMPLE_SETS; i++) {
+        if (k_data_sets[i] == set) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* The payload of a complete packet, or NULL when the buffer does not hold one. */
+static const uint8_t *payload_of(const uint8_t *packet, size_t len, size_t *plen) {
+    size_t n;
+    if (!packet || len < MIP_HEADER_SIZE + MIP_CHECKSUM_SIZE) {
+        return NULL;
+    }
+    n = packet[MIP_LENGTH_OFFSET];
+    if (MIP_HEADER_SIZE + n + MIP_CHECKSUM_SIZE > len) {
+        return NULL;
+    }
+    *plen = n;
+    return packet + MIP_HEADER_SIZE;
+}
+
+size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
+    mip_field_iter_t it;
+    mip_field_entry_t e;
+    size_t plen = 0;
+    size_t key_len = 0;
+    size_t prefix = 0;
+    const uint8_t *payload = payload_of(packet, len, &plen);
+    if (shared_prefix) {
+        *shared_prefix = 0;
+    }
+    if (!payload) {
+        return 0;
+    }
+    mip_field_iter_init(&it, payload, plen);
+    while (mip_field_iter_next(&it, &e) && e.kind == MIP_ENTRY_FIELD && is_shared(e.descriptor)) {
+        (void)key;
+        prefix = e.offset + MIP_FIELD_HEADER_SIZE + e.length;
+    }
+    if (shared_prefix) {
+        *shared_prefix = prefix;
+    }
+    return key_len;
+}
+
+void mip_sample_tracker_init(mip_sample_tracker_t *tracker) {
+    memset(tracker, 0, sizeof *tracker);
+}
+
+bool mip_sample_tracker_feed(mip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                             mip_sample_info_t *info) {
+    uint8_t key[MIP_SAMPLE_KEY_MAX];
+    size_t key_len;
+    size_t prefix = 0;
+    size_t plen = 0;
+    mip_sample_slot_t *slot;
+    int i;
+    if (!payload_of(packet, len, &plen)) {
+        return false;
+    }
+    i = slot_of(packet[MIP_SET_OFFSET]);
+    if (i < 0) {
+        return false;
+    }
+    slot = &tracker->slots[i];
+    key_len = mip_sample_key(packet, len, key, &prefix);
+    info->shared_prefix = prefix;
+    if (key_len > 0 && slot->used && slot->key_len == key_len && memcmp(slot->key, key, key_len) == 0) {
+        info->number = slot->number;
+        info->continues = true;
+        return true;
+    }
+    slot->used = 1;
+    slot->number = tracker->next++;
+    slot->key_len = (uint8_t)key_len;
+    memcpy(slot->key, key, key_len);
+    info->number = slot->number;
+    info->continues = false;
+    return true;
+}
