@@ -115,12 +115,12 @@ class Builder:
         """The sample-grouping rule of docs/conformance.md section 6, derived from the spec.
 
         `data_sets`: the data sets that group continuation packets (one tracker slot each);
-        `first_shared`: shared descriptors start here; `timestamps`: the shared fields whose value
+        `first_shared`: shared descriptors start here (256: the protocol has none); `timestamps`: the shared fields whose value
         identifies a sample, with their fixed data size; `max_key`: bytes of the largest key.
         """
         shared = self.pf.data.get("shared_data")
         if not shared:
-            return None
+            return {"data_sets": [], "first_shared": 256, "timestamps": [], "max_key": 0}
         stamps = []
         for s in sets:
             for f in s["fields"]:

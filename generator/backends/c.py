@@ -545,7 +545,7 @@ class _Package:
             "sets": self.sets,
             "set_kinds": self.set_kinds,
             "shared_set": self.shared_set,
-            "sample_rule": self.proto.get("samples") or {"data_sets": [], "first_shared": 256, "timestamps": [], "max_key": 0},
+            "sample_rule": self.proto["samples"],
             "data_kind": self.data_kind,
             "vectors": self.vectors,
             "name_max": max([len(f["name"]) for f in self.fields] + [len(d["id"]) for d in self.devices] + [1]) + 1,

@@ -637,7 +637,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),
             "bitfield_test": P.bitfield_test(),
-            "sample_rule": proto.get("samples") or {"data_sets": [], "first_shared": 256, "timestamps": [], "max_key": 0},
+            "sample_rule": proto["samples"],
         }
         plain = {
             "framing.hpp": "framing.hpp.j2",

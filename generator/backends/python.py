@@ -40,7 +40,16 @@ EXPORTED = {
     "parse",
 }
 # Static runtime templates: template file -> output path inside the package directory.
-RUNTIME_TEMPLATES = ["__init__.py", "__main__.py", "canonical.py", "cli.py", "codec.py", "framing.py", "packets.py", "samples.py"]
+RUNTIME_TEMPLATES = [
+    "__init__.py",
+    "__main__.py",
+    "canonical.py",
+    "cli.py",
+    "codec.py",
+    "framing.py",
+    "packets.py",
+    "samples.py",
+]
 
 SCALARS = {
     "u8": "_c.U8",
@@ -764,7 +773,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "registry": m.registry(sets, reserved),
             "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
             "devices": [d["id"] for d in proto["devices"]],
-            "sample_rule": proto.get("samples"),
+            "sample_rule": proto["samples"],
         }
         for name in RUNTIME_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)

@@ -841,7 +841,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         ctx["floats"] = model.float_cases()
         ctx["bitfields"] = model.bitfield_cases()
         ctx["short_cases"] = model.short_cases()
-        ctx["sample_rule"] = proto.get("samples") or {"data_sets": [], "first_shared": 256, "timestamps": [], "max_key": 0}
+        ctx["sample_rule"] = proto["samples"]
         root = f"rust/{model.package}/"
         for tpl, out in _TEMPLATES:
             files[root + out.format(package=model.package)] = env.get_template(f"rust/{tpl}").render(**ctx)
