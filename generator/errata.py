@@ -31,6 +31,12 @@ def _spec_notes(ir: dict):
         for r in p["reserved_fields"]:
             for n in r.get("notes", []):
                 yield p["name"], f"reserved field {r['name']} (0x{r['id']:02X})", r["sources"], n
+        for fl in p.get("field_layouts", []):
+            for n in fl["notes"]:
+                yield p["name"], f"field layout {fl['name']}", fl["sources"], n
+            for q in fl["params"]:
+                for n in q.get("notes", []):
+                    yield p["name"], f"field layout {fl['name']} param {q['name']}", fl["sources"], n
         for s in p["sets"]:
             for n in s.get("notes", []):
                 yield p["name"], f"set {s['name']} (0x{s['id']:02X})", s["sources"], n
@@ -41,7 +47,7 @@ def _spec_notes(ir: dict):
                 for v in f["variants"]:
                     for n in v.get("notes", []):
                         yield p["name"], f"{label} [{v['device']}]", v["sources"], n
-                    for q in v["params"]:
+                    for q in [] if v.get("layout") else v["params"]:  # layout params: listed once, above
                         for n in q.get("notes", []):
                             yield p["name"], f"{label} param {q['name']}", v["sources"], n
 

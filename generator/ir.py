@@ -87,6 +87,7 @@ class Builder:
                     "function_selector": p.get("function_selector"),
                     "reserved_fields": reserved,
                     "types": [self.types[n] for n in sorted(self.types)],
+                    "field_layouts": self._field_layouts(sets),
                     "sets": sets,
                 }
             ],
@@ -109,6 +110,40 @@ class Builder:
         # Largest data a single field can carry.
         f["max_field_data"] = min(f["max_payload"] - 2, 255 - f["field_length_adjust"])
         return f
+
+    # ---------------------------------------------------------------- field layouts
+    def _field_layouts(self, sets: list[dict]) -> list[dict]:
+        """Each named field layout once, with its documentation and the fields that use it."""
+        out = []
+        for name in sorted(self.field_layouts):
+            t, lsf, lpath = self.field_layouts[name]
+            users = [(s, f, v) for s in sets for f in s["fields"] for v in f["variants"] if v["layout"] == name]
+            if not users:
+                self.err(
+                    lsf,
+                    lpath + ("name",),
+                    f"field layout '{name}' is not used by any field",
+                    "layout: <name> on a field",
+                )
+                continue
+            used_by = [
+                {"set": s["id"], "field": f["id"], "name": f"{s['name']}.{f['name']}", "device": v["device"]}
+                for s, f, v in users
+            ]
+            params = users[0][2]["params"]
+            out.append(
+                {
+                    "name": name,
+                    "title": t.get("title", ""),
+                    "description": t.get("description", ""),
+                    "sources": self._sources(lsf, lpath + ("sources",), t.get("sources", [])),
+                    "notes": t.get("notes", []),
+                    "params": params,
+                    "size": _layout_size(params),
+                    "used_by": used_by,
+                }
+            )
+        return out
 
     # ---------------------------------------------------------------- samples
     def _samples(self, sets: list[dict], framing: dict) -> dict | None:

@@ -336,6 +336,31 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
     {MIP_FIELD_SENSOR_SCALED_ACCEL, "scaled_accel", NULL, MIP_DEVICE_ANY, 0x04},
     {MIP_FIELD_SENSOR_SCALED_GYRO, "scaled_gyro", NULL, MIP_DEVICE_ANY, 0x05},
     {MIP_FIELD_SENSOR_SCALED_MAG, "scaled_mag", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_SENSOR_DELTA_THETA, "delta_theta", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_SENSOR_DELTA_VELOCITY, "delta_velocity", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX, "cf_orientation_matrix", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_SENSOR_CF_QUATERNION, "cf_quaternion", NULL, MIP_DEVICE_ANY, 0x0A},
+    {MIP_FIELD_SENSOR_CF_EULER_ANGLES, "cf_euler_angles", NULL, MIP_DEVICE_ANY, 0x0C},
+    {MIP_FIELD_SENSOR_CF_STABILIZED_NORTH, "cf_stabilized_north", NULL, MIP_DEVICE_ANY, 0x10},
+    {MIP_FIELD_SENSOR_CF_STABILIZED_UP, "cf_stabilized_up", NULL, MIP_DEVICE_ANY, 0x11},
+    {MIP_FIELD_SENSOR_GPS_TIMESTAMP, "gps_timestamp", NULL, MIP_DEVICE_ANY, 0x12},
+    {MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS, "temperature_statistics", NULL, MIP_DEVICE_ANY, 0x14},
+    {MIP_FIELD_SENSOR_SCALED_PRESSURE, "scaled_pressure", NULL, MIP_DEVICE_ANY, 0x17},
+    {MIP_FIELD_SENSOR_OVERRANGE_STATUS, "overrange_status", NULL, MIP_DEVICE_ANY, 0x18},
+    {MIP_FIELD_SENSOR_ODOMETER_DATA, "odometer_data", NULL, MIP_DEVICE_ANY, 0x40},
+    {MIP_FIELD_GNSS_DATA_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_GNSS_DATA_ECEF_POSITION, "ecef_position", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_GNSS_DATA_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_GNSS_DATA_ECEF_VELOCITY, "ecef_velocity", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_GNSS_DATA_DOP, "dop", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_GNSS_DATA_UTC_TIME, "utc_time", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_GNSS_DATA_GPS_TIME, "gps_time", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_GNSS_DATA_CLOCK_INFO, "clock_info", NULL, MIP_DEVICE_ANY, 0x0A},
+    {MIP_FIELD_GNSS_DATA_FIX_INFO, "fix_info", NULL, MIP_DEVICE_ANY, 0x0B},
+    {MIP_FIELD_GNSS_DATA_SV_INFO, "sv_info", NULL, MIP_DEVICE_ANY, 0x0C},
+    {MIP_FIELD_GNSS_DATA_HARDWARE_STATUS, "hardware_status", NULL, MIP_DEVICE_ANY, 0x0D},
+    {MIP_FIELD_GNSS_DATA_DGNSS_INFO, "dgnss_info", NULL, MIP_DEVICE_ANY, 0x0E},
+    {MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS, "dgnss_channel_status", NULL, MIP_DEVICE_ANY, 0x0F},
     {MIP_FIELD_FILTER_DATA_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x01},
     {MIP_FIELD_FILTER_DATA_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x02},
     {MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, "attitude_quaternion", NULL, MIP_DEVICE_ANY, 0x03},
@@ -404,9 +429,62 @@ static const mip_layout_info_t k_layouts[MIP_FIELD_COUNT] = {
      0x50},
     {MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, "aiding_frame_config_error_uncertainty",
      NULL, MIP_DEVICE_ANY, 0x51},
+    {MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION, "ecef_position", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY, "ecef_velocity", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_GNSS_RECEIVER_1_DOP, "dop", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME, "utc_time", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME, "gps_time", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO, "fix_info", NULL, MIP_DEVICE_ANY, 0x0B},
+    {MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS, "hardware_status", NULL, MIP_DEVICE_ANY, 0x0D},
+    {MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2, "clock_info_2", NULL, MIP_DEVICE_ANY, 0x10},
+    {MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS, "gps_leap_seconds", NULL, MIP_DEVICE_ANY, 0x11},
+    {MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO, "sbas_info", NULL, MIP_DEVICE_ANY, 0x12},
+    {MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS, "satellite_status", NULL, MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_GNSS_RECEIVER_1_RAW, "raw", NULL, MIP_DEVICE_ANY, 0x22},
+    {MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS, "gps_ephemeris", NULL, MIP_DEVICE_ANY, 0x61},
+    {MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS, "glonass_ephemeris", NULL, MIP_DEVICE_ANY, 0x62},
+    {MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS, "galileo_ephemeris", NULL, MIP_DEVICE_ANY, 0x63},
+    {MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS, "beidou_ephemeris", NULL, MIP_DEVICE_ANY, 0x64},
+    {MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION, "ecef_position", NULL, MIP_DEVICE_ANY, 0x04},
+    {MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY, "ecef_velocity", NULL, MIP_DEVICE_ANY, 0x06},
+    {MIP_FIELD_GNSS_RECEIVER_2_DOP, "dop", NULL, MIP_DEVICE_ANY, 0x07},
+    {MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME, "utc_time", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME, "gps_time", NULL, MIP_DEVICE_ANY, 0x09},
+    {MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO, "fix_info", NULL, MIP_DEVICE_ANY, 0x0B},
+    {MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS, "hardware_status", NULL, MIP_DEVICE_ANY, 0x0D},
+    {MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2, "clock_info_2", NULL, MIP_DEVICE_ANY, 0x10},
+    {MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS, "gps_leap_seconds", NULL, MIP_DEVICE_ANY, 0x11},
+    {MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO, "sbas_info", NULL, MIP_DEVICE_ANY, 0x12},
+    {MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS, "satellite_status", NULL, MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_GNSS_RECEIVER_2_RAW, "raw", NULL, MIP_DEVICE_ANY, 0x22},
+    {MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS, "gps_ephemeris", NULL, MIP_DEVICE_ANY, 0x61},
+    {MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS, "glonass_ephemeris", NULL, MIP_DEVICE_ANY, 0x62},
+    {MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS, "galileo_ephemeris", NULL, MIP_DEVICE_ANY, 0x63},
+    {MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS, "beidou_ephemeris", NULL, MIP_DEVICE_ANY, 0x64},
+    {MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO, "base_station_info", NULL, MIP_DEVICE_ANY, 0x30},
+    {MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS, "rtk_corrections_status", NULL, MIP_DEVICE_ANY, 0x31},
+    {MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION, "llh_position", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY, "ned_velocity", NULL, MIP_DEVICE_ANY, 0x05},
+    {MIP_FIELD_GNSS_EXTERNAL_UTC_TIME, "utc_time", NULL, MIP_DEVICE_ANY, 0x08},
+    {MIP_FIELD_GNSS_EXTERNAL_FIX_INFO, "fix_info", NULL, MIP_DEVICE_ANY, 0x0B},
+    {MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS, "satellite_status", NULL, MIP_DEVICE_ANY, 0x20},
+    {MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST, "built_in_test", NULL, MIP_DEVICE_ANY, 0x01},
+    {MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS, "time_sync_status", NULL, MIP_DEVICE_ANY, 0x02},
+    {MIP_FIELD_SYSTEM_DATA_GPIO_STATE, "gpio_state", NULL, MIP_DEVICE_ANY, 0x03},
+    {MIP_FIELD_SHARED_EVENT_SOURCE, "event_source", NULL, MIP_DEVICE_ANY, 0xD0},
+    {MIP_FIELD_SHARED_GPS_TIMESTAMP, "gps_timestamp", NULL, MIP_DEVICE_ANY, 0xD3},
+    {MIP_FIELD_SHARED_DELTA_TIME, "delta_time", NULL, MIP_DEVICE_ANY, 0xD4},
+    {MIP_FIELD_SHARED_REFERENCE_TIMESTAMP, "reference_timestamp", NULL, MIP_DEVICE_ANY, 0xD5},
+    {MIP_FIELD_SHARED_REFERENCE_TIME_DELTA, "reference_time_delta", NULL, MIP_DEVICE_ANY, 0xD6},
+    {MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP, "external_timestamp", NULL, MIP_DEVICE_ANY, 0xD7},
+    {MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA, "external_time_delta", NULL, MIP_DEVICE_ANY, 0xD8},
 };
 
-static const mip_field_info_t k_fields[262] = {
+static const mip_field_info_t k_fields[340] = {
     {"ack_nack", 0xF1, MIP_FIELD_ACK_NACK, 1},                                                   /* 0 */
     {"ping", 0x01, MIP_FIELD_BASE_PING, 1},                                                      /* 1 */
     {"set_to_idle", 0x02, MIP_FIELD_BASE_SET_TO_IDLE, 1},                                        /* 2 */
@@ -652,64 +730,142 @@ static const mip_field_info_t k_fields[262] = {
     {"scaled_accel", 0x04, MIP_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 211 */
     {"scaled_gyro", 0x05, MIP_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 212 */
     {"scaled_mag", 0x06, MIP_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 213 */
-    {"llh_position", 0x01, MIP_FIELD_FILTER_DATA_LLH_POSITION, 1},                            /* 214 */
-    {"ned_velocity", 0x02, MIP_FIELD_FILTER_DATA_NED_VELOCITY, 1},                            /* 215 */
-    {"attitude_quaternion", 0x03, MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, 1},              /* 216 */
-    {"attitude_dcm", 0x04, MIP_FIELD_FILTER_DATA_ATTITUDE_DCM, 1},                            /* 217 */
-    {"euler_angles", 0x05, MIP_FIELD_FILTER_DATA_EULER_ANGLES, 1},                            /* 218 */
-    {"gyro_bias", 0x06, MIP_FIELD_FILTER_DATA_GYRO_BIAS, 1},                                  /* 219 */
-    {"accel_bias", 0x07, MIP_FIELD_FILTER_DATA_ACCEL_BIAS, 1},                                /* 220 */
-    {"llh_position_uncertainty", 0x08, MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY, 1},    /* 221 */
-    {"ned_velocity_uncertainty", 0x09, MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY, 1},    /* 222 */
-    {"euler_angles_uncertainty", 0x0A, MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY, 1},    /* 223 */
-    {"gyro_bias_uncertainty", 0x0B, MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY, 1},          /* 224 */
-    {"accel_bias_uncertainty", 0x0C, MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY, 1},        /* 225 */
-    {"linear_accel", 0x0D, MIP_FIELD_FILTER_DATA_LINEAR_ACCEL, 1},                            /* 226 */
-    {"comp_angular_rate", 0x0E, MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE, 1},                  /* 227 */
-    {"wgs84_gravity_magnitude", 0x0F, MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE, 1},      /* 228 */
-    {"filter_status", 0x10, MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45, 2},                   /* 229 */
-    {"gps_timestamp", 0x11, MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP, 1},                          /* 230 */
+    {"delta_theta", 0x07, MIP_FIELD_SENSOR_DELTA_THETA, 1},                                   /* 214 */
+    {"delta_velocity", 0x08, MIP_FIELD_SENSOR_DELTA_VELOCITY, 1},                             /* 215 */
+    {"cf_orientation_matrix", 0x09, MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX, 1},               /* 216 */
+    {"cf_quaternion", 0x0A, MIP_FIELD_SENSOR_CF_QUATERNION, 1},                               /* 217 */
+    {"cf_euler_angles", 0x0C, MIP_FIELD_SENSOR_CF_EULER_ANGLES, 1},                           /* 218 */
+    {"cf_stabilized_north", 0x10, MIP_FIELD_SENSOR_CF_STABILIZED_NORTH, 1},                   /* 219 */
+    {"cf_stabilized_up", 0x11, MIP_FIELD_SENSOR_CF_STABILIZED_UP, 1},                         /* 220 */
+    {"gps_timestamp", 0x12, MIP_FIELD_SENSOR_GPS_TIMESTAMP, 1},                               /* 221 */
+    {"temperature_statistics", 0x14, MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS, 1},             /* 222 */
+    {"scaled_pressure", 0x17, MIP_FIELD_SENSOR_SCALED_PRESSURE, 1},                           /* 223 */
+    {"overrange_status", 0x18, MIP_FIELD_SENSOR_OVERRANGE_STATUS, 1},                         /* 224 */
+    {"odometer_data", 0x40, MIP_FIELD_SENSOR_ODOMETER_DATA, 1},                               /* 225 */
+    {"llh_position", 0x03, MIP_FIELD_GNSS_DATA_LLH_POSITION, 1},                              /* 226 */
+    {"ecef_position", 0x04, MIP_FIELD_GNSS_DATA_ECEF_POSITION, 1},                            /* 227 */
+    {"ned_velocity", 0x05, MIP_FIELD_GNSS_DATA_NED_VELOCITY, 1},                              /* 228 */
+    {"ecef_velocity", 0x06, MIP_FIELD_GNSS_DATA_ECEF_VELOCITY, 1},                            /* 229 */
+    {"dop", 0x07, MIP_FIELD_GNSS_DATA_DOP, 1},                                                /* 230 */
+    {"utc_time", 0x08, MIP_FIELD_GNSS_DATA_UTC_TIME, 1},                                      /* 231 */
+    {"gps_time", 0x09, MIP_FIELD_GNSS_DATA_GPS_TIME, 1},                                      /* 232 */
+    {"clock_info", 0x0A, MIP_FIELD_GNSS_DATA_CLOCK_INFO, 1},                                  /* 233 */
+    {"fix_info", 0x0B, MIP_FIELD_GNSS_DATA_FIX_INFO, 1},                                      /* 234 */
+    {"sv_info", 0x0C, MIP_FIELD_GNSS_DATA_SV_INFO, 1},                                        /* 235 */
+    {"hardware_status", 0x0D, MIP_FIELD_GNSS_DATA_HARDWARE_STATUS, 1},                        /* 236 */
+    {"dgnss_info", 0x0E, MIP_FIELD_GNSS_DATA_DGNSS_INFO, 1},                                  /* 237 */
+    {"dgnss_channel_status", 0x0F, MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS, 1},              /* 238 */
+    {"llh_position", 0x01, MIP_FIELD_FILTER_DATA_LLH_POSITION, 1},                            /* 239 */
+    {"ned_velocity", 0x02, MIP_FIELD_FILTER_DATA_NED_VELOCITY, 1},                            /* 240 */
+    {"attitude_quaternion", 0x03, MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, 1},              /* 241 */
+    {"attitude_dcm", 0x04, MIP_FIELD_FILTER_DATA_ATTITUDE_DCM, 1},                            /* 242 */
+    {"euler_angles", 0x05, MIP_FIELD_FILTER_DATA_EULER_ANGLES, 1},                            /* 243 */
+    {"gyro_bias", 0x06, MIP_FIELD_FILTER_DATA_GYRO_BIAS, 1},                                  /* 244 */
+    {"accel_bias", 0x07, MIP_FIELD_FILTER_DATA_ACCEL_BIAS, 1},                                /* 245 */
+    {"llh_position_uncertainty", 0x08, MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY, 1},    /* 246 */
+    {"ned_velocity_uncertainty", 0x09, MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY, 1},    /* 247 */
+    {"euler_angles_uncertainty", 0x0A, MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY, 1},    /* 248 */
+    {"gyro_bias_uncertainty", 0x0B, MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY, 1},          /* 249 */
+    {"accel_bias_uncertainty", 0x0C, MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY, 1},        /* 250 */
+    {"linear_accel", 0x0D, MIP_FIELD_FILTER_DATA_LINEAR_ACCEL, 1},                            /* 251 */
+    {"comp_angular_rate", 0x0E, MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE, 1},                  /* 252 */
+    {"wgs84_gravity_magnitude", 0x0F, MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE, 1},      /* 253 */
+    {"filter_status", 0x10, MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45, 2},                   /* 254 */
+    {"gps_timestamp", 0x11, MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP, 1},                          /* 255 */
     {"quaternion_attitude_uncertainty", 0x12, MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY,
-     1},                                                                                             /* 231 */
-    {"gravity_vector", 0x13, MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR, 1},                               /* 232 */
-    {"heading_update_state", 0x14, MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE, 1},                   /* 233 */
-    {"magnetic_model", 0x15, MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL, 1},                               /* 234 */
-    {"gyro_scale_factor", 0x16, MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR, 1},                         /* 235 */
-    {"accel_scale_factor", 0x17, MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR, 1},                       /* 236 */
-    {"gyro_scale_factor_uncertainty", 0x18, MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY, 1}, /* 237 */
+     1},                                                                                             /* 256 */
+    {"gravity_vector", 0x13, MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR, 1},                               /* 257 */
+    {"heading_update_state", 0x14, MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE, 1},                   /* 258 */
+    {"magnetic_model", 0x15, MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL, 1},                               /* 259 */
+    {"gyro_scale_factor", 0x16, MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR, 1},                         /* 260 */
+    {"accel_scale_factor", 0x17, MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR, 1},                       /* 261 */
+    {"gyro_scale_factor_uncertainty", 0x18, MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY, 1}, /* 262 */
     {"accel_scale_factor_uncertainty", 0x19, MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY,
-     1},                                                                                     /* 238 */
-    {"compensated_accel", 0x1C, MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL, 1},                 /* 239 */
-    {"standard_atmosphere", 0x20, MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE, 1},             /* 240 */
-    {"pressure_altitude", 0x21, MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE, 1},                 /* 241 */
-    {"mag_auto_hard_iron_offset", 0x25, MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET, 1}, /* 242 */
-    {"mag_auto_soft_iron_matrix", 0x26, MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX, 1}, /* 243 */
+     1},                                                                                     /* 263 */
+    {"compensated_accel", 0x1C, MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL, 1},                 /* 264 */
+    {"standard_atmosphere", 0x20, MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE, 1},             /* 265 */
+    {"pressure_altitude", 0x21, MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE, 1},                 /* 266 */
+    {"mag_auto_hard_iron_offset", 0x25, MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET, 1}, /* 267 */
+    {"mag_auto_soft_iron_matrix", 0x26, MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX, 1}, /* 268 */
     {"mag_auto_hard_iron_offset_uncertainty", 0x28,
-     MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY, 1}, /* 244 */
+     MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY, 1}, /* 269 */
     {"mag_auto_soft_iron_matrix_uncertainty", 0x29,
-     MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY, 1}, /* 245 */
+     MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY, 1}, /* 270 */
     {"gnss_antenna_offset_correction", 0x30, MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION,
-     1}, /* 246 */
+     1}, /* 271 */
     {"gnss_antenna_offset_correction_uncertainty", 0x31,
-     MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1}, /* 247 */
+     MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1}, /* 272 */
     {"multi_antenna_offset_correction", 0x34, MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION,
-     1}, /* 248 */
+     1}, /* 273 */
     {"multi_antenna_offset_correction_uncertainty", 0x35,
-     MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1},                      /* 249 */
-    {"ecef_position_uncertainty", 0x36, MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY, 1},     /* 250 */
-    {"ecef_velocity_uncertainty", 0x37, MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY, 1},     /* 251 */
-    {"ecef_position", 0x40, MIP_FIELD_FILTER_DATA_ECEF_POSITION, 1},                             /* 252 */
-    {"ecef_velocity", 0x41, MIP_FIELD_FILTER_DATA_ECEF_VELOCITY, 1},                             /* 253 */
-    {"ned_relative_position", 0x42, MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION, 1},             /* 254 */
-    {"gnss_position_aiding_status", 0x43, MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS, 1}, /* 255 */
-    {"aiding_measurement_summary", 0x46, MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY, 1},   /* 256 */
-    {"odometer_scale_factor_error", 0x47, MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR, 1}, /* 257 */
+     MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1},                      /* 274 */
+    {"ecef_position_uncertainty", 0x36, MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY, 1},     /* 275 */
+    {"ecef_velocity_uncertainty", 0x37, MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY, 1},     /* 276 */
+    {"ecef_position", 0x40, MIP_FIELD_FILTER_DATA_ECEF_POSITION, 1},                             /* 277 */
+    {"ecef_velocity", 0x41, MIP_FIELD_FILTER_DATA_ECEF_VELOCITY, 1},                             /* 278 */
+    {"ned_relative_position", 0x42, MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION, 1},             /* 279 */
+    {"gnss_position_aiding_status", 0x43, MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS, 1}, /* 280 */
+    {"aiding_measurement_summary", 0x46, MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY, 1},   /* 281 */
+    {"odometer_scale_factor_error", 0x47, MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR, 1}, /* 282 */
     {"odometer_scale_factor_error_uncertainty", 0x48,
-     MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY, 1},                      /* 258 */
-    {"gnss_dual_antenna_status", 0x49, MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS, 1},   /* 259 */
-    {"aiding_frame_config_error", 0x50, MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR, 1}, /* 260 */
+     MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY, 1},                      /* 283 */
+    {"gnss_dual_antenna_status", 0x49, MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS, 1},   /* 284 */
+    {"aiding_frame_config_error", 0x50, MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR, 1}, /* 285 */
     {"aiding_frame_config_error_uncertainty", 0x51,
-     MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, 1}, /* 261 */
+     MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, 1},                       /* 286 */
+    {"llh_position", 0x03, MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION, 1},                      /* 287 */
+    {"ecef_position", 0x04, MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION, 1},                    /* 288 */
+    {"ned_velocity", 0x05, MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY, 1},                      /* 289 */
+    {"ecef_velocity", 0x06, MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY, 1},                    /* 290 */
+    {"dop", 0x07, MIP_FIELD_GNSS_RECEIVER_1_DOP, 1},                                        /* 291 */
+    {"utc_time", 0x08, MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME, 1},                              /* 292 */
+    {"gps_time", 0x09, MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME, 1},                              /* 293 */
+    {"fix_info", 0x0B, MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO, 1},                              /* 294 */
+    {"hardware_status", 0x0D, MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS, 1},                /* 295 */
+    {"clock_info_2", 0x10, MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2, 1},                      /* 296 */
+    {"gps_leap_seconds", 0x11, MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS, 1},              /* 297 */
+    {"sbas_info", 0x12, MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO, 1},                            /* 298 */
+    {"satellite_status", 0x20, MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS, 1},              /* 299 */
+    {"raw", 0x22, MIP_FIELD_GNSS_RECEIVER_1_RAW, 1},                                        /* 300 */
+    {"gps_ephemeris", 0x61, MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS, 1},                    /* 301 */
+    {"glonass_ephemeris", 0x62, MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS, 1},            /* 302 */
+    {"galileo_ephemeris", 0x63, MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS, 1},            /* 303 */
+    {"beidou_ephemeris", 0x64, MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS, 1},              /* 304 */
+    {"llh_position", 0x03, MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION, 1},                      /* 305 */
+    {"ecef_position", 0x04, MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION, 1},                    /* 306 */
+    {"ned_velocity", 0x05, MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY, 1},                      /* 307 */
+    {"ecef_velocity", 0x06, MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY, 1},                    /* 308 */
+    {"dop", 0x07, MIP_FIELD_GNSS_RECEIVER_2_DOP, 1},                                        /* 309 */
+    {"utc_time", 0x08, MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME, 1},                              /* 310 */
+    {"gps_time", 0x09, MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME, 1},                              /* 311 */
+    {"fix_info", 0x0B, MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO, 1},                              /* 312 */
+    {"hardware_status", 0x0D, MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS, 1},                /* 313 */
+    {"clock_info_2", 0x10, MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2, 1},                      /* 314 */
+    {"gps_leap_seconds", 0x11, MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS, 1},              /* 315 */
+    {"sbas_info", 0x12, MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO, 1},                            /* 316 */
+    {"satellite_status", 0x20, MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS, 1},              /* 317 */
+    {"raw", 0x22, MIP_FIELD_GNSS_RECEIVER_2_RAW, 1},                                        /* 318 */
+    {"gps_ephemeris", 0x61, MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS, 1},                    /* 319 */
+    {"glonass_ephemeris", 0x62, MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS, 1},            /* 320 */
+    {"galileo_ephemeris", 0x63, MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS, 1},            /* 321 */
+    {"beidou_ephemeris", 0x64, MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS, 1},              /* 322 */
+    {"base_station_info", 0x30, MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO, 1},           /* 323 */
+    {"rtk_corrections_status", 0x31, MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS, 1}, /* 324 */
+    {"llh_position", 0x03, MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION, 1},                        /* 325 */
+    {"ned_velocity", 0x05, MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY, 1},                        /* 326 */
+    {"utc_time", 0x08, MIP_FIELD_GNSS_EXTERNAL_UTC_TIME, 1},                                /* 327 */
+    {"fix_info", 0x0B, MIP_FIELD_GNSS_EXTERNAL_FIX_INFO, 1},                                /* 328 */
+    {"satellite_status", 0x20, MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS, 1},                /* 329 */
+    {"built_in_test", 0x01, MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST, 1},                        /* 330 */
+    {"time_sync_status", 0x02, MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS, 1},                  /* 331 */
+    {"gpio_state", 0x03, MIP_FIELD_SYSTEM_DATA_GPIO_STATE, 1},                              /* 332 */
+    {"event_source", 0xD0, MIP_FIELD_SHARED_EVENT_SOURCE, 1},                               /* 333 */
+    {"gps_timestamp", 0xD3, MIP_FIELD_SHARED_GPS_TIMESTAMP, 1},                             /* 334 */
+    {"delta_time", 0xD4, MIP_FIELD_SHARED_DELTA_TIME, 1},                                   /* 335 */
+    {"reference_timestamp", 0xD5, MIP_FIELD_SHARED_REFERENCE_TIMESTAMP, 1},                 /* 336 */
+    {"reference_time_delta", 0xD6, MIP_FIELD_SHARED_REFERENCE_TIME_DELTA, 1},               /* 337 */
+    {"external_timestamp", 0xD7, MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP, 1},                   /* 338 */
+    {"external_time_delta", 0xD8, MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA, 1},                 /* 339 */
 };
 
 const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
@@ -1181,107 +1337,298 @@ static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *se
             return &k_fields[212]; /* scaled_gyro */
         case 0x06:
             return &k_fields[213]; /* scaled_mag */
+        case 0x07:
+            return &k_fields[214]; /* delta_theta */
+        case 0x08:
+            return &k_fields[215]; /* delta_velocity */
+        case 0x09:
+            return &k_fields[216]; /* cf_orientation_matrix */
+        case 0x0A:
+            return &k_fields[217]; /* cf_quaternion */
+        case 0x0C:
+            return &k_fields[218]; /* cf_euler_angles */
+        case 0x10:
+            return &k_fields[219]; /* cf_stabilized_north */
+        case 0x11:
+            return &k_fields[220]; /* cf_stabilized_up */
+        case 0x12:
+            return &k_fields[221]; /* gps_timestamp */
+        case 0x14:
+            return &k_fields[222]; /* temperature_statistics */
+        case 0x17:
+            return &k_fields[223]; /* scaled_pressure */
+        case 0x18:
+            return &k_fields[224]; /* overrange_status */
+        case 0x40:
+            return &k_fields[225]; /* odometer_data */
+        default:
+            return NULL;
+        }
+    case 0x81: /* gnss_data */
+        switch (descriptor) {
+        case 0x03:
+            return &k_fields[226]; /* llh_position */
+        case 0x04:
+            return &k_fields[227]; /* ecef_position */
+        case 0x05:
+            return &k_fields[228]; /* ned_velocity */
+        case 0x06:
+            return &k_fields[229]; /* ecef_velocity */
+        case 0x07:
+            return &k_fields[230]; /* dop */
+        case 0x08:
+            return &k_fields[231]; /* utc_time */
+        case 0x09:
+            return &k_fields[232]; /* gps_time */
+        case 0x0A:
+            return &k_fields[233]; /* clock_info */
+        case 0x0B:
+            return &k_fields[234]; /* fix_info */
+        case 0x0C:
+            return &k_fields[235]; /* sv_info */
+        case 0x0D:
+            return &k_fields[236]; /* hardware_status */
+        case 0x0E:
+            return &k_fields[237]; /* dgnss_info */
+        case 0x0F:
+            return &k_fields[238]; /* dgnss_channel_status */
         default:
             return NULL;
         }
     case 0x82: /* filter_data */
         switch (descriptor) {
         case 0x01:
-            return &k_fields[214]; /* llh_position */
+            return &k_fields[239]; /* llh_position */
         case 0x02:
-            return &k_fields[215]; /* ned_velocity */
+            return &k_fields[240]; /* ned_velocity */
         case 0x03:
-            return &k_fields[216]; /* attitude_quaternion */
+            return &k_fields[241]; /* attitude_quaternion */
         case 0x04:
-            return &k_fields[217]; /* attitude_dcm */
+            return &k_fields[242]; /* attitude_dcm */
         case 0x05:
-            return &k_fields[218]; /* euler_angles */
+            return &k_fields[243]; /* euler_angles */
         case 0x06:
-            return &k_fields[219]; /* gyro_bias */
+            return &k_fields[244]; /* gyro_bias */
         case 0x07:
-            return &k_fields[220]; /* accel_bias */
+            return &k_fields[245]; /* accel_bias */
         case 0x08:
-            return &k_fields[221]; /* llh_position_uncertainty */
+            return &k_fields[246]; /* llh_position_uncertainty */
         case 0x09:
-            return &k_fields[222]; /* ned_velocity_uncertainty */
+            return &k_fields[247]; /* ned_velocity_uncertainty */
         case 0x0A:
-            return &k_fields[223]; /* euler_angles_uncertainty */
+            return &k_fields[248]; /* euler_angles_uncertainty */
         case 0x0B:
-            return &k_fields[224]; /* gyro_bias_uncertainty */
+            return &k_fields[249]; /* gyro_bias_uncertainty */
         case 0x0C:
-            return &k_fields[225]; /* accel_bias_uncertainty */
+            return &k_fields[250]; /* accel_bias_uncertainty */
         case 0x0D:
-            return &k_fields[226]; /* linear_accel */
+            return &k_fields[251]; /* linear_accel */
         case 0x0E:
-            return &k_fields[227]; /* comp_angular_rate */
+            return &k_fields[252]; /* comp_angular_rate */
         case 0x0F:
-            return &k_fields[228]; /* wgs84_gravity_magnitude */
+            return &k_fields[253]; /* wgs84_gravity_magnitude */
         case 0x10:
-            return &k_fields[229]; /* filter_status */
+            return &k_fields[254]; /* filter_status */
         case 0x11:
-            return &k_fields[230]; /* gps_timestamp */
+            return &k_fields[255]; /* gps_timestamp */
         case 0x12:
-            return &k_fields[231]; /* quaternion_attitude_uncertainty */
+            return &k_fields[256]; /* quaternion_attitude_uncertainty */
         case 0x13:
-            return &k_fields[232]; /* gravity_vector */
+            return &k_fields[257]; /* gravity_vector */
         case 0x14:
-            return &k_fields[233]; /* heading_update_state */
+            return &k_fields[258]; /* heading_update_state */
         case 0x15:
-            return &k_fields[234]; /* magnetic_model */
+            return &k_fields[259]; /* magnetic_model */
         case 0x16:
-            return &k_fields[235]; /* gyro_scale_factor */
+            return &k_fields[260]; /* gyro_scale_factor */
         case 0x17:
-            return &k_fields[236]; /* accel_scale_factor */
+            return &k_fields[261]; /* accel_scale_factor */
         case 0x18:
-            return &k_fields[237]; /* gyro_scale_factor_uncertainty */
+            return &k_fields[262]; /* gyro_scale_factor_uncertainty */
         case 0x19:
-            return &k_fields[238]; /* accel_scale_factor_uncertainty */
+            return &k_fields[263]; /* accel_scale_factor_uncertainty */
         case 0x1C:
-            return &k_fields[239]; /* compensated_accel */
+            return &k_fields[264]; /* compensated_accel */
         case 0x20:
-            return &k_fields[240]; /* standard_atmosphere */
+            return &k_fields[265]; /* standard_atmosphere */
         case 0x21:
-            return &k_fields[241]; /* pressure_altitude */
+            return &k_fields[266]; /* pressure_altitude */
         case 0x25:
-            return &k_fields[242]; /* mag_auto_hard_iron_offset */
+            return &k_fields[267]; /* mag_auto_hard_iron_offset */
         case 0x26:
-            return &k_fields[243]; /* mag_auto_soft_iron_matrix */
+            return &k_fields[268]; /* mag_auto_soft_iron_matrix */
         case 0x28:
-            return &k_fields[244]; /* mag_auto_hard_iron_offset_uncertainty */
+            return &k_fields[269]; /* mag_auto_hard_iron_offset_uncertainty */
         case 0x29:
-            return &k_fields[245]; /* mag_auto_soft_iron_matrix_uncertainty */
+            return &k_fields[270]; /* mag_auto_soft_iron_matrix_uncertainty */
         case 0x30:
-            return &k_fields[246]; /* gnss_antenna_offset_correction */
+            return &k_fields[271]; /* gnss_antenna_offset_correction */
         case 0x31:
-            return &k_fields[247]; /* gnss_antenna_offset_correction_uncertainty */
+            return &k_fields[272]; /* gnss_antenna_offset_correction_uncertainty */
         case 0x34:
-            return &k_fields[248]; /* multi_antenna_offset_correction */
+            return &k_fields[273]; /* multi_antenna_offset_correction */
         case 0x35:
-            return &k_fields[249]; /* multi_antenna_offset_correction_uncertainty */
+            return &k_fields[274]; /* multi_antenna_offset_correction_uncertainty */
         case 0x36:
-            return &k_fields[250]; /* ecef_position_uncertainty */
+            return &k_fields[275]; /* ecef_position_uncertainty */
         case 0x37:
-            return &k_fields[251]; /* ecef_velocity_uncertainty */
+            return &k_fields[276]; /* ecef_velocity_uncertainty */
         case 0x40:
-            return &k_fields[252]; /* ecef_position */
+            return &k_fields[277]; /* ecef_position */
         case 0x41:
-            return &k_fields[253]; /* ecef_velocity */
+            return &k_fields[278]; /* ecef_velocity */
         case 0x42:
-            return &k_fields[254]; /* ned_relative_position */
+            return &k_fields[279]; /* ned_relative_position */
         case 0x43:
-            return &k_fields[255]; /* gnss_position_aiding_status */
+            return &k_fields[280]; /* gnss_position_aiding_status */
         case 0x46:
-            return &k_fields[256]; /* aiding_measurement_summary */
+            return &k_fields[281]; /* aiding_measurement_summary */
         case 0x47:
-            return &k_fields[257]; /* odometer_scale_factor_error */
+            return &k_fields[282]; /* odometer_scale_factor_error */
         case 0x48:
-            return &k_fields[258]; /* odometer_scale_factor_error_uncertainty */
+            return &k_fields[283]; /* odometer_scale_factor_error_uncertainty */
         case 0x49:
-            return &k_fields[259]; /* gnss_dual_antenna_status */
+            return &k_fields[284]; /* gnss_dual_antenna_status */
         case 0x50:
-            return &k_fields[260]; /* aiding_frame_config_error */
+            return &k_fields[285]; /* aiding_frame_config_error */
         case 0x51:
-            return &k_fields[261]; /* aiding_frame_config_error_uncertainty */
+            return &k_fields[286]; /* aiding_frame_config_error_uncertainty */
+        default:
+            return NULL;
+        }
+    case 0x91: /* gnss_receiver_1 */
+        switch (descriptor) {
+        case 0x03:
+            return &k_fields[287]; /* llh_position */
+        case 0x04:
+            return &k_fields[288]; /* ecef_position */
+        case 0x05:
+            return &k_fields[289]; /* ned_velocity */
+        case 0x06:
+            return &k_fields[290]; /* ecef_velocity */
+        case 0x07:
+            return &k_fields[291]; /* dop */
+        case 0x08:
+            return &k_fields[292]; /* utc_time */
+        case 0x09:
+            return &k_fields[293]; /* gps_time */
+        case 0x0B:
+            return &k_fields[294]; /* fix_info */
+        case 0x0D:
+            return &k_fields[295]; /* hardware_status */
+        case 0x10:
+            return &k_fields[296]; /* clock_info_2 */
+        case 0x11:
+            return &k_fields[297]; /* gps_leap_seconds */
+        case 0x12:
+            return &k_fields[298]; /* sbas_info */
+        case 0x20:
+            return &k_fields[299]; /* satellite_status */
+        case 0x22:
+            return &k_fields[300]; /* raw */
+        case 0x61:
+            return &k_fields[301]; /* gps_ephemeris */
+        case 0x62:
+            return &k_fields[302]; /* glonass_ephemeris */
+        case 0x63:
+            return &k_fields[303]; /* galileo_ephemeris */
+        case 0x64:
+            return &k_fields[304]; /* beidou_ephemeris */
+        default:
+            return NULL;
+        }
+    case 0x92: /* gnss_receiver_2 */
+        switch (descriptor) {
+        case 0x03:
+            return &k_fields[305]; /* llh_position */
+        case 0x04:
+            return &k_fields[306]; /* ecef_position */
+        case 0x05:
+            return &k_fields[307]; /* ned_velocity */
+        case 0x06:
+            return &k_fields[308]; /* ecef_velocity */
+        case 0x07:
+            return &k_fields[309]; /* dop */
+        case 0x08:
+            return &k_fields[310]; /* utc_time */
+        case 0x09:
+            return &k_fields[311]; /* gps_time */
+        case 0x0B:
+            return &k_fields[312]; /* fix_info */
+        case 0x0D:
+            return &k_fields[313]; /* hardware_status */
+        case 0x10:
+            return &k_fields[314]; /* clock_info_2 */
+        case 0x11:
+            return &k_fields[315]; /* gps_leap_seconds */
+        case 0x12:
+            return &k_fields[316]; /* sbas_info */
+        case 0x20:
+            return &k_fields[317]; /* satellite_status */
+        case 0x22:
+            return &k_fields[318]; /* raw */
+        case 0x61:
+            return &k_fields[319]; /* gps_ephemeris */
+        case 0x62:
+            return &k_fields[320]; /* glonass_ephemeris */
+        case 0x63:
+            return &k_fields[321]; /* galileo_ephemeris */
+        case 0x64:
+            return &k_fields[322]; /* beidou_ephemeris */
+        default:
+            return NULL;
+        }
+    case 0x93: /* gnss_corrections */
+        switch (descriptor) {
+        case 0x30:
+            return &k_fields[323]; /* base_station_info */
+        case 0x31:
+            return &k_fields[324]; /* rtk_corrections_status */
+        default:
+            return NULL;
+        }
+    case 0x94: /* gnss_external */
+        switch (descriptor) {
+        case 0x03:
+            return &k_fields[325]; /* llh_position */
+        case 0x05:
+            return &k_fields[326]; /* ned_velocity */
+        case 0x08:
+            return &k_fields[327]; /* utc_time */
+        case 0x0B:
+            return &k_fields[328]; /* fix_info */
+        case 0x20:
+            return &k_fields[329]; /* satellite_status */
+        default:
+            return NULL;
+        }
+    case 0xA0: /* system_data */
+        switch (descriptor) {
+        case 0x01:
+            return &k_fields[330]; /* built_in_test */
+        case 0x02:
+            return &k_fields[331]; /* time_sync_status */
+        case 0x03:
+            return &k_fields[332]; /* gpio_state */
+        default:
+            return NULL;
+        }
+    case 0xFF: /* shared */
+        switch (descriptor) {
+        case 0xD0:
+            return &k_fields[333]; /* event_source */
+        case 0xD3:
+            return &k_fields[334]; /* gps_timestamp */
+        case 0xD4:
+            return &k_fields[335]; /* delta_time */
+        case 0xD5:
+            return &k_fields[336]; /* reference_timestamp */
+        case 0xD6:
+            return &k_fields[337]; /* reference_time_delta */
+        case 0xD7:
+            return &k_fields[338]; /* external_timestamp */
+        case 0xD8:
+            return &k_fields[339]; /* external_time_delta */
         default:
             return NULL;
         }
@@ -1311,6 +1658,14 @@ const mip_field_info_t *mip_find_field(uint8_t set, uint8_t descriptor, mip_stat
     case MIP_SET_KIND_NONE:
     default:
         break;
+    }
+    /* shared data fields, valid in every data set */
+    if (kind == MIP_SET_KIND_DATA) {
+        bool shared_known;
+        f = defined(0xFF, descriptor, &shared_known);
+        if (f) {
+            return f;
+        }
     }
     if (why) {
         *why = known ? MIP_ERR_UNKNOWN_DESCRIPTOR : MIP_ERR_UNKNOWN_SET;
@@ -1881,6 +2236,58 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
         return mip_sensor_scaled_gyro_decode(data, len, &out->u.sensor_scaled_gyro, err);
     case MIP_FIELD_SENSOR_SCALED_MAG:
         return mip_sensor_scaled_mag_decode(data, len, &out->u.sensor_scaled_mag, err);
+    case MIP_FIELD_SENSOR_DELTA_THETA:
+        return mip_sensor_delta_theta_decode(data, len, &out->u.sensor_delta_theta, err);
+    case MIP_FIELD_SENSOR_DELTA_VELOCITY:
+        return mip_sensor_delta_velocity_decode(data, len, &out->u.sensor_delta_velocity, err);
+    case MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX:
+        return mip_sensor_cf_orientation_matrix_decode(data, len, &out->u.sensor_cf_orientation_matrix, err);
+    case MIP_FIELD_SENSOR_CF_QUATERNION:
+        return mip_sensor_cf_quaternion_decode(data, len, &out->u.sensor_cf_quaternion, err);
+    case MIP_FIELD_SENSOR_CF_EULER_ANGLES:
+        return mip_sensor_cf_euler_angles_decode(data, len, &out->u.sensor_cf_euler_angles, err);
+    case MIP_FIELD_SENSOR_CF_STABILIZED_NORTH:
+        return mip_sensor_cf_stabilized_north_decode(data, len, &out->u.sensor_cf_stabilized_north, err);
+    case MIP_FIELD_SENSOR_CF_STABILIZED_UP:
+        return mip_sensor_cf_stabilized_up_decode(data, len, &out->u.sensor_cf_stabilized_up, err);
+    case MIP_FIELD_SENSOR_GPS_TIMESTAMP:
+        return mip_sensor_gps_timestamp_decode(data, len, &out->u.sensor_gps_timestamp, err);
+    case MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS:
+        return mip_sensor_temperature_statistics_decode(data, len, &out->u.sensor_temperature_statistics,
+                                                        err);
+    case MIP_FIELD_SENSOR_SCALED_PRESSURE:
+        return mip_sensor_scaled_pressure_decode(data, len, &out->u.sensor_scaled_pressure, err);
+    case MIP_FIELD_SENSOR_OVERRANGE_STATUS:
+        return mip_sensor_overrange_status_decode(data, len, &out->u.sensor_overrange_status, err);
+    case MIP_FIELD_SENSOR_ODOMETER_DATA:
+        return mip_sensor_odometer_data_decode(data, len, &out->u.sensor_odometer_data, err);
+    case MIP_FIELD_GNSS_DATA_LLH_POSITION:
+        return mip_gnss_data_llh_position_decode(data, len, &out->u.gnss_data_llh_position, err);
+    case MIP_FIELD_GNSS_DATA_ECEF_POSITION:
+        return mip_gnss_data_ecef_position_decode(data, len, &out->u.gnss_data_ecef_position, err);
+    case MIP_FIELD_GNSS_DATA_NED_VELOCITY:
+        return mip_gnss_data_ned_velocity_decode(data, len, &out->u.gnss_data_ned_velocity, err);
+    case MIP_FIELD_GNSS_DATA_ECEF_VELOCITY:
+        return mip_gnss_data_ecef_velocity_decode(data, len, &out->u.gnss_data_ecef_velocity, err);
+    case MIP_FIELD_GNSS_DATA_DOP:
+        return mip_gnss_data_dop_decode(data, len, &out->u.gnss_data_dop, err);
+    case MIP_FIELD_GNSS_DATA_UTC_TIME:
+        return mip_gnss_data_utc_time_decode(data, len, &out->u.gnss_data_utc_time, err);
+    case MIP_FIELD_GNSS_DATA_GPS_TIME:
+        return mip_gnss_data_gps_time_decode(data, len, &out->u.gnss_data_gps_time, err);
+    case MIP_FIELD_GNSS_DATA_CLOCK_INFO:
+        return mip_gnss_data_clock_info_decode(data, len, &out->u.gnss_data_clock_info, err);
+    case MIP_FIELD_GNSS_DATA_FIX_INFO:
+        return mip_gnss_data_fix_info_decode(data, len, &out->u.gnss_data_fix_info, err);
+    case MIP_FIELD_GNSS_DATA_SV_INFO:
+        return mip_gnss_data_sv_info_decode(data, len, &out->u.gnss_data_sv_info, err);
+    case MIP_FIELD_GNSS_DATA_HARDWARE_STATUS:
+        return mip_gnss_data_hardware_status_decode(data, len, &out->u.gnss_data_hardware_status, err);
+    case MIP_FIELD_GNSS_DATA_DGNSS_INFO:
+        return mip_gnss_data_dgnss_info_decode(data, len, &out->u.gnss_data_dgnss_info, err);
+    case MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS:
+        return mip_gnss_data_dgnss_channel_status_decode(data, len, &out->u.gnss_data_dgnss_channel_status,
+                                                         err);
     case MIP_FIELD_FILTER_DATA_LLH_POSITION:
         return mip_filter_data_llh_position_decode(data, len, &out->u.filter_data_llh_position, err);
     case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
@@ -2016,6 +2423,133 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
     case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
         return mip_filter_data_aiding_frame_config_error_uncertainty_decode(
             data, len, &out->u.filter_data_aiding_frame_config_error_uncertainty, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION:
+        return mip_gnss_receiver_1_llh_position_decode(data, len, &out->u.gnss_receiver_1_llh_position, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION:
+        return mip_gnss_receiver_1_ecef_position_decode(data, len, &out->u.gnss_receiver_1_ecef_position,
+                                                        err);
+    case MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY:
+        return mip_gnss_receiver_1_ned_velocity_decode(data, len, &out->u.gnss_receiver_1_ned_velocity, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY:
+        return mip_gnss_receiver_1_ecef_velocity_decode(data, len, &out->u.gnss_receiver_1_ecef_velocity,
+                                                        err);
+    case MIP_FIELD_GNSS_RECEIVER_1_DOP:
+        return mip_gnss_receiver_1_dop_decode(data, len, &out->u.gnss_receiver_1_dop, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME:
+        return mip_gnss_receiver_1_utc_time_decode(data, len, &out->u.gnss_receiver_1_utc_time, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME:
+        return mip_gnss_receiver_1_gps_time_decode(data, len, &out->u.gnss_receiver_1_gps_time, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO:
+        return mip_gnss_receiver_1_fix_info_decode(data, len, &out->u.gnss_receiver_1_fix_info, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS:
+        return mip_gnss_receiver_1_hardware_status_decode(data, len, &out->u.gnss_receiver_1_hardware_status,
+                                                          err);
+    case MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2:
+        return mip_gnss_receiver_1_clock_info_2_decode(data, len, &out->u.gnss_receiver_1_clock_info_2, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS:
+        return mip_gnss_receiver_1_gps_leap_seconds_decode(data, len,
+                                                           &out->u.gnss_receiver_1_gps_leap_seconds, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO:
+        return mip_gnss_receiver_1_sbas_info_decode(data, len, &out->u.gnss_receiver_1_sbas_info, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS:
+        return mip_gnss_receiver_1_satellite_status_decode(data, len,
+                                                           &out->u.gnss_receiver_1_satellite_status, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_RAW:
+        return mip_gnss_receiver_1_raw_decode(data, len, &out->u.gnss_receiver_1_raw, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS:
+        return mip_gnss_receiver_1_gps_ephemeris_decode(data, len, &out->u.gnss_receiver_1_gps_ephemeris,
+                                                        err);
+    case MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS:
+        return mip_gnss_receiver_1_glonass_ephemeris_decode(data, len,
+                                                            &out->u.gnss_receiver_1_glonass_ephemeris, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS:
+        return mip_gnss_receiver_1_galileo_ephemeris_decode(data, len,
+                                                            &out->u.gnss_receiver_1_galileo_ephemeris, err);
+    case MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS:
+        return mip_gnss_receiver_1_beidou_ephemeris_decode(data, len,
+                                                           &out->u.gnss_receiver_1_beidou_ephemeris, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION:
+        return mip_gnss_receiver_2_llh_position_decode(data, len, &out->u.gnss_receiver_2_llh_position, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION:
+        return mip_gnss_receiver_2_ecef_position_decode(data, len, &out->u.gnss_receiver_2_ecef_position,
+                                                        err);
+    case MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY:
+        return mip_gnss_receiver_2_ned_velocity_decode(data, len, &out->u.gnss_receiver_2_ned_velocity, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY:
+        return mip_gnss_receiver_2_ecef_velocity_decode(data, len, &out->u.gnss_receiver_2_ecef_velocity,
+                                                        err);
+    case MIP_FIELD_GNSS_RECEIVER_2_DOP:
+        return mip_gnss_receiver_2_dop_decode(data, len, &out->u.gnss_receiver_2_dop, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME:
+        return mip_gnss_receiver_2_utc_time_decode(data, len, &out->u.gnss_receiver_2_utc_time, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME:
+        return mip_gnss_receiver_2_gps_time_decode(data, len, &out->u.gnss_receiver_2_gps_time, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO:
+        return mip_gnss_receiver_2_fix_info_decode(data, len, &out->u.gnss_receiver_2_fix_info, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS:
+        return mip_gnss_receiver_2_hardware_status_decode(data, len, &out->u.gnss_receiver_2_hardware_status,
+                                                          err);
+    case MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2:
+        return mip_gnss_receiver_2_clock_info_2_decode(data, len, &out->u.gnss_receiver_2_clock_info_2, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS:
+        return mip_gnss_receiver_2_gps_leap_seconds_decode(data, len,
+                                                           &out->u.gnss_receiver_2_gps_leap_seconds, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO:
+        return mip_gnss_receiver_2_sbas_info_decode(data, len, &out->u.gnss_receiver_2_sbas_info, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS:
+        return mip_gnss_receiver_2_satellite_status_decode(data, len,
+                                                           &out->u.gnss_receiver_2_satellite_status, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_RAW:
+        return mip_gnss_receiver_2_raw_decode(data, len, &out->u.gnss_receiver_2_raw, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS:
+        return mip_gnss_receiver_2_gps_ephemeris_decode(data, len, &out->u.gnss_receiver_2_gps_ephemeris,
+                                                        err);
+    case MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS:
+        return mip_gnss_receiver_2_glonass_ephemeris_decode(data, len,
+                                                            &out->u.gnss_receiver_2_glonass_ephemeris, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS:
+        return mip_gnss_receiver_2_galileo_ephemeris_decode(data, len,
+                                                            &out->u.gnss_receiver_2_galileo_ephemeris, err);
+    case MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS:
+        return mip_gnss_receiver_2_beidou_ephemeris_decode(data, len,
+                                                           &out->u.gnss_receiver_2_beidou_ephemeris, err);
+    case MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO:
+        return mip_gnss_corrections_base_station_info_decode(data, len,
+                                                             &out->u.gnss_corrections_base_station_info, err);
+    case MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS:
+        return mip_gnss_corrections_rtk_corrections_status_decode(
+            data, len, &out->u.gnss_corrections_rtk_corrections_status, err);
+    case MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION:
+        return mip_gnss_external_llh_position_decode(data, len, &out->u.gnss_external_llh_position, err);
+    case MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY:
+        return mip_gnss_external_ned_velocity_decode(data, len, &out->u.gnss_external_ned_velocity, err);
+    case MIP_FIELD_GNSS_EXTERNAL_UTC_TIME:
+        return mip_gnss_external_utc_time_decode(data, len, &out->u.gnss_external_utc_time, err);
+    case MIP_FIELD_GNSS_EXTERNAL_FIX_INFO:
+        return mip_gnss_external_fix_info_decode(data, len, &out->u.gnss_external_fix_info, err);
+    case MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS:
+        return mip_gnss_external_satellite_status_decode(data, len, &out->u.gnss_external_satellite_status,
+                                                         err);
+    case MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST:
+        return mip_system_data_built_in_test_decode(data, len, &out->u.system_data_built_in_test, err);
+    case MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS:
+        return mip_system_data_time_sync_status_decode(data, len, &out->u.system_data_time_sync_status, err);
+    case MIP_FIELD_SYSTEM_DATA_GPIO_STATE:
+        return mip_system_data_gpio_state_decode(data, len, &out->u.system_data_gpio_state, err);
+    case MIP_FIELD_SHARED_EVENT_SOURCE:
+        return mip_shared_event_source_decode(data, len, &out->u.shared_event_source, err);
+    case MIP_FIELD_SHARED_GPS_TIMESTAMP:
+        return mip_shared_gps_timestamp_decode(data, len, &out->u.shared_gps_timestamp, err);
+    case MIP_FIELD_SHARED_DELTA_TIME:
+        return mip_shared_delta_time_decode(data, len, &out->u.shared_delta_time, err);
+    case MIP_FIELD_SHARED_REFERENCE_TIMESTAMP:
+        return mip_shared_reference_timestamp_decode(data, len, &out->u.shared_reference_timestamp, err);
+    case MIP_FIELD_SHARED_REFERENCE_TIME_DELTA:
+        return mip_shared_reference_time_delta_decode(data, len, &out->u.shared_reference_time_delta, err);
+    case MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP:
+        return mip_shared_external_timestamp_decode(data, len, &out->u.shared_external_timestamp, err);
+    case MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA:
+        return mip_shared_external_time_delta_decode(data, len, &out->u.shared_external_time_delta, err);
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:
@@ -2648,6 +3182,59 @@ mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size
         return mip_sensor_scaled_gyro_encode(&value->u.sensor_scaled_gyro, buf, cap, len_out);
     case MIP_FIELD_SENSOR_SCALED_MAG:
         return mip_sensor_scaled_mag_encode(&value->u.sensor_scaled_mag, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_DELTA_THETA:
+        return mip_sensor_delta_theta_encode(&value->u.sensor_delta_theta, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_DELTA_VELOCITY:
+        return mip_sensor_delta_velocity_encode(&value->u.sensor_delta_velocity, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX:
+        return mip_sensor_cf_orientation_matrix_encode(&value->u.sensor_cf_orientation_matrix, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_SENSOR_CF_QUATERNION:
+        return mip_sensor_cf_quaternion_encode(&value->u.sensor_cf_quaternion, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_CF_EULER_ANGLES:
+        return mip_sensor_cf_euler_angles_encode(&value->u.sensor_cf_euler_angles, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_CF_STABILIZED_NORTH:
+        return mip_sensor_cf_stabilized_north_encode(&value->u.sensor_cf_stabilized_north, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_CF_STABILIZED_UP:
+        return mip_sensor_cf_stabilized_up_encode(&value->u.sensor_cf_stabilized_up, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_GPS_TIMESTAMP:
+        return mip_sensor_gps_timestamp_encode(&value->u.sensor_gps_timestamp, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS:
+        return mip_sensor_temperature_statistics_encode(&value->u.sensor_temperature_statistics, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_SENSOR_SCALED_PRESSURE:
+        return mip_sensor_scaled_pressure_encode(&value->u.sensor_scaled_pressure, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_OVERRANGE_STATUS:
+        return mip_sensor_overrange_status_encode(&value->u.sensor_overrange_status, buf, cap, len_out);
+    case MIP_FIELD_SENSOR_ODOMETER_DATA:
+        return mip_sensor_odometer_data_encode(&value->u.sensor_odometer_data, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_LLH_POSITION:
+        return mip_gnss_data_llh_position_encode(&value->u.gnss_data_llh_position, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_ECEF_POSITION:
+        return mip_gnss_data_ecef_position_encode(&value->u.gnss_data_ecef_position, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_NED_VELOCITY:
+        return mip_gnss_data_ned_velocity_encode(&value->u.gnss_data_ned_velocity, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_ECEF_VELOCITY:
+        return mip_gnss_data_ecef_velocity_encode(&value->u.gnss_data_ecef_velocity, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_DOP:
+        return mip_gnss_data_dop_encode(&value->u.gnss_data_dop, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_UTC_TIME:
+        return mip_gnss_data_utc_time_encode(&value->u.gnss_data_utc_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_GPS_TIME:
+        return mip_gnss_data_gps_time_encode(&value->u.gnss_data_gps_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_CLOCK_INFO:
+        return mip_gnss_data_clock_info_encode(&value->u.gnss_data_clock_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_FIX_INFO:
+        return mip_gnss_data_fix_info_encode(&value->u.gnss_data_fix_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_SV_INFO:
+        return mip_gnss_data_sv_info_encode(&value->u.gnss_data_sv_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_HARDWARE_STATUS:
+        return mip_gnss_data_hardware_status_encode(&value->u.gnss_data_hardware_status, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_DGNSS_INFO:
+        return mip_gnss_data_dgnss_info_encode(&value->u.gnss_data_dgnss_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS:
+        return mip_gnss_data_dgnss_channel_status_encode(&value->u.gnss_data_dgnss_channel_status, buf, cap,
+                                                         len_out);
     case MIP_FIELD_FILTER_DATA_LLH_POSITION:
         return mip_filter_data_llh_position_encode(&value->u.filter_data_llh_position, buf, cap, len_out);
     case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
@@ -2783,6 +3370,141 @@ mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size
     case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
         return mip_filter_data_aiding_frame_config_error_uncertainty_encode(
             &value->u.filter_data_aiding_frame_config_error_uncertainty, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION:
+        return mip_gnss_receiver_1_llh_position_encode(&value->u.gnss_receiver_1_llh_position, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION:
+        return mip_gnss_receiver_1_ecef_position_encode(&value->u.gnss_receiver_1_ecef_position, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY:
+        return mip_gnss_receiver_1_ned_velocity_encode(&value->u.gnss_receiver_1_ned_velocity, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY:
+        return mip_gnss_receiver_1_ecef_velocity_encode(&value->u.gnss_receiver_1_ecef_velocity, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_DOP:
+        return mip_gnss_receiver_1_dop_encode(&value->u.gnss_receiver_1_dop, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME:
+        return mip_gnss_receiver_1_utc_time_encode(&value->u.gnss_receiver_1_utc_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME:
+        return mip_gnss_receiver_1_gps_time_encode(&value->u.gnss_receiver_1_gps_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO:
+        return mip_gnss_receiver_1_fix_info_encode(&value->u.gnss_receiver_1_fix_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS:
+        return mip_gnss_receiver_1_hardware_status_encode(&value->u.gnss_receiver_1_hardware_status, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2:
+        return mip_gnss_receiver_1_clock_info_2_encode(&value->u.gnss_receiver_1_clock_info_2, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS:
+        return mip_gnss_receiver_1_gps_leap_seconds_encode(&value->u.gnss_receiver_1_gps_leap_seconds, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO:
+        return mip_gnss_receiver_1_sbas_info_encode(&value->u.gnss_receiver_1_sbas_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS:
+        return mip_gnss_receiver_1_satellite_status_encode(&value->u.gnss_receiver_1_satellite_status, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_RAW:
+        return mip_gnss_receiver_1_raw_encode(&value->u.gnss_receiver_1_raw, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS:
+        return mip_gnss_receiver_1_gps_ephemeris_encode(&value->u.gnss_receiver_1_gps_ephemeris, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS:
+        return mip_gnss_receiver_1_glonass_ephemeris_encode(&value->u.gnss_receiver_1_glonass_ephemeris, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS:
+        return mip_gnss_receiver_1_galileo_ephemeris_encode(&value->u.gnss_receiver_1_galileo_ephemeris, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS:
+        return mip_gnss_receiver_1_beidou_ephemeris_encode(&value->u.gnss_receiver_1_beidou_ephemeris, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION:
+        return mip_gnss_receiver_2_llh_position_encode(&value->u.gnss_receiver_2_llh_position, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION:
+        return mip_gnss_receiver_2_ecef_position_encode(&value->u.gnss_receiver_2_ecef_position, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY:
+        return mip_gnss_receiver_2_ned_velocity_encode(&value->u.gnss_receiver_2_ned_velocity, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY:
+        return mip_gnss_receiver_2_ecef_velocity_encode(&value->u.gnss_receiver_2_ecef_velocity, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_DOP:
+        return mip_gnss_receiver_2_dop_encode(&value->u.gnss_receiver_2_dop, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME:
+        return mip_gnss_receiver_2_utc_time_encode(&value->u.gnss_receiver_2_utc_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME:
+        return mip_gnss_receiver_2_gps_time_encode(&value->u.gnss_receiver_2_gps_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO:
+        return mip_gnss_receiver_2_fix_info_encode(&value->u.gnss_receiver_2_fix_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS:
+        return mip_gnss_receiver_2_hardware_status_encode(&value->u.gnss_receiver_2_hardware_status, buf, cap,
+                                                          len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2:
+        return mip_gnss_receiver_2_clock_info_2_encode(&value->u.gnss_receiver_2_clock_info_2, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS:
+        return mip_gnss_receiver_2_gps_leap_seconds_encode(&value->u.gnss_receiver_2_gps_leap_seconds, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO:
+        return mip_gnss_receiver_2_sbas_info_encode(&value->u.gnss_receiver_2_sbas_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS:
+        return mip_gnss_receiver_2_satellite_status_encode(&value->u.gnss_receiver_2_satellite_status, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_RAW:
+        return mip_gnss_receiver_2_raw_encode(&value->u.gnss_receiver_2_raw, buf, cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS:
+        return mip_gnss_receiver_2_gps_ephemeris_encode(&value->u.gnss_receiver_2_gps_ephemeris, buf, cap,
+                                                        len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS:
+        return mip_gnss_receiver_2_glonass_ephemeris_encode(&value->u.gnss_receiver_2_glonass_ephemeris, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS:
+        return mip_gnss_receiver_2_galileo_ephemeris_encode(&value->u.gnss_receiver_2_galileo_ephemeris, buf,
+                                                            cap, len_out);
+    case MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS:
+        return mip_gnss_receiver_2_beidou_ephemeris_encode(&value->u.gnss_receiver_2_beidou_ephemeris, buf,
+                                                           cap, len_out);
+    case MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO:
+        return mip_gnss_corrections_base_station_info_encode(&value->u.gnss_corrections_base_station_info,
+                                                             buf, cap, len_out);
+    case MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS:
+        return mip_gnss_corrections_rtk_corrections_status_encode(
+            &value->u.gnss_corrections_rtk_corrections_status, buf, cap, len_out);
+    case MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION:
+        return mip_gnss_external_llh_position_encode(&value->u.gnss_external_llh_position, buf, cap, len_out);
+    case MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY:
+        return mip_gnss_external_ned_velocity_encode(&value->u.gnss_external_ned_velocity, buf, cap, len_out);
+    case MIP_FIELD_GNSS_EXTERNAL_UTC_TIME:
+        return mip_gnss_external_utc_time_encode(&value->u.gnss_external_utc_time, buf, cap, len_out);
+    case MIP_FIELD_GNSS_EXTERNAL_FIX_INFO:
+        return mip_gnss_external_fix_info_encode(&value->u.gnss_external_fix_info, buf, cap, len_out);
+    case MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS:
+        return mip_gnss_external_satellite_status_encode(&value->u.gnss_external_satellite_status, buf, cap,
+                                                         len_out);
+    case MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST:
+        return mip_system_data_built_in_test_encode(&value->u.system_data_built_in_test, buf, cap, len_out);
+    case MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS:
+        return mip_system_data_time_sync_status_encode(&value->u.system_data_time_sync_status, buf, cap,
+                                                       len_out);
+    case MIP_FIELD_SYSTEM_DATA_GPIO_STATE:
+        return mip_system_data_gpio_state_encode(&value->u.system_data_gpio_state, buf, cap, len_out);
+    case MIP_FIELD_SHARED_EVENT_SOURCE:
+        return mip_shared_event_source_encode(&value->u.shared_event_source, buf, cap, len_out);
+    case MIP_FIELD_SHARED_GPS_TIMESTAMP:
+        return mip_shared_gps_timestamp_encode(&value->u.shared_gps_timestamp, buf, cap, len_out);
+    case MIP_FIELD_SHARED_DELTA_TIME:
+        return mip_shared_delta_time_encode(&value->u.shared_delta_time, buf, cap, len_out);
+    case MIP_FIELD_SHARED_REFERENCE_TIMESTAMP:
+        return mip_shared_reference_timestamp_encode(&value->u.shared_reference_timestamp, buf, cap, len_out);
+    case MIP_FIELD_SHARED_REFERENCE_TIME_DELTA:
+        return mip_shared_reference_time_delta_encode(&value->u.shared_reference_time_delta, buf, cap,
+                                                      len_out);
+    case MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP:
+        return mip_shared_external_timestamp_encode(&value->u.shared_external_timestamp, buf, cap, len_out);
+    case MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA:
+        return mip_shared_external_time_delta_encode(&value->u.shared_external_time_delta, buf, cap, len_out);
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:
@@ -3505,6 +4227,81 @@ void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
     case MIP_FIELD_SENSOR_SCALED_MAG:
         mip_sensor_scaled_mag_to_json(w, &value->u.sensor_scaled_mag);
         return;
+    case MIP_FIELD_SENSOR_DELTA_THETA:
+        mip_sensor_delta_theta_to_json(w, &value->u.sensor_delta_theta);
+        return;
+    case MIP_FIELD_SENSOR_DELTA_VELOCITY:
+        mip_sensor_delta_velocity_to_json(w, &value->u.sensor_delta_velocity);
+        return;
+    case MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX:
+        mip_sensor_cf_orientation_matrix_to_json(w, &value->u.sensor_cf_orientation_matrix);
+        return;
+    case MIP_FIELD_SENSOR_CF_QUATERNION:
+        mip_sensor_cf_quaternion_to_json(w, &value->u.sensor_cf_quaternion);
+        return;
+    case MIP_FIELD_SENSOR_CF_EULER_ANGLES:
+        mip_sensor_cf_euler_angles_to_json(w, &value->u.sensor_cf_euler_angles);
+        return;
+    case MIP_FIELD_SENSOR_CF_STABILIZED_NORTH:
+        mip_sensor_cf_stabilized_north_to_json(w, &value->u.sensor_cf_stabilized_north);
+        return;
+    case MIP_FIELD_SENSOR_CF_STABILIZED_UP:
+        mip_sensor_cf_stabilized_up_to_json(w, &value->u.sensor_cf_stabilized_up);
+        return;
+    case MIP_FIELD_SENSOR_GPS_TIMESTAMP:
+        mip_sensor_gps_timestamp_to_json(w, &value->u.sensor_gps_timestamp);
+        return;
+    case MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS:
+        mip_sensor_temperature_statistics_to_json(w, &value->u.sensor_temperature_statistics);
+        return;
+    case MIP_FIELD_SENSOR_SCALED_PRESSURE:
+        mip_sensor_scaled_pressure_to_json(w, &value->u.sensor_scaled_pressure);
+        return;
+    case MIP_FIELD_SENSOR_OVERRANGE_STATUS:
+        mip_sensor_overrange_status_to_json(w, &value->u.sensor_overrange_status);
+        return;
+    case MIP_FIELD_SENSOR_ODOMETER_DATA:
+        mip_sensor_odometer_data_to_json(w, &value->u.sensor_odometer_data);
+        return;
+    case MIP_FIELD_GNSS_DATA_LLH_POSITION:
+        mip_gnss_data_llh_position_to_json(w, &value->u.gnss_data_llh_position);
+        return;
+    case MIP_FIELD_GNSS_DATA_ECEF_POSITION:
+        mip_gnss_data_ecef_position_to_json(w, &value->u.gnss_data_ecef_position);
+        return;
+    case MIP_FIELD_GNSS_DATA_NED_VELOCITY:
+        mip_gnss_data_ned_velocity_to_json(w, &value->u.gnss_data_ned_velocity);
+        return;
+    case MIP_FIELD_GNSS_DATA_ECEF_VELOCITY:
+        mip_gnss_data_ecef_velocity_to_json(w, &value->u.gnss_data_ecef_velocity);
+        return;
+    case MIP_FIELD_GNSS_DATA_DOP:
+        mip_gnss_data_dop_to_json(w, &value->u.gnss_data_dop);
+        return;
+    case MIP_FIELD_GNSS_DATA_UTC_TIME:
+        mip_gnss_data_utc_time_to_json(w, &value->u.gnss_data_utc_time);
+        return;
+    case MIP_FIELD_GNSS_DATA_GPS_TIME:
+        mip_gnss_data_gps_time_to_json(w, &value->u.gnss_data_gps_time);
+        return;
+    case MIP_FIELD_GNSS_DATA_CLOCK_INFO:
+        mip_gnss_data_clock_info_to_json(w, &value->u.gnss_data_clock_info);
+        return;
+    case MIP_FIELD_GNSS_DATA_FIX_INFO:
+        mip_gnss_data_fix_info_to_json(w, &value->u.gnss_data_fix_info);
+        return;
+    case MIP_FIELD_GNSS_DATA_SV_INFO:
+        mip_gnss_data_sv_info_to_json(w, &value->u.gnss_data_sv_info);
+        return;
+    case MIP_FIELD_GNSS_DATA_HARDWARE_STATUS:
+        mip_gnss_data_hardware_status_to_json(w, &value->u.gnss_data_hardware_status);
+        return;
+    case MIP_FIELD_GNSS_DATA_DGNSS_INFO:
+        mip_gnss_data_dgnss_info_to_json(w, &value->u.gnss_data_dgnss_info);
+        return;
+    case MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS:
+        mip_gnss_data_dgnss_channel_status_to_json(w, &value->u.gnss_data_dgnss_channel_status);
+        return;
     case MIP_FIELD_FILTER_DATA_LLH_POSITION:
         mip_filter_data_llh_position_to_json(w, &value->u.filter_data_llh_position);
         return;
@@ -3665,6 +4462,166 @@ void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value) {
     case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
         mip_filter_data_aiding_frame_config_error_uncertainty_to_json(
             w, &value->u.filter_data_aiding_frame_config_error_uncertainty);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION:
+        mip_gnss_receiver_1_llh_position_to_json(w, &value->u.gnss_receiver_1_llh_position);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION:
+        mip_gnss_receiver_1_ecef_position_to_json(w, &value->u.gnss_receiver_1_ecef_position);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY:
+        mip_gnss_receiver_1_ned_velocity_to_json(w, &value->u.gnss_receiver_1_ned_velocity);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY:
+        mip_gnss_receiver_1_ecef_velocity_to_json(w, &value->u.gnss_receiver_1_ecef_velocity);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_DOP:
+        mip_gnss_receiver_1_dop_to_json(w, &value->u.gnss_receiver_1_dop);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME:
+        mip_gnss_receiver_1_utc_time_to_json(w, &value->u.gnss_receiver_1_utc_time);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME:
+        mip_gnss_receiver_1_gps_time_to_json(w, &value->u.gnss_receiver_1_gps_time);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO:
+        mip_gnss_receiver_1_fix_info_to_json(w, &value->u.gnss_receiver_1_fix_info);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS:
+        mip_gnss_receiver_1_hardware_status_to_json(w, &value->u.gnss_receiver_1_hardware_status);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2:
+        mip_gnss_receiver_1_clock_info_2_to_json(w, &value->u.gnss_receiver_1_clock_info_2);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS:
+        mip_gnss_receiver_1_gps_leap_seconds_to_json(w, &value->u.gnss_receiver_1_gps_leap_seconds);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO:
+        mip_gnss_receiver_1_sbas_info_to_json(w, &value->u.gnss_receiver_1_sbas_info);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS:
+        mip_gnss_receiver_1_satellite_status_to_json(w, &value->u.gnss_receiver_1_satellite_status);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_RAW:
+        mip_gnss_receiver_1_raw_to_json(w, &value->u.gnss_receiver_1_raw);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS:
+        mip_gnss_receiver_1_gps_ephemeris_to_json(w, &value->u.gnss_receiver_1_gps_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS:
+        mip_gnss_receiver_1_glonass_ephemeris_to_json(w, &value->u.gnss_receiver_1_glonass_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS:
+        mip_gnss_receiver_1_galileo_ephemeris_to_json(w, &value->u.gnss_receiver_1_galileo_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS:
+        mip_gnss_receiver_1_beidou_ephemeris_to_json(w, &value->u.gnss_receiver_1_beidou_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION:
+        mip_gnss_receiver_2_llh_position_to_json(w, &value->u.gnss_receiver_2_llh_position);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION:
+        mip_gnss_receiver_2_ecef_position_to_json(w, &value->u.gnss_receiver_2_ecef_position);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY:
+        mip_gnss_receiver_2_ned_velocity_to_json(w, &value->u.gnss_receiver_2_ned_velocity);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY:
+        mip_gnss_receiver_2_ecef_velocity_to_json(w, &value->u.gnss_receiver_2_ecef_velocity);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_DOP:
+        mip_gnss_receiver_2_dop_to_json(w, &value->u.gnss_receiver_2_dop);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME:
+        mip_gnss_receiver_2_utc_time_to_json(w, &value->u.gnss_receiver_2_utc_time);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME:
+        mip_gnss_receiver_2_gps_time_to_json(w, &value->u.gnss_receiver_2_gps_time);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO:
+        mip_gnss_receiver_2_fix_info_to_json(w, &value->u.gnss_receiver_2_fix_info);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS:
+        mip_gnss_receiver_2_hardware_status_to_json(w, &value->u.gnss_receiver_2_hardware_status);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2:
+        mip_gnss_receiver_2_clock_info_2_to_json(w, &value->u.gnss_receiver_2_clock_info_2);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS:
+        mip_gnss_receiver_2_gps_leap_seconds_to_json(w, &value->u.gnss_receiver_2_gps_leap_seconds);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO:
+        mip_gnss_receiver_2_sbas_info_to_json(w, &value->u.gnss_receiver_2_sbas_info);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS:
+        mip_gnss_receiver_2_satellite_status_to_json(w, &value->u.gnss_receiver_2_satellite_status);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_RAW:
+        mip_gnss_receiver_2_raw_to_json(w, &value->u.gnss_receiver_2_raw);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS:
+        mip_gnss_receiver_2_gps_ephemeris_to_json(w, &value->u.gnss_receiver_2_gps_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS:
+        mip_gnss_receiver_2_glonass_ephemeris_to_json(w, &value->u.gnss_receiver_2_glonass_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS:
+        mip_gnss_receiver_2_galileo_ephemeris_to_json(w, &value->u.gnss_receiver_2_galileo_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS:
+        mip_gnss_receiver_2_beidou_ephemeris_to_json(w, &value->u.gnss_receiver_2_beidou_ephemeris);
+        return;
+    case MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO:
+        mip_gnss_corrections_base_station_info_to_json(w, &value->u.gnss_corrections_base_station_info);
+        return;
+    case MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS:
+        mip_gnss_corrections_rtk_corrections_status_to_json(
+            w, &value->u.gnss_corrections_rtk_corrections_status);
+        return;
+    case MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION:
+        mip_gnss_external_llh_position_to_json(w, &value->u.gnss_external_llh_position);
+        return;
+    case MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY:
+        mip_gnss_external_ned_velocity_to_json(w, &value->u.gnss_external_ned_velocity);
+        return;
+    case MIP_FIELD_GNSS_EXTERNAL_UTC_TIME:
+        mip_gnss_external_utc_time_to_json(w, &value->u.gnss_external_utc_time);
+        return;
+    case MIP_FIELD_GNSS_EXTERNAL_FIX_INFO:
+        mip_gnss_external_fix_info_to_json(w, &value->u.gnss_external_fix_info);
+        return;
+    case MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS:
+        mip_gnss_external_satellite_status_to_json(w, &value->u.gnss_external_satellite_status);
+        return;
+    case MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST:
+        mip_system_data_built_in_test_to_json(w, &value->u.system_data_built_in_test);
+        return;
+    case MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS:
+        mip_system_data_time_sync_status_to_json(w, &value->u.system_data_time_sync_status);
+        return;
+    case MIP_FIELD_SYSTEM_DATA_GPIO_STATE:
+        mip_system_data_gpio_state_to_json(w, &value->u.system_data_gpio_state);
+        return;
+    case MIP_FIELD_SHARED_EVENT_SOURCE:
+        mip_shared_event_source_to_json(w, &value->u.shared_event_source);
+        return;
+    case MIP_FIELD_SHARED_GPS_TIMESTAMP:
+        mip_shared_gps_timestamp_to_json(w, &value->u.shared_gps_timestamp);
+        return;
+    case MIP_FIELD_SHARED_DELTA_TIME:
+        mip_shared_delta_time_to_json(w, &value->u.shared_delta_time);
+        return;
+    case MIP_FIELD_SHARED_REFERENCE_TIMESTAMP:
+        mip_shared_reference_timestamp_to_json(w, &value->u.shared_reference_timestamp);
+        return;
+    case MIP_FIELD_SHARED_REFERENCE_TIME_DELTA:
+        mip_shared_reference_time_delta_to_json(w, &value->u.shared_reference_time_delta);
+        return;
+    case MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP:
+        mip_shared_external_timestamp_to_json(w, &value->u.shared_external_timestamp);
+        return;
+    case MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA:
+        mip_shared_external_time_delta_to_json(w, &value->u.shared_external_time_delta);
         return;
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
@@ -4227,6 +5184,57 @@ int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_v
         return mip_sensor_scaled_gyro_from_json(jr, pos, &value->u.sensor_scaled_gyro);
     case MIP_FIELD_SENSOR_SCALED_MAG:
         return mip_sensor_scaled_mag_from_json(jr, pos, &value->u.sensor_scaled_mag);
+    case MIP_FIELD_SENSOR_DELTA_THETA:
+        return mip_sensor_delta_theta_from_json(jr, pos, &value->u.sensor_delta_theta);
+    case MIP_FIELD_SENSOR_DELTA_VELOCITY:
+        return mip_sensor_delta_velocity_from_json(jr, pos, &value->u.sensor_delta_velocity);
+    case MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX:
+        return mip_sensor_cf_orientation_matrix_from_json(jr, pos, &value->u.sensor_cf_orientation_matrix);
+    case MIP_FIELD_SENSOR_CF_QUATERNION:
+        return mip_sensor_cf_quaternion_from_json(jr, pos, &value->u.sensor_cf_quaternion);
+    case MIP_FIELD_SENSOR_CF_EULER_ANGLES:
+        return mip_sensor_cf_euler_angles_from_json(jr, pos, &value->u.sensor_cf_euler_angles);
+    case MIP_FIELD_SENSOR_CF_STABILIZED_NORTH:
+        return mip_sensor_cf_stabilized_north_from_json(jr, pos, &value->u.sensor_cf_stabilized_north);
+    case MIP_FIELD_SENSOR_CF_STABILIZED_UP:
+        return mip_sensor_cf_stabilized_up_from_json(jr, pos, &value->u.sensor_cf_stabilized_up);
+    case MIP_FIELD_SENSOR_GPS_TIMESTAMP:
+        return mip_sensor_gps_timestamp_from_json(jr, pos, &value->u.sensor_gps_timestamp);
+    case MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS:
+        return mip_sensor_temperature_statistics_from_json(jr, pos, &value->u.sensor_temperature_statistics);
+    case MIP_FIELD_SENSOR_SCALED_PRESSURE:
+        return mip_sensor_scaled_pressure_from_json(jr, pos, &value->u.sensor_scaled_pressure);
+    case MIP_FIELD_SENSOR_OVERRANGE_STATUS:
+        return mip_sensor_overrange_status_from_json(jr, pos, &value->u.sensor_overrange_status);
+    case MIP_FIELD_SENSOR_ODOMETER_DATA:
+        return mip_sensor_odometer_data_from_json(jr, pos, &value->u.sensor_odometer_data);
+    case MIP_FIELD_GNSS_DATA_LLH_POSITION:
+        return mip_gnss_data_llh_position_from_json(jr, pos, &value->u.gnss_data_llh_position);
+    case MIP_FIELD_GNSS_DATA_ECEF_POSITION:
+        return mip_gnss_data_ecef_position_from_json(jr, pos, &value->u.gnss_data_ecef_position);
+    case MIP_FIELD_GNSS_DATA_NED_VELOCITY:
+        return mip_gnss_data_ned_velocity_from_json(jr, pos, &value->u.gnss_data_ned_velocity);
+    case MIP_FIELD_GNSS_DATA_ECEF_VELOCITY:
+        return mip_gnss_data_ecef_velocity_from_json(jr, pos, &value->u.gnss_data_ecef_velocity);
+    case MIP_FIELD_GNSS_DATA_DOP:
+        return mip_gnss_data_dop_from_json(jr, pos, &value->u.gnss_data_dop);
+    case MIP_FIELD_GNSS_DATA_UTC_TIME:
+        return mip_gnss_data_utc_time_from_json(jr, pos, &value->u.gnss_data_utc_time);
+    case MIP_FIELD_GNSS_DATA_GPS_TIME:
+        return mip_gnss_data_gps_time_from_json(jr, pos, &value->u.gnss_data_gps_time);
+    case MIP_FIELD_GNSS_DATA_CLOCK_INFO:
+        return mip_gnss_data_clock_info_from_json(jr, pos, &value->u.gnss_data_clock_info);
+    case MIP_FIELD_GNSS_DATA_FIX_INFO:
+        return mip_gnss_data_fix_info_from_json(jr, pos, &value->u.gnss_data_fix_info);
+    case MIP_FIELD_GNSS_DATA_SV_INFO:
+        return mip_gnss_data_sv_info_from_json(jr, pos, &value->u.gnss_data_sv_info);
+    case MIP_FIELD_GNSS_DATA_HARDWARE_STATUS:
+        return mip_gnss_data_hardware_status_from_json(jr, pos, &value->u.gnss_data_hardware_status);
+    case MIP_FIELD_GNSS_DATA_DGNSS_INFO:
+        return mip_gnss_data_dgnss_info_from_json(jr, pos, &value->u.gnss_data_dgnss_info);
+    case MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS:
+        return mip_gnss_data_dgnss_channel_status_from_json(jr, pos,
+                                                            &value->u.gnss_data_dgnss_channel_status);
     case MIP_FIELD_FILTER_DATA_LLH_POSITION:
         return mip_filter_data_llh_position_from_json(jr, pos, &value->u.filter_data_llh_position);
     case MIP_FIELD_FILTER_DATA_NED_VELOCITY:
@@ -4358,6 +5366,127 @@ int mip_value_from_json(mip_jr_t *jr, size_t pos, mip_field_id_t id, mip_field_v
     case MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY:
         return mip_filter_data_aiding_frame_config_error_uncertainty_from_json(
             jr, pos, &value->u.filter_data_aiding_frame_config_error_uncertainty);
+    case MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION:
+        return mip_gnss_receiver_1_llh_position_from_json(jr, pos, &value->u.gnss_receiver_1_llh_position);
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION:
+        return mip_gnss_receiver_1_ecef_position_from_json(jr, pos, &value->u.gnss_receiver_1_ecef_position);
+    case MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY:
+        return mip_gnss_receiver_1_ned_velocity_from_json(jr, pos, &value->u.gnss_receiver_1_ned_velocity);
+    case MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY:
+        return mip_gnss_receiver_1_ecef_velocity_from_json(jr, pos, &value->u.gnss_receiver_1_ecef_velocity);
+    case MIP_FIELD_GNSS_RECEIVER_1_DOP:
+        return mip_gnss_receiver_1_dop_from_json(jr, pos, &value->u.gnss_receiver_1_dop);
+    case MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME:
+        return mip_gnss_receiver_1_utc_time_from_json(jr, pos, &value->u.gnss_receiver_1_utc_time);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME:
+        return mip_gnss_receiver_1_gps_time_from_json(jr, pos, &value->u.gnss_receiver_1_gps_time);
+    case MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO:
+        return mip_gnss_receiver_1_fix_info_from_json(jr, pos, &value->u.gnss_receiver_1_fix_info);
+    case MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS:
+        return mip_gnss_receiver_1_hardware_status_from_json(jr, pos,
+                                                             &value->u.gnss_receiver_1_hardware_status);
+    case MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2:
+        return mip_gnss_receiver_1_clock_info_2_from_json(jr, pos, &value->u.gnss_receiver_1_clock_info_2);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS:
+        return mip_gnss_receiver_1_gps_leap_seconds_from_json(jr, pos,
+                                                              &value->u.gnss_receiver_1_gps_leap_seconds);
+    case MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO:
+        return mip_gnss_receiver_1_sbas_info_from_json(jr, pos, &value->u.gnss_receiver_1_sbas_info);
+    case MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS:
+        return mip_gnss_receiver_1_satellite_status_from_json(jr, pos,
+                                                              &value->u.gnss_receiver_1_satellite_status);
+    case MIP_FIELD_GNSS_RECEIVER_1_RAW:
+        return mip_gnss_receiver_1_raw_from_json(jr, pos, &value->u.gnss_receiver_1_raw);
+    case MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS:
+        return mip_gnss_receiver_1_gps_ephemeris_from_json(jr, pos, &value->u.gnss_receiver_1_gps_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS:
+        return mip_gnss_receiver_1_glonass_ephemeris_from_json(jr, pos,
+                                                               &value->u.gnss_receiver_1_glonass_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS:
+        return mip_gnss_receiver_1_galileo_ephemeris_from_json(jr, pos,
+                                                               &value->u.gnss_receiver_1_galileo_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS:
+        return mip_gnss_receiver_1_beidou_ephemeris_from_json(jr, pos,
+                                                              &value->u.gnss_receiver_1_beidou_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION:
+        return mip_gnss_receiver_2_llh_position_from_json(jr, pos, &value->u.gnss_receiver_2_llh_position);
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION:
+        return mip_gnss_receiver_2_ecef_position_from_json(jr, pos, &value->u.gnss_receiver_2_ecef_position);
+    case MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY:
+        return mip_gnss_receiver_2_ned_velocity_from_json(jr, pos, &value->u.gnss_receiver_2_ned_velocity);
+    case MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY:
+        return mip_gnss_receiver_2_ecef_velocity_from_json(jr, pos, &value->u.gnss_receiver_2_ecef_velocity);
+    case MIP_FIELD_GNSS_RECEIVER_2_DOP:
+        return mip_gnss_receiver_2_dop_from_json(jr, pos, &value->u.gnss_receiver_2_dop);
+    case MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME:
+        return mip_gnss_receiver_2_utc_time_from_json(jr, pos, &value->u.gnss_receiver_2_utc_time);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME:
+        return mip_gnss_receiver_2_gps_time_from_json(jr, pos, &value->u.gnss_receiver_2_gps_time);
+    case MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO:
+        return mip_gnss_receiver_2_fix_info_from_json(jr, pos, &value->u.gnss_receiver_2_fix_info);
+    case MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS:
+        return mip_gnss_receiver_2_hardware_status_from_json(jr, pos,
+                                                             &value->u.gnss_receiver_2_hardware_status);
+    case MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2:
+        return mip_gnss_receiver_2_clock_info_2_from_json(jr, pos, &value->u.gnss_receiver_2_clock_info_2);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS:
+        return mip_gnss_receiver_2_gps_leap_seconds_from_json(jr, pos,
+                                                              &value->u.gnss_receiver_2_gps_leap_seconds);
+    case MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO:
+        return mip_gnss_receiver_2_sbas_info_from_json(jr, pos, &value->u.gnss_receiver_2_sbas_info);
+    case MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS:
+        return mip_gnss_receiver_2_satellite_status_from_json(jr, pos,
+                                                              &value->u.gnss_receiver_2_satellite_status);
+    case MIP_FIELD_GNSS_RECEIVER_2_RAW:
+        return mip_gnss_receiver_2_raw_from_json(jr, pos, &value->u.gnss_receiver_2_raw);
+    case MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS:
+        return mip_gnss_receiver_2_gps_ephemeris_from_json(jr, pos, &value->u.gnss_receiver_2_gps_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS:
+        return mip_gnss_receiver_2_glonass_ephemeris_from_json(jr, pos,
+                                                               &value->u.gnss_receiver_2_glonass_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS:
+        return mip_gnss_receiver_2_galileo_ephemeris_from_json(jr, pos,
+                                                               &value->u.gnss_receiver_2_galileo_ephemeris);
+    case MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS:
+        return mip_gnss_receiver_2_beidou_ephemeris_from_json(jr, pos,
+                                                              &value->u.gnss_receiver_2_beidou_ephemeris);
+    case MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO:
+        return mip_gnss_corrections_base_station_info_from_json(jr, pos,
+                                                                &value->u.gnss_corrections_base_station_info);
+    case MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS:
+        return mip_gnss_corrections_rtk_corrections_status_from_json(
+            jr, pos, &value->u.gnss_corrections_rtk_corrections_status);
+    case MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION:
+        return mip_gnss_external_llh_position_from_json(jr, pos, &value->u.gnss_external_llh_position);
+    case MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY:
+        return mip_gnss_external_ned_velocity_from_json(jr, pos, &value->u.gnss_external_ned_velocity);
+    case MIP_FIELD_GNSS_EXTERNAL_UTC_TIME:
+        return mip_gnss_external_utc_time_from_json(jr, pos, &value->u.gnss_external_utc_time);
+    case MIP_FIELD_GNSS_EXTERNAL_FIX_INFO:
+        return mip_gnss_external_fix_info_from_json(jr, pos, &value->u.gnss_external_fix_info);
+    case MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS:
+        return mip_gnss_external_satellite_status_from_json(jr, pos,
+                                                            &value->u.gnss_external_satellite_status);
+    case MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST:
+        return mip_system_data_built_in_test_from_json(jr, pos, &value->u.system_data_built_in_test);
+    case MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS:
+        return mip_system_data_time_sync_status_from_json(jr, pos, &value->u.system_data_time_sync_status);
+    case MIP_FIELD_SYSTEM_DATA_GPIO_STATE:
+        return mip_system_data_gpio_state_from_json(jr, pos, &value->u.system_data_gpio_state);
+    case MIP_FIELD_SHARED_EVENT_SOURCE:
+        return mip_shared_event_source_from_json(jr, pos, &value->u.shared_event_source);
+    case MIP_FIELD_SHARED_GPS_TIMESTAMP:
+        return mip_shared_gps_timestamp_from_json(jr, pos, &value->u.shared_gps_timestamp);
+    case MIP_FIELD_SHARED_DELTA_TIME:
+        return mip_shared_delta_time_from_json(jr, pos, &value->u.shared_delta_time);
+    case MIP_FIELD_SHARED_REFERENCE_TIMESTAMP:
+        return mip_shared_reference_timestamp_from_json(jr, pos, &value->u.shared_reference_timestamp);
+    case MIP_FIELD_SHARED_REFERENCE_TIME_DELTA:
+        return mip_shared_reference_time_delta_from_json(jr, pos, &value->u.shared_reference_time_delta);
+    case MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP:
+        return mip_shared_external_timestamp_from_json(jr, pos, &value->u.shared_external_timestamp);
+    case MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA:
+        return mip_shared_external_time_delta_from_json(jr, pos, &value->u.shared_external_time_delta);
     case MIP_FIELD_NONE:
     case MIP_FIELD_COUNT:
     default:

@@ -687,6 +687,59 @@ void mip_sensor_scaled_gyro_to_json(mip_jw_t *w, const mip_sensor_scaled_gyro_t 
 int mip_sensor_scaled_gyro_from_json(mip_jr_t *jr, size_t pos, mip_sensor_scaled_gyro_t *out);
 void mip_sensor_scaled_mag_to_json(mip_jw_t *w, const mip_sensor_scaled_mag_t *in);
 int mip_sensor_scaled_mag_from_json(mip_jr_t *jr, size_t pos, mip_sensor_scaled_mag_t *out);
+void mip_sensor_delta_theta_to_json(mip_jw_t *w, const mip_sensor_delta_theta_t *in);
+int mip_sensor_delta_theta_from_json(mip_jr_t *jr, size_t pos, mip_sensor_delta_theta_t *out);
+void mip_sensor_delta_velocity_to_json(mip_jw_t *w, const mip_sensor_delta_velocity_t *in);
+int mip_sensor_delta_velocity_from_json(mip_jr_t *jr, size_t pos, mip_sensor_delta_velocity_t *out);
+void mip_sensor_cf_orientation_matrix_to_json(mip_jw_t *w, const mip_sensor_cf_orientation_matrix_t *in);
+int mip_sensor_cf_orientation_matrix_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_sensor_cf_orientation_matrix_t *out);
+void mip_sensor_cf_quaternion_to_json(mip_jw_t *w, const mip_sensor_cf_quaternion_t *in);
+int mip_sensor_cf_quaternion_from_json(mip_jr_t *jr, size_t pos, mip_sensor_cf_quaternion_t *out);
+void mip_sensor_cf_euler_angles_to_json(mip_jw_t *w, const mip_sensor_cf_euler_angles_t *in);
+int mip_sensor_cf_euler_angles_from_json(mip_jr_t *jr, size_t pos, mip_sensor_cf_euler_angles_t *out);
+void mip_sensor_cf_stabilized_north_to_json(mip_jw_t *w, const mip_sensor_cf_stabilized_north_t *in);
+int mip_sensor_cf_stabilized_north_from_json(mip_jr_t *jr, size_t pos, mip_sensor_cf_stabilized_north_t *out);
+void mip_sensor_cf_stabilized_up_to_json(mip_jw_t *w, const mip_sensor_cf_stabilized_up_t *in);
+int mip_sensor_cf_stabilized_up_from_json(mip_jr_t *jr, size_t pos, mip_sensor_cf_stabilized_up_t *out);
+void mip_sensor_gps_timestamp_to_json(mip_jw_t *w, const mip_sensor_gps_timestamp_t *in);
+int mip_sensor_gps_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_sensor_gps_timestamp_t *out);
+void mip_sensor_temperature_statistics_to_json(mip_jw_t *w, const mip_sensor_temperature_statistics_t *in);
+int mip_sensor_temperature_statistics_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_sensor_temperature_statistics_t *out);
+void mip_sensor_scaled_pressure_to_json(mip_jw_t *w, const mip_sensor_scaled_pressure_t *in);
+int mip_sensor_scaled_pressure_from_json(mip_jr_t *jr, size_t pos, mip_sensor_scaled_pressure_t *out);
+void mip_sensor_overrange_status_to_json(mip_jw_t *w, const mip_sensor_overrange_status_t *in);
+int mip_sensor_overrange_status_from_json(mip_jr_t *jr, size_t pos, mip_sensor_overrange_status_t *out);
+void mip_sensor_odometer_data_to_json(mip_jw_t *w, const mip_sensor_odometer_data_t *in);
+int mip_sensor_odometer_data_from_json(mip_jr_t *jr, size_t pos, mip_sensor_odometer_data_t *out);
+void mip_gnss_data_llh_position_to_json(mip_jw_t *w, const mip_gnss_data_llh_position_t *in);
+int mip_gnss_data_llh_position_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_llh_position_t *out);
+void mip_gnss_data_ecef_position_to_json(mip_jw_t *w, const mip_gnss_data_ecef_position_t *in);
+int mip_gnss_data_ecef_position_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_ecef_position_t *out);
+void mip_gnss_data_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_data_ned_velocity_t *in);
+int mip_gnss_data_ned_velocity_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_ned_velocity_t *out);
+void mip_gnss_data_ecef_velocity_to_json(mip_jw_t *w, const mip_gnss_data_ecef_velocity_t *in);
+int mip_gnss_data_ecef_velocity_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_ecef_velocity_t *out);
+void mip_gnss_data_dop_to_json(mip_jw_t *w, const mip_gnss_data_dop_t *in);
+int mip_gnss_data_dop_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_dop_t *out);
+void mip_gnss_data_utc_time_to_json(mip_jw_t *w, const mip_gnss_data_utc_time_t *in);
+int mip_gnss_data_utc_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_utc_time_t *out);
+void mip_gnss_data_gps_time_to_json(mip_jw_t *w, const mip_gnss_data_gps_time_t *in);
+int mip_gnss_data_gps_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_gps_time_t *out);
+void mip_gnss_data_clock_info_to_json(mip_jw_t *w, const mip_gnss_data_clock_info_t *in);
+int mip_gnss_data_clock_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_clock_info_t *out);
+void mip_gnss_data_fix_info_to_json(mip_jw_t *w, const mip_gnss_data_fix_info_t *in);
+int mip_gnss_data_fix_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_fix_info_t *out);
+void mip_gnss_data_sv_info_to_json(mip_jw_t *w, const mip_gnss_data_sv_info_t *in);
+int mip_gnss_data_sv_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_sv_info_t *out);
+void mip_gnss_data_hardware_status_to_json(mip_jw_t *w, const mip_gnss_data_hardware_status_t *in);
+int mip_gnss_data_hardware_status_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_hardware_status_t *out);
+void mip_gnss_data_dgnss_info_to_json(mip_jw_t *w, const mip_gnss_data_dgnss_info_t *in);
+int mip_gnss_data_dgnss_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_data_dgnss_info_t *out);
+void mip_gnss_data_dgnss_channel_status_to_json(mip_jw_t *w, const mip_gnss_data_dgnss_channel_status_t *in);
+int mip_gnss_data_dgnss_channel_status_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_gnss_data_dgnss_channel_status_t *out);
 void mip_filter_data_llh_position_to_json(mip_jw_t *w, const mip_filter_data_llh_position_t *in);
 int mip_filter_data_llh_position_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_llh_position_t *out);
 void mip_filter_data_ned_velocity_to_json(mip_jw_t *w, const mip_filter_data_ned_velocity_t *in);
@@ -854,6 +907,155 @@ void mip_filter_data_aiding_frame_config_error_uncertainty_to_json(
     mip_jw_t *w, const mip_filter_data_aiding_frame_config_error_uncertainty_t *in);
 int mip_filter_data_aiding_frame_config_error_uncertainty_from_json(
     mip_jr_t *jr, size_t pos, mip_filter_data_aiding_frame_config_error_uncertainty_t *out);
+void mip_gnss_receiver_1_llh_position_to_json(mip_jw_t *w, const mip_gnss_receiver_1_llh_position_t *in);
+int mip_gnss_receiver_1_llh_position_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_gnss_receiver_1_llh_position_t *out);
+void mip_gnss_receiver_1_ecef_position_to_json(mip_jw_t *w, const mip_gnss_receiver_1_ecef_position_t *in);
+int mip_gnss_receiver_1_ecef_position_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_gnss_receiver_1_ecef_position_t *out);
+void mip_gnss_receiver_1_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_receiver_1_ned_velocity_t *in);
+int mip_gnss_receiver_1_ned_velocity_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_gnss_receiver_1_ned_velocity_t *out);
+void mip_gnss_receiver_1_ecef_velocity_to_json(mip_jw_t *w, const mip_gnss_receiver_1_ecef_velocity_t *in);
+int mip_gnss_receiver_1_ecef_velocity_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_gnss_receiver_1_ecef_velocity_t *out);
+void mip_gnss_receiver_1_dop_to_json(mip_jw_t *w, const mip_gnss_receiver_1_dop_t *in);
+int mip_gnss_receiver_1_dop_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_1_dop_t *out);
+void mip_gnss_receiver_1_utc_time_to_json(mip_jw_t *w, const mip_gnss_receiver_1_utc_time_t *in);
+int mip_gnss_receiver_1_utc_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_1_utc_time_t *out);
+void mip_gnss_receiver_1_gps_time_to_json(mip_jw_t *w, const mip_gnss_receiver_1_gps_time_t *in);
+int mip_gnss_receiver_1_gps_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_1_gps_time_t *out);
+void mip_gnss_receiver_1_fix_info_to_json(mip_jw_t *w, const mip_gnss_receiver_1_fix_info_t *in);
+int mip_gnss_receiver_1_fix_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_1_fix_info_t *out);
+void mip_gnss_receiver_1_hardware_status_to_json(mip_jw_t *w,
+                                                 const mip_gnss_receiver_1_hardware_status_t *in);
+int mip_gnss_receiver_1_hardware_status_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_gnss_receiver_1_hardware_status_t *out);
+void mip_gnss_receiver_1_clock_info_2_to_json(mip_jw_t *w, const mip_gnss_receiver_1_clock_info_2_t *in);
+int mip_gnss_receiver_1_clock_info_2_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_gnss_receiver_1_clock_info_2_t *out);
+void mip_gnss_receiver_1_gps_leap_seconds_to_json(mip_jw_t *w,
+                                                  const mip_gnss_receiver_1_gps_leap_seconds_t *in);
+int mip_gnss_receiver_1_gps_leap_seconds_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_gnss_receiver_1_gps_leap_seconds_t *out);
+void mip_gnss_receiver_1_sbas_info_to_json(mip_jw_t *w, const mip_gnss_receiver_1_sbas_info_t *in);
+int mip_gnss_receiver_1_sbas_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_1_sbas_info_t *out);
+void mip_gnss_receiver_1_satellite_status_to_json(mip_jw_t *w,
+                                                  const mip_gnss_receiver_1_satellite_status_t *in);
+int mip_gnss_receiver_1_satellite_status_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_gnss_receiver_1_satellite_status_t *out);
+void mip_gnss_receiver_1_raw_to_json(mip_jw_t *w, const mip_gnss_receiver_1_raw_t *in);
+int mip_gnss_receiver_1_raw_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_1_raw_t *out);
+void mip_gnss_receiver_1_gps_ephemeris_to_json(mip_jw_t *w, const mip_gnss_receiver_1_gps_ephemeris_t *in);
+int mip_gnss_receiver_1_gps_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_gnss_receiver_1_gps_ephemeris_t *out);
+void mip_gnss_receiver_1_glonass_ephemeris_to_json(mip_jw_t *w,
+                                                   const mip_gnss_receiver_1_glonass_ephemeris_t *in);
+int mip_gnss_receiver_1_glonass_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_gnss_receiver_1_glonass_ephemeris_t *out);
+void mip_gnss_receiver_1_galileo_ephemeris_to_json(mip_jw_t *w,
+                                                   const mip_gnss_receiver_1_galileo_ephemeris_t *in);
+int mip_gnss_receiver_1_galileo_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_gnss_receiver_1_galileo_ephemeris_t *out);
+void mip_gnss_receiver_1_beidou_ephemeris_to_json(mip_jw_t *w,
+                                                  const mip_gnss_receiver_1_beidou_ephemeris_t *in);
+int mip_gnss_receiver_1_beidou_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_gnss_receiver_1_beidou_ephemeris_t *out);
+void mip_gnss_receiver_2_llh_position_to_json(mip_jw_t *w, const mip_gnss_receiver_2_llh_position_t *in);
+int mip_gnss_receiver_2_llh_position_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_gnss_receiver_2_llh_position_t *out);
+void mip_gnss_receiver_2_ecef_position_to_json(mip_jw_t *w, const mip_gnss_receiver_2_ecef_position_t *in);
+int mip_gnss_receiver_2_ecef_position_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_gnss_receiver_2_ecef_position_t *out);
+void mip_gnss_receiver_2_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_receiver_2_ned_velocity_t *in);
+int mip_gnss_receiver_2_ned_velocity_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_gnss_receiver_2_ned_velocity_t *out);
+void mip_gnss_receiver_2_ecef_velocity_to_json(mip_jw_t *w, const mip_gnss_receiver_2_ecef_velocity_t *in);
+int mip_gnss_receiver_2_ecef_velocity_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_gnss_receiver_2_ecef_velocity_t *out);
+void mip_gnss_receiver_2_dop_to_json(mip_jw_t *w, const mip_gnss_receiver_2_dop_t *in);
+int mip_gnss_receiver_2_dop_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_2_dop_t *out);
+void mip_gnss_receiver_2_utc_time_to_json(mip_jw_t *w, const mip_gnss_receiver_2_utc_time_t *in);
+int mip_gnss_receiver_2_utc_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_2_utc_time_t *out);
+void mip_gnss_receiver_2_gps_time_to_json(mip_jw_t *w, const mip_gnss_receiver_2_gps_time_t *in);
+int mip_gnss_receiver_2_gps_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_2_gps_time_t *out);
+void mip_gnss_receiver_2_fix_info_to_json(mip_jw_t *w, const mip_gnss_receiver_2_fix_info_t *in);
+int mip_gnss_receiver_2_fix_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_2_fix_info_t *out);
+void mip_gnss_receiver_2_hardware_status_to_json(mip_jw_t *w,
+                                                 const mip_gnss_receiver_2_hardware_status_t *in);
+int mip_gnss_receiver_2_hardware_status_from_json(mip_jr_t *jr, size_t pos,
+                                                  mip_gnss_receiver_2_hardware_status_t *out);
+void mip_gnss_receiver_2_clock_info_2_to_json(mip_jw_t *w, const mip_gnss_receiver_2_clock_info_2_t *in);
+int mip_gnss_receiver_2_clock_info_2_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_gnss_receiver_2_clock_info_2_t *out);
+void mip_gnss_receiver_2_gps_leap_seconds_to_json(mip_jw_t *w,
+                                                  const mip_gnss_receiver_2_gps_leap_seconds_t *in);
+int mip_gnss_receiver_2_gps_leap_seconds_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_gnss_receiver_2_gps_leap_seconds_t *out);
+void mip_gnss_receiver_2_sbas_info_to_json(mip_jw_t *w, const mip_gnss_receiver_2_sbas_info_t *in);
+int mip_gnss_receiver_2_sbas_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_2_sbas_info_t *out);
+void mip_gnss_receiver_2_satellite_status_to_json(mip_jw_t *w,
+                                                  const mip_gnss_receiver_2_satellite_status_t *in);
+int mip_gnss_receiver_2_satellite_status_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_gnss_receiver_2_satellite_status_t *out);
+void mip_gnss_receiver_2_raw_to_json(mip_jw_t *w, const mip_gnss_receiver_2_raw_t *in);
+int mip_gnss_receiver_2_raw_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_2_raw_t *out);
+void mip_gnss_receiver_2_gps_ephemeris_to_json(mip_jw_t *w, const mip_gnss_receiver_2_gps_ephemeris_t *in);
+int mip_gnss_receiver_2_gps_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                mip_gnss_receiver_2_gps_ephemeris_t *out);
+void mip_gnss_receiver_2_glonass_ephemeris_to_json(mip_jw_t *w,
+                                                   const mip_gnss_receiver_2_glonass_ephemeris_t *in);
+int mip_gnss_receiver_2_glonass_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_gnss_receiver_2_glonass_ephemeris_t *out);
+void mip_gnss_receiver_2_galileo_ephemeris_to_json(mip_jw_t *w,
+                                                   const mip_gnss_receiver_2_galileo_ephemeris_t *in);
+int mip_gnss_receiver_2_galileo_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                    mip_gnss_receiver_2_galileo_ephemeris_t *out);
+void mip_gnss_receiver_2_beidou_ephemeris_to_json(mip_jw_t *w,
+                                                  const mip_gnss_receiver_2_beidou_ephemeris_t *in);
+int mip_gnss_receiver_2_beidou_ephemeris_from_json(mip_jr_t *jr, size_t pos,
+                                                   mip_gnss_receiver_2_beidou_ephemeris_t *out);
+void mip_gnss_corrections_base_station_info_to_json(mip_jw_t *w,
+                                                    const mip_gnss_corrections_base_station_info_t *in);
+int mip_gnss_corrections_base_station_info_from_json(mip_jr_t *jr, size_t pos,
+                                                     mip_gnss_corrections_base_station_info_t *out);
+void mip_gnss_corrections_rtk_corrections_status_to_json(
+    mip_jw_t *w, const mip_gnss_corrections_rtk_corrections_status_t *in);
+int mip_gnss_corrections_rtk_corrections_status_from_json(mip_jr_t *jr, size_t pos,
+                                                          mip_gnss_corrections_rtk_corrections_status_t *out);
+void mip_gnss_external_llh_position_to_json(mip_jw_t *w, const mip_gnss_external_llh_position_t *in);
+int mip_gnss_external_llh_position_from_json(mip_jr_t *jr, size_t pos, mip_gnss_external_llh_position_t *out);
+void mip_gnss_external_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_external_ned_velocity_t *in);
+int mip_gnss_external_ned_velocity_from_json(mip_jr_t *jr, size_t pos, mip_gnss_external_ned_velocity_t *out);
+void mip_gnss_external_utc_time_to_json(mip_jw_t *w, const mip_gnss_external_utc_time_t *in);
+int mip_gnss_external_utc_time_from_json(mip_jr_t *jr, size_t pos, mip_gnss_external_utc_time_t *out);
+void mip_gnss_external_fix_info_to_json(mip_jw_t *w, const mip_gnss_external_fix_info_t *in);
+int mip_gnss_external_fix_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_external_fix_info_t *out);
+void mip_gnss_external_satellite_status_to_json(mip_jw_t *w, const mip_gnss_external_satellite_status_t *in);
+int mip_gnss_external_satellite_status_from_json(mip_jr_t *jr, size_t pos,
+                                                 mip_gnss_external_satellite_status_t *out);
+void mip_system_data_built_in_test_to_json(mip_jw_t *w, const mip_system_data_built_in_test_t *in);
+int mip_system_data_built_in_test_from_json(mip_jr_t *jr, size_t pos, mip_system_data_built_in_test_t *out);
+void mip_system_data_time_sync_status_to_json(mip_jw_t *w, const mip_system_data_time_sync_status_t *in);
+int mip_system_data_time_sync_status_from_json(mip_jr_t *jr, size_t pos,
+                                               mip_system_data_time_sync_status_t *out);
+void mip_system_data_gpio_state_to_json(mip_jw_t *w, const mip_system_data_gpio_state_t *in);
+int mip_system_data_gpio_state_from_json(mip_jr_t *jr, size_t pos, mip_system_data_gpio_state_t *out);
+void mip_shared_event_source_to_json(mip_jw_t *w, const mip_shared_event_source_t *in);
+int mip_shared_event_source_from_json(mip_jr_t *jr, size_t pos, mip_shared_event_source_t *out);
+void mip_shared_gps_timestamp_to_json(mip_jw_t *w, const mip_shared_gps_timestamp_t *in);
+int mip_shared_gps_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_shared_gps_timestamp_t *out);
+void mip_shared_delta_time_to_json(mip_jw_t *w, const mip_shared_delta_time_t *in);
+int mip_shared_delta_time_from_json(mip_jr_t *jr, size_t pos, mip_shared_delta_time_t *out);
+void mip_shared_reference_timestamp_to_json(mip_jw_t *w, const mip_shared_reference_timestamp_t *in);
+int mip_shared_reference_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_shared_reference_timestamp_t *out);
+void mip_shared_reference_time_delta_to_json(mip_jw_t *w, const mip_shared_reference_time_delta_t *in);
+int mip_shared_reference_time_delta_from_json(mip_jr_t *jr, size_t pos,
+                                              mip_shared_reference_time_delta_t *out);
+void mip_shared_external_timestamp_to_json(mip_jw_t *w, const mip_shared_external_timestamp_t *in);
+int mip_shared_external_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_shared_external_timestamp_t *out);
+void mip_shared_external_time_delta_to_json(mip_jw_t *w, const mip_shared_external_time_delta_t *in);
+int mip_shared_external_time_delta_from_json(mip_jr_t *jr, size_t pos, mip_shared_external_time_delta_t *out);
 
 /* The "values" object of a decoded field. */
 void mip_value_to_json(mip_jw_t *w, const mip_field_value_t *value);

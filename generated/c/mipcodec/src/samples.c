@@ -6,8 +6,10 @@
 
 #include "mipcodec/field_iter.h"
 
-static const uint8_t k_data_sets[MIP_SAMPLE_SETS] = {0x80, 0x82};
-#define TIMESTAMPS 0
+static const uint8_t k_data_sets[MIP_SAMPLE_SETS] = {0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0};
+#define TIMESTAMPS 3
+static const uint8_t k_stamp_descriptor[TIMESTAMPS] = {0xD3, 0xD5, 0xD7};
+static const uint8_t k_stamp_size[TIMESTAMPS] = {12, 8, 10};
 
 static bool is_shared(uint8_t descriptor) {
     return descriptor >= 0xD0;
@@ -44,6 +46,7 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     size_t key_len = 0;
     size_t prefix = 0;
     const uint8_t *payload = payload_of(packet, len, &plen);
+    bool seen[TIMESTAMPS] = {false};
     if (shared_prefix) {
         *shared_prefix = 0;
     }
@@ -52,7 +55,18 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     }
     mip_field_iter_init(&it, payload, plen);
     while (mip_field_iter_next(&it, &e) && e.kind == MIP_ENTRY_FIELD && is_shared(e.descriptor)) {
-        (void)key;
+        int t;
+        for (t = 0; t < TIMESTAMPS; t++) {
+            if (k_stamp_descriptor[t] == e.descriptor && k_stamp_size[t] == e.length && !seen[t]) {
+                size_t n = MIP_FIELD_HEADER_SIZE + e.length;
+                seen[t] = true;
+                if (key_len + n <= MIP_SAMPLE_KEY_MAX) {
+                    memcpy(key + key_len, payload + e.offset, n);
+                    key_len += n;
+                }
+                break;
+            }
+        }
         prefix = e.offset + MIP_FIELD_HEADER_SIZE + e.length;
     }
     if (shared_prefix) {

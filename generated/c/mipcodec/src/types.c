@@ -790,6 +790,373 @@ int mip_constellation_settings_from_json(mip_jr_t *jr, size_t pos, mip_constella
     return 0;
 }
 
+/* ---- Cv7ContinuousBit */
+
+int mip_cv7_continuous_bit_read(mip_reader_t *r, mip_cv7_continuous_bit_t *out) {
+    mip_rd_push(r, "system_byte_0");
+    if (mip_rd_u8(r, &out->system_byte_0)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_byte_1");
+    if (mip_rd_u8(r, &out->reserved_byte_1)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "system_byte_2");
+    if (mip_rd_u8(r, &out->system_byte_2)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "system_byte_3");
+    if (mip_rd_u8(r, &out->system_byte_3)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_byte_4");
+    if (mip_rd_u8(r, &out->imu_byte_4)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_byte_5");
+    if (mip_rd_u8(r, &out->imu_byte_5)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_byte_6");
+    if (mip_rd_u8(r, &out->imu_byte_6)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "imu_byte_7");
+    if (mip_rd_u8(r, &out->imu_byte_7)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "nav_byte_8");
+    if (mip_rd_u8(r, &out->nav_byte_8)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_byte_9");
+    if (mip_rd_u8(r, &out->reserved_byte_9)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_byte_10");
+    if (mip_rd_u8(r, &out->reserved_byte_10)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_byte_11");
+    if (mip_rd_u8(r, &out->reserved_byte_11)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_byte_12");
+    if (mip_rd_u8(r, &out->reserved_byte_12)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_byte_13");
+    if (mip_rd_u8(r, &out->gnss_byte_13)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "gnss_byte_14");
+    if (mip_rd_u8(r, &out->gnss_byte_14)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    mip_rd_push(r, "reserved_byte_15");
+    if (mip_rd_u8(r, &out->reserved_byte_15)) {
+        return -1;
+    }
+    mip_rd_pop(r);
+    return 0;
+}
+
+mip_status_t mip_cv7_continuous_bit_write(mip_writer_t *w, const mip_cv7_continuous_bit_t *in) {
+    mip_status_t st;
+    if ((st = mip_wr_u8(w, &in->system_byte_0)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_byte_1)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->system_byte_2)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->system_byte_3)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->imu_byte_4)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->imu_byte_5)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->imu_byte_6)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->imu_byte_7)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->nav_byte_8)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_byte_9)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_byte_10)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_byte_11)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_byte_12)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->gnss_byte_13)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->gnss_byte_14)) != MIP_OK) {
+        return st;
+    }
+    if ((st = mip_wr_u8(w, &in->reserved_byte_15)) != MIP_OK) {
+        return st;
+    }
+    return MIP_OK;
+}
+
+void mip_cv7_continuous_bit_to_json(mip_jw_t *w, const mip_cv7_continuous_bit_t *in) {
+    int first = 1;
+    mip_jw_raw(w, "{", 1);
+    mip_jw_key(w, &first, "system_byte_0");
+    mip_jw_u8(w, &in->system_byte_0);
+    mip_jw_key(w, &first, "reserved_byte_1");
+    mip_jw_u8(w, &in->reserved_byte_1);
+    mip_jw_key(w, &first, "system_byte_2");
+    mip_jw_u8(w, &in->system_byte_2);
+    mip_jw_key(w, &first, "system_byte_3");
+    mip_jw_u8(w, &in->system_byte_3);
+    mip_jw_key(w, &first, "imu_byte_4");
+    mip_jw_u8(w, &in->imu_byte_4);
+    mip_jw_key(w, &first, "imu_byte_5");
+    mip_jw_u8(w, &in->imu_byte_5);
+    mip_jw_key(w, &first, "imu_byte_6");
+    mip_jw_u8(w, &in->imu_byte_6);
+    mip_jw_key(w, &first, "imu_byte_7");
+    mip_jw_u8(w, &in->imu_byte_7);
+    mip_jw_key(w, &first, "nav_byte_8");
+    mip_jw_u8(w, &in->nav_byte_8);
+    mip_jw_key(w, &first, "reserved_byte_9");
+    mip_jw_u8(w, &in->reserved_byte_9);
+    mip_jw_key(w, &first, "reserved_byte_10");
+    mip_jw_u8(w, &in->reserved_byte_10);
+    mip_jw_key(w, &first, "reserved_byte_11");
+    mip_jw_u8(w, &in->reserved_byte_11);
+    mip_jw_key(w, &first, "reserved_byte_12");
+    mip_jw_u8(w, &in->reserved_byte_12);
+    mip_jw_key(w, &first, "gnss_byte_13");
+    mip_jw_u8(w, &in->gnss_byte_13);
+    mip_jw_key(w, &first, "gnss_byte_14");
+    mip_jw_u8(w, &in->gnss_byte_14);
+    mip_jw_key(w, &first, "reserved_byte_15");
+    mip_jw_u8(w, &in->reserved_byte_15);
+    mip_jw_raw(w, "}", 1);
+}
+
+int mip_cv7_continuous_bit_from_json(mip_jr_t *jr, size_t pos, mip_cv7_continuous_bit_t *out) {
+    static const char *const keys[] = {
+        "system_byte_0",    "reserved_byte_1", "system_byte_2",    "system_byte_3",
+        "imu_byte_4",       "imu_byte_5",      "imu_byte_6",       "imu_byte_7",
+        "nav_byte_8",       "reserved_byte_9", "reserved_byte_10", "reserved_byte_11",
+        "reserved_byte_12", "gnss_byte_13",    "gnss_byte_14",     "reserved_byte_15"};
+    size_t vp = 0;
+    int found;
+    if (mip_jr_object(jr, pos, keys, 16)) {
+        return -1;
+    }
+    found = mip_jr_get(jr, pos, "system_byte_0", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_byte_0\"");
+    }
+    {
+        mip_jr_push(jr, "system_byte_0");
+        if (mip_jr_u8(jr, vp, &out->system_byte_0)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_byte_1", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_byte_1\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_byte_1");
+        if (mip_jr_u8(jr, vp, &out->reserved_byte_1)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "system_byte_2", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_byte_2\"");
+    }
+    {
+        mip_jr_push(jr, "system_byte_2");
+        if (mip_jr_u8(jr, vp, &out->system_byte_2)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "system_byte_3", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"system_byte_3\"");
+    }
+    {
+        mip_jr_push(jr, "system_byte_3");
+        if (mip_jr_u8(jr, vp, &out->system_byte_3)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_byte_4", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_byte_4\"");
+    }
+    {
+        mip_jr_push(jr, "imu_byte_4");
+        if (mip_jr_u8(jr, vp, &out->imu_byte_4)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_byte_5", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_byte_5\"");
+    }
+    {
+        mip_jr_push(jr, "imu_byte_5");
+        if (mip_jr_u8(jr, vp, &out->imu_byte_5)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_byte_6", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_byte_6\"");
+    }
+    {
+        mip_jr_push(jr, "imu_byte_6");
+        if (mip_jr_u8(jr, vp, &out->imu_byte_6)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "imu_byte_7", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"imu_byte_7\"");
+    }
+    {
+        mip_jr_push(jr, "imu_byte_7");
+        if (mip_jr_u8(jr, vp, &out->imu_byte_7)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "nav_byte_8", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"nav_byte_8\"");
+    }
+    {
+        mip_jr_push(jr, "nav_byte_8");
+        if (mip_jr_u8(jr, vp, &out->nav_byte_8)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_byte_9", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_byte_9\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_byte_9");
+        if (mip_jr_u8(jr, vp, &out->reserved_byte_9)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_byte_10", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_byte_10\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_byte_10");
+        if (mip_jr_u8(jr, vp, &out->reserved_byte_10)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_byte_11", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_byte_11\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_byte_11");
+        if (mip_jr_u8(jr, vp, &out->reserved_byte_11)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_byte_12", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_byte_12\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_byte_12");
+        if (mip_jr_u8(jr, vp, &out->reserved_byte_12)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_byte_13", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_byte_13\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_byte_13");
+        if (mip_jr_u8(jr, vp, &out->gnss_byte_13)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "gnss_byte_14", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"gnss_byte_14\"");
+    }
+    {
+        mip_jr_push(jr, "gnss_byte_14");
+        if (mip_jr_u8(jr, vp, &out->gnss_byte_14)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    found = mip_jr_get(jr, pos, "reserved_byte_15", &vp);
+    if (found != 1) {
+        return mip_jr_fail(jr, "missing parameter \"reserved_byte_15\"");
+    }
+    {
+        mip_jr_push(jr, "reserved_byte_15");
+        if (mip_jr_u8(jr, vp, &out->reserved_byte_15)) {
+            return -1;
+        }
+        mip_jr_pop(jr);
+    }
+    return 0;
+}
+
 /* ---- DescriptorRate */
 
 int mip_descriptor_rate_read(mip_reader_t *r, mip_descriptor_rate_t *out) {

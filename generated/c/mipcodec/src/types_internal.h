@@ -39,6 +39,10 @@ int mip_constellation_settings_read(mip_reader_t *r, mip_constellation_settings_
 mip_status_t mip_constellation_settings_write(mip_writer_t *w, const mip_constellation_settings_t *in);
 void mip_constellation_settings_to_json(mip_jw_t *w, const mip_constellation_settings_t *in);
 int mip_constellation_settings_from_json(mip_jr_t *jr, size_t pos, mip_constellation_settings_t *out);
+int mip_cv7_continuous_bit_read(mip_reader_t *r, mip_cv7_continuous_bit_t *out);
+mip_status_t mip_cv7_continuous_bit_write(mip_writer_t *w, const mip_cv7_continuous_bit_t *in);
+void mip_cv7_continuous_bit_to_json(mip_jw_t *w, const mip_cv7_continuous_bit_t *in);
+int mip_cv7_continuous_bit_from_json(mip_jr_t *jr, size_t pos, mip_cv7_continuous_bit_t *out);
 int mip_descriptor_rate_read(mip_reader_t *r, mip_descriptor_rate_t *out);
 mip_status_t mip_descriptor_rate_write(mip_writer_t *w, const mip_descriptor_rate_t *in);
 void mip_descriptor_rate_to_json(mip_jw_t *w, const mip_descriptor_rate_t *in);

@@ -2355,7 +2355,10 @@ TEST(Vectors, continuous_bit_reply) {
         {
             "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
             "\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":136,\"name\":\"continuous_bit_"
-            "result\",\"values\":{\"result\":[0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15]}}]}",
+            "result\",\"values\":{\"result\":{\"system_byte_0\":0,\"reserved_byte_1\":1,\"system_byte_2\":2,"
+            "\"system_byte_3\":3,\"imu_byte_4\":4,\"imu_byte_5\":5,\"imu_byte_6\":6,\"imu_byte_7\":7,\"nav_"
+            "byte_8\":8,\"reserved_byte_9\":9,\"reserved_byte_10\":10,\"reserved_byte_11\":11,\"reserved_"
+            "byte_12\":12,\"gnss_byte_13\":13,\"gnss_byte_14\":14,\"reserved_byte_15\":15}}}]}",
         });
 }
 
@@ -5019,6 +5022,429 @@ TEST(Vectors, spartn_configuration_default) {
                  });
 }
 
+// gx5_gnss_llh_ecef_position
+TEST(Vectors, gx5_gnss_llh_ecef_position) {
+    check_vector("7565814c2c034046c00000000000c057500000000000407008000000000040720c00000000003fc000004010000"
+                 "0001f2004c110000200000000c1520000100000004151400008000000406000000003fe78",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":3,\"name\":\"llh_position\","
+                     "\"values\":{\"latitude\":45.5,\"longitude\":-93.25,\"ellipsoid_height\":256.5,\"msl_"
+                     "height\":288.75,\"horizontal_accuracy\":1.5,\"vertical_accuracy\":2.25,\"valid_flags\":"
+                     "31}},{\"descriptor\":4,\"name\":\"ecef_position\",\"values\":{\"position\":[-262144.5,-"
+                     "4718592.25,4521984.125],\"position_accuracy\":3.5,\"valid_flags\":3}}]}",
+                 });
+}
+
+// gx5_gnss_velocity_dop
+TEST(Vectors, gx5_gnss_velocity_dop) {
+    check_vector(
+        "7565815824053fc00000be8000003e0000003fc800003fc0000043af40003e80000040200000001b14063f000000bfa00000"
+        "3f4000003ec00000000120073fe000003fc000003f6000003fa000003f4000003f2000003f000000007f5dd1",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":5,\"name\":\"ned_velocity\",\"values\":{"
+            "\"velocity\":[1.5,-0.25,0.125],\"speed\":1.5625,\"ground_speed\":1.5,\"heading\":350.5,\"speed_"
+            "accuracy\":0.25,\"heading_accuracy\":2.5,\"valid_flags\":27}},{\"descriptor\":6,\"name\":\"ecef_"
+            "velocity\",\"values\":{\"velocity\":[0.5,-1.25,0.75],\"velocity_accuracy\":0.375,\"valid_"
+            "flags\":1}},{\"descriptor\":7,\"name\":\"dop\",\"values\":{\"gdop\":1.75,\"pdop\":1.5,\"hdop\":"
+            "0.875,\"vdop\":1.25,\"tdop\":0.75,\"ndop\":0.625,\"edop\":0.5,\"valid_flags\":127}}]}",
+        });
+}
+
+// gx5_gnss_time_clock
+TEST(Vectors, gx5_gnss_time_clock) {
+    check_vector("756581390f0807e8021d173b3a000002ee00030e09411518020000000008ff00031c0a3f50000000000000bec00"
+                 "000000000003f0000000000000000074207",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":8,\"name\":\"utc_time\","
+                     "\"values\":{\"year\":2024,\"month\":2,\"day\":29,\"hour\":23,\"minute\":59,\"second\":"
+                     "58,\"millisecond\":750,\"valid_flags\":3}},{\"descriptor\":9,\"name\":\"gps_time\","
+                     "\"values\":{\"tow\":345600.5,\"week_number\":2303,\"valid_flags\":3}},{\"descriptor\":"
+                     "10,\"name\":\"clock_info\",\"values\":{\"bias\":0.0009765625,\"drift\":-1."
+                     "9073486328125e-06,\"accuracy_estimate\":3.0517578125e-05,\"valid_flags\":7}}]}",
+                 });
+}
+
+// gx5_gnss_fix_hardware_status
+TEST(Vectors, gx5_gnss_fix_hardware_status) {
+    check_vector("7565810f080b000900010007070d0104010007afa8", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":11,\"name\":\"fix_info\","
+                     "\"values\":{\"fix_type\":0,\"num_sv\":9,\"fix_flags\":1,\"valid_flags\":7}},{"
+                     "\"descriptor\":13,\"name\":\"hardware_status\",\"values\":{\"receiver_state\":1,"
+                     "\"antenna_state\":4,\"antenna_power\":1,\"valid_flags\":7}}]}",
+                 });
+}
+
+// gx5_gnss_fix_time_only_antenna_open
+TEST(Vectors, gx5_gnss_fix_time_only_antenna_open) {
+    check_vector("7565810f080b020100020003070d0203000006a449", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":11,\"name\":\"fix_info\","
+                     "\"values\":{\"fix_type\":2,\"num_sv\":1,\"fix_flags\":2,\"valid_flags\":3}},{"
+                     "\"descriptor\":13,\"name\":\"hardware_status\",\"values\":{\"receiver_state\":2,"
+                     "\"antenna_state\":3,\"antenna_power\":0,\"valid_flags\":6}}]}",
+                 });
+}
+
+// gx5_gnss_sv_info_two_entries
+TEST(Vectors, gx5_gnss_sv_info_two_entries) {
+    check_vector("7565811c0e0c010c002d010e00230003007b0e0c02190020002dfffb0002007b74c7", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":12,\"name\":\"sv_info\","
+                     "\"values\":{\"channel\":1,\"sv_id\":12,\"carrier_to_noise_ratio\":45,\"azimuth\":270,"
+                     "\"elevation\":35,\"sv_flags\":3,\"valid_flags\":123}},{\"descriptor\":12,\"name\":\"sv_"
+                     "info\",\"values\":{\"channel\":2,\"sv_id\":25,\"carrier_to_noise_ratio\":32,"
+                     "\"azimuth\":45,\"elevation\":-5,\"sv_flags\":2,\"valid_flags\":123}}]}",
+                 });
+}
+
+// gx5_gnss_dgnss_info_and_channels
+TEST(Vectors, gx5_gnss_dgnss_info_and_channels) {
+    check_vector("756581300e0e4020000003ff00020002000f110f0c40200000c07000003e000000000f110f19404000004128000"
+                 "0bd80000000078b31",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":14,\"name\":\"dgnss_info\","
+                     "\"values\":{\"newest_age\":2.5,\"base_station_id\":1023,\"base_station_status\":2,"
+                     "\"num_channels\":2,\"valid_flags\":15}},{\"descriptor\":15,\"name\":\"dgnss_channel_"
+                     "status\",\"values\":{\"sv_id\":12,\"age\":2.5,\"pseudorange_correction\":-3.75,"
+                     "\"pseudorange_rate_correction\":0.125,\"valid_flags\":15}},{\"descriptor\":15,\"name\":"
+                     "\"dgnss_channel_status\",\"values\":{\"sv_id\":25,\"age\":3.0,\"pseudorange_"
+                     "correction\":10.5,\"pseudorange_rate_correction\":-0.0625,\"valid_flags\":7}}]}",
+                 });
+}
+
+// gnss_receiver_1_satellite_status_two_fields
+TEST(Vectors, gnss_receiver_1_satellite_status_two_fields) {
+    check_vector("756591361b200102411518020000000008fc010c423600004387200001007f1b200202411518020000000008fc0"
+                 "3074120000042b4400000003fd5ee",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":32,\"name\":\"satellite_status\","
+                     "\"values\":{\"index\":1,\"count\":2,\"tow\":345600.5,\"week_number\":2300,\"gnss_id\":"
+                     "1,\"satellite_id\":12,\"elevation\":45.5,\"azimuth\":270.25,\"health\":true,\"valid_"
+                     "flags\":127}},{\"descriptor\":32,\"name\":\"satellite_status\",\"values\":{\"index\":2,"
+                     "\"count\":2,\"tow\":345600.5,\"week_number\":2300,\"gnss_id\":3,\"satellite_id\":7,"
+                     "\"elevation\":10.0,\"azimuth\":90.125,\"health\":false,\"valid_flags\":63}}]}",
+                 });
+}
+
+// gnss_external_satellite_status
+TEST(Vectors, gnss_external_satellite_status) {
+    check_vector("7565941b1b20010140f518040000000008fd0215427300004334000001007fdf60", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":148,\"fields\":[{\"descriptor\":32,\"name\":\"satellite_status\","
+                     "\"values\":{\"index\":1,\"count\":1,\"tow\":86400.25,\"week_number\":2301,\"gnss_id\":"
+                     "2,\"satellite_id\":21,\"elevation\":60.75,\"azimuth\":180.0,\"health\":true,\"valid_"
+                     "flags\":127}}]}",
+                 });
+}
+
+// gnss_receiver_1_raw
+TEST(Vectors, gnss_receiver_1_raw) {
+    check_vector("7565913f3f220101411518020000000008fc000105010c0d422a0000054174403872000000419a9ac519000000c"
+                 "49a50003f4000003c8000003e00000041480000ffffb219",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":34,\"name\":\"raw\",\"values\":{"
+                     "\"index\":1,\"count\":1,\"tow\":345600.5,\"week_number\":2300,\"receiver_id\":1,"
+                     "\"tracking_channel\":5,\"gnss_id\":1,\"satellite_id\":12,\"signal_id\":13,\"signal_"
+                     "strength\":42.5,\"quality\":5,\"pseudorange\":21234567.125,\"carrier_phase\":111587654."
+                     "25,\"doppler\":-1234.5,\"range_uncert\":0.75,\"phase_uncert\":0.015625,\"doppler_"
+                     "uncert\":0.125,\"lock_time\":12.5,\"valid_flags\":65535}}]}",
+                 });
+}
+
+// gnss_receiver_2_satellite_status_and_raw
+TEST(Vectors, gnss_receiver_2_satellite_status_and_raw) {
+    check_vector(
+        "756592991b200101411fa4000000000008fb041ec020000043b3c00000000e3f220102411fa4000000000008fb0002000103"
+        "0e42190000044174fb18080000000000000000000000440000003fc00000000000003e800000000000005bff3f220202411f"
+        "a4000000000008fb040011041ea9000000000100000000000000000000000000000000000000000000000000000000000000"
+        "0000000000017fe53c",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":32,\"name\":\"satellite_status\","
+            "\"values\":{\"index\":1,\"count\":1,\"tow\":518400.0,\"week_number\":2299,\"gnss_id\":4,"
+            "\"satellite_id\":30,\"elevation\":-2.5,\"azimuth\":359.5,\"health\":false,\"valid_flags\":14}},{"
+            "\"descriptor\":34,\"name\":\"raw\",\"values\":{\"index\":1,\"count\":2,\"tow\":518400.0,\"week_"
+            "number\":2299,\"receiver_id\":2,\"tracking_channel\":0,\"gnss_id\":1,\"satellite_id\":3,"
+            "\"signal_id\":14,\"signal_strength\":38.25,\"quality\":4,\"pseudorange\":22000000.5,\"carrier_"
+            "phase\":0.0,\"doppler\":512.0,\"range_uncert\":1.5,\"phase_uncert\":0.0,\"doppler_uncert\":0.25,"
+            "\"lock_time\":0.0,\"valid_flags\":23551}},{\"descriptor\":34,\"name\":\"raw\",\"values\":{"
+            "\"index\":2,\"count\":2,\"tow\":518400.0,\"week_number\":2299,\"receiver_id\":1024,\"tracking_"
+            "channel\":17,\"gnss_id\":4,\"satellite_id\":30,\"signal_id\":169,\"signal_strength\":0.0,"
+            "\"quality\":1,\"pseudorange\":0.0,\"carrier_phase\":0.0,\"doppler\":0.0,\"range_uncert\":0.0,"
+            "\"phase_uncert\":0.0,\"doppler_uncert\":0.0,\"lock_time\":0.0,\"valid_flags\":383}}]}",
+        });
+}
+
+// gnss_receiver_1_gps_ephemeris
+TEST(Vectors, gnss_receiver_1_gps_ephemeris) {
+    check_vector(
+        "756591dcdc610101411518000000000008fc05002d2d4115888000000000bf20000000000000bec000000000000000000000"
+        "00000000beb000000000000000000000000000003ea000000000000041158880000000004179546008000000000000000000"
+        "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
+        "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
+        "0000000000004067700000000000c0344000000000000003a155",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":97,\"name\":\"gps_ephemeris\",\"values\":{"
+            "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":5,\"health\":0,"
+            "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
+            "\"af2\":0.0,\"t_gd\":-9.5367431640625e-07,\"isc_l1ca\":0.0,\"isc_l2c\":4.76837158203125e-07,\"t_"
+            "oe\":352800.0,\"a\":26560000.5,\"a_dot\":0.0,\"mean_anomaly\":1.25,\"delta_mean_motion\":3."
+            "814697265625e-06,\"delta_mean_motion_dot\":0.0,\"eccentricity\":0.0078125,\"argument_of_"
+            "perigee\":-1.5,\"omega\":2.75,\"omega_dot\":-7.62939453125e-06,\"inclination\":0.96875,"
+            "\"inclination_dot\":2.384185791015625e-07,\"c_ic\":1.430511474609375e-06,\"c_is\":-2."
+            "86102294921875e-06,\"c_uc\":3.0517578125e-05,\"c_us\":-6.103515625e-05,\"c_rc\":187.5,\"c_rs\":-"
+            "20.25,\"valid_flags\":3}}]}",
+        });
+}
+
+// gnss_receiver_1_glonass_ephemeris
+TEST(Vectors, gnss_receiver_1_glonass_ephemeris) {
+    check_vector("7565916868620101411518000000000008fc03fc0000a8c00000ac4401be90000000000000bf100000000000004"
+                 "1678c29d0000000c162d687e800000041721eac00000000449a5000c52be400440008000000000035800000b600"
+                 "00000001c8b580000002001e010101000173f2",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":98,\"name\":\"glonass_"
+                     "ephemeris\",\"values\":{\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,"
+                     "\"satellite_id\":3,\"freq_number\":-4,\"tk\":43200,\"tb\":44100,\"sat_type\":1,"
+                     "\"gamma\":-2.384185791015625e-07,\"tau_n\":-6.103515625e-05,\"x\":[12345678.5,-9876543."
+                     "25,19000000.0],\"v\":[1234.5,-2750.25,512.125],\"a\":[0.0,9.5367431640625e-07,-1."
+                     "9073486328125e-06],\"health\":0,\"p\":1,\"nt\":200,\"delta_tau_n\":-9.5367431640625e-"
+                     "07,\"ft\":2,\"en\":0,\"p1\":30,\"p2\":1,\"p3\":1,\"p4\":1,\"valid_flags\":1}}]}",
+                 });
+}
+
+// gnss_receiver_1_galileo_ephemeris
+TEST(Vectors, gnss_receiver_1_galileo_ephemeris) {
+    check_vector(
+        "756591dcdc630101411518000000000008fc13002d2d4115888000000000bf20000000000000bec000000000000000000000"
+        "00000000beb000000000000000000000000000003ea000000000000041158880000000004179546008000000000000000000"
+        "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
+        "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
+        "0000000000004067700000000000c0344000000000000001af4d",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":99,\"name\":\"galileo_ephemeris\","
+            "\"values\":{\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":19,"
+            "\"health\":0,\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1."
+            "9073486328125e-06,\"af2\":0.0,\"t_gd\":-9.5367431640625e-07,\"isc_l1ca\":0.0,\"isc_l2c\":4."
+            "76837158203125e-07,\"t_oe\":352800.0,\"a\":26560000.5,\"a_dot\":0.0,\"mean_anomaly\":1.25,"
+            "\"delta_mean_motion\":3.814697265625e-06,\"delta_mean_motion_dot\":0.0,\"eccentricity\":0."
+            "0078125,\"argument_of_perigee\":-1.5,\"omega\":2.75,\"omega_dot\":-7.62939453125e-06,"
+            "\"inclination\":0.96875,\"inclination_dot\":2.384185791015625e-07,\"c_ic\":1.430511474609375e-"
+            "06,\"c_is\":-2.86102294921875e-06,\"c_uc\":3.0517578125e-05,\"c_us\":-6.103515625e-05,\"c_rc\":"
+            "187.5,\"c_rs\":-20.25,\"valid_flags\":1}}]}",
+        });
+}
+
+// gnss_receiver_1_beidou_ephemeris
+TEST(Vectors, gnss_receiver_1_beidou_ephemeris) {
+    check_vector(
+        "756591dcdc640101411518000000000008fc08002d2d4115888000000000bf20000000000000bec000000000000000000000"
+        "00000000beb000000000000000000000000000003ea000000000000041158880000000004179546008000000000000000000"
+        "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
+        "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
+        "0000000000004067700000000000c0344000000000000007ab54",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":100,\"name\":\"beidou_ephemeris\","
+            "\"values\":{\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":8,"
+            "\"health\":0,\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1."
+            "9073486328125e-06,\"af2\":0.0,\"t_gd\":-9.5367431640625e-07,\"isc_l1ca\":0.0,\"isc_l2c\":4."
+            "76837158203125e-07,\"t_oe\":352800.0,\"a\":26560000.5,\"a_dot\":0.0,\"mean_anomaly\":1.25,"
+            "\"delta_mean_motion\":3.814697265625e-06,\"delta_mean_motion_dot\":0.0,\"eccentricity\":0."
+            "0078125,\"argument_of_perigee\":-1.5,\"omega\":2.75,\"omega_dot\":-7.62939453125e-06,"
+            "\"inclination\":0.96875,\"inclination_dot\":2.384185791015625e-07,\"c_ic\":1.430511474609375e-"
+            "06,\"c_is\":-2.86102294921875e-06,\"c_uc\":3.0517578125e-05,\"c_us\":-6.103515625e-05,\"c_rc\":"
+            "187.5,\"c_rs\":-20.25,\"valid_flags\":7}}]}",
+        });
+}
+
+// gnss_receiver_2_gps_ephemeris
+TEST(Vectors, gnss_receiver_2_gps_ephemeris) {
+    check_vector(
+        "756592dcdc610101411518000000000008fc09002d2d4115888000000000bf20000000000000bec000000000000000000000"
+        "00000000beb000000000000000000000000000003ea000000000000041158880000000004179546008000000000000000000"
+        "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
+        "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
+        "0000000000004067700000000000c0344000000000000007aa6f",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":97,\"name\":\"gps_ephemeris\",\"values\":{"
+            "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":9,\"health\":0,"
+            "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
+            "\"af2\":0.0,\"t_gd\":-9.5367431640625e-07,\"isc_l1ca\":0.0,\"isc_l2c\":4.76837158203125e-07,\"t_"
+            "oe\":352800.0,\"a\":26560000.5,\"a_dot\":0.0,\"mean_anomaly\":1.25,\"delta_mean_motion\":3."
+            "814697265625e-06,\"delta_mean_motion_dot\":0.0,\"eccentricity\":0.0078125,\"argument_of_"
+            "perigee\":-1.5,\"omega\":2.75,\"omega_dot\":-7.62939453125e-06,\"inclination\":0.96875,"
+            "\"inclination_dot\":2.384185791015625e-07,\"c_ic\":1.430511474609375e-06,\"c_is\":-2."
+            "86102294921875e-06,\"c_uc\":3.0517578125e-05,\"c_us\":-6.103515625e-05,\"c_rc\":187.5,\"c_rs\":-"
+            "20.25,\"valid_flags\":7}}]}",
+        });
+}
+
+// gnss_receiver_2_glonass_ephemeris
+TEST(Vectors, gnss_receiver_2_glonass_ephemeris) {
+    check_vector("7565926868620101411518000000000008fc04fc0000a8c00000ac4401be90000000000000bf100000000000004"
+                 "1678c29d0000000c162d687e800000041721eac00000000449a5000c52be400440008000000000035800000b600"
+                 "00000001c8b580000002001e010101000175b6",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":98,\"name\":\"glonass_"
+                     "ephemeris\",\"values\":{\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,"
+                     "\"satellite_id\":4,\"freq_number\":-4,\"tk\":43200,\"tb\":44100,\"sat_type\":1,"
+                     "\"gamma\":-2.384185791015625e-07,\"tau_n\":-6.103515625e-05,\"x\":[12345678.5,-9876543."
+                     "25,19000000.0],\"v\":[1234.5,-2750.25,512.125],\"a\":[0.0,9.5367431640625e-07,-1."
+                     "9073486328125e-06],\"health\":0,\"p\":1,\"nt\":200,\"delta_tau_n\":-9.5367431640625e-"
+                     "07,\"ft\":2,\"en\":0,\"p1\":30,\"p2\":1,\"p3\":1,\"p4\":1,\"valid_flags\":1}}]}",
+                 });
+}
+
+// gnss_receiver_2_galileo_ephemeris
+TEST(Vectors, gnss_receiver_2_galileo_ephemeris) {
+    check_vector(
+        "756592dcdc630101411518000000000008fc0b002d2d4115888000000000bf20000000000000bec000000000000000000000"
+        "00000000beb000000000000000000000000000003ea000000000000041158880000000004179546008000000000000000000"
+        "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
+        "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
+        "0000000000004067700000000000c0344000000000000005acbf",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":99,\"name\":\"galileo_ephemeris\","
+            "\"values\":{\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":11,"
+            "\"health\":0,\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1."
+            "9073486328125e-06,\"af2\":0.0,\"t_gd\":-9.5367431640625e-07,\"isc_l1ca\":0.0,\"isc_l2c\":4."
+            "76837158203125e-07,\"t_oe\":352800.0,\"a\":26560000.5,\"a_dot\":0.0,\"mean_anomaly\":1.25,"
+            "\"delta_mean_motion\":3.814697265625e-06,\"delta_mean_motion_dot\":0.0,\"eccentricity\":0."
+            "0078125,\"argument_of_perigee\":-1.5,\"omega\":2.75,\"omega_dot\":-7.62939453125e-06,"
+            "\"inclination\":0.96875,\"inclination_dot\":2.384185791015625e-07,\"c_ic\":1.430511474609375e-"
+            "06,\"c_is\":-2.86102294921875e-06,\"c_uc\":3.0517578125e-05,\"c_us\":-6.103515625e-05,\"c_rc\":"
+            "187.5,\"c_rs\":-20.25,\"valid_flags\":5}}]}",
+        });
+}
+
+// gnss_receiver_2_beidou_ephemeris
+TEST(Vectors, gnss_receiver_2_beidou_ephemeris) {
+    check_vector(
+        "756592dcdc640101411518000000000008fc1b002d2d4115888000000000bf20000000000000bec000000000000000000000"
+        "00000000beb000000000000000000000000000003ea000000000000041158880000000004179546008000000000000000000"
+        "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
+        "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
+        "0000000000004067700000000000c0344000000000000000b875",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":100,\"name\":\"beidou_ephemeris\","
+            "\"values\":{\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":27,"
+            "\"health\":0,\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1."
+            "9073486328125e-06,\"af2\":0.0,\"t_gd\":-9.5367431640625e-07,\"isc_l1ca\":0.0,\"isc_l2c\":4."
+            "76837158203125e-07,\"t_oe\":352800.0,\"a\":26560000.5,\"a_dot\":0.0,\"mean_anomaly\":1.25,"
+            "\"delta_mean_motion\":3.814697265625e-06,\"delta_mean_motion_dot\":0.0,\"eccentricity\":0."
+            "0078125,\"argument_of_perigee\":-1.5,\"omega\":2.75,\"omega_dot\":-7.62939453125e-06,"
+            "\"inclination\":0.96875,\"inclination_dot\":2.384185791015625e-07,\"c_ic\":1.430511474609375e-"
+            "06,\"c_is\":-2.86102294921875e-06,\"c_uc\":3.0517578125e-05,\"c_us\":-6.103515625e-05,\"c_rc\":"
+            "187.5,\"c_rs\":-20.25,\"valid_flags\":0}}]}",
+        });
+}
+
+// cv7_gnss_receiver_1_position_velocity
+TEST(Vectors, cv7_gnss_receiver_1_position_velocity) {
+    check_vector(
+        "756591842c034046200000000000c052480000000000405c20000000000040622800000000003f4000003fa00000001f2004"
+        "4134f80080000000c150ed00300000004150ec40100000003fc0000000032405c02000003f00000000000000402000004020"
+        "00004328c0003e00000040800000003f14063f800000c00000003e8000003e0000000003374f",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":3,\"name\":\"llh_position\",\"values\":{"
+            "\"latitude\":44.25,\"longitude\":-73.125,\"ellipsoid_height\":112.5,\"msl_height\":145.25,"
+            "\"horizontal_accuracy\":0.75,\"vertical_accuracy\":1.25,\"valid_flags\":31}},{\"descriptor\":4,"
+            "\"name\":\"ecef_position\",\"values\":{\"position\":[1374208.5,-4436992.75,4436224.25],"
+            "\"position_accuracy\":1.5,\"valid_flags\":3}},{\"descriptor\":5,\"name\":\"ned_velocity\","
+            "\"values\":{\"velocity\":[-2.5,0.5,0.0],\"speed\":2.5,\"ground_speed\":2.5,\"heading\":168.75,"
+            "\"speed_accuracy\":0.125,\"heading_accuracy\":4.0,\"valid_flags\":63}},{\"descriptor\":6,"
+            "\"name\":\"ecef_velocity\",\"values\":{\"velocity\":[1.0,-2.0,0.25],\"velocity_accuracy\":0.125,"
+            "\"valid_flags\":3}}]}",
+        });
+}
+
+// cv7_gnss_receiver_2_dop_time_fix_status
+TEST(Vectors, cv7_gnss_receiver_2_dop_time_fix_status) {
+    check_vector(
+        "7565924c200740100000400000003f9000003fe000003f8000003f4000003f600000000f0f0807e90c1f0000010000007d00"
+        "030e094115184880000000095f0003080b061500020007070d01020200070b4c",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":7,\"name\":\"dop\",\"values\":{\"gdop\":2."
+            "25,\"pdop\":2.0,\"hdop\":1.125,\"vdop\":1.75,\"tdop\":1.0,\"ndop\":0.75,\"edop\":0.875,\"valid_"
+            "flags\":15}},{\"descriptor\":8,\"name\":\"utc_time\",\"values\":{\"year\":2025,\"month\":12,"
+            "\"day\":31,\"hour\":0,\"minute\":0,\"second\":1,\"millisecond\":125,\"valid_flags\":3}},{"
+            "\"descriptor\":9,\"name\":\"gps_time\",\"values\":{\"tow\":345618.125,\"week_number\":2399,"
+            "\"valid_flags\":3}},{\"descriptor\":11,\"name\":\"fix_info\",\"values\":{\"fix_type\":6,\"num_"
+            "sv\":21,\"fix_flags\":2,\"valid_flags\":7}},{\"descriptor\":13,\"name\":\"hardware_status\","
+            "\"values\":{\"receiver_state\":1,\"antenna_state\":2,\"antenna_power\":2,\"valid_flags\":7}}]}",
+        });
+}
+
+// cv7_gnss_receiver_1_clock_leap_sbas
+TEST(Vectors, cv7_gnss_receiver_1_clock_leap_sbas) {
+    check_vector(
+        "7565913b2410bf200000000000003ea00000000000003ef00000000000003eb0000000000000000f05111200021212411518"
+        "010000000008ff027b0707003f508a",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":16,\"name\":\"clock_info_2\",\"values\":{"
+            "\"bias\":-0.0001220703125,\"drift\":4.76837158203125e-07,\"bias_accuracy_estimate\":1."
+            "52587890625e-05,\"drift_accuracy_estimate\":9.5367431640625e-07,\"valid_flags\":15}},{"
+            "\"descriptor\":17,\"name\":\"gps_leap_seconds\",\"values\":{\"leap_seconds\":18,\"valid_flags\":"
+            "2}},{\"descriptor\":18,\"name\":\"sbas_info\",\"values\":{\"tow\":345600.25,\"week_number\":"
+            "2303,\"sbas_system\":2,\"sbas_id\":123,\"count\":7,\"sbas_status\":7,\"valid_flags\":63}}]}",
+        });
+}
+
+// cv7_gnss_external_nmea_fields
+TEST(Vectors, cv7_gnss_external_nmea_fields) {
+    check_vector("756594672c03c040f000000000004062e80000000000404e4000000000004043000000000000000000000000000"
+                 "000072405000000000000000000000000000000004090000042b400000000000000000000000c0f0807e9060f0c"
+                 "1e2d000001f40001080b070b00020007685e",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":148,\"fields\":[{\"descriptor\":3,\"name\":\"llh_position\","
+                     "\"values\":{\"latitude\":-33.875,\"longitude\":151.25,\"ellipsoid_height\":60.5,\"msl_"
+                     "height\":38.0,\"horizontal_accuracy\":0.0,\"vertical_accuracy\":0.0,\"valid_flags\":7}}"
+                     ",{\"descriptor\":5,\"name\":\"ned_velocity\",\"values\":{\"velocity\":[0.0,0.0,0.0],"
+                     "\"speed\":0.0,\"ground_speed\":4.5,\"heading\":90.0,\"speed_accuracy\":0.0,\"heading_"
+                     "accuracy\":0.0,\"valid_flags\":12}},{\"descriptor\":8,\"name\":\"utc_time\",\"values\":"
+                     "{\"year\":2025,\"month\":6,\"day\":15,\"hour\":12,\"minute\":30,\"second\":45,"
+                     "\"millisecond\":500,\"valid_flags\":1}},{\"descriptor\":11,\"name\":\"fix_info\","
+                     "\"values\":{\"fix_type\":7,\"num_sv\":11,\"fix_flags\":2,\"valid_flags\":7}}]}",
+                 });
+}
+
+// cv7_gnss_corrections_base_station_rtk_status
+TEST(Vectors, cv7_gnss_corrections_base_station_rtk_status) {
+    check_vector(
+        "756593622e30411517fc0000000008ffc133a8ce80000000c152030830000000414f1e10a00000003fc000000fff0057003f"
+        "3431411518000000000008ff014d000000003f0000003f4000003fa000004000000000000000000000000000000000000000"
+        "00f7d2df",
+        nullptr, false,
+        {
+            "{\"offset\":0,\"set\":147,\"fields\":[{\"descriptor\":48,\"name\":\"base_station_info\","
+            "\"values\":{\"tow\":345599.0,\"week_number\":2303,\"ecef_position\":[-1288398.5,-4721696.75,"
+            "4078625.25],\"height\":1.5,\"station_id\":4095,\"indicators\":87,\"valid_flags\":63}},{"
+            "\"descriptor\":49,\"name\":\"rtk_corrections_status\",\"values\":{\"tow\":345600.0,\"week_"
+            "number\":2303,\"epoch_status\":333,\"dongle_status\":0,\"gps_correction_latency\":0.5,\"glonass_"
+            "correction_latency\":0.75,\"galileo_correction_latency\":1.25,\"beidou_correction_latency\":2.0,"
+            "\"reserved\":[0,0,0,0],\"valid_flags\":247}}]}",
+        });
+}
+
 // overview_field_descriptor_0x03
 TEST(Vectors, overview_field_descriptor_0x03) {
     check_vector("7565800e0e033e7a63a0bb8e3b297fe5bf7f83e1", nullptr, false,
@@ -5117,6 +5543,171 @@ TEST(Vectors, accel_gyro_mag_typical) {
             "\"scaled_accel\":[1.0,-0.5,0.0]}},{\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{"
             "\"scaled_gyro\":[0.25,0.0010000000474974513,-2.0]}},{\"descriptor\":6,\"name\":\"scaled_mag\","
             "\"values\":{\"scaled_mag\":[0.5,0.125,-0.375]}}]}",
+        });
+}
+
+// cf_euler_poll_reply
+TEST(Vectors, cf_euler_poll_reply) {
+    check_vector("7565800e0e0cbae3ed9b3c7d6ddfbf855cf541bb", "gx5_45", false,
+                 {
+                     "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":12,\"name\":\"cf_euler_angles\","
+                     "\"values\":{\"roll\":-0.001738953753374517,\"pitch\":0.01546808984130621,\"yaw\":-1."
+                     "04189932346344}}]}",
+                 });
+}
+
+// delta_theta_delta_velocity
+TEST(Vectors, delta_theta_delta_velocity) {
+    check_vector("7565801c0e073f000000be8000003e0000000e083d800000bfc0000040000000d8a2", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":7,\"name\":\"delta_theta\","
+                     "\"values\":{\"delta_theta\":[0.5,-0.25,0.125]}},{\"descriptor\":8,\"name\":\"delta_"
+                     "velocity\",\"values\":{\"delta_velocity\":[0.0625,-1.5,2.0]}}]}",
+                 });
+}
+
+// cf_orientation_matrix_and_quaternion
+TEST(Vectors, cf_orientation_matrix_and_quaternion) {
+    check_vector("756580382609000000003f80000000000000bf800000000000000000000000000000000000003f800000120a3f0"
+                 "000003f000000bf0000003f00000016be",
+                 nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":9,\"name\":\"cf_orientation_"
+                     "matrix\",\"values\":{\"m\":[0.0,1.0,0.0,-1.0,0.0,0.0,0.0,0.0,1.0]}},{\"descriptor\":10,"
+                     "\"name\":\"cf_quaternion\",\"values\":{\"q\":[0.5,0.5,-0.5,0.5]}}]}",
+                 });
+}
+
+// cf_euler_stabilized_north_up
+TEST(Vectors, cf_euler_stabilized_north_up) {
+    check_vector(
+        "7565802a0e0c3e800000be000000404000000e103e800000000000003f0000000e110000000000000000bf8000001344",
+        "gx5_45", false,
+        {
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":12,\"name\":\"cf_euler_angles\","
+            "\"values\":{\"roll\":0.25,\"pitch\":-0.125,\"yaw\":3.0}},{\"descriptor\":16,\"name\":\"cf_"
+            "stabilized_north\",\"values\":{\"stabilized_north\":[0.25,0.0,0.5]}},{\"descriptor\":17,"
+            "\"name\":\"cf_stabilized_up\",\"values\":{\"stabilized_up\":[0.0,0.0,-1.0]}}]}",
+        });
+}
+
+// imu_format_example_data_packet
+TEST(Vectors, imu_format_example_data_packet) {
+    check_vector(
+        "7565802a0e1241086a0200000000080000050e040000000000000000bf8000000e053b00000000000000bf000000c4a1",
+        "gx5_45", false,
+        {
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":18,\"name\":\"gps_timestamp\",\"values\":{"
+            "\"tow\":200000.25,\"week_number\":2048,\"valid_flags\":5}},{\"descriptor\":4,\"name\":\"scaled_"
+            "accel\",\"values\":{\"scaled_accel\":[0.0,0.0,-1.0]}},{\"descriptor\":5,\"name\":\"scaled_"
+            "gyro\",\"values\":{\"scaled_gyro\":[0.001953125,0.0,-0.5]}}]}",
+        });
+}
+
+// gps_timestamp_cv7_all_flags
+TEST(Vectors, gps_timestamp_cv7_all_flags) {
+    check_vector("7565800e0e12411a5e000000000008fc001f6478", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":18,\"name\":\"gps_timestamp\","
+                     "\"values\":{\"tow\":432000.0,\"week_number\":2300,\"valid_flags\":31}}]}",
+                 });
+}
+
+// temperature_pressure_overrange_odometer
+TEST(Vectors, temperature_pressure_overrange_odometer) {
+    check_vector(
+        "756580240e1441a400004235000041f900000617447d5000041812140c40c02000003d80000000019026", "cv7_ins",
+        false,
+        {
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":20,\"name\":\"temperature_statistics\","
+            "\"values\":{\"min_temp\":20.5,\"max_temp\":45.25,\"mean_temp\":31.125}},{\"descriptor\":23,"
+            "\"name\":\"scaled_pressure\",\"values\":{\"scaled_pressure\":1013.25}},{\"descriptor\":24,"
+            "\"name\":\"overrange_status\",\"values\":{\"status\":4628}},{\"descriptor\":64,\"name\":"
+            "\"odometer_data\",\"values\":{\"speed\":-2.5,\"uncertainty\":0.0625,\"valid_flags\":1}}]}",
+        });
+}
+
+// event_source_reference_time_delta_theta_velocity
+TEST(Vectors, event_source_reference_time_delta_theta_velocity) {
+    check_vector("7565803303d0020ad50000011f71fb04cb0ad60000000000fe502b0e073a80000000000000bf0000000e0800000"
+                 "0003c800000bd8000009210",
+                 "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\","
+                     "\"values\":{\"trigger_id\":2}},{\"descriptor\":213,\"name\":\"reference_timestamp\","
+                     "\"values\":{\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_"
+                     "time_delta\",\"values\":{\"dt_nanos\":16666667}},{\"descriptor\":7,\"name\":\"delta_"
+                     "theta\",\"values\":{\"delta_theta\":[0.0009765625,0.0,-0.5]}},{\"descriptor\":8,"
+                     "\"name\":\"delta_velocity\",\"values\":{\"delta_velocity\":[0.0,0.015625,-0.0625]}}]}",
+                 });
+}
+
+// shared_gps_timestamp_delta_time
+TEST(Vectors, shared_gps_timestamp_delta_time) {
+    check_vector("756580180ed340f5180200000000092900030ad43f900000000000008423", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\","
+                     "\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":"
+                     "212,\"name\":\"delta_time\",\"values\":{\"seconds\":0.015625}}]}",
+                 });
+}
+
+// external_time_in_system_set
+TEST(Vectors, external_time_in_system_set) {
+    check_vector(
+        "7565a01f0cd717979cfe362a000000010cd800000000000f4240000104020100030305ad9f", "cv7_ins", false,
+        {
+            "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":215,\"name\":\"external_timestamp\","
+            "\"values\":{\"nanoseconds\":1700000000000000000,\"valid_flags\":1}},{\"descriptor\":216,"
+            "\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":1000000,\"valid_flags\":1}},{"
+            "\"descriptor\":2,\"name\":\"time_sync_status\",\"values\":{\"time_sync\":true,\"last_pps_rcvd\":"
+            "0}},{\"descriptor\":3,\"name\":\"gpio_state\",\"values\":{\"states\":5}}]}",
+        });
+}
+
+// continuation_packets_share_timestamps
+TEST(Vectors, continuation_packets_share_timestamps) {
+    check_vector(
+        "756580f903d0000ed340f5180200000000092900030ad43f900000000000000ad50000011f71fb04cb0ad60000000000ee6b"
+        "280cd713aef6e5f153594000010cd80000000000ee6b2800010e040000000000000000bf8000000e053b00000000000000bf"
+        "0000000e063f0000003e000000bec000000e073f000000be8000003e0000000e083d800000bfc000004000000026093f8000"
+        "000000000000000000000000003f8000000000000000000000000000003f800000120a3f8000000000000000000000000000"
+        "000e0c3e800000be000000404000000e1240f51802000000000929001f0e1441a400004235000041f900000617447d500004"
+        "180000846b7565805303d0000ed340f5180200000000092900030ad43f900000000000000ad50000011f71fb04cb0ad60000"
+        "000000ee6b280cd713aef6e5f153594000010cd80000000000ee6b2800010c40c02000003d8000000001da22",
+        "cv7_ins", false,
+        {
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{"
+            "\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,"
+            "\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":"
+            "{\"seconds\":0.015625}},{\"descriptor\":213,\"name\":\"reference_timestamp\",\"values\":{"
+            "\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_time_delta\","
+            "\"values\":{\"dt_nanos\":15625000}},{\"descriptor\":215,\"name\":\"external_timestamp\","
+            "\"values\":{\"nanoseconds\":1418342400125000000,\"valid_flags\":1}},{\"descriptor\":216,"
+            "\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":15625000,\"valid_flags\":1}},{"
+            "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[0.0,0.0,-1.0]}},{"
+            "\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{\"scaled_gyro\":[0.001953125,0.0,-0.5]}},{"
+            "\"descriptor\":6,\"name\":\"scaled_mag\",\"values\":{\"scaled_mag\":[0.5,0.125,-0.375]}},{"
+            "\"descriptor\":7,\"name\":\"delta_theta\",\"values\":{\"delta_theta\":[0.5,-0.25,0.125]}},{"
+            "\"descriptor\":8,\"name\":\"delta_velocity\",\"values\":{\"delta_velocity\":[0.0625,-1.5,2.0]}},"
+            "{\"descriptor\":9,\"name\":\"cf_orientation_matrix\",\"values\":{\"m\":[1.0,0.0,0.0,0.0,1.0,0.0,"
+            "0.0,0.0,1.0]}},{\"descriptor\":10,\"name\":\"cf_quaternion\",\"values\":{\"q\":[1.0,0.0,0.0,0.0]"
+            "}},{\"descriptor\":12,\"name\":\"cf_euler_angles\",\"values\":{\"roll\":0.25,\"pitch\":-0.125,"
+            "\"yaw\":3.0}},{\"descriptor\":18,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,"
+            "\"week_number\":2345,\"valid_flags\":31}},{\"descriptor\":20,\"name\":\"temperature_"
+            "statistics\",\"values\":{\"min_temp\":20.5,\"max_temp\":45.25,\"mean_temp\":31.125}},{"
+            "\"descriptor\":23,\"name\":\"scaled_pressure\",\"values\":{\"scaled_pressure\":1013.25}},{"
+            "\"descriptor\":24,\"name\":\"overrange_status\",\"values\":{\"status\":0}}]}",
+            "{\"offset\":255,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\","
+            "\"values\":{\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{"
+            "\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_"
+            "time\",\"values\":{\"seconds\":0.015625}},{\"descriptor\":213,\"name\":\"reference_timestamp\","
+            "\"values\":{\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_time_"
+            "delta\",\"values\":{\"dt_nanos\":15625000}},{\"descriptor\":215,\"name\":\"external_timestamp\","
+            "\"values\":{\"nanoseconds\":1418342400125000000,\"valid_flags\":1}},{\"descriptor\":216,"
+            "\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":15625000,\"valid_flags\":1}},{"
+            "\"descriptor\":64,\"name\":\"odometer_data\",\"values\":{\"speed\":-2.5,\"uncertainty\":0.0625,"
+            "\"valid_flags\":1}}]}",
         });
 }
 
@@ -5322,5 +5913,28 @@ TEST(Vectors, communication_mode_nack_command_failed) {
                  {
                      "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
                      "\"values\":{\"command_descriptor\":16,\"ack_code\":4}}]}",
+                 });
+}
+
+// streaming_built_in_test
+TEST(Vectors, streaming_built_in_test) {
+    check_vector(
+        "7565a01212012200f804422041010400000000500200b785", "cv7_ins", false,
+        {
+            "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":1,\"name\":\"built_in_test\",\"values\":{"
+            "\"result\":{\"system_byte_0\":34,\"reserved_byte_1\":0,\"system_byte_2\":248,\"system_byte_3\":"
+            "4,\"imu_byte_4\":66,\"imu_byte_5\":32,\"imu_byte_6\":65,\"imu_byte_7\":1,\"nav_byte_8\":4,"
+            "\"reserved_byte_9\":0,\"reserved_byte_10\":0,\"reserved_byte_11\":0,\"reserved_byte_12\":0,"
+            "\"gnss_byte_13\":80,\"gnss_byte_14\":2,\"reserved_byte_15\":0}}}]}",
+        });
+}
+
+// time_sync_lost_gpio_low
+TEST(Vectors, time_sync_lost_gpio_low) {
+    check_vector("7565a007040200ff0303008c04", "cv7_ins", false,
+                 {
+                     "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":2,\"name\":\"time_sync_status\","
+                     "\"values\":{\"time_sync\":false,\"last_pps_rcvd\":255}},{\"descriptor\":3,\"name\":"
+                     "\"gpio_state\",\"values\":{\"states\":0}}]}",
                  });
 }

@@ -1,6 +1,6 @@
 """MicroStrain MIP: typed encoder/decoder generated from the protocol spec.
 
-Modules: one per descriptor set (base, threedm, filter, gnss, aiding, system, sensor, filter_data) holding a
+Modules: one per descriptor set (base, threedm, filter, gnss, aiding, system, sensor, gnss_data, filter_data, gnss_receiver_1, gnss_receiver_2, gnss_corrections, gnss_external, system_data, shared) holding a
 dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);
 `reserved` (fields reserved in every set of a kind); `framing` (checksum, packet builder, stream
 parser, field splitter); `packets` (dispatch and canonical JSON lines); `samples` (continuation
@@ -11,7 +11,25 @@ packets grouped by shared timestamp); `cli` (decode/encode).
         ...
 """
 
-from . import aiding, base, filter, filter_data, gnss, reserved, sensor, system, threedm, types
+from . import (
+    aiding,
+    base,
+    filter,
+    filter_data,
+    gnss,
+    gnss_corrections,
+    gnss_data,
+    gnss_external,
+    gnss_receiver_1,
+    gnss_receiver_2,
+    reserved,
+    sensor,
+    shared,
+    system,
+    system_data,
+    threedm,
+    types,
+)
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
@@ -47,9 +65,16 @@ __all__ = [
     "filter",
     "filter_data",
     "gnss",
+    "gnss_corrections",
+    "gnss_data",
+    "gnss_external",
+    "gnss_receiver_1",
+    "gnss_receiver_2",
     "reserved",
     "sensor",
+    "shared",
     "system",
+    "system_data",
     "threedm",
     "types",
     "NaN",

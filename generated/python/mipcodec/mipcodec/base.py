@@ -265,15 +265,15 @@ class ContinuousBitResult(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 8133. Field data: 16 bytes.
     """
 
-    # Continuous BIT flags, least-significant byte first.
-    result: _ty.List[int] = _dc.field(default_factory=lambda: [0] * 16)
+    # Continuous BIT bit map (16 bytes, least-significant byte first), as in system data 0xA0,0x01.
+    result: _t.Cv7ContinuousBit = _dc.field(default_factory=_t.Cv7ContinuousBit)
 
     SET = 0x01
     DESCRIPTOR = 0x88
     NAME = "continuous_bit_result"
     ROLE = "response"
     _ATTRS = ("result",)
-    _OPS = (_c.Run(_c.P("result", _c.U8, 16)),)
+    _OPS = (_c.Nested("result", _t.Cv7ContinuousBit),)
 
 
 @_dc.dataclass

@@ -22,13 +22,19 @@ from .packets import Entry, Packet, decode_packet
 DATA_SETS = frozenset(
     (
         0x80,
+        0x81,
         0x82,
+        0x91,
+        0x92,
+        0x93,
+        0x94,
+        0xA0,
     )
 )
 FIRST_SHARED = 0xD0
 # Shared descriptor -> data size of the fields whose value identifies a sample.
-TIMESTAMPS: Dict[int, int] = {}
-MAX_KEY = 0
+TIMESTAMPS: Dict[int, int] = {0xD3: 12, 0xD5: 8, 0xD7: 10}
+MAX_KEY = 36
 
 
 def shared_prefix(payload: Any) -> Tuple[int, int]:

@@ -232,6 +232,308 @@ class Cv7BitFlags(_c.Bitfield):
     reserved = _c.bits(24, 8)
 
 
+@_c.bitfield("u8")
+class Cv7ContinuousBitGnss13(_c.Bitfield):
+    """Continuous BIT byte 13: GNSS receivers (bits 104-111) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("reserved_104", "reserved_104", "RESERVED_104", 0, 1),
+        ("receiver_1_fault", "receiver_1_fault", "RECEIVER_1_FAULT", 1, 1),
+        ("reserved_106_107", "reserved_106_107", "RESERVED_106_107", 2, 2),
+        ("receiver_1_no_solution", "receiver_1_no_solution", "RECEIVER_1_NO_SOLUTION", 4, 1),
+        ("reserved_109", "reserved_109", "RESERVED_109", 5, 1),
+        ("receiver_2_fault", "receiver_2_fault", "RECEIVER_2_FAULT", 6, 1),
+        ("reserved_111", "reserved_111", "RESERVED_111", 7, 1),
+    )
+    RESERVED_104 = 0x01  # bit 0: Bit 104 (13.0): GNSS reserved. (reserved)
+    RECEIVER_1_FAULT = 0x02  # bit 1: Bit 105 (13.1): no communication with internal GNSS receiver 1.
+    RESERVED_106_107 = 0x0C  # bits 2-3: Bits 106-107 (13.2-13.3): GNSS reserved. (reserved)
+    # bit 4: Bit 108 (13.4): internal receiver 1 has no valid solution (check antenna and sky view).
+    RECEIVER_1_NO_SOLUTION = 0x10
+    RESERVED_109 = 0x20  # bit 5: Bit 109 (13.5): GNSS reserved. (reserved)
+    RECEIVER_2_FAULT = 0x40  # bit 6: Bit 110 (13.6): no communication with internal GNSS receiver 2.
+    RESERVED_111 = 0x80  # bit 7: Bit 111 (13.7): GNSS reserved. (reserved)
+
+    reserved_104 = _c.bit(0)
+    receiver_1_fault = _c.bit(1)
+    reserved_106_107 = _c.bits(2, 2)
+    receiver_1_no_solution = _c.bit(4)
+    reserved_109 = _c.bit(5)
+    receiver_2_fault = _c.bit(6)
+    reserved_111 = _c.bit(7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitGnss14(_c.Bitfield):
+    """Continuous BIT byte 14: GNSS receivers (bits 112-119) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("reserved_112", "reserved_112", "RESERVED_112", 0, 1),
+        ("receiver_2_no_solution", "receiver_2_no_solution", "RECEIVER_2_NO_SOLUTION", 1, 1),
+        ("reserved_114_119", "reserved_114_119", "RESERVED_114_119", 2, 6),
+    )
+    RESERVED_112 = 0x01  # bit 0: Bit 112 (14.0): GNSS reserved. (reserved)
+    # bit 1: Bit 113 (14.1): internal receiver 2 has no valid solution (check antenna and sky view).
+    RECEIVER_2_NO_SOLUTION = 0x02
+    RESERVED_114_119 = 0xFC  # bits 2-7: Bits 114-119 (14.2-14.7): GNSS reserved. (reserved)
+
+    reserved_112 = _c.bit(0)
+    receiver_2_no_solution = _c.bit(1)
+    reserved_114_119 = _c.bits(2, 6)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitImu4(_c.Bitfield):
+    """Continuous BIT byte 4: IMU (bits 32-39) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("reserved_32", "reserved_32", "RESERVED_32", 0, 1),
+        ("imu_communication_fault", "imu_communication_fault", "IMU_COMMUNICATION_FAULT", 1, 1),
+        ("imu_timing_overrun", "imu_timing_overrun", "IMU_TIMING_OVERRUN", 2, 1),
+        ("reserved_35", "reserved_35", "RESERVED_35", 3, 1),
+        (
+            "imu_calibration_error_accelerometer",
+            "imu_calibration_error_accelerometer",
+            "IMU_CALIBRATION_ERROR_ACCELEROMETER",
+            4,
+            1,
+        ),
+        ("imu_calibration_error_gyroscope", "imu_calibration_error_gyroscope", "IMU_CALIBRATION_ERROR_GYROSCOPE", 5, 1),
+        (
+            "imu_calibration_error_magnetometer",
+            "imu_calibration_error_magnetometer",
+            "IMU_CALIBRATION_ERROR_MAGNETOMETER",
+            6,
+            1,
+        ),
+        ("reserved_39", "reserved_39", "RESERVED_39", 7, 1),
+    )
+    RESERVED_32 = 0x01  # bit 0: Bit 32 (4.0): IMU reserved. (reserved)
+    IMU_COMMUNICATION_FAULT = 0x02  # bit 1: Bit 33 (4.1): no communication with the IMU.
+    IMU_TIMING_OVERRUN = 0x04  # bit 2: Bit 34 (4.2): IMU core processes take longer than their allotted time.
+    RESERVED_35 = 0x08  # bit 3: Bit 35 (4.3): IMU reserved. (reserved)
+    IMU_CALIBRATION_ERROR_ACCELEROMETER = 0x10  # bit 4: Bit 36 (4.4): problem with the accelerometer calibration.
+    IMU_CALIBRATION_ERROR_GYROSCOPE = 0x20  # bit 5: Bit 37 (4.5): problem with the gyroscope calibration.
+    IMU_CALIBRATION_ERROR_MAGNETOMETER = 0x40  # bit 6: Bit 38 (4.6): problem with the magnetometer calibration.
+    RESERVED_39 = 0x80  # bit 7: Bit 39 (4.7): IMU calibration error, reserved. (reserved)
+
+    reserved_32 = _c.bit(0)
+    imu_communication_fault = _c.bit(1)
+    imu_timing_overrun = _c.bit(2)
+    reserved_35 = _c.bit(3)
+    imu_calibration_error_accelerometer = _c.bit(4)
+    imu_calibration_error_gyroscope = _c.bit(5)
+    imu_calibration_error_magnetometer = _c.bit(6)
+    reserved_39 = _c.bit(7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitImu5(_c.Bitfield):
+    """Continuous BIT byte 5: IMU accelerometer and gyroscope (bits 40-47) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("accelerometer_general_fault", "accelerometer_general_fault", "ACCELEROMETER_GENERAL_FAULT", 0, 1),
+        ("accelerometer_overrange", "accelerometer_overrange", "ACCELEROMETER_OVERRANGE", 1, 1),
+        ("accelerometer_self_test_fail", "accelerometer_self_test_fail", "ACCELEROMETER_SELF_TEST_FAIL", 2, 1),
+        ("reserved_43", "reserved_43", "RESERVED_43", 3, 1),
+        ("gyroscope_general_fault", "gyroscope_general_fault", "GYROSCOPE_GENERAL_FAULT", 4, 1),
+        ("gyroscope_overrange", "gyroscope_overrange", "GYROSCOPE_OVERRANGE", 5, 1),
+        ("gyroscope_self_test_fail", "gyroscope_self_test_fail", "GYROSCOPE_SELF_TEST_FAIL", 6, 1),
+        ("reserved_47", "reserved_47", "RESERVED_47", 7, 1),
+    )
+    ACCELEROMETER_GENERAL_FAULT = 0x01  # bit 0: Bit 40 (5.0): the accelerometer will not initialize.
+    ACCELEROMETER_OVERRANGE = 0x02  # bit 1: Bit 41 (5.1): one or more axes near or beyond the selected range.
+    # bit 2: Bit 42 (5.2): accelerometer self-test failed (updated by the commanded BIT only).
+    ACCELEROMETER_SELF_TEST_FAIL = 0x04
+    RESERVED_43 = 0x08  # bit 3: Bit 43 (5.3): accelerometer reserved. (reserved)
+    GYROSCOPE_GENERAL_FAULT = 0x10  # bit 4: Bit 44 (5.4): the gyroscope will not initialize.
+    GYROSCOPE_OVERRANGE = 0x20  # bit 5: Bit 45 (5.5): one or more axes near or beyond the selected range.
+    # bit 6: Bit 46 (5.6): gyroscope self-test failed (updated by the commanded BIT only).
+    GYROSCOPE_SELF_TEST_FAIL = 0x40
+    RESERVED_47 = 0x80  # bit 7: Bit 47 (5.7): gyroscope reserved. (reserved)
+
+    accelerometer_general_fault = _c.bit(0)
+    accelerometer_overrange = _c.bit(1)
+    accelerometer_self_test_fail = _c.bit(2)
+    reserved_43 = _c.bit(3)
+    gyroscope_general_fault = _c.bit(4)
+    gyroscope_overrange = _c.bit(5)
+    gyroscope_self_test_fail = _c.bit(6)
+    reserved_47 = _c.bit(7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitImu6(_c.Bitfield):
+    """Continuous BIT byte 6: IMU magnetometer and pressure sensor (bits 48-55) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("magnetometer_general_fault", "magnetometer_general_fault", "MAGNETOMETER_GENERAL_FAULT", 0, 1),
+        ("magnetometer_overrange", "magnetometer_overrange", "MAGNETOMETER_OVERRANGE", 1, 1),
+        ("magnetometer_self_test_fail", "magnetometer_self_test_fail", "MAGNETOMETER_SELF_TEST_FAIL", 2, 1),
+        ("reserved_51", "reserved_51", "RESERVED_51", 3, 1),
+        ("pressure_sensor_general_fault", "pressure_sensor_general_fault", "PRESSURE_SENSOR_GENERAL_FAULT", 4, 1),
+        ("pressure_sensor_overrange", "pressure_sensor_overrange", "PRESSURE_SENSOR_OVERRANGE", 5, 1),
+        ("pressure_sensor_self_test_fail", "pressure_sensor_self_test_fail", "PRESSURE_SENSOR_SELF_TEST_FAIL", 6, 1),
+        ("reserved_55", "reserved_55", "RESERVED_55", 7, 1),
+    )
+    MAGNETOMETER_GENERAL_FAULT = 0x01  # bit 0: Bit 48 (6.0): the magnetometer will not initialize.
+    MAGNETOMETER_OVERRANGE = 0x02  # bit 1: Bit 49 (6.1): one or more axes near or beyond the supported range.
+    # bit 2: Bit 50 (6.2): magnetometer self-test failed (updated by the commanded BIT only).
+    MAGNETOMETER_SELF_TEST_FAIL = 0x04
+    RESERVED_51 = 0x08  # bit 3: Bit 51 (6.3): magnetometer reserved. (reserved)
+    PRESSURE_SENSOR_GENERAL_FAULT = 0x10  # bit 4: Bit 52 (6.4): the pressure sensor will not initialize.
+    PRESSURE_SENSOR_OVERRANGE = 0x20  # bit 5: Bit 53 (6.5): pressure outside the supported range.
+    # bit 6: Bit 54 (6.6): pressure sensor self-test failed (updated by the commanded BIT only).
+    PRESSURE_SENSOR_SELF_TEST_FAIL = 0x40
+    RESERVED_55 = 0x80  # bit 7: Bit 55 (6.7): pressure sensor reserved. (reserved)
+
+    magnetometer_general_fault = _c.bit(0)
+    magnetometer_overrange = _c.bit(1)
+    magnetometer_self_test_fail = _c.bit(2)
+    reserved_51 = _c.bit(3)
+    pressure_sensor_general_fault = _c.bit(4)
+    pressure_sensor_overrange = _c.bit(5)
+    pressure_sensor_self_test_fail = _c.bit(6)
+    reserved_55 = _c.bit(7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitImu7(_c.Bitfield):
+    """Continuous BIT byte 7: IMU (bits 56-63) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("factory_bits_invalid", "factory_bits_invalid", "FACTORY_BITS_INVALID", 0, 1),
+        ("reserved_57_63", "reserved_57_63", "RESERVED_57_63", 1, 7),
+    )
+    FACTORY_BITS_INVALID = 0x01  # bit 0: Bit 56 (7.0): the device has lost its configuration; contact support.
+    RESERVED_57_63 = 0xFE  # bits 1-7: Bits 57-63 (7.1-7.7): reserved. (reserved)
+
+    factory_bits_invalid = _c.bit(0)
+    reserved_57_63 = _c.bits(1, 7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitNav8(_c.Bitfield):
+    """Continuous BIT byte 8: navigation filter (bits 64-71) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("reserved_64", "reserved_64", "RESERVED_64", 0, 1),
+        ("reserved_65", "reserved_65", "RESERVED_65", 1, 1),
+        ("filter_timing_overrun", "filter_timing_overrun", "FILTER_TIMING_OVERRUN", 2, 1),
+        ("filter_timing_underrun", "filter_timing_underrun", "FILTER_TIMING_UNDERRUN", 3, 1),
+        ("reserved_68_71", "reserved_68_71", "RESERVED_68_71", 4, 4),
+    )
+    RESERVED_64 = 0x01  # bit 0: Bit 64 (8.0): reserved. (reserved)
+    RESERVED_65 = 0x02  # bit 1: Bit 65 (8.1): reserved. (reserved)
+    FILTER_TIMING_OVERRUN = 0x04  # bit 2: Bit 66 (8.2): filter processes take longer than their allotted time.
+    FILTER_TIMING_UNDERRUN = 0x08  # bit 3: Bit 67 (8.3): filter processes are being skipped.
+    RESERVED_68_71 = 0xF0  # bits 4-7: Bits 68-71 (8.4-8.7): reserved (printed as GNSS reserved). (reserved)
+
+    reserved_64 = _c.bit(0)
+    reserved_65 = _c.bit(1)
+    filter_timing_overrun = _c.bit(2)
+    filter_timing_underrun = _c.bit(3)
+    reserved_68_71 = _c.bits(4, 4)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitSystem0(_c.Bitfield):
+    """Continuous BIT byte 0: system (bits 0-7) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("system_clock_failure", "system_clock_failure", "SYSTEM_CLOCK_FAILURE", 0, 1),
+        ("power_fault", "power_fault", "POWER_FAULT", 1, 1),
+        ("reserved_2_3", "reserved_2_3", "RESERVED_2_3", 2, 2),
+        ("firmware_fault", "firmware_fault", "FIRMWARE_FAULT", 4, 1),
+        ("timing_overload", "timing_overload", "TIMING_OVERLOAD", 5, 1),
+        ("buffer_overrun", "buffer_overrun", "BUFFER_OVERRUN", 6, 1),
+        ("reserved_7", "reserved_7", "RESERVED_7", 7, 1),
+    )
+    # bit 0: Bit 0 (0.0): the system clock is not operating properly; timing may be inaccurate.
+    SYSTEM_CLOCK_FAILURE = 0x01
+    POWER_FAULT = 0x02  # bit 1: Bit 1 (0.1): supply voltage out of the recommended range, or an internal power fault.
+    RESERVED_2_3 = 0x0C  # bits 2-3: Bits 2-3 (0.2-0.3): reserved. (reserved)
+    FIRMWARE_FAULT = 0x10  # bit 4: Bit 4 (0.4): firmware detected an unexpected or abnormal condition.
+    # bit 5: Bit 5 (0.5): the system cannot keep up with the processing demand (e.g. too many descriptors).
+    TIMING_OVERLOAD = 0x20
+    # bit 6: Bit 6 (0.6): a data buffer filled up and data may have been lost (bandwidth exceeded).
+    BUFFER_OVERRUN = 0x40
+    RESERVED_7 = 0x80  # bit 7: Bit 7 (0.7): reserved. (reserved)
+
+    system_clock_failure = _c.bit(0)
+    power_fault = _c.bit(1)
+    reserved_2_3 = _c.bits(2, 2)
+    firmware_fault = _c.bit(4)
+    timing_overload = _c.bit(5)
+    buffer_overrun = _c.bit(6)
+    reserved_7 = _c.bit(7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitSystem2(_c.Bitfield):
+    """Continuous BIT byte 2: system, IMU and filter processes (bits 16-23) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("imu_process_fault", "imu_process_fault", "IMU_PROCESS_FAULT", 0, 1),
+        ("imu_data_process_time_exceeded", "imu_data_process_time_exceeded", "IMU_DATA_PROCESS_TIME_EXCEEDED", 1, 1),
+        ("imu_data_rate_error", "imu_data_rate_error", "IMU_DATA_RATE_ERROR", 2, 1),
+        ("imu_stall", "imu_stall", "IMU_STALL", 3, 1),
+        ("filter_process_fault", "filter_process_fault", "FILTER_PROCESS_FAULT", 4, 4),
+        ("filter_major_cycle_fault", "filter_major_cycle_fault", "FILTER_MAJOR_CYCLE_FAULT", 4, 1),
+        ("filter_minor_cycle_fault", "filter_minor_cycle_fault", "FILTER_MINOR_CYCLE_FAULT", 5, 1),
+        ("filter_data_rate_error", "filter_data_rate_error", "FILTER_DATA_RATE_ERROR", 6, 1),
+        ("filter_process_stall", "filter_process_stall", "FILTER_PROCESS_STALL", 7, 1),
+    )
+    IMU_PROCESS_FAULT = 0x01  # bit 0: Bit 16 (2.0): the IMU subsystem is not running or did not start.
+    IMU_DATA_PROCESS_TIME_EXCEEDED = 0x02  # bit 1: Bit 17 (2.1): IMU data processing took longer than allowed.
+    IMU_DATA_RATE_ERROR = 0x04  # bit 2: Bit 18 (2.2): IMU data is not produced at the expected base rate.
+    IMU_STALL = 0x08  # bit 3: Bit 19 (2.3): the IMU subsystem has stalled.
+    # bits 4-7: Bits 20-23 (2.4-2.7): any filter process fault (the four bits below). (alias mask)
+    FILTER_PROCESS_FAULT = 0xF0
+    FILTER_MAJOR_CYCLE_FAULT = 0x10  # bit 4: Bit 20 (2.4): problem with the navigation filter major cycle.
+    FILTER_MINOR_CYCLE_FAULT = 0x20  # bit 5: Bit 21 (2.5): problem with the navigation filter minor cycle.
+    FILTER_DATA_RATE_ERROR = 0x40  # bit 6: Bit 22 (2.6): a navigation filter process is not running at its base rate.
+    FILTER_PROCESS_STALL = 0x80  # bit 7: Bit 23 (2.7): a navigation filter process has stalled.
+
+    imu_process_fault = _c.bit(0)
+    imu_data_process_time_exceeded = _c.bit(1)
+    imu_data_rate_error = _c.bit(2)
+    imu_stall = _c.bit(3)
+    filter_process_fault = _c.bits(4, 4)
+    filter_major_cycle_fault = _c.bit(4)
+    filter_minor_cycle_fault = _c.bit(5)
+    filter_data_rate_error = _c.bit(6)
+    filter_process_stall = _c.bit(7)
+
+
+@_c.bitfield("u8")
+class Cv7ContinuousBitSystem3(_c.Bitfield):
+    """Continuous BIT byte 3: system, GNSS processes (bits 24-31) (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("gnss_subsystem_fault", "gnss_subsystem_fault", "GNSS_SUBSYSTEM_FAULT", 0, 4),
+        ("gnss_main_process_fault", "gnss_main_process_fault", "GNSS_MAIN_PROCESS_FAULT", 0, 1),
+        ("gnss_receiver_1_stall", "gnss_receiver_1_stall", "GNSS_RECEIVER_1_STALL", 1, 1),
+        ("gnss_receiver_2_stall", "gnss_receiver_2_stall", "GNSS_RECEIVER_2_STALL", 2, 1),
+        ("reserved_27", "reserved_27", "RESERVED_27", 3, 1),
+        ("reserved_28_31", "reserved_28_31", "RESERVED_28_31", 4, 4),
+    )
+    # bits 0-3: Bits 24-27 (3.0-3.3): any GNSS subsystem fault (the bits below). (alias mask)
+    GNSS_SUBSYSTEM_FAULT = 0x0F
+    GNSS_MAIN_PROCESS_FAULT = 0x01  # bit 0: Bit 24 (3.0): the master GNSS process has not run within its timeout.
+    GNSS_RECEIVER_1_STALL = 0x02  # bit 1: Bit 25 (3.1): no data processed from internal receiver 1 within the timeout.
+    GNSS_RECEIVER_2_STALL = 0x04  # bit 2: Bit 26 (3.2): no data processed from internal receiver 2 within the timeout.
+    RESERVED_27 = 0x08  # bit 3: Bit 27 (3.3): reserved. (reserved)
+    RESERVED_28_31 = 0xF0  # bits 4-7: Bits 28-31 (3.4-3.7): system reserved. (reserved)
+
+    gnss_subsystem_fault = _c.bits(0, 4)
+    gnss_main_process_fault = _c.bit(0)
+    gnss_receiver_1_stall = _c.bit(1)
+    gnss_receiver_2_stall = _c.bit(2)
+    reserved_27 = _c.bit(3)
+    reserved_28_31 = _c.bits(4, 4)
+
+
 class DeviceStatusSelector(_c.Enum):
     """Device status selector (u8)."""
 
@@ -292,6 +594,36 @@ class ExternalHeadingType(_c.Enum):
 
     TRUE_HEADING = 0x01  # True heading (from true north).
     MAGNETIC_HEADING = 0x02  # Magnetic heading (from magnetic north).
+
+
+@_c.bitfield("u16")
+class ExternalTimeDeltaValidFlags(_c.Bitfield):
+    """External time delta valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("dt_nanos", "dt_nanos", "DT_NANOS", 0, 1),
+        ("reserved", "reserved", "RESERVED", 1, 15),
+    )
+    DT_NANOS = 0x0001  # bit 0: The delta is valid.
+    RESERVED = 0xFFFE  # bits 1-15: Not listed. (reserved)
+
+    dt_nanos = _c.bit(0)
+    reserved = _c.bits(1, 15)
+
+
+@_c.bitfield("u16")
+class ExternalTimestampValidFlags(_c.Bitfield):
+    """External timestamp valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("nanoseconds", "nanoseconds", "NANOSECONDS", 0, 1),
+        ("reserved", "reserved", "RESERVED", 1, 15),
+    )
+    NANOSECONDS = 0x0001  # bit 0: The nanoseconds value is valid (external clock synchronised via PPS).
+    RESERVED = 0xFFFE  # bits 1-15: Not listed. (reserved)
+
+    nanoseconds = _c.bit(0)
+    reserved = _c.bits(1, 15)
 
 
 class FactoryStreamingAction(_c.Enum):
@@ -736,6 +1068,108 @@ class FunctionSelector(_c.Enum):
     WRITE_NO_ACK = 0x06  # Apply new setting with no ACK/NACK reply (GX5-45 only). (devices: gx5_45)
 
 
+class GnssAntennaPower(_c.Enum):
+    """GNSS antenna power (u8).
+
+    Whether the receiver powers the antenna.
+    """
+
+    OFF = 0x00  # Antenna power off.
+    ON = 0x01  # Antenna power on.
+    UNKNOWN = 0x02  # Power state unknown.
+
+
+class GnssAntennaState(_c.Enum):
+    """GNSS antenna state (u8).
+
+    State of the GNSS antenna connection. There is no value 0.
+    """
+
+    INIT = 0x01  # Antenna initialising.
+    SHORT = 0x02  # Antenna short circuit.
+    OPEN = 0x03  # Antenna open circuit (not connected).
+    GOOD = 0x04  # Antenna good.
+    UNKNOWN = 0x05  # State unknown.
+
+
+@_c.bitfield("u16")
+class GnssBaseStationIndicators(_c.Bitfield):
+    """Base station indicators (u16 bitfield).
+
+    Indicator bits of the base station, as reported in RTCM message 1005/1006.
+    """
+
+    _MEMBERS = (
+        ("gps", "gps", "GPS", 0, 1),
+        ("glonass", "glonass", "GLONASS", 1, 1),
+        ("galileo", "galileo", "GALILEO", 2, 1),
+        ("beidou", "beidou", "BEIDOU", 3, 1),
+        ("ref_station", "ref_station", "REF_STATION", 4, 1),
+        ("single_receiver", "single_receiver", "SINGLE_RECEIVER", 5, 1),
+        ("quarter_cycle_bit1", "quarter_cycle_bit1", "QUARTER_CYCLE_BIT1", 6, 1),
+        ("quarter_cycle_bit2", "quarter_cycle_bit2", "QUARTER_CYCLE_BIT2", 7, 1),
+        ("quarter_cycle_bits", "quarter_cycle_bits", "QUARTER_CYCLE_BITS", 6, 2),
+        ("reserved", "reserved", "RESERVED", 8, 8),
+    )
+    GPS = 0x0001  # bit 0: GPS indicator.
+    GLONASS = 0x0002  # bit 1: GLONASS indicator.
+    GALILEO = 0x0004  # bit 2: Galileo indicator.
+    BEIDOU = 0x0008  # bit 3: BeiDou indicator.
+    REF_STATION = 0x0010  # bit 4: Reference station indicator.
+    SINGLE_RECEIVER = 0x0020  # bit 5: Single receiver oscillator indicator.
+    QUARTER_CYCLE_BIT1 = 0x0040  # bit 6: Quarter cycle indicator, first bit.
+    QUARTER_CYCLE_BIT2 = 0x0080  # bit 7: Quarter cycle indicator, second bit.
+    QUARTER_CYCLE_BITS = 0x00C0  # bits 6-7: Quarter cycle indicator (both bits). (alias mask)
+    RESERVED = 0xFF00  # bits 8-15: Not named by the manual. (reserved)
+
+    gps = _c.bit(0)
+    glonass = _c.bit(1)
+    galileo = _c.bit(2)
+    beidou = _c.bit(3)
+    ref_station = _c.bit(4)
+    single_receiver = _c.bit(5)
+    quarter_cycle_bit1 = _c.bit(6)
+    quarter_cycle_bit2 = _c.bit(7)
+    quarter_cycle_bits = _c.bits(6, 2)
+    reserved = _c.bits(8, 8)
+
+
+@_c.bitfield("u16")
+class GnssBaseStationInfoValidFlags(_c.Bitfield):
+    """Base station information valid flags (u16 bitfield).
+
+    Which parameters of the base station information field are valid.
+    """
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("ecef_position", "ecef_position", "ECEF_POSITION", 2, 1),
+        ("height", "height", "HEIGHT", 3, 1),
+        ("station_id", "station_id", "STATION_ID", 4, 1),
+        ("indicators", "indicators", "INDICATORS", 5, 1),
+        ("flags", "flags", "FLAGS", 0, 6),
+        ("reserved", "reserved", "RESERVED", 6, 10),
+    )
+    TOW = 0x0001  # bit 0: Time of week valid.
+    WEEK_NUMBER = 0x0002  # bit 1: Week number valid.
+    ECEF_POSITION = 0x0004  # bit 2: ECEF position valid.
+    HEIGHT = 0x0008  # bit 3: Antenna height valid.
+    STATION_ID = 0x0010  # bit 4: Station id valid.
+    INDICATORS = 0x0020  # bit 5: Indicators valid.
+    FLAGS = 0x003F  # bits 0-5: All flags. (alias mask)
+    RESERVED = 0xFFC0  # bits 6-15: Not named by the manual. (reserved)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    ecef_position = _c.bit(2)
+    height = _c.bit(3)
+    station_id = _c.bit(4)
+    indicators = _c.bit(5)
+    flags = _c.bits(0, 6)
+    reserved = _c.bits(6, 10)
+
+
 @_c.bitfield("u8")
 class GnssBeidouSignals(_c.Bitfield):
     """BeiDou signals enabled (u8 bitfield)."""
@@ -754,6 +1188,330 @@ class GnssBeidouSignals(_c.Bitfield):
     b2a = _c.bit(2)
 
 
+@_c.bitfield("u16")
+class GnssClockInfo2ValidFlags(_c.Bitfield):
+    """GNSS clock information 2 valid flags (u16 bitfield).
+
+    Which receiver clock parameters are valid.
+    """
+
+    _MEMBERS = (
+        ("bias", "bias", "BIAS", 0, 1),
+        ("drift", "drift", "DRIFT", 1, 1),
+        ("bias_accuracy", "bias_accuracy", "BIAS_ACCURACY", 2, 1),
+        ("drift_accuracy", "drift_accuracy", "DRIFT_ACCURACY", 3, 1),
+        ("flags", "flags", "FLAGS", 0, 4),
+        ("reserved", "reserved", "RESERVED", 4, 12),
+    )
+    BIAS = 0x0001  # bit 0: Clock bias valid.
+    DRIFT = 0x0002  # bit 1: Clock drift valid.
+    BIAS_ACCURACY = 0x0004  # bit 2: Bias accuracy estimate valid.
+    DRIFT_ACCURACY = 0x0008  # bit 3: Drift accuracy estimate valid.
+    FLAGS = 0x000F  # bits 0-3: All flags. (alias mask)
+    RESERVED = 0xFFF0  # bits 4-15: Not named by the manual. (reserved)
+
+    bias = _c.bit(0)
+    drift = _c.bit(1)
+    bias_accuracy = _c.bit(2)
+    drift_accuracy = _c.bit(3)
+    flags = _c.bits(0, 4)
+    reserved = _c.bits(4, 12)
+
+
+@_c.bitfield("u16")
+class GnssClockInfoValidFlags(_c.Bitfield):
+    """GNSS clock information valid flags (u16 bitfield).
+
+    Which clock parameters are valid.
+    """
+
+    _MEMBERS = (
+        ("bias", "bias", "BIAS", 0, 1),
+        ("drift", "drift", "DRIFT", 1, 1),
+        ("accuracy_estimate", "accuracy_estimate", "ACCURACY_ESTIMATE", 2, 1),
+        ("reserved", "reserved", "RESERVED", 3, 13),
+    )
+    BIAS = 0x0001  # bit 0: Clock bias valid.
+    DRIFT = 0x0002  # bit 1: Clock drift valid.
+    ACCURACY_ESTIMATE = 0x0004  # bit 2: Accuracy estimate valid.
+    RESERVED = 0xFFF8  # bits 3-15: Not named by the manual. (reserved)
+
+    bias = _c.bit(0)
+    drift = _c.bit(1)
+    accuracy_estimate = _c.bit(2)
+    reserved = _c.bits(3, 13)
+
+
+class GnssConstellationId(_c.Enum):
+    """GNSS constellation (CV7 GNSS data) (u8)."""
+
+    UNKNOWN = 0x00  # Constellation unknown or not given.
+    GPS = 0x01  # GPS.
+    GLONASS = 0x02  # GLONASS.
+    GALILEO = 0x03  # Galileo.
+    BEIDOU = 0x04  # BeiDou.
+    SBAS = 0x05  # SBAS.
+
+
+class GnssDgnssBaseStationStatus(_c.Enum):
+    """DGNSS base station status (s16).
+
+    Health of the DGNSS reference station as its UDRE (user differential range error) scale factor.
+    """
+
+    UDRE_SCALE_1_0 = 0x00  # UDRE scale factor 1.0.
+    UDRE_SCALE_0_75 = 0x01  # UDRE scale factor 0.75.
+    UDRE_SCALE_0_5 = 0x02  # UDRE scale factor 0.5.
+    UDRE_SCALE_0_3 = 0x03  # UDRE scale factor 0.3.
+    UDRE_SCALE_0_2 = 0x04  # UDRE scale factor 0.2.
+    UDRE_SCALE_0_1 = 0x05  # UDRE scale factor 0.1.
+    TRANSMISSION_NOT_MONITORED = 0x06  # Reference station transmission not monitored.
+    STATION_NOT_WORKING = 0x07  # Reference station not working.
+
+
+@_c.bitfield("u16")
+class GnssDgnssChannelStatusValidFlags(_c.Bitfield):
+    """DGNSS channel status valid flags (u16 bitfield).
+
+    Which parameters of a DGNSS channel status entry are valid.
+    """
+
+    _MEMBERS = (
+        ("sv_id", "sv_id", "SV_ID", 0, 1),
+        ("age", "age", "AGE", 1, 1),
+        ("pseudorange_correction", "pseudorange_correction", "PSEUDORANGE_CORRECTION", 2, 1),
+        ("pseudorange_rate_correction", "pseudorange_rate_correction", "PSEUDORANGE_RATE_CORRECTION", 3, 1),
+        ("reserved", "reserved", "RESERVED", 4, 12),
+    )
+    SV_ID = 0x0001  # bit 0: Space vehicle id valid.
+    AGE = 0x0002  # bit 1: Correction age valid.
+    PSEUDORANGE_CORRECTION = 0x0004  # bit 2: Pseudorange correction valid.
+    PSEUDORANGE_RATE_CORRECTION = 0x0008  # bit 3: Pseudorange rate correction valid.
+    RESERVED = 0xFFF0  # bits 4-15: Not named by the manual. (reserved)
+
+    sv_id = _c.bit(0)
+    age = _c.bit(1)
+    pseudorange_correction = _c.bit(2)
+    pseudorange_rate_correction = _c.bit(3)
+    reserved = _c.bits(4, 12)
+
+
+@_c.bitfield("u16")
+class GnssDgnssInfoValidFlags(_c.Bitfield):
+    """DGNSS information valid flags (u16 bitfield).
+
+    Which parameters of the DGNSS information field are valid.
+    """
+
+    _MEMBERS = (
+        ("latest_age", "latest_age", "LATEST_AGE", 0, 1),
+        ("base_station_id", "base_station_id", "BASE_STATION_ID", 1, 1),
+        ("base_station_status", "base_station_status", "BASE_STATION_STATUS", 2, 1),
+        ("num_channels", "num_channels", "NUM_CHANNELS", 3, 1),
+        ("reserved", "reserved", "RESERVED", 4, 12),
+    )
+    LATEST_AGE = 0x0001  # bit 0: Newest (latest) correction age valid.
+    BASE_STATION_ID = 0x0002  # bit 1: Base station id valid.
+    BASE_STATION_STATUS = 0x0004  # bit 2: Base station status valid.
+    NUM_CHANNELS = 0x0008  # bit 3: Number of DGNSS channels valid.
+    RESERVED = 0xFFF0  # bits 4-15: Not named by the manual. (reserved)
+
+    latest_age = _c.bit(0)
+    base_station_id = _c.bit(1)
+    base_station_status = _c.bit(2)
+    num_channels = _c.bit(3)
+    reserved = _c.bits(4, 12)
+
+
+@_c.bitfield("u16")
+class GnssDopValidFlags(_c.Bitfield):
+    """GNSS DOP valid flags (u16 bitfield).
+
+    Which dilution-of-precision values are valid.
+    """
+
+    _MEMBERS = (
+        ("gdop", "gdop", "GDOP", 0, 1),
+        ("pdop", "pdop", "PDOP", 1, 1),
+        ("hdop", "hdop", "HDOP", 2, 1),
+        ("vdop", "vdop", "VDOP", 3, 1),
+        ("tdop", "tdop", "TDOP", 4, 1),
+        ("ndop", "ndop", "NDOP", 5, 1),
+        ("edop", "edop", "EDOP", 6, 1),
+        ("flags", "flags", "FLAGS", 0, 7),
+        ("reserved", "reserved", "RESERVED", 7, 9),
+    )
+    GDOP = 0x0001  # bit 0: Geometric DOP valid.
+    PDOP = 0x0002  # bit 1: Position DOP valid.
+    HDOP = 0x0004  # bit 2: Horizontal DOP valid.
+    VDOP = 0x0008  # bit 3: Vertical DOP valid.
+    TDOP = 0x0010  # bit 4: Time DOP valid.
+    NDOP = 0x0020  # bit 5: Northing DOP valid.
+    EDOP = 0x0040  # bit 6: Easting DOP valid.
+    FLAGS = 0x007F  # bits 0-6: All flags. (alias mask)
+    RESERVED = 0xFF80  # bits 7-15: Not named by the manuals. (reserved)
+
+    gdop = _c.bit(0)
+    pdop = _c.bit(1)
+    hdop = _c.bit(2)
+    vdop = _c.bit(3)
+    tdop = _c.bit(4)
+    ndop = _c.bit(5)
+    edop = _c.bit(6)
+    flags = _c.bits(0, 7)
+    reserved = _c.bits(7, 9)
+
+
+@_c.bitfield("u16")
+class GnssEcefPositionValidFlags(_c.Bitfield):
+    """GNSS ECEF position valid flags (u16 bitfield).
+
+    Which parameters of a GNSS ECEF position field are valid.
+    """
+
+    _MEMBERS = (
+        ("position", "position", "POSITION", 0, 1),
+        ("position_accuracy", "position_accuracy", "POSITION_ACCURACY", 1, 1),
+        ("flags", "flags", "FLAGS", 0, 2),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    POSITION = 0x0001  # bit 0: ECEF position valid.
+    POSITION_ACCURACY = 0x0002  # bit 1: Position accuracy valid.
+    FLAGS = 0x0003  # bits 0-1: All flags. (alias mask)
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manuals. (reserved)
+
+    position = _c.bit(0)
+    position_accuracy = _c.bit(1)
+    flags = _c.bits(0, 2)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssEcefVelocityValidFlags(_c.Bitfield):
+    """GNSS ECEF velocity valid flags (u16 bitfield).
+
+    Which parameters of a GNSS ECEF velocity field are valid.
+    """
+
+    _MEMBERS = (
+        ("velocity", "velocity", "VELOCITY", 0, 1),
+        ("velocity_accuracy", "velocity_accuracy", "VELOCITY_ACCURACY", 1, 1),
+        ("flags", "flags", "FLAGS", 0, 2),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    VELOCITY = 0x0001  # bit 0: ECEF velocity valid.
+    VELOCITY_ACCURACY = 0x0002  # bit 1: Velocity accuracy valid.
+    FLAGS = 0x0003  # bits 0-1: All flags. (alias mask)
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manuals. (reserved)
+
+    velocity = _c.bit(0)
+    velocity_accuracy = _c.bit(1)
+    flags = _c.bits(0, 2)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssEphemerisValidFlags(_c.Bitfield):
+    """GPS/Galileo/BeiDou ephemeris valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("ephemeris", "ephemeris", "EPHEMERIS", 0, 1),
+        ("modern_data", "modern_data", "MODERN_DATA", 1, 1),
+        ("isc_l5", "isc_l5", "ISC_L5", 2, 1),
+        ("flags", "flags", "FLAGS", 0, 3),
+        ("reserved", "reserved", "RESERVED", 3, 13),
+    )
+    EPHEMERIS = 0x0001  # bit 0: Ephemeris data valid.
+    # bit 1: Modernized navigation data present (the manual gives only the name, not which parameters it covers).
+    MODERN_DATA = 0x0002
+    ISC_L5 = 0x0004  # bit 2: isc_l2c holds the L5 inter-signal correction instead of L2.
+    FLAGS = 0x0007  # bits 0-2: All valid flags (the manual's 'flags 0-2' entry). (alias mask)
+    RESERVED = 0xFFF8  # bits 3-15: Not named by the manual. (reserved)
+
+    ephemeris = _c.bit(0)
+    modern_data = _c.bit(1)
+    isc_l5 = _c.bit(2)
+    flags = _c.bits(0, 3)
+    reserved = _c.bits(3, 13)
+
+
+@_c.bitfield("u16")
+class GnssFixFlags(_c.Bitfield):
+    """GNSS fix flags (u16 bitfield).
+
+    Corrections used in the position fix.
+    """
+
+    _MEMBERS = (
+        ("sbas_used", "sbas_used", "SBAS_USED", 0, 1),
+        ("dgnss_used", "dgnss_used", "DGNSS_USED", 1, 1),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    SBAS_USED = 0x0001  # bit 0: SBAS corrections used.
+    DGNSS_USED = 0x0002  # bit 1: Differential (DGNSS) corrections used.
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manuals. (reserved)
+
+    sbas_used = _c.bit(0)
+    dgnss_used = _c.bit(1)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssFixInfoValidFlags(_c.Bitfield):
+    """GNSS fix information valid flags (u16 bitfield).
+
+    Which parameters of a GNSS fix information field are valid.
+    """
+
+    _MEMBERS = (
+        ("fix_type", "fix_type", "FIX_TYPE", 0, 1),
+        ("num_sv", "num_sv", "NUM_SV", 1, 1),
+        ("fix_flags", "fix_flags", "FIX_FLAGS", 2, 1),
+        ("flags", "flags", "FLAGS", 0, 3),
+        ("reserved", "reserved", "RESERVED", 3, 13),
+    )
+    FIX_TYPE = 0x0001  # bit 0: Fix type valid.
+    NUM_SV = 0x0002  # bit 1: Number of satellites valid.
+    FIX_FLAGS = 0x0004  # bit 2: Fix flags valid.
+    FLAGS = 0x0007  # bits 0-2: All flags. (alias mask)
+    RESERVED = 0xFFF8  # bits 3-15: Not named by the manuals. (reserved)
+
+    fix_type = _c.bit(0)
+    num_sv = _c.bit(1)
+    fix_flags = _c.bit(2)
+    flags = _c.bits(0, 3)
+    reserved = _c.bits(3, 13)
+
+
+class GnssFixTypeCv7(_c.Enum):
+    """GNSS fix type (CV7) (u8).
+
+    Type of position fix a CV7 GNSS receiver reports.
+    """
+
+    FIX_3D = 0x00  # 3D fix.
+    FIX_2D = 0x01  # 2D fix.
+    FIX_TIME_ONLY = 0x02  # Time only.
+    FIX_NONE = 0x03  # No fix.
+    FIX_INVALID = 0x04  # Invalid.
+    FIX_RTK_FLOAT = 0x05  # RTK solution, float ambiguities.
+    FIX_RTK_FIXED = 0x06  # RTK solution, fixed ambiguities.
+    FIX_DIFFERENTIAL = 0x07  # Differential (DGNSS) solution.
+
+
+class GnssFixTypeGx5(_c.Enum):
+    """GNSS fix type (GX5-45) (u8).
+
+    Type of position fix the GX5-45 GNSS receiver reports.
+    """
+
+    FIX_3D = 0x00  # 3D fix.
+    FIX_2D = 0x01  # 2D fix.
+    FIX_TIME_ONLY = 0x02  # Time only.
+    FIX_NONE = 0x03  # No fix.
+    FIX_INVALID = 0x04  # Invalid.
+
+
 @_c.bitfield("u8")
 class GnssGalileoSignals(_c.Bitfield):
     """Galileo signals enabled (u8 bitfield)."""
@@ -770,6 +1528,31 @@ class GnssGalileoSignals(_c.Bitfield):
     e1 = _c.bit(0)
     e5b = _c.bit(1)
     e5a = _c.bit(2)
+
+
+@_c.bitfield("u16")
+class GnssGlonassEphemerisValidFlags(_c.Bitfield):
+    """GLONASS ephemeris valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("ephemeris", "ephemeris", "EPHEMERIS", 0, 1),
+        ("flags", "flags", "FLAGS", 0, 1),
+        ("reserved", "reserved", "RESERVED", 1, 15),
+    )
+    EPHEMERIS = 0x0001  # bit 0: Ephemeris data valid.
+    FLAGS = 0x0001  # bit 0: All valid flags (the manual's 'flags 0' entry: the single bit 0). (alias mask)
+    RESERVED = 0xFFFE  # bits 1-15: Not named by the manual. (reserved)
+
+    ephemeris = _c.bit(0)
+    flags = _c.bit(0)
+    reserved = _c.bits(1, 15)
+
+
+class GnssGlonassSatelliteType(_c.Enum):
+    """GLONASS satellite type (u8)."""
+
+    GLONASS = 0x00  # GLONASS satellite.
+    GLONASS_M = 0x01  # GLONASS-M satellite.
 
 
 @_c.bitfield("u8")
@@ -803,6 +1586,526 @@ class GnssGpsSignals(_c.Bitfield):
     l1ca = _c.bit(0)
     l2c = _c.bit(1)
     l5 = _c.bit(2)
+
+
+@_c.bitfield("u16")
+class GnssGpsTimeValidFlags(_c.Bitfield):
+    """GNSS GPS time valid flags (u16 bitfield).
+
+    Validity of a GNSS GPS time field.
+    """
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("flags", "flags", "FLAGS", 0, 2),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    TOW = 0x0001  # bit 0: Time of week valid.
+    WEEK_NUMBER = 0x0002  # bit 1: Week number valid.
+    FLAGS = 0x0003  # bits 0-1: All flags. (alias mask)
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manuals. (reserved)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    flags = _c.bits(0, 2)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssHardwareStatusValidFlags(_c.Bitfield):
+    """GNSS hardware status valid flags (u16 bitfield).
+
+    Which parameters of a GNSS hardware status field are valid.
+    """
+
+    _MEMBERS = (
+        ("sensor_state", "sensor_state", "SENSOR_STATE", 0, 1),
+        ("antenna_state", "antenna_state", "ANTENNA_STATE", 1, 1),
+        ("antenna_power", "antenna_power", "ANTENNA_POWER", 2, 1),
+        ("flags", "flags", "FLAGS", 0, 3),
+        ("reserved", "reserved", "RESERVED", 3, 13),
+    )
+    SENSOR_STATE = 0x0001  # bit 0: Receiver (sensor) state valid.
+    ANTENNA_STATE = 0x0002  # bit 1: Antenna state valid.
+    ANTENNA_POWER = 0x0004  # bit 2: Antenna power valid.
+    FLAGS = 0x0007  # bits 0-2: All flags. (alias mask)
+    RESERVED = 0xFFF8  # bits 3-15: Not named by the manuals. (reserved)
+
+    sensor_state = _c.bit(0)
+    antenna_state = _c.bit(1)
+    antenna_power = _c.bit(2)
+    flags = _c.bits(0, 3)
+    reserved = _c.bits(3, 13)
+
+
+@_c.bitfield("u16")
+class GnssLeapSecondsValidFlags(_c.Bitfield):
+    """GPS leap seconds valid flags (u16 bitfield).
+
+    Validity of the GPS leap seconds field.
+    """
+
+    _MEMBERS = (
+        ("reserved_0", "reserved_0", "RESERVED_0", 0, 1),
+        ("leap_seconds", "leap_seconds", "LEAP_SECONDS", 1, 1),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    RESERVED_0 = 0x0001  # bit 0: Not named by the manual. (reserved)
+    LEAP_SECONDS = 0x0002  # bit 1: Leap seconds valid.
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manual. (reserved)
+
+    reserved_0 = _c.bit(0)
+    leap_seconds = _c.bit(1)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssLlhPositionValidFlags(_c.Bitfield):
+    """GNSS LLH position valid flags (u16 bitfield).
+
+    Which parameters of a GNSS LLH position field are valid.
+    """
+
+    _MEMBERS = (
+        ("lat_lon", "lat_lon", "LAT_LON", 0, 1),
+        ("ellipsoid_height", "ellipsoid_height", "ELLIPSOID_HEIGHT", 1, 1),
+        ("msl_height", "msl_height", "MSL_HEIGHT", 2, 1),
+        ("horizontal_accuracy", "horizontal_accuracy", "HORIZONTAL_ACCURACY", 3, 1),
+        ("vertical_accuracy", "vertical_accuracy", "VERTICAL_ACCURACY", 4, 1),
+        ("flags", "flags", "FLAGS", 0, 5),
+        ("reserved", "reserved", "RESERVED", 5, 11),
+    )
+    LAT_LON = 0x0001  # bit 0: Latitude and longitude valid.
+    ELLIPSOID_HEIGHT = 0x0002  # bit 1: Height above ellipsoid valid.
+    MSL_HEIGHT = 0x0004  # bit 2: Height above mean sea level valid.
+    HORIZONTAL_ACCURACY = 0x0008  # bit 3: Horizontal accuracy valid.
+    VERTICAL_ACCURACY = 0x0010  # bit 4: Vertical accuracy valid.
+    FLAGS = 0x001F  # bits 0-4: All flags. (alias mask)
+    RESERVED = 0xFFE0  # bits 5-15: Not named by the manuals. (reserved)
+
+    lat_lon = _c.bit(0)
+    ellipsoid_height = _c.bit(1)
+    msl_height = _c.bit(2)
+    horizontal_accuracy = _c.bit(3)
+    vertical_accuracy = _c.bit(4)
+    flags = _c.bits(0, 5)
+    reserved = _c.bits(5, 11)
+
+
+@_c.bitfield("u16")
+class GnssNedVelocityValidFlags(_c.Bitfield):
+    """GNSS NED velocity valid flags (u16 bitfield).
+
+    Which parameters of a GNSS NED velocity field are valid.
+    """
+
+    _MEMBERS = (
+        ("velocity", "velocity", "VELOCITY", 0, 1),
+        ("speed_3d", "speed_3d", "SPEED_3D", 1, 1),
+        ("ground_speed", "ground_speed", "GROUND_SPEED", 2, 1),
+        ("heading", "heading", "HEADING", 3, 1),
+        ("speed_accuracy", "speed_accuracy", "SPEED_ACCURACY", 4, 1),
+        ("heading_accuracy", "heading_accuracy", "HEADING_ACCURACY", 5, 1),
+        ("flags", "flags", "FLAGS", 0, 6),
+        ("reserved", "reserved", "RESERVED", 6, 10),
+    )
+    VELOCITY = 0x0001  # bit 0: NED velocity vector valid.
+    SPEED_3D = 0x0002  # bit 1: 3D speed valid.
+    GROUND_SPEED = 0x0004  # bit 2: Ground speed valid.
+    HEADING = 0x0008  # bit 3: Heading valid.
+    SPEED_ACCURACY = 0x0010  # bit 4: Speed accuracy valid.
+    HEADING_ACCURACY = 0x0020  # bit 5: Heading accuracy valid.
+    FLAGS = 0x003F  # bits 0-5: All flags. (alias mask)
+    RESERVED = 0xFFC0  # bits 6-15: Not named by the manuals. (reserved)
+
+    velocity = _c.bit(0)
+    speed_3d = _c.bit(1)
+    ground_speed = _c.bit(2)
+    heading = _c.bit(3)
+    speed_accuracy = _c.bit(4)
+    heading_accuracy = _c.bit(5)
+    flags = _c.bits(0, 6)
+    reserved = _c.bits(6, 10)
+
+
+@_c.bitfield("u16")
+class GnssRawValidFlags(_c.Bitfield):
+    """Raw observation valid flags (u16 bitfield).
+
+    Which parameters of a raw observation field hold valid data.
+    """
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("receiver_id", "receiver_id", "RECEIVER_ID", 2, 1),
+        ("tracking_channel", "tracking_channel", "TRACKING_CHANNEL", 3, 1),
+        ("gnss_id", "gnss_id", "GNSS_ID", 4, 1),
+        ("satellite_id", "satellite_id", "SATELLITE_ID", 5, 1),
+        ("signal_id", "signal_id", "SIGNAL_ID", 6, 1),
+        ("signal_strength", "signal_strength", "SIGNAL_STRENGTH", 7, 1),
+        ("quality", "quality", "QUALITY", 8, 1),
+        ("pseudorange", "pseudorange", "PSEUDORANGE", 9, 1),
+        ("carrier_phase", "carrier_phase", "CARRIER_PHASE", 10, 1),
+        ("doppler", "doppler", "DOPPLER", 11, 1),
+        ("range_uncertainty", "range_uncertainty", "RANGE_UNCERTAINTY", 12, 1),
+        ("carrier_phase_uncertainty", "carrier_phase_uncertainty", "CARRIER_PHASE_UNCERTAINTY", 13, 1),
+        ("doppler_uncertainty", "doppler_uncertainty", "DOPPLER_UNCERTAINTY", 14, 1),
+        ("lock_time", "lock_time", "LOCK_TIME", 15, 1),
+        ("flags", "flags", "FLAGS", 0, 16),
+    )
+    TOW = 0x0001  # bit 0: Time of week valid.
+    WEEK_NUMBER = 0x0002  # bit 1: Week number valid.
+    RECEIVER_ID = 0x0004  # bit 2: Receiver id valid.
+    TRACKING_CHANNEL = 0x0008  # bit 3: Tracking channel valid.
+    GNSS_ID = 0x0010  # bit 4: Constellation id valid.
+    SATELLITE_ID = 0x0020  # bit 5: Satellite id valid.
+    SIGNAL_ID = 0x0040  # bit 6: Signal id valid.
+    SIGNAL_STRENGTH = 0x0080  # bit 7: Signal strength valid.
+    QUALITY = 0x0100  # bit 8: Quality valid.
+    PSEUDORANGE = 0x0200  # bit 9: Pseudorange valid.
+    CARRIER_PHASE = 0x0400  # bit 10: Carrier phase valid.
+    DOPPLER = 0x0800  # bit 11: Doppler valid.
+    RANGE_UNCERTAINTY = 0x1000  # bit 12: Pseudorange uncertainty valid.
+    CARRIER_PHASE_UNCERTAINTY = 0x2000  # bit 13: Carrier phase uncertainty valid.
+    DOPPLER_UNCERTAINTY = 0x4000  # bit 14: Doppler uncertainty valid.
+    LOCK_TIME = 0x8000  # bit 15: Lock time valid.
+    FLAGS = 0xFFFF  # bits 0-15: All valid flags (the manual's 'flags 0-15' entry). (alias mask)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    receiver_id = _c.bit(2)
+    tracking_channel = _c.bit(3)
+    gnss_id = _c.bit(4)
+    satellite_id = _c.bit(5)
+    signal_id = _c.bit(6)
+    signal_strength = _c.bit(7)
+    quality = _c.bit(8)
+    pseudorange = _c.bit(9)
+    carrier_phase = _c.bit(10)
+    doppler = _c.bit(11)
+    range_uncertainty = _c.bit(12)
+    carrier_phase_uncertainty = _c.bit(13)
+    doppler_uncertainty = _c.bit(14)
+    lock_time = _c.bit(15)
+    flags = _c.bits(0, 16)
+
+
+class GnssReceiverState(_c.Enum):
+    """GNSS receiver (sensor) state (u8).
+
+    Power state of the GNSS receiver (GX5-45 "Sensor State", CV7 "Receiver State").
+    """
+
+    OFF = 0x00  # Receiver off.
+    ON = 0x01  # Receiver on.
+    UNKNOWN = 0x02  # State unknown.
+
+
+@_c.bitfield("u16")
+class GnssSatelliteStatusValidFlags(_c.Bitfield):
+    """Satellite status valid flags (u16 bitfield).
+
+    Which parameters of a satellite status field hold valid data.
+    """
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("gnss_id", "gnss_id", "GNSS_ID", 2, 1),
+        ("satellite_id", "satellite_id", "SATELLITE_ID", 3, 1),
+        ("elevation", "elevation", "ELEVATION", 4, 1),
+        ("azimuth", "azimuth", "AZIMUTH", 5, 1),
+        ("health", "health", "HEALTH", 6, 1),
+        ("flags", "flags", "FLAGS", 0, 7),
+        ("reserved", "reserved", "RESERVED", 7, 9),
+    )
+    TOW = 0x0001  # bit 0: Time of week valid.
+    WEEK_NUMBER = 0x0002  # bit 1: Week number valid.
+    GNSS_ID = 0x0004  # bit 2: Constellation id valid.
+    SATELLITE_ID = 0x0008  # bit 3: Satellite id valid.
+    ELEVATION = 0x0010  # bit 4: Elevation valid.
+    AZIMUTH = 0x0020  # bit 5: Azimuth valid.
+    HEALTH = 0x0040  # bit 6: Health valid.
+    FLAGS = 0x007F  # bits 0-6: All valid flags (the manual's 'flags 0-6' entry). (alias mask)
+    RESERVED = 0xFF80  # bits 7-15: Not named by the manual. (reserved)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    gnss_id = _c.bit(2)
+    satellite_id = _c.bit(3)
+    elevation = _c.bit(4)
+    azimuth = _c.bit(5)
+    health = _c.bit(6)
+    flags = _c.bits(0, 7)
+    reserved = _c.bits(7, 9)
+
+
+@_c.bitfield("u16")
+class GnssSbasInfoValidFlags(_c.Bitfield):
+    """SBAS information valid flags (u16 bitfield).
+
+    Which parameters of the SBAS information field are valid.
+    """
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("sbas_system", "sbas_system", "SBAS_SYSTEM", 2, 1),
+        ("sbas_id", "sbas_id", "SBAS_ID", 3, 1),
+        ("count", "count", "COUNT", 4, 1),
+        ("sbas_status", "sbas_status", "SBAS_STATUS", 5, 1),
+        ("flags", "flags", "FLAGS", 0, 6),
+        ("reserved", "reserved", "RESERVED", 6, 10),
+    )
+    TOW = 0x0001  # bit 0: Time of week valid.
+    WEEK_NUMBER = 0x0002  # bit 1: Week number valid.
+    SBAS_SYSTEM = 0x0004  # bit 2: SBAS system valid.
+    SBAS_ID = 0x0008  # bit 3: SBAS satellite id valid.
+    COUNT = 0x0010  # bit 4: Number of corrections valid.
+    SBAS_STATUS = 0x0020  # bit 5: SBAS status valid.
+    FLAGS = 0x003F  # bits 0-5: All flags. (alias mask)
+    RESERVED = 0xFFC0  # bits 6-15: Not named by the manual. (reserved)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    sbas_system = _c.bit(2)
+    sbas_id = _c.bit(3)
+    count = _c.bit(4)
+    sbas_status = _c.bit(5)
+    flags = _c.bits(0, 6)
+    reserved = _c.bits(6, 10)
+
+
+@_c.bitfield("u8")
+class GnssSbasStatus(_c.Bitfield):
+    """SBAS status (u8 bitfield).
+
+    Status of the SBAS service.
+    """
+
+    _MEMBERS = (
+        ("range_available", "range_available", "RANGE_AVAILABLE", 0, 1),
+        ("corrections_available", "corrections_available", "CORRECTIONS_AVAILABLE", 1, 1),
+        ("integrity_available", "integrity_available", "INTEGRITY_AVAILABLE", 2, 1),
+        ("test_mode", "test_mode", "TEST_MODE", 3, 1),
+        ("reserved", "reserved", "RESERVED", 4, 4),
+    )
+    RANGE_AVAILABLE = 0x01  # bit 0: SBAS ranging available.
+    CORRECTIONS_AVAILABLE = 0x02  # bit 1: SBAS corrections available.
+    INTEGRITY_AVAILABLE = 0x04  # bit 2: SBAS integrity information available.
+    TEST_MODE = 0x08  # bit 3: SBAS is in test mode.
+    RESERVED = 0xF0  # bits 4-7: Not named by the manual. (reserved)
+
+    range_available = _c.bit(0)
+    corrections_available = _c.bit(1)
+    integrity_available = _c.bit(2)
+    test_mode = _c.bit(3)
+    reserved = _c.bits(4, 4)
+
+
+class GnssSbasSystem(_c.Enum):
+    """SBAS system (u8).
+
+    Satellite-based augmentation system the receiver is using.
+    """
+
+    UNKNOWN = 0x00  # Unknown.
+    WAAS = 0x01  # WAAS (North America).
+    EGNOS = 0x02  # EGNOS (Europe).
+    MSAS = 0x03  # MSAS (Japan).
+    GAGAN = 0x04  # GAGAN (India).
+
+
+class GnssSignalId(_c.Enum):
+    """GNSS signal identifier (u8).
+
+    The constellation, frequency band and code/channel component of one observation.
+    """
+
+    UNKNOWN = 0x00  # Unknown or unspecified signal.
+    GPS_L1CA = 0x01  # GPS L1 C/A.
+    GPS_L1P = 0x02  # GPS L1 P.
+    GPS_L1Z = 0x03  # GPS L1 Z-tracking.
+    GPS_L2CA = 0x04  # GPS L2 C/A.
+    GPS_L2P = 0x05  # GPS L2 P.
+    GPS_L2Z = 0x06  # GPS L2 Z-tracking.
+    GPS_L2CL = 0x07  # GPS L2C long code (L).
+    GPS_L2CM = 0x08  # GPS L2C medium code (M).
+    GPS_L2CML = 0x09  # GPS L2C combined M+L.
+    GPS_L5I = 0x0A  # GPS L5 I (data).
+    GPS_L5Q = 0x0B  # GPS L5 Q (pilot).
+    GPS_L5IQ = 0x0C  # GPS L5 combined I+Q.
+    GPS_L1CD = 0x0D  # GPS L1C data (D).
+    GPS_L1CP = 0x0E  # GPS L1C pilot (P).
+    GPS_L1CDP = 0x0F  # GPS L1C combined D+P.
+    GLONASS_G1CA = 0x20  # GLONASS G1 C/A.
+    GLONASS_G1P = 0x21  # GLONASS G1 P.
+    GLONASS_G2C = 0x22  # GLONASS G2 C/A.
+    GLONASS_G2P = 0x23  # GLONASS G2 P.
+    GALILEO_E1C = 0x40  # Galileo E1 C (pilot).
+    GALILEO_E1A = 0x41  # Galileo E1 A (PRS).
+    GALILEO_E1B = 0x42  # Galileo E1 B (data).
+    GALILEO_E1BC = 0x43  # Galileo E1 combined B+C.
+    GALILEO_E1ABC = 0x44  # Galileo E1 combined A+B+C.
+    GALILEO_E6C = 0x45  # Galileo E6 C (pilot).
+    GALILEO_E6A = 0x46  # Galileo E6 A (PRS).
+    GALILEO_E6B = 0x47  # Galileo E6 B (data).
+    GALILEO_E6BC = 0x48  # Galileo E6 combined B+C.
+    GALILEO_E6ABC = 0x49  # Galileo E6 combined A+B+C.
+    GALILEO_E5BI = 0x4A  # Galileo E5b I (data).
+    GALILEO_E5BQ = 0x4B  # Galileo E5b Q (pilot).
+    GALILEO_E5BIQ = 0x4C  # Galileo E5b combined I+Q.
+    GALILEO_E5ABI = 0x4D  # Galileo E5 AltBOC (E5a+E5b) I (data).
+    GALILEO_E5ABQ = 0x4E  # Galileo E5 AltBOC (E5a+E5b) Q (pilot).
+    GALILEO_E5ABIQ = 0x4F  # Galileo E5 AltBOC (E5a+E5b) combined I+Q.
+    GALILEO_E5AI = 0x50  # Galileo E5a I (data).
+    GALILEO_E5AQ = 0x51  # Galileo E5a Q (pilot).
+    GALILEO_E5AIQ = 0x52  # Galileo E5a combined I+Q.
+    SBAS_L1CA = 0x60  # SBAS L1 C/A.
+    SBAS_L5I = 0x61  # SBAS L5 I (data).
+    SBAS_L5Q = 0x62  # SBAS L5 Q (pilot).
+    SBAS_L5IQ = 0x63  # SBAS L5 combined I+Q.
+    QZSS_L1CA = 0x80  # QZSS L1 C/A.
+    QZSS_LEXS = 0x81  # QZSS LEX short code (S).
+    QZSS_LEXL = 0x82  # QZSS LEX long code (L).
+    QZSS_LEXSL = 0x83  # QZSS LEX combined S+L.
+    QZSS_L2CM = 0x84  # QZSS L2C medium code (M).
+    QZSS_L2CL = 0x85  # QZSS L2C long code (L).
+    QZSS_L2CML = 0x86  # QZSS L2C combined M+L.
+    QZSS_L5I = 0x87  # QZSS L5 I (data).
+    QZSS_L5Q = 0x88  # QZSS L5 Q (pilot).
+    QZSS_L5IQ = 0x89  # QZSS L5 combined I+Q.
+    QZSS_L1CD = 0x8A  # QZSS L1C data (D).
+    QZSS_L1CP = 0x8B  # QZSS L1C pilot (P).
+    QZSS_L1CDP = 0x8C  # QZSS L1C combined D+P.
+    BEIDOU_B1I = 0xA0  # BeiDou B1 I.
+    BEIDOU_B1Q = 0xA1  # BeiDou B1 Q.
+    BEIDOU_B1IQ = 0xA2  # BeiDou B1 combined I+Q.
+    BEIDOU_B3I = 0xA3  # BeiDou B3 I.
+    BEIDOU_B3Q = 0xA4  # BeiDou B3 Q.
+    BEIDOU_B3IQ = 0xA5  # BeiDou B3 combined I+Q.
+    BEIDOU_B2I = 0xA6  # BeiDou B2 I.
+    BEIDOU_B2Q = 0xA7  # BeiDou B2 Q.
+    BEIDOU_B2IQ = 0xA8  # BeiDou B2 combined I+Q.
+    BEIDOU_B2A = 0xA9  # BeiDou B2a.
+
+
+class GnssSignalQuality(_c.Enum):
+    """GNSS raw observation signal quality (u8).
+
+    Tracking state of the signal an observation comes from.
+    """
+
+    NONE = 0x00  # No signal.
+    SEARCHING = 0x01  # Searching for the signal.
+    ACQUIRED = 0x02  # Signal acquired.
+    UNUSABLE = 0x03  # Signal detected but unusable.
+    TIME_LOCKED = 0x04  # Time locked.
+    FULLY_LOCKED = 0x05  # Fully locked.
+
+
+@_c.bitfield("u16")
+class GnssSvFlags(_c.Bitfield):
+    """Space vehicle flags (u16 bitfield).
+
+    Use and health of one space vehicle.
+    """
+
+    _MEMBERS = (
+        ("used_for_navigation", "used_for_navigation", "USED_FOR_NAVIGATION", 0, 1),
+        ("healthy", "healthy", "HEALTHY", 1, 1),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    USED_FOR_NAVIGATION = 0x0001  # bit 0: The SV is used in the navigation solution.
+    HEALTHY = 0x0002  # bit 1: The SV is healthy.
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manual. (reserved)
+
+    used_for_navigation = _c.bit(0)
+    healthy = _c.bit(1)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssSvInfoValidFlags(_c.Bitfield):
+    """Space vehicle information valid flags (u16 bitfield).
+
+    Which parameters of a space vehicle information entry are valid.
+    """
+
+    _MEMBERS = (
+        ("channel", "channel", "CHANNEL", 0, 1),
+        ("sv_id", "sv_id", "SV_ID", 1, 1),
+        ("reserved_2", "reserved_2", "RESERVED_2", 2, 1),
+        ("carrier_to_noise_ratio", "carrier_to_noise_ratio", "CARRIER_TO_NOISE_RATIO", 3, 1),
+        ("azimuth", "azimuth", "AZIMUTH", 4, 1),
+        ("elevation", "elevation", "ELEVATION", 5, 1),
+        ("sv_flags", "sv_flags", "SV_FLAGS", 6, 1),
+        ("reserved", "reserved", "RESERVED", 7, 9),
+    )
+    CHANNEL = 0x0001  # bit 0: Channel valid.
+    SV_ID = 0x0002  # bit 1: Space vehicle id valid.
+    RESERVED_2 = 0x0004  # bit 2: Not named by the manual (its list skips 0x0004). (reserved)
+    CARRIER_TO_NOISE_RATIO = 0x0008  # bit 3: Carrier to noise ratio valid.
+    AZIMUTH = 0x0010  # bit 4: Azimuth valid.
+    ELEVATION = 0x0020  # bit 5: Elevation valid.
+    SV_FLAGS = 0x0040  # bit 6: Space vehicle flags valid.
+    RESERVED = 0xFF80  # bits 7-15: Not named by the manual. (reserved)
+
+    channel = _c.bit(0)
+    sv_id = _c.bit(1)
+    reserved_2 = _c.bit(2)
+    carrier_to_noise_ratio = _c.bit(3)
+    azimuth = _c.bit(4)
+    elevation = _c.bit(5)
+    sv_flags = _c.bit(6)
+    reserved = _c.bits(7, 9)
+
+
+@_c.bitfield("u16")
+class GnssUtcTimeValidFlagsCv7(_c.Bitfield):
+    """GNSS UTC time valid flags (CV7) (u16 bitfield).
+
+    Validity of a CV7 GNSS UTC time field.
+    """
+
+    _MEMBERS = (
+        ("gnss_date_time", "gnss_date_time", "GNSS_DATE_TIME", 0, 1),
+        ("leap_seconds_known", "leap_seconds_known", "LEAP_SECONDS_KNOWN", 1, 1),
+        ("flags", "flags", "FLAGS", 0, 2),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    GNSS_DATE_TIME = 0x0001  # bit 0: Date and time valid.
+    LEAP_SECONDS_KNOWN = 0x0002  # bit 1: The GPS-UTC leap second offset is known, so the UTC time is exact.
+    FLAGS = 0x0003  # bits 0-1: All flags. (alias mask)
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manual. (reserved)
+
+    gnss_date_time = _c.bit(0)
+    leap_seconds_known = _c.bit(1)
+    flags = _c.bits(0, 2)
+    reserved = _c.bits(2, 14)
+
+
+@_c.bitfield("u16")
+class GnssUtcTimeValidFlagsGx5(_c.Bitfield):
+    """GNSS UTC time valid flags (GX5-45) (u16 bitfield).
+
+    Validity of the GX5-45 GNSS UTC time field.
+    """
+
+    _MEMBERS = (
+        ("date_valid", "date_valid", "DATE_VALID", 0, 1),
+        ("time_valid", "time_valid", "TIME_VALID", 1, 1),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    DATE_VALID = 0x0001  # bit 0: Date valid.
+    TIME_VALID = 0x0002  # bit 1: Time valid.
+    RESERVED = 0xFFFC  # bits 2-15: Not named by the manual. (reserved)
+
+    date_valid = _c.bit(0)
+    time_valid = _c.bit(1)
+    reserved = _c.bits(2, 14)
 
 
 class GpioEncoderBehavior(_c.Enum):
@@ -856,6 +2159,30 @@ class GpioPinMode(_c.Bitfield):
     open_drain = _c.bit(0)
     pulldown = _c.bit(1)
     pullup = _c.bit(2)
+
+
+@_c.bitfield("u8")
+class GpioPinStates(_c.Bitfield):
+    """GPIO pin states (u8 bitfield)."""
+
+    _MEMBERS = (
+        ("pin_1", "pin_1", "PIN_1", 0, 1),
+        ("pin_2", "pin_2", "PIN_2", 1, 1),
+        ("pin_3", "pin_3", "PIN_3", 2, 1),
+        ("pin_4", "pin_4", "PIN_4", 3, 1),
+        ("reserved", "reserved", "RESERVED", 4, 4),
+    )
+    PIN_1 = 0x01  # bit 0: State of GPIO pin 1.
+    PIN_2 = 0x02  # bit 1: State of GPIO pin 2.
+    PIN_3 = 0x04  # bit 2: State of GPIO pin 3.
+    PIN_4 = 0x08  # bit 3: State of GPIO pin 4.
+    RESERVED = 0xF0  # bits 4-7: No such pins; read as 0. (reserved)
+
+    pin_1 = _c.bit(0)
+    pin_2 = _c.bit(1)
+    pin_3 = _c.bit(2)
+    pin_4 = _c.bit(3)
+    reserved = _c.bits(4, 4)
 
 
 class GpioPpsBehavior(_c.Enum):
@@ -1004,11 +2331,80 @@ class MagneticParamSource(_c.Enum):
     MANUAL = 0x03  # Value supplied by the user; the device does not validate it.
 
 
+@_c.bitfield("u16")
+class OdometerDataValidFlags(_c.Bitfield):
+    """Odometer data valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("valid", "valid", "VALID", 0, 1),
+        ("reserved", "reserved", "RESERVED", 1, 15),
+    )
+    VALID = 0x0001  # bit 0: Set when the odometer is configured (speed and uncertainty are valid).
+    RESERVED = 0xFFFE  # bits 1-15: Not described. (reserved)
+
+    valid = _c.bit(0)
+    reserved = _c.bits(1, 15)
+
+
 class OdometerMode(_c.Enum):
     """Odometer mode (u8)."""
 
     DISABLED = 0x00  # Encoder disabled.
     QUADRATURE = 0x02  # Quadrature encoder mode.
+
+
+@_c.bitfield("u16")
+class OverrangeStatusFlags(_c.Bitfield):
+    """Sensor over-range status (u16 bitfield).
+
+    One bit per sensor axis that is near or beyond its range.
+    """
+
+    _MEMBERS = (
+        ("accel_x", "accel_x", "ACCEL_X", 0, 1),
+        ("accel_y", "accel_y", "ACCEL_Y", 1, 1),
+        ("accel_z", "accel_z", "ACCEL_Z", 2, 1),
+        ("reserved_3", "reserved_3", "RESERVED_3", 3, 1),
+        ("gyro_x", "gyro_x", "GYRO_X", 4, 1),
+        ("gyro_y", "gyro_y", "GYRO_Y", 5, 1),
+        ("gyro_z", "gyro_z", "GYRO_Z", 6, 1),
+        ("reserved_7", "reserved_7", "RESERVED_7", 7, 1),
+        ("mag_x", "mag_x", "MAG_X", 8, 1),
+        ("mag_y", "mag_y", "MAG_Y", 9, 1),
+        ("mag_z", "mag_z", "MAG_Z", 10, 1),
+        ("reserved_11", "reserved_11", "RESERVED_11", 11, 1),
+        ("press", "press", "PRESS", 12, 1),
+        ("reserved_13_15", "reserved_13_15", "RESERVED_13_15", 13, 3),
+    )
+    ACCEL_X = 0x0001  # bit 0: Accelerometer X axis over range.
+    ACCEL_Y = 0x0002  # bit 1: Accelerometer Y axis over range.
+    ACCEL_Z = 0x0004  # bit 2: Accelerometer Z axis over range.
+    RESERVED_3 = 0x0008  # bit 3: Not listed. (reserved)
+    GYRO_X = 0x0010  # bit 4: Gyroscope X axis over range.
+    GYRO_Y = 0x0020  # bit 5: Gyroscope Y axis over range.
+    GYRO_Z = 0x0040  # bit 6: Gyroscope Z axis over range.
+    RESERVED_7 = 0x0080  # bit 7: Not listed. (reserved)
+    MAG_X = 0x0100  # bit 8: Magnetometer X axis over range.
+    MAG_Y = 0x0200  # bit 9: Magnetometer Y axis over range.
+    MAG_Z = 0x0400  # bit 10: Magnetometer Z axis over range.
+    RESERVED_11 = 0x0800  # bit 11: Not listed. (reserved)
+    PRESS = 0x1000  # bit 12: Pressure sensor over range.
+    RESERVED_13_15 = 0xE000  # bits 13-15: Not listed. (reserved)
+
+    accel_x = _c.bit(0)
+    accel_y = _c.bit(1)
+    accel_z = _c.bit(2)
+    reserved_3 = _c.bit(3)
+    gyro_x = _c.bit(4)
+    gyro_y = _c.bit(5)
+    gyro_z = _c.bit(6)
+    reserved_7 = _c.bit(7)
+    mag_x = _c.bit(8)
+    mag_y = _c.bit(9)
+    mag_z = _c.bit(10)
+    reserved_11 = _c.bit(11)
+    press = _c.bit(12)
+    reserved_13_15 = _c.bits(13, 3)
 
 
 class PitchRollAidingSource(_c.Enum):
@@ -1042,6 +2438,90 @@ class RelativePositionSource(_c.Enum):
 
 
 @_c.bitfield("u16")
+class RtkCorrectionsEpochStatus(_c.Bitfield):
+    """RTK corrections epoch status (u16 bitfield).
+
+    Status of the corrections received during the epoch.
+    """
+
+    _MEMBERS = (
+        ("antenna_location_received", "antenna_location_received", "ANTENNA_LOCATION_RECEIVED", 0, 1),
+        ("antenna_description_received", "antenna_description_received", "ANTENNA_DESCRIPTION_RECEIVED", 1, 1),
+        ("gps_received", "gps_received", "GPS_RECEIVED", 2, 1),
+        ("glonass_received", "glonass_received", "GLONASS_RECEIVED", 3, 1),
+        ("galileo_received", "galileo_received", "GALILEO_RECEIVED", 4, 1),
+        ("beidou_received", "beidou_received", "BEIDOU_RECEIVED", 5, 1),
+        ("using_gps_msm_messages", "using_gps_msm_messages", "USING_GPS_MSM_MESSAGES", 6, 1),
+        ("using_glonass_msm_messages", "using_glonass_msm_messages", "USING_GLONASS_MSM_MESSAGES", 7, 1),
+        ("dongle_status_read_failed", "dongle_status_read_failed", "DONGLE_STATUS_READ_FAILED", 8, 1),
+        ("reserved", "reserved", "RESERVED", 9, 7),
+    )
+    ANTENNA_LOCATION_RECEIVED = 0x0001  # bit 0: Antenna location (station coordinates) received.
+    ANTENNA_DESCRIPTION_RECEIVED = 0x0002  # bit 1: Antenna description received.
+    GPS_RECEIVED = 0x0004  # bit 2: GPS corrections received.
+    GLONASS_RECEIVED = 0x0008  # bit 3: GLONASS corrections received.
+    GALILEO_RECEIVED = 0x0010  # bit 4: Galileo corrections received.
+    BEIDOU_RECEIVED = 0x0020  # bit 5: BeiDou corrections received.
+    USING_GPS_MSM_MESSAGES = 0x0040  # bit 6: GPS corrections come from MSM messages rather than RTCM 1001-1004.
+    USING_GLONASS_MSM_MESSAGES = 0x0080  # bit 7: GLONASS corrections come from MSM messages rather than RTCM 1009-1012.
+    DONGLE_STATUS_READ_FAILED = 0x0100  # bit 8: Reading the dongle status was attempted and failed.
+    RESERVED = 0xFE00  # bits 9-15: Not named by the manual. (reserved)
+
+    antenna_location_received = _c.bit(0)
+    antenna_description_received = _c.bit(1)
+    gps_received = _c.bit(2)
+    glonass_received = _c.bit(3)
+    galileo_received = _c.bit(4)
+    beidou_received = _c.bit(5)
+    using_gps_msm_messages = _c.bit(6)
+    using_glonass_msm_messages = _c.bit(7)
+    dongle_status_read_failed = _c.bit(8)
+    reserved = _c.bits(9, 7)
+
+
+@_c.bitfield("u16")
+class RtkCorrectionsStatusValidFlags(_c.Bitfield):
+    """RTK corrections status valid flags (u16 bitfield).
+
+    Which parameters of the RTK corrections status field are valid.
+    """
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("epoch_status", "epoch_status", "EPOCH_STATUS", 2, 1),
+        ("dongle_status", "dongle_status", "DONGLE_STATUS", 3, 1),
+        ("gps_latency", "gps_latency", "GPS_LATENCY", 4, 1),
+        ("glonass_latency", "glonass_latency", "GLONASS_LATENCY", 5, 1),
+        ("galileo_latency", "galileo_latency", "GALILEO_LATENCY", 6, 1),
+        ("beidou_latency", "beidou_latency", "BEIDOU_LATENCY", 7, 1),
+        ("flags", "flags", "FLAGS", 0, 8),
+        ("reserved", "reserved", "RESERVED", 8, 8),
+    )
+    TOW = 0x0001  # bit 0: Time of week valid.
+    WEEK_NUMBER = 0x0002  # bit 1: Week number valid.
+    EPOCH_STATUS = 0x0004  # bit 2: Epoch status valid.
+    DONGLE_STATUS = 0x0008  # bit 3: Dongle status valid.
+    GPS_LATENCY = 0x0010  # bit 4: GPS correction latency valid.
+    GLONASS_LATENCY = 0x0020  # bit 5: GLONASS correction latency valid.
+    GALILEO_LATENCY = 0x0040  # bit 6: Galileo correction latency valid.
+    BEIDOU_LATENCY = 0x0080  # bit 7: BeiDou correction latency valid.
+    FLAGS = 0x00FF  # bits 0-7: All flags. (alias mask)
+    RESERVED = 0xFF00  # bits 8-15: Not named by the manual. (reserved)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    epoch_status = _c.bit(2)
+    dongle_status = _c.bit(3)
+    gps_latency = _c.bit(4)
+    glonass_latency = _c.bit(5)
+    galileo_latency = _c.bit(6)
+    beidou_latency = _c.bit(7)
+    flags = _c.bits(0, 8)
+    reserved = _c.bits(8, 8)
+
+
+@_c.bitfield("u16")
 class SbasOptions(_c.Bitfield):
     """SBAS options (u16 bitfield)."""
 
@@ -1059,6 +2539,41 @@ class SbasOptions(_c.Bitfield):
     apply_integrity = _c.bit(2)
 
 
+@_c.bitfield("u16")
+class SensorGpsTimestampFlags(_c.Bitfield):
+    """Sensor GPS timestamp flags (0x80,0x12) (u16 bitfield).
+
+    Status of the GPS timestamp attached to sensor data. Bits 0-2 mean the same on both devices (the
+    GX5-45 calls them PPS Beacon Good, GPS Time Refresh and GPS Time Initialized); bits 3 and 4
+    exist only on the CV7.
+    """
+
+    _MEMBERS = (
+        ("pps_valid", "pps_valid", "PPS_VALID", 0, 1),
+        ("time_refresh", "time_refresh", "TIME_REFRESH", 1, 1),
+        ("time_initialized", "time_initialized", "TIME_INITIALIZED", 2, 1),
+        ("tow_valid", "tow_valid", "TOW_VALID", 3, 1),
+        ("week_number_valid", "week_number_valid", "WEEK_NUMBER_VALID", 4, 1),
+        ("reserved", "reserved", "RESERVED", 5, 11),
+    )
+    # bit 0: PPS signal present (GX5-45: PPS Beacon Good); when clear the internal clock stands in for the PPS.
+    PPS_VALID = 0x0001
+    # bit 1: Toggles each time the time is updated (GPS time, or the GPS Time Update command 0x01,0x72).
+    TIME_REFRESH = 0x0002
+    # bit 2: Set once the time has been set at least once (the first time refresh); stays set.
+    TIME_INITIALIZED = 0x0004
+    TOW_VALID = 0x0008  # bit 3: Time of week is valid. (devices: cv7_ins)
+    WEEK_NUMBER_VALID = 0x0010  # bit 4: Week number is valid. (devices: cv7_ins)
+    RESERVED = 0xFFE0  # bits 5-15: Not defined by either manual (GX5-45: bits 3-15). (reserved)
+
+    pps_valid = _c.bit(0)
+    time_refresh = _c.bit(1)
+    time_initialized = _c.bit(2)
+    tow_valid = _c.bit(3)
+    week_number_valid = _c.bit(4)
+    reserved = _c.bits(5, 11)
+
+
 class SensorRangeType(_c.Enum):
     """Sensor whose range is set or queried (u8)."""
 
@@ -1067,6 +2582,27 @@ class SensorRangeType(_c.Enum):
     GYRO = 0x02  # Gyroscope; range in degrees/s.
     MAG = 0x03  # Magnetometer; range in Gauss.
     PRESS = 0x04  # Pressure sensor; range in hPa.
+
+
+@_c.bitfield("u16")
+class SharedGpsTimestampValidFlags(_c.Bitfield):
+    """Shared GPS timestamp valid flags (u16 bitfield)."""
+
+    _MEMBERS = (
+        ("tow", "tow", "TOW", 0, 1),
+        ("week_number", "week_number", "WEEK_NUMBER", 1, 1),
+        ("time_valid", "time_valid", "TIME_VALID", 0, 2),
+        ("reserved", "reserved", "RESERVED", 2, 14),
+    )
+    TOW = 0x0001  # bit 0: The whole-second time of week has been set.
+    WEEK_NUMBER = 0x0002  # bit 1: The week number has been set.
+    TIME_VALID = 0x0003  # bits 0-1: Both time of week and week number have been set. (alias mask)
+    RESERVED = 0xFFFC  # bits 2-15: Not listed. (reserved)
+
+    tow = _c.bit(0)
+    week_number = _c.bit(1)
+    time_valid = _c.bits(0, 2)
+    reserved = _c.bits(2, 14)
 
 
 class SpartnConnectionType(_c.Enum):
@@ -1317,6 +2853,74 @@ class ConstellationSettings(_c.Struct):
         ),
     )
     _SIZE = 6
+
+
+@_dc.dataclass
+class Cv7ContinuousBit(_c.Struct):
+    """3DM-CV7 continuous built-in test result (128 bits) (struct, 16 bytes).
+
+    The 16-byte continuous BIT bit map, one member per byte in wire order. Bit n of the map is bit
+    (n mod 8) of byte n div 8 ("Relative Index (Byte.Bit)"). Bytes 0-3 are system bits, 4-7 IMU
+    bits, 8-11 navigation filter bits and 12-15 GNSS bits. The bits latch until the message is sent;
+    all unspecified bits are reserved and must be ignored.
+    """
+
+    system_byte_0: Cv7ContinuousBitSystem0 = Cv7ContinuousBitSystem0(0)  # Bits 0-7: system.
+    reserved_byte_1: int = 0  # Bits 8-15: reserved (0.7-1.7).
+    system_byte_2: Cv7ContinuousBitSystem2 = Cv7ContinuousBitSystem2(0)  # Bits 16-23: IMU and filter process faults.
+    system_byte_3: Cv7ContinuousBitSystem3 = Cv7ContinuousBitSystem3(0)  # Bits 24-31: GNSS process faults.
+    imu_byte_4: Cv7ContinuousBitImu4 = Cv7ContinuousBitImu4(0)  # Bits 32-39: IMU communication, timing, calibration.
+    imu_byte_5: Cv7ContinuousBitImu5 = Cv7ContinuousBitImu5(0)  # Bits 40-47: accelerometer and gyroscope.
+    imu_byte_6: Cv7ContinuousBitImu6 = Cv7ContinuousBitImu6(0)  # Bits 48-55: magnetometer and pressure sensor.
+    imu_byte_7: Cv7ContinuousBitImu7 = Cv7ContinuousBitImu7(0)  # Bits 56-63: factory bits.
+    nav_byte_8: Cv7ContinuousBitNav8 = Cv7ContinuousBitNav8(0)  # Bits 64-71: filter timing.
+    reserved_byte_9: int = 0  # Bits 72-79: reserved.
+    reserved_byte_10: int = 0  # Bits 80-87: reserved.
+    reserved_byte_11: int = 0  # Bits 88-95: reserved.
+    reserved_byte_12: int = 0  # Bits 96-103: reserved.
+    gnss_byte_13: Cv7ContinuousBitGnss13 = Cv7ContinuousBitGnss13(0)  # Bits 104-111: GNSS receivers.
+    gnss_byte_14: Cv7ContinuousBitGnss14 = Cv7ContinuousBitGnss14(0)  # Bits 112-119: GNSS receivers.
+    reserved_byte_15: int = 0  # Bits 120-127: reserved.
+
+    _ATTRS = (
+        "system_byte_0",
+        "reserved_byte_1",
+        "system_byte_2",
+        "system_byte_3",
+        "imu_byte_4",
+        "imu_byte_5",
+        "imu_byte_6",
+        "imu_byte_7",
+        "nav_byte_8",
+        "reserved_byte_9",
+        "reserved_byte_10",
+        "reserved_byte_11",
+        "reserved_byte_12",
+        "gnss_byte_13",
+        "gnss_byte_14",
+        "reserved_byte_15",
+    )
+    _OPS = (
+        _c.Run(
+            _c.P("system_byte_0", _c.flags(Cv7ContinuousBitSystem0)),
+            _c.P("reserved_byte_1", _c.U8),
+            _c.P("system_byte_2", _c.flags(Cv7ContinuousBitSystem2)),
+            _c.P("system_byte_3", _c.flags(Cv7ContinuousBitSystem3)),
+            _c.P("imu_byte_4", _c.flags(Cv7ContinuousBitImu4)),
+            _c.P("imu_byte_5", _c.flags(Cv7ContinuousBitImu5)),
+            _c.P("imu_byte_6", _c.flags(Cv7ContinuousBitImu6)),
+            _c.P("imu_byte_7", _c.flags(Cv7ContinuousBitImu7)),
+            _c.P("nav_byte_8", _c.flags(Cv7ContinuousBitNav8)),
+            _c.P("reserved_byte_9", _c.U8),
+            _c.P("reserved_byte_10", _c.U8),
+            _c.P("reserved_byte_11", _c.U8),
+            _c.P("reserved_byte_12", _c.U8),
+            _c.P("gnss_byte_13", _c.flags(Cv7ContinuousBitGnss13)),
+            _c.P("gnss_byte_14", _c.flags(Cv7ContinuousBitGnss14)),
+            _c.P("reserved_byte_15", _c.U8),
+        ),
+    )
+    _SIZE = 16
 
 
 @_dc.dataclass

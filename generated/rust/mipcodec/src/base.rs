@@ -798,8 +798,8 @@ impl crate::wire::Layout for ContinuousBit {
 /// Continuous built-in test result. Device-specific 128-bit bitfield, least-significant byte first: bit 0 is bit 0 of result\[0\], bit 127 is bit 7 of result\[15\].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContinuousBitResult {
-    /// Continuous BIT flags, least-significant byte first.
-    pub result: [u8; 16],
+    /// Continuous BIT bit map (16 bytes, least-significant byte first), as in system data 0xA0,0x01.
+    pub result: crate::types::Cv7ContinuousBit,
 }
 
 impl Default for ContinuousBitResult {
@@ -810,12 +810,13 @@ impl Default for ContinuousBitResult {
 
 impl crate::wire::Wire for ContinuousBitResult {
     const ZERO: Self = Self {
-        result: <[u8; 16] as crate::wire::Wire>::ZERO,
+        result: <crate::types::Cv7ContinuousBit as crate::wire::Wire>::ZERO,
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
-        let p_result = <[u8; 16] as crate::wire::Wire>::decode(r).map_err(|e| e.at("result"))?;
+        let p_result = <crate::types::Cv7ContinuousBit as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("result"))?;
         Ok(Self { result: p_result })
     }
 
@@ -841,7 +842,7 @@ impl crate::json_read::FromJson for ContinuousBitResult {
         let o = crate::json_read::Obj::new(v, &["result"])?;
         let p_result = o.req(
             "result",
-            <[u8; 16] as crate::json_read::FromJson>::from_json,
+            <crate::types::Cv7ContinuousBit as crate::json_read::FromJson>::from_json,
         )?;
         Ok(Self { result: p_result })
     }

@@ -69,7 +69,23 @@ pub fn set_kind(set: u8) -> Option<SetKind> {
 
 /// Whether the spec defines descriptor set `set`.
 pub fn set_defined(set: u8) -> bool {
-    matches!(set, 0x01 | 0x0C | 0x0D | 0x0E | 0x13 | 0x7F | 0x80 | 0x82)
+    matches!(
+        set,
+        0x01 | 0x0C
+            | 0x0D
+            | 0x0E
+            | 0x13
+            | 0x7F
+            | 0x80
+            | 0x81
+            | 0x82
+            | 0x91
+            | 0x92
+            | 0x93
+            | 0x94
+            | 0xA0
+            | 0xFF
+    )
 }
 
 /// A decoded field, by the group that defines it.
@@ -90,8 +106,22 @@ pub enum FieldValue {
     System(crate::system::SetField),
     /// A field of set 0x80.
     Sensor(crate::sensor::SetField),
+    /// A field of set 0x81.
+    GnssData(crate::gnss_data::SetField),
     /// A field of set 0x82.
     FilterData(crate::filter_data::SetField),
+    /// A field of set 0x91.
+    GnssReceiver1(crate::gnss_receiver_1::SetField),
+    /// A field of set 0x92.
+    GnssReceiver2(crate::gnss_receiver_2::SetField),
+    /// A field of set 0x93.
+    GnssCorrections(crate::gnss_corrections::SetField),
+    /// A field of set 0x94.
+    GnssExternal(crate::gnss_external::SetField),
+    /// A field of set 0xA0.
+    SystemData(crate::system_data::SetField),
+    /// A field of set 0xFF.
+    Shared(crate::shared::SetField),
     /// A reserved field.
     Reserved(crate::reserved::ReservedField),
 }
@@ -107,7 +137,14 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.descriptor(),
             FieldValue::System(v) => v.descriptor(),
             FieldValue::Sensor(v) => v.descriptor(),
+            FieldValue::GnssData(v) => v.descriptor(),
             FieldValue::FilterData(v) => v.descriptor(),
+            FieldValue::GnssReceiver1(v) => v.descriptor(),
+            FieldValue::GnssReceiver2(v) => v.descriptor(),
+            FieldValue::GnssCorrections(v) => v.descriptor(),
+            FieldValue::GnssExternal(v) => v.descriptor(),
+            FieldValue::SystemData(v) => v.descriptor(),
+            FieldValue::Shared(v) => v.descriptor(),
             FieldValue::Reserved(v) => v.descriptor(),
         }
     }
@@ -122,7 +159,14 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.name(),
             FieldValue::System(v) => v.name(),
             FieldValue::Sensor(v) => v.name(),
+            FieldValue::GnssData(v) => v.name(),
             FieldValue::FilterData(v) => v.name(),
+            FieldValue::GnssReceiver1(v) => v.name(),
+            FieldValue::GnssReceiver2(v) => v.name(),
+            FieldValue::GnssCorrections(v) => v.name(),
+            FieldValue::GnssExternal(v) => v.name(),
+            FieldValue::SystemData(v) => v.name(),
+            FieldValue::Shared(v) => v.name(),
             FieldValue::Reserved(v) => v.name(),
         }
     }
@@ -137,7 +181,14 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.device(),
             FieldValue::System(v) => v.device(),
             FieldValue::Sensor(v) => v.device(),
+            FieldValue::GnssData(v) => v.device(),
             FieldValue::FilterData(v) => v.device(),
+            FieldValue::GnssReceiver1(v) => v.device(),
+            FieldValue::GnssReceiver2(v) => v.device(),
+            FieldValue::GnssCorrections(v) => v.device(),
+            FieldValue::GnssExternal(v) => v.device(),
+            FieldValue::SystemData(v) => v.device(),
+            FieldValue::Shared(v) => v.device(),
             FieldValue::Reserved(v) => v.device(),
         }
     }
@@ -152,7 +203,14 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.encode_data(w),
             FieldValue::System(v) => v.encode_data(w),
             FieldValue::Sensor(v) => v.encode_data(w),
+            FieldValue::GnssData(v) => v.encode_data(w),
             FieldValue::FilterData(v) => v.encode_data(w),
+            FieldValue::GnssReceiver1(v) => v.encode_data(w),
+            FieldValue::GnssReceiver2(v) => v.encode_data(w),
+            FieldValue::GnssCorrections(v) => v.encode_data(w),
+            FieldValue::GnssExternal(v) => v.encode_data(w),
+            FieldValue::SystemData(v) => v.encode_data(w),
+            FieldValue::Shared(v) => v.encode_data(w),
             FieldValue::Reserved(v) => v.encode_data(w),
         }
     }
@@ -167,7 +225,14 @@ impl FieldValue {
             FieldValue::Aiding(v) => v.write_values_json(w),
             FieldValue::System(v) => v.write_values_json(w),
             FieldValue::Sensor(v) => v.write_values_json(w),
+            FieldValue::GnssData(v) => v.write_values_json(w),
             FieldValue::FilterData(v) => v.write_values_json(w),
+            FieldValue::GnssReceiver1(v) => v.write_values_json(w),
+            FieldValue::GnssReceiver2(v) => v.write_values_json(w),
+            FieldValue::GnssCorrections(v) => v.write_values_json(w),
+            FieldValue::GnssExternal(v) => v.write_values_json(w),
+            FieldValue::SystemData(v) => v.write_values_json(w),
+            FieldValue::Shared(v) => v.write_values_json(w),
             FieldValue::Reserved(v) => v.write_values_json(w),
         }
     }
@@ -210,8 +275,22 @@ impl FieldValue {
                 .map(|r| r.map(FieldValue::System)),
             0x80 => crate::sensor::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Sensor)),
+            0x81 => crate::gnss_data::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::GnssData)),
             0x82 => crate::filter_data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::FilterData)),
+            0x91 => crate::gnss_receiver_1::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::GnssReceiver1)),
+            0x92 => crate::gnss_receiver_2::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::GnssReceiver2)),
+            0x93 => crate::gnss_corrections::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::GnssCorrections)),
+            0x94 => crate::gnss_external::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::GnssExternal)),
+            0xA0 => crate::system_data::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::SystemData)),
+            0xFF => crate::shared::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::Shared)),
             _ => None,
         };
         if let Some(result) = found {
@@ -222,6 +301,11 @@ impl FieldValue {
             crate::reserved::ReservedField::from_json(kind, descriptor, device, values)
         {
             return result.map(FieldValue::Reserved);
+        }
+        if kind == Some(SetKind::Data) {
+            if let Some(result) = crate::shared::SetField::from_json(descriptor, device, values) {
+                return result.map(FieldValue::Shared);
+            }
         }
         Err(crate::json_read::JsonError::new(std::format!(
             "descriptor {descriptor} is not defined in set {set}; write the field raw, with \"data\""
@@ -255,8 +339,22 @@ pub fn decode_field(
                 .map(|r| r.map(FieldValue::System)),
             0x80 => crate::sensor::SetField::decode(descriptor, data, device)
                 .map(|r| r.map(FieldValue::Sensor)),
+            0x81 => crate::gnss_data::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::GnssData)),
             0x82 => crate::filter_data::SetField::decode(descriptor, data, device)
                 .map(|r| r.map(FieldValue::FilterData)),
+            0x91 => crate::gnss_receiver_1::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::GnssReceiver1)),
+            0x92 => crate::gnss_receiver_2::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::GnssReceiver2)),
+            0x93 => crate::gnss_corrections::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::GnssCorrections)),
+            0x94 => crate::gnss_external::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::GnssExternal)),
+            0xA0 => crate::system_data::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::SystemData)),
+            0xFF => crate::shared::SetField::decode(descriptor, data, device)
+                .map(|r| r.map(FieldValue::Shared)),
             _ => None,
         };
     if let Some(result) = found {
@@ -265,6 +363,11 @@ pub fn decode_field(
     let kind = set_kind(set);
     if let Some(result) = crate::reserved::ReservedField::decode(kind, descriptor, data) {
         return result.map(FieldValue::Reserved);
+    }
+    if kind == Some(SetKind::Data) {
+        if let Some(result) = crate::shared::SetField::decode(descriptor, data, device) {
+            return result.map(FieldValue::Shared);
+        }
     }
     Err(DecodeError::new(if set_defined(set) {
         DecodeErrorKind::UnknownDescriptor

@@ -61,8 +61,15 @@ pub mod base;
 pub mod filter;
 pub mod filter_data;
 pub mod gnss;
+pub mod gnss_corrections;
+pub mod gnss_data;
+pub mod gnss_external;
+pub mod gnss_receiver_1;
+pub mod gnss_receiver_2;
 pub mod sensor;
+pub mod shared;
 pub mod system;
+pub mod system_data;
 pub mod threedm;
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};

@@ -7,13 +7,13 @@ use crate::fields::{FieldItem, Packet};
 use crate::framing::FIELD_HEADER_SIZE;
 
 /// Data sets that group continuation packets (one tracker slot each).
-pub const DATA_SETS: [u8; 2] = [0x80, 0x82];
+pub const DATA_SETS: [u8; 8] = [0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0];
 /// The first shared descriptor.
 pub const FIRST_SHARED: u16 = 208;
 /// (descriptor, data size) of the shared fields whose value identifies a sample.
-pub const TIMESTAMPS: [(u8, usize); 0] = [];
+pub const TIMESTAMPS: [(u8, usize); 3] = [(0xD3, 12), (0xD5, 8), (0xD7, 10)];
 /// Bytes of the largest key.
-pub const MAX_KEY: usize = 1;
+pub const MAX_KEY: usize = 36;
 
 /// The key of a packet and the size of its leading shared run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,7 +38,7 @@ pub fn sample_key(packet: &Packet<'_>) -> SampleKey {
         len: 0,
         shared_prefix: 0,
     };
-    let mut seen = [false; 0];
+    let mut seen = [false; 3];
     let mut pos = 0;
     for item in packet.fields() {
         let FieldItem::Field { descriptor, data } = item else {
@@ -85,7 +85,7 @@ struct Slot {
 /// Numbers the samples of complete packets; fixed state, one slot per data set.
 #[derive(Clone, Debug)]
 pub struct SampleTracker {
-    slots: [Slot; 2],
+    slots: [Slot; 8],
     next: u64,
 }
 
@@ -108,7 +108,7 @@ impl SampleTracker {
             },
         };
         Self {
-            slots: [EMPTY; 2],
+            slots: [EMPTY; 8],
             next: 0,
         }
     }

@@ -2093,6 +2093,1632 @@ impl crate::json_read::FromJson for Cv7BitFlags {
     }
 }
 
+/// 3DM-CV7 continuous built-in test result (128 bits). The 16-byte continuous BIT bit map, one member per byte in wire order. Bit n of the map is bit (n mod 8) of byte n div 8 ("Relative Index (Byte.Bit)"). Bytes 0-3 are system bits, 4-7 IMU bits, 8-11 navigation filter bits and 12-15 GNSS bits. The bits latch until the message is sent; all unspecified bits are reserved and must be ignored.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cv7ContinuousBit {
+    /// Bits 0-7: system.
+    pub system_byte_0: crate::types::Cv7ContinuousBitSystem0,
+    /// Bits 8-15: reserved (0.7-1.7).
+    pub reserved_byte_1: u8,
+    /// Bits 16-23: IMU and filter process faults.
+    pub system_byte_2: crate::types::Cv7ContinuousBitSystem2,
+    /// Bits 24-31: GNSS process faults.
+    pub system_byte_3: crate::types::Cv7ContinuousBitSystem3,
+    /// Bits 32-39: IMU communication, timing, calibration.
+    pub imu_byte_4: crate::types::Cv7ContinuousBitImu4,
+    /// Bits 40-47: accelerometer and gyroscope.
+    pub imu_byte_5: crate::types::Cv7ContinuousBitImu5,
+    /// Bits 48-55: magnetometer and pressure sensor.
+    pub imu_byte_6: crate::types::Cv7ContinuousBitImu6,
+    /// Bits 56-63: factory bits.
+    pub imu_byte_7: crate::types::Cv7ContinuousBitImu7,
+    /// Bits 64-71: filter timing.
+    pub nav_byte_8: crate::types::Cv7ContinuousBitNav8,
+    /// Bits 72-79: reserved.
+    pub reserved_byte_9: u8,
+    /// Bits 80-87: reserved.
+    pub reserved_byte_10: u8,
+    /// Bits 88-95: reserved.
+    pub reserved_byte_11: u8,
+    /// Bits 96-103: reserved.
+    pub reserved_byte_12: u8,
+    /// Bits 104-111: GNSS receivers.
+    pub gnss_byte_13: crate::types::Cv7ContinuousBitGnss13,
+    /// Bits 112-119: GNSS receivers.
+    pub gnss_byte_14: crate::types::Cv7ContinuousBitGnss14,
+    /// Bits 120-127: reserved.
+    pub reserved_byte_15: u8,
+}
+
+impl Default for Cv7ContinuousBit {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBit {
+    const ZERO: Self = Self {
+        system_byte_0: <crate::types::Cv7ContinuousBitSystem0 as crate::wire::Wire>::ZERO,
+        reserved_byte_1: <u8 as crate::wire::Wire>::ZERO,
+        system_byte_2: <crate::types::Cv7ContinuousBitSystem2 as crate::wire::Wire>::ZERO,
+        system_byte_3: <crate::types::Cv7ContinuousBitSystem3 as crate::wire::Wire>::ZERO,
+        imu_byte_4: <crate::types::Cv7ContinuousBitImu4 as crate::wire::Wire>::ZERO,
+        imu_byte_5: <crate::types::Cv7ContinuousBitImu5 as crate::wire::Wire>::ZERO,
+        imu_byte_6: <crate::types::Cv7ContinuousBitImu6 as crate::wire::Wire>::ZERO,
+        imu_byte_7: <crate::types::Cv7ContinuousBitImu7 as crate::wire::Wire>::ZERO,
+        nav_byte_8: <crate::types::Cv7ContinuousBitNav8 as crate::wire::Wire>::ZERO,
+        reserved_byte_9: <u8 as crate::wire::Wire>::ZERO,
+        reserved_byte_10: <u8 as crate::wire::Wire>::ZERO,
+        reserved_byte_11: <u8 as crate::wire::Wire>::ZERO,
+        reserved_byte_12: <u8 as crate::wire::Wire>::ZERO,
+        gnss_byte_13: <crate::types::Cv7ContinuousBitGnss13 as crate::wire::Wire>::ZERO,
+        gnss_byte_14: <crate::types::Cv7ContinuousBitGnss14 as crate::wire::Wire>::ZERO,
+        reserved_byte_15: <u8 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(16);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_system_byte_0 =
+            <crate::types::Cv7ContinuousBitSystem0 as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("system_byte_0"))?;
+        let p_reserved_byte_1 =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_byte_1"))?;
+        let p_system_byte_2 =
+            <crate::types::Cv7ContinuousBitSystem2 as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("system_byte_2"))?;
+        let p_system_byte_3 =
+            <crate::types::Cv7ContinuousBitSystem3 as crate::wire::Wire>::decode(r)
+                .map_err(|e| e.at("system_byte_3"))?;
+        let p_imu_byte_4 = <crate::types::Cv7ContinuousBitImu4 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("imu_byte_4"))?;
+        let p_imu_byte_5 = <crate::types::Cv7ContinuousBitImu5 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("imu_byte_5"))?;
+        let p_imu_byte_6 = <crate::types::Cv7ContinuousBitImu6 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("imu_byte_6"))?;
+        let p_imu_byte_7 = <crate::types::Cv7ContinuousBitImu7 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("imu_byte_7"))?;
+        let p_nav_byte_8 = <crate::types::Cv7ContinuousBitNav8 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("nav_byte_8"))?;
+        let p_reserved_byte_9 =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_byte_9"))?;
+        let p_reserved_byte_10 =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_byte_10"))?;
+        let p_reserved_byte_11 =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_byte_11"))?;
+        let p_reserved_byte_12 =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_byte_12"))?;
+        let p_gnss_byte_13 = <crate::types::Cv7ContinuousBitGnss13 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("gnss_byte_13"))?;
+        let p_gnss_byte_14 = <crate::types::Cv7ContinuousBitGnss14 as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("gnss_byte_14"))?;
+        let p_reserved_byte_15 =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved_byte_15"))?;
+        Ok(Self {
+            system_byte_0: p_system_byte_0,
+            reserved_byte_1: p_reserved_byte_1,
+            system_byte_2: p_system_byte_2,
+            system_byte_3: p_system_byte_3,
+            imu_byte_4: p_imu_byte_4,
+            imu_byte_5: p_imu_byte_5,
+            imu_byte_6: p_imu_byte_6,
+            imu_byte_7: p_imu_byte_7,
+            nav_byte_8: p_nav_byte_8,
+            reserved_byte_9: p_reserved_byte_9,
+            reserved_byte_10: p_reserved_byte_10,
+            reserved_byte_11: p_reserved_byte_11,
+            reserved_byte_12: p_reserved_byte_12,
+            gnss_byte_13: p_gnss_byte_13,
+            gnss_byte_14: p_gnss_byte_14,
+            reserved_byte_15: p_reserved_byte_15,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.system_byte_0;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_byte_0"))?;
+        let v = &self.reserved_byte_1;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_byte_1"))?;
+        let v = &self.system_byte_2;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_byte_2"))?;
+        let v = &self.system_byte_3;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("system_byte_3"))?;
+        let v = &self.imu_byte_4;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_byte_4"))?;
+        let v = &self.imu_byte_5;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_byte_5"))?;
+        let v = &self.imu_byte_6;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_byte_6"))?;
+        let v = &self.imu_byte_7;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("imu_byte_7"))?;
+        let v = &self.nav_byte_8;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("nav_byte_8"))?;
+        let v = &self.reserved_byte_9;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_byte_9"))?;
+        let v = &self.reserved_byte_10;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_byte_10"))?;
+        let v = &self.reserved_byte_11;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_byte_11"))?;
+        let v = &self.reserved_byte_12;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_byte_12"))?;
+        let v = &self.gnss_byte_13;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_byte_13"))?;
+        let v = &self.gnss_byte_14;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("gnss_byte_14"))?;
+        let v = &self.reserved_byte_15;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("reserved_byte_15"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.system_byte_0;
+        crate::json::key(w, &mut first, "system_byte_0")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_byte_1;
+        crate::json::key(w, &mut first, "reserved_byte_1")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.system_byte_2;
+        crate::json::key(w, &mut first, "system_byte_2")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.system_byte_3;
+        crate::json::key(w, &mut first, "system_byte_3")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_byte_4;
+        crate::json::key(w, &mut first, "imu_byte_4")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_byte_5;
+        crate::json::key(w, &mut first, "imu_byte_5")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_byte_6;
+        crate::json::key(w, &mut first, "imu_byte_6")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.imu_byte_7;
+        crate::json::key(w, &mut first, "imu_byte_7")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.nav_byte_8;
+        crate::json::key(w, &mut first, "nav_byte_8")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_byte_9;
+        crate::json::key(w, &mut first, "reserved_byte_9")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_byte_10;
+        crate::json::key(w, &mut first, "reserved_byte_10")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_byte_11;
+        crate::json::key(w, &mut first, "reserved_byte_11")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_byte_12;
+        crate::json::key(w, &mut first, "reserved_byte_12")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_byte_13;
+        crate::json::key(w, &mut first, "gnss_byte_13")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.gnss_byte_14;
+        crate::json::key(w, &mut first, "gnss_byte_14")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.reserved_byte_15;
+        crate::json::key(w, &mut first, "reserved_byte_15")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBit {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(
+            v,
+            &[
+                "system_byte_0",
+                "reserved_byte_1",
+                "system_byte_2",
+                "system_byte_3",
+                "imu_byte_4",
+                "imu_byte_5",
+                "imu_byte_6",
+                "imu_byte_7",
+                "nav_byte_8",
+                "reserved_byte_9",
+                "reserved_byte_10",
+                "reserved_byte_11",
+                "reserved_byte_12",
+                "gnss_byte_13",
+                "gnss_byte_14",
+                "reserved_byte_15",
+            ],
+        )?;
+        let p_system_byte_0 = o.req(
+            "system_byte_0",
+            <crate::types::Cv7ContinuousBitSystem0 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved_byte_1 = o.req(
+            "reserved_byte_1",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_system_byte_2 = o.req(
+            "system_byte_2",
+            <crate::types::Cv7ContinuousBitSystem2 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_system_byte_3 = o.req(
+            "system_byte_3",
+            <crate::types::Cv7ContinuousBitSystem3 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_byte_4 = o.req(
+            "imu_byte_4",
+            <crate::types::Cv7ContinuousBitImu4 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_byte_5 = o.req(
+            "imu_byte_5",
+            <crate::types::Cv7ContinuousBitImu5 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_byte_6 = o.req(
+            "imu_byte_6",
+            <crate::types::Cv7ContinuousBitImu6 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_imu_byte_7 = o.req(
+            "imu_byte_7",
+            <crate::types::Cv7ContinuousBitImu7 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_nav_byte_8 = o.req(
+            "nav_byte_8",
+            <crate::types::Cv7ContinuousBitNav8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved_byte_9 = o.req(
+            "reserved_byte_9",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved_byte_10 = o.req(
+            "reserved_byte_10",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved_byte_11 = o.req(
+            "reserved_byte_11",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved_byte_12 = o.req(
+            "reserved_byte_12",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_byte_13 = o.req(
+            "gnss_byte_13",
+            <crate::types::Cv7ContinuousBitGnss13 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_gnss_byte_14 = o.req(
+            "gnss_byte_14",
+            <crate::types::Cv7ContinuousBitGnss14 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_reserved_byte_15 = o.req(
+            "reserved_byte_15",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            system_byte_0: p_system_byte_0,
+            reserved_byte_1: p_reserved_byte_1,
+            system_byte_2: p_system_byte_2,
+            system_byte_3: p_system_byte_3,
+            imu_byte_4: p_imu_byte_4,
+            imu_byte_5: p_imu_byte_5,
+            imu_byte_6: p_imu_byte_6,
+            imu_byte_7: p_imu_byte_7,
+            nav_byte_8: p_nav_byte_8,
+            reserved_byte_9: p_reserved_byte_9,
+            reserved_byte_10: p_reserved_byte_10,
+            reserved_byte_11: p_reserved_byte_11,
+            reserved_byte_12: p_reserved_byte_12,
+            gnss_byte_13: p_gnss_byte_13,
+            gnss_byte_14: p_gnss_byte_14,
+            reserved_byte_15: p_reserved_byte_15,
+        })
+    }
+}
+
+/// Continuous BIT byte 13: GNSS receivers (bits 104-111).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitGnss13(pub u8);
+
+impl Cv7ContinuousBitGnss13 {
+    /// Mask of `reserved_104` (bit 0).
+    pub const RESERVED_104: u8 = 0x01;
+    /// Mask of `receiver_1_fault` (bit 1).
+    pub const RECEIVER_1_FAULT: u8 = 0x02;
+    /// Mask of `reserved_106_107` (bits 2..=3).
+    pub const RESERVED_106_107: u8 = 0x0C;
+    /// Mask of `receiver_1_no_solution` (bit 4).
+    pub const RECEIVER_1_NO_SOLUTION: u8 = 0x10;
+    /// Mask of `reserved_109` (bit 5).
+    pub const RESERVED_109: u8 = 0x20;
+    /// Mask of `receiver_2_fault` (bit 6).
+    pub const RECEIVER_2_FAULT: u8 = 0x40;
+    /// Mask of `reserved_111` (bit 7).
+    pub const RESERVED_111: u8 = 0x80;
+
+    /// Bit 104 (13.0): GNSS reserved. Reserved. (bit 0)
+    pub const fn reserved_104(self) -> bool {
+        self.0 & Self::RESERVED_104 != 0
+    }
+
+    /// Sets or clears `reserved_104` (bit 0).
+    pub fn set_reserved_104(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_104;
+        } else {
+            self.0 &= !Self::RESERVED_104;
+        }
+    }
+
+    /// Bit 105 (13.1): no communication with internal GNSS receiver 1. (bit 1)
+    pub const fn receiver_1_fault(self) -> bool {
+        self.0 & Self::RECEIVER_1_FAULT != 0
+    }
+
+    /// Sets or clears `receiver_1_fault` (bit 1).
+    pub fn set_receiver_1_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RECEIVER_1_FAULT;
+        } else {
+            self.0 &= !Self::RECEIVER_1_FAULT;
+        }
+    }
+
+    /// Bits 106-107 (13.2-13.3): GNSS reserved. Reserved. (bits 2..=3)
+    pub const fn reserved_106_107(self) -> u8 {
+        (self.0 & Self::RESERVED_106_107) >> 2
+    }
+
+    /// Sets `reserved_106_107` (bits 2..=3); higher bits of `v` are ignored.
+    pub fn set_reserved_106_107(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED_106_107) | ((v << 2) & Self::RESERVED_106_107);
+    }
+
+    /// Bit 108 (13.4): internal receiver 1 has no valid solution (check antenna and sky view). (bit 4)
+    pub const fn receiver_1_no_solution(self) -> bool {
+        self.0 & Self::RECEIVER_1_NO_SOLUTION != 0
+    }
+
+    /// Sets or clears `receiver_1_no_solution` (bit 4).
+    pub fn set_receiver_1_no_solution(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RECEIVER_1_NO_SOLUTION;
+        } else {
+            self.0 &= !Self::RECEIVER_1_NO_SOLUTION;
+        }
+    }
+
+    /// Bit 109 (13.5): GNSS reserved. Reserved. (bit 5)
+    pub const fn reserved_109(self) -> bool {
+        self.0 & Self::RESERVED_109 != 0
+    }
+
+    /// Sets or clears `reserved_109` (bit 5).
+    pub fn set_reserved_109(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_109;
+        } else {
+            self.0 &= !Self::RESERVED_109;
+        }
+    }
+
+    /// Bit 110 (13.6): no communication with internal GNSS receiver 2. (bit 6)
+    pub const fn receiver_2_fault(self) -> bool {
+        self.0 & Self::RECEIVER_2_FAULT != 0
+    }
+
+    /// Sets or clears `receiver_2_fault` (bit 6).
+    pub fn set_receiver_2_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RECEIVER_2_FAULT;
+        } else {
+            self.0 &= !Self::RECEIVER_2_FAULT;
+        }
+    }
+
+    /// Bit 111 (13.7): GNSS reserved. Reserved. (bit 7)
+    pub const fn reserved_111(self) -> bool {
+        self.0 & Self::RESERVED_111 != 0
+    }
+
+    /// Sets or clears `reserved_111` (bit 7).
+    pub fn set_reserved_111(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_111;
+        } else {
+            self.0 &= !Self::RESERVED_111;
+        }
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitGnss13 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitGnss13 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 14: GNSS receivers (bits 112-119).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitGnss14(pub u8);
+
+impl Cv7ContinuousBitGnss14 {
+    /// Mask of `reserved_112` (bit 0).
+    pub const RESERVED_112: u8 = 0x01;
+    /// Mask of `receiver_2_no_solution` (bit 1).
+    pub const RECEIVER_2_NO_SOLUTION: u8 = 0x02;
+    /// Mask of `reserved_114_119` (bits 2..=7).
+    pub const RESERVED_114_119: u8 = 0xFC;
+
+    /// Bit 112 (14.0): GNSS reserved. Reserved. (bit 0)
+    pub const fn reserved_112(self) -> bool {
+        self.0 & Self::RESERVED_112 != 0
+    }
+
+    /// Sets or clears `reserved_112` (bit 0).
+    pub fn set_reserved_112(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_112;
+        } else {
+            self.0 &= !Self::RESERVED_112;
+        }
+    }
+
+    /// Bit 113 (14.1): internal receiver 2 has no valid solution (check antenna and sky view). (bit 1)
+    pub const fn receiver_2_no_solution(self) -> bool {
+        self.0 & Self::RECEIVER_2_NO_SOLUTION != 0
+    }
+
+    /// Sets or clears `receiver_2_no_solution` (bit 1).
+    pub fn set_receiver_2_no_solution(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RECEIVER_2_NO_SOLUTION;
+        } else {
+            self.0 &= !Self::RECEIVER_2_NO_SOLUTION;
+        }
+    }
+
+    /// Bits 114-119 (14.2-14.7): GNSS reserved. Reserved. (bits 2..=7)
+    pub const fn reserved_114_119(self) -> u8 {
+        (self.0 & Self::RESERVED_114_119) >> 2
+    }
+
+    /// Sets `reserved_114_119` (bits 2..=7); higher bits of `v` are ignored.
+    pub fn set_reserved_114_119(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED_114_119) | ((v << 2) & Self::RESERVED_114_119);
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitGnss14 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitGnss14 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 4: IMU (bits 32-39).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitImu4(pub u8);
+
+impl Cv7ContinuousBitImu4 {
+    /// Mask of `reserved_32` (bit 0).
+    pub const RESERVED_32: u8 = 0x01;
+    /// Mask of `imu_communication_fault` (bit 1).
+    pub const IMU_COMMUNICATION_FAULT: u8 = 0x02;
+    /// Mask of `imu_timing_overrun` (bit 2).
+    pub const IMU_TIMING_OVERRUN: u8 = 0x04;
+    /// Mask of `reserved_35` (bit 3).
+    pub const RESERVED_35: u8 = 0x08;
+    /// Mask of `imu_calibration_error_accelerometer` (bit 4).
+    pub const IMU_CALIBRATION_ERROR_ACCELEROMETER: u8 = 0x10;
+    /// Mask of `imu_calibration_error_gyroscope` (bit 5).
+    pub const IMU_CALIBRATION_ERROR_GYROSCOPE: u8 = 0x20;
+    /// Mask of `imu_calibration_error_magnetometer` (bit 6).
+    pub const IMU_CALIBRATION_ERROR_MAGNETOMETER: u8 = 0x40;
+    /// Mask of `reserved_39` (bit 7).
+    pub const RESERVED_39: u8 = 0x80;
+
+    /// Bit 32 (4.0): IMU reserved. Reserved. (bit 0)
+    pub const fn reserved_32(self) -> bool {
+        self.0 & Self::RESERVED_32 != 0
+    }
+
+    /// Sets or clears `reserved_32` (bit 0).
+    pub fn set_reserved_32(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_32;
+        } else {
+            self.0 &= !Self::RESERVED_32;
+        }
+    }
+
+    /// Bit 33 (4.1): no communication with the IMU. (bit 1)
+    pub const fn imu_communication_fault(self) -> bool {
+        self.0 & Self::IMU_COMMUNICATION_FAULT != 0
+    }
+
+    /// Sets or clears `imu_communication_fault` (bit 1).
+    pub fn set_imu_communication_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_COMMUNICATION_FAULT;
+        } else {
+            self.0 &= !Self::IMU_COMMUNICATION_FAULT;
+        }
+    }
+
+    /// Bit 34 (4.2): IMU core processes take longer than their allotted time. (bit 2)
+    pub const fn imu_timing_overrun(self) -> bool {
+        self.0 & Self::IMU_TIMING_OVERRUN != 0
+    }
+
+    /// Sets or clears `imu_timing_overrun` (bit 2).
+    pub fn set_imu_timing_overrun(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_TIMING_OVERRUN;
+        } else {
+            self.0 &= !Self::IMU_TIMING_OVERRUN;
+        }
+    }
+
+    /// Bit 35 (4.3): IMU reserved. Reserved. (bit 3)
+    pub const fn reserved_35(self) -> bool {
+        self.0 & Self::RESERVED_35 != 0
+    }
+
+    /// Sets or clears `reserved_35` (bit 3).
+    pub fn set_reserved_35(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_35;
+        } else {
+            self.0 &= !Self::RESERVED_35;
+        }
+    }
+
+    /// Bit 36 (4.4): problem with the accelerometer calibration. (bit 4)
+    pub const fn imu_calibration_error_accelerometer(self) -> bool {
+        self.0 & Self::IMU_CALIBRATION_ERROR_ACCELEROMETER != 0
+    }
+
+    /// Sets or clears `imu_calibration_error_accelerometer` (bit 4).
+    pub fn set_imu_calibration_error_accelerometer(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_CALIBRATION_ERROR_ACCELEROMETER;
+        } else {
+            self.0 &= !Self::IMU_CALIBRATION_ERROR_ACCELEROMETER;
+        }
+    }
+
+    /// Bit 37 (4.5): problem with the gyroscope calibration. (bit 5)
+    pub const fn imu_calibration_error_gyroscope(self) -> bool {
+        self.0 & Self::IMU_CALIBRATION_ERROR_GYROSCOPE != 0
+    }
+
+    /// Sets or clears `imu_calibration_error_gyroscope` (bit 5).
+    pub fn set_imu_calibration_error_gyroscope(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_CALIBRATION_ERROR_GYROSCOPE;
+        } else {
+            self.0 &= !Self::IMU_CALIBRATION_ERROR_GYROSCOPE;
+        }
+    }
+
+    /// Bit 38 (4.6): problem with the magnetometer calibration. (bit 6)
+    pub const fn imu_calibration_error_magnetometer(self) -> bool {
+        self.0 & Self::IMU_CALIBRATION_ERROR_MAGNETOMETER != 0
+    }
+
+    /// Sets or clears `imu_calibration_error_magnetometer` (bit 6).
+    pub fn set_imu_calibration_error_magnetometer(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_CALIBRATION_ERROR_MAGNETOMETER;
+        } else {
+            self.0 &= !Self::IMU_CALIBRATION_ERROR_MAGNETOMETER;
+        }
+    }
+
+    /// Bit 39 (4.7): IMU calibration error, reserved. Reserved. (bit 7)
+    pub const fn reserved_39(self) -> bool {
+        self.0 & Self::RESERVED_39 != 0
+    }
+
+    /// Sets or clears `reserved_39` (bit 7).
+    pub fn set_reserved_39(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_39;
+        } else {
+            self.0 &= !Self::RESERVED_39;
+        }
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitImu4 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitImu4 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 5: IMU accelerometer and gyroscope (bits 40-47).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitImu5(pub u8);
+
+impl Cv7ContinuousBitImu5 {
+    /// Mask of `accelerometer_general_fault` (bit 0).
+    pub const ACCELEROMETER_GENERAL_FAULT: u8 = 0x01;
+    /// Mask of `accelerometer_overrange` (bit 1).
+    pub const ACCELEROMETER_OVERRANGE: u8 = 0x02;
+    /// Mask of `accelerometer_self_test_fail` (bit 2).
+    pub const ACCELEROMETER_SELF_TEST_FAIL: u8 = 0x04;
+    /// Mask of `reserved_43` (bit 3).
+    pub const RESERVED_43: u8 = 0x08;
+    /// Mask of `gyroscope_general_fault` (bit 4).
+    pub const GYROSCOPE_GENERAL_FAULT: u8 = 0x10;
+    /// Mask of `gyroscope_overrange` (bit 5).
+    pub const GYROSCOPE_OVERRANGE: u8 = 0x20;
+    /// Mask of `gyroscope_self_test_fail` (bit 6).
+    pub const GYROSCOPE_SELF_TEST_FAIL: u8 = 0x40;
+    /// Mask of `reserved_47` (bit 7).
+    pub const RESERVED_47: u8 = 0x80;
+
+    /// Bit 40 (5.0): the accelerometer will not initialize. (bit 0)
+    pub const fn accelerometer_general_fault(self) -> bool {
+        self.0 & Self::ACCELEROMETER_GENERAL_FAULT != 0
+    }
+
+    /// Sets or clears `accelerometer_general_fault` (bit 0).
+    pub fn set_accelerometer_general_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCELEROMETER_GENERAL_FAULT;
+        } else {
+            self.0 &= !Self::ACCELEROMETER_GENERAL_FAULT;
+        }
+    }
+
+    /// Bit 41 (5.1): one or more axes near or beyond the selected range. (bit 1)
+    pub const fn accelerometer_overrange(self) -> bool {
+        self.0 & Self::ACCELEROMETER_OVERRANGE != 0
+    }
+
+    /// Sets or clears `accelerometer_overrange` (bit 1).
+    pub fn set_accelerometer_overrange(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCELEROMETER_OVERRANGE;
+        } else {
+            self.0 &= !Self::ACCELEROMETER_OVERRANGE;
+        }
+    }
+
+    /// Bit 42 (5.2): accelerometer self-test failed (updated by the commanded BIT only). (bit 2)
+    pub const fn accelerometer_self_test_fail(self) -> bool {
+        self.0 & Self::ACCELEROMETER_SELF_TEST_FAIL != 0
+    }
+
+    /// Sets or clears `accelerometer_self_test_fail` (bit 2).
+    pub fn set_accelerometer_self_test_fail(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCELEROMETER_SELF_TEST_FAIL;
+        } else {
+            self.0 &= !Self::ACCELEROMETER_SELF_TEST_FAIL;
+        }
+    }
+
+    /// Bit 43 (5.3): accelerometer reserved. Reserved. (bit 3)
+    pub const fn reserved_43(self) -> bool {
+        self.0 & Self::RESERVED_43 != 0
+    }
+
+    /// Sets or clears `reserved_43` (bit 3).
+    pub fn set_reserved_43(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_43;
+        } else {
+            self.0 &= !Self::RESERVED_43;
+        }
+    }
+
+    /// Bit 44 (5.4): the gyroscope will not initialize. (bit 4)
+    pub const fn gyroscope_general_fault(self) -> bool {
+        self.0 & Self::GYROSCOPE_GENERAL_FAULT != 0
+    }
+
+    /// Sets or clears `gyroscope_general_fault` (bit 4).
+    pub fn set_gyroscope_general_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYROSCOPE_GENERAL_FAULT;
+        } else {
+            self.0 &= !Self::GYROSCOPE_GENERAL_FAULT;
+        }
+    }
+
+    /// Bit 45 (5.5): one or more axes near or beyond the selected range. (bit 5)
+    pub const fn gyroscope_overrange(self) -> bool {
+        self.0 & Self::GYROSCOPE_OVERRANGE != 0
+    }
+
+    /// Sets or clears `gyroscope_overrange` (bit 5).
+    pub fn set_gyroscope_overrange(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYROSCOPE_OVERRANGE;
+        } else {
+            self.0 &= !Self::GYROSCOPE_OVERRANGE;
+        }
+    }
+
+    /// Bit 46 (5.6): gyroscope self-test failed (updated by the commanded BIT only). (bit 6)
+    pub const fn gyroscope_self_test_fail(self) -> bool {
+        self.0 & Self::GYROSCOPE_SELF_TEST_FAIL != 0
+    }
+
+    /// Sets or clears `gyroscope_self_test_fail` (bit 6).
+    pub fn set_gyroscope_self_test_fail(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYROSCOPE_SELF_TEST_FAIL;
+        } else {
+            self.0 &= !Self::GYROSCOPE_SELF_TEST_FAIL;
+        }
+    }
+
+    /// Bit 47 (5.7): gyroscope reserved. Reserved. (bit 7)
+    pub const fn reserved_47(self) -> bool {
+        self.0 & Self::RESERVED_47 != 0
+    }
+
+    /// Sets or clears `reserved_47` (bit 7).
+    pub fn set_reserved_47(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_47;
+        } else {
+            self.0 &= !Self::RESERVED_47;
+        }
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitImu5 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitImu5 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 6: IMU magnetometer and pressure sensor (bits 48-55).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitImu6(pub u8);
+
+impl Cv7ContinuousBitImu6 {
+    /// Mask of `magnetometer_general_fault` (bit 0).
+    pub const MAGNETOMETER_GENERAL_FAULT: u8 = 0x01;
+    /// Mask of `magnetometer_overrange` (bit 1).
+    pub const MAGNETOMETER_OVERRANGE: u8 = 0x02;
+    /// Mask of `magnetometer_self_test_fail` (bit 2).
+    pub const MAGNETOMETER_SELF_TEST_FAIL: u8 = 0x04;
+    /// Mask of `reserved_51` (bit 3).
+    pub const RESERVED_51: u8 = 0x08;
+    /// Mask of `pressure_sensor_general_fault` (bit 4).
+    pub const PRESSURE_SENSOR_GENERAL_FAULT: u8 = 0x10;
+    /// Mask of `pressure_sensor_overrange` (bit 5).
+    pub const PRESSURE_SENSOR_OVERRANGE: u8 = 0x20;
+    /// Mask of `pressure_sensor_self_test_fail` (bit 6).
+    pub const PRESSURE_SENSOR_SELF_TEST_FAIL: u8 = 0x40;
+    /// Mask of `reserved_55` (bit 7).
+    pub const RESERVED_55: u8 = 0x80;
+
+    /// Bit 48 (6.0): the magnetometer will not initialize. (bit 0)
+    pub const fn magnetometer_general_fault(self) -> bool {
+        self.0 & Self::MAGNETOMETER_GENERAL_FAULT != 0
+    }
+
+    /// Sets or clears `magnetometer_general_fault` (bit 0).
+    pub fn set_magnetometer_general_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER_GENERAL_FAULT;
+        } else {
+            self.0 &= !Self::MAGNETOMETER_GENERAL_FAULT;
+        }
+    }
+
+    /// Bit 49 (6.1): one or more axes near or beyond the supported range. (bit 1)
+    pub const fn magnetometer_overrange(self) -> bool {
+        self.0 & Self::MAGNETOMETER_OVERRANGE != 0
+    }
+
+    /// Sets or clears `magnetometer_overrange` (bit 1).
+    pub fn set_magnetometer_overrange(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER_OVERRANGE;
+        } else {
+            self.0 &= !Self::MAGNETOMETER_OVERRANGE;
+        }
+    }
+
+    /// Bit 50 (6.2): magnetometer self-test failed (updated by the commanded BIT only). (bit 2)
+    pub const fn magnetometer_self_test_fail(self) -> bool {
+        self.0 & Self::MAGNETOMETER_SELF_TEST_FAIL != 0
+    }
+
+    /// Sets or clears `magnetometer_self_test_fail` (bit 2).
+    pub fn set_magnetometer_self_test_fail(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAGNETOMETER_SELF_TEST_FAIL;
+        } else {
+            self.0 &= !Self::MAGNETOMETER_SELF_TEST_FAIL;
+        }
+    }
+
+    /// Bit 51 (6.3): magnetometer reserved. Reserved. (bit 3)
+    pub const fn reserved_51(self) -> bool {
+        self.0 & Self::RESERVED_51 != 0
+    }
+
+    /// Sets or clears `reserved_51` (bit 3).
+    pub fn set_reserved_51(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_51;
+        } else {
+            self.0 &= !Self::RESERVED_51;
+        }
+    }
+
+    /// Bit 52 (6.4): the pressure sensor will not initialize. (bit 4)
+    pub const fn pressure_sensor_general_fault(self) -> bool {
+        self.0 & Self::PRESSURE_SENSOR_GENERAL_FAULT != 0
+    }
+
+    /// Sets or clears `pressure_sensor_general_fault` (bit 4).
+    pub fn set_pressure_sensor_general_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PRESSURE_SENSOR_GENERAL_FAULT;
+        } else {
+            self.0 &= !Self::PRESSURE_SENSOR_GENERAL_FAULT;
+        }
+    }
+
+    /// Bit 53 (6.5): pressure outside the supported range. (bit 5)
+    pub const fn pressure_sensor_overrange(self) -> bool {
+        self.0 & Self::PRESSURE_SENSOR_OVERRANGE != 0
+    }
+
+    /// Sets or clears `pressure_sensor_overrange` (bit 5).
+    pub fn set_pressure_sensor_overrange(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PRESSURE_SENSOR_OVERRANGE;
+        } else {
+            self.0 &= !Self::PRESSURE_SENSOR_OVERRANGE;
+        }
+    }
+
+    /// Bit 54 (6.6): pressure sensor self-test failed (updated by the commanded BIT only). (bit 6)
+    pub const fn pressure_sensor_self_test_fail(self) -> bool {
+        self.0 & Self::PRESSURE_SENSOR_SELF_TEST_FAIL != 0
+    }
+
+    /// Sets or clears `pressure_sensor_self_test_fail` (bit 6).
+    pub fn set_pressure_sensor_self_test_fail(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PRESSURE_SENSOR_SELF_TEST_FAIL;
+        } else {
+            self.0 &= !Self::PRESSURE_SENSOR_SELF_TEST_FAIL;
+        }
+    }
+
+    /// Bit 55 (6.7): pressure sensor reserved. Reserved. (bit 7)
+    pub const fn reserved_55(self) -> bool {
+        self.0 & Self::RESERVED_55 != 0
+    }
+
+    /// Sets or clears `reserved_55` (bit 7).
+    pub fn set_reserved_55(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_55;
+        } else {
+            self.0 &= !Self::RESERVED_55;
+        }
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitImu6 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitImu6 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 7: IMU (bits 56-63).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitImu7(pub u8);
+
+impl Cv7ContinuousBitImu7 {
+    /// Mask of `factory_bits_invalid` (bit 0).
+    pub const FACTORY_BITS_INVALID: u8 = 0x01;
+    /// Mask of `reserved_57_63` (bits 1..=7).
+    pub const RESERVED_57_63: u8 = 0xFE;
+
+    /// Bit 56 (7.0): the device has lost its configuration; contact support. (bit 0)
+    pub const fn factory_bits_invalid(self) -> bool {
+        self.0 & Self::FACTORY_BITS_INVALID != 0
+    }
+
+    /// Sets or clears `factory_bits_invalid` (bit 0).
+    pub fn set_factory_bits_invalid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FACTORY_BITS_INVALID;
+        } else {
+            self.0 &= !Self::FACTORY_BITS_INVALID;
+        }
+    }
+
+    /// Bits 57-63 (7.1-7.7): reserved. Reserved. (bits 1..=7)
+    pub const fn reserved_57_63(self) -> u8 {
+        (self.0 & Self::RESERVED_57_63) >> 1
+    }
+
+    /// Sets `reserved_57_63` (bits 1..=7); higher bits of `v` are ignored.
+    pub fn set_reserved_57_63(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED_57_63) | ((v << 1) & Self::RESERVED_57_63);
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitImu7 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitImu7 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 8: navigation filter (bits 64-71).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitNav8(pub u8);
+
+impl Cv7ContinuousBitNav8 {
+    /// Mask of `reserved_64` (bit 0).
+    pub const RESERVED_64: u8 = 0x01;
+    /// Mask of `reserved_65` (bit 1).
+    pub const RESERVED_65: u8 = 0x02;
+    /// Mask of `filter_timing_overrun` (bit 2).
+    pub const FILTER_TIMING_OVERRUN: u8 = 0x04;
+    /// Mask of `filter_timing_underrun` (bit 3).
+    pub const FILTER_TIMING_UNDERRUN: u8 = 0x08;
+    /// Mask of `reserved_68_71` (bits 4..=7).
+    pub const RESERVED_68_71: u8 = 0xF0;
+
+    /// Bit 64 (8.0): reserved. Reserved. (bit 0)
+    pub const fn reserved_64(self) -> bool {
+        self.0 & Self::RESERVED_64 != 0
+    }
+
+    /// Sets or clears `reserved_64` (bit 0).
+    pub fn set_reserved_64(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_64;
+        } else {
+            self.0 &= !Self::RESERVED_64;
+        }
+    }
+
+    /// Bit 65 (8.1): reserved. Reserved. (bit 1)
+    pub const fn reserved_65(self) -> bool {
+        self.0 & Self::RESERVED_65 != 0
+    }
+
+    /// Sets or clears `reserved_65` (bit 1).
+    pub fn set_reserved_65(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_65;
+        } else {
+            self.0 &= !Self::RESERVED_65;
+        }
+    }
+
+    /// Bit 66 (8.2): filter processes take longer than their allotted time. (bit 2)
+    pub const fn filter_timing_overrun(self) -> bool {
+        self.0 & Self::FILTER_TIMING_OVERRUN != 0
+    }
+
+    /// Sets or clears `filter_timing_overrun` (bit 2).
+    pub fn set_filter_timing_overrun(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_TIMING_OVERRUN;
+        } else {
+            self.0 &= !Self::FILTER_TIMING_OVERRUN;
+        }
+    }
+
+    /// Bit 67 (8.3): filter processes are being skipped. (bit 3)
+    pub const fn filter_timing_underrun(self) -> bool {
+        self.0 & Self::FILTER_TIMING_UNDERRUN != 0
+    }
+
+    /// Sets or clears `filter_timing_underrun` (bit 3).
+    pub fn set_filter_timing_underrun(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_TIMING_UNDERRUN;
+        } else {
+            self.0 &= !Self::FILTER_TIMING_UNDERRUN;
+        }
+    }
+
+    /// Bits 68-71 (8.4-8.7): reserved (printed as GNSS reserved). Reserved. (bits 4..=7)
+    pub const fn reserved_68_71(self) -> u8 {
+        (self.0 & Self::RESERVED_68_71) >> 4
+    }
+
+    /// Sets `reserved_68_71` (bits 4..=7); higher bits of `v` are ignored.
+    pub fn set_reserved_68_71(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED_68_71) | ((v << 4) & Self::RESERVED_68_71);
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitNav8 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitNav8 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 0: system (bits 0-7).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitSystem0(pub u8);
+
+impl Cv7ContinuousBitSystem0 {
+    /// Mask of `system_clock_failure` (bit 0).
+    pub const SYSTEM_CLOCK_FAILURE: u8 = 0x01;
+    /// Mask of `power_fault` (bit 1).
+    pub const POWER_FAULT: u8 = 0x02;
+    /// Mask of `reserved_2_3` (bits 2..=3).
+    pub const RESERVED_2_3: u8 = 0x0C;
+    /// Mask of `firmware_fault` (bit 4).
+    pub const FIRMWARE_FAULT: u8 = 0x10;
+    /// Mask of `timing_overload` (bit 5).
+    pub const TIMING_OVERLOAD: u8 = 0x20;
+    /// Mask of `buffer_overrun` (bit 6).
+    pub const BUFFER_OVERRUN: u8 = 0x40;
+    /// Mask of `reserved_7` (bit 7).
+    pub const RESERVED_7: u8 = 0x80;
+
+    /// Bit 0 (0.0): the system clock is not operating properly; timing may be inaccurate. (bit 0)
+    pub const fn system_clock_failure(self) -> bool {
+        self.0 & Self::SYSTEM_CLOCK_FAILURE != 0
+    }
+
+    /// Sets or clears `system_clock_failure` (bit 0).
+    pub fn set_system_clock_failure(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SYSTEM_CLOCK_FAILURE;
+        } else {
+            self.0 &= !Self::SYSTEM_CLOCK_FAILURE;
+        }
+    }
+
+    /// Bit 1 (0.1): supply voltage out of the recommended range, or an internal power fault. (bit 1)
+    pub const fn power_fault(self) -> bool {
+        self.0 & Self::POWER_FAULT != 0
+    }
+
+    /// Sets or clears `power_fault` (bit 1).
+    pub fn set_power_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::POWER_FAULT;
+        } else {
+            self.0 &= !Self::POWER_FAULT;
+        }
+    }
+
+    /// Bits 2-3 (0.2-0.3): reserved. Reserved. (bits 2..=3)
+    pub const fn reserved_2_3(self) -> u8 {
+        (self.0 & Self::RESERVED_2_3) >> 2
+    }
+
+    /// Sets `reserved_2_3` (bits 2..=3); higher bits of `v` are ignored.
+    pub fn set_reserved_2_3(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED_2_3) | ((v << 2) & Self::RESERVED_2_3);
+    }
+
+    /// Bit 4 (0.4): firmware detected an unexpected or abnormal condition. (bit 4)
+    pub const fn firmware_fault(self) -> bool {
+        self.0 & Self::FIRMWARE_FAULT != 0
+    }
+
+    /// Sets or clears `firmware_fault` (bit 4).
+    pub fn set_firmware_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FIRMWARE_FAULT;
+        } else {
+            self.0 &= !Self::FIRMWARE_FAULT;
+        }
+    }
+
+    /// Bit 5 (0.5): the system cannot keep up with the processing demand (e.g. too many descriptors). (bit 5)
+    pub const fn timing_overload(self) -> bool {
+        self.0 & Self::TIMING_OVERLOAD != 0
+    }
+
+    /// Sets or clears `timing_overload` (bit 5).
+    pub fn set_timing_overload(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIMING_OVERLOAD;
+        } else {
+            self.0 &= !Self::TIMING_OVERLOAD;
+        }
+    }
+
+    /// Bit 6 (0.6): a data buffer filled up and data may have been lost (bandwidth exceeded). (bit 6)
+    pub const fn buffer_overrun(self) -> bool {
+        self.0 & Self::BUFFER_OVERRUN != 0
+    }
+
+    /// Sets or clears `buffer_overrun` (bit 6).
+    pub fn set_buffer_overrun(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BUFFER_OVERRUN;
+        } else {
+            self.0 &= !Self::BUFFER_OVERRUN;
+        }
+    }
+
+    /// Bit 7 (0.7): reserved. Reserved. (bit 7)
+    pub const fn reserved_7(self) -> bool {
+        self.0 & Self::RESERVED_7 != 0
+    }
+
+    /// Sets or clears `reserved_7` (bit 7).
+    pub fn set_reserved_7(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_7;
+        } else {
+            self.0 &= !Self::RESERVED_7;
+        }
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitSystem0 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitSystem0 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 2: system, IMU and filter processes (bits 16-23).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitSystem2(pub u8);
+
+impl Cv7ContinuousBitSystem2 {
+    /// Mask of `imu_process_fault` (bit 0).
+    pub const IMU_PROCESS_FAULT: u8 = 0x01;
+    /// Mask of `imu_data_process_time_exceeded` (bit 1).
+    pub const IMU_DATA_PROCESS_TIME_EXCEEDED: u8 = 0x02;
+    /// Mask of `imu_data_rate_error` (bit 2).
+    pub const IMU_DATA_RATE_ERROR: u8 = 0x04;
+    /// Mask of `imu_stall` (bit 3).
+    pub const IMU_STALL: u8 = 0x08;
+    /// Mask of `filter_process_fault` (bits 4..=7).
+    pub const FILTER_PROCESS_FAULT: u8 = 0xF0;
+    /// Mask of `filter_major_cycle_fault` (bit 4).
+    pub const FILTER_MAJOR_CYCLE_FAULT: u8 = 0x10;
+    /// Mask of `filter_minor_cycle_fault` (bit 5).
+    pub const FILTER_MINOR_CYCLE_FAULT: u8 = 0x20;
+    /// Mask of `filter_data_rate_error` (bit 6).
+    pub const FILTER_DATA_RATE_ERROR: u8 = 0x40;
+    /// Mask of `filter_process_stall` (bit 7).
+    pub const FILTER_PROCESS_STALL: u8 = 0x80;
+
+    /// Bit 16 (2.0): the IMU subsystem is not running or did not start. (bit 0)
+    pub const fn imu_process_fault(self) -> bool {
+        self.0 & Self::IMU_PROCESS_FAULT != 0
+    }
+
+    /// Sets or clears `imu_process_fault` (bit 0).
+    pub fn set_imu_process_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_PROCESS_FAULT;
+        } else {
+            self.0 &= !Self::IMU_PROCESS_FAULT;
+        }
+    }
+
+    /// Bit 17 (2.1): IMU data processing took longer than allowed. (bit 1)
+    pub const fn imu_data_process_time_exceeded(self) -> bool {
+        self.0 & Self::IMU_DATA_PROCESS_TIME_EXCEEDED != 0
+    }
+
+    /// Sets or clears `imu_data_process_time_exceeded` (bit 1).
+    pub fn set_imu_data_process_time_exceeded(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_DATA_PROCESS_TIME_EXCEEDED;
+        } else {
+            self.0 &= !Self::IMU_DATA_PROCESS_TIME_EXCEEDED;
+        }
+    }
+
+    /// Bit 18 (2.2): IMU data is not produced at the expected base rate. (bit 2)
+    pub const fn imu_data_rate_error(self) -> bool {
+        self.0 & Self::IMU_DATA_RATE_ERROR != 0
+    }
+
+    /// Sets or clears `imu_data_rate_error` (bit 2).
+    pub fn set_imu_data_rate_error(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_DATA_RATE_ERROR;
+        } else {
+            self.0 &= !Self::IMU_DATA_RATE_ERROR;
+        }
+    }
+
+    /// Bit 19 (2.3): the IMU subsystem has stalled. (bit 3)
+    pub const fn imu_stall(self) -> bool {
+        self.0 & Self::IMU_STALL != 0
+    }
+
+    /// Sets or clears `imu_stall` (bit 3).
+    pub fn set_imu_stall(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::IMU_STALL;
+        } else {
+            self.0 &= !Self::IMU_STALL;
+        }
+    }
+
+    /// Bits 20-23 (2.4-2.7): any filter process fault (the four bits below). (bits 4..=7)
+    pub const fn filter_process_fault(self) -> u8 {
+        (self.0 & Self::FILTER_PROCESS_FAULT) >> 4
+    }
+
+    /// Sets `filter_process_fault` (bits 4..=7); higher bits of `v` are ignored.
+    pub fn set_filter_process_fault(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::FILTER_PROCESS_FAULT) | ((v << 4) & Self::FILTER_PROCESS_FAULT);
+    }
+
+    /// Bit 20 (2.4): problem with the navigation filter major cycle. (bit 4)
+    pub const fn filter_major_cycle_fault(self) -> bool {
+        self.0 & Self::FILTER_MAJOR_CYCLE_FAULT != 0
+    }
+
+    /// Sets or clears `filter_major_cycle_fault` (bit 4).
+    pub fn set_filter_major_cycle_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_MAJOR_CYCLE_FAULT;
+        } else {
+            self.0 &= !Self::FILTER_MAJOR_CYCLE_FAULT;
+        }
+    }
+
+    /// Bit 21 (2.5): problem with the navigation filter minor cycle. (bit 5)
+    pub const fn filter_minor_cycle_fault(self) -> bool {
+        self.0 & Self::FILTER_MINOR_CYCLE_FAULT != 0
+    }
+
+    /// Sets or clears `filter_minor_cycle_fault` (bit 5).
+    pub fn set_filter_minor_cycle_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_MINOR_CYCLE_FAULT;
+        } else {
+            self.0 &= !Self::FILTER_MINOR_CYCLE_FAULT;
+        }
+    }
+
+    /// Bit 22 (2.6): a navigation filter process is not running at its base rate. (bit 6)
+    pub const fn filter_data_rate_error(self) -> bool {
+        self.0 & Self::FILTER_DATA_RATE_ERROR != 0
+    }
+
+    /// Sets or clears `filter_data_rate_error` (bit 6).
+    pub fn set_filter_data_rate_error(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_DATA_RATE_ERROR;
+        } else {
+            self.0 &= !Self::FILTER_DATA_RATE_ERROR;
+        }
+    }
+
+    /// Bit 23 (2.7): a navigation filter process has stalled. (bit 7)
+    pub const fn filter_process_stall(self) -> bool {
+        self.0 & Self::FILTER_PROCESS_STALL != 0
+    }
+
+    /// Sets or clears `filter_process_stall` (bit 7).
+    pub fn set_filter_process_stall(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FILTER_PROCESS_STALL;
+        } else {
+            self.0 &= !Self::FILTER_PROCESS_STALL;
+        }
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitSystem2 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitSystem2 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Continuous BIT byte 3: system, GNSS processes (bits 24-31).
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Cv7ContinuousBitSystem3(pub u8);
+
+impl Cv7ContinuousBitSystem3 {
+    /// Mask of `gnss_subsystem_fault` (bits 0..=3).
+    pub const GNSS_SUBSYSTEM_FAULT: u8 = 0x0F;
+    /// Mask of `gnss_main_process_fault` (bit 0).
+    pub const GNSS_MAIN_PROCESS_FAULT: u8 = 0x01;
+    /// Mask of `gnss_receiver_1_stall` (bit 1).
+    pub const GNSS_RECEIVER_1_STALL: u8 = 0x02;
+    /// Mask of `gnss_receiver_2_stall` (bit 2).
+    pub const GNSS_RECEIVER_2_STALL: u8 = 0x04;
+    /// Mask of `reserved_27` (bit 3).
+    pub const RESERVED_27: u8 = 0x08;
+    /// Mask of `reserved_28_31` (bits 4..=7).
+    pub const RESERVED_28_31: u8 = 0xF0;
+
+    /// Bits 24-27 (3.0-3.3): any GNSS subsystem fault (the bits below). (bits 0..=3)
+    pub const fn gnss_subsystem_fault(self) -> u8 {
+        self.0 & Self::GNSS_SUBSYSTEM_FAULT
+    }
+
+    /// Sets `gnss_subsystem_fault` (bits 0..=3); higher bits of `v` are ignored.
+    pub fn set_gnss_subsystem_fault(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::GNSS_SUBSYSTEM_FAULT) | (v & Self::GNSS_SUBSYSTEM_FAULT);
+    }
+
+    /// Bit 24 (3.0): the master GNSS process has not run within its timeout. (bit 0)
+    pub const fn gnss_main_process_fault(self) -> bool {
+        self.0 & Self::GNSS_MAIN_PROCESS_FAULT != 0
+    }
+
+    /// Sets or clears `gnss_main_process_fault` (bit 0).
+    pub fn set_gnss_main_process_fault(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_MAIN_PROCESS_FAULT;
+        } else {
+            self.0 &= !Self::GNSS_MAIN_PROCESS_FAULT;
+        }
+    }
+
+    /// Bit 25 (3.1): no data processed from internal receiver 1 within the timeout. (bit 1)
+    pub const fn gnss_receiver_1_stall(self) -> bool {
+        self.0 & Self::GNSS_RECEIVER_1_STALL != 0
+    }
+
+    /// Sets or clears `gnss_receiver_1_stall` (bit 1).
+    pub fn set_gnss_receiver_1_stall(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_RECEIVER_1_STALL;
+        } else {
+            self.0 &= !Self::GNSS_RECEIVER_1_STALL;
+        }
+    }
+
+    /// Bit 26 (3.2): no data processed from internal receiver 2 within the timeout. (bit 2)
+    pub const fn gnss_receiver_2_stall(self) -> bool {
+        self.0 & Self::GNSS_RECEIVER_2_STALL != 0
+    }
+
+    /// Sets or clears `gnss_receiver_2_stall` (bit 2).
+    pub fn set_gnss_receiver_2_stall(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_RECEIVER_2_STALL;
+        } else {
+            self.0 &= !Self::GNSS_RECEIVER_2_STALL;
+        }
+    }
+
+    /// Bit 27 (3.3): reserved. Reserved. (bit 3)
+    pub const fn reserved_27(self) -> bool {
+        self.0 & Self::RESERVED_27 != 0
+    }
+
+    /// Sets or clears `reserved_27` (bit 3).
+    pub fn set_reserved_27(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_27;
+        } else {
+            self.0 &= !Self::RESERVED_27;
+        }
+    }
+
+    /// Bits 28-31 (3.4-3.7): system reserved. Reserved. (bits 4..=7)
+    pub const fn reserved_28_31(self) -> u8 {
+        (self.0 & Self::RESERVED_28_31) >> 4
+    }
+
+    /// Sets `reserved_28_31` (bits 4..=7); higher bits of `v` are ignored.
+    pub fn set_reserved_28_31(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED_28_31) | ((v << 4) & Self::RESERVED_28_31);
+    }
+}
+
+impl crate::wire::Wire for Cv7ContinuousBitSystem3 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Cv7ContinuousBitSystem3 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// Descriptor and rate decimation. One entry of a message format list.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DescriptorRate {
@@ -2683,6 +4309,128 @@ impl crate::json_read::FromJson for ExternalHeadingType {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// External time delta valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ExternalTimeDeltaValidFlags(pub u16);
+
+impl ExternalTimeDeltaValidFlags {
+    /// Mask of `dt_nanos` (bit 0).
+    pub const DT_NANOS: u16 = 0x0001;
+    /// Mask of `reserved` (bits 1..=15).
+    pub const RESERVED: u16 = 0xFFFE;
+
+    /// The delta is valid. (bit 0)
+    pub const fn dt_nanos(self) -> bool {
+        self.0 & Self::DT_NANOS != 0
+    }
+
+    /// Sets or clears `dt_nanos` (bit 0).
+    pub fn set_dt_nanos(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DT_NANOS;
+        } else {
+            self.0 &= !Self::DT_NANOS;
+        }
+    }
+
+    /// Not listed. Reserved. (bits 1..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 1
+    }
+
+    /// Sets `reserved` (bits 1..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 1) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for ExternalTimeDeltaValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ExternalTimeDeltaValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// External timestamp valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ExternalTimestampValidFlags(pub u16);
+
+impl ExternalTimestampValidFlags {
+    /// Mask of `nanoseconds` (bit 0).
+    pub const NANOSECONDS: u16 = 0x0001;
+    /// Mask of `reserved` (bits 1..=15).
+    pub const RESERVED: u16 = 0xFFFE;
+
+    /// The nanoseconds value is valid (external clock synchronised via PPS). (bit 0)
+    pub const fn nanoseconds(self) -> bool {
+        self.0 & Self::NANOSECONDS != 0
+    }
+
+    /// Sets or clears `nanoseconds` (bit 0).
+    pub fn set_nanoseconds(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::NANOSECONDS;
+        } else {
+            self.0 &= !Self::NANOSECONDS;
+        }
+    }
+
+    /// Not listed. Reserved. (bits 1..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 1
+    }
+
+    /// Sets `reserved` (bits 1..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 1) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for ExternalTimestampValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for ExternalTimestampValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4802,6 +6550,504 @@ impl crate::json_read::FromJson for FunctionSelector {
     }
 }
 
+/// GNSS antenna power. Whether the receiver powers the antenna.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssAntennaPower(pub u8);
+
+impl GnssAntennaPower {
+    /// Antenna power off.
+    pub const OFF: Self = Self(0);
+    /// Antenna power on.
+    pub const ON: Self = Self(1);
+    /// Power state unknown.
+    pub const UNKNOWN: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("off"),
+            1 => Some("on"),
+            2 => Some("unknown"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "off" => Some(Self::OFF),
+            "on" => Some(Self::ON),
+            "unknown" => Some(Self::UNKNOWN),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssAntennaPower {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssAntennaPower({} {})", self.0, name),
+            None => write!(f, "GnssAntennaPower({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssAntennaPower {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssAntennaPower {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssAntennaPower"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GNSS antenna state. State of the GNSS antenna connection. There is no value 0.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssAntennaState(pub u8);
+
+impl GnssAntennaState {
+    /// Antenna initialising.
+    pub const INIT: Self = Self(1);
+    /// Antenna short circuit.
+    pub const SHORT: Self = Self(2);
+    /// Antenna open circuit (not connected).
+    pub const OPEN: Self = Self(3);
+    /// Antenna good.
+    pub const GOOD: Self = Self(4);
+    /// State unknown.
+    pub const UNKNOWN: Self = Self(5);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            1 => Some("init"),
+            2 => Some("short"),
+            3 => Some("open"),
+            4 => Some("good"),
+            5 => Some("unknown"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "init" => Some(Self::INIT),
+            "short" => Some(Self::SHORT),
+            "open" => Some(Self::OPEN),
+            "good" => Some(Self::GOOD),
+            "unknown" => Some(Self::UNKNOWN),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssAntennaState {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssAntennaState({} {})", self.0, name),
+            None => write!(f, "GnssAntennaState({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssAntennaState {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssAntennaState {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssAntennaState"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Base station indicators. Indicator bits of the base station, as reported in RTCM message 1005/1006.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssBaseStationIndicators(pub u16);
+
+impl GnssBaseStationIndicators {
+    /// Mask of `gps` (bit 0).
+    pub const GPS: u16 = 0x0001;
+    /// Mask of `glonass` (bit 1).
+    pub const GLONASS: u16 = 0x0002;
+    /// Mask of `galileo` (bit 2).
+    pub const GALILEO: u16 = 0x0004;
+    /// Mask of `beidou` (bit 3).
+    pub const BEIDOU: u16 = 0x0008;
+    /// Mask of `ref_station` (bit 4).
+    pub const REF_STATION: u16 = 0x0010;
+    /// Mask of `single_receiver` (bit 5).
+    pub const SINGLE_RECEIVER: u16 = 0x0020;
+    /// Mask of `quarter_cycle_bit1` (bit 6).
+    pub const QUARTER_CYCLE_BIT1: u16 = 0x0040;
+    /// Mask of `quarter_cycle_bit2` (bit 7).
+    pub const QUARTER_CYCLE_BIT2: u16 = 0x0080;
+    /// Mask of `quarter_cycle_bits` (bits 6..=7).
+    pub const QUARTER_CYCLE_BITS: u16 = 0x00C0;
+    /// Mask of `reserved` (bits 8..=15).
+    pub const RESERVED: u16 = 0xFF00;
+
+    /// GPS indicator. (bit 0)
+    pub const fn gps(self) -> bool {
+        self.0 & Self::GPS != 0
+    }
+
+    /// Sets or clears `gps` (bit 0).
+    pub fn set_gps(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GPS;
+        } else {
+            self.0 &= !Self::GPS;
+        }
+    }
+
+    /// GLONASS indicator. (bit 1)
+    pub const fn glonass(self) -> bool {
+        self.0 & Self::GLONASS != 0
+    }
+
+    /// Sets or clears `glonass` (bit 1).
+    pub fn set_glonass(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GLONASS;
+        } else {
+            self.0 &= !Self::GLONASS;
+        }
+    }
+
+    /// Galileo indicator. (bit 2)
+    pub const fn galileo(self) -> bool {
+        self.0 & Self::GALILEO != 0
+    }
+
+    /// Sets or clears `galileo` (bit 2).
+    pub fn set_galileo(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GALILEO;
+        } else {
+            self.0 &= !Self::GALILEO;
+        }
+    }
+
+    /// BeiDou indicator. (bit 3)
+    pub const fn beidou(self) -> bool {
+        self.0 & Self::BEIDOU != 0
+    }
+
+    /// Sets or clears `beidou` (bit 3).
+    pub fn set_beidou(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BEIDOU;
+        } else {
+            self.0 &= !Self::BEIDOU;
+        }
+    }
+
+    /// Reference station indicator. (bit 4)
+    pub const fn ref_station(self) -> bool {
+        self.0 & Self::REF_STATION != 0
+    }
+
+    /// Sets or clears `ref_station` (bit 4).
+    pub fn set_ref_station(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::REF_STATION;
+        } else {
+            self.0 &= !Self::REF_STATION;
+        }
+    }
+
+    /// Single receiver oscillator indicator. (bit 5)
+    pub const fn single_receiver(self) -> bool {
+        self.0 & Self::SINGLE_RECEIVER != 0
+    }
+
+    /// Sets or clears `single_receiver` (bit 5).
+    pub fn set_single_receiver(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SINGLE_RECEIVER;
+        } else {
+            self.0 &= !Self::SINGLE_RECEIVER;
+        }
+    }
+
+    /// Quarter cycle indicator, first bit. (bit 6)
+    pub const fn quarter_cycle_bit1(self) -> bool {
+        self.0 & Self::QUARTER_CYCLE_BIT1 != 0
+    }
+
+    /// Sets or clears `quarter_cycle_bit1` (bit 6).
+    pub fn set_quarter_cycle_bit1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::QUARTER_CYCLE_BIT1;
+        } else {
+            self.0 &= !Self::QUARTER_CYCLE_BIT1;
+        }
+    }
+
+    /// Quarter cycle indicator, second bit. (bit 7)
+    pub const fn quarter_cycle_bit2(self) -> bool {
+        self.0 & Self::QUARTER_CYCLE_BIT2 != 0
+    }
+
+    /// Sets or clears `quarter_cycle_bit2` (bit 7).
+    pub fn set_quarter_cycle_bit2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::QUARTER_CYCLE_BIT2;
+        } else {
+            self.0 &= !Self::QUARTER_CYCLE_BIT2;
+        }
+    }
+
+    /// Quarter cycle indicator (both bits). (bits 6..=7)
+    pub const fn quarter_cycle_bits(self) -> u16 {
+        (self.0 & Self::QUARTER_CYCLE_BITS) >> 6
+    }
+
+    /// Sets `quarter_cycle_bits` (bits 6..=7); higher bits of `v` are ignored.
+    pub fn set_quarter_cycle_bits(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::QUARTER_CYCLE_BITS) | ((v << 6) & Self::QUARTER_CYCLE_BITS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 8..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 8
+    }
+
+    /// Sets `reserved` (bits 8..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 8) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssBaseStationIndicators {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssBaseStationIndicators {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Base station information valid flags. Which parameters of the base station information field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssBaseStationInfoValidFlags(pub u16);
+
+impl GnssBaseStationInfoValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `ecef_position` (bit 2).
+    pub const ECEF_POSITION: u16 = 0x0004;
+    /// Mask of `height` (bit 3).
+    pub const HEIGHT: u16 = 0x0008;
+    /// Mask of `station_id` (bit 4).
+    pub const STATION_ID: u16 = 0x0010;
+    /// Mask of `indicators` (bit 5).
+    pub const INDICATORS: u16 = 0x0020;
+    /// Mask of `flags` (bits 0..=5).
+    pub const FLAGS: u16 = 0x003F;
+    /// Mask of `reserved` (bits 6..=15).
+    pub const RESERVED: u16 = 0xFFC0;
+
+    /// Time of week valid. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// Week number valid. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// ECEF position valid. (bit 2)
+    pub const fn ecef_position(self) -> bool {
+        self.0 & Self::ECEF_POSITION != 0
+    }
+
+    /// Sets or clears `ecef_position` (bit 2).
+    pub fn set_ecef_position(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ECEF_POSITION;
+        } else {
+            self.0 &= !Self::ECEF_POSITION;
+        }
+    }
+
+    /// Antenna height valid. (bit 3)
+    pub const fn height(self) -> bool {
+        self.0 & Self::HEIGHT != 0
+    }
+
+    /// Sets or clears `height` (bit 3).
+    pub fn set_height(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEIGHT;
+        } else {
+            self.0 &= !Self::HEIGHT;
+        }
+    }
+
+    /// Station id valid. (bit 4)
+    pub const fn station_id(self) -> bool {
+        self.0 & Self::STATION_ID != 0
+    }
+
+    /// Sets or clears `station_id` (bit 4).
+    pub fn set_station_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::STATION_ID;
+        } else {
+            self.0 &= !Self::STATION_ID;
+        }
+    }
+
+    /// Indicators valid. (bit 5)
+    pub const fn indicators(self) -> bool {
+        self.0 & Self::INDICATORS != 0
+    }
+
+    /// Sets or clears `indicators` (bit 5).
+    pub fn set_indicators(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::INDICATORS;
+        } else {
+            self.0 &= !Self::INDICATORS;
+        }
+    }
+
+    /// All flags. (bits 0..=5)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=5); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 6..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 6
+    }
+
+    /// Sets `reserved` (bits 6..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 6) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssBaseStationInfoValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssBaseStationInfoValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// BeiDou signals enabled.
 ///
 /// Bits the spec does not name are kept as they are.
@@ -4883,6 +7129,1436 @@ impl crate::json_read::FromJson for GnssBeidouSignals {
     }
 }
 
+/// GNSS clock information 2 valid flags. Which receiver clock parameters are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssClockInfo2ValidFlags(pub u16);
+
+impl GnssClockInfo2ValidFlags {
+    /// Mask of `bias` (bit 0).
+    pub const BIAS: u16 = 0x0001;
+    /// Mask of `drift` (bit 1).
+    pub const DRIFT: u16 = 0x0002;
+    /// Mask of `bias_accuracy` (bit 2).
+    pub const BIAS_ACCURACY: u16 = 0x0004;
+    /// Mask of `drift_accuracy` (bit 3).
+    pub const DRIFT_ACCURACY: u16 = 0x0008;
+    /// Mask of `flags` (bits 0..=3).
+    pub const FLAGS: u16 = 0x000F;
+    /// Mask of `reserved` (bits 4..=15).
+    pub const RESERVED: u16 = 0xFFF0;
+
+    /// Clock bias valid. (bit 0)
+    pub const fn bias(self) -> bool {
+        self.0 & Self::BIAS != 0
+    }
+
+    /// Sets or clears `bias` (bit 0).
+    pub fn set_bias(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BIAS;
+        } else {
+            self.0 &= !Self::BIAS;
+        }
+    }
+
+    /// Clock drift valid. (bit 1)
+    pub const fn drift(self) -> bool {
+        self.0 & Self::DRIFT != 0
+    }
+
+    /// Sets or clears `drift` (bit 1).
+    pub fn set_drift(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DRIFT;
+        } else {
+            self.0 &= !Self::DRIFT;
+        }
+    }
+
+    /// Bias accuracy estimate valid. (bit 2)
+    pub const fn bias_accuracy(self) -> bool {
+        self.0 & Self::BIAS_ACCURACY != 0
+    }
+
+    /// Sets or clears `bias_accuracy` (bit 2).
+    pub fn set_bias_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BIAS_ACCURACY;
+        } else {
+            self.0 &= !Self::BIAS_ACCURACY;
+        }
+    }
+
+    /// Drift accuracy estimate valid. (bit 3)
+    pub const fn drift_accuracy(self) -> bool {
+        self.0 & Self::DRIFT_ACCURACY != 0
+    }
+
+    /// Sets or clears `drift_accuracy` (bit 3).
+    pub fn set_drift_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DRIFT_ACCURACY;
+        } else {
+            self.0 &= !Self::DRIFT_ACCURACY;
+        }
+    }
+
+    /// All flags. (bits 0..=3)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=3); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 4..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 4
+    }
+
+    /// Sets `reserved` (bits 4..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 4) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssClockInfo2ValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssClockInfo2ValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS clock information valid flags. Which clock parameters are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssClockInfoValidFlags(pub u16);
+
+impl GnssClockInfoValidFlags {
+    /// Mask of `bias` (bit 0).
+    pub const BIAS: u16 = 0x0001;
+    /// Mask of `drift` (bit 1).
+    pub const DRIFT: u16 = 0x0002;
+    /// Mask of `accuracy_estimate` (bit 2).
+    pub const ACCURACY_ESTIMATE: u16 = 0x0004;
+    /// Mask of `reserved` (bits 3..=15).
+    pub const RESERVED: u16 = 0xFFF8;
+
+    /// Clock bias valid. (bit 0)
+    pub const fn bias(self) -> bool {
+        self.0 & Self::BIAS != 0
+    }
+
+    /// Sets or clears `bias` (bit 0).
+    pub fn set_bias(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BIAS;
+        } else {
+            self.0 &= !Self::BIAS;
+        }
+    }
+
+    /// Clock drift valid. (bit 1)
+    pub const fn drift(self) -> bool {
+        self.0 & Self::DRIFT != 0
+    }
+
+    /// Sets or clears `drift` (bit 1).
+    pub fn set_drift(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DRIFT;
+        } else {
+            self.0 &= !Self::DRIFT;
+        }
+    }
+
+    /// Accuracy estimate valid. (bit 2)
+    pub const fn accuracy_estimate(self) -> bool {
+        self.0 & Self::ACCURACY_ESTIMATE != 0
+    }
+
+    /// Sets or clears `accuracy_estimate` (bit 2).
+    pub fn set_accuracy_estimate(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCURACY_ESTIMATE;
+        } else {
+            self.0 &= !Self::ACCURACY_ESTIMATE;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 3..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 3
+    }
+
+    /// Sets `reserved` (bits 3..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 3) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssClockInfoValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssClockInfoValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS constellation (CV7 GNSS data).
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssConstellationId(pub u8);
+
+impl GnssConstellationId {
+    /// Constellation unknown or not given.
+    pub const UNKNOWN: Self = Self(0);
+    /// GPS.
+    pub const GPS: Self = Self(1);
+    /// GLONASS.
+    pub const GLONASS: Self = Self(2);
+    /// Galileo.
+    pub const GALILEO: Self = Self(3);
+    /// BeiDou.
+    pub const BEIDOU: Self = Self(4);
+    /// SBAS.
+    pub const SBAS: Self = Self(5);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unknown"),
+            1 => Some("gps"),
+            2 => Some("glonass"),
+            3 => Some("galileo"),
+            4 => Some("beidou"),
+            5 => Some("sbas"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unknown" => Some(Self::UNKNOWN),
+            "gps" => Some(Self::GPS),
+            "glonass" => Some(Self::GLONASS),
+            "galileo" => Some(Self::GALILEO),
+            "beidou" => Some(Self::BEIDOU),
+            "sbas" => Some(Self::SBAS),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssConstellationId {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssConstellationId({} {})", self.0, name),
+            None => write!(f, "GnssConstellationId({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssConstellationId {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssConstellationId {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssConstellationId"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// DGNSS base station status. Health of the DGNSS reference station as its UDRE (user differential range error) scale factor.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssDgnssBaseStationStatus(pub i16);
+
+impl GnssDgnssBaseStationStatus {
+    /// UDRE scale factor 1.0.
+    pub const UDRE_SCALE_1_0: Self = Self(0);
+    /// UDRE scale factor 0.75.
+    pub const UDRE_SCALE_0_75: Self = Self(1);
+    /// UDRE scale factor 0.5.
+    pub const UDRE_SCALE_0_5: Self = Self(2);
+    /// UDRE scale factor 0.3.
+    pub const UDRE_SCALE_0_3: Self = Self(3);
+    /// UDRE scale factor 0.2.
+    pub const UDRE_SCALE_0_2: Self = Self(4);
+    /// UDRE scale factor 0.1.
+    pub const UDRE_SCALE_0_1: Self = Self(5);
+    /// Reference station transmission not monitored.
+    pub const TRANSMISSION_NOT_MONITORED: Self = Self(6);
+    /// Reference station not working.
+    pub const STATION_NOT_WORKING: Self = Self(7);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("udre_scale_1_0"),
+            1 => Some("udre_scale_0_75"),
+            2 => Some("udre_scale_0_5"),
+            3 => Some("udre_scale_0_3"),
+            4 => Some("udre_scale_0_2"),
+            5 => Some("udre_scale_0_1"),
+            6 => Some("transmission_not_monitored"),
+            7 => Some("station_not_working"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "udre_scale_1_0" => Some(Self::UDRE_SCALE_1_0),
+            "udre_scale_0_75" => Some(Self::UDRE_SCALE_0_75),
+            "udre_scale_0_5" => Some(Self::UDRE_SCALE_0_5),
+            "udre_scale_0_3" => Some(Self::UDRE_SCALE_0_3),
+            "udre_scale_0_2" => Some(Self::UDRE_SCALE_0_2),
+            "udre_scale_0_1" => Some(Self::UDRE_SCALE_0_1),
+            "transmission_not_monitored" => Some(Self::TRANSMISSION_NOT_MONITORED),
+            "station_not_working" => Some(Self::STATION_NOT_WORKING),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssDgnssBaseStationStatus {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssDgnssBaseStationStatus({} {})", self.0, name),
+            None => write!(f, "GnssDgnssBaseStationStatus({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssDgnssBaseStationStatus {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <i16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <i16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssDgnssBaseStationStatus {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssDgnssBaseStationStatus"
+                ))
+            }),
+            other => <i16 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// DGNSS channel status valid flags. Which parameters of a DGNSS channel status entry are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssDgnssChannelStatusValidFlags(pub u16);
+
+impl GnssDgnssChannelStatusValidFlags {
+    /// Mask of `sv_id` (bit 0).
+    pub const SV_ID: u16 = 0x0001;
+    /// Mask of `age` (bit 1).
+    pub const AGE: u16 = 0x0002;
+    /// Mask of `pseudorange_correction` (bit 2).
+    pub const PSEUDORANGE_CORRECTION: u16 = 0x0004;
+    /// Mask of `pseudorange_rate_correction` (bit 3).
+    pub const PSEUDORANGE_RATE_CORRECTION: u16 = 0x0008;
+    /// Mask of `reserved` (bits 4..=15).
+    pub const RESERVED: u16 = 0xFFF0;
+
+    /// Space vehicle id valid. (bit 0)
+    pub const fn sv_id(self) -> bool {
+        self.0 & Self::SV_ID != 0
+    }
+
+    /// Sets or clears `sv_id` (bit 0).
+    pub fn set_sv_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SV_ID;
+        } else {
+            self.0 &= !Self::SV_ID;
+        }
+    }
+
+    /// Correction age valid. (bit 1)
+    pub const fn age(self) -> bool {
+        self.0 & Self::AGE != 0
+    }
+
+    /// Sets or clears `age` (bit 1).
+    pub fn set_age(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::AGE;
+        } else {
+            self.0 &= !Self::AGE;
+        }
+    }
+
+    /// Pseudorange correction valid. (bit 2)
+    pub const fn pseudorange_correction(self) -> bool {
+        self.0 & Self::PSEUDORANGE_CORRECTION != 0
+    }
+
+    /// Sets or clears `pseudorange_correction` (bit 2).
+    pub fn set_pseudorange_correction(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PSEUDORANGE_CORRECTION;
+        } else {
+            self.0 &= !Self::PSEUDORANGE_CORRECTION;
+        }
+    }
+
+    /// Pseudorange rate correction valid. (bit 3)
+    pub const fn pseudorange_rate_correction(self) -> bool {
+        self.0 & Self::PSEUDORANGE_RATE_CORRECTION != 0
+    }
+
+    /// Sets or clears `pseudorange_rate_correction` (bit 3).
+    pub fn set_pseudorange_rate_correction(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PSEUDORANGE_RATE_CORRECTION;
+        } else {
+            self.0 &= !Self::PSEUDORANGE_RATE_CORRECTION;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 4..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 4
+    }
+
+    /// Sets `reserved` (bits 4..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 4) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssDgnssChannelStatusValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssDgnssChannelStatusValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// DGNSS information valid flags. Which parameters of the DGNSS information field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssDgnssInfoValidFlags(pub u16);
+
+impl GnssDgnssInfoValidFlags {
+    /// Mask of `latest_age` (bit 0).
+    pub const LATEST_AGE: u16 = 0x0001;
+    /// Mask of `base_station_id` (bit 1).
+    pub const BASE_STATION_ID: u16 = 0x0002;
+    /// Mask of `base_station_status` (bit 2).
+    pub const BASE_STATION_STATUS: u16 = 0x0004;
+    /// Mask of `num_channels` (bit 3).
+    pub const NUM_CHANNELS: u16 = 0x0008;
+    /// Mask of `reserved` (bits 4..=15).
+    pub const RESERVED: u16 = 0xFFF0;
+
+    /// Newest (latest) correction age valid. (bit 0)
+    pub const fn latest_age(self) -> bool {
+        self.0 & Self::LATEST_AGE != 0
+    }
+
+    /// Sets or clears `latest_age` (bit 0).
+    pub fn set_latest_age(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LATEST_AGE;
+        } else {
+            self.0 &= !Self::LATEST_AGE;
+        }
+    }
+
+    /// Base station id valid. (bit 1)
+    pub const fn base_station_id(self) -> bool {
+        self.0 & Self::BASE_STATION_ID != 0
+    }
+
+    /// Sets or clears `base_station_id` (bit 1).
+    pub fn set_base_station_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BASE_STATION_ID;
+        } else {
+            self.0 &= !Self::BASE_STATION_ID;
+        }
+    }
+
+    /// Base station status valid. (bit 2)
+    pub const fn base_station_status(self) -> bool {
+        self.0 & Self::BASE_STATION_STATUS != 0
+    }
+
+    /// Sets or clears `base_station_status` (bit 2).
+    pub fn set_base_station_status(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BASE_STATION_STATUS;
+        } else {
+            self.0 &= !Self::BASE_STATION_STATUS;
+        }
+    }
+
+    /// Number of DGNSS channels valid. (bit 3)
+    pub const fn num_channels(self) -> bool {
+        self.0 & Self::NUM_CHANNELS != 0
+    }
+
+    /// Sets or clears `num_channels` (bit 3).
+    pub fn set_num_channels(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::NUM_CHANNELS;
+        } else {
+            self.0 &= !Self::NUM_CHANNELS;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 4..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 4
+    }
+
+    /// Sets `reserved` (bits 4..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 4) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssDgnssInfoValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssDgnssInfoValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS DOP valid flags. Which dilution-of-precision values are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssDopValidFlags(pub u16);
+
+impl GnssDopValidFlags {
+    /// Mask of `gdop` (bit 0).
+    pub const GDOP: u16 = 0x0001;
+    /// Mask of `pdop` (bit 1).
+    pub const PDOP: u16 = 0x0002;
+    /// Mask of `hdop` (bit 2).
+    pub const HDOP: u16 = 0x0004;
+    /// Mask of `vdop` (bit 3).
+    pub const VDOP: u16 = 0x0008;
+    /// Mask of `tdop` (bit 4).
+    pub const TDOP: u16 = 0x0010;
+    /// Mask of `ndop` (bit 5).
+    pub const NDOP: u16 = 0x0020;
+    /// Mask of `edop` (bit 6).
+    pub const EDOP: u16 = 0x0040;
+    /// Mask of `flags` (bits 0..=6).
+    pub const FLAGS: u16 = 0x007F;
+    /// Mask of `reserved` (bits 7..=15).
+    pub const RESERVED: u16 = 0xFF80;
+
+    /// Geometric DOP valid. (bit 0)
+    pub const fn gdop(self) -> bool {
+        self.0 & Self::GDOP != 0
+    }
+
+    /// Sets or clears `gdop` (bit 0).
+    pub fn set_gdop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GDOP;
+        } else {
+            self.0 &= !Self::GDOP;
+        }
+    }
+
+    /// Position DOP valid. (bit 1)
+    pub const fn pdop(self) -> bool {
+        self.0 & Self::PDOP != 0
+    }
+
+    /// Sets or clears `pdop` (bit 1).
+    pub fn set_pdop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PDOP;
+        } else {
+            self.0 &= !Self::PDOP;
+        }
+    }
+
+    /// Horizontal DOP valid. (bit 2)
+    pub const fn hdop(self) -> bool {
+        self.0 & Self::HDOP != 0
+    }
+
+    /// Sets or clears `hdop` (bit 2).
+    pub fn set_hdop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HDOP;
+        } else {
+            self.0 &= !Self::HDOP;
+        }
+    }
+
+    /// Vertical DOP valid. (bit 3)
+    pub const fn vdop(self) -> bool {
+        self.0 & Self::VDOP != 0
+    }
+
+    /// Sets or clears `vdop` (bit 3).
+    pub fn set_vdop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VDOP;
+        } else {
+            self.0 &= !Self::VDOP;
+        }
+    }
+
+    /// Time DOP valid. (bit 4)
+    pub const fn tdop(self) -> bool {
+        self.0 & Self::TDOP != 0
+    }
+
+    /// Sets or clears `tdop` (bit 4).
+    pub fn set_tdop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TDOP;
+        } else {
+            self.0 &= !Self::TDOP;
+        }
+    }
+
+    /// Northing DOP valid. (bit 5)
+    pub const fn ndop(self) -> bool {
+        self.0 & Self::NDOP != 0
+    }
+
+    /// Sets or clears `ndop` (bit 5).
+    pub fn set_ndop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::NDOP;
+        } else {
+            self.0 &= !Self::NDOP;
+        }
+    }
+
+    /// Easting DOP valid. (bit 6)
+    pub const fn edop(self) -> bool {
+        self.0 & Self::EDOP != 0
+    }
+
+    /// Sets or clears `edop` (bit 6).
+    pub fn set_edop(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::EDOP;
+        } else {
+            self.0 &= !Self::EDOP;
+        }
+    }
+
+    /// All flags. (bits 0..=6)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=6); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 7..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 7
+    }
+
+    /// Sets `reserved` (bits 7..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 7) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssDopValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssDopValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS ECEF position valid flags. Which parameters of a GNSS ECEF position field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssEcefPositionValidFlags(pub u16);
+
+impl GnssEcefPositionValidFlags {
+    /// Mask of `position` (bit 0).
+    pub const POSITION: u16 = 0x0001;
+    /// Mask of `position_accuracy` (bit 1).
+    pub const POSITION_ACCURACY: u16 = 0x0002;
+    /// Mask of `flags` (bits 0..=1).
+    pub const FLAGS: u16 = 0x0003;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// ECEF position valid. (bit 0)
+    pub const fn position(self) -> bool {
+        self.0 & Self::POSITION != 0
+    }
+
+    /// Sets or clears `position` (bit 0).
+    pub fn set_position(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::POSITION;
+        } else {
+            self.0 &= !Self::POSITION;
+        }
+    }
+
+    /// Position accuracy valid. (bit 1)
+    pub const fn position_accuracy(self) -> bool {
+        self.0 & Self::POSITION_ACCURACY != 0
+    }
+
+    /// Sets or clears `position_accuracy` (bit 1).
+    pub fn set_position_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::POSITION_ACCURACY;
+        } else {
+            self.0 &= !Self::POSITION_ACCURACY;
+        }
+    }
+
+    /// All flags. (bits 0..=1)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=1); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssEcefPositionValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssEcefPositionValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS ECEF velocity valid flags. Which parameters of a GNSS ECEF velocity field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssEcefVelocityValidFlags(pub u16);
+
+impl GnssEcefVelocityValidFlags {
+    /// Mask of `velocity` (bit 0).
+    pub const VELOCITY: u16 = 0x0001;
+    /// Mask of `velocity_accuracy` (bit 1).
+    pub const VELOCITY_ACCURACY: u16 = 0x0002;
+    /// Mask of `flags` (bits 0..=1).
+    pub const FLAGS: u16 = 0x0003;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// ECEF velocity valid. (bit 0)
+    pub const fn velocity(self) -> bool {
+        self.0 & Self::VELOCITY != 0
+    }
+
+    /// Sets or clears `velocity` (bit 0).
+    pub fn set_velocity(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VELOCITY;
+        } else {
+            self.0 &= !Self::VELOCITY;
+        }
+    }
+
+    /// Velocity accuracy valid. (bit 1)
+    pub const fn velocity_accuracy(self) -> bool {
+        self.0 & Self::VELOCITY_ACCURACY != 0
+    }
+
+    /// Sets or clears `velocity_accuracy` (bit 1).
+    pub fn set_velocity_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VELOCITY_ACCURACY;
+        } else {
+            self.0 &= !Self::VELOCITY_ACCURACY;
+        }
+    }
+
+    /// All flags. (bits 0..=1)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=1); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssEcefVelocityValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssEcefVelocityValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GPS/Galileo/BeiDou ephemeris valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssEphemerisValidFlags(pub u16);
+
+impl GnssEphemerisValidFlags {
+    /// Mask of `ephemeris` (bit 0).
+    pub const EPHEMERIS: u16 = 0x0001;
+    /// Mask of `modern_data` (bit 1).
+    pub const MODERN_DATA: u16 = 0x0002;
+    /// Mask of `isc_l5` (bit 2).
+    pub const ISC_L5: u16 = 0x0004;
+    /// Mask of `flags` (bits 0..=2).
+    pub const FLAGS: u16 = 0x0007;
+    /// Mask of `reserved` (bits 3..=15).
+    pub const RESERVED: u16 = 0xFFF8;
+
+    /// Ephemeris data valid. (bit 0)
+    pub const fn ephemeris(self) -> bool {
+        self.0 & Self::EPHEMERIS != 0
+    }
+
+    /// Sets or clears `ephemeris` (bit 0).
+    pub fn set_ephemeris(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::EPHEMERIS;
+        } else {
+            self.0 &= !Self::EPHEMERIS;
+        }
+    }
+
+    /// Modernized navigation data present (the manual gives only the name, not which parameters it covers). (bit 1)
+    pub const fn modern_data(self) -> bool {
+        self.0 & Self::MODERN_DATA != 0
+    }
+
+    /// Sets or clears `modern_data` (bit 1).
+    pub fn set_modern_data(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MODERN_DATA;
+        } else {
+            self.0 &= !Self::MODERN_DATA;
+        }
+    }
+
+    /// isc_l2c holds the L5 inter-signal correction instead of L2. (bit 2)
+    pub const fn isc_l5(self) -> bool {
+        self.0 & Self::ISC_L5 != 0
+    }
+
+    /// Sets or clears `isc_l5` (bit 2).
+    pub fn set_isc_l5(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ISC_L5;
+        } else {
+            self.0 &= !Self::ISC_L5;
+        }
+    }
+
+    /// All valid flags (the manual's 'flags 0-2' entry). (bits 0..=2)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=2); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 3..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 3
+    }
+
+    /// Sets `reserved` (bits 3..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 3) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssEphemerisValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssEphemerisValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS fix flags. Corrections used in the position fix.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssFixFlags(pub u16);
+
+impl GnssFixFlags {
+    /// Mask of `sbas_used` (bit 0).
+    pub const SBAS_USED: u16 = 0x0001;
+    /// Mask of `dgnss_used` (bit 1).
+    pub const DGNSS_USED: u16 = 0x0002;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// SBAS corrections used. (bit 0)
+    pub const fn sbas_used(self) -> bool {
+        self.0 & Self::SBAS_USED != 0
+    }
+
+    /// Sets or clears `sbas_used` (bit 0).
+    pub fn set_sbas_used(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SBAS_USED;
+        } else {
+            self.0 &= !Self::SBAS_USED;
+        }
+    }
+
+    /// Differential (DGNSS) corrections used. (bit 1)
+    pub const fn dgnss_used(self) -> bool {
+        self.0 & Self::DGNSS_USED != 0
+    }
+
+    /// Sets or clears `dgnss_used` (bit 1).
+    pub fn set_dgnss_used(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DGNSS_USED;
+        } else {
+            self.0 &= !Self::DGNSS_USED;
+        }
+    }
+
+    /// Not named by the manuals. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssFixFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssFixFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS fix information valid flags. Which parameters of a GNSS fix information field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssFixInfoValidFlags(pub u16);
+
+impl GnssFixInfoValidFlags {
+    /// Mask of `fix_type` (bit 0).
+    pub const FIX_TYPE: u16 = 0x0001;
+    /// Mask of `num_sv` (bit 1).
+    pub const NUM_SV: u16 = 0x0002;
+    /// Mask of `fix_flags` (bit 2).
+    pub const FIX_FLAGS: u16 = 0x0004;
+    /// Mask of `flags` (bits 0..=2).
+    pub const FLAGS: u16 = 0x0007;
+    /// Mask of `reserved` (bits 3..=15).
+    pub const RESERVED: u16 = 0xFFF8;
+
+    /// Fix type valid. (bit 0)
+    pub const fn fix_type(self) -> bool {
+        self.0 & Self::FIX_TYPE != 0
+    }
+
+    /// Sets or clears `fix_type` (bit 0).
+    pub fn set_fix_type(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FIX_TYPE;
+        } else {
+            self.0 &= !Self::FIX_TYPE;
+        }
+    }
+
+    /// Number of satellites valid. (bit 1)
+    pub const fn num_sv(self) -> bool {
+        self.0 & Self::NUM_SV != 0
+    }
+
+    /// Sets or clears `num_sv` (bit 1).
+    pub fn set_num_sv(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::NUM_SV;
+        } else {
+            self.0 &= !Self::NUM_SV;
+        }
+    }
+
+    /// Fix flags valid. (bit 2)
+    pub const fn fix_flags(self) -> bool {
+        self.0 & Self::FIX_FLAGS != 0
+    }
+
+    /// Sets or clears `fix_flags` (bit 2).
+    pub fn set_fix_flags(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FIX_FLAGS;
+        } else {
+            self.0 &= !Self::FIX_FLAGS;
+        }
+    }
+
+    /// All flags. (bits 0..=2)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=2); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 3..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 3
+    }
+
+    /// Sets `reserved` (bits 3..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 3) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssFixInfoValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssFixInfoValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS fix type (CV7). Type of position fix a CV7 GNSS receiver reports.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssFixTypeCv7(pub u8);
+
+impl GnssFixTypeCv7 {
+    /// 3D fix.
+    pub const FIX_3D: Self = Self(0);
+    /// 2D fix.
+    pub const FIX_2D: Self = Self(1);
+    /// Time only.
+    pub const FIX_TIME_ONLY: Self = Self(2);
+    /// No fix.
+    pub const FIX_NONE: Self = Self(3);
+    /// Invalid.
+    pub const FIX_INVALID: Self = Self(4);
+    /// RTK solution, float ambiguities.
+    pub const FIX_RTK_FLOAT: Self = Self(5);
+    /// RTK solution, fixed ambiguities.
+    pub const FIX_RTK_FIXED: Self = Self(6);
+    /// Differential (DGNSS) solution.
+    pub const FIX_DIFFERENTIAL: Self = Self(7);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("fix_3d"),
+            1 => Some("fix_2d"),
+            2 => Some("fix_time_only"),
+            3 => Some("fix_none"),
+            4 => Some("fix_invalid"),
+            5 => Some("fix_rtk_float"),
+            6 => Some("fix_rtk_fixed"),
+            7 => Some("fix_differential"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "fix_3d" => Some(Self::FIX_3D),
+            "fix_2d" => Some(Self::FIX_2D),
+            "fix_time_only" => Some(Self::FIX_TIME_ONLY),
+            "fix_none" => Some(Self::FIX_NONE),
+            "fix_invalid" => Some(Self::FIX_INVALID),
+            "fix_rtk_float" => Some(Self::FIX_RTK_FLOAT),
+            "fix_rtk_fixed" => Some(Self::FIX_RTK_FIXED),
+            "fix_differential" => Some(Self::FIX_DIFFERENTIAL),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssFixTypeCv7 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssFixTypeCv7({} {})", self.0, name),
+            None => write!(f, "GnssFixTypeCv7({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssFixTypeCv7 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssFixTypeCv7 {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssFixTypeCv7"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GNSS fix type (GX5-45). Type of position fix the GX5-45 GNSS receiver reports.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssFixTypeGx5(pub u8);
+
+impl GnssFixTypeGx5 {
+    /// 3D fix.
+    pub const FIX_3D: Self = Self(0);
+    /// 2D fix.
+    pub const FIX_2D: Self = Self(1);
+    /// Time only.
+    pub const FIX_TIME_ONLY: Self = Self(2);
+    /// No fix.
+    pub const FIX_NONE: Self = Self(3);
+    /// Invalid.
+    pub const FIX_INVALID: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("fix_3d"),
+            1 => Some("fix_2d"),
+            2 => Some("fix_time_only"),
+            3 => Some("fix_none"),
+            4 => Some("fix_invalid"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "fix_3d" => Some(Self::FIX_3D),
+            "fix_2d" => Some(Self::FIX_2D),
+            "fix_time_only" => Some(Self::FIX_TIME_ONLY),
+            "fix_none" => Some(Self::FIX_NONE),
+            "fix_invalid" => Some(Self::FIX_INVALID),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssFixTypeGx5 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssFixTypeGx5({} {})", self.0, name),
+            None => write!(f, "GnssFixTypeGx5({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssFixTypeGx5 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssFixTypeGx5 {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssFixTypeGx5"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
 /// Galileo signals enabled.
 ///
 /// Bits the spec does not name are kept as they are.
@@ -4961,6 +8637,155 @@ impl crate::wire::Wire for GnssGalileoSignals {
 impl crate::json_read::FromJson for GnssGalileoSignals {
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
         <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GLONASS ephemeris valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssGlonassEphemerisValidFlags(pub u16);
+
+impl GnssGlonassEphemerisValidFlags {
+    /// Mask of `ephemeris` (bit 0).
+    pub const EPHEMERIS: u16 = 0x0001;
+    /// Mask of `flags` (bit 0).
+    pub const FLAGS: u16 = 0x0001;
+    /// Mask of `reserved` (bits 1..=15).
+    pub const RESERVED: u16 = 0xFFFE;
+
+    /// Ephemeris data valid. (bit 0)
+    pub const fn ephemeris(self) -> bool {
+        self.0 & Self::EPHEMERIS != 0
+    }
+
+    /// Sets or clears `ephemeris` (bit 0).
+    pub fn set_ephemeris(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::EPHEMERIS;
+        } else {
+            self.0 &= !Self::EPHEMERIS;
+        }
+    }
+
+    /// All valid flags (the manual's 'flags 0' entry: the single bit 0). (bit 0)
+    pub const fn flags(self) -> bool {
+        self.0 & Self::FLAGS != 0
+    }
+
+    /// Sets or clears `flags` (bit 0).
+    pub fn set_flags(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::FLAGS;
+        } else {
+            self.0 &= !Self::FLAGS;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 1..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 1
+    }
+
+    /// Sets `reserved` (bits 1..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 1) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssGlonassEphemerisValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssGlonassEphemerisValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GLONASS satellite type.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssGlonassSatelliteType(pub u8);
+
+impl GnssGlonassSatelliteType {
+    /// GLONASS satellite.
+    pub const GLONASS: Self = Self(0);
+    /// GLONASS-M satellite.
+    pub const GLONASS_M: Self = Self(1);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("glonass"),
+            1 => Some("glonass_m"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "glonass" => Some(Self::GLONASS),
+            "glonass_m" => Some(Self::GLONASS_M),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssGlonassSatelliteType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssGlonassSatelliteType({} {})", self.0, name),
+            None => write!(f, "GnssGlonassSatelliteType({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssGlonassSatelliteType {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssGlonassSatelliteType {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssGlonassSatelliteType"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
     }
 }
 
@@ -5110,6 +8935,868 @@ impl crate::json_read::FromJson for GnssGpsSignals {
     }
 }
 
+/// GNSS GPS time valid flags. Validity of a GNSS GPS time field.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssGpsTimeValidFlags(pub u16);
+
+impl GnssGpsTimeValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `flags` (bits 0..=1).
+    pub const FLAGS: u16 = 0x0003;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// Time of week valid. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// Week number valid. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// All flags. (bits 0..=1)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=1); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssGpsTimeValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssGpsTimeValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS hardware status valid flags. Which parameters of a GNSS hardware status field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssHardwareStatusValidFlags(pub u16);
+
+impl GnssHardwareStatusValidFlags {
+    /// Mask of `sensor_state` (bit 0).
+    pub const SENSOR_STATE: u16 = 0x0001;
+    /// Mask of `antenna_state` (bit 1).
+    pub const ANTENNA_STATE: u16 = 0x0002;
+    /// Mask of `antenna_power` (bit 2).
+    pub const ANTENNA_POWER: u16 = 0x0004;
+    /// Mask of `flags` (bits 0..=2).
+    pub const FLAGS: u16 = 0x0007;
+    /// Mask of `reserved` (bits 3..=15).
+    pub const RESERVED: u16 = 0xFFF8;
+
+    /// Receiver (sensor) state valid. (bit 0)
+    pub const fn sensor_state(self) -> bool {
+        self.0 & Self::SENSOR_STATE != 0
+    }
+
+    /// Sets or clears `sensor_state` (bit 0).
+    pub fn set_sensor_state(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SENSOR_STATE;
+        } else {
+            self.0 &= !Self::SENSOR_STATE;
+        }
+    }
+
+    /// Antenna state valid. (bit 1)
+    pub const fn antenna_state(self) -> bool {
+        self.0 & Self::ANTENNA_STATE != 0
+    }
+
+    /// Sets or clears `antenna_state` (bit 1).
+    pub fn set_antenna_state(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_STATE;
+        } else {
+            self.0 &= !Self::ANTENNA_STATE;
+        }
+    }
+
+    /// Antenna power valid. (bit 2)
+    pub const fn antenna_power(self) -> bool {
+        self.0 & Self::ANTENNA_POWER != 0
+    }
+
+    /// Sets or clears `antenna_power` (bit 2).
+    pub fn set_antenna_power(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_POWER;
+        } else {
+            self.0 &= !Self::ANTENNA_POWER;
+        }
+    }
+
+    /// All flags. (bits 0..=2)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=2); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 3..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 3
+    }
+
+    /// Sets `reserved` (bits 3..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 3) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssHardwareStatusValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssHardwareStatusValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GPS leap seconds valid flags. Validity of the GPS leap seconds field.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssLeapSecondsValidFlags(pub u16);
+
+impl GnssLeapSecondsValidFlags {
+    /// Mask of `reserved_0` (bit 0).
+    pub const RESERVED_0: u16 = 0x0001;
+    /// Mask of `leap_seconds` (bit 1).
+    pub const LEAP_SECONDS: u16 = 0x0002;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// Not named by the manual. Reserved. (bit 0)
+    pub const fn reserved_0(self) -> bool {
+        self.0 & Self::RESERVED_0 != 0
+    }
+
+    /// Sets or clears `reserved_0` (bit 0).
+    pub fn set_reserved_0(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_0;
+        } else {
+            self.0 &= !Self::RESERVED_0;
+        }
+    }
+
+    /// Leap seconds valid. (bit 1)
+    pub const fn leap_seconds(self) -> bool {
+        self.0 & Self::LEAP_SECONDS != 0
+    }
+
+    /// Sets or clears `leap_seconds` (bit 1).
+    pub fn set_leap_seconds(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LEAP_SECONDS;
+        } else {
+            self.0 &= !Self::LEAP_SECONDS;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssLeapSecondsValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssLeapSecondsValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS LLH position valid flags. Which parameters of a GNSS LLH position field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssLlhPositionValidFlags(pub u16);
+
+impl GnssLlhPositionValidFlags {
+    /// Mask of `lat_lon` (bit 0).
+    pub const LAT_LON: u16 = 0x0001;
+    /// Mask of `ellipsoid_height` (bit 1).
+    pub const ELLIPSOID_HEIGHT: u16 = 0x0002;
+    /// Mask of `msl_height` (bit 2).
+    pub const MSL_HEIGHT: u16 = 0x0004;
+    /// Mask of `horizontal_accuracy` (bit 3).
+    pub const HORIZONTAL_ACCURACY: u16 = 0x0008;
+    /// Mask of `vertical_accuracy` (bit 4).
+    pub const VERTICAL_ACCURACY: u16 = 0x0010;
+    /// Mask of `flags` (bits 0..=4).
+    pub const FLAGS: u16 = 0x001F;
+    /// Mask of `reserved` (bits 5..=15).
+    pub const RESERVED: u16 = 0xFFE0;
+
+    /// Latitude and longitude valid. (bit 0)
+    pub const fn lat_lon(self) -> bool {
+        self.0 & Self::LAT_LON != 0
+    }
+
+    /// Sets or clears `lat_lon` (bit 0).
+    pub fn set_lat_lon(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LAT_LON;
+        } else {
+            self.0 &= !Self::LAT_LON;
+        }
+    }
+
+    /// Height above ellipsoid valid. (bit 1)
+    pub const fn ellipsoid_height(self) -> bool {
+        self.0 & Self::ELLIPSOID_HEIGHT != 0
+    }
+
+    /// Sets or clears `ellipsoid_height` (bit 1).
+    pub fn set_ellipsoid_height(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ELLIPSOID_HEIGHT;
+        } else {
+            self.0 &= !Self::ELLIPSOID_HEIGHT;
+        }
+    }
+
+    /// Height above mean sea level valid. (bit 2)
+    pub const fn msl_height(self) -> bool {
+        self.0 & Self::MSL_HEIGHT != 0
+    }
+
+    /// Sets or clears `msl_height` (bit 2).
+    pub fn set_msl_height(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MSL_HEIGHT;
+        } else {
+            self.0 &= !Self::MSL_HEIGHT;
+        }
+    }
+
+    /// Horizontal accuracy valid. (bit 3)
+    pub const fn horizontal_accuracy(self) -> bool {
+        self.0 & Self::HORIZONTAL_ACCURACY != 0
+    }
+
+    /// Sets or clears `horizontal_accuracy` (bit 3).
+    pub fn set_horizontal_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HORIZONTAL_ACCURACY;
+        } else {
+            self.0 &= !Self::HORIZONTAL_ACCURACY;
+        }
+    }
+
+    /// Vertical accuracy valid. (bit 4)
+    pub const fn vertical_accuracy(self) -> bool {
+        self.0 & Self::VERTICAL_ACCURACY != 0
+    }
+
+    /// Sets or clears `vertical_accuracy` (bit 4).
+    pub fn set_vertical_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VERTICAL_ACCURACY;
+        } else {
+            self.0 &= !Self::VERTICAL_ACCURACY;
+        }
+    }
+
+    /// All flags. (bits 0..=4)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=4); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 5..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 5
+    }
+
+    /// Sets `reserved` (bits 5..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 5) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssLlhPositionValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssLlhPositionValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS NED velocity valid flags. Which parameters of a GNSS NED velocity field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssNedVelocityValidFlags(pub u16);
+
+impl GnssNedVelocityValidFlags {
+    /// Mask of `velocity` (bit 0).
+    pub const VELOCITY: u16 = 0x0001;
+    /// Mask of `speed_3d` (bit 1).
+    pub const SPEED_3D: u16 = 0x0002;
+    /// Mask of `ground_speed` (bit 2).
+    pub const GROUND_SPEED: u16 = 0x0004;
+    /// Mask of `heading` (bit 3).
+    pub const HEADING: u16 = 0x0008;
+    /// Mask of `speed_accuracy` (bit 4).
+    pub const SPEED_ACCURACY: u16 = 0x0010;
+    /// Mask of `heading_accuracy` (bit 5).
+    pub const HEADING_ACCURACY: u16 = 0x0020;
+    /// Mask of `flags` (bits 0..=5).
+    pub const FLAGS: u16 = 0x003F;
+    /// Mask of `reserved` (bits 6..=15).
+    pub const RESERVED: u16 = 0xFFC0;
+
+    /// NED velocity vector valid. (bit 0)
+    pub const fn velocity(self) -> bool {
+        self.0 & Self::VELOCITY != 0
+    }
+
+    /// Sets or clears `velocity` (bit 0).
+    pub fn set_velocity(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VELOCITY;
+        } else {
+            self.0 &= !Self::VELOCITY;
+        }
+    }
+
+    /// 3D speed valid. (bit 1)
+    pub const fn speed_3d(self) -> bool {
+        self.0 & Self::SPEED_3D != 0
+    }
+
+    /// Sets or clears `speed_3d` (bit 1).
+    pub fn set_speed_3d(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SPEED_3D;
+        } else {
+            self.0 &= !Self::SPEED_3D;
+        }
+    }
+
+    /// Ground speed valid. (bit 2)
+    pub const fn ground_speed(self) -> bool {
+        self.0 & Self::GROUND_SPEED != 0
+    }
+
+    /// Sets or clears `ground_speed` (bit 2).
+    pub fn set_ground_speed(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GROUND_SPEED;
+        } else {
+            self.0 &= !Self::GROUND_SPEED;
+        }
+    }
+
+    /// Heading valid. (bit 3)
+    pub const fn heading(self) -> bool {
+        self.0 & Self::HEADING != 0
+    }
+
+    /// Sets or clears `heading` (bit 3).
+    pub fn set_heading(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEADING;
+        } else {
+            self.0 &= !Self::HEADING;
+        }
+    }
+
+    /// Speed accuracy valid. (bit 4)
+    pub const fn speed_accuracy(self) -> bool {
+        self.0 & Self::SPEED_ACCURACY != 0
+    }
+
+    /// Sets or clears `speed_accuracy` (bit 4).
+    pub fn set_speed_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SPEED_ACCURACY;
+        } else {
+            self.0 &= !Self::SPEED_ACCURACY;
+        }
+    }
+
+    /// Heading accuracy valid. (bit 5)
+    pub const fn heading_accuracy(self) -> bool {
+        self.0 & Self::HEADING_ACCURACY != 0
+    }
+
+    /// Sets or clears `heading_accuracy` (bit 5).
+    pub fn set_heading_accuracy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEADING_ACCURACY;
+        } else {
+            self.0 &= !Self::HEADING_ACCURACY;
+        }
+    }
+
+    /// All flags. (bits 0..=5)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=5); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manuals. Reserved. (bits 6..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 6
+    }
+
+    /// Sets `reserved` (bits 6..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 6) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssNedVelocityValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssNedVelocityValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Raw observation valid flags. Which parameters of a raw observation field hold valid data.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssRawValidFlags(pub u16);
+
+impl GnssRawValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `receiver_id` (bit 2).
+    pub const RECEIVER_ID: u16 = 0x0004;
+    /// Mask of `tracking_channel` (bit 3).
+    pub const TRACKING_CHANNEL: u16 = 0x0008;
+    /// Mask of `gnss_id` (bit 4).
+    pub const GNSS_ID: u16 = 0x0010;
+    /// Mask of `satellite_id` (bit 5).
+    pub const SATELLITE_ID: u16 = 0x0020;
+    /// Mask of `signal_id` (bit 6).
+    pub const SIGNAL_ID: u16 = 0x0040;
+    /// Mask of `signal_strength` (bit 7).
+    pub const SIGNAL_STRENGTH: u16 = 0x0080;
+    /// Mask of `quality` (bit 8).
+    pub const QUALITY: u16 = 0x0100;
+    /// Mask of `pseudorange` (bit 9).
+    pub const PSEUDORANGE: u16 = 0x0200;
+    /// Mask of `carrier_phase` (bit 10).
+    pub const CARRIER_PHASE: u16 = 0x0400;
+    /// Mask of `doppler` (bit 11).
+    pub const DOPPLER: u16 = 0x0800;
+    /// Mask of `range_uncertainty` (bit 12).
+    pub const RANGE_UNCERTAINTY: u16 = 0x1000;
+    /// Mask of `carrier_phase_uncertainty` (bit 13).
+    pub const CARRIER_PHASE_UNCERTAINTY: u16 = 0x2000;
+    /// Mask of `doppler_uncertainty` (bit 14).
+    pub const DOPPLER_UNCERTAINTY: u16 = 0x4000;
+    /// Mask of `lock_time` (bit 15).
+    pub const LOCK_TIME: u16 = 0x8000;
+    /// Mask of `flags` (bits 0..=15).
+    pub const FLAGS: u16 = 0xFFFF;
+
+    /// Time of week valid. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// Week number valid. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// Receiver id valid. (bit 2)
+    pub const fn receiver_id(self) -> bool {
+        self.0 & Self::RECEIVER_ID != 0
+    }
+
+    /// Sets or clears `receiver_id` (bit 2).
+    pub fn set_receiver_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RECEIVER_ID;
+        } else {
+            self.0 &= !Self::RECEIVER_ID;
+        }
+    }
+
+    /// Tracking channel valid. (bit 3)
+    pub const fn tracking_channel(self) -> bool {
+        self.0 & Self::TRACKING_CHANNEL != 0
+    }
+
+    /// Sets or clears `tracking_channel` (bit 3).
+    pub fn set_tracking_channel(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TRACKING_CHANNEL;
+        } else {
+            self.0 &= !Self::TRACKING_CHANNEL;
+        }
+    }
+
+    /// Constellation id valid. (bit 4)
+    pub const fn gnss_id(self) -> bool {
+        self.0 & Self::GNSS_ID != 0
+    }
+
+    /// Sets or clears `gnss_id` (bit 4).
+    pub fn set_gnss_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_ID;
+        } else {
+            self.0 &= !Self::GNSS_ID;
+        }
+    }
+
+    /// Satellite id valid. (bit 5)
+    pub const fn satellite_id(self) -> bool {
+        self.0 & Self::SATELLITE_ID != 0
+    }
+
+    /// Sets or clears `satellite_id` (bit 5).
+    pub fn set_satellite_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SATELLITE_ID;
+        } else {
+            self.0 &= !Self::SATELLITE_ID;
+        }
+    }
+
+    /// Signal id valid. (bit 6)
+    pub const fn signal_id(self) -> bool {
+        self.0 & Self::SIGNAL_ID != 0
+    }
+
+    /// Sets or clears `signal_id` (bit 6).
+    pub fn set_signal_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SIGNAL_ID;
+        } else {
+            self.0 &= !Self::SIGNAL_ID;
+        }
+    }
+
+    /// Signal strength valid. (bit 7)
+    pub const fn signal_strength(self) -> bool {
+        self.0 & Self::SIGNAL_STRENGTH != 0
+    }
+
+    /// Sets or clears `signal_strength` (bit 7).
+    pub fn set_signal_strength(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SIGNAL_STRENGTH;
+        } else {
+            self.0 &= !Self::SIGNAL_STRENGTH;
+        }
+    }
+
+    /// Quality valid. (bit 8)
+    pub const fn quality(self) -> bool {
+        self.0 & Self::QUALITY != 0
+    }
+
+    /// Sets or clears `quality` (bit 8).
+    pub fn set_quality(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::QUALITY;
+        } else {
+            self.0 &= !Self::QUALITY;
+        }
+    }
+
+    /// Pseudorange valid. (bit 9)
+    pub const fn pseudorange(self) -> bool {
+        self.0 & Self::PSEUDORANGE != 0
+    }
+
+    /// Sets or clears `pseudorange` (bit 9).
+    pub fn set_pseudorange(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PSEUDORANGE;
+        } else {
+            self.0 &= !Self::PSEUDORANGE;
+        }
+    }
+
+    /// Carrier phase valid. (bit 10)
+    pub const fn carrier_phase(self) -> bool {
+        self.0 & Self::CARRIER_PHASE != 0
+    }
+
+    /// Sets or clears `carrier_phase` (bit 10).
+    pub fn set_carrier_phase(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CARRIER_PHASE;
+        } else {
+            self.0 &= !Self::CARRIER_PHASE;
+        }
+    }
+
+    /// Doppler valid. (bit 11)
+    pub const fn doppler(self) -> bool {
+        self.0 & Self::DOPPLER != 0
+    }
+
+    /// Sets or clears `doppler` (bit 11).
+    pub fn set_doppler(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DOPPLER;
+        } else {
+            self.0 &= !Self::DOPPLER;
+        }
+    }
+
+    /// Pseudorange uncertainty valid. (bit 12)
+    pub const fn range_uncertainty(self) -> bool {
+        self.0 & Self::RANGE_UNCERTAINTY != 0
+    }
+
+    /// Sets or clears `range_uncertainty` (bit 12).
+    pub fn set_range_uncertainty(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RANGE_UNCERTAINTY;
+        } else {
+            self.0 &= !Self::RANGE_UNCERTAINTY;
+        }
+    }
+
+    /// Carrier phase uncertainty valid. (bit 13)
+    pub const fn carrier_phase_uncertainty(self) -> bool {
+        self.0 & Self::CARRIER_PHASE_UNCERTAINTY != 0
+    }
+
+    /// Sets or clears `carrier_phase_uncertainty` (bit 13).
+    pub fn set_carrier_phase_uncertainty(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CARRIER_PHASE_UNCERTAINTY;
+        } else {
+            self.0 &= !Self::CARRIER_PHASE_UNCERTAINTY;
+        }
+    }
+
+    /// Doppler uncertainty valid. (bit 14)
+    pub const fn doppler_uncertainty(self) -> bool {
+        self.0 & Self::DOPPLER_UNCERTAINTY != 0
+    }
+
+    /// Sets or clears `doppler_uncertainty` (bit 14).
+    pub fn set_doppler_uncertainty(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DOPPLER_UNCERTAINTY;
+        } else {
+            self.0 &= !Self::DOPPLER_UNCERTAINTY;
+        }
+    }
+
+    /// Lock time valid. (bit 15)
+    pub const fn lock_time(self) -> bool {
+        self.0 & Self::LOCK_TIME != 0
+    }
+
+    /// Sets or clears `lock_time` (bit 15).
+    pub fn set_lock_time(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LOCK_TIME;
+        } else {
+            self.0 &= !Self::LOCK_TIME;
+        }
+    }
+
+    /// All valid flags (the manual's 'flags 0-15' entry). (bits 0..=15)
+    pub const fn flags(self) -> u16 {
+        self.0
+    }
+
+    /// Sets `flags` (bits 0..=15); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = v;
+    }
+}
+
+impl crate::wire::Wire for GnssRawValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssRawValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// GNSS receiver information. Identity of one physical GNSS receiver in the device.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GnssReceiverInfoEntry {
@@ -5196,6 +9883,1413 @@ impl crate::json_read::FromJson for GnssReceiverInfoEntry {
             mip_data_descriptor_set: p_mip_data_descriptor_set,
             description: p_description,
         })
+    }
+}
+
+/// GNSS receiver (sensor) state. Power state of the GNSS receiver (GX5-45 "Sensor State", CV7 "Receiver State").
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssReceiverState(pub u8);
+
+impl GnssReceiverState {
+    /// Receiver off.
+    pub const OFF: Self = Self(0);
+    /// Receiver on.
+    pub const ON: Self = Self(1);
+    /// State unknown.
+    pub const UNKNOWN: Self = Self(2);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("off"),
+            1 => Some("on"),
+            2 => Some("unknown"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "off" => Some(Self::OFF),
+            "on" => Some(Self::ON),
+            "unknown" => Some(Self::UNKNOWN),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssReceiverState {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssReceiverState({} {})", self.0, name),
+            None => write!(f, "GnssReceiverState({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssReceiverState {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssReceiverState {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssReceiverState"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Satellite status valid flags. Which parameters of a satellite status field hold valid data.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssSatelliteStatusValidFlags(pub u16);
+
+impl GnssSatelliteStatusValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `gnss_id` (bit 2).
+    pub const GNSS_ID: u16 = 0x0004;
+    /// Mask of `satellite_id` (bit 3).
+    pub const SATELLITE_ID: u16 = 0x0008;
+    /// Mask of `elevation` (bit 4).
+    pub const ELEVATION: u16 = 0x0010;
+    /// Mask of `azimuth` (bit 5).
+    pub const AZIMUTH: u16 = 0x0020;
+    /// Mask of `health` (bit 6).
+    pub const HEALTH: u16 = 0x0040;
+    /// Mask of `flags` (bits 0..=6).
+    pub const FLAGS: u16 = 0x007F;
+    /// Mask of `reserved` (bits 7..=15).
+    pub const RESERVED: u16 = 0xFF80;
+
+    /// Time of week valid. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// Week number valid. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// Constellation id valid. (bit 2)
+    pub const fn gnss_id(self) -> bool {
+        self.0 & Self::GNSS_ID != 0
+    }
+
+    /// Sets or clears `gnss_id` (bit 2).
+    pub fn set_gnss_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_ID;
+        } else {
+            self.0 &= !Self::GNSS_ID;
+        }
+    }
+
+    /// Satellite id valid. (bit 3)
+    pub const fn satellite_id(self) -> bool {
+        self.0 & Self::SATELLITE_ID != 0
+    }
+
+    /// Sets or clears `satellite_id` (bit 3).
+    pub fn set_satellite_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SATELLITE_ID;
+        } else {
+            self.0 &= !Self::SATELLITE_ID;
+        }
+    }
+
+    /// Elevation valid. (bit 4)
+    pub const fn elevation(self) -> bool {
+        self.0 & Self::ELEVATION != 0
+    }
+
+    /// Sets or clears `elevation` (bit 4).
+    pub fn set_elevation(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ELEVATION;
+        } else {
+            self.0 &= !Self::ELEVATION;
+        }
+    }
+
+    /// Azimuth valid. (bit 5)
+    pub const fn azimuth(self) -> bool {
+        self.0 & Self::AZIMUTH != 0
+    }
+
+    /// Sets or clears `azimuth` (bit 5).
+    pub fn set_azimuth(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::AZIMUTH;
+        } else {
+            self.0 &= !Self::AZIMUTH;
+        }
+    }
+
+    /// Health valid. (bit 6)
+    pub const fn health(self) -> bool {
+        self.0 & Self::HEALTH != 0
+    }
+
+    /// Sets or clears `health` (bit 6).
+    pub fn set_health(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEALTH;
+        } else {
+            self.0 &= !Self::HEALTH;
+        }
+    }
+
+    /// All valid flags (the manual's 'flags 0-6' entry). (bits 0..=6)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=6); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 7..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 7
+    }
+
+    /// Sets `reserved` (bits 7..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 7) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssSatelliteStatusValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSatelliteStatusValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// SBAS information valid flags. Which parameters of the SBAS information field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssSbasInfoValidFlags(pub u16);
+
+impl GnssSbasInfoValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `sbas_system` (bit 2).
+    pub const SBAS_SYSTEM: u16 = 0x0004;
+    /// Mask of `sbas_id` (bit 3).
+    pub const SBAS_ID: u16 = 0x0008;
+    /// Mask of `count` (bit 4).
+    pub const COUNT: u16 = 0x0010;
+    /// Mask of `sbas_status` (bit 5).
+    pub const SBAS_STATUS: u16 = 0x0020;
+    /// Mask of `flags` (bits 0..=5).
+    pub const FLAGS: u16 = 0x003F;
+    /// Mask of `reserved` (bits 6..=15).
+    pub const RESERVED: u16 = 0xFFC0;
+
+    /// Time of week valid. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// Week number valid. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// SBAS system valid. (bit 2)
+    pub const fn sbas_system(self) -> bool {
+        self.0 & Self::SBAS_SYSTEM != 0
+    }
+
+    /// Sets or clears `sbas_system` (bit 2).
+    pub fn set_sbas_system(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SBAS_SYSTEM;
+        } else {
+            self.0 &= !Self::SBAS_SYSTEM;
+        }
+    }
+
+    /// SBAS satellite id valid. (bit 3)
+    pub const fn sbas_id(self) -> bool {
+        self.0 & Self::SBAS_ID != 0
+    }
+
+    /// Sets or clears `sbas_id` (bit 3).
+    pub fn set_sbas_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SBAS_ID;
+        } else {
+            self.0 &= !Self::SBAS_ID;
+        }
+    }
+
+    /// Number of corrections valid. (bit 4)
+    pub const fn count(self) -> bool {
+        self.0 & Self::COUNT != 0
+    }
+
+    /// Sets or clears `count` (bit 4).
+    pub fn set_count(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::COUNT;
+        } else {
+            self.0 &= !Self::COUNT;
+        }
+    }
+
+    /// SBAS status valid. (bit 5)
+    pub const fn sbas_status(self) -> bool {
+        self.0 & Self::SBAS_STATUS != 0
+    }
+
+    /// Sets or clears `sbas_status` (bit 5).
+    pub fn set_sbas_status(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SBAS_STATUS;
+        } else {
+            self.0 &= !Self::SBAS_STATUS;
+        }
+    }
+
+    /// All flags. (bits 0..=5)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=5); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 6..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 6
+    }
+
+    /// Sets `reserved` (bits 6..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 6) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssSbasInfoValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSbasInfoValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// SBAS status. Status of the SBAS service.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssSbasStatus(pub u8);
+
+impl GnssSbasStatus {
+    /// Mask of `range_available` (bit 0).
+    pub const RANGE_AVAILABLE: u8 = 0x01;
+    /// Mask of `corrections_available` (bit 1).
+    pub const CORRECTIONS_AVAILABLE: u8 = 0x02;
+    /// Mask of `integrity_available` (bit 2).
+    pub const INTEGRITY_AVAILABLE: u8 = 0x04;
+    /// Mask of `test_mode` (bit 3).
+    pub const TEST_MODE: u8 = 0x08;
+    /// Mask of `reserved` (bits 4..=7).
+    pub const RESERVED: u8 = 0xF0;
+
+    /// SBAS ranging available. (bit 0)
+    pub const fn range_available(self) -> bool {
+        self.0 & Self::RANGE_AVAILABLE != 0
+    }
+
+    /// Sets or clears `range_available` (bit 0).
+    pub fn set_range_available(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RANGE_AVAILABLE;
+        } else {
+            self.0 &= !Self::RANGE_AVAILABLE;
+        }
+    }
+
+    /// SBAS corrections available. (bit 1)
+    pub const fn corrections_available(self) -> bool {
+        self.0 & Self::CORRECTIONS_AVAILABLE != 0
+    }
+
+    /// Sets or clears `corrections_available` (bit 1).
+    pub fn set_corrections_available(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CORRECTIONS_AVAILABLE;
+        } else {
+            self.0 &= !Self::CORRECTIONS_AVAILABLE;
+        }
+    }
+
+    /// SBAS integrity information available. (bit 2)
+    pub const fn integrity_available(self) -> bool {
+        self.0 & Self::INTEGRITY_AVAILABLE != 0
+    }
+
+    /// Sets or clears `integrity_available` (bit 2).
+    pub fn set_integrity_available(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::INTEGRITY_AVAILABLE;
+        } else {
+            self.0 &= !Self::INTEGRITY_AVAILABLE;
+        }
+    }
+
+    /// SBAS is in test mode. (bit 3)
+    pub const fn test_mode(self) -> bool {
+        self.0 & Self::TEST_MODE != 0
+    }
+
+    /// Sets or clears `test_mode` (bit 3).
+    pub fn set_test_mode(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TEST_MODE;
+        } else {
+            self.0 &= !Self::TEST_MODE;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 4..=7)
+    pub const fn reserved(self) -> u8 {
+        (self.0 & Self::RESERVED) >> 4
+    }
+
+    /// Sets `reserved` (bits 4..=7); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 4) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssSbasStatus {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSbasStatus {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// SBAS system. Satellite-based augmentation system the receiver is using.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssSbasSystem(pub u8);
+
+impl GnssSbasSystem {
+    /// Unknown.
+    pub const UNKNOWN: Self = Self(0);
+    /// WAAS (North America).
+    pub const WAAS: Self = Self(1);
+    /// EGNOS (Europe).
+    pub const EGNOS: Self = Self(2);
+    /// MSAS (Japan).
+    pub const MSAS: Self = Self(3);
+    /// GAGAN (India).
+    pub const GAGAN: Self = Self(4);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unknown"),
+            1 => Some("waas"),
+            2 => Some("egnos"),
+            3 => Some("msas"),
+            4 => Some("gagan"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unknown" => Some(Self::UNKNOWN),
+            "waas" => Some(Self::WAAS),
+            "egnos" => Some(Self::EGNOS),
+            "msas" => Some(Self::MSAS),
+            "gagan" => Some(Self::GAGAN),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssSbasSystem {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssSbasSystem({} {})", self.0, name),
+            None => write!(f, "GnssSbasSystem({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssSbasSystem {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSbasSystem {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssSbasSystem"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GNSS signal identifier. The constellation, frequency band and code/channel component of one observation.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssSignalId(pub u8);
+
+impl GnssSignalId {
+    /// Unknown or unspecified signal.
+    pub const UNKNOWN: Self = Self(0);
+    /// GPS L1 C/A.
+    pub const GPS_L1CA: Self = Self(1);
+    /// GPS L1 P.
+    pub const GPS_L1P: Self = Self(2);
+    /// GPS L1 Z-tracking.
+    pub const GPS_L1Z: Self = Self(3);
+    /// GPS L2 C/A.
+    pub const GPS_L2CA: Self = Self(4);
+    /// GPS L2 P.
+    pub const GPS_L2P: Self = Self(5);
+    /// GPS L2 Z-tracking.
+    pub const GPS_L2Z: Self = Self(6);
+    /// GPS L2C long code (L).
+    pub const GPS_L2CL: Self = Self(7);
+    /// GPS L2C medium code (M).
+    pub const GPS_L2CM: Self = Self(8);
+    /// GPS L2C combined M+L.
+    pub const GPS_L2CML: Self = Self(9);
+    /// GPS L5 I (data).
+    pub const GPS_L5I: Self = Self(10);
+    /// GPS L5 Q (pilot).
+    pub const GPS_L5Q: Self = Self(11);
+    /// GPS L5 combined I+Q.
+    pub const GPS_L5IQ: Self = Self(12);
+    /// GPS L1C data (D).
+    pub const GPS_L1CD: Self = Self(13);
+    /// GPS L1C pilot (P).
+    pub const GPS_L1CP: Self = Self(14);
+    /// GPS L1C combined D+P.
+    pub const GPS_L1CDP: Self = Self(15);
+    /// GLONASS G1 C/A.
+    pub const GLONASS_G1CA: Self = Self(32);
+    /// GLONASS G1 P.
+    pub const GLONASS_G1P: Self = Self(33);
+    /// GLONASS G2 C/A.
+    pub const GLONASS_G2C: Self = Self(34);
+    /// GLONASS G2 P.
+    pub const GLONASS_G2P: Self = Self(35);
+    /// Galileo E1 C (pilot).
+    pub const GALILEO_E1C: Self = Self(64);
+    /// Galileo E1 A (PRS).
+    pub const GALILEO_E1A: Self = Self(65);
+    /// Galileo E1 B (data).
+    pub const GALILEO_E1B: Self = Self(66);
+    /// Galileo E1 combined B+C.
+    pub const GALILEO_E1BC: Self = Self(67);
+    /// Galileo E1 combined A+B+C.
+    pub const GALILEO_E1ABC: Self = Self(68);
+    /// Galileo E6 C (pilot).
+    pub const GALILEO_E6C: Self = Self(69);
+    /// Galileo E6 A (PRS).
+    pub const GALILEO_E6A: Self = Self(70);
+    /// Galileo E6 B (data).
+    pub const GALILEO_E6B: Self = Self(71);
+    /// Galileo E6 combined B+C.
+    pub const GALILEO_E6BC: Self = Self(72);
+    /// Galileo E6 combined A+B+C.
+    pub const GALILEO_E6ABC: Self = Self(73);
+    /// Galileo E5b I (data).
+    pub const GALILEO_E5BI: Self = Self(74);
+    /// Galileo E5b Q (pilot).
+    pub const GALILEO_E5BQ: Self = Self(75);
+    /// Galileo E5b combined I+Q.
+    pub const GALILEO_E5BIQ: Self = Self(76);
+    /// Galileo E5 AltBOC (E5a+E5b) I (data).
+    pub const GALILEO_E5ABI: Self = Self(77);
+    /// Galileo E5 AltBOC (E5a+E5b) Q (pilot).
+    pub const GALILEO_E5ABQ: Self = Self(78);
+    /// Galileo E5 AltBOC (E5a+E5b) combined I+Q.
+    pub const GALILEO_E5ABIQ: Self = Self(79);
+    /// Galileo E5a I (data).
+    pub const GALILEO_E5AI: Self = Self(80);
+    /// Galileo E5a Q (pilot).
+    pub const GALILEO_E5AQ: Self = Self(81);
+    /// Galileo E5a combined I+Q.
+    pub const GALILEO_E5AIQ: Self = Self(82);
+    /// SBAS L1 C/A.
+    pub const SBAS_L1CA: Self = Self(96);
+    /// SBAS L5 I (data).
+    pub const SBAS_L5I: Self = Self(97);
+    /// SBAS L5 Q (pilot).
+    pub const SBAS_L5Q: Self = Self(98);
+    /// SBAS L5 combined I+Q.
+    pub const SBAS_L5IQ: Self = Self(99);
+    /// QZSS L1 C/A.
+    pub const QZSS_L1CA: Self = Self(128);
+    /// QZSS LEX short code (S).
+    pub const QZSS_LEXS: Self = Self(129);
+    /// QZSS LEX long code (L).
+    pub const QZSS_LEXL: Self = Self(130);
+    /// QZSS LEX combined S+L.
+    pub const QZSS_LEXSL: Self = Self(131);
+    /// QZSS L2C medium code (M).
+    pub const QZSS_L2CM: Self = Self(132);
+    /// QZSS L2C long code (L).
+    pub const QZSS_L2CL: Self = Self(133);
+    /// QZSS L2C combined M+L.
+    pub const QZSS_L2CML: Self = Self(134);
+    /// QZSS L5 I (data).
+    pub const QZSS_L5I: Self = Self(135);
+    /// QZSS L5 Q (pilot).
+    pub const QZSS_L5Q: Self = Self(136);
+    /// QZSS L5 combined I+Q.
+    pub const QZSS_L5IQ: Self = Self(137);
+    /// QZSS L1C data (D).
+    pub const QZSS_L1CD: Self = Self(138);
+    /// QZSS L1C pilot (P).
+    pub const QZSS_L1CP: Self = Self(139);
+    /// QZSS L1C combined D+P.
+    pub const QZSS_L1CDP: Self = Self(140);
+    /// BeiDou B1 I.
+    pub const BEIDOU_B1I: Self = Self(160);
+    /// BeiDou B1 Q.
+    pub const BEIDOU_B1Q: Self = Self(161);
+    /// BeiDou B1 combined I+Q.
+    pub const BEIDOU_B1IQ: Self = Self(162);
+    /// BeiDou B3 I.
+    pub const BEIDOU_B3I: Self = Self(163);
+    /// BeiDou B3 Q.
+    pub const BEIDOU_B3Q: Self = Self(164);
+    /// BeiDou B3 combined I+Q.
+    pub const BEIDOU_B3IQ: Self = Self(165);
+    /// BeiDou B2 I.
+    pub const BEIDOU_B2I: Self = Self(166);
+    /// BeiDou B2 Q.
+    pub const BEIDOU_B2Q: Self = Self(167);
+    /// BeiDou B2 combined I+Q.
+    pub const BEIDOU_B2IQ: Self = Self(168);
+    /// BeiDou B2a.
+    pub const BEIDOU_B2A: Self = Self(169);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("unknown"),
+            1 => Some("gps_l1ca"),
+            2 => Some("gps_l1p"),
+            3 => Some("gps_l1z"),
+            4 => Some("gps_l2ca"),
+            5 => Some("gps_l2p"),
+            6 => Some("gps_l2z"),
+            7 => Some("gps_l2cl"),
+            8 => Some("gps_l2cm"),
+            9 => Some("gps_l2cml"),
+            10 => Some("gps_l5i"),
+            11 => Some("gps_l5q"),
+            12 => Some("gps_l5iq"),
+            13 => Some("gps_l1cd"),
+            14 => Some("gps_l1cp"),
+            15 => Some("gps_l1cdp"),
+            32 => Some("glonass_g1ca"),
+            33 => Some("glonass_g1p"),
+            34 => Some("glonass_g2c"),
+            35 => Some("glonass_g2p"),
+            64 => Some("galileo_e1c"),
+            65 => Some("galileo_e1a"),
+            66 => Some("galileo_e1b"),
+            67 => Some("galileo_e1bc"),
+            68 => Some("galileo_e1abc"),
+            69 => Some("galileo_e6c"),
+            70 => Some("galileo_e6a"),
+            71 => Some("galileo_e6b"),
+            72 => Some("galileo_e6bc"),
+            73 => Some("galileo_e6abc"),
+            74 => Some("galileo_e5bi"),
+            75 => Some("galileo_e5bq"),
+            76 => Some("galileo_e5biq"),
+            77 => Some("galileo_e5abi"),
+            78 => Some("galileo_e5abq"),
+            79 => Some("galileo_e5abiq"),
+            80 => Some("galileo_e5ai"),
+            81 => Some("galileo_e5aq"),
+            82 => Some("galileo_e5aiq"),
+            96 => Some("sbas_l1ca"),
+            97 => Some("sbas_l5i"),
+            98 => Some("sbas_l5q"),
+            99 => Some("sbas_l5iq"),
+            128 => Some("qzss_l1ca"),
+            129 => Some("qzss_lexs"),
+            130 => Some("qzss_lexl"),
+            131 => Some("qzss_lexsl"),
+            132 => Some("qzss_l2cm"),
+            133 => Some("qzss_l2cl"),
+            134 => Some("qzss_l2cml"),
+            135 => Some("qzss_l5i"),
+            136 => Some("qzss_l5q"),
+            137 => Some("qzss_l5iq"),
+            138 => Some("qzss_l1cd"),
+            139 => Some("qzss_l1cp"),
+            140 => Some("qzss_l1cdp"),
+            160 => Some("beidou_b1i"),
+            161 => Some("beidou_b1q"),
+            162 => Some("beidou_b1iq"),
+            163 => Some("beidou_b3i"),
+            164 => Some("beidou_b3q"),
+            165 => Some("beidou_b3iq"),
+            166 => Some("beidou_b2i"),
+            167 => Some("beidou_b2q"),
+            168 => Some("beidou_b2iq"),
+            169 => Some("beidou_b2a"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "unknown" => Some(Self::UNKNOWN),
+            "gps_l1ca" => Some(Self::GPS_L1CA),
+            "gps_l1p" => Some(Self::GPS_L1P),
+            "gps_l1z" => Some(Self::GPS_L1Z),
+            "gps_l2ca" => Some(Self::GPS_L2CA),
+            "gps_l2p" => Some(Self::GPS_L2P),
+            "gps_l2z" => Some(Self::GPS_L2Z),
+            "gps_l2cl" => Some(Self::GPS_L2CL),
+            "gps_l2cm" => Some(Self::GPS_L2CM),
+            "gps_l2cml" => Some(Self::GPS_L2CML),
+            "gps_l5i" => Some(Self::GPS_L5I),
+            "gps_l5q" => Some(Self::GPS_L5Q),
+            "gps_l5iq" => Some(Self::GPS_L5IQ),
+            "gps_l1cd" => Some(Self::GPS_L1CD),
+            "gps_l1cp" => Some(Self::GPS_L1CP),
+            "gps_l1cdp" => Some(Self::GPS_L1CDP),
+            "glonass_g1ca" => Some(Self::GLONASS_G1CA),
+            "glonass_g1p" => Some(Self::GLONASS_G1P),
+            "glonass_g2c" => Some(Self::GLONASS_G2C),
+            "glonass_g2p" => Some(Self::GLONASS_G2P),
+            "galileo_e1c" => Some(Self::GALILEO_E1C),
+            "galileo_e1a" => Some(Self::GALILEO_E1A),
+            "galileo_e1b" => Some(Self::GALILEO_E1B),
+            "galileo_e1bc" => Some(Self::GALILEO_E1BC),
+            "galileo_e1abc" => Some(Self::GALILEO_E1ABC),
+            "galileo_e6c" => Some(Self::GALILEO_E6C),
+            "galileo_e6a" => Some(Self::GALILEO_E6A),
+            "galileo_e6b" => Some(Self::GALILEO_E6B),
+            "galileo_e6bc" => Some(Self::GALILEO_E6BC),
+            "galileo_e6abc" => Some(Self::GALILEO_E6ABC),
+            "galileo_e5bi" => Some(Self::GALILEO_E5BI),
+            "galileo_e5bq" => Some(Self::GALILEO_E5BQ),
+            "galileo_e5biq" => Some(Self::GALILEO_E5BIQ),
+            "galileo_e5abi" => Some(Self::GALILEO_E5ABI),
+            "galileo_e5abq" => Some(Self::GALILEO_E5ABQ),
+            "galileo_e5abiq" => Some(Self::GALILEO_E5ABIQ),
+            "galileo_e5ai" => Some(Self::GALILEO_E5AI),
+            "galileo_e5aq" => Some(Self::GALILEO_E5AQ),
+            "galileo_e5aiq" => Some(Self::GALILEO_E5AIQ),
+            "sbas_l1ca" => Some(Self::SBAS_L1CA),
+            "sbas_l5i" => Some(Self::SBAS_L5I),
+            "sbas_l5q" => Some(Self::SBAS_L5Q),
+            "sbas_l5iq" => Some(Self::SBAS_L5IQ),
+            "qzss_l1ca" => Some(Self::QZSS_L1CA),
+            "qzss_lexs" => Some(Self::QZSS_LEXS),
+            "qzss_lexl" => Some(Self::QZSS_LEXL),
+            "qzss_lexsl" => Some(Self::QZSS_LEXSL),
+            "qzss_l2cm" => Some(Self::QZSS_L2CM),
+            "qzss_l2cl" => Some(Self::QZSS_L2CL),
+            "qzss_l2cml" => Some(Self::QZSS_L2CML),
+            "qzss_l5i" => Some(Self::QZSS_L5I),
+            "qzss_l5q" => Some(Self::QZSS_L5Q),
+            "qzss_l5iq" => Some(Self::QZSS_L5IQ),
+            "qzss_l1cd" => Some(Self::QZSS_L1CD),
+            "qzss_l1cp" => Some(Self::QZSS_L1CP),
+            "qzss_l1cdp" => Some(Self::QZSS_L1CDP),
+            "beidou_b1i" => Some(Self::BEIDOU_B1I),
+            "beidou_b1q" => Some(Self::BEIDOU_B1Q),
+            "beidou_b1iq" => Some(Self::BEIDOU_B1IQ),
+            "beidou_b3i" => Some(Self::BEIDOU_B3I),
+            "beidou_b3q" => Some(Self::BEIDOU_B3Q),
+            "beidou_b3iq" => Some(Self::BEIDOU_B3IQ),
+            "beidou_b2i" => Some(Self::BEIDOU_B2I),
+            "beidou_b2q" => Some(Self::BEIDOU_B2Q),
+            "beidou_b2iq" => Some(Self::BEIDOU_B2IQ),
+            "beidou_b2a" => Some(Self::BEIDOU_B2A),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssSignalId {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssSignalId({} {})", self.0, name),
+            None => write!(f, "GnssSignalId({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssSignalId {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSignalId {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssSignalId"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// GNSS raw observation signal quality. Tracking state of the signal an observation comes from.
+///
+/// Values the spec does not list are kept as they are.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct GnssSignalQuality(pub u8);
+
+impl GnssSignalQuality {
+    /// No signal.
+    pub const NONE: Self = Self(0);
+    /// Searching for the signal.
+    pub const SEARCHING: Self = Self(1);
+    /// Signal acquired.
+    pub const ACQUIRED: Self = Self(2);
+    /// Signal detected but unusable.
+    pub const UNUSABLE: Self = Self(3);
+    /// Time locked.
+    pub const TIME_LOCKED: Self = Self(4);
+    /// Fully locked.
+    pub const FULLY_LOCKED: Self = Self(5);
+
+    /// Name of the value in the spec, if the spec lists it.
+    pub fn name(self) -> Option<&'static str> {
+        match self.0 {
+            0 => Some("none"),
+            1 => Some("searching"),
+            2 => Some("acquired"),
+            3 => Some("unusable"),
+            4 => Some("time_locked"),
+            5 => Some("fully_locked"),
+            _ => None,
+        }
+    }
+
+    /// The value with this name in the spec.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "none" => Some(Self::NONE),
+            "searching" => Some(Self::SEARCHING),
+            "acquired" => Some(Self::ACQUIRED),
+            "unusable" => Some(Self::UNUSABLE),
+            "time_locked" => Some(Self::TIME_LOCKED),
+            "fully_locked" => Some(Self::FULLY_LOCKED),
+            _ => None,
+        }
+    }
+}
+
+impl core::fmt::Debug for GnssSignalQuality {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self.name() {
+            Some(name) => write!(f, "GnssSignalQuality({} {})", self.0, name),
+            None => write!(f, "GnssSignalQuality({})", self.0),
+        }
+    }
+}
+
+impl crate::wire::Wire for GnssSignalQuality {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSignalQuality {
+    /// An integer, or the name of a value.
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        match v {
+            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
+                crate::json_read::JsonError::new(std::format!(
+                    "\"{name}\" is not a value of GnssSignalQuality"
+                ))
+            }),
+            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
+        }
+    }
+}
+
+/// Space vehicle flags. Use and health of one space vehicle.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssSvFlags(pub u16);
+
+impl GnssSvFlags {
+    /// Mask of `used_for_navigation` (bit 0).
+    pub const USED_FOR_NAVIGATION: u16 = 0x0001;
+    /// Mask of `healthy` (bit 1).
+    pub const HEALTHY: u16 = 0x0002;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// The SV is used in the navigation solution. (bit 0)
+    pub const fn used_for_navigation(self) -> bool {
+        self.0 & Self::USED_FOR_NAVIGATION != 0
+    }
+
+    /// Sets or clears `used_for_navigation` (bit 0).
+    pub fn set_used_for_navigation(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::USED_FOR_NAVIGATION;
+        } else {
+            self.0 &= !Self::USED_FOR_NAVIGATION;
+        }
+    }
+
+    /// The SV is healthy. (bit 1)
+    pub const fn healthy(self) -> bool {
+        self.0 & Self::HEALTHY != 0
+    }
+
+    /// Sets or clears `healthy` (bit 1).
+    pub fn set_healthy(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::HEALTHY;
+        } else {
+            self.0 &= !Self::HEALTHY;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssSvFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSvFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Space vehicle information valid flags. Which parameters of a space vehicle information entry are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssSvInfoValidFlags(pub u16);
+
+impl GnssSvInfoValidFlags {
+    /// Mask of `channel` (bit 0).
+    pub const CHANNEL: u16 = 0x0001;
+    /// Mask of `sv_id` (bit 1).
+    pub const SV_ID: u16 = 0x0002;
+    /// Mask of `reserved_2` (bit 2).
+    pub const RESERVED_2: u16 = 0x0004;
+    /// Mask of `carrier_to_noise_ratio` (bit 3).
+    pub const CARRIER_TO_NOISE_RATIO: u16 = 0x0008;
+    /// Mask of `azimuth` (bit 4).
+    pub const AZIMUTH: u16 = 0x0010;
+    /// Mask of `elevation` (bit 5).
+    pub const ELEVATION: u16 = 0x0020;
+    /// Mask of `sv_flags` (bit 6).
+    pub const SV_FLAGS: u16 = 0x0040;
+    /// Mask of `reserved` (bits 7..=15).
+    pub const RESERVED: u16 = 0xFF80;
+
+    /// Channel valid. (bit 0)
+    pub const fn channel(self) -> bool {
+        self.0 & Self::CHANNEL != 0
+    }
+
+    /// Sets or clears `channel` (bit 0).
+    pub fn set_channel(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CHANNEL;
+        } else {
+            self.0 &= !Self::CHANNEL;
+        }
+    }
+
+    /// Space vehicle id valid. (bit 1)
+    pub const fn sv_id(self) -> bool {
+        self.0 & Self::SV_ID != 0
+    }
+
+    /// Sets or clears `sv_id` (bit 1).
+    pub fn set_sv_id(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SV_ID;
+        } else {
+            self.0 &= !Self::SV_ID;
+        }
+    }
+
+    /// Not named by the manual (its list skips 0x0004). Reserved. (bit 2)
+    pub const fn reserved_2(self) -> bool {
+        self.0 & Self::RESERVED_2 != 0
+    }
+
+    /// Sets or clears `reserved_2` (bit 2).
+    pub fn set_reserved_2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_2;
+        } else {
+            self.0 &= !Self::RESERVED_2;
+        }
+    }
+
+    /// Carrier to noise ratio valid. (bit 3)
+    pub const fn carrier_to_noise_ratio(self) -> bool {
+        self.0 & Self::CARRIER_TO_NOISE_RATIO != 0
+    }
+
+    /// Sets or clears `carrier_to_noise_ratio` (bit 3).
+    pub fn set_carrier_to_noise_ratio(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::CARRIER_TO_NOISE_RATIO;
+        } else {
+            self.0 &= !Self::CARRIER_TO_NOISE_RATIO;
+        }
+    }
+
+    /// Azimuth valid. (bit 4)
+    pub const fn azimuth(self) -> bool {
+        self.0 & Self::AZIMUTH != 0
+    }
+
+    /// Sets or clears `azimuth` (bit 4).
+    pub fn set_azimuth(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::AZIMUTH;
+        } else {
+            self.0 &= !Self::AZIMUTH;
+        }
+    }
+
+    /// Elevation valid. (bit 5)
+    pub const fn elevation(self) -> bool {
+        self.0 & Self::ELEVATION != 0
+    }
+
+    /// Sets or clears `elevation` (bit 5).
+    pub fn set_elevation(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ELEVATION;
+        } else {
+            self.0 &= !Self::ELEVATION;
+        }
+    }
+
+    /// Space vehicle flags valid. (bit 6)
+    pub const fn sv_flags(self) -> bool {
+        self.0 & Self::SV_FLAGS != 0
+    }
+
+    /// Sets or clears `sv_flags` (bit 6).
+    pub fn set_sv_flags(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::SV_FLAGS;
+        } else {
+            self.0 &= !Self::SV_FLAGS;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 7..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 7
+    }
+
+    /// Sets `reserved` (bits 7..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 7) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssSvInfoValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssSvInfoValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS UTC time valid flags (CV7). Validity of a CV7 GNSS UTC time field.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssUtcTimeValidFlagsCv7(pub u16);
+
+impl GnssUtcTimeValidFlagsCv7 {
+    /// Mask of `gnss_date_time` (bit 0).
+    pub const GNSS_DATE_TIME: u16 = 0x0001;
+    /// Mask of `leap_seconds_known` (bit 1).
+    pub const LEAP_SECONDS_KNOWN: u16 = 0x0002;
+    /// Mask of `flags` (bits 0..=1).
+    pub const FLAGS: u16 = 0x0003;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// Date and time valid. (bit 0)
+    pub const fn gnss_date_time(self) -> bool {
+        self.0 & Self::GNSS_DATE_TIME != 0
+    }
+
+    /// Sets or clears `gnss_date_time` (bit 0).
+    pub fn set_gnss_date_time(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GNSS_DATE_TIME;
+        } else {
+            self.0 &= !Self::GNSS_DATE_TIME;
+        }
+    }
+
+    /// The GPS-UTC leap second offset is known, so the UTC time is exact. (bit 1)
+    pub const fn leap_seconds_known(self) -> bool {
+        self.0 & Self::LEAP_SECONDS_KNOWN != 0
+    }
+
+    /// Sets or clears `leap_seconds_known` (bit 1).
+    pub fn set_leap_seconds_known(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::LEAP_SECONDS_KNOWN;
+        } else {
+            self.0 &= !Self::LEAP_SECONDS_KNOWN;
+        }
+    }
+
+    /// All flags. (bits 0..=1)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=1); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssUtcTimeValidFlagsCv7 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssUtcTimeValidFlagsCv7 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GNSS UTC time valid flags (GX5-45). Validity of the GX5-45 GNSS UTC time field.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GnssUtcTimeValidFlagsGx5(pub u16);
+
+impl GnssUtcTimeValidFlagsGx5 {
+    /// Mask of `date_valid` (bit 0).
+    pub const DATE_VALID: u16 = 0x0001;
+    /// Mask of `time_valid` (bit 1).
+    pub const TIME_VALID: u16 = 0x0002;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// Date valid. (bit 0)
+    pub const fn date_valid(self) -> bool {
+        self.0 & Self::DATE_VALID != 0
+    }
+
+    /// Sets or clears `date_valid` (bit 0).
+    pub fn set_date_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DATE_VALID;
+        } else {
+            self.0 &= !Self::DATE_VALID;
+        }
+    }
+
+    /// Time valid. (bit 1)
+    pub const fn time_valid(self) -> bool {
+        self.0 & Self::TIME_VALID != 0
+    }
+
+    /// Sets or clears `time_valid` (bit 1).
+    pub fn set_time_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIME_VALID;
+        } else {
+            self.0 &= !Self::TIME_VALID;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GnssUtcTimeValidFlagsGx5 {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GnssUtcTimeValidFlagsGx5 {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5986,6 +12080,115 @@ impl crate::wire::Wire for GpioPinMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioPinMode {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// GPIO pin states.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct GpioPinStates(pub u8);
+
+impl GpioPinStates {
+    /// Mask of `pin_1` (bit 0).
+    pub const PIN_1: u8 = 0x01;
+    /// Mask of `pin_2` (bit 1).
+    pub const PIN_2: u8 = 0x02;
+    /// Mask of `pin_3` (bit 2).
+    pub const PIN_3: u8 = 0x04;
+    /// Mask of `pin_4` (bit 3).
+    pub const PIN_4: u8 = 0x08;
+    /// Mask of `reserved` (bits 4..=7).
+    pub const RESERVED: u8 = 0xF0;
+
+    /// State of GPIO pin 1. (bit 0)
+    pub const fn pin_1(self) -> bool {
+        self.0 & Self::PIN_1 != 0
+    }
+
+    /// Sets or clears `pin_1` (bit 0).
+    pub fn set_pin_1(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PIN_1;
+        } else {
+            self.0 &= !Self::PIN_1;
+        }
+    }
+
+    /// State of GPIO pin 2. (bit 1)
+    pub const fn pin_2(self) -> bool {
+        self.0 & Self::PIN_2 != 0
+    }
+
+    /// Sets or clears `pin_2` (bit 1).
+    pub fn set_pin_2(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PIN_2;
+        } else {
+            self.0 &= !Self::PIN_2;
+        }
+    }
+
+    /// State of GPIO pin 3. (bit 2)
+    pub const fn pin_3(self) -> bool {
+        self.0 & Self::PIN_3 != 0
+    }
+
+    /// Sets or clears `pin_3` (bit 2).
+    pub fn set_pin_3(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PIN_3;
+        } else {
+            self.0 &= !Self::PIN_3;
+        }
+    }
+
+    /// State of GPIO pin 4. (bit 3)
+    pub const fn pin_4(self) -> bool {
+        self.0 & Self::PIN_4 != 0
+    }
+
+    /// Sets or clears `pin_4` (bit 3).
+    pub fn set_pin_4(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PIN_4;
+        } else {
+            self.0 &= !Self::PIN_4;
+        }
+    }
+
+    /// No such pins; read as 0. Reserved. (bits 4..=7)
+    pub const fn reserved(self) -> u8 {
+        (self.0 & Self::RESERVED) >> 4
+    }
+
+    /// Sets `reserved` (bits 4..=7); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u8) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 4) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for GpioPinStates {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u8 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for GpioPinStates {
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
         <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
@@ -7826,6 +14029,67 @@ impl crate::json_read::FromJson for NmeaMessage {
     }
 }
 
+/// Odometer data valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct OdometerDataValidFlags(pub u16);
+
+impl OdometerDataValidFlags {
+    /// Mask of `valid` (bit 0).
+    pub const VALID: u16 = 0x0001;
+    /// Mask of `reserved` (bits 1..=15).
+    pub const RESERVED: u16 = 0xFFFE;
+
+    /// Set when the odometer is configured (speed and uncertainty are valid). (bit 0)
+    pub const fn valid(self) -> bool {
+        self.0 & Self::VALID != 0
+    }
+
+    /// Sets or clears `valid` (bit 0).
+    pub fn set_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::VALID;
+        } else {
+            self.0 &= !Self::VALID;
+        }
+    }
+
+    /// Not described. Reserved. (bits 1..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 1
+    }
+
+    /// Sets `reserved` (bits 1..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 1) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for OdometerDataValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for OdometerDataValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// Odometer mode.
 ///
 /// Values the spec does not list are kept as they are.
@@ -7895,6 +14159,259 @@ impl crate::json_read::FromJson for OdometerMode {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Sensor over-range status. One bit per sensor axis that is near or beyond its range.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct OverrangeStatusFlags(pub u16);
+
+impl OverrangeStatusFlags {
+    /// Mask of `accel_x` (bit 0).
+    pub const ACCEL_X: u16 = 0x0001;
+    /// Mask of `accel_y` (bit 1).
+    pub const ACCEL_Y: u16 = 0x0002;
+    /// Mask of `accel_z` (bit 2).
+    pub const ACCEL_Z: u16 = 0x0004;
+    /// Mask of `reserved_3` (bit 3).
+    pub const RESERVED_3: u16 = 0x0008;
+    /// Mask of `gyro_x` (bit 4).
+    pub const GYRO_X: u16 = 0x0010;
+    /// Mask of `gyro_y` (bit 5).
+    pub const GYRO_Y: u16 = 0x0020;
+    /// Mask of `gyro_z` (bit 6).
+    pub const GYRO_Z: u16 = 0x0040;
+    /// Mask of `reserved_7` (bit 7).
+    pub const RESERVED_7: u16 = 0x0080;
+    /// Mask of `mag_x` (bit 8).
+    pub const MAG_X: u16 = 0x0100;
+    /// Mask of `mag_y` (bit 9).
+    pub const MAG_Y: u16 = 0x0200;
+    /// Mask of `mag_z` (bit 10).
+    pub const MAG_Z: u16 = 0x0400;
+    /// Mask of `reserved_11` (bit 11).
+    pub const RESERVED_11: u16 = 0x0800;
+    /// Mask of `press` (bit 12).
+    pub const PRESS: u16 = 0x1000;
+    /// Mask of `reserved_13_15` (bits 13..=15).
+    pub const RESERVED_13_15: u16 = 0xE000;
+
+    /// Accelerometer X axis over range. (bit 0)
+    pub const fn accel_x(self) -> bool {
+        self.0 & Self::ACCEL_X != 0
+    }
+
+    /// Sets or clears `accel_x` (bit 0).
+    pub fn set_accel_x(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCEL_X;
+        } else {
+            self.0 &= !Self::ACCEL_X;
+        }
+    }
+
+    /// Accelerometer Y axis over range. (bit 1)
+    pub const fn accel_y(self) -> bool {
+        self.0 & Self::ACCEL_Y != 0
+    }
+
+    /// Sets or clears `accel_y` (bit 1).
+    pub fn set_accel_y(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCEL_Y;
+        } else {
+            self.0 &= !Self::ACCEL_Y;
+        }
+    }
+
+    /// Accelerometer Z axis over range. (bit 2)
+    pub const fn accel_z(self) -> bool {
+        self.0 & Self::ACCEL_Z != 0
+    }
+
+    /// Sets or clears `accel_z` (bit 2).
+    pub fn set_accel_z(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ACCEL_Z;
+        } else {
+            self.0 &= !Self::ACCEL_Z;
+        }
+    }
+
+    /// Not listed. Reserved. (bit 3)
+    pub const fn reserved_3(self) -> bool {
+        self.0 & Self::RESERVED_3 != 0
+    }
+
+    /// Sets or clears `reserved_3` (bit 3).
+    pub fn set_reserved_3(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_3;
+        } else {
+            self.0 &= !Self::RESERVED_3;
+        }
+    }
+
+    /// Gyroscope X axis over range. (bit 4)
+    pub const fn gyro_x(self) -> bool {
+        self.0 & Self::GYRO_X != 0
+    }
+
+    /// Sets or clears `gyro_x` (bit 4).
+    pub fn set_gyro_x(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYRO_X;
+        } else {
+            self.0 &= !Self::GYRO_X;
+        }
+    }
+
+    /// Gyroscope Y axis over range. (bit 5)
+    pub const fn gyro_y(self) -> bool {
+        self.0 & Self::GYRO_Y != 0
+    }
+
+    /// Sets or clears `gyro_y` (bit 5).
+    pub fn set_gyro_y(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYRO_Y;
+        } else {
+            self.0 &= !Self::GYRO_Y;
+        }
+    }
+
+    /// Gyroscope Z axis over range. (bit 6)
+    pub const fn gyro_z(self) -> bool {
+        self.0 & Self::GYRO_Z != 0
+    }
+
+    /// Sets or clears `gyro_z` (bit 6).
+    pub fn set_gyro_z(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GYRO_Z;
+        } else {
+            self.0 &= !Self::GYRO_Z;
+        }
+    }
+
+    /// Not listed. Reserved. (bit 7)
+    pub const fn reserved_7(self) -> bool {
+        self.0 & Self::RESERVED_7 != 0
+    }
+
+    /// Sets or clears `reserved_7` (bit 7).
+    pub fn set_reserved_7(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_7;
+        } else {
+            self.0 &= !Self::RESERVED_7;
+        }
+    }
+
+    /// Magnetometer X axis over range. (bit 8)
+    pub const fn mag_x(self) -> bool {
+        self.0 & Self::MAG_X != 0
+    }
+
+    /// Sets or clears `mag_x` (bit 8).
+    pub fn set_mag_x(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAG_X;
+        } else {
+            self.0 &= !Self::MAG_X;
+        }
+    }
+
+    /// Magnetometer Y axis over range. (bit 9)
+    pub const fn mag_y(self) -> bool {
+        self.0 & Self::MAG_Y != 0
+    }
+
+    /// Sets or clears `mag_y` (bit 9).
+    pub fn set_mag_y(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAG_Y;
+        } else {
+            self.0 &= !Self::MAG_Y;
+        }
+    }
+
+    /// Magnetometer Z axis over range. (bit 10)
+    pub const fn mag_z(self) -> bool {
+        self.0 & Self::MAG_Z != 0
+    }
+
+    /// Sets or clears `mag_z` (bit 10).
+    pub fn set_mag_z(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::MAG_Z;
+        } else {
+            self.0 &= !Self::MAG_Z;
+        }
+    }
+
+    /// Not listed. Reserved. (bit 11)
+    pub const fn reserved_11(self) -> bool {
+        self.0 & Self::RESERVED_11 != 0
+    }
+
+    /// Sets or clears `reserved_11` (bit 11).
+    pub fn set_reserved_11(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::RESERVED_11;
+        } else {
+            self.0 &= !Self::RESERVED_11;
+        }
+    }
+
+    /// Pressure sensor over range. (bit 12)
+    pub const fn press(self) -> bool {
+        self.0 & Self::PRESS != 0
+    }
+
+    /// Sets or clears `press` (bit 12).
+    pub fn set_press(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PRESS;
+        } else {
+            self.0 &= !Self::PRESS;
+        }
+    }
+
+    /// Not listed. Reserved. (bits 13..=15)
+    pub const fn reserved_13_15(self) -> u16 {
+        (self.0 & Self::RESERVED_13_15) >> 13
+    }
+
+    /// Sets `reserved_13_15` (bits 13..=15); higher bits of `v` are ignored.
+    pub fn set_reserved_13_15(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED_13_15) | ((v << 13) & Self::RESERVED_13_15);
+    }
+}
+
+impl crate::wire::Wire for OverrangeStatusFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for OverrangeStatusFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -8194,6 +14711,380 @@ impl crate::json_read::FromJson for RelativePositionSource {
     }
 }
 
+/// RTK corrections epoch status. Status of the corrections received during the epoch.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct RtkCorrectionsEpochStatus(pub u16);
+
+impl RtkCorrectionsEpochStatus {
+    /// Mask of `antenna_location_received` (bit 0).
+    pub const ANTENNA_LOCATION_RECEIVED: u16 = 0x0001;
+    /// Mask of `antenna_description_received` (bit 1).
+    pub const ANTENNA_DESCRIPTION_RECEIVED: u16 = 0x0002;
+    /// Mask of `gps_received` (bit 2).
+    pub const GPS_RECEIVED: u16 = 0x0004;
+    /// Mask of `glonass_received` (bit 3).
+    pub const GLONASS_RECEIVED: u16 = 0x0008;
+    /// Mask of `galileo_received` (bit 4).
+    pub const GALILEO_RECEIVED: u16 = 0x0010;
+    /// Mask of `beidou_received` (bit 5).
+    pub const BEIDOU_RECEIVED: u16 = 0x0020;
+    /// Mask of `using_gps_msm_messages` (bit 6).
+    pub const USING_GPS_MSM_MESSAGES: u16 = 0x0040;
+    /// Mask of `using_glonass_msm_messages` (bit 7).
+    pub const USING_GLONASS_MSM_MESSAGES: u16 = 0x0080;
+    /// Mask of `dongle_status_read_failed` (bit 8).
+    pub const DONGLE_STATUS_READ_FAILED: u16 = 0x0100;
+    /// Mask of `reserved` (bits 9..=15).
+    pub const RESERVED: u16 = 0xFE00;
+
+    /// Antenna location (station coordinates) received. (bit 0)
+    pub const fn antenna_location_received(self) -> bool {
+        self.0 & Self::ANTENNA_LOCATION_RECEIVED != 0
+    }
+
+    /// Sets or clears `antenna_location_received` (bit 0).
+    pub fn set_antenna_location_received(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_LOCATION_RECEIVED;
+        } else {
+            self.0 &= !Self::ANTENNA_LOCATION_RECEIVED;
+        }
+    }
+
+    /// Antenna description received. (bit 1)
+    pub const fn antenna_description_received(self) -> bool {
+        self.0 & Self::ANTENNA_DESCRIPTION_RECEIVED != 0
+    }
+
+    /// Sets or clears `antenna_description_received` (bit 1).
+    pub fn set_antenna_description_received(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::ANTENNA_DESCRIPTION_RECEIVED;
+        } else {
+            self.0 &= !Self::ANTENNA_DESCRIPTION_RECEIVED;
+        }
+    }
+
+    /// GPS corrections received. (bit 2)
+    pub const fn gps_received(self) -> bool {
+        self.0 & Self::GPS_RECEIVED != 0
+    }
+
+    /// Sets or clears `gps_received` (bit 2).
+    pub fn set_gps_received(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GPS_RECEIVED;
+        } else {
+            self.0 &= !Self::GPS_RECEIVED;
+        }
+    }
+
+    /// GLONASS corrections received. (bit 3)
+    pub const fn glonass_received(self) -> bool {
+        self.0 & Self::GLONASS_RECEIVED != 0
+    }
+
+    /// Sets or clears `glonass_received` (bit 3).
+    pub fn set_glonass_received(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GLONASS_RECEIVED;
+        } else {
+            self.0 &= !Self::GLONASS_RECEIVED;
+        }
+    }
+
+    /// Galileo corrections received. (bit 4)
+    pub const fn galileo_received(self) -> bool {
+        self.0 & Self::GALILEO_RECEIVED != 0
+    }
+
+    /// Sets or clears `galileo_received` (bit 4).
+    pub fn set_galileo_received(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GALILEO_RECEIVED;
+        } else {
+            self.0 &= !Self::GALILEO_RECEIVED;
+        }
+    }
+
+    /// BeiDou corrections received. (bit 5)
+    pub const fn beidou_received(self) -> bool {
+        self.0 & Self::BEIDOU_RECEIVED != 0
+    }
+
+    /// Sets or clears `beidou_received` (bit 5).
+    pub fn set_beidou_received(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BEIDOU_RECEIVED;
+        } else {
+            self.0 &= !Self::BEIDOU_RECEIVED;
+        }
+    }
+
+    /// GPS corrections come from MSM messages rather than RTCM 1001-1004. (bit 6)
+    pub const fn using_gps_msm_messages(self) -> bool {
+        self.0 & Self::USING_GPS_MSM_MESSAGES != 0
+    }
+
+    /// Sets or clears `using_gps_msm_messages` (bit 6).
+    pub fn set_using_gps_msm_messages(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::USING_GPS_MSM_MESSAGES;
+        } else {
+            self.0 &= !Self::USING_GPS_MSM_MESSAGES;
+        }
+    }
+
+    /// GLONASS corrections come from MSM messages rather than RTCM 1009-1012. (bit 7)
+    pub const fn using_glonass_msm_messages(self) -> bool {
+        self.0 & Self::USING_GLONASS_MSM_MESSAGES != 0
+    }
+
+    /// Sets or clears `using_glonass_msm_messages` (bit 7).
+    pub fn set_using_glonass_msm_messages(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::USING_GLONASS_MSM_MESSAGES;
+        } else {
+            self.0 &= !Self::USING_GLONASS_MSM_MESSAGES;
+        }
+    }
+
+    /// Reading the dongle status was attempted and failed. (bit 8)
+    pub const fn dongle_status_read_failed(self) -> bool {
+        self.0 & Self::DONGLE_STATUS_READ_FAILED != 0
+    }
+
+    /// Sets or clears `dongle_status_read_failed` (bit 8).
+    pub fn set_dongle_status_read_failed(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DONGLE_STATUS_READ_FAILED;
+        } else {
+            self.0 &= !Self::DONGLE_STATUS_READ_FAILED;
+        }
+    }
+
+    /// Not named by the manual. Reserved. (bits 9..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 9
+    }
+
+    /// Sets `reserved` (bits 9..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 9) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for RtkCorrectionsEpochStatus {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for RtkCorrectionsEpochStatus {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// RTK corrections status valid flags. Which parameters of the RTK corrections status field are valid.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct RtkCorrectionsStatusValidFlags(pub u16);
+
+impl RtkCorrectionsStatusValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `epoch_status` (bit 2).
+    pub const EPOCH_STATUS: u16 = 0x0004;
+    /// Mask of `dongle_status` (bit 3).
+    pub const DONGLE_STATUS: u16 = 0x0008;
+    /// Mask of `gps_latency` (bit 4).
+    pub const GPS_LATENCY: u16 = 0x0010;
+    /// Mask of `glonass_latency` (bit 5).
+    pub const GLONASS_LATENCY: u16 = 0x0020;
+    /// Mask of `galileo_latency` (bit 6).
+    pub const GALILEO_LATENCY: u16 = 0x0040;
+    /// Mask of `beidou_latency` (bit 7).
+    pub const BEIDOU_LATENCY: u16 = 0x0080;
+    /// Mask of `flags` (bits 0..=7).
+    pub const FLAGS: u16 = 0x00FF;
+    /// Mask of `reserved` (bits 8..=15).
+    pub const RESERVED: u16 = 0xFF00;
+
+    /// Time of week valid. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// Week number valid. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// Epoch status valid. (bit 2)
+    pub const fn epoch_status(self) -> bool {
+        self.0 & Self::EPOCH_STATUS != 0
+    }
+
+    /// Sets or clears `epoch_status` (bit 2).
+    pub fn set_epoch_status(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::EPOCH_STATUS;
+        } else {
+            self.0 &= !Self::EPOCH_STATUS;
+        }
+    }
+
+    /// Dongle status valid. (bit 3)
+    pub const fn dongle_status(self) -> bool {
+        self.0 & Self::DONGLE_STATUS != 0
+    }
+
+    /// Sets or clears `dongle_status` (bit 3).
+    pub fn set_dongle_status(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::DONGLE_STATUS;
+        } else {
+            self.0 &= !Self::DONGLE_STATUS;
+        }
+    }
+
+    /// GPS correction latency valid. (bit 4)
+    pub const fn gps_latency(self) -> bool {
+        self.0 & Self::GPS_LATENCY != 0
+    }
+
+    /// Sets or clears `gps_latency` (bit 4).
+    pub fn set_gps_latency(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GPS_LATENCY;
+        } else {
+            self.0 &= !Self::GPS_LATENCY;
+        }
+    }
+
+    /// GLONASS correction latency valid. (bit 5)
+    pub const fn glonass_latency(self) -> bool {
+        self.0 & Self::GLONASS_LATENCY != 0
+    }
+
+    /// Sets or clears `glonass_latency` (bit 5).
+    pub fn set_glonass_latency(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GLONASS_LATENCY;
+        } else {
+            self.0 &= !Self::GLONASS_LATENCY;
+        }
+    }
+
+    /// Galileo correction latency valid. (bit 6)
+    pub const fn galileo_latency(self) -> bool {
+        self.0 & Self::GALILEO_LATENCY != 0
+    }
+
+    /// Sets or clears `galileo_latency` (bit 6).
+    pub fn set_galileo_latency(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::GALILEO_LATENCY;
+        } else {
+            self.0 &= !Self::GALILEO_LATENCY;
+        }
+    }
+
+    /// BeiDou correction latency valid. (bit 7)
+    pub const fn beidou_latency(self) -> bool {
+        self.0 & Self::BEIDOU_LATENCY != 0
+    }
+
+    /// Sets or clears `beidou_latency` (bit 7).
+    pub fn set_beidou_latency(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::BEIDOU_LATENCY;
+        } else {
+            self.0 &= !Self::BEIDOU_LATENCY;
+        }
+    }
+
+    /// All flags. (bits 0..=7)
+    pub const fn flags(self) -> u16 {
+        self.0 & Self::FLAGS
+    }
+
+    /// Sets `flags` (bits 0..=7); higher bits of `v` are ignored.
+    pub fn set_flags(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::FLAGS) | (v & Self::FLAGS);
+    }
+
+    /// Not named by the manual. Reserved. (bits 8..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 8
+    }
+
+    /// Sets `reserved` (bits 8..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 8) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for RtkCorrectionsStatusValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for RtkCorrectionsStatusValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
 /// SBAS options.
 ///
 /// Bits the spec does not name are kept as they are.
@@ -8270,6 +15161,131 @@ impl crate::wire::Wire for SbasOptions {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for SbasOptions {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
+    }
+}
+
+/// Sensor GPS timestamp flags (0x80,0x12). Status of the GPS timestamp attached to sensor data. Bits 0-2 mean the same on both devices (the GX5-45 calls them PPS Beacon Good, GPS Time Refresh and GPS Time Initialized); bits 3 and 4 exist only on the CV7.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SensorGpsTimestampFlags(pub u16);
+
+impl SensorGpsTimestampFlags {
+    /// Mask of `pps_valid` (bit 0).
+    pub const PPS_VALID: u16 = 0x0001;
+    /// Mask of `time_refresh` (bit 1).
+    pub const TIME_REFRESH: u16 = 0x0002;
+    /// Mask of `time_initialized` (bit 2).
+    pub const TIME_INITIALIZED: u16 = 0x0004;
+    /// Mask of `tow_valid` (bit 3).
+    pub const TOW_VALID: u16 = 0x0008;
+    /// Mask of `week_number_valid` (bit 4).
+    pub const WEEK_NUMBER_VALID: u16 = 0x0010;
+    /// Mask of `reserved` (bits 5..=15).
+    pub const RESERVED: u16 = 0xFFE0;
+
+    /// PPS signal present (GX5-45: PPS Beacon Good); when clear the internal clock stands in for the PPS. (bit 0)
+    pub const fn pps_valid(self) -> bool {
+        self.0 & Self::PPS_VALID != 0
+    }
+
+    /// Sets or clears `pps_valid` (bit 0).
+    pub fn set_pps_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::PPS_VALID;
+        } else {
+            self.0 &= !Self::PPS_VALID;
+        }
+    }
+
+    /// Toggles each time the time is updated (GPS time, or the GPS Time Update command 0x01,0x72). (bit 1)
+    pub const fn time_refresh(self) -> bool {
+        self.0 & Self::TIME_REFRESH != 0
+    }
+
+    /// Sets or clears `time_refresh` (bit 1).
+    pub fn set_time_refresh(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIME_REFRESH;
+        } else {
+            self.0 &= !Self::TIME_REFRESH;
+        }
+    }
+
+    /// Set once the time has been set at least once (the first time refresh); stays set. (bit 2)
+    pub const fn time_initialized(self) -> bool {
+        self.0 & Self::TIME_INITIALIZED != 0
+    }
+
+    /// Sets or clears `time_initialized` (bit 2).
+    pub fn set_time_initialized(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TIME_INITIALIZED;
+        } else {
+            self.0 &= !Self::TIME_INITIALIZED;
+        }
+    }
+
+    /// Time of week is valid. (bit 3)
+    pub const fn tow_valid(self) -> bool {
+        self.0 & Self::TOW_VALID != 0
+    }
+
+    /// Sets or clears `tow_valid` (bit 3).
+    pub fn set_tow_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW_VALID;
+        } else {
+            self.0 &= !Self::TOW_VALID;
+        }
+    }
+
+    /// Week number is valid. (bit 4)
+    pub const fn week_number_valid(self) -> bool {
+        self.0 & Self::WEEK_NUMBER_VALID != 0
+    }
+
+    /// Sets or clears `week_number_valid` (bit 4).
+    pub fn set_week_number_valid(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER_VALID;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER_VALID;
+        }
+    }
+
+    /// Not defined by either manual (GX5-45: bits 3-15). Reserved. (bits 5..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 5
+    }
+
+    /// Sets `reserved` (bits 5..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 5) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for SensorGpsTimestampFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SensorGpsTimestampFlags {
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
         <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
@@ -8421,6 +15437,95 @@ impl crate::json_read::FromJson for SensorRangeType {
             }),
             other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
         }
+    }
+}
+
+/// Shared GPS timestamp valid flags.
+///
+/// Bits the spec does not name are kept as they are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SharedGpsTimestampValidFlags(pub u16);
+
+impl SharedGpsTimestampValidFlags {
+    /// Mask of `tow` (bit 0).
+    pub const TOW: u16 = 0x0001;
+    /// Mask of `week_number` (bit 1).
+    pub const WEEK_NUMBER: u16 = 0x0002;
+    /// Mask of `time_valid` (bits 0..=1).
+    pub const TIME_VALID: u16 = 0x0003;
+    /// Mask of `reserved` (bits 2..=15).
+    pub const RESERVED: u16 = 0xFFFC;
+
+    /// The whole-second time of week has been set. (bit 0)
+    pub const fn tow(self) -> bool {
+        self.0 & Self::TOW != 0
+    }
+
+    /// Sets or clears `tow` (bit 0).
+    pub fn set_tow(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::TOW;
+        } else {
+            self.0 &= !Self::TOW;
+        }
+    }
+
+    /// The week number has been set. (bit 1)
+    pub const fn week_number(self) -> bool {
+        self.0 & Self::WEEK_NUMBER != 0
+    }
+
+    /// Sets or clears `week_number` (bit 1).
+    pub fn set_week_number(&mut self, v: bool) {
+        if v {
+            self.0 |= Self::WEEK_NUMBER;
+        } else {
+            self.0 &= !Self::WEEK_NUMBER;
+        }
+    }
+
+    /// Both time of week and week number have been set. (bits 0..=1)
+    pub const fn time_valid(self) -> u16 {
+        self.0 & Self::TIME_VALID
+    }
+
+    /// Sets `time_valid` (bits 0..=1); higher bits of `v` are ignored.
+    pub fn set_time_valid(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::TIME_VALID) | (v & Self::TIME_VALID);
+    }
+
+    /// Not listed. Reserved. (bits 2..=15)
+    pub const fn reserved(self) -> u16 {
+        (self.0 & Self::RESERVED) >> 2
+    }
+
+    /// Sets `reserved` (bits 2..=15); higher bits of `v` are ignored.
+    pub fn set_reserved(&mut self, v: u16) {
+        self.0 = (self.0 & !Self::RESERVED) | ((v << 2) & Self::RESERVED);
+    }
+}
+
+impl crate::wire::Wire for SharedGpsTimestampValidFlags {
+    const ZERO: Self = Self(0);
+    const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        <u16 as crate::wire::Wire>::decode(r).map(Self)
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        self.0.encode(w)
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for SharedGpsTimestampValidFlags {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 

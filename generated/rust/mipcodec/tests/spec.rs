@@ -911,6 +911,560 @@ fn bitfield_cv7bitflags_accessors() {
 }
 
 #[test]
+fn bitfield_cv7continuousbitgnss13_accessors() {
+    use mipcodec::types::Cv7ContinuousBitGnss13;
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_reserved_104(true);
+    assert_eq!(v.0, 0x01, "reserved_104");
+    assert!(v.reserved_104());
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_reserved_104(false);
+    assert_eq!(v.0, !0x01, "reserved_104");
+    assert!(!v.reserved_104());
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_receiver_1_fault(true);
+    assert_eq!(v.0, 0x02, "receiver_1_fault");
+    assert!(v.receiver_1_fault());
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_receiver_1_fault(false);
+    assert_eq!(v.0, !0x02, "receiver_1_fault");
+    assert!(!v.receiver_1_fault());
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_reserved_106_107(0x03);
+    assert_eq!(v.0, 0x0C, "reserved_106_107");
+    assert_eq!(v.reserved_106_107(), 0x03);
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_reserved_106_107(0);
+    assert_eq!(v.0, !0x0C, "reserved_106_107");
+    assert_eq!(v.reserved_106_107(), 0);
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_receiver_1_no_solution(true);
+    assert_eq!(v.0, 0x10, "receiver_1_no_solution");
+    assert!(v.receiver_1_no_solution());
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_receiver_1_no_solution(false);
+    assert_eq!(v.0, !0x10, "receiver_1_no_solution");
+    assert!(!v.receiver_1_no_solution());
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_reserved_109(true);
+    assert_eq!(v.0, 0x20, "reserved_109");
+    assert!(v.reserved_109());
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_reserved_109(false);
+    assert_eq!(v.0, !0x20, "reserved_109");
+    assert!(!v.reserved_109());
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_receiver_2_fault(true);
+    assert_eq!(v.0, 0x40, "receiver_2_fault");
+    assert!(v.receiver_2_fault());
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_receiver_2_fault(false);
+    assert_eq!(v.0, !0x40, "receiver_2_fault");
+    assert!(!v.receiver_2_fault());
+    let mut v = Cv7ContinuousBitGnss13(0);
+    v.set_reserved_111(true);
+    assert_eq!(v.0, 0x80, "reserved_111");
+    assert!(v.reserved_111());
+    let mut v = Cv7ContinuousBitGnss13(!0);
+    v.set_reserved_111(false);
+    assert_eq!(v.0, !0x80, "reserved_111");
+    assert!(!v.reserved_111());
+}
+
+#[test]
+fn bitfield_cv7continuousbitgnss14_accessors() {
+    use mipcodec::types::Cv7ContinuousBitGnss14;
+    let mut v = Cv7ContinuousBitGnss14(0);
+    v.set_reserved_112(true);
+    assert_eq!(v.0, 0x01, "reserved_112");
+    assert!(v.reserved_112());
+    let mut v = Cv7ContinuousBitGnss14(!0);
+    v.set_reserved_112(false);
+    assert_eq!(v.0, !0x01, "reserved_112");
+    assert!(!v.reserved_112());
+    let mut v = Cv7ContinuousBitGnss14(0);
+    v.set_receiver_2_no_solution(true);
+    assert_eq!(v.0, 0x02, "receiver_2_no_solution");
+    assert!(v.receiver_2_no_solution());
+    let mut v = Cv7ContinuousBitGnss14(!0);
+    v.set_receiver_2_no_solution(false);
+    assert_eq!(v.0, !0x02, "receiver_2_no_solution");
+    assert!(!v.receiver_2_no_solution());
+    let mut v = Cv7ContinuousBitGnss14(0);
+    v.set_reserved_114_119(0x3F);
+    assert_eq!(v.0, 0xFC, "reserved_114_119");
+    assert_eq!(v.reserved_114_119(), 0x3F);
+    let mut v = Cv7ContinuousBitGnss14(!0);
+    v.set_reserved_114_119(0);
+    assert_eq!(v.0, !0xFC, "reserved_114_119");
+    assert_eq!(v.reserved_114_119(), 0);
+}
+
+#[test]
+fn bitfield_cv7continuousbitimu4_accessors() {
+    use mipcodec::types::Cv7ContinuousBitImu4;
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_reserved_32(true);
+    assert_eq!(v.0, 0x01, "reserved_32");
+    assert!(v.reserved_32());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_reserved_32(false);
+    assert_eq!(v.0, !0x01, "reserved_32");
+    assert!(!v.reserved_32());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_imu_communication_fault(true);
+    assert_eq!(v.0, 0x02, "imu_communication_fault");
+    assert!(v.imu_communication_fault());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_imu_communication_fault(false);
+    assert_eq!(v.0, !0x02, "imu_communication_fault");
+    assert!(!v.imu_communication_fault());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_imu_timing_overrun(true);
+    assert_eq!(v.0, 0x04, "imu_timing_overrun");
+    assert!(v.imu_timing_overrun());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_imu_timing_overrun(false);
+    assert_eq!(v.0, !0x04, "imu_timing_overrun");
+    assert!(!v.imu_timing_overrun());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_reserved_35(true);
+    assert_eq!(v.0, 0x08, "reserved_35");
+    assert!(v.reserved_35());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_reserved_35(false);
+    assert_eq!(v.0, !0x08, "reserved_35");
+    assert!(!v.reserved_35());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_imu_calibration_error_accelerometer(true);
+    assert_eq!(v.0, 0x10, "imu_calibration_error_accelerometer");
+    assert!(v.imu_calibration_error_accelerometer());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_imu_calibration_error_accelerometer(false);
+    assert_eq!(v.0, !0x10, "imu_calibration_error_accelerometer");
+    assert!(!v.imu_calibration_error_accelerometer());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_imu_calibration_error_gyroscope(true);
+    assert_eq!(v.0, 0x20, "imu_calibration_error_gyroscope");
+    assert!(v.imu_calibration_error_gyroscope());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_imu_calibration_error_gyroscope(false);
+    assert_eq!(v.0, !0x20, "imu_calibration_error_gyroscope");
+    assert!(!v.imu_calibration_error_gyroscope());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_imu_calibration_error_magnetometer(true);
+    assert_eq!(v.0, 0x40, "imu_calibration_error_magnetometer");
+    assert!(v.imu_calibration_error_magnetometer());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_imu_calibration_error_magnetometer(false);
+    assert_eq!(v.0, !0x40, "imu_calibration_error_magnetometer");
+    assert!(!v.imu_calibration_error_magnetometer());
+    let mut v = Cv7ContinuousBitImu4(0);
+    v.set_reserved_39(true);
+    assert_eq!(v.0, 0x80, "reserved_39");
+    assert!(v.reserved_39());
+    let mut v = Cv7ContinuousBitImu4(!0);
+    v.set_reserved_39(false);
+    assert_eq!(v.0, !0x80, "reserved_39");
+    assert!(!v.reserved_39());
+}
+
+#[test]
+fn bitfield_cv7continuousbitimu5_accessors() {
+    use mipcodec::types::Cv7ContinuousBitImu5;
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_accelerometer_general_fault(true);
+    assert_eq!(v.0, 0x01, "accelerometer_general_fault");
+    assert!(v.accelerometer_general_fault());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_accelerometer_general_fault(false);
+    assert_eq!(v.0, !0x01, "accelerometer_general_fault");
+    assert!(!v.accelerometer_general_fault());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_accelerometer_overrange(true);
+    assert_eq!(v.0, 0x02, "accelerometer_overrange");
+    assert!(v.accelerometer_overrange());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_accelerometer_overrange(false);
+    assert_eq!(v.0, !0x02, "accelerometer_overrange");
+    assert!(!v.accelerometer_overrange());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_accelerometer_self_test_fail(true);
+    assert_eq!(v.0, 0x04, "accelerometer_self_test_fail");
+    assert!(v.accelerometer_self_test_fail());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_accelerometer_self_test_fail(false);
+    assert_eq!(v.0, !0x04, "accelerometer_self_test_fail");
+    assert!(!v.accelerometer_self_test_fail());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_reserved_43(true);
+    assert_eq!(v.0, 0x08, "reserved_43");
+    assert!(v.reserved_43());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_reserved_43(false);
+    assert_eq!(v.0, !0x08, "reserved_43");
+    assert!(!v.reserved_43());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_gyroscope_general_fault(true);
+    assert_eq!(v.0, 0x10, "gyroscope_general_fault");
+    assert!(v.gyroscope_general_fault());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_gyroscope_general_fault(false);
+    assert_eq!(v.0, !0x10, "gyroscope_general_fault");
+    assert!(!v.gyroscope_general_fault());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_gyroscope_overrange(true);
+    assert_eq!(v.0, 0x20, "gyroscope_overrange");
+    assert!(v.gyroscope_overrange());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_gyroscope_overrange(false);
+    assert_eq!(v.0, !0x20, "gyroscope_overrange");
+    assert!(!v.gyroscope_overrange());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_gyroscope_self_test_fail(true);
+    assert_eq!(v.0, 0x40, "gyroscope_self_test_fail");
+    assert!(v.gyroscope_self_test_fail());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_gyroscope_self_test_fail(false);
+    assert_eq!(v.0, !0x40, "gyroscope_self_test_fail");
+    assert!(!v.gyroscope_self_test_fail());
+    let mut v = Cv7ContinuousBitImu5(0);
+    v.set_reserved_47(true);
+    assert_eq!(v.0, 0x80, "reserved_47");
+    assert!(v.reserved_47());
+    let mut v = Cv7ContinuousBitImu5(!0);
+    v.set_reserved_47(false);
+    assert_eq!(v.0, !0x80, "reserved_47");
+    assert!(!v.reserved_47());
+}
+
+#[test]
+fn bitfield_cv7continuousbitimu6_accessors() {
+    use mipcodec::types::Cv7ContinuousBitImu6;
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_magnetometer_general_fault(true);
+    assert_eq!(v.0, 0x01, "magnetometer_general_fault");
+    assert!(v.magnetometer_general_fault());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_magnetometer_general_fault(false);
+    assert_eq!(v.0, !0x01, "magnetometer_general_fault");
+    assert!(!v.magnetometer_general_fault());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_magnetometer_overrange(true);
+    assert_eq!(v.0, 0x02, "magnetometer_overrange");
+    assert!(v.magnetometer_overrange());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_magnetometer_overrange(false);
+    assert_eq!(v.0, !0x02, "magnetometer_overrange");
+    assert!(!v.magnetometer_overrange());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_magnetometer_self_test_fail(true);
+    assert_eq!(v.0, 0x04, "magnetometer_self_test_fail");
+    assert!(v.magnetometer_self_test_fail());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_magnetometer_self_test_fail(false);
+    assert_eq!(v.0, !0x04, "magnetometer_self_test_fail");
+    assert!(!v.magnetometer_self_test_fail());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_reserved_51(true);
+    assert_eq!(v.0, 0x08, "reserved_51");
+    assert!(v.reserved_51());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_reserved_51(false);
+    assert_eq!(v.0, !0x08, "reserved_51");
+    assert!(!v.reserved_51());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_pressure_sensor_general_fault(true);
+    assert_eq!(v.0, 0x10, "pressure_sensor_general_fault");
+    assert!(v.pressure_sensor_general_fault());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_pressure_sensor_general_fault(false);
+    assert_eq!(v.0, !0x10, "pressure_sensor_general_fault");
+    assert!(!v.pressure_sensor_general_fault());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_pressure_sensor_overrange(true);
+    assert_eq!(v.0, 0x20, "pressure_sensor_overrange");
+    assert!(v.pressure_sensor_overrange());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_pressure_sensor_overrange(false);
+    assert_eq!(v.0, !0x20, "pressure_sensor_overrange");
+    assert!(!v.pressure_sensor_overrange());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_pressure_sensor_self_test_fail(true);
+    assert_eq!(v.0, 0x40, "pressure_sensor_self_test_fail");
+    assert!(v.pressure_sensor_self_test_fail());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_pressure_sensor_self_test_fail(false);
+    assert_eq!(v.0, !0x40, "pressure_sensor_self_test_fail");
+    assert!(!v.pressure_sensor_self_test_fail());
+    let mut v = Cv7ContinuousBitImu6(0);
+    v.set_reserved_55(true);
+    assert_eq!(v.0, 0x80, "reserved_55");
+    assert!(v.reserved_55());
+    let mut v = Cv7ContinuousBitImu6(!0);
+    v.set_reserved_55(false);
+    assert_eq!(v.0, !0x80, "reserved_55");
+    assert!(!v.reserved_55());
+}
+
+#[test]
+fn bitfield_cv7continuousbitimu7_accessors() {
+    use mipcodec::types::Cv7ContinuousBitImu7;
+    let mut v = Cv7ContinuousBitImu7(0);
+    v.set_factory_bits_invalid(true);
+    assert_eq!(v.0, 0x01, "factory_bits_invalid");
+    assert!(v.factory_bits_invalid());
+    let mut v = Cv7ContinuousBitImu7(!0);
+    v.set_factory_bits_invalid(false);
+    assert_eq!(v.0, !0x01, "factory_bits_invalid");
+    assert!(!v.factory_bits_invalid());
+    let mut v = Cv7ContinuousBitImu7(0);
+    v.set_reserved_57_63(0x7F);
+    assert_eq!(v.0, 0xFE, "reserved_57_63");
+    assert_eq!(v.reserved_57_63(), 0x7F);
+    let mut v = Cv7ContinuousBitImu7(!0);
+    v.set_reserved_57_63(0);
+    assert_eq!(v.0, !0xFE, "reserved_57_63");
+    assert_eq!(v.reserved_57_63(), 0);
+}
+
+#[test]
+fn bitfield_cv7continuousbitnav8_accessors() {
+    use mipcodec::types::Cv7ContinuousBitNav8;
+    let mut v = Cv7ContinuousBitNav8(0);
+    v.set_reserved_64(true);
+    assert_eq!(v.0, 0x01, "reserved_64");
+    assert!(v.reserved_64());
+    let mut v = Cv7ContinuousBitNav8(!0);
+    v.set_reserved_64(false);
+    assert_eq!(v.0, !0x01, "reserved_64");
+    assert!(!v.reserved_64());
+    let mut v = Cv7ContinuousBitNav8(0);
+    v.set_reserved_65(true);
+    assert_eq!(v.0, 0x02, "reserved_65");
+    assert!(v.reserved_65());
+    let mut v = Cv7ContinuousBitNav8(!0);
+    v.set_reserved_65(false);
+    assert_eq!(v.0, !0x02, "reserved_65");
+    assert!(!v.reserved_65());
+    let mut v = Cv7ContinuousBitNav8(0);
+    v.set_filter_timing_overrun(true);
+    assert_eq!(v.0, 0x04, "filter_timing_overrun");
+    assert!(v.filter_timing_overrun());
+    let mut v = Cv7ContinuousBitNav8(!0);
+    v.set_filter_timing_overrun(false);
+    assert_eq!(v.0, !0x04, "filter_timing_overrun");
+    assert!(!v.filter_timing_overrun());
+    let mut v = Cv7ContinuousBitNav8(0);
+    v.set_filter_timing_underrun(true);
+    assert_eq!(v.0, 0x08, "filter_timing_underrun");
+    assert!(v.filter_timing_underrun());
+    let mut v = Cv7ContinuousBitNav8(!0);
+    v.set_filter_timing_underrun(false);
+    assert_eq!(v.0, !0x08, "filter_timing_underrun");
+    assert!(!v.filter_timing_underrun());
+    let mut v = Cv7ContinuousBitNav8(0);
+    v.set_reserved_68_71(0x0F);
+    assert_eq!(v.0, 0xF0, "reserved_68_71");
+    assert_eq!(v.reserved_68_71(), 0x0F);
+    let mut v = Cv7ContinuousBitNav8(!0);
+    v.set_reserved_68_71(0);
+    assert_eq!(v.0, !0xF0, "reserved_68_71");
+    assert_eq!(v.reserved_68_71(), 0);
+}
+
+#[test]
+fn bitfield_cv7continuousbitsystem0_accessors() {
+    use mipcodec::types::Cv7ContinuousBitSystem0;
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_system_clock_failure(true);
+    assert_eq!(v.0, 0x01, "system_clock_failure");
+    assert!(v.system_clock_failure());
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_system_clock_failure(false);
+    assert_eq!(v.0, !0x01, "system_clock_failure");
+    assert!(!v.system_clock_failure());
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_power_fault(true);
+    assert_eq!(v.0, 0x02, "power_fault");
+    assert!(v.power_fault());
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_power_fault(false);
+    assert_eq!(v.0, !0x02, "power_fault");
+    assert!(!v.power_fault());
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_reserved_2_3(0x03);
+    assert_eq!(v.0, 0x0C, "reserved_2_3");
+    assert_eq!(v.reserved_2_3(), 0x03);
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_reserved_2_3(0);
+    assert_eq!(v.0, !0x0C, "reserved_2_3");
+    assert_eq!(v.reserved_2_3(), 0);
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_firmware_fault(true);
+    assert_eq!(v.0, 0x10, "firmware_fault");
+    assert!(v.firmware_fault());
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_firmware_fault(false);
+    assert_eq!(v.0, !0x10, "firmware_fault");
+    assert!(!v.firmware_fault());
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_timing_overload(true);
+    assert_eq!(v.0, 0x20, "timing_overload");
+    assert!(v.timing_overload());
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_timing_overload(false);
+    assert_eq!(v.0, !0x20, "timing_overload");
+    assert!(!v.timing_overload());
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_buffer_overrun(true);
+    assert_eq!(v.0, 0x40, "buffer_overrun");
+    assert!(v.buffer_overrun());
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_buffer_overrun(false);
+    assert_eq!(v.0, !0x40, "buffer_overrun");
+    assert!(!v.buffer_overrun());
+    let mut v = Cv7ContinuousBitSystem0(0);
+    v.set_reserved_7(true);
+    assert_eq!(v.0, 0x80, "reserved_7");
+    assert!(v.reserved_7());
+    let mut v = Cv7ContinuousBitSystem0(!0);
+    v.set_reserved_7(false);
+    assert_eq!(v.0, !0x80, "reserved_7");
+    assert!(!v.reserved_7());
+}
+
+#[test]
+fn bitfield_cv7continuousbitsystem2_accessors() {
+    use mipcodec::types::Cv7ContinuousBitSystem2;
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_imu_process_fault(true);
+    assert_eq!(v.0, 0x01, "imu_process_fault");
+    assert!(v.imu_process_fault());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_imu_process_fault(false);
+    assert_eq!(v.0, !0x01, "imu_process_fault");
+    assert!(!v.imu_process_fault());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_imu_data_process_time_exceeded(true);
+    assert_eq!(v.0, 0x02, "imu_data_process_time_exceeded");
+    assert!(v.imu_data_process_time_exceeded());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_imu_data_process_time_exceeded(false);
+    assert_eq!(v.0, !0x02, "imu_data_process_time_exceeded");
+    assert!(!v.imu_data_process_time_exceeded());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_imu_data_rate_error(true);
+    assert_eq!(v.0, 0x04, "imu_data_rate_error");
+    assert!(v.imu_data_rate_error());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_imu_data_rate_error(false);
+    assert_eq!(v.0, !0x04, "imu_data_rate_error");
+    assert!(!v.imu_data_rate_error());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_imu_stall(true);
+    assert_eq!(v.0, 0x08, "imu_stall");
+    assert!(v.imu_stall());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_imu_stall(false);
+    assert_eq!(v.0, !0x08, "imu_stall");
+    assert!(!v.imu_stall());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_filter_process_fault(0x0F);
+    assert_eq!(v.0, 0xF0, "filter_process_fault");
+    assert_eq!(v.filter_process_fault(), 0x0F);
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_filter_process_fault(0);
+    assert_eq!(v.0, !0xF0, "filter_process_fault");
+    assert_eq!(v.filter_process_fault(), 0);
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_filter_major_cycle_fault(true);
+    assert_eq!(v.0, 0x10, "filter_major_cycle_fault");
+    assert!(v.filter_major_cycle_fault());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_filter_major_cycle_fault(false);
+    assert_eq!(v.0, !0x10, "filter_major_cycle_fault");
+    assert!(!v.filter_major_cycle_fault());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_filter_minor_cycle_fault(true);
+    assert_eq!(v.0, 0x20, "filter_minor_cycle_fault");
+    assert!(v.filter_minor_cycle_fault());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_filter_minor_cycle_fault(false);
+    assert_eq!(v.0, !0x20, "filter_minor_cycle_fault");
+    assert!(!v.filter_minor_cycle_fault());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_filter_data_rate_error(true);
+    assert_eq!(v.0, 0x40, "filter_data_rate_error");
+    assert!(v.filter_data_rate_error());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_filter_data_rate_error(false);
+    assert_eq!(v.0, !0x40, "filter_data_rate_error");
+    assert!(!v.filter_data_rate_error());
+    let mut v = Cv7ContinuousBitSystem2(0);
+    v.set_filter_process_stall(true);
+    assert_eq!(v.0, 0x80, "filter_process_stall");
+    assert!(v.filter_process_stall());
+    let mut v = Cv7ContinuousBitSystem2(!0);
+    v.set_filter_process_stall(false);
+    assert_eq!(v.0, !0x80, "filter_process_stall");
+    assert!(!v.filter_process_stall());
+}
+
+#[test]
+fn bitfield_cv7continuousbitsystem3_accessors() {
+    use mipcodec::types::Cv7ContinuousBitSystem3;
+    let mut v = Cv7ContinuousBitSystem3(0);
+    v.set_gnss_subsystem_fault(0x0F);
+    assert_eq!(v.0, 0x0F, "gnss_subsystem_fault");
+    assert_eq!(v.gnss_subsystem_fault(), 0x0F);
+    let mut v = Cv7ContinuousBitSystem3(!0);
+    v.set_gnss_subsystem_fault(0);
+    assert_eq!(v.0, !0x0F, "gnss_subsystem_fault");
+    assert_eq!(v.gnss_subsystem_fault(), 0);
+    let mut v = Cv7ContinuousBitSystem3(0);
+    v.set_gnss_main_process_fault(true);
+    assert_eq!(v.0, 0x01, "gnss_main_process_fault");
+    assert!(v.gnss_main_process_fault());
+    let mut v = Cv7ContinuousBitSystem3(!0);
+    v.set_gnss_main_process_fault(false);
+    assert_eq!(v.0, !0x01, "gnss_main_process_fault");
+    assert!(!v.gnss_main_process_fault());
+    let mut v = Cv7ContinuousBitSystem3(0);
+    v.set_gnss_receiver_1_stall(true);
+    assert_eq!(v.0, 0x02, "gnss_receiver_1_stall");
+    assert!(v.gnss_receiver_1_stall());
+    let mut v = Cv7ContinuousBitSystem3(!0);
+    v.set_gnss_receiver_1_stall(false);
+    assert_eq!(v.0, !0x02, "gnss_receiver_1_stall");
+    assert!(!v.gnss_receiver_1_stall());
+    let mut v = Cv7ContinuousBitSystem3(0);
+    v.set_gnss_receiver_2_stall(true);
+    assert_eq!(v.0, 0x04, "gnss_receiver_2_stall");
+    assert!(v.gnss_receiver_2_stall());
+    let mut v = Cv7ContinuousBitSystem3(!0);
+    v.set_gnss_receiver_2_stall(false);
+    assert_eq!(v.0, !0x04, "gnss_receiver_2_stall");
+    assert!(!v.gnss_receiver_2_stall());
+    let mut v = Cv7ContinuousBitSystem3(0);
+    v.set_reserved_27(true);
+    assert_eq!(v.0, 0x08, "reserved_27");
+    assert!(v.reserved_27());
+    let mut v = Cv7ContinuousBitSystem3(!0);
+    v.set_reserved_27(false);
+    assert_eq!(v.0, !0x08, "reserved_27");
+    assert!(!v.reserved_27());
+    let mut v = Cv7ContinuousBitSystem3(0);
+    v.set_reserved_28_31(0x0F);
+    assert_eq!(v.0, 0xF0, "reserved_28_31");
+    assert_eq!(v.reserved_28_31(), 0x0F);
+    let mut v = Cv7ContinuousBitSystem3(!0);
+    v.set_reserved_28_31(0);
+    assert_eq!(v.0, !0xF0, "reserved_28_31");
+    assert_eq!(v.reserved_28_31(), 0);
+}
+
+#[test]
 fn bitfield_estimationcontrolflags_accessors() {
     use mipcodec::types::EstimationControlFlags;
     let mut v = EstimationControlFlags(0);
@@ -976,6 +1530,48 @@ fn bitfield_estimationcontrolflags_accessors() {
     let mut v = EstimationControlFlags(!0);
     v.set_reserved(0);
     assert_eq!(v.0, !0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_externaltimedeltavalidflags_accessors() {
+    use mipcodec::types::ExternalTimeDeltaValidFlags;
+    let mut v = ExternalTimeDeltaValidFlags(0);
+    v.set_dt_nanos(true);
+    assert_eq!(v.0, 0x01, "dt_nanos");
+    assert!(v.dt_nanos());
+    let mut v = ExternalTimeDeltaValidFlags(!0);
+    v.set_dt_nanos(false);
+    assert_eq!(v.0, !0x01, "dt_nanos");
+    assert!(!v.dt_nanos());
+    let mut v = ExternalTimeDeltaValidFlags(0);
+    v.set_reserved(0x7FFF);
+    assert_eq!(v.0, 0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0x7FFF);
+    let mut v = ExternalTimeDeltaValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_externaltimestampvalidflags_accessors() {
+    use mipcodec::types::ExternalTimestampValidFlags;
+    let mut v = ExternalTimestampValidFlags(0);
+    v.set_nanoseconds(true);
+    assert_eq!(v.0, 0x01, "nanoseconds");
+    assert!(v.nanoseconds());
+    let mut v = ExternalTimestampValidFlags(!0);
+    v.set_nanoseconds(false);
+    assert_eq!(v.0, !0x01, "nanoseconds");
+    assert!(!v.nanoseconds());
+    let mut v = ExternalTimestampValidFlags(0);
+    v.set_reserved(0x7FFF);
+    assert_eq!(v.0, 0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0x7FFF);
+    let mut v = ExternalTimestampValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFE, "reserved");
     assert_eq!(v.reserved(), 0);
 }
 
@@ -1500,6 +2096,160 @@ fn bitfield_filterstatusflagsgx5_accessors() {
 }
 
 #[test]
+fn bitfield_gnssbasestationindicators_accessors() {
+    use mipcodec::types::GnssBaseStationIndicators;
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_gps(true);
+    assert_eq!(v.0, 0x01, "gps");
+    assert!(v.gps());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_gps(false);
+    assert_eq!(v.0, !0x01, "gps");
+    assert!(!v.gps());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_glonass(true);
+    assert_eq!(v.0, 0x02, "glonass");
+    assert!(v.glonass());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_glonass(false);
+    assert_eq!(v.0, !0x02, "glonass");
+    assert!(!v.glonass());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_galileo(true);
+    assert_eq!(v.0, 0x04, "galileo");
+    assert!(v.galileo());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_galileo(false);
+    assert_eq!(v.0, !0x04, "galileo");
+    assert!(!v.galileo());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_beidou(true);
+    assert_eq!(v.0, 0x08, "beidou");
+    assert!(v.beidou());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_beidou(false);
+    assert_eq!(v.0, !0x08, "beidou");
+    assert!(!v.beidou());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_ref_station(true);
+    assert_eq!(v.0, 0x10, "ref_station");
+    assert!(v.ref_station());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_ref_station(false);
+    assert_eq!(v.0, !0x10, "ref_station");
+    assert!(!v.ref_station());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_single_receiver(true);
+    assert_eq!(v.0, 0x20, "single_receiver");
+    assert!(v.single_receiver());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_single_receiver(false);
+    assert_eq!(v.0, !0x20, "single_receiver");
+    assert!(!v.single_receiver());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_quarter_cycle_bit1(true);
+    assert_eq!(v.0, 0x40, "quarter_cycle_bit1");
+    assert!(v.quarter_cycle_bit1());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_quarter_cycle_bit1(false);
+    assert_eq!(v.0, !0x40, "quarter_cycle_bit1");
+    assert!(!v.quarter_cycle_bit1());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_quarter_cycle_bit2(true);
+    assert_eq!(v.0, 0x80, "quarter_cycle_bit2");
+    assert!(v.quarter_cycle_bit2());
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_quarter_cycle_bit2(false);
+    assert_eq!(v.0, !0x80, "quarter_cycle_bit2");
+    assert!(!v.quarter_cycle_bit2());
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_quarter_cycle_bits(0x03);
+    assert_eq!(v.0, 0xC0, "quarter_cycle_bits");
+    assert_eq!(v.quarter_cycle_bits(), 0x03);
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_quarter_cycle_bits(0);
+    assert_eq!(v.0, !0xC0, "quarter_cycle_bits");
+    assert_eq!(v.quarter_cycle_bits(), 0);
+    let mut v = GnssBaseStationIndicators(0);
+    v.set_reserved(0xFF);
+    assert_eq!(v.0, 0xFF00, "reserved");
+    assert_eq!(v.reserved(), 0xFF);
+    let mut v = GnssBaseStationIndicators(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFF00, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssbasestationinfovalidflags_accessors() {
+    use mipcodec::types::GnssBaseStationInfoValidFlags;
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_ecef_position(true);
+    assert_eq!(v.0, 0x04, "ecef_position");
+    assert!(v.ecef_position());
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_ecef_position(false);
+    assert_eq!(v.0, !0x04, "ecef_position");
+    assert!(!v.ecef_position());
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_height(true);
+    assert_eq!(v.0, 0x08, "height");
+    assert!(v.height());
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_height(false);
+    assert_eq!(v.0, !0x08, "height");
+    assert!(!v.height());
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_station_id(true);
+    assert_eq!(v.0, 0x10, "station_id");
+    assert!(v.station_id());
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_station_id(false);
+    assert_eq!(v.0, !0x10, "station_id");
+    assert!(!v.station_id());
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_indicators(true);
+    assert_eq!(v.0, 0x20, "indicators");
+    assert!(v.indicators());
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_indicators(false);
+    assert_eq!(v.0, !0x20, "indicators");
+    assert!(!v.indicators());
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_flags(0x3F);
+    assert_eq!(v.0, 0x3F, "flags");
+    assert_eq!(v.flags(), 0x3F);
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x3F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssBaseStationInfoValidFlags(0);
+    v.set_reserved(0x3FF);
+    assert_eq!(v.0, 0xFFC0, "reserved");
+    assert_eq!(v.reserved(), 0x3FF);
+    let mut v = GnssBaseStationInfoValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFC0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
 fn bitfield_gnssbeidousignals_accessors() {
     use mipcodec::types::GnssBeidouSignals;
     let mut v = GnssBeidouSignals(0);
@@ -1529,6 +2279,456 @@ fn bitfield_gnssbeidousignals_accessors() {
 }
 
 #[test]
+fn bitfield_gnssclockinfo2validflags_accessors() {
+    use mipcodec::types::GnssClockInfo2ValidFlags;
+    let mut v = GnssClockInfo2ValidFlags(0);
+    v.set_bias(true);
+    assert_eq!(v.0, 0x01, "bias");
+    assert!(v.bias());
+    let mut v = GnssClockInfo2ValidFlags(!0);
+    v.set_bias(false);
+    assert_eq!(v.0, !0x01, "bias");
+    assert!(!v.bias());
+    let mut v = GnssClockInfo2ValidFlags(0);
+    v.set_drift(true);
+    assert_eq!(v.0, 0x02, "drift");
+    assert!(v.drift());
+    let mut v = GnssClockInfo2ValidFlags(!0);
+    v.set_drift(false);
+    assert_eq!(v.0, !0x02, "drift");
+    assert!(!v.drift());
+    let mut v = GnssClockInfo2ValidFlags(0);
+    v.set_bias_accuracy(true);
+    assert_eq!(v.0, 0x04, "bias_accuracy");
+    assert!(v.bias_accuracy());
+    let mut v = GnssClockInfo2ValidFlags(!0);
+    v.set_bias_accuracy(false);
+    assert_eq!(v.0, !0x04, "bias_accuracy");
+    assert!(!v.bias_accuracy());
+    let mut v = GnssClockInfo2ValidFlags(0);
+    v.set_drift_accuracy(true);
+    assert_eq!(v.0, 0x08, "drift_accuracy");
+    assert!(v.drift_accuracy());
+    let mut v = GnssClockInfo2ValidFlags(!0);
+    v.set_drift_accuracy(false);
+    assert_eq!(v.0, !0x08, "drift_accuracy");
+    assert!(!v.drift_accuracy());
+    let mut v = GnssClockInfo2ValidFlags(0);
+    v.set_flags(0x0F);
+    assert_eq!(v.0, 0x0F, "flags");
+    assert_eq!(v.flags(), 0x0F);
+    let mut v = GnssClockInfo2ValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x0F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssClockInfo2ValidFlags(0);
+    v.set_reserved(0xFFF);
+    assert_eq!(v.0, 0xFFF0, "reserved");
+    assert_eq!(v.reserved(), 0xFFF);
+    let mut v = GnssClockInfo2ValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssclockinfovalidflags_accessors() {
+    use mipcodec::types::GnssClockInfoValidFlags;
+    let mut v = GnssClockInfoValidFlags(0);
+    v.set_bias(true);
+    assert_eq!(v.0, 0x01, "bias");
+    assert!(v.bias());
+    let mut v = GnssClockInfoValidFlags(!0);
+    v.set_bias(false);
+    assert_eq!(v.0, !0x01, "bias");
+    assert!(!v.bias());
+    let mut v = GnssClockInfoValidFlags(0);
+    v.set_drift(true);
+    assert_eq!(v.0, 0x02, "drift");
+    assert!(v.drift());
+    let mut v = GnssClockInfoValidFlags(!0);
+    v.set_drift(false);
+    assert_eq!(v.0, !0x02, "drift");
+    assert!(!v.drift());
+    let mut v = GnssClockInfoValidFlags(0);
+    v.set_accuracy_estimate(true);
+    assert_eq!(v.0, 0x04, "accuracy_estimate");
+    assert!(v.accuracy_estimate());
+    let mut v = GnssClockInfoValidFlags(!0);
+    v.set_accuracy_estimate(false);
+    assert_eq!(v.0, !0x04, "accuracy_estimate");
+    assert!(!v.accuracy_estimate());
+    let mut v = GnssClockInfoValidFlags(0);
+    v.set_reserved(0x1FFF);
+    assert_eq!(v.0, 0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0x1FFF);
+    let mut v = GnssClockInfoValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssdgnsschannelstatusvalidflags_accessors() {
+    use mipcodec::types::GnssDgnssChannelStatusValidFlags;
+    let mut v = GnssDgnssChannelStatusValidFlags(0);
+    v.set_sv_id(true);
+    assert_eq!(v.0, 0x01, "sv_id");
+    assert!(v.sv_id());
+    let mut v = GnssDgnssChannelStatusValidFlags(!0);
+    v.set_sv_id(false);
+    assert_eq!(v.0, !0x01, "sv_id");
+    assert!(!v.sv_id());
+    let mut v = GnssDgnssChannelStatusValidFlags(0);
+    v.set_age(true);
+    assert_eq!(v.0, 0x02, "age");
+    assert!(v.age());
+    let mut v = GnssDgnssChannelStatusValidFlags(!0);
+    v.set_age(false);
+    assert_eq!(v.0, !0x02, "age");
+    assert!(!v.age());
+    let mut v = GnssDgnssChannelStatusValidFlags(0);
+    v.set_pseudorange_correction(true);
+    assert_eq!(v.0, 0x04, "pseudorange_correction");
+    assert!(v.pseudorange_correction());
+    let mut v = GnssDgnssChannelStatusValidFlags(!0);
+    v.set_pseudorange_correction(false);
+    assert_eq!(v.0, !0x04, "pseudorange_correction");
+    assert!(!v.pseudorange_correction());
+    let mut v = GnssDgnssChannelStatusValidFlags(0);
+    v.set_pseudorange_rate_correction(true);
+    assert_eq!(v.0, 0x08, "pseudorange_rate_correction");
+    assert!(v.pseudorange_rate_correction());
+    let mut v = GnssDgnssChannelStatusValidFlags(!0);
+    v.set_pseudorange_rate_correction(false);
+    assert_eq!(v.0, !0x08, "pseudorange_rate_correction");
+    assert!(!v.pseudorange_rate_correction());
+    let mut v = GnssDgnssChannelStatusValidFlags(0);
+    v.set_reserved(0xFFF);
+    assert_eq!(v.0, 0xFFF0, "reserved");
+    assert_eq!(v.reserved(), 0xFFF);
+    let mut v = GnssDgnssChannelStatusValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssdgnssinfovalidflags_accessors() {
+    use mipcodec::types::GnssDgnssInfoValidFlags;
+    let mut v = GnssDgnssInfoValidFlags(0);
+    v.set_latest_age(true);
+    assert_eq!(v.0, 0x01, "latest_age");
+    assert!(v.latest_age());
+    let mut v = GnssDgnssInfoValidFlags(!0);
+    v.set_latest_age(false);
+    assert_eq!(v.0, !0x01, "latest_age");
+    assert!(!v.latest_age());
+    let mut v = GnssDgnssInfoValidFlags(0);
+    v.set_base_station_id(true);
+    assert_eq!(v.0, 0x02, "base_station_id");
+    assert!(v.base_station_id());
+    let mut v = GnssDgnssInfoValidFlags(!0);
+    v.set_base_station_id(false);
+    assert_eq!(v.0, !0x02, "base_station_id");
+    assert!(!v.base_station_id());
+    let mut v = GnssDgnssInfoValidFlags(0);
+    v.set_base_station_status(true);
+    assert_eq!(v.0, 0x04, "base_station_status");
+    assert!(v.base_station_status());
+    let mut v = GnssDgnssInfoValidFlags(!0);
+    v.set_base_station_status(false);
+    assert_eq!(v.0, !0x04, "base_station_status");
+    assert!(!v.base_station_status());
+    let mut v = GnssDgnssInfoValidFlags(0);
+    v.set_num_channels(true);
+    assert_eq!(v.0, 0x08, "num_channels");
+    assert!(v.num_channels());
+    let mut v = GnssDgnssInfoValidFlags(!0);
+    v.set_num_channels(false);
+    assert_eq!(v.0, !0x08, "num_channels");
+    assert!(!v.num_channels());
+    let mut v = GnssDgnssInfoValidFlags(0);
+    v.set_reserved(0xFFF);
+    assert_eq!(v.0, 0xFFF0, "reserved");
+    assert_eq!(v.reserved(), 0xFFF);
+    let mut v = GnssDgnssInfoValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssdopvalidflags_accessors() {
+    use mipcodec::types::GnssDopValidFlags;
+    let mut v = GnssDopValidFlags(0);
+    v.set_gdop(true);
+    assert_eq!(v.0, 0x01, "gdop");
+    assert!(v.gdop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_gdop(false);
+    assert_eq!(v.0, !0x01, "gdop");
+    assert!(!v.gdop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_pdop(true);
+    assert_eq!(v.0, 0x02, "pdop");
+    assert!(v.pdop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_pdop(false);
+    assert_eq!(v.0, !0x02, "pdop");
+    assert!(!v.pdop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_hdop(true);
+    assert_eq!(v.0, 0x04, "hdop");
+    assert!(v.hdop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_hdop(false);
+    assert_eq!(v.0, !0x04, "hdop");
+    assert!(!v.hdop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_vdop(true);
+    assert_eq!(v.0, 0x08, "vdop");
+    assert!(v.vdop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_vdop(false);
+    assert_eq!(v.0, !0x08, "vdop");
+    assert!(!v.vdop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_tdop(true);
+    assert_eq!(v.0, 0x10, "tdop");
+    assert!(v.tdop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_tdop(false);
+    assert_eq!(v.0, !0x10, "tdop");
+    assert!(!v.tdop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_ndop(true);
+    assert_eq!(v.0, 0x20, "ndop");
+    assert!(v.ndop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_ndop(false);
+    assert_eq!(v.0, !0x20, "ndop");
+    assert!(!v.ndop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_edop(true);
+    assert_eq!(v.0, 0x40, "edop");
+    assert!(v.edop());
+    let mut v = GnssDopValidFlags(!0);
+    v.set_edop(false);
+    assert_eq!(v.0, !0x40, "edop");
+    assert!(!v.edop());
+    let mut v = GnssDopValidFlags(0);
+    v.set_flags(0x7F);
+    assert_eq!(v.0, 0x7F, "flags");
+    assert_eq!(v.flags(), 0x7F);
+    let mut v = GnssDopValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x7F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssDopValidFlags(0);
+    v.set_reserved(0x1FF);
+    assert_eq!(v.0, 0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0x1FF);
+    let mut v = GnssDopValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssecefpositionvalidflags_accessors() {
+    use mipcodec::types::GnssEcefPositionValidFlags;
+    let mut v = GnssEcefPositionValidFlags(0);
+    v.set_position(true);
+    assert_eq!(v.0, 0x01, "position");
+    assert!(v.position());
+    let mut v = GnssEcefPositionValidFlags(!0);
+    v.set_position(false);
+    assert_eq!(v.0, !0x01, "position");
+    assert!(!v.position());
+    let mut v = GnssEcefPositionValidFlags(0);
+    v.set_position_accuracy(true);
+    assert_eq!(v.0, 0x02, "position_accuracy");
+    assert!(v.position_accuracy());
+    let mut v = GnssEcefPositionValidFlags(!0);
+    v.set_position_accuracy(false);
+    assert_eq!(v.0, !0x02, "position_accuracy");
+    assert!(!v.position_accuracy());
+    let mut v = GnssEcefPositionValidFlags(0);
+    v.set_flags(0x03);
+    assert_eq!(v.0, 0x03, "flags");
+    assert_eq!(v.flags(), 0x03);
+    let mut v = GnssEcefPositionValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x03, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssEcefPositionValidFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssEcefPositionValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssecefvelocityvalidflags_accessors() {
+    use mipcodec::types::GnssEcefVelocityValidFlags;
+    let mut v = GnssEcefVelocityValidFlags(0);
+    v.set_velocity(true);
+    assert_eq!(v.0, 0x01, "velocity");
+    assert!(v.velocity());
+    let mut v = GnssEcefVelocityValidFlags(!0);
+    v.set_velocity(false);
+    assert_eq!(v.0, !0x01, "velocity");
+    assert!(!v.velocity());
+    let mut v = GnssEcefVelocityValidFlags(0);
+    v.set_velocity_accuracy(true);
+    assert_eq!(v.0, 0x02, "velocity_accuracy");
+    assert!(v.velocity_accuracy());
+    let mut v = GnssEcefVelocityValidFlags(!0);
+    v.set_velocity_accuracy(false);
+    assert_eq!(v.0, !0x02, "velocity_accuracy");
+    assert!(!v.velocity_accuracy());
+    let mut v = GnssEcefVelocityValidFlags(0);
+    v.set_flags(0x03);
+    assert_eq!(v.0, 0x03, "flags");
+    assert_eq!(v.flags(), 0x03);
+    let mut v = GnssEcefVelocityValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x03, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssEcefVelocityValidFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssEcefVelocityValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssephemerisvalidflags_accessors() {
+    use mipcodec::types::GnssEphemerisValidFlags;
+    let mut v = GnssEphemerisValidFlags(0);
+    v.set_ephemeris(true);
+    assert_eq!(v.0, 0x01, "ephemeris");
+    assert!(v.ephemeris());
+    let mut v = GnssEphemerisValidFlags(!0);
+    v.set_ephemeris(false);
+    assert_eq!(v.0, !0x01, "ephemeris");
+    assert!(!v.ephemeris());
+    let mut v = GnssEphemerisValidFlags(0);
+    v.set_modern_data(true);
+    assert_eq!(v.0, 0x02, "modern_data");
+    assert!(v.modern_data());
+    let mut v = GnssEphemerisValidFlags(!0);
+    v.set_modern_data(false);
+    assert_eq!(v.0, !0x02, "modern_data");
+    assert!(!v.modern_data());
+    let mut v = GnssEphemerisValidFlags(0);
+    v.set_isc_l5(true);
+    assert_eq!(v.0, 0x04, "isc_l5");
+    assert!(v.isc_l5());
+    let mut v = GnssEphemerisValidFlags(!0);
+    v.set_isc_l5(false);
+    assert_eq!(v.0, !0x04, "isc_l5");
+    assert!(!v.isc_l5());
+    let mut v = GnssEphemerisValidFlags(0);
+    v.set_flags(0x07);
+    assert_eq!(v.0, 0x07, "flags");
+    assert_eq!(v.flags(), 0x07);
+    let mut v = GnssEphemerisValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x07, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssEphemerisValidFlags(0);
+    v.set_reserved(0x1FFF);
+    assert_eq!(v.0, 0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0x1FFF);
+    let mut v = GnssEphemerisValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssfixflags_accessors() {
+    use mipcodec::types::GnssFixFlags;
+    let mut v = GnssFixFlags(0);
+    v.set_sbas_used(true);
+    assert_eq!(v.0, 0x01, "sbas_used");
+    assert!(v.sbas_used());
+    let mut v = GnssFixFlags(!0);
+    v.set_sbas_used(false);
+    assert_eq!(v.0, !0x01, "sbas_used");
+    assert!(!v.sbas_used());
+    let mut v = GnssFixFlags(0);
+    v.set_dgnss_used(true);
+    assert_eq!(v.0, 0x02, "dgnss_used");
+    assert!(v.dgnss_used());
+    let mut v = GnssFixFlags(!0);
+    v.set_dgnss_used(false);
+    assert_eq!(v.0, !0x02, "dgnss_used");
+    assert!(!v.dgnss_used());
+    let mut v = GnssFixFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssFixFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssfixinfovalidflags_accessors() {
+    use mipcodec::types::GnssFixInfoValidFlags;
+    let mut v = GnssFixInfoValidFlags(0);
+    v.set_fix_type(true);
+    assert_eq!(v.0, 0x01, "fix_type");
+    assert!(v.fix_type());
+    let mut v = GnssFixInfoValidFlags(!0);
+    v.set_fix_type(false);
+    assert_eq!(v.0, !0x01, "fix_type");
+    assert!(!v.fix_type());
+    let mut v = GnssFixInfoValidFlags(0);
+    v.set_num_sv(true);
+    assert_eq!(v.0, 0x02, "num_sv");
+    assert!(v.num_sv());
+    let mut v = GnssFixInfoValidFlags(!0);
+    v.set_num_sv(false);
+    assert_eq!(v.0, !0x02, "num_sv");
+    assert!(!v.num_sv());
+    let mut v = GnssFixInfoValidFlags(0);
+    v.set_fix_flags(true);
+    assert_eq!(v.0, 0x04, "fix_flags");
+    assert!(v.fix_flags());
+    let mut v = GnssFixInfoValidFlags(!0);
+    v.set_fix_flags(false);
+    assert_eq!(v.0, !0x04, "fix_flags");
+    assert!(!v.fix_flags());
+    let mut v = GnssFixInfoValidFlags(0);
+    v.set_flags(0x07);
+    assert_eq!(v.0, 0x07, "flags");
+    assert_eq!(v.flags(), 0x07);
+    let mut v = GnssFixInfoValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x07, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssFixInfoValidFlags(0);
+    v.set_reserved(0x1FFF);
+    assert_eq!(v.0, 0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0x1FFF);
+    let mut v = GnssFixInfoValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
 fn bitfield_gnssgalileosignals_accessors() {
     use mipcodec::types::GnssGalileoSignals;
     let mut v = GnssGalileoSignals(0);
@@ -1555,6 +2755,35 @@ fn bitfield_gnssgalileosignals_accessors() {
     v.set_e5a(false);
     assert_eq!(v.0, !0x04, "e5a");
     assert!(!v.e5a());
+}
+
+#[test]
+fn bitfield_gnssglonassephemerisvalidflags_accessors() {
+    use mipcodec::types::GnssGlonassEphemerisValidFlags;
+    let mut v = GnssGlonassEphemerisValidFlags(0);
+    v.set_ephemeris(true);
+    assert_eq!(v.0, 0x01, "ephemeris");
+    assert!(v.ephemeris());
+    let mut v = GnssGlonassEphemerisValidFlags(!0);
+    v.set_ephemeris(false);
+    assert_eq!(v.0, !0x01, "ephemeris");
+    assert!(!v.ephemeris());
+    let mut v = GnssGlonassEphemerisValidFlags(0);
+    v.set_flags(true);
+    assert_eq!(v.0, 0x01, "flags");
+    assert!(v.flags());
+    let mut v = GnssGlonassEphemerisValidFlags(!0);
+    v.set_flags(false);
+    assert_eq!(v.0, !0x01, "flags");
+    assert!(!v.flags());
+    let mut v = GnssGlonassEphemerisValidFlags(0);
+    v.set_reserved(0x7FFF);
+    assert_eq!(v.0, 0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0x7FFF);
+    let mut v = GnssGlonassEphemerisValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0);
 }
 
 #[test]
@@ -1608,6 +2837,743 @@ fn bitfield_gnssgpssignals_accessors() {
 }
 
 #[test]
+fn bitfield_gnssgpstimevalidflags_accessors() {
+    use mipcodec::types::GnssGpsTimeValidFlags;
+    let mut v = GnssGpsTimeValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = GnssGpsTimeValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = GnssGpsTimeValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = GnssGpsTimeValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = GnssGpsTimeValidFlags(0);
+    v.set_flags(0x03);
+    assert_eq!(v.0, 0x03, "flags");
+    assert_eq!(v.flags(), 0x03);
+    let mut v = GnssGpsTimeValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x03, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssGpsTimeValidFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssGpsTimeValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnsshardwarestatusvalidflags_accessors() {
+    use mipcodec::types::GnssHardwareStatusValidFlags;
+    let mut v = GnssHardwareStatusValidFlags(0);
+    v.set_sensor_state(true);
+    assert_eq!(v.0, 0x01, "sensor_state");
+    assert!(v.sensor_state());
+    let mut v = GnssHardwareStatusValidFlags(!0);
+    v.set_sensor_state(false);
+    assert_eq!(v.0, !0x01, "sensor_state");
+    assert!(!v.sensor_state());
+    let mut v = GnssHardwareStatusValidFlags(0);
+    v.set_antenna_state(true);
+    assert_eq!(v.0, 0x02, "antenna_state");
+    assert!(v.antenna_state());
+    let mut v = GnssHardwareStatusValidFlags(!0);
+    v.set_antenna_state(false);
+    assert_eq!(v.0, !0x02, "antenna_state");
+    assert!(!v.antenna_state());
+    let mut v = GnssHardwareStatusValidFlags(0);
+    v.set_antenna_power(true);
+    assert_eq!(v.0, 0x04, "antenna_power");
+    assert!(v.antenna_power());
+    let mut v = GnssHardwareStatusValidFlags(!0);
+    v.set_antenna_power(false);
+    assert_eq!(v.0, !0x04, "antenna_power");
+    assert!(!v.antenna_power());
+    let mut v = GnssHardwareStatusValidFlags(0);
+    v.set_flags(0x07);
+    assert_eq!(v.0, 0x07, "flags");
+    assert_eq!(v.flags(), 0x07);
+    let mut v = GnssHardwareStatusValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x07, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssHardwareStatusValidFlags(0);
+    v.set_reserved(0x1FFF);
+    assert_eq!(v.0, 0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0x1FFF);
+    let mut v = GnssHardwareStatusValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFF8, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssleapsecondsvalidflags_accessors() {
+    use mipcodec::types::GnssLeapSecondsValidFlags;
+    let mut v = GnssLeapSecondsValidFlags(0);
+    v.set_reserved_0(true);
+    assert_eq!(v.0, 0x01, "reserved_0");
+    assert!(v.reserved_0());
+    let mut v = GnssLeapSecondsValidFlags(!0);
+    v.set_reserved_0(false);
+    assert_eq!(v.0, !0x01, "reserved_0");
+    assert!(!v.reserved_0());
+    let mut v = GnssLeapSecondsValidFlags(0);
+    v.set_leap_seconds(true);
+    assert_eq!(v.0, 0x02, "leap_seconds");
+    assert!(v.leap_seconds());
+    let mut v = GnssLeapSecondsValidFlags(!0);
+    v.set_leap_seconds(false);
+    assert_eq!(v.0, !0x02, "leap_seconds");
+    assert!(!v.leap_seconds());
+    let mut v = GnssLeapSecondsValidFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssLeapSecondsValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssllhpositionvalidflags_accessors() {
+    use mipcodec::types::GnssLlhPositionValidFlags;
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_lat_lon(true);
+    assert_eq!(v.0, 0x01, "lat_lon");
+    assert!(v.lat_lon());
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_lat_lon(false);
+    assert_eq!(v.0, !0x01, "lat_lon");
+    assert!(!v.lat_lon());
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_ellipsoid_height(true);
+    assert_eq!(v.0, 0x02, "ellipsoid_height");
+    assert!(v.ellipsoid_height());
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_ellipsoid_height(false);
+    assert_eq!(v.0, !0x02, "ellipsoid_height");
+    assert!(!v.ellipsoid_height());
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_msl_height(true);
+    assert_eq!(v.0, 0x04, "msl_height");
+    assert!(v.msl_height());
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_msl_height(false);
+    assert_eq!(v.0, !0x04, "msl_height");
+    assert!(!v.msl_height());
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_horizontal_accuracy(true);
+    assert_eq!(v.0, 0x08, "horizontal_accuracy");
+    assert!(v.horizontal_accuracy());
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_horizontal_accuracy(false);
+    assert_eq!(v.0, !0x08, "horizontal_accuracy");
+    assert!(!v.horizontal_accuracy());
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_vertical_accuracy(true);
+    assert_eq!(v.0, 0x10, "vertical_accuracy");
+    assert!(v.vertical_accuracy());
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_vertical_accuracy(false);
+    assert_eq!(v.0, !0x10, "vertical_accuracy");
+    assert!(!v.vertical_accuracy());
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_flags(0x1F);
+    assert_eq!(v.0, 0x1F, "flags");
+    assert_eq!(v.flags(), 0x1F);
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x1F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssLlhPositionValidFlags(0);
+    v.set_reserved(0x7FF);
+    assert_eq!(v.0, 0xFFE0, "reserved");
+    assert_eq!(v.reserved(), 0x7FF);
+    let mut v = GnssLlhPositionValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFE0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssnedvelocityvalidflags_accessors() {
+    use mipcodec::types::GnssNedVelocityValidFlags;
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_velocity(true);
+    assert_eq!(v.0, 0x01, "velocity");
+    assert!(v.velocity());
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_velocity(false);
+    assert_eq!(v.0, !0x01, "velocity");
+    assert!(!v.velocity());
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_speed_3d(true);
+    assert_eq!(v.0, 0x02, "speed_3d");
+    assert!(v.speed_3d());
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_speed_3d(false);
+    assert_eq!(v.0, !0x02, "speed_3d");
+    assert!(!v.speed_3d());
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_ground_speed(true);
+    assert_eq!(v.0, 0x04, "ground_speed");
+    assert!(v.ground_speed());
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_ground_speed(false);
+    assert_eq!(v.0, !0x04, "ground_speed");
+    assert!(!v.ground_speed());
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_heading(true);
+    assert_eq!(v.0, 0x08, "heading");
+    assert!(v.heading());
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_heading(false);
+    assert_eq!(v.0, !0x08, "heading");
+    assert!(!v.heading());
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_speed_accuracy(true);
+    assert_eq!(v.0, 0x10, "speed_accuracy");
+    assert!(v.speed_accuracy());
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_speed_accuracy(false);
+    assert_eq!(v.0, !0x10, "speed_accuracy");
+    assert!(!v.speed_accuracy());
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_heading_accuracy(true);
+    assert_eq!(v.0, 0x20, "heading_accuracy");
+    assert!(v.heading_accuracy());
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_heading_accuracy(false);
+    assert_eq!(v.0, !0x20, "heading_accuracy");
+    assert!(!v.heading_accuracy());
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_flags(0x3F);
+    assert_eq!(v.0, 0x3F, "flags");
+    assert_eq!(v.flags(), 0x3F);
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x3F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssNedVelocityValidFlags(0);
+    v.set_reserved(0x3FF);
+    assert_eq!(v.0, 0xFFC0, "reserved");
+    assert_eq!(v.reserved(), 0x3FF);
+    let mut v = GnssNedVelocityValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFC0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssrawvalidflags_accessors() {
+    use mipcodec::types::GnssRawValidFlags;
+    let mut v = GnssRawValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = GnssRawValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = GnssRawValidFlags(0);
+    v.set_receiver_id(true);
+    assert_eq!(v.0, 0x04, "receiver_id");
+    assert!(v.receiver_id());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_receiver_id(false);
+    assert_eq!(v.0, !0x04, "receiver_id");
+    assert!(!v.receiver_id());
+    let mut v = GnssRawValidFlags(0);
+    v.set_tracking_channel(true);
+    assert_eq!(v.0, 0x08, "tracking_channel");
+    assert!(v.tracking_channel());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_tracking_channel(false);
+    assert_eq!(v.0, !0x08, "tracking_channel");
+    assert!(!v.tracking_channel());
+    let mut v = GnssRawValidFlags(0);
+    v.set_gnss_id(true);
+    assert_eq!(v.0, 0x10, "gnss_id");
+    assert!(v.gnss_id());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_gnss_id(false);
+    assert_eq!(v.0, !0x10, "gnss_id");
+    assert!(!v.gnss_id());
+    let mut v = GnssRawValidFlags(0);
+    v.set_satellite_id(true);
+    assert_eq!(v.0, 0x20, "satellite_id");
+    assert!(v.satellite_id());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_satellite_id(false);
+    assert_eq!(v.0, !0x20, "satellite_id");
+    assert!(!v.satellite_id());
+    let mut v = GnssRawValidFlags(0);
+    v.set_signal_id(true);
+    assert_eq!(v.0, 0x40, "signal_id");
+    assert!(v.signal_id());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_signal_id(false);
+    assert_eq!(v.0, !0x40, "signal_id");
+    assert!(!v.signal_id());
+    let mut v = GnssRawValidFlags(0);
+    v.set_signal_strength(true);
+    assert_eq!(v.0, 0x80, "signal_strength");
+    assert!(v.signal_strength());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_signal_strength(false);
+    assert_eq!(v.0, !0x80, "signal_strength");
+    assert!(!v.signal_strength());
+    let mut v = GnssRawValidFlags(0);
+    v.set_quality(true);
+    assert_eq!(v.0, 0x100, "quality");
+    assert!(v.quality());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_quality(false);
+    assert_eq!(v.0, !0x100, "quality");
+    assert!(!v.quality());
+    let mut v = GnssRawValidFlags(0);
+    v.set_pseudorange(true);
+    assert_eq!(v.0, 0x200, "pseudorange");
+    assert!(v.pseudorange());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_pseudorange(false);
+    assert_eq!(v.0, !0x200, "pseudorange");
+    assert!(!v.pseudorange());
+    let mut v = GnssRawValidFlags(0);
+    v.set_carrier_phase(true);
+    assert_eq!(v.0, 0x400, "carrier_phase");
+    assert!(v.carrier_phase());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_carrier_phase(false);
+    assert_eq!(v.0, !0x400, "carrier_phase");
+    assert!(!v.carrier_phase());
+    let mut v = GnssRawValidFlags(0);
+    v.set_doppler(true);
+    assert_eq!(v.0, 0x800, "doppler");
+    assert!(v.doppler());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_doppler(false);
+    assert_eq!(v.0, !0x800, "doppler");
+    assert!(!v.doppler());
+    let mut v = GnssRawValidFlags(0);
+    v.set_range_uncertainty(true);
+    assert_eq!(v.0, 0x1000, "range_uncertainty");
+    assert!(v.range_uncertainty());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_range_uncertainty(false);
+    assert_eq!(v.0, !0x1000, "range_uncertainty");
+    assert!(!v.range_uncertainty());
+    let mut v = GnssRawValidFlags(0);
+    v.set_carrier_phase_uncertainty(true);
+    assert_eq!(v.0, 0x2000, "carrier_phase_uncertainty");
+    assert!(v.carrier_phase_uncertainty());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_carrier_phase_uncertainty(false);
+    assert_eq!(v.0, !0x2000, "carrier_phase_uncertainty");
+    assert!(!v.carrier_phase_uncertainty());
+    let mut v = GnssRawValidFlags(0);
+    v.set_doppler_uncertainty(true);
+    assert_eq!(v.0, 0x4000, "doppler_uncertainty");
+    assert!(v.doppler_uncertainty());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_doppler_uncertainty(false);
+    assert_eq!(v.0, !0x4000, "doppler_uncertainty");
+    assert!(!v.doppler_uncertainty());
+    let mut v = GnssRawValidFlags(0);
+    v.set_lock_time(true);
+    assert_eq!(v.0, 0x8000, "lock_time");
+    assert!(v.lock_time());
+    let mut v = GnssRawValidFlags(!0);
+    v.set_lock_time(false);
+    assert_eq!(v.0, !0x8000, "lock_time");
+    assert!(!v.lock_time());
+    let mut v = GnssRawValidFlags(0);
+    v.set_flags(0xFFFF);
+    assert_eq!(v.0, 0xFFFF, "flags");
+    assert_eq!(v.flags(), 0xFFFF);
+    let mut v = GnssRawValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0xFFFF, "flags");
+    assert_eq!(v.flags(), 0);
+}
+
+#[test]
+fn bitfield_gnsssatellitestatusvalidflags_accessors() {
+    use mipcodec::types::GnssSatelliteStatusValidFlags;
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_gnss_id(true);
+    assert_eq!(v.0, 0x04, "gnss_id");
+    assert!(v.gnss_id());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_gnss_id(false);
+    assert_eq!(v.0, !0x04, "gnss_id");
+    assert!(!v.gnss_id());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_satellite_id(true);
+    assert_eq!(v.0, 0x08, "satellite_id");
+    assert!(v.satellite_id());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_satellite_id(false);
+    assert_eq!(v.0, !0x08, "satellite_id");
+    assert!(!v.satellite_id());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_elevation(true);
+    assert_eq!(v.0, 0x10, "elevation");
+    assert!(v.elevation());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_elevation(false);
+    assert_eq!(v.0, !0x10, "elevation");
+    assert!(!v.elevation());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_azimuth(true);
+    assert_eq!(v.0, 0x20, "azimuth");
+    assert!(v.azimuth());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_azimuth(false);
+    assert_eq!(v.0, !0x20, "azimuth");
+    assert!(!v.azimuth());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_health(true);
+    assert_eq!(v.0, 0x40, "health");
+    assert!(v.health());
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_health(false);
+    assert_eq!(v.0, !0x40, "health");
+    assert!(!v.health());
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_flags(0x7F);
+    assert_eq!(v.0, 0x7F, "flags");
+    assert_eq!(v.flags(), 0x7F);
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x7F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssSatelliteStatusValidFlags(0);
+    v.set_reserved(0x1FF);
+    assert_eq!(v.0, 0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0x1FF);
+    let mut v = GnssSatelliteStatusValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnsssbasinfovalidflags_accessors() {
+    use mipcodec::types::GnssSbasInfoValidFlags;
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_sbas_system(true);
+    assert_eq!(v.0, 0x04, "sbas_system");
+    assert!(v.sbas_system());
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_sbas_system(false);
+    assert_eq!(v.0, !0x04, "sbas_system");
+    assert!(!v.sbas_system());
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_sbas_id(true);
+    assert_eq!(v.0, 0x08, "sbas_id");
+    assert!(v.sbas_id());
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_sbas_id(false);
+    assert_eq!(v.0, !0x08, "sbas_id");
+    assert!(!v.sbas_id());
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_count(true);
+    assert_eq!(v.0, 0x10, "count");
+    assert!(v.count());
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_count(false);
+    assert_eq!(v.0, !0x10, "count");
+    assert!(!v.count());
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_sbas_status(true);
+    assert_eq!(v.0, 0x20, "sbas_status");
+    assert!(v.sbas_status());
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_sbas_status(false);
+    assert_eq!(v.0, !0x20, "sbas_status");
+    assert!(!v.sbas_status());
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_flags(0x3F);
+    assert_eq!(v.0, 0x3F, "flags");
+    assert_eq!(v.flags(), 0x3F);
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x3F, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssSbasInfoValidFlags(0);
+    v.set_reserved(0x3FF);
+    assert_eq!(v.0, 0xFFC0, "reserved");
+    assert_eq!(v.reserved(), 0x3FF);
+    let mut v = GnssSbasInfoValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFC0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnsssbasstatus_accessors() {
+    use mipcodec::types::GnssSbasStatus;
+    let mut v = GnssSbasStatus(0);
+    v.set_range_available(true);
+    assert_eq!(v.0, 0x01, "range_available");
+    assert!(v.range_available());
+    let mut v = GnssSbasStatus(!0);
+    v.set_range_available(false);
+    assert_eq!(v.0, !0x01, "range_available");
+    assert!(!v.range_available());
+    let mut v = GnssSbasStatus(0);
+    v.set_corrections_available(true);
+    assert_eq!(v.0, 0x02, "corrections_available");
+    assert!(v.corrections_available());
+    let mut v = GnssSbasStatus(!0);
+    v.set_corrections_available(false);
+    assert_eq!(v.0, !0x02, "corrections_available");
+    assert!(!v.corrections_available());
+    let mut v = GnssSbasStatus(0);
+    v.set_integrity_available(true);
+    assert_eq!(v.0, 0x04, "integrity_available");
+    assert!(v.integrity_available());
+    let mut v = GnssSbasStatus(!0);
+    v.set_integrity_available(false);
+    assert_eq!(v.0, !0x04, "integrity_available");
+    assert!(!v.integrity_available());
+    let mut v = GnssSbasStatus(0);
+    v.set_test_mode(true);
+    assert_eq!(v.0, 0x08, "test_mode");
+    assert!(v.test_mode());
+    let mut v = GnssSbasStatus(!0);
+    v.set_test_mode(false);
+    assert_eq!(v.0, !0x08, "test_mode");
+    assert!(!v.test_mode());
+    let mut v = GnssSbasStatus(0);
+    v.set_reserved(0x0F);
+    assert_eq!(v.0, 0xF0, "reserved");
+    assert_eq!(v.reserved(), 0x0F);
+    let mut v = GnssSbasStatus(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xF0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnsssvflags_accessors() {
+    use mipcodec::types::GnssSvFlags;
+    let mut v = GnssSvFlags(0);
+    v.set_used_for_navigation(true);
+    assert_eq!(v.0, 0x01, "used_for_navigation");
+    assert!(v.used_for_navigation());
+    let mut v = GnssSvFlags(!0);
+    v.set_used_for_navigation(false);
+    assert_eq!(v.0, !0x01, "used_for_navigation");
+    assert!(!v.used_for_navigation());
+    let mut v = GnssSvFlags(0);
+    v.set_healthy(true);
+    assert_eq!(v.0, 0x02, "healthy");
+    assert!(v.healthy());
+    let mut v = GnssSvFlags(!0);
+    v.set_healthy(false);
+    assert_eq!(v.0, !0x02, "healthy");
+    assert!(!v.healthy());
+    let mut v = GnssSvFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssSvFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnsssvinfovalidflags_accessors() {
+    use mipcodec::types::GnssSvInfoValidFlags;
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_channel(true);
+    assert_eq!(v.0, 0x01, "channel");
+    assert!(v.channel());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_channel(false);
+    assert_eq!(v.0, !0x01, "channel");
+    assert!(!v.channel());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_sv_id(true);
+    assert_eq!(v.0, 0x02, "sv_id");
+    assert!(v.sv_id());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_sv_id(false);
+    assert_eq!(v.0, !0x02, "sv_id");
+    assert!(!v.sv_id());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_reserved_2(true);
+    assert_eq!(v.0, 0x04, "reserved_2");
+    assert!(v.reserved_2());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_reserved_2(false);
+    assert_eq!(v.0, !0x04, "reserved_2");
+    assert!(!v.reserved_2());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_carrier_to_noise_ratio(true);
+    assert_eq!(v.0, 0x08, "carrier_to_noise_ratio");
+    assert!(v.carrier_to_noise_ratio());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_carrier_to_noise_ratio(false);
+    assert_eq!(v.0, !0x08, "carrier_to_noise_ratio");
+    assert!(!v.carrier_to_noise_ratio());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_azimuth(true);
+    assert_eq!(v.0, 0x10, "azimuth");
+    assert!(v.azimuth());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_azimuth(false);
+    assert_eq!(v.0, !0x10, "azimuth");
+    assert!(!v.azimuth());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_elevation(true);
+    assert_eq!(v.0, 0x20, "elevation");
+    assert!(v.elevation());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_elevation(false);
+    assert_eq!(v.0, !0x20, "elevation");
+    assert!(!v.elevation());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_sv_flags(true);
+    assert_eq!(v.0, 0x40, "sv_flags");
+    assert!(v.sv_flags());
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_sv_flags(false);
+    assert_eq!(v.0, !0x40, "sv_flags");
+    assert!(!v.sv_flags());
+    let mut v = GnssSvInfoValidFlags(0);
+    v.set_reserved(0x1FF);
+    assert_eq!(v.0, 0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0x1FF);
+    let mut v = GnssSvInfoValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFF80, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssutctimevalidflagscv7_accessors() {
+    use mipcodec::types::GnssUtcTimeValidFlagsCv7;
+    let mut v = GnssUtcTimeValidFlagsCv7(0);
+    v.set_gnss_date_time(true);
+    assert_eq!(v.0, 0x01, "gnss_date_time");
+    assert!(v.gnss_date_time());
+    let mut v = GnssUtcTimeValidFlagsCv7(!0);
+    v.set_gnss_date_time(false);
+    assert_eq!(v.0, !0x01, "gnss_date_time");
+    assert!(!v.gnss_date_time());
+    let mut v = GnssUtcTimeValidFlagsCv7(0);
+    v.set_leap_seconds_known(true);
+    assert_eq!(v.0, 0x02, "leap_seconds_known");
+    assert!(v.leap_seconds_known());
+    let mut v = GnssUtcTimeValidFlagsCv7(!0);
+    v.set_leap_seconds_known(false);
+    assert_eq!(v.0, !0x02, "leap_seconds_known");
+    assert!(!v.leap_seconds_known());
+    let mut v = GnssUtcTimeValidFlagsCv7(0);
+    v.set_flags(0x03);
+    assert_eq!(v.0, 0x03, "flags");
+    assert_eq!(v.flags(), 0x03);
+    let mut v = GnssUtcTimeValidFlagsCv7(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0x03, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = GnssUtcTimeValidFlagsCv7(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssUtcTimeValidFlagsCv7(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_gnssutctimevalidflagsgx5_accessors() {
+    use mipcodec::types::GnssUtcTimeValidFlagsGx5;
+    let mut v = GnssUtcTimeValidFlagsGx5(0);
+    v.set_date_valid(true);
+    assert_eq!(v.0, 0x01, "date_valid");
+    assert!(v.date_valid());
+    let mut v = GnssUtcTimeValidFlagsGx5(!0);
+    v.set_date_valid(false);
+    assert_eq!(v.0, !0x01, "date_valid");
+    assert!(!v.date_valid());
+    let mut v = GnssUtcTimeValidFlagsGx5(0);
+    v.set_time_valid(true);
+    assert_eq!(v.0, 0x02, "time_valid");
+    assert!(v.time_valid());
+    let mut v = GnssUtcTimeValidFlagsGx5(!0);
+    v.set_time_valid(false);
+    assert_eq!(v.0, !0x02, "time_valid");
+    assert!(!v.time_valid());
+    let mut v = GnssUtcTimeValidFlagsGx5(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = GnssUtcTimeValidFlagsGx5(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
 fn bitfield_gpiopinmode_accessors() {
     use mipcodec::types::GpioPinMode;
     let mut v = GpioPinMode(0);
@@ -1634,6 +3600,51 @@ fn bitfield_gpiopinmode_accessors() {
     v.set_pullup(false);
     assert_eq!(v.0, !0x04, "pullup");
     assert!(!v.pullup());
+}
+
+#[test]
+fn bitfield_gpiopinstates_accessors() {
+    use mipcodec::types::GpioPinStates;
+    let mut v = GpioPinStates(0);
+    v.set_pin_1(true);
+    assert_eq!(v.0, 0x01, "pin_1");
+    assert!(v.pin_1());
+    let mut v = GpioPinStates(!0);
+    v.set_pin_1(false);
+    assert_eq!(v.0, !0x01, "pin_1");
+    assert!(!v.pin_1());
+    let mut v = GpioPinStates(0);
+    v.set_pin_2(true);
+    assert_eq!(v.0, 0x02, "pin_2");
+    assert!(v.pin_2());
+    let mut v = GpioPinStates(!0);
+    v.set_pin_2(false);
+    assert_eq!(v.0, !0x02, "pin_2");
+    assert!(!v.pin_2());
+    let mut v = GpioPinStates(0);
+    v.set_pin_3(true);
+    assert_eq!(v.0, 0x04, "pin_3");
+    assert!(v.pin_3());
+    let mut v = GpioPinStates(!0);
+    v.set_pin_3(false);
+    assert_eq!(v.0, !0x04, "pin_3");
+    assert!(!v.pin_3());
+    let mut v = GpioPinStates(0);
+    v.set_pin_4(true);
+    assert_eq!(v.0, 0x08, "pin_4");
+    assert!(v.pin_4());
+    let mut v = GpioPinStates(!0);
+    v.set_pin_4(false);
+    assert_eq!(v.0, !0x08, "pin_4");
+    assert!(!v.pin_4());
+    let mut v = GpioPinStates(0);
+    v.set_reserved(0x0F);
+    assert_eq!(v.0, 0xF0, "reserved");
+    assert_eq!(v.reserved(), 0x0F);
+    let mut v = GpioPinStates(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xF0, "reserved");
+    assert_eq!(v.reserved(), 0);
 }
 
 #[test]
@@ -1719,6 +3730,314 @@ fn bitfield_headingalignmentmethods_accessors() {
 }
 
 #[test]
+fn bitfield_odometerdatavalidflags_accessors() {
+    use mipcodec::types::OdometerDataValidFlags;
+    let mut v = OdometerDataValidFlags(0);
+    v.set_valid(true);
+    assert_eq!(v.0, 0x01, "valid");
+    assert!(v.valid());
+    let mut v = OdometerDataValidFlags(!0);
+    v.set_valid(false);
+    assert_eq!(v.0, !0x01, "valid");
+    assert!(!v.valid());
+    let mut v = OdometerDataValidFlags(0);
+    v.set_reserved(0x7FFF);
+    assert_eq!(v.0, 0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0x7FFF);
+    let mut v = OdometerDataValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFE, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_overrangestatusflags_accessors() {
+    use mipcodec::types::OverrangeStatusFlags;
+    let mut v = OverrangeStatusFlags(0);
+    v.set_accel_x(true);
+    assert_eq!(v.0, 0x01, "accel_x");
+    assert!(v.accel_x());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_accel_x(false);
+    assert_eq!(v.0, !0x01, "accel_x");
+    assert!(!v.accel_x());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_accel_y(true);
+    assert_eq!(v.0, 0x02, "accel_y");
+    assert!(v.accel_y());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_accel_y(false);
+    assert_eq!(v.0, !0x02, "accel_y");
+    assert!(!v.accel_y());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_accel_z(true);
+    assert_eq!(v.0, 0x04, "accel_z");
+    assert!(v.accel_z());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_accel_z(false);
+    assert_eq!(v.0, !0x04, "accel_z");
+    assert!(!v.accel_z());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_reserved_3(true);
+    assert_eq!(v.0, 0x08, "reserved_3");
+    assert!(v.reserved_3());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_reserved_3(false);
+    assert_eq!(v.0, !0x08, "reserved_3");
+    assert!(!v.reserved_3());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_gyro_x(true);
+    assert_eq!(v.0, 0x10, "gyro_x");
+    assert!(v.gyro_x());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_gyro_x(false);
+    assert_eq!(v.0, !0x10, "gyro_x");
+    assert!(!v.gyro_x());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_gyro_y(true);
+    assert_eq!(v.0, 0x20, "gyro_y");
+    assert!(v.gyro_y());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_gyro_y(false);
+    assert_eq!(v.0, !0x20, "gyro_y");
+    assert!(!v.gyro_y());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_gyro_z(true);
+    assert_eq!(v.0, 0x40, "gyro_z");
+    assert!(v.gyro_z());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_gyro_z(false);
+    assert_eq!(v.0, !0x40, "gyro_z");
+    assert!(!v.gyro_z());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_reserved_7(true);
+    assert_eq!(v.0, 0x80, "reserved_7");
+    assert!(v.reserved_7());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_reserved_7(false);
+    assert_eq!(v.0, !0x80, "reserved_7");
+    assert!(!v.reserved_7());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_mag_x(true);
+    assert_eq!(v.0, 0x100, "mag_x");
+    assert!(v.mag_x());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_mag_x(false);
+    assert_eq!(v.0, !0x100, "mag_x");
+    assert!(!v.mag_x());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_mag_y(true);
+    assert_eq!(v.0, 0x200, "mag_y");
+    assert!(v.mag_y());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_mag_y(false);
+    assert_eq!(v.0, !0x200, "mag_y");
+    assert!(!v.mag_y());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_mag_z(true);
+    assert_eq!(v.0, 0x400, "mag_z");
+    assert!(v.mag_z());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_mag_z(false);
+    assert_eq!(v.0, !0x400, "mag_z");
+    assert!(!v.mag_z());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_reserved_11(true);
+    assert_eq!(v.0, 0x800, "reserved_11");
+    assert!(v.reserved_11());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_reserved_11(false);
+    assert_eq!(v.0, !0x800, "reserved_11");
+    assert!(!v.reserved_11());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_press(true);
+    assert_eq!(v.0, 0x1000, "press");
+    assert!(v.press());
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_press(false);
+    assert_eq!(v.0, !0x1000, "press");
+    assert!(!v.press());
+    let mut v = OverrangeStatusFlags(0);
+    v.set_reserved_13_15(0x07);
+    assert_eq!(v.0, 0xE000, "reserved_13_15");
+    assert_eq!(v.reserved_13_15(), 0x07);
+    let mut v = OverrangeStatusFlags(!0);
+    v.set_reserved_13_15(0);
+    assert_eq!(v.0, !0xE000, "reserved_13_15");
+    assert_eq!(v.reserved_13_15(), 0);
+}
+
+#[test]
+fn bitfield_rtkcorrectionsepochstatus_accessors() {
+    use mipcodec::types::RtkCorrectionsEpochStatus;
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_antenna_location_received(true);
+    assert_eq!(v.0, 0x01, "antenna_location_received");
+    assert!(v.antenna_location_received());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_antenna_location_received(false);
+    assert_eq!(v.0, !0x01, "antenna_location_received");
+    assert!(!v.antenna_location_received());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_antenna_description_received(true);
+    assert_eq!(v.0, 0x02, "antenna_description_received");
+    assert!(v.antenna_description_received());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_antenna_description_received(false);
+    assert_eq!(v.0, !0x02, "antenna_description_received");
+    assert!(!v.antenna_description_received());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_gps_received(true);
+    assert_eq!(v.0, 0x04, "gps_received");
+    assert!(v.gps_received());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_gps_received(false);
+    assert_eq!(v.0, !0x04, "gps_received");
+    assert!(!v.gps_received());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_glonass_received(true);
+    assert_eq!(v.0, 0x08, "glonass_received");
+    assert!(v.glonass_received());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_glonass_received(false);
+    assert_eq!(v.0, !0x08, "glonass_received");
+    assert!(!v.glonass_received());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_galileo_received(true);
+    assert_eq!(v.0, 0x10, "galileo_received");
+    assert!(v.galileo_received());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_galileo_received(false);
+    assert_eq!(v.0, !0x10, "galileo_received");
+    assert!(!v.galileo_received());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_beidou_received(true);
+    assert_eq!(v.0, 0x20, "beidou_received");
+    assert!(v.beidou_received());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_beidou_received(false);
+    assert_eq!(v.0, !0x20, "beidou_received");
+    assert!(!v.beidou_received());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_using_gps_msm_messages(true);
+    assert_eq!(v.0, 0x40, "using_gps_msm_messages");
+    assert!(v.using_gps_msm_messages());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_using_gps_msm_messages(false);
+    assert_eq!(v.0, !0x40, "using_gps_msm_messages");
+    assert!(!v.using_gps_msm_messages());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_using_glonass_msm_messages(true);
+    assert_eq!(v.0, 0x80, "using_glonass_msm_messages");
+    assert!(v.using_glonass_msm_messages());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_using_glonass_msm_messages(false);
+    assert_eq!(v.0, !0x80, "using_glonass_msm_messages");
+    assert!(!v.using_glonass_msm_messages());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_dongle_status_read_failed(true);
+    assert_eq!(v.0, 0x100, "dongle_status_read_failed");
+    assert!(v.dongle_status_read_failed());
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_dongle_status_read_failed(false);
+    assert_eq!(v.0, !0x100, "dongle_status_read_failed");
+    assert!(!v.dongle_status_read_failed());
+    let mut v = RtkCorrectionsEpochStatus(0);
+    v.set_reserved(0x7F);
+    assert_eq!(v.0, 0xFE00, "reserved");
+    assert_eq!(v.reserved(), 0x7F);
+    let mut v = RtkCorrectionsEpochStatus(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFE00, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_rtkcorrectionsstatusvalidflags_accessors() {
+    use mipcodec::types::RtkCorrectionsStatusValidFlags;
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_epoch_status(true);
+    assert_eq!(v.0, 0x04, "epoch_status");
+    assert!(v.epoch_status());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_epoch_status(false);
+    assert_eq!(v.0, !0x04, "epoch_status");
+    assert!(!v.epoch_status());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_dongle_status(true);
+    assert_eq!(v.0, 0x08, "dongle_status");
+    assert!(v.dongle_status());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_dongle_status(false);
+    assert_eq!(v.0, !0x08, "dongle_status");
+    assert!(!v.dongle_status());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_gps_latency(true);
+    assert_eq!(v.0, 0x10, "gps_latency");
+    assert!(v.gps_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_gps_latency(false);
+    assert_eq!(v.0, !0x10, "gps_latency");
+    assert!(!v.gps_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_glonass_latency(true);
+    assert_eq!(v.0, 0x20, "glonass_latency");
+    assert!(v.glonass_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_glonass_latency(false);
+    assert_eq!(v.0, !0x20, "glonass_latency");
+    assert!(!v.glonass_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_galileo_latency(true);
+    assert_eq!(v.0, 0x40, "galileo_latency");
+    assert!(v.galileo_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_galileo_latency(false);
+    assert_eq!(v.0, !0x40, "galileo_latency");
+    assert!(!v.galileo_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_beidou_latency(true);
+    assert_eq!(v.0, 0x80, "beidou_latency");
+    assert!(v.beidou_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_beidou_latency(false);
+    assert_eq!(v.0, !0x80, "beidou_latency");
+    assert!(!v.beidou_latency());
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_flags(0xFF);
+    assert_eq!(v.0, 0xFF, "flags");
+    assert_eq!(v.flags(), 0xFF);
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_flags(0);
+    assert_eq!(v.0, !0xFF, "flags");
+    assert_eq!(v.flags(), 0);
+    let mut v = RtkCorrectionsStatusValidFlags(0);
+    v.set_reserved(0xFF);
+    assert_eq!(v.0, 0xFF00, "reserved");
+    assert_eq!(v.reserved(), 0xFF);
+    let mut v = RtkCorrectionsStatusValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFF00, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
 fn bitfield_sbasoptions_accessors() {
     use mipcodec::types::SbasOptions;
     let mut v = SbasOptions(0);
@@ -1745,6 +4064,96 @@ fn bitfield_sbasoptions_accessors() {
     v.set_apply_integrity(false);
     assert_eq!(v.0, !0x04, "apply_integrity");
     assert!(!v.apply_integrity());
+}
+
+#[test]
+fn bitfield_sensorgpstimestampflags_accessors() {
+    use mipcodec::types::SensorGpsTimestampFlags;
+    let mut v = SensorGpsTimestampFlags(0);
+    v.set_pps_valid(true);
+    assert_eq!(v.0, 0x01, "pps_valid");
+    assert!(v.pps_valid());
+    let mut v = SensorGpsTimestampFlags(!0);
+    v.set_pps_valid(false);
+    assert_eq!(v.0, !0x01, "pps_valid");
+    assert!(!v.pps_valid());
+    let mut v = SensorGpsTimestampFlags(0);
+    v.set_time_refresh(true);
+    assert_eq!(v.0, 0x02, "time_refresh");
+    assert!(v.time_refresh());
+    let mut v = SensorGpsTimestampFlags(!0);
+    v.set_time_refresh(false);
+    assert_eq!(v.0, !0x02, "time_refresh");
+    assert!(!v.time_refresh());
+    let mut v = SensorGpsTimestampFlags(0);
+    v.set_time_initialized(true);
+    assert_eq!(v.0, 0x04, "time_initialized");
+    assert!(v.time_initialized());
+    let mut v = SensorGpsTimestampFlags(!0);
+    v.set_time_initialized(false);
+    assert_eq!(v.0, !0x04, "time_initialized");
+    assert!(!v.time_initialized());
+    let mut v = SensorGpsTimestampFlags(0);
+    v.set_tow_valid(true);
+    assert_eq!(v.0, 0x08, "tow_valid");
+    assert!(v.tow_valid());
+    let mut v = SensorGpsTimestampFlags(!0);
+    v.set_tow_valid(false);
+    assert_eq!(v.0, !0x08, "tow_valid");
+    assert!(!v.tow_valid());
+    let mut v = SensorGpsTimestampFlags(0);
+    v.set_week_number_valid(true);
+    assert_eq!(v.0, 0x10, "week_number_valid");
+    assert!(v.week_number_valid());
+    let mut v = SensorGpsTimestampFlags(!0);
+    v.set_week_number_valid(false);
+    assert_eq!(v.0, !0x10, "week_number_valid");
+    assert!(!v.week_number_valid());
+    let mut v = SensorGpsTimestampFlags(0);
+    v.set_reserved(0x7FF);
+    assert_eq!(v.0, 0xFFE0, "reserved");
+    assert_eq!(v.reserved(), 0x7FF);
+    let mut v = SensorGpsTimestampFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFE0, "reserved");
+    assert_eq!(v.reserved(), 0);
+}
+
+#[test]
+fn bitfield_sharedgpstimestampvalidflags_accessors() {
+    use mipcodec::types::SharedGpsTimestampValidFlags;
+    let mut v = SharedGpsTimestampValidFlags(0);
+    v.set_tow(true);
+    assert_eq!(v.0, 0x01, "tow");
+    assert!(v.tow());
+    let mut v = SharedGpsTimestampValidFlags(!0);
+    v.set_tow(false);
+    assert_eq!(v.0, !0x01, "tow");
+    assert!(!v.tow());
+    let mut v = SharedGpsTimestampValidFlags(0);
+    v.set_week_number(true);
+    assert_eq!(v.0, 0x02, "week_number");
+    assert!(v.week_number());
+    let mut v = SharedGpsTimestampValidFlags(!0);
+    v.set_week_number(false);
+    assert_eq!(v.0, !0x02, "week_number");
+    assert!(!v.week_number());
+    let mut v = SharedGpsTimestampValidFlags(0);
+    v.set_time_valid(0x03);
+    assert_eq!(v.0, 0x03, "time_valid");
+    assert_eq!(v.time_valid(), 0x03);
+    let mut v = SharedGpsTimestampValidFlags(!0);
+    v.set_time_valid(0);
+    assert_eq!(v.0, !0x03, "time_valid");
+    assert_eq!(v.time_valid(), 0);
+    let mut v = SharedGpsTimestampValidFlags(0);
+    v.set_reserved(0x3FFF);
+    assert_eq!(v.0, 0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0x3FFF);
+    let mut v = SharedGpsTimestampValidFlags(!0);
+    v.set_reserved(0);
+    assert_eq!(v.0, !0xFFFC, "reserved");
+    assert_eq!(v.reserved(), 0);
 }
 
 #[test]
@@ -1943,7 +4352,7 @@ fn fixed_layout_errors() {
         mipcodec::base::ContinuousBitResult::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
-        Err("result[0]: needs 1 bytes at offset 0, 0 left".to_string()),
+        Err("result.system_byte_0: needs 1 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
         mipcodec::base::ContinuousBitResult::decode_data(&[0u8; 17])
@@ -4226,6 +6635,306 @@ fn fixed_layout_errors() {
         Err("1 unexpected bytes at offset 12".to_string()),
     );
     assert_eq!(
+        mipcodec::sensor::DeltaTheta::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("delta_theta[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::DeltaTheta::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::DeltaVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("delta_velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::DeltaVelocity::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfOrientationMatrix::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("m[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfOrientationMatrix::decode_data(&[0u8; 37])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 36".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfQuaternion::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("q[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfQuaternion::decode_data(&[0u8; 17])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 16".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfEulerAngles::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("roll: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfEulerAngles::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfStabilizedNorth::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("stabilized_north[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfStabilizedNorth::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfStabilizedUp::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("stabilized_up[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::CfStabilizedUp::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::GpsTimestamp::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::GpsTimestamp::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::TemperatureStatistics::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("min_temp: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::TemperatureStatistics::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::ScaledPressure::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("scaled_pressure: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::ScaledPressure::decode_data(&[0u8; 5])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 4".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::OverrangeStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("status: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::OverrangeStatus::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::OdometerData::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("speed: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::sensor::OdometerData::decode_data(&[0u8; 11])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 10".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::LlhPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("latitude: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::LlhPosition::decode_data(&[0u8; 43])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 42".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::EcefPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("position[0]: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::EcefPosition::decode_data(&[0u8; 31])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 30".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::NedVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::NedVelocity::decode_data(&[0u8; 35])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 34".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::EcefVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::EcefVelocity::decode_data(&[0u8; 19])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 18".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::Dop::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gdop: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::Dop::decode_data(&[0u8; 31])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 30".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::UtcTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("year: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::UtcTime::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::GpsTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::GpsTime::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::ClockInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::ClockInfo::decode_data(&[0u8; 27])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 26".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::FixInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("fix_type: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::FixInfo::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::SvInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("channel: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::SvInfo::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::HardwareStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_state: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::HardwareStatus::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::DgnssInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("newest_age: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::DgnssInfo::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::DgnssChannelStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("sv_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_data::DgnssChannelStatus::decode_data(&[0u8; 16])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 15".to_string()),
+    );
+    assert_eq!(
         mipcodec::filter_data::LlhPosition::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
@@ -4812,6 +7521,642 @@ fn fixed_layout_errors() {
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::LlhPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("latitude: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::LlhPosition::decode_data(&[0u8; 43])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 42".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::EcefPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("position[0]: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::EcefPosition::decode_data(&[0u8; 31])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 30".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::NedVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::NedVelocity::decode_data(&[0u8; 35])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 34".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::EcefVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::EcefVelocity::decode_data(&[0u8; 19])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 18".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::Dop::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gdop: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::Dop::decode_data(&[0u8; 31])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 30".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::UtcTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("year: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::UtcTime::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GpsTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GpsTime::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::FixInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("fix_type: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::FixInfo::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::HardwareStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_state: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::HardwareStatus::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::ClockInfo2::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::ClockInfo2::decode_data(&[0u8; 35])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 34".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GpsLeapSeconds::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("leap_seconds: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GpsLeapSeconds::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::SbasInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::SbasInfo::decode_data(&[0u8; 17])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 16".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::SatelliteStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::SatelliteStatus::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::Raw::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::Raw::decode_data(&[0u8; 62])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 61".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GpsEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GpsEphemeris::decode_data(&[0u8; 219])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 218".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GlonassEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GlonassEphemeris::decode_data(&[0u8; 103])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 102".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GalileoEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::GalileoEphemeris::decode_data(&[0u8; 219])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 218".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::BeidouEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_1::BeidouEphemeris::decode_data(&[0u8; 219])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 218".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::LlhPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("latitude: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::LlhPosition::decode_data(&[0u8; 43])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 42".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::EcefPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("position[0]: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::EcefPosition::decode_data(&[0u8; 31])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 30".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::NedVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::NedVelocity::decode_data(&[0u8; 35])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 34".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::EcefVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::EcefVelocity::decode_data(&[0u8; 19])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 18".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::Dop::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("gdop: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::Dop::decode_data(&[0u8; 31])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 30".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::UtcTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("year: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::UtcTime::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GpsTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GpsTime::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::FixInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("fix_type: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::FixInfo::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::HardwareStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("receiver_state: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::HardwareStatus::decode_data(&[0u8; 6])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 5".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::ClockInfo2::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("bias: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::ClockInfo2::decode_data(&[0u8; 35])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 34".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GpsLeapSeconds::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("leap_seconds: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GpsLeapSeconds::decode_data(&[0u8; 4])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 3".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::SbasInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::SbasInfo::decode_data(&[0u8; 17])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 16".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::SatelliteStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::SatelliteStatus::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::Raw::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::Raw::decode_data(&[0u8; 62])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 61".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GpsEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GpsEphemeris::decode_data(&[0u8; 219])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 218".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GlonassEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GlonassEphemeris::decode_data(&[0u8; 103])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 102".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GalileoEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::GalileoEphemeris::decode_data(&[0u8; 219])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 218".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::BeidouEphemeris::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_receiver_2::BeidouEphemeris::decode_data(&[0u8; 219])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 218".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_corrections::BaseStationInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_corrections::BaseStationInfo::decode_data(&[0u8; 45])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 44".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_corrections::RtkCorrectionsStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_corrections::RtkCorrectionsStatus::decode_data(&[0u8; 51])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 50".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::LlhPosition::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("latitude: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::LlhPosition::decode_data(&[0u8; 43])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 42".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::NedVelocity::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("velocity[0]: needs 4 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::NedVelocity::decode_data(&[0u8; 35])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 34".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::UtcTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("year: needs 2 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::UtcTime::decode_data(&[0u8; 14])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 13".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::FixInfo::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("fix_type: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::FixInfo::decode_data(&[0u8; 7])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 6".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::SatelliteStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("index: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::gnss_external::SatelliteStatus::decode_data(&[0u8; 26])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 25".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system_data::BuiltInTest::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("result.system_byte_0: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system_data::BuiltInTest::decode_data(&[0u8; 17])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 16".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system_data::TimeSyncStatus::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("time_sync: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system_data::TimeSyncStatus::decode_data(&[0u8; 3])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 2".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system_data::GpioState::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("states: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::system_data::GpioState::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::EventSource::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("trigger_id: needs 1 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::EventSource::decode_data(&[0u8; 2])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 1".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::GpsTimestamp::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("tow: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::GpsTimestamp::decode_data(&[0u8; 13])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 12".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::DeltaTime::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("seconds: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::DeltaTime::decode_data(&[0u8; 9])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 8".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ReferenceTimestamp::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("nanoseconds: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ReferenceTimestamp::decode_data(&[0u8; 9])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 8".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ReferenceTimeDelta::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("dt_nanos: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ReferenceTimeDelta::decode_data(&[0u8; 9])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 8".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ExternalTimestamp::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("nanoseconds: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ExternalTimestamp::decode_data(&[0u8; 11])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 10".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ExternalTimeDelta::decode_data(&[])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("dt_nanos: needs 8 bytes at offset 0, 0 left".to_string()),
+    );
+    assert_eq!(
+        mipcodec::shared::ExternalTimeDelta::decode_data(&[0u8; 11])
+            .map(|_| ())
+            .map_err(|e| e.to_string()),
+        Err("1 unexpected bytes at offset 10".to_string()),
     );
     assert_eq!(
         mipcodec::reserved::AckNack::decode_data(&[])
@@ -8028,6 +11373,400 @@ fn zero_values_round_trip_through_packets() {
         assert!(fields.next().is_none());
     }
     {
+        use mipcodec::sensor::DeltaTheta;
+        let value = DeltaTheta::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::sensor::DeltaTheta::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeltaTheta: no field");
+        };
+        assert_eq!(descriptor, <DeltaTheta as Layout>::DESCRIPTOR);
+        assert_eq!(DeltaTheta::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::DeltaVelocity;
+        let value = DeltaVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::DeltaVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeltaVelocity: no field");
+        };
+        assert_eq!(descriptor, <DeltaVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(DeltaVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::CfOrientationMatrix;
+        let value = CfOrientationMatrix::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::CfOrientationMatrix::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CfOrientationMatrix: no field");
+        };
+        assert_eq!(descriptor, <CfOrientationMatrix as Layout>::DESCRIPTOR);
+        assert_eq!(CfOrientationMatrix::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::CfQuaternion;
+        let value = CfQuaternion::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::CfQuaternion::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CfQuaternion: no field");
+        };
+        assert_eq!(descriptor, <CfQuaternion as Layout>::DESCRIPTOR);
+        assert_eq!(CfQuaternion::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::CfEulerAngles;
+        let value = CfEulerAngles::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::CfEulerAngles::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CfEulerAngles: no field");
+        };
+        assert_eq!(descriptor, <CfEulerAngles as Layout>::DESCRIPTOR);
+        assert_eq!(CfEulerAngles::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::CfStabilizedNorth;
+        let value = CfStabilizedNorth::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::CfStabilizedNorth::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CfStabilizedNorth: no field");
+        };
+        assert_eq!(descriptor, <CfStabilizedNorth as Layout>::DESCRIPTOR);
+        assert_eq!(CfStabilizedNorth::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::CfStabilizedUp;
+        let value = CfStabilizedUp::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::CfStabilizedUp::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("CfStabilizedUp: no field");
+        };
+        assert_eq!(descriptor, <CfStabilizedUp as Layout>::DESCRIPTOR);
+        assert_eq!(CfStabilizedUp::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::GpsTimestamp;
+        let value = GpsTimestamp::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::GpsTimestamp::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsTimestamp: no field");
+        };
+        assert_eq!(descriptor, <GpsTimestamp as Layout>::DESCRIPTOR);
+        assert_eq!(GpsTimestamp::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::TemperatureStatistics;
+        let value = TemperatureStatistics::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::TemperatureStatistics::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("TemperatureStatistics: no field");
+        };
+        assert_eq!(descriptor, <TemperatureStatistics as Layout>::DESCRIPTOR);
+        assert_eq!(TemperatureStatistics::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::ScaledPressure;
+        let value = ScaledPressure::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::ScaledPressure::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ScaledPressure: no field");
+        };
+        assert_eq!(descriptor, <ScaledPressure as Layout>::DESCRIPTOR);
+        assert_eq!(ScaledPressure::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::OverrangeStatus;
+        let value = OverrangeStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::OverrangeStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("OverrangeStatus: no field");
+        };
+        assert_eq!(descriptor, <OverrangeStatus as Layout>::DESCRIPTOR);
+        assert_eq!(OverrangeStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::sensor::OdometerData;
+        let value = OdometerData::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::sensor::OdometerData::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("OdometerData: no field");
+        };
+        assert_eq!(descriptor, <OdometerData as Layout>::DESCRIPTOR);
+        assert_eq!(OdometerData::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::LlhPosition;
+        let value = LlhPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::LlhPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPosition: no field");
+        };
+        assert_eq!(descriptor, <LlhPosition as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::EcefPosition;
+        let value = EcefPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::EcefPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefPosition: no field");
+        };
+        assert_eq!(descriptor, <EcefPosition as Layout>::DESCRIPTOR);
+        assert_eq!(EcefPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::NedVelocity;
+        let value = NedVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::NedVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocity: no field");
+        };
+        assert_eq!(descriptor, <NedVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::EcefVelocity;
+        let value = EcefVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::EcefVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefVelocity: no field");
+        };
+        assert_eq!(descriptor, <EcefVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(EcefVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::Dop;
+        let value = Dop::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::Dop::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Dop: no field");
+        };
+        assert_eq!(descriptor, <Dop as Layout>::DESCRIPTOR);
+        assert_eq!(Dop::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::UtcTime;
+        let value = UtcTime::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::UtcTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("UtcTime: no field");
+        };
+        assert_eq!(descriptor, <UtcTime as Layout>::DESCRIPTOR);
+        assert_eq!(UtcTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::GpsTime;
+        let value = GpsTime::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::GpsTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsTime: no field");
+        };
+        assert_eq!(descriptor, <GpsTime as Layout>::DESCRIPTOR);
+        assert_eq!(GpsTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::ClockInfo;
+        let value = ClockInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::ClockInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ClockInfo: no field");
+        };
+        assert_eq!(descriptor, <ClockInfo as Layout>::DESCRIPTOR);
+        assert_eq!(ClockInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::FixInfo;
+        let value = FixInfo::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::FixInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FixInfo: no field");
+        };
+        assert_eq!(descriptor, <FixInfo as Layout>::DESCRIPTOR);
+        assert_eq!(FixInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::SvInfo;
+        let value = SvInfo::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::SvInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SvInfo: no field");
+        };
+        assert_eq!(descriptor, <SvInfo as Layout>::DESCRIPTOR);
+        assert_eq!(SvInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::HardwareStatus;
+        let value = HardwareStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::HardwareStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HardwareStatus: no field");
+        };
+        assert_eq!(descriptor, <HardwareStatus as Layout>::DESCRIPTOR);
+        assert_eq!(HardwareStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::DgnssInfo;
+        let value = DgnssInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::DgnssInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DgnssInfo: no field");
+        };
+        assert_eq!(descriptor, <DgnssInfo as Layout>::DESCRIPTOR);
+        assert_eq!(DgnssInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_data::DgnssChannelStatus;
+        let value = DgnssChannelStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_data::DgnssChannelStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DgnssChannelStatus: no field");
+        };
+        assert_eq!(descriptor, <DgnssChannelStatus as Layout>::DESCRIPTOR);
+        assert_eq!(DgnssChannelStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
         use mipcodec::filter_data::LlhPosition;
         let value = LlhPosition::default();
         let mut builder =
@@ -8884,6 +12623,853 @@ fn zero_values_round_trip_through_packets() {
             AidingFrameConfigErrorUncertainty::decode_data(data),
             Ok(value)
         );
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::LlhPosition;
+        let value = LlhPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::LlhPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPosition: no field");
+        };
+        assert_eq!(descriptor, <LlhPosition as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::EcefPosition;
+        let value = EcefPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::EcefPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefPosition: no field");
+        };
+        assert_eq!(descriptor, <EcefPosition as Layout>::DESCRIPTOR);
+        assert_eq!(EcefPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::NedVelocity;
+        let value = NedVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::NedVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocity: no field");
+        };
+        assert_eq!(descriptor, <NedVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::EcefVelocity;
+        let value = EcefVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::EcefVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefVelocity: no field");
+        };
+        assert_eq!(descriptor, <EcefVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(EcefVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::Dop;
+        let value = Dop::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::Dop::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Dop: no field");
+        };
+        assert_eq!(descriptor, <Dop as Layout>::DESCRIPTOR);
+        assert_eq!(Dop::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::UtcTime;
+        let value = UtcTime::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::UtcTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("UtcTime: no field");
+        };
+        assert_eq!(descriptor, <UtcTime as Layout>::DESCRIPTOR);
+        assert_eq!(UtcTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::GpsTime;
+        let value = GpsTime::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::GpsTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsTime: no field");
+        };
+        assert_eq!(descriptor, <GpsTime as Layout>::DESCRIPTOR);
+        assert_eq!(GpsTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::FixInfo;
+        let value = FixInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::FixInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FixInfo: no field");
+        };
+        assert_eq!(descriptor, <FixInfo as Layout>::DESCRIPTOR);
+        assert_eq!(FixInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::HardwareStatus;
+        let value = HardwareStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::HardwareStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HardwareStatus: no field");
+        };
+        assert_eq!(descriptor, <HardwareStatus as Layout>::DESCRIPTOR);
+        assert_eq!(HardwareStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::ClockInfo2;
+        let value = ClockInfo2::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::ClockInfo2::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ClockInfo2: no field");
+        };
+        assert_eq!(descriptor, <ClockInfo2 as Layout>::DESCRIPTOR);
+        assert_eq!(ClockInfo2::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::GpsLeapSeconds;
+        let value = GpsLeapSeconds::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::GpsLeapSeconds::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsLeapSeconds: no field");
+        };
+        assert_eq!(descriptor, <GpsLeapSeconds as Layout>::DESCRIPTOR);
+        assert_eq!(GpsLeapSeconds::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::SbasInfo;
+        let value = SbasInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::SbasInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SbasInfo: no field");
+        };
+        assert_eq!(descriptor, <SbasInfo as Layout>::DESCRIPTOR);
+        assert_eq!(SbasInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::SatelliteStatus;
+        let value = SatelliteStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::SatelliteStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SatelliteStatus: no field");
+        };
+        assert_eq!(descriptor, <SatelliteStatus as Layout>::DESCRIPTOR);
+        assert_eq!(SatelliteStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::Raw;
+        let value = Raw::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::Raw::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Raw: no field");
+        };
+        assert_eq!(descriptor, <Raw as Layout>::DESCRIPTOR);
+        assert_eq!(Raw::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::GpsEphemeris;
+        let value = GpsEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::GpsEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsEphemeris: no field");
+        };
+        assert_eq!(descriptor, <GpsEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(GpsEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::GlonassEphemeris;
+        let value = GlonassEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::GlonassEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GlonassEphemeris: no field");
+        };
+        assert_eq!(descriptor, <GlonassEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(GlonassEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::GalileoEphemeris;
+        let value = GalileoEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::GalileoEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GalileoEphemeris: no field");
+        };
+        assert_eq!(descriptor, <GalileoEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(GalileoEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_1::BeidouEphemeris;
+        let value = BeidouEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_1::BeidouEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("BeidouEphemeris: no field");
+        };
+        assert_eq!(descriptor, <BeidouEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(BeidouEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::LlhPosition;
+        let value = LlhPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::LlhPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPosition: no field");
+        };
+        assert_eq!(descriptor, <LlhPosition as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::EcefPosition;
+        let value = EcefPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::EcefPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefPosition: no field");
+        };
+        assert_eq!(descriptor, <EcefPosition as Layout>::DESCRIPTOR);
+        assert_eq!(EcefPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::NedVelocity;
+        let value = NedVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::NedVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocity: no field");
+        };
+        assert_eq!(descriptor, <NedVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::EcefVelocity;
+        let value = EcefVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::EcefVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EcefVelocity: no field");
+        };
+        assert_eq!(descriptor, <EcefVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(EcefVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::Dop;
+        let value = Dop::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::Dop::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Dop: no field");
+        };
+        assert_eq!(descriptor, <Dop as Layout>::DESCRIPTOR);
+        assert_eq!(Dop::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::UtcTime;
+        let value = UtcTime::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::UtcTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("UtcTime: no field");
+        };
+        assert_eq!(descriptor, <UtcTime as Layout>::DESCRIPTOR);
+        assert_eq!(UtcTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::GpsTime;
+        let value = GpsTime::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::GpsTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsTime: no field");
+        };
+        assert_eq!(descriptor, <GpsTime as Layout>::DESCRIPTOR);
+        assert_eq!(GpsTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::FixInfo;
+        let value = FixInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::FixInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FixInfo: no field");
+        };
+        assert_eq!(descriptor, <FixInfo as Layout>::DESCRIPTOR);
+        assert_eq!(FixInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::HardwareStatus;
+        let value = HardwareStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::HardwareStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("HardwareStatus: no field");
+        };
+        assert_eq!(descriptor, <HardwareStatus as Layout>::DESCRIPTOR);
+        assert_eq!(HardwareStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::ClockInfo2;
+        let value = ClockInfo2::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::ClockInfo2::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ClockInfo2: no field");
+        };
+        assert_eq!(descriptor, <ClockInfo2 as Layout>::DESCRIPTOR);
+        assert_eq!(ClockInfo2::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::GpsLeapSeconds;
+        let value = GpsLeapSeconds::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::GpsLeapSeconds::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsLeapSeconds: no field");
+        };
+        assert_eq!(descriptor, <GpsLeapSeconds as Layout>::DESCRIPTOR);
+        assert_eq!(GpsLeapSeconds::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::SbasInfo;
+        let value = SbasInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::SbasInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SbasInfo: no field");
+        };
+        assert_eq!(descriptor, <SbasInfo as Layout>::DESCRIPTOR);
+        assert_eq!(SbasInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::SatelliteStatus;
+        let value = SatelliteStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::SatelliteStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SatelliteStatus: no field");
+        };
+        assert_eq!(descriptor, <SatelliteStatus as Layout>::DESCRIPTOR);
+        assert_eq!(SatelliteStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::Raw;
+        let value = Raw::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::Raw::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("Raw: no field");
+        };
+        assert_eq!(descriptor, <Raw as Layout>::DESCRIPTOR);
+        assert_eq!(Raw::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::GpsEphemeris;
+        let value = GpsEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::GpsEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsEphemeris: no field");
+        };
+        assert_eq!(descriptor, <GpsEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(GpsEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::GlonassEphemeris;
+        let value = GlonassEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::GlonassEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GlonassEphemeris: no field");
+        };
+        assert_eq!(descriptor, <GlonassEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(GlonassEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::GalileoEphemeris;
+        let value = GalileoEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::GalileoEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GalileoEphemeris: no field");
+        };
+        assert_eq!(descriptor, <GalileoEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(GalileoEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_receiver_2::BeidouEphemeris;
+        let value = BeidouEphemeris::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_receiver_2::BeidouEphemeris::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("BeidouEphemeris: no field");
+        };
+        assert_eq!(descriptor, <BeidouEphemeris as Layout>::DESCRIPTOR);
+        assert_eq!(BeidouEphemeris::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_corrections::BaseStationInfo;
+        let value = BaseStationInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_corrections::BaseStationInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("BaseStationInfo: no field");
+        };
+        assert_eq!(descriptor, <BaseStationInfo as Layout>::DESCRIPTOR);
+        assert_eq!(BaseStationInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_corrections::RtkCorrectionsStatus;
+        let value = RtkCorrectionsStatus::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(
+            mipcodec::gnss_corrections::RtkCorrectionsStatus::SET,
+        );
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("RtkCorrectionsStatus: no field");
+        };
+        assert_eq!(descriptor, <RtkCorrectionsStatus as Layout>::DESCRIPTOR);
+        assert_eq!(RtkCorrectionsStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_external::LlhPosition;
+        let value = LlhPosition::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_external::LlhPosition::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("LlhPosition: no field");
+        };
+        assert_eq!(descriptor, <LlhPosition as Layout>::DESCRIPTOR);
+        assert_eq!(LlhPosition::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_external::NedVelocity;
+        let value = NedVelocity::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_external::NedVelocity::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("NedVelocity: no field");
+        };
+        assert_eq!(descriptor, <NedVelocity as Layout>::DESCRIPTOR);
+        assert_eq!(NedVelocity::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_external::UtcTime;
+        let value = UtcTime::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_external::UtcTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("UtcTime: no field");
+        };
+        assert_eq!(descriptor, <UtcTime as Layout>::DESCRIPTOR);
+        assert_eq!(UtcTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_external::FixInfo;
+        let value = FixInfo::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_external::FixInfo::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("FixInfo: no field");
+        };
+        assert_eq!(descriptor, <FixInfo as Layout>::DESCRIPTOR);
+        assert_eq!(FixInfo::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::gnss_external::SatelliteStatus;
+        let value = SatelliteStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::gnss_external::SatelliteStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("SatelliteStatus: no field");
+        };
+        assert_eq!(descriptor, <SatelliteStatus as Layout>::DESCRIPTOR);
+        assert_eq!(SatelliteStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::system_data::BuiltInTest;
+        let value = BuiltInTest::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::system_data::BuiltInTest::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("BuiltInTest: no field");
+        };
+        assert_eq!(descriptor, <BuiltInTest as Layout>::DESCRIPTOR);
+        assert_eq!(BuiltInTest::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::system_data::TimeSyncStatus;
+        let value = TimeSyncStatus::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::system_data::TimeSyncStatus::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("TimeSyncStatus: no field");
+        };
+        assert_eq!(descriptor, <TimeSyncStatus as Layout>::DESCRIPTOR);
+        assert_eq!(TimeSyncStatus::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::system_data::GpioState;
+        let value = GpioState::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::system_data::GpioState::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpioState: no field");
+        };
+        assert_eq!(descriptor, <GpioState as Layout>::DESCRIPTOR);
+        assert_eq!(GpioState::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::EventSource;
+        let value = EventSource::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::shared::EventSource::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("EventSource: no field");
+        };
+        assert_eq!(descriptor, <EventSource as Layout>::DESCRIPTOR);
+        assert_eq!(EventSource::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::GpsTimestamp;
+        let value = GpsTimestamp::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::shared::GpsTimestamp::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("GpsTimestamp: no field");
+        };
+        assert_eq!(descriptor, <GpsTimestamp as Layout>::DESCRIPTOR);
+        assert_eq!(GpsTimestamp::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::DeltaTime;
+        let value = DeltaTime::default();
+        let mut builder = mipcodec::builder::PacketBuilder::new(mipcodec::shared::DeltaTime::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("DeltaTime: no field");
+        };
+        assert_eq!(descriptor, <DeltaTime as Layout>::DESCRIPTOR);
+        assert_eq!(DeltaTime::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::ReferenceTimestamp;
+        let value = ReferenceTimestamp::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::shared::ReferenceTimestamp::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ReferenceTimestamp: no field");
+        };
+        assert_eq!(descriptor, <ReferenceTimestamp as Layout>::DESCRIPTOR);
+        assert_eq!(ReferenceTimestamp::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::ReferenceTimeDelta;
+        let value = ReferenceTimeDelta::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::shared::ReferenceTimeDelta::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ReferenceTimeDelta: no field");
+        };
+        assert_eq!(descriptor, <ReferenceTimeDelta as Layout>::DESCRIPTOR);
+        assert_eq!(ReferenceTimeDelta::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::ExternalTimestamp;
+        let value = ExternalTimestamp::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::shared::ExternalTimestamp::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ExternalTimestamp: no field");
+        };
+        assert_eq!(descriptor, <ExternalTimestamp as Layout>::DESCRIPTOR);
+        assert_eq!(ExternalTimestamp::decode_data(data), Ok(value));
+        assert!(fields.next().is_none());
+    }
+    {
+        use mipcodec::shared::ExternalTimeDelta;
+        let value = ExternalTimeDelta::default();
+        let mut builder =
+            mipcodec::builder::PacketBuilder::new(mipcodec::shared::ExternalTimeDelta::SET);
+        builder.add(&value).unwrap();
+        let bytes = builder.finish().to_vec();
+        let packet = mipcodec::fields::Packet::new(&bytes).unwrap();
+        let mut fields = packet.fields();
+        let Some(mipcodec::fields::FieldItem::Field { descriptor, data }) = fields.next() else {
+            panic!("ExternalTimeDelta: no field");
+        };
+        assert_eq!(descriptor, <ExternalTimeDelta as Layout>::DESCRIPTOR);
+        assert_eq!(ExternalTimeDelta::decode_data(data), Ok(value));
         assert!(fields.next().is_none());
     }
     {

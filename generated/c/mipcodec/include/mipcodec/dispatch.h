@@ -11,7 +11,14 @@
 #include "mipcodec/sets/aiding.h"
 #include "mipcodec/sets/system.h"
 #include "mipcodec/sets/sensor.h"
+#include "mipcodec/sets/gnss_data.h"
 #include "mipcodec/sets/filter_data.h"
+#include "mipcodec/sets/gnss_receiver_1.h"
+#include "mipcodec/sets/gnss_receiver_2.h"
+#include "mipcodec/sets/gnss_corrections.h"
+#include "mipcodec/sets/gnss_external.h"
+#include "mipcodec/sets/system_data.h"
+#include "mipcodec/sets/shared.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -264,56 +271,134 @@ typedef enum {
     MIP_FIELD_SENSOR_SCALED_ACCEL = 221,
     MIP_FIELD_SENSOR_SCALED_GYRO = 222,
     MIP_FIELD_SENSOR_SCALED_MAG = 223,
-    MIP_FIELD_FILTER_DATA_LLH_POSITION = 224,
-    MIP_FIELD_FILTER_DATA_NED_VELOCITY = 225,
-    MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION = 226,
-    MIP_FIELD_FILTER_DATA_ATTITUDE_DCM = 227,
-    MIP_FIELD_FILTER_DATA_EULER_ANGLES = 228,
-    MIP_FIELD_FILTER_DATA_GYRO_BIAS = 229,
-    MIP_FIELD_FILTER_DATA_ACCEL_BIAS = 230,
-    MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY = 231,
-    MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY = 232,
-    MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY = 233,
-    MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY = 234,
-    MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY = 235,
-    MIP_FIELD_FILTER_DATA_LINEAR_ACCEL = 236,
-    MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE = 237,
-    MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE = 238,
-    MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45 = 239,
-    MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS = 240,
-    MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP = 241,
-    MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY = 242,
-    MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR = 243,
-    MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE = 244,
-    MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL = 245,
-    MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR = 246,
-    MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR = 247,
-    MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY = 248,
-    MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY = 249,
-    MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL = 250,
-    MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE = 251,
-    MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE = 252,
-    MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET = 253,
-    MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX = 254,
-    MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY = 255,
-    MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY = 256,
-    MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION = 257,
-    MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY = 258,
-    MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION = 259,
-    MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY = 260,
-    MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY = 261,
-    MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY = 262,
-    MIP_FIELD_FILTER_DATA_ECEF_POSITION = 263,
-    MIP_FIELD_FILTER_DATA_ECEF_VELOCITY = 264,
-    MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION = 265,
-    MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS = 266,
-    MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY = 267,
-    MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR = 268,
-    MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY = 269,
-    MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS = 270,
-    MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR = 271,
-    MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY = 272,
-    MIP_FIELD_COUNT = 273
+    MIP_FIELD_SENSOR_DELTA_THETA = 224,
+    MIP_FIELD_SENSOR_DELTA_VELOCITY = 225,
+    MIP_FIELD_SENSOR_CF_ORIENTATION_MATRIX = 226,
+    MIP_FIELD_SENSOR_CF_QUATERNION = 227,
+    MIP_FIELD_SENSOR_CF_EULER_ANGLES = 228,
+    MIP_FIELD_SENSOR_CF_STABILIZED_NORTH = 229,
+    MIP_FIELD_SENSOR_CF_STABILIZED_UP = 230,
+    MIP_FIELD_SENSOR_GPS_TIMESTAMP = 231,
+    MIP_FIELD_SENSOR_TEMPERATURE_STATISTICS = 232,
+    MIP_FIELD_SENSOR_SCALED_PRESSURE = 233,
+    MIP_FIELD_SENSOR_OVERRANGE_STATUS = 234,
+    MIP_FIELD_SENSOR_ODOMETER_DATA = 235,
+    MIP_FIELD_GNSS_DATA_LLH_POSITION = 236,
+    MIP_FIELD_GNSS_DATA_ECEF_POSITION = 237,
+    MIP_FIELD_GNSS_DATA_NED_VELOCITY = 238,
+    MIP_FIELD_GNSS_DATA_ECEF_VELOCITY = 239,
+    MIP_FIELD_GNSS_DATA_DOP = 240,
+    MIP_FIELD_GNSS_DATA_UTC_TIME = 241,
+    MIP_FIELD_GNSS_DATA_GPS_TIME = 242,
+    MIP_FIELD_GNSS_DATA_CLOCK_INFO = 243,
+    MIP_FIELD_GNSS_DATA_FIX_INFO = 244,
+    MIP_FIELD_GNSS_DATA_SV_INFO = 245,
+    MIP_FIELD_GNSS_DATA_HARDWARE_STATUS = 246,
+    MIP_FIELD_GNSS_DATA_DGNSS_INFO = 247,
+    MIP_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS = 248,
+    MIP_FIELD_FILTER_DATA_LLH_POSITION = 249,
+    MIP_FIELD_FILTER_DATA_NED_VELOCITY = 250,
+    MIP_FIELD_FILTER_DATA_ATTITUDE_QUATERNION = 251,
+    MIP_FIELD_FILTER_DATA_ATTITUDE_DCM = 252,
+    MIP_FIELD_FILTER_DATA_EULER_ANGLES = 253,
+    MIP_FIELD_FILTER_DATA_GYRO_BIAS = 254,
+    MIP_FIELD_FILTER_DATA_ACCEL_BIAS = 255,
+    MIP_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY = 256,
+    MIP_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY = 257,
+    MIP_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY = 258,
+    MIP_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY = 259,
+    MIP_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY = 260,
+    MIP_FIELD_FILTER_DATA_LINEAR_ACCEL = 261,
+    MIP_FIELD_FILTER_DATA_COMP_ANGULAR_RATE = 262,
+    MIP_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE = 263,
+    MIP_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45 = 264,
+    MIP_FIELD_FILTER_DATA_FILTER_STATUS_CV7_INS = 265,
+    MIP_FIELD_FILTER_DATA_GPS_TIMESTAMP = 266,
+    MIP_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY = 267,
+    MIP_FIELD_FILTER_DATA_GRAVITY_VECTOR = 268,
+    MIP_FIELD_FILTER_DATA_HEADING_UPDATE_STATE = 269,
+    MIP_FIELD_FILTER_DATA_MAGNETIC_MODEL = 270,
+    MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR = 271,
+    MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR = 272,
+    MIP_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY = 273,
+    MIP_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY = 274,
+    MIP_FIELD_FILTER_DATA_COMPENSATED_ACCEL = 275,
+    MIP_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE = 276,
+    MIP_FIELD_FILTER_DATA_PRESSURE_ALTITUDE = 277,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET = 278,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX = 279,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY = 280,
+    MIP_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY = 281,
+    MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION = 282,
+    MIP_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY = 283,
+    MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION = 284,
+    MIP_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY = 285,
+    MIP_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY = 286,
+    MIP_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY = 287,
+    MIP_FIELD_FILTER_DATA_ECEF_POSITION = 288,
+    MIP_FIELD_FILTER_DATA_ECEF_VELOCITY = 289,
+    MIP_FIELD_FILTER_DATA_NED_RELATIVE_POSITION = 290,
+    MIP_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS = 291,
+    MIP_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY = 292,
+    MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR = 293,
+    MIP_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY = 294,
+    MIP_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS = 295,
+    MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR = 296,
+    MIP_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY = 297,
+    MIP_FIELD_GNSS_RECEIVER_1_LLH_POSITION = 298,
+    MIP_FIELD_GNSS_RECEIVER_1_ECEF_POSITION = 299,
+    MIP_FIELD_GNSS_RECEIVER_1_NED_VELOCITY = 300,
+    MIP_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY = 301,
+    MIP_FIELD_GNSS_RECEIVER_1_DOP = 302,
+    MIP_FIELD_GNSS_RECEIVER_1_UTC_TIME = 303,
+    MIP_FIELD_GNSS_RECEIVER_1_GPS_TIME = 304,
+    MIP_FIELD_GNSS_RECEIVER_1_FIX_INFO = 305,
+    MIP_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS = 306,
+    MIP_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2 = 307,
+    MIP_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS = 308,
+    MIP_FIELD_GNSS_RECEIVER_1_SBAS_INFO = 309,
+    MIP_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS = 310,
+    MIP_FIELD_GNSS_RECEIVER_1_RAW = 311,
+    MIP_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS = 312,
+    MIP_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS = 313,
+    MIP_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS = 314,
+    MIP_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS = 315,
+    MIP_FIELD_GNSS_RECEIVER_2_LLH_POSITION = 316,
+    MIP_FIELD_GNSS_RECEIVER_2_ECEF_POSITION = 317,
+    MIP_FIELD_GNSS_RECEIVER_2_NED_VELOCITY = 318,
+    MIP_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY = 319,
+    MIP_FIELD_GNSS_RECEIVER_2_DOP = 320,
+    MIP_FIELD_GNSS_RECEIVER_2_UTC_TIME = 321,
+    MIP_FIELD_GNSS_RECEIVER_2_GPS_TIME = 322,
+    MIP_FIELD_GNSS_RECEIVER_2_FIX_INFO = 323,
+    MIP_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS = 324,
+    MIP_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2 = 325,
+    MIP_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS = 326,
+    MIP_FIELD_GNSS_RECEIVER_2_SBAS_INFO = 327,
+    MIP_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS = 328,
+    MIP_FIELD_GNSS_RECEIVER_2_RAW = 329,
+    MIP_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS = 330,
+    MIP_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS = 331,
+    MIP_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS = 332,
+    MIP_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS = 333,
+    MIP_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO = 334,
+    MIP_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS = 335,
+    MIP_FIELD_GNSS_EXTERNAL_LLH_POSITION = 336,
+    MIP_FIELD_GNSS_EXTERNAL_NED_VELOCITY = 337,
+    MIP_FIELD_GNSS_EXTERNAL_UTC_TIME = 338,
+    MIP_FIELD_GNSS_EXTERNAL_FIX_INFO = 339,
+    MIP_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS = 340,
+    MIP_FIELD_SYSTEM_DATA_BUILT_IN_TEST = 341,
+    MIP_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS = 342,
+    MIP_FIELD_SYSTEM_DATA_GPIO_STATE = 343,
+    MIP_FIELD_SHARED_EVENT_SOURCE = 344,
+    MIP_FIELD_SHARED_GPS_TIMESTAMP = 345,
+    MIP_FIELD_SHARED_DELTA_TIME = 346,
+    MIP_FIELD_SHARED_REFERENCE_TIMESTAMP = 347,
+    MIP_FIELD_SHARED_REFERENCE_TIME_DELTA = 348,
+    MIP_FIELD_SHARED_EXTERNAL_TIMESTAMP = 349,
+    MIP_FIELD_SHARED_EXTERNAL_TIME_DELTA = 350,
+    MIP_FIELD_COUNT = 351
 } mip_field_id_t;
 
 /** A decoded field: which layout, and its value. */
@@ -549,6 +634,31 @@ typedef struct {
         mip_sensor_scaled_accel_t sensor_scaled_accel;
         mip_sensor_scaled_gyro_t sensor_scaled_gyro;
         mip_sensor_scaled_mag_t sensor_scaled_mag;
+        mip_sensor_delta_theta_t sensor_delta_theta;
+        mip_sensor_delta_velocity_t sensor_delta_velocity;
+        mip_sensor_cf_orientation_matrix_t sensor_cf_orientation_matrix;
+        mip_sensor_cf_quaternion_t sensor_cf_quaternion;
+        mip_sensor_cf_euler_angles_t sensor_cf_euler_angles;
+        mip_sensor_cf_stabilized_north_t sensor_cf_stabilized_north;
+        mip_sensor_cf_stabilized_up_t sensor_cf_stabilized_up;
+        mip_sensor_gps_timestamp_t sensor_gps_timestamp;
+        mip_sensor_temperature_statistics_t sensor_temperature_statistics;
+        mip_sensor_scaled_pressure_t sensor_scaled_pressure;
+        mip_sensor_overrange_status_t sensor_overrange_status;
+        mip_sensor_odometer_data_t sensor_odometer_data;
+        mip_gnss_data_llh_position_t gnss_data_llh_position;
+        mip_gnss_data_ecef_position_t gnss_data_ecef_position;
+        mip_gnss_data_ned_velocity_t gnss_data_ned_velocity;
+        mip_gnss_data_ecef_velocity_t gnss_data_ecef_velocity;
+        mip_gnss_data_dop_t gnss_data_dop;
+        mip_gnss_data_utc_time_t gnss_data_utc_time;
+        mip_gnss_data_gps_time_t gnss_data_gps_time;
+        mip_gnss_data_clock_info_t gnss_data_clock_info;
+        mip_gnss_data_fix_info_t gnss_data_fix_info;
+        mip_gnss_data_sv_info_t gnss_data_sv_info;
+        mip_gnss_data_hardware_status_t gnss_data_hardware_status;
+        mip_gnss_data_dgnss_info_t gnss_data_dgnss_info;
+        mip_gnss_data_dgnss_channel_status_t gnss_data_dgnss_channel_status;
         mip_filter_data_llh_position_t filter_data_llh_position;
         mip_filter_data_ned_velocity_t filter_data_ned_velocity;
         mip_filter_data_attitude_quaternion_t filter_data_attitude_quaternion;
@@ -604,6 +714,59 @@ typedef struct {
         mip_filter_data_aiding_frame_config_error_t filter_data_aiding_frame_config_error;
         mip_filter_data_aiding_frame_config_error_uncertainty_t
             filter_data_aiding_frame_config_error_uncertainty;
+        mip_gnss_receiver_1_llh_position_t gnss_receiver_1_llh_position;
+        mip_gnss_receiver_1_ecef_position_t gnss_receiver_1_ecef_position;
+        mip_gnss_receiver_1_ned_velocity_t gnss_receiver_1_ned_velocity;
+        mip_gnss_receiver_1_ecef_velocity_t gnss_receiver_1_ecef_velocity;
+        mip_gnss_receiver_1_dop_t gnss_receiver_1_dop;
+        mip_gnss_receiver_1_utc_time_t gnss_receiver_1_utc_time;
+        mip_gnss_receiver_1_gps_time_t gnss_receiver_1_gps_time;
+        mip_gnss_receiver_1_fix_info_t gnss_receiver_1_fix_info;
+        mip_gnss_receiver_1_hardware_status_t gnss_receiver_1_hardware_status;
+        mip_gnss_receiver_1_clock_info_2_t gnss_receiver_1_clock_info_2;
+        mip_gnss_receiver_1_gps_leap_seconds_t gnss_receiver_1_gps_leap_seconds;
+        mip_gnss_receiver_1_sbas_info_t gnss_receiver_1_sbas_info;
+        mip_gnss_receiver_1_satellite_status_t gnss_receiver_1_satellite_status;
+        mip_gnss_receiver_1_raw_t gnss_receiver_1_raw;
+        mip_gnss_receiver_1_gps_ephemeris_t gnss_receiver_1_gps_ephemeris;
+        mip_gnss_receiver_1_glonass_ephemeris_t gnss_receiver_1_glonass_ephemeris;
+        mip_gnss_receiver_1_galileo_ephemeris_t gnss_receiver_1_galileo_ephemeris;
+        mip_gnss_receiver_1_beidou_ephemeris_t gnss_receiver_1_beidou_ephemeris;
+        mip_gnss_receiver_2_llh_position_t gnss_receiver_2_llh_position;
+        mip_gnss_receiver_2_ecef_position_t gnss_receiver_2_ecef_position;
+        mip_gnss_receiver_2_ned_velocity_t gnss_receiver_2_ned_velocity;
+        mip_gnss_receiver_2_ecef_velocity_t gnss_receiver_2_ecef_velocity;
+        mip_gnss_receiver_2_dop_t gnss_receiver_2_dop;
+        mip_gnss_receiver_2_utc_time_t gnss_receiver_2_utc_time;
+        mip_gnss_receiver_2_gps_time_t gnss_receiver_2_gps_time;
+        mip_gnss_receiver_2_fix_info_t gnss_receiver_2_fix_info;
+        mip_gnss_receiver_2_hardware_status_t gnss_receiver_2_hardware_status;
+        mip_gnss_receiver_2_clock_info_2_t gnss_receiver_2_clock_info_2;
+        mip_gnss_receiver_2_gps_leap_seconds_t gnss_receiver_2_gps_leap_seconds;
+        mip_gnss_receiver_2_sbas_info_t gnss_receiver_2_sbas_info;
+        mip_gnss_receiver_2_satellite_status_t gnss_receiver_2_satellite_status;
+        mip_gnss_receiver_2_raw_t gnss_receiver_2_raw;
+        mip_gnss_receiver_2_gps_ephemeris_t gnss_receiver_2_gps_ephemeris;
+        mip_gnss_receiver_2_glonass_ephemeris_t gnss_receiver_2_glonass_ephemeris;
+        mip_gnss_receiver_2_galileo_ephemeris_t gnss_receiver_2_galileo_ephemeris;
+        mip_gnss_receiver_2_beidou_ephemeris_t gnss_receiver_2_beidou_ephemeris;
+        mip_gnss_corrections_base_station_info_t gnss_corrections_base_station_info;
+        mip_gnss_corrections_rtk_corrections_status_t gnss_corrections_rtk_corrections_status;
+        mip_gnss_external_llh_position_t gnss_external_llh_position;
+        mip_gnss_external_ned_velocity_t gnss_external_ned_velocity;
+        mip_gnss_external_utc_time_t gnss_external_utc_time;
+        mip_gnss_external_fix_info_t gnss_external_fix_info;
+        mip_gnss_external_satellite_status_t gnss_external_satellite_status;
+        mip_system_data_built_in_test_t system_data_built_in_test;
+        mip_system_data_time_sync_status_t system_data_time_sync_status;
+        mip_system_data_gpio_state_t system_data_gpio_state;
+        mip_shared_event_source_t shared_event_source;
+        mip_shared_gps_timestamp_t shared_gps_timestamp;
+        mip_shared_delta_time_t shared_delta_time;
+        mip_shared_reference_timestamp_t shared_reference_timestamp;
+        mip_shared_reference_time_delta_t shared_reference_time_delta;
+        mip_shared_external_timestamp_t shared_external_timestamp;
+        mip_shared_external_time_delta_t shared_external_time_delta;
     } u;
 } mip_field_value_t;
 

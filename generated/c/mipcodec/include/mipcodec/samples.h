@@ -10,9 +10,9 @@ extern "C" {
 #endif
 
 /* Data sets that group continuation packets (one tracker slot each). */
-#define MIP_SAMPLE_SETS 2
+#define MIP_SAMPLE_SETS 8
 /* Largest sample key: field header + data of every shared timestamp field. */
-#define MIP_SAMPLE_KEY_MAX 1
+#define MIP_SAMPLE_KEY_MAX 36
 
 typedef struct {
     uint64_t number; /* sample number of the last packet of this set */

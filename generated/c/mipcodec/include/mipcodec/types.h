@@ -232,6 +232,285 @@ typedef uint32_t mip_cv7_bit_flags_t;
     ((mip_cv7_bit_flags_t)0xFF000000u) /* bits 24-31: (reserved) Reserved. */
 #define MIP_CV7_BIT_FLAGS_RESERVED_SHIFT 24
 
+/** Continuous BIT byte 13: GNSS receivers (bits 104-111).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_gnss13_t;
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_104_MASK                                                      \
+    ((mip_cv7_continuous_bit_gnss13_t)0x1u) /* bit 0: (reserved) Bit 104 (13.0): GNSS reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_104_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RECEIVER_1_FAULT_MASK                                                  \
+    ((mip_cv7_continuous_bit_gnss13_t)0x2u) /* bit 1: Bit 105 (13.1): no communication with internal GNSS    \
+                                               receiver 1. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RECEIVER_1_FAULT_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_106_107_MASK                                                  \
+    ((mip_cv7_continuous_bit_gnss13_t)0xCu) /* bits 2-3: (reserved) Bits 106-107 (13.2-13.3): GNSS reserved. \
+                                             */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_106_107_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RECEIVER_1_NO_SOLUTION_MASK                                            \
+    ((mip_cv7_continuous_bit_gnss13_t)0x10u) /* bit 4: Bit 108 (13.4): internal receiver 1 has no valid      \
+                                                solution (check antenna and sky view). */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RECEIVER_1_NO_SOLUTION_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_109_MASK                                                      \
+    ((mip_cv7_continuous_bit_gnss13_t)0x20u) /* bit 5: (reserved) Bit 109 (13.5): GNSS reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_109_SHIFT 5
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RECEIVER_2_FAULT_MASK                                                  \
+    ((mip_cv7_continuous_bit_gnss13_t)0x40u) /* bit 6: Bit 110 (13.6): no communication with internal GNSS   \
+                                                receiver 2. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RECEIVER_2_FAULT_SHIFT 6
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_111_MASK                                                      \
+    ((mip_cv7_continuous_bit_gnss13_t)0x80u) /* bit 7: (reserved) Bit 111 (13.7): GNSS reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS13_RESERVED_111_SHIFT 7
+
+/** Continuous BIT byte 14: GNSS receivers (bits 112-119).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_gnss14_t;
+#define MIP_CV7_CONTINUOUS_BIT_GNSS14_RESERVED_112_MASK                                                      \
+    ((mip_cv7_continuous_bit_gnss14_t)0x1u) /* bit 0: (reserved) Bit 112 (14.0): GNSS reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS14_RESERVED_112_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_GNSS14_RECEIVER_2_NO_SOLUTION_MASK                                            \
+    ((mip_cv7_continuous_bit_gnss14_t)0x2u) /* bit 1: Bit 113 (14.1): internal receiver 2 has no valid       \
+                                               solution (check antenna and sky view). */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS14_RECEIVER_2_NO_SOLUTION_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_GNSS14_RESERVED_114_119_MASK                                                  \
+    ((mip_cv7_continuous_bit_gnss14_t)0xFCu) /* bits 2-7: (reserved) Bits 114-119 (14.2-14.7): GNSS          \
+                                                reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_GNSS14_RESERVED_114_119_SHIFT 2
+
+/** Continuous BIT byte 4: IMU (bits 32-39).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_imu4_t;
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_RESERVED_32_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu4_t)0x1u) /* bit 0: (reserved) Bit 32 (4.0): IMU reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_RESERVED_32_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_COMMUNICATION_FAULT_MASK                                             \
+    ((mip_cv7_continuous_bit_imu4_t)0x2u) /* bit 1: Bit 33 (4.1): no communication with the IMU. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_COMMUNICATION_FAULT_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_TIMING_OVERRUN_MASK                                                  \
+    ((mip_cv7_continuous_bit_imu4_t)0x4u) /* bit 2: Bit 34 (4.2): IMU core processes take longer than their  \
+                                             allotted time. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_TIMING_OVERRUN_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_RESERVED_35_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu4_t)0x8u) /* bit 3: (reserved) Bit 35 (4.3): IMU reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_RESERVED_35_SHIFT 3
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_CALIBRATION_ERROR_ACCELEROMETER_MASK                                 \
+    ((mip_cv7_continuous_bit_imu4_t)0x10u) /* bit 4: Bit 36 (4.4): problem with the accelerometer            \
+                                              calibration. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_CALIBRATION_ERROR_ACCELEROMETER_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_CALIBRATION_ERROR_GYROSCOPE_MASK                                     \
+    ((mip_cv7_continuous_bit_imu4_t)0x20u) /* bit 5: Bit 37 (4.5): problem with the gyroscope calibration.   \
+                                            */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_CALIBRATION_ERROR_GYROSCOPE_SHIFT 5
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_CALIBRATION_ERROR_MAGNETOMETER_MASK                                  \
+    ((mip_cv7_continuous_bit_imu4_t)0x40u) /* bit 6: Bit 38 (4.6): problem with the magnetometer             \
+                                              calibration. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_IMU_CALIBRATION_ERROR_MAGNETOMETER_SHIFT 6
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_RESERVED_39_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu4_t)0x80u) /* bit 7: (reserved) Bit 39 (4.7): IMU calibration error,         \
+                                              reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU4_RESERVED_39_SHIFT 7
+
+/** Continuous BIT byte 5: IMU accelerometer and gyroscope (bits 40-47).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_imu5_t;
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_ACCELEROMETER_GENERAL_FAULT_MASK                                         \
+    ((mip_cv7_continuous_bit_imu5_t)0x1u) /* bit 0: Bit 40 (5.0): the accelerometer will not initialize. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_ACCELEROMETER_GENERAL_FAULT_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_ACCELEROMETER_OVERRANGE_MASK                                             \
+    ((mip_cv7_continuous_bit_imu5_t)0x2u) /* bit 1: Bit 41 (5.1): one or more axes near or beyond the        \
+                                             selected range. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_ACCELEROMETER_OVERRANGE_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_ACCELEROMETER_SELF_TEST_FAIL_MASK                                        \
+    ((mip_cv7_continuous_bit_imu5_t)0x4u) /* bit 2: Bit 42 (5.2): accelerometer self-test failed (updated by \
+                                             the commanded BIT only). */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_ACCELEROMETER_SELF_TEST_FAIL_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_RESERVED_43_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu5_t)0x8u) /* bit 3: (reserved) Bit 43 (5.3): accelerometer reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_RESERVED_43_SHIFT 3
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_GYROSCOPE_GENERAL_FAULT_MASK                                             \
+    ((mip_cv7_continuous_bit_imu5_t)0x10u) /* bit 4: Bit 44 (5.4): the gyroscope will not initialize. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_GYROSCOPE_GENERAL_FAULT_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_GYROSCOPE_OVERRANGE_MASK                                                 \
+    ((mip_cv7_continuous_bit_imu5_t)0x20u) /* bit 5: Bit 45 (5.5): one or more axes near or beyond the       \
+                                              selected range. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_GYROSCOPE_OVERRANGE_SHIFT 5
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_GYROSCOPE_SELF_TEST_FAIL_MASK                                            \
+    ((mip_cv7_continuous_bit_imu5_t)0x40u) /* bit 6: Bit 46 (5.6): gyroscope self-test failed (updated by    \
+                                              the commanded BIT only). */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_GYROSCOPE_SELF_TEST_FAIL_SHIFT 6
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_RESERVED_47_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu5_t)0x80u) /* bit 7: (reserved) Bit 47 (5.7): gyroscope reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU5_RESERVED_47_SHIFT 7
+
+/** Continuous BIT byte 6: IMU magnetometer and pressure sensor (bits 48-55).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_imu6_t;
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_MAGNETOMETER_GENERAL_FAULT_MASK                                          \
+    ((mip_cv7_continuous_bit_imu6_t)0x1u) /* bit 0: Bit 48 (6.0): the magnetometer will not initialize. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_MAGNETOMETER_GENERAL_FAULT_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_MAGNETOMETER_OVERRANGE_MASK                                              \
+    ((mip_cv7_continuous_bit_imu6_t)0x2u) /* bit 1: Bit 49 (6.1): one or more axes near or beyond the        \
+                                             supported range. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_MAGNETOMETER_OVERRANGE_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_MAGNETOMETER_SELF_TEST_FAIL_MASK                                         \
+    ((mip_cv7_continuous_bit_imu6_t)0x4u) /* bit 2: Bit 50 (6.2): magnetometer self-test failed (updated by  \
+                                             the commanded BIT only). */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_MAGNETOMETER_SELF_TEST_FAIL_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_RESERVED_51_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu6_t)0x8u) /* bit 3: (reserved) Bit 51 (6.3): magnetometer reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_RESERVED_51_SHIFT 3
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_PRESSURE_SENSOR_GENERAL_FAULT_MASK                                       \
+    ((mip_cv7_continuous_bit_imu6_t)0x10u) /* bit 4: Bit 52 (6.4): the pressure sensor will not initialize.  \
+                                            */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_PRESSURE_SENSOR_GENERAL_FAULT_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_PRESSURE_SENSOR_OVERRANGE_MASK                                           \
+    ((mip_cv7_continuous_bit_imu6_t)0x20u) /* bit 5: Bit 53 (6.5): pressure outside the supported range. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_PRESSURE_SENSOR_OVERRANGE_SHIFT 5
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_PRESSURE_SENSOR_SELF_TEST_FAIL_MASK                                      \
+    ((mip_cv7_continuous_bit_imu6_t)0x40u) /* bit 6: Bit 54 (6.6): pressure sensor self-test failed (updated \
+                                              by the commanded BIT only). */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_PRESSURE_SENSOR_SELF_TEST_FAIL_SHIFT 6
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_RESERVED_55_MASK                                                         \
+    ((mip_cv7_continuous_bit_imu6_t)0x80u) /* bit 7: (reserved) Bit 55 (6.7): pressure sensor reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU6_RESERVED_55_SHIFT 7
+
+/** Continuous BIT byte 7: IMU (bits 56-63).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_imu7_t;
+#define MIP_CV7_CONTINUOUS_BIT_IMU7_FACTORY_BITS_INVALID_MASK                                                \
+    ((mip_cv7_continuous_bit_imu7_t)0x1u) /* bit 0: Bit 56 (7.0): the device has lost its configuration;     \
+                                             contact support. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU7_FACTORY_BITS_INVALID_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_IMU7_RESERVED_57_63_MASK                                                      \
+    ((mip_cv7_continuous_bit_imu7_t)0xFEu) /* bits 1-7: (reserved) Bits 57-63 (7.1-7.7): reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_IMU7_RESERVED_57_63_SHIFT 1
+
+/** Continuous BIT byte 8: navigation filter (bits 64-71).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_nav8_t;
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_RESERVED_64_MASK                                                         \
+    ((mip_cv7_continuous_bit_nav8_t)0x1u) /* bit 0: (reserved) Bit 64 (8.0): reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_RESERVED_64_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_RESERVED_65_MASK                                                         \
+    ((mip_cv7_continuous_bit_nav8_t)0x2u) /* bit 1: (reserved) Bit 65 (8.1): reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_RESERVED_65_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_FILTER_TIMING_OVERRUN_MASK                                               \
+    ((mip_cv7_continuous_bit_nav8_t)0x4u) /* bit 2: Bit 66 (8.2): filter processes take longer than their    \
+                                             allotted time. */
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_FILTER_TIMING_OVERRUN_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_FILTER_TIMING_UNDERRUN_MASK                                              \
+    ((mip_cv7_continuous_bit_nav8_t)0x8u) /* bit 3: Bit 67 (8.3): filter processes are being skipped. */
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_FILTER_TIMING_UNDERRUN_SHIFT 3
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_RESERVED_68_71_MASK                                                      \
+    ((mip_cv7_continuous_bit_nav8_t)0xF0u) /* bits 4-7: (reserved) Bits 68-71 (8.4-8.7): reserved (printed   \
+                                              as GNSS reserved). */
+#define MIP_CV7_CONTINUOUS_BIT_NAV8_RESERVED_68_71_SHIFT 4
+
+/** Continuous BIT byte 0: system (bits 0-7).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_system0_t;
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_SYSTEM_CLOCK_FAILURE_MASK                                             \
+    ((mip_cv7_continuous_bit_system0_t)0x1u) /* bit 0: Bit 0 (0.0): the system clock is not operating        \
+                                                properly; timing may be inaccurate. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_SYSTEM_CLOCK_FAILURE_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_POWER_FAULT_MASK                                                      \
+    ((mip_cv7_continuous_bit_system0_t)0x2u) /* bit 1: Bit 1 (0.1): supply voltage out of the recommended    \
+                                                range, or an internal power fault. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_POWER_FAULT_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_RESERVED_2_3_MASK                                                     \
+    ((mip_cv7_continuous_bit_system0_t)0xCu) /* bits 2-3: (reserved) Bits 2-3 (0.2-0.3): reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_RESERVED_2_3_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_FIRMWARE_FAULT_MASK                                                   \
+    ((mip_cv7_continuous_bit_system0_t)0x10u) /* bit 4: Bit 4 (0.4): firmware detected an unexpected or      \
+                                                 abnormal condition. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_FIRMWARE_FAULT_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_TIMING_OVERLOAD_MASK                                                  \
+    ((mip_cv7_continuous_bit_system0_t)0x20u) /* bit 5: Bit 5 (0.5): the system cannot keep up with the      \
+                                                 processing demand (e.g. too many descriptors). */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_TIMING_OVERLOAD_SHIFT 5
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_BUFFER_OVERRUN_MASK                                                   \
+    ((mip_cv7_continuous_bit_system0_t)0x40u) /* bit 6: Bit 6 (0.6): a data buffer filled up and data may    \
+                                                 have been lost (bandwidth exceeded). */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_BUFFER_OVERRUN_SHIFT 6
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_RESERVED_7_MASK                                                       \
+    ((mip_cv7_continuous_bit_system0_t)0x80u) /* bit 7: (reserved) Bit 7 (0.7): reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM0_RESERVED_7_SHIFT 7
+
+/** Continuous BIT byte 2: system, IMU and filter processes (bits 16-23).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_system2_t;
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_PROCESS_FAULT_MASK                                                \
+    ((mip_cv7_continuous_bit_system2_t)0x1u) /* bit 0: Bit 16 (2.0): the IMU subsystem is not running or did \
+                                                not start. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_PROCESS_FAULT_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_DATA_PROCESS_TIME_EXCEEDED_MASK                                   \
+    ((mip_cv7_continuous_bit_system2_t)0x2u) /* bit 1: Bit 17 (2.1): IMU data processing took longer than    \
+                                                allowed. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_DATA_PROCESS_TIME_EXCEEDED_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_DATA_RATE_ERROR_MASK                                              \
+    ((mip_cv7_continuous_bit_system2_t)0x4u) /* bit 2: Bit 18 (2.2): IMU data is not produced at the         \
+                                                expected base rate. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_DATA_RATE_ERROR_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_STALL_MASK                                                        \
+    ((mip_cv7_continuous_bit_system2_t)0x8u) /* bit 3: Bit 19 (2.3): the IMU subsystem has stalled. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_IMU_STALL_SHIFT 3
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_PROCESS_FAULT_MASK                                             \
+    ((mip_cv7_continuous_bit_system2_t)0xF0u) /* bits 4-7: Bits 20-23 (2.4-2.7): any filter process fault    \
+                                                 (the four bits below). */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_PROCESS_FAULT_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_MAJOR_CYCLE_FAULT_MASK                                         \
+    ((mip_cv7_continuous_bit_system2_t)0x10u) /* bit 4: Bit 20 (2.4): problem with the navigation filter     \
+                                                 major cycle. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_MAJOR_CYCLE_FAULT_SHIFT 4
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_MINOR_CYCLE_FAULT_MASK                                         \
+    ((mip_cv7_continuous_bit_system2_t)0x20u) /* bit 5: Bit 21 (2.5): problem with the navigation filter     \
+                                                 minor cycle. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_MINOR_CYCLE_FAULT_SHIFT 5
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_DATA_RATE_ERROR_MASK                                           \
+    ((mip_cv7_continuous_bit_system2_t)0x40u) /* bit 6: Bit 22 (2.6): a navigation filter process is not     \
+                                                 running at its base rate. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_DATA_RATE_ERROR_SHIFT 6
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_PROCESS_STALL_MASK                                             \
+    ((mip_cv7_continuous_bit_system2_t)0x80u) /* bit 7: Bit 23 (2.7): a navigation filter process has        \
+                                                 stalled. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM2_FILTER_PROCESS_STALL_SHIFT 7
+
+/** Continuous BIT byte 3: system, GNSS processes (bits 24-31).
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_cv7_continuous_bit_system3_t;
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_SUBSYSTEM_FAULT_MASK                                             \
+    ((mip_cv7_continuous_bit_system3_t)0xFu) /* bits 0-3: Bits 24-27 (3.0-3.3): any GNSS subsystem fault     \
+                                                (the bits below). */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_SUBSYSTEM_FAULT_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_MAIN_PROCESS_FAULT_MASK                                          \
+    ((mip_cv7_continuous_bit_system3_t)0x1u) /* bit 0: Bit 24 (3.0): the master GNSS process has not run     \
+                                                within its timeout. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_MAIN_PROCESS_FAULT_SHIFT 0
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_RECEIVER_1_STALL_MASK                                            \
+    ((mip_cv7_continuous_bit_system3_t)0x2u) /* bit 1: Bit 25 (3.1): no data processed from internal         \
+                                                receiver 1 within the timeout. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_RECEIVER_1_STALL_SHIFT 1
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_RECEIVER_2_STALL_MASK                                            \
+    ((mip_cv7_continuous_bit_system3_t)0x4u) /* bit 2: Bit 26 (3.2): no data processed from internal         \
+                                                receiver 2 within the timeout. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_GNSS_RECEIVER_2_STALL_SHIFT 2
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_RESERVED_27_MASK                                                      \
+    ((mip_cv7_continuous_bit_system3_t)0x8u) /* bit 3: (reserved) Bit 27 (3.3): reserved. */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_RESERVED_27_SHIFT 3
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_RESERVED_28_31_MASK                                                   \
+    ((mip_cv7_continuous_bit_system3_t)0xF0u) /* bits 4-7: (reserved) Bits 28-31 (3.4-3.7): system reserved. \
+                                               */
+#define MIP_CV7_CONTINUOUS_BIT_SYSTEM3_RESERVED_28_31_SHIFT 4
+
 /** Device status selector.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_device_status_selector_t;
@@ -286,6 +565,29 @@ typedef uint8_t mip_external_heading_type_t;
     ((mip_external_heading_type_t)1u) /* True heading (from true north). */
 #define MIP_EXTERNAL_HEADING_TYPE_MAGNETIC_HEADING                                                           \
     ((mip_external_heading_type_t)2u) /* Magnetic heading (from magnetic north). */
+
+/** External time delta valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_external_time_delta_valid_flags_t;
+#define MIP_EXTERNAL_TIME_DELTA_VALID_FLAGS_DT_NANOS_MASK                                                    \
+    ((mip_external_time_delta_valid_flags_t)0x1u) /* bit 0: The delta is valid. */
+#define MIP_EXTERNAL_TIME_DELTA_VALID_FLAGS_DT_NANOS_SHIFT 0
+#define MIP_EXTERNAL_TIME_DELTA_VALID_FLAGS_RESERVED_MASK                                                    \
+    ((mip_external_time_delta_valid_flags_t)0xFFFEu) /* bits 1-15: (reserved) Not listed. */
+#define MIP_EXTERNAL_TIME_DELTA_VALID_FLAGS_RESERVED_SHIFT 1
+
+/** External timestamp valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_external_timestamp_valid_flags_t;
+#define MIP_EXTERNAL_TIMESTAMP_VALID_FLAGS_NANOSECONDS_MASK                                                  \
+    ((mip_external_timestamp_valid_flags_t)0x1u) /* bit 0: The nanoseconds value is valid (external clock    \
+                                                    synchronised via PPS). */
+#define MIP_EXTERNAL_TIMESTAMP_VALID_FLAGS_NANOSECONDS_SHIFT 0
+#define MIP_EXTERNAL_TIMESTAMP_VALID_FLAGS_RESERVED_MASK                                                     \
+    ((mip_external_timestamp_valid_flags_t)0xFFFEu) /* bits 1-15: (reserved) Not listed. */
+#define MIP_EXTERNAL_TIMESTAMP_VALID_FLAGS_RESERVED_SHIFT 1
 
 /** Factory streaming action.
  * An integer, so that values the spec does not list are kept. */
@@ -682,6 +984,87 @@ typedef uint8_t mip_function_selector_t;
     ((mip_function_selector_t)6u) /* Apply new setting with no ACK/NACK reply (GX5-45 only). (devices:       \
                                      gx5_45) */
 
+/** GNSS antenna power. Whether the receiver powers the antenna.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_antenna_power_t;
+#define MIP_GNSS_ANTENNA_POWER_OFF ((mip_gnss_antenna_power_t)0u)     /* Antenna power off. */
+#define MIP_GNSS_ANTENNA_POWER_ON ((mip_gnss_antenna_power_t)1u)      /* Antenna power on. */
+#define MIP_GNSS_ANTENNA_POWER_UNKNOWN ((mip_gnss_antenna_power_t)2u) /* Power state unknown. */
+
+/** GNSS antenna state. State of the GNSS antenna connection. There is no value 0.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_antenna_state_t;
+#define MIP_GNSS_ANTENNA_STATE_INIT ((mip_gnss_antenna_state_t)1u)  /* Antenna initialising. */
+#define MIP_GNSS_ANTENNA_STATE_SHORT ((mip_gnss_antenna_state_t)2u) /* Antenna short circuit. */
+#define MIP_GNSS_ANTENNA_STATE_OPEN ((mip_gnss_antenna_state_t)3u)  /* Antenna open circuit (not connected). \
+                                                                     */
+#define MIP_GNSS_ANTENNA_STATE_GOOD ((mip_gnss_antenna_state_t)4u)  /* Antenna good. */
+#define MIP_GNSS_ANTENNA_STATE_UNKNOWN ((mip_gnss_antenna_state_t)5u) /* State unknown. */
+
+/** Base station indicators. Indicator bits of the base station, as reported in RTCM message 1005/1006.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_base_station_indicators_t;
+#define MIP_GNSS_BASE_STATION_INDICATORS_GPS_MASK                                                            \
+    ((mip_gnss_base_station_indicators_t)0x1u) /* bit 0: GPS indicator. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_GPS_SHIFT 0
+#define MIP_GNSS_BASE_STATION_INDICATORS_GLONASS_MASK                                                        \
+    ((mip_gnss_base_station_indicators_t)0x2u) /* bit 1: GLONASS indicator. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_GLONASS_SHIFT 1
+#define MIP_GNSS_BASE_STATION_INDICATORS_GALILEO_MASK                                                        \
+    ((mip_gnss_base_station_indicators_t)0x4u) /* bit 2: Galileo indicator. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_GALILEO_SHIFT 2
+#define MIP_GNSS_BASE_STATION_INDICATORS_BEIDOU_MASK                                                         \
+    ((mip_gnss_base_station_indicators_t)0x8u) /* bit 3: BeiDou indicator. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_BEIDOU_SHIFT 3
+#define MIP_GNSS_BASE_STATION_INDICATORS_REF_STATION_MASK                                                    \
+    ((mip_gnss_base_station_indicators_t)0x10u) /* bit 4: Reference station indicator. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_REF_STATION_SHIFT 4
+#define MIP_GNSS_BASE_STATION_INDICATORS_SINGLE_RECEIVER_MASK                                                \
+    ((mip_gnss_base_station_indicators_t)0x20u) /* bit 5: Single receiver oscillator indicator. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_SINGLE_RECEIVER_SHIFT 5
+#define MIP_GNSS_BASE_STATION_INDICATORS_QUARTER_CYCLE_BIT1_MASK                                             \
+    ((mip_gnss_base_station_indicators_t)0x40u) /* bit 6: Quarter cycle indicator, first bit. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_QUARTER_CYCLE_BIT1_SHIFT 6
+#define MIP_GNSS_BASE_STATION_INDICATORS_QUARTER_CYCLE_BIT2_MASK                                             \
+    ((mip_gnss_base_station_indicators_t)0x80u) /* bit 7: Quarter cycle indicator, second bit. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_QUARTER_CYCLE_BIT2_SHIFT 7
+#define MIP_GNSS_BASE_STATION_INDICATORS_QUARTER_CYCLE_BITS_MASK                                             \
+    ((mip_gnss_base_station_indicators_t)0xC0u) /* bits 6-7: Quarter cycle indicator (both bits). */
+#define MIP_GNSS_BASE_STATION_INDICATORS_QUARTER_CYCLE_BITS_SHIFT 6
+#define MIP_GNSS_BASE_STATION_INDICATORS_RESERVED_MASK                                                       \
+    ((mip_gnss_base_station_indicators_t)0xFF00u) /* bits 8-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_BASE_STATION_INDICATORS_RESERVED_SHIFT 8
+
+/** Base station information valid flags. Which parameters of the base station information field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_base_station_info_valid_flags_t;
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_TOW_MASK                                                      \
+    ((mip_gnss_base_station_info_valid_flags_t)0x1u) /* bit 0: Time of week valid. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_WEEK_NUMBER_MASK                                              \
+    ((mip_gnss_base_station_info_valid_flags_t)0x2u) /* bit 1: Week number valid. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_ECEF_POSITION_MASK                                            \
+    ((mip_gnss_base_station_info_valid_flags_t)0x4u) /* bit 2: ECEF position valid. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_ECEF_POSITION_SHIFT 2
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_HEIGHT_MASK                                                   \
+    ((mip_gnss_base_station_info_valid_flags_t)0x8u) /* bit 3: Antenna height valid. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_HEIGHT_SHIFT 3
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_STATION_ID_MASK                                               \
+    ((mip_gnss_base_station_info_valid_flags_t)0x10u) /* bit 4: Station id valid. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_STATION_ID_SHIFT 4
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_INDICATORS_MASK                                               \
+    ((mip_gnss_base_station_info_valid_flags_t)0x20u) /* bit 5: Indicators valid. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_INDICATORS_SHIFT 5
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_FLAGS_MASK                                                    \
+    ((mip_gnss_base_station_info_valid_flags_t)0x3Fu) /* bits 0-5: All flags. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_RESERVED_MASK                                                 \
+    ((mip_gnss_base_station_info_valid_flags_t)0xFFC0u) /* bits 6-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_BASE_STATION_INFO_VALID_FLAGS_RESERVED_SHIFT 6
+
 /** BeiDou signals enabled.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
  * (value & X_MASK) >> X_SHIFT. */
@@ -693,6 +1076,262 @@ typedef uint8_t mip_gnss_beidou_signals_t;
 #define MIP_GNSS_BEIDOU_SIGNALS_B2A_MASK ((mip_gnss_beidou_signals_t)0x4u) /* bit 2: Enable B2A. */
 #define MIP_GNSS_BEIDOU_SIGNALS_B2A_SHIFT 2
 
+/** GNSS clock information 2 valid flags. Which receiver clock parameters are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_clock_info2_valid_flags_t;
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_BIAS_MASK                                                           \
+    ((mip_gnss_clock_info2_valid_flags_t)0x1u) /* bit 0: Clock bias valid. */
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_BIAS_SHIFT 0
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_DRIFT_MASK                                                          \
+    ((mip_gnss_clock_info2_valid_flags_t)0x2u) /* bit 1: Clock drift valid. */
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_DRIFT_SHIFT 1
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_BIAS_ACCURACY_MASK                                                  \
+    ((mip_gnss_clock_info2_valid_flags_t)0x4u) /* bit 2: Bias accuracy estimate valid. */
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_BIAS_ACCURACY_SHIFT 2
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_DRIFT_ACCURACY_MASK                                                 \
+    ((mip_gnss_clock_info2_valid_flags_t)0x8u) /* bit 3: Drift accuracy estimate valid. */
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_DRIFT_ACCURACY_SHIFT 3
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_FLAGS_MASK                                                          \
+    ((mip_gnss_clock_info2_valid_flags_t)0xFu) /* bits 0-3: All flags. */
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_RESERVED_MASK                                                       \
+    ((mip_gnss_clock_info2_valid_flags_t)0xFFF0u) /* bits 4-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_CLOCK_INFO2_VALID_FLAGS_RESERVED_SHIFT 4
+
+/** GNSS clock information valid flags. Which clock parameters are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_clock_info_valid_flags_t;
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_BIAS_MASK                                                            \
+    ((mip_gnss_clock_info_valid_flags_t)0x1u) /* bit 0: Clock bias valid. */
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_BIAS_SHIFT 0
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_DRIFT_MASK                                                           \
+    ((mip_gnss_clock_info_valid_flags_t)0x2u) /* bit 1: Clock drift valid. */
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_DRIFT_SHIFT 1
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_ACCURACY_ESTIMATE_MASK                                               \
+    ((mip_gnss_clock_info_valid_flags_t)0x4u) /* bit 2: Accuracy estimate valid. */
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_ACCURACY_ESTIMATE_SHIFT 2
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_RESERVED_MASK                                                        \
+    ((mip_gnss_clock_info_valid_flags_t)0xFFF8u) /* bits 3-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_CLOCK_INFO_VALID_FLAGS_RESERVED_SHIFT 3
+
+/** GNSS constellation (CV7 GNSS data).
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_constellation_id_t;
+#define MIP_GNSS_CONSTELLATION_ID_UNKNOWN                                                                    \
+    ((mip_gnss_constellation_id_t)0u) /* Constellation unknown or not given. */
+#define MIP_GNSS_CONSTELLATION_ID_GPS ((mip_gnss_constellation_id_t)1u)     /* GPS. */
+#define MIP_GNSS_CONSTELLATION_ID_GLONASS ((mip_gnss_constellation_id_t)2u) /* GLONASS. */
+#define MIP_GNSS_CONSTELLATION_ID_GALILEO ((mip_gnss_constellation_id_t)3u) /* Galileo. */
+#define MIP_GNSS_CONSTELLATION_ID_BEIDOU ((mip_gnss_constellation_id_t)4u)  /* BeiDou. */
+#define MIP_GNSS_CONSTELLATION_ID_SBAS ((mip_gnss_constellation_id_t)5u)    /* SBAS. */
+
+/** DGNSS base station status. Health of the DGNSS reference station as its UDRE (user differential range
+ * error) scale factor. An integer, so that values the spec does not list are kept. */
+typedef int16_t mip_gnss_dgnss_base_station_status_t;
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_UDRE_SCALE_1_0                                                    \
+    ((mip_gnss_dgnss_base_station_status_t)0) /* UDRE scale factor 1.0. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_UDRE_SCALE_0_75                                                   \
+    ((mip_gnss_dgnss_base_station_status_t)1) /* UDRE scale factor 0.75. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_UDRE_SCALE_0_5                                                    \
+    ((mip_gnss_dgnss_base_station_status_t)2) /* UDRE scale factor 0.5. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_UDRE_SCALE_0_3                                                    \
+    ((mip_gnss_dgnss_base_station_status_t)3) /* UDRE scale factor 0.3. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_UDRE_SCALE_0_2                                                    \
+    ((mip_gnss_dgnss_base_station_status_t)4) /* UDRE scale factor 0.2. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_UDRE_SCALE_0_1                                                    \
+    ((mip_gnss_dgnss_base_station_status_t)5) /* UDRE scale factor 0.1. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_TRANSMISSION_NOT_MONITORED                                        \
+    ((mip_gnss_dgnss_base_station_status_t)6) /* Reference station transmission not monitored. */
+#define MIP_GNSS_DGNSS_BASE_STATION_STATUS_STATION_NOT_WORKING                                               \
+    ((mip_gnss_dgnss_base_station_status_t)7) /* Reference station not working. */
+
+/** DGNSS channel status valid flags. Which parameters of a DGNSS channel status entry are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_dgnss_channel_status_valid_flags_t;
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_SV_ID_MASK                                                 \
+    ((mip_gnss_dgnss_channel_status_valid_flags_t)0x1u) /* bit 0: Space vehicle id valid. */
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_SV_ID_SHIFT 0
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_AGE_MASK                                                   \
+    ((mip_gnss_dgnss_channel_status_valid_flags_t)0x2u) /* bit 1: Correction age valid. */
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_AGE_SHIFT 1
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_PSEUDORANGE_CORRECTION_MASK                                \
+    ((mip_gnss_dgnss_channel_status_valid_flags_t)0x4u) /* bit 2: Pseudorange correction valid. */
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_PSEUDORANGE_CORRECTION_SHIFT 2
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_PSEUDORANGE_RATE_CORRECTION_MASK                           \
+    ((mip_gnss_dgnss_channel_status_valid_flags_t)0x8u) /* bit 3: Pseudorange rate correction valid. */
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_PSEUDORANGE_RATE_CORRECTION_SHIFT 3
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_RESERVED_MASK                                              \
+    ((mip_gnss_dgnss_channel_status_valid_flags_t)0xFFF0u) /* bits 4-15: (reserved) Not named by the manual. \
+                                                            */
+#define MIP_GNSS_DGNSS_CHANNEL_STATUS_VALID_FLAGS_RESERVED_SHIFT 4
+
+/** DGNSS information valid flags. Which parameters of the DGNSS information field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_dgnss_info_valid_flags_t;
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_LATEST_AGE_MASK                                                      \
+    ((mip_gnss_dgnss_info_valid_flags_t)0x1u) /* bit 0: Newest (latest) correction age valid. */
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_LATEST_AGE_SHIFT 0
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_BASE_STATION_ID_MASK                                                 \
+    ((mip_gnss_dgnss_info_valid_flags_t)0x2u) /* bit 1: Base station id valid. */
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_BASE_STATION_ID_SHIFT 1
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_BASE_STATION_STATUS_MASK                                             \
+    ((mip_gnss_dgnss_info_valid_flags_t)0x4u) /* bit 2: Base station status valid. */
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_BASE_STATION_STATUS_SHIFT 2
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_NUM_CHANNELS_MASK                                                    \
+    ((mip_gnss_dgnss_info_valid_flags_t)0x8u) /* bit 3: Number of DGNSS channels valid. */
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_NUM_CHANNELS_SHIFT 3
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_RESERVED_MASK                                                        \
+    ((mip_gnss_dgnss_info_valid_flags_t)0xFFF0u) /* bits 4-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_DGNSS_INFO_VALID_FLAGS_RESERVED_SHIFT 4
+
+/** GNSS DOP valid flags. Which dilution-of-precision values are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_dop_valid_flags_t;
+#define MIP_GNSS_DOP_VALID_FLAGS_GDOP_MASK                                                                   \
+    ((mip_gnss_dop_valid_flags_t)0x1u) /* bit 0: Geometric DOP valid. */
+#define MIP_GNSS_DOP_VALID_FLAGS_GDOP_SHIFT 0
+#define MIP_GNSS_DOP_VALID_FLAGS_PDOP_MASK ((mip_gnss_dop_valid_flags_t)0x2u) /* bit 1: Position DOP valid.  \
+                                                                               */
+#define MIP_GNSS_DOP_VALID_FLAGS_PDOP_SHIFT 1
+#define MIP_GNSS_DOP_VALID_FLAGS_HDOP_MASK                                                                   \
+    ((mip_gnss_dop_valid_flags_t)0x4u) /* bit 2: Horizontal DOP valid. */
+#define MIP_GNSS_DOP_VALID_FLAGS_HDOP_SHIFT 2
+#define MIP_GNSS_DOP_VALID_FLAGS_VDOP_MASK ((mip_gnss_dop_valid_flags_t)0x8u) /* bit 3: Vertical DOP valid.  \
+                                                                               */
+#define MIP_GNSS_DOP_VALID_FLAGS_VDOP_SHIFT 3
+#define MIP_GNSS_DOP_VALID_FLAGS_TDOP_MASK ((mip_gnss_dop_valid_flags_t)0x10u) /* bit 4: Time DOP valid. */
+#define MIP_GNSS_DOP_VALID_FLAGS_TDOP_SHIFT 4
+#define MIP_GNSS_DOP_VALID_FLAGS_NDOP_MASK                                                                   \
+    ((mip_gnss_dop_valid_flags_t)0x20u) /* bit 5: Northing DOP valid. */
+#define MIP_GNSS_DOP_VALID_FLAGS_NDOP_SHIFT 5
+#define MIP_GNSS_DOP_VALID_FLAGS_EDOP_MASK ((mip_gnss_dop_valid_flags_t)0x40u) /* bit 6: Easting DOP valid.  \
+                                                                                */
+#define MIP_GNSS_DOP_VALID_FLAGS_EDOP_SHIFT 6
+#define MIP_GNSS_DOP_VALID_FLAGS_FLAGS_MASK ((mip_gnss_dop_valid_flags_t)0x7Fu) /* bits 0-6: All flags. */
+#define MIP_GNSS_DOP_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_DOP_VALID_FLAGS_RESERVED_MASK                                                               \
+    ((mip_gnss_dop_valid_flags_t)0xFF80u) /* bits 7-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_DOP_VALID_FLAGS_RESERVED_SHIFT 7
+
+/** GNSS ECEF position valid flags. Which parameters of a GNSS ECEF position field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_ecef_position_valid_flags_t;
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_POSITION_MASK                                                     \
+    ((mip_gnss_ecef_position_valid_flags_t)0x1u) /* bit 0: ECEF position valid. */
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_POSITION_SHIFT 0
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_POSITION_ACCURACY_MASK                                            \
+    ((mip_gnss_ecef_position_valid_flags_t)0x2u) /* bit 1: Position accuracy valid. */
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_POSITION_ACCURACY_SHIFT 1
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_FLAGS_MASK                                                        \
+    ((mip_gnss_ecef_position_valid_flags_t)0x3u) /* bits 0-1: All flags. */
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_RESERVED_MASK                                                     \
+    ((mip_gnss_ecef_position_valid_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_ECEF_POSITION_VALID_FLAGS_RESERVED_SHIFT 2
+
+/** GNSS ECEF velocity valid flags. Which parameters of a GNSS ECEF velocity field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_ecef_velocity_valid_flags_t;
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_VELOCITY_MASK                                                     \
+    ((mip_gnss_ecef_velocity_valid_flags_t)0x1u) /* bit 0: ECEF velocity valid. */
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_VELOCITY_SHIFT 0
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_VELOCITY_ACCURACY_MASK                                            \
+    ((mip_gnss_ecef_velocity_valid_flags_t)0x2u) /* bit 1: Velocity accuracy valid. */
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_VELOCITY_ACCURACY_SHIFT 1
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_FLAGS_MASK                                                        \
+    ((mip_gnss_ecef_velocity_valid_flags_t)0x3u) /* bits 0-1: All flags. */
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_RESERVED_MASK                                                     \
+    ((mip_gnss_ecef_velocity_valid_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_ECEF_VELOCITY_VALID_FLAGS_RESERVED_SHIFT 2
+
+/** GPS/Galileo/BeiDou ephemeris valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_ephemeris_valid_flags_t;
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_EPHEMERIS_MASK                                                        \
+    ((mip_gnss_ephemeris_valid_flags_t)0x1u) /* bit 0: Ephemeris data valid. */
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_EPHEMERIS_SHIFT 0
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_MODERN_DATA_MASK                                                      \
+    ((mip_gnss_ephemeris_valid_flags_t)0x2u) /* bit 1: Modernized navigation data present (the manual gives  \
+                                                only the name, not which parameters it covers). */
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_MODERN_DATA_SHIFT 1
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_ISC_L5_MASK                                                           \
+    ((mip_gnss_ephemeris_valid_flags_t)0x4u) /* bit 2: isc_l2c holds the L5 inter-signal correction instead  \
+                                                of L2. */
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_ISC_L5_SHIFT 2
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_FLAGS_MASK                                                            \
+    ((mip_gnss_ephemeris_valid_flags_t)0x7u) /* bits 0-2: All valid flags (the manual's 'flags 0-2' entry).  \
+                                              */
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_RESERVED_MASK                                                         \
+    ((mip_gnss_ephemeris_valid_flags_t)0xFFF8u) /* bits 3-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_EPHEMERIS_VALID_FLAGS_RESERVED_SHIFT 3
+
+/** GNSS fix flags. Corrections used in the position fix.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_fix_flags_t;
+#define MIP_GNSS_FIX_FLAGS_SBAS_USED_MASK ((mip_gnss_fix_flags_t)0x1u) /* bit 0: SBAS corrections used. */
+#define MIP_GNSS_FIX_FLAGS_SBAS_USED_SHIFT 0
+#define MIP_GNSS_FIX_FLAGS_DGNSS_USED_MASK                                                                   \
+    ((mip_gnss_fix_flags_t)0x2u) /* bit 1: Differential (DGNSS) corrections used. */
+#define MIP_GNSS_FIX_FLAGS_DGNSS_USED_SHIFT 1
+#define MIP_GNSS_FIX_FLAGS_RESERVED_MASK                                                                     \
+    ((mip_gnss_fix_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_FIX_FLAGS_RESERVED_SHIFT 2
+
+/** GNSS fix information valid flags. Which parameters of a GNSS fix information field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_fix_info_valid_flags_t;
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_FIX_TYPE_MASK                                                          \
+    ((mip_gnss_fix_info_valid_flags_t)0x1u) /* bit 0: Fix type valid. */
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_FIX_TYPE_SHIFT 0
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_NUM_SV_MASK                                                            \
+    ((mip_gnss_fix_info_valid_flags_t)0x2u) /* bit 1: Number of satellites valid. */
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_NUM_SV_SHIFT 1
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_FIX_FLAGS_MASK                                                         \
+    ((mip_gnss_fix_info_valid_flags_t)0x4u) /* bit 2: Fix flags valid. */
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_FIX_FLAGS_SHIFT 2
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_FLAGS_MASK                                                             \
+    ((mip_gnss_fix_info_valid_flags_t)0x7u) /* bits 0-2: All flags. */
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_RESERVED_MASK                                                          \
+    ((mip_gnss_fix_info_valid_flags_t)0xFFF8u) /* bits 3-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_FIX_INFO_VALID_FLAGS_RESERVED_SHIFT 3
+
+/** GNSS fix type (CV7). Type of position fix a CV7 GNSS receiver reports.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_fix_type_cv7_t;
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_3D ((mip_gnss_fix_type_cv7_t)0u)        /* 3D fix. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_2D ((mip_gnss_fix_type_cv7_t)1u)        /* 2D fix. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_TIME_ONLY ((mip_gnss_fix_type_cv7_t)2u) /* Time only. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_NONE ((mip_gnss_fix_type_cv7_t)3u)      /* No fix. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_INVALID ((mip_gnss_fix_type_cv7_t)4u)   /* Invalid. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_RTK_FLOAT                                                                  \
+    ((mip_gnss_fix_type_cv7_t)5u) /* RTK solution, float ambiguities. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_RTK_FIXED                                                                  \
+    ((mip_gnss_fix_type_cv7_t)6u) /* RTK solution, fixed ambiguities. */
+#define MIP_GNSS_FIX_TYPE_CV7_FIX_DIFFERENTIAL                                                               \
+    ((mip_gnss_fix_type_cv7_t)7u) /* Differential (DGNSS) solution. */
+
+/** GNSS fix type (GX5-45). Type of position fix the GX5-45 GNSS receiver reports.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_fix_type_gx5_t;
+#define MIP_GNSS_FIX_TYPE_GX5_FIX_3D ((mip_gnss_fix_type_gx5_t)0u)        /* 3D fix. */
+#define MIP_GNSS_FIX_TYPE_GX5_FIX_2D ((mip_gnss_fix_type_gx5_t)1u)        /* 2D fix. */
+#define MIP_GNSS_FIX_TYPE_GX5_FIX_TIME_ONLY ((mip_gnss_fix_type_gx5_t)2u) /* Time only. */
+#define MIP_GNSS_FIX_TYPE_GX5_FIX_NONE ((mip_gnss_fix_type_gx5_t)3u)      /* No fix. */
+#define MIP_GNSS_FIX_TYPE_GX5_FIX_INVALID ((mip_gnss_fix_type_gx5_t)4u)   /* Invalid. */
+
 /** Galileo signals enabled.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
  * (value & X_MASK) >> X_SHIFT. */
@@ -703,6 +1342,29 @@ typedef uint8_t mip_gnss_galileo_signals_t;
 #define MIP_GNSS_GALILEO_SIGNALS_E5B_SHIFT 1
 #define MIP_GNSS_GALILEO_SIGNALS_E5A_MASK ((mip_gnss_galileo_signals_t)0x4u) /* bit 2: Enable E5A. */
 #define MIP_GNSS_GALILEO_SIGNALS_E5A_SHIFT 2
+
+/** GLONASS ephemeris valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_glonass_ephemeris_valid_flags_t;
+#define MIP_GNSS_GLONASS_EPHEMERIS_VALID_FLAGS_EPHEMERIS_MASK                                                \
+    ((mip_gnss_glonass_ephemeris_valid_flags_t)0x1u) /* bit 0: Ephemeris data valid. */
+#define MIP_GNSS_GLONASS_EPHEMERIS_VALID_FLAGS_EPHEMERIS_SHIFT 0
+#define MIP_GNSS_GLONASS_EPHEMERIS_VALID_FLAGS_FLAGS_MASK                                                    \
+    ((mip_gnss_glonass_ephemeris_valid_flags_t)0x1u) /* bit 0: All valid flags (the manual's 'flags 0'       \
+                                                        entry: the single bit 0). */
+#define MIP_GNSS_GLONASS_EPHEMERIS_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_GLONASS_EPHEMERIS_VALID_FLAGS_RESERVED_MASK                                                 \
+    ((mip_gnss_glonass_ephemeris_valid_flags_t)0xFFFEu) /* bits 1-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_GLONASS_EPHEMERIS_VALID_FLAGS_RESERVED_SHIFT 1
+
+/** GLONASS satellite type.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_glonass_satellite_type_t;
+#define MIP_GNSS_GLONASS_SATELLITE_TYPE_GLONASS                                                              \
+    ((mip_gnss_glonass_satellite_type_t)0u) /* GLONASS satellite. */
+#define MIP_GNSS_GLONASS_SATELLITE_TYPE_GLONASS_M                                                            \
+    ((mip_gnss_glonass_satellite_type_t)1u) /* GLONASS-M satellite. */
 
 /** GLONASS signals enabled.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
@@ -723,6 +1385,425 @@ typedef uint8_t mip_gnss_gps_signals_t;
 #define MIP_GNSS_GPS_SIGNALS_L2C_SHIFT 1
 #define MIP_GNSS_GPS_SIGNALS_L5_MASK ((mip_gnss_gps_signals_t)0x4u) /* bit 2: Enable L5. */
 #define MIP_GNSS_GPS_SIGNALS_L5_SHIFT 2
+
+/** GNSS GPS time valid flags. Validity of a GNSS GPS time field.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_gps_time_valid_flags_t;
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_TOW_MASK                                                               \
+    ((mip_gnss_gps_time_valid_flags_t)0x1u) /* bit 0: Time of week valid. */
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_WEEK_NUMBER_MASK                                                       \
+    ((mip_gnss_gps_time_valid_flags_t)0x2u) /* bit 1: Week number valid. */
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_FLAGS_MASK                                                             \
+    ((mip_gnss_gps_time_valid_flags_t)0x3u) /* bits 0-1: All flags. */
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_RESERVED_MASK                                                          \
+    ((mip_gnss_gps_time_valid_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_GPS_TIME_VALID_FLAGS_RESERVED_SHIFT 2
+
+/** GNSS hardware status valid flags. Which parameters of a GNSS hardware status field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_hardware_status_valid_flags_t;
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_SENSOR_STATE_MASK                                               \
+    ((mip_gnss_hardware_status_valid_flags_t)0x1u) /* bit 0: Receiver (sensor) state valid. */
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_SENSOR_STATE_SHIFT 0
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_ANTENNA_STATE_MASK                                              \
+    ((mip_gnss_hardware_status_valid_flags_t)0x2u) /* bit 1: Antenna state valid. */
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_ANTENNA_STATE_SHIFT 1
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_ANTENNA_POWER_MASK                                              \
+    ((mip_gnss_hardware_status_valid_flags_t)0x4u) /* bit 2: Antenna power valid. */
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_ANTENNA_POWER_SHIFT 2
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_FLAGS_MASK                                                      \
+    ((mip_gnss_hardware_status_valid_flags_t)0x7u) /* bits 0-2: All flags. */
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_RESERVED_MASK                                                   \
+    ((mip_gnss_hardware_status_valid_flags_t)0xFFF8u) /* bits 3-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_HARDWARE_STATUS_VALID_FLAGS_RESERVED_SHIFT 3
+
+/** GPS leap seconds valid flags. Validity of the GPS leap seconds field.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_leap_seconds_valid_flags_t;
+#define MIP_GNSS_LEAP_SECONDS_VALID_FLAGS_RESERVED_0_MASK                                                    \
+    ((mip_gnss_leap_seconds_valid_flags_t)0x1u) /* bit 0: (reserved) Not named by the manual. */
+#define MIP_GNSS_LEAP_SECONDS_VALID_FLAGS_RESERVED_0_SHIFT 0
+#define MIP_GNSS_LEAP_SECONDS_VALID_FLAGS_LEAP_SECONDS_MASK                                                  \
+    ((mip_gnss_leap_seconds_valid_flags_t)0x2u) /* bit 1: Leap seconds valid. */
+#define MIP_GNSS_LEAP_SECONDS_VALID_FLAGS_LEAP_SECONDS_SHIFT 1
+#define MIP_GNSS_LEAP_SECONDS_VALID_FLAGS_RESERVED_MASK                                                      \
+    ((mip_gnss_leap_seconds_valid_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_LEAP_SECONDS_VALID_FLAGS_RESERVED_SHIFT 2
+
+/** GNSS LLH position valid flags. Which parameters of a GNSS LLH position field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_llh_position_valid_flags_t;
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_LAT_LON_MASK                                                       \
+    ((mip_gnss_llh_position_valid_flags_t)0x1u) /* bit 0: Latitude and longitude valid. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_LAT_LON_SHIFT 0
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_ELLIPSOID_HEIGHT_MASK                                              \
+    ((mip_gnss_llh_position_valid_flags_t)0x2u) /* bit 1: Height above ellipsoid valid. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_ELLIPSOID_HEIGHT_SHIFT 1
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_MSL_HEIGHT_MASK                                                    \
+    ((mip_gnss_llh_position_valid_flags_t)0x4u) /* bit 2: Height above mean sea level valid. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_MSL_HEIGHT_SHIFT 2
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_HORIZONTAL_ACCURACY_MASK                                           \
+    ((mip_gnss_llh_position_valid_flags_t)0x8u) /* bit 3: Horizontal accuracy valid. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_HORIZONTAL_ACCURACY_SHIFT 3
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_VERTICAL_ACCURACY_MASK                                             \
+    ((mip_gnss_llh_position_valid_flags_t)0x10u) /* bit 4: Vertical accuracy valid. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_VERTICAL_ACCURACY_SHIFT 4
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_FLAGS_MASK                                                         \
+    ((mip_gnss_llh_position_valid_flags_t)0x1Fu) /* bits 0-4: All flags. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_RESERVED_MASK                                                      \
+    ((mip_gnss_llh_position_valid_flags_t)0xFFE0u) /* bits 5-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_LLH_POSITION_VALID_FLAGS_RESERVED_SHIFT 5
+
+/** GNSS NED velocity valid flags. Which parameters of a GNSS NED velocity field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_ned_velocity_valid_flags_t;
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_VELOCITY_MASK                                                      \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x1u) /* bit 0: NED velocity vector valid. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_VELOCITY_SHIFT 0
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_SPEED_3D_MASK                                                      \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x2u) /* bit 1: 3D speed valid. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_SPEED_3D_SHIFT 1
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_GROUND_SPEED_MASK                                                  \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x4u) /* bit 2: Ground speed valid. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_GROUND_SPEED_SHIFT 2
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_HEADING_MASK                                                       \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x8u) /* bit 3: Heading valid. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_HEADING_SHIFT 3
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_SPEED_ACCURACY_MASK                                                \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x10u) /* bit 4: Speed accuracy valid. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_SPEED_ACCURACY_SHIFT 4
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_HEADING_ACCURACY_MASK                                              \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x20u) /* bit 5: Heading accuracy valid. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_HEADING_ACCURACY_SHIFT 5
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_FLAGS_MASK                                                         \
+    ((mip_gnss_ned_velocity_valid_flags_t)0x3Fu) /* bits 0-5: All flags. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_RESERVED_MASK                                                      \
+    ((mip_gnss_ned_velocity_valid_flags_t)0xFFC0u) /* bits 6-15: (reserved) Not named by the manuals. */
+#define MIP_GNSS_NED_VELOCITY_VALID_FLAGS_RESERVED_SHIFT 6
+
+/** Raw observation valid flags. Which parameters of a raw observation field hold valid data.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_raw_valid_flags_t;
+#define MIP_GNSS_RAW_VALID_FLAGS_TOW_MASK ((mip_gnss_raw_valid_flags_t)0x1u) /* bit 0: Time of week valid.   \
+                                                                              */
+#define MIP_GNSS_RAW_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_GNSS_RAW_VALID_FLAGS_WEEK_NUMBER_MASK                                                            \
+    ((mip_gnss_raw_valid_flags_t)0x2u) /* bit 1: Week number valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_GNSS_RAW_VALID_FLAGS_RECEIVER_ID_MASK                                                            \
+    ((mip_gnss_raw_valid_flags_t)0x4u) /* bit 2: Receiver id valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_RECEIVER_ID_SHIFT 2
+#define MIP_GNSS_RAW_VALID_FLAGS_TRACKING_CHANNEL_MASK                                                       \
+    ((mip_gnss_raw_valid_flags_t)0x8u) /* bit 3: Tracking channel valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_TRACKING_CHANNEL_SHIFT 3
+#define MIP_GNSS_RAW_VALID_FLAGS_GNSS_ID_MASK                                                                \
+    ((mip_gnss_raw_valid_flags_t)0x10u) /* bit 4: Constellation id valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_GNSS_ID_SHIFT 4
+#define MIP_GNSS_RAW_VALID_FLAGS_SATELLITE_ID_MASK                                                           \
+    ((mip_gnss_raw_valid_flags_t)0x20u) /* bit 5: Satellite id valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_SATELLITE_ID_SHIFT 5
+#define MIP_GNSS_RAW_VALID_FLAGS_SIGNAL_ID_MASK                                                              \
+    ((mip_gnss_raw_valid_flags_t)0x40u) /* bit 6: Signal id valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_SIGNAL_ID_SHIFT 6
+#define MIP_GNSS_RAW_VALID_FLAGS_SIGNAL_STRENGTH_MASK                                                        \
+    ((mip_gnss_raw_valid_flags_t)0x80u) /* bit 7: Signal strength valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_SIGNAL_STRENGTH_SHIFT 7
+#define MIP_GNSS_RAW_VALID_FLAGS_QUALITY_MASK ((mip_gnss_raw_valid_flags_t)0x100u) /* bit 8: Quality valid.  \
+                                                                                    */
+#define MIP_GNSS_RAW_VALID_FLAGS_QUALITY_SHIFT 8
+#define MIP_GNSS_RAW_VALID_FLAGS_PSEUDORANGE_MASK                                                            \
+    ((mip_gnss_raw_valid_flags_t)0x200u) /* bit 9: Pseudorange valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_PSEUDORANGE_SHIFT 9
+#define MIP_GNSS_RAW_VALID_FLAGS_CARRIER_PHASE_MASK                                                          \
+    ((mip_gnss_raw_valid_flags_t)0x400u) /* bit 10: Carrier phase valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_CARRIER_PHASE_SHIFT 10
+#define MIP_GNSS_RAW_VALID_FLAGS_DOPPLER_MASK                                                                \
+    ((mip_gnss_raw_valid_flags_t)0x800u) /* bit 11: Doppler valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_DOPPLER_SHIFT 11
+#define MIP_GNSS_RAW_VALID_FLAGS_RANGE_UNCERTAINTY_MASK                                                      \
+    ((mip_gnss_raw_valid_flags_t)0x1000u) /* bit 12: Pseudorange uncertainty valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_RANGE_UNCERTAINTY_SHIFT 12
+#define MIP_GNSS_RAW_VALID_FLAGS_CARRIER_PHASE_UNCERTAINTY_MASK                                              \
+    ((mip_gnss_raw_valid_flags_t)0x2000u) /* bit 13: Carrier phase uncertainty valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_CARRIER_PHASE_UNCERTAINTY_SHIFT 13
+#define MIP_GNSS_RAW_VALID_FLAGS_DOPPLER_UNCERTAINTY_MASK                                                    \
+    ((mip_gnss_raw_valid_flags_t)0x4000u) /* bit 14: Doppler uncertainty valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_DOPPLER_UNCERTAINTY_SHIFT 14
+#define MIP_GNSS_RAW_VALID_FLAGS_LOCK_TIME_MASK                                                              \
+    ((mip_gnss_raw_valid_flags_t)0x8000u) /* bit 15: Lock time valid. */
+#define MIP_GNSS_RAW_VALID_FLAGS_LOCK_TIME_SHIFT 15
+#define MIP_GNSS_RAW_VALID_FLAGS_FLAGS_MASK                                                                  \
+    ((mip_gnss_raw_valid_flags_t)0xFFFFu) /* bits 0-15: All valid flags (the manual's 'flags 0-15' entry).   \
+                                           */
+#define MIP_GNSS_RAW_VALID_FLAGS_FLAGS_SHIFT 0
+
+/** GNSS receiver (sensor) state. Power state of the GNSS receiver (GX5-45 "Sensor State", CV7 "Receiver
+ * State"). An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_receiver_state_t;
+#define MIP_GNSS_RECEIVER_STATE_OFF ((mip_gnss_receiver_state_t)0u)     /* Receiver off. */
+#define MIP_GNSS_RECEIVER_STATE_ON ((mip_gnss_receiver_state_t)1u)      /* Receiver on. */
+#define MIP_GNSS_RECEIVER_STATE_UNKNOWN ((mip_gnss_receiver_state_t)2u) /* State unknown. */
+
+/** Satellite status valid flags. Which parameters of a satellite status field hold valid data.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_satellite_status_valid_flags_t;
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_TOW_MASK                                                       \
+    ((mip_gnss_satellite_status_valid_flags_t)0x1u) /* bit 0: Time of week valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_WEEK_NUMBER_MASK                                               \
+    ((mip_gnss_satellite_status_valid_flags_t)0x2u) /* bit 1: Week number valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_GNSS_ID_MASK                                                   \
+    ((mip_gnss_satellite_status_valid_flags_t)0x4u) /* bit 2: Constellation id valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_GNSS_ID_SHIFT 2
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_SATELLITE_ID_MASK                                              \
+    ((mip_gnss_satellite_status_valid_flags_t)0x8u) /* bit 3: Satellite id valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_SATELLITE_ID_SHIFT 3
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_ELEVATION_MASK                                                 \
+    ((mip_gnss_satellite_status_valid_flags_t)0x10u) /* bit 4: Elevation valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_ELEVATION_SHIFT 4
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_AZIMUTH_MASK                                                   \
+    ((mip_gnss_satellite_status_valid_flags_t)0x20u) /* bit 5: Azimuth valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_AZIMUTH_SHIFT 5
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_HEALTH_MASK                                                    \
+    ((mip_gnss_satellite_status_valid_flags_t)0x40u) /* bit 6: Health valid. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_HEALTH_SHIFT 6
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_FLAGS_MASK                                                     \
+    ((mip_gnss_satellite_status_valid_flags_t)0x7Fu) /* bits 0-6: All valid flags (the manual's 'flags 0-6'  \
+                                                        entry). */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_RESERVED_MASK                                                  \
+    ((mip_gnss_satellite_status_valid_flags_t)0xFF80u) /* bits 7-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_SATELLITE_STATUS_VALID_FLAGS_RESERVED_SHIFT 7
+
+/** SBAS information valid flags. Which parameters of the SBAS information field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_sbas_info_valid_flags_t;
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_TOW_MASK                                                              \
+    ((mip_gnss_sbas_info_valid_flags_t)0x1u) /* bit 0: Time of week valid. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_WEEK_NUMBER_MASK                                                      \
+    ((mip_gnss_sbas_info_valid_flags_t)0x2u) /* bit 1: Week number valid. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_SBAS_SYSTEM_MASK                                                      \
+    ((mip_gnss_sbas_info_valid_flags_t)0x4u) /* bit 2: SBAS system valid. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_SBAS_SYSTEM_SHIFT 2
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_SBAS_ID_MASK                                                          \
+    ((mip_gnss_sbas_info_valid_flags_t)0x8u) /* bit 3: SBAS satellite id valid. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_SBAS_ID_SHIFT 3
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_COUNT_MASK                                                            \
+    ((mip_gnss_sbas_info_valid_flags_t)0x10u) /* bit 4: Number of corrections valid. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_COUNT_SHIFT 4
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_SBAS_STATUS_MASK                                                      \
+    ((mip_gnss_sbas_info_valid_flags_t)0x20u) /* bit 5: SBAS status valid. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_SBAS_STATUS_SHIFT 5
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_FLAGS_MASK                                                            \
+    ((mip_gnss_sbas_info_valid_flags_t)0x3Fu) /* bits 0-5: All flags. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_RESERVED_MASK                                                         \
+    ((mip_gnss_sbas_info_valid_flags_t)0xFFC0u) /* bits 6-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_SBAS_INFO_VALID_FLAGS_RESERVED_SHIFT 6
+
+/** SBAS status. Status of the SBAS service.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gnss_sbas_status_t;
+#define MIP_GNSS_SBAS_STATUS_RANGE_AVAILABLE_MASK                                                            \
+    ((mip_gnss_sbas_status_t)0x1u) /* bit 0: SBAS ranging available. */
+#define MIP_GNSS_SBAS_STATUS_RANGE_AVAILABLE_SHIFT 0
+#define MIP_GNSS_SBAS_STATUS_CORRECTIONS_AVAILABLE_MASK                                                      \
+    ((mip_gnss_sbas_status_t)0x2u) /* bit 1: SBAS corrections available. */
+#define MIP_GNSS_SBAS_STATUS_CORRECTIONS_AVAILABLE_SHIFT 1
+#define MIP_GNSS_SBAS_STATUS_INTEGRITY_AVAILABLE_MASK                                                        \
+    ((mip_gnss_sbas_status_t)0x4u) /* bit 2: SBAS integrity information available. */
+#define MIP_GNSS_SBAS_STATUS_INTEGRITY_AVAILABLE_SHIFT 2
+#define MIP_GNSS_SBAS_STATUS_TEST_MODE_MASK ((mip_gnss_sbas_status_t)0x8u) /* bit 3: SBAS is in test mode.   \
+                                                                            */
+#define MIP_GNSS_SBAS_STATUS_TEST_MODE_SHIFT 3
+#define MIP_GNSS_SBAS_STATUS_RESERVED_MASK                                                                   \
+    ((mip_gnss_sbas_status_t)0xF0u) /* bits 4-7: (reserved) Not named by the manual. */
+#define MIP_GNSS_SBAS_STATUS_RESERVED_SHIFT 4
+
+/** SBAS system. Satellite-based augmentation system the receiver is using.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_sbas_system_t;
+#define MIP_GNSS_SBAS_SYSTEM_UNKNOWN ((mip_gnss_sbas_system_t)0u) /* Unknown. */
+#define MIP_GNSS_SBAS_SYSTEM_WAAS ((mip_gnss_sbas_system_t)1u)    /* WAAS (North America). */
+#define MIP_GNSS_SBAS_SYSTEM_EGNOS ((mip_gnss_sbas_system_t)2u)   /* EGNOS (Europe). */
+#define MIP_GNSS_SBAS_SYSTEM_MSAS ((mip_gnss_sbas_system_t)3u)    /* MSAS (Japan). */
+#define MIP_GNSS_SBAS_SYSTEM_GAGAN ((mip_gnss_sbas_system_t)4u)   /* GAGAN (India). */
+
+/** GNSS signal identifier. The constellation, frequency band and code/channel component of one observation.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_signal_id_t;
+#define MIP_GNSS_SIGNAL_ID_UNKNOWN ((mip_gnss_signal_id_t)0u)        /* Unknown or unspecified signal. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L1CA ((mip_gnss_signal_id_t)1u)       /* GPS L1 C/A. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L1P ((mip_gnss_signal_id_t)2u)        /* GPS L1 P. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L1Z ((mip_gnss_signal_id_t)3u)        /* GPS L1 Z-tracking. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L2CA ((mip_gnss_signal_id_t)4u)       /* GPS L2 C/A. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L2P ((mip_gnss_signal_id_t)5u)        /* GPS L2 P. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L2Z ((mip_gnss_signal_id_t)6u)        /* GPS L2 Z-tracking. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L2CL ((mip_gnss_signal_id_t)7u)       /* GPS L2C long code (L). */
+#define MIP_GNSS_SIGNAL_ID_GPS_L2CM ((mip_gnss_signal_id_t)8u)       /* GPS L2C medium code (M). */
+#define MIP_GNSS_SIGNAL_ID_GPS_L2CML ((mip_gnss_signal_id_t)9u)      /* GPS L2C combined M+L. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L5I ((mip_gnss_signal_id_t)10u)       /* GPS L5 I (data). */
+#define MIP_GNSS_SIGNAL_ID_GPS_L5Q ((mip_gnss_signal_id_t)11u)       /* GPS L5 Q (pilot). */
+#define MIP_GNSS_SIGNAL_ID_GPS_L5IQ ((mip_gnss_signal_id_t)12u)      /* GPS L5 combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_GPS_L1CD ((mip_gnss_signal_id_t)13u)      /* GPS L1C data (D). */
+#define MIP_GNSS_SIGNAL_ID_GPS_L1CP ((mip_gnss_signal_id_t)14u)      /* GPS L1C pilot (P). */
+#define MIP_GNSS_SIGNAL_ID_GPS_L1CDP ((mip_gnss_signal_id_t)15u)     /* GPS L1C combined D+P. */
+#define MIP_GNSS_SIGNAL_ID_GLONASS_G1CA ((mip_gnss_signal_id_t)32u)  /* GLONASS G1 C/A. */
+#define MIP_GNSS_SIGNAL_ID_GLONASS_G1P ((mip_gnss_signal_id_t)33u)   /* GLONASS G1 P. */
+#define MIP_GNSS_SIGNAL_ID_GLONASS_G2C ((mip_gnss_signal_id_t)34u)   /* GLONASS G2 C/A. */
+#define MIP_GNSS_SIGNAL_ID_GLONASS_G2P ((mip_gnss_signal_id_t)35u)   /* GLONASS G2 P. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E1C ((mip_gnss_signal_id_t)64u)   /* Galileo E1 C (pilot). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E1A ((mip_gnss_signal_id_t)65u)   /* Galileo E1 A (PRS). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E1B ((mip_gnss_signal_id_t)66u)   /* Galileo E1 B (data). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E1BC ((mip_gnss_signal_id_t)67u)  /* Galileo E1 combined B+C. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E1ABC ((mip_gnss_signal_id_t)68u) /* Galileo E1 combined A+B+C. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E6C ((mip_gnss_signal_id_t)69u)   /* Galileo E6 C (pilot). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E6A ((mip_gnss_signal_id_t)70u)   /* Galileo E6 A (PRS). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E6B ((mip_gnss_signal_id_t)71u)   /* Galileo E6 B (data). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E6BC ((mip_gnss_signal_id_t)72u)  /* Galileo E6 combined B+C. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E6ABC ((mip_gnss_signal_id_t)73u) /* Galileo E6 combined A+B+C. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5BI ((mip_gnss_signal_id_t)74u)  /* Galileo E5b I (data). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5BQ ((mip_gnss_signal_id_t)75u)  /* Galileo E5b Q (pilot). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5BIQ ((mip_gnss_signal_id_t)76u) /* Galileo E5b combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5ABI                                                                     \
+    ((mip_gnss_signal_id_t)77u) /* Galileo E5 AltBOC (E5a+E5b) I (data). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5ABQ                                                                     \
+    ((mip_gnss_signal_id_t)78u) /* Galileo E5 AltBOC (E5a+E5b) Q (pilot). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5ABIQ                                                                    \
+    ((mip_gnss_signal_id_t)79u) /* Galileo E5 AltBOC (E5a+E5b) combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5AI ((mip_gnss_signal_id_t)80u)  /* Galileo E5a I (data). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5AQ ((mip_gnss_signal_id_t)81u)  /* Galileo E5a Q (pilot). */
+#define MIP_GNSS_SIGNAL_ID_GALILEO_E5AIQ ((mip_gnss_signal_id_t)82u) /* Galileo E5a combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_SBAS_L1CA ((mip_gnss_signal_id_t)96u)     /* SBAS L1 C/A. */
+#define MIP_GNSS_SIGNAL_ID_SBAS_L5I ((mip_gnss_signal_id_t)97u)      /* SBAS L5 I (data). */
+#define MIP_GNSS_SIGNAL_ID_SBAS_L5Q ((mip_gnss_signal_id_t)98u)      /* SBAS L5 Q (pilot). */
+#define MIP_GNSS_SIGNAL_ID_SBAS_L5IQ ((mip_gnss_signal_id_t)99u)     /* SBAS L5 combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L1CA ((mip_gnss_signal_id_t)128u)    /* QZSS L1 C/A. */
+#define MIP_GNSS_SIGNAL_ID_QZSS_LEXS ((mip_gnss_signal_id_t)129u)    /* QZSS LEX short code (S). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_LEXL ((mip_gnss_signal_id_t)130u)    /* QZSS LEX long code (L). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_LEXSL ((mip_gnss_signal_id_t)131u)   /* QZSS LEX combined S+L. */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L2CM ((mip_gnss_signal_id_t)132u)    /* QZSS L2C medium code (M). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L2CL ((mip_gnss_signal_id_t)133u)    /* QZSS L2C long code (L). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L2CML ((mip_gnss_signal_id_t)134u)   /* QZSS L2C combined M+L. */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L5I ((mip_gnss_signal_id_t)135u)     /* QZSS L5 I (data). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L5Q ((mip_gnss_signal_id_t)136u)     /* QZSS L5 Q (pilot). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L5IQ ((mip_gnss_signal_id_t)137u)    /* QZSS L5 combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L1CD ((mip_gnss_signal_id_t)138u)    /* QZSS L1C data (D). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L1CP ((mip_gnss_signal_id_t)139u)    /* QZSS L1C pilot (P). */
+#define MIP_GNSS_SIGNAL_ID_QZSS_L1CDP ((mip_gnss_signal_id_t)140u)   /* QZSS L1C combined D+P. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B1I ((mip_gnss_signal_id_t)160u)   /* BeiDou B1 I. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B1Q ((mip_gnss_signal_id_t)161u)   /* BeiDou B1 Q. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B1IQ ((mip_gnss_signal_id_t)162u)  /* BeiDou B1 combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B3I ((mip_gnss_signal_id_t)163u)   /* BeiDou B3 I. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B3Q ((mip_gnss_signal_id_t)164u)   /* BeiDou B3 Q. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B3IQ ((mip_gnss_signal_id_t)165u)  /* BeiDou B3 combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B2I ((mip_gnss_signal_id_t)166u)   /* BeiDou B2 I. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B2Q ((mip_gnss_signal_id_t)167u)   /* BeiDou B2 Q. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B2IQ ((mip_gnss_signal_id_t)168u)  /* BeiDou B2 combined I+Q. */
+#define MIP_GNSS_SIGNAL_ID_BEIDOU_B2A ((mip_gnss_signal_id_t)169u)   /* BeiDou B2a. */
+
+/** GNSS raw observation signal quality. Tracking state of the signal an observation comes from.
+ * An integer, so that values the spec does not list are kept. */
+typedef uint8_t mip_gnss_signal_quality_t;
+#define MIP_GNSS_SIGNAL_QUALITY_NONE ((mip_gnss_signal_quality_t)0u)      /* No signal. */
+#define MIP_GNSS_SIGNAL_QUALITY_SEARCHING ((mip_gnss_signal_quality_t)1u) /* Searching for the signal. */
+#define MIP_GNSS_SIGNAL_QUALITY_ACQUIRED ((mip_gnss_signal_quality_t)2u)  /* Signal acquired. */
+#define MIP_GNSS_SIGNAL_QUALITY_UNUSABLE ((mip_gnss_signal_quality_t)3u)  /* Signal detected but unusable. */
+#define MIP_GNSS_SIGNAL_QUALITY_TIME_LOCKED ((mip_gnss_signal_quality_t)4u)  /* Time locked. */
+#define MIP_GNSS_SIGNAL_QUALITY_FULLY_LOCKED ((mip_gnss_signal_quality_t)5u) /* Fully locked. */
+
+/** Space vehicle flags. Use and health of one space vehicle.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_sv_flags_t;
+#define MIP_GNSS_SV_FLAGS_USED_FOR_NAVIGATION_MASK                                                           \
+    ((mip_gnss_sv_flags_t)0x1u) /* bit 0: The SV is used in the navigation solution. */
+#define MIP_GNSS_SV_FLAGS_USED_FOR_NAVIGATION_SHIFT 0
+#define MIP_GNSS_SV_FLAGS_HEALTHY_MASK ((mip_gnss_sv_flags_t)0x2u) /* bit 1: The SV is healthy. */
+#define MIP_GNSS_SV_FLAGS_HEALTHY_SHIFT 1
+#define MIP_GNSS_SV_FLAGS_RESERVED_MASK                                                                      \
+    ((mip_gnss_sv_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_SV_FLAGS_RESERVED_SHIFT 2
+
+/** Space vehicle information valid flags. Which parameters of a space vehicle information entry are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_sv_info_valid_flags_t;
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_CHANNEL_MASK                                                            \
+    ((mip_gnss_sv_info_valid_flags_t)0x1u) /* bit 0: Channel valid. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_CHANNEL_SHIFT 0
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_SV_ID_MASK                                                              \
+    ((mip_gnss_sv_info_valid_flags_t)0x2u) /* bit 1: Space vehicle id valid. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_SV_ID_SHIFT 1
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_RESERVED_2_MASK                                                         \
+    ((mip_gnss_sv_info_valid_flags_t)0x4u) /* bit 2: (reserved) Not named by the manual (its list skips      \
+                                              0x0004). */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_RESERVED_2_SHIFT 2
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_CARRIER_TO_NOISE_RATIO_MASK                                             \
+    ((mip_gnss_sv_info_valid_flags_t)0x8u) /* bit 3: Carrier to noise ratio valid. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_CARRIER_TO_NOISE_RATIO_SHIFT 3
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_AZIMUTH_MASK                                                            \
+    ((mip_gnss_sv_info_valid_flags_t)0x10u) /* bit 4: Azimuth valid. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_AZIMUTH_SHIFT 4
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_ELEVATION_MASK                                                          \
+    ((mip_gnss_sv_info_valid_flags_t)0x20u) /* bit 5: Elevation valid. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_ELEVATION_SHIFT 5
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_SV_FLAGS_MASK                                                           \
+    ((mip_gnss_sv_info_valid_flags_t)0x40u) /* bit 6: Space vehicle flags valid. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_SV_FLAGS_SHIFT 6
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_RESERVED_MASK                                                           \
+    ((mip_gnss_sv_info_valid_flags_t)0xFF80u) /* bits 7-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_SV_INFO_VALID_FLAGS_RESERVED_SHIFT 7
+
+/** GNSS UTC time valid flags (CV7). Validity of a CV7 GNSS UTC time field.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_utc_time_valid_flags_cv7_t;
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_GNSS_DATE_TIME_MASK                                                \
+    ((mip_gnss_utc_time_valid_flags_cv7_t)0x1u) /* bit 0: Date and time valid. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_GNSS_DATE_TIME_SHIFT 0
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_LEAP_SECONDS_KNOWN_MASK                                            \
+    ((mip_gnss_utc_time_valid_flags_cv7_t)0x2u) /* bit 1: The GPS-UTC leap second offset is known, so the    \
+                                                   UTC time is exact. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_LEAP_SECONDS_KNOWN_SHIFT 1
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_FLAGS_MASK                                                         \
+    ((mip_gnss_utc_time_valid_flags_cv7_t)0x3u) /* bits 0-1: All flags. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_FLAGS_SHIFT 0
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_RESERVED_MASK                                                      \
+    ((mip_gnss_utc_time_valid_flags_cv7_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_CV7_RESERVED_SHIFT 2
+
+/** GNSS UTC time valid flags (GX5-45). Validity of the GX5-45 GNSS UTC time field.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_gnss_utc_time_valid_flags_gx5_t;
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_GX5_DATE_VALID_MASK                                                    \
+    ((mip_gnss_utc_time_valid_flags_gx5_t)0x1u) /* bit 0: Date valid. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_GX5_DATE_VALID_SHIFT 0
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_GX5_TIME_VALID_MASK                                                    \
+    ((mip_gnss_utc_time_valid_flags_gx5_t)0x2u) /* bit 1: Time valid. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_GX5_TIME_VALID_SHIFT 1
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_GX5_RESERVED_MASK                                                      \
+    ((mip_gnss_utc_time_valid_flags_gx5_t)0xFFFCu) /* bits 2-15: (reserved) Not named by the manual. */
+#define MIP_GNSS_UTC_TIME_VALID_FLAGS_GX5_RESERVED_SHIFT 2
 
 /** GPIO behavior for the ENCODER feature.
  * An integer, so that values the spec does not list are kept. */
@@ -778,6 +1859,22 @@ typedef uint8_t mip_gpio_pin_mode_t;
     ((mip_gpio_pin_mode_t)0x4u) /* bit 2: Internal pull-up resistor enabled (not with pulldown); may lower   \
                                    the allowed input voltage. */
 #define MIP_GPIO_PIN_MODE_PULLUP_SHIFT 2
+
+/** GPIO pin states.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint8_t mip_gpio_pin_states_t;
+#define MIP_GPIO_PIN_STATES_PIN_1_MASK ((mip_gpio_pin_states_t)0x1u) /* bit 0: State of GPIO pin 1. */
+#define MIP_GPIO_PIN_STATES_PIN_1_SHIFT 0
+#define MIP_GPIO_PIN_STATES_PIN_2_MASK ((mip_gpio_pin_states_t)0x2u) /* bit 1: State of GPIO pin 2. */
+#define MIP_GPIO_PIN_STATES_PIN_2_SHIFT 1
+#define MIP_GPIO_PIN_STATES_PIN_3_MASK ((mip_gpio_pin_states_t)0x4u) /* bit 2: State of GPIO pin 3. */
+#define MIP_GPIO_PIN_STATES_PIN_3_SHIFT 2
+#define MIP_GPIO_PIN_STATES_PIN_4_MASK ((mip_gpio_pin_states_t)0x8u) /* bit 3: State of GPIO pin 4. */
+#define MIP_GPIO_PIN_STATES_PIN_4_SHIFT 3
+#define MIP_GPIO_PIN_STATES_RESERVED_MASK                                                                    \
+    ((mip_gpio_pin_states_t)0xF0u) /* bits 4-7: (reserved) No such pins; read as 0. */
+#define MIP_GPIO_PIN_STATES_RESERVED_SHIFT 4
 
 /** GPIO behavior for the PPS feature.
  * An integer, so that values the spec does not list are kept. */
@@ -928,11 +2025,70 @@ typedef uint8_t mip_magnetic_param_source_t;
 #define MIP_MAGNETIC_PARAM_SOURCE_MANUAL                                                                     \
     ((mip_magnetic_param_source_t)3u) /* Value supplied by the user; the device does not validate it. */
 
+/** Odometer data valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_odometer_data_valid_flags_t;
+#define MIP_ODOMETER_DATA_VALID_FLAGS_VALID_MASK                                                             \
+    ((mip_odometer_data_valid_flags_t)0x1u) /* bit 0: Set when the odometer is configured (speed and         \
+                                               uncertainty are valid). */
+#define MIP_ODOMETER_DATA_VALID_FLAGS_VALID_SHIFT 0
+#define MIP_ODOMETER_DATA_VALID_FLAGS_RESERVED_MASK                                                          \
+    ((mip_odometer_data_valid_flags_t)0xFFFEu) /* bits 1-15: (reserved) Not described. */
+#define MIP_ODOMETER_DATA_VALID_FLAGS_RESERVED_SHIFT 1
+
 /** Odometer mode.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_odometer_mode_t;
 #define MIP_ODOMETER_MODE_DISABLED ((mip_odometer_mode_t)0u)   /* Encoder disabled. */
 #define MIP_ODOMETER_MODE_QUADRATURE ((mip_odometer_mode_t)2u) /* Quadrature encoder mode. */
+
+/** Sensor over-range status. One bit per sensor axis that is near or beyond its range.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_overrange_status_flags_t;
+#define MIP_OVERRANGE_STATUS_FLAGS_ACCEL_X_MASK                                                              \
+    ((mip_overrange_status_flags_t)0x1u) /* bit 0: Accelerometer X axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_ACCEL_X_SHIFT 0
+#define MIP_OVERRANGE_STATUS_FLAGS_ACCEL_Y_MASK                                                              \
+    ((mip_overrange_status_flags_t)0x2u) /* bit 1: Accelerometer Y axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_ACCEL_Y_SHIFT 1
+#define MIP_OVERRANGE_STATUS_FLAGS_ACCEL_Z_MASK                                                              \
+    ((mip_overrange_status_flags_t)0x4u) /* bit 2: Accelerometer Z axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_ACCEL_Z_SHIFT 2
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_3_MASK                                                           \
+    ((mip_overrange_status_flags_t)0x8u) /* bit 3: (reserved) Not listed. */
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_3_SHIFT 3
+#define MIP_OVERRANGE_STATUS_FLAGS_GYRO_X_MASK                                                               \
+    ((mip_overrange_status_flags_t)0x10u) /* bit 4: Gyroscope X axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_GYRO_X_SHIFT 4
+#define MIP_OVERRANGE_STATUS_FLAGS_GYRO_Y_MASK                                                               \
+    ((mip_overrange_status_flags_t)0x20u) /* bit 5: Gyroscope Y axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_GYRO_Y_SHIFT 5
+#define MIP_OVERRANGE_STATUS_FLAGS_GYRO_Z_MASK                                                               \
+    ((mip_overrange_status_flags_t)0x40u) /* bit 6: Gyroscope Z axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_GYRO_Z_SHIFT 6
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_7_MASK                                                           \
+    ((mip_overrange_status_flags_t)0x80u) /* bit 7: (reserved) Not listed. */
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_7_SHIFT 7
+#define MIP_OVERRANGE_STATUS_FLAGS_MAG_X_MASK                                                                \
+    ((mip_overrange_status_flags_t)0x100u) /* bit 8: Magnetometer X axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_MAG_X_SHIFT 8
+#define MIP_OVERRANGE_STATUS_FLAGS_MAG_Y_MASK                                                                \
+    ((mip_overrange_status_flags_t)0x200u) /* bit 9: Magnetometer Y axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_MAG_Y_SHIFT 9
+#define MIP_OVERRANGE_STATUS_FLAGS_MAG_Z_MASK                                                                \
+    ((mip_overrange_status_flags_t)0x400u) /* bit 10: Magnetometer Z axis over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_MAG_Z_SHIFT 10
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_11_MASK                                                          \
+    ((mip_overrange_status_flags_t)0x800u) /* bit 11: (reserved) Not listed. */
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_11_SHIFT 11
+#define MIP_OVERRANGE_STATUS_FLAGS_PRESS_MASK                                                                \
+    ((mip_overrange_status_flags_t)0x1000u) /* bit 12: Pressure sensor over range. */
+#define MIP_OVERRANGE_STATUS_FLAGS_PRESS_SHIFT 12
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_13_15_MASK                                                       \
+    ((mip_overrange_status_flags_t)0xE000u) /* bits 13-15: (reserved) Not listed. */
+#define MIP_OVERRANGE_STATUS_FLAGS_RESERVED_13_15_SHIFT 13
 
 /** Pitch/roll aiding source.
  * An integer, so that values the spec does not list are kept. */
@@ -968,6 +2124,79 @@ typedef uint8_t mip_relative_position_source_t;
 #define MIP_RELATIVE_POSITION_SOURCE_MANUAL                                                                  \
     ((mip_relative_position_source_t)1u) /* The reference coordinates given in the command. */
 
+/** RTK corrections epoch status. Status of the corrections received during the epoch.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_rtk_corrections_epoch_status_t;
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_ANTENNA_LOCATION_RECEIVED_MASK                                      \
+    ((mip_rtk_corrections_epoch_status_t)0x1u) /* bit 0: Antenna location (station coordinates) received. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_ANTENNA_LOCATION_RECEIVED_SHIFT 0
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_ANTENNA_DESCRIPTION_RECEIVED_MASK                                   \
+    ((mip_rtk_corrections_epoch_status_t)0x2u) /* bit 1: Antenna description received. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_ANTENNA_DESCRIPTION_RECEIVED_SHIFT 1
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_GPS_RECEIVED_MASK                                                   \
+    ((mip_rtk_corrections_epoch_status_t)0x4u) /* bit 2: GPS corrections received. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_GPS_RECEIVED_SHIFT 2
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_GLONASS_RECEIVED_MASK                                               \
+    ((mip_rtk_corrections_epoch_status_t)0x8u) /* bit 3: GLONASS corrections received. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_GLONASS_RECEIVED_SHIFT 3
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_GALILEO_RECEIVED_MASK                                               \
+    ((mip_rtk_corrections_epoch_status_t)0x10u) /* bit 4: Galileo corrections received. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_GALILEO_RECEIVED_SHIFT 4
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_BEIDOU_RECEIVED_MASK                                                \
+    ((mip_rtk_corrections_epoch_status_t)0x20u) /* bit 5: BeiDou corrections received. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_BEIDOU_RECEIVED_SHIFT 5
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_USING_GPS_MSM_MESSAGES_MASK                                         \
+    ((mip_rtk_corrections_epoch_status_t)0x40u) /* bit 6: GPS corrections come from MSM messages rather than \
+                                                   RTCM 1001-1004. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_USING_GPS_MSM_MESSAGES_SHIFT 6
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_USING_GLONASS_MSM_MESSAGES_MASK                                     \
+    ((mip_rtk_corrections_epoch_status_t)0x80u) /* bit 7: GLONASS corrections come from MSM messages rather  \
+                                                   than RTCM 1009-1012. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_USING_GLONASS_MSM_MESSAGES_SHIFT 7
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_DONGLE_STATUS_READ_FAILED_MASK                                      \
+    ((mip_rtk_corrections_epoch_status_t)0x100u) /* bit 8: Reading the dongle status was attempted and       \
+                                                    failed. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_DONGLE_STATUS_READ_FAILED_SHIFT 8
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_RESERVED_MASK                                                       \
+    ((mip_rtk_corrections_epoch_status_t)0xFE00u) /* bits 9-15: (reserved) Not named by the manual. */
+#define MIP_RTK_CORRECTIONS_EPOCH_STATUS_RESERVED_SHIFT 9
+
+/** RTK corrections status valid flags. Which parameters of the RTK corrections status field are valid.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_rtk_corrections_status_valid_flags_t;
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_TOW_MASK                                                      \
+    ((mip_rtk_corrections_status_valid_flags_t)0x1u) /* bit 0: Time of week valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_WEEK_NUMBER_MASK                                              \
+    ((mip_rtk_corrections_status_valid_flags_t)0x2u) /* bit 1: Week number valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_EPOCH_STATUS_MASK                                             \
+    ((mip_rtk_corrections_status_valid_flags_t)0x4u) /* bit 2: Epoch status valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_EPOCH_STATUS_SHIFT 2
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_DONGLE_STATUS_MASK                                            \
+    ((mip_rtk_corrections_status_valid_flags_t)0x8u) /* bit 3: Dongle status valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_DONGLE_STATUS_SHIFT 3
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_GPS_LATENCY_MASK                                              \
+    ((mip_rtk_corrections_status_valid_flags_t)0x10u) /* bit 4: GPS correction latency valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_GPS_LATENCY_SHIFT 4
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_GLONASS_LATENCY_MASK                                          \
+    ((mip_rtk_corrections_status_valid_flags_t)0x20u) /* bit 5: GLONASS correction latency valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_GLONASS_LATENCY_SHIFT 5
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_GALILEO_LATENCY_MASK                                          \
+    ((mip_rtk_corrections_status_valid_flags_t)0x40u) /* bit 6: Galileo correction latency valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_GALILEO_LATENCY_SHIFT 6
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_BEIDOU_LATENCY_MASK                                           \
+    ((mip_rtk_corrections_status_valid_flags_t)0x80u) /* bit 7: BeiDou correction latency valid. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_BEIDOU_LATENCY_SHIFT 7
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_FLAGS_MASK                                                    \
+    ((mip_rtk_corrections_status_valid_flags_t)0xFFu) /* bits 0-7: All flags. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_FLAGS_SHIFT 0
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_RESERVED_MASK                                                 \
+    ((mip_rtk_corrections_status_valid_flags_t)0xFF00u) /* bits 8-15: (reserved) Not named by the manual. */
+#define MIP_RTK_CORRECTIONS_STATUS_VALID_FLAGS_RESERVED_SHIFT 8
+
 /** SBAS options.
  * The whole integer is kept (reserved bits too); members are read with the masks below:
  * (value & X_MASK) >> X_SHIFT. */
@@ -984,6 +2213,34 @@ typedef uint16_t mip_sbas_options_t;
                                   are used. */
 #define MIP_SBAS_OPTIONS_APPLY_INTEGRITY_SHIFT 2
 
+/** Sensor GPS timestamp flags (0x80,0x12). Status of the GPS timestamp attached to sensor data. Bits 0-2 mean
+ * the same on both devices (the GX5-45 calls them PPS Beacon Good, GPS Time Refresh and GPS Time
+ * Initialized); bits 3 and 4 exist only on the CV7. The whole integer is kept (reserved bits too); members
+ * are read with the masks below: (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_sensor_gps_timestamp_flags_t;
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_PPS_VALID_MASK                                                        \
+    ((mip_sensor_gps_timestamp_flags_t)0x1u) /* bit 0: PPS signal present (GX5-45: PPS Beacon Good); when    \
+                                                clear the internal clock stands in for the PPS. */
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_PPS_VALID_SHIFT 0
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_TIME_REFRESH_MASK                                                     \
+    ((mip_sensor_gps_timestamp_flags_t)0x2u) /* bit 1: Toggles each time the time is updated (GPS time, or   \
+                                                the GPS Time Update command 0x01,0x72). */
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_TIME_REFRESH_SHIFT 1
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_TIME_INITIALIZED_MASK                                                 \
+    ((mip_sensor_gps_timestamp_flags_t)0x4u) /* bit 2: Set once the time has been set at least once (the     \
+                                                first time refresh); stays set. */
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_TIME_INITIALIZED_SHIFT 2
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_TOW_VALID_MASK                                                        \
+    ((mip_sensor_gps_timestamp_flags_t)0x8u) /* bit 3: Time of week is valid. (devices: cv7_ins) */
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_TOW_VALID_SHIFT 3
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_WEEK_NUMBER_VALID_MASK                                                \
+    ((mip_sensor_gps_timestamp_flags_t)0x10u) /* bit 4: Week number is valid. (devices: cv7_ins) */
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_WEEK_NUMBER_VALID_SHIFT 4
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_RESERVED_MASK                                                         \
+    ((mip_sensor_gps_timestamp_flags_t)0xFFE0u) /* bits 5-15: (reserved) Not defined by either manual        \
+                                                   (GX5-45: bits 3-15). */
+#define MIP_SENSOR_GPS_TIMESTAMP_FLAGS_RESERVED_SHIFT 5
+
 /** Sensor whose range is set or queried.
  * An integer, so that values the spec does not list are kept. */
 typedef uint8_t mip_sensor_range_type_t;
@@ -993,6 +2250,24 @@ typedef uint8_t mip_sensor_range_type_t;
 #define MIP_SENSOR_RANGE_TYPE_GYRO ((mip_sensor_range_type_t)2u)  /* Gyroscope; range in degrees/s. */
 #define MIP_SENSOR_RANGE_TYPE_MAG ((mip_sensor_range_type_t)3u)   /* Magnetometer; range in Gauss. */
 #define MIP_SENSOR_RANGE_TYPE_PRESS ((mip_sensor_range_type_t)4u) /* Pressure sensor; range in hPa. */
+
+/** Shared GPS timestamp valid flags.
+ * The whole integer is kept (reserved bits too); members are read with the masks below:
+ * (value & X_MASK) >> X_SHIFT. */
+typedef uint16_t mip_shared_gps_timestamp_valid_flags_t;
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_TOW_MASK                                                        \
+    ((mip_shared_gps_timestamp_valid_flags_t)0x1u) /* bit 0: The whole-second time of week has been set. */
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_TOW_SHIFT 0
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_WEEK_NUMBER_MASK                                                \
+    ((mip_shared_gps_timestamp_valid_flags_t)0x2u) /* bit 1: The week number has been set. */
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_WEEK_NUMBER_SHIFT 1
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_TIME_VALID_MASK                                                 \
+    ((mip_shared_gps_timestamp_valid_flags_t)0x3u) /* bits 0-1: Both time of week and week number have been  \
+                                                      set. */
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_TIME_VALID_SHIFT 0
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_RESERVED_MASK                                                   \
+    ((mip_shared_gps_timestamp_valid_flags_t)0xFFFCu) /* bits 2-15: (reserved) Not listed. */
+#define MIP_SHARED_GPS_TIMESTAMP_VALID_FLAGS_RESERVED_SHIFT 2
 
 /** SPARTN connection type.
  * An integer, so that values the spec does not list are kept. */
@@ -1160,6 +2435,29 @@ typedef struct {
                                   reserved_channels). */
     mip_constellation_options_t option_flags; /* Constellation options. */
 } mip_constellation_settings_t;
+
+/** 3DM-CV7 continuous built-in test result (128 bits). The 16-byte continuous BIT bit map, one member per
+ * byte in wire order. Bit n of the map is bit (n mod 8) of byte n div 8 ("Relative Index (Byte.Bit)"). Bytes
+ * 0-3 are system bits, 4-7 IMU bits, 8-11 navigation filter bits and 12-15 GNSS bits. The bits latch until
+ * the message is sent; all unspecified bits are reserved and must be ignored. */
+typedef struct {
+    mip_cv7_continuous_bit_system0_t system_byte_0; /* Bits 0-7: system. */
+    uint8_t reserved_byte_1;                        /* Bits 8-15: reserved (0.7-1.7). */
+    mip_cv7_continuous_bit_system2_t system_byte_2; /* Bits 16-23: IMU and filter process faults. */
+    mip_cv7_continuous_bit_system3_t system_byte_3; /* Bits 24-31: GNSS process faults. */
+    mip_cv7_continuous_bit_imu4_t imu_byte_4;       /* Bits 32-39: IMU communication, timing, calibration. */
+    mip_cv7_continuous_bit_imu5_t imu_byte_5;       /* Bits 40-47: accelerometer and gyroscope. */
+    mip_cv7_continuous_bit_imu6_t imu_byte_6;       /* Bits 48-55: magnetometer and pressure sensor. */
+    mip_cv7_continuous_bit_imu7_t imu_byte_7;       /* Bits 56-63: factory bits. */
+    mip_cv7_continuous_bit_nav8_t nav_byte_8;       /* Bits 64-71: filter timing. */
+    uint8_t reserved_byte_9;                        /* Bits 72-79: reserved. */
+    uint8_t reserved_byte_10;                       /* Bits 80-87: reserved. */
+    uint8_t reserved_byte_11;                       /* Bits 88-95: reserved. */
+    uint8_t reserved_byte_12;                       /* Bits 96-103: reserved. */
+    mip_cv7_continuous_bit_gnss13_t gnss_byte_13;   /* Bits 104-111: GNSS receivers. */
+    mip_cv7_continuous_bit_gnss14_t gnss_byte_14;   /* Bits 112-119: GNSS receivers. */
+    uint8_t reserved_byte_15;                       /* Bits 120-127: reserved. */
+} mip_cv7_continuous_bit_t;
 
 /** Descriptor and rate decimation. One entry of a message format list. */
 typedef struct {

@@ -850,13 +850,9 @@ int mip_base_continuous_bit_from_json(mip_jr_t *jr, size_t pos, mip_base_continu
 /* ---- mip_base_continuous_bit_result_t */
 
 static int mip_base_continuous_bit_result_read(mip_reader_t *r, mip_base_continuous_bit_result_t *out) {
-    size_t i;
     mip_rd_push(r, "result");
-    for (i = 0; i < 16; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_u8(r, &out->result[i])) {
-            return -1;
-        }
+    if (mip_cv7_continuous_bit_read(r, &out->result)) {
+        return -1;
     }
     mip_rd_pop(r);
     return mip_rd_finish(r);
@@ -865,11 +861,8 @@ static int mip_base_continuous_bit_result_read(mip_reader_t *r, mip_base_continu
 static mip_status_t mip_base_continuous_bit_result_write(mip_writer_t *w,
                                                          const mip_base_continuous_bit_result_t *in) {
     mip_status_t st;
-    size_t i;
-    for (i = 0; i < 16; i++) {
-        if ((st = mip_wr_u8(w, &in->result[i])) != MIP_OK) {
-            return st;
-        }
+    if ((st = mip_cv7_continuous_bit_write(w, &in->result)) != MIP_OK) {
+        return st;
     }
     return MIP_OK;
 }
@@ -897,15 +890,9 @@ mip_status_t mip_base_continuous_bit_result_decode(const uint8_t *data, size_t l
 
 void mip_base_continuous_bit_result_to_json(mip_jw_t *w, const mip_base_continuous_bit_result_t *in) {
     int first = 1;
-    size_t i;
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "result");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 16; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_u8(w, &in->result[i]);
-    }
-    mip_jw_raw(w, "]", 1);
+    mip_cv7_continuous_bit_to_json(w, &in->result);
     mip_jw_raw(w, "}", 1);
 }
 
@@ -914,9 +901,6 @@ int mip_base_continuous_bit_result_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"result"};
     size_t vp = 0;
     int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
     memset(out, 0, sizeof *out);
     if (mip_jr_object(jr, pos, keys, 1)) {
         return -1;
@@ -927,28 +911,8 @@ int mip_base_continuous_bit_result_from_json(mip_jr_t *jr, size_t pos,
     }
     {
         mip_jr_push(jr, "result");
-        if (mip_jr_array(jr, vp, &it)) {
+        if (mip_cv7_continuous_bit_from_json(jr, vp, &out->result)) {
             return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 16) {
-                return mip_jr_fail(jr, "more than 16 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_u8(jr, ep, &out->result[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 16) {
-            return mip_jr_fail(jr, "expected 16 elements, got %zu", i);
         }
         mip_jr_pop(jr);
     }

@@ -26,7 +26,14 @@
 #include "mipcodec/fields/aiding_json.hpp"
 #include "mipcodec/fields/system_json.hpp"
 #include "mipcodec/fields/sensor_json.hpp"
+#include "mipcodec/fields/gnss_data_json.hpp"
 #include "mipcodec/fields/filter_data_json.hpp"
+#include "mipcodec/fields/gnss_receiver_1_json.hpp"
+#include "mipcodec/fields/gnss_receiver_2_json.hpp"
+#include "mipcodec/fields/gnss_corrections_json.hpp"
+#include "mipcodec/fields/gnss_external_json.hpp"
+#include "mipcodec/fields/system_data_json.hpp"
+#include "mipcodec/fields/shared_json.hpp"
 #include "mipcodec/fields/reserved_json.hpp"
 
 namespace mipcodec {

@@ -13,7 +13,14 @@
 #include "mipcodec/fields/aiding.hpp"
 #include "mipcodec/fields/system.hpp"
 #include "mipcodec/fields/sensor.hpp"
+#include "mipcodec/fields/gnss_data.hpp"
 #include "mipcodec/fields/filter_data.hpp"
+#include "mipcodec/fields/gnss_receiver_1.hpp"
+#include "mipcodec/fields/gnss_receiver_2.hpp"
+#include "mipcodec/fields/gnss_corrections.hpp"
+#include "mipcodec/fields/gnss_external.hpp"
+#include "mipcodec/fields/system_data.hpp"
+#include "mipcodec/fields/shared.hpp"
 #include "mipcodec/fields/reserved.hpp"
 
 namespace mipcodec {
@@ -716,6 +723,88 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
         case 0x06:
             f(Layouts<::mipcodec::sensor::ScaledMag>{});
             return Lookup::found;
+        case 0x07:
+            f(Layouts<::mipcodec::sensor::DeltaTheta>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::sensor::DeltaVelocity>{});
+            return Lookup::found;
+        case 0x09:
+            f(Layouts<::mipcodec::sensor::CfOrientationMatrix>{});
+            return Lookup::found;
+        case 0x0A:
+            f(Layouts<::mipcodec::sensor::CfQuaternion>{});
+            return Lookup::found;
+        case 0x0C:
+            f(Layouts<::mipcodec::sensor::CfEulerAngles>{});
+            return Lookup::found;
+        case 0x10:
+            f(Layouts<::mipcodec::sensor::CfStabilizedNorth>{});
+            return Lookup::found;
+        case 0x11:
+            f(Layouts<::mipcodec::sensor::CfStabilizedUp>{});
+            return Lookup::found;
+        case 0x12:
+            f(Layouts<::mipcodec::sensor::GpsTimestamp>{});
+            return Lookup::found;
+        case 0x14:
+            f(Layouts<::mipcodec::sensor::TemperatureStatistics>{});
+            return Lookup::found;
+        case 0x17:
+            f(Layouts<::mipcodec::sensor::ScaledPressure>{});
+            return Lookup::found;
+        case 0x18:
+            f(Layouts<::mipcodec::sensor::OverrangeStatus>{});
+            return Lookup::found;
+        case 0x40:
+            f(Layouts<::mipcodec::sensor::OdometerData>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x81:
+        known_set = true;
+        switch (descriptor) {
+        case 0x03:
+            f(Layouts<::mipcodec::gnss_data::LlhPosition>{});
+            return Lookup::found;
+        case 0x04:
+            f(Layouts<::mipcodec::gnss_data::EcefPosition>{});
+            return Lookup::found;
+        case 0x05:
+            f(Layouts<::mipcodec::gnss_data::NedVelocity>{});
+            return Lookup::found;
+        case 0x06:
+            f(Layouts<::mipcodec::gnss_data::EcefVelocity>{});
+            return Lookup::found;
+        case 0x07:
+            f(Layouts<::mipcodec::gnss_data::Dop>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::gnss_data::UtcTime>{});
+            return Lookup::found;
+        case 0x09:
+            f(Layouts<::mipcodec::gnss_data::GpsTime>{});
+            return Lookup::found;
+        case 0x0A:
+            f(Layouts<::mipcodec::gnss_data::ClockInfo>{});
+            return Lookup::found;
+        case 0x0B:
+            f(Layouts<::mipcodec::gnss_data::FixInfo>{});
+            return Lookup::found;
+        case 0x0C:
+            f(Layouts<::mipcodec::gnss_data::SvInfo>{});
+            return Lookup::found;
+        case 0x0D:
+            f(Layouts<::mipcodec::gnss_data::HardwareStatus>{});
+            return Lookup::found;
+        case 0x0E:
+            f(Layouts<::mipcodec::gnss_data::DgnssInfo>{});
+            return Lookup::found;
+        case 0x0F:
+            f(Layouts<::mipcodec::gnss_data::DgnssChannelStatus>{});
+            return Lookup::found;
         default:
             break;
         }
@@ -872,6 +961,207 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
             break;
         }
         break;
+    case 0x91:
+        known_set = true;
+        switch (descriptor) {
+        case 0x03:
+            f(Layouts<::mipcodec::gnss_receiver_1::LlhPosition>{});
+            return Lookup::found;
+        case 0x04:
+            f(Layouts<::mipcodec::gnss_receiver_1::EcefPosition>{});
+            return Lookup::found;
+        case 0x05:
+            f(Layouts<::mipcodec::gnss_receiver_1::NedVelocity>{});
+            return Lookup::found;
+        case 0x06:
+            f(Layouts<::mipcodec::gnss_receiver_1::EcefVelocity>{});
+            return Lookup::found;
+        case 0x07:
+            f(Layouts<::mipcodec::gnss_receiver_1::Dop>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::gnss_receiver_1::UtcTime>{});
+            return Lookup::found;
+        case 0x09:
+            f(Layouts<::mipcodec::gnss_receiver_1::GpsTime>{});
+            return Lookup::found;
+        case 0x0B:
+            f(Layouts<::mipcodec::gnss_receiver_1::FixInfo>{});
+            return Lookup::found;
+        case 0x0D:
+            f(Layouts<::mipcodec::gnss_receiver_1::HardwareStatus>{});
+            return Lookup::found;
+        case 0x10:
+            f(Layouts<::mipcodec::gnss_receiver_1::ClockInfo2>{});
+            return Lookup::found;
+        case 0x11:
+            f(Layouts<::mipcodec::gnss_receiver_1::GpsLeapSeconds>{});
+            return Lookup::found;
+        case 0x12:
+            f(Layouts<::mipcodec::gnss_receiver_1::SbasInfo>{});
+            return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::gnss_receiver_1::SatelliteStatus>{});
+            return Lookup::found;
+        case 0x22:
+            f(Layouts<::mipcodec::gnss_receiver_1::Raw>{});
+            return Lookup::found;
+        case 0x61:
+            f(Layouts<::mipcodec::gnss_receiver_1::GpsEphemeris>{});
+            return Lookup::found;
+        case 0x62:
+            f(Layouts<::mipcodec::gnss_receiver_1::GlonassEphemeris>{});
+            return Lookup::found;
+        case 0x63:
+            f(Layouts<::mipcodec::gnss_receiver_1::GalileoEphemeris>{});
+            return Lookup::found;
+        case 0x64:
+            f(Layouts<::mipcodec::gnss_receiver_1::BeidouEphemeris>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x92:
+        known_set = true;
+        switch (descriptor) {
+        case 0x03:
+            f(Layouts<::mipcodec::gnss_receiver_2::LlhPosition>{});
+            return Lookup::found;
+        case 0x04:
+            f(Layouts<::mipcodec::gnss_receiver_2::EcefPosition>{});
+            return Lookup::found;
+        case 0x05:
+            f(Layouts<::mipcodec::gnss_receiver_2::NedVelocity>{});
+            return Lookup::found;
+        case 0x06:
+            f(Layouts<::mipcodec::gnss_receiver_2::EcefVelocity>{});
+            return Lookup::found;
+        case 0x07:
+            f(Layouts<::mipcodec::gnss_receiver_2::Dop>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::gnss_receiver_2::UtcTime>{});
+            return Lookup::found;
+        case 0x09:
+            f(Layouts<::mipcodec::gnss_receiver_2::GpsTime>{});
+            return Lookup::found;
+        case 0x0B:
+            f(Layouts<::mipcodec::gnss_receiver_2::FixInfo>{});
+            return Lookup::found;
+        case 0x0D:
+            f(Layouts<::mipcodec::gnss_receiver_2::HardwareStatus>{});
+            return Lookup::found;
+        case 0x10:
+            f(Layouts<::mipcodec::gnss_receiver_2::ClockInfo2>{});
+            return Lookup::found;
+        case 0x11:
+            f(Layouts<::mipcodec::gnss_receiver_2::GpsLeapSeconds>{});
+            return Lookup::found;
+        case 0x12:
+            f(Layouts<::mipcodec::gnss_receiver_2::SbasInfo>{});
+            return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::gnss_receiver_2::SatelliteStatus>{});
+            return Lookup::found;
+        case 0x22:
+            f(Layouts<::mipcodec::gnss_receiver_2::Raw>{});
+            return Lookup::found;
+        case 0x61:
+            f(Layouts<::mipcodec::gnss_receiver_2::GpsEphemeris>{});
+            return Lookup::found;
+        case 0x62:
+            f(Layouts<::mipcodec::gnss_receiver_2::GlonassEphemeris>{});
+            return Lookup::found;
+        case 0x63:
+            f(Layouts<::mipcodec::gnss_receiver_2::GalileoEphemeris>{});
+            return Lookup::found;
+        case 0x64:
+            f(Layouts<::mipcodec::gnss_receiver_2::BeidouEphemeris>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x93:
+        known_set = true;
+        switch (descriptor) {
+        case 0x30:
+            f(Layouts<::mipcodec::gnss_corrections::BaseStationInfo>{});
+            return Lookup::found;
+        case 0x31:
+            f(Layouts<::mipcodec::gnss_corrections::RtkCorrectionsStatus>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0x94:
+        known_set = true;
+        switch (descriptor) {
+        case 0x03:
+            f(Layouts<::mipcodec::gnss_external::LlhPosition>{});
+            return Lookup::found;
+        case 0x05:
+            f(Layouts<::mipcodec::gnss_external::NedVelocity>{});
+            return Lookup::found;
+        case 0x08:
+            f(Layouts<::mipcodec::gnss_external::UtcTime>{});
+            return Lookup::found;
+        case 0x0B:
+            f(Layouts<::mipcodec::gnss_external::FixInfo>{});
+            return Lookup::found;
+        case 0x20:
+            f(Layouts<::mipcodec::gnss_external::SatelliteStatus>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0xA0:
+        known_set = true;
+        switch (descriptor) {
+        case 0x01:
+            f(Layouts<::mipcodec::system_data::BuiltInTest>{});
+            return Lookup::found;
+        case 0x02:
+            f(Layouts<::mipcodec::system_data::TimeSyncStatus>{});
+            return Lookup::found;
+        case 0x03:
+            f(Layouts<::mipcodec::system_data::GpioState>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
+    case 0xFF:
+        known_set = true;
+        switch (descriptor) {
+        case 0xD0:
+            f(Layouts<::mipcodec::shared::EventSource>{});
+            return Lookup::found;
+        case 0xD3:
+            f(Layouts<::mipcodec::shared::GpsTimestamp>{});
+            return Lookup::found;
+        case 0xD4:
+            f(Layouts<::mipcodec::shared::DeltaTime>{});
+            return Lookup::found;
+        case 0xD5:
+            f(Layouts<::mipcodec::shared::ReferenceTimestamp>{});
+            return Lookup::found;
+        case 0xD6:
+            f(Layouts<::mipcodec::shared::ReferenceTimeDelta>{});
+            return Lookup::found;
+        case 0xD7:
+            f(Layouts<::mipcodec::shared::ExternalTimestamp>{});
+            return Lookup::found;
+        case 0xD8:
+            f(Layouts<::mipcodec::shared::ExternalTimeDelta>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+        break;
     default:
         break;
     }
@@ -881,6 +1171,33 @@ template <class F> Lookup lookup_field(std::uint8_t set, std::uint8_t descriptor
         switch (descriptor) {
         case 0xF1:
             f(Layouts<::mipcodec::reserved::AckNack>{});
+            return Lookup::found;
+        default:
+            break;
+        }
+    }
+    if (kind == SetKind::data) {
+        switch (descriptor) {
+        case 0xD0:
+            f(Layouts<::mipcodec::shared::EventSource>{});
+            return Lookup::found;
+        case 0xD3:
+            f(Layouts<::mipcodec::shared::GpsTimestamp>{});
+            return Lookup::found;
+        case 0xD4:
+            f(Layouts<::mipcodec::shared::DeltaTime>{});
+            return Lookup::found;
+        case 0xD5:
+            f(Layouts<::mipcodec::shared::ReferenceTimestamp>{});
+            return Lookup::found;
+        case 0xD6:
+            f(Layouts<::mipcodec::shared::ReferenceTimeDelta>{});
+            return Lookup::found;
+        case 0xD7:
+            f(Layouts<::mipcodec::shared::ExternalTimestamp>{});
+            return Lookup::found;
+        case 0xD8:
+            f(Layouts<::mipcodec::shared::ExternalTimeDelta>{});
             return Lookup::found;
         default:
             break;

@@ -15,14 +15,14 @@ namespace mipcodec {
 
 /// The sample rule exported as `samples` in generated/ir.json.
 namespace sample_rule {
-inline constexpr std::array<std::uint8_t, 2> kDataSets = {0x80, 0x82};
+inline constexpr std::array<std::uint8_t, 8> kDataSets = {0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0};
 inline constexpr unsigned kFirstShared = 208;
 struct Timestamp {
     std::uint8_t descriptor;
     std::size_t size;
 };
-inline constexpr std::array<Timestamp, 0> kTimestamps = {{}};
-inline constexpr std::size_t kMaxKey = 1;
+inline constexpr std::array<Timestamp, 3> kTimestamps = {{{0xD3, 12}, {0xD5, 8}, {0xD7, 10}}};
+inline constexpr std::size_t kMaxKey = 36;
 } // namespace sample_rule
 
 /// The key of a packet (bytes of its leading shared timestamp fields) and its leading shared run.

@@ -833,6 +833,812 @@ class Cv7BitFlags {
     Raw raw_ = 0;
 };
 
+/// Continuous BIT byte 13: GNSS receivers (bits 104-111). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitGnss13 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitGnss13() = default;
+    constexpr explicit Cv7ContinuousBitGnss13(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw reserved_104_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool reserved_104() const {
+        return (raw_ & reserved_104_mask) != 0;
+    }
+    constexpr void set_reserved_104(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_104_mask) : (raw_ & static_cast<Raw>(~reserved_104_mask)));
+    }
+
+    static constexpr Raw receiver_1_fault_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool receiver_1_fault() const {
+        return (raw_ & receiver_1_fault_mask) != 0;
+    }
+    constexpr void set_receiver_1_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | receiver_1_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~receiver_1_fault_mask)));
+    }
+
+    static constexpr Raw reserved_106_107_mask = static_cast<Raw>(0xCULL);
+    /// Bits 2..3, shifted down.
+    constexpr Raw reserved_106_107() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xCULL) >> 2);
+    }
+    constexpr void set_reserved_106_107(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xCULL));
+    }
+
+    static constexpr Raw receiver_1_no_solution_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool receiver_1_no_solution() const {
+        return (raw_ & receiver_1_no_solution_mask) != 0;
+    }
+    constexpr void set_receiver_1_no_solution(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | receiver_1_no_solution_mask)
+                                   : (raw_ & static_cast<Raw>(~receiver_1_no_solution_mask)));
+    }
+
+    static constexpr Raw reserved_109_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool reserved_109() const {
+        return (raw_ & reserved_109_mask) != 0;
+    }
+    constexpr void set_reserved_109(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_109_mask) : (raw_ & static_cast<Raw>(~reserved_109_mask)));
+    }
+
+    static constexpr Raw receiver_2_fault_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool receiver_2_fault() const {
+        return (raw_ & receiver_2_fault_mask) != 0;
+    }
+    constexpr void set_receiver_2_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | receiver_2_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~receiver_2_fault_mask)));
+    }
+
+    static constexpr Raw reserved_111_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool reserved_111() const {
+        return (raw_ & reserved_111_mask) != 0;
+    }
+    constexpr void set_reserved_111(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_111_mask) : (raw_ & static_cast<Raw>(~reserved_111_mask)));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitGnss13 a, Cv7ContinuousBitGnss13 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitGnss13 a, Cv7ContinuousBitGnss13 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 14: GNSS receivers (bits 112-119). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitGnss14 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitGnss14() = default;
+    constexpr explicit Cv7ContinuousBitGnss14(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw reserved_112_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool reserved_112() const {
+        return (raw_ & reserved_112_mask) != 0;
+    }
+    constexpr void set_reserved_112(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_112_mask) : (raw_ & static_cast<Raw>(~reserved_112_mask)));
+    }
+
+    static constexpr Raw receiver_2_no_solution_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool receiver_2_no_solution() const {
+        return (raw_ & receiver_2_no_solution_mask) != 0;
+    }
+    constexpr void set_receiver_2_no_solution(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | receiver_2_no_solution_mask)
+                                   : (raw_ & static_cast<Raw>(~receiver_2_no_solution_mask)));
+    }
+
+    static constexpr Raw reserved_114_119_mask = static_cast<Raw>(0xFCULL);
+    /// Bits 2..7, shifted down.
+    constexpr Raw reserved_114_119() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFCULL) >> 2);
+    }
+    constexpr void set_reserved_114_119(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFCULL));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitGnss14 a, Cv7ContinuousBitGnss14 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitGnss14 a, Cv7ContinuousBitGnss14 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 4: IMU (bits 32-39). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitImu4 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitImu4() = default;
+    constexpr explicit Cv7ContinuousBitImu4(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw reserved_32_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool reserved_32() const {
+        return (raw_ & reserved_32_mask) != 0;
+    }
+    constexpr void set_reserved_32(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_32_mask) : (raw_ & static_cast<Raw>(~reserved_32_mask)));
+    }
+
+    static constexpr Raw imu_communication_fault_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool imu_communication_fault() const {
+        return (raw_ & imu_communication_fault_mask) != 0;
+    }
+    constexpr void set_imu_communication_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_communication_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_communication_fault_mask)));
+    }
+
+    static constexpr Raw imu_timing_overrun_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool imu_timing_overrun() const {
+        return (raw_ & imu_timing_overrun_mask) != 0;
+    }
+    constexpr void set_imu_timing_overrun(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_timing_overrun_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_timing_overrun_mask)));
+    }
+
+    static constexpr Raw reserved_35_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool reserved_35() const {
+        return (raw_ & reserved_35_mask) != 0;
+    }
+    constexpr void set_reserved_35(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_35_mask) : (raw_ & static_cast<Raw>(~reserved_35_mask)));
+    }
+
+    static constexpr Raw imu_calibration_error_accelerometer_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool imu_calibration_error_accelerometer() const {
+        return (raw_ & imu_calibration_error_accelerometer_mask) != 0;
+    }
+    constexpr void set_imu_calibration_error_accelerometer(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_calibration_error_accelerometer_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_calibration_error_accelerometer_mask)));
+    }
+
+    static constexpr Raw imu_calibration_error_gyroscope_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool imu_calibration_error_gyroscope() const {
+        return (raw_ & imu_calibration_error_gyroscope_mask) != 0;
+    }
+    constexpr void set_imu_calibration_error_gyroscope(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_calibration_error_gyroscope_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_calibration_error_gyroscope_mask)));
+    }
+
+    static constexpr Raw imu_calibration_error_magnetometer_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool imu_calibration_error_magnetometer() const {
+        return (raw_ & imu_calibration_error_magnetometer_mask) != 0;
+    }
+    constexpr void set_imu_calibration_error_magnetometer(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_calibration_error_magnetometer_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_calibration_error_magnetometer_mask)));
+    }
+
+    static constexpr Raw reserved_39_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool reserved_39() const {
+        return (raw_ & reserved_39_mask) != 0;
+    }
+    constexpr void set_reserved_39(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_39_mask) : (raw_ & static_cast<Raw>(~reserved_39_mask)));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitImu4 a, Cv7ContinuousBitImu4 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitImu4 a, Cv7ContinuousBitImu4 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 5: IMU accelerometer and gyroscope (bits 40-47). Reserved and unnamed bits are kept in
+/// raw().
+class Cv7ContinuousBitImu5 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitImu5() = default;
+    constexpr explicit Cv7ContinuousBitImu5(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw accelerometer_general_fault_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool accelerometer_general_fault() const {
+        return (raw_ & accelerometer_general_fault_mask) != 0;
+    }
+    constexpr void set_accelerometer_general_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accelerometer_general_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~accelerometer_general_fault_mask)));
+    }
+
+    static constexpr Raw accelerometer_overrange_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool accelerometer_overrange() const {
+        return (raw_ & accelerometer_overrange_mask) != 0;
+    }
+    constexpr void set_accelerometer_overrange(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accelerometer_overrange_mask)
+                                   : (raw_ & static_cast<Raw>(~accelerometer_overrange_mask)));
+    }
+
+    static constexpr Raw accelerometer_self_test_fail_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool accelerometer_self_test_fail() const {
+        return (raw_ & accelerometer_self_test_fail_mask) != 0;
+    }
+    constexpr void set_accelerometer_self_test_fail(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accelerometer_self_test_fail_mask)
+                                   : (raw_ & static_cast<Raw>(~accelerometer_self_test_fail_mask)));
+    }
+
+    static constexpr Raw reserved_43_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool reserved_43() const {
+        return (raw_ & reserved_43_mask) != 0;
+    }
+    constexpr void set_reserved_43(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_43_mask) : (raw_ & static_cast<Raw>(~reserved_43_mask)));
+    }
+
+    static constexpr Raw gyroscope_general_fault_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool gyroscope_general_fault() const {
+        return (raw_ & gyroscope_general_fault_mask) != 0;
+    }
+    constexpr void set_gyroscope_general_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyroscope_general_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~gyroscope_general_fault_mask)));
+    }
+
+    static constexpr Raw gyroscope_overrange_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool gyroscope_overrange() const {
+        return (raw_ & gyroscope_overrange_mask) != 0;
+    }
+    constexpr void set_gyroscope_overrange(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyroscope_overrange_mask)
+                                   : (raw_ & static_cast<Raw>(~gyroscope_overrange_mask)));
+    }
+
+    static constexpr Raw gyroscope_self_test_fail_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool gyroscope_self_test_fail() const {
+        return (raw_ & gyroscope_self_test_fail_mask) != 0;
+    }
+    constexpr void set_gyroscope_self_test_fail(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyroscope_self_test_fail_mask)
+                                   : (raw_ & static_cast<Raw>(~gyroscope_self_test_fail_mask)));
+    }
+
+    static constexpr Raw reserved_47_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool reserved_47() const {
+        return (raw_ & reserved_47_mask) != 0;
+    }
+    constexpr void set_reserved_47(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_47_mask) : (raw_ & static_cast<Raw>(~reserved_47_mask)));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitImu5 a, Cv7ContinuousBitImu5 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitImu5 a, Cv7ContinuousBitImu5 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 6: IMU magnetometer and pressure sensor (bits 48-55). Reserved and unnamed bits are
+/// kept in raw().
+class Cv7ContinuousBitImu6 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitImu6() = default;
+    constexpr explicit Cv7ContinuousBitImu6(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw magnetometer_general_fault_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool magnetometer_general_fault() const {
+        return (raw_ & magnetometer_general_fault_mask) != 0;
+    }
+    constexpr void set_magnetometer_general_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | magnetometer_general_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~magnetometer_general_fault_mask)));
+    }
+
+    static constexpr Raw magnetometer_overrange_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool magnetometer_overrange() const {
+        return (raw_ & magnetometer_overrange_mask) != 0;
+    }
+    constexpr void set_magnetometer_overrange(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | magnetometer_overrange_mask)
+                                   : (raw_ & static_cast<Raw>(~magnetometer_overrange_mask)));
+    }
+
+    static constexpr Raw magnetometer_self_test_fail_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool magnetometer_self_test_fail() const {
+        return (raw_ & magnetometer_self_test_fail_mask) != 0;
+    }
+    constexpr void set_magnetometer_self_test_fail(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | magnetometer_self_test_fail_mask)
+                                   : (raw_ & static_cast<Raw>(~magnetometer_self_test_fail_mask)));
+    }
+
+    static constexpr Raw reserved_51_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool reserved_51() const {
+        return (raw_ & reserved_51_mask) != 0;
+    }
+    constexpr void set_reserved_51(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_51_mask) : (raw_ & static_cast<Raw>(~reserved_51_mask)));
+    }
+
+    static constexpr Raw pressure_sensor_general_fault_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool pressure_sensor_general_fault() const {
+        return (raw_ & pressure_sensor_general_fault_mask) != 0;
+    }
+    constexpr void set_pressure_sensor_general_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pressure_sensor_general_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~pressure_sensor_general_fault_mask)));
+    }
+
+    static constexpr Raw pressure_sensor_overrange_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool pressure_sensor_overrange() const {
+        return (raw_ & pressure_sensor_overrange_mask) != 0;
+    }
+    constexpr void set_pressure_sensor_overrange(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pressure_sensor_overrange_mask)
+                                   : (raw_ & static_cast<Raw>(~pressure_sensor_overrange_mask)));
+    }
+
+    static constexpr Raw pressure_sensor_self_test_fail_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool pressure_sensor_self_test_fail() const {
+        return (raw_ & pressure_sensor_self_test_fail_mask) != 0;
+    }
+    constexpr void set_pressure_sensor_self_test_fail(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pressure_sensor_self_test_fail_mask)
+                                   : (raw_ & static_cast<Raw>(~pressure_sensor_self_test_fail_mask)));
+    }
+
+    static constexpr Raw reserved_55_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool reserved_55() const {
+        return (raw_ & reserved_55_mask) != 0;
+    }
+    constexpr void set_reserved_55(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_55_mask) : (raw_ & static_cast<Raw>(~reserved_55_mask)));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitImu6 a, Cv7ContinuousBitImu6 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitImu6 a, Cv7ContinuousBitImu6 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 7: IMU (bits 56-63). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitImu7 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitImu7() = default;
+    constexpr explicit Cv7ContinuousBitImu7(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw factory_bits_invalid_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool factory_bits_invalid() const {
+        return (raw_ & factory_bits_invalid_mask) != 0;
+    }
+    constexpr void set_factory_bits_invalid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | factory_bits_invalid_mask)
+                                   : (raw_ & static_cast<Raw>(~factory_bits_invalid_mask)));
+    }
+
+    static constexpr Raw reserved_57_63_mask = static_cast<Raw>(0xFEULL);
+    /// Bits 1..7, shifted down.
+    constexpr Raw reserved_57_63() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFEULL) >> 1);
+    }
+    constexpr void set_reserved_57_63(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFEULL) |
+                                ((static_cast<std::uint64_t>(value) << 1) & 0xFEULL));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitImu7 a, Cv7ContinuousBitImu7 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitImu7 a, Cv7ContinuousBitImu7 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 8: navigation filter (bits 64-71). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitNav8 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitNav8() = default;
+    constexpr explicit Cv7ContinuousBitNav8(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw reserved_64_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool reserved_64() const {
+        return (raw_ & reserved_64_mask) != 0;
+    }
+    constexpr void set_reserved_64(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_64_mask) : (raw_ & static_cast<Raw>(~reserved_64_mask)));
+    }
+
+    static constexpr Raw reserved_65_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool reserved_65() const {
+        return (raw_ & reserved_65_mask) != 0;
+    }
+    constexpr void set_reserved_65(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_65_mask) : (raw_ & static_cast<Raw>(~reserved_65_mask)));
+    }
+
+    static constexpr Raw filter_timing_overrun_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool filter_timing_overrun() const {
+        return (raw_ & filter_timing_overrun_mask) != 0;
+    }
+    constexpr void set_filter_timing_overrun(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | filter_timing_overrun_mask)
+                                   : (raw_ & static_cast<Raw>(~filter_timing_overrun_mask)));
+    }
+
+    static constexpr Raw filter_timing_underrun_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool filter_timing_underrun() const {
+        return (raw_ & filter_timing_underrun_mask) != 0;
+    }
+    constexpr void set_filter_timing_underrun(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | filter_timing_underrun_mask)
+                                   : (raw_ & static_cast<Raw>(~filter_timing_underrun_mask)));
+    }
+
+    static constexpr Raw reserved_68_71_mask = static_cast<Raw>(0xF0ULL);
+    /// Bits 4..7, shifted down.
+    constexpr Raw reserved_68_71() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xF0ULL) >> 4);
+    }
+    constexpr void set_reserved_68_71(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xF0ULL));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitNav8 a, Cv7ContinuousBitNav8 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitNav8 a, Cv7ContinuousBitNav8 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 0: system (bits 0-7). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitSystem0 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitSystem0() = default;
+    constexpr explicit Cv7ContinuousBitSystem0(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw system_clock_failure_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool system_clock_failure() const {
+        return (raw_ & system_clock_failure_mask) != 0;
+    }
+    constexpr void set_system_clock_failure(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | system_clock_failure_mask)
+                                   : (raw_ & static_cast<Raw>(~system_clock_failure_mask)));
+    }
+
+    static constexpr Raw power_fault_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool power_fault() const {
+        return (raw_ & power_fault_mask) != 0;
+    }
+    constexpr void set_power_fault(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | power_fault_mask) : (raw_ & static_cast<Raw>(~power_fault_mask)));
+    }
+
+    static constexpr Raw reserved_2_3_mask = static_cast<Raw>(0xCULL);
+    /// Bits 2..3, shifted down.
+    constexpr Raw reserved_2_3() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xCULL) >> 2);
+    }
+    constexpr void set_reserved_2_3(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xCULL));
+    }
+
+    static constexpr Raw firmware_fault_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool firmware_fault() const {
+        return (raw_ & firmware_fault_mask) != 0;
+    }
+    constexpr void set_firmware_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | firmware_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~firmware_fault_mask)));
+    }
+
+    static constexpr Raw timing_overload_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool timing_overload() const {
+        return (raw_ & timing_overload_mask) != 0;
+    }
+    constexpr void set_timing_overload(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | timing_overload_mask)
+                                   : (raw_ & static_cast<Raw>(~timing_overload_mask)));
+    }
+
+    static constexpr Raw buffer_overrun_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool buffer_overrun() const {
+        return (raw_ & buffer_overrun_mask) != 0;
+    }
+    constexpr void set_buffer_overrun(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | buffer_overrun_mask)
+                                   : (raw_ & static_cast<Raw>(~buffer_overrun_mask)));
+    }
+
+    static constexpr Raw reserved_7_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool reserved_7() const {
+        return (raw_ & reserved_7_mask) != 0;
+    }
+    constexpr void set_reserved_7(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_7_mask) : (raw_ & static_cast<Raw>(~reserved_7_mask)));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitSystem0 a, Cv7ContinuousBitSystem0 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitSystem0 a, Cv7ContinuousBitSystem0 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 2: system, IMU and filter processes (bits 16-23). Reserved and unnamed bits are kept
+/// in raw().
+class Cv7ContinuousBitSystem2 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitSystem2() = default;
+    constexpr explicit Cv7ContinuousBitSystem2(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw imu_process_fault_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool imu_process_fault() const {
+        return (raw_ & imu_process_fault_mask) != 0;
+    }
+    constexpr void set_imu_process_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_process_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_process_fault_mask)));
+    }
+
+    static constexpr Raw imu_data_process_time_exceeded_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool imu_data_process_time_exceeded() const {
+        return (raw_ & imu_data_process_time_exceeded_mask) != 0;
+    }
+    constexpr void set_imu_data_process_time_exceeded(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_data_process_time_exceeded_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_data_process_time_exceeded_mask)));
+    }
+
+    static constexpr Raw imu_data_rate_error_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool imu_data_rate_error() const {
+        return (raw_ & imu_data_rate_error_mask) != 0;
+    }
+    constexpr void set_imu_data_rate_error(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_data_rate_error_mask)
+                                   : (raw_ & static_cast<Raw>(~imu_data_rate_error_mask)));
+    }
+
+    static constexpr Raw imu_stall_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool imu_stall() const {
+        return (raw_ & imu_stall_mask) != 0;
+    }
+    constexpr void set_imu_stall(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | imu_stall_mask) : (raw_ & static_cast<Raw>(~imu_stall_mask)));
+    }
+
+    static constexpr Raw filter_process_fault_mask = static_cast<Raw>(0xF0ULL);
+    /// Bits 4..7, shifted down.
+    constexpr Raw filter_process_fault() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xF0ULL) >> 4);
+    }
+    constexpr void set_filter_process_fault(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xF0ULL));
+    }
+
+    static constexpr Raw filter_major_cycle_fault_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool filter_major_cycle_fault() const {
+        return (raw_ & filter_major_cycle_fault_mask) != 0;
+    }
+    constexpr void set_filter_major_cycle_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | filter_major_cycle_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~filter_major_cycle_fault_mask)));
+    }
+
+    static constexpr Raw filter_minor_cycle_fault_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool filter_minor_cycle_fault() const {
+        return (raw_ & filter_minor_cycle_fault_mask) != 0;
+    }
+    constexpr void set_filter_minor_cycle_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | filter_minor_cycle_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~filter_minor_cycle_fault_mask)));
+    }
+
+    static constexpr Raw filter_data_rate_error_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool filter_data_rate_error() const {
+        return (raw_ & filter_data_rate_error_mask) != 0;
+    }
+    constexpr void set_filter_data_rate_error(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | filter_data_rate_error_mask)
+                                   : (raw_ & static_cast<Raw>(~filter_data_rate_error_mask)));
+    }
+
+    static constexpr Raw filter_process_stall_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool filter_process_stall() const {
+        return (raw_ & filter_process_stall_mask) != 0;
+    }
+    constexpr void set_filter_process_stall(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | filter_process_stall_mask)
+                                   : (raw_ & static_cast<Raw>(~filter_process_stall_mask)));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitSystem2 a, Cv7ContinuousBitSystem2 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitSystem2 a, Cv7ContinuousBitSystem2 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Continuous BIT byte 3: system, GNSS processes (bits 24-31). Reserved and unnamed bits are kept in raw().
+class Cv7ContinuousBitSystem3 {
+  public:
+    using Raw = std::uint8_t;
+    constexpr Cv7ContinuousBitSystem3() = default;
+    constexpr explicit Cv7ContinuousBitSystem3(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw gnss_subsystem_fault_mask = static_cast<Raw>(0xFULL);
+    /// Bits 0..3, shifted down.
+    constexpr Raw gnss_subsystem_fault() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFULL) >> 0);
+    }
+    constexpr void set_gnss_subsystem_fault(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0xFULL));
+    }
+
+    static constexpr Raw gnss_main_process_fault_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool gnss_main_process_fault() const {
+        return (raw_ & gnss_main_process_fault_mask) != 0;
+    }
+    constexpr void set_gnss_main_process_fault(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_main_process_fault_mask)
+                                   : (raw_ & static_cast<Raw>(~gnss_main_process_fault_mask)));
+    }
+
+    static constexpr Raw gnss_receiver_1_stall_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool gnss_receiver_1_stall() const {
+        return (raw_ & gnss_receiver_1_stall_mask) != 0;
+    }
+    constexpr void set_gnss_receiver_1_stall(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_receiver_1_stall_mask)
+                                   : (raw_ & static_cast<Raw>(~gnss_receiver_1_stall_mask)));
+    }
+
+    static constexpr Raw gnss_receiver_2_stall_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool gnss_receiver_2_stall() const {
+        return (raw_ & gnss_receiver_2_stall_mask) != 0;
+    }
+    constexpr void set_gnss_receiver_2_stall(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_receiver_2_stall_mask)
+                                   : (raw_ & static_cast<Raw>(~gnss_receiver_2_stall_mask)));
+    }
+
+    static constexpr Raw reserved_27_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool reserved_27() const {
+        return (raw_ & reserved_27_mask) != 0;
+    }
+    constexpr void set_reserved_27(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_27_mask) : (raw_ & static_cast<Raw>(~reserved_27_mask)));
+    }
+
+    static constexpr Raw reserved_28_31_mask = static_cast<Raw>(0xF0ULL);
+    /// Bits 4..7, shifted down.
+    constexpr Raw reserved_28_31() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xF0ULL) >> 4);
+    }
+    constexpr void set_reserved_28_31(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xF0ULL));
+    }
+    friend constexpr bool operator==(Cv7ContinuousBitSystem3 a, Cv7ContinuousBitSystem3 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(Cv7ContinuousBitSystem3 a, Cv7ContinuousBitSystem3 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// Device status selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class DeviceStatusSelector : std::uint8_t {
     basic = 1,
@@ -1032,6 +1838,89 @@ inline bool from_string(const char *name, ExternalHeadingType &out) {
     }
     return false;
 }
+
+/// External time delta valid flags. Reserved and unnamed bits are kept in raw().
+class ExternalTimeDeltaValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr ExternalTimeDeltaValidFlags() = default;
+    constexpr explicit ExternalTimeDeltaValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw dt_nanos_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool dt_nanos() const {
+        return (raw_ & dt_nanos_mask) != 0;
+    }
+    constexpr void set_dt_nanos(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | dt_nanos_mask) : (raw_ & static_cast<Raw>(~dt_nanos_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFEULL);
+    /// Bits 1..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFEULL) >> 1);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFEULL) |
+                                ((static_cast<std::uint64_t>(value) << 1) & 0xFFFEULL));
+    }
+    friend constexpr bool operator==(ExternalTimeDeltaValidFlags a, ExternalTimeDeltaValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(ExternalTimeDeltaValidFlags a, ExternalTimeDeltaValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// External timestamp valid flags. Reserved and unnamed bits are kept in raw().
+class ExternalTimestampValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr ExternalTimestampValidFlags() = default;
+    constexpr explicit ExternalTimestampValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw nanoseconds_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool nanoseconds() const {
+        return (raw_ & nanoseconds_mask) != 0;
+    }
+    constexpr void set_nanoseconds(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | nanoseconds_mask) : (raw_ & static_cast<Raw>(~nanoseconds_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFEULL);
+    /// Bits 1..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFEULL) >> 1);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFEULL) |
+                                ((static_cast<std::uint64_t>(value) << 1) & 0xFFFEULL));
+    }
+    friend constexpr bool operator==(ExternalTimestampValidFlags a, ExternalTimestampValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(ExternalTimestampValidFlags a, ExternalTimestampValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// Factory streaming action. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FactoryStreamingAction : std::uint8_t {
@@ -2291,6 +3180,302 @@ inline bool from_string(const char *name, FunctionSelector &out) {
     return false;
 }
 
+/// GNSS antenna power. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssAntennaPower : std::uint8_t {
+    off = 0,
+    on = 1,
+    unknown = 2,
+};
+
+/// Spec name of a value ("off"), or nullptr when the value has no name.
+inline const char *to_string(GnssAntennaPower v) {
+    if (v == GnssAntennaPower::off) {
+        return "off";
+    }
+    if (v == GnssAntennaPower::on) {
+        return "on";
+    }
+    if (v == GnssAntennaPower::unknown) {
+        return "unknown";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssAntennaPower &out) {
+    if (std::strcmp(name, "off") == 0) {
+        out = GnssAntennaPower::off;
+        return true;
+    }
+    if (std::strcmp(name, "on") == 0) {
+        out = GnssAntennaPower::on;
+        return true;
+    }
+    if (std::strcmp(name, "unknown") == 0) {
+        out = GnssAntennaPower::unknown;
+        return true;
+    }
+    return false;
+}
+
+/// GNSS antenna state. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssAntennaState : std::uint8_t {
+    init = 1,
+    short_ = 2,
+    open = 3,
+    good = 4,
+    unknown = 5,
+};
+
+/// Spec name of a value ("init"), or nullptr when the value has no name.
+inline const char *to_string(GnssAntennaState v) {
+    if (v == GnssAntennaState::init) {
+        return "init";
+    }
+    if (v == GnssAntennaState::short_) {
+        return "short";
+    }
+    if (v == GnssAntennaState::open) {
+        return "open";
+    }
+    if (v == GnssAntennaState::good) {
+        return "good";
+    }
+    if (v == GnssAntennaState::unknown) {
+        return "unknown";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssAntennaState &out) {
+    if (std::strcmp(name, "init") == 0) {
+        out = GnssAntennaState::init;
+        return true;
+    }
+    if (std::strcmp(name, "short") == 0) {
+        out = GnssAntennaState::short_;
+        return true;
+    }
+    if (std::strcmp(name, "open") == 0) {
+        out = GnssAntennaState::open;
+        return true;
+    }
+    if (std::strcmp(name, "good") == 0) {
+        out = GnssAntennaState::good;
+        return true;
+    }
+    if (std::strcmp(name, "unknown") == 0) {
+        out = GnssAntennaState::unknown;
+        return true;
+    }
+    return false;
+}
+
+/// Base station indicators. Reserved and unnamed bits are kept in raw().
+class GnssBaseStationIndicators {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssBaseStationIndicators() = default;
+    constexpr explicit GnssBaseStationIndicators(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw gps_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool gps() const {
+        return (raw_ & gps_mask) != 0;
+    }
+    constexpr void set_gps(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gps_mask) : (raw_ & static_cast<Raw>(~gps_mask)));
+    }
+
+    static constexpr Raw glonass_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool glonass() const {
+        return (raw_ & glonass_mask) != 0;
+    }
+    constexpr void set_glonass(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | glonass_mask) : (raw_ & static_cast<Raw>(~glonass_mask)));
+    }
+
+    static constexpr Raw galileo_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool galileo() const {
+        return (raw_ & galileo_mask) != 0;
+    }
+    constexpr void set_galileo(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | galileo_mask) : (raw_ & static_cast<Raw>(~galileo_mask)));
+    }
+
+    static constexpr Raw beidou_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool beidou() const {
+        return (raw_ & beidou_mask) != 0;
+    }
+    constexpr void set_beidou(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | beidou_mask) : (raw_ & static_cast<Raw>(~beidou_mask)));
+    }
+
+    static constexpr Raw ref_station_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool ref_station() const {
+        return (raw_ & ref_station_mask) != 0;
+    }
+    constexpr void set_ref_station(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | ref_station_mask) : (raw_ & static_cast<Raw>(~ref_station_mask)));
+    }
+
+    static constexpr Raw single_receiver_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool single_receiver() const {
+        return (raw_ & single_receiver_mask) != 0;
+    }
+    constexpr void set_single_receiver(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | single_receiver_mask)
+                                   : (raw_ & static_cast<Raw>(~single_receiver_mask)));
+    }
+
+    static constexpr Raw quarter_cycle_bit1_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool quarter_cycle_bit1() const {
+        return (raw_ & quarter_cycle_bit1_mask) != 0;
+    }
+    constexpr void set_quarter_cycle_bit1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | quarter_cycle_bit1_mask)
+                                   : (raw_ & static_cast<Raw>(~quarter_cycle_bit1_mask)));
+    }
+
+    static constexpr Raw quarter_cycle_bit2_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool quarter_cycle_bit2() const {
+        return (raw_ & quarter_cycle_bit2_mask) != 0;
+    }
+    constexpr void set_quarter_cycle_bit2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | quarter_cycle_bit2_mask)
+                                   : (raw_ & static_cast<Raw>(~quarter_cycle_bit2_mask)));
+    }
+
+    static constexpr Raw quarter_cycle_bits_mask = static_cast<Raw>(0xC0ULL);
+    /// Bits 6..7, shifted down.
+    constexpr Raw quarter_cycle_bits() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xC0ULL) >> 6);
+    }
+    constexpr void set_quarter_cycle_bits(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xC0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 6) & 0xC0ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFF00ULL);
+    /// Bits 8..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFF00ULL) >> 8);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFF00ULL) |
+                                ((static_cast<std::uint64_t>(value) << 8) & 0xFF00ULL));
+    }
+    friend constexpr bool operator==(GnssBaseStationIndicators a, GnssBaseStationIndicators b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssBaseStationIndicators a, GnssBaseStationIndicators b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Base station information valid flags. Reserved and unnamed bits are kept in raw().
+class GnssBaseStationInfoValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssBaseStationInfoValidFlags() = default;
+    constexpr explicit GnssBaseStationInfoValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw ecef_position_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool ecef_position() const {
+        return (raw_ & ecef_position_mask) != 0;
+    }
+    constexpr void set_ecef_position(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | ecef_position_mask)
+                                   : (raw_ & static_cast<Raw>(~ecef_position_mask)));
+    }
+
+    static constexpr Raw height_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool height() const {
+        return (raw_ & height_mask) != 0;
+    }
+    constexpr void set_height(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | height_mask) : (raw_ & static_cast<Raw>(~height_mask)));
+    }
+
+    static constexpr Raw station_id_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool station_id() const {
+        return (raw_ & station_id_mask) != 0;
+    }
+    constexpr void set_station_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | station_id_mask) : (raw_ & static_cast<Raw>(~station_id_mask)));
+    }
+
+    static constexpr Raw indicators_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool indicators() const {
+        return (raw_ & indicators_mask) != 0;
+    }
+    constexpr void set_indicators(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | indicators_mask) : (raw_ & static_cast<Raw>(~indicators_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3FULL);
+    /// Bits 0..5, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3FULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3FULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3FULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFC0ULL);
+    /// Bits 6..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFC0ULL) >> 6);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFC0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 6) & 0xFFC0ULL));
+    }
+    friend constexpr bool operator==(GnssBaseStationInfoValidFlags a, GnssBaseStationInfoValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssBaseStationInfoValidFlags a, GnssBaseStationInfoValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// BeiDou signals enabled. Reserved and unnamed bits are kept in raw().
 class GnssBeidouSignals {
   public:
@@ -2338,6 +3523,951 @@ class GnssBeidouSignals {
     Raw raw_ = 0;
 };
 
+/// GNSS clock information 2 valid flags. Reserved and unnamed bits are kept in raw().
+class GnssClockInfo2ValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssClockInfo2ValidFlags() = default;
+    constexpr explicit GnssClockInfo2ValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw bias_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool bias() const {
+        return (raw_ & bias_mask) != 0;
+    }
+    constexpr void set_bias(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | bias_mask) : (raw_ & static_cast<Raw>(~bias_mask)));
+    }
+
+    static constexpr Raw drift_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool drift() const {
+        return (raw_ & drift_mask) != 0;
+    }
+    constexpr void set_drift(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | drift_mask) : (raw_ & static_cast<Raw>(~drift_mask)));
+    }
+
+    static constexpr Raw bias_accuracy_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool bias_accuracy() const {
+        return (raw_ & bias_accuracy_mask) != 0;
+    }
+    constexpr void set_bias_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | bias_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~bias_accuracy_mask)));
+    }
+
+    static constexpr Raw drift_accuracy_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool drift_accuracy() const {
+        return (raw_ & drift_accuracy_mask) != 0;
+    }
+    constexpr void set_drift_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | drift_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~drift_accuracy_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0xFULL);
+    /// Bits 0..3, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0xFULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF0ULL);
+    /// Bits 4..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF0ULL) >> 4);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xFFF0ULL));
+    }
+    friend constexpr bool operator==(GnssClockInfo2ValidFlags a, GnssClockInfo2ValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssClockInfo2ValidFlags a, GnssClockInfo2ValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS clock information valid flags. Reserved and unnamed bits are kept in raw().
+class GnssClockInfoValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssClockInfoValidFlags() = default;
+    constexpr explicit GnssClockInfoValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw bias_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool bias() const {
+        return (raw_ & bias_mask) != 0;
+    }
+    constexpr void set_bias(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | bias_mask) : (raw_ & static_cast<Raw>(~bias_mask)));
+    }
+
+    static constexpr Raw drift_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool drift() const {
+        return (raw_ & drift_mask) != 0;
+    }
+    constexpr void set_drift(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | drift_mask) : (raw_ & static_cast<Raw>(~drift_mask)));
+    }
+
+    static constexpr Raw accuracy_estimate_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool accuracy_estimate() const {
+        return (raw_ & accuracy_estimate_mask) != 0;
+    }
+    constexpr void set_accuracy_estimate(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accuracy_estimate_mask)
+                                   : (raw_ & static_cast<Raw>(~accuracy_estimate_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF8ULL);
+    /// Bits 3..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF8ULL) >> 3);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF8ULL) |
+                                ((static_cast<std::uint64_t>(value) << 3) & 0xFFF8ULL));
+    }
+    friend constexpr bool operator==(GnssClockInfoValidFlags a, GnssClockInfoValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssClockInfoValidFlags a, GnssClockInfoValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS constellation (CV7 GNSS data). Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssConstellationId : std::uint8_t {
+    unknown = 0,
+    gps = 1,
+    glonass = 2,
+    galileo = 3,
+    beidou = 4,
+    sbas = 5,
+};
+
+/// Spec name of a value ("unknown"), or nullptr when the value has no name.
+inline const char *to_string(GnssConstellationId v) {
+    if (v == GnssConstellationId::unknown) {
+        return "unknown";
+    }
+    if (v == GnssConstellationId::gps) {
+        return "gps";
+    }
+    if (v == GnssConstellationId::glonass) {
+        return "glonass";
+    }
+    if (v == GnssConstellationId::galileo) {
+        return "galileo";
+    }
+    if (v == GnssConstellationId::beidou) {
+        return "beidou";
+    }
+    if (v == GnssConstellationId::sbas) {
+        return "sbas";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssConstellationId &out) {
+    if (std::strcmp(name, "unknown") == 0) {
+        out = GnssConstellationId::unknown;
+        return true;
+    }
+    if (std::strcmp(name, "gps") == 0) {
+        out = GnssConstellationId::gps;
+        return true;
+    }
+    if (std::strcmp(name, "glonass") == 0) {
+        out = GnssConstellationId::glonass;
+        return true;
+    }
+    if (std::strcmp(name, "galileo") == 0) {
+        out = GnssConstellationId::galileo;
+        return true;
+    }
+    if (std::strcmp(name, "beidou") == 0) {
+        out = GnssConstellationId::beidou;
+        return true;
+    }
+    if (std::strcmp(name, "sbas") == 0) {
+        out = GnssConstellationId::sbas;
+        return true;
+    }
+    return false;
+}
+
+/// DGNSS base station status. Unknown values are kept (an enum class holds any std::int16_t).
+enum class GnssDgnssBaseStationStatus : std::int16_t {
+    udre_scale_1_0 = 0,
+    udre_scale_0_75 = 1,
+    udre_scale_0_5 = 2,
+    udre_scale_0_3 = 3,
+    udre_scale_0_2 = 4,
+    udre_scale_0_1 = 5,
+    transmission_not_monitored = 6,
+    station_not_working = 7,
+};
+
+/// Spec name of a value ("udre_scale_1_0"), or nullptr when the value has no name.
+inline const char *to_string(GnssDgnssBaseStationStatus v) {
+    if (v == GnssDgnssBaseStationStatus::udre_scale_1_0) {
+        return "udre_scale_1_0";
+    }
+    if (v == GnssDgnssBaseStationStatus::udre_scale_0_75) {
+        return "udre_scale_0_75";
+    }
+    if (v == GnssDgnssBaseStationStatus::udre_scale_0_5) {
+        return "udre_scale_0_5";
+    }
+    if (v == GnssDgnssBaseStationStatus::udre_scale_0_3) {
+        return "udre_scale_0_3";
+    }
+    if (v == GnssDgnssBaseStationStatus::udre_scale_0_2) {
+        return "udre_scale_0_2";
+    }
+    if (v == GnssDgnssBaseStationStatus::udre_scale_0_1) {
+        return "udre_scale_0_1";
+    }
+    if (v == GnssDgnssBaseStationStatus::transmission_not_monitored) {
+        return "transmission_not_monitored";
+    }
+    if (v == GnssDgnssBaseStationStatus::station_not_working) {
+        return "station_not_working";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssDgnssBaseStationStatus &out) {
+    if (std::strcmp(name, "udre_scale_1_0") == 0) {
+        out = GnssDgnssBaseStationStatus::udre_scale_1_0;
+        return true;
+    }
+    if (std::strcmp(name, "udre_scale_0_75") == 0) {
+        out = GnssDgnssBaseStationStatus::udre_scale_0_75;
+        return true;
+    }
+    if (std::strcmp(name, "udre_scale_0_5") == 0) {
+        out = GnssDgnssBaseStationStatus::udre_scale_0_5;
+        return true;
+    }
+    if (std::strcmp(name, "udre_scale_0_3") == 0) {
+        out = GnssDgnssBaseStationStatus::udre_scale_0_3;
+        return true;
+    }
+    if (std::strcmp(name, "udre_scale_0_2") == 0) {
+        out = GnssDgnssBaseStationStatus::udre_scale_0_2;
+        return true;
+    }
+    if (std::strcmp(name, "udre_scale_0_1") == 0) {
+        out = GnssDgnssBaseStationStatus::udre_scale_0_1;
+        return true;
+    }
+    if (std::strcmp(name, "transmission_not_monitored") == 0) {
+        out = GnssDgnssBaseStationStatus::transmission_not_monitored;
+        return true;
+    }
+    if (std::strcmp(name, "station_not_working") == 0) {
+        out = GnssDgnssBaseStationStatus::station_not_working;
+        return true;
+    }
+    return false;
+}
+
+/// DGNSS channel status valid flags. Reserved and unnamed bits are kept in raw().
+class GnssDgnssChannelStatusValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssDgnssChannelStatusValidFlags() = default;
+    constexpr explicit GnssDgnssChannelStatusValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw sv_id_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool sv_id() const {
+        return (raw_ & sv_id_mask) != 0;
+    }
+    constexpr void set_sv_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | sv_id_mask) : (raw_ & static_cast<Raw>(~sv_id_mask)));
+    }
+
+    static constexpr Raw age_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool age() const {
+        return (raw_ & age_mask) != 0;
+    }
+    constexpr void set_age(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | age_mask) : (raw_ & static_cast<Raw>(~age_mask)));
+    }
+
+    static constexpr Raw pseudorange_correction_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool pseudorange_correction() const {
+        return (raw_ & pseudorange_correction_mask) != 0;
+    }
+    constexpr void set_pseudorange_correction(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pseudorange_correction_mask)
+                                   : (raw_ & static_cast<Raw>(~pseudorange_correction_mask)));
+    }
+
+    static constexpr Raw pseudorange_rate_correction_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool pseudorange_rate_correction() const {
+        return (raw_ & pseudorange_rate_correction_mask) != 0;
+    }
+    constexpr void set_pseudorange_rate_correction(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pseudorange_rate_correction_mask)
+                                   : (raw_ & static_cast<Raw>(~pseudorange_rate_correction_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF0ULL);
+    /// Bits 4..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF0ULL) >> 4);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xFFF0ULL));
+    }
+    friend constexpr bool operator==(GnssDgnssChannelStatusValidFlags a, GnssDgnssChannelStatusValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssDgnssChannelStatusValidFlags a, GnssDgnssChannelStatusValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// DGNSS information valid flags. Reserved and unnamed bits are kept in raw().
+class GnssDgnssInfoValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssDgnssInfoValidFlags() = default;
+    constexpr explicit GnssDgnssInfoValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw latest_age_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool latest_age() const {
+        return (raw_ & latest_age_mask) != 0;
+    }
+    constexpr void set_latest_age(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | latest_age_mask) : (raw_ & static_cast<Raw>(~latest_age_mask)));
+    }
+
+    static constexpr Raw base_station_id_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool base_station_id() const {
+        return (raw_ & base_station_id_mask) != 0;
+    }
+    constexpr void set_base_station_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | base_station_id_mask)
+                                   : (raw_ & static_cast<Raw>(~base_station_id_mask)));
+    }
+
+    static constexpr Raw base_station_status_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool base_station_status() const {
+        return (raw_ & base_station_status_mask) != 0;
+    }
+    constexpr void set_base_station_status(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | base_station_status_mask)
+                                   : (raw_ & static_cast<Raw>(~base_station_status_mask)));
+    }
+
+    static constexpr Raw num_channels_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool num_channels() const {
+        return (raw_ & num_channels_mask) != 0;
+    }
+    constexpr void set_num_channels(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | num_channels_mask) : (raw_ & static_cast<Raw>(~num_channels_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF0ULL);
+    /// Bits 4..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF0ULL) >> 4);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xFFF0ULL));
+    }
+    friend constexpr bool operator==(GnssDgnssInfoValidFlags a, GnssDgnssInfoValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssDgnssInfoValidFlags a, GnssDgnssInfoValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS DOP valid flags. Reserved and unnamed bits are kept in raw().
+class GnssDopValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssDopValidFlags() = default;
+    constexpr explicit GnssDopValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw gdop_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool gdop() const {
+        return (raw_ & gdop_mask) != 0;
+    }
+    constexpr void set_gdop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gdop_mask) : (raw_ & static_cast<Raw>(~gdop_mask)));
+    }
+
+    static constexpr Raw pdop_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool pdop() const {
+        return (raw_ & pdop_mask) != 0;
+    }
+    constexpr void set_pdop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pdop_mask) : (raw_ & static_cast<Raw>(~pdop_mask)));
+    }
+
+    static constexpr Raw hdop_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool hdop() const {
+        return (raw_ & hdop_mask) != 0;
+    }
+    constexpr void set_hdop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | hdop_mask) : (raw_ & static_cast<Raw>(~hdop_mask)));
+    }
+
+    static constexpr Raw vdop_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool vdop() const {
+        return (raw_ & vdop_mask) != 0;
+    }
+    constexpr void set_vdop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | vdop_mask) : (raw_ & static_cast<Raw>(~vdop_mask)));
+    }
+
+    static constexpr Raw tdop_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool tdop() const {
+        return (raw_ & tdop_mask) != 0;
+    }
+    constexpr void set_tdop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tdop_mask) : (raw_ & static_cast<Raw>(~tdop_mask)));
+    }
+
+    static constexpr Raw ndop_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool ndop() const {
+        return (raw_ & ndop_mask) != 0;
+    }
+    constexpr void set_ndop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | ndop_mask) : (raw_ & static_cast<Raw>(~ndop_mask)));
+    }
+
+    static constexpr Raw edop_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool edop() const {
+        return (raw_ & edop_mask) != 0;
+    }
+    constexpr void set_edop(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | edop_mask) : (raw_ & static_cast<Raw>(~edop_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x7FULL);
+    /// Bits 0..6, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x7FULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x7FULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x7FULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFF80ULL);
+    /// Bits 7..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFF80ULL) >> 7);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFF80ULL) |
+                                ((static_cast<std::uint64_t>(value) << 7) & 0xFF80ULL));
+    }
+    friend constexpr bool operator==(GnssDopValidFlags a, GnssDopValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssDopValidFlags a, GnssDopValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS ECEF position valid flags. Reserved and unnamed bits are kept in raw().
+class GnssEcefPositionValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssEcefPositionValidFlags() = default;
+    constexpr explicit GnssEcefPositionValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw position_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool position() const {
+        return (raw_ & position_mask) != 0;
+    }
+    constexpr void set_position(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | position_mask) : (raw_ & static_cast<Raw>(~position_mask)));
+    }
+
+    static constexpr Raw position_accuracy_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool position_accuracy() const {
+        return (raw_ & position_accuracy_mask) != 0;
+    }
+    constexpr void set_position_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | position_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~position_accuracy_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3ULL);
+    /// Bits 0..1, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssEcefPositionValidFlags a, GnssEcefPositionValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssEcefPositionValidFlags a, GnssEcefPositionValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS ECEF velocity valid flags. Reserved and unnamed bits are kept in raw().
+class GnssEcefVelocityValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssEcefVelocityValidFlags() = default;
+    constexpr explicit GnssEcefVelocityValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw velocity_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool velocity() const {
+        return (raw_ & velocity_mask) != 0;
+    }
+    constexpr void set_velocity(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | velocity_mask) : (raw_ & static_cast<Raw>(~velocity_mask)));
+    }
+
+    static constexpr Raw velocity_accuracy_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool velocity_accuracy() const {
+        return (raw_ & velocity_accuracy_mask) != 0;
+    }
+    constexpr void set_velocity_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | velocity_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~velocity_accuracy_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3ULL);
+    /// Bits 0..1, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssEcefVelocityValidFlags a, GnssEcefVelocityValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssEcefVelocityValidFlags a, GnssEcefVelocityValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GPS/Galileo/BeiDou ephemeris valid flags. Reserved and unnamed bits are kept in raw().
+class GnssEphemerisValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssEphemerisValidFlags() = default;
+    constexpr explicit GnssEphemerisValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw ephemeris_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool ephemeris() const {
+        return (raw_ & ephemeris_mask) != 0;
+    }
+    constexpr void set_ephemeris(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | ephemeris_mask) : (raw_ & static_cast<Raw>(~ephemeris_mask)));
+    }
+
+    static constexpr Raw modern_data_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool modern_data() const {
+        return (raw_ & modern_data_mask) != 0;
+    }
+    constexpr void set_modern_data(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | modern_data_mask) : (raw_ & static_cast<Raw>(~modern_data_mask)));
+    }
+
+    static constexpr Raw isc_l5_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool isc_l5() const {
+        return (raw_ & isc_l5_mask) != 0;
+    }
+    constexpr void set_isc_l5(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | isc_l5_mask) : (raw_ & static_cast<Raw>(~isc_l5_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x7ULL);
+    /// Bits 0..2, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x7ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x7ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x7ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF8ULL);
+    /// Bits 3..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF8ULL) >> 3);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF8ULL) |
+                                ((static_cast<std::uint64_t>(value) << 3) & 0xFFF8ULL));
+    }
+    friend constexpr bool operator==(GnssEphemerisValidFlags a, GnssEphemerisValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssEphemerisValidFlags a, GnssEphemerisValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS fix flags. Reserved and unnamed bits are kept in raw().
+class GnssFixFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssFixFlags() = default;
+    constexpr explicit GnssFixFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw sbas_used_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool sbas_used() const {
+        return (raw_ & sbas_used_mask) != 0;
+    }
+    constexpr void set_sbas_used(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | sbas_used_mask) : (raw_ & static_cast<Raw>(~sbas_used_mask)));
+    }
+
+    static constexpr Raw dgnss_used_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool dgnss_used() const {
+        return (raw_ & dgnss_used_mask) != 0;
+    }
+    constexpr void set_dgnss_used(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | dgnss_used_mask) : (raw_ & static_cast<Raw>(~dgnss_used_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssFixFlags a, GnssFixFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssFixFlags a, GnssFixFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS fix information valid flags. Reserved and unnamed bits are kept in raw().
+class GnssFixInfoValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssFixInfoValidFlags() = default;
+    constexpr explicit GnssFixInfoValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw fix_type_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool fix_type() const {
+        return (raw_ & fix_type_mask) != 0;
+    }
+    constexpr void set_fix_type(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | fix_type_mask) : (raw_ & static_cast<Raw>(~fix_type_mask)));
+    }
+
+    static constexpr Raw num_sv_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool num_sv() const {
+        return (raw_ & num_sv_mask) != 0;
+    }
+    constexpr void set_num_sv(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | num_sv_mask) : (raw_ & static_cast<Raw>(~num_sv_mask)));
+    }
+
+    static constexpr Raw fix_flags_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool fix_flags() const {
+        return (raw_ & fix_flags_mask) != 0;
+    }
+    constexpr void set_fix_flags(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | fix_flags_mask) : (raw_ & static_cast<Raw>(~fix_flags_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x7ULL);
+    /// Bits 0..2, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x7ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x7ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x7ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF8ULL);
+    /// Bits 3..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF8ULL) >> 3);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF8ULL) |
+                                ((static_cast<std::uint64_t>(value) << 3) & 0xFFF8ULL));
+    }
+    friend constexpr bool operator==(GnssFixInfoValidFlags a, GnssFixInfoValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssFixInfoValidFlags a, GnssFixInfoValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS fix type (CV7). Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssFixTypeCv7 : std::uint8_t {
+    fix_3d = 0,
+    fix_2d = 1,
+    fix_time_only = 2,
+    fix_none = 3,
+    fix_invalid = 4,
+    fix_rtk_float = 5,
+    fix_rtk_fixed = 6,
+    fix_differential = 7,
+};
+
+/// Spec name of a value ("fix_3d"), or nullptr when the value has no name.
+inline const char *to_string(GnssFixTypeCv7 v) {
+    if (v == GnssFixTypeCv7::fix_3d) {
+        return "fix_3d";
+    }
+    if (v == GnssFixTypeCv7::fix_2d) {
+        return "fix_2d";
+    }
+    if (v == GnssFixTypeCv7::fix_time_only) {
+        return "fix_time_only";
+    }
+    if (v == GnssFixTypeCv7::fix_none) {
+        return "fix_none";
+    }
+    if (v == GnssFixTypeCv7::fix_invalid) {
+        return "fix_invalid";
+    }
+    if (v == GnssFixTypeCv7::fix_rtk_float) {
+        return "fix_rtk_float";
+    }
+    if (v == GnssFixTypeCv7::fix_rtk_fixed) {
+        return "fix_rtk_fixed";
+    }
+    if (v == GnssFixTypeCv7::fix_differential) {
+        return "fix_differential";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssFixTypeCv7 &out) {
+    if (std::strcmp(name, "fix_3d") == 0) {
+        out = GnssFixTypeCv7::fix_3d;
+        return true;
+    }
+    if (std::strcmp(name, "fix_2d") == 0) {
+        out = GnssFixTypeCv7::fix_2d;
+        return true;
+    }
+    if (std::strcmp(name, "fix_time_only") == 0) {
+        out = GnssFixTypeCv7::fix_time_only;
+        return true;
+    }
+    if (std::strcmp(name, "fix_none") == 0) {
+        out = GnssFixTypeCv7::fix_none;
+        return true;
+    }
+    if (std::strcmp(name, "fix_invalid") == 0) {
+        out = GnssFixTypeCv7::fix_invalid;
+        return true;
+    }
+    if (std::strcmp(name, "fix_rtk_float") == 0) {
+        out = GnssFixTypeCv7::fix_rtk_float;
+        return true;
+    }
+    if (std::strcmp(name, "fix_rtk_fixed") == 0) {
+        out = GnssFixTypeCv7::fix_rtk_fixed;
+        return true;
+    }
+    if (std::strcmp(name, "fix_differential") == 0) {
+        out = GnssFixTypeCv7::fix_differential;
+        return true;
+    }
+    return false;
+}
+
+/// GNSS fix type (GX5-45). Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssFixTypeGx5 : std::uint8_t {
+    fix_3d = 0,
+    fix_2d = 1,
+    fix_time_only = 2,
+    fix_none = 3,
+    fix_invalid = 4,
+};
+
+/// Spec name of a value ("fix_3d"), or nullptr when the value has no name.
+inline const char *to_string(GnssFixTypeGx5 v) {
+    if (v == GnssFixTypeGx5::fix_3d) {
+        return "fix_3d";
+    }
+    if (v == GnssFixTypeGx5::fix_2d) {
+        return "fix_2d";
+    }
+    if (v == GnssFixTypeGx5::fix_time_only) {
+        return "fix_time_only";
+    }
+    if (v == GnssFixTypeGx5::fix_none) {
+        return "fix_none";
+    }
+    if (v == GnssFixTypeGx5::fix_invalid) {
+        return "fix_invalid";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssFixTypeGx5 &out) {
+    if (std::strcmp(name, "fix_3d") == 0) {
+        out = GnssFixTypeGx5::fix_3d;
+        return true;
+    }
+    if (std::strcmp(name, "fix_2d") == 0) {
+        out = GnssFixTypeGx5::fix_2d;
+        return true;
+    }
+    if (std::strcmp(name, "fix_time_only") == 0) {
+        out = GnssFixTypeGx5::fix_time_only;
+        return true;
+    }
+    if (std::strcmp(name, "fix_none") == 0) {
+        out = GnssFixTypeGx5::fix_none;
+        return true;
+    }
+    if (std::strcmp(name, "fix_invalid") == 0) {
+        out = GnssFixTypeGx5::fix_invalid;
+        return true;
+    }
+    return false;
+}
+
 /// Galileo signals enabled. Reserved and unnamed bits are kept in raw().
 class GnssGalileoSignals {
   public:
@@ -2384,6 +4514,85 @@ class GnssGalileoSignals {
   private:
     Raw raw_ = 0;
 };
+
+/// GLONASS ephemeris valid flags. Reserved and unnamed bits are kept in raw().
+class GnssGlonassEphemerisValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssGlonassEphemerisValidFlags() = default;
+    constexpr explicit GnssGlonassEphemerisValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw ephemeris_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool ephemeris() const {
+        return (raw_ & ephemeris_mask) != 0;
+    }
+    constexpr void set_ephemeris(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | ephemeris_mask) : (raw_ & static_cast<Raw>(~ephemeris_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool flags() const {
+        return (raw_ & flags_mask) != 0;
+    }
+    constexpr void set_flags(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | flags_mask) : (raw_ & static_cast<Raw>(~flags_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFEULL);
+    /// Bits 1..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFEULL) >> 1);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFEULL) |
+                                ((static_cast<std::uint64_t>(value) << 1) & 0xFFFEULL));
+    }
+    friend constexpr bool operator==(GnssGlonassEphemerisValidFlags a, GnssGlonassEphemerisValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssGlonassEphemerisValidFlags a, GnssGlonassEphemerisValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GLONASS satellite type. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssGlonassSatelliteType : std::uint8_t {
+    glonass = 0,
+    glonass_m = 1,
+};
+
+/// Spec name of a value ("glonass"), or nullptr when the value has no name.
+inline const char *to_string(GnssGlonassSatelliteType v) {
+    if (v == GnssGlonassSatelliteType::glonass) {
+        return "glonass";
+    }
+    if (v == GnssGlonassSatelliteType::glonass_m) {
+        return "glonass_m";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssGlonassSatelliteType &out) {
+    if (std::strcmp(name, "glonass") == 0) {
+        out = GnssGlonassSatelliteType::glonass;
+        return true;
+    }
+    if (std::strcmp(name, "glonass_m") == 0) {
+        out = GnssGlonassSatelliteType::glonass_m;
+        return true;
+    }
+    return false;
+}
 
 /// GLONASS signals enabled. Reserved and unnamed bits are kept in raw().
 class GnssGlonassSignals {
@@ -2464,6 +4673,1746 @@ class GnssGpsSignals {
         return a.raw_ == b.raw_;
     }
     friend constexpr bool operator!=(GnssGpsSignals a, GnssGpsSignals b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS GPS time valid flags. Reserved and unnamed bits are kept in raw().
+class GnssGpsTimeValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssGpsTimeValidFlags() = default;
+    constexpr explicit GnssGpsTimeValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3ULL);
+    /// Bits 0..1, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssGpsTimeValidFlags a, GnssGpsTimeValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssGpsTimeValidFlags a, GnssGpsTimeValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS hardware status valid flags. Reserved and unnamed bits are kept in raw().
+class GnssHardwareStatusValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssHardwareStatusValidFlags() = default;
+    constexpr explicit GnssHardwareStatusValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw sensor_state_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool sensor_state() const {
+        return (raw_ & sensor_state_mask) != 0;
+    }
+    constexpr void set_sensor_state(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | sensor_state_mask) : (raw_ & static_cast<Raw>(~sensor_state_mask)));
+    }
+
+    static constexpr Raw antenna_state_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool antenna_state() const {
+        return (raw_ & antenna_state_mask) != 0;
+    }
+    constexpr void set_antenna_state(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_state_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_state_mask)));
+    }
+
+    static constexpr Raw antenna_power_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool antenna_power() const {
+        return (raw_ & antenna_power_mask) != 0;
+    }
+    constexpr void set_antenna_power(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_power_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_power_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x7ULL);
+    /// Bits 0..2, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x7ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x7ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x7ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFF8ULL);
+    /// Bits 3..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFF8ULL) >> 3);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFF8ULL) |
+                                ((static_cast<std::uint64_t>(value) << 3) & 0xFFF8ULL));
+    }
+    friend constexpr bool operator==(GnssHardwareStatusValidFlags a, GnssHardwareStatusValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssHardwareStatusValidFlags a, GnssHardwareStatusValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GPS leap seconds valid flags. Reserved and unnamed bits are kept in raw().
+class GnssLeapSecondsValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssLeapSecondsValidFlags() = default;
+    constexpr explicit GnssLeapSecondsValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw reserved_0_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool reserved_0() const {
+        return (raw_ & reserved_0_mask) != 0;
+    }
+    constexpr void set_reserved_0(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_0_mask) : (raw_ & static_cast<Raw>(~reserved_0_mask)));
+    }
+
+    static constexpr Raw leap_seconds_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool leap_seconds() const {
+        return (raw_ & leap_seconds_mask) != 0;
+    }
+    constexpr void set_leap_seconds(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | leap_seconds_mask) : (raw_ & static_cast<Raw>(~leap_seconds_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssLeapSecondsValidFlags a, GnssLeapSecondsValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssLeapSecondsValidFlags a, GnssLeapSecondsValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS LLH position valid flags. Reserved and unnamed bits are kept in raw().
+class GnssLlhPositionValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssLlhPositionValidFlags() = default;
+    constexpr explicit GnssLlhPositionValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw lat_lon_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool lat_lon() const {
+        return (raw_ & lat_lon_mask) != 0;
+    }
+    constexpr void set_lat_lon(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | lat_lon_mask) : (raw_ & static_cast<Raw>(~lat_lon_mask)));
+    }
+
+    static constexpr Raw ellipsoid_height_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool ellipsoid_height() const {
+        return (raw_ & ellipsoid_height_mask) != 0;
+    }
+    constexpr void set_ellipsoid_height(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | ellipsoid_height_mask)
+                                   : (raw_ & static_cast<Raw>(~ellipsoid_height_mask)));
+    }
+
+    static constexpr Raw msl_height_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool msl_height() const {
+        return (raw_ & msl_height_mask) != 0;
+    }
+    constexpr void set_msl_height(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | msl_height_mask) : (raw_ & static_cast<Raw>(~msl_height_mask)));
+    }
+
+    static constexpr Raw horizontal_accuracy_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool horizontal_accuracy() const {
+        return (raw_ & horizontal_accuracy_mask) != 0;
+    }
+    constexpr void set_horizontal_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | horizontal_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~horizontal_accuracy_mask)));
+    }
+
+    static constexpr Raw vertical_accuracy_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool vertical_accuracy() const {
+        return (raw_ & vertical_accuracy_mask) != 0;
+    }
+    constexpr void set_vertical_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | vertical_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~vertical_accuracy_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x1FULL);
+    /// Bits 0..4, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x1FULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x1FULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x1FULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFE0ULL);
+    /// Bits 5..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFE0ULL) >> 5);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFE0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 5) & 0xFFE0ULL));
+    }
+    friend constexpr bool operator==(GnssLlhPositionValidFlags a, GnssLlhPositionValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssLlhPositionValidFlags a, GnssLlhPositionValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS NED velocity valid flags. Reserved and unnamed bits are kept in raw().
+class GnssNedVelocityValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssNedVelocityValidFlags() = default;
+    constexpr explicit GnssNedVelocityValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw velocity_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool velocity() const {
+        return (raw_ & velocity_mask) != 0;
+    }
+    constexpr void set_velocity(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | velocity_mask) : (raw_ & static_cast<Raw>(~velocity_mask)));
+    }
+
+    static constexpr Raw speed_3d_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool speed_3d() const {
+        return (raw_ & speed_3d_mask) != 0;
+    }
+    constexpr void set_speed_3d(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | speed_3d_mask) : (raw_ & static_cast<Raw>(~speed_3d_mask)));
+    }
+
+    static constexpr Raw ground_speed_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool ground_speed() const {
+        return (raw_ & ground_speed_mask) != 0;
+    }
+    constexpr void set_ground_speed(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | ground_speed_mask) : (raw_ & static_cast<Raw>(~ground_speed_mask)));
+    }
+
+    static constexpr Raw heading_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool heading() const {
+        return (raw_ & heading_mask) != 0;
+    }
+    constexpr void set_heading(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | heading_mask) : (raw_ & static_cast<Raw>(~heading_mask)));
+    }
+
+    static constexpr Raw speed_accuracy_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool speed_accuracy() const {
+        return (raw_ & speed_accuracy_mask) != 0;
+    }
+    constexpr void set_speed_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | speed_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~speed_accuracy_mask)));
+    }
+
+    static constexpr Raw heading_accuracy_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool heading_accuracy() const {
+        return (raw_ & heading_accuracy_mask) != 0;
+    }
+    constexpr void set_heading_accuracy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | heading_accuracy_mask)
+                                   : (raw_ & static_cast<Raw>(~heading_accuracy_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3FULL);
+    /// Bits 0..5, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3FULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3FULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3FULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFC0ULL);
+    /// Bits 6..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFC0ULL) >> 6);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFC0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 6) & 0xFFC0ULL));
+    }
+    friend constexpr bool operator==(GnssNedVelocityValidFlags a, GnssNedVelocityValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssNedVelocityValidFlags a, GnssNedVelocityValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Raw observation valid flags. Reserved and unnamed bits are kept in raw().
+class GnssRawValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssRawValidFlags() = default;
+    constexpr explicit GnssRawValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw receiver_id_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool receiver_id() const {
+        return (raw_ & receiver_id_mask) != 0;
+    }
+    constexpr void set_receiver_id(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | receiver_id_mask) : (raw_ & static_cast<Raw>(~receiver_id_mask)));
+    }
+
+    static constexpr Raw tracking_channel_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool tracking_channel() const {
+        return (raw_ & tracking_channel_mask) != 0;
+    }
+    constexpr void set_tracking_channel(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tracking_channel_mask)
+                                   : (raw_ & static_cast<Raw>(~tracking_channel_mask)));
+    }
+
+    static constexpr Raw gnss_id_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool gnss_id() const {
+        return (raw_ & gnss_id_mask) != 0;
+    }
+    constexpr void set_gnss_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_id_mask) : (raw_ & static_cast<Raw>(~gnss_id_mask)));
+    }
+
+    static constexpr Raw satellite_id_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool satellite_id() const {
+        return (raw_ & satellite_id_mask) != 0;
+    }
+    constexpr void set_satellite_id(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | satellite_id_mask) : (raw_ & static_cast<Raw>(~satellite_id_mask)));
+    }
+
+    static constexpr Raw signal_id_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool signal_id() const {
+        return (raw_ & signal_id_mask) != 0;
+    }
+    constexpr void set_signal_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | signal_id_mask) : (raw_ & static_cast<Raw>(~signal_id_mask)));
+    }
+
+    static constexpr Raw signal_strength_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool signal_strength() const {
+        return (raw_ & signal_strength_mask) != 0;
+    }
+    constexpr void set_signal_strength(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | signal_strength_mask)
+                                   : (raw_ & static_cast<Raw>(~signal_strength_mask)));
+    }
+
+    static constexpr Raw quality_mask = static_cast<Raw>(0x100ULL);
+    constexpr bool quality() const {
+        return (raw_ & quality_mask) != 0;
+    }
+    constexpr void set_quality(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | quality_mask) : (raw_ & static_cast<Raw>(~quality_mask)));
+    }
+
+    static constexpr Raw pseudorange_mask = static_cast<Raw>(0x200ULL);
+    constexpr bool pseudorange() const {
+        return (raw_ & pseudorange_mask) != 0;
+    }
+    constexpr void set_pseudorange(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | pseudorange_mask) : (raw_ & static_cast<Raw>(~pseudorange_mask)));
+    }
+
+    static constexpr Raw carrier_phase_mask = static_cast<Raw>(0x400ULL);
+    constexpr bool carrier_phase() const {
+        return (raw_ & carrier_phase_mask) != 0;
+    }
+    constexpr void set_carrier_phase(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | carrier_phase_mask)
+                                   : (raw_ & static_cast<Raw>(~carrier_phase_mask)));
+    }
+
+    static constexpr Raw doppler_mask = static_cast<Raw>(0x800ULL);
+    constexpr bool doppler() const {
+        return (raw_ & doppler_mask) != 0;
+    }
+    constexpr void set_doppler(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | doppler_mask) : (raw_ & static_cast<Raw>(~doppler_mask)));
+    }
+
+    static constexpr Raw range_uncertainty_mask = static_cast<Raw>(0x1000ULL);
+    constexpr bool range_uncertainty() const {
+        return (raw_ & range_uncertainty_mask) != 0;
+    }
+    constexpr void set_range_uncertainty(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | range_uncertainty_mask)
+                                   : (raw_ & static_cast<Raw>(~range_uncertainty_mask)));
+    }
+
+    static constexpr Raw carrier_phase_uncertainty_mask = static_cast<Raw>(0x2000ULL);
+    constexpr bool carrier_phase_uncertainty() const {
+        return (raw_ & carrier_phase_uncertainty_mask) != 0;
+    }
+    constexpr void set_carrier_phase_uncertainty(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | carrier_phase_uncertainty_mask)
+                                   : (raw_ & static_cast<Raw>(~carrier_phase_uncertainty_mask)));
+    }
+
+    static constexpr Raw doppler_uncertainty_mask = static_cast<Raw>(0x4000ULL);
+    constexpr bool doppler_uncertainty() const {
+        return (raw_ & doppler_uncertainty_mask) != 0;
+    }
+    constexpr void set_doppler_uncertainty(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | doppler_uncertainty_mask)
+                                   : (raw_ & static_cast<Raw>(~doppler_uncertainty_mask)));
+    }
+
+    static constexpr Raw lock_time_mask = static_cast<Raw>(0x8000ULL);
+    constexpr bool lock_time() const {
+        return (raw_ & lock_time_mask) != 0;
+    }
+    constexpr void set_lock_time(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | lock_time_mask) : (raw_ & static_cast<Raw>(~lock_time_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0xFFFFULL);
+    /// Bits 0..15, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFFULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFFULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0xFFFFULL));
+    }
+    friend constexpr bool operator==(GnssRawValidFlags a, GnssRawValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssRawValidFlags a, GnssRawValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS receiver (sensor) state. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssReceiverState : std::uint8_t {
+    off = 0,
+    on = 1,
+    unknown = 2,
+};
+
+/// Spec name of a value ("off"), or nullptr when the value has no name.
+inline const char *to_string(GnssReceiverState v) {
+    if (v == GnssReceiverState::off) {
+        return "off";
+    }
+    if (v == GnssReceiverState::on) {
+        return "on";
+    }
+    if (v == GnssReceiverState::unknown) {
+        return "unknown";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssReceiverState &out) {
+    if (std::strcmp(name, "off") == 0) {
+        out = GnssReceiverState::off;
+        return true;
+    }
+    if (std::strcmp(name, "on") == 0) {
+        out = GnssReceiverState::on;
+        return true;
+    }
+    if (std::strcmp(name, "unknown") == 0) {
+        out = GnssReceiverState::unknown;
+        return true;
+    }
+    return false;
+}
+
+/// Satellite status valid flags. Reserved and unnamed bits are kept in raw().
+class GnssSatelliteStatusValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssSatelliteStatusValidFlags() = default;
+    constexpr explicit GnssSatelliteStatusValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw gnss_id_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool gnss_id() const {
+        return (raw_ & gnss_id_mask) != 0;
+    }
+    constexpr void set_gnss_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_id_mask) : (raw_ & static_cast<Raw>(~gnss_id_mask)));
+    }
+
+    static constexpr Raw satellite_id_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool satellite_id() const {
+        return (raw_ & satellite_id_mask) != 0;
+    }
+    constexpr void set_satellite_id(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | satellite_id_mask) : (raw_ & static_cast<Raw>(~satellite_id_mask)));
+    }
+
+    static constexpr Raw elevation_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool elevation() const {
+        return (raw_ & elevation_mask) != 0;
+    }
+    constexpr void set_elevation(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | elevation_mask) : (raw_ & static_cast<Raw>(~elevation_mask)));
+    }
+
+    static constexpr Raw azimuth_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool azimuth() const {
+        return (raw_ & azimuth_mask) != 0;
+    }
+    constexpr void set_azimuth(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | azimuth_mask) : (raw_ & static_cast<Raw>(~azimuth_mask)));
+    }
+
+    static constexpr Raw health_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool health() const {
+        return (raw_ & health_mask) != 0;
+    }
+    constexpr void set_health(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | health_mask) : (raw_ & static_cast<Raw>(~health_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x7FULL);
+    /// Bits 0..6, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x7FULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x7FULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x7FULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFF80ULL);
+    /// Bits 7..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFF80ULL) >> 7);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFF80ULL) |
+                                ((static_cast<std::uint64_t>(value) << 7) & 0xFF80ULL));
+    }
+    friend constexpr bool operator==(GnssSatelliteStatusValidFlags a, GnssSatelliteStatusValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssSatelliteStatusValidFlags a, GnssSatelliteStatusValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// SBAS information valid flags. Reserved and unnamed bits are kept in raw().
+class GnssSbasInfoValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssSbasInfoValidFlags() = default;
+    constexpr explicit GnssSbasInfoValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw sbas_system_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool sbas_system() const {
+        return (raw_ & sbas_system_mask) != 0;
+    }
+    constexpr void set_sbas_system(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | sbas_system_mask) : (raw_ & static_cast<Raw>(~sbas_system_mask)));
+    }
+
+    static constexpr Raw sbas_id_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool sbas_id() const {
+        return (raw_ & sbas_id_mask) != 0;
+    }
+    constexpr void set_sbas_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | sbas_id_mask) : (raw_ & static_cast<Raw>(~sbas_id_mask)));
+    }
+
+    static constexpr Raw count_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool count() const {
+        return (raw_ & count_mask) != 0;
+    }
+    constexpr void set_count(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | count_mask) : (raw_ & static_cast<Raw>(~count_mask)));
+    }
+
+    static constexpr Raw sbas_status_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool sbas_status() const {
+        return (raw_ & sbas_status_mask) != 0;
+    }
+    constexpr void set_sbas_status(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | sbas_status_mask) : (raw_ & static_cast<Raw>(~sbas_status_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3FULL);
+    /// Bits 0..5, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3FULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3FULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3FULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFC0ULL);
+    /// Bits 6..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFC0ULL) >> 6);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFC0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 6) & 0xFFC0ULL));
+    }
+    friend constexpr bool operator==(GnssSbasInfoValidFlags a, GnssSbasInfoValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssSbasInfoValidFlags a, GnssSbasInfoValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// SBAS status. Reserved and unnamed bits are kept in raw().
+class GnssSbasStatus {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GnssSbasStatus() = default;
+    constexpr explicit GnssSbasStatus(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw range_available_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool range_available() const {
+        return (raw_ & range_available_mask) != 0;
+    }
+    constexpr void set_range_available(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | range_available_mask)
+                                   : (raw_ & static_cast<Raw>(~range_available_mask)));
+    }
+
+    static constexpr Raw corrections_available_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool corrections_available() const {
+        return (raw_ & corrections_available_mask) != 0;
+    }
+    constexpr void set_corrections_available(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | corrections_available_mask)
+                                   : (raw_ & static_cast<Raw>(~corrections_available_mask)));
+    }
+
+    static constexpr Raw integrity_available_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool integrity_available() const {
+        return (raw_ & integrity_available_mask) != 0;
+    }
+    constexpr void set_integrity_available(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | integrity_available_mask)
+                                   : (raw_ & static_cast<Raw>(~integrity_available_mask)));
+    }
+
+    static constexpr Raw test_mode_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool test_mode() const {
+        return (raw_ & test_mode_mask) != 0;
+    }
+    constexpr void set_test_mode(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | test_mode_mask) : (raw_ & static_cast<Raw>(~test_mode_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xF0ULL);
+    /// Bits 4..7, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xF0ULL) >> 4);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xF0ULL));
+    }
+    friend constexpr bool operator==(GnssSbasStatus a, GnssSbasStatus b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssSbasStatus a, GnssSbasStatus b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// SBAS system. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssSbasSystem : std::uint8_t {
+    unknown = 0,
+    waas = 1,
+    egnos = 2,
+    msas = 3,
+    gagan = 4,
+};
+
+/// Spec name of a value ("unknown"), or nullptr when the value has no name.
+inline const char *to_string(GnssSbasSystem v) {
+    if (v == GnssSbasSystem::unknown) {
+        return "unknown";
+    }
+    if (v == GnssSbasSystem::waas) {
+        return "waas";
+    }
+    if (v == GnssSbasSystem::egnos) {
+        return "egnos";
+    }
+    if (v == GnssSbasSystem::msas) {
+        return "msas";
+    }
+    if (v == GnssSbasSystem::gagan) {
+        return "gagan";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssSbasSystem &out) {
+    if (std::strcmp(name, "unknown") == 0) {
+        out = GnssSbasSystem::unknown;
+        return true;
+    }
+    if (std::strcmp(name, "waas") == 0) {
+        out = GnssSbasSystem::waas;
+        return true;
+    }
+    if (std::strcmp(name, "egnos") == 0) {
+        out = GnssSbasSystem::egnos;
+        return true;
+    }
+    if (std::strcmp(name, "msas") == 0) {
+        out = GnssSbasSystem::msas;
+        return true;
+    }
+    if (std::strcmp(name, "gagan") == 0) {
+        out = GnssSbasSystem::gagan;
+        return true;
+    }
+    return false;
+}
+
+/// GNSS signal identifier. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssSignalId : std::uint8_t {
+    unknown = 0,
+    gps_l1ca = 1,
+    gps_l1p = 2,
+    gps_l1z = 3,
+    gps_l2ca = 4,
+    gps_l2p = 5,
+    gps_l2z = 6,
+    gps_l2cl = 7,
+    gps_l2cm = 8,
+    gps_l2cml = 9,
+    gps_l5i = 10,
+    gps_l5q = 11,
+    gps_l5iq = 12,
+    gps_l1cd = 13,
+    gps_l1cp = 14,
+    gps_l1cdp = 15,
+    glonass_g1ca = 32,
+    glonass_g1p = 33,
+    glonass_g2c = 34,
+    glonass_g2p = 35,
+    galileo_e1c = 64,
+    galileo_e1a = 65,
+    galileo_e1b = 66,
+    galileo_e1bc = 67,
+    galileo_e1abc = 68,
+    galileo_e6c = 69,
+    galileo_e6a = 70,
+    galileo_e6b = 71,
+    galileo_e6bc = 72,
+    galileo_e6abc = 73,
+    galileo_e5bi = 74,
+    galileo_e5bq = 75,
+    galileo_e5biq = 76,
+    galileo_e5abi = 77,
+    galileo_e5abq = 78,
+    galileo_e5abiq = 79,
+    galileo_e5ai = 80,
+    galileo_e5aq = 81,
+    galileo_e5aiq = 82,
+    sbas_l1ca = 96,
+    sbas_l5i = 97,
+    sbas_l5q = 98,
+    sbas_l5iq = 99,
+    qzss_l1ca = 128,
+    qzss_lexs = 129,
+    qzss_lexl = 130,
+    qzss_lexsl = 131,
+    qzss_l2cm = 132,
+    qzss_l2cl = 133,
+    qzss_l2cml = 134,
+    qzss_l5i = 135,
+    qzss_l5q = 136,
+    qzss_l5iq = 137,
+    qzss_l1cd = 138,
+    qzss_l1cp = 139,
+    qzss_l1cdp = 140,
+    beidou_b1i = 160,
+    beidou_b1q = 161,
+    beidou_b1iq = 162,
+    beidou_b3i = 163,
+    beidou_b3q = 164,
+    beidou_b3iq = 165,
+    beidou_b2i = 166,
+    beidou_b2q = 167,
+    beidou_b2iq = 168,
+    beidou_b2a = 169,
+};
+
+/// Spec name of a value ("unknown"), or nullptr when the value has no name.
+inline const char *to_string(GnssSignalId v) {
+    if (v == GnssSignalId::unknown) {
+        return "unknown";
+    }
+    if (v == GnssSignalId::gps_l1ca) {
+        return "gps_l1ca";
+    }
+    if (v == GnssSignalId::gps_l1p) {
+        return "gps_l1p";
+    }
+    if (v == GnssSignalId::gps_l1z) {
+        return "gps_l1z";
+    }
+    if (v == GnssSignalId::gps_l2ca) {
+        return "gps_l2ca";
+    }
+    if (v == GnssSignalId::gps_l2p) {
+        return "gps_l2p";
+    }
+    if (v == GnssSignalId::gps_l2z) {
+        return "gps_l2z";
+    }
+    if (v == GnssSignalId::gps_l2cl) {
+        return "gps_l2cl";
+    }
+    if (v == GnssSignalId::gps_l2cm) {
+        return "gps_l2cm";
+    }
+    if (v == GnssSignalId::gps_l2cml) {
+        return "gps_l2cml";
+    }
+    if (v == GnssSignalId::gps_l5i) {
+        return "gps_l5i";
+    }
+    if (v == GnssSignalId::gps_l5q) {
+        return "gps_l5q";
+    }
+    if (v == GnssSignalId::gps_l5iq) {
+        return "gps_l5iq";
+    }
+    if (v == GnssSignalId::gps_l1cd) {
+        return "gps_l1cd";
+    }
+    if (v == GnssSignalId::gps_l1cp) {
+        return "gps_l1cp";
+    }
+    if (v == GnssSignalId::gps_l1cdp) {
+        return "gps_l1cdp";
+    }
+    if (v == GnssSignalId::glonass_g1ca) {
+        return "glonass_g1ca";
+    }
+    if (v == GnssSignalId::glonass_g1p) {
+        return "glonass_g1p";
+    }
+    if (v == GnssSignalId::glonass_g2c) {
+        return "glonass_g2c";
+    }
+    if (v == GnssSignalId::glonass_g2p) {
+        return "glonass_g2p";
+    }
+    if (v == GnssSignalId::galileo_e1c) {
+        return "galileo_e1c";
+    }
+    if (v == GnssSignalId::galileo_e1a) {
+        return "galileo_e1a";
+    }
+    if (v == GnssSignalId::galileo_e1b) {
+        return "galileo_e1b";
+    }
+    if (v == GnssSignalId::galileo_e1bc) {
+        return "galileo_e1bc";
+    }
+    if (v == GnssSignalId::galileo_e1abc) {
+        return "galileo_e1abc";
+    }
+    if (v == GnssSignalId::galileo_e6c) {
+        return "galileo_e6c";
+    }
+    if (v == GnssSignalId::galileo_e6a) {
+        return "galileo_e6a";
+    }
+    if (v == GnssSignalId::galileo_e6b) {
+        return "galileo_e6b";
+    }
+    if (v == GnssSignalId::galileo_e6bc) {
+        return "galileo_e6bc";
+    }
+    if (v == GnssSignalId::galileo_e6abc) {
+        return "galileo_e6abc";
+    }
+    if (v == GnssSignalId::galileo_e5bi) {
+        return "galileo_e5bi";
+    }
+    if (v == GnssSignalId::galileo_e5bq) {
+        return "galileo_e5bq";
+    }
+    if (v == GnssSignalId::galileo_e5biq) {
+        return "galileo_e5biq";
+    }
+    if (v == GnssSignalId::galileo_e5abi) {
+        return "galileo_e5abi";
+    }
+    if (v == GnssSignalId::galileo_e5abq) {
+        return "galileo_e5abq";
+    }
+    if (v == GnssSignalId::galileo_e5abiq) {
+        return "galileo_e5abiq";
+    }
+    if (v == GnssSignalId::galileo_e5ai) {
+        return "galileo_e5ai";
+    }
+    if (v == GnssSignalId::galileo_e5aq) {
+        return "galileo_e5aq";
+    }
+    if (v == GnssSignalId::galileo_e5aiq) {
+        return "galileo_e5aiq";
+    }
+    if (v == GnssSignalId::sbas_l1ca) {
+        return "sbas_l1ca";
+    }
+    if (v == GnssSignalId::sbas_l5i) {
+        return "sbas_l5i";
+    }
+    if (v == GnssSignalId::sbas_l5q) {
+        return "sbas_l5q";
+    }
+    if (v == GnssSignalId::sbas_l5iq) {
+        return "sbas_l5iq";
+    }
+    if (v == GnssSignalId::qzss_l1ca) {
+        return "qzss_l1ca";
+    }
+    if (v == GnssSignalId::qzss_lexs) {
+        return "qzss_lexs";
+    }
+    if (v == GnssSignalId::qzss_lexl) {
+        return "qzss_lexl";
+    }
+    if (v == GnssSignalId::qzss_lexsl) {
+        return "qzss_lexsl";
+    }
+    if (v == GnssSignalId::qzss_l2cm) {
+        return "qzss_l2cm";
+    }
+    if (v == GnssSignalId::qzss_l2cl) {
+        return "qzss_l2cl";
+    }
+    if (v == GnssSignalId::qzss_l2cml) {
+        return "qzss_l2cml";
+    }
+    if (v == GnssSignalId::qzss_l5i) {
+        return "qzss_l5i";
+    }
+    if (v == GnssSignalId::qzss_l5q) {
+        return "qzss_l5q";
+    }
+    if (v == GnssSignalId::qzss_l5iq) {
+        return "qzss_l5iq";
+    }
+    if (v == GnssSignalId::qzss_l1cd) {
+        return "qzss_l1cd";
+    }
+    if (v == GnssSignalId::qzss_l1cp) {
+        return "qzss_l1cp";
+    }
+    if (v == GnssSignalId::qzss_l1cdp) {
+        return "qzss_l1cdp";
+    }
+    if (v == GnssSignalId::beidou_b1i) {
+        return "beidou_b1i";
+    }
+    if (v == GnssSignalId::beidou_b1q) {
+        return "beidou_b1q";
+    }
+    if (v == GnssSignalId::beidou_b1iq) {
+        return "beidou_b1iq";
+    }
+    if (v == GnssSignalId::beidou_b3i) {
+        return "beidou_b3i";
+    }
+    if (v == GnssSignalId::beidou_b3q) {
+        return "beidou_b3q";
+    }
+    if (v == GnssSignalId::beidou_b3iq) {
+        return "beidou_b3iq";
+    }
+    if (v == GnssSignalId::beidou_b2i) {
+        return "beidou_b2i";
+    }
+    if (v == GnssSignalId::beidou_b2q) {
+        return "beidou_b2q";
+    }
+    if (v == GnssSignalId::beidou_b2iq) {
+        return "beidou_b2iq";
+    }
+    if (v == GnssSignalId::beidou_b2a) {
+        return "beidou_b2a";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssSignalId &out) {
+    if (std::strcmp(name, "unknown") == 0) {
+        out = GnssSignalId::unknown;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l1ca") == 0) {
+        out = GnssSignalId::gps_l1ca;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l1p") == 0) {
+        out = GnssSignalId::gps_l1p;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l1z") == 0) {
+        out = GnssSignalId::gps_l1z;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l2ca") == 0) {
+        out = GnssSignalId::gps_l2ca;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l2p") == 0) {
+        out = GnssSignalId::gps_l2p;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l2z") == 0) {
+        out = GnssSignalId::gps_l2z;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l2cl") == 0) {
+        out = GnssSignalId::gps_l2cl;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l2cm") == 0) {
+        out = GnssSignalId::gps_l2cm;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l2cml") == 0) {
+        out = GnssSignalId::gps_l2cml;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l5i") == 0) {
+        out = GnssSignalId::gps_l5i;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l5q") == 0) {
+        out = GnssSignalId::gps_l5q;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l5iq") == 0) {
+        out = GnssSignalId::gps_l5iq;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l1cd") == 0) {
+        out = GnssSignalId::gps_l1cd;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l1cp") == 0) {
+        out = GnssSignalId::gps_l1cp;
+        return true;
+    }
+    if (std::strcmp(name, "gps_l1cdp") == 0) {
+        out = GnssSignalId::gps_l1cdp;
+        return true;
+    }
+    if (std::strcmp(name, "glonass_g1ca") == 0) {
+        out = GnssSignalId::glonass_g1ca;
+        return true;
+    }
+    if (std::strcmp(name, "glonass_g1p") == 0) {
+        out = GnssSignalId::glonass_g1p;
+        return true;
+    }
+    if (std::strcmp(name, "glonass_g2c") == 0) {
+        out = GnssSignalId::glonass_g2c;
+        return true;
+    }
+    if (std::strcmp(name, "glonass_g2p") == 0) {
+        out = GnssSignalId::glonass_g2p;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e1c") == 0) {
+        out = GnssSignalId::galileo_e1c;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e1a") == 0) {
+        out = GnssSignalId::galileo_e1a;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e1b") == 0) {
+        out = GnssSignalId::galileo_e1b;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e1bc") == 0) {
+        out = GnssSignalId::galileo_e1bc;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e1abc") == 0) {
+        out = GnssSignalId::galileo_e1abc;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e6c") == 0) {
+        out = GnssSignalId::galileo_e6c;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e6a") == 0) {
+        out = GnssSignalId::galileo_e6a;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e6b") == 0) {
+        out = GnssSignalId::galileo_e6b;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e6bc") == 0) {
+        out = GnssSignalId::galileo_e6bc;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e6abc") == 0) {
+        out = GnssSignalId::galileo_e6abc;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5bi") == 0) {
+        out = GnssSignalId::galileo_e5bi;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5bq") == 0) {
+        out = GnssSignalId::galileo_e5bq;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5biq") == 0) {
+        out = GnssSignalId::galileo_e5biq;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5abi") == 0) {
+        out = GnssSignalId::galileo_e5abi;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5abq") == 0) {
+        out = GnssSignalId::galileo_e5abq;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5abiq") == 0) {
+        out = GnssSignalId::galileo_e5abiq;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5ai") == 0) {
+        out = GnssSignalId::galileo_e5ai;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5aq") == 0) {
+        out = GnssSignalId::galileo_e5aq;
+        return true;
+    }
+    if (std::strcmp(name, "galileo_e5aiq") == 0) {
+        out = GnssSignalId::galileo_e5aiq;
+        return true;
+    }
+    if (std::strcmp(name, "sbas_l1ca") == 0) {
+        out = GnssSignalId::sbas_l1ca;
+        return true;
+    }
+    if (std::strcmp(name, "sbas_l5i") == 0) {
+        out = GnssSignalId::sbas_l5i;
+        return true;
+    }
+    if (std::strcmp(name, "sbas_l5q") == 0) {
+        out = GnssSignalId::sbas_l5q;
+        return true;
+    }
+    if (std::strcmp(name, "sbas_l5iq") == 0) {
+        out = GnssSignalId::sbas_l5iq;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l1ca") == 0) {
+        out = GnssSignalId::qzss_l1ca;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_lexs") == 0) {
+        out = GnssSignalId::qzss_lexs;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_lexl") == 0) {
+        out = GnssSignalId::qzss_lexl;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_lexsl") == 0) {
+        out = GnssSignalId::qzss_lexsl;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l2cm") == 0) {
+        out = GnssSignalId::qzss_l2cm;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l2cl") == 0) {
+        out = GnssSignalId::qzss_l2cl;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l2cml") == 0) {
+        out = GnssSignalId::qzss_l2cml;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l5i") == 0) {
+        out = GnssSignalId::qzss_l5i;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l5q") == 0) {
+        out = GnssSignalId::qzss_l5q;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l5iq") == 0) {
+        out = GnssSignalId::qzss_l5iq;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l1cd") == 0) {
+        out = GnssSignalId::qzss_l1cd;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l1cp") == 0) {
+        out = GnssSignalId::qzss_l1cp;
+        return true;
+    }
+    if (std::strcmp(name, "qzss_l1cdp") == 0) {
+        out = GnssSignalId::qzss_l1cdp;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b1i") == 0) {
+        out = GnssSignalId::beidou_b1i;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b1q") == 0) {
+        out = GnssSignalId::beidou_b1q;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b1iq") == 0) {
+        out = GnssSignalId::beidou_b1iq;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b3i") == 0) {
+        out = GnssSignalId::beidou_b3i;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b3q") == 0) {
+        out = GnssSignalId::beidou_b3q;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b3iq") == 0) {
+        out = GnssSignalId::beidou_b3iq;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b2i") == 0) {
+        out = GnssSignalId::beidou_b2i;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b2q") == 0) {
+        out = GnssSignalId::beidou_b2q;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b2iq") == 0) {
+        out = GnssSignalId::beidou_b2iq;
+        return true;
+    }
+    if (std::strcmp(name, "beidou_b2a") == 0) {
+        out = GnssSignalId::beidou_b2a;
+        return true;
+    }
+    return false;
+}
+
+/// GNSS raw observation signal quality. Unknown values are kept (an enum class holds any std::uint8_t).
+enum class GnssSignalQuality : std::uint8_t {
+    none = 0,
+    searching = 1,
+    acquired = 2,
+    unusable = 3,
+    time_locked = 4,
+    fully_locked = 5,
+};
+
+/// Spec name of a value ("none"), or nullptr when the value has no name.
+inline const char *to_string(GnssSignalQuality v) {
+    if (v == GnssSignalQuality::none) {
+        return "none";
+    }
+    if (v == GnssSignalQuality::searching) {
+        return "searching";
+    }
+    if (v == GnssSignalQuality::acquired) {
+        return "acquired";
+    }
+    if (v == GnssSignalQuality::unusable) {
+        return "unusable";
+    }
+    if (v == GnssSignalQuality::time_locked) {
+        return "time_locked";
+    }
+    if (v == GnssSignalQuality::fully_locked) {
+        return "fully_locked";
+    }
+    return nullptr;
+}
+
+/// Value of a spec name; false when the name is unknown.
+inline bool from_string(const char *name, GnssSignalQuality &out) {
+    if (std::strcmp(name, "none") == 0) {
+        out = GnssSignalQuality::none;
+        return true;
+    }
+    if (std::strcmp(name, "searching") == 0) {
+        out = GnssSignalQuality::searching;
+        return true;
+    }
+    if (std::strcmp(name, "acquired") == 0) {
+        out = GnssSignalQuality::acquired;
+        return true;
+    }
+    if (std::strcmp(name, "unusable") == 0) {
+        out = GnssSignalQuality::unusable;
+        return true;
+    }
+    if (std::strcmp(name, "time_locked") == 0) {
+        out = GnssSignalQuality::time_locked;
+        return true;
+    }
+    if (std::strcmp(name, "fully_locked") == 0) {
+        out = GnssSignalQuality::fully_locked;
+        return true;
+    }
+    return false;
+}
+
+/// Space vehicle flags. Reserved and unnamed bits are kept in raw().
+class GnssSvFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssSvFlags() = default;
+    constexpr explicit GnssSvFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw used_for_navigation_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool used_for_navigation() const {
+        return (raw_ & used_for_navigation_mask) != 0;
+    }
+    constexpr void set_used_for_navigation(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | used_for_navigation_mask)
+                                   : (raw_ & static_cast<Raw>(~used_for_navigation_mask)));
+    }
+
+    static constexpr Raw healthy_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool healthy() const {
+        return (raw_ & healthy_mask) != 0;
+    }
+    constexpr void set_healthy(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | healthy_mask) : (raw_ & static_cast<Raw>(~healthy_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssSvFlags a, GnssSvFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssSvFlags a, GnssSvFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Space vehicle information valid flags. Reserved and unnamed bits are kept in raw().
+class GnssSvInfoValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssSvInfoValidFlags() = default;
+    constexpr explicit GnssSvInfoValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw channel_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool channel() const {
+        return (raw_ & channel_mask) != 0;
+    }
+    constexpr void set_channel(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | channel_mask) : (raw_ & static_cast<Raw>(~channel_mask)));
+    }
+
+    static constexpr Raw sv_id_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool sv_id() const {
+        return (raw_ & sv_id_mask) != 0;
+    }
+    constexpr void set_sv_id(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | sv_id_mask) : (raw_ & static_cast<Raw>(~sv_id_mask)));
+    }
+
+    static constexpr Raw reserved_2_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool reserved_2() const {
+        return (raw_ & reserved_2_mask) != 0;
+    }
+    constexpr void set_reserved_2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_2_mask) : (raw_ & static_cast<Raw>(~reserved_2_mask)));
+    }
+
+    static constexpr Raw carrier_to_noise_ratio_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool carrier_to_noise_ratio() const {
+        return (raw_ & carrier_to_noise_ratio_mask) != 0;
+    }
+    constexpr void set_carrier_to_noise_ratio(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | carrier_to_noise_ratio_mask)
+                                   : (raw_ & static_cast<Raw>(~carrier_to_noise_ratio_mask)));
+    }
+
+    static constexpr Raw azimuth_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool azimuth() const {
+        return (raw_ & azimuth_mask) != 0;
+    }
+    constexpr void set_azimuth(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | azimuth_mask) : (raw_ & static_cast<Raw>(~azimuth_mask)));
+    }
+
+    static constexpr Raw elevation_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool elevation() const {
+        return (raw_ & elevation_mask) != 0;
+    }
+    constexpr void set_elevation(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | elevation_mask) : (raw_ & static_cast<Raw>(~elevation_mask)));
+    }
+
+    static constexpr Raw sv_flags_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool sv_flags() const {
+        return (raw_ & sv_flags_mask) != 0;
+    }
+    constexpr void set_sv_flags(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | sv_flags_mask) : (raw_ & static_cast<Raw>(~sv_flags_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFF80ULL);
+    /// Bits 7..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFF80ULL) >> 7);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFF80ULL) |
+                                ((static_cast<std::uint64_t>(value) << 7) & 0xFF80ULL));
+    }
+    friend constexpr bool operator==(GnssSvInfoValidFlags a, GnssSvInfoValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssSvInfoValidFlags a, GnssSvInfoValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS UTC time valid flags (CV7). Reserved and unnamed bits are kept in raw().
+class GnssUtcTimeValidFlagsCv7 {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssUtcTimeValidFlagsCv7() = default;
+    constexpr explicit GnssUtcTimeValidFlagsCv7(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw gnss_date_time_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool gnss_date_time() const {
+        return (raw_ & gnss_date_time_mask) != 0;
+    }
+    constexpr void set_gnss_date_time(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gnss_date_time_mask)
+                                   : (raw_ & static_cast<Raw>(~gnss_date_time_mask)));
+    }
+
+    static constexpr Raw leap_seconds_known_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool leap_seconds_known() const {
+        return (raw_ & leap_seconds_known_mask) != 0;
+    }
+    constexpr void set_leap_seconds_known(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | leap_seconds_known_mask)
+                                   : (raw_ & static_cast<Raw>(~leap_seconds_known_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0x3ULL);
+    /// Bits 0..1, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3ULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssUtcTimeValidFlagsCv7 a, GnssUtcTimeValidFlagsCv7 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssUtcTimeValidFlagsCv7 a, GnssUtcTimeValidFlagsCv7 b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GNSS UTC time valid flags (GX5-45). Reserved and unnamed bits are kept in raw().
+class GnssUtcTimeValidFlagsGx5 {
+  public:
+    using Raw = std::uint16_t;
+    constexpr GnssUtcTimeValidFlagsGx5() = default;
+    constexpr explicit GnssUtcTimeValidFlagsGx5(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw date_valid_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool date_valid() const {
+        return (raw_ & date_valid_mask) != 0;
+    }
+    constexpr void set_date_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | date_valid_mask) : (raw_ & static_cast<Raw>(~date_valid_mask)));
+    }
+
+    static constexpr Raw time_valid_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool time_valid() const {
+        return (raw_ & time_valid_mask) != 0;
+    }
+    constexpr void set_time_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | time_valid_mask) : (raw_ & static_cast<Raw>(~time_valid_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(GnssUtcTimeValidFlagsGx5 a, GnssUtcTimeValidFlagsGx5 b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GnssUtcTimeValidFlagsGx5 a, GnssUtcTimeValidFlagsGx5 b) {
         return a.raw_ != b.raw_;
     }
 
@@ -2657,6 +6606,71 @@ class GpioPinMode {
         return a.raw_ == b.raw_;
     }
     friend constexpr bool operator!=(GpioPinMode a, GpioPinMode b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// GPIO pin states. Reserved and unnamed bits are kept in raw().
+class GpioPinStates {
+  public:
+    using Raw = std::uint8_t;
+    constexpr GpioPinStates() = default;
+    constexpr explicit GpioPinStates(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw pin_1_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool pin_1() const {
+        return (raw_ & pin_1_mask) != 0;
+    }
+    constexpr void set_pin_1(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pin_1_mask) : (raw_ & static_cast<Raw>(~pin_1_mask)));
+    }
+
+    static constexpr Raw pin_2_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool pin_2() const {
+        return (raw_ & pin_2_mask) != 0;
+    }
+    constexpr void set_pin_2(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pin_2_mask) : (raw_ & static_cast<Raw>(~pin_2_mask)));
+    }
+
+    static constexpr Raw pin_3_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool pin_3() const {
+        return (raw_ & pin_3_mask) != 0;
+    }
+    constexpr void set_pin_3(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pin_3_mask) : (raw_ & static_cast<Raw>(~pin_3_mask)));
+    }
+
+    static constexpr Raw pin_4_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool pin_4() const {
+        return (raw_ & pin_4_mask) != 0;
+    }
+    constexpr void set_pin_4(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pin_4_mask) : (raw_ & static_cast<Raw>(~pin_4_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xF0ULL);
+    /// Bits 4..7, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xF0ULL) >> 4);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xF0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 4) & 0xF0ULL));
+    }
+    friend constexpr bool operator==(GpioPinStates a, GpioPinStates b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(GpioPinStates a, GpioPinStates b) {
         return a.raw_ != b.raw_;
     }
 
@@ -3219,6 +7233,47 @@ inline bool from_string(const char *name, MagneticParamSource &out) {
     return false;
 }
 
+/// Odometer data valid flags. Reserved and unnamed bits are kept in raw().
+class OdometerDataValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr OdometerDataValidFlags() = default;
+    constexpr explicit OdometerDataValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw valid_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool valid() const {
+        return (raw_ & valid_mask) != 0;
+    }
+    constexpr void set_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | valid_mask) : (raw_ & static_cast<Raw>(~valid_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFEULL);
+    /// Bits 1..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFEULL) >> 1);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFEULL) |
+                                ((static_cast<std::uint64_t>(value) << 1) & 0xFFFEULL));
+    }
+    friend constexpr bool operator==(OdometerDataValidFlags a, OdometerDataValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(OdometerDataValidFlags a, OdometerDataValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// Odometer mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class OdometerMode : std::uint8_t {
     disabled = 0,
@@ -3248,6 +7303,144 @@ inline bool from_string(const char *name, OdometerMode &out) {
     }
     return false;
 }
+
+/// Sensor over-range status. Reserved and unnamed bits are kept in raw().
+class OverrangeStatusFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr OverrangeStatusFlags() = default;
+    constexpr explicit OverrangeStatusFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw accel_x_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool accel_x() const {
+        return (raw_ & accel_x_mask) != 0;
+    }
+    constexpr void set_accel_x(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accel_x_mask) : (raw_ & static_cast<Raw>(~accel_x_mask)));
+    }
+
+    static constexpr Raw accel_y_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool accel_y() const {
+        return (raw_ & accel_y_mask) != 0;
+    }
+    constexpr void set_accel_y(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accel_y_mask) : (raw_ & static_cast<Raw>(~accel_y_mask)));
+    }
+
+    static constexpr Raw accel_z_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool accel_z() const {
+        return (raw_ & accel_z_mask) != 0;
+    }
+    constexpr void set_accel_z(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | accel_z_mask) : (raw_ & static_cast<Raw>(~accel_z_mask)));
+    }
+
+    static constexpr Raw reserved_3_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool reserved_3() const {
+        return (raw_ & reserved_3_mask) != 0;
+    }
+    constexpr void set_reserved_3(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_3_mask) : (raw_ & static_cast<Raw>(~reserved_3_mask)));
+    }
+
+    static constexpr Raw gyro_x_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool gyro_x() const {
+        return (raw_ & gyro_x_mask) != 0;
+    }
+    constexpr void set_gyro_x(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyro_x_mask) : (raw_ & static_cast<Raw>(~gyro_x_mask)));
+    }
+
+    static constexpr Raw gyro_y_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool gyro_y() const {
+        return (raw_ & gyro_y_mask) != 0;
+    }
+    constexpr void set_gyro_y(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyro_y_mask) : (raw_ & static_cast<Raw>(~gyro_y_mask)));
+    }
+
+    static constexpr Raw gyro_z_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool gyro_z() const {
+        return (raw_ & gyro_z_mask) != 0;
+    }
+    constexpr void set_gyro_z(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | gyro_z_mask) : (raw_ & static_cast<Raw>(~gyro_z_mask)));
+    }
+
+    static constexpr Raw reserved_7_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool reserved_7() const {
+        return (raw_ & reserved_7_mask) != 0;
+    }
+    constexpr void set_reserved_7(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | reserved_7_mask) : (raw_ & static_cast<Raw>(~reserved_7_mask)));
+    }
+
+    static constexpr Raw mag_x_mask = static_cast<Raw>(0x100ULL);
+    constexpr bool mag_x() const {
+        return (raw_ & mag_x_mask) != 0;
+    }
+    constexpr void set_mag_x(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | mag_x_mask) : (raw_ & static_cast<Raw>(~mag_x_mask)));
+    }
+
+    static constexpr Raw mag_y_mask = static_cast<Raw>(0x200ULL);
+    constexpr bool mag_y() const {
+        return (raw_ & mag_y_mask) != 0;
+    }
+    constexpr void set_mag_y(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | mag_y_mask) : (raw_ & static_cast<Raw>(~mag_y_mask)));
+    }
+
+    static constexpr Raw mag_z_mask = static_cast<Raw>(0x400ULL);
+    constexpr bool mag_z() const {
+        return (raw_ & mag_z_mask) != 0;
+    }
+    constexpr void set_mag_z(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | mag_z_mask) : (raw_ & static_cast<Raw>(~mag_z_mask)));
+    }
+
+    static constexpr Raw reserved_11_mask = static_cast<Raw>(0x800ULL);
+    constexpr bool reserved_11() const {
+        return (raw_ & reserved_11_mask) != 0;
+    }
+    constexpr void set_reserved_11(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | reserved_11_mask) : (raw_ & static_cast<Raw>(~reserved_11_mask)));
+    }
+
+    static constexpr Raw press_mask = static_cast<Raw>(0x1000ULL);
+    constexpr bool press() const {
+        return (raw_ & press_mask) != 0;
+    }
+    constexpr void set_press(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | press_mask) : (raw_ & static_cast<Raw>(~press_mask)));
+    }
+
+    static constexpr Raw reserved_13_15_mask = static_cast<Raw>(0xE000ULL);
+    /// Bits 13..15, shifted down.
+    constexpr Raw reserved_13_15() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xE000ULL) >> 13);
+    }
+    constexpr void set_reserved_13_15(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xE000ULL) |
+                                ((static_cast<std::uint64_t>(value) << 13) & 0xE000ULL));
+    }
+    friend constexpr bool operator==(OverrangeStatusFlags a, OverrangeStatusFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(OverrangeStatusFlags a, OverrangeStatusFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// Pitch/roll aiding source. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class PitchRollAidingSource : std::uint8_t {
@@ -3386,6 +7579,234 @@ inline bool from_string(const char *name, RelativePositionSource &out) {
     return false;
 }
 
+/// RTK corrections epoch status. Reserved and unnamed bits are kept in raw().
+class RtkCorrectionsEpochStatus {
+  public:
+    using Raw = std::uint16_t;
+    constexpr RtkCorrectionsEpochStatus() = default;
+    constexpr explicit RtkCorrectionsEpochStatus(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw antenna_location_received_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool antenna_location_received() const {
+        return (raw_ & antenna_location_received_mask) != 0;
+    }
+    constexpr void set_antenna_location_received(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_location_received_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_location_received_mask)));
+    }
+
+    static constexpr Raw antenna_description_received_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool antenna_description_received() const {
+        return (raw_ & antenna_description_received_mask) != 0;
+    }
+    constexpr void set_antenna_description_received(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | antenna_description_received_mask)
+                                   : (raw_ & static_cast<Raw>(~antenna_description_received_mask)));
+    }
+
+    static constexpr Raw gps_received_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool gps_received() const {
+        return (raw_ & gps_received_mask) != 0;
+    }
+    constexpr void set_gps_received(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | gps_received_mask) : (raw_ & static_cast<Raw>(~gps_received_mask)));
+    }
+
+    static constexpr Raw glonass_received_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool glonass_received() const {
+        return (raw_ & glonass_received_mask) != 0;
+    }
+    constexpr void set_glonass_received(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | glonass_received_mask)
+                                   : (raw_ & static_cast<Raw>(~glonass_received_mask)));
+    }
+
+    static constexpr Raw galileo_received_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool galileo_received() const {
+        return (raw_ & galileo_received_mask) != 0;
+    }
+    constexpr void set_galileo_received(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | galileo_received_mask)
+                                   : (raw_ & static_cast<Raw>(~galileo_received_mask)));
+    }
+
+    static constexpr Raw beidou_received_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool beidou_received() const {
+        return (raw_ & beidou_received_mask) != 0;
+    }
+    constexpr void set_beidou_received(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | beidou_received_mask)
+                                   : (raw_ & static_cast<Raw>(~beidou_received_mask)));
+    }
+
+    static constexpr Raw using_gps_msm_messages_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool using_gps_msm_messages() const {
+        return (raw_ & using_gps_msm_messages_mask) != 0;
+    }
+    constexpr void set_using_gps_msm_messages(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | using_gps_msm_messages_mask)
+                                   : (raw_ & static_cast<Raw>(~using_gps_msm_messages_mask)));
+    }
+
+    static constexpr Raw using_glonass_msm_messages_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool using_glonass_msm_messages() const {
+        return (raw_ & using_glonass_msm_messages_mask) != 0;
+    }
+    constexpr void set_using_glonass_msm_messages(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | using_glonass_msm_messages_mask)
+                                   : (raw_ & static_cast<Raw>(~using_glonass_msm_messages_mask)));
+    }
+
+    static constexpr Raw dongle_status_read_failed_mask = static_cast<Raw>(0x100ULL);
+    constexpr bool dongle_status_read_failed() const {
+        return (raw_ & dongle_status_read_failed_mask) != 0;
+    }
+    constexpr void set_dongle_status_read_failed(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | dongle_status_read_failed_mask)
+                                   : (raw_ & static_cast<Raw>(~dongle_status_read_failed_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFE00ULL);
+    /// Bits 9..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFE00ULL) >> 9);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFE00ULL) |
+                                ((static_cast<std::uint64_t>(value) << 9) & 0xFE00ULL));
+    }
+    friend constexpr bool operator==(RtkCorrectionsEpochStatus a, RtkCorrectionsEpochStatus b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(RtkCorrectionsEpochStatus a, RtkCorrectionsEpochStatus b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// RTK corrections status valid flags. Reserved and unnamed bits are kept in raw().
+class RtkCorrectionsStatusValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr RtkCorrectionsStatusValidFlags() = default;
+    constexpr explicit RtkCorrectionsStatusValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw epoch_status_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool epoch_status() const {
+        return (raw_ & epoch_status_mask) != 0;
+    }
+    constexpr void set_epoch_status(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | epoch_status_mask) : (raw_ & static_cast<Raw>(~epoch_status_mask)));
+    }
+
+    static constexpr Raw dongle_status_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool dongle_status() const {
+        return (raw_ & dongle_status_mask) != 0;
+    }
+    constexpr void set_dongle_status(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | dongle_status_mask)
+                                   : (raw_ & static_cast<Raw>(~dongle_status_mask)));
+    }
+
+    static constexpr Raw gps_latency_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool gps_latency() const {
+        return (raw_ & gps_latency_mask) != 0;
+    }
+    constexpr void set_gps_latency(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | gps_latency_mask) : (raw_ & static_cast<Raw>(~gps_latency_mask)));
+    }
+
+    static constexpr Raw glonass_latency_mask = static_cast<Raw>(0x20ULL);
+    constexpr bool glonass_latency() const {
+        return (raw_ & glonass_latency_mask) != 0;
+    }
+    constexpr void set_glonass_latency(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | glonass_latency_mask)
+                                   : (raw_ & static_cast<Raw>(~glonass_latency_mask)));
+    }
+
+    static constexpr Raw galileo_latency_mask = static_cast<Raw>(0x40ULL);
+    constexpr bool galileo_latency() const {
+        return (raw_ & galileo_latency_mask) != 0;
+    }
+    constexpr void set_galileo_latency(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | galileo_latency_mask)
+                                   : (raw_ & static_cast<Raw>(~galileo_latency_mask)));
+    }
+
+    static constexpr Raw beidou_latency_mask = static_cast<Raw>(0x80ULL);
+    constexpr bool beidou_latency() const {
+        return (raw_ & beidou_latency_mask) != 0;
+    }
+    constexpr void set_beidou_latency(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | beidou_latency_mask)
+                                   : (raw_ & static_cast<Raw>(~beidou_latency_mask)));
+    }
+
+    static constexpr Raw flags_mask = static_cast<Raw>(0xFFULL);
+    /// Bits 0..7, shifted down.
+    constexpr Raw flags() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFULL) >> 0);
+    }
+    constexpr void set_flags(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0xFFULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFF00ULL);
+    /// Bits 8..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFF00ULL) >> 8);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFF00ULL) |
+                                ((static_cast<std::uint64_t>(value) << 8) & 0xFF00ULL));
+    }
+    friend constexpr bool operator==(RtkCorrectionsStatusValidFlags a, RtkCorrectionsStatusValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(RtkCorrectionsStatusValidFlags a, RtkCorrectionsStatusValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
 /// SBAS options. Reserved and unnamed bits are kept in raw().
 class SbasOptions {
   public:
@@ -3429,6 +7850,82 @@ class SbasOptions {
         return a.raw_ == b.raw_;
     }
     friend constexpr bool operator!=(SbasOptions a, SbasOptions b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
+
+/// Sensor GPS timestamp flags (0x80,0x12). Reserved and unnamed bits are kept in raw().
+class SensorGpsTimestampFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr SensorGpsTimestampFlags() = default;
+    constexpr explicit SensorGpsTimestampFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw pps_valid_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool pps_valid() const {
+        return (raw_ & pps_valid_mask) != 0;
+    }
+    constexpr void set_pps_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | pps_valid_mask) : (raw_ & static_cast<Raw>(~pps_valid_mask)));
+    }
+
+    static constexpr Raw time_refresh_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool time_refresh() const {
+        return (raw_ & time_refresh_mask) != 0;
+    }
+    constexpr void set_time_refresh(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | time_refresh_mask) : (raw_ & static_cast<Raw>(~time_refresh_mask)));
+    }
+
+    static constexpr Raw time_initialized_mask = static_cast<Raw>(0x4ULL);
+    constexpr bool time_initialized() const {
+        return (raw_ & time_initialized_mask) != 0;
+    }
+    constexpr void set_time_initialized(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | time_initialized_mask)
+                                   : (raw_ & static_cast<Raw>(~time_initialized_mask)));
+    }
+
+    static constexpr Raw tow_valid_mask = static_cast<Raw>(0x8ULL);
+    constexpr bool tow_valid() const {
+        return (raw_ & tow_valid_mask) != 0;
+    }
+    constexpr void set_tow_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_valid_mask) : (raw_ & static_cast<Raw>(~tow_valid_mask)));
+    }
+
+    static constexpr Raw week_number_valid_mask = static_cast<Raw>(0x10ULL);
+    constexpr bool week_number_valid() const {
+        return (raw_ & week_number_valid_mask) != 0;
+    }
+    constexpr void set_week_number_valid(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | week_number_valid_mask)
+                                   : (raw_ & static_cast<Raw>(~week_number_valid_mask)));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFE0ULL);
+    /// Bits 5..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFE0ULL) >> 5);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFE0ULL) |
+                                ((static_cast<std::uint64_t>(value) << 5) & 0xFFE0ULL));
+    }
+    friend constexpr bool operator==(SensorGpsTimestampFlags a, SensorGpsTimestampFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(SensorGpsTimestampFlags a, SensorGpsTimestampFlags b) {
         return a.raw_ != b.raw_;
     }
 
@@ -3489,6 +7986,66 @@ inline bool from_string(const char *name, SensorRangeType &out) {
     }
     return false;
 }
+
+/// Shared GPS timestamp valid flags. Reserved and unnamed bits are kept in raw().
+class SharedGpsTimestampValidFlags {
+  public:
+    using Raw = std::uint16_t;
+    constexpr SharedGpsTimestampValidFlags() = default;
+    constexpr explicit SharedGpsTimestampValidFlags(Raw raw) : raw_(raw) {}
+    constexpr Raw raw() const {
+        return raw_;
+    }
+    constexpr void set_raw(Raw raw) {
+        raw_ = raw;
+    }
+
+    static constexpr Raw tow_mask = static_cast<Raw>(0x1ULL);
+    constexpr bool tow() const {
+        return (raw_ & tow_mask) != 0;
+    }
+    constexpr void set_tow(bool on) {
+        raw_ = static_cast<Raw>(on ? (raw_ | tow_mask) : (raw_ & static_cast<Raw>(~tow_mask)));
+    }
+
+    static constexpr Raw week_number_mask = static_cast<Raw>(0x2ULL);
+    constexpr bool week_number() const {
+        return (raw_ & week_number_mask) != 0;
+    }
+    constexpr void set_week_number(bool on) {
+        raw_ =
+            static_cast<Raw>(on ? (raw_ | week_number_mask) : (raw_ & static_cast<Raw>(~week_number_mask)));
+    }
+
+    static constexpr Raw time_valid_mask = static_cast<Raw>(0x3ULL);
+    /// Bits 0..1, shifted down.
+    constexpr Raw time_valid() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0x3ULL) >> 0);
+    }
+    constexpr void set_time_valid(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0x3ULL) |
+                                ((static_cast<std::uint64_t>(value) << 0) & 0x3ULL));
+    }
+
+    static constexpr Raw reserved_mask = static_cast<Raw>(0xFFFCULL);
+    /// Bits 2..15, shifted down.
+    constexpr Raw reserved() const {
+        return static_cast<Raw>((static_cast<std::uint64_t>(raw_) & 0xFFFCULL) >> 2);
+    }
+    constexpr void set_reserved(Raw value) {
+        raw_ = static_cast<Raw>((static_cast<std::uint64_t>(raw_) & ~0xFFFCULL) |
+                                ((static_cast<std::uint64_t>(value) << 2) & 0xFFFCULL));
+    }
+    friend constexpr bool operator==(SharedGpsTimestampValidFlags a, SharedGpsTimestampValidFlags b) {
+        return a.raw_ == b.raw_;
+    }
+    friend constexpr bool operator!=(SharedGpsTimestampValidFlags a, SharedGpsTimestampValidFlags b) {
+        return a.raw_ != b.raw_;
+    }
+
+  private:
+    Raw raw_ = 0;
+};
 
 /// SPARTN connection type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class SpartnConnectionType : std::uint8_t {
@@ -4006,6 +8563,43 @@ struct ConstellationSettings {
     }
 };
 
+/// 3DM-CV7 continuous built-in test result (128 bits)
+struct Cv7ContinuousBit {
+    ::mipcodec::types::Cv7ContinuousBitSystem0 system_byte_0{}; ///< Bits 0-7: system.
+    std::uint8_t reserved_byte_1{};                             ///< Bits 8-15: reserved (0.7-1.7).
+    ::mipcodec::types::Cv7ContinuousBitSystem2
+        system_byte_2{}; ///< Bits 16-23: IMU and filter process faults.
+    ::mipcodec::types::Cv7ContinuousBitSystem3 system_byte_3{}; ///< Bits 24-31: GNSS process faults.
+    ::mipcodec::types::Cv7ContinuousBitImu4
+        imu_byte_4{}; ///< Bits 32-39: IMU communication, timing, calibration.
+    ::mipcodec::types::Cv7ContinuousBitImu5 imu_byte_5{}; ///< Bits 40-47: accelerometer and gyroscope.
+    ::mipcodec::types::Cv7ContinuousBitImu6 imu_byte_6{}; ///< Bits 48-55: magnetometer and pressure sensor.
+    ::mipcodec::types::Cv7ContinuousBitImu7 imu_byte_7{}; ///< Bits 56-63: factory bits.
+    ::mipcodec::types::Cv7ContinuousBitNav8 nav_byte_8{}; ///< Bits 64-71: filter timing.
+    std::uint8_t reserved_byte_9{};                       ///< Bits 72-79: reserved.
+    std::uint8_t reserved_byte_10{};                      ///< Bits 80-87: reserved.
+    std::uint8_t reserved_byte_11{};                      ///< Bits 88-95: reserved.
+    std::uint8_t reserved_byte_12{};                      ///< Bits 96-103: reserved.
+    ::mipcodec::types::Cv7ContinuousBitGnss13 gnss_byte_13{}; ///< Bits 104-111: GNSS receivers.
+    ::mipcodec::types::Cv7ContinuousBitGnss14 gnss_byte_14{}; ///< Bits 112-119: GNSS receivers.
+    std::uint8_t reserved_byte_15{};                          ///< Bits 120-127: reserved.
+    friend bool operator==(const Cv7ContinuousBit &a, const Cv7ContinuousBit &b) {
+        (void)a;
+        (void)b;
+        return true && a.system_byte_0 == b.system_byte_0 && a.reserved_byte_1 == b.reserved_byte_1 &&
+               a.system_byte_2 == b.system_byte_2 && a.system_byte_3 == b.system_byte_3 &&
+               a.imu_byte_4 == b.imu_byte_4 && a.imu_byte_5 == b.imu_byte_5 && a.imu_byte_6 == b.imu_byte_6 &&
+               a.imu_byte_7 == b.imu_byte_7 && a.nav_byte_8 == b.nav_byte_8 &&
+               a.reserved_byte_9 == b.reserved_byte_9 && a.reserved_byte_10 == b.reserved_byte_10 &&
+               a.reserved_byte_11 == b.reserved_byte_11 && a.reserved_byte_12 == b.reserved_byte_12 &&
+               a.gnss_byte_13 == b.gnss_byte_13 && a.gnss_byte_14 == b.gnss_byte_14 &&
+               a.reserved_byte_15 == b.reserved_byte_15;
+    }
+    friend bool operator!=(const Cv7ContinuousBit &a, const Cv7ContinuousBit &b) {
+        return !(a == b);
+    }
+};
+
 /// Descriptor and rate decimation
 struct DescriptorRate {
     std::uint8_t descriptor{};  ///< Data field descriptor.
@@ -4477,6 +9071,166 @@ template <> struct Codec<::mipcodec::types::Cv7BitFlags> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitGnss13> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitGnss13 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitGnss13 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitGnss14> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitGnss14 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitGnss14 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu4> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu4 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitImu4 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu5> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu5 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitImu5 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu6> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu6 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitImu6 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu7> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu7 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitImu7 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitNav8> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitNav8 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitNav8 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem0> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitSystem0 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitSystem0 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem2> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitSystem2 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitSystem2 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem3> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitSystem3 &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBitSystem3 &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::EstimationControlFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
@@ -4489,6 +9243,38 @@ template <> struct Codec<::mipcodec::types::EstimationControlFlags> {
         return true;
     }
     static void write(Writer &w, const ::mipcodec::types::EstimationControlFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::ExternalTimeDeltaValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::ExternalTimeDeltaValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::ExternalTimeDeltaValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::ExternalTimestampValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::ExternalTimestampValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::ExternalTimestampValidFlags &v) {
         Codec<std::uint16_t>::write(w, v.raw());
     }
 };
@@ -4621,6 +9407,38 @@ template <> struct Codec<::mipcodec::types::FilterStatusFlagsGx5> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::GnssBaseStationIndicators> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssBaseStationIndicators &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssBaseStationIndicators &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssBaseStationInfoValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssBaseStationInfoValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssBaseStationInfoValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::GnssBeidouSignals> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
@@ -4637,6 +9455,166 @@ template <> struct Codec<::mipcodec::types::GnssBeidouSignals> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::GnssClockInfo2ValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssClockInfo2ValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssClockInfo2ValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssClockInfoValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssClockInfoValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssClockInfoValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssDgnssChannelStatusValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssDgnssChannelStatusValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssDgnssChannelStatusValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssDgnssInfoValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssDgnssInfoValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssDgnssInfoValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssDopValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssDopValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssDopValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssEcefPositionValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssEcefPositionValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssEcefPositionValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssEcefVelocityValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssEcefVelocityValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssEcefVelocityValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssEphemerisValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssEphemerisValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssEphemerisValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssFixFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssFixFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssFixFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssFixInfoValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssFixInfoValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssFixInfoValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::GnssGalileoSignals> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
@@ -4650,6 +9628,22 @@ template <> struct Codec<::mipcodec::types::GnssGalileoSignals> {
     }
     static void write(Writer &w, const ::mipcodec::types::GnssGalileoSignals &v) {
         Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssGlonassEphemerisValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssGlonassEphemerisValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssGlonassEphemerisValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
     }
 };
 
@@ -4685,6 +9679,214 @@ template <> struct Codec<::mipcodec::types::GnssGpsSignals> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::GnssGpsTimeValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssGpsTimeValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssGpsTimeValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssHardwareStatusValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssHardwareStatusValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssHardwareStatusValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssLeapSecondsValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssLeapSecondsValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssLeapSecondsValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssLlhPositionValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssLlhPositionValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssLlhPositionValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssNedVelocityValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssNedVelocityValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssNedVelocityValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssRawValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssRawValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssRawValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssSatelliteStatusValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssSatelliteStatusValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssSatelliteStatusValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssSbasInfoValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssSbasInfoValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssSbasInfoValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssSbasStatus> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssSbasStatus &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssSbasStatus &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssSvFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssSvFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssSvFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssSvInfoValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssSvInfoValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssSvInfoValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssUtcTimeValidFlagsCv7> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssUtcTimeValidFlagsCv7 &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssUtcTimeValidFlagsCv7 &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GnssUtcTimeValidFlagsGx5> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::GnssUtcTimeValidFlagsGx5 &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GnssUtcTimeValidFlagsGx5 &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::GpioPinMode> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
@@ -4697,6 +9899,22 @@ template <> struct Codec<::mipcodec::types::GpioPinMode> {
         return true;
     }
     static void write(Writer &w, const ::mipcodec::types::GpioPinMode &v) {
+        Codec<std::uint8_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::GpioPinStates> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static bool read(Reader &r, ::mipcodec::types::GpioPinStates &v, DecodeError &err) {
+        std::uint8_t raw{};
+        if (!Codec<std::uint8_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::GpioPinStates &v) {
         Codec<std::uint8_t>::write(w, v.raw());
     }
 };
@@ -4733,6 +9951,70 @@ template <> struct Codec<::mipcodec::types::HeadingAlignmentMethods> {
     }
 };
 
+template <> struct Codec<::mipcodec::types::OdometerDataValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::OdometerDataValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::OdometerDataValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::OverrangeStatusFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::OverrangeStatusFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::OverrangeStatusFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::RtkCorrectionsEpochStatus> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::RtkCorrectionsEpochStatus &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::RtkCorrectionsEpochStatus &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::RtkCorrectionsStatusValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::RtkCorrectionsStatusValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::RtkCorrectionsStatusValidFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
 template <> struct Codec<::mipcodec::types::SbasOptions> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
@@ -4745,6 +10027,38 @@ template <> struct Codec<::mipcodec::types::SbasOptions> {
         return true;
     }
     static void write(Writer &w, const ::mipcodec::types::SbasOptions &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SensorGpsTimestampFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::SensorGpsTimestampFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SensorGpsTimestampFlags &v) {
+        Codec<std::uint16_t>::write(w, v.raw());
+    }
+};
+
+template <> struct Codec<::mipcodec::types::SharedGpsTimestampValidFlags> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static bool read(Reader &r, ::mipcodec::types::SharedGpsTimestampValidFlags &v, DecodeError &err) {
+        std::uint16_t raw{};
+        if (!Codec<std::uint16_t>::read(r, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::SharedGpsTimestampValidFlags &v) {
         Codec<std::uint16_t>::write(w, v.raw());
     }
 };
@@ -5106,6 +10420,103 @@ template <> struct Codec<::mipcodec::types::ConstellationSettings> {
         write_value(w, v.reserved_channels);
         write_value(w, v.max_channels);
         write_value(w, v.option_flags);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<::mipcodec::types::Cv7ContinuousBit> {
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = 16;
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBit &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.system_byte_0, err)) {
+            err.enter("system_byte_0");
+            return false;
+        }
+        if (!read_value(r, v.reserved_byte_1, err)) {
+            err.enter("reserved_byte_1");
+            return false;
+        }
+        if (!read_value(r, v.system_byte_2, err)) {
+            err.enter("system_byte_2");
+            return false;
+        }
+        if (!read_value(r, v.system_byte_3, err)) {
+            err.enter("system_byte_3");
+            return false;
+        }
+        if (!read_value(r, v.imu_byte_4, err)) {
+            err.enter("imu_byte_4");
+            return false;
+        }
+        if (!read_value(r, v.imu_byte_5, err)) {
+            err.enter("imu_byte_5");
+            return false;
+        }
+        if (!read_value(r, v.imu_byte_6, err)) {
+            err.enter("imu_byte_6");
+            return false;
+        }
+        if (!read_value(r, v.imu_byte_7, err)) {
+            err.enter("imu_byte_7");
+            return false;
+        }
+        if (!read_value(r, v.nav_byte_8, err)) {
+            err.enter("nav_byte_8");
+            return false;
+        }
+        if (!read_value(r, v.reserved_byte_9, err)) {
+            err.enter("reserved_byte_9");
+            return false;
+        }
+        if (!read_value(r, v.reserved_byte_10, err)) {
+            err.enter("reserved_byte_10");
+            return false;
+        }
+        if (!read_value(r, v.reserved_byte_11, err)) {
+            err.enter("reserved_byte_11");
+            return false;
+        }
+        if (!read_value(r, v.reserved_byte_12, err)) {
+            err.enter("reserved_byte_12");
+            return false;
+        }
+        if (!read_value(r, v.gnss_byte_13, err)) {
+            err.enter("gnss_byte_13");
+            return false;
+        }
+        if (!read_value(r, v.gnss_byte_14, err)) {
+            err.enter("gnss_byte_14");
+            return false;
+        }
+        if (!read_value(r, v.reserved_byte_15, err)) {
+            err.enter("reserved_byte_15");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBit &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.system_byte_0);
+        write_value(w, v.reserved_byte_1);
+        write_value(w, v.system_byte_2);
+        write_value(w, v.system_byte_3);
+        write_value(w, v.imu_byte_4);
+        write_value(w, v.imu_byte_5);
+        write_value(w, v.imu_byte_6);
+        write_value(w, v.imu_byte_7);
+        write_value(w, v.nav_byte_8);
+        write_value(w, v.reserved_byte_9);
+        write_value(w, v.reserved_byte_10);
+        write_value(w, v.reserved_byte_11);
+        write_value(w, v.reserved_byte_12);
+        write_value(w, v.gnss_byte_13);
+        write_value(w, v.gnss_byte_14);
+        write_value(w, v.reserved_byte_15);
         (void)absent;
     }
 };

@@ -66,11 +66,181 @@ template <> struct Json<::mipcodec::types::Cv7BitFlags> {
     }
 };
 
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitGnss13> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitGnss13 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitGnss13 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitGnss14> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitGnss14 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitGnss14 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitImu4> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitImu4 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitImu4 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitImu5> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitImu5 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitImu5 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitImu6> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitImu6 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitImu6 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitImu7> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitImu7 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitImu7 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitNav8> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitNav8 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitNav8 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitSystem0> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitSystem0 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitSystem0 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitSystem2> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitSystem2 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitSystem2 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBitSystem3> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBitSystem3 &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::Cv7ContinuousBitSystem3 &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::EstimationControlFlags> {
     static void write(JsonWriter &w, const ::mipcodec::types::EstimationControlFlags &v) {
         Json<std::uint16_t>::write(w, v.raw());
     }
     static bool read(const json::Value &x, ::mipcodec::types::EstimationControlFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::ExternalTimeDeltaValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::ExternalTimeDeltaValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::ExternalTimeDeltaValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::ExternalTimestampValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::ExternalTimestampValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::ExternalTimestampValidFlags &v,
+                     JsonError &err) {
         std::uint16_t raw{};
         if (!Json<std::uint16_t>::read(x, raw, err)) {
             return false;
@@ -196,6 +366,35 @@ template <> struct Json<::mipcodec::types::FilterStatusFlagsGx5> {
     }
 };
 
+template <> struct Json<::mipcodec::types::GnssBaseStationIndicators> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssBaseStationIndicators &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssBaseStationIndicators &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssBaseStationInfoValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssBaseStationInfoValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssBaseStationInfoValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::GnssBeidouSignals> {
     static void write(JsonWriter &w, const ::mipcodec::types::GnssBeidouSignals &v) {
         Json<std::uint8_t>::write(w, v.raw());
@@ -210,6 +409,147 @@ template <> struct Json<::mipcodec::types::GnssBeidouSignals> {
     }
 };
 
+template <> struct Json<::mipcodec::types::GnssClockInfo2ValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssClockInfo2ValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssClockInfo2ValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssClockInfoValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssClockInfoValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssClockInfoValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssDgnssChannelStatusValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssDgnssChannelStatusValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssDgnssChannelStatusValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssDgnssInfoValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssDgnssInfoValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssDgnssInfoValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssDopValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssDopValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssDopValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssEcefPositionValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssEcefPositionValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssEcefPositionValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssEcefVelocityValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssEcefVelocityValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssEcefVelocityValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssEphemerisValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssEphemerisValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssEphemerisValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssFixFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssFixFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssFixFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssFixInfoValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssFixInfoValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssFixInfoValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::GnssGalileoSignals> {
     static void write(JsonWriter &w, const ::mipcodec::types::GnssGalileoSignals &v) {
         Json<std::uint8_t>::write(w, v.raw());
@@ -217,6 +557,21 @@ template <> struct Json<::mipcodec::types::GnssGalileoSignals> {
     static bool read(const json::Value &x, ::mipcodec::types::GnssGalileoSignals &v, JsonError &err) {
         std::uint8_t raw{};
         if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssGlonassEphemerisValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssGlonassEphemerisValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssGlonassEphemerisValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
             return false;
         }
         v.set_raw(raw);
@@ -252,11 +607,209 @@ template <> struct Json<::mipcodec::types::GnssGpsSignals> {
     }
 };
 
+template <> struct Json<::mipcodec::types::GnssGpsTimeValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssGpsTimeValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssGpsTimeValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssHardwareStatusValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssHardwareStatusValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssHardwareStatusValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssLeapSecondsValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssLeapSecondsValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssLeapSecondsValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssLlhPositionValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssLlhPositionValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssLlhPositionValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssNedVelocityValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssNedVelocityValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssNedVelocityValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssRawValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssRawValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssRawValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssSatelliteStatusValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssSatelliteStatusValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssSatelliteStatusValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssSbasInfoValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssSbasInfoValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssSbasInfoValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssSbasStatus> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssSbasStatus &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssSbasStatus &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssSvFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssSvFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssSvFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssSvInfoValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssSvInfoValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssSvInfoValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssUtcTimeValidFlagsCv7> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssUtcTimeValidFlagsCv7 &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssUtcTimeValidFlagsCv7 &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GnssUtcTimeValidFlagsGx5> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssUtcTimeValidFlagsGx5 &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GnssUtcTimeValidFlagsGx5 &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::GpioPinMode> {
     static void write(JsonWriter &w, const ::mipcodec::types::GpioPinMode &v) {
         Json<std::uint8_t>::write(w, v.raw());
     }
     static bool read(const json::Value &x, ::mipcodec::types::GpioPinMode &v, JsonError &err) {
+        std::uint8_t raw{};
+        if (!Json<std::uint8_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::GpioPinStates> {
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioPinStates &v) {
+        Json<std::uint8_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::GpioPinStates &v, JsonError &err) {
         std::uint8_t raw{};
         if (!Json<std::uint8_t>::read(x, raw, err)) {
             return false;
@@ -294,11 +847,97 @@ template <> struct Json<::mipcodec::types::HeadingAlignmentMethods> {
     }
 };
 
+template <> struct Json<::mipcodec::types::OdometerDataValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::OdometerDataValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::OdometerDataValidFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::OverrangeStatusFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::OverrangeStatusFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::OverrangeStatusFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::RtkCorrectionsEpochStatus> {
+    static void write(JsonWriter &w, const ::mipcodec::types::RtkCorrectionsEpochStatus &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::RtkCorrectionsEpochStatus &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::RtkCorrectionsStatusValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::RtkCorrectionsStatusValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::RtkCorrectionsStatusValidFlags &v,
+                     JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
 template <> struct Json<::mipcodec::types::SbasOptions> {
     static void write(JsonWriter &w, const ::mipcodec::types::SbasOptions &v) {
         Json<std::uint16_t>::write(w, v.raw());
     }
     static bool read(const json::Value &x, ::mipcodec::types::SbasOptions &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SensorGpsTimestampFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SensorGpsTimestampFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::SensorGpsTimestampFlags &v, JsonError &err) {
+        std::uint16_t raw{};
+        if (!Json<std::uint16_t>::read(x, raw, err)) {
+            return false;
+        }
+        v.set_raw(raw);
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::SharedGpsTimestampValidFlags> {
+    static void write(JsonWriter &w, const ::mipcodec::types::SharedGpsTimestampValidFlags &v) {
+        Json<std::uint16_t>::write(w, v.raw());
+    }
+    static bool read(const json::Value &x, ::mipcodec::types::SharedGpsTimestampValidFlags &v,
+                     JsonError &err) {
         std::uint16_t raw{};
         if (!Json<std::uint16_t>::read(x, raw, err)) {
             return false;
@@ -775,6 +1414,215 @@ template <> struct Json<::mipcodec::types::ConstellationSettings> {
             }
         } else {
             return err.missing("option_flags");
+        }
+        (void)v;
+        return true;
+    }
+};
+
+template <> struct Json<::mipcodec::types::Cv7ContinuousBit> {
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBit &v) {
+        w.begin_object();
+        w.key("system_byte_0");
+        json_write_value(w, v.system_byte_0);
+        w.key("reserved_byte_1");
+        json_write_value(w, v.reserved_byte_1);
+        w.key("system_byte_2");
+        json_write_value(w, v.system_byte_2);
+        w.key("system_byte_3");
+        json_write_value(w, v.system_byte_3);
+        w.key("imu_byte_4");
+        json_write_value(w, v.imu_byte_4);
+        w.key("imu_byte_5");
+        json_write_value(w, v.imu_byte_5);
+        w.key("imu_byte_6");
+        json_write_value(w, v.imu_byte_6);
+        w.key("imu_byte_7");
+        json_write_value(w, v.imu_byte_7);
+        w.key("nav_byte_8");
+        json_write_value(w, v.nav_byte_8);
+        w.key("reserved_byte_9");
+        json_write_value(w, v.reserved_byte_9);
+        w.key("reserved_byte_10");
+        json_write_value(w, v.reserved_byte_10);
+        w.key("reserved_byte_11");
+        json_write_value(w, v.reserved_byte_11);
+        w.key("reserved_byte_12");
+        json_write_value(w, v.reserved_byte_12);
+        w.key("gnss_byte_13");
+        json_write_value(w, v.gnss_byte_13);
+        w.key("gnss_byte_14");
+        json_write_value(w, v.gnss_byte_14);
+        w.key("reserved_byte_15");
+        json_write_value(w, v.reserved_byte_15);
+        w.end_object();
+    }
+    static bool read(const json::Value &in, ::mipcodec::types::Cv7ContinuousBit &v, JsonError &err) {
+        if (!json_check_object(in,
+                               {
+                                   "system_byte_0",
+                                   "reserved_byte_1",
+                                   "system_byte_2",
+                                   "system_byte_3",
+                                   "imu_byte_4",
+                                   "imu_byte_5",
+                                   "imu_byte_6",
+                                   "imu_byte_7",
+                                   "nav_byte_8",
+                                   "reserved_byte_9",
+                                   "reserved_byte_10",
+                                   "reserved_byte_11",
+                                   "reserved_byte_12",
+                                   "gnss_byte_13",
+                                   "gnss_byte_14",
+                                   "reserved_byte_15",
+                               },
+                               err)) {
+            return false;
+        }
+        if (const json::Value *found = in.find("system_byte_0")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_byte_0, err)) {
+                err.enter("system_byte_0");
+                return false;
+            }
+        } else {
+            return err.missing("system_byte_0");
+        }
+        if (const json::Value *found = in.find("reserved_byte_1")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_byte_1, err)) {
+                err.enter("reserved_byte_1");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_byte_1");
+        }
+        if (const json::Value *found = in.find("system_byte_2")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_byte_2, err)) {
+                err.enter("system_byte_2");
+                return false;
+            }
+        } else {
+            return err.missing("system_byte_2");
+        }
+        if (const json::Value *found = in.find("system_byte_3")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.system_byte_3, err)) {
+                err.enter("system_byte_3");
+                return false;
+            }
+        } else {
+            return err.missing("system_byte_3");
+        }
+        if (const json::Value *found = in.find("imu_byte_4")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_byte_4, err)) {
+                err.enter("imu_byte_4");
+                return false;
+            }
+        } else {
+            return err.missing("imu_byte_4");
+        }
+        if (const json::Value *found = in.find("imu_byte_5")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_byte_5, err)) {
+                err.enter("imu_byte_5");
+                return false;
+            }
+        } else {
+            return err.missing("imu_byte_5");
+        }
+        if (const json::Value *found = in.find("imu_byte_6")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_byte_6, err)) {
+                err.enter("imu_byte_6");
+                return false;
+            }
+        } else {
+            return err.missing("imu_byte_6");
+        }
+        if (const json::Value *found = in.find("imu_byte_7")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.imu_byte_7, err)) {
+                err.enter("imu_byte_7");
+                return false;
+            }
+        } else {
+            return err.missing("imu_byte_7");
+        }
+        if (const json::Value *found = in.find("nav_byte_8")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.nav_byte_8, err)) {
+                err.enter("nav_byte_8");
+                return false;
+            }
+        } else {
+            return err.missing("nav_byte_8");
+        }
+        if (const json::Value *found = in.find("reserved_byte_9")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_byte_9, err)) {
+                err.enter("reserved_byte_9");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_byte_9");
+        }
+        if (const json::Value *found = in.find("reserved_byte_10")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_byte_10, err)) {
+                err.enter("reserved_byte_10");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_byte_10");
+        }
+        if (const json::Value *found = in.find("reserved_byte_11")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_byte_11, err)) {
+                err.enter("reserved_byte_11");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_byte_11");
+        }
+        if (const json::Value *found = in.find("reserved_byte_12")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_byte_12, err)) {
+                err.enter("reserved_byte_12");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_byte_12");
+        }
+        if (const json::Value *found = in.find("gnss_byte_13")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_byte_13, err)) {
+                err.enter("gnss_byte_13");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_byte_13");
+        }
+        if (const json::Value *found = in.find("gnss_byte_14")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.gnss_byte_14, err)) {
+                err.enter("gnss_byte_14");
+                return false;
+            }
+        } else {
+            return err.missing("gnss_byte_14");
+        }
+        if (const json::Value *found = in.find("reserved_byte_15")) {
+            const json::Value &x = *found;
+            if (!json_read_value(x, v.reserved_byte_15, err)) {
+                err.enter("reserved_byte_15");
+                return false;
+            }
+        } else {
+            return err.missing("reserved_byte_15");
         }
         (void)v;
         return true;

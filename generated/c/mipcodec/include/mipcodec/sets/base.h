@@ -260,7 +260,8 @@ mip_status_t mip_base_continuous_bit_decode(const uint8_t *data, size_t len, mip
 /** Continuous built-in test result. Device-specific 128-bit bitfield, least-significant byte first: bit 0 is
  * bit 0 of result[0], bit 127 is bit 7 of result[15]. */
 typedef struct {
-    uint8_t result[16]; /* Continuous BIT flags, least-significant byte first. */
+    mip_cv7_continuous_bit_t result; /* Continuous BIT bit map (16 bytes, least-significant byte first), as in
+                                        system data 0xA0,0x01. */
 } mip_base_continuous_bit_result_t;
 
 /* Largest encoded data (after the field header). */

@@ -264,7 +264,8 @@ struct ContinuousBitResult {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    std::array<std::uint8_t, 16> result{}; ///< Continuous BIT flags, least-significant byte first.
+    ::mipcodec::types::Cv7ContinuousBit result{}; ///< Continuous BIT bit map (16 bytes, least-significant
+                                                  ///< byte first), as in system data 0xA0,0x01.
     friend bool operator==(const ContinuousBitResult &a, const ContinuousBitResult &b) {
         (void)a;
         (void)b;
@@ -645,7 +646,7 @@ template <> struct Codec<base::ContinuousBitResult> {
         (void)r;
         (void)v;
         (void)err;
-        if (!read_fixed(r, v.result, err)) {
+        if (!read_value(r, v.result, err)) {
             err.enter("result");
             return false;
         }
@@ -655,7 +656,7 @@ template <> struct Codec<base::ContinuousBitResult> {
         (void)w;
         (void)v;
         bool absent = false;
-        write_fixed(w, v.result);
+        write_value(w, v.result);
         (void)absent;
     }
 };

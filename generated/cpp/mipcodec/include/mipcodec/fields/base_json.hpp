@@ -283,7 +283,7 @@ template <> struct Json<base::ContinuousBitResult> {
         (void)v;
         w.begin_object();
         w.key("result");
-        json_write_array(w, v.result);
+        json_write_value(w, v.result);
         w.end_object();
     }
     static bool read(const json::Value &in, base::ContinuousBitResult &v, JsonError &err) {
@@ -296,7 +296,7 @@ template <> struct Json<base::ContinuousBitResult> {
         }
         if (const json::Value *found = in.find("result")) {
             const json::Value &x = *found;
-            if (!json_read_fixed(x, v.result, err)) {
+            if (!json_read_value(x, v.result, err)) {
                 err.enter("result");
                 return false;
             }

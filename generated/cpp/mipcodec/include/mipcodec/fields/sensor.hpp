@@ -70,6 +70,243 @@ struct ScaledMag {
     }
 };
 
+/// Delta theta vector (data, descriptor 0x07).
+struct DeltaTheta {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x07;
+    static constexpr const char *kName = "delta_theta";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> delta_theta{}; ///< (x, y, z) integrated angular rate. [rad]
+    friend bool operator==(const DeltaTheta &a, const DeltaTheta &b) {
+        (void)a;
+        (void)b;
+        return true && a.delta_theta == b.delta_theta;
+    }
+    friend bool operator!=(const DeltaTheta &a, const DeltaTheta &b) {
+        return !(a == b);
+    }
+};
+
+/// Delta velocity vector (data, descriptor 0x08).
+struct DeltaVelocity {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x08;
+    static constexpr const char *kName = "delta_velocity";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> delta_velocity{}; ///< (x, y, z) integrated acceleration. [g*s]
+    friend bool operator==(const DeltaVelocity &a, const DeltaVelocity &b) {
+        (void)a;
+        (void)b;
+        return true && a.delta_velocity == b.delta_velocity;
+    }
+    friend bool operator!=(const DeltaVelocity &a, const DeltaVelocity &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter orientation matrix (data, descriptor 0x09).
+struct CfOrientationMatrix {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x09;
+    static constexpr const char *kName = "cf_orientation_matrix";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 9> m{}; ///< Orientation matrix, row-major (dimensionless).
+    friend bool operator==(const CfOrientationMatrix &a, const CfOrientationMatrix &b) {
+        (void)a;
+        (void)b;
+        return true && a.m == b.m;
+    }
+    friend bool operator!=(const CfOrientationMatrix &a, const CfOrientationMatrix &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter quaternion (data, descriptor 0x0A).
+struct CfQuaternion {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x0A;
+    static constexpr const char *kName = "cf_quaternion";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 4> q{}; ///< Quaternion elements q0 (scalar), q1, q2, q3 (dimensionless).
+    friend bool operator==(const CfQuaternion &a, const CfQuaternion &b) {
+        (void)a;
+        (void)b;
+        return true && a.q == b.q;
+    }
+    friend bool operator!=(const CfQuaternion &a, const CfQuaternion &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter Euler angles (data, descriptor 0x0C).
+struct CfEulerAngles {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x0C;
+    static constexpr const char *kName = "cf_euler_angles";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    float roll{};  ///< Roll angle. [rad]
+    float pitch{}; ///< Pitch angle. [rad]
+    float yaw{};   ///< Yaw angle. [rad]
+    friend bool operator==(const CfEulerAngles &a, const CfEulerAngles &b) {
+        (void)a;
+        (void)b;
+        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    }
+    friend bool operator!=(const CfEulerAngles &a, const CfEulerAngles &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter stabilized north vector (data, descriptor 0x10).
+struct CfStabilizedNorth {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x10;
+    static constexpr const char *kName = "cf_stabilized_north";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> stabilized_north{}; ///< (x, y, z) stabilized magnetic field estimate. [gauss]
+    friend bool operator==(const CfStabilizedNorth &a, const CfStabilizedNorth &b) {
+        (void)a;
+        (void)b;
+        return true && a.stabilized_north == b.stabilized_north;
+    }
+    friend bool operator!=(const CfStabilizedNorth &a, const CfStabilizedNorth &b) {
+        return !(a == b);
+    }
+};
+
+/// Complementary filter stabilized up vector (data, descriptor 0x11).
+struct CfStabilizedUp {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x11;
+    static constexpr const char *kName = "cf_stabilized_up";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    std::array<float, 3> stabilized_up{}; ///< (x, y, z) stabilized gravity estimate. [g]
+    friend bool operator==(const CfStabilizedUp &a, const CfStabilizedUp &b) {
+        (void)a;
+        (void)b;
+        return true && a.stabilized_up == b.stabilized_up;
+    }
+    friend bool operator!=(const CfStabilizedUp &a, const CfStabilizedUp &b) {
+        return !(a == b);
+    }
+};
+
+/// GPS timestamp of sensor data (GX5-45 GPS correlation timestamp) (data, descriptor 0x12).
+struct GpsTimestamp {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x12;
+    static constexpr const char *kName = "gps_timestamp";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    double tow{};                ///< GPS time of week. [s]
+    std::uint16_t week_number{}; ///< GPS week number since 1980. [weeks]
+    ::mipcodec::types::SensorGpsTimestampFlags
+        valid_flags{}; ///< Timestamp status flags (GX5-45: Timestamp Flags).
+    friend bool operator==(const GpsTimestamp &a, const GpsTimestamp &b) {
+        (void)a;
+        (void)b;
+        return true && a.tow == b.tow && a.week_number == b.week_number && a.valid_flags == b.valid_flags;
+    }
+    friend bool operator!=(const GpsTimestamp &a, const GpsTimestamp &b) {
+        return !(a == b);
+    }
+};
+
+/// Temperature statistics (data, descriptor 0x14).
+struct TemperatureStatistics {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x14;
+    static constexpr const char *kName = "temperature_statistics";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    float min_temp{};  ///< Minimum temperature. [degC]
+    float max_temp{};  ///< Maximum temperature. [degC]
+    float mean_temp{}; ///< Mean temperature. [degC]
+    friend bool operator==(const TemperatureStatistics &a, const TemperatureStatistics &b) {
+        (void)a;
+        (void)b;
+        return true && a.min_temp == b.min_temp && a.max_temp == b.max_temp && a.mean_temp == b.mean_temp;
+    }
+    friend bool operator!=(const TemperatureStatistics &a, const TemperatureStatistics &b) {
+        return !(a == b);
+    }
+};
+
+/// Scaled ambient pressure (data, descriptor 0x17).
+struct ScaledPressure {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x17;
+    static constexpr const char *kName = "scaled_pressure";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    float scaled_pressure{}; ///< Ambient pressure. [mbar]
+    friend bool operator==(const ScaledPressure &a, const ScaledPressure &b) {
+        (void)a;
+        (void)b;
+        return true && a.scaled_pressure == b.scaled_pressure;
+    }
+    friend bool operator!=(const ScaledPressure &a, const ScaledPressure &b) {
+        return !(a == b);
+    }
+};
+
+/// Over-range status (data, descriptor 0x18).
+struct OverrangeStatus {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x18;
+    static constexpr const char *kName = "overrange_status";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    ::mipcodec::types::OverrangeStatusFlags status{}; ///< Over-range flags, one per axis.
+    friend bool operator==(const OverrangeStatus &a, const OverrangeStatus &b) {
+        (void)a;
+        (void)b;
+        return true && a.status == b.status;
+    }
+    friend bool operator!=(const OverrangeStatus &a, const OverrangeStatus &b) {
+        return !(a == b);
+    }
+};
+
+/// Odometer data (data, descriptor 0x40).
+struct OdometerData {
+    static constexpr std::uint8_t kSet = 0x80;
+    static constexpr std::uint8_t kDescriptor = 0x40;
+    static constexpr const char *kName = "odometer_data";
+    static constexpr bool kHasVariants = false;
+    static constexpr const char *kDevice = nullptr;
+
+    float speed{};       ///< Average speed over the interval; can be negative with quadrature encoders. [m/s]
+    float uncertainty{}; ///< Uncertainty of the speed. [m/s]
+    ::mipcodec::types::OdometerDataValidFlags valid_flags{}; ///< Bit 0 set when the odometer is configured.
+    friend bool operator==(const OdometerData &a, const OdometerData &b) {
+        (void)a;
+        (void)b;
+        return true && a.speed == b.speed && a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    }
+    friend bool operator!=(const OdometerData &a, const OdometerData &b) {
+        return !(a == b);
+    }
+};
+
 } // namespace mipcodec::sensor
 
 namespace mipcodec {
@@ -130,6 +367,286 @@ template <> struct Codec<sensor::ScaledMag> {
         (void)v;
         bool absent = false;
         write_fixed(w, v.scaled_mag);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::DeltaTheta> {
+    static bool read(Reader &r, sensor::DeltaTheta &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.delta_theta, err)) {
+            err.enter("delta_theta");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::DeltaTheta &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.delta_theta);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::DeltaVelocity> {
+    static bool read(Reader &r, sensor::DeltaVelocity &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.delta_velocity, err)) {
+            err.enter("delta_velocity");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::DeltaVelocity &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.delta_velocity);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::CfOrientationMatrix> {
+    static bool read(Reader &r, sensor::CfOrientationMatrix &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.m, err)) {
+            err.enter("m");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::CfOrientationMatrix &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.m);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::CfQuaternion> {
+    static bool read(Reader &r, sensor::CfQuaternion &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.q, err)) {
+            err.enter("q");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::CfQuaternion &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.q);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::CfEulerAngles> {
+    static bool read(Reader &r, sensor::CfEulerAngles &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.roll, err)) {
+            err.enter("roll");
+            return false;
+        }
+        if (!read_value(r, v.pitch, err)) {
+            err.enter("pitch");
+            return false;
+        }
+        if (!read_value(r, v.yaw, err)) {
+            err.enter("yaw");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::CfEulerAngles &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.roll);
+        write_value(w, v.pitch);
+        write_value(w, v.yaw);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::CfStabilizedNorth> {
+    static bool read(Reader &r, sensor::CfStabilizedNorth &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.stabilized_north, err)) {
+            err.enter("stabilized_north");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::CfStabilizedNorth &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.stabilized_north);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::CfStabilizedUp> {
+    static bool read(Reader &r, sensor::CfStabilizedUp &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_fixed(r, v.stabilized_up, err)) {
+            err.enter("stabilized_up");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::CfStabilizedUp &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_fixed(w, v.stabilized_up);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::GpsTimestamp> {
+    static bool read(Reader &r, sensor::GpsTimestamp &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.tow, err)) {
+            err.enter("tow");
+            return false;
+        }
+        if (!read_value(r, v.week_number, err)) {
+            err.enter("week_number");
+            return false;
+        }
+        if (!read_value(r, v.valid_flags, err)) {
+            err.enter("valid_flags");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::GpsTimestamp &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.tow);
+        write_value(w, v.week_number);
+        write_value(w, v.valid_flags);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::TemperatureStatistics> {
+    static bool read(Reader &r, sensor::TemperatureStatistics &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.min_temp, err)) {
+            err.enter("min_temp");
+            return false;
+        }
+        if (!read_value(r, v.max_temp, err)) {
+            err.enter("max_temp");
+            return false;
+        }
+        if (!read_value(r, v.mean_temp, err)) {
+            err.enter("mean_temp");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::TemperatureStatistics &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.min_temp);
+        write_value(w, v.max_temp);
+        write_value(w, v.mean_temp);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::ScaledPressure> {
+    static bool read(Reader &r, sensor::ScaledPressure &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.scaled_pressure, err)) {
+            err.enter("scaled_pressure");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::ScaledPressure &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.scaled_pressure);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::OverrangeStatus> {
+    static bool read(Reader &r, sensor::OverrangeStatus &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.status, err)) {
+            err.enter("status");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::OverrangeStatus &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.status);
+        (void)absent;
+    }
+};
+
+template <> struct Codec<sensor::OdometerData> {
+    static bool read(Reader &r, sensor::OdometerData &v, DecodeError &err) {
+        (void)r;
+        (void)v;
+        (void)err;
+        if (!read_value(r, v.speed, err)) {
+            err.enter("speed");
+            return false;
+        }
+        if (!read_value(r, v.uncertainty, err)) {
+            err.enter("uncertainty");
+            return false;
+        }
+        if (!read_value(r, v.valid_flags, err)) {
+            err.enter("valid_flags");
+            return false;
+        }
+        return true;
+    }
+    static void write(Writer &w, const sensor::OdometerData &v) {
+        (void)w;
+        (void)v;
+        bool absent = false;
+        write_value(w, v.speed);
+        write_value(w, v.uncertainty);
+        write_value(w, v.valid_flags);
         (void)absent;
     }
 };
