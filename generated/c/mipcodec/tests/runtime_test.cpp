@@ -392,3 +392,46 @@ TEST(Json, RawAndTrailingEntriesRoundTrip) {
     EXPECT_EQ(payload[MIP_FIELD_LENGTH_OFFSET], 2 + MIP_FIELD_LENGTH_ADJUST);
     EXPECT_EQ(payload[MIP_FIELD_HEADER_SIZE + 2], 0x09);
 }
+
+static std::vector<uint8_t> stamped(uint8_t stamp, bool key, uint8_t descriptor) {
+    static const uint8_t k_stamp_descriptor = 0xD3;
+    std::vector<uint8_t> buf(MIP_MAX_PACKET);
+    std::vector<uint8_t> value(12, stamp);
+    const uint8_t one = 0x55;
+    mip_packet_builder_t b;
+    size_t n = 0;
+    mip_packet_begin(&b, buf.data(), buf.size(), 0x80);
+    if (key) {
+        EXPECT_EQ(mip_packet_add_field(&b, k_stamp_descriptor, value.data(), value.size()), MIP_OK);
+    }
+    EXPECT_EQ(mip_packet_add_field(&b, descriptor, &one, 1), MIP_OK);
+    EXPECT_EQ(mip_packet_finish(&b, &n), MIP_OK);
+    buf.resize(n);
+    return buf;
+}
+
+TEST(Samples, TrackerNumbersContinuationPackets) {
+    const std::vector<std::vector<uint8_t>> packets = {stamped(1, true, 1), stamped(1, true, 2),
+                                                       stamped(2, true, 3), stamped(0, false, 4),
+                                                       stamped(0, false, 5)};
+    const uint64_t want_number[] = {0, 0, 1, 2, 3};
+    const bool want_continues[] = {false, true, false, false, false};
+    mip_sample_tracker_t tracker;
+    mip_sample_tracker_init(&tracker);
+    for (size_t i = 0; i < packets.size(); i++) {
+        mip_sample_info_t info;
+        ASSERT_TRUE(mip_sample_tracker_feed(&tracker, packets[i].data(), packets[i].size(), &info));
+        EXPECT_EQ(info.number, want_number[i]) << i;
+        EXPECT_EQ(info.continues, want_continues[i]) << i;
+        /* The leading shared run: the timestamp field (header + data), or nothing. */
+        EXPECT_EQ(info.shared_prefix, i < 3 ? MIP_FIELD_HEADER_SIZE + 12u : 0u) << i;
+    }
+    /* Malformed buffers and command sets are not samples. */
+    mip_sample_info_t info;
+    EXPECT_FALSE(mip_sample_tracker_feed(&tracker, packets[0].data(), 3, &info));
+    EXPECT_FALSE(mip_sample_tracker_feed(&tracker, packets[0].data(), packets[0].size() - 3, &info));
+    EXPECT_FALSE(mip_sample_tracker_feed(&tracker, nullptr, 0, &info));
+    std::vector<uint8_t> cmd = packets[0];
+    cmd[MIP_SET_OFFSET] = 0x01;
+    EXPECT_FALSE(mip_sample_tracker_feed(&tracker, cmd.data(), cmd.size(), &info));
+}

@@ -394,4 +394,53 @@ TEST(Types, BitfieldAccessorRoundTrip) {
     EXPECT_EQ(back.raw(), static_cast<Bits::Raw>(~Bits::latitude_mask));
 }
 
+Bytes stamped(std::uint8_t stamp, bool key, std::uint8_t descriptor, char data) {
+    pkg::PacketBuilder b(pkg::sample_rule::kDataSets[0]);
+    const auto &ts = pkg::sample_rule::kTimestamps[0];
+    const Bytes value(ts.size, stamp);
+    if (key) {
+        EXPECT_EQ(b.add_raw_field(ts.descriptor, value.data(), value.size()), pkg::EncodeError::none);
+    }
+    const std::uint8_t d = static_cast<std::uint8_t>(data);
+    EXPECT_EQ(b.add_raw_field(descriptor, &d, 1), pkg::EncodeError::none);
+    const pkg::PacketView p = b.finish();
+    return Bytes(p.data, p.data + p.size);
+}
+
+TEST(Samples, GrouperMergesContinuationPackets) {
+    const std::vector<Bytes> packets = {stamped(1, true, 0x01, 'a'), stamped(1, true, 0x02, 'b'),
+                                        stamped(2, true, 0x03, 'c'), stamped(0, false, 0x04, 'd')};
+    pkg::SampleTracker tracker;
+    std::vector<std::pair<std::uint64_t, bool>> places;
+    for (const Bytes &p : packets) {
+        const auto place = tracker.feed(pkg::PacketView{p.data(), p.size()});
+        ASSERT_TRUE(place.has_value());
+        places.emplace_back(place->number, place->continues);
+    }
+    const std::vector<std::pair<std::uint64_t, bool>> want = {{0, false}, {0, true}, {1, false}, {2, false}};
+    EXPECT_EQ(places, want);
+    pkg::SampleGrouper grouper;
+    std::vector<pkg::Sample> done;
+    auto keep = [&](pkg::Sample &&s) { done.push_back(std::move(s)); };
+    for (std::size_t i = 0; i < packets.size(); ++i) {
+        grouper.feed(pkg::PacketView{packets[i].data(), packets[i].size()}, i * 100, keep);
+    }
+    ASSERT_EQ(done.size(), 2u);
+    EXPECT_EQ(done[0].number, 0u);
+    EXPECT_EQ(done[1].number, 1u);
+    EXPECT_EQ(done[0].offsets, (std::vector<std::uint64_t>{0, 100}));
+    std::vector<std::uint8_t> descriptors;
+    done[0].for_each_field([&](const pkg::FieldEntry &e) { descriptors.push_back(e.descriptor); });
+    EXPECT_EQ(descriptors,
+              (std::vector<std::uint8_t>{pkg::sample_rule::kTimestamps[0].descriptor, 0x01, 0x02}));
+    grouper.flush(keep);
+    ASSERT_EQ(done.size(), 3u);
+    EXPECT_EQ(done[2].number, 2u);
+    descriptors.clear();
+    done[2].for_each_field([&](const pkg::FieldEntry &e) { descriptors.push_back(e.descriptor); });
+    EXPECT_EQ(descriptors, (std::vector<std::uint8_t>{0x04}));
+    pkg::PacketBuilder command(0x01);
+    EXPECT_FALSE(tracker.feed(command.finish()).has_value());
+}
+
 } // namespace

@@ -344,3 +344,44 @@ def test_float_text_widens_floats():
 
 def test_string_text():
     assert string_text(b'a"\\\x00\x1f \x7e\x7f\xff') == '"a\\"\\\\\\u0000\\u001f ~\\u007f\\u00ff"'
+
+
+# ----------------------------------------------------------------------------- samples (§6)
+def _stamped(stamp: int, *fields: tuple, key: bool = True) -> bytes:
+    from mipcodec.samples import DATA_SETS, TIMESTAMPS
+
+    descriptor, size = next(iter(TIMESTAMPS.items()))
+    b = PacketBuilder(min(DATA_SETS))
+    if key:
+        b.add_field(descriptor, bytes([stamp]) * size)
+    for d, data in fields:
+        b.add_field(d, data)
+    return b.build()
+
+
+def test_sample_grouper_merges_continuation_packets():
+    from mipcodec.samples import TIMESTAMPS, SampleGrouper, SampleTracker
+
+    stamp = next(iter(TIMESTAMPS))
+    packets = [
+        _stamped(1, (0x01, b"a")),
+        _stamped(1, (0x02, b"b")),  # same key: continuation
+        _stamped(2, (0x03, b"c")),  # new key: completes the first sample
+        _stamped(0, (0x04, b"d"), key=False),  # no key: a sample on its own
+    ]
+    tracker = SampleTracker()
+    assert [tracker.feed(p) for p in packets] == [(0, False), (0, True), (1, False), (2, False)]
+    grouper = SampleGrouper()
+    done = []
+    for offset, p in enumerate(packets):
+        done += grouper.feed(RawPacket(offset * 100, p))
+    assert [s.number for s in done] == [0, 1]
+    first = done[0]
+    assert first.offsets == [0, 100]
+    # The continuation's copy of the timestamp is dropped; its own fields follow.
+    assert [f.descriptor for f in first.fields] == [stamp, 0x01, 0x02]
+    rest = grouper.flush()
+    assert [(s.number, [f.descriptor for f in s.fields]) for s in rest] == [(2, [0x04])]
+    assert grouper.flush() == []
+    # Command-set packets are not samples.
+    assert tracker.feed(PacketBuilder(0x01).build()) is None

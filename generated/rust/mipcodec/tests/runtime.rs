@@ -408,3 +408,63 @@ fn encode_reports_bad_lines() {
     let bytes = encode_line(&line).unwrap();
     assert_eq!(bytes, sample());
 }
+
+fn stamped(stamp: u8, key: bool, fields: &[(u8, &[u8])]) -> Vec<u8> {
+    use mipcodec::samples::{DATA_SETS, TIMESTAMPS};
+    let (descriptor, size) = TIMESTAMPS[0];
+    let mut b = PacketBuilder::new(DATA_SETS[0]);
+    if key {
+        b.add_raw_field(descriptor, &vec![stamp; size]).unwrap();
+    }
+    for (d, data) in fields {
+        b.add_raw_field(*d, data).unwrap();
+    }
+    b.finish().to_vec()
+}
+
+#[test]
+fn sample_grouper_merges_continuation_packets() {
+    use mipcodec::samples::{SampleGrouper, SampleTracker, TIMESTAMPS};
+    let packets = [
+        stamped(1, true, &[(0x01, b"a")]),
+        stamped(1, true, &[(0x02, b"b")]),
+        stamped(2, true, &[(0x03, b"c")]),
+        stamped(0, false, &[(0x04, b"d")]),
+    ];
+    let mut tracker = SampleTracker::new();
+    let places: Vec<(u64, bool)> = packets
+        .iter()
+        .map(|p| {
+            tracker
+                .feed(&Packet::new(p).unwrap())
+                .map(|s| (s.number, s.continues))
+                .unwrap()
+        })
+        .collect();
+    assert_eq!(places, vec![(0, false), (0, true), (1, false), (2, false)]);
+    let mut grouper = SampleGrouper::new();
+    let mut done = Vec::new();
+    for (i, p) in packets.iter().enumerate() {
+        done.extend(grouper.feed(&Packet::new(p).unwrap(), i as u64 * 100));
+    }
+    assert_eq!(
+        done.iter().map(|s| s.number).collect::<Vec<_>>(),
+        vec![0, 1]
+    );
+    assert_eq!(done[0].offsets, vec![0, 100]);
+    let descriptors = |s: &mipcodec::samples::Sample| -> Vec<u8> {
+        s.fields()
+            .map(|f| match f {
+                FieldItem::Field { descriptor, .. } => descriptor,
+                FieldItem::Trailing { .. } => panic!("trailing"),
+            })
+            .collect()
+    };
+    assert_eq!(descriptors(&done[0]), vec![TIMESTAMPS[0].0, 0x01, 0x02]);
+    let rest = grouper.flush();
+    assert_eq!(rest.len(), 1);
+    assert_eq!((rest[0].number, descriptors(&rest[0])), (2, vec![0x04]));
+    assert!(grouper.flush().is_empty());
+    let mut command = PacketBuilder::new(0x01);
+    assert_eq!(tracker.feed(&Packet::new(command.finish()).unwrap()), None);
+}
