@@ -135,10 +135,13 @@ class SampleGrouper:
         number, continues = placed
         decoded = decode_packet(data, offset or 0, self.device)
         set_id = decoded.set
-        if continues:
+        open_sample = self._open.get(set_id)
+        if continues and open_sample is not None:
             skip, _ = shared_prefix(data[HEADER_SIZE:-CHECKSUM_SIZE])
-            self._open[set_id]._continue(decoded, skip)
+            open_sample._continue(decoded, skip)
             return []
+        # (A continuation whose first packets were already flushed starts a new Sample object
+        # with the same number.)
         done = self._open.pop(set_id, None)
         self._open[set_id] = Sample(number, decoded)
         return [done] if done is not None else []

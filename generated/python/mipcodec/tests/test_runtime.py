@@ -383,5 +383,14 @@ def test_sample_grouper_merges_continuation_packets():
     rest = grouper.flush()
     assert [(s.number, [f.descriptor for f in s.fields]) for s in rest] == [(2, [0x04])]
     assert grouper.flush() == []
+    # A continuation after a flush (e.g. on a read timeout) is delivered on its own, with the
+    # same sample number and its shared fields.
+    g2 = SampleGrouper()
+    assert g2.feed(_stamped(7, (0x05, b"e"))) == []
+    [head] = g2.flush()
+    assert g2.feed(_stamped(7, (0x06, b"f"))) == []
+    [late] = g2.flush()
+    assert (head.number, late.number) == (0, 0)
+    assert [f.descriptor for f in late.fields] == [stamp, 0x06]
     # Command-set packets are not samples.
     assert tracker.feed(PacketBuilder(0x01).build()) is None
