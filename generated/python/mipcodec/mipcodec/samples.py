@@ -19,6 +19,7 @@ from typing import Any, Dict, List, Optional, Tuple
 from .framing import CHECKSUM_SIZE, FIELD_HEADER_SIZE, HEADER_SIZE, SET_OFFSET, FieldBytes, RawPacket, iter_fields
 from .packets import Entry, Packet, decode_packet
 
+# The rule exported as `samples` in generated/ir.json (first_shared 0x100: no shared descriptors).
 DATA_SETS = frozenset(
     (
         0x80,
