@@ -39,6 +39,8 @@ class Builder:
         self.field_layouts: dict[str, tuple[dict, SpecFile, tuple]] = {}
         self.manual_devices: dict[str, str] = {}
         self.device_ids: list[str] = []
+        # Protocol-wide defaults for string parameters (MS-CIP: space padding, right-justified).
+        self.string_defaults: dict = protocol_file.data.get("strings", {})
 
     # ---------------------------------------------------------------- helpers
     def err(self, sf: SpecFile, path: tuple, message: str, expected: str | None = None) -> None:
@@ -70,6 +72,12 @@ class Builder:
             self.function_values = {v["name"]: v["value"] for v in self.types[fs_enum]["values"]}
         reserved = [self._reserved_field(self.pf, i, f) for i, f in enumerate(p.get("reserved_fields", []))]
         sets = self._sets(reserved, framing)
+        framing["irregular_lengths"] = [
+            {"set": s["id"], "descriptor": f["id"], "adjust": f["length_byte_adjust"]}
+            for s in sets
+            for f in s["fields"]
+            if f["length_byte_adjust"]
+        ]
         ir = {
             "ir_version": IR_VERSION,
             "protocols": [
@@ -80,6 +88,8 @@ class Builder:
                     "byte_order": p["byte_order"],
                     "sources": self._sources(self.pf, ("sources",), p["sources"]),
                     "devices": p["devices"],
+                    "response_descriptor": p.get("response_descriptor"),
+                    "strings": {"padding": "nul", "justify": "left", **self.string_defaults},
                     "framing": framing,
                     "set_kinds": p["set_kinds"],
                     "shared_data": p.get("shared_data"),
@@ -476,8 +486,8 @@ class Builder:
                 {
                     "kind": "string",
                     "length": length,
-                    "padding": p.get("padding", "nul"),
-                    "justify": p.get("justify", "left"),
+                    "padding": p.get("padding", self.string_defaults.get("padding", "nul")),
+                    "justify": p.get("justify", self.string_defaults.get("justify", "left")),
                     "size": _fixed(length),
                 },
                 None,
@@ -1038,6 +1048,7 @@ class Builder:
                         "repeats": bool(f.get("repeats")),
                         "manual_name": f.get("manual_name"),
                         "sample_timestamp": bool(f.get("sample_timestamp")),
+                        "length_byte_adjust": f.get("length_byte_adjust", 0),
                         "variants": variants,
                         "_sf": sf,
                         "_path": fp,
@@ -1084,6 +1095,14 @@ class Builder:
                             )
                         else:
                             r["name"] = target["name"]
+                        rule = self.pf.data.get("response_descriptor")
+                        if rule and r["id"] != f["id"] | rule["command_or"]:
+                            self.err(
+                                sf,
+                                r["_loc"],
+                                f"{s['name']}.{f['name']}: response 0x{r['id']:02X} breaks the reply code rule",
+                                f"0x{f['id'] | rule['command_or']:02X} (command 0x{f['id']:02X} | 0x{rule['command_or']:02X}, protocol response_descriptor)",
+                            )
                         del r["_loc"]
                     # Top-level convenience copies required by the exported IR contract.
                 f["params"] = f["variants"][0]["params"]
@@ -1096,6 +1115,18 @@ class Builder:
                     for src in f["sources"]
                     if "stated_length" in src
                 ]
+                adjust = f["length_byte_adjust"]
+                if adjust:
+                    base = framing["field_length_adjust"]
+                    lo, hi = f["size"]["min"] + base + adjust, f["size"]["max"] + base + adjust
+                    if len(f["variants"]) != 1 or lo < 0 or hi > 255:
+                        self.err(
+                            f["_sf"],
+                            f["_path"] + ("length_byte_adjust",),
+                            f"{s['name']}.{f['name']}: with length_byte_adjust {adjust} the size byte would be "
+                            f"{lo}..{hi}",
+                            "one layout whose size byte stays within 0..255",
+                        )
                 if f.get("sample_timestamp") and (len(f["variants"]) != 1 or not f["size"]["fixed"]):
                     self.err(
                         f["_sf"],

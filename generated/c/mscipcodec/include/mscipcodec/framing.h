@@ -1,0 +1,77 @@
+/* Framing of the Memsense MS-CIP protocol, rendered from protocols[].framing of the IR.
+ * Generated: do not edit. */
+#ifndef MSCIP_FRAMING_H
+#define MSCIP_FRAMING_H
+
+#include "mscipcodec/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Sync sequence that starts every packet. */
+#define MSCIP_SYNC_SIZE 2
+#define MSCIP_SYNC_0 0xA5
+#define MSCIP_SYNC_1 0xA5
+/* Packet header: sync bytes, then set, payload_length. */
+#define MSCIP_HEADER_SIZE 4
+#define MSCIP_SET_OFFSET 2
+#define MSCIP_LENGTH_OFFSET 3
+#define MSCIP_MAX_PAYLOAD 255
+#define MSCIP_CHECKSUM_SIZE 2
+/* Largest packet: header, maximum payload and checksum. */
+#define MSCIP_MAX_PACKET 261
+/* Field header: descriptor, length. */
+#define MSCIP_FIELD_HEADER_SIZE 2
+#define MSCIP_FIELD_LENGTH_OFFSET 1
+#define MSCIP_FIELD_DESCRIPTOR_OFFSET 0
+/* The field length byte counts only the data:
+ * data length = length byte - MSCIP_FIELD_LENGTH_ADJUST. */
+#define MSCIP_FIELD_LENGTH_ADJUST 0
+/* Largest data a single field can carry. */
+#define MSCIP_MAX_FIELD_DATA 253
+
+/** The sync sequence as bytes. */
+extern const uint8_t mscip_sync[MSCIP_SYNC_SIZE];
+
+/**
+ * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
+ * out[0..1] receive the checksum in wire order (sum1, sum2).
+ */
+void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]);
+
+/** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
+bool mscip_packet_valid(const uint8_t *packet, size_t len);
+/** Descriptor set of a packet (at least MSCIP_HEADER_SIZE bytes). */
+uint8_t mscip_packet_set(const uint8_t *packet);
+/** Payload length byte of a packet (at least MSCIP_HEADER_SIZE bytes). */
+uint8_t mscip_packet_payload_length(const uint8_t *packet);
+/** Start of the payload of a packet. */
+const uint8_t *mscip_packet_payload(const uint8_t *packet);
+
+/**
+ * Builds one packet into a caller buffer: begin, add fields (or raw payload bytes), finish.
+ * Errors are sticky: once an add fails, finish returns the first error.
+ */
+typedef struct {
+    uint8_t *buf;
+    size_t cap;
+    size_t len;
+    mscip_status_t status;
+} mscip_packet_builder_t;
+
+/** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */
+void mscip_packet_begin(mscip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
+/** Appends a field: header (descriptor, length) and data_len bytes of data. */
+mscip_status_t mscip_packet_add_field(mscip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                      size_t data_len);
+/** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
+mscip_status_t mscip_packet_add_raw(mscip_packet_builder_t *b, const uint8_t *bytes, size_t len);
+/** Writes the payload length and checksum; *len_out receives the packet size. */
+mscip_status_t mscip_packet_finish(mscip_packet_builder_t *b, size_t *len_out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

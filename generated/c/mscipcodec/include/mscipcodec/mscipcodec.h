@@ -1,0 +1,19 @@
+/* mscipcodec: C99 codec of the Memsense MS-CIP protocol. Generated from the spec: do not edit.
+ * Everything is bounded by caller buffers; nothing allocates. */
+#ifndef MSCIP_MSCIPCODEC_H
+#define MSCIP_MSCIPCODEC_H
+
+#include "mscipcodec/status.h"
+#include "mscipcodec/framing.h"
+#include "mscipcodec/parser.h"
+#include "mscipcodec/field_iter.h"
+#include "mscipcodec/samples.h"
+#include "mscipcodec/types.h"
+#include "mscipcodec/reserved.h"
+#include "mscipcodec/sets/base.h"
+#include "mscipcodec/sets/imu_config.h"
+#include "mscipcodec/sets/imu_data.h"
+#include "mscipcodec/dispatch.h"
+#include "mscipcodec/json.h"
+
+#endif

@@ -1,0 +1,745 @@
+/* Reader of canonical JSON lines (no allocation). Generated: do not edit. */
+#include "json_reader.h"
+
+#include <errno.h>
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_NESTING 64
+
+void mscip_jr_init(mscip_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
+    memset(jr, 0, sizeof *jr);
+    jr->s = s;
+    jr->len = s ? len : 0;
+    jr->msg = msg;
+    jr->msg_cap = msg ? msg_cap : 0;
+    if (jr->msg_cap > 0) {
+        jr->msg[0] = '\0';
+    }
+}
+
+int mscip_jr_fail(mscip_jr_t *jr, const char *fmt, ...) {
+    va_list ap;
+    size_t len = 0;
+    size_t i;
+    if (jr->failed || jr->msg_cap == 0) {
+        jr->failed = true;
+        return -1;
+    }
+    jr->failed = true;
+    for (i = 0; i < jr->depth && i < MSCIP_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
+        int n;
+        if (jr->index[i] != SIZE_MAX) {
+            n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s[%zu]", i ? "." : "", jr->path[i],
+                         jr->index[i]);
+        } else {
+            n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s", i ? "." : "", jr->path[i]);
+        }
+        len += n > 0 ? (size_t)n : 0;
+    }
+    if (jr->depth > 0 && len < jr->msg_cap) {
+        int n = snprintf(jr->msg + len, jr->msg_cap - len, ": ");
+        len += n > 0 ? (size_t)n : 0;
+    }
+    if (len < jr->msg_cap) {
+        va_start(ap, fmt);
+        vsnprintf(jr->msg + len, jr->msg_cap - len, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
+void mscip_jr_push(mscip_jr_t *jr, const char *name) {
+    if (jr->depth < MSCIP_JR_MAX_DEPTH) {
+        jr->path[jr->depth] = name;
+        jr->index[jr->depth] = SIZE_MAX;
+    }
+    jr->depth++;
+}
+
+void mscip_jr_index(mscip_jr_t *jr, size_t index) {
+    if (jr->depth > 0 && jr->depth <= MSCIP_JR_MAX_DEPTH) {
+        jr->index[jr->depth - 1] = index;
+    }
+}
+
+void mscip_jr_pop(mscip_jr_t *jr) {
+    if (jr->depth > 0) {
+        jr->depth--;
+    }
+}
+
+size_t mscip_jr_ws(const mscip_jr_t *jr, size_t pos) {
+    while (pos < jr->len &&
+           (jr->s[pos] == ' ' || jr->s[pos] == '\t' || jr->s[pos] == '\r' || jr->s[pos] == '\n')) {
+        pos++;
+    }
+    return pos;
+}
+
+static int at(const mscip_jr_t *jr, size_t pos, char c) {
+    return pos < jr->len && jr->s[pos] == c;
+}
+
+static int is_digit(const mscip_jr_t *jr, size_t pos) {
+    return pos < jr->len && jr->s[pos] >= '0' && jr->s[pos] <= '9';
+}
+
+static int hex_value(char c) {
+    if (c >= '0' && c <= '9') {
+        return c - '0';
+    }
+    if (c >= 'a' && c <= 'f') {
+        return c - 'a' + 10;
+    }
+    if (c >= 'A' && c <= 'F') {
+        return c - 'A' + 10;
+    }
+    return -1;
+}
+
+/* Scans a string starting at the quote; *end after the closing quote. */
+static int scan_string(mscip_jr_t *jr, size_t pos, size_t *end) {
+    size_t i = pos + 1;
+    while (i < jr->len && jr->s[i] != '"') {
+        unsigned char c = (unsigned char)jr->s[i];
+        if (c < 0x20) {
+            return mscip_jr_fail(jr, "control character in a string");
+        }
+        if (c == '\\') {
+            i++;
+            if (i >= jr->len) {
+                break;
+            }
+            if (jr->s[i] == 'u') {
+                int k;
+                for (k = 1; k <= 4; k++) {
+                    if (i + (size_t)k >= jr->len || hex_value(jr->s[i + (size_t)k]) < 0) {
+                        return mscip_jr_fail(jr, "bad \\u escape in a string");
+                    }
+                }
+                i += 4;
+            } else if (!strchr("\"\\/bfnrt", jr->s[i])) {
+                return mscip_jr_fail(jr, "bad escape in a string");
+            }
+        }
+        i++;
+    }
+    if (i >= jr->len) {
+        return mscip_jr_fail(jr, "unterminated string");
+    }
+    *end = i + 1;
+    return 0;
+}
+
+/* Scans a number; *is_int tells whether it has neither fraction nor exponent. */
+static int scan_number(mscip_jr_t *jr, size_t pos, size_t *end, int *is_int) {
+    size_t i = pos;
+    *is_int = 1;
+    if (at(jr, i, '-')) {
+        i++;
+    }
+    if (at(jr, i, '0')) {
+        i++;
+    } else if (is_digit(jr, i)) {
+        while (is_digit(jr, i)) {
+            i++;
+        }
+    } else {
+        return mscip_jr_fail(jr, "invalid number");
+    }
+    if (at(jr, i, '.')) {
+        *is_int = 0;
+        i++;
+        if (!is_digit(jr, i)) {
+            return mscip_jr_fail(jr, "invalid number");
+        }
+        while (is_digit(jr, i)) {
+            i++;
+        }
+    }
+    if (at(jr, i, 'e') || at(jr, i, 'E')) {
+        *is_int = 0;
+        i++;
+        if (at(jr, i, '+') || at(jr, i, '-')) {
+            i++;
+        }
+        if (!is_digit(jr, i)) {
+            return mscip_jr_fail(jr, "invalid number");
+        }
+        while (is_digit(jr, i)) {
+            i++;
+        }
+    }
+    *end = i;
+    return 0;
+}
+
+static int literal(mscip_jr_t *jr, size_t pos, const char *word, size_t *end) {
+    size_t n = strlen(word);
+    if (jr->len - pos < n || memcmp(jr->s + pos, word, n) != 0) {
+        return mscip_jr_fail(jr, "invalid JSON value");
+    }
+    *end = pos + n;
+    return 0;
+}
+
+static int skip_value(mscip_jr_t *jr, size_t pos, size_t *end, int nesting) {
+    int is_int;
+    pos = mscip_jr_ws(jr, pos);
+    if (pos >= jr->len) {
+        return mscip_jr_fail(jr, "missing JSON value");
+    }
+    if (nesting > MAX_NESTING) {
+        return mscip_jr_fail(jr, "JSON nested too deeply");
+    }
+    switch (jr->s[pos]) {
+    case '{':
+    case '[': {
+        char close = jr->s[pos] == '{' ? '}' : ']';
+        int object = close == '}';
+        pos = mscip_jr_ws(jr, pos + 1);
+        if (at(jr, pos, close)) {
+            *end = pos + 1;
+            return 0;
+        }
+        for (;;) {
+            if (object) {
+                if (!at(jr, pos, '"')) {
+                    return mscip_jr_fail(jr, "expected a key in quotes");
+                }
+                if (scan_string(jr, pos, &pos)) {
+                    return -1;
+                }
+                pos = mscip_jr_ws(jr, pos);
+                if (!at(jr, pos, ':')) {
+                    return mscip_jr_fail(jr, "expected ':' after a key");
+                }
+                pos++;
+            }
+            if (skip_value(jr, pos, &pos, nesting + 1)) {
+                return -1;
+            }
+            pos = mscip_jr_ws(jr, pos);
+            if (at(jr, pos, close)) {
+                *end = pos + 1;
+                return 0;
+            }
+            if (!at(jr, pos, ',')) {
+                return mscip_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
+            }
+            pos = mscip_jr_ws(jr, pos + 1);
+        }
+    }
+    case '"':
+        return scan_string(jr, pos, end);
+    case 't':
+        return literal(jr, pos, "true", end);
+    case 'f':
+        return literal(jr, pos, "false", end);
+    case 'n':
+        return literal(jr, pos, "null", end);
+    default:
+        return scan_number(jr, pos, end, &is_int);
+    }
+}
+
+int mscip_jr_skip(mscip_jr_t *jr, size_t pos, size_t *end) {
+    return skip_value(jr, pos, end, 0);
+}
+
+int mscip_jr_document(mscip_jr_t *jr, size_t *pos) {
+    size_t start = mscip_jr_ws(jr, 0);
+    size_t end;
+    if (!at(jr, start, '{')) {
+        return mscip_jr_fail(jr, "expected a JSON object");
+    }
+    if (mscip_jr_skip(jr, start, &end)) {
+        return -1;
+    }
+    if (mscip_jr_ws(jr, end) != jr->len) {
+        return mscip_jr_fail(jr, "unexpected text after the JSON object");
+    }
+    *pos = start;
+    return 0;
+}
+
+/* Walks an object that mscip_jr_skip accepted: calls back for each key. */
+static size_t key_index(const mscip_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
+                        size_t n) {
+    size_t i;
+    size_t klen = key_end - key_pos - 2;
+    for (i = 0; i < n; i++) {
+        if (strlen(keys[i]) == klen && memcmp(jr->s + key_pos + 1, keys[i], klen) == 0) {
+            return i;
+        }
+    }
+    return n;
+}
+
+int mscip_jr_object(mscip_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
+    size_t end;
+    uint64_t seen = 0;
+    pos = mscip_jr_ws(jr, pos);
+    if (!at(jr, pos, '{')) {
+        return mscip_jr_fail(jr, "expected an object");
+    }
+    if (mscip_jr_skip(jr, pos, &end)) {
+        return -1;
+    }
+    pos = mscip_jr_ws(jr, pos + 1);
+    while (!at(jr, pos, '}')) {
+        size_t key_end;
+        size_t k;
+        scan_string(jr, pos, &key_end);
+        k = key_index(jr, pos, key_end, keys, n);
+        if (k == n) {
+            int shown = (int)(key_end - pos > 40 ? 40 : key_end - pos);
+            return mscip_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
+        }
+        if (k < 64 && (seen & ((uint64_t)1 << k))) {
+            return mscip_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
+        }
+        if (k < 64) {
+            seen |= (uint64_t)1 << k;
+        }
+        pos = mscip_jr_ws(jr, key_end) + 1;
+        skip_value(jr, pos, &pos, 0);
+        pos = mscip_jr_ws(jr, pos);
+        if (at(jr, pos, ',')) {
+            pos = mscip_jr_ws(jr, pos + 1);
+        }
+    }
+    return 0;
+}
+
+int mscip_jr_get(mscip_jr_t *jr, size_t pos, const char *key, size_t *value) {
+    pos = mscip_jr_ws(jr, pos) + 1;
+    pos = mscip_jr_ws(jr, pos);
+    while (at(jr, pos, '"')) {
+        size_t key_end;
+        scan_string(jr, pos, &key_end);
+        if (key_index(jr, pos, key_end, &key, 1) == 0) {
+            *value = mscip_jr_ws(jr, mscip_jr_ws(jr, key_end) + 1);
+            return 1;
+        }
+        pos = mscip_jr_ws(jr, key_end) + 1;
+        skip_value(jr, pos, &pos, 0);
+        pos = mscip_jr_ws(jr, pos);
+        if (at(jr, pos, ',')) {
+            pos = mscip_jr_ws(jr, pos + 1);
+        }
+    }
+    return 0;
+}
+
+int mscip_jr_array(mscip_jr_t *jr, size_t pos, size_t *it) {
+    size_t end;
+    pos = mscip_jr_ws(jr, pos);
+    if (!at(jr, pos, '[')) {
+        return mscip_jr_fail(jr, "expected an array");
+    }
+    if (mscip_jr_skip(jr, pos, &end)) {
+        return -1;
+    }
+    *it = mscip_jr_ws(jr, pos + 1);
+    return 0;
+}
+
+int mscip_jr_next(mscip_jr_t *jr, size_t *it, size_t *elem) {
+    size_t pos = mscip_jr_ws(jr, *it);
+    if (at(jr, pos, ']')) {
+        return 0;
+    }
+    if (at(jr, pos, ',')) {
+        pos = mscip_jr_ws(jr, pos + 1);
+    }
+    *elem = pos;
+    if (skip_value(jr, pos, it, 0)) {
+        return -1;
+    }
+    return 1;
+}
+
+/* Magnitude of an integer token; *negative for a leading '-'. */
+static int integer(mscip_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
+    size_t end;
+    size_t i;
+    int is_int;
+    pos = mscip_jr_ws(jr, pos);
+    if (pos >= jr->len || !(jr->s[pos] == '-' || (jr->s[pos] >= '0' && jr->s[pos] <= '9'))) {
+        return mscip_jr_fail(jr, "expected %s", expected);
+    }
+    if (scan_number(jr, pos, &end, &is_int)) {
+        return -1;
+    }
+    if (!is_int) {
+        return mscip_jr_fail(jr, "expected %s", expected);
+    }
+    *negative = jr->s[pos] == '-';
+    *mag = 0;
+    for (i = pos + (*negative ? 1u : 0u); i < end; i++) {
+        unsigned d = (unsigned)(jr->s[i] - '0');
+        if (*mag > (UINT64_MAX - d) / 10) {
+            return mscip_jr_fail(jr, "expected %s", expected);
+        }
+        *mag = *mag * 10 + d;
+    }
+    return 0;
+}
+
+int mscip_jr_uint(mscip_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
+    char expected[64];
+    uint64_t mag;
+    int negative;
+    snprintf(expected, sizeof expected, "an integer in 0..%llu", (unsigned long long)max);
+    if (integer(jr, pos, &mag, &negative, expected)) {
+        return -1;
+    }
+    if ((negative && mag != 0) || mag > max) {
+        return mscip_jr_fail(jr, "expected %s", expected);
+    }
+    *out = mag;
+    return 0;
+}
+
+int mscip_jr_sint(mscip_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
+    char expected[80];
+    uint64_t mag;
+    int negative;
+    snprintf(expected, sizeof expected, "an integer in %lld..%lld", (long long)min, (long long)max);
+    if (integer(jr, pos, &mag, &negative, expected)) {
+        return -1;
+    }
+    if (negative) {
+        /* -mag >= min  <=>  mag <= -(min + 1) + 1 */
+        uint64_t limit = (uint64_t)(-(min + 1)) + 1u;
+        if (mag > limit) {
+            return mscip_jr_fail(jr, "expected %s", expected);
+        }
+        *out = mag == 0 ? 0 : -(int64_t)(mag - 1) - 1;
+    } else {
+        if (mag > (uint64_t)max) {
+            return mscip_jr_fail(jr, "expected %s", expected);
+        }
+        *out = (int64_t)mag;
+    }
+    return 0;
+}
+
+int mscip_jr_null(mscip_jr_t *jr, size_t pos) {
+    pos = mscip_jr_ws(jr, pos);
+    if (jr->len - pos < 4 || memcmp(jr->s + pos, "null", 4) != 0) {
+        return mscip_jr_fail(jr, "expected null");
+    }
+    return 0;
+}
+
+bool mscip_jr_is_string(const mscip_jr_t *jr, size_t pos) {
+    return at(jr, mscip_jr_ws(jr, pos), '"');
+}
+
+/* Decodes the string at pos into bytes (code points up to U+00FF); *n gets the byte count,
+ * which may exceed cap (then only cap bytes are stored). */
+static int string_bytes(mscip_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
+    size_t end;
+    size_t i;
+    pos = mscip_jr_ws(jr, pos);
+    if (!at(jr, pos, '"')) {
+        return mscip_jr_fail(jr, "expected %s", expected);
+    }
+    if (scan_string(jr, pos, &end)) {
+        return -1;
+    }
+    *n = 0;
+    for (i = pos + 1; i < end - 1; i++) {
+        unsigned char c = (unsigned char)jr->s[i];
+        unsigned code = c;
+        if (c == '\\') {
+            char e = jr->s[++i];
+            switch (e) {
+            case 'b':
+                code = 0x08;
+                break;
+            case 'f':
+                code = 0x0C;
+                break;
+            case 'n':
+                code = 0x0A;
+                break;
+            case 'r':
+                code = 0x0D;
+                break;
+            case 't':
+                code = 0x09;
+                break;
+            case 'u':
+                code = (unsigned)(hex_value(jr->s[i + 1]) << 12 | hex_value(jr->s[i + 2]) << 8 |
+                                  hex_value(jr->s[i + 3]) << 4 | hex_value(jr->s[i + 4]));
+                i += 4;
+                break;
+            default:
+                code = (unsigned char)e;
+                break;
+            }
+        } else if (c >= 0x80) {
+            /* UTF-8 of U+0080..U+00FF */
+            unsigned char c2 = i + 1 < end - 1 ? (unsigned char)jr->s[i + 1] : 0;
+            if ((c != 0xC2 && c != 0xC3) || (c2 & 0xC0) != 0x80) {
+                return mscip_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+            }
+            code = ((unsigned)(c & 0x1F) << 6) | (c2 & 0x3Fu);
+            i++;
+        }
+        if (code > 0xFF) {
+            return mscip_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+        }
+        if (*n < cap) {
+            out[*n] = (char)(unsigned char)code;
+        }
+        (*n)++;
+    }
+    return 0;
+}
+
+int mscip_jr_chars(mscip_jr_t *jr, size_t pos, char *out, size_t n) {
+    char expected[64];
+    size_t got;
+    snprintf(expected, sizeof expected, "a string of exactly %zu characters", n);
+    if (string_bytes(jr, pos, out, n, &got, expected)) {
+        return -1;
+    }
+    if (got != n) {
+        return mscip_jr_fail(jr, "expected %s, got %zu", expected, got);
+    }
+    return 0;
+}
+
+int mscip_jr_hex(mscip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
+    size_t end;
+    size_t i;
+    pos = mscip_jr_ws(jr, pos);
+    if (!at(jr, pos, '"')) {
+        return mscip_jr_fail(jr, "expected a hex string");
+    }
+    if (scan_string(jr, pos, &end)) {
+        return -1;
+    }
+    if ((end - pos - 2) % 2 != 0) {
+        return mscip_jr_fail(jr, "expected an even number of hex digits");
+    }
+    *n = (end - pos - 2) / 2;
+    if (*n > cap) {
+        return mscip_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
+    }
+    for (i = 0; i < *n; i++) {
+        int hi = hex_value(jr->s[pos + 1 + 2 * i]);
+        int lo = hex_value(jr->s[pos + 2 + 2 * i]);
+        if (hi < 0 || lo < 0) {
+            return mscip_jr_fail(jr, "expected hex digits");
+        }
+        out[i] = (uint8_t)(hi << 4 | lo);
+    }
+    return 0;
+}
+
+int mscip_jr_bool(mscip_jr_t *jr, size_t pos, bool *out) {
+    pos = mscip_jr_ws(jr, pos);
+    if (jr->len - pos >= 4 && memcmp(jr->s + pos, "true", 4) == 0) {
+        *out = true;
+        return 0;
+    }
+    if (jr->len - pos >= 5 && memcmp(jr->s + pos, "false", 5) == 0) {
+        *out = false;
+        return 0;
+    }
+    return mscip_jr_fail(jr, "expected true or false");
+}
+
+int mscip_jr_char(mscip_jr_t *jr, size_t pos, char *out) {
+    return mscip_jr_chars(jr, pos, out, 1);
+}
+
+int mscip_jr_u8(mscip_jr_t *jr, size_t pos, uint8_t *out) {
+    uint64_t v;
+    if (mscip_jr_uint(jr, pos, UINT8_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint8_t)v;
+    return 0;
+}
+
+int mscip_jr_u16(mscip_jr_t *jr, size_t pos, uint16_t *out) {
+    uint64_t v;
+    if (mscip_jr_uint(jr, pos, UINT16_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint16_t)v;
+    return 0;
+}
+
+int mscip_jr_u32(mscip_jr_t *jr, size_t pos, uint32_t *out) {
+    uint64_t v;
+    if (mscip_jr_uint(jr, pos, UINT32_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint32_t)v;
+    return 0;
+}
+
+int mscip_jr_u64(mscip_jr_t *jr, size_t pos, uint64_t *out) {
+    uint64_t v;
+    if (mscip_jr_uint(jr, pos, UINT64_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint64_t)v;
+    return 0;
+}
+
+int mscip_jr_s8(mscip_jr_t *jr, size_t pos, int8_t *out) {
+    int64_t v;
+    if (mscip_jr_sint(jr, pos, INT8_MIN, INT8_MAX, &v)) {
+        return -1;
+    }
+    *out = (int8_t)v;
+    return 0;
+}
+
+int mscip_jr_s16(mscip_jr_t *jr, size_t pos, int16_t *out) {
+    int64_t v;
+    if (mscip_jr_sint(jr, pos, INT16_MIN, INT16_MAX, &v)) {
+        return -1;
+    }
+    *out = (int16_t)v;
+    return 0;
+}
+
+int mscip_jr_s32(mscip_jr_t *jr, size_t pos, int32_t *out) {
+    int64_t v;
+    if (mscip_jr_sint(jr, pos, INT32_MIN, INT32_MAX, &v)) {
+        return -1;
+    }
+    *out = (int32_t)v;
+    return 0;
+}
+
+int mscip_jr_s64(mscip_jr_t *jr, size_t pos, int64_t *out) {
+    int64_t v;
+    if (mscip_jr_sint(jr, pos, INT64_MIN, INT64_MAX, &v)) {
+        return -1;
+    }
+    *out = (int64_t)v;
+    return 0;
+}
+
+/* A number, or "inf", "-inf", "nan", "nan:0x<hex_digits>"; *bits set for "nan:0x..". */
+static int number(mscip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
+                  const char *expected) {
+    size_t end;
+    int is_int;
+    *has_bits = 0;
+    pos = mscip_jr_ws(jr, pos);
+    if (at(jr, pos, '"')) {
+        size_t n;
+        char text[32];
+        if (string_bytes(jr, pos, text, sizeof text - 1, &n, expected)) {
+            return -1;
+        }
+        if (n < sizeof text) {
+            text[n] = '\0';
+            if (strcmp(text, "inf") == 0) {
+                *out = HUGE_VAL;
+                return 0;
+            }
+            if (strcmp(text, "-inf") == 0) {
+                *out = -HUGE_VAL;
+                return 0;
+            }
+            if (strcmp(text, "nan") == 0) {
+                *bits = hex_digits == 8 ? 0x7FC00000u : 0x7FF8000000000000ull;
+                *has_bits = 1;
+                return 0;
+            }
+            if (n == 6 + hex_digits && memcmp(text, "nan:0x", 6) == 0) {
+                size_t i;
+                *bits = 0;
+                for (i = 6; i < n; i++) {
+                    int d = hex_value(text[i]);
+                    if (d < 0) {
+                        break;
+                    }
+                    *bits = (*bits << 4) | (uint64_t)d;
+                }
+                if (i == n) {
+                    *has_bits = 1;
+                    return 0;
+                }
+            }
+        }
+        return mscip_jr_fail(jr, "expected %s", expected);
+    }
+    if (scan_number(jr, pos, &end, &is_int)) {
+        return -1;
+    }
+    {
+        char text[512];
+        if (end - pos >= sizeof text) {
+            return mscip_jr_fail(jr, "number too long");
+        }
+        memcpy(text, jr->s + pos, end - pos);
+        text[end - pos] = '\0';
+        errno = 0;
+        *out = strtod(text, NULL);
+        if (errno == ERANGE && (*out == HUGE_VAL || *out == -HUGE_VAL)) {
+            return mscip_jr_fail(jr, "number out of range");
+        }
+    }
+    return 0;
+}
+
+int mscip_jr_f64(mscip_jr_t *jr, size_t pos, double *out) {
+    uint64_t bits;
+    int has_bits;
+    const char *expected = "a number, \"inf\", \"-inf\", \"nan\" or \"nan:0x\" and 16 hex digits";
+    if (number(jr, pos, out, &bits, &has_bits, 16, expected)) {
+        return -1;
+    }
+    if (has_bits) {
+        if (((bits >> 52) & 0x7FF) != 0x7FF || (bits & 0xFFFFFFFFFFFFFull) == 0) {
+            return mscip_jr_fail(jr, "not a NaN bit pattern");
+        }
+        memcpy(out, &bits, sizeof bits);
+    }
+    return 0;
+}
+
+int mscip_jr_f32(mscip_jr_t *jr, size_t pos, float *out) {
+    uint64_t bits;
+    int has_bits;
+    double d = 0;
+    const char *expected = "a number, \"inf\", \"-inf\", \"nan\" or \"nan:0x\" and 8 hex digits";
+    if (number(jr, pos, &d, &bits, &has_bits, 8, expected)) {
+        return -1;
+    }
+    if (has_bits) {
+        uint32_t b32 = (uint32_t)bits;
+        if (((b32 >> 23) & 0xFF) != 0xFF || (b32 & 0x7FFFFFu) == 0) {
+            return mscip_jr_fail(jr, "not a NaN bit pattern");
+        }
+        memcpy(out, &b32, sizeof b32);
+        return 0;
+    }
+    if (d == HUGE_VAL || d == -HUGE_VAL) {
+        *out = d > 0 ? HUGE_VALF : -HUGE_VALF;
+        return 0;
+    }
+    if (d > FLT_MAX || d < -FLT_MAX) {
+        return mscip_jr_fail(jr, "number out of range for a float");
+    }
+    *out = (float)d;
+    return 0;
+}

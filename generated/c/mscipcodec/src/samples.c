@@ -1,0 +1,95 @@
+/* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6).
+ * Generated: do not edit. */
+#include "mscipcodec/samples.h"
+
+#include <string.h>
+
+#include "mscipcodec/field_iter.h"
+
+static const uint8_t k_data_sets[1] = {0};
+#define TIMESTAMPS 0
+
+static bool is_shared(uint8_t descriptor) {
+    (void)descriptor;
+    return false;
+}
+
+static int slot_of(uint8_t set) {
+    (void)set;
+    (void)k_data_sets;
+    return -1;
+}
+
+/* The payload of a complete packet, or NULL when the buffer does not hold one. */
+static const uint8_t *payload_of(const uint8_t *packet, size_t len, size_t *plen) {
+    size_t n;
+    if (!packet || len < MSCIP_HEADER_SIZE + MSCIP_CHECKSUM_SIZE) {
+        return NULL;
+    }
+    n = packet[MSCIP_LENGTH_OFFSET];
+    if (MSCIP_HEADER_SIZE + n + MSCIP_CHECKSUM_SIZE > len) {
+        return NULL;
+    }
+    *plen = n;
+    return packet + MSCIP_HEADER_SIZE;
+}
+
+size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
+    mscip_field_iter_t it;
+    mscip_field_entry_t e;
+    size_t plen = 0;
+    size_t key_len = 0;
+    size_t prefix = 0;
+    const uint8_t *payload = payload_of(packet, len, &plen);
+    if (shared_prefix) {
+        *shared_prefix = 0;
+    }
+    if (!payload) {
+        return 0;
+    }
+    mscip_field_iter_init(&it, payload, plen);
+    while (mscip_field_iter_next(&it, &e) && e.kind == MSCIP_ENTRY_FIELD && is_shared(e.descriptor)) {
+        (void)key;
+        prefix = e.offset + MSCIP_FIELD_HEADER_SIZE + e.length;
+    }
+    if (shared_prefix) {
+        *shared_prefix = prefix;
+    }
+    return key_len;
+}
+
+void mscip_sample_tracker_init(mscip_sample_tracker_t *tracker) {
+    memset(tracker, 0, sizeof *tracker);
+}
+
+bool mscip_sample_tracker_feed(mscip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                               mscip_sample_info_t *info) {
+    uint8_t key[MSCIP_SAMPLE_KEY_MAX];
+    size_t key_len;
+    size_t prefix = 0;
+    size_t plen = 0;
+    mscip_sample_slot_t *slot;
+    int i;
+    if (!payload_of(packet, len, &plen)) {
+        return false;
+    }
+    i = slot_of(packet[MSCIP_SET_OFFSET]);
+    if (i < 0) {
+        return false;
+    }
+    slot = &tracker->slots[i];
+    key_len = mscip_sample_key(packet, len, key, &prefix);
+    info->shared_prefix = prefix;
+    if (key_len > 0 && slot->used && slot->key_len == key_len && memcmp(slot->key, key, key_len) == 0) {
+        info->number = slot->number;
+        info->continues = true;
+        return true;
+    }
+    slot->used = 1;
+    slot->number = tracker->next++;
+    slot->key_len = (uint8_t)key_len;
+    memcpy(slot->key, key, key_len);
+    info->number = slot->number;
+    info->continues = false;
+    return true;
+}

@@ -1,0 +1,72 @@
+/* Private: bounds-checked big-endian reader and writer used by the generated layouts.
+ * Generated: do not edit. */
+#ifndef MSCIP_WIRE_H
+#define MSCIP_WIRE_H
+
+#include "mscipcodec/status.h"
+
+/* Reads field data. Every read checks the bytes left first; on failure it fills *err with the
+ * current parameter path and returns -1 (0 on success). */
+typedef struct {
+    const uint8_t *data;
+    size_t len;
+    size_t pos;
+    mscip_path_segment_t path[MSCIP_PATH_MAX_DEPTH];
+    size_t depth;
+    mscip_decode_error_t *err;
+} mscip_reader_t;
+
+void mscip_reader_init(mscip_reader_t *r, const uint8_t *data, size_t len, mscip_decode_error_t *err);
+
+/* Parameter path bookkeeping (the names are string literals). */
+void mscip_rd_push(mscip_reader_t *r, const char *name);
+void mscip_rd_index(mscip_reader_t *r, size_t index);
+void mscip_rd_pop(mscip_reader_t *r);
+
+int mscip_rd_bool(mscip_reader_t *r, bool *out);
+int mscip_rd_char(mscip_reader_t *r, char *out);
+int mscip_rd_u8(mscip_reader_t *r, uint8_t *out);
+int mscip_rd_u16(mscip_reader_t *r, uint16_t *out);
+int mscip_rd_u32(mscip_reader_t *r, uint32_t *out);
+int mscip_rd_u64(mscip_reader_t *r, uint64_t *out);
+int mscip_rd_s8(mscip_reader_t *r, int8_t *out);
+int mscip_rd_s16(mscip_reader_t *r, int16_t *out);
+int mscip_rd_s32(mscip_reader_t *r, int32_t *out);
+int mscip_rd_s64(mscip_reader_t *r, int64_t *out);
+int mscip_rd_f32(mscip_reader_t *r, float *out);
+int mscip_rd_f64(mscip_reader_t *r, double *out);
+/* A string of exactly n bytes, kept verbatim. */
+int mscip_rd_chars(mscip_reader_t *r, char *out, size_t n);
+/* A `remaining` array of fixed-size elements: the element count, checked against max. */
+int mscip_rd_remaining(mscip_reader_t *r, size_t elem_size, uint64_t max, size_t *count);
+/* Errors raised by generated code. */
+int mscip_rd_count_error(mscip_reader_t *r, uint64_t count, uint64_t max);
+int mscip_rd_selector_error_u(mscip_reader_t *r, uint64_t value);
+int mscip_rd_selector_error_s(mscip_reader_t *r, int64_t value);
+/* After the last parameter: leftover bytes are an error. */
+int mscip_rd_finish(mscip_reader_t *r);
+
+/* Writes field data into a bounded buffer; functions return MSCIP_OK or MSCIP_ERR_BUFFER. */
+typedef struct {
+    uint8_t *buf;
+    size_t cap;
+    size_t len;
+} mscip_writer_t;
+
+void mscip_writer_init(mscip_writer_t *w, uint8_t *buf, size_t cap);
+
+mscip_status_t mscip_wr_bool(mscip_writer_t *w, const bool *v);
+mscip_status_t mscip_wr_char(mscip_writer_t *w, const char *v);
+mscip_status_t mscip_wr_u8(mscip_writer_t *w, const uint8_t *v);
+mscip_status_t mscip_wr_u16(mscip_writer_t *w, const uint16_t *v);
+mscip_status_t mscip_wr_u32(mscip_writer_t *w, const uint32_t *v);
+mscip_status_t mscip_wr_u64(mscip_writer_t *w, const uint64_t *v);
+mscip_status_t mscip_wr_s8(mscip_writer_t *w, const int8_t *v);
+mscip_status_t mscip_wr_s16(mscip_writer_t *w, const int16_t *v);
+mscip_status_t mscip_wr_s32(mscip_writer_t *w, const int32_t *v);
+mscip_status_t mscip_wr_s64(mscip_writer_t *w, const int64_t *v);
+mscip_status_t mscip_wr_f32(mscip_writer_t *w, const float *v);
+mscip_status_t mscip_wr_f64(mscip_writer_t *w, const double *v);
+mscip_status_t mscip_wr_chars(mscip_writer_t *w, const char *v, size_t n);
+
+#endif

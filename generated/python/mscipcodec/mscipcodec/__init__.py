@@ -1,0 +1,82 @@
+"""Memsense MS-CIP: typed encoder/decoder generated from the protocol spec.
+
+Modules: one per descriptor set (base, imu_config, imu_data) holding a
+dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);
+`reserved` (fields reserved in every set of a kind); `framing` (checksum, packet builder, stream
+parser, field splitter); `packets` (dispatch and canonical JSON lines); `samples` (continuation
+packets grouped by shared timestamp); `cli` (decode/encode).
+
+    from mscipcodec import Parser, PacketBuilder, decode_packet
+    for event in Parser().feed(data):
+        ...
+"""
+
+from . import base, imu_config, imu_data, reserved, types
+from .canonical import NaN
+from .codec import DecodeError, EncodeError, Field, Layout, Struct
+from .framing import (
+    FramingError,
+    PacketBuilder,
+    Parser,
+    RawPacket,
+    Skip,
+    build_packet,
+    checksum_bytes,
+    fletcher16,
+    iter_fields,
+    parse,
+)
+from .packets import (
+    DecodedField,
+    Packet,
+    RawField,
+    Trailing,
+    decode_bytes,
+    decode_field,
+    decode_packet,
+    decode_stream,
+    encode_line,
+    encode_lines,
+)
+from .registry import DEVICES, lookup
+from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+
+__all__ = [
+    "base",
+    "imu_config",
+    "imu_data",
+    "reserved",
+    "types",
+    "NaN",
+    "DecodeError",
+    "EncodeError",
+    "Field",
+    "Layout",
+    "Struct",
+    "FramingError",
+    "PacketBuilder",
+    "Parser",
+    "RawPacket",
+    "Skip",
+    "build_packet",
+    "checksum_bytes",
+    "fletcher16",
+    "iter_fields",
+    "parse",
+    "DecodedField",
+    "Packet",
+    "RawField",
+    "Trailing",
+    "decode_bytes",
+    "decode_field",
+    "decode_packet",
+    "decode_stream",
+    "encode_line",
+    "encode_lines",
+    "DEVICES",
+    "lookup",
+    "Sample",
+    "SampleGrouper",
+    "SampleTracker",
+    "sample_key",
+]

@@ -1,0 +1,295 @@
+"""Framing of the Memsense MS-CIP: constants, Fletcher-16, packet builder, stream parser, field splitter.
+
+The constants are rendered from the IR (protocols[].framing); the code below them is the same for
+every protocol and follows docs/conformance.md sections 1 and 2.
+"""
+
+from __future__ import annotations
+
+from operator import mul
+from typing import Any, Iterator, List, Union
+
+# ----------------------------------------------------------------------------------- constants
+SYNC = b"\xa5\xa5"
+HEADER_SIZE = 4  # sync bytes + set + payload length
+SET_OFFSET = 2
+LENGTH_OFFSET = 3
+FIELD_HEADER_SIZE = 2
+FIELD_LENGTH_OFFSET = 1
+FIELD_DESCRIPTOR_OFFSET = 0
+FIELD_LENGTH_COUNTS_HEADER = False
+FIELD_LENGTH_ADJUST = 0  # field length byte - data length
+MAX_PAYLOAD = 255
+MAX_PACKET = 261
+MAX_FIELD_DATA = 253
+CHECKSUM_SIZE = 2
+CHECKSUM_SUM1_FIRST = True  # Fletcher-16 bytes on the wire: sum1 then sum2 when True
+
+
+class FramingError(ValueError):
+    """A packet or field that does not fit the framing (too long)."""
+
+
+# ----------------------------------------------------------------------------------- checksum
+def fletcher16(data: Any) -> int:
+    """Fletcher-16 (mod 256) of `data` as (sum1 << 8) | sum2."""
+    n = len(data)
+    sum1 = sum(data) & 0xFF
+    sum2 = sum(map(mul, data, range(n, 0, -1))) & 0xFF
+    return (sum1 << 8) | sum2
+
+
+def checksum_bytes(data: Any) -> bytes:
+    """The two checksum bytes of `data` in wire order."""
+    c = fletcher16(data)
+    sum1, sum2 = c >> 8, c & 0xFF
+    return bytes((sum1, sum2) if CHECKSUM_SUM1_FIRST else (sum2, sum1))
+
+
+# ----------------------------------------------------------------------------------- builder
+class PacketBuilder:
+    """Builds one packet: fields (header + data) appended to a bounded payload, then length and checksum."""
+
+    def __init__(self, set_id: int) -> None:
+        if not 0 <= set_id <= 0xFF:
+            raise FramingError(f"descriptor set {set_id} is not a byte")
+        self.set = set_id
+        self.payload = bytearray()
+
+    def add(self, value: Any) -> PacketBuilder:
+        """Append a typed field value (anything with DESCRIPTOR and encode())."""
+        return self.add_field(value.DESCRIPTOR, value.encode())
+
+    def add_field(self, descriptor: int, data: Any) -> PacketBuilder:
+        """Append a field from its descriptor and data bytes."""
+        if not 0 <= descriptor <= 0xFF:
+            raise FramingError(f"descriptor {descriptor} is not a byte")
+        length = len(data) + FIELD_LENGTH_ADJUST
+        if length > 0xFF:
+            raise FramingError(
+                f"field data of {len(data)} bytes is longer than the maximum {0xFF - FIELD_LENGTH_ADJUST}"
+            )
+        header = bytearray(FIELD_HEADER_SIZE)
+        header[FIELD_LENGTH_OFFSET] = length
+        header[FIELD_DESCRIPTOR_OFFSET] = descriptor
+        return self.add_bytes(bytes(header) + bytes(data))
+
+    def add_bytes(self, raw: Any) -> PacketBuilder:
+        """Append raw payload bytes (e.g. a trailing entry)."""
+        if len(self.payload) + len(raw) > MAX_PAYLOAD:
+            raise FramingError(
+                f"payload of {len(self.payload) + len(raw)} bytes is longer than the maximum {MAX_PAYLOAD}"
+            )
+        self.payload += raw
+        return self
+
+    def build(self) -> bytes:
+        """The complete packet: sync, header, payload, checksum."""
+        header = bytearray(HEADER_SIZE)
+        header[: len(SYNC)] = SYNC
+        header[SET_OFFSET] = self.set
+        header[LENGTH_OFFSET] = len(self.payload)
+        body = bytes(header) + bytes(self.payload)
+        return body + checksum_bytes(body)
+
+
+def build_packet(set_id: int, *values: Any) -> bytes:
+    """A packet holding the given typed field values."""
+    b = PacketBuilder(set_id)
+    for v in values:
+        b.add(v)
+    return b.build()
+
+
+# ----------------------------------------------------------------------------------- parser
+class RawPacket:
+    """A complete packet with a valid checksum found at `offset` in the stream."""
+
+    __slots__ = ("offset", "data")
+
+    def __init__(self, offset: int, data: bytes) -> None:
+        self.offset = offset
+        self.data = data
+
+    @property
+    def set(self) -> int:
+        return self.data[SET_OFFSET]
+
+    @property
+    def payload(self) -> bytes:
+        return self.data[HEADER_SIZE:-CHECKSUM_SIZE]
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, RawPacket) and (other.offset, other.data) == (self.offset, self.data)
+
+    def __repr__(self) -> str:
+        return f"RawPacket(offset={self.offset}, data={self.data.hex()})"
+
+
+class Skip:
+    """A maximal run of skipped bytes (no packet there) starting at `offset` in the stream."""
+
+    __slots__ = ("offset", "data")
+
+    def __init__(self, offset: int, data: bytes) -> None:
+        self.offset = offset
+        self.data = data
+
+    @property
+    def count(self) -> int:
+        return len(self.data)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Skip) and (other.offset, other.data) == (self.offset, self.data)
+
+    def __repr__(self) -> str:
+        return f"Skip(offset={self.offset}, data={self.data.hex()})"
+
+
+Event = Union[RawPacket, Skip]
+
+
+def _checksum_ok(buf: bytearray, i: int, body: int) -> bool:
+    return checksum_bytes(memoryview(buf)[i : i + body]) == buf[i + body : i + body + CHECKSUM_SIZE]
+
+
+class Parser:
+    """Streaming parser (docs/conformance.md section 1): feed(bytes) -> events, flush() at end of input.
+
+    The events do not depend on how the input is split into chunks. Skip runs are merged and
+    reported just before the next packet or at flush.
+    """
+
+    def __init__(self) -> None:
+        self._buf = bytearray()
+        self._base = 0  # stream offset of _buf[0]
+        self._skip = bytearray()
+        self._skip_at = 0
+
+    def feed(self, data: Any) -> List[Event]:
+        """Consume more input; returns the events it completes."""
+        self._buf += data
+        return self._scan(final=False)
+
+    def flush(self) -> List[Event]:
+        """End of input: every byte that cannot be part of a complete packet is skipped."""
+        events = self._scan(final=True)
+        if self._skip:
+            events.append(Skip(self._skip_at, bytes(self._skip)))
+            self._skip = bytearray()
+        return events
+
+    def _skipped(self, a: int, b: int) -> None:
+        if not self._skip:
+            self._skip_at = self._base + a
+        self._skip += self._buf[a:b]
+
+    def _scan(self, final: bool) -> List[Event]:
+        buf = self._buf
+        n = len(buf)
+        pos = 0
+        events: List[Event] = []
+        sync_len = len(SYNC)
+        while pos < n:
+            i = buf.find(SYNC, pos)
+            if i < 0:
+                # Keep a partial sync sequence at the very end (unless this is the end of input).
+                keep = n
+                if not final:
+                    for j in range(max(pos, n - sync_len + 1), n):
+                        if buf[j:] == SYNC[: n - j]:
+                            keep = j
+                            break
+                if keep > pos:
+                    self._skipped(pos, keep)
+                pos = keep
+                break
+            if i > pos:
+                self._skipped(pos, i)
+            length = buf[i + LENGTH_OFFSET] if n - i >= HEADER_SIZE else -1
+            if 0 <= length <= MAX_PAYLOAD:
+                body = HEADER_SIZE + length
+                total = body + CHECKSUM_SIZE
+                if n - i >= total:
+                    if _checksum_ok(buf, i, body):
+                        if self._skip:
+                            events.append(Skip(self._skip_at, bytes(self._skip)))
+                            self._skip = bytearray()
+                        events.append(RawPacket(self._base + i, bytes(buf[i : i + total])))
+                        pos = i + total
+                        continue
+                elif not final:
+                    pos = i  # wait for the rest of the packet
+                    break
+            elif length < 0 and not final:
+                pos = i  # wait for the rest of the header
+                break
+            # A false sync (bad length or checksum, or incomplete at end of input): skip one byte.
+            self._skipped(i, i + 1)
+            pos = i + 1
+        del buf[:pos]
+        self._base += pos
+        return events
+
+
+def parse(data: Any) -> List[Event]:
+    """All events of a complete stream."""
+    p = Parser()
+    return p.feed(data) + p.flush()
+
+
+# ----------------------------------------------------------------------------------- fields
+class FieldBytes:
+    """One complete field of a payload: descriptor and data (after the field header)."""
+
+    __slots__ = ("offset", "descriptor", "data")
+
+    def __init__(self, offset: int, descriptor: int, data: bytes) -> None:
+        self.offset = offset
+        self.descriptor = descriptor
+        self.data = data
+
+    def __repr__(self) -> str:
+        return f"FieldBytes(offset={self.offset}, descriptor=0x{self.descriptor:02X}, data={self.data.hex()})"
+
+
+class TrailingBytes:
+    """The rest of a payload that does not form a field, with the reason (section 2)."""
+
+    __slots__ = ("offset", "data", "error")
+
+    def __init__(self, offset: int, data: bytes, error: str) -> None:
+        self.offset = offset
+        self.data = data
+        self.error = error
+
+    def __repr__(self) -> str:
+        return f"TrailingBytes(offset={self.offset}, data={self.data.hex()}, error={self.error!r})"
+
+
+def iter_fields(payload: Any) -> Iterator[Union[FieldBytes, TrailingBytes]]:
+    """Split a payload into fields; framing problems end it with a TrailingBytes entry."""
+    payload = bytes(payload)
+    n = len(payload)
+    o = 0
+    while o < n:
+        r = n - o
+        if r < FIELD_HEADER_SIZE:
+            yield TrailingBytes(
+                o, payload[o:], f"field header at payload offset {o} needs {FIELD_HEADER_SIZE} bytes, {r} left"
+            )
+            return
+        length = payload[o + FIELD_LENGTH_OFFSET]
+        if FIELD_LENGTH_COUNTS_HEADER and length < FIELD_HEADER_SIZE:
+            yield TrailingBytes(
+                o, payload[o:], f"field length {length} at payload offset {o} is shorter than the field header"
+            )
+            return
+        size = FIELD_HEADER_SIZE + length - FIELD_LENGTH_ADJUST
+        if size > r:
+            yield TrailingBytes(
+                o, payload[o:], f"field length {length} at payload offset {o} overruns the payload ({r} bytes left)"
+            )
+            return
+        yield FieldBytes(o, payload[o + FIELD_DESCRIPTOR_OFFSET], payload[o + FIELD_HEADER_SIZE : o + size])
+        o += size

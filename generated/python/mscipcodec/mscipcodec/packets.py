@@ -1,0 +1,299 @@
+"""Packets: payload -> typed fields (docs/conformance.md section 2), canonical JSON lines, and back.
+
+`decode_packet` splits a packet into fields and decodes each by (set, descriptor) through the
+registry; `packet_line` / `decode_stream` print the canonical JSON lines; `encode_line` turns one
+such line back into bytes (the encode CLI).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Iterable, List, Optional, Union
+
+from . import registry
+from .canonical import JsonError, error_text, hex_bytes, loads, skip_line
+from .codec import DecodeError, EncodeError, Field
+from .framing import (
+    CHECKSUM_SIZE,
+    HEADER_SIZE,
+    SET_OFFSET,
+    FramingError,
+    PacketBuilder,
+    Parser,
+    RawPacket,
+    Skip,
+    TrailingBytes,
+    iter_fields,
+)
+
+
+class DecodedField:
+    """A field decoded into its typed value (value.NAME, value.DEVICE, ...)."""
+
+    __slots__ = ("descriptor", "value")
+
+    def __init__(self, descriptor: int, value: Field) -> None:
+        self.descriptor = descriptor
+        self.value = value
+
+    @property
+    def name(self) -> str:
+        return self.value.NAME
+
+    def line(self) -> str:
+        v = self.value
+        device = f',"device":"{v.DEVICE}"' if v.DEVICE is not None else ""
+        return (
+            '{"descriptor":'
+            + str(self.descriptor)
+            + ',"name":"'
+            + v.NAME
+            + '"'
+            + device
+            + ',"values":'
+            + v.to_json()
+            + "}"
+        )
+
+    def __repr__(self) -> str:
+        return f"DecodedField({self.value!r})"
+
+
+class RawField:
+    """A field that could not be decoded: its descriptor, data and the reason."""
+
+    __slots__ = ("descriptor", "data", "error")
+
+    def __init__(self, descriptor: int, data: bytes, error: str) -> None:
+        self.descriptor = descriptor
+        self.data = data
+        self.error = error
+
+    def line(self) -> str:
+        return (
+            '{"descriptor":'
+            + str(self.descriptor)
+            + ',"data":"'
+            + self.data.hex()
+            + '","error":'
+            + error_text(self.error)
+            + "}"
+        )
+
+    def __repr__(self) -> str:
+        return f"RawField(descriptor=0x{self.descriptor:02X}, data={self.data.hex()}, error={self.error!r})"
+
+
+class Trailing:
+    """Payload bytes after the last complete field, with the framing problem."""
+
+    __slots__ = ("data", "error")
+
+    def __init__(self, data: bytes, error: str) -> None:
+        self.data = data
+        self.error = error
+
+    def line(self) -> str:
+        return '{"trailing":"' + self.data.hex() + '","error":' + error_text(self.error) + "}"
+
+    def __repr__(self) -> str:
+        return f"Trailing(data={self.data.hex()}, error={self.error!r})"
+
+
+Entry = Union[DecodedField, RawField, Trailing]
+
+
+class Packet:
+    """A decoded packet: stream offset, descriptor set and its field entries in payload order."""
+
+    __slots__ = ("offset", "set", "fields")
+
+    def __init__(self, offset: int, set_id: int, fields: List[Entry]) -> None:
+        self.offset = offset
+        self.set = set_id
+        self.fields = fields
+
+    def line(self) -> str:
+        """The canonical JSON line of the packet."""
+        inner = ",".join(f.line() for f in self.fields)
+        return '{"offset":' + str(self.offset) + ',"set":' + str(self.set) + ',"fields":[' + inner + "]}"
+
+    def values(self) -> List[Field]:
+        """The typed values of the decoded fields."""
+        return [f.value for f in self.fields if isinstance(f, DecodedField)]
+
+    def __repr__(self) -> str:
+        return f"Packet(offset={self.offset}, set=0x{self.set:02X}, fields={self.fields!r})"
+
+
+def decode_field(set_id: int, descriptor: int, data: bytes, device: Optional[str] = None) -> Entry:
+    """Decode one field by (set, descriptor) with the dispatch rules of section 2."""
+    classes = registry.lookup(set_id, descriptor)
+    if classes is None:
+        error = "unknown descriptor" if set_id in registry.SET_NAMES else "unknown descriptor set"
+        return RawField(descriptor, data, error)
+    if device is not None and len(classes) > 1:
+        chosen = tuple(c for c in classes if c.DEVICE == device)
+        classes = chosen or classes
+    first_error = None
+    for cls in classes:
+        try:
+            return DecodedField(descriptor, cls.decode(data))
+        except DecodeError as e:
+            if first_error is None:
+                first_error = str(e)
+    return RawField(descriptor, data, first_error or "")
+
+
+def decode_packet(packet: Any, offset: int = 0, device: Optional[str] = None) -> Packet:
+    """Decode a complete packet (as found by the Parser) into typed fields."""
+    packet = bytes(packet)
+    set_id = packet[SET_OFFSET]
+    fields: List[Entry] = []
+    for f in iter_fields(packet[HEADER_SIZE:-CHECKSUM_SIZE]):
+        if isinstance(f, TrailingBytes):
+            fields.append(Trailing(f.data, f.error))
+        else:
+            fields.append(decode_field(set_id, f.descriptor, f.data, device))
+    return Packet(offset, set_id, fields)
+
+
+def event_line(event: Union[RawPacket, Skip], device: Optional[str] = None) -> str:
+    """The canonical JSON line of a parser event."""
+    if isinstance(event, Skip):
+        return skip_line(event.offset, event.data)
+    return decode_packet(event.data, event.offset, device).line()
+
+
+def decode_stream(chunks: Iterable[Any], device: Optional[str] = None) -> Iterable[str]:
+    """Canonical JSON lines of a byte stream given as chunks of any size."""
+    parser = Parser()
+    for chunk in chunks:
+        for event in parser.feed(chunk):
+            yield event_line(event, device)
+    for event in parser.flush():
+        yield event_line(event, device)
+
+
+def decode_bytes(data: Any, device: Optional[str] = None) -> List[str]:
+    """Canonical JSON lines of a complete byte stream."""
+    return list(decode_stream([data], device))
+
+
+# ----------------------------------------------------------------------------------- encode
+def _keys(obj: dict, required: Iterable[str], optional: Iterable[str], what: str) -> None:
+    allowed = set(required) | set(optional)
+    for k in required:
+        if k not in obj:
+            raise EncodeError(f"{what}: missing {k!r}")
+    for k in obj:
+        if k not in allowed:
+            raise EncodeError(f"{what}: unknown key {k!r}")
+
+
+def _byte(obj: dict, key: str, what: str) -> int:
+    v = obj[key]
+    if type(v) is not int or not 0 <= v <= 0xFF:
+        raise EncodeError(f"{what}: {key} must be an integer 0..255")
+    return v
+
+
+def _field_bytes(set_id: int, entry: Any, what: str) -> tuple:
+    """(descriptor, data) or (None, raw payload bytes) of one field entry of a packet line."""
+    if not isinstance(entry, dict):
+        raise EncodeError(f"{what}: expected an object")
+    if "trailing" in entry:
+        _keys(entry, ("trailing", "error"), (), what)
+        return None, hex_bytes(entry["trailing"], f"{what}: trailing")
+    if "data" in entry:
+        _keys(entry, ("descriptor", "data", "error"), (), what)
+        if not isinstance(entry["error"], str):
+            raise EncodeError(f"{what}: error must be a string")
+        return _byte(entry, "descriptor", what), hex_bytes(entry["data"], f"{what}: data")
+    _keys(entry, ("descriptor", "name", "values"), ("device",), what)
+    descriptor = _byte(entry, "descriptor", what)
+    classes = registry.lookup(set_id, descriptor)
+    if classes is None:
+        raise EncodeError(f"{what}: no field with descriptor {descriptor} in set {set_id}")
+    name = entry["name"]
+    if name != classes[0].NAME:
+        raise EncodeError(f"{what}: descriptor {descriptor} in set {set_id} is {classes[0].NAME!r}, not {name!r}")
+    device = entry.get("device")
+    if len(classes) > 1:
+        match = [c for c in classes if c.DEVICE == device]
+        if not match:
+            devices = ", ".join(c.DEVICE for c in classes)
+            raise EncodeError(f"{what}: {name} has per-device layouts; 'device' must be one of {devices}")
+        cls = match[0]
+    else:
+        if "device" in entry:
+            raise EncodeError(f"{what}: {name} has a single layout; 'device' does not apply")
+        cls = classes[0]
+    value = cls.from_json(entry["values"], f"{what}: values.")
+    try:
+        return descriptor, value.encode()
+    except EncodeError as e:
+        raise EncodeError(f"{what}: values.{e}") from None
+
+
+def encode_value(obj: Any) -> bytes:
+    """Bytes of one parsed canonical JSON line (a packet or a skip run)."""
+    if not isinstance(obj, dict):
+        raise EncodeError("expected a JSON object")
+    if "skipped" in obj:
+        _keys(obj, ("offset", "skipped"), (), "skip run")
+        if type(obj["offset"]) is not int or obj["offset"] < 0:
+            raise EncodeError("skip run: offset must be a non-negative integer")
+        return hex_bytes(obj["skipped"], "skip run: skipped")
+    _keys(obj, ("offset", "set", "fields"), (), "packet")
+    if type(obj["offset"]) is not int or obj["offset"] < 0:
+        raise EncodeError("packet: offset must be a non-negative integer")
+    set_id = _byte(obj, "set", "packet")
+    if not isinstance(obj["fields"], list):
+        raise EncodeError("packet: fields must be an array")
+    builder = PacketBuilder(set_id)
+    for k, entry in enumerate(obj["fields"]):
+        what = f"fields[{k}]"
+        descriptor, data = _field_bytes(set_id, entry, what)
+        try:
+            if descriptor is None:
+                builder.add_bytes(data)
+            else:
+                builder.add_field(descriptor, data)
+        except FramingError as e:
+            raise EncodeError(f"{what}: {e}") from None
+    return builder.build()
+
+
+def encode_line(text: str) -> bytes:
+    """Bytes of one canonical JSON line; raises EncodeError (or JsonError) naming what is wrong."""
+    if not text.strip():
+        raise EncodeError("empty line (expected a JSON object)")
+    try:
+        obj = loads(text)
+    except JsonError as e:
+        raise EncodeError(str(e)) from None
+    try:
+        return encode_value(obj)
+    except JsonError as e:
+        raise EncodeError(str(e)) from None
+
+
+def encode_lines(lines: Iterable[str]) -> bytes:
+    """Bytes of several canonical JSON lines (raises on the first bad line)."""
+    return b"".join(encode_line(line) for line in lines)
+
+
+__all__ = [
+    "DecodedField",
+    "RawField",
+    "Trailing",
+    "Packet",
+    "decode_field",
+    "decode_packet",
+    "decode_stream",
+    "decode_bytes",
+    "event_line",
+    "encode_line",
+    "encode_lines",
+    "encode_value",
+]

@@ -1,0 +1,147 @@
+//! A packet's set and payload, and the field iterator (`docs/conformance.md` §2).
+
+use core::fmt;
+
+use crate::framing::{
+    FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST, FIELD_LENGTH_COUNTS_HEADER,
+    FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET,
+};
+
+/// A complete packet as the parser reports it (sync to checksum).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Packet<'a> {
+    bytes: &'a [u8],
+}
+
+impl<'a> Packet<'a> {
+    /// Wraps the bytes of a packet whose framing and checksum were checked (by the parser or
+    /// the builder). Returns `None` if `bytes` is shorter than its header says.
+    pub fn new(bytes: &'a [u8]) -> Option<Self> {
+        if bytes.len() < HEADER_SIZE
+            || bytes.len() < HEADER_SIZE + usize::from(bytes[LENGTH_OFFSET])
+        {
+            return None;
+        }
+        Some(Self { bytes })
+    }
+
+    /// All bytes of the packet.
+    pub fn bytes(&self) -> &'a [u8] {
+        self.bytes
+    }
+
+    /// Descriptor set.
+    pub fn set(&self) -> u8 {
+        self.bytes[SET_OFFSET]
+    }
+
+    /// Payload (the fields).
+    pub fn payload(&self) -> &'a [u8] {
+        &self.bytes[HEADER_SIZE..HEADER_SIZE + usize::from(self.bytes[LENGTH_OFFSET])]
+    }
+
+    /// The fields of the payload.
+    pub fn fields(&self) -> Fields<'a> {
+        Fields::new(self.payload())
+    }
+}
+
+/// A framing problem in the payload; the rest of the payload becomes a trailing entry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FramingError {
+    /// Fewer bytes left than a field header.
+    HeaderShort { offset: usize, left: usize },
+    /// A field length smaller than the field header it counts.
+    LengthShort { length: u8, offset: usize },
+    /// A field that runs past the payload.
+    Overrun {
+        length: u8,
+        offset: usize,
+        left: usize,
+    },
+}
+
+impl fmt::Display for FramingError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            FramingError::HeaderShort { offset, left } => {
+                write!(f, "field header at payload offset {offset} needs {FIELD_HEADER_SIZE} bytes, {left} left")
+            }
+            FramingError::LengthShort { length, offset } => {
+                write!(f, "field length {length} at payload offset {offset} is shorter than the field header")
+            }
+            FramingError::Overrun {
+                length,
+                offset,
+                left,
+            } => {
+                write!(f, "field length {length} at payload offset {offset} overruns the payload ({left} bytes left)")
+            }
+        }
+    }
+}
+
+/// One entry of a payload.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FieldItem<'a> {
+    /// A complete field: descriptor and data (after the field header).
+    Field { descriptor: u8, data: &'a [u8] },
+    /// The rest of the payload after a framing problem.
+    Trailing {
+        bytes: &'a [u8],
+        error: FramingError,
+    },
+}
+
+/// Iterator over the fields of a payload.
+#[derive(Clone, Debug)]
+pub struct Fields<'a> {
+    payload: &'a [u8],
+    pos: usize,
+}
+
+impl<'a> Fields<'a> {
+    /// Fields of `payload`.
+    pub const fn new(payload: &'a [u8]) -> Self {
+        Self { payload, pos: 0 }
+    }
+}
+
+impl<'a> Iterator for Fields<'a> {
+    type Item = FieldItem<'a>;
+
+    fn next(&mut self) -> Option<FieldItem<'a>> {
+        let offset = self.pos;
+        let left = self.payload.len() - offset;
+        if left == 0 {
+            return None;
+        }
+        let rest = &self.payload[offset..];
+        let trailing = |error| Some(FieldItem::Trailing { bytes: rest, error });
+        if left < FIELD_HEADER_SIZE {
+            self.pos = self.payload.len();
+            return trailing(FramingError::HeaderShort { offset, left });
+        }
+        let length = rest[FIELD_LENGTH_OFFSET];
+        let descriptor = rest[FIELD_DESCRIPTOR_OFFSET];
+        if FIELD_LENGTH_COUNTS_HEADER && usize::from(length) < FIELD_HEADER_SIZE {
+            self.pos = self.payload.len();
+            return trailing(FramingError::LengthShort { length, offset });
+        }
+        let data_len = usize::from(length) - FIELD_LENGTH_ADJUST;
+        let total = FIELD_HEADER_SIZE + data_len;
+        if total > left {
+            self.pos = self.payload.len();
+            return trailing(FramingError::Overrun {
+                length,
+                offset,
+                left,
+            });
+        }
+        self.pos += total;
+        Some(FieldItem::Field {
+            descriptor,
+            data: &rest[FIELD_HEADER_SIZE..total],
+        })
+    }
+}

@@ -1,0 +1,181 @@
+//! Stream parser (`docs/conformance.md` §1): finds packets in a byte stream fed in chunks of
+//! any size and reports the bytes between them as skip runs. The events do not depend on the
+//! chunking. State: one maximum packet (261 bytes) and a few counters.
+
+use crate::framing::{
+    checksum_bytes, CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, MAX_PAYLOAD, SYNC,
+};
+
+/// What the parser found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Event<'a> {
+    /// A maximal run of `count` skipped bytes starting at stream offset `offset`.
+    Skip { offset: u64, count: u64 },
+    /// A packet with a valid checksum at stream offset `offset`: sync to checksum.
+    Packet { offset: u64, bytes: &'a [u8] },
+}
+
+/// The stream parser.
+#[derive(Clone)]
+pub struct Parser {
+    buf: [u8; MAX_PACKET],
+    len: usize,
+    // Stream offset of buf[0].
+    base: u64,
+    skip_start: u64,
+    skip_count: u64,
+}
+
+impl Default for Parser {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+enum Sync {
+    // A full sync sequence at this index.
+    Full(usize),
+    // No full sync; bytes from this index may start one (wait for more input).
+    Partial(usize),
+}
+
+impl Parser {
+    /// A parser at stream offset 0.
+    pub const fn new() -> Self {
+        Self {
+            buf: [0; MAX_PACKET],
+            len: 0,
+            base: 0,
+            skip_start: 0,
+            skip_count: 0,
+        }
+    }
+
+    /// Stream offset of the next byte to be fed.
+    pub fn offset(&self) -> u64 {
+        self.base + self.len as u64
+    }
+
+    /// The earliest stream offset whose byte may still be reported (in a skip run or a packet).
+    /// A caller that keeps the input to print skipped bytes can drop everything before it.
+    pub fn retain_from(&self) -> u64 {
+        if self.skip_count > 0 {
+            self.skip_start
+        } else {
+            self.base
+        }
+    }
+
+    /// Feeds `data`; calls `on` for every event it completes.
+    pub fn feed<F: FnMut(Event<'_>)>(&mut self, mut data: &[u8], mut on: F) {
+        while !data.is_empty() {
+            let n = data.len().min(MAX_PACKET - self.len);
+            self.buf[self.len..self.len + n].copy_from_slice(&data[..n]);
+            self.len += n;
+            data = &data[n..];
+            self.process(&mut on, false);
+        }
+    }
+
+    /// End of input: the same search, but a candidate packet that would wait for more input is
+    /// a false sync (one byte skipped, search continues), so a packet behind a false sync whose
+    /// length runs past the end is still found. Reports the remaining events, including the
+    /// last skip run.
+    pub fn flush<F: FnMut(Event<'_>)>(&mut self, mut on: F) {
+        self.process(&mut on, true);
+        self.emit_skip(&mut on);
+    }
+
+    fn find_sync(&self) -> Sync {
+        let mut i = 0;
+        while i < self.len {
+            let n = (self.len - i).min(SYNC.len());
+            if self.buf[i..i + n] == SYNC[..n] {
+                if n == SYNC.len() {
+                    return Sync::Full(i);
+                }
+                return Sync::Partial(i);
+            }
+            i += 1;
+        }
+        Sync::Partial(self.len)
+    }
+
+    /// Runs the search of `docs/conformance.md` §1 over the buffered bytes. Where it would wait
+    /// for more input it returns, unless `at_end`: then the candidate's first byte is skipped.
+    fn process<F: FnMut(Event<'_>)>(&mut self, on: &mut F, at_end: bool) {
+        loop {
+            let start = match self.find_sync() {
+                Sync::Full(i) => i,
+                Sync::Partial(i) => {
+                    self.skip(i);
+                    if at_end && self.len > 0 {
+                        self.skip(1);
+                        continue;
+                    }
+                    return;
+                }
+            };
+            self.skip(start);
+            if self.len < HEADER_SIZE {
+                if at_end {
+                    self.skip(1);
+                    continue;
+                }
+                return;
+            }
+            let payload = usize::from(self.buf[LENGTH_OFFSET]);
+            if payload > MAX_PAYLOAD {
+                self.skip(1);
+                continue;
+            }
+            let total = HEADER_SIZE + payload + CHECKSUM_SIZE;
+            if self.len < total {
+                if at_end {
+                    self.skip(1);
+                    continue;
+                }
+                return;
+            }
+            let body = HEADER_SIZE + payload;
+            if checksum_bytes(&self.buf[..body]) == self.buf[body..total] {
+                self.emit_skip(on);
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: &self.buf[..total],
+                });
+                self.consume(total);
+            } else {
+                // The sync was false: resynchronise at the next byte.
+                self.skip(1);
+            }
+        }
+    }
+
+    fn skip(&mut self, n: usize) {
+        if n == 0 {
+            return;
+        }
+        if self.skip_count == 0 {
+            self.skip_start = self.base;
+        }
+        self.skip_count += n as u64;
+        self.consume(n);
+    }
+
+    fn consume(&mut self, n: usize) {
+        self.buf.copy_within(n..self.len, 0);
+        self.len -= n;
+        self.base += n as u64;
+    }
+
+    fn emit_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
+        if self.skip_count > 0 {
+            on(Event::Skip {
+                offset: self.skip_start,
+                count: self.skip_count,
+            });
+            self.skip_count = 0;
+        }
+    }
+}

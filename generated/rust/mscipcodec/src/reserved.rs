@@ -1,0 +1,163 @@
+//! Reserved fields (`protocols[].reserved_fields`): valid in every set of their kind, whether
+//! or not the spec defines the set.
+
+/// Ack. First field of every reply: the echoed message code of the command and an error code (0 when the command was received without error). Reserved in every command set.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ack {
+    /// Message code of the command being answered ("Message echo").
+    pub command_code: u8,
+    /// 0 when the command was received without error.
+    pub error_code: crate::types::ErrorCode,
+}
+
+impl Default for Ack {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for Ack {
+    const ZERO: Self = Self {
+        command_code: <u8 as crate::wire::Wire>::ZERO,
+        error_code: <crate::types::ErrorCode as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(2);
+
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_command_code =
+            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("command_code"))?;
+        let p_error_code = <crate::types::ErrorCode as crate::wire::Wire>::decode(r)
+            .map_err(|e| e.at("error_code"))?;
+        Ok(Self {
+            command_code: p_command_code,
+            error_code: p_error_code,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.command_code;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("command_code"))?;
+        let v = &self.error_code;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("error_code"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.command_code;
+        crate::json::key(w, &mut first, "command_code")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.error_code;
+        crate::json::key(w, &mut first, "error_code")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Ack {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["command_code", "error_code"])?;
+        let p_command_code = o.req(
+            "command_code",
+            <u8 as crate::json_read::FromJson>::from_json,
+        )?;
+        let p_error_code = o.req(
+            "error_code",
+            <crate::types::ErrorCode as crate::json_read::FromJson>::from_json,
+        )?;
+        Ok(Self {
+            command_code: p_command_code,
+            error_code: p_error_code,
+        })
+    }
+}
+
+impl crate::wire::Layout for Ack {
+    const DESCRIPTOR: u8 = 0x80;
+    const NAME: &'static str = "ack";
+}
+
+/// A decoded reserved field.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ReservedField {
+    /// `ack` (0x80).
+    Ack(Ack),
+}
+
+impl ReservedField {
+    /// Field descriptor.
+    pub fn descriptor(&self) -> u8 {
+        match self {
+            Self::Ack(_) => 0x80,
+        }
+    }
+
+    /// Field name as printed in JSON.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Ack(_) => "ack",
+        }
+    }
+
+    /// Device of the layout used, for fields with per-device layouts.
+    pub fn device(&self) -> Option<crate::Device> {
+        match self {
+            Self::Ack(_) => None,
+        }
+    }
+
+    /// Encodes the field data.
+    pub fn encode_data(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+    ) -> Result<(), crate::error::EncodeError> {
+        match self {
+            Self::Ack(v) => crate::wire::Layout::encode_data(v, w),
+        }
+    }
+
+    /// Writes the canonical JSON of the values (`{...}`).
+    pub fn write_values_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::Ack(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Decodes a reserved field of a set of kind `kind`; `None` if no reserved field applies.
+    pub fn decode(
+        kind: Option<crate::SetKind>,
+        descriptor: u8,
+        data: &[u8],
+    ) -> Option<Result<Self, crate::error::DecodeError>> {
+        match (kind, descriptor) {
+            (Some(crate::SetKind::Command), 0x80) => {
+                Some(<Ack as crate::wire::Layout>::decode_data(data).map(Self::Ack))
+            }
+            _ => None,
+        }
+    }
+
+    /// Reads the values of a reserved field; `None` if no reserved field applies.
+    #[cfg(feature = "std")]
+    pub fn from_json(
+        kind: Option<crate::SetKind>,
+        descriptor: u8,
+        device: Option<crate::Device>,
+        values: &crate::json_read::Json,
+    ) -> Option<Result<Self, crate::json_read::JsonError>> {
+        match (kind, descriptor) {
+            (Some(crate::SetKind::Command), 0x80) => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <Ack as crate::json_read::FromJson>::from_json(values)
+                            .map_err(|e| e.at("values"))
+                    })
+                    .map(Self::Ack),
+            ),
+            _ => None,
+        }
+    }
+}
