@@ -563,6 +563,7 @@ class _Proto:
             "field_descriptor_offset": f["field_descriptor_offset"],
             "field_length_counts_header": "true" if f["field_length_counts_header"] else "false",
             "field_length_adjust": f["field_length_adjust"],
+            "irregular_lengths": f["irregular_lengths"],
             "max_payload": f["max_payload"],
             "checksum_size": f["checksum_size"],
             "sum1_index": order.index("sum1"),

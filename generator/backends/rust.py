@@ -611,6 +611,7 @@ class _Protocol:
                 "field_descriptor_offset": f["field_descriptor_offset"],
                 "counts_header": "true" if f["field_length_counts_header"] else "false",
                 "field_length_adjust": f["field_length_adjust"],
+                "irregular_lengths": f["irregular_lengths"],
                 "max_field_data": f["max_field_data"],
                 "big_endian": "true" if proto["byte_order"] == "big" else "false",
                 "sum1_first": "true" if f["checksum"]["order"][0] == "sum1" else "false",

@@ -3,7 +3,8 @@
 
 #include <stdio.h>
 
-void mip_field_iter_init(mip_field_iter_t *it, const uint8_t *payload, size_t len) {
+void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const uint8_t *payload, size_t len) {
+    it->set = set;
     it->payload = payload;
     it->len = payload ? len : 0;
     it->pos = 0;
@@ -22,7 +23,7 @@ static bool trailing(mip_field_iter_t *it, mip_field_entry_t *entry, mip_trailin
 
 bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry) {
     size_t left = it->len - it->pos;
-    size_t length;
+    int data_len;
     size_t total;
     const uint8_t *head;
     if (left == 0) {
@@ -33,12 +34,13 @@ bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry) {
         return trailing(it, entry, MIP_TRAILING_SHORT_HEADER);
     }
     head = it->payload + it->pos;
-    length = head[MIP_FIELD_LENGTH_OFFSET];
     entry->length_byte = head[MIP_FIELD_LENGTH_OFFSET];
-    if (length < MIP_FIELD_HEADER_SIZE) {
+    data_len = (int)head[MIP_FIELD_LENGTH_OFFSET] -
+               mip_field_length_adjust(it->set, head[MIP_FIELD_DESCRIPTOR_OFFSET]);
+    if (data_len < 0) {
         return trailing(it, entry, MIP_TRAILING_SHORT_LENGTH);
     }
-    total = length;
+    total = MIP_FIELD_HEADER_SIZE + (size_t)data_len;
     if (total > left) {
         return trailing(it, entry, MIP_TRAILING_OVERRUN);
     }

@@ -54,6 +54,7 @@ void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t
     }
     memcpy(buf, mip_sync, MIP_SYNC_SIZE);
     buf[MIP_SET_OFFSET] = set;
+    b->set = set;
     buf[MIP_LENGTH_OFFSET] = 0;
     b->len = MIP_HEADER_SIZE;
 }
@@ -72,13 +73,18 @@ static mip_status_t reserve(mip_packet_builder_t *b, size_t n) {
 
 mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
                                   size_t data_len) {
+    int adjust = mip_field_length_adjust(b->set, descriptor);
     if (b->status == MIP_OK && data_len > MIP_MAX_FIELD_DATA) {
         b->status = MIP_ERR_TOO_LONG;
+    }
+    if (b->status == MIP_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
+        /* too long for the length byte, or shorter than an irregular field's size byte allows */
+        b->status = (int)data_len + adjust > 0xFF ? MIP_ERR_TOO_LONG : MIP_ERR_INVALID;
     }
     if (reserve(b, MIP_FIELD_HEADER_SIZE + data_len) != MIP_OK) {
         return b->status;
     }
-    b->buf[b->len + MIP_FIELD_LENGTH_OFFSET] = (uint8_t)(data_len + MIP_FIELD_LENGTH_ADJUST);
+    b->buf[b->len + MIP_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
     b->buf[b->len + MIP_FIELD_DESCRIPTOR_OFFSET] = descriptor;
     if (data_len > 0) {
         memcpy(b->buf + b->len + MIP_FIELD_HEADER_SIZE, data, data_len);

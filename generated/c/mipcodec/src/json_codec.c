@@ -88,7 +88,7 @@ size_t mip_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, 
     mip_jw_lit(&w, ",\"set\":");
     mip_jw_uint(&w, set);
     mip_jw_lit(&w, ",\"fields\":[");
-    mip_field_iter_init(&it, len >= MIP_HEADER_SIZE ? packet + MIP_HEADER_SIZE : NULL, payload);
+    mip_field_iter_init(&it, set, len >= MIP_HEADER_SIZE ? packet + MIP_HEADER_SIZE : NULL, payload);
     while (mip_field_iter_next(&it, &e)) {
         mip_jw_sep(&w, i++);
         field_json(&w, set, &e, device);

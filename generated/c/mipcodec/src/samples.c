@@ -53,7 +53,7 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     if (!payload) {
         return 0;
     }
-    mip_field_iter_init(&it, payload, plen);
+    mip_field_iter_init(&it, mip_packet_set(packet), payload, plen);
     while (mip_field_iter_next(&it, &e) && e.kind == MIP_ENTRY_FIELD && is_shared(e.descriptor)) {
         int t;
         for (t = 0; t < TIMESTAMPS; t++) {

@@ -189,7 +189,7 @@ TEST(FieldIterator, TrailingEntries) {
     mip_field_entry_t e;
     // one byte left: no room for a field header
     const uint8_t one[] = {0x07};
-    mip_field_iter_init(&it, one, sizeof one);
+    mip_field_iter_init(&it, 0x01, one, sizeof one);
     ASSERT_TRUE(mip_field_iter_next(&it, &e));
     EXPECT_EQ(e.kind, MIP_ENTRY_TRAILING);
     mip_trailing_format(&e, msg, sizeof msg);
@@ -201,7 +201,7 @@ TEST(FieldIterator, TrailingEntries) {
     two[MIP_FIELD_DESCRIPTOR_OFFSET] = 0x01;
     two[2 + MIP_FIELD_LENGTH_OFFSET] = 5 + MIP_FIELD_LENGTH_ADJUST;
     two[2 + MIP_FIELD_DESCRIPTOR_OFFSET] = 0x02;
-    mip_field_iter_init(&it, two, sizeof two);
+    mip_field_iter_init(&it, 0x01, two, sizeof two);
     ASSERT_TRUE(mip_field_iter_next(&it, &e));
     EXPECT_EQ(e.kind, MIP_ENTRY_FIELD);
     EXPECT_EQ(e.descriptor, 0x01);
@@ -215,7 +215,7 @@ TEST(FieldIterator, TrailingEntries) {
     // a length byte smaller than the field header it counts
     uint8_t short_len[3] = {0};
     short_len[MIP_FIELD_LENGTH_OFFSET] = 1;
-    mip_field_iter_init(&it, short_len, sizeof short_len);
+    mip_field_iter_init(&it, 0x01, short_len, sizeof short_len);
     ASSERT_TRUE(mip_field_iter_next(&it, &e));
     EXPECT_EQ(e.kind, MIP_ENTRY_TRAILING);
     EXPECT_EQ(e.length, 3u);

@@ -3,7 +3,8 @@
 
 #include <stdio.h>
 
-void mscip_field_iter_init(mscip_field_iter_t *it, const uint8_t *payload, size_t len) {
+void mscip_field_iter_init(mscip_field_iter_t *it, uint8_t set, const uint8_t *payload, size_t len) {
+    it->set = set;
     it->payload = payload;
     it->len = payload ? len : 0;
     it->pos = 0;
@@ -22,7 +23,7 @@ static bool trailing(mscip_field_iter_t *it, mscip_field_entry_t *entry, mscip_t
 
 bool mscip_field_iter_next(mscip_field_iter_t *it, mscip_field_entry_t *entry) {
     size_t left = it->len - it->pos;
-    size_t length;
+    int data_len;
     size_t total;
     const uint8_t *head;
     if (left == 0) {
@@ -33,9 +34,13 @@ bool mscip_field_iter_next(mscip_field_iter_t *it, mscip_field_entry_t *entry) {
         return trailing(it, entry, MSCIP_TRAILING_SHORT_HEADER);
     }
     head = it->payload + it->pos;
-    length = head[MSCIP_FIELD_LENGTH_OFFSET];
     entry->length_byte = head[MSCIP_FIELD_LENGTH_OFFSET];
-    total = MSCIP_FIELD_HEADER_SIZE + length;
+    data_len = (int)head[MSCIP_FIELD_LENGTH_OFFSET] -
+               mscip_field_length_adjust(it->set, head[MSCIP_FIELD_DESCRIPTOR_OFFSET]);
+    if (data_len < 0) {
+        return trailing(it, entry, MSCIP_TRAILING_SHORT_LENGTH);
+    }
+    total = MSCIP_FIELD_HEADER_SIZE + (size_t)data_len;
     if (total > left) {
         return trailing(it, entry, MSCIP_TRAILING_OVERRUN);
     }

@@ -54,6 +54,7 @@ void mscip_packet_begin(mscip_packet_builder_t *b, uint8_t *buf, size_t cap, uin
     }
     memcpy(buf, mscip_sync, MSCIP_SYNC_SIZE);
     buf[MSCIP_SET_OFFSET] = set;
+    b->set = set;
     buf[MSCIP_LENGTH_OFFSET] = 0;
     b->len = MSCIP_HEADER_SIZE;
 }
@@ -72,13 +73,18 @@ static mscip_status_t reserve(mscip_packet_builder_t *b, size_t n) {
 
 mscip_status_t mscip_packet_add_field(mscip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
                                       size_t data_len) {
+    int adjust = mscip_field_length_adjust(b->set, descriptor);
     if (b->status == MSCIP_OK && data_len > MSCIP_MAX_FIELD_DATA) {
         b->status = MSCIP_ERR_TOO_LONG;
+    }
+    if (b->status == MSCIP_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
+        /* too long for the length byte, or shorter than an irregular field's size byte allows */
+        b->status = (int)data_len + adjust > 0xFF ? MSCIP_ERR_TOO_LONG : MSCIP_ERR_INVALID;
     }
     if (reserve(b, MSCIP_FIELD_HEADER_SIZE + data_len) != MSCIP_OK) {
         return b->status;
     }
-    b->buf[b->len + MSCIP_FIELD_LENGTH_OFFSET] = (uint8_t)(data_len + MSCIP_FIELD_LENGTH_ADJUST);
+    b->buf[b->len + MSCIP_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
     b->buf[b->len + MSCIP_FIELD_DESCRIPTOR_OFFSET] = descriptor;
     if (data_len > 0) {
         memcpy(b->buf + b->len + MSCIP_FIELD_HEADER_SIZE, data, data_len);

@@ -89,7 +89,7 @@ size_t mscip_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset
     mscip_jw_lit(&w, ",\"set\":");
     mscip_jw_uint(&w, set);
     mscip_jw_lit(&w, ",\"fields\":[");
-    mscip_field_iter_init(&it, len >= MSCIP_HEADER_SIZE ? packet + MSCIP_HEADER_SIZE : NULL, payload);
+    mscip_field_iter_init(&it, set, len >= MSCIP_HEADER_SIZE ? packet + MSCIP_HEADER_SIZE : NULL, payload);
     while (mscip_field_iter_next(&it, &e)) {
         mscip_jw_sep(&w, i++);
         field_json(&w, set, &e, device);

@@ -47,7 +47,7 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
     if (!payload) {
         return 0;
     }
-    mscip_field_iter_init(&it, payload, plen);
+    mscip_field_iter_init(&it, mscip_packet_set(packet), payload, plen);
     while (mscip_field_iter_next(&it, &e) && e.kind == MSCIP_ENTRY_FIELD && is_shared(e.descriptor)) {
         (void)key;
         prefix = e.offset + MSCIP_FIELD_HEADER_SIZE + e.length;

@@ -189,7 +189,7 @@ TEST(FieldIterator, TrailingEntries) {
     mscip_field_entry_t e;
     // one byte left: no room for a field header
     const uint8_t one[] = {0x07};
-    mscip_field_iter_init(&it, one, sizeof one);
+    mscip_field_iter_init(&it, 0x01, one, sizeof one);
     ASSERT_TRUE(mscip_field_iter_next(&it, &e));
     EXPECT_EQ(e.kind, MSCIP_ENTRY_TRAILING);
     mscip_trailing_format(&e, msg, sizeof msg);
@@ -201,7 +201,7 @@ TEST(FieldIterator, TrailingEntries) {
     two[MSCIP_FIELD_DESCRIPTOR_OFFSET] = 0x01;
     two[2 + MSCIP_FIELD_LENGTH_OFFSET] = 5 + MSCIP_FIELD_LENGTH_ADJUST;
     two[2 + MSCIP_FIELD_DESCRIPTOR_OFFSET] = 0x02;
-    mscip_field_iter_init(&it, two, sizeof two);
+    mscip_field_iter_init(&it, 0x01, two, sizeof two);
     ASSERT_TRUE(mscip_field_iter_next(&it, &e));
     EXPECT_EQ(e.kind, MSCIP_ENTRY_FIELD);
     EXPECT_EQ(e.descriptor, 0x01);

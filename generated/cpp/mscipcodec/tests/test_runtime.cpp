@@ -250,7 +250,7 @@ TEST(Dispatch, ReadmeExampleShape) {
 
 TEST(Fields, TrailingMessages) {
     const std::uint8_t one[] = {0x05};
-    pkg::FieldIterator a(one, 1);
+    pkg::FieldIterator a(0x01, one, 1);
     pkg::FieldEntry e;
     ASSERT_TRUE(a.next(e));
     EXPECT_EQ(e.kind, pkg::FieldEntry::Kind::trailing);
@@ -260,13 +260,13 @@ TEST(Fields, TrailingMessages) {
     std::uint8_t two[2] = {};
     two[pkg::kFieldLengthOffset] = 200;
     two[pkg::kFieldDescriptorOffset] = 0x01;
-    pkg::FieldIterator b(two, 2);
+    pkg::FieldIterator b(0x01, two, 2);
     ASSERT_TRUE(b.next(e));
     EXPECT_STREQ(e.text().c_str(),
                  "field length 200 at payload offset 0 overruns the payload (2 bytes left)");
     if (pkg::kFieldLengthCountsHeader) {
         two[pkg::kFieldLengthOffset] = 1;
-        pkg::FieldIterator c(two, 2);
+        pkg::FieldIterator c(0x01, two, 2);
         ASSERT_TRUE(c.next(e));
         EXPECT_STREQ(e.text().c_str(), "field length 1 at payload offset 0 is shorter than the field header");
     }

@@ -38,10 +38,10 @@ TIMESTAMPS: Dict[int, int] = {0xD3: 12, 0xD5: 8, 0xD7: 10}
 MAX_KEY = 36
 
 
-def shared_prefix(payload: Any) -> Tuple[int, int]:
-    """(number of fields, bytes) of the leading shared run of a payload."""
+def shared_prefix(set_id: int, payload: Any) -> Tuple[int, int]:
+    """(number of fields, bytes) of the leading shared run of the payload of a packet of set `set_id`."""
     count = size = 0
-    for f in iter_fields(payload):
+    for f in iter_fields(set_id, payload):
         if not isinstance(f, FieldBytes) or f.descriptor < FIRST_SHARED:
             break
         count += 1
@@ -57,7 +57,7 @@ def sample_key(packet: Any) -> Optional[bytes]:
     payload = packet[HEADER_SIZE:-CHECKSUM_SIZE]
     key = bytearray()
     seen = set()
-    for f in iter_fields(payload):
+    for f in iter_fields(packet[SET_OFFSET], payload):
         if not isinstance(f, FieldBytes) or f.descriptor < FIRST_SHARED:
             break
         size = TIMESTAMPS.get(f.descriptor)
@@ -138,7 +138,7 @@ class SampleGrouper:
         set_id = decoded.set
         open_sample = self._open.get(set_id)
         if continues and open_sample is not None:
-            skip, _ = shared_prefix(data[HEADER_SIZE:-CHECKSUM_SIZE])
+            skip, _ = shared_prefix(data[SET_OFFSET], data[HEADER_SIZE:-CHECKSUM_SIZE])
             open_sample._continue(decoded, skip)
             return []
         # (A continuation whose first packets were already flushed starts a new Sample object

@@ -172,23 +172,23 @@ def field(descriptor, data):
 
 def test_field_iterator():
     payload = field(1, b"") + field(2, b"\x05\x06")
-    got = list(iter_fields(payload))
+    got = list(iter_fields(0x01, payload))
     assert [(f.offset, f.descriptor, f.data) for f in got] == [(0, 1, b""), (FIELD_HEADER_SIZE, 2, b"\x05\x06")]
 
 
 def test_field_iterator_errors():
     one = field(1, b"\x07")
-    (f, t) = list(iter_fields(one + b"\x09"))
+    (f, t) = list(iter_fields(0x01, one + b"\x09"))
     assert isinstance(t, TrailingBytes) and t.data == b"\x09"
     assert t.error == f"field header at payload offset {len(one)} needs 2 bytes, 1 left"
     over = field(2, b"\x01\x02\x03")[:-1]
-    (t,) = list(iter_fields(over))
+    (t,) = list(iter_fields(0x01, over))
     length = over[FIELD_LENGTH_OFFSET]
     assert t.error == f"field length {length} at payload offset 0 overruns the payload ({len(over)} bytes left)"
     if FIELD_LENGTH_COUNTS_HEADER:
         short = bytearray(field(3, b""))
         short[FIELD_LENGTH_OFFSET] = 1
-        (t,) = list(iter_fields(bytes(short)))
+        (t,) = list(iter_fields(0x01, bytes(short)))
         assert t.error == "field length 1 at payload offset 0 is shorter than the field header"
 
 

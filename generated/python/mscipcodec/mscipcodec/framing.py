@@ -24,6 +24,16 @@ MAX_PACKET = 261
 MAX_FIELD_DATA = 253
 CHECKSUM_SIZE = 2
 CHECKSUM_SUM1_FIRST = True  # Fletcher-16 bytes on the wire: sum1 then sum2 when True
+# Fields whose length byte differs from the rule above, (set, descriptor) -> extra adjustment
+# (the spec's length_byte_adjust).
+IRREGULAR_LENGTHS = {
+    (0x02, 0x05): -1,
+}
+
+
+def field_length_adjust(set_id: int, descriptor: int) -> int:
+    """Length byte - data length of field `descriptor` in a packet of descriptor set `set_id`."""
+    return FIELD_LENGTH_ADJUST + IRREGULAR_LENGTHS.get((set_id, descriptor), 0)
 
 
 class FramingError(ValueError):
@@ -64,10 +74,13 @@ class PacketBuilder:
         """Append a field from its descriptor and data bytes."""
         if not 0 <= descriptor <= 0xFF:
             raise FramingError(f"descriptor {descriptor} is not a byte")
-        length = len(data) + FIELD_LENGTH_ADJUST
+        adjust = field_length_adjust(self.set, descriptor)
+        length = len(data) + adjust
         if length > 0xFF:
+            raise FramingError(f"field data of {len(data)} bytes is longer than the maximum {0xFF - adjust}")
+        if length < 0:
             raise FramingError(
-                f"field data of {len(data)} bytes is longer than the maximum {0xFF - FIELD_LENGTH_ADJUST}"
+                f"field data of {len(data)} bytes is shorter than the minimum {-adjust} for descriptor 0x{descriptor:02x} of set 0x{self.set:02x}"
             )
         header = bytearray(FIELD_HEADER_SIZE)
         header[FIELD_LENGTH_OFFSET] = length
@@ -267,8 +280,8 @@ class TrailingBytes:
         return f"TrailingBytes(offset={self.offset}, data={self.data.hex()}, error={self.error!r})"
 
 
-def iter_fields(payload: Any) -> Iterator[Union[FieldBytes, TrailingBytes]]:
-    """Split a payload into fields; framing problems end it with a TrailingBytes entry."""
+def iter_fields(set_id: int, payload: Any) -> Iterator[Union[FieldBytes, TrailingBytes]]:
+    """Split the payload of a packet of set `set_id` into fields; framing problems end it with a TrailingBytes entry."""
     payload = bytes(payload)
     n = len(payload)
     o = 0
@@ -280,16 +293,18 @@ def iter_fields(payload: Any) -> Iterator[Union[FieldBytes, TrailingBytes]]:
             )
             return
         length = payload[o + FIELD_LENGTH_OFFSET]
-        if FIELD_LENGTH_COUNTS_HEADER and length < FIELD_HEADER_SIZE:
+        descriptor = payload[o + FIELD_DESCRIPTOR_OFFSET]
+        data_length = length - field_length_adjust(set_id, descriptor)
+        if data_length < 0:
             yield TrailingBytes(
                 o, payload[o:], f"field length {length} at payload offset {o} is shorter than the field header"
             )
             return
-        size = FIELD_HEADER_SIZE + length - FIELD_LENGTH_ADJUST
+        size = FIELD_HEADER_SIZE + data_length
         if size > r:
             yield TrailingBytes(
                 o, payload[o:], f"field length {length} at payload offset {o} overruns the payload ({r} bytes left)"
             )
             return
-        yield FieldBytes(o, payload[o + FIELD_DESCRIPTOR_OFFSET], payload[o + FIELD_HEADER_SIZE : o + size])
+        yield FieldBytes(o, descriptor, payload[o + FIELD_HEADER_SIZE : o + size])
         o += size

@@ -149,7 +149,7 @@ def decode_packet(packet: Any, offset: int = 0, device: Optional[str] = None) ->
     packet = bytes(packet)
     set_id = packet[SET_OFFSET]
     fields: List[Entry] = []
-    for f in iter_fields(packet[HEADER_SIZE:-CHECKSUM_SIZE]):
+    for f in iter_fields(set_id, packet[HEADER_SIZE:-CHECKSUM_SIZE]):
         if isinstance(f, TrailingBytes):
             fields.append(Trailing(f.data, f.error))
         else:

@@ -183,6 +183,8 @@ pub enum EncodeErrorKind {
     NoMember { value: i128 },
     /// An optional parameter is absent but a later one is present.
     OptionalGap { later: &'static str },
+    /// Field data shorter than an irregular field's size byte allows (`length_byte_adjust`).
+    TooShort { data_len: usize },
 }
 
 /// An encode error: what went wrong and the path of the value.
@@ -237,6 +239,12 @@ impl fmt::Display for EncodeError {
             }
             EncodeErrorKind::NoMember { value } => {
                 write!(f, "no member for selector value {value}")
+            }
+            EncodeErrorKind::TooShort { data_len } => {
+                write!(
+                    f,
+                    "field data of {data_len} bytes is too short for its size byte"
+                )
             }
             EncodeErrorKind::OptionalGap { later } => {
                 write!(

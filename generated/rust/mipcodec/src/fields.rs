@@ -3,8 +3,8 @@
 use core::fmt;
 
 use crate::framing::{
-    FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST, FIELD_LENGTH_COUNTS_HEADER,
-    FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET,
+    field_length_adjust, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_OFFSET,
+    HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET,
 };
 
 /// A complete packet as the parser reports it (sync to checksum).
@@ -42,7 +42,7 @@ impl<'a> Packet<'a> {
 
     /// The fields of the payload.
     pub fn fields(&self) -> Fields<'a> {
-        Fields::new(self.payload())
+        Fields::new(self.set(), self.payload())
     }
 }
 
@@ -96,14 +96,20 @@ pub enum FieldItem<'a> {
 /// Iterator over the fields of a payload.
 #[derive(Clone, Debug)]
 pub struct Fields<'a> {
+    set: u8,
     payload: &'a [u8],
     pos: usize,
 }
 
 impl<'a> Fields<'a> {
-    /// Fields of `payload`.
-    pub const fn new(payload: &'a [u8]) -> Self {
-        Self { payload, pos: 0 }
+    /// Fields of `payload`, the payload of a packet of descriptor set `set` (the set decides
+    /// irregular field lengths).
+    pub const fn new(set: u8, payload: &'a [u8]) -> Self {
+        Self {
+            set,
+            payload,
+            pos: 0,
+        }
     }
 }
 
@@ -124,11 +130,15 @@ impl<'a> Iterator for Fields<'a> {
         }
         let length = rest[FIELD_LENGTH_OFFSET];
         let descriptor = rest[FIELD_DESCRIPTOR_OFFSET];
-        if FIELD_LENGTH_COUNTS_HEADER && usize::from(length) < FIELD_HEADER_SIZE {
-            self.pos = self.payload.len();
-            return trailing(FramingError::LengthShort { length, offset });
-        }
-        let data_len = usize::from(length) - FIELD_LENGTH_ADJUST;
+        let data_len = match usize::try_from(
+            isize::from(length) - field_length_adjust(self.set, descriptor),
+        ) {
+            Ok(n) => n,
+            Err(_) => {
+                self.pos = self.payload.len();
+                return trailing(FramingError::LengthShort { length, offset });
+            }
+        };
         let total = FIELD_HEADER_SIZE + data_len;
         if total > left {
             self.pos = self.payload.len();

@@ -282,7 +282,7 @@ fn field_iterator_reports_framing_problems() {
     // A good empty field, then one byte.
     let mut payload = field_header(0x10, FIELD_LENGTH_ADJUST as u8).to_vec();
     payload.push(0xEE);
-    let items: Vec<_> = Fields::new(&payload).collect();
+    let items: Vec<_> = Fields::new(0x01, &payload).collect();
     assert_eq!(
         items[0],
         FieldItem::Field {
@@ -303,7 +303,7 @@ fn field_iterator_reports_framing_problems() {
     let length = (10 + FIELD_LENGTH_ADJUST) as u8;
     let mut payload = field_header(0x10, length).to_vec();
     payload.extend_from_slice(&[1, 2]);
-    let items: Vec<_> = Fields::new(&payload).collect();
+    let items: Vec<_> = Fields::new(0x01, &payload).collect();
     assert_eq!(items.len(), 1);
     let FieldItem::Trailing { bytes, error } = items[0] else {
         panic!("expected a trailing entry")
@@ -324,7 +324,7 @@ fn field_iterator_reports_framing_problems() {
 
     if FIELD_LENGTH_COUNTS_HEADER {
         let payload = field_header(0x10, 1);
-        let items: Vec<_> = Fields::new(&payload).collect();
+        let items: Vec<_> = Fields::new(0x01, &payload).collect();
         let FieldItem::Trailing { error, .. } = items[0] else {
             panic!("expected a trailing entry")
         };

@@ -3,7 +3,7 @@
 
 use crate::error::{EncodeError, EncodeErrorKind};
 use crate::framing::{
-    checksum_bytes, CHECKSUM_SIZE, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST,
+    checksum_bytes, field_length_adjust, CHECKSUM_SIZE, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE,
     FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD,
     SET_OFFSET, SYNC,
 };
@@ -53,7 +53,14 @@ impl PacketBuilder {
         let mut w = Writer::new(&mut self.buf[data_start..data_end]);
         encode(&mut w)?;
         let data_len = w.len();
-        self.buf[start + FIELD_LENGTH_OFFSET] = (data_len + FIELD_LENGTH_ADJUST) as u8;
+        let length = data_len as isize + field_length_adjust(self.set(), descriptor);
+        if length > 0xFF {
+            return Err(EncodeError::new(EncodeErrorKind::Overflow));
+        }
+        if length < 0 {
+            return Err(EncodeError::new(EncodeErrorKind::TooShort { data_len }));
+        }
+        self.buf[start + FIELD_LENGTH_OFFSET] = length as u8;
         self.buf[start + FIELD_DESCRIPTOR_OFFSET] = descriptor;
         self.len = data_start + data_len;
         Ok(())

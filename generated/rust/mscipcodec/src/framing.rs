@@ -28,6 +28,16 @@ pub const FIELD_DESCRIPTOR_OFFSET: usize = 0;
 pub const FIELD_LENGTH_COUNTS_HEADER: bool = false;
 /// What the field length byte adds to the length of the field data.
 pub const FIELD_LENGTH_ADJUST: usize = 0;
+/// Length byte minus data length of field `descriptor` in a packet of set `set`:
+/// [`FIELD_LENGTH_ADJUST`], except for the fields the spec marks with `length_byte_adjust`
+/// (1 in this protocol).
+#[inline]
+pub const fn field_length_adjust(set: u8, descriptor: u8) -> isize {
+    if set == 0x02 && descriptor == 0x05 {
+        return FIELD_LENGTH_ADJUST as isize + (-1);
+    }
+    FIELD_LENGTH_ADJUST as isize
+}
 /// Largest field data a single field can carry.
 pub const MAX_FIELD_DATA: usize = 253;
 /// Multi-byte values are big-endian.

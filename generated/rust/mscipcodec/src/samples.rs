@@ -166,8 +166,10 @@ mod grouper {
         /// its leading shared run (those are copies).
         pub fn fields(&self) -> impl Iterator<Item = FieldItem<'_>> + '_ {
             self.packets.iter().zip(&self.skip).flat_map(|(p, &skip)| {
-                let payload = Packet::new(p).map(|p| p.payload()).unwrap_or(&[]);
-                Fields::new(payload.get(skip..).unwrap_or(&[]))
+                let (set, payload) = Packet::new(p)
+                    .map(|p| (p.set(), p.payload()))
+                    .unwrap_or((0, &[]));
+                Fields::new(set, payload.get(skip..).unwrap_or(&[]))
             })
         }
     }

@@ -35,9 +35,11 @@ typedef struct {
     const uint8_t *payload;
     size_t len;
     size_t pos;
+    uint8_t set;
 } mip_field_iter_t;
 
-void mip_field_iter_init(mip_field_iter_t *it, const uint8_t *payload, size_t len);
+/** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths). */
+void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const uint8_t *payload, size_t len);
 /** Next entry: returns true and fills *entry, or false after the last one. */
 bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry);
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */

@@ -28,6 +28,15 @@ extern "C" {
 /* The field length byte counts the field header and the data:
  * data length = length byte - MIP_FIELD_LENGTH_ADJUST. */
 #define MIP_FIELD_LENGTH_ADJUST 2
+/*
+ * Length byte - data length of field (set, descriptor): MIP_FIELD_LENGTH_ADJUST, except for the
+ * fields the spec marks with length_byte_adjust (0 in this protocol).
+ */
+static inline int mip_field_length_adjust(uint8_t set, uint8_t descriptor) {
+    (void)set;
+    (void)descriptor;
+    return MIP_FIELD_LENGTH_ADJUST;
+}
 /* Largest data a single field can carry. */
 #define MIP_MAX_FIELD_DATA 253
 
@@ -58,6 +67,7 @@ typedef struct {
     size_t cap;
     size_t len;
     mip_status_t status;
+    uint8_t set;
 } mip_packet_builder_t;
 
 /** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */

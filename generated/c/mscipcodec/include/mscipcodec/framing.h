@@ -28,6 +28,16 @@ extern "C" {
 /* The field length byte counts only the data:
  * data length = length byte - MSCIP_FIELD_LENGTH_ADJUST. */
 #define MSCIP_FIELD_LENGTH_ADJUST 0
+/*
+ * Length byte - data length of field (set, descriptor): MSCIP_FIELD_LENGTH_ADJUST, except for the
+ * fields the spec marks with length_byte_adjust (1 in this protocol).
+ */
+static inline int mscip_field_length_adjust(uint8_t set, uint8_t descriptor) {
+    if (set == 0x02 && descriptor == 0x05) {
+        return MSCIP_FIELD_LENGTH_ADJUST + (-1);
+    }
+    return MSCIP_FIELD_LENGTH_ADJUST;
+}
 /* Largest data a single field can carry. */
 #define MSCIP_MAX_FIELD_DATA 253
 
@@ -58,6 +68,7 @@ typedef struct {
     size_t cap;
     size_t len;
     mscip_status_t status;
+    uint8_t set;
 } mscip_packet_builder_t;
 
 /** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */

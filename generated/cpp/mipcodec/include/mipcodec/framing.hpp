@@ -22,6 +22,13 @@ inline constexpr std::size_t kFieldDescriptorOffset = 1;
 inline constexpr bool kFieldLengthCountsHeader = true;
 /// Field data length = length byte - kFieldLengthAdjust.
 inline constexpr std::size_t kFieldLengthAdjust = 2;
+/// Length byte - data length of field (set, descriptor): kFieldLengthAdjust, except for the fields
+/// the spec marks with length_byte_adjust (0 in this protocol).
+constexpr int field_length_adjust(std::uint8_t set, std::uint8_t descriptor) {
+    (void)set;
+    (void)descriptor;
+    return static_cast<int>(kFieldLengthAdjust);
+}
 inline constexpr std::size_t kMaxPayload = 255;
 inline constexpr std::size_t kChecksumSize = 2;
 /// Positions of the two Fletcher-16 sums in the transmitted checksum.

@@ -59,8 +59,7 @@ class PacketBuilder {
         if (size > 0) {
             std::memcpy(f + kFieldHeaderSize, data, size);
         }
-        end_field(descriptor, size);
-        return EncodeError::none;
+        return end_field(descriptor, size);
     }
 
     /// Appends a typed field (any generated layout struct: uses T::kDescriptor).
@@ -74,8 +73,7 @@ class PacketBuilder {
         if (w.error() != EncodeError::none) {
             return fail(w.error());
         }
-        end_field(T::kDescriptor, w.size());
-        return EncodeError::none;
+        return end_field(T::kDescriptor, w.size());
     }
 
     /// Appends raw payload bytes (a trailing entry that is not a whole field).
@@ -122,11 +120,19 @@ class PacketBuilder {
         const std::size_t room = kMaxPayload - payload_size_ - kFieldHeaderSize;
         return room < kMaxFieldData ? room : kMaxFieldData;
     }
-    void end_field(std::uint8_t descriptor, std::size_t data_size) {
+    EncodeError end_field(std::uint8_t descriptor, std::size_t data_size) {
+        const int length = static_cast<int>(data_size) + field_length_adjust(set_, descriptor);
+        if (length < 0) {
+            return fail(EncodeError::too_short);
+        }
+        if (length > 0xFF) {
+            return fail(EncodeError::overflow);
+        }
         std::uint8_t *f = buf_.data() + kHeaderSize + payload_size_;
-        f[kFieldLengthOffset] = static_cast<std::uint8_t>(data_size + kFieldLengthAdjust);
+        f[kFieldLengthOffset] = static_cast<std::uint8_t>(length);
         f[kFieldDescriptorOffset] = descriptor;
         payload_size_ += kFieldHeaderSize + data_size;
+        return EncodeError::none;
     }
     EncodeError fail(EncodeError e) {
         if (error_ == EncodeError::none) {
@@ -187,9 +193,11 @@ struct FieldEntry {
 /// Splits a payload into fields; a framing problem ends the walk with one trailing entry.
 class FieldIterator {
   public:
-    FieldIterator(const std::uint8_t *payload, std::size_t size) : p_(payload), size_(size) {}
+    /// The payload of a packet of descriptor set `set` (the set decides irregular field lengths).
+    FieldIterator(std::uint8_t set, const std::uint8_t *payload, std::size_t size)
+        : set_(set), p_(payload), size_(size) {}
     explicit FieldIterator(const PacketView &packet)
-        : FieldIterator(packet.payload(), packet.payload_size()) {}
+        : FieldIterator(packet.set(), packet.payload(), packet.payload_size()) {}
 
     /// Fills `out` with the next entry; false at the end of the payload.
     bool next(FieldEntry &out) {
@@ -203,10 +211,12 @@ class FieldIterator {
             return trailing(out, FieldEntry::Problem::short_header, 0, left);
         }
         const std::uint8_t length = p_[pos_ + kFieldLengthOffset];
-        if (kFieldLengthCountsHeader && length < kFieldHeaderSize) {
+        const std::uint8_t descriptor = p_[pos_ + kFieldDescriptorOffset];
+        const int data_length = static_cast<int>(length) - field_length_adjust(set_, descriptor);
+        if (data_length < 0) {
             return trailing(out, FieldEntry::Problem::length_below_header, length, left);
         }
-        const std::size_t data_size = static_cast<std::size_t>(length) - kFieldLengthAdjust;
+        const auto data_size = static_cast<std::size_t>(data_length);
         if (kFieldHeaderSize + data_size > left) {
             return trailing(out, FieldEntry::Problem::overruns, length, left);
         }
@@ -230,6 +240,7 @@ class FieldIterator {
         return true;
     }
 
+    std::uint8_t set_;
     const std::uint8_t *p_;
     std::size_t size_;
     std::size_t pos_ = 0;

@@ -126,7 +126,7 @@ struct Sample {
     template <class Fn> void for_each_field(Fn &&fn) const {
         for (std::size_t k = 0; k < packets.size(); ++k) {
             const PacketView view{packets[k].data(), packets[k].size()};
-            FieldIterator it(view.payload() + skip[k], view.payload_size() - skip[k]);
+            FieldIterator it(view.set(), view.payload() + skip[k], view.payload_size() - skip[k]);
             FieldEntry e;
             while (it.next(e)) {
                 e.payload_offset += skip[k];

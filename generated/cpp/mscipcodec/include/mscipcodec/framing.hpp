@@ -22,6 +22,14 @@ inline constexpr std::size_t kFieldDescriptorOffset = 0;
 inline constexpr bool kFieldLengthCountsHeader = false;
 /// Field data length = length byte - kFieldLengthAdjust.
 inline constexpr std::size_t kFieldLengthAdjust = 0;
+/// Length byte - data length of field (set, descriptor): kFieldLengthAdjust, except for the fields
+/// the spec marks with length_byte_adjust (1 in this protocol).
+constexpr int field_length_adjust(std::uint8_t set, std::uint8_t descriptor) {
+    if (set == 0x02 && descriptor == 0x05) {
+        return static_cast<int>(kFieldLengthAdjust) + (-1);
+    }
+    return static_cast<int>(kFieldLengthAdjust);
+}
 inline constexpr std::size_t kMaxPayload = 255;
 inline constexpr std::size_t kChecksumSize = 2;
 /// Positions of the two Fletcher-16 sums in the transmitted checksum.

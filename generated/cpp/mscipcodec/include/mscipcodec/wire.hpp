@@ -301,6 +301,7 @@ enum class EncodeError : std::uint8_t {
     count_mismatch, ///< a counted array's size differs from its count parameter
     union_mismatch, ///< a union holds a member other than the one its selector names
     optional_gap,   ///< an optional parameter is present after an absent one
+    too_short,      ///< shorter than an irregular field's size byte allows (length_byte_adjust)
 };
 
 inline const char *to_string(EncodeError e) {
@@ -315,6 +316,8 @@ inline const char *to_string(EncodeError e) {
         return "union member does not match its selector";
     case EncodeError::optional_gap:
         return "optional parameter present after an absent one";
+    case EncodeError::too_short:
+        return "field data too short for its size byte";
     }
     return "?";
 }
