@@ -23,10 +23,19 @@ from .vectors import load_vectors
 
 PAIR = re.compile(r"\(\s*0x([0-9A-Fa-f]{2})\s*[,.]\s*0x([0-9A-Fa-f]{2})\s*\)")
 HEADING = re.compile(r"^\s*(#|\[|\d+(\.\d+)+\s|<b>\d|\*\*)")
+# MS-CIP style: a title line ending in the message type and code as one number ("PING COMMAND
+# 0x0102", "Scaled Pressure Data Message 0xA286", table-of-contents lines with a page number).
+CODE_HEADING = re.compile(
+    r"^(?:Table \d+\s*[-\u2013]\s*)?[A-Za-z][A-Za-z0-9 /]*\s0x([0-9A-Fa-f]{2})([0-9A-Fa-f]{2})\b[.\s\d]*$"
+)
 
 
 def headings(text: str):
     for lineno, line in enumerate(text.splitlines(), 1):
+        m = CODE_HEADING.match(line.strip())
+        if m:
+            yield lineno, int(m.group(1), 16), int(m.group(2), 16), line.strip()
+            continue
         if not HEADING.match(line):
             continue
         for m in PAIR.finditer(line):
@@ -82,12 +91,39 @@ def table_rows(text: str, sync: bytes):
         i = j
 
 
+def byte_tables(text: str, sync: bytes):
+    """Example tables with one row per byte (MS-CIP): `0<tab>Sync1<tab>0xA5<tab>...`, then rows
+    `N<tab>name<tab>0xVV<tab>...` (the byte number may be missing) up to the checksum. Yields
+    (first line, all lines, hex, first row text), like table_rows."""
+    first = re.compile(r"^0\t[^\t]*\t0x%02X\b" % sync[0], re.I)
+    row = re.compile(r"^(\d*)\t[^\t]*\t0x([0-9A-Fa-f]{2})\b")
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        if not first.match(lines[i]):
+            i += 1
+            continue
+        data = bytearray()
+        rows = []
+        j = i
+        while j < len(lines):
+            m = row.match(lines[j])
+            if not m:
+                break
+            data.append(int(m.group(2), 16))
+            rows.append(j + 1)
+            j += 1
+        if data[: len(sync)] == sync:
+            yield i + 1, rows, data.hex(), lines[i].strip()
+        i = j
+
+
 def packet_lines(text: str, sync: bytes) -> dict[str, list[int]]:
     """Where each packet's bytes appear in a manual (quoted strings and table rows)."""
     where: dict[str, list[int]] = {}
     for lineno, hx, _ in quoted_packets(text, sync):
         where.setdefault(hx, []).append(lineno)
-    for _, rows, hx, _ in table_rows(text, sync):
+    for _, rows, hx, _ in [*table_rows(text, sync), *byte_tables(text, sync)]:
         where.setdefault(hx, []).extend(rows)
     return where
 
@@ -154,7 +190,7 @@ def main(argv: list[str] | None = None) -> int:
             text = path.read_text(encoding="utf-8", errors="replace")
             seen = set()
             for lineno, s, d, line in headings(text):
-                if s == proto.get("shared_data", {}).get("set") and d < 0xD0 or not in_scope(s):
+                if s == (proto.get("shared_data") or {}).get("set") and d < 0xD0 or not in_scope(s):
                     continue
                 total_h += 1
                 ok = covered_descriptor(proto, s, d)
@@ -172,7 +208,7 @@ def main(argv: list[str] | None = None) -> int:
                     missing += 1
                 elif args.verbose:
                     print(f"{dev['manual']}:{lineno}: covered: {raw}")
-            for lineno, rows, hx, raw in table_rows(text, sync):
+            for lineno, rows, hx, raw in [*table_rows(text, sync), *byte_tables(text, sync)]:
                 if not in_scope(packet_set(hx)):
                     continue
                 total_r += 1

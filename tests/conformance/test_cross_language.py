@@ -3,7 +3,7 @@
 For every golden vector and every language: `decode` prints exactly the expected canonical JSON
 lines, and `encode` turns them back into the same bytes. Then one long stream made of every
 vector with garbage between them must decode to byte-identical output in all four languages and
-round-trip through decode | encode in each.
+round-trip through decode | encode in each. Every protocol (MIP, MS-CIP) separately.
 """
 
 import os
@@ -18,17 +18,23 @@ from generator.vectors import load_vectors
 
 ROOT = Path(__file__).resolve().parents[2]
 LANGS = ["c", "cpp", "python", "rust"]
-VECTORS = load_vectors(load_spec(), ROOT / "tests" / "vectors")
+IR = load_spec()
+VECTORS = load_vectors(IR, ROOT / "tests" / "vectors")
+PROTOCOLS = [p["name"] for p in IR["protocols"]]
 
 
-def decode(lang: str, path: Path, *extra: str) -> str:
-    proc = subprocess.run([str(ROOT / "tests/conformance/decode"), lang, str(path), *extra], capture_output=True)
+def decode(lang: str, path: Path, *extra: str, protocol: str = "mip") -> str:
+    proc = subprocess.run(
+        [str(ROOT / "tests/conformance/decode"), lang, str(path), *extra, "--protocol", protocol], capture_output=True
+    )
     assert proc.returncode == 0, f"{lang} decode failed: {proc.stderr.decode(errors='replace')}"
     return proc.stdout.decode()
 
 
-def encode(lang: str, text: str) -> bytes:
-    proc = subprocess.run([str(ROOT / "tests/conformance/encode"), lang], input=text.encode(), capture_output=True)
+def encode(lang: str, text: str, protocol: str = "mip") -> bytes:
+    proc = subprocess.run(
+        [str(ROOT / "tests/conformance/encode"), lang, "--protocol", protocol], input=text.encode(), capture_output=True
+    )
     assert proc.returncode == 0, f"{lang} encode failed: {proc.stderr.decode(errors='replace')}"
     return proc.stdout
 
@@ -49,43 +55,64 @@ def test_every_vector_decodes_and_encodes(lang, vector_files):
     failures = []
     for c in VECTORS:
         extra = ("--device", c["device"]) if c.get("device") else ()
-        got = decode(lang, vector_files[c["name"]], *extra)
+        got = decode(lang, vector_files[c["name"]], *extra, protocol=c["protocol"])
         want = "".join(line + "\n" for line in c["expect"])
         if got != want:
             failures.append(f"{c['name']} ({c['file']}:{c['line']}):\n  want {want!r}\n  got  {got!r}")
             continue
-        back = encode(lang, got)
+        back = encode(lang, got, protocol=c["protocol"])
         if back.hex() != c["hex"]:
             failures.append(f"{c['name']}: encode gave {back.hex()}, want {c['hex']}")
     assert not failures, f"{len(failures)} of {len(VECTORS)} vectors fail in {lang}:\n" + "\n".join(failures)
 
 
 @pytest.fixture(scope="module")
-def mixed_stream(tmp_path_factory):
-    """Every vector, in order, separated by seeded random garbage (seed printed on failure)."""
+def mixed_streams(tmp_path_factory):
+    """Per protocol: its vectors, in order, separated by seeded random garbage (the seed is in
+    the file name), then a lone first sync byte."""
     seed = int(os.environ.get("CONFORMANCE_SEED", "20261121"))
-    rng = random.Random(seed)
-    parts = []
-    for c in VECTORS:
-        parts.append(bytes(rng.randrange(256) for _ in range(rng.randrange(0, 6))))
-        parts.append(bytes.fromhex(c["hex"]))
-    parts.append(b"\x75")  # a lone sync byte at the very end
-    p = tmp_path_factory.mktemp("stream") / f"mixed-{seed}.bin"
-    p.write_bytes(b"".join(parts))
-    return p
+    out = {}
+    for proto in IR["protocols"]:
+        rng = random.Random(seed)
+        parts = []
+        for c in VECTORS:
+            if c["protocol"] == proto["name"]:
+                parts.append(bytes(rng.randrange(256) for _ in range(rng.randrange(0, 6))))
+                parts.append(bytes.fromhex(c["hex"]))
+        parts.append(bytes(proto["framing"]["sync"][:1]))  # a lone sync byte at the very end
+        p = tmp_path_factory.mktemp("stream") / f"mixed-{proto['name']}-{seed}.bin"
+        p.write_bytes(b"".join(parts))
+        out[proto["name"]] = p
+    return out
 
 
-def test_mixed_stream_identical_in_all_languages(mixed_stream):
-    outputs = {lang: decode(lang, mixed_stream) for lang in LANGS}
+@pytest.mark.parametrize("protocol", PROTOCOLS)
+def test_mixed_stream_identical_in_all_languages(mixed_streams, protocol):
+    stream = mixed_streams[protocol]
+    outputs = {lang: decode(lang, stream, protocol=protocol) for lang in LANGS}
     ref = outputs["python"]
-    assert ref.count('"set":') >= len([c for c in VECTORS if not c["rejected"]])
+    assert ref.count('"set":') >= len([c for c in VECTORS if c["protocol"] == protocol and not c["rejected"]])
     for lang, out in outputs.items():
-        assert out == ref, f"{lang} differs from python on {mixed_stream.name}"
+        assert out == ref, f"{lang} differs from python on {stream.name}"
 
 
 @pytest.mark.parametrize("lang", LANGS)
-def test_mixed_stream_round_trips(lang, mixed_stream):
-    assert encode(lang, decode(lang, mixed_stream)) == mixed_stream.read_bytes()
+@pytest.mark.parametrize("protocol", PROTOCOLS)
+def test_mixed_stream_round_trips(lang, mixed_streams, protocol):
+    stream = mixed_streams[protocol]
+    assert encode(lang, decode(lang, stream, protocol=protocol), protocol=protocol) == stream.read_bytes()
+
+
+@pytest.mark.parametrize("protocol", PROTOCOLS)
+def test_other_protocols_packets_are_skipped_bytes(mixed_streams, protocol):
+    """A stream of another protocol's packets holds no packet of this one: all four languages
+    report it as skipped bytes only (or, by chance, a packet that really checks out), identically."""
+    others = [p for p in PROTOCOLS if p != protocol]
+    for other in others:
+        stream = mixed_streams[other]
+        outputs = {lang: decode(lang, stream, protocol=protocol) for lang in LANGS}
+        assert len(set(outputs.values())) == 1, f"languages differ decoding {other} bytes as {protocol}"
+        assert '"skipped"' in outputs["python"]
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -3,9 +3,10 @@
 from generator import audit
 
 
-def _manuals(tmp_path, gx5: str, cv7: str = ""):
+def _manuals(tmp_path, gx5: str, cv7: str = "", mscip: str = ""):
     (tmp_path / "3dm-gx5-45-dcp.txt").write_text(gx5)
     (tmp_path / "3dm-cv7-ins-docs.txt").write_text(cv7)
+    (tmp_path / "ms-cip-doc00419-revM.txt").write_text(mscip)
     return tmp_path
 
 
@@ -84,3 +85,32 @@ def test_kinds_limits_the_audit(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "(0x0D,0x7D)" in out and "(0x82,0x7E)" not in out
     assert audit.main(["--manuals", manuals, "--kinds", "bogus"]) == 2
+
+
+def test_mscip_code_headings_and_byte_tables(tmp_path, capsys):
+    """MS-CIP titles carry type and code as one number; its example tables have one row per
+    byte. A covered table (the Ping command, which the vectors hold) is silent; an unknown code
+    and a table whose bytes no vector has are listed, prose with a code is not a heading."""
+    rows = ["0xA5", "0xA5", "0x01", "0x02", "0x02", "0x00", "0x4F", "0x25"]
+    ping = "".join(f"{i}\tByte {i}\t{v}\tdescription\n" for i, v in enumerate(rows))
+    bad = [*rows[:4], "0x7E", "0x00", "0x00", "0x00"]
+    other = "".join(f"{i}\tByte {i}\t{v}\tdescription\n" for i, v in enumerate(bad))
+    text = (
+        "PING COMMAND 0x0102\nMYSTERY COMMAND 0x017E\nthe message 0x017D is mentioned in prose.\n" + ping + "\n" + other
+    )
+    assert audit.main(["--manuals", str(_manuals(tmp_path, "", mscip=text))]) == 1
+    out = capsys.readouterr()
+    assert "ms-cip-doc00419-revM.txt:1:" not in out.out
+    assert "ms-cip-doc00419-revM.txt:2: heading (0x01,0x7E) not in the spec" in out.out
+    assert "0x017D" not in out.out and "(0x01,0x7D)" not in out.out
+    assert ":4: example table row" not in out.out  # the Ping bytes are a vector
+    assert "ms-cip-doc00419-revM.txt:13: example table row not in tests/vectors: a5a501027e000000" in out.out
+    # The project's ping vector cites the manual's real table line, not this file's line 4.
+    assert "but its packet is printed at line 4, 5, 6, 7, 8, 9, 10, 11" in out.out
+    assert "3 not covered" in out.err
+
+
+def test_byte_table_rows_without_a_byte_number():
+    text = "0\tSync1\t0xA5\tx\n1\tSync2\t0xA5\tx\n2\tT\t0x02\tx\n\tno number\t0x12\tx\nResulting\n"
+    ((first, rows, hx, _),) = list(audit.byte_tables(text, b"\xa5\xa5"))
+    assert (first, rows, hx) == (1, [1, 2, 3, 4], "a5a50212")

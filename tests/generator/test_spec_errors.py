@@ -312,7 +312,7 @@ def test_cli_accepts_good_spec(tmp_path):
 
 def test_project_spec_is_valid():
     ir = load_spec()
-    assert [p["name"] for p in ir["protocols"]] == ["mip"]
+    assert [p["name"] for p in ir["protocols"]] == ["mip", "mscip"]
 
 
 def _add_part(spec: Path, name: str, set_name: str = "commands", descriptor: int = 0x70) -> None:

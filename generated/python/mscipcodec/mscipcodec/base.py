@@ -19,8 +19,8 @@ class Ping(_c.Field):
 
     Check that the device is responsive; it answers with the ack.
 
-    Sources: ms-cip-doc00419-revM.txt line 164; ms-cip-doc00419-revM.txt line 168. Field data: 0
-    bytes.
+    Sources: ms-cip-doc00419-revM.txt line 164; ms-cip-doc00419-revM.txt line 168;
+    ms-cip-doc00419-revM.txt line 129. Field data: 0 bytes.
     """
 
     SET = 0x01
