@@ -1,5 +1,5 @@
 # Sourced by tests/conformance/decode and encode: handles `--protocol NAME` (default mip).
-# Selects the package of that protocol (its `package` in generated/ir.json) for the language
+# Selects the package of that protocol (`package:` in spec/NAME/protocol.yaml) for the language
 # scripts, and leaves the other arguments in ARGS.
 select_protocol() {
     local proto="mip" a
@@ -12,14 +12,15 @@ select_protocol() {
         *) ARGS+=("$a") ;;
         esac
     done
-    local root ir pkg
+    local root file pkg
     root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-    ir="$root/generated/ir.json"
-    [ -f "$ir" ] || { echo "no $ir (run make)" >&2; exit 2; }
-    pkg="$(python3 -c 'import json,sys
-ps = json.load(open(sys.argv[1]))["protocols"]
-print(next((p["package"] for p in ps if p["name"] == sys.argv[2]), ""))
-if not any(p["name"] == sys.argv[2] for p in ps):
-    sys.exit("unknown protocol %r (expected one of: %s)" % (sys.argv[2], ", ".join(p["name"] for p in ps)))' "$ir" "$proto")" || exit 2
+    file="$root/spec/$proto/protocol.yaml"
+    if [ ! -f "$file" ]; then
+        echo "unknown protocol '$proto' (expected one of: $(cd "$root/spec" && ls -d */ | tr -d / | grep -v schema | tr '\n' ' '))" >&2
+        exit 2
+    fi
+    # The package name is the protocol file's top-level `package:` key.
+    pkg="$(sed -n 's/^package:[[:space:]]*\([A-Za-z0-9_]*\).*/\1/p' "$file")"
+    [ -n "$pkg" ] || { echo "$file has no package" >&2; exit 2; }
     export C_PACKAGE="$pkg" CPP_PACKAGE="$pkg" PY_PACKAGE="$pkg" RUST_PACKAGE="$pkg"
 }

@@ -969,3 +969,9 @@ TEST(Vectors, mscip_unknown_message_type) {
                  "{\"offset\":0,\"set\":163,\"fields\":[{\"descriptor\":129,\"data\":\"3f800000\",\"error\":"
                  "\"unknown descriptor set\"}]}\n");
 }
+
+TEST(Vectors, mscip_select_sensors_rev_a_with_a_regular_size_byte) {
+    check_vector("a5a502060504010081825f33", MSCIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":2,\"fields\":[{\"trailing\":\"050401008182\",\"error\":\"field "
+                 "length 4 at payload offset 0 overruns the payload (6 bytes left)\"}]}\n");
+}

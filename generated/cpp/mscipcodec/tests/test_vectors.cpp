@@ -1408,3 +1408,12 @@ TEST(Vectors, mscip_unknown_message_type) {
                      "\"error\":\"unknown descriptor set\"}]}",
                  });
 }
+
+// mscip_select_sensors_rev_a_with_a_regular_size_byte
+TEST(Vectors, mscip_select_sensors_rev_a_with_a_regular_size_byte) {
+    check_vector("a5a502060504010081825f33", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":2,\"fields\":[{\"trailing\":\"050401008182\",\"error\":\"field "
+                     "length 4 at payload offset 0 overruns the payload (6 bytes left)\"}]}",
+                 });
+}

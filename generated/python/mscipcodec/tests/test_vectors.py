@@ -1386,6 +1386,16 @@ CASES = [
             '{"offset":0,"set":163,"fields":[{"descriptor":129,"data":"3f800000","error":"unknown descriptor set"}]}'
         ],
     },
+    {
+        "name": "mscip_select_sensors_rev_a_with_a_regular_size_byte",
+        "hex": "a5a502060504010081825f33",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mscip/streams.yaml:220",
+        "expect": [
+            '{"offset":0,"set":2,"fields":[{"trailing":"050401008182","error":"field length 4 at payload offset 0 overruns the payload (6 bytes left)"}]}'
+        ],
+    },
 ]
 
 

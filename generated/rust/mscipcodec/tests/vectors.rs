@@ -1952,3 +1952,16 @@ fn case_mscip_unknown_message_type() {
         false,
     );
 }
+
+/// `mscip_select_sensors_rev_a_with_a_regular_size_byte` (tests/vectors/mscip/streams.yaml:220)
+#[test]
+fn case_mscip_select_sensors_rev_a_with_a_regular_size_byte() {
+    check(
+        "a5a502060504010081825f33",
+        None,
+        &[
+            "{\"offset\":0,\"set\":2,\"fields\":[{\"trailing\":\"050401008182\",\"error\":\"field length 4 at payload offset 0 overruns the payload (6 bytes left)\"}]}",
+        ],
+        false,
+    );
+}
