@@ -11,7 +11,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
 
-.PHONY: all generate test test-generator test-conformance test-capture test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -26,15 +26,24 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 	$(PY) -m generator
 	@mkdir -p build && touch $@
 
-test: generate test-generator $(addprefix test-,$(LANGS)) test-conformance test-capture
+test: generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture
 
 test-generator: $(VENV)/.stamp
-	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian
-	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian
+	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs
+	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian tests/docs
 	$(PY) -m pytest -q tests/generator
 
 $(addprefix test-,$(LANGS)): test-%: generate
 	tests/lang/$*.sh test
+
+# The reference documentation: Markdown links and pages (fast), then the HTML site served on
+# localhost and opened in headless Chromium (Debian `chromium`); screenshots go to build/screenshots/.
+test-docs: generate
+	$(PY) -m pytest -q tests/docs
+
+# The reference documentation as an offline HTML site in build/html/ (open build/html/index.html).
+html: generate
+	$(PY) -m generator.docs.site --out build/html
 
 test-conformance: generate
 	$(PY) -m pytest -q tests/conformance

@@ -58,6 +58,12 @@ def run(
                 raise ToolError(f"back end {name} wrote {rel}, outside its directories {mod.OUTPUT_DIRS}")
         files.update(rendered)
     files = format_files(files)
+    if not only or "docs" in only:
+        # The documentation quotes the formatted example programs, so it renders last.
+        from .backends import docs
+
+        owned.extend(docs.OUTPUT_DIRS)
+        files.update(docs.render(ir, vectors, files))
     _write_tree(out_dir, files, owned)
     docs_dir = docs_dir or ROOT / "docs"
     _write_tree(docs_dir, {"errata.md": render_errata(ir, vectors)}, [])

@@ -1,0 +1,133 @@
+"""The "getting started" page per language.
+
+The code on these pages is cut from the example program each language back end generates into
+its package (`examples/getting_started.*`, between `[build-command]` / `[parse-stream]` /
+`[read-file]` and `[end]` comment lines). That program is built and run by the test suite
+(tests/conformance/test_getting_started.py), so the snippets are code that compiles and works.
+The output shown comes from the golden vectors, never from running the code here.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+
+from ..examples import example_command
+from .model import LANG_TITLES, Docs, Page, code, hx
+
+EXAMPLE_FILES = {
+    "c": "c/{pkg}/examples/getting_started.c",
+    "cpp": "cpp/{pkg}/examples/getting_started.cpp",
+    "python": "python/{pkg}/examples/getting_started.py",
+    "rust": "rust/{pkg}/examples/getting_started.rs",
+}
+FENCE = {"c": "c", "cpp": "cpp", "python": "python", "rust": "rust"}
+PARTS = [
+    ("build-command", "Build a command"),
+    ("parse-stream", "Parse a stream"),
+    ("read-file", "Decode a capture"),
+]
+
+
+def snippet(source: str, part: str) -> str:
+    """The lines between the `[part]` marker comment and the next `[end]`, dedented."""
+    lines = source.splitlines()
+    start = next((i for i, ln in enumerate(lines) if ln.strip().endswith(f"[{part}]")), None)
+    if start is None:
+        raise ValueError(f"example has no [{part}] marker")
+    end = next(i for i in range(start + 1, len(lines)) if lines[i].strip().endswith("[end]"))
+    body = lines[start + 1 : end]
+    indent = min((len(ln) - len(ln.lstrip()) for ln in body if ln.strip()), default=0)
+    return "\n".join(ln[indent:] for ln in body)
+
+
+def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
+    """(text, code) telling how to vendor and build the package."""
+    if lang == "c":
+        opt = re.search(r"option\((\w+_BUILD_TESTS)", files.get(f"c/{pkg}/CMakeLists.txt", ""))
+        off = f"set({opt.group(1)} OFF)\n" if opt else ""
+        return (
+            f"Copy `generated/c/{pkg}/` into your tree (C99, no allocation, no dependencies) and add it to your CMake build:",
+            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg})\n"
+            f"#include <{pkg}/{pkg}.h>",
+        )
+    if lang == "cpp":
+        opt = re.search(r"option\((\w+_BUILD_TESTS)", files.get(f"cpp/{pkg}/CMakeLists.txt", ""))
+        off = f"set({opt.group(1)} OFF)\n" if opt else ""
+        return (
+            f"Copy `generated/cpp/{pkg}/` into your tree (header-only C++17) and add it to your CMake build:",
+            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::{pkg})\n"
+            f"#include <{pkg}/{pkg}.hpp>",
+        )
+    if lang == "python":
+        return (
+            f"Install `generated/python/{pkg}/` (pure Python 3.9+, no dependencies), or put it on `PYTHONPATH`:",
+            f"pip install ./generated/python/{pkg}\npython -m {pkg} decode capture.bin   # canonical JSON lines",
+        )
+    return (
+        f"Depend on `generated/rust/{pkg}/` by path (no dependencies; `--no-default-features` builds without `std`):",
+        f'[dependencies]\n{pkg} = {{ path = "third_party/{pkg}" }}',
+    )
+
+
+def _example_vector(docs: Docs, p: dict) -> dict | None:
+    """The golden vector whose packet is exactly the example command with no values."""
+    s, f = example_command(p)
+    want = {"set": s["id"], "fields": [{"descriptor": f["id"], "name": f["name"], "values": {}}]}
+    for v in docs.vectors:
+        if v["protocol"] != p["name"] or v["rejected"] or len(v["expect"]) != 1:
+            continue
+        obj = json.loads(v["expect"][0])
+        obj.pop("offset", None)
+        if obj == want:
+            return v
+    return None
+
+
+def add_pages(docs: Docs) -> None:
+    for lang in docs.api:
+        pg = docs.add(
+            Page(f"getting-started/{lang}.md", f"Getting started in {LANG_TITLES[lang]}", [("Reference", "README.md")])
+        )
+        pg.p(
+            "Every snippet on this page is cut from the example program generated into the package "
+            "(`examples/getting_started`), which the test suite builds and runs on a stream of golden vectors "
+            "(`tests/conformance/test_getting_started.py`). The packages of the other protocols have the same API "
+            "under their own names."
+        )
+        for p in docs.ir["protocols"]:
+            pkg = p["package"]
+            rel = EXAMPLE_FILES[lang].format(pkg=pkg)
+            source = docs.examples.get(rel)
+            pg.h(2, f"{p['title']} ({pkg})", p["name"])
+            text, setup = _setup(lang, pkg, docs.examples)
+            pg.p(text)
+            pg.code(setup, "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"))
+            if source is None:
+                pg.p(f"The example program `generated/{rel}` is not generated.")
+                continue
+            s, f = example_command(p)
+            v = _example_vector(docs, p)
+            for part, title in PARTS:
+                pg.h(3, title, f"{p['name']}-{part}")
+                if part == "build-command":
+                    link = pg.link_to(docs.field_path(p, s, f))
+                    pg.p(
+                        f"Builds [{f['title']}]({link}) ({hx(s['id'])},{hx(f['id'])}) with the typed value and the packet builder."
+                    )
+                elif part == "parse-stream":
+                    pg.p(
+                        "Feed bytes as they arrive, in chunks of any size: the parser keeps at most one packet, "
+                        "reports every skipped byte run, and resynchronises after garbage."
+                    )
+                else:
+                    pg.p("Read a capture file in blocks and feed them to the same parser, then flush at end of input.")
+                pg.code(snippet(source, part), FENCE[lang])
+                if part == "build-command" and v:
+                    pg.p(
+                        f"Prints the bytes of the golden vector {code(v['name'])} ({v['sources'][0]['manual'] + ':' + str(v['sources'][0]['line']) if v['sources'] else 'derived'}):"
+                    )
+                    pg.code(f"command {v['hex']}", "text")
+            pg.p(
+                f"The whole program: `generated/{rel}`. The package's `decode` tool prints canonical JSON lines for any capture."
+            )
