@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 
+from generator.examples import example_context
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
 
@@ -75,6 +76,7 @@ _RUNTIME = {
     "tools/decode.c.j2": "tools/decode.c",
     "tools/encode.c.j2": "tools/encode.c",
     "tools/read_all.h.j2": "tools/read_all.h",
+    "examples/getting_started.c.j2": "examples/getting_started.c",
     "tests/test_support.hpp.j2": "tests/test_support.hpp",
     "tests/runtime_test.cpp.j2": "tests/runtime_test.cpp",
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
@@ -527,6 +529,12 @@ class _Package:
         }
 
     # -------------------------------------------------------------- render
+    def example(self) -> dict:
+        """The getting-started example (generator/examples.py) with the C name of its set."""
+        example = example_context(self.proto, api_names)
+        example["set_macro"] = next(s["macro"] for s in self.sets if s["id"] == example["set"]["id"])
+        return example
+
     def context(self) -> dict:
         return {
             "p": self.p,
@@ -548,6 +556,7 @@ class _Package:
             "sample_rule": self.proto["samples"],
             "data_kind": self.data_kind,
             "vectors": self.vectors,
+            "example": self.example(),
             "name_max": max([len(f["name"]) for f in self.fields] + [len(d["id"]) for d in self.devices] + [1]) + 1,
         }
 

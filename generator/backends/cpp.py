@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import re
 
+from generator.examples import example_context
 from generator.render import environment
 
 OUTPUT_DIRS = ["cpp"]
@@ -639,6 +640,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "vectors": P.vector_cases(vectors),
             "bitfield_test": P.bitfield_test(),
             "sample_rule": proto["samples"],
+            "example": example_context(proto, api_names),
         }
         plain = {
             "framing.hpp": "framing.hpp.j2",
@@ -667,6 +669,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             )
         files[f"{root}/tools/decode.cpp"] = env.get_template("cpp/tools/decode.cpp.j2").render(ctx)
         files[f"{root}/tools/encode.cpp"] = env.get_template("cpp/tools/encode.cpp.j2").render(ctx)
+        files[f"{root}/examples/getting_started.cpp"] = env.get_template("cpp/examples/getting_started.cpp.j2").render(
+            ctx
+        )
         files[f"{root}/tests/test_support.hpp"] = env.get_template("cpp/tests/test_support.hpp.j2").render(ctx)
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
         files[f"{root}/tests/test_runtime.cpp"] = env.get_template("cpp/tests/test_runtime.cpp.j2").render(ctx)

@@ -17,6 +17,7 @@ from __future__ import annotations
 import keyword
 import textwrap
 
+from generator.examples import example_context
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
 
@@ -787,6 +788,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         files[f"{root}/{pkg}/registry.py"] = env.get_template("python/package/registry.py.j2").render(**ctx)
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
         files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx)
+        files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
+            **ctx, example=_example(proto)
+        )
         tests = {
             "conftest.py": {},
             "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
@@ -797,6 +801,13 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         for name, extra in tests.items():
             files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
     return files
+
+
+def _example(proto: dict) -> dict:
+    """The getting-started example (generator/examples.py), with its class split for the import."""
+    example = example_context(proto, api_names)
+    example["module"], example["class_name"] = example["api"]["class"].rsplit(".", 1)
+    return example
 
 
 def _typed_context(m: _Proto, sets: list[dict]) -> dict:

@@ -12,6 +12,7 @@ import re
 import struct
 
 from generator.canonical import float_text, string_text
+from generator.examples import example_context
 from generator.primitives import PRIMITIVES
 from generator.render import ToolError, environment
 
@@ -829,6 +830,7 @@ _TEMPLATES = [
     ("test_vectors.rs.j2", "tests/vectors.rs"),
     ("test_runtime.rs.j2", "tests/runtime.rs"),
     ("test_spec.rs.j2", "tests/spec.rs"),
+    ("example_getting_started.rs.j2", "examples/getting_started.rs"),
 ]
 
 
@@ -843,6 +845,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         ctx["bitfields"] = model.bitfield_cases()
         ctx["short_cases"] = model.short_cases()
         ctx["sample_rule"] = proto["samples"]
+        ctx["example"] = _example(proto)
         root = f"rust/{model.package}/"
         for tpl, out in _TEMPLATES:
             files[root + out.format(package=model.package)] = env.get_template(f"rust/{tpl}").render(**ctx)
@@ -850,6 +853,13 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         for s in ctx["sets"]:
             files[root + f"src/{s['module']}.rs"] = set_tpl.render(set=s, **ctx)
     return files
+
+
+def _example(proto: dict) -> dict:
+    """The getting-started example (generator/examples.py), with the type's name after its `use`."""
+    example = example_context(proto, api_names)
+    example["type_name"] = example["api"]["type"].rsplit("::", 1)[1]
+    return example
 
 
 def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:

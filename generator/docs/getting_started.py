@@ -12,21 +12,13 @@ from __future__ import annotations
 import json
 import re
 
-from ..examples import example_command
+from ..examples import END, PARTS, PROGRAM, example_command
 from .model import LANG_TITLES, Docs, Page, code, hx
 
-EXAMPLE_FILES = {
-    "c": "c/{pkg}/examples/getting_started.c",
-    "cpp": "cpp/{pkg}/examples/getting_started.cpp",
-    "python": "python/{pkg}/examples/getting_started.py",
-    "rust": "rust/{pkg}/examples/getting_started.rs",
-}
+EXTENSIONS = {"c": "c", "cpp": "cpp", "python": "py", "rust": "rs"}
+EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 FENCE = {"c": "c", "cpp": "cpp", "python": "python", "rust": "rust"}
-PARTS = [
-    ("build-command", "Build a command"),
-    ("parse-stream", "Parse a stream"),
-    ("read-file", "Decode a capture"),
-]
+TITLES = {"build-command": "Build a command", "parse-stream": "Parse a stream", "read-file": "Decode a capture"}
 
 
 def snippet(source: str, part: str) -> str:
@@ -35,8 +27,12 @@ def snippet(source: str, part: str) -> str:
     start = next((i for i, ln in enumerate(lines) if ln.strip().endswith(f"[{part}]")), None)
     if start is None:
         raise ValueError(f"example has no [{part}] marker")
-    end = next(i for i in range(start + 1, len(lines)) if lines[i].strip().endswith("[end]"))
+    end = next(i for i in range(start + 1, len(lines)) if lines[i].strip().endswith(f"[{END}]"))
     body = lines[start + 1 : end]
+    while body and not body[-1].strip():
+        body.pop()
+    while body and not body[0].strip():
+        body.pop(0)
     indent = min((len(ln) - len(ln.lstrip()) for ln in body if ln.strip()), default=0)
     return "\n".join(ln[indent:] for ln in body)
 
@@ -48,16 +44,14 @@ def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
         off = f"set({opt.group(1)} OFF)\n" if opt else ""
         return (
             f"Copy `generated/c/{pkg}/` into your tree (C99, no allocation, no dependencies) and add it to your CMake build:",
-            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg})\n"
-            f"#include <{pkg}/{pkg}.h>",
+            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg})",
         )
     if lang == "cpp":
         opt = re.search(r"option\((\w+_BUILD_TESTS)", files.get(f"cpp/{pkg}/CMakeLists.txt", ""))
         off = f"set({opt.group(1)} OFF)\n" if opt else ""
         return (
             f"Copy `generated/cpp/{pkg}/` into your tree (header-only C++17) and add it to your CMake build:",
-            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::{pkg})\n"
-            f"#include <{pkg}/{pkg}.hpp>",
+            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::{pkg})",
         )
     if lang == "python":
         return (
@@ -68,6 +62,12 @@ def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
         f"Depend on `generated/rust/{pkg}/` by path (no dependencies; `--no-default-features` builds without `std`):",
         f'[dependencies]\n{pkg} = {{ path = "third_party/{pkg}" }}',
     )
+
+
+def _include(lang: str, pkg: str, source: str) -> str:
+    """The include or import lines of the example program that name the package."""
+    lines = [ln for ln in source.splitlines() if pkg in ln and ln.startswith(("#include", "import", "from", "use "))]
+    return "\n".join(lines)
 
 
 def _example_vector(docs: Docs, p: dict) -> dict | None:
@@ -103,12 +103,17 @@ def add_pages(docs: Docs) -> None:
             text, setup = _setup(lang, pkg, docs.examples)
             pg.p(text)
             pg.code(setup, "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"))
+            include = _include(lang, pkg, source or "")
+            if include:
+                pg.p("and include the package's umbrella header:" if lang in ("c", "cpp") else "and import it:")
+                pg.code(include, FENCE[lang])
             if source is None:
                 pg.p(f"The example program `generated/{rel}` is not generated.")
                 continue
             s, f = example_command(p)
             v = _example_vector(docs, p)
-            for part, title in PARTS:
+            for part in PARTS:
+                title = TITLES[part]
                 pg.h(3, title, f"{p['name']}-{part}")
                 if part == "build-command":
                     link = pg.link_to(docs.field_path(p, s, f))

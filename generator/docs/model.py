@@ -553,6 +553,18 @@ class Docs:
             ],
             ["role", f["role"] + (" (shared data; repeats)" if f.get("repeats") else "")],
             ["field data", f"{size_text(f['size'])} bytes"],
+        ]
+        if f.get("length_byte_adjust"):
+            fr = p["framing"]
+            ident.append(
+                [
+                    "size byte",
+                    f"irregular: data length {f['length_byte_adjust']:+d}"
+                    + (" + field header" if fr["field_length_counts_header"] else "")
+                    + " (`length_byte_adjust`; the device expects it, see the notes)",
+                ]
+            )
+        ident += [
             ["devices", ", ".join(esc(devs[d]) for d in f["devices"])],
         ]
         replies = self._reply_of(p, s, f)

@@ -4,7 +4,8 @@
 #   tests/lang/c.sh test                          build, then run each package's googletest binary
 #   tests/lang/c.sh decode FILE|- [--device ID]   run <package>-decode (builds first if needed)
 #   tests/lang/c.sh encode                        run <package>-encode: JSON lines on stdin -> bytes
-# decode/encode use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
+#   tests/lang/c.sh example FILE                  run <package>-getting-started FILE (builds first if needed)
+# decode/encode/example use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
 # output goes to stderr so that decode/encode keep stdout clean.
 set -euo pipefail
 
@@ -64,8 +65,18 @@ PY
     echo "c.sh: $1 sanitized tests and noise round trip passed" >&2
 }
 
+# The getting-started example (examples/getting_started.c), built when missing or out of date.
+ensure_example() {
+    local out="$ROOT/build/c/$PACKAGE"
+    if [ -x "$out/$PACKAGE-getting-started" ] &&
+        cmake --build "$out" --target "$PACKAGE-getting-started" >/dev/null 2>&1; then
+        return
+    fi
+    build_one "$PACKAGE"
+}
+
 usage() {
-    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode" >&2
+    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE" >&2
     exit 2
 }
 
@@ -96,6 +107,10 @@ decode)
 encode)
     ensure_built
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-encode" "$@"
+    ;;
+example)
+    ensure_example
+    exec "$ROOT/build/c/$PACKAGE/$PACKAGE-getting-started" "$@"
     ;;
 *)
     usage

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# tests/lang/cpp.sh build|test|decode FILE [--device ID]|encode
+# tests/lang/cpp.sh build|test|decode FILE [--device ID]|encode|example FILE
 # Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites, or
-# runs the decode/encode tools (building them first when needed). Works from any directory.
-# CPP_PACKAGE selects the package for decode/encode (default: mipcodec).
+# runs the decode/encode tools or the getting-started example (<package>-getting-started FILE),
+# building them first when needed. Works from any directory.
+# CPP_PACKAGE selects the package for decode/encode/example (default: mipcodec).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PKG="${CPP_PACKAGE:-mipcodec}"
 GEN="$ROOT/generated/cpp"
 
-usage() { echo "usage: $0 build|test|decode FILE [--device ID]|encode" >&2; exit 2; }
+usage() { echo "usage: $0 build|test|decode FILE [--device ID]|encode|example FILE" >&2; exit 2; }
 
 packages() {
   local d
@@ -31,7 +32,7 @@ build() { # package [targets...]
   cmake --build "$ROOT/build/cpp/$pkg" ${1:+--target "$@"} >&2
 }
 
-tool() { # decode|encode
+tool() { # decode|encode|getting-started
   local exe="$ROOT/build/cpp/$PKG/$PKG-$1"
   # Always let ninja check (a no-op when up to date), so a regenerated package is rebuilt.
   build "$PKG" "$PKG-$1" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
@@ -68,6 +69,11 @@ case "$cmd" in
   encode)
     mkdir -p "$ROOT/build/cpp"
     exe="$(tool encode)"
+    exec "$exe" "$@"
+    ;;
+  example)
+    mkdir -p "$ROOT/build/cpp"
+    exe="$(tool getting-started)"
     exec "$exe" "$@"
     ;;
   *) usage ;;

@@ -4,7 +4,8 @@
 #   tests/lang/python.sh test                         ruff check + pytest of every package
 #   tests/lang/python.sh decode FILE [--device ID]    python -m <package> decode (FILE may be -)
 #   tests/lang/python.sh encode                       python -m <package> encode (stdin -> stdout)
-# The package for decode/encode is $PY_PACKAGE (default: mipcodec). Works from any directory.
+#   tests/lang/python.sh example FILE                 the package's examples/getting_started.py FILE
+# The package for decode/encode/example is $PY_PACKAGE (default: mipcodec). Works from any directory.
 # Nothing needs compiling: decode/encode run straight from generated/python/<package>; bytecode
 # is cached under build/python/pycache (PYTHONPYCACHEPREFIX), never inside generated/.
 set -euo pipefail
@@ -24,17 +25,22 @@ packages() {
 }
 
 usage() {
-    echo "usage: tests/lang/python.sh build | test | decode FILE [--device ID] | encode" >&2
+    echo "usage: tests/lang/python.sh build | test | decode FILE [--device ID] | encode | example FILE" >&2
     exit 2
 }
 
-run_cli() {
+# Runs python with the package importable: run_py ARGS...
+run_py() {
     local src="$ROOT/generated/python/$PACKAGE"
     if [ ! -d "$src/$PACKAGE" ]; then
         echo "tests/lang/python.sh: no generated package $src (run make)" >&2
         exit 2
     fi
-    PYTHONPATH="$src${PYTHONPATH:+:$PYTHONPATH}" exec "$PY" -m "$PACKAGE" "$@"
+    PYTHONPATH="$src${PYTHONPATH:+:$PYTHONPATH}" exec "$PY" "$@"
+}
+
+run_cli() {
+    run_py -m "$PACKAGE" "$@"
 }
 
 [ $# -ge 1 ] || usage
@@ -65,6 +71,9 @@ decode)
     ;;
 encode)
     run_cli encode "$@"
+    ;;
+example)
+    run_py "$ROOT/generated/python/$PACKAGE/examples/getting_started.py" "$@"
     ;;
 *)
     usage

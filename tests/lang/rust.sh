@@ -5,7 +5,8 @@
 #                                                 (--no-default-features) build, for every crate
 #   tests/lang/rust.sh decode FILE [--device ID]  run <package>-decode (FILE may be -)
 #   tests/lang/rust.sh encode                     run <package>-encode (stdin -> stdout)
-# The crate for decode/encode is $RUST_PACKAGE (default: mipcodec). Works from any directory.
+#   tests/lang/rust.sh example FILE               cargo run --example getting_started -- FILE
+# The crate for decode/encode/example is $RUST_PACKAGE (default: mipcodec). Works from any directory.
 # Target directories live under build/rust/ (never in generated/); cargo output goes to stderr.
 set -euo pipefail
 
@@ -16,7 +17,7 @@ export CARGO_TARGET_DIR="$ROOT/build/rust/target"
 CORE_TARGET_DIR="$ROOT/build/rust/target-core"
 
 usage() {
-    echo "usage: tests/lang/rust.sh build | test | decode FILE [--device ID] | encode" >&2
+    echo "usage: tests/lang/rust.sh build | test | decode FILE [--device ID] | encode | example FILE" >&2
     exit 2
 }
 
@@ -75,6 +76,10 @@ decode)
 encode)
     ensure_built
     exec "$CARGO_TARGET_DIR/release/$PACKAGE-encode" "$@"
+    ;;
+example)
+    # cargo run (not the binary under target/): both crates' examples are named getting_started.
+    exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --example getting_started -- "$@"
     ;;
 *)
     usage
