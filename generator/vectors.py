@@ -182,7 +182,6 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
 
 def _packet(ctx: _Ctx, path: tuple, p: dict, device: str | None) -> str:
     set_id = p.get("set")
-    sets = {s["id"]: s for s in ctx.proto["sets"]}
     fields = []
     for k, f in enumerate(p.get("fields", [])):
         fp = path + ("fields", k)
@@ -195,7 +194,7 @@ def _packet(ctx: _Ctx, path: tuple, p: dict, device: str | None) -> str:
                 % (f["descriptor"], f["data"].replace(" ", "").lower(), _json_str(f["error"]))
             )
             continue
-        fdef = _find_field(ctx, set_id, f.get("descriptor"), sets)
+        fdef = _find_field(ctx, set_id, f.get("descriptor"))
         if fdef is None:
             ctx.err(
                 fp + ("descriptor",),
@@ -229,21 +228,30 @@ def _packet(ctx: _Ctx, path: tuple, p: dict, device: str | None) -> str:
     return '{"offset":%d,"set":%d,"fields":[%s]}' % (p.get("offset", 0), set_id, ",".join(fields))
 
 
-def _find_field(ctx: _Ctx, set_id: int, desc: int, sets: dict) -> dict | None:
+def _find_field(ctx: _Ctx, set_id: int, desc: int) -> dict | None:
+    hit = resolve_field(ctx.proto, set_id, desc)
+    return hit[1] if hit else None
+
+
+def resolve_field(proto: dict, set_id: int, desc: int) -> tuple[dict | None, dict] | None:
+    """(set, field) that decodes descriptor desc in a packet of set set_id, by the dispatch rule of
+    docs/conformance.md §2: the set's own field, else a reserved field (set None), else in a data
+    set a field of the shared set. None when nothing matches."""
+    sets = {s["id"]: s for s in proto["sets"]}
     s = sets.get(set_id)
     if s:
         for f in s["fields"]:
             if f["id"] == desc:
-                return f
-    kind = next((k for k, r in ctx.proto["set_kinds"].items() if r["first"] <= set_id <= r["last"]), None)
-    for r in ctx.proto["reserved_fields"]:
+                return s, f
+    kind = next((k for k, r in proto["set_kinds"].items() if r["first"] <= set_id <= r["last"]), None)
+    for r in proto["reserved_fields"]:
         if r["applies_to"] == kind and r["id"] == desc:
-            return r
-    shared = ctx.proto.get("shared_data")
+            return None, r
+    shared = proto.get("shared_data")
     if kind == "data" and shared and shared["set"] in sets:
         for f in sets[shared["set"]]["fields"]:
             if f["id"] == desc:
-                return f
+                return sets[shared["set"]], f
     return None
 
 

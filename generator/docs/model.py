@@ -22,6 +22,7 @@ import re
 from dataclasses import dataclass, field
 
 from ..errata import KIND_TITLES
+from ..vectors import resolve_field
 from . import svg
 
 MAX_VECTORS = 24  # golden vectors shown per descriptor page (every erratum is always shown)
@@ -115,25 +116,6 @@ class Docs:
     def field_path(self, p: dict, s: dict | None, f: dict) -> str:
         return f"{p['name']}/{s['name'] if s else 'reserved'}/{f['name']}.md"
 
-    def _resolve(self, p: dict, set_id: int, desc: int) -> tuple[dict | None, dict] | None:
-        """(set or None for reserved, field) that decodes (set_id, desc), following dispatch (§2)."""
-        sets = {s["id"]: s for s in p["sets"]}
-        s = sets.get(set_id)
-        if s:
-            for f in s["fields"]:
-                if f["id"] == desc:
-                    return s, f
-        kind = next((k for k, r in p["set_kinds"].items() if r["first"] <= set_id <= r["last"]), None)
-        for r in p["reserved_fields"]:
-            if r["applies_to"] == kind and r["id"] == desc:
-                return None, r
-        shared = p.get("shared_data")
-        if kind == "data" and shared and shared["set"] in sets:
-            for f in sets[shared["set"]]["fields"]:
-                if f["id"] == desc:
-                    return sets[shared["set"]], f
-        return None
-
     def _index_vectors(self, vectors: list[dict]) -> None:
         protos = {p["name"]: p for p in self.ir["protocols"]}
         by_name = {v["name"]: v for v in vectors}
@@ -153,7 +135,7 @@ class Docs:
             for f in obj.get("fields", []):
                 if "descriptor" not in f:
                     continue
-                hit = self._resolve(p, obj["set"], f["descriptor"])
+                hit = resolve_field(p, obj["set"], f["descriptor"])
                 if hit:
                     s, fd = hit
                     k = (p["name"], s["id"] if s else -1, fd["id"], fd["name"])
