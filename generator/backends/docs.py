@@ -12,11 +12,12 @@ from ..docs.markdown import write_markdown
 from ..docs.model import Docs
 
 OUTPUT_DIRS = ["docs"]
-LANGS = ["c", "cpp", "python", "rust"]
 
 
 def build(ir: dict, vectors: list[dict], generated: dict[str, str]) -> Docs:
-    api = {lang: importlib.import_module(f"generator.backends.{lang}") for lang in LANGS}
+    from ..pipeline import BACKENDS  # the language back ends, in their order
+
+    api = {lang: importlib.import_module(f"generator.backends.{lang}") for lang in BACKENDS}
     docs = Docs(ir, vectors, api, generated)
     docs.build()
     return docs

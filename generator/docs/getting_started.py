@@ -17,7 +17,6 @@ from .model import LANG_TITLES, Docs, Page, code, hx
 
 EXTENSIONS = {"c": "c", "cpp": "cpp", "python": "py", "rust": "rs"}
 EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
-FENCE = {"c": "c", "cpp": "cpp", "python": "python", "rust": "rust"}
 TITLES = {"build-command": "Build a command", "parse-stream": "Parse a stream", "read-file": "Decode a capture"}
 
 
@@ -106,7 +105,7 @@ def add_pages(docs: Docs) -> None:
             include = _include(lang, pkg, source or "")
             if include:
                 pg.p("and include the package's umbrella header:" if lang in ("c", "cpp") else "and import it:")
-                pg.code(include, FENCE[lang])
+                pg.code(include, lang)
             if source is None:
                 pg.p(f"The example program `generated/{rel}` is not generated.")
                 continue
@@ -127,7 +126,7 @@ def add_pages(docs: Docs) -> None:
                     )
                 else:
                     pg.p("Read a capture file in blocks and feed them to the same parser, then flush at end of input.")
-                pg.code(snippet(source, part), FENCE[lang])
+                pg.code(snippet(source, part), lang)
                 if part == "build-command" and v:
                     pg.p(
                         f"Prints the bytes of the golden vector {code(v['name'])} ({v['sources'][0]['manual'] + ':' + str(v['sources'][0]['line']) if v['sources'] else 'derived'}):"

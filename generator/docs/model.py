@@ -633,13 +633,10 @@ class Docs:
         for g in s["fields"]:
             for v in g["variants"]:
                 if any(r["id"] == f["id"] for r in v["responses"]):
-                    ref = f"[{esc(g['title'])}]({self.pages_link(p, s, g, f)})"
+                    ref = f"[{esc(g['title'])}]({posixpath.relpath(self.field_path(p, s, g), posixpath.dirname(self.field_path(p, s, f)))})"
                     if ref not in out:
                         out.append(ref)
         return out
-
-    def pages_link(self, p: dict, s: dict | None, target: dict, here: dict) -> str:
-        return posixpath.relpath(self.field_path(p, s, target), posixpath.dirname(self.field_path(p, s, here)))
 
     def _ack_text(self, pg: Page, p: dict, v: dict, fn: str | None) -> str:
         ack = next((r for r in p["reserved_fields"] if r["role"] == "ack"), None)
