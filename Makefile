@@ -9,7 +9,7 @@ MANUALS ?= ../shared/manuals
 CAPTURE ?= ../shared/captures/mip_data.bin
 export RUFF := $(abspath $(VENV)/bin/ruff)
 
-SPEC_INPUTS := $(shell find spec generator templates tests/vectors -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
+SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
 
 .PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 

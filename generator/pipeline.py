@@ -11,7 +11,7 @@ from .export import ir_to_json
 from .ir import lint_stated_lengths
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .spec import ROOT, load_spec
-from .vectors import load_vectors
+from .vectors import load_corpus
 
 # Back ends, in render order. Each is generator/backends/<name>.py with
 #   OUTPUT_DIRS: list of directories under generated/ that it owns entirely
@@ -40,8 +40,9 @@ def run(
                 f"manual states {item['stated']!r}, computed {item['computed']}"
             )
         return 0
-    # Golden vectors belong to the project's own spec; a spec given with --spec is validated alone.
-    vectors = load_vectors(ir, ROOT / "tests" / "vectors") if spec_dir is None else []
+    # Golden vectors and the stream corpus belong to the project's own spec; a spec given with
+    # --spec is validated alone.
+    vectors = load_corpus(ir, ROOT) if spec_dir is None else []
     if validate_only:
         return 0
     out_dir = out_dir or ROOT / "generated"

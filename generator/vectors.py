@@ -1,4 +1,5 @@
-"""Load the language-neutral golden vectors (tests/vectors/<protocol>/*.yaml).
+"""Load the language-neutral golden vectors (tests/vectors/<protocol>/*.yaml) and the stream
+corpus (tests/streams/<protocol>/*.yaml, the same case format).
 
 Each case is checked against the IR (every parameter present, values in range, names known) and
 turned into the exact canonical JSON lines (docs/conformance.md) that every language must print
@@ -50,6 +51,25 @@ class _Ctx:
         self.errors.append(SpecError(self.sf.locate(path), msg, expected))
 
 
+def load_corpus(ir: dict, root: Path) -> list[dict]:
+    """The golden vectors and the stream corpus of the project at root, vectors first. Every case
+    carries `corpus`: "vectors" or "streams"; both are checked the same way in every language."""
+    cases = load_vectors(ir, root / "tests" / "vectors")
+    streams = root / "tests" / "streams"
+    if streams.is_dir():
+        seen = {c["name"]: c["file"] for c in cases}
+        more = load_vectors(ir, streams)
+        clash = [
+            SpecError(None, f"case '{c['name']}' of {c['file']} is also in {seen[c['name']]}", "unique names")
+            for c in more
+            if c["name"] in seen
+        ]
+        if clash:
+            raise SpecErrors(clash)
+        cases += more
+    return cases
+
+
 def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
     cases: list[dict] = []
     errors: list[SpecError] = []
@@ -86,6 +106,7 @@ def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
                 case = _case(ctx, ("cases", i), c, rel)
                 if case is None:
                     continue
+                case["corpus"] = vectors_dir.name
                 if case["name"] in names:
                     ctx.err(
                         ("cases", i, "name"),
@@ -153,15 +174,24 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
         lines.append('{"offset":0,"skipped":"%s"}' % hex_clean)
     else:
         pkts = c.get("packets") or []
-        if not pkts:
+        if not pkts and (raw or c.get("skipped")):
             ctx.err(
                 path, f"vector '{c['name']}' has no packets and is not rejected", "packets: [...] or rejected: true"
             )
         for j, p in enumerate(pkts):
             lines.append(_packet(ctx, path + ("packets", j), p, c.get("device")))
-        for s in c.get("skipped") or []:
-            lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], re.sub(r"\s", "", s["hex"]).lower()))
+        for k, s in enumerate(c.get("skipped") or []):
+            if "hex" in s:
+                skipped = re.sub(r"\s", "", s["hex"]).lower()
+            else:  # {offset, count}: the bytes are the input's
+                skipped = raw[s["offset"] : s["offset"] + s["count"]].hex()
+                if len(skipped) != 2 * s["count"]:
+                    ctx.err(
+                        path + ("skipped", k), f"skip run at {s['offset']} of {s['count']} bytes runs past the input"
+                    )
+            lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], skipped))
         lines.sort(key=lambda line: int(re.match(r'\{"offset":(\d+)', line).group(1)))
+        _check_tiling(ctx, path, c["name"], raw, lines)
     return {
         "name": c["name"],
         "protocol": ctx.proto["name"],
@@ -178,6 +208,59 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
         "quoted": c.get("quoted"),
         "expect": lines,
     }
+
+
+def _check_tiling(ctx: _Ctx, path: tuple, name: str, raw: bytes, lines: list[str]) -> None:
+    """The expected events must account for every input byte exactly once, in order: a skip run
+    holds the input's own bytes and is maximal (never followed by another run), a packet starts
+    with the sync bytes, has the set the case names, spans header + payload length + checksum and
+    carries a valid checksum. This catches a mistyped offset or byte count in a hand-written case
+    with a message, before any language is asked to agree with it."""
+    fr = ctx.proto["framing"]
+    sync = bytes(fr["sync"])
+    pos = 0
+    last_skip = False
+
+    def bad(msg: str) -> None:
+        ctx.err(path, f"vector '{name}': {msg}", "events that cover the input exactly, in order")
+
+    for line in lines:
+        ev = json.loads(line)
+        off = ev["offset"]
+        if off != pos:
+            return bad(f"an event starts at offset {off}, but the previous one ends at {pos}")
+        if "skipped" in ev:
+            if last_skip:
+                return bad(f"skip runs at offset {off} and before it are adjacent; they are one run")
+            got = bytes.fromhex(ev["skipped"])
+            if raw[off : off + len(got)] != got:
+                return bad(f"skipped bytes at offset {off} are not the input's ({raw[off : off + len(got)].hex()})")
+            pos += len(got)
+            last_skip = True
+            continue
+        last_skip = False
+        head = raw[off : off + fr["header_size"]]
+        if len(head) < fr["header_size"] or not head.startswith(sync):
+            return bad(f"no packet header at offset {off}")
+        if head[fr["set_offset"]] != ev["set"]:
+            return bad(f"the packet at offset {off} is of set {head[fr['set_offset']]}, not {ev['set']}")
+        end = off + fr["header_size"] + head[fr["length_offset"]] + fr["checksum_size"]
+        body = raw[off : end - fr["checksum_size"]]
+        check = fletcher16(body) if fr["checksum"]["order"] == ["sum1", "sum2"] else fletcher16(body)[::-1]
+        if end > len(raw) or check != raw[end - fr["checksum_size"] : end]:
+            return bad(f"the packet at offset {off} is truncated or its checksum is wrong")
+        pos = end
+    if pos != len(raw):
+        bad(f"the events end at offset {pos}, the input at {len(raw)}")
+
+
+def fletcher16(data: bytes) -> bytes:
+    """Fletcher-16 as docs/conformance.md §1 defines it: sum1 then sum2."""
+    s1 = s2 = 0
+    for b in data:
+        s1 = (s1 + b) & 0xFF
+        s2 = (s2 + s1) & 0xFF
+    return bytes([s1, s2])
 
 
 def _packet(ctx: _Ctx, path: tuple, p: dict, device: str | None) -> str:

@@ -522,6 +522,7 @@ class _Package:
         dev = case.get("device")
         return {
             "name": name,
+            "suite": case["corpus"].capitalize(),
             "hex": case["hex"],
             "device_c": f"{self.P}_DEVICE_{dev.upper()}" if dev else f"{self.P}_DEVICE_ANY",
             "expect": _c_string("".join(line + "\n" for line in case["expect"])),

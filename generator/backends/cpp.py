@@ -607,6 +607,7 @@ class _Proto:
             out.append(
                 {
                     "name": name,
+                    "suite": c["corpus"].capitalize(),
                     "source": c["name"],
                     "hex": cpp_string(c["hex"]),
                     "device": cpp_string(c["device"]) if c["device"] else "nullptr",

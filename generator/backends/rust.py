@@ -637,7 +637,8 @@ class _Protocol:
         out = []
         used: set[str] = set()
         for c in self.vectors:
-            fn = "case_" + re.sub(r"[^a-z0-9_]", "_", c["name"].lower())
+            prefix = "stream_" if c["corpus"] == "streams" else "case_"
+            fn = prefix + re.sub(r"[^a-z0-9_]", "_", c["name"].lower())
             while fn in used:
                 fn += "_"
             used.add(fn)

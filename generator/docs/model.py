@@ -682,15 +682,16 @@ class Docs:
             )
             return
         pg.p(
-            f"{len(cases)} case(s) from `tests/vectors/`, checked byte for byte in C, C++, Python and Rust "
-            "(decoded to the canonical JSON lines shown, and encoded back)."
+            f"{len(cases)} case(s) from the golden vectors (`tests/vectors/`) and the stream corpus "
+            "(`tests/streams/`), checked byte for byte in C, C++, Python and Rust "
+            "(decoded to the canonical JSON lines shown, fed whole and in chunks of every size, and encoded back)."
         )
         shown = [c for c in cases if c.get("erratum")]
         shown += [c for c in cases if not c.get("erratum")][: max(0, MAX_VECTORS - len(shown))]
         shown.sort(key=cases.index)
         if len(shown) < len(cases):
             pg.p(
-                f"{len(shown)} of {len(cases)} are shown (every erratum among them); the rest are in `tests/vectors/{p['name']}/`."
+                f"{len(shown)} of {len(cases)} are shown (every erratum among them); the rest are in `tests/vectors/{p['name']}/` and `tests/streams/{p['name']}/`."
             )
         for c in shown:
             status = "rejected (negative case)" if c["rejected"] else "accepted"

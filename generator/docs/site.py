@@ -16,7 +16,7 @@ from pathlib import Path
 from ..diagnostics import SpecError, SpecErrors
 from ..render import TEMPLATES
 from ..spec import ROOT, load_spec
-from ..vectors import load_vectors
+from ..vectors import load_corpus
 from .html import html_path, write_html
 from .model import LANG_TITLES
 
@@ -37,7 +37,7 @@ def build_site(out: Path) -> int:
     from ..backends.docs import build
 
     ir = load_spec(None, root=ROOT)
-    vectors = load_vectors(ir, ROOT / "tests" / "vectors")
+    vectors = load_corpus(ir, ROOT)
     docs = build(ir, vectors, _generated_examples())
     nav = [(p["title"], p["name"] + "/README.md") for p in ir["protocols"]] + [("Errata", "errata.md")]
     start = [(LANG_TITLES[lang], f"getting-started/{lang}.md") for lang in LANG_TITLES]

@@ -13,11 +13,11 @@ from pathlib import Path
 import pytest
 
 from generator.spec import load_spec
-from generator.vectors import load_vectors
+from generator.vectors import load_corpus
 
 ROOT = Path(__file__).resolve().parents[2]
 IR = load_spec()
-VECTORS = load_vectors(IR, ROOT / "tests" / "vectors")
+VECTORS = load_corpus(IR, ROOT)
 PACKAGES = {p["name"]: p["package"] for p in IR["protocols"]}
 CC = "s390x-linux-gnu-gcc"
 QEMU = "qemu-s390x"

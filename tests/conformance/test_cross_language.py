@@ -14,12 +14,12 @@ from pathlib import Path
 import pytest
 
 from generator.spec import load_spec
-from generator.vectors import load_vectors
+from generator.vectors import load_corpus
 
 ROOT = Path(__file__).resolve().parents[2]
 LANGS = ["c", "cpp", "python", "rust"]
 IR = load_spec()
-VECTORS = load_vectors(IR, ROOT / "tests" / "vectors")
+VECTORS = load_corpus(IR, ROOT)
 PROTOCOLS = [p["name"] for p in IR["protocols"]]
 
 

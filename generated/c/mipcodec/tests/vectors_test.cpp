@@ -1,5 +1,6 @@
-// Golden vectors (tests/vectors/): decode the bytes (whole and byte by byte) and compare the
-// exact JSON lines; encode the lines back and compare the bytes. Generated: do not edit.
+// Golden vectors (tests/vectors/) and the stream corpus (tests/streams/): decode the bytes, fed
+// whole and in chunks of every size from 1 byte up, and compare the exact JSON lines; encode the
+// lines back and compare the bytes. Generated: do not edit.
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
@@ -10,7 +11,15 @@ namespace {
     using namespace test_support;
     std::vector<uint8_t> bytes = from_hex(hex);
     EXPECT_EQ(decode_text(bytes, 0, device), expect) << "decoded whole";
-    EXPECT_EQ(decode_text(bytes, 1, device), expect) << "decoded one byte at a time";
+    // Every chunking: the events must not depend on how the input is split (the first size that
+    // differs is reported, not every one).
+    for (size_t chunk = 1; chunk < bytes.size(); ++chunk) {
+        std::string got = decode_text(bytes, chunk, device);
+        if (got != expect) {
+            EXPECT_EQ(got, expect) << "decoded in chunks of " << chunk << " bytes";
+            break;
+        }
+    }
     std::vector<uint8_t> encoded;
     std::string error;
     ASSERT_TRUE(encode_text(expect, &encoded, &error)) << error;
@@ -4045,79 +4054,6 @@ TEST(Vectors, continuation_packets_share_timestamps) {
         "\"odometer_data\",\"values\":{\"speed\":-2.5,\"uncertainty\":0.0625,\"valid_flags\":1}}]}\n");
 }
 
-TEST(Vectors, garbage_around_ping) {
-    check_vector("00ff756501020201e0c675", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"skipped\":\"00ff\"}\n{\"offset\":2,\"set\":1,\"fields\":[{\"descriptor\":1,"
-                 "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":10,\"skipped\":\"75\"}\n");
-}
-
-TEST(Vectors, false_sync_running_past_the_end) {
-    check_vector("75650110756501020201e0c6", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"skipped\":\"75650110\"}\n{\"offset\":4,\"set\":1,\"fields\":[{"
-                 "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
-}
-
-TEST(Vectors, bad_checksum_then_valid) {
-    check_vector(
-        "756501020201e0c77565010404f10100d56a", MIP_DEVICE_ANY,
-        "{\"offset\":0,\"skipped\":\"756501020201e0c7\"}\n{\"offset\":8,\"set\":1,\"fields\":[{"
-        "\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, packet_inside_false_packet) {
-    check_vector(
-        "7565010a756501020201e0c600000000", MIP_DEVICE_ANY,
-        "{\"offset\":0,\"skipped\":\"7565010a\"}\n{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,"
-        "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"skipped\":\"00000000\"}\n");
-}
-
-TEST(Vectors, truncated_packet_at_end) {
-    check_vector("7565010404f1", MIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"7565010404f1\"}\n");
-}
-
-TEST(Vectors, field_length_overruns_payload) {
-    check_vector("7565010402010302e798", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}},{"
-                 "\"trailing\":\"0302\",\"error\":\"field length 3 at payload offset 2 overruns the payload "
-                 "(2 bytes left)\"}]}\n");
-}
-
-TEST(Vectors, field_length_below_header) {
-    check_vector("756501020101dfc4", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":1,\"fields\":[{\"trailing\":\"0101\",\"error\":\"field length 1 at "
-                 "payload offset 0 is shorter than the field header\"}]}\n");
-}
-
-TEST(Vectors, field_too_short_for_type) {
-    check_vector("7565800a0a043f800000bf000000f0f1", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\","
-                 "\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 left\"}]}\n");
-}
-
-TEST(Vectors, field_with_trailing_bytes) {
-    check_vector("756501030302553804", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"55\",\"error\":\"1 "
-                 "unexpected bytes at offset 0\"}]}\n");
-}
-
-TEST(Vectors, unknown_set_and_descriptor) {
-    check_vector("7565a70404331234026a", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":51,\"data\":\"1234\",\"error\":"
-                 "\"unknown descriptor set\"}]}\n");
-}
-
-TEST(Vectors, ack_in_undefined_command_set) {
-    check_vector("75657e0404f110006176", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
-                 "{\"command_descriptor\":16,\"ack_code\":0}}]}\n");
-}
-
-TEST(Vectors, union_selector_without_member) {
-    check_vector("75650c07072e0101090104320c", MIP_DEVICE_ANY,
-                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":"
-                 "\"parameters: no member for selector value 9\"}]}\n");
-}
-
 TEST(Vectors, communication_mode_write_sensor_direct) {
     check_vector("75657f040410010274bd", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
@@ -4194,4 +4130,290 @@ TEST(Vectors, time_sync_lost_gpio_low) {
                  "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":2,\"name\":\"time_sync_status\","
                  "\"values\":{\"time_sync\":false,\"last_pps_rcvd\":255}},{\"descriptor\":3,\"name\":\"gpio_"
                  "state\",\"values\":{\"states\":0}}]}\n");
+}
+
+TEST(Streams, continuation_packets_with_garbage_and_a_reply_between) {
+    check_vector(
+        "756580f903d0000ed340f5180200000000092900030ad43f900000000000000ad50000011f71fb04cb0ad60000000000ee6b"
+        "280cd713aef6e5f153594000010cd80000000000ee6b2800010e040000000000000000bf8000000e053b00000000000000bf"
+        "0000000e063f0000003e000000bec000000e073f000000be8000003e0000000e083d800000bfc000004000000026093f8000"
+        "000000000000000000000000003f8000000000000000000000000000003f800000120a3f8000000000000000000000000000"
+        "000e0c3e800000be000000404000000e1240f51802000000000929001f0e1441a400004235000041f900000617447d500004"
+        "180000846b0075007565010404f10100d56a7565805303d0000ed340f5180200000000092900030ad43f900000000000000a"
+        "d50000011f71fb04cb0ad60000000000ee6b280cd713aef6e5f153594000010cd80000000000ee6b2800010c40c02000003d"
+        "8000000001da22",
+        MIP_DEVICE_CV7_INS,
+        "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{"
+        "\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,"
+        "\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":{"
+        "\"seconds\":0.015625}},{\"descriptor\":213,\"name\":\"reference_timestamp\",\"values\":{"
+        "\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_time_delta\",\"values\":{"
+        "\"dt_nanos\":15625000}},{\"descriptor\":215,\"name\":\"external_timestamp\",\"values\":{"
+        "\"nanoseconds\":1418342400125000000,\"valid_flags\":1}},{\"descriptor\":216,\"name\":\"external_"
+        "time_delta\",\"values\":{\"dt_nanos\":15625000,\"valid_flags\":1}},{\"descriptor\":4,\"name\":"
+        "\"scaled_accel\",\"values\":{\"scaled_accel\":[0.0,0.0,-1.0]}},{\"descriptor\":5,\"name\":\"scaled_"
+        "gyro\",\"values\":{\"scaled_gyro\":[0.001953125,0.0,-0.5]}},{\"descriptor\":6,\"name\":\"scaled_"
+        "mag\",\"values\":{\"scaled_mag\":[0.5,0.125,-0.375]}},{\"descriptor\":7,\"name\":\"delta_theta\","
+        "\"values\":{\"delta_theta\":[0.5,-0.25,0.125]}},{\"descriptor\":8,\"name\":\"delta_velocity\","
+        "\"values\":{\"delta_velocity\":[0.0625,-1.5,2.0]}},{\"descriptor\":9,\"name\":\"cf_orientation_"
+        "matrix\",\"values\":{\"m\":[1.0,0.0,0.0,0.0,1.0,0.0,0.0,0.0,1.0]}},{\"descriptor\":10,\"name\":\"cf_"
+        "quaternion\",\"values\":{\"q\":[1.0,0.0,0.0,0.0]}},{\"descriptor\":12,\"name\":\"cf_euler_angles\","
+        "\"values\":{\"roll\":0.25,\"pitch\":-0.125,\"yaw\":3.0}},{\"descriptor\":18,\"name\":\"gps_"
+        "timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":31}},{\"descriptor\":"
+        "20,\"name\":\"temperature_statistics\",\"values\":{\"min_temp\":20.5,\"max_temp\":45.25,\"mean_"
+        "temp\":31.125}},{\"descriptor\":23,\"name\":\"scaled_pressure\",\"values\":{\"scaled_pressure\":"
+        "1013.25}},{\"descriptor\":24,\"name\":\"overrange_status\",\"values\":{\"status\":0}}]}\n{"
+        "\"offset\":255,\"skipped\":\"007500\"}\n{\"offset\":258,\"set\":1,\"fields\":[{\"descriptor\":241,"
+        "\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}\n{\"offset\":268,"
+        "\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{\"trigger_id\":0}}"
+        ",{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,"
+        "\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":{\"seconds\":0.015625}},{"
+        "\"descriptor\":213,\"name\":\"reference_timestamp\",\"values\":{\"nanoseconds\":1234567890123}},{"
+        "\"descriptor\":214,\"name\":\"reference_time_delta\",\"values\":{\"dt_nanos\":15625000}},{"
+        "\"descriptor\":215,\"name\":\"external_timestamp\",\"values\":{\"nanoseconds\":1418342400125000000,"
+        "\"valid_flags\":1}},{\"descriptor\":216,\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":"
+        "15625000,\"valid_flags\":1}},{\"descriptor\":64,\"name\":\"odometer_data\",\"values\":{\"speed\":-2."
+        "5,\"uncertainty\":0.0625,\"valid_flags\":1}}]}\n");
+}
+
+TEST(Streams, zero_length_fields) {
+    check_vector(
+        "75658012020402fe0e043f800000bf00000040000000427b", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"\",\"error\":\"scaled_accel[0]: "
+        "needs 4 bytes at offset 0, 0 left\"},{\"descriptor\":254,\"data\":\"\",\"error\":\"unknown "
+        "descriptor\"},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2."
+        "0]}}]}\n");
+}
+
+TEST(Streams, field_length_zero_after_a_field) {
+    check_vector("756580120e043f800000bf000000400000000004112273a1", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\","
+                 "\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"trailing\":\"00041122\",\"error\":\"field "
+                 "length 0 at payload offset 14 is shorter than the field header\"}]}\n");
+}
+
+TEST(Streams, short_field_does_not_stop_the_next) {
+    check_vector("756580180a043f800000bf0000000e053e80000000000000c0400000cf9c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\","
+                 "\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 "
+                 "left\"},{\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{\"scaled_gyro\":[0.25,0.0,-"
+                 "3.0]}}]}\n");
+}
+
+TEST(Streams, invalid_bool_byte) {
+    check_vector("75650c03039e028c20", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":158,\"data\":\"02\",\"error\":"
+                 "\"enable: invalid bool value 2 at offset 0\"}]}\n");
+}
+
+TEST(Streams, count_past_the_maximum) {
+    check_vector("75650e0303810877f6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":129,\"data\":\"08\",\"error\":"
+                 "\"receiver_info: count 8 exceeds maximum 7\"}]}\n");
+}
+
+TEST(Streams, unknown_enum_value_is_kept) {
+    check_vector("75650d0505d0007f014116", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":208,\"name\":\"aiding_measurement_"
+                 "control_response\",\"values\":{\"source\":127,\"enable\":true}}]}\n");
+}
+
+TEST(Streams, reserved_bits_are_kept) {
+    check_vector("7565800e0ed340f51802000000000929ffffc861", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\","
+                 "\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":65535}}]}\n");
+}
+
+TEST(Streams, shared_descriptor_in_an_undefined_data_set) {
+    check_vector("7565a70e0ed340f518020000000009290003f4d7", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\","
+                 "\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}}]}\n");
+}
+
+TEST(Streams, set_zero_has_no_kind) {
+    check_vector("756500020201dfc2", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":0,\"fields\":[{\"descriptor\":1,\"data\":\"\",\"error\":\"unknown "
+                 "descriptor set\"}]}\n");
+}
+
+TEST(Streams, ack_descriptor_in_a_data_set) {
+    check_vector("7565800404f101005464", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":241,\"data\":\"0100\",\"error\":"
+                 "\"unknown descriptor\"}]}\n");
+}
+
+TEST(Streams, empty_stream) {
+    check_vector("", MIP_DEVICE_ANY, "");
+}
+
+TEST(Streams, only_garbage) {
+    check_vector(
+        "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"skipped\":\"000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f\"}\n");
+}
+
+TEST(Streams, garbage_inside_packet) {
+    check_vector("75650102aabbcc0201e0c6756501020201e0c6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650102aabbcc0201e0c6\"}\n{\"offset\":11,\"set\":1,\"fields\":"
+                 "[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, sync_bytes_inside_a_valid_payload) {
+    check_vector(
+        "7565800606fe7565756518b5756501020201e0c6", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":254,\"data\":\"75657565\",\"error\":\"unknown "
+        "descriptor\"}]}\n{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\","
+        "\"values\":{}}]}\n");
+}
+
+TEST(Streams, lone_sync_bytes_between_packets) {
+    check_vector(
+        "756501020201e0c675756501020201e0c665756501020201e0c6756501", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
+        "\"offset\":8,\"skipped\":\"75\"}\n{\"offset\":9,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":"
+        "\"ping\",\"values\":{}}]}\n{\"offset\":17,\"skipped\":\"65\"}\n{\"offset\":18,\"set\":1,\"fields\":["
+        "{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":26,\"skipped\":\"756501\"}\n");
+}
+
+TEST(Streams, repeated_sync_pairs_before_a_packet) {
+    check_vector("756575657565756501020201e0c6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"756575657565\"}\n{\"offset\":6,\"set\":1,\"fields\":[{"
+                 "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, false_sync_of_maximum_length_over_two_packets) {
+    check_vector(
+        "756580ff756501020201e0c67565010404f10100d56a", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"skipped\":\"756580ff\"}\n{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,"
+        "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":241,"
+        "\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}\n");
+}
+
+TEST(Streams, checksum_bytes_swapped) {
+    check_vector("756501020201c6e0756501020201e0c6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"756501020201c6e0\"}\n{\"offset\":8,\"set\":1,\"fields\":[{"
+                 "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, longest_legal_packet) {
+    check_vector(
+        "756580ff0e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f80"
+        "0000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf0000004000"
+        "00000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000"
+        "bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf00000040000000"
+        "0e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf00"
+        "00004000000003fe00faf6756501020201e0c6",
+        MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{"
+        "\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_"
+        "accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":["
+        "1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,"
+        "2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":254,\"data\":\"00\",\"error\":\"unknown "
+        "descriptor\"}]}\n{\"offset\":261,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\","
+        "\"values\":{}}]}\n");
+}
+
+TEST(Streams, empty_payloads) {
+    check_vector("756580005a0375650100db05", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":128,\"fields\":[]}\n{\"offset\":6,\"set\":1,\"fields\":[]}\n");
+}
+
+TEST(Streams, truncated_packet_after_a_valid_one) {
+    check_vector("756501020201e0c6756501020201e0", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
+                 "\"offset\":8,\"skipped\":\"756501020201e0\"}\n");
+}
+
+TEST(Streams, mscip_packet_in_a_mip_stream) {
+    check_vector("756501020201e0c6a5a5010202004f25756501020201e0c6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
+                 "\"offset\":8,\"skipped\":\"a5a5010202004f25\"}\n{\"offset\":16,\"set\":1,\"fields\":[{"
+                 "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, garbage_around_ping) {
+    check_vector("00ff756501020201e0c675", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"00ff\"}\n{\"offset\":2,\"set\":1,\"fields\":[{\"descriptor\":1,"
+                 "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":10,\"skipped\":\"75\"}\n");
+}
+
+TEST(Streams, false_sync_running_past_the_end) {
+    check_vector("75650110756501020201e0c6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650110\"}\n{\"offset\":4,\"set\":1,\"fields\":[{"
+                 "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, bad_checksum_then_valid) {
+    check_vector(
+        "756501020201e0c77565010404f10100d56a", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"skipped\":\"756501020201e0c7\"}\n{\"offset\":8,\"set\":1,\"fields\":[{"
+        "\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}\n");
+}
+
+TEST(Streams, packet_inside_false_packet) {
+    check_vector(
+        "7565010a756501020201e0c600000000", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"skipped\":\"7565010a\"}\n{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,"
+        "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"skipped\":\"00000000\"}\n");
+}
+
+TEST(Streams, truncated_packet_at_end) {
+    check_vector("7565010404f1", MIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"7565010404f1\"}\n");
+}
+
+TEST(Streams, field_length_overruns_payload) {
+    check_vector("7565010402010302e798", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}},{"
+                 "\"trailing\":\"0302\",\"error\":\"field length 3 at payload offset 2 overruns the payload "
+                 "(2 bytes left)\"}]}\n");
+}
+
+TEST(Streams, field_length_below_header) {
+    check_vector("756501020101dfc4", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":1,\"fields\":[{\"trailing\":\"0101\",\"error\":\"field length 1 at "
+                 "payload offset 0 is shorter than the field header\"}]}\n");
+}
+
+TEST(Streams, field_too_short_for_type) {
+    check_vector("7565800a0a043f800000bf000000f0f1", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\","
+                 "\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 left\"}]}\n");
+}
+
+TEST(Streams, field_with_trailing_bytes) {
+    check_vector("756501030302553804", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"55\",\"error\":\"1 "
+                 "unexpected bytes at offset 0\"}]}\n");
+}
+
+TEST(Streams, unknown_set_and_descriptor) {
+    check_vector("7565a70404331234026a", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":51,\"data\":\"1234\",\"error\":"
+                 "\"unknown descriptor set\"}]}\n");
+}
+
+TEST(Streams, ack_in_undefined_command_set) {
+    check_vector("75657e0404f110006176", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
+                 "{\"command_descriptor\":16,\"ack_code\":0}}]}\n");
+}
+
+TEST(Streams, union_selector_without_member) {
+    check_vector("75650c07072e0101090104320c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":"
+                 "\"parameters: no member for selector value 9\"}]}\n");
 }

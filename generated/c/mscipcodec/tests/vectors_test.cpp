@@ -1,5 +1,6 @@
-// Golden vectors (tests/vectors/): decode the bytes (whole and byte by byte) and compare the
-// exact JSON lines; encode the lines back and compare the bytes. Generated: do not edit.
+// Golden vectors (tests/vectors/) and the stream corpus (tests/streams/): decode the bytes, fed
+// whole and in chunks of every size from 1 byte up, and compare the exact JSON lines; encode the
+// lines back and compare the bytes. Generated: do not edit.
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
@@ -10,7 +11,15 @@ namespace {
     using namespace test_support;
     std::vector<uint8_t> bytes = from_hex(hex);
     EXPECT_EQ(decode_text(bytes, 0, device), expect) << "decoded whole";
-    EXPECT_EQ(decode_text(bytes, 1, device), expect) << "decoded one byte at a time";
+    // Every chunking: the events must not depend on how the input is split (the first size that
+    // differs is reported, not every one).
+    for (size_t chunk = 1; chunk < bytes.size(); ++chunk) {
+        std::string got = decode_text(bytes, chunk, device);
+        if (got != expect) {
+            EXPECT_EQ(got, expect) << "decoded in chunks of " << chunk << " bytes";
+            break;
+        }
+    }
     std::vector<uint8_t> encoded;
     std::string error;
     ASSERT_TRUE(encode_text(expect, &encoded, &error)) << error;
@@ -860,7 +869,7 @@ TEST(Vectors, imu_data_all_fields) {
         "accel\",\"values\":{\"accel\":[-2.0,4.0,0.125]}}]}\n");
 }
 
-TEST(Vectors, mscip_garbage_around_packets) {
+TEST(Streams, mscip_garbage_around_packets) {
     check_vector("00ff13a5a5010202004f2555a5a5010480020200d3cfa5", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"00ff13\"}\n{\"offset\":3,\"set\":1,\"fields\":[{\"descriptor\":"
                  "2,\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":11,\"skipped\":\"55\"}\n{\"offset\":12,"
@@ -868,26 +877,26 @@ TEST(Vectors, mscip_garbage_around_packets) {
                  "\"error_code\":0}}]}\n{\"offset\":22,\"skipped\":\"a5\"}\n");
 }
 
-TEST(Vectors, mscip_false_sync_running_past_the_end) {
+TEST(Streams, mscip_false_sync_running_past_the_end) {
     check_vector("a5a50130a5a5010202004f25", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"a5a50130\"}\n{\"offset\":4,\"set\":1,\"fields\":[{"
                  "\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
-TEST(Vectors, mscip_false_sync_bad_checksum_packet_inside) {
+TEST(Streams, mscip_false_sync_bad_checksum_packet_inside) {
     check_vector(
         "a5a5010aa5a5010202004f2500000000", MSCIP_DEVICE_ANY,
         "{\"offset\":0,\"skipped\":\"a5a5010a\"}\n{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":2,"
         "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"skipped\":\"00000000\"}\n");
 }
 
-TEST(Vectors, mscip_extra_sync_byte) {
+TEST(Streams, mscip_extra_sync_byte) {
     check_vector("a5a5a5010202004f25", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"a5\"}\n{\"offset\":1,\"set\":1,\"fields\":[{\"descriptor\":2,"
                  "\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
-TEST(Vectors, mscip_packets_back_to_back) {
+TEST(Streams, mscip_packets_back_to_back) {
     check_vector(
         "a5a502050c0301818264f0a5a5020480020c00dee9a5a5a21c810c37a7c5ac377ba8823f800065820c37a7c5ac377ba88237"
         "49539c0c23a5a5a21c810c37a7c5ac377ba8823f800065820c37a7c5ac377ba8823749539c0c23",
@@ -904,74 +913,149 @@ TEST(Vectors, mscip_packets_back_to_back) {
         "9999999494757503e-05,1.4999999621068127e-05,1.2000000424450263e-05]}}]}\n");
 }
 
-TEST(Vectors, mscip_mip_packet_in_mscip_stream) {
+TEST(Streams, mscip_mip_packet_in_mscip_stream) {
     check_vector("a5a5010202004f25756501020201e0c6a5a5010480020200d3cf", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}\n{"
                  "\"offset\":8,\"skipped\":\"756501020201e0c6\"}\n{\"offset\":16,\"set\":1,\"fields\":[{"
                  "\"descriptor\":128,\"name\":\"ack\",\"values\":{\"command_code\":2,\"error_code\":0}}]}\n");
 }
 
-TEST(Vectors, mscip_bad_checksum_then_valid) {
+TEST(Streams, mscip_bad_checksum_then_valid) {
     check_vector("a5a5010480020200d3cea5a5010480020200d3cf", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"a5a5010480020200d3ce\"}\n{\"offset\":10,\"set\":1,\"fields\":[{"
                  "\"descriptor\":128,\"name\":\"ack\",\"values\":{\"command_code\":2,\"error_code\":0}}]}\n");
 }
 
-TEST(Vectors, mscip_truncated_packet_at_end) {
+TEST(Streams, mscip_truncated_packet_at_end) {
     check_vector("a5a50104800202", MSCIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"a5a50104800202\"}\n");
 }
 
-TEST(Vectors, mscip_field_header_cut_short) {
+TEST(Streams, mscip_field_header_cut_short) {
     check_vector(
         "a5a50103020080d0f8", MSCIP_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}},{"
         "\"trailing\":\"80\",\"error\":\"field header at payload offset 2 needs 2 bytes, 1 left\"}]}\n");
 }
 
-TEST(Vectors, mscip_field_size_overruns_payload) {
+TEST(Streams, mscip_field_size_overruns_payload) {
     check_vector("a5a5010480030200d4d2", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"trailing\":\"80030200\",\"error\":\"field length 3 "
                  "at payload offset 0 overruns the payload (4 bytes left)\"}]}\n");
 }
 
-TEST(Vectors, mscip_field_too_short_for_type) {
+TEST(Streams, mscip_field_too_short_for_type) {
     check_vector("a5a5a2048602447f3bb0", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":134,\"data\":\"447f\",\"error\":"
                  "\"pressure: needs 4 bytes at offset 0, 2 left\"}]}\n");
 }
 
-TEST(Vectors, mscip_field_with_trailing_bytes) {
+TEST(Streams, mscip_field_with_trailing_bytes) {
     check_vector("a5a50103020155a6cf", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"55\",\"error\":\"1 "
                  "unexpected bytes at offset 0\"}]}\n");
 }
 
-TEST(Vectors, mscip_message_list_with_half_entry) {
+TEST(Streams, mscip_message_list_with_half_entry) {
     check_vector("a5a501058303010201dabd", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":131,\"data\":\"010201\",\"error\":"
                  "\"messages: 3 bytes left at offset 0, not a multiple of 2\"}]}\n");
 }
 
-TEST(Vectors, mscip_unknown_message_code) {
+TEST(Streams, mscip_unknown_message_code) {
     check_vector("a5a501020a005735", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":10,\"data\":\"\",\"error\":\"unknown "
                  "descriptor\"}]}\n");
 }
 
-TEST(Vectors, mscip_ack_code_in_data_message) {
+TEST(Streams, mscip_ack_code_in_data_message) {
     check_vector("a5a5a204800202007495", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":128,\"data\":\"0200\",\"error\":"
                  "\"unknown descriptor\"}]}\n");
 }
 
-TEST(Vectors, mscip_unknown_message_type) {
+TEST(Streams, mscip_unknown_message_type) {
     check_vector("a5a5a30681043f8000003717", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":163,\"fields\":[{\"descriptor\":129,\"data\":\"3f800000\",\"error\":"
                  "\"unknown descriptor set\"}]}\n");
 }
 
-TEST(Vectors, mscip_select_sensors_rev_a_with_a_regular_size_byte) {
+TEST(Streams, mscip_select_sensors_rev_a_with_a_regular_size_byte) {
     check_vector("a5a502060504010081825f33", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":2,\"fields\":[{\"trailing\":\"050401008182\",\"error\":\"field "
                  "length 4 at payload offset 0 overruns the payload (6 bytes left)\"}]}\n");
+}
+
+TEST(Streams, mscip_empty_stream) {
+    check_vector("", MSCIP_DEVICE_ANY, "");
+}
+
+TEST(Streams, mscip_garbage_inside_packet) {
+    check_vector("a5a50102aabbcc02004f25a5a5010202004f25", MSCIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"a5a50102aabbcc02004f25\"}\n{\"offset\":11,\"set\":1,\"fields\":"
+                 "[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, mscip_sync_bytes_inside_a_valid_payload) {
+    check_vector(
+        "a5a5a2067e04a5a5a5a508f3a5a5010202004f25", MSCIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":126,\"data\":\"a5a5a5a5\",\"error\":\"unknown "
+        "descriptor\"}]}\n{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\","
+        "\"values\":{}}]}\n");
+}
+
+TEST(Streams, mscip_false_sync_of_maximum_length) {
+    check_vector("a5a5a2ffa5a5010202004f25a5a5010202004f25", MSCIP_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"a5a5a2ff\"}\n{\"offset\":4,\"set\":1,\"fields\":[{"
+                 "\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"set\":1,\"fields\":[{"
+                 "\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, mscip_longest_legal_packet) {
+    check_vector(
+        "a5a5a2ff810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f80"
+        "0000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf0000004000"
+        "0000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000"
+        "bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000"
+        "810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00"
+        "0000400000007e0100b03fa5a5010202004f25",
+        MSCIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{"
+        "\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,"
+        "-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":"
+        "129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":"
+        "\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_"
+        "accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\","
+        "\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{"
+        "\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,"
+        "-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{"
+        "\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":"
+        "129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":"
+        "\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_"
+        "accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\","
+        "\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{"
+        "\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,"
+        "-0.5,2.0]}},{\"descriptor\":126,\"data\":\"00\",\"error\":\"unknown "
+        "descriptor\"}]}\n{\"offset\":261,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\","
+        "\"values\":{}}]}\n");
+}
+
+TEST(Streams, mscip_empty_payloads) {
+    check_vector("a5a5a200ecc7a5a501004b85", MSCIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":162,\"fields\":[]}\n{\"offset\":6,\"set\":1,\"fields\":[]}\n");
+}
+
+TEST(Streams, mscip_zero_length_fields) {
+    check_vector(
+        "a5a5a21281007e00810c3f800000bf0000004000000048bd", MSCIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":129,\"data\":\"\",\"error\":\"accel[0]: needs "
+        "4 bytes at offset 0, 0 left\"},{\"descriptor\":126,\"data\":\"\",\"error\":\"unknown "
+        "descriptor\"},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}}]}"
+        "\n");
+}
+
+TEST(Streams, mscip_unknown_command_set) {
+    check_vector("a5a555020200a375", MSCIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":85,\"fields\":[{\"descriptor\":2,\"data\":\"\",\"error\":\"unknown "
+                 "descriptor set\"}]}\n");
 }

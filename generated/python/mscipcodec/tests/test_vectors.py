@@ -1,4 +1,5 @@
-"""Golden vectors (generated from tests/vectors/mscip/): decode whole and byte by byte, encode back."""
+"""Golden vectors and stream corpus (generated from tests/vectors/mscip/ and
+tests/streams/mscip/): decode whole and fed in chunks of every size, encode back."""
 
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
@@ -1223,7 +1224,7 @@ CASES = [
         "hex": "00ff13a5a5010202004f2555a5a5010480020200d3cfa5",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:8",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:8",
         "expect": [
             '{"offset":0,"skipped":"00ff13"}',
             '{"offset":3,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
@@ -1237,7 +1238,7 @@ CASES = [
         "hex": "a5a50130a5a5010202004f25",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:28",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:28",
         "expect": [
             '{"offset":0,"skipped":"a5a50130"}',
             '{"offset":4,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
@@ -1248,7 +1249,7 @@ CASES = [
         "hex": "a5a5010aa5a5010202004f2500000000",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:42",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:42",
         "expect": [
             '{"offset":0,"skipped":"a5a5010a"}',
             '{"offset":4,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
@@ -1260,7 +1261,7 @@ CASES = [
         "hex": "a5a5a5010202004f25",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:58",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:58",
         "expect": [
             '{"offset":0,"skipped":"a5"}',
             '{"offset":1,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
@@ -1271,7 +1272,7 @@ CASES = [
         "hex": "a5a502050c0301818264f0a5a5020480020c00dee9a5a5a21c810c37a7c5ac377ba8823f800065820c37a7c5ac377ba8823749539c0c23a5a5a21c810c37a7c5ac377ba8823f800065820c37a7c5ac377ba8823749539c0c23",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:72",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:72",
         "expect": [
             '{"offset":0,"set":2,"fields":[{"descriptor":12,"name":"select_sensors_rev_b","values":{"function":1,"sensors":[129,130]}}]}',
             '{"offset":11,"set":2,"fields":[{"descriptor":128,"name":"ack","values":{"command_code":12,"error_code":0}}]}',
@@ -1284,7 +1285,7 @@ CASES = [
         "hex": "a5a5010202004f25756501020201e0c6a5a5010480020200d3cf",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:98",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:98",
         "expect": [
             '{"offset":0,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
             '{"offset":8,"skipped":"756501020201e0c6"}',
@@ -1296,7 +1297,7 @@ CASES = [
         "hex": "a5a5010480020200d3cea5a5010480020200d3cf",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:116",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:116",
         "expect": [
             '{"offset":0,"skipped":"a5a5010480020200d3ce"}',
             '{"offset":10,"set":1,"fields":[{"descriptor":128,"name":"ack","values":{"command_code":2,"error_code":0}}]}',
@@ -1307,7 +1308,7 @@ CASES = [
         "hex": "a5a50104800202",
         "device": None,
         "rejected": True,
-        "where": "tests/vectors/mscip/streams.yaml:129",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:129",
         "expect": ['{"offset":0,"skipped":"a5a50104800202"}'],
     },
     {
@@ -1315,7 +1316,7 @@ CASES = [
         "hex": "a5a50103020080d0f8",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:135",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:135",
         "expect": [
             '{"offset":0,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}},{"trailing":"80","error":"field header at payload offset 2 needs 2 bytes, 1 left"}]}'
         ],
@@ -1325,7 +1326,7 @@ CASES = [
         "hex": "a5a5010480030200d4d2",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:146",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:146",
         "expect": [
             '{"offset":0,"set":1,"fields":[{"trailing":"80030200","error":"field length 3 at payload offset 0 overruns the payload (4 bytes left)"}]}'
         ],
@@ -1335,7 +1336,7 @@ CASES = [
         "hex": "a5a5a2048602447f3bb0",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:157",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:157",
         "expect": [
             '{"offset":0,"set":162,"fields":[{"descriptor":134,"data":"447f","error":"pressure: needs 4 bytes at offset 0, 2 left"}]}'
         ],
@@ -1345,7 +1346,7 @@ CASES = [
         "hex": "a5a50103020155a6cf",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:167",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:167",
         "expect": [
             '{"offset":0,"set":1,"fields":[{"descriptor":2,"data":"55","error":"1 unexpected bytes at offset 0"}]}'
         ],
@@ -1355,7 +1356,7 @@ CASES = [
         "hex": "a5a501058303010201dabd",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:177",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:177",
         "expect": [
             '{"offset":0,"set":1,"fields":[{"descriptor":131,"data":"010201","error":"messages: 3 bytes left at offset 0, not a multiple of 2"}]}'
         ],
@@ -1365,7 +1366,7 @@ CASES = [
         "hex": "a5a501020a005735",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:188",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:188",
         "expect": ['{"offset":0,"set":1,"fields":[{"descriptor":10,"data":"","error":"unknown descriptor"}]}'],
     },
     {
@@ -1373,7 +1374,7 @@ CASES = [
         "hex": "a5a5a204800202007495",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:199",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:199",
         "expect": ['{"offset":0,"set":162,"fields":[{"descriptor":128,"data":"0200","error":"unknown descriptor"}]}'],
     },
     {
@@ -1381,7 +1382,7 @@ CASES = [
         "hex": "a5a5a30681043f8000003717",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:210",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:210",
         "expect": [
             '{"offset":0,"set":163,"fields":[{"descriptor":129,"data":"3f800000","error":"unknown descriptor set"}]}'
         ],
@@ -1391,10 +1392,89 @@ CASES = [
         "hex": "a5a502060504010081825f33",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mscip/streams.yaml:220",
+        "where": "tests/streams/mscip/framing_and_fields.yaml:220",
         "expect": [
             '{"offset":0,"set":2,"fields":[{"trailing":"050401008182","error":"field length 4 at payload offset 0 overruns the payload (6 bytes left)"}]}'
         ],
+    },
+    {
+        "name": "mscip_empty_stream",
+        "hex": "",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:7",
+        "expect": [],
+    },
+    {
+        "name": "mscip_garbage_inside_packet",
+        "hex": "a5a50102aabbcc02004f25a5a5010202004f25",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:11",
+        "expect": [
+            '{"offset":0,"skipped":"a5a50102aabbcc02004f25"}',
+            '{"offset":11,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
+        ],
+    },
+    {
+        "name": "mscip_sync_bytes_inside_a_valid_payload",
+        "hex": "a5a5a2067e04a5a5a5a508f3a5a5010202004f25",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:26",
+        "expect": [
+            '{"offset":0,"set":162,"fields":[{"descriptor":126,"data":"a5a5a5a5","error":"unknown descriptor"}]}',
+            '{"offset":12,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
+        ],
+    },
+    {
+        "name": "mscip_false_sync_of_maximum_length",
+        "hex": "a5a5a2ffa5a5010202004f25a5a5010202004f25",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:42",
+        "expect": [
+            '{"offset":0,"skipped":"a5a5a2ff"}',
+            '{"offset":4,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
+            '{"offset":12,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
+        ],
+    },
+    {
+        "name": "mscip_longest_legal_packet",
+        "hex": "a5a5a2ff810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf000000400000007e0100b03fa5a5010202004f25",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:59",
+        "expect": [
+            '{"offset":0,"set":162,"fields":[{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}},{"descriptor":126,"data":"00","error":"unknown descriptor"}]}',
+            '{"offset":261,"set":1,"fields":[{"descriptor":2,"name":"ping","values":{}}]}',
+        ],
+    },
+    {
+        "name": "mscip_empty_payloads",
+        "hex": "a5a5a200ecc7a5a501004b85",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:103",
+        "expect": ['{"offset":0,"set":162,"fields":[]}', '{"offset":6,"set":1,"fields":[]}'],
+    },
+    {
+        "name": "mscip_zero_length_fields",
+        "hex": "a5a5a21281007e00810c3f800000bf0000004000000048bd",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:112",
+        "expect": [
+            '{"offset":0,"set":162,"fields":[{"descriptor":129,"data":"","error":"accel[0]: needs 4 bytes at offset 0, 0 left"},{"descriptor":126,"data":"","error":"unknown descriptor"},{"descriptor":129,"name":"scaled_accel","values":{"accel":[1.0,-0.5,2.0]}}]}'
+        ],
+    },
+    {
+        "name": "mscip_unknown_command_set",
+        "hex": "a5a555020200a375",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mscip/framing_and_fields_more.yaml:125",
+        "expect": ['{"offset":0,"set":85,"fields":[{"descriptor":2,"data":"","error":"unknown descriptor set"}]}'],
     },
 ]
 
@@ -1405,10 +1485,11 @@ def test_decode_whole(case):
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
-def test_decode_byte_by_byte(case):
+def test_decode_every_chunking(case):
     data = bytes.fromhex(case["hex"])
-    lines = list(decode_stream((data[i : i + 1] for i in range(len(data))), case["device"]))
-    assert lines == case["expect"], case["where"]
+    for size in range(1, len(data)):
+        lines = list(decode_stream((data[i : i + size] for i in range(0, len(data), size)), case["device"]))
+        assert lines == case["expect"], f"{case['where']}: decoded in chunks of {size} bytes"
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])

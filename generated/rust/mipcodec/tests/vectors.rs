@@ -1,6 +1,6 @@
-//! Golden vectors (tests/vectors/mip/): each case's bytes decode (whole, and fed one
-//! byte at a time) to exactly the expected canonical JSON lines, and those lines encode back to
-//! the bytes.
+//! Golden vectors (tests/vectors/mip/) and stream corpus (tests/streams/mip/):
+//! each case's bytes decode (whole, and fed in chunks of every size) to exactly the expected
+//! canonical JSON lines, and those lines encode back to the bytes.
 
 use mipcodec::text::{decode_bytes, encode_text};
 use mipcodec::Device;
@@ -25,11 +25,13 @@ fn check(hex: &str, device: Option<&str>, expect: &[&str], rejected: bool) {
         text,
         "decoding the whole input"
     );
-    assert_eq!(
-        decode_bytes(&bytes, device, 1),
-        text,
-        "decoding one byte at a time"
-    );
+    for chunk in 1..bytes.len() {
+        assert_eq!(
+            decode_bytes(&bytes, device, chunk),
+            text,
+            "decoding in chunks of {chunk} bytes"
+        );
+    }
     let encoded =
         encode_text(&text).unwrap_or_else(|(line, e)| panic!("encoding line {line}: {e}"));
     assert_eq!(
@@ -7051,166 +7053,6 @@ fn case_continuation_packets_share_timestamps() {
     );
 }
 
-/// `garbage_around_ping` (tests/vectors/mip/streams.yaml:5)
-#[test]
-fn case_garbage_around_ping() {
-    check(
-        "00ff756501020201e0c675",
-        None,
-        &[
-            "{\"offset\":0,\"skipped\":\"00ff\"}",
-            "{\"offset\":2,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
-            "{\"offset\":10,\"skipped\":\"75\"}",
-        ],
-        false,
-    );
-}
-
-/// `false_sync_running_past_the_end` (tests/vectors/mip/streams.yaml:19)
-#[test]
-fn case_false_sync_running_past_the_end() {
-    check(
-        "75650110756501020201e0c6",
-        None,
-        &[
-            "{\"offset\":0,\"skipped\":\"75650110\"}",
-            "{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
-        ],
-        false,
-    );
-}
-
-/// `bad_checksum_then_valid` (tests/vectors/mip/streams.yaml:32)
-#[test]
-fn case_bad_checksum_then_valid() {
-    check(
-        "756501020201e0c77565010404f10100d56a",
-        None,
-        &[
-            "{\"offset\":0,\"skipped\":\"756501020201e0c7\"}",
-            "{\"offset\":8,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `packet_inside_false_packet` (tests/vectors/mip/streams.yaml:45)
-#[test]
-fn case_packet_inside_false_packet() {
-    check(
-        "7565010a756501020201e0c600000000",
-        None,
-        &[
-            "{\"offset\":0,\"skipped\":\"7565010a\"}",
-            "{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
-            "{\"offset\":12,\"skipped\":\"00000000\"}",
-        ],
-        false,
-    );
-}
-
-/// `truncated_packet_at_end` (tests/vectors/mip/streams.yaml:61)
-#[test]
-fn case_truncated_packet_at_end() {
-    check(
-        "7565010404f1",
-        None,
-        &["{\"offset\":0,\"skipped\":\"7565010404f1\"}"],
-        true,
-    );
-}
-
-/// `field_length_overruns_payload` (tests/vectors/mip/streams.yaml:66)
-#[test]
-fn case_field_length_overruns_payload() {
-    check(
-        "7565010402010302e798",
-        None,
-        &[
-            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}},{\"trailing\":\"0302\",\"error\":\"field length 3 at payload offset 2 overruns the payload (2 bytes left)\"}]}",
-        ],
-        false,
-    );
-}
-
-/// `field_length_below_header` (tests/vectors/mip/streams.yaml:78)
-#[test]
-fn case_field_length_below_header() {
-    check(
-        "756501020101dfc4",
-        None,
-        &[
-            "{\"offset\":0,\"set\":1,\"fields\":[{\"trailing\":\"0101\",\"error\":\"field length 1 at payload offset 0 is shorter than the field header\"}]}",
-        ],
-        false,
-    );
-}
-
-/// `field_too_short_for_type` (tests/vectors/mip/streams.yaml:88)
-#[test]
-fn case_field_too_short_for_type() {
-    check(
-        "7565800a0a043f800000bf000000f0f1",
-        None,
-        &[
-            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\",\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 left\"}]}",
-        ],
-        false,
-    );
-}
-
-/// `field_with_trailing_bytes` (tests/vectors/mip/streams.yaml:99)
-#[test]
-fn case_field_with_trailing_bytes() {
-    check(
-        "756501030302553804",
-        None,
-        &[
-            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"55\",\"error\":\"1 unexpected bytes at offset 0\"}]}",
-        ],
-        false,
-    );
-}
-
-/// `unknown_set_and_descriptor` (tests/vectors/mip/streams.yaml:109)
-#[test]
-fn case_unknown_set_and_descriptor() {
-    check(
-        "7565a70404331234026a",
-        None,
-        &[
-            "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":51,\"data\":\"1234\",\"error\":\"unknown descriptor set\"}]}",
-        ],
-        false,
-    );
-}
-
-/// `ack_in_undefined_command_set` (tests/vectors/mip/streams.yaml:119)
-#[test]
-fn case_ack_in_undefined_command_set() {
-    check(
-        "75657e0404f110006176",
-        None,
-        &[
-            "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
-        ],
-        false,
-    );
-}
-
-/// `union_selector_without_member` (tests/vectors/mip/streams.yaml:130)
-#[test]
-fn case_union_selector_without_member() {
-    check(
-        "75650c07072e0101090104320c",
-        None,
-        &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":\"parameters: no member for selector value 9\"}]}",
-        ],
-        false,
-    );
-}
-
 /// `communication_mode_write_sensor_direct` (tests/vectors/mip/system.yaml:7)
 #[test]
 fn case_communication_mode_write_sensor_direct() {
@@ -7362,6 +7204,477 @@ fn case_time_sync_lost_gpio_low() {
         Some("cv7_ins"),
         &[
             "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":2,\"name\":\"time_sync_status\",\"values\":{\"time_sync\":false,\"last_pps_rcvd\":255}},{\"descriptor\":3,\"name\":\"gpio_state\",\"values\":{\"states\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `continuation_packets_with_garbage_and_a_reply_between` (tests/streams/mip/continuation.yaml:7)
+#[test]
+fn stream_continuation_packets_with_garbage_and_a_reply_between() {
+    check(
+        "756580f903d0000ed340f5180200000000092900030ad43f900000000000000ad50000011f71fb04cb0ad60000000000ee6b280cd713aef6e5f153594000010cd80000000000ee6b2800010e040000000000000000bf8000000e053b00000000000000bf0000000e063f0000003e000000bec000000e073f000000be8000003e0000000e083d800000bfc000004000000026093f8000000000000000000000000000003f8000000000000000000000000000003f800000120a3f8000000000000000000000000000000e0c3e800000be000000404000000e1240f51802000000000929001f0e1441a400004235000041f900000617447d500004180000846b0075007565010404f10100d56a7565805303d0000ed340f5180200000000092900030ad43f900000000000000ad50000011f71fb04cb0ad60000000000ee6b280cd713aef6e5f153594000010cd80000000000ee6b2800010c40c02000003d8000000001da22",
+        Some("cv7_ins"),
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":{\"seconds\":0.015625}},{\"descriptor\":213,\"name\":\"reference_timestamp\",\"values\":{\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_time_delta\",\"values\":{\"dt_nanos\":15625000}},{\"descriptor\":215,\"name\":\"external_timestamp\",\"values\":{\"nanoseconds\":1418342400125000000,\"valid_flags\":1}},{\"descriptor\":216,\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":15625000,\"valid_flags\":1}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[0.0,0.0,-1.0]}},{\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{\"scaled_gyro\":[0.001953125,0.0,-0.5]}},{\"descriptor\":6,\"name\":\"scaled_mag\",\"values\":{\"scaled_mag\":[0.5,0.125,-0.375]}},{\"descriptor\":7,\"name\":\"delta_theta\",\"values\":{\"delta_theta\":[0.5,-0.25,0.125]}},{\"descriptor\":8,\"name\":\"delta_velocity\",\"values\":{\"delta_velocity\":[0.0625,-1.5,2.0]}},{\"descriptor\":9,\"name\":\"cf_orientation_matrix\",\"values\":{\"m\":[1.0,0.0,0.0,0.0,1.0,0.0,0.0,0.0,1.0]}},{\"descriptor\":10,\"name\":\"cf_quaternion\",\"values\":{\"q\":[1.0,0.0,0.0,0.0]}},{\"descriptor\":12,\"name\":\"cf_euler_angles\",\"values\":{\"roll\":0.25,\"pitch\":-0.125,\"yaw\":3.0}},{\"descriptor\":18,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":31}},{\"descriptor\":20,\"name\":\"temperature_statistics\",\"values\":{\"min_temp\":20.5,\"max_temp\":45.25,\"mean_temp\":31.125}},{\"descriptor\":23,\"name\":\"scaled_pressure\",\"values\":{\"scaled_pressure\":1013.25}},{\"descriptor\":24,\"name\":\"overrange_status\",\"values\":{\"status\":0}}]}",
+            "{\"offset\":255,\"skipped\":\"007500\"}",
+            "{\"offset\":258,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+            "{\"offset\":268,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":{\"seconds\":0.015625}},{\"descriptor\":213,\"name\":\"reference_timestamp\",\"values\":{\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_time_delta\",\"values\":{\"dt_nanos\":15625000}},{\"descriptor\":215,\"name\":\"external_timestamp\",\"values\":{\"nanoseconds\":1418342400125000000,\"valid_flags\":1}},{\"descriptor\":216,\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":15625000,\"valid_flags\":1}},{\"descriptor\":64,\"name\":\"odometer_data\",\"values\":{\"speed\":-2.5,\"uncertainty\":0.0625,\"valid_flags\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `zero_length_fields` (tests/streams/mip/fields.yaml:7)
+#[test]
+fn stream_zero_length_fields() {
+    check(
+        "75658012020402fe0e043f800000bf00000040000000427b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"\",\"error\":\"scaled_accel[0]: needs 4 bytes at offset 0, 0 left\"},{\"descriptor\":254,\"data\":\"\",\"error\":\"unknown descriptor\"},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `field_length_zero_after_a_field` (tests/streams/mip/fields.yaml:21)
+#[test]
+fn stream_field_length_zero_after_a_field() {
+    check(
+        "756580120e043f800000bf000000400000000004112273a1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"trailing\":\"00041122\",\"error\":\"field length 0 at payload offset 14 is shorter than the field header\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `short_field_does_not_stop_the_next` (tests/streams/mip/fields.yaml:33)
+#[test]
+fn stream_short_field_does_not_stop_the_next() {
+    check(
+        "756580180a043f800000bf0000000e053e80000000000000c0400000cf9c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\",\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 left\"},{\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{\"scaled_gyro\":[0.25,0.0,-3.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `invalid_bool_byte` (tests/streams/mip/fields.yaml:46)
+#[test]
+fn stream_invalid_bool_byte() {
+    check(
+        "75650c03039e028c20",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":158,\"data\":\"02\",\"error\":\"enable: invalid bool value 2 at offset 0\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `count_past_the_maximum` (tests/streams/mip/fields.yaml:56)
+#[test]
+fn stream_count_past_the_maximum() {
+    check(
+        "75650e0303810877f6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":129,\"data\":\"08\",\"error\":\"receiver_info: count 8 exceeds maximum 7\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `unknown_enum_value_is_kept` (tests/streams/mip/fields.yaml:66)
+#[test]
+fn stream_unknown_enum_value_is_kept() {
+    check(
+        "75650d0505d0007f014116",
+        None,
+        &[
+            "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":208,\"name\":\"aiding_measurement_control_response\",\"values\":{\"source\":127,\"enable\":true}}]}",
+        ],
+        false,
+    );
+}
+
+/// `reserved_bits_are_kept` (tests/streams/mip/fields.yaml:77)
+#[test]
+fn stream_reserved_bits_are_kept() {
+    check(
+        "7565800e0ed340f51802000000000929ffffc861",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":65535}}]}",
+        ],
+        false,
+    );
+}
+
+/// `shared_descriptor_in_an_undefined_data_set` (tests/streams/mip/fields.yaml:88)
+#[test]
+fn stream_shared_descriptor_in_an_undefined_data_set() {
+    check(
+        "7565a70e0ed340f518020000000009290003f4d7",
+        None,
+        &[
+            "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `set_zero_has_no_kind` (tests/streams/mip/fields.yaml:99)
+#[test]
+fn stream_set_zero_has_no_kind() {
+    check(
+        "756500020201dfc2",
+        None,
+        &[
+            "{\"offset\":0,\"set\":0,\"fields\":[{\"descriptor\":1,\"data\":\"\",\"error\":\"unknown descriptor set\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `ack_descriptor_in_a_data_set` (tests/streams/mip/fields.yaml:109)
+#[test]
+fn stream_ack_descriptor_in_a_data_set() {
+    check(
+        "7565800404f101005464",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":241,\"data\":\"0100\",\"error\":\"unknown descriptor\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `empty_stream` (tests/streams/mip/framing.yaml:9)
+#[test]
+fn stream_empty_stream() {
+    check("", None, &[], false);
+}
+
+/// `only_garbage` (tests/streams/mip/framing.yaml:13)
+#[test]
+fn stream_only_garbage() {
+    check(
+        "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f\"}",
+        ],
+        true,
+    );
+}
+
+/// `garbage_inside_packet` (tests/streams/mip/framing.yaml:20)
+#[test]
+fn stream_garbage_inside_packet() {
+    check(
+        "75650102aabbcc0201e0c6756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"75650102aabbcc0201e0c6\"}",
+            "{\"offset\":11,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `sync_bytes_inside_a_valid_payload` (tests/streams/mip/framing.yaml:36)
+#[test]
+fn stream_sync_bytes_inside_a_valid_payload() {
+    check(
+        "7565800606fe7565756518b5756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":254,\"data\":\"75657565\",\"error\":\"unknown descriptor\"}]}",
+            "{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `lone_sync_bytes_between_packets` (tests/streams/mip/framing.yaml:52)
+#[test]
+fn stream_lone_sync_bytes_between_packets() {
+    check(
+        "756501020201e0c675756501020201e0c665756501020201e0c6756501",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":8,\"skipped\":\"75\"}",
+            "{\"offset\":9,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":17,\"skipped\":\"65\"}",
+            "{\"offset\":18,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":26,\"skipped\":\"756501\"}",
+        ],
+        false,
+    );
+}
+
+/// `repeated_sync_pairs_before_a_packet` (tests/streams/mip/framing.yaml:77)
+#[test]
+fn stream_repeated_sync_pairs_before_a_packet() {
+    check(
+        "756575657565756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"756575657565\"}",
+            "{\"offset\":6,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `false_sync_of_maximum_length_over_two_packets` (tests/streams/mip/framing.yaml:91)
+#[test]
+fn stream_false_sync_of_maximum_length_over_two_packets() {
+    check(
+        "756580ff756501020201e0c67565010404f10100d56a",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"756580ff\"}",
+            "{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `checksum_bytes_swapped` (tests/streams/mip/framing.yaml:109)
+#[test]
+fn stream_checksum_bytes_swapped() {
+    check(
+        "756501020201c6e0756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"756501020201c6e0\"}",
+            "{\"offset\":8,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `longest_legal_packet` (tests/streams/mip/framing.yaml:122)
+#[test]
+fn stream_longest_legal_packet() {
+    check(
+        "756580ff0e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf0000004000000003fe00faf6756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":254,\"data\":\"00\",\"error\":\"unknown descriptor\"}]}",
+            "{\"offset\":261,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `empty_payloads` (tests/streams/mip/framing.yaml:167)
+#[test]
+fn stream_empty_payloads() {
+    check(
+        "756580005a0375650100db05",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[]}",
+            "{\"offset\":6,\"set\":1,\"fields\":[]}",
+        ],
+        false,
+    );
+}
+
+/// `truncated_packet_after_a_valid_one` (tests/streams/mip/framing.yaml:176)
+#[test]
+fn stream_truncated_packet_after_a_valid_one() {
+    check(
+        "756501020201e0c6756501020201e0",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":8,\"skipped\":\"756501020201e0\"}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_packet_in_a_mip_stream` (tests/streams/mip/framing.yaml:190)
+#[test]
+fn stream_mscip_packet_in_a_mip_stream() {
+    check(
+        "756501020201e0c6a5a5010202004f25756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":8,\"skipped\":\"a5a5010202004f25\"}",
+            "{\"offset\":16,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `garbage_around_ping` (tests/streams/mip/framing_and_fields.yaml:5)
+#[test]
+fn stream_garbage_around_ping() {
+    check(
+        "00ff756501020201e0c675",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"00ff\"}",
+            "{\"offset\":2,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":10,\"skipped\":\"75\"}",
+        ],
+        false,
+    );
+}
+
+/// `false_sync_running_past_the_end` (tests/streams/mip/framing_and_fields.yaml:19)
+#[test]
+fn stream_false_sync_running_past_the_end() {
+    check(
+        "75650110756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"75650110\"}",
+            "{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `bad_checksum_then_valid` (tests/streams/mip/framing_and_fields.yaml:32)
+#[test]
+fn stream_bad_checksum_then_valid() {
+    check(
+        "756501020201e0c77565010404f10100d56a",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"756501020201e0c7\"}",
+            "{\"offset\":8,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `packet_inside_false_packet` (tests/streams/mip/framing_and_fields.yaml:45)
+#[test]
+fn stream_packet_inside_false_packet() {
+    check(
+        "7565010a756501020201e0c600000000",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"7565010a\"}",
+            "{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":12,\"skipped\":\"00000000\"}",
+        ],
+        false,
+    );
+}
+
+/// `truncated_packet_at_end` (tests/streams/mip/framing_and_fields.yaml:61)
+#[test]
+fn stream_truncated_packet_at_end() {
+    check(
+        "7565010404f1",
+        None,
+        &["{\"offset\":0,\"skipped\":\"7565010404f1\"}"],
+        true,
+    );
+}
+
+/// `field_length_overruns_payload` (tests/streams/mip/framing_and_fields.yaml:66)
+#[test]
+fn stream_field_length_overruns_payload() {
+    check(
+        "7565010402010302e798",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}},{\"trailing\":\"0302\",\"error\":\"field length 3 at payload offset 2 overruns the payload (2 bytes left)\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `field_length_below_header` (tests/streams/mip/framing_and_fields.yaml:78)
+#[test]
+fn stream_field_length_below_header() {
+    check(
+        "756501020101dfc4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"trailing\":\"0101\",\"error\":\"field length 1 at payload offset 0 is shorter than the field header\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `field_too_short_for_type` (tests/streams/mip/framing_and_fields.yaml:88)
+#[test]
+fn stream_field_too_short_for_type() {
+    check(
+        "7565800a0a043f800000bf000000f0f1",
+        None,
+        &[
+            "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\",\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 left\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `field_with_trailing_bytes` (tests/streams/mip/framing_and_fields.yaml:99)
+#[test]
+fn stream_field_with_trailing_bytes() {
+    check(
+        "756501030302553804",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"55\",\"error\":\"1 unexpected bytes at offset 0\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `unknown_set_and_descriptor` (tests/streams/mip/framing_and_fields.yaml:109)
+#[test]
+fn stream_unknown_set_and_descriptor() {
+    check(
+        "7565a70404331234026a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":51,\"data\":\"1234\",\"error\":\"unknown descriptor set\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `ack_in_undefined_command_set` (tests/streams/mip/framing_and_fields.yaml:119)
+#[test]
+fn stream_ack_in_undefined_command_set() {
+    check(
+        "75657e0404f110006176",
+        None,
+        &[
+            "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":16,\"ack_code\":0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `union_selector_without_member` (tests/streams/mip/framing_and_fields.yaml:130)
+#[test]
+fn stream_union_selector_without_member() {
+    check(
+        "75650c07072e0101090104320c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":\"parameters: no member for selector value 9\"}]}",
         ],
         false,
     );

@@ -1,6 +1,6 @@
-//! Golden vectors (tests/vectors/mscip/): each case's bytes decode (whole, and fed one
-//! byte at a time) to exactly the expected canonical JSON lines, and those lines encode back to
-//! the bytes.
+//! Golden vectors (tests/vectors/mscip/) and stream corpus (tests/streams/mscip/):
+//! each case's bytes decode (whole, and fed in chunks of every size) to exactly the expected
+//! canonical JSON lines, and those lines encode back to the bytes.
 
 use mscipcodec::text::{decode_bytes, encode_text};
 use mscipcodec::Device;
@@ -25,11 +25,13 @@ fn check(hex: &str, device: Option<&str>, expect: &[&str], rejected: bool) {
         text,
         "decoding the whole input"
     );
-    assert_eq!(
-        decode_bytes(&bytes, device, 1),
-        text,
-        "decoding one byte at a time"
-    );
+    for chunk in 1..bytes.len() {
+        assert_eq!(
+            decode_bytes(&bytes, device, chunk),
+            text,
+            "decoding in chunks of {chunk} bytes"
+        );
+    }
     let encoded =
         encode_text(&text).unwrap_or_else(|(line, e)| panic!("encoding line {line}: {e}"));
     assert_eq!(
@@ -1733,9 +1735,9 @@ fn case_imu_data_all_fields() {
     );
 }
 
-/// `mscip_garbage_around_packets` (tests/vectors/mscip/streams.yaml:8)
+/// `mscip_garbage_around_packets` (tests/streams/mscip/framing_and_fields.yaml:8)
 #[test]
-fn case_mscip_garbage_around_packets() {
+fn stream_mscip_garbage_around_packets() {
     check(
         "00ff13a5a5010202004f2555a5a5010480020200d3cfa5",
         None,
@@ -1750,9 +1752,9 @@ fn case_mscip_garbage_around_packets() {
     );
 }
 
-/// `mscip_false_sync_running_past_the_end` (tests/vectors/mscip/streams.yaml:28)
+/// `mscip_false_sync_running_past_the_end` (tests/streams/mscip/framing_and_fields.yaml:28)
 #[test]
-fn case_mscip_false_sync_running_past_the_end() {
+fn stream_mscip_false_sync_running_past_the_end() {
     check(
         "a5a50130a5a5010202004f25",
         None,
@@ -1764,9 +1766,9 @@ fn case_mscip_false_sync_running_past_the_end() {
     );
 }
 
-/// `mscip_false_sync_bad_checksum_packet_inside` (tests/vectors/mscip/streams.yaml:42)
+/// `mscip_false_sync_bad_checksum_packet_inside` (tests/streams/mscip/framing_and_fields.yaml:42)
 #[test]
-fn case_mscip_false_sync_bad_checksum_packet_inside() {
+fn stream_mscip_false_sync_bad_checksum_packet_inside() {
     check(
         "a5a5010aa5a5010202004f2500000000",
         None,
@@ -1779,9 +1781,9 @@ fn case_mscip_false_sync_bad_checksum_packet_inside() {
     );
 }
 
-/// `mscip_extra_sync_byte` (tests/vectors/mscip/streams.yaml:58)
+/// `mscip_extra_sync_byte` (tests/streams/mscip/framing_and_fields.yaml:58)
 #[test]
-fn case_mscip_extra_sync_byte() {
+fn stream_mscip_extra_sync_byte() {
     check(
         "a5a5a5010202004f25",
         None,
@@ -1793,9 +1795,9 @@ fn case_mscip_extra_sync_byte() {
     );
 }
 
-/// `mscip_packets_back_to_back` (tests/vectors/mscip/streams.yaml:72)
+/// `mscip_packets_back_to_back` (tests/streams/mscip/framing_and_fields.yaml:72)
 #[test]
-fn case_mscip_packets_back_to_back() {
+fn stream_mscip_packets_back_to_back() {
     check(
         "a5a502050c0301818264f0a5a5020480020c00dee9a5a5a21c810c37a7c5ac377ba8823f800065820c37a7c5ac377ba8823749539c0c23a5a5a21c810c37a7c5ac377ba8823f800065820c37a7c5ac377ba8823749539c0c23",
         None,
@@ -1809,9 +1811,9 @@ fn case_mscip_packets_back_to_back() {
     );
 }
 
-/// `mscip_mip_packet_in_mscip_stream` (tests/vectors/mscip/streams.yaml:98)
+/// `mscip_mip_packet_in_mscip_stream` (tests/streams/mscip/framing_and_fields.yaml:98)
 #[test]
-fn case_mscip_mip_packet_in_mscip_stream() {
+fn stream_mscip_mip_packet_in_mscip_stream() {
     check(
         "a5a5010202004f25756501020201e0c6a5a5010480020200d3cf",
         None,
@@ -1824,9 +1826,9 @@ fn case_mscip_mip_packet_in_mscip_stream() {
     );
 }
 
-/// `mscip_bad_checksum_then_valid` (tests/vectors/mscip/streams.yaml:116)
+/// `mscip_bad_checksum_then_valid` (tests/streams/mscip/framing_and_fields.yaml:116)
 #[test]
-fn case_mscip_bad_checksum_then_valid() {
+fn stream_mscip_bad_checksum_then_valid() {
     check(
         "a5a5010480020200d3cea5a5010480020200d3cf",
         None,
@@ -1838,9 +1840,9 @@ fn case_mscip_bad_checksum_then_valid() {
     );
 }
 
-/// `mscip_truncated_packet_at_end` (tests/vectors/mscip/streams.yaml:129)
+/// `mscip_truncated_packet_at_end` (tests/streams/mscip/framing_and_fields.yaml:129)
 #[test]
-fn case_mscip_truncated_packet_at_end() {
+fn stream_mscip_truncated_packet_at_end() {
     check(
         "a5a50104800202",
         None,
@@ -1849,9 +1851,9 @@ fn case_mscip_truncated_packet_at_end() {
     );
 }
 
-/// `mscip_field_header_cut_short` (tests/vectors/mscip/streams.yaml:135)
+/// `mscip_field_header_cut_short` (tests/streams/mscip/framing_and_fields.yaml:135)
 #[test]
-fn case_mscip_field_header_cut_short() {
+fn stream_mscip_field_header_cut_short() {
     check(
         "a5a50103020080d0f8",
         None,
@@ -1862,9 +1864,9 @@ fn case_mscip_field_header_cut_short() {
     );
 }
 
-/// `mscip_field_size_overruns_payload` (tests/vectors/mscip/streams.yaml:146)
+/// `mscip_field_size_overruns_payload` (tests/streams/mscip/framing_and_fields.yaml:146)
 #[test]
-fn case_mscip_field_size_overruns_payload() {
+fn stream_mscip_field_size_overruns_payload() {
     check(
         "a5a5010480030200d4d2",
         None,
@@ -1875,9 +1877,9 @@ fn case_mscip_field_size_overruns_payload() {
     );
 }
 
-/// `mscip_field_too_short_for_type` (tests/vectors/mscip/streams.yaml:157)
+/// `mscip_field_too_short_for_type` (tests/streams/mscip/framing_and_fields.yaml:157)
 #[test]
-fn case_mscip_field_too_short_for_type() {
+fn stream_mscip_field_too_short_for_type() {
     check(
         "a5a5a2048602447f3bb0",
         None,
@@ -1888,9 +1890,9 @@ fn case_mscip_field_too_short_for_type() {
     );
 }
 
-/// `mscip_field_with_trailing_bytes` (tests/vectors/mscip/streams.yaml:167)
+/// `mscip_field_with_trailing_bytes` (tests/streams/mscip/framing_and_fields.yaml:167)
 #[test]
-fn case_mscip_field_with_trailing_bytes() {
+fn stream_mscip_field_with_trailing_bytes() {
     check(
         "a5a50103020155a6cf",
         None,
@@ -1901,9 +1903,9 @@ fn case_mscip_field_with_trailing_bytes() {
     );
 }
 
-/// `mscip_message_list_with_half_entry` (tests/vectors/mscip/streams.yaml:177)
+/// `mscip_message_list_with_half_entry` (tests/streams/mscip/framing_and_fields.yaml:177)
 #[test]
-fn case_mscip_message_list_with_half_entry() {
+fn stream_mscip_message_list_with_half_entry() {
     check(
         "a5a501058303010201dabd",
         None,
@@ -1914,9 +1916,9 @@ fn case_mscip_message_list_with_half_entry() {
     );
 }
 
-/// `mscip_unknown_message_code` (tests/vectors/mscip/streams.yaml:188)
+/// `mscip_unknown_message_code` (tests/streams/mscip/framing_and_fields.yaml:188)
 #[test]
-fn case_mscip_unknown_message_code() {
+fn stream_mscip_unknown_message_code() {
     check(
         "a5a501020a005735",
         None,
@@ -1927,9 +1929,9 @@ fn case_mscip_unknown_message_code() {
     );
 }
 
-/// `mscip_ack_code_in_data_message` (tests/vectors/mscip/streams.yaml:199)
+/// `mscip_ack_code_in_data_message` (tests/streams/mscip/framing_and_fields.yaml:199)
 #[test]
-fn case_mscip_ack_code_in_data_message() {
+fn stream_mscip_ack_code_in_data_message() {
     check(
         "a5a5a204800202007495",
         None,
@@ -1940,9 +1942,9 @@ fn case_mscip_ack_code_in_data_message() {
     );
 }
 
-/// `mscip_unknown_message_type` (tests/vectors/mscip/streams.yaml:210)
+/// `mscip_unknown_message_type` (tests/streams/mscip/framing_and_fields.yaml:210)
 #[test]
-fn case_mscip_unknown_message_type() {
+fn stream_mscip_unknown_message_type() {
     check(
         "a5a5a30681043f8000003717",
         None,
@@ -1953,14 +1955,117 @@ fn case_mscip_unknown_message_type() {
     );
 }
 
-/// `mscip_select_sensors_rev_a_with_a_regular_size_byte` (tests/vectors/mscip/streams.yaml:220)
+/// `mscip_select_sensors_rev_a_with_a_regular_size_byte` (tests/streams/mscip/framing_and_fields.yaml:220)
 #[test]
-fn case_mscip_select_sensors_rev_a_with_a_regular_size_byte() {
+fn stream_mscip_select_sensors_rev_a_with_a_regular_size_byte() {
     check(
         "a5a502060504010081825f33",
         None,
         &[
             "{\"offset\":0,\"set\":2,\"fields\":[{\"trailing\":\"050401008182\",\"error\":\"field length 4 at payload offset 0 overruns the payload (6 bytes left)\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_empty_stream` (tests/streams/mscip/framing_and_fields_more.yaml:7)
+#[test]
+fn stream_mscip_empty_stream() {
+    check("", None, &[], false);
+}
+
+/// `mscip_garbage_inside_packet` (tests/streams/mscip/framing_and_fields_more.yaml:11)
+#[test]
+fn stream_mscip_garbage_inside_packet() {
+    check(
+        "a5a50102aabbcc02004f25a5a5010202004f25",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"a5a50102aabbcc02004f25\"}",
+            "{\"offset\":11,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_sync_bytes_inside_a_valid_payload` (tests/streams/mscip/framing_and_fields_more.yaml:26)
+#[test]
+fn stream_mscip_sync_bytes_inside_a_valid_payload() {
+    check(
+        "a5a5a2067e04a5a5a5a508f3a5a5010202004f25",
+        None,
+        &[
+            "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":126,\"data\":\"a5a5a5a5\",\"error\":\"unknown descriptor\"}]}",
+            "{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_false_sync_of_maximum_length` (tests/streams/mscip/framing_and_fields_more.yaml:42)
+#[test]
+fn stream_mscip_false_sync_of_maximum_length() {
+    check(
+        "a5a5a2ffa5a5010202004f25a5a5010202004f25",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"a5a5a2ff\"}",
+            "{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_longest_legal_packet` (tests/streams/mscip/framing_and_fields_more.yaml:59)
+#[test]
+fn stream_mscip_longest_legal_packet() {
+    check(
+        "a5a5a2ff810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf00000040000000810c3f800000bf000000400000007e0100b03fa5a5010202004f25",
+        None,
+        &[
+            "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}},{\"descriptor\":126,\"data\":\"00\",\"error\":\"unknown descriptor\"}]}",
+            "{\"offset\":261,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_empty_payloads` (tests/streams/mscip/framing_and_fields_more.yaml:103)
+#[test]
+fn stream_mscip_empty_payloads() {
+    check(
+        "a5a5a200ecc7a5a501004b85",
+        None,
+        &[
+            "{\"offset\":0,\"set\":162,\"fields\":[]}",
+            "{\"offset\":6,\"set\":1,\"fields\":[]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_zero_length_fields` (tests/streams/mscip/framing_and_fields_more.yaml:112)
+#[test]
+fn stream_mscip_zero_length_fields() {
+    check(
+        "a5a5a21281007e00810c3f800000bf0000004000000048bd",
+        None,
+        &[
+            "{\"offset\":0,\"set\":162,\"fields\":[{\"descriptor\":129,\"data\":\"\",\"error\":\"accel[0]: needs 4 bytes at offset 0, 0 left\"},{\"descriptor\":126,\"data\":\"\",\"error\":\"unknown descriptor\"},{\"descriptor\":129,\"name\":\"scaled_accel\",\"values\":{\"accel\":[1.0,-0.5,2.0]}}]}",
+        ],
+        false,
+    );
+}
+
+/// `mscip_unknown_command_set` (tests/streams/mscip/framing_and_fields_more.yaml:125)
+#[test]
+fn stream_mscip_unknown_command_set() {
+    check(
+        "a5a555020200a375",
+        None,
+        &[
+            "{\"offset\":0,\"set\":85,\"fields\":[{\"descriptor\":2,\"data\":\"\",\"error\":\"unknown descriptor set\"}]}",
         ],
         false,
     );
