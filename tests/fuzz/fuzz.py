@@ -1,6 +1,6 @@
 """Builds and runs the fuzz harnesses of every language over every generated package.
 
-    python tests/fuzz/fuzz.py run [--seconds N | --runs N] [--only LANG[/PACKAGE[/TARGET]] ...]
+    python tests/fuzz/fuzz.py run [--seconds N | --runs N [--python-runs M]] [--only LANG[/PACKAGE[/TARGET]] ...]
     python tests/fuzz/fuzz.py build [--only ...]
     python tests/fuzz/fuzz.py replay
 
@@ -128,7 +128,8 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
     fuzz = mode == "fuzz"
     cxx = os.environ.get("CLANGXX", "clang++-14") if fuzz else "g++"
     cc = os.environ.get("CLANG", "clang-14") if fuzz else "gcc"
-    flags = ["-g", "-O1", "-fno-omit-frame-pointer", *(SANITIZE_FUZZ if fuzz else SANITIZE_REPLAY)]
+    # replay: -O0, the generated headers compile much faster and a few hundred inputs run anyway
+    flags = ["-g", "-O1" if fuzz else "-O0", "-fno-omit-frame-pointer", *(SANITIZE_FUZZ if fuzz else SANITIZE_REPLAY)]
     deps = max(newest(inc.rglob("*.hpp")), newest(HERE.glob("cpp/*")), newest(HERE.glob("c/replay_main.c")))
     main_o = out / "fuzz_targets.o"
     if stale(main_o, deps):
@@ -159,7 +160,19 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
         # entry.cpp defines LLVMFuzzerTestOneInput (called by libFuzzer, or by replay_main.c)
         entry = out / f"entry_{target}.o"
         if stale(entry, deps):
-            sh([cxx, "-std=c++17", *flags, *WARN, f"-DFZ_ENTRY=fz_cpp_{target}", "-c", str(HERE / "cpp" / "entry.cpp"), "-o", str(entry)])
+            sh(
+                [
+                    cxx,
+                    "-std=c++17",
+                    *flags,
+                    *WARN,
+                    f"-DFZ_ENTRY=fz_cpp_{target}",
+                    "-c",
+                    str(HERE / "cpp" / "entry.cpp"),
+                    "-o",
+                    str(entry),
+                ]
+            )
         objs = [entry, main_o, *extra]
         exe = out / target
         if stale(exe, newest(objs)):
@@ -312,7 +325,10 @@ def cmd_run(args) -> int:
     seeds()
     rows = []
     for lang, package, target in chosen:
-        rows.append(run_one(lang, package, target, bins, args.seconds, args.runs))
+        runs = args.runs
+        if runs and lang == "python":
+            runs = args.python_runs or max(1, runs // 10)
+        rows.append(run_one(lang, package, target, bins, args.seconds, runs))
     print(table(rows))
     bad = [r["target"] for r in rows if r["failed"]]
     if bad:
@@ -361,6 +377,7 @@ def main() -> int:
     g = r.add_mutually_exclusive_group()
     g.add_argument("--seconds", type=int, default=10, help="time per target (default 10)")
     g.add_argument("--runs", type=int, help="executions per target instead of a time")
+    r.add_argument("--python-runs", type=int, help="executions per Python target with --runs (default: runs / 10)")
     r.add_argument("--only", action="append", default=[], help="LANG[/PACKAGE[/TARGET]] (repeatable)")
     b = sub.add_parser("build", help="build the libFuzzer binaries")
     b.add_argument("--only", action="append", default=[])

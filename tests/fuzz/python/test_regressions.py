@@ -7,9 +7,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-import pytest
-
 import harness
+import pytest
 
 HERE = Path(__file__).resolve().parent
 REGRESSIONS = HERE.parent / "regressions"
