@@ -7,6 +7,9 @@ writes one file per vector into <out>/<package>/<target>/:
                    plan, top 2 bits: device; see tests/fuzz/c/fuzz_parser.c) varies from vector to
                    vector, and a vector with a device gets that device (vectors of a device-specific
                    layout then decode the way the vector says).
+  parser/<vector>.wrapped: the control byte, the set and the payload of the vector's first packet:
+                   the harness wraps these into a packet with a valid checksum, so mutations of
+                   real field data reach the decoders without the fuzzer repairing checksums.
   json/<vector>:   the vector's expected canonical JSON lines, one per line.
 Stream cases under tests/streams/<protocol>/ (*.bin), when that directory exists, are added to the
 parser corpus the same way. Existing seed directories are replaced.
@@ -33,6 +36,27 @@ def control_byte(name: str, device_index: int) -> int:
     return (device_index << 6) | low
 
 
+def first_packet(framing: dict, data: bytes) -> bytes | None:
+    """(set, payload...) of the first complete packet with a valid checksum in data, if any."""
+    sync = bytes(framing["sync"])
+    header = framing["header_size"]
+    for i in range(len(data)):
+        if not data.startswith(sync, i) or len(data) - i < header:
+            continue
+        n = data[i + framing["length_offset"]]
+        body = data[i : i + header + n]
+        if len(data) - i < header + n + 2:
+            continue
+        sum1 = sum2 = 0
+        for b in body:
+            sum1 = (sum1 + b) & 0xFF
+            sum2 = (sum2 + sum1) & 0xFF
+        sums = {"sum1": sum1, "sum2": sum2}
+        if data[i + header + n : i + header + n + 2] == bytes(sums[k] for k in framing["checksum"]["order"]):
+            return bytes([data[i + framing["set_offset"]]]) + body[header:]
+    return None
+
+
 def write(out: Path) -> dict[tuple[str, str], int]:
     ir = json.loads((ROOT / "generated" / "ir.json").read_text())
     protocols = {p["name"]: p for p in ir["protocols"]}
@@ -56,7 +80,12 @@ def write(out: Path) -> dict[tuple[str, str], int]:
         package = proto["package"]
         devices = [d["id"] for d in proto["devices"]]
         device = devices.index(case["device"]) + 1 if case.get("device") in devices else 0
-        add(package, "parser", case["name"], bytes([control_byte(case["name"], device)]) + bytes.fromhex(case["hex"]))
+        control = bytes([control_byte(case["name"], device)])
+        data = bytes.fromhex(case["hex"])
+        add(package, "parser", case["name"], control + data)
+        packet = first_packet(proto["framing"], data)
+        if packet is not None:
+            add(package, "parser", case["name"] + ".wrapped", control + packet)
         if case["expect"]:
             add(package, "json", case["name"], ("\n".join(case["expect"]) + "\n").encode())
     streams = ROOT / "tests" / "streams"
