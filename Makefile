@@ -11,7 +11,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
 
-.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -26,11 +26,11 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 	$(PY) -m generator
 	@mkdir -p build && touch $@
 
-test: generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture
+test: generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions
 
 test-generator: $(VENV)/.stamp
-	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs
-	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian tests/docs
+	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz
+	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz
 	$(PY) -m pytest -q tests/generator
 
 $(addprefix test-,$(LANGS)): test-%: generate
@@ -61,6 +61,28 @@ endif
 # needs gcc-s390x-linux-gnu, libc6-dev-s390x-cross and qemu-user (installed by .ci/run).
 test-bigendian: generate
 	$(PY) -m pytest -q tests/bigendian
+
+# Fuzzing (tests/fuzz/, README "Fuzzing"): every harness of every language and package, one at a
+# time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the
+# run; its input is saved under build/fuzz/findings/<lang>/<package>/<target>/. Needs clang-14,
+# libclang-rt-14-dev, llvm-14, a nightly Rust toolchain with cargo-fuzz, and atheris (in .venv).
+# FUZZ_ONLY limits the targets: LANG[/PACKAGE[/TARGET]] words, e.g. FUZZ_ONLY="c cpp/mipcodec".
+FUZZ_SECONDS ?= 10
+FUZZ_RUNS ?= 10000000
+FUZZ_PY_RUNS ?= 1000000
+FUZZ_ONLY ?=
+FUZZ_SELECT = $(foreach o,$(FUZZ_ONLY),--only $(o))
+
+fuzz: generate
+	$(PY) tests/fuzz/fuzz.py run --seconds $(FUZZ_SECONDS) $(FUZZ_SELECT)
+
+fuzz-long: generate
+	$(PY) tests/fuzz/fuzz.py run --runs $(FUZZ_RUNS) --python-runs $(FUZZ_PY_RUNS) $(FUZZ_SELECT)
+
+# Part of `make test`: the inputs of tests/fuzz/regressions/ (and the seed corpus) through every
+# language's harnesses without clang or libFuzzer (gcc/g++ with ASan+UBSan, cargo test, pytest).
+test-fuzz-regressions: generate
+	$(PY) tests/fuzz/fuzz.py replay
 
 # Fails when generated/ (or docs/errata.md) is not what the spec and templates produce.
 check: $(VENV)/.stamp

@@ -243,6 +243,15 @@ static int field_entry(mip_jr_t *jr, size_t pos, uint8_t set, mip_packet_builder
     if (st == MIP_ERR_TOO_LONG) {
         return mip_jr_fail(jr, "the payload would exceed %d bytes", MIP_MAX_PAYLOAD);
     }
+    if (st == MIP_ERR_INVALID) {
+        /* a field whose size byte is irregular needs at least -adjust bytes of data */
+        return mip_jr_fail(
+            jr, "field data of %u bytes is shorter than the minimum %d for descriptor %u of set %u",
+            (unsigned)n, -mip_field_length_adjust(set, descriptor), (unsigned)descriptor, (unsigned)set);
+    }
+    if (st != MIP_OK && st != MIP_ERR_BUFFER) {
+        return mip_jr_fail(jr, "%s", mip_status_text(st));
+    }
     return st == MIP_OK ? 0 : -1;
 }
 

@@ -244,6 +244,15 @@ static int field_entry(mscip_jr_t *jr, size_t pos, uint8_t set, mscip_packet_bui
     if (st == MSCIP_ERR_TOO_LONG) {
         return mscip_jr_fail(jr, "the payload would exceed %d bytes", MSCIP_MAX_PAYLOAD);
     }
+    if (st == MSCIP_ERR_INVALID) {
+        /* a field whose size byte is irregular needs at least -adjust bytes of data */
+        return mscip_jr_fail(
+            jr, "field data of %u bytes is shorter than the minimum %d for descriptor %u of set %u",
+            (unsigned)n, -mscip_field_length_adjust(set, descriptor), (unsigned)descriptor, (unsigned)set);
+    }
+    if (st != MSCIP_OK && st != MSCIP_ERR_BUFFER) {
+        return mscip_jr_fail(jr, "%s", mscip_status_text(st));
+    }
     return st == MSCIP_OK ? 0 : -1;
 }
 

@@ -254,7 +254,11 @@ inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err)
         if (!hex_bytes(*data, bytes)) {
             return fail(err, "data", "expected a string of hex digit pairs");
         }
-        if (b.add_raw_field(descriptor, bytes.data(), bytes.size()) != EncodeError::none) {
+        const EncodeError e = b.add_raw_field(descriptor, bytes.data(), bytes.size());
+        if (e == EncodeError::too_short) {
+            return fail(err, "data", to_string(e));
+        }
+        if (e != EncodeError::none) {
             return fail(err, "data", "the field does not fit in the packet");
         }
         return true;

@@ -23,6 +23,12 @@ struct Timestamp {
 };
 inline constexpr std::array<Timestamp, 0> kTimestamps = {{}};
 inline constexpr std::size_t kMaxKey = 1;
+/// True for a descriptor of the shared data set (from kFirstShared; none when it is 256). Written
+/// without comparing a byte to 256, which clang reports as always false.
+constexpr bool is_shared(std::uint8_t descriptor) {
+    (void)descriptor;
+    return false;
+}
 } // namespace sample_rule
 
 /// The key of a packet (bytes of its leading shared timestamp fields) and its leading shared run.
@@ -50,7 +56,7 @@ inline SampleKey sample_key(const PacketView &packet) {
     std::array<bool, sample_rule::kTimestamps.size() + 1> seen{};
     FieldIterator it(packet);
     FieldEntry e;
-    while (it.next(e) && e.kind == FieldEntry::Kind::field && e.descriptor >= sample_rule::kFirstShared) {
+    while (it.next(e) && e.kind == FieldEntry::Kind::field && sample_rule::is_shared(e.descriptor)) {
         for (std::size_t t = 0; t < sample_rule::kTimestamps.size(); ++t) {
             const auto &stamp = sample_rule::kTimestamps[t];
             if (stamp.descriptor == e.descriptor && stamp.size == e.size && !seen[t]) {
