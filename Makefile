@@ -11,7 +11,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
 
-.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -47,6 +47,14 @@ html: generate
 
 test-conformance: generate
 	$(PY) -m pytest -q tests/conformance
+
+# Differential rounds (tests/conformance/differential.py; one round runs in test-conformance):
+# hostile values of every layout and corrupted packets through the four languages' CLIs against
+# the reference decoder. ROUNDS rounds, seeds SEED, SEED+1, ... (random seeds when SEED is unset);
+# each round prints its seed; a failure prints the command that replays it.
+ROUNDS ?= 50
+differential: generate
+	$(PY) tests/conformance/differential.py --rounds $(ROUNDS) $(if $(SEED),--seed $(SEED))
 
 # The device capture decodes completely and identically in the four languages (run when the
 # file exists; `make test` says so when it does not).

@@ -682,10 +682,18 @@ def mutate(proto: dict, gen: ValueGen, framing: Framing, groups: dict, rng: rand
 
     protos = [g for (p, _), g in groups.items() if p == proto["name"]]
     any_group = next(g for g in protos if g.device is None)
+    rule = proto["samples"]
     for g in protos:
         targets = [g] if g.device is None else [g, any_group]
         streams = {id(t): bytearray(t.mutants) for t in targets}
+        by_set: dict = {}
         for p in g.packets:
+            by_set.setdefault(p.set_id, []).append(p)
+        for p in g.packets:
+            for pkt, what in continuation(p, by_set, rule, framing, rng):
+                for t in targets:
+                    t.mutant_what[len(streams[id(t)])] = what
+                    streams[id(t)] += pkt
             for _ in range(2):
                 fields = [
                     [f.descriptor, bytearray(f.data), None, f] for f in p.fields
@@ -750,6 +758,47 @@ def mutate(proto: dict, gen: ValueGen, framing: Framing, groups: dict, rng: rand
             g.mutant_what[len(s)] = what
             s += tail
         g.mutants = bytes(s)
+
+
+def continuation(p: Packet, by_set: dict, rule: dict, framing: Framing, rng: random.Random) -> list:
+    """For a data packet that starts with shared fields (§6): the packet itself, then a packet
+    of the same set repeating its leading shared run before other fields (a continuation), at
+    times with a packet of another set or a keyless one in between, or a byte of the run changed."""
+    if p.set_id not in rule["data_sets"] or rng.random() < 0.5:
+        return []
+    lead = []
+    for f in p.fields:
+        if f.descriptor < rule["first_shared"]:
+            break
+        lead.append(f)
+    if not lead:
+        return []
+    lead_bytes = bytearray(b"".join(framing.field(p.set_id, f.descriptor, f.data) for f in lead))
+    other = rng.choice(by_set[p.set_id])
+    rest = b"".join(framing.field(p.set_id, f.descriptor, f.data) for f in other.fields)
+    what = f"continuation of {p.fields[0].what}"
+    out = [(framing.packet(p.set_id, p.payload(framing)), f"{p.fields[0].what}: the first packet of a sample")]
+    r = rng.random()
+    if r < 0.2:
+        at = rng.randrange(len(lead_bytes))
+        lead_bytes[at] ^= 1 << rng.randrange(8)
+        what += f" with byte {at} of the shared run changed"
+    elif r < 0.4:
+        q = rng.choice([q for qs in by_set.values() for q in qs])
+        out.append(
+            (framing.packet(q.set_id, q.payload(framing)), f"{q.fields[0].what}: between two packets of a sample")
+        )
+    elif r < 0.5:
+        plain = [f for f in other.fields if f.descriptor < rule["first_shared"]]
+        payload = b"".join(framing.field(p.set_id, f.descriptor, f.data) for f in plain)
+        out.append((framing.packet(p.set_id, payload), "a packet of the same set without a shared run"))
+    payload = (bytes(lead_bytes) + rest)[: framing.max_payload]
+    out.append((framing.packet(p.set_id, payload), what))
+    if rng.random() < 0.3:
+        out.append(
+            (framing.packet(p.set_id, (bytes(lead_bytes) + rest[::-1])[: framing.max_payload]), what + " (again)")
+        )
+    return out
 
 
 def _set_int(data: bytearray, spot: Spot, value: int, order: str) -> None:
@@ -953,6 +1002,21 @@ def check_group(g: Group, seed: int, langs=LANGS) -> tuple[list[str], dict]:
                 f" (mutant at {where}: {g.mutant_what.get(where)}); stderr: {_short(back.stderr.decode(errors='replace'))}"
                 f"\n  cmd: {cmd} | tests/conformance/encode {lang} --protocol {g.protocol} | cmp - {rel}/mutants-{g.gid}.bin"
             )
+    # With --samples (§6), where the protocol has data sets.
+    if g.ref.samples["data_sets"]:
+        want = g.ref.decode_stream(g.mutants, g.device, samples=True)
+        for lang in langs:
+            dec = run_cli("decode", lang, g.protocol, args=(str(mfile), "--samples") + dev)
+            got = dec.stdout.decode(errors="replace").splitlines()
+            if got != want:
+                i = _first_diff(got, want)
+                fails.append(
+                    f"{head} {lang} decode --samples of the mutants differs from the reference at line {i}:"
+                    f"\n    reference {_short(want[i]) if i < len(want) else '(none)'}"
+                    f"\n    {lang:9} {_short(got[i]) if i < len(got) else '(none)'}"
+                    f"\n  cmd: tests/conformance/decode {lang} {rel}/mutants-{g.gid}.bin --samples{devtxt} --protocol {g.protocol}"
+                )
+
     # The reference decoder (docs/conformance.md read independently) prints the same text.
     outs["reference"] = g.ref.decode_stream(g.mutants, g.device)
     counts["mutant_lines"] = len(outs["reference"])

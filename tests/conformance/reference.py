@@ -37,10 +37,14 @@ class Reference:
         self.shared = protocol["shared_data"]["set"] if protocol["shared_data"] else None
         self.irregular = {(e["set"], e["descriptor"]): e["adjust"] for e in fr["irregular_lengths"]}
         self.kinds = protocol["set_kinds"]
+        self.samples = protocol["samples"]
 
     # -- §1 stream parser over the whole input (flush at the end) ------------------------------
-    def decode_stream(self, buf: bytes, device: str | None = None) -> list[str]:
+    def decode_stream(self, buf: bytes, device: str | None = None, samples: bool = False) -> list[str]:
+        """The canonical lines of a stream; with `samples`, every packet of a data set carries its
+        sample number (§6) after its set."""
         fr = self.fr
+        tracker = SampleNumbers(self) if samples else None
         hs = fr["header_size"]
         n = len(buf)
         lines: list[str] = []
@@ -90,12 +94,37 @@ class Reference:
                 pos = i + 1
                 continue
             flush_skip()
-            lines.append(self.packet_line(i, buf[i : i + total], device))
+            line = self.packet_line(i, buf[i : i + total], device)
+            if tracker is not None:
+                number = tracker.feed(buf[i : i + total])
+                if number is not None:
+                    at = line.index(',"fields":')
+                    line = line[:at] + f',"sample":{number}' + line[at:]
+            lines.append(line)
             pos = i + total
         flush_skip()
         return lines
 
     # -- §2 payload -> fields -----------------------------------------------------------------
+    def split(self, set_id: int, payload: bytes) -> list:
+        """The complete fields of a payload as (descriptor, header + data), up to a trailing entry."""
+        fr = self.fr
+        hsz = fr["field_header_size"]
+        out = []
+        o = 0
+        while len(payload) - o >= hsz:
+            desc = payload[o + fr["field_descriptor_offset"]]
+            dlen = (
+                payload[o + fr["field_length_offset"]]
+                - fr["field_length_adjust"]
+                - self.irregular.get((set_id, desc), 0)
+            )
+            if dlen < 0 or hsz + dlen > len(payload) - o:
+                break
+            out.append((desc, payload[o : o + hsz + dlen]))
+            o += hsz + dlen
+        return out
+
     def packet_line(self, offset: int, pkt: bytes, device: str | None) -> str:
         fr = self.fr
         set_id = pkt[fr["set_offset"]]
@@ -296,3 +325,42 @@ def float_bits_text(bits: int, single: bool) -> str:
         return float_text(math.nan, bits=bits, single=single)
     value = struct.unpack(">f" if single else ">d", bits.to_bytes(4 if single else 8, "big"))[0]
     return float_text(value, single=single)
+
+
+class SampleNumbers:
+    """§6: the sample number of each packet of a data set, from the keys of its leading shared run."""
+
+    def __init__(self, ref: Reference):
+        rule = ref.samples
+        self.ref = ref
+        self.data_sets = set(rule["data_sets"])
+        self.first_shared = rule["first_shared"]
+        self.sizes = {t["descriptor"]: t["size"] for t in rule["timestamps"]}
+        self.next = 0
+        self.last: dict = {}  # set -> (number, key)
+
+    def key(self, set_id: int, payload: bytes) -> bytes | None:
+        key = b""
+        seen = set()
+        hsz = self.ref.fr["field_header_size"]
+        for desc, raw in self.ref.split(set_id, payload):
+            if desc < self.first_shared:
+                break
+            if self.sizes.get(desc) == len(raw) - hsz and desc not in seen:
+                seen.add(desc)
+                key += raw
+        return key or None
+
+    def feed(self, pkt: bytes) -> int | None:
+        fr = self.ref.fr
+        set_id = pkt[fr["set_offset"]]
+        if set_id not in self.data_sets:
+            return None
+        key = self.key(set_id, pkt[fr["header_size"] : len(pkt) - fr["checksum_size"]])
+        last = self.last.get(set_id)
+        if key is not None and last is not None and last[1] == key:
+            return last[0]
+        number = self.next
+        self.next += 1
+        self.last[set_id] = (number, key)
+        return number

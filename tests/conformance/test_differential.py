@@ -49,6 +49,15 @@ def test_reference_decoder_prints_every_golden_vector():
     assert not bad, f"{len(bad)} vectors:\n" + "\n".join(bad[:10])
 
 
+def test_reference_sample_numbers_match_the_hand_derived_stream():
+    """The oracle's §6 sample numbers on the hand-derived continuation stream of test_samples.py."""
+    from test_samples import STREAM
+
+    lines = Reference(PROTOCOLS["mip"]).decode_stream(b"".join(p for p, _ in STREAM), samples=True)
+    got = [int(x.split('"sample":')[1].split(",")[0]) if '"sample"' in x else None for x in lines]
+    assert got == [n for _, n in STREAM]
+
+
 def _walk(types: dict, params: list, prefix: str, out: dict) -> None:
     selectors = {p["type"]["selector"] for p in params if p["type"]["kind"] == "union"}
     for p in params:
