@@ -1,7 +1,6 @@
 /* Reader of canonical JSON lines (no allocation). Generated: do not edit. */
 #include "json_reader.h"
 
-#include <errno.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -102,6 +101,38 @@ static int hex_value(char c) {
     return -1;
 }
 
+/* Length of the well-formed UTF-8 sequence at s (RFC 3629: no overlong forms, no surrogates,
+ * at most U+10FFFF), or 0. */
+static size_t utf8_length(const unsigned char *s, size_t n) {
+    unsigned char c = s[0];
+    size_t len;
+    size_t k;
+    unsigned char lo = 0x80;
+    unsigned char hi = 0xBF;
+    if (c >= 0xC2 && c <= 0xDF) {
+        len = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        len = 3;
+        lo = c == 0xE0 ? 0xA0 : 0x80;
+        hi = c == 0xED ? 0x9F : 0xBF;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        len = 4;
+        lo = c == 0xF0 ? 0x90 : 0x80;
+        hi = c == 0xF4 ? 0x8F : 0xBF;
+    } else {
+        return 0;
+    }
+    if (n < len || s[1] < lo || s[1] > hi) {
+        return 0;
+    }
+    for (k = 2; k < len; k++) {
+        if ((s[k] & 0xC0) != 0x80) {
+            return 0;
+        }
+    }
+    return len;
+}
+
 /* Scans a string starting at the quote; *end after the closing quote. */
 static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
     size_t i = pos + 1;
@@ -109,6 +140,14 @@ static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
         unsigned char c = (unsigned char)jr->s[i];
         if (c < 0x20) {
             return mip_jr_fail(jr, "control character in a string");
+        }
+        if (c >= 0x80) { /* the line is UTF-8 text (§5) */
+            size_t len = utf8_length((const unsigned char *)jr->s + i, jr->len - i);
+            if (len == 0) {
+                return mip_jr_fail(jr, "invalid UTF-8");
+            }
+            i += len;
+            continue;
         }
         if (c == '\\') {
             i++;
@@ -123,7 +162,7 @@ static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
                     }
                 }
                 i += 4;
-            } else if (!strchr("\"\\/bfnrt", jr->s[i])) {
+            } else if (jr->s[i] == '\0' || !strchr("\"\\/bfnrt", jr->s[i])) {
                 return mip_jr_fail(jr, "bad escape in a string");
             }
         }
@@ -636,6 +675,78 @@ int mip_jr_s64(mip_jr_t *jr, size_t pos, int64_t *out) {
     return 0;
 }
 
+/* The double nearest to a JSON number of any length (docs/conformance.md §5: round to nearest,
+ * ties to even; +-HUGE_VAL when it overflows, 0 or a denormal when it underflows). The number
+ * is rewritten as at most NUMBER_DIGITS significant digits and an exponent for strtod: a 1 is
+ * appended when a dropped digit is not zero, which keeps the rounding exact (a double needs at
+ * most 767 significant digits to decide it), and the exponent is clamped where the result is
+ * 0 or infinite anyway. */
+#define NUMBER_DIGITS 800
+static double number_value(const char *s, size_t n) {
+    char text[NUMBER_DIGITS + 32];
+    size_t i = 0;
+    size_t k = 0;
+    long exp10 = 0;
+    long e = 0;
+    int sticky = 0;
+    int seen = 0;
+    if (i < n && s[i] == '-') {
+        text[k++] = '-';
+        i++;
+    }
+    {
+        size_t first = k;
+        int fraction = 0;
+        for (; i < n && (s[i] == '.' || (s[i] >= '0' && s[i] <= '9')); i++) {
+            char c = s[i];
+            if (c == '.') {
+                fraction = 1;
+                continue;
+            }
+            if (!seen && c == '0') {
+                exp10 -= fraction;
+                continue;
+            }
+            seen = 1;
+            if (k - first < NUMBER_DIGITS) {
+                text[k++] = c;
+                exp10 -= fraction;
+            } else {
+                exp10 += !fraction;
+                sticky |= c != '0';
+            }
+        }
+        if (sticky) {
+            text[k++] = '1';
+            exp10--;
+        }
+        if (k == first) {
+            text[k++] = '0';
+        }
+    }
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        int negative = 0;
+        i++;
+        if (i < n && (s[i] == '+' || s[i] == '-')) {
+            negative = s[i] == '-';
+            i++;
+        }
+        for (; i < n && s[i] >= '0' && s[i] <= '9'; i++) {
+            if (e < 100000000L) {
+                e = e * 10 + (s[i] - '0');
+            }
+        }
+        exp10 += negative ? -e : e;
+    }
+    if (exp10 > 100000L) {
+        exp10 = 100000L;
+    } else if (exp10 < -100000L) {
+        exp10 = -100000L;
+    }
+    snprintf(text + k, sizeof text - k, "e%ld", exp10);
+    return strtod(text, NULL);
+}
+
 /* A number, or "inf", "-inf", "nan", "nan:0x<hex_digits>"; *bits set for "nan:0x..". */
 static int number(mip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
                   const char *expected) {
@@ -685,18 +796,9 @@ static int number(mip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *ha
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
-    {
-        char text[512];
-        if (end - pos >= sizeof text) {
-            return mip_jr_fail(jr, "number too long");
-        }
-        memcpy(text, jr->s + pos, end - pos);
-        text[end - pos] = '\0';
-        errno = 0;
-        *out = strtod(text, NULL);
-        if (errno == ERANGE && (*out == HUGE_VAL || *out == -HUGE_VAL)) {
-            return mip_jr_fail(jr, "number out of range");
-        }
+    *out = number_value(jr->s + pos, end - pos);
+    if (*out == HUGE_VAL || *out == -HUGE_VAL) {
+        return mip_jr_fail(jr, "number out of range for a double");
     }
     return 0;
 }
@@ -733,12 +835,19 @@ int mip_jr_f32(mip_jr_t *jr, size_t pos, float *out) {
         memcpy(out, &b32, sizeof b32);
         return 0;
     }
-    if (d == HUGE_VAL || d == -HUGE_VAL) {
+    if (d == HUGE_VAL || d == -HUGE_VAL) { /* "inf", "-inf" */
         *out = d > 0 ? HUGE_VALF : -HUGE_VALF;
         return 0;
     }
-    if (d > FLT_MAX || d < -FLT_MAX) {
+    /* Rounded to nearest (ties to even), a double from half an ulp above FLT_MAX
+     * (0x1.ffffffp127) up is infinite as a float: out of range (§5). Below it, a double beyond
+     * FLT_MAX rounds to FLT_MAX (spelled out: C leaves that conversion undefined). */
+    if (d >= 0x1.ffffffp127 || d <= -0x1.ffffffp127) {
         return mip_jr_fail(jr, "number out of range for a float");
+    }
+    if (d > FLT_MAX || d < -FLT_MAX) {
+        *out = d > 0 ? FLT_MAX : -FLT_MAX;
+        return 0;
     }
     *out = (float)d;
     return 0;
