@@ -51,6 +51,7 @@ from generator.primitives import PRIMITIVES, int_range  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference import Reference, float_bits_text  # noqa: E402
+from respell import invalidate, respell  # noqa: E402
 
 LANGS = ["c", "cpp", "python", "rust"]
 INTS = ("u8", "u16", "u32", "u64", "s8", "s16", "s32", "s64")
@@ -1042,7 +1043,80 @@ def check_group(g: Group, seed: int, langs=LANGS) -> tuple[list[str], dict]:
             f"\n  cmd: tests/conformance/decode {lang} {rel}/mutants-{g.gid}.bin{devtxt} --protocol {g.protocol}\n"
             + "\n".join(lines)
         )
+
+    # 4. encoder input (§5): other spellings of the same lines give the same bytes; lines made
+    # invalid are refused by every encoder, and the others still encoded.
+    rng = random.Random(seed ^ 0x5EED ^ len(g.lines))
+    fails += check_spellings(g, g.lines, g.stream, "values", rng, langs, head, rel)
+    fails += check_spellings(g, outs["reference"], g.mutants, "mutants", rng, langs, head, rel)
+    counts["respelled"] = len(g.lines) + len(outs["reference"])
     return fails, counts
+
+
+def _line_bytes(lines: list[str], stream: bytes) -> list[bytes]:
+    """The bytes of each decoded line of a stream (packets and skip runs tile it)."""
+    offs = [int(x[10 : x.index(",")]) for x in lines] + [len(stream)]
+    return [stream[a:b] for a, b in zip(offs, offs[1:])]
+
+
+def check_spellings(g: Group, lines: list, stream: bytes, name: str, rng, langs, head: str, rel: str) -> list[str]:
+    fails = []
+    d = ROOT / rel
+    spelled = [respell(x, rng) for x in lines]
+    path = d / f"{name}-respelled-{g.gid}.jsonl"
+    path.write_text("".join(x + "\n" for x in spelled), encoding="utf-8")
+    per_line = _line_bytes(lines, stream)
+    # Every fourth line or so made invalid: those must be refused, the others encoded.
+    bad_lines = {}
+    mixed = []
+    for i, x in enumerate(spelled):
+        if rng.random() < 0.25:
+            text, what = invalidate(lines[i], rng)
+            bad_lines[len(mixed) + 1] = (what, text)
+            mixed.append(text)
+        mixed.append(x)
+    mpath = d / f"{name}-invalid-{g.gid}.jsonl"
+    mpath.write_text("".join(x + "\n" for x in mixed), encoding="utf-8")
+    for lang in langs:
+        enc = run_cli("encode", lang, g.protocol, path.read_bytes())
+        cmd = f"tests/conformance/encode {lang} --protocol {g.protocol} < {rel}/{path.name}"
+        if enc.returncode != 0 or enc.stdout != stream:
+            err = enc.stderr.decode(errors="replace").splitlines()
+            at = _first_diff(list(enc.stdout), list(stream))
+            idx = next((i for i, b in enumerate(_cumulative(per_line)) if b > at), len(lines) - 1)
+            fails.append(
+                f"{head} {lang} encode of respelled {name} lines (exit {enc.returncode}) does not give the bytes;"
+                f" stderr: {_short(' | '.join(err[:3]))}\n  first difference in line {idx + 1}:"
+                f"\n    canonical {_short(lines[idx])}\n    respelled {_short(spelled[idx])}\n  cmd: {cmd}"
+            )
+        enc = run_cli("encode", lang, g.protocol, mpath.read_bytes())
+        err = enc.stderr.decode(errors="replace")
+        named = {int(n) for n in re.findall(r"\bline (\d+):", err)}
+        cmd = f"tests/conformance/encode {lang} --protocol {g.protocol} < {rel}/{mpath.name}"
+        missed = [f"line {n}: {w}: {_short(t, 300)}" for n, (w, t) in sorted(bad_lines.items()) if n not in named]
+        extra = sorted(named - set(bad_lines))
+        if missed or extra or enc.stdout != stream or (enc.returncode != 1 if bad_lines else enc.returncode != 0):
+            fails.append(
+                f"{head} {lang} encode of {name} lines with invalid ones among them: {len(missed)} invalid lines"
+                f" accepted, {len(extra)} valid lines refused (lines {extra[:5]}), exit {enc.returncode},"
+                f" bytes {'equal' if enc.stdout == stream else 'differ'}\n  cmd: {cmd}\n"
+                + "\n".join("  " + m for m in missed[:5])
+                + (
+                    "\n  refused: "
+                    + _short(" | ".join(x for x in err.splitlines() if any(f"line {n}:" in x for n in extra[:3])))
+                    if extra
+                    else ""
+                )
+            )
+    return fails
+
+
+def _cumulative(parts: list[bytes]) -> list[int]:
+    out, total = [], 0
+    for p in parts:
+        total += len(p)
+        out.append(total)
+    return out
 
 
 def load_protocols() -> list[dict]:
@@ -1062,7 +1136,7 @@ def main(argv: list[str] | None = None) -> int:
     langs = args.langs.split(",")
     protocols = load_protocols()
     sysrng = random.SystemRandom()
-    total = {"samples": 0, "packets": 0, "mutants": 0, "mutant_lines": 0}
+    total = {"samples": 0, "packets": 0, "mutants": 0, "mutant_lines": 0, "respelled": 0}
     failed_seeds = []
     t0 = time.time()
     for r in range(args.rounds):

@@ -308,12 +308,58 @@ int mip_jr_document(mip_jr_t *jr, size_t *pos) {
 }
 
 /* Walks an object that mip_jr_skip accepted: calls back for each key. */
+/* The character at jr->s[*i] inside a string that scan_string accepted: escapes decoded and a
+ * UTF-8 sequence read as one code point; advances *i past it. */
+static unsigned string_char(const mip_jr_t *jr, size_t *i) {
+    const unsigned char *u = (const unsigned char *)jr->s + *i;
+    unsigned code = u[0];
+    if (code == '\\') {
+        const char *from = "bfnrt";
+        const char *to = "\b\f\n\r\t";
+        const char *at_e;
+        if (u[1] == 'u') {
+            *i += 6;
+            return (unsigned)(hex_value((char)u[2]) << 12 | hex_value((char)u[3]) << 8 |
+                              hex_value((char)u[4]) << 4 | hex_value((char)u[5]));
+        }
+        *i += 2;
+        at_e = strchr(from, (char)u[1]);
+        return (unsigned char)(at_e ? to[at_e - from] : (char)u[1]);
+    }
+    if (code >= 0x80) {
+        size_t len = utf8_length(u, jr->len - *i);
+        size_t k;
+        code &= len == 2 ? 0x1Fu : len == 3 ? 0x0Fu : 0x07u;
+        for (k = 1; k < len; k++) {
+            code = code << 6 | (u[k] & 0x3Fu);
+        }
+        *i += len;
+        return code;
+    }
+    *i += 1;
+    return code;
+}
+
+/* True when the JSON string at key_pos..key_end (quotes included, already scanned) denotes the
+ * ASCII text name: escapes are decoded first ("na\u006de" is the key "name", §5). */
+static bool key_equals(const mip_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
+    size_t i = key_pos + 1;
+    size_t k = 0;
+    while (i < key_end - 1) {
+        unsigned code = string_char(jr, &i);
+        if (name[k] == '\0' || code != (unsigned char)name[k]) {
+            return false;
+        }
+        k++;
+    }
+    return name[k] == '\0';
+}
+
 static size_t key_index(const mip_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
                         size_t n) {
     size_t i;
-    size_t klen = key_end - key_pos - 2;
     for (i = 0; i < n; i++) {
-        if (strlen(keys[i]) == klen && memcmp(jr->s + key_pos + 1, keys[i], klen) == 0) {
+        if (key_equals(jr, key_pos, key_end, keys[i])) {
             return i;
         }
     }
@@ -561,6 +607,8 @@ int mip_jr_chars(mip_jr_t *jr, size_t pos, char *out, size_t n) {
 int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     size_t end;
     size_t i;
+    size_t digits = 0;
+    int hi = 0;
     pos = mip_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
         return mip_jr_fail(jr, "expected a hex string");
@@ -568,20 +616,26 @@ int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     if (scan_string(jr, pos, &end)) {
         return -1;
     }
-    if ((end - pos - 2) % 2 != 0) {
-        return mip_jr_fail(jr, "expected an even number of hex digits");
-    }
-    *n = (end - pos - 2) / 2;
-    if (*n > cap) {
-        return mip_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
-    }
-    for (i = 0; i < *n; i++) {
-        int hi = hex_value(jr->s[pos + 1 + 2 * i]);
-        int lo = hex_value(jr->s[pos + 2 + 2 * i]);
-        if (hi < 0 || lo < 0) {
+    /* The digits are the string's characters, escapes decoded (§5). */
+    for (i = pos + 1; i < end - 1;) {
+        unsigned code = string_char(jr, &i);
+        int d = code < 0x80 ? hex_value((char)code) : -1;
+        if (d < 0) {
             return mip_jr_fail(jr, "expected hex digits");
         }
-        out[i] = (uint8_t)(hi << 4 | lo);
+        if (digits % 2 == 0) {
+            hi = d;
+        } else if (digits / 2 < cap) {
+            out[digits / 2] = (uint8_t)(hi << 4 | d);
+        }
+        digits++;
+    }
+    if (digits % 2 != 0) {
+        return mip_jr_fail(jr, "expected an even number of hex digits");
+    }
+    *n = digits / 2;
+    if (*n > cap) {
+        return mip_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
     }
     return 0;
 }

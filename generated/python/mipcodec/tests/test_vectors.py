@@ -2579,7 +2579,7 @@ CASES = [
         "hex": "756501020201e0c6",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:200",
+        "where": "tests/vectors/mip/encode_input.yaml:203",
         "expect": ['{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}'],
     },
     {

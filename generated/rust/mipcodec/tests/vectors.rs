@@ -3431,7 +3431,7 @@ fn case_encode_input_packet_keys() {
     );
 }
 
-/// `encode_input_field_keys` (tests/vectors/mip/encode_input.yaml:200)
+/// `encode_input_field_keys` (tests/vectors/mip/encode_input.yaml:203)
 #[test]
 fn case_encode_input_field_keys() {
     check(
