@@ -1,5 +1,6 @@
 # Protocol code generator. Contracts (kept stable, see README): make, make test, make check,
-# make audit, make bench, generated/ir.json, tests/vectors/, tests/conformance/{decode,encode}.
+# make audit, make bench, make differential, generated/ir.json, tests/vectors/,
+# tests/conformance/{decode,encode}.
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv

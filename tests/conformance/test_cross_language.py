@@ -189,7 +189,8 @@ def test_refused_inputs_are_refused_and_the_other_lines_kept(lang):
         data = good + b"\n" + b"".join(b + b"\n" + good + b"\n" for _, b in lines)
         proc = _encode_raw(lang, data, protocol)
         err = proc.stderr.decode(errors="replace")
-        named = {int(n) for n in re.findall(r"\bline (\d+):", err)}
+        # "line N: what is wrong": the reason must be there too.
+        named = {int(n) for n in re.findall(r"\bline (\d+):[ \t]*\S", err)}
         missed = [f"{c['name']}: {b[:160]!r}" for k, (c, b) in enumerate(lines) if 2 * k + 2 not in named]
         assert not missed, f"{lang} encode accepted (or did not name) refused lines:\n" + "\n".join(missed)
         assert proc.returncode == 1

@@ -9,8 +9,11 @@ For every device group of every protocol:
    lines that went in (offsets included), and decode | encode gives back the bytes;
 2. the mutants stream (those packets corrupted, checksums recomputed): every `decode` prints
    exactly what the reference decoder (`reference.py`, the contract read independently of the
-   generator's templates) prints, error messages included, and decode | encode gives back the
-   bytes in every language.
+   generator's templates) prints, error messages included, with and without --samples, and
+   decode | encode gives back the bytes in every language;
+3. encoder input (§5): both streams' lines respelled (`respell.py`: key order, whitespace,
+   escapes, number notation, hex case, other offsets and error texts) encode to the same bytes,
+   and lines made invalid among them are refused by every encoder while the others are kept.
 
 The reference decoder is itself checked against every golden vector first, and the round is
 checked to reach every layout, enum value, union member, array length class and byte value.

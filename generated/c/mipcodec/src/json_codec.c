@@ -247,7 +247,15 @@ static int field_entry(mip_jr_t *jr, size_t pos, uint8_t set, mip_packet_builder
     if (st == MIP_ERR_TOO_LONG) {
         return mip_jr_fail(jr, "the payload would exceed %d bytes", MIP_MAX_PAYLOAD);
     }
-    return st == MIP_OK ? 0 : -1;
+    if (st == MIP_ERR_INVALID) {
+        return mip_jr_fail(jr,
+                           "field data of %zu bytes is shorter than the size byte of descriptor %u allows", n,
+                           (unsigned)descriptor);
+    }
+    if (st != MIP_OK) {
+        return mip_jr_fail(jr, "the field cannot be written (%s)", mip_status_text(st));
+    }
+    return 0;
 }
 
 mip_status_t mip_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,

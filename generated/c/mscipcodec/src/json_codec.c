@@ -248,7 +248,15 @@ static int field_entry(mscip_jr_t *jr, size_t pos, uint8_t set, mscip_packet_bui
     if (st == MSCIP_ERR_TOO_LONG) {
         return mscip_jr_fail(jr, "the payload would exceed %d bytes", MSCIP_MAX_PAYLOAD);
     }
-    return st == MSCIP_OK ? 0 : -1;
+    if (st == MSCIP_ERR_INVALID) {
+        return mscip_jr_fail(jr,
+                             "field data of %zu bytes is shorter than the size byte of descriptor %u allows",
+                             n, (unsigned)descriptor);
+    }
+    if (st != MSCIP_OK) {
+        return mscip_jr_fail(jr, "the field cannot be written (%s)", mscip_status_text(st));
+    }
+    return 0;
 }
 
 mscip_status_t mscip_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
