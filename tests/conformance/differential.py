@@ -1091,7 +1091,7 @@ def check_spellings(g: Group, lines: list, stream: bytes, name: str, rng, langs,
             )
         enc = run_cli("encode", lang, g.protocol, mpath.read_bytes())
         err = enc.stderr.decode(errors="replace")
-        named = {int(n) for n in re.findall(r"\bline (\d+):", err)}
+        named = {int(n) for n in re.findall(r"\bline (\d+):[ \t]*\S", err)}
         cmd = f"tests/conformance/encode {lang} --protocol {g.protocol} < {rel}/{mpath.name}"
         missed = [f"line {n}: {w}: {_short(t, 300)}" for n, (w, t) in sorted(bad_lines.items()) if n not in named]
         extra = sorted(named - set(bad_lines))
