@@ -111,6 +111,8 @@ def test_round_covers_the_spec(protocol):
         shared = next(s for s in sets if s["id"] == proto["shared_data"]["set"])
         data_sets = [s["id"] for s in sets if s["kind"] == "data"]
         want |= {(sid, f["id"], None) for sid in data_sets for f in shared["fields"]}
+        shared_ids = {f["id"] for f in shared["fields"]}
+        assert any(sid not in defined and d in shared_ids for sid, d, _ in reached), "shared fields in an undefined set"
     assert want <= reached, sorted(want - reached)[:20]
 
     missing = [(e, v["value"]) for e in sorted(enums) for v in types[e]["values"]]
