@@ -35,6 +35,7 @@ import argparse
 import os
 import random
 import re
+import shutil
 import struct
 import subprocess
 import sys
@@ -1149,6 +1150,8 @@ def main(argv: list[str] | None = None) -> int:
             fails += f
             for k in total:
                 total[k] += c[k]
+        if not fails:  # keep the streams of failing seeds only (a round writes about 10 MB)
+            shutil.rmtree(WORK / str(seed), ignore_errors=True)
         status = "ok" if not fails else f"{len(fails)} FAILURES"
         print(f"round {r + 1}/{args.rounds} seed {seed}: {status} ({time.time() - t:.1f} s)", flush=True)
         for f in fails:

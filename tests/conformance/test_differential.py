@@ -20,6 +20,7 @@ checked to reach every layout, enum value, union member, array length class and 
 `make differential ROUNDS=N [SEED=S]` runs many rounds.
 """
 
+import shutil
 import sys
 from pathlib import Path
 
@@ -29,7 +30,7 @@ from generator.spec import load_spec
 from generator.vectors import load_vectors
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from differential import SEED, build_round, check_group, replay_command  # noqa: E402
+from differential import SEED, WORK, build_round, check_group, replay_command  # noqa: E402
 from reference import Reference  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -140,9 +141,21 @@ def test_round_covers_the_spec(protocol):
         assert '"function":0,' in texts or '"function":0}' in texts, "no function selector value 0"
 
 
+FAILED: list = []
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _keep_failing_streams():
+    """The streams of this seed (build/differential/SEED/) stay only when a group failed."""
+    yield
+    if not FAILED:
+        shutil.rmtree(WORK / str(SEED), ignore_errors=True)
+
+
 @pytest.mark.parametrize("group", GROUPS, ids=lambda g: g.gid)
 def test_languages_agree_with_the_contract(group):
     """Values stream and mutants stream of one device group in all four languages."""
     fails, counts = check_group(group, SEED)
+    FAILED.extend(fails)
     assert counts["samples"] > 50 and counts["mutants"] > 50, counts
     assert not fails, f"{len(fails)} disagreements ({REPLAY}):\n\n" + "\n\n".join(fails[:10])
