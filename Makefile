@@ -1,5 +1,6 @@
 # Protocol code generator. Contracts (kept stable, see README): make, make test, make check,
-# make audit, make bench, generated/ir.json, tests/vectors/, tests/conformance/{decode,encode}.
+# make audit, make bench, make differential, generated/ir.json, tests/vectors/,
+# tests/conformance/{decode,encode}.
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
@@ -11,7 +12,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
 
-.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -47,6 +48,14 @@ html: generate
 
 test-conformance: generate
 	$(PY) -m pytest -q tests/conformance
+
+# Differential rounds (tests/conformance/differential.py; one round runs in test-conformance):
+# hostile values of every layout and corrupted packets through the four languages' CLIs against
+# the reference decoder. ROUNDS rounds, seeds SEED, SEED+1, ... (random seeds when SEED is unset);
+# each round prints its seed; a failure prints the command that replays it.
+ROUNDS ?= 50
+differential: generate
+	$(PY) tests/conformance/differential.py --rounds $(ROUNDS) $(if $(SEED),--seed $(SEED))
 
 # The device capture decodes completely and identically in the four languages (run when the
 # file exists; `make test` says so when it does not).

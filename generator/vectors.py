@@ -36,6 +36,8 @@ CASE_KEYS = {
     "notes",
     "skipped",
     "quoted",
+    "encode_inputs",
+    "refused_inputs",
 }
 ERRATUM_KINDS = {"bad_checksum", "bad_length", "table_mismatch", "copy_paste_mismatch", "bad_decimal", "bad_bytes"}
 
@@ -206,6 +208,14 @@ def _case(ctx: _Ctx, path: tuple, c: dict, rel: str) -> dict | None:
         "device": c.get("device"),
         "rejected": bool(c.get("rejected")),
         "quoted": c.get("quoted"),
+        # Encoder input (docs/conformance.md §5): other spellings that must encode to `hex`, and
+        # lines every encoder must refuse, as lowercase hex of their bytes ({hex} in the YAML
+        # gives bytes that are not UTF-8 text).
+        "encode_inputs": list(c.get("encode_inputs") or []),
+        "refused_inputs": [
+            re.sub(r"\s", "", r["hex"]).lower() if isinstance(r, dict) else r.encode("utf-8").hex()
+            for r in c.get("refused_inputs") or []
+        ],
         "expect": lines,
     }
 

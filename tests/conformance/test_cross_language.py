@@ -8,6 +8,7 @@ round-trip through decode | encode in each. Every protocol (MIP, MS-CIP) separat
 
 import os
 import random
+import re
 import subprocess
 from pathlib import Path
 
@@ -142,3 +143,56 @@ def test_decode_of_a_missing_file_is_a_usage_error(lang, tmp_path):
     assert proc.returncode == 2
     assert proc.stdout == b""
     assert b"missing.bin" in proc.stderr
+
+
+# Encoder input (docs/conformance.md §5): spellings of a vector's lines other than the canonical
+# one, which must encode to its bytes, and lines every encoder must refuse.
+ENCODE_INPUTS = [(c, text) for c in VECTORS for text in c["encode_inputs"]]
+REFUSED = [(c, bytes.fromhex(h)) for c in VECTORS for h in c["refused_inputs"]]
+
+
+def _encode_raw(lang: str, data: bytes, protocol: str) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [str(ROOT / "tests/conformance/encode"), lang, "--protocol", protocol], input=data, capture_output=True
+    )
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_other_spellings_encode_to_the_vector_bytes(lang):
+    assert ENCODE_INPUTS, "no vector has encode_inputs"
+    for protocol in PROTOCOLS:
+        cases = [(c, t) for c, t in ENCODE_INPUTS if c["protocol"] == protocol]
+        if not cases:
+            continue
+        text = "".join(t.rstrip("\n") + "\n" for _, t in cases).encode()
+        proc = _encode_raw(lang, text, protocol)
+        if proc.returncode == 0 and proc.stdout == b"".join(bytes.fromhex(c["hex"]) for c, _ in cases):
+            continue
+        bad = []  # one run per input to name the ones that fail
+        for c, t in cases:
+            one = _encode_raw(lang, t.rstrip("\n").encode() + b"\n", protocol)
+            if one.returncode != 0 or one.stdout.hex() != c["hex"]:
+                err = one.stderr.decode(errors="replace").strip()
+                bad.append(f"{c['name']}: {t[:160]}\n  gave {one.stdout.hex() or '(nothing)'} (want {c['hex']}) {err}")
+        assert not bad, f"{lang} encode:\n" + "\n".join(bad)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_refused_inputs_are_refused_and_the_other_lines_kept(lang):
+    assert REFUSED, "no vector has refused_inputs"
+    good = b'{"offset":0,"skipped":"aa"}'
+    for protocol in PROTOCOLS:
+        lines = [(c, b) for c, b in REFUSED if c["protocol"] == protocol]
+        if not lines:
+            continue
+        assert all(b"\n" not in b for _, b in lines)
+        data = good + b"\n" + b"".join(b + b"\n" + good + b"\n" for _, b in lines)
+        proc = _encode_raw(lang, data, protocol)
+        err = proc.stderr.decode(errors="replace")
+        # "line N: what is wrong": the reason must be there too.
+        named = {int(n) for n in re.findall(r"\bline (\d+):[ \t]*\S", err)}
+        missed = [f"{c['name']}: {b[:160]!r}" for k, (c, b) in enumerate(lines) if 2 * k + 2 not in named]
+        assert not missed, f"{lang} encode accepted (or did not name) refused lines:\n" + "\n".join(missed)
+        assert proc.returncode == 1
+        assert proc.stdout == b"\xaa" * (len(lines) + 1), f"{lang} wrote bytes for a refused line"
+        assert "Traceback" not in err and "panicked" not in err

@@ -108,20 +108,23 @@ static const char *const k_field_keys[] = {"descriptor", "name", "device", "valu
 static int check_offset(mip_jr_t *jr, size_t pos) {
     size_t vp;
     uint64_t offset;
-    int found = mip_jr_get(jr, pos, "offset", &vp);
-    if (found == 1) {
-        mip_jr_push(jr, "offset");
-        if (mip_jr_uint(jr, vp, UINT64_MAX, &offset)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if (mip_jr_get(jr, pos, "offset", &vp) != 1) {
+        return mip_jr_fail(jr, "missing \"offset\"");
     }
+    mip_jr_push(jr, "offset");
+    if (mip_jr_uint(jr, vp, UINT64_MAX, &offset)) {
+        return -1;
+    }
+    mip_jr_pop(jr);
     return 0;
 }
 
 static int check_error_text(mip_jr_t *jr, size_t pos) {
     size_t vp;
-    if (mip_jr_get(jr, pos, "error", &vp) == 1 && !mip_jr_is_string(jr, vp)) {
+    if (mip_jr_get(jr, pos, "error", &vp) != 1) {
+        return mip_jr_fail(jr, "missing \"error\"");
+    }
+    if (!mip_jr_is_string(jr, vp)) {
         mip_jr_push(jr, "error");
         return mip_jr_fail(jr, "expected a string");
     }
@@ -142,15 +145,16 @@ static int decoded_field(mip_jr_t *jr, size_t pos, uint8_t set, uint8_t descript
             jr, "descriptor %u in set %u is not defined (%s); write it as a raw field with \"data\"",
             (unsigned)descriptor, (unsigned)set, mip_status_text(why));
     }
-    if (mip_jr_get(jr, pos, "name", &vp) == 1) {
-        mip_jr_push(jr, "name");
-        if (mip_jr_chars(jr, vp, text, strlen(f->name)) || memcmp(text, f->name, strlen(f->name)) != 0) {
-            jr->failed = false;
-            return mip_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set,
-                               f->name);
-        }
-        mip_jr_pop(jr);
+    if (mip_jr_get(jr, pos, "name", &vp) != 1) {
+        return mip_jr_fail(jr, "missing \"name\"");
     }
+    mip_jr_push(jr, "name");
+    if (mip_jr_chars(jr, vp, text, strlen(f->name)) || memcmp(text, f->name, strlen(f->name)) != 0) {
+        jr->failed = false;
+        return mip_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set,
+                           f->name);
+    }
+    mip_jr_pop(jr);
     id = f->first_layout;
     if (mip_jr_get(jr, pos, "device", &vp) == 1) {
         mip_jr_push(jr, "device");

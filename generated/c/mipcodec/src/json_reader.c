@@ -1,7 +1,6 @@
 /* Reader of canonical JSON lines (no allocation). Generated: do not edit. */
 #include "json_reader.h"
 
-#include <errno.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -102,6 +101,38 @@ static int hex_value(char c) {
     return -1;
 }
 
+/* Length of the well-formed UTF-8 sequence at s (RFC 3629: no overlong forms, no surrogates,
+ * at most U+10FFFF), or 0. */
+static size_t utf8_length(const unsigned char *s, size_t n) {
+    unsigned char c = s[0];
+    size_t len;
+    size_t k;
+    unsigned char lo = 0x80;
+    unsigned char hi = 0xBF;
+    if (c >= 0xC2 && c <= 0xDF) {
+        len = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        len = 3;
+        lo = c == 0xE0 ? 0xA0 : 0x80;
+        hi = c == 0xED ? 0x9F : 0xBF;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        len = 4;
+        lo = c == 0xF0 ? 0x90 : 0x80;
+        hi = c == 0xF4 ? 0x8F : 0xBF;
+    } else {
+        return 0;
+    }
+    if (n < len || s[1] < lo || s[1] > hi) {
+        return 0;
+    }
+    for (k = 2; k < len; k++) {
+        if ((s[k] & 0xC0) != 0x80) {
+            return 0;
+        }
+    }
+    return len;
+}
+
 /* Scans a string starting at the quote; *end after the closing quote. */
 static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
     size_t i = pos + 1;
@@ -109,6 +140,14 @@ static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
         unsigned char c = (unsigned char)jr->s[i];
         if (c < 0x20) {
             return mip_jr_fail(jr, "control character in a string");
+        }
+        if (c >= 0x80) { /* the line is UTF-8 text (§5) */
+            size_t len = utf8_length((const unsigned char *)jr->s + i, jr->len - i);
+            if (len == 0) {
+                return mip_jr_fail(jr, "invalid UTF-8");
+            }
+            i += len;
+            continue;
         }
         if (c == '\\') {
             i++;
@@ -123,7 +162,7 @@ static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
                     }
                 }
                 i += 4;
-            } else if (!strchr("\"\\/bfnrt", jr->s[i])) {
+            } else if (jr->s[i] == '\0' || !strchr("\"\\/bfnrt", jr->s[i])) {
                 return mip_jr_fail(jr, "bad escape in a string");
             }
         }
@@ -269,12 +308,58 @@ int mip_jr_document(mip_jr_t *jr, size_t *pos) {
 }
 
 /* Walks an object that mip_jr_skip accepted: calls back for each key. */
+/* The character at jr->s[*i] inside a string that scan_string accepted: escapes decoded and a
+ * UTF-8 sequence read as one code point; advances *i past it. */
+static unsigned string_char(const mip_jr_t *jr, size_t *i) {
+    const unsigned char *u = (const unsigned char *)jr->s + *i;
+    unsigned code = u[0];
+    if (code == '\\') {
+        const char *from = "bfnrt";
+        const char *to = "\b\f\n\r\t";
+        const char *at_e;
+        if (u[1] == 'u') {
+            *i += 6;
+            return (unsigned)(hex_value((char)u[2]) << 12 | hex_value((char)u[3]) << 8 |
+                              hex_value((char)u[4]) << 4 | hex_value((char)u[5]));
+        }
+        *i += 2;
+        at_e = strchr(from, (char)u[1]);
+        return (unsigned char)(at_e ? to[at_e - from] : (char)u[1]);
+    }
+    if (code >= 0x80) {
+        size_t len = utf8_length(u, jr->len - *i);
+        size_t k;
+        code &= len == 2 ? 0x1Fu : len == 3 ? 0x0Fu : 0x07u;
+        for (k = 1; k < len; k++) {
+            code = code << 6 | (u[k] & 0x3Fu);
+        }
+        *i += len;
+        return code;
+    }
+    *i += 1;
+    return code;
+}
+
+/* True when the JSON string at key_pos..key_end (quotes included, already scanned) denotes the
+ * ASCII text name: escapes are decoded first ("na\u006de" is the key "name", §5). */
+static bool key_equals(const mip_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
+    size_t i = key_pos + 1;
+    size_t k = 0;
+    while (i < key_end - 1) {
+        unsigned code = string_char(jr, &i);
+        if (name[k] == '\0' || code != (unsigned char)name[k]) {
+            return false;
+        }
+        k++;
+    }
+    return name[k] == '\0';
+}
+
 static size_t key_index(const mip_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
                         size_t n) {
     size_t i;
-    size_t klen = key_end - key_pos - 2;
     for (i = 0; i < n; i++) {
-        if (strlen(keys[i]) == klen && memcmp(jr->s + key_pos + 1, keys[i], klen) == 0) {
+        if (key_equals(jr, key_pos, key_end, keys[i])) {
             return i;
         }
     }
@@ -522,6 +607,8 @@ int mip_jr_chars(mip_jr_t *jr, size_t pos, char *out, size_t n) {
 int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     size_t end;
     size_t i;
+    size_t digits = 0;
+    int hi = 0;
     pos = mip_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
         return mip_jr_fail(jr, "expected a hex string");
@@ -529,20 +616,26 @@ int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     if (scan_string(jr, pos, &end)) {
         return -1;
     }
-    if ((end - pos - 2) % 2 != 0) {
-        return mip_jr_fail(jr, "expected an even number of hex digits");
-    }
-    *n = (end - pos - 2) / 2;
-    if (*n > cap) {
-        return mip_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
-    }
-    for (i = 0; i < *n; i++) {
-        int hi = hex_value(jr->s[pos + 1 + 2 * i]);
-        int lo = hex_value(jr->s[pos + 2 + 2 * i]);
-        if (hi < 0 || lo < 0) {
+    /* The digits are the string's characters, escapes decoded (§5). */
+    for (i = pos + 1; i < end - 1;) {
+        unsigned code = string_char(jr, &i);
+        int d = code < 0x80 ? hex_value((char)code) : -1;
+        if (d < 0) {
             return mip_jr_fail(jr, "expected hex digits");
         }
-        out[i] = (uint8_t)(hi << 4 | lo);
+        if (digits % 2 == 0) {
+            hi = d;
+        } else if (digits / 2 < cap) {
+            out[digits / 2] = (uint8_t)(hi << 4 | d);
+        }
+        digits++;
+    }
+    if (digits % 2 != 0) {
+        return mip_jr_fail(jr, "expected an even number of hex digits");
+    }
+    *n = digits / 2;
+    if (*n > cap) {
+        return mip_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
     }
     return 0;
 }
@@ -636,6 +729,78 @@ int mip_jr_s64(mip_jr_t *jr, size_t pos, int64_t *out) {
     return 0;
 }
 
+/* The double nearest to a JSON number of any length (docs/conformance.md §5: round to nearest,
+ * ties to even; +-HUGE_VAL when it overflows, 0 or a denormal when it underflows). The number
+ * is rewritten as at most NUMBER_DIGITS significant digits and an exponent for strtod: a 1 is
+ * appended when a dropped digit is not zero, which keeps the rounding exact (a double needs at
+ * most 767 significant digits to decide it), and the exponent is clamped where the result is
+ * 0 or infinite anyway. */
+#define NUMBER_DIGITS 800
+static double number_value(const char *s, size_t n) {
+    char text[NUMBER_DIGITS + 32];
+    size_t i = 0;
+    size_t k = 0;
+    long exp10 = 0;
+    long e = 0;
+    int sticky = 0;
+    int seen = 0;
+    if (i < n && s[i] == '-') {
+        text[k++] = '-';
+        i++;
+    }
+    {
+        size_t first = k;
+        int fraction = 0;
+        for (; i < n && (s[i] == '.' || (s[i] >= '0' && s[i] <= '9')); i++) {
+            char c = s[i];
+            if (c == '.') {
+                fraction = 1;
+                continue;
+            }
+            if (!seen && c == '0') {
+                exp10 -= fraction;
+                continue;
+            }
+            seen = 1;
+            if (k - first < NUMBER_DIGITS) {
+                text[k++] = c;
+                exp10 -= fraction;
+            } else {
+                exp10 += !fraction;
+                sticky |= c != '0';
+            }
+        }
+        if (sticky) {
+            text[k++] = '1';
+            exp10--;
+        }
+        if (k == first) {
+            text[k++] = '0';
+        }
+    }
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        int negative = 0;
+        i++;
+        if (i < n && (s[i] == '+' || s[i] == '-')) {
+            negative = s[i] == '-';
+            i++;
+        }
+        for (; i < n && s[i] >= '0' && s[i] <= '9'; i++) {
+            if (e < 100000000L) {
+                e = e * 10 + (s[i] - '0');
+            }
+        }
+        exp10 += negative ? -e : e;
+    }
+    if (exp10 > 100000L) {
+        exp10 = 100000L;
+    } else if (exp10 < -100000L) {
+        exp10 = -100000L;
+    }
+    snprintf(text + k, sizeof text - k, "e%ld", exp10);
+    return strtod(text, NULL);
+}
+
 /* A number, or "inf", "-inf", "nan", "nan:0x<hex_digits>"; *bits set for "nan:0x..". */
 static int number(mip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
                   const char *expected) {
@@ -685,18 +850,9 @@ static int number(mip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *ha
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
-    {
-        char text[512];
-        if (end - pos >= sizeof text) {
-            return mip_jr_fail(jr, "number too long");
-        }
-        memcpy(text, jr->s + pos, end - pos);
-        text[end - pos] = '\0';
-        errno = 0;
-        *out = strtod(text, NULL);
-        if (errno == ERANGE && (*out == HUGE_VAL || *out == -HUGE_VAL)) {
-            return mip_jr_fail(jr, "number out of range");
-        }
+    *out = number_value(jr->s + pos, end - pos);
+    if (*out == HUGE_VAL || *out == -HUGE_VAL) {
+        return mip_jr_fail(jr, "number out of range for a double");
     }
     return 0;
 }
@@ -733,12 +889,19 @@ int mip_jr_f32(mip_jr_t *jr, size_t pos, float *out) {
         memcpy(out, &b32, sizeof b32);
         return 0;
     }
-    if (d == HUGE_VAL || d == -HUGE_VAL) {
+    if (d == HUGE_VAL || d == -HUGE_VAL) { /* "inf", "-inf" */
         *out = d > 0 ? HUGE_VALF : -HUGE_VALF;
         return 0;
     }
-    if (d > FLT_MAX || d < -FLT_MAX) {
+    /* Rounded to nearest (ties to even), a double from half an ulp above FLT_MAX
+     * (0x1.ffffffp127) up is infinite as a float: out of range (§5). Below it, a double beyond
+     * FLT_MAX rounds to FLT_MAX (spelled out: C leaves that conversion undefined). */
+    if (d >= 0x1.ffffffp127 || d <= -0x1.ffffffp127) {
         return mip_jr_fail(jr, "number out of range for a float");
+    }
+    if (d > FLT_MAX || d < -FLT_MAX) {
+        *out = d > 0 ? FLT_MAX : -FLT_MAX;
+        return 0;
     }
     *out = (float)d;
     return 0;

@@ -1781,6 +1781,59 @@ TEST(Vectors, device_info_every_string_byte) {
                  "fc\\u00fd\\u00fe\\u00ff\"}}}]}\n");
 }
 
+TEST(Vectors, encode_input_float_rounding) {
+    check_vector("75650c11112401000000000000000000003f800000ec7f", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                 "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":1.0}}]}\n");
+}
+
+TEST(Vectors, encode_input_float_range) {
+    check_vector(
+        "75650c11112401000000000000000000007f7fffff2979", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
+        "\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":3.4028234663852886e+38}}]}\n");
+}
+
+TEST(Vectors, encode_input_double_range) {
+    check_vector("75650c1111240100000000000000000000000000002d03", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                 "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}\n");
+}
+
+TEST(Vectors, encode_input_negative_zero) {
+    check_vector(
+        "75650c1111240180000000000000000000800000002d03", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
+        "\"values\":{\"function\":1,\"tow\":-0.0,\"week_number\":0,\"accuracy\":-0.0}}]}\n");
+}
+
+TEST(Vectors, encode_input_denormals) {
+    check_vector("75650c1111240100000000000000010000000000012f0b", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                 "update\",\"values\":{\"function\":1,\"tow\":5e-324,\"week_number\":0,\"accuracy\":1."
+                 "401298464324817e-45}}]}\n");
+}
+
+TEST(Vectors, encode_input_nan_text) {
+    check_vector("75650c11112401fff000000000000100007fc000015d69", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                 "update\",\"values\":{\"function\":1,\"tow\":\"nan:0xfff0000000000001\",\"week_number\":0,"
+                 "\"accuracy\":\"nan:0x7fc00001\"}}]}\n");
+}
+
+TEST(Vectors, encode_input_packet_keys) {
+    check_vector("75650c0504c8abcd013087", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":200,\"data\":\"abcd\",\"error\":"
+                 "\"unknown descriptor\"},{\"trailing\":\"01\",\"error\":\"field header at payload offset 4 "
+                 "needs 2 bytes, 1 left\"}]}\n");
+}
+
+TEST(Vectors, encode_input_field_keys) {
+    check_vector(
+        "756501020201e0c6", MIP_DEVICE_ANY,
+        "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(
         "75650c07072e01010101042af4", MIP_DEVICE_ANY,

@@ -109,20 +109,23 @@ static const char *const k_field_keys[] = {"descriptor", "name", "device", "valu
 static int check_offset(mscip_jr_t *jr, size_t pos) {
     size_t vp;
     uint64_t offset;
-    int found = mscip_jr_get(jr, pos, "offset", &vp);
-    if (found == 1) {
-        mscip_jr_push(jr, "offset");
-        if (mscip_jr_uint(jr, vp, UINT64_MAX, &offset)) {
-            return -1;
-        }
-        mscip_jr_pop(jr);
+    if (mscip_jr_get(jr, pos, "offset", &vp) != 1) {
+        return mscip_jr_fail(jr, "missing \"offset\"");
     }
+    mscip_jr_push(jr, "offset");
+    if (mscip_jr_uint(jr, vp, UINT64_MAX, &offset)) {
+        return -1;
+    }
+    mscip_jr_pop(jr);
     return 0;
 }
 
 static int check_error_text(mscip_jr_t *jr, size_t pos) {
     size_t vp;
-    if (mscip_jr_get(jr, pos, "error", &vp) == 1 && !mscip_jr_is_string(jr, vp)) {
+    if (mscip_jr_get(jr, pos, "error", &vp) != 1) {
+        return mscip_jr_fail(jr, "missing \"error\"");
+    }
+    if (!mscip_jr_is_string(jr, vp)) {
         mscip_jr_push(jr, "error");
         return mscip_jr_fail(jr, "expected a string");
     }
@@ -143,15 +146,16 @@ static int decoded_field(mscip_jr_t *jr, size_t pos, uint8_t set, uint8_t descri
             jr, "descriptor %u in set %u is not defined (%s); write it as a raw field with \"data\"",
             (unsigned)descriptor, (unsigned)set, mscip_status_text(why));
     }
-    if (mscip_jr_get(jr, pos, "name", &vp) == 1) {
-        mscip_jr_push(jr, "name");
-        if (mscip_jr_chars(jr, vp, text, strlen(f->name)) || memcmp(text, f->name, strlen(f->name)) != 0) {
-            jr->failed = false;
-            return mscip_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set,
-                                 f->name);
-        }
-        mscip_jr_pop(jr);
+    if (mscip_jr_get(jr, pos, "name", &vp) != 1) {
+        return mscip_jr_fail(jr, "missing \"name\"");
     }
+    mscip_jr_push(jr, "name");
+    if (mscip_jr_chars(jr, vp, text, strlen(f->name)) || memcmp(text, f->name, strlen(f->name)) != 0) {
+        jr->failed = false;
+        return mscip_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set,
+                             f->name);
+    }
+    mscip_jr_pop(jr);
     id = f->first_layout;
     if (mscip_jr_get(jr, pos, "device", &vp) == 1) {
         mscip_jr_push(jr, "device");

@@ -223,6 +223,12 @@ TEST(Vectors, correlate_gps_time_command_end_of_week) {
                  "\"values\":{\"week\":2400,\"seconds\":604799}}]}\n");
 }
 
+TEST(Vectors, encode_input_irregular_size_byte) {
+    check_vector("a5a502030500025688", MSCIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":2,\"fields\":[{\"descriptor\":5,\"name\":\"select_sensors\","
+                 "\"values\":{\"function\":2}}]}\n");
+}
+
 TEST(Vectors, uart_baud_rate_write) {
     check_vector("a5a502070105010001c2001d84", MSCIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":2,\"fields\":[{\"descriptor\":1,\"name\":\"uart_baud_rate\","

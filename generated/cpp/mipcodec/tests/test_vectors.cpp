@@ -2539,6 +2539,83 @@ TEST(Vectors, device_info_every_string_byte) {
         });
 }
 
+// encode_input_float_rounding
+TEST(Vectors, encode_input_float_rounding) {
+    check_vector("75650c11112401000000000000000000003f800000ec7f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                     "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":1.0}}]}",
+                 });
+}
+
+// encode_input_float_range
+TEST(Vectors, encode_input_float_range) {
+    check_vector("75650c11112401000000000000000000007f7fffff2979", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                     "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":3."
+                     "4028234663852886e+38}}]}",
+                 });
+}
+
+// encode_input_double_range
+TEST(Vectors, encode_input_double_range) {
+    check_vector("75650c1111240100000000000000000000000000002d03", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                     "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}",
+                 });
+}
+
+// encode_input_negative_zero
+TEST(Vectors, encode_input_negative_zero) {
+    check_vector(
+        "75650c1111240180000000000000000000800000002d03", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
+            "\"values\":{\"function\":1,\"tow\":-0.0,\"week_number\":0,\"accuracy\":-0.0}}]}",
+        });
+}
+
+// encode_input_denormals
+TEST(Vectors, encode_input_denormals) {
+    check_vector("75650c1111240100000000000000010000000000012f0b", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                     "update\",\"values\":{\"function\":1,\"tow\":5e-324,\"week_number\":0,\"accuracy\":1."
+                     "401298464324817e-45}}]}",
+                 });
+}
+
+// encode_input_nan_text
+TEST(Vectors, encode_input_nan_text) {
+    check_vector("75650c11112401fff000000000000100007fc000015d69", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                     "update\",\"values\":{\"function\":1,\"tow\":\"nan:0xfff0000000000001\",\"week_number\":"
+                     "0,\"accuracy\":\"nan:0x7fc00001\"}}]}",
+                 });
+}
+
+// encode_input_packet_keys
+TEST(Vectors, encode_input_packet_keys) {
+    check_vector("75650c0504c8abcd013087", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":200,\"data\":\"abcd\",\"error\":"
+                     "\"unknown descriptor\"},{\"trailing\":\"01\",\"error\":\"field header at payload "
+                     "offset 4 needs 2 bytes, 1 left\"}]}",
+                 });
+}
+
+// encode_input_field_keys
+TEST(Vectors, encode_input_field_keys) {
+    check_vector(
+        "756501020201e0c6", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        });
+}
+
 // event_trigger_gpio_edge
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(

@@ -289,6 +289,15 @@ TEST(Vectors, correlate_gps_time_command_end_of_week) {
                  });
 }
 
+// encode_input_irregular_size_byte
+TEST(Vectors, encode_input_irregular_size_byte) {
+    check_vector("a5a502030500025688", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":2,\"fields\":[{\"descriptor\":5,\"name\":\"select_sensors\","
+                     "\"values\":{\"function\":2}}]}",
+                 });
+}
+
 // uart_baud_rate_write
 TEST(Vectors, uart_baud_rate_write) {
     check_vector("a5a502070105010001c2001d84", nullptr, false,

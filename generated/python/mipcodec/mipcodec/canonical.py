@@ -113,19 +113,37 @@ def error_text(message: str) -> str:
     return string_text(message.encode("latin-1", "replace"))
 
 
-_NAN_TEXT = {32: re.compile(r"nan:0x([0-9a-f]{8})"), 64: re.compile(r"nan:0x([0-9a-f]{16})")}
+_NAN_TEXT = {32: re.compile(r"nan:0x([0-9a-fA-F]{8})"), 64: re.compile(r"nan:0x([0-9a-fA-F]{16})")}
+
+
+class _NegativeZero(int):
+    """The JSON number `-0`: the integer 0, and -0.0 where a float is expected (section 5)."""
+
+
+NEGATIVE_ZERO = _NegativeZero(0)
+
+
+def is_int(x: Any) -> bool:
+    """True for a JSON integer as read by `loads` (not a bool, not a float)."""
+    return type(x) is int or type(x) is _NegativeZero
 
 
 def float_from_json(x: Any, width: int) -> float:
-    """A float/double value from its canonical JSON form (raises ValueError)."""
+    """A float/double value from its JSON form (raises ValueError): a number is rounded to the
+    nearest double, which must be finite (the float range is checked when packing); "inf",
+    "-inf", "nan" and "nan:0x<bits>" (hex digits in either case)."""
+    if type(x) is _NegativeZero:
+        return -0.0
     if isinstance(x, bool):
         raise ValueError(f"{x!r} is not a number")
     if isinstance(x, int):
         try:
             return float(x)
         except OverflowError:
-            raise ValueError(f"{x} is out of range") from None
+            raise ValueError(f"{x} is out of range for a double") from None
     if isinstance(x, float):
+        if x in (_INF, -_INF):  # only a number too large for a double reads as infinite
+            raise ValueError("the number is out of range for a double")
         return x
     if isinstance(x, str):
         if x == "inf":
@@ -162,10 +180,14 @@ def _no_duplicates(pairs: List[Tuple[str, Any]]) -> Dict[str, Any]:
     return out
 
 
+def _parse_int(text: str) -> int:
+    return NEGATIVE_ZERO if text == "-0" else int(text)
+
+
 def loads(text: str) -> Any:
     """Parse one JSON document strictly (no NaN/Infinity literals, no duplicate keys)."""
     try:
-        return json.loads(text, parse_constant=_no_constants, object_pairs_hook=_no_duplicates)
+        return json.loads(text, parse_constant=_no_constants, object_pairs_hook=_no_duplicates, parse_int=_parse_int)
     except JsonError:
         raise
     except (ValueError, RecursionError) as e:

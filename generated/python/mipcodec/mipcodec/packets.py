@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Any, Iterable, List, Optional, Union
 
 from . import registry
-from .canonical import JsonError, error_text, hex_bytes, loads, skip_line
+from .canonical import JsonError, error_text, hex_bytes, is_int, loads, skip_line
 from .codec import DecodeError, EncodeError, Field
 from .framing import (
     CHECKSUM_SIZE,
@@ -192,9 +192,20 @@ def _keys(obj: dict, required: Iterable[str], optional: Iterable[str], what: str
 
 def _byte(obj: dict, key: str, what: str) -> int:
     v = obj[key]
-    if type(v) is not int or not 0 <= v <= 0xFF:
+    if not is_int(v) or not 0 <= v <= 0xFF:
         raise EncodeError(f"{what}: {key} must be an integer 0..255")
-    return v
+    return int(v)
+
+
+def _offset(obj: dict, what: str) -> None:
+    v = obj["offset"]
+    if not is_int(v) or not 0 <= v <= 0xFFFFFFFFFFFFFFFF:
+        raise EncodeError(f"{what}: offset must be an integer 0..18446744073709551615")
+
+
+def _error_text(entry: dict, what: str) -> None:
+    if not isinstance(entry["error"], str):
+        raise EncodeError(f"{what}: error must be a string")
 
 
 def _field_bytes(set_id: int, entry: Any, what: str) -> tuple:
@@ -203,11 +214,11 @@ def _field_bytes(set_id: int, entry: Any, what: str) -> tuple:
         raise EncodeError(f"{what}: expected an object")
     if "trailing" in entry:
         _keys(entry, ("trailing", "error"), (), what)
+        _error_text(entry, what)
         return None, hex_bytes(entry["trailing"], f"{what}: trailing")
     if "data" in entry:
         _keys(entry, ("descriptor", "data", "error"), (), what)
-        if not isinstance(entry["error"], str):
-            raise EncodeError(f"{what}: error must be a string")
+        _error_text(entry, what)
         return _byte(entry, "descriptor", what), hex_bytes(entry["data"], f"{what}: data")
     _keys(entry, ("descriptor", "name", "values"), ("device",), what)
     descriptor = _byte(entry, "descriptor", what)
@@ -241,12 +252,10 @@ def encode_value(obj: Any) -> bytes:
         raise EncodeError("expected a JSON object")
     if "skipped" in obj:
         _keys(obj, ("offset", "skipped"), (), "skip run")
-        if type(obj["offset"]) is not int or obj["offset"] < 0:
-            raise EncodeError("skip run: offset must be a non-negative integer")
+        _offset(obj, "skip run")
         return hex_bytes(obj["skipped"], "skip run: skipped")
     _keys(obj, ("offset", "set", "fields"), (), "packet")
-    if type(obj["offset"]) is not int or obj["offset"] < 0:
-        raise EncodeError("packet: offset must be a non-negative integer")
+    _offset(obj, "packet")
     set_id = _byte(obj, "set", "packet")
     if not isinstance(obj["fields"], list):
         raise EncodeError("packet: fields must be an array")

@@ -2506,6 +2506,84 @@ CASES = [
         ],
     },
     {
+        "name": "encode_input_float_rounding",
+        "hex": "75650c11112401000000000000000000003f800000ec7f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:10",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":0.0,"week_number":0,"accuracy":1.0}}]}'
+        ],
+    },
+    {
+        "name": "encode_input_float_range",
+        "hex": "75650c11112401000000000000000000007f7fffff2979",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:45",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":0.0,"week_number":0,"accuracy":3.4028234663852886e+38}}]}'
+        ],
+    },
+    {
+        "name": "encode_input_double_range",
+        "hex": "75650c1111240100000000000000000000000000002d03",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:73",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":0.0,"week_number":0,"accuracy":0.0}}]}'
+        ],
+    },
+    {
+        "name": "encode_input_negative_zero",
+        "hex": "75650c1111240180000000000000000000800000002d03",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:100",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":-0.0,"week_number":0,"accuracy":-0.0}}]}'
+        ],
+    },
+    {
+        "name": "encode_input_denormals",
+        "hex": "75650c1111240100000000000000010000000000012f0b",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:120",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":5e-324,"week_number":0,"accuracy":1.401298464324817e-45}}]}'
+        ],
+    },
+    {
+        "name": "encode_input_nan_text",
+        "hex": "75650c11112401fff000000000000100007fc000015d69",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:138",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":"nan:0xfff0000000000001","week_number":0,"accuracy":"nan:0x7fc00001"}}]}'
+        ],
+    },
+    {
+        "name": "encode_input_packet_keys",
+        "hex": "75650c0504c8abcd013087",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:165",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":200,"data":"abcd","error":"unknown descriptor"},{"trailing":"01","error":"field header at payload offset 4 needs 2 bytes, 1 left"}]}'
+        ],
+    },
+    {
+        "name": "encode_input_field_keys",
+        "hex": "756501020201e0c6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/encode_input.yaml:203",
+        "expect": ['{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}'],
+    },
+    {
         "name": "event_trigger_gpio_edge",
         "hex": "75650c07072e01010101042af4",
         "device": None,

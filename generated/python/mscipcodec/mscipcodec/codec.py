@@ -27,6 +27,7 @@ from .canonical import (
     f64_bits,
     f64_text,
     float_from_json,
+    is_int,
     string_text,
 )
 
@@ -92,9 +93,9 @@ def _int_json(v: Any) -> str:
 
 
 def _int_from_json(x: Any) -> int:
-    if type(x) is not int:
+    if not is_int(x):
         raise _Bad(f"{_show(x)} is not an integer")
-    return x
+    return int(x)
 
 
 def _int_checker(type_name: str, lo: int, hi: int) -> Callable[[Any], None]:

@@ -274,6 +274,14 @@ CASES = [
         ],
     },
     {
+        "name": "encode_input_irregular_size_byte",
+        "hex": "a5a502030500025688",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mscip/encode_input.yaml:5",
+        "expect": ['{"offset":0,"set":2,"fields":[{"descriptor":5,"name":"select_sensors","values":{"function":2}}]}'],
+    },
+    {
         "name": "uart_baud_rate_write",
         "hex": "a5a502070105010001c2001d84",
         "device": None,

@@ -266,23 +266,23 @@ impl JsonParser<'_> {
                         b't' => out.push('\t'),
                         b'u' => {
                             let hi = self.hex4()?;
-                            let code = if (0xD800..0xDC00).contains(&hi) {
-                                if self.s.get(self.pos..self.pos + 2) != Some(b"\\u") {
-                                    return Err(self.err("lone surrogate in \\u escape"));
-                                }
+                            let mut code = hi;
+                            if (0xD800..0xDC00).contains(&hi)
+                                && self.s.get(self.pos..self.pos + 2) == Some(b"\\u")
+                            {
+                                let save = self.pos;
                                 self.pos += 2;
                                 let lo = self.hex4()?;
-                                if !(0xDC00..0xE000).contains(&lo) {
-                                    return Err(self.err("lone surrogate in \\u escape"));
+                                if (0xDC00..0xE000).contains(&lo) {
+                                    code = 0x10000 + ((hi - 0xD800) << 10) + (lo - 0xDC00);
+                                } else {
+                                    self.pos = save;
                                 }
-                                0x10000 + ((hi - 0xD800) << 10) + (lo - 0xDC00)
-                            } else {
-                                hi
-                            };
-                            out.push(
-                                char::from_u32(code)
-                                    .ok_or_else(|| self.err("lone surrogate in \\u escape"))?,
-                            );
+                            }
+                            // A lone surrogate (valid JSON, not a character) reads as U+FFFD:
+                            // never a byte of a string parameter, and nothing in the texts the
+                            // encoder does not use (docs/conformance.md §5).
+                            out.push(char::from_u32(code).unwrap_or('\u{FFFD}'));
                         }
                         _ => return Err(self.err("bad escape")),
                     }
@@ -403,12 +403,24 @@ fn float_special(v: &Json, hex_digits: usize) -> Result<Option<u64>, JsonError> 
     u64::from_str_radix(hex, 16).map(Some).map_err(|_| bad())
 }
 
+/// The double nearest to a JSON number (ties to even); an infinite result is an error, one that
+/// underflows is 0 or a denormal (docs/conformance.md §5).
+fn finite_double(t: &str) -> Result<f64, JsonError> {
+    let x: f64 = t
+        .parse()
+        .map_err(|_| JsonError::new(format!("bad number {t}")))?;
+    if x.is_infinite() {
+        return Err(JsonError::new(format!(
+            "number {t} is out of range for a double"
+        )));
+    }
+    Ok(x)
+}
+
 impl FromJson for f64 {
     fn from_json(v: &Json) -> Result<Self, JsonError> {
         match v {
-            Json::Number(t) => t
-                .parse()
-                .map_err(|_| JsonError::new(format!("bad number {t}"))),
+            Json::Number(t) => finite_double(t),
             Json::String(s) if s == "inf" => Ok(f64::INFINITY),
             Json::String(s) if s == "-inf" => Ok(f64::NEG_INFINITY),
             Json::String(s) if s == "nan" => Ok(f64::from_bits(crate::json::F64_QUIET_NAN)),
@@ -431,9 +443,17 @@ impl FromJson for f64 {
 impl FromJson for f32 {
     fn from_json(v: &Json) -> Result<Self, JsonError> {
         match v {
-            Json::Number(t) => t
-                .parse()
-                .map_err(|_| JsonError::new(format!("bad number {t}"))),
+            // The nearest double, then the nearest float (not the decimal straight to a float:
+            // the rule is the double's rounding, as in C, C++ and Python).
+            Json::Number(t) => {
+                let x = finite_double(t)? as f32;
+                if x.is_infinite() {
+                    return Err(JsonError::new(format!(
+                        "number {t} is out of range for a float"
+                    )));
+                }
+                Ok(x)
+            }
             Json::String(s) if s == "inf" => Ok(f32::INFINITY),
             Json::String(s) if s == "-inf" => Ok(f32::NEG_INFINITY),
             Json::String(s) if s == "nan" => Ok(f32::from_bits(crate::json::F32_QUIET_NAN)),

@@ -108,9 +108,21 @@ pub fn decode_bytes(input: &[u8], device: Option<Device>, chunk: usize) -> Strin
     out
 }
 
+/// "error" of a raw field or trailing entry: a string, its text not used (docs/conformance.md §5).
+fn error_text(v: &Json) -> Result<(), JsonError> {
+    match v {
+        Json::String(_) => Ok(()),
+        other => Err(JsonError::new(format!(
+            "expected a string, got {}",
+            other.kind()
+        ))),
+    }
+}
+
 fn field_bytes(set: u8, field: &Json, builder: &mut PacketBuilder) -> Result<(), JsonError> {
     if field.get("trailing").is_some() {
         let o = Obj::new(field, &["trailing", "error"])?;
+        o.req("error", error_text)?;
         let bytes = o.req("trailing", hex_bytes)?;
         return builder
             .add_bytes(&bytes)
@@ -118,6 +130,7 @@ fn field_bytes(set: u8, field: &Json, builder: &mut PacketBuilder) -> Result<(),
     }
     if field.get("data").is_some() {
         let o = Obj::new(field, &["descriptor", "data", "error"])?;
+        o.req("error", error_text)?;
         let descriptor = o.req("descriptor", u8::from_json)?;
         let data = o.req("data", hex_bytes)?;
         return builder
@@ -139,14 +152,15 @@ fn field_bytes(set: u8, field: &Json, builder: &mut PacketBuilder) -> Result<(),
         .get("values")
         .ok_or_else(|| JsonError::new("missing \"values\" (or \"data\" for a raw field)"))?;
     let value = FieldValue::from_json(set, descriptor, device, values)?;
-    if let Some(name) = field.get("name") {
-        if *name != Json::String(value.name().to_string()) {
-            return Err(JsonError::new(format!(
-                "descriptor {descriptor} in set {set} is \"{}\"",
-                value.name()
-            ))
-            .at("name"));
-        }
+    let name = field
+        .get("name")
+        .ok_or_else(|| JsonError::new("missing \"name\""))?;
+    if *name != Json::String(value.name().to_string()) {
+        return Err(JsonError::new(format!(
+            "descriptor {descriptor} in set {set} is \"{}\"",
+            value.name()
+        ))
+        .at("name"));
     }
     builder
         .add_field_with(descriptor, |w| value.encode_data(w))
@@ -165,7 +179,7 @@ pub fn encode_line(line: &str) -> Result<Vec<u8>, JsonError> {
     }
     if v.get("skipped").is_some() {
         let o = Obj::new(&v, &["offset", "skipped"])?;
-        o.opt("offset", u64::from_json)?;
+        o.req("offset", u64::from_json)?;
         return o.req("skipped", hex_bytes);
     }
     if v.get("fields").is_none() {
@@ -174,7 +188,7 @@ pub fn encode_line(line: &str) -> Result<Vec<u8>, JsonError> {
         ));
     }
     let o = Obj::new(&v, &["offset", "set", "fields"])?;
-    o.opt("offset", u64::from_json)?;
+    o.req("offset", u64::from_json)?;
     let set = o.req("set", u8::from_json)?;
     let fields = o.req("fields", |f| match f {
         Json::Array(items) => Ok(items),

@@ -3342,6 +3342,110 @@ fn case_device_info_every_string_byte() {
     );
 }
 
+/// `encode_input_float_rounding` (tests/vectors/mip/encode_input.yaml:10)
+#[test]
+fn case_encode_input_float_rounding() {
+    check(
+        "75650c11112401000000000000000000003f800000ec7f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":1.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_float_range` (tests/vectors/mip/encode_input.yaml:45)
+#[test]
+fn case_encode_input_float_range() {
+    check(
+        "75650c11112401000000000000000000007f7fffff2979",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":3.4028234663852886e+38}}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_double_range` (tests/vectors/mip/encode_input.yaml:73)
+#[test]
+fn case_encode_input_double_range() {
+    check(
+        "75650c1111240100000000000000000000000000002d03",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_negative_zero` (tests/vectors/mip/encode_input.yaml:100)
+#[test]
+fn case_encode_input_negative_zero() {
+    check(
+        "75650c1111240180000000000000000000800000002d03",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":-0.0,\"week_number\":0,\"accuracy\":-0.0}}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_denormals` (tests/vectors/mip/encode_input.yaml:120)
+#[test]
+fn case_encode_input_denormals() {
+    check(
+        "75650c1111240100000000000000010000000000012f0b",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":5e-324,\"week_number\":0,\"accuracy\":1.401298464324817e-45}}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_nan_text` (tests/vectors/mip/encode_input.yaml:138)
+#[test]
+fn case_encode_input_nan_text() {
+    check(
+        "75650c11112401fff000000000000100007fc000015d69",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":1,\"tow\":\"nan:0xfff0000000000001\",\"week_number\":0,\"accuracy\":\"nan:0x7fc00001\"}}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_packet_keys` (tests/vectors/mip/encode_input.yaml:165)
+#[test]
+fn case_encode_input_packet_keys() {
+    check(
+        "75650c0504c8abcd013087",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":200,\"data\":\"abcd\",\"error\":\"unknown descriptor\"},{\"trailing\":\"01\",\"error\":\"field header at payload offset 4 needs 2 bytes, 1 left\"}]}",
+        ],
+        false,
+    );
+}
+
+/// `encode_input_field_keys` (tests/vectors/mip/encode_input.yaml:203)
+#[test]
+fn case_encode_input_field_keys() {
+    check(
+        "756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
 /// `event_trigger_gpio_edge` (tests/vectors/mip/events.yaml:6)
 #[test]
 fn case_event_trigger_gpio_edge() {

@@ -411,6 +411,19 @@ fn case_correlate_gps_time_command_end_of_week() {
     );
 }
 
+/// `encode_input_irregular_size_byte` (tests/vectors/mscip/encode_input.yaml:5)
+#[test]
+fn case_encode_input_irregular_size_byte() {
+    check(
+        "a5a502030500025688",
+        None,
+        &[
+            "{\"offset\":0,\"set\":2,\"fields\":[{\"descriptor\":5,\"name\":\"select_sensors\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
 /// `uart_baud_rate_write` (tests/vectors/mscip/imu_config.yaml:12)
 #[test]
 fn case_uart_baud_rate_write() {

@@ -168,6 +168,33 @@ inline bool byte_value(const json::Value &x, std::uint8_t &out) {
     return Json<std::uint8_t>::read(x, out, ignored);
 }
 
+/// "offset" of a packet or skip run: required, an integer 0..2^64-1 (its value is not used).
+inline bool offset_ok(const json::Value &v, std::string &error) {
+    const json::Value *o = v.find("offset");
+    bool negative = false;
+    std::uint64_t magnitude = 0;
+    if (o == nullptr) {
+        error = "missing \"offset\"";
+        return false;
+    }
+    if (!json_integer(*o, negative, magnitude) || (negative && magnitude != 0)) {
+        error = "offset: expected an integer in 0..18446744073709551615";
+        return false;
+    }
+    return true;
+}
+
+/// "error" of a raw field or trailing entry: required, a string (its text is not used).
+inline bool error_text_ok(const json::Value &f, JsonError &err) {
+    const json::Value *e = f.find("error");
+    if (e == nullptr || e->type != json::Value::Type::string) {
+        err.path = "error";
+        err.message = e == nullptr ? "missing" : "expected a string";
+        return false;
+    }
+    return true;
+}
+
 struct EncodeLayouts {
     const json::Value &values;
     const std::string &name;
@@ -243,7 +270,7 @@ inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err)
     }
     std::vector<std::uint8_t> bytes;
     if (const json::Value *t = f.find("trailing")) {
-        if (!json_check_object(f, {"trailing", "error"}, err)) {
+        if (!json_check_object(f, {"trailing", "error"}, err) || !error_text_ok(f, err)) {
             return false;
         }
         if (!hex_bytes(*t, bytes)) {
@@ -260,7 +287,7 @@ inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err)
         return fail(err, "descriptor", "expected an integer in 0..255");
     }
     if (const json::Value *data = f.find("data")) {
-        if (!json_check_object(f, {"descriptor", "data", "error"}, err)) {
+        if (!json_check_object(f, {"descriptor", "data", "error"}, err) || !error_text_ok(f, err)) {
             return false;
         }
         if (!hex_bytes(*data, bytes)) {
@@ -322,6 +349,9 @@ inline bool encode_json_line(const std::string &line, std::vector<std::uint8_t> 
             error = err.text();
             return false;
         }
+        if (!detail::offset_ok(v, error)) {
+            return false;
+        }
         if (!detail::hex_bytes(*s, bytes)) {
             error = "skipped: expected a string of hex digit pairs";
             return false;
@@ -338,6 +368,9 @@ inline bool encode_json_line(const std::string &line, std::vector<std::uint8_t> 
     JsonError keys;
     if (!json_check_object(v, {"offset", "set", "fields"}, keys)) {
         error = keys.text();
+        return false;
+    }
+    if (!detail::offset_ok(v, error)) {
         return false;
     }
     std::uint8_t set_id = 0;

@@ -94,6 +94,49 @@ inline bool parse_hex_bits(const std::string &s, std::size_t digits, std::uint64
     return true;
 }
 
+/// For a JSON number that from_chars found out of range: true when it is too large (its first
+/// significant digit stands for 10^k with k >= 0), false when it is too small (rounds to zero).
+inline bool json_number_is_large(const std::string &t) {
+    std::size_t i = !t.empty() && t[0] == '-' ? 1 : 0;
+    std::size_t int_digits = 0;
+    while (i + int_digits < t.size() && t[i + int_digits] >= '0' && t[i + int_digits] <= '9') {
+        ++int_digits;
+    }
+    long long first = 0; // power of ten of the first significant digit
+    bool found = false;
+    for (std::size_t j = 0; j < int_digits && !found; ++j) {
+        if (t[i + j] != '0') {
+            found = true;
+            first = static_cast<long long>(int_digits - 1 - j);
+        }
+    }
+    i += int_digits;
+    if (i < t.size() && t[i] == '.') {
+        ++i;
+        for (long long place = -1; i < t.size() && t[i] >= '0' && t[i] <= '9'; ++i, --place) {
+            if (!found && t[i] != '0') {
+                found = true;
+                first = place;
+            }
+        }
+    }
+    long long e = 0;
+    bool negative = false;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+        ++i;
+        if (i < t.size() && (t[i] == '+' || t[i] == '-')) {
+            negative = t[i] == '-';
+            ++i;
+        }
+        for (; i < t.size() && t[i] >= '0' && t[i] <= '9'; ++i) {
+            if (e < 100000000LL) {
+                e = e * 10 + (t[i] - '0');
+            }
+        }
+    }
+    return found && first + (negative ? -e : e) >= 0;
+}
+
 /// A float/double from a number or "inf", "-inf", "nan", "nan:0x<bits>"; Bits is uint32_t or uint64_t.
 template <class F, class Bits> bool json_float(const json::Value &x, F &v, JsonError &err) {
     constexpr std::size_t digits = sizeof(Bits) * 2;
@@ -130,14 +173,26 @@ template <class F, class Bits> bool json_float(const json::Value &x, F &v, JsonE
     if (x.type != json::Value::Type::number) {
         return err.fail(expected);
     }
+    // docs/conformance.md §5: the nearest double (ties to even), then for a float the nearest
+    // float; a result that is infinite is an error, one that underflows is 0 or a denormal.
     double d = 0;
-    const auto res = std::from_chars(x.text.data(), x.text.data() + x.text.size(), d);
-    if (res.ec != std::errc() || res.ptr != x.text.data() + x.text.size() || !std::isfinite(d)) {
-        return err.fail("number " + x.text + " is out of range");
+    const char *end = x.text.data() + x.text.size();
+    const auto res = std::from_chars(x.text.data(), end, d);
+    if (res.ec == std::errc::result_out_of_range && res.ptr == end && !json_number_is_large(x.text)) {
+        d = x.text[0] == '-' ? -0.0 : 0.0; // underflow: rounds to zero
+    } else if (res.ec != std::errc() || res.ptr != end || !std::isfinite(d)) {
+        return err.fail("number " + x.text + " is out of range for a double");
     }
     if constexpr (sizeof(F) == 4) {
-        if (std::fabs(d) > static_cast<double>(std::numeric_limits<float>::max())) {
+        // From half an ulp above FLT_MAX (0x1.ffffffp127) up, a double rounds to infinity as a
+        // float; below it, a double beyond FLT_MAX rounds to FLT_MAX (spelled out: the cast is
+        // undefined outside the float range).
+        const double fmax = static_cast<double>(std::numeric_limits<float>::max());
+        if (std::fabs(d) >= 0x1.ffffffp127) {
             return err.fail("number " + x.text + " is out of range for a float");
+        }
+        if (std::fabs(d) > fmax) {
+            d = d > 0 ? fmax : -fmax;
         }
     }
     v = static_cast<F>(d);

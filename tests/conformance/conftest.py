@@ -1,0 +1,31 @@
+"""pytest hooks of the cross-language suite: print the seed of the differential test.
+
+The seed is DIFF_SEED when set, otherwise fresh for every session (differential.SEED); it is
+printed in the report header, again at the end of the run (also under -q, where the header is
+not shown), and in every failure message, with the command that replays it.
+"""
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from differential import SEED, replay_command  # noqa: E402
+
+_RAN = []
+
+
+def _line() -> str:
+    return f"differential seed: {SEED} (replay: {replay_command(SEED)})"
+
+
+def pytest_report_header(config):
+    return _line()
+
+
+def pytest_collection_modifyitems(session, config, items):
+    _RAN.extend(i for i in items if i.nodeid.split("::")[0].endswith("test_differential.py"))
+
+
+def pytest_terminal_summary(terminalreporter, exitstatus, config):
+    if _RAN:
+        terminalreporter.write_line(_line())
