@@ -27,7 +27,7 @@ from pathlib import Path
 import pytest
 
 from generator.spec import load_spec
-from generator.vectors import load_vectors
+from generator.vectors import load_corpus
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from differential import SEED, WORK, build_round, check_group, replay_command  # noqa: E402
@@ -41,10 +41,10 @@ REPLAY = f"seed {SEED}; replay: {replay_command(SEED)}"
 
 
 def test_reference_decoder_prints_every_golden_vector():
-    """The oracle of the mutation pass gives the hand-derived text of every golden vector."""
+    """The oracle of the mutation pass gives the hand-derived text of every golden vector and stream case."""
     refs = {name: Reference(p) for name, p in PROTOCOLS.items()}
     bad = []
-    vectors = load_vectors(IR, ROOT / "tests" / "vectors")
+    vectors = load_corpus(IR, ROOT)
     for c in vectors:
         got = refs[c["protocol"]].decode_stream(bytes.fromhex(c["hex"]), c["device"])
         if got != c["expect"]:

@@ -19,12 +19,12 @@ import pytest
 
 from generator.examples import BLOCK_SIZE, END, PARTS, ExampleError, example_command
 from generator.spec import load_spec
-from generator.vectors import load_vectors
+from generator.vectors import load_corpus
 
 ROOT = Path(__file__).resolve().parents[2]
 LANGS = ["c", "cpp", "python", "rust"]
 IR = load_spec()
-VECTORS = load_vectors(IR, ROOT / "tests" / "vectors")
+VECTORS = load_corpus(IR, ROOT)
 PROTOCOLS = {p["name"]: p for p in IR["protocols"]}
 # Where each back end renders the example, and how its marker comments start.
 SOURCES = {

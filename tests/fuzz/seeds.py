@@ -1,4 +1,4 @@
-"""Seed corpora for the fuzz targets, from the golden vectors (generator.vectors.load_vectors).
+"""Seed corpora for the fuzz targets, from the golden vectors and the stream corpus (generator.vectors.load_corpus).
 
     python tests/fuzz/seeds.py [--out build/fuzz/corpus]
 
@@ -27,7 +27,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from generator.vectors import load_vectors  # noqa: E402
+from generator.vectors import load_corpus  # noqa: E402
 
 
 def control_byte(name: str, device_index: int) -> int:
@@ -75,7 +75,7 @@ def write(out: Path) -> dict[tuple[str, str], int]:
         (dirs[(package, target)] / name).write_bytes(data)
         counts[(package, target)] += 1
 
-    for case in load_vectors(ir, ROOT / "tests" / "vectors"):
+    for case in load_corpus(ir, ROOT):
         proto = protocols[case["protocol"]]
         package = proto["package"]
         devices = [d["id"] for d in proto["devices"]]
