@@ -1160,7 +1160,8 @@ def main(argv: list[str] | None = None) -> int:
             failed_seeds.append(seed)
     print(
         f"differential: {args.rounds} rounds, {total['samples']} field samples in {total['packets']} packets,"
-        f" {total['mutants']} mutants, {time.time() - t0:.0f} s; failing seeds: {failed_seeds or 'none'}"
+        f" {total['mutants']} mutants ({total['mutant_lines']} decoded lines), {total['respelled']} lines"
+        f" respelled, {time.time() - t0:.0f} s; failing seeds: {failed_seeds or 'none'}"
     )
     return 1 if failed_seeds else 0
 

@@ -279,7 +279,9 @@ def invalidate(line: str, rng: random.Random) -> tuple[str, str]:
         elif kind == "num":
             new, what = ("num", rng.choice(["1e999", "-1e999", "1.8e308"])), "float overflow"
         elif kind == "str" and (v.startswith("nan") or v in ("inf", "-inf")):
-            new, what = ("str", rng.choice(["NaN", "nan:0x", "Infinity", v + "0"])), "float text"
+            # (none of these is a string of the same length, should v be a string parameter)
+            options = ["nan:0x", "Infinity", v + "0"] + (["NaN"] if len(v) != 3 else [])
+            new, what = ("str", rng.choice(options)), "float text"
         elif kind == "str":
             new, what = ("str", v + rng.choice(["a", "\u00ff", "\u0100"])), "string length"
         elif v in ("true", "false"):
