@@ -29,7 +29,6 @@ from __future__ import annotations
 import argparse
 import json
 import random
-import struct
 import sys
 from pathlib import Path
 
