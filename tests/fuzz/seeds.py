@@ -11,6 +11,7 @@ writes one file per vector into <out>/<package>/<target>/:
                    the harness wraps these into a packet with a valid checksum, so mutations of
                    real field data reach the decoders without the fuzzer repairing checksums.
   json/<vector>:   the vector's expected canonical JSON lines, one per line.
+  decode/...:      the parser seeds (the lean `decode` target reads the same input format).
 Stream cases under tests/streams/<protocol>/ (*.bin), when that directory exists, are added to the
 parser corpus the same way. Existing seed directories are replaced.
 """
@@ -63,7 +64,7 @@ def write(out: Path) -> dict[tuple[str, str], int]:
     counts: dict[tuple[str, str], int] = {}
     dirs: dict[tuple[str, str], Path] = {}
     for p in protocols.values():
-        for target in ("parser", "json"):
+        for target in ("parser", "decode", "json"):
             d = out / p["package"] / target
             if d.exists():
                 shutil.rmtree(d)
@@ -72,8 +73,9 @@ def write(out: Path) -> dict[tuple[str, str], int]:
             counts[(p["package"], target)] = 0
 
     def add(package: str, target: str, name: str, data: bytes) -> None:
-        (dirs[(package, target)] / name).write_bytes(data)
-        counts[(package, target)] += 1
+        for t in ("parser", "decode") if target == "parser" else (target,):
+            (dirs[(package, t)] / name).write_bytes(data)
+            counts[(package, t)] += 1
 
     for case in load_corpus(ir, ROOT):
         proto = protocols[case["protocol"]]

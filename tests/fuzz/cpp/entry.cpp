@@ -1,4 +1,4 @@
-// The libFuzzer entry point of one C++ target: FZ_ENTRY is fz_cpp_parser or fz_cpp_json
+// The libFuzzer entry point of one C++ target: FZ_ENTRY is fz_cpp_parser, fz_cpp_decode or fz_cpp_json
 // (defined in fuzz_targets.cpp).
 #include <cstddef>
 #include <cstdint>

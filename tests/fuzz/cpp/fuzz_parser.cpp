@@ -223,3 +223,63 @@ extern "C" int fz_cpp_parser(const std::uint8_t *data, std::size_t size) {
     }
     return 0;
 }
+
+// Target `decode` (C++): the lean companion of `parser` (see tests/fuzz/c/fuzz_decode.c): one
+// whole parse with the event checks, every field decoded with the control byte's device and
+// re-encoded, and the stream wrapped into a packet; no chunking, JSON lines or other devices.
+namespace fz_parser {
+
+void decode_fields(const std::uint8_t *bytes, std::size_t len, const std::optional<pkg::Device> &device) {
+    const pkg::PacketView packet{bytes, len};
+    const std::size_t plen = packet.payload_size();
+    FZ_CHECK(len == pkg::kHeaderSize + plen + pkg::kChecksumSize, "packet length %zu for payload %zu", len, plen);
+    const std::uint8_t set = packet.set();
+    pkg::FieldIterator it(packet);
+    pkg::FieldEntry e;
+    std::size_t pos = 0;
+    while (it.next(e)) {
+        FZ_CHECK(e.payload_offset == pos, "entry at %zu, expected %zu", e.payload_offset, pos);
+        if (e.kind == pkg::FieldEntry::Kind::field) {
+            pos += pkg::kFieldHeaderSize + e.size;
+            FZ_CHECK(pos <= plen, "field runs past the payload");
+            FieldCheck check{set, e.descriptor, e.data, e.size};
+            pkg::decode_field(set, e.descriptor, e.data, e.size, device, check);
+        } else {
+            FZ_CHECK(e.size == plen - pos && e.size > 0, "trailing entry does not hold the rest");
+            pos = plen;
+        }
+    }
+    FZ_CHECK(pos == plen, "the entries cover %zu of %zu payload bytes", pos, plen);
+}
+
+} // namespace fz_parser
+
+extern "C" int fz_cpp_decode(const std::uint8_t *data, std::size_t size) {
+    using namespace fz_parser;
+    if (size == 0) {
+        return 0;
+    }
+    const std::uint8_t *stream = data + 1;
+    const std::size_t n = size - 1;
+    static const std::vector<pkg::Device> all = fz::devices();
+    const unsigned dev = data[0] >> 6;
+    const std::optional<pkg::Device> device =
+        dev >= 1 && dev <= all.size() ? std::optional<pkg::Device>(all[dev - 1]) : std::nullopt;
+    auto each = [&](bool packet, std::uint64_t, const std::uint8_t *b, std::size_t len) {
+        if (packet) {
+            decode_fields(b, len, device);
+        }
+    };
+    events(stream, n, nullptr, each);
+    if (n > 0) {
+        const std::size_t plen = n - 1 < pkg::kMaxPayload ? n - 1 : pkg::kMaxPayload;
+        pkg::PacketBuilder b(stream[0]);
+        FZ_CHECK(b.append(stream + 1, plen) == pkg::EncodeError::none, "append of %zu bytes", plen);
+        const pkg::PacketView p = b.finish();
+        const std::vector<std::uint8_t> built(p.data, p.data + p.size);
+        const auto one = events(built.data(), built.size(), nullptr, each);
+        FZ_CHECK(one.size() == 1 && one[0].kind == Kind::packet && one[0].length == built.size(),
+                 "a built packet parses as %zu events", one.size());
+    }
+    return 0;
+}

@@ -2,7 +2,7 @@
 
     python tests/fuzz/python/fuzz_target.py PACKAGE TARGET [libFuzzer args...] [CORPUS_DIR...]
 
-PACKAGE is mipcodec or mscipcodec, TARGET parser or json (tests/fuzz/python/harness.py).
+PACKAGE is mipcodec or mscipcodec, TARGET parser, decode or json (tests/fuzz/python/harness.py).
 `make fuzz` / `make fuzz-long` call this through tests/fuzz/fuzz.py.
 """
 

@@ -11,6 +11,10 @@ language replays in all of them, and check the same properties:
   decoded through ``decode_field`` (no device and each device) and a field that decodes re-encodes
   to exactly its bytes; every canonical line is printable ASCII and encodes back to the event's
   bytes. The stream is also wrapped as (set, payload) into a packet with a valid checksum.
+- ``decode(pkg, data)``: the lean companion of ``parser`` (for execution count; the input format
+  of ``parser``): one whole parse with the event checks, every field walked and decoded with the
+  control byte's device only and re-encoded, and the stream wrapped into a packet; no chunked
+  re-parse, no canonical lines.
 - ``json(pkg, data)``: each line of the input (UTF-8; other input is not a line the encode tool
   reads) goes through ``encode_line``; when accepted, the bytes are parsed and every event's line
   must encode back to that event's bytes. A rejected line raises only ``EncodeError``.
@@ -176,6 +180,41 @@ def parser(package: str, data: bytes) -> None:
         _check_packet(m, built, 0, device, m.SampleTracker())
 
 
+def _decode_fields(m: ModuleType, packet: bytes, device) -> None:
+    framing = m.framing
+    set_id = packet[framing.SET_OFFSET]
+    payload = packet[framing.HEADER_SIZE : -framing.CHECKSUM_SIZE]
+    check(packet[framing.LENGTH_OFFSET] == len(payload), "payload length byte")
+    pos = 0
+    for f in m.iter_fields(set_id, payload):
+        check(f.offset == pos, f"entry at {f.offset}, expected {pos}")
+        if isinstance(f, framing.TrailingBytes):
+            check(f.data == payload[pos:] and f.data and f.error, "trailing entry is not the rest")
+            pos = len(payload)
+            continue
+        pos += framing.FIELD_HEADER_SIZE + len(f.data)
+        _check_field(m, set_id, f.descriptor, f.data, device)
+    check(pos == len(payload), f"the entries cover {pos} of {len(payload)} payload bytes")
+
+
+def decode(package: str, data: bytes) -> None:
+    """The `decode` target."""
+    if not data:
+        return
+    m = load(package)
+    dev = data[0] >> 6
+    device = m.DEVICES[dev - 1] if 1 <= dev <= len(m.DEVICES) else None
+    stream = bytes(data[1:])
+    for ev in _events(m, stream):
+        if isinstance(ev, m.RawPacket):
+            _decode_fields(m, bytes(ev.data), device)
+    if stream:
+        built = m.PacketBuilder(stream[0]).add_bytes(stream[1 : 1 + m.framing.MAX_PAYLOAD]).build()
+        one = _events(m, built)
+        check(len(one) == 1 and isinstance(one[0], m.RawPacket), "a built packet does not parse as one packet")
+        _decode_fields(m, built, device)
+
+
 def json(package: str, data: bytes) -> None:
     """The `json` target."""
     m = load(package)
@@ -197,4 +236,4 @@ def json(package: str, data: bytes) -> None:
             check(back == bytes(ev.data), f"{again} encodes to {back.hex()}, not {bytes(ev.data).hex()}")
 
 
-TARGETS = {"parser": parser, "json": json}
+TARGETS = {"parser": parser, "decode": decode, "json": json}

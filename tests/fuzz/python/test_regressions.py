@@ -12,7 +12,7 @@ import pytest
 
 HERE = Path(__file__).resolve().parent
 REGRESSIONS = HERE.parent / "regressions"
-CASES = [(p, t) for p in ("mipcodec", "mscipcodec") for t in ("parser", "json")]
+CASES = [(p, t) for p in ("mipcodec", "mscipcodec") for t in ("parser", "decode", "json")]
 
 
 def _files(d: Path) -> list[Path]:

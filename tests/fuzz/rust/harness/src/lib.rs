@@ -11,6 +11,10 @@
 //!   less); every canonical JSON line is printable ASCII, its truncated print into a small
 //!   buffer is a prefix of it, and it encodes back to the event's bytes. The stream is also
 //!   wrapped as (set, payload) into a packet with a valid checksum.
+//! - `decode(data)`: the lean companion of `parser` (for execution count; the same input format):
+//!   one whole parse with the event checks, every field walked and decoded with the control
+//!   byte's device only and re-encoded, and the stream wrapped into a packet; no chunked
+//!   re-parse, no JSON lines, no sample tracker.
 //! - `json(data)`: each line of the input (UTF-8; other input is not a line the encode tool
 //!   could read) goes through `text::encode_line`; when it is accepted, the bytes are parsed and
 //!   every event's line must encode back to that event's bytes.
@@ -146,11 +150,13 @@ macro_rules! harness {
                                 hex(data)
                             );
                         }
-                        assert_eq!(
+                        // compared as bytes (hex only on failure: this runs for every field)
+                        assert!(
+                            w.written() == data,
+                            "{} (set {set} descriptor {descriptor}) re-encodes to {}, data {}",
+                            value.name(),
                             hex(w.written()),
-                            hex(data),
-                            "{} (set {set} descriptor {descriptor}) re-encodes to different bytes",
-                            value.name()
+                            hex(data)
                         );
                         if !data.is_empty() {
                             let mut short = vec![0u8; data.len() - 1];
@@ -251,6 +257,51 @@ macro_rules! harness {
                     let one = events(&built, None, |_, _, _| {});
                     assert_eq!(one, vec![(Kind::Packet, 0, built.len() as u64)], "a built packet");
                     check_packet(&built, 0, device, &mut SampleTracker::new());
+                }
+            }
+
+            fn decode_fields(bytes: &[u8], device: Option<Device>) {
+                let packet = Packet::new(bytes).expect("a packet the parser reported");
+                let set = packet.set();
+                let payload = packet.payload();
+                assert_eq!(bytes.len(), HEADER_SIZE + payload.len() + CHECKSUM_SIZE, "packet length");
+                let mut pos = 0usize;
+                for item in packet.fields() {
+                    match item {
+                        FieldItem::Field { descriptor, data } => {
+                            assert_eq!(data, &payload[pos + FIELD_HEADER_SIZE..pos + FIELD_HEADER_SIZE + data.len()]);
+                            pos += FIELD_HEADER_SIZE + data.len();
+                            check_field(set, descriptor, data, device);
+                        }
+                        FieldItem::Trailing { bytes: rest, .. } => {
+                            assert_eq!(rest, &payload[pos..], "trailing entry is not the rest");
+                            assert!(!rest.is_empty(), "empty trailing entry");
+                            pos = payload.len();
+                        }
+                    }
+                }
+                assert_eq!(pos, payload.len(), "the entries do not cover the payload");
+            }
+
+            /// The `decode` target.
+            pub fn decode(data: &[u8]) {
+                let Some((&control, stream)) = data.split_first() else {
+                    return;
+                };
+                let dev = usize::from(control >> 6);
+                let device = if dev >= 1 && dev <= Device::ALL.len() { Some(Device::ALL[dev - 1]) } else { None };
+                events(stream, None, |kind, _, bytes| {
+                    if kind == Kind::Packet {
+                        decode_fields(bytes, device);
+                    }
+                });
+                if let Some((&set, rest)) = stream.split_first() {
+                    let payload = &rest[..rest.len().min(MAX_PAYLOAD)];
+                    let mut b = PacketBuilder::new(set);
+                    b.add_bytes(payload).expect("a payload of at most the maximum");
+                    let built = b.finish().to_vec();
+                    let one = events(&built, None, |_, _, bytes| decode_fields(bytes, device));
+                    assert_eq!(one, vec![(Kind::Packet, 0, built.len() as u64)], "a built packet");
                 }
             }
 

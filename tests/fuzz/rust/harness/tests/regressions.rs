@@ -77,3 +77,17 @@ fn mscipcodec_json() {
     fuzz_harness::mscipcodec::json(br#"{"offset":0,"skipped":"a5a5"}"#);
     replay("mscipcodec", "json", fuzz_harness::mscipcodec::json);
 }
+
+#[test]
+fn mipcodec_decode() {
+    fuzz_harness::mipcodec::decode(&[0x00, 0x00, 0x75, 0x65, 0x01, 0x02, 0x02, 0x01, 0xe0, 0xc6]);
+    replay("mipcodec", "decode", fuzz_harness::mipcodec::decode);
+}
+
+#[test]
+fn mscipcodec_decode() {
+    fuzz_harness::mscipcodec::decode(&[
+        0x05, 0xa5, 0xa5, 0x02, 0x06, 0x05, 0x03, 0x01, 0x00, 0x81, 0x82, 0x5e, 0x2e,
+    ]);
+    replay("mscipcodec", "decode", fuzz_harness::mscipcodec::decode);
+}

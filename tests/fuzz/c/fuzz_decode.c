@@ -1,0 +1,148 @@
+/* Fuzz target `decode` (C): the lean companion of `parser`, built for execution count.
+ *
+ * Same input format as `parser` (byte 0 a control byte, device in its top 2 bits; the rest the
+ * byte stream), and the same invariants on what it checks, minus the expensive extras (chunked
+ * re-parse, JSON lines, every device, sample tracker). Per input:
+ *  - the stream goes through the parser once; the events tile the stream (contiguous offsets
+ *    from 0, lengths summing to its length, no two skip runs in a row, packet bytes equal the
+ *    stream's bytes, every packet valid);
+ *  - every packet's fields are walked and every complete field is decoded through the public
+ *    dispatch with the control byte's device; a field that decodes re-encodes to exactly its
+ *    bytes and is refused by a buffer one byte short; a decode error formats a message;
+ *  - the stream's first byte and the following bytes are wrapped as (set, payload) into a valid
+ *    packet, so every decoder is reached without the fuzzer solving checksums.
+ * No allocation: buffers are on the stack, sized by the maximum packet. */
+#include "fuzz_common.h"
+
+#define HEADER FZU(HEADER_SIZE)
+#define CHECKSUM FZU(CHECKSUM_SIZE)
+#define MAX_PACKET FZU(MAX_PACKET)
+#define MAX_PAYLOAD FZU(MAX_PAYLOAD)
+
+typedef struct {
+    const uint8_t *stream;
+    size_t size;
+    uint64_t end;    /* where the next event must start */
+    int last_skip;   /* the previous event was a skip run */
+    size_t packets;
+    FZ(device_t) device;
+} fz_lean_t;
+
+static void decode_one(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len, FZ(device_t) device) {
+    FZ(field_value_t) value;
+    FZ(decode_error_t) err;
+    uint8_t buf[MAX_PAYLOAD];
+    size_t n = 0;
+    FZ(status_t) st;
+    memset(&err, 0, sizeof err);
+    st = FZ(decode_field)(set, descriptor, data, len, device, &value, &err);
+    if (st == FZU(OK)) {
+        st = FZ(encode_field)(&value, buf, len, &n);
+        FZ_CHECK(st == FZU(OK) && n == len && memcmp(buf, data, len) == 0,
+                 "set %u descriptor %u: re-encode gives status %d, %zu bytes for data %s", set, descriptor, (int)st,
+                 n, fz_hex(data, len));
+        if (len > 0) {
+            FZ_CHECK(FZ(encode_field)(&value, buf, len - 1, &n) != FZU(OK), "encoded %zu bytes into %zu", len,
+                     len - 1);
+        }
+    } else if (st == FZU(ERR_DECODE)) {
+        char msg[FZU(ERROR_MESSAGE_MAX)];
+        size_t full = FZ(decode_error_format)(&err, msg, sizeof msg);
+        FZ_CHECK(full > 0 && full < sizeof msg && strlen(msg) == full, "error message length %zu", full);
+    } else {
+        FZ_CHECK(st == FZU(ERR_UNKNOWN_SET) || st == FZU(ERR_UNKNOWN_DESCRIPTOR), "decode status %d", (int)st);
+    }
+}
+
+static void walk(const uint8_t *packet, size_t len, FZ(device_t) device) {
+    FZ(field_iter_t) it;
+    FZ(field_entry_t) e;
+    const uint8_t *payload = FZ(packet_payload)(packet);
+    size_t plen = FZ(packet_payload_length)(packet);
+    uint8_t set = FZ(packet_set)(packet);
+    size_t pos = 0;
+    FZ_CHECK(FZ(packet_valid)(packet, len) && len == HEADER + plen + CHECKSUM, "invalid packet %s",
+             fz_hex(packet, len));
+    FZ(field_iter_init)(&it, set, payload, plen);
+    while (FZ(field_iter_next)(&it, &e)) {
+        FZ_CHECK(e.offset == pos, "entry at payload offset %zu, expected %zu", e.offset, pos);
+        if (e.kind == FZU(ENTRY_FIELD)) {
+            FZ_CHECK(e.data == payload + pos + FZU(FIELD_HEADER_SIZE), "field data pointer at %zu", pos);
+            pos += FZU(FIELD_HEADER_SIZE) + e.length;
+            FZ_CHECK(pos <= plen, "field runs past the payload");
+            decode_one(set, e.descriptor, e.data, e.length, device);
+        } else {
+            FZ_CHECK(e.kind == FZU(ENTRY_TRAILING) && e.length == plen - pos && e.length > 0, "trailing entry");
+            pos = plen;
+        }
+    }
+    FZ_CHECK(pos == plen, "the entries cover %zu of %zu payload bytes", pos, plen);
+}
+
+static void on_event(void *arg, const FZ(event_t) * ev) {
+    fz_lean_t *run = (fz_lean_t *)arg;
+    int skip = ev->kind == FZU(EVENT_SKIP);
+    FZ_CHECK(ev->offset == run->end, "event at offset %llu, expected %llu", (unsigned long long)ev->offset,
+             (unsigned long long)run->end);
+    FZ_CHECK(ev->length > 0 && ev->length <= run->size - ev->offset, "event length %llu at %llu",
+             (unsigned long long)ev->length, (unsigned long long)ev->offset);
+    FZ_CHECK(!(skip && run->last_skip), "two skip runs in a row");
+    if (!skip) {
+        FZ_CHECK(ev->kind == FZU(EVENT_PACKET) && ev->packet != NULL &&
+                     memcmp(ev->packet, run->stream + ev->offset, (size_t)ev->length) == 0,
+                 "packet bytes differ from the stream at %llu", (unsigned long long)ev->offset);
+        walk(ev->packet, (size_t)ev->length, run->device);
+        run->packets++;
+    } else {
+        FZ_CHECK(ev->packet == NULL, "a skip run with packet bytes");
+    }
+    run->last_skip = skip;
+    run->end = ev->offset + ev->length;
+}
+
+static void parse(fz_lean_t *run) {
+    FZ(parser_t) parser;
+    FZ(parser_init)(&parser);
+    FZ(parser_feed)(&parser, run->stream, run->size, on_event, run);
+    FZ(parser_flush)(&parser, on_event, run);
+    FZ_CHECK(run->end == run->size, "events cover %llu of %zu bytes", (unsigned long long)run->end, run->size);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+    fz_lean_t run;
+    fz_lean_t one;
+    uint8_t buf[MAX_PACKET];
+    FZ(packet_builder_t) b;
+    size_t plen;
+    size_t len = 0;
+    int dev;
+    FZ(device_t) devices = (FZ(device_t))0;
+    if (size == 0) {
+        return 0;
+    }
+    while (FZ(device_id)((FZ(device_t))(devices + 1)) != NULL) {
+        devices = (FZ(device_t))(devices + 1);
+    }
+    dev = data[0] >> 6;
+    memset(&run, 0, sizeof run);
+    run.stream = data + 1;
+    run.size = size - 1;
+    run.device = dev <= (int)devices ? (FZ(device_t))dev : FZU(DEVICE_ANY);
+    parse(&run);
+    if (run.size == 0) {
+        return 0;
+    }
+    plen = run.size - 1 < MAX_PAYLOAD ? run.size - 1 : MAX_PAYLOAD;
+    FZ(packet_begin)(&b, buf, sizeof buf, run.stream[0]);
+    FZ_CHECK(FZ(packet_add_raw)(&b, run.stream + 1, plen) == FZU(OK), "add_raw of %zu bytes", plen);
+    FZ_CHECK(FZ(packet_finish)(&b, &len) == FZU(OK) && len == HEADER + plen + CHECKSUM, "finish: %zu bytes", len);
+    memset(&one, 0, sizeof one);
+    one.stream = buf;
+    one.size = len;
+    one.device = run.device;
+    parse(&one);
+    FZ_CHECK(one.packets == 1, "a built packet parses as %zu packets", one.packets);
+    return 0;
+}
