@@ -27,6 +27,7 @@ of every stream decodes to a typed value in every language.
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import random
 import sys
@@ -38,6 +39,7 @@ sys.path.insert(0, str(ROOT / "generated" / "python" / "mipcodec"))
 import mipcodec  # noqa: E402
 
 SYNC = b"\x75\x65"
+HEADER = 4
 
 # (set, [descriptors]) packet kinds of the mixed stream, in cycle order.
 MIXED = [
@@ -95,21 +97,42 @@ def garbage(rng: random.Random) -> bytes:
     return bytes(g)
 
 
+def fletcher16(data: bytes) -> bytes:
+    return bytes([sum(data) & 0xFF, sum(itertools.accumulate(data)) & 0xFF])
+
+
+def fix_false_syncs(buf: bytearray, starts: list[int]) -> None:
+    """A deliberate false sync (at `starts`) whose stated length happens to end in a valid
+    checksum would be a packet swallowing the real packets it covers: change its set byte
+    until it is not. Last to first, so a change never alters the window of one already checked."""
+    for p in reversed(starts):
+        end = p + HEADER + buf[p + 3]
+        while end + 2 <= len(buf) and fletcher16(bytes(buf[p:end])) == buf[end : end + 2]:
+            buf[p + 2] = (buf[p + 2] + 1) & 0xFF
+
+
 def write(out: Path, name: str, kinds, count: int, with_garbage: bool, seed: int, sizes) -> None:
     rng = random.Random(seed)
     groups = templates(rng, kinds, sizes, 64)
     parts = []
-    packets = fields = garbage_bytes = 0
+    packets = fields = garbage_bytes = size = 0
+    false_syncs = []
     for i in range(count):
         group, nfields = groups[i % len(groups)]
         if with_garbage:
             g = garbage(rng)
+            if g.startswith(SYNC):
+                false_syncs.append(size)
             parts.append(g)
             garbage_bytes += len(g)
-        parts.append(group[rng.randrange(len(group))])
+            size += len(g)
+        packet = group[rng.randrange(len(group))]
+        parts.append(packet)
+        size += len(packet)
         packets += 1
         fields += nfields
-    buf = b"".join(parts)
+    buf = bytearray(b"".join(parts))
+    fix_false_syncs(buf, false_syncs)
     (out / f"{name}.bin").write_bytes(buf)
     meta = {
         "name": name,
