@@ -46,17 +46,46 @@ pub const BIG_ENDIAN: bool = true;
 pub const CHECKSUM_SUM1_FIRST: bool = true;
 
 /// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
+///
+/// Computed eight bytes at a time: over `n` bytes, sum1 = Σ b\[i\] and sum2 = Σ (n - i)·b\[i\]
+/// (mod 256), so a block of eight adds its byte sum to sum1, and 8·sum1 plus its bytes weighted
+/// 8, 7, …, 1 to sum2. Both block sums come from one 64-bit load split into 16-bit lanes
+/// (even and odd bytes) and a multiplication that adds the lanes, weighted, into the top lane.
+#[inline]
 pub fn fletcher16(bytes: &[u8]) -> (u8, u8) {
-    let mut sum1: u8 = 0;
-    let mut sum2: u8 = 0;
-    for &b in bytes {
-        sum1 = sum1.wrapping_add(b);
+    const LANES: u64 = 0x00FF_00FF_00FF_00FF;
+    // Top lane of lanes·ONES is the lane sum; of lanes·W_EVEN (W_ODD) the sum weighted 8, 6, 4,
+    // 2 (7, 5, 3, 1) from the lowest lane up. No lane sum reaches 2^16, so nothing carries
+    // into the top lane.
+    const ONES: u64 = 0x0001_0001_0001_0001;
+    const W_EVEN: u64 = 0x0008_0006_0004_0002;
+    const W_ODD: u64 = 0x0007_0005_0003_0001;
+    let mut sum1: u32 = 0;
+    let mut sum2: u32 = 0;
+    let mut blocks = bytes.chunks_exact(8);
+    for block in &mut blocks {
+        let mut word = [0u8; 8];
+        word.copy_from_slice(block);
+        let x = u64::from_le_bytes(word);
+        let even = x & LANES;
+        let odd = (x >> 8) & LANES;
+        let block_sum = ((even + odd).wrapping_mul(ONES) >> 48) as u32;
+        let weighted =
+            ((even.wrapping_mul(W_EVEN)).wrapping_add(odd.wrapping_mul(W_ODD)) >> 48) as u32;
+        sum2 = sum2
+            .wrapping_add(sum1.wrapping_mul(8))
+            .wrapping_add(weighted);
+        sum1 = sum1.wrapping_add(block_sum);
+    }
+    for &b in blocks.remainder() {
+        sum1 = sum1.wrapping_add(u32::from(b));
         sum2 = sum2.wrapping_add(sum1);
     }
-    (sum1, sum2)
+    (sum1 as u8, sum2 as u8)
 }
 
 /// The checksum bytes of `bytes` (header and payload) in transmission order.
+#[inline]
 pub fn checksum_bytes(bytes: &[u8]) -> [u8; CHECKSUM_SIZE] {
     let (sum1, sum2) = fletcher16(bytes);
     if CHECKSUM_SUM1_FIRST {

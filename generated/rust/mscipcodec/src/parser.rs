@@ -67,14 +67,106 @@ impl Parser {
     }
 
     /// Feeds `data`; calls `on` for every event it completes.
+    ///
+    /// Packets that lie wholly inside `data` are checked and reported in place (their bytes
+    /// borrow `data`); only a packet split across `feed` calls is copied into the parser's
+    /// buffer, and only the bytes it still needs.
     pub fn feed<F: FnMut(Event<'_>)>(&mut self, mut data: &[u8], mut on: F) {
-        while !data.is_empty() {
-            let n = data.len().min(MAX_PACKET - self.len);
+        // Finish the candidate buffered by the previous call.
+        while self.len > 0 && !data.is_empty() {
+            let n = data.len().min(self.wanted() - self.len);
             self.buf[self.len..self.len + n].copy_from_slice(&data[..n]);
             self.len += n;
             data = &data[n..];
             self.process(&mut on, false);
         }
+        if data.is_empty() {
+            return;
+        }
+        // Nothing buffered: search `data` itself, then keep the undecided tail.
+        let used = self.scan(data, &mut on);
+        let rest = &data[used..];
+        self.buf[..rest.len()].copy_from_slice(rest);
+        self.len = rest.len();
+    }
+
+    /// Bytes the buffered candidate needs before it can be decided (more than `self.len`
+    /// whenever `process` left bytes waiting).
+    fn wanted(&self) -> usize {
+        if self.len < HEADER_SIZE {
+            HEADER_SIZE
+        } else {
+            HEADER_SIZE + usize::from(self.buf[LENGTH_OFFSET]) + CHECKSUM_SIZE
+        }
+    }
+
+    /// The search of `process` over `data` in place, with nothing buffered (`self.base` is the
+    /// stream offset of `data[0]`). Returns how many bytes it consumed; the rest (a candidate
+    /// that needs more input, shorter than a maximum packet) is for the caller to buffer.
+    fn scan<F: FnMut(Event<'_>)>(&mut self, data: &[u8], on: &mut F) -> usize {
+        let end = data.len();
+        let mut pos = 0;
+        loop {
+            // Find the next sync (or a sync prefix at the very end).
+            let mut at = pos;
+            loop {
+                match data[at..].iter().position(|&b| b == SYNC[0]) {
+                    None => {
+                        self.skip_in_place(end - pos);
+                        return end;
+                    }
+                    Some(i) => at += i,
+                }
+                let n = (end - at).min(SYNC.len());
+                if data[at..at + n] == SYNC[..n] {
+                    break;
+                }
+                at += 1;
+            }
+            self.skip_in_place(at - pos);
+            pos = at;
+            let left = end - pos;
+            if left < HEADER_SIZE {
+                return pos;
+            }
+            let payload = usize::from(data[pos + LENGTH_OFFSET]);
+            if payload > MAX_PAYLOAD {
+                self.skip_in_place(1);
+                pos += 1;
+                continue;
+            }
+            let body = HEADER_SIZE + payload;
+            let total = body + CHECKSUM_SIZE;
+            if left < total {
+                return pos;
+            }
+            let packet = &data[pos..pos + total];
+            if checksum_bytes(&packet[..body]) == packet[body..] {
+                self.emit_skip(on);
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: packet,
+                });
+                self.base += total as u64;
+                pos += total;
+            } else {
+                // The sync was false: resynchronise at the next byte.
+                self.skip_in_place(1);
+                pos += 1;
+            }
+        }
+    }
+
+    /// Adds `n` bytes at the parser's offset to the skip run (nothing buffered).
+    fn skip_in_place(&mut self, n: usize) {
+        if n == 0 {
+            return;
+        }
+        if self.skip_count == 0 {
+            self.skip_start = self.base;
+        }
+        self.skip_count += n as u64;
+        self.base += n as u64;
     }
 
     /// End of input: the same search, but a candidate packet that would wait for more input is
