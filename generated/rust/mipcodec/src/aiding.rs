@@ -40,6 +40,7 @@ impl crate::wire::Wire for FrameConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -229,6 +230,7 @@ impl crate::wire::Wire for FrameConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_format = <crate::types::AidingFrameFormat as crate::wire::Wire>::decode(r)
@@ -356,6 +358,7 @@ impl crate::wire::Wire for EchoControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -448,6 +451,7 @@ impl crate::wire::Wire for EchoControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AidingEchoMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -523,6 +527,7 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(49);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -659,6 +664,7 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(49);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -811,6 +817,7 @@ impl crate::wire::Wire for HeightAboveEllipsoid {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -937,6 +944,7 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1067,6 +1075,7 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1197,6 +1206,7 @@ impl crate::wire::Wire for BodyFrameVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1327,6 +1337,7 @@ impl crate::wire::Wire for TrueHeading {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1453,6 +1464,7 @@ impl crate::wire::Wire for MagneticField {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1589,6 +1601,7 @@ impl crate::wire::Wire for Pressure {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;

@@ -20,6 +20,7 @@ impl crate::wire::Wire for Ping {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -67,6 +68,7 @@ impl crate::wire::Wire for SetToIdle {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -114,6 +116,7 @@ impl crate::wire::Wire for GetDeviceInfo {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -166,6 +169,7 @@ impl crate::wire::Wire for DeviceInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(82);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_info =
             <crate::types::DeviceInfo as crate::wire::Wire>::decode(r).map_err(|e| e.at("info"))?;
@@ -224,6 +228,7 @@ impl crate::wire::Wire for GetDeviceDescriptors {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -276,6 +281,7 @@ impl crate::wire::Wire for DeviceDescriptors {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptors = crate::bounded::BoundedVec::<u16, 126>::decode_remaining(r)
             .map_err(|e| e.at("descriptors"))?;
@@ -338,6 +344,7 @@ impl crate::wire::Wire for BuiltInTest {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -390,6 +397,7 @@ impl crate::wire::Wire for BuiltInTestResultGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_flags = <crate::types::Gx5BitFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("flags"))?;
@@ -453,6 +461,7 @@ impl crate::wire::Wire for BuiltInTestResultCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_flags = <crate::types::Cv7BitFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("flags"))?;
@@ -601,6 +610,7 @@ impl crate::wire::Wire for Resume {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -648,6 +658,7 @@ impl crate::wire::Wire for GetExtendedDescriptors {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -700,6 +711,7 @@ impl crate::wire::Wire for ExtendedDescriptors {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptors = crate::bounded::BoundedVec::<u16, 126>::decode_remaining(r)
             .map_err(|e| e.at("descriptors"))?;
@@ -762,6 +774,7 @@ impl crate::wire::Wire for ContinuousBit {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -814,6 +827,7 @@ impl crate::wire::Wire for ContinuousBitResult {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_result = <crate::types::Cv7ContinuousBit as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("result"))?;
@@ -883,6 +897,7 @@ impl crate::wire::Wire for CommPortSpeed {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -981,6 +996,7 @@ impl crate::wire::Wire for CommPortSpeedResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_port = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("port"))?;
         let p_baud = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("baud"))?;
@@ -1059,6 +1075,7 @@ impl crate::wire::Wire for GpsTimeUpdateGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1164,6 +1181,7 @@ impl crate::wire::Wire for GpsTimeUpdateCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1343,6 +1361,7 @@ impl crate::wire::Wire for GpsWeek {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_week = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("week"))?;
         Ok(Self { week: p_week })
@@ -1402,6 +1421,7 @@ impl crate::wire::Wire for GpsSeconds {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_seconds = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("seconds"))?;
         Ok(Self { seconds: p_seconds })
@@ -1456,6 +1476,7 @@ impl crate::wire::Wire for DeviceReset {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})

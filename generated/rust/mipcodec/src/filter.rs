@@ -20,6 +20,7 @@ impl crate::wire::Wire for ResetFilter {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -78,6 +79,7 @@ impl crate::wire::Wire for SetInitialAttitude {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -159,6 +161,7 @@ impl crate::wire::Wire for SetInitialHeading {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_heading = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("heading"))?;
         Ok(Self { heading: p_heading })
@@ -213,6 +216,7 @@ impl crate::wire::Wire for RunFilter {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -268,6 +272,7 @@ impl crate::wire::Wire for VehicleDynamicsMode {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -360,6 +365,7 @@ impl crate::wire::Wire for VehicleDynamicsModeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::VehicleDynamicsMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -432,6 +438,7 @@ impl crate::wire::Wire for SensorToVehicleTransform {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -560,6 +567,7 @@ impl crate::wire::Wire for SensorToVehicleTransformResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -644,6 +652,7 @@ impl crate::wire::Wire for SensorToVehicleOffset {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -733,6 +742,7 @@ impl crate::wire::Wire for SensorToVehicleOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         Ok(Self { offset: p_offset })
@@ -798,6 +808,7 @@ impl crate::wire::Wire for AntennaOffset {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -887,6 +898,7 @@ impl crate::wire::Wire for AntennaOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         Ok(Self { offset: p_offset })
@@ -952,6 +964,7 @@ impl crate::wire::Wire for EstimationControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1044,6 +1057,7 @@ impl crate::wire::Wire for EstimationControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_flags = <crate::types::EstimationControlFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("flags"))?;
@@ -1110,6 +1124,7 @@ impl crate::wire::Wire for GnssSourceControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1202,6 +1217,7 @@ impl crate::wire::Wire for GnssSourceControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::FilterGnssSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -1286,6 +1302,7 @@ impl crate::wire::Wire for ExternalGnssUpdate {
     };
     const FIXED_SIZE: Option<usize> = Some(70);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gps_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_tow"))?;
         let p_gps_week = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_week"))?;
@@ -1442,6 +1459,7 @@ impl crate::wire::Wire for ExternalHeadingUpdate {
     };
     const FIXED_SIZE: Option<usize> = Some(9);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_heading = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("heading"))?;
         let p_heading_uncertainty =
@@ -1534,6 +1552,7 @@ impl crate::wire::Wire for HeadingUpdateControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1626,6 +1645,7 @@ impl crate::wire::Wire for HeadingUpdateControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::HeadingUpdateSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -1692,6 +1712,7 @@ impl crate::wire::Wire for AutoInitControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1778,6 +1799,7 @@ impl crate::wire::Wire for AutoInitControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         Ok(Self { enable: p_enable })
@@ -1840,6 +1862,7 @@ impl crate::wire::Wire for AccelNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1926,6 +1949,7 @@ impl crate::wire::Wire for AccelNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -1988,6 +2012,7 @@ impl crate::wire::Wire for GyroNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2074,6 +2099,7 @@ impl crate::wire::Wire for GyroNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -2139,6 +2165,7 @@ impl crate::wire::Wire for AccelBiasModel {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2246,6 +2273,7 @@ impl crate::wire::Wire for AccelBiasModelResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(24);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_beta = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("beta"))?;
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
@@ -2324,6 +2352,7 @@ impl crate::wire::Wire for GyroBiasModel {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2431,6 +2460,7 @@ impl crate::wire::Wire for GyroBiasModelResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(24);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_beta = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("beta"))?;
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
@@ -2509,6 +2539,7 @@ impl crate::wire::Wire for ZuptControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2616,6 +2647,7 @@ impl crate::wire::Wire for ZuptControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_threshold = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("threshold"))?;
@@ -2700,6 +2732,7 @@ impl crate::wire::Wire for ExternalHeadingUpdateWithTime {
     };
     const FIXED_SIZE: Option<usize> = Some(19);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gps_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_tow"))?;
         let p_gps_week = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_week"))?;
@@ -2822,6 +2855,7 @@ impl crate::wire::Wire for ZeroAngularRateUpdateControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2929,6 +2963,7 @@ impl crate::wire::Wire for ZeroAngularRateUpdateControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_threshold = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("threshold"))?;
@@ -3004,6 +3039,7 @@ impl crate::wire::Wire for TareOrientation {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3091,6 +3127,7 @@ impl crate::wire::Wire for CommandedZupt {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -3138,6 +3175,7 @@ impl crate::wire::Wire for CommandedZeroAngularRateUpdate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -3190,6 +3228,7 @@ impl crate::wire::Wire for MagCaptureAutoCalibration {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3260,6 +3299,7 @@ impl crate::wire::Wire for GravityNoiseStdDev {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3346,6 +3386,7 @@ impl crate::wire::Wire for GravityNoiseStdDevResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3408,6 +3449,7 @@ impl crate::wire::Wire for PressureAltitudeNoiseStdDev {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3494,6 +3536,7 @@ impl crate::wire::Wire for PressureAltitudeNoiseStdDevResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3556,6 +3599,7 @@ impl crate::wire::Wire for HardIronOffsetNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3642,6 +3686,7 @@ impl crate::wire::Wire for HardIronOffsetNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3704,6 +3749,7 @@ impl crate::wire::Wire for SoftIronMatrixNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3790,6 +3836,7 @@ impl crate::wire::Wire for SoftIronMatrixNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3852,6 +3899,7 @@ impl crate::wire::Wire for MagNoiseStdDev {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3938,6 +3986,7 @@ impl crate::wire::Wire for MagNoiseStdDevResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -4003,6 +4052,7 @@ impl crate::wire::Wire for DeclinationSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4119,6 +4169,7 @@ impl crate::wire::Wire for DeclinationSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -4220,6 +4271,7 @@ impl crate::wire::Wire for GravityMagnitudeAdaptiveMeasurement {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4462,6 +4514,7 @@ impl crate::wire::Wire for GravityMagnitudeAdaptiveMeasurementResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -4627,6 +4680,7 @@ impl crate::wire::Wire for MagMagnitudeAdaptiveMeasurement {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4869,6 +4923,7 @@ impl crate::wire::Wire for MagMagnitudeAdaptiveMeasurementResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -5028,6 +5083,7 @@ impl crate::wire::Wire for MagDipAngleAdaptiveMeasurement {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5223,6 +5279,7 @@ impl crate::wire::Wire for MagDipAngleAdaptiveMeasurementResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(17);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -5346,6 +5403,7 @@ impl crate::wire::Wire for AltitudeAidingControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5438,6 +5496,7 @@ impl crate::wire::Wire for AltitudeAidingControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::AltitudeAidingSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -5504,6 +5563,7 @@ impl crate::wire::Wire for PitchRollAidingControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5596,6 +5656,7 @@ impl crate::wire::Wire for PitchRollAidingControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::PitchRollAidingSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -5665,6 +5726,7 @@ impl crate::wire::Wire for InclinationSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5781,6 +5843,7 @@ impl crate::wire::Wire for InclinationSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -5867,6 +5930,7 @@ impl crate::wire::Wire for MagneticFieldMagnitudeSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5980,6 +6044,7 @@ impl crate::wire::Wire for MagneticFieldMagnitudeSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -6062,6 +6127,7 @@ impl crate::wire::Wire for AidingMeasurementControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6164,6 +6230,7 @@ impl crate::wire::Wire for AidingMeasurementControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::AidingMeasurementSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -6267,6 +6334,7 @@ impl crate::wire::Wire for InitializationConfiguration {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6572,6 +6640,7 @@ impl crate::wire::Wire for InitializationConfigurationResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(40);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_wait_for_run_command =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("wait_for_run_command"))?;
@@ -6765,6 +6834,7 @@ impl crate::wire::Wire for AdaptiveFilterControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6878,6 +6948,7 @@ impl crate::wire::Wire for AdaptiveFilterControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_level = <crate::types::AdaptiveFilterLevel as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("level"))?;
@@ -6960,6 +7031,7 @@ impl crate::wire::Wire for MultiAntennaOffset {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7062,6 +7134,7 @@ impl crate::wire::Wire for MultiAntennaOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -7148,6 +7221,7 @@ impl crate::wire::Wire for RelativePositionConfiguration {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7302,6 +7376,7 @@ impl crate::wire::Wire for RelativePositionConfigurationResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::RelativePositionSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -7409,6 +7484,7 @@ impl crate::wire::Wire for ReferencePointLeverArm {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7525,6 +7601,7 @@ impl crate::wire::Wire for ReferencePointLeverArmResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_ref_point_sel =
             <crate::types::ReferencePointSelector as crate::wire::Wire>::decode(r)
@@ -7612,6 +7689,7 @@ impl crate::wire::Wire for SpeedLeverArm {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7713,6 +7791,7 @@ impl crate::wire::Wire for SpeedLeverArmResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("source"))?;
         let p_lever_arm_offset =
@@ -7792,6 +7871,7 @@ impl crate::wire::Wire for WheeledVehicleConstraintControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7878,6 +7958,7 @@ impl crate::wire::Wire for WheeledVehicleConstraintControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         Ok(Self { enable: p_enable })
@@ -7943,6 +8024,7 @@ impl crate::wire::Wire for GnssAntennaCalibrationControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8050,6 +8132,7 @@ impl crate::wire::Wire for GnssAntennaCalibrationControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_max_offset = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_offset"))?;

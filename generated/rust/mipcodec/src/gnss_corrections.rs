@@ -43,6 +43,7 @@ impl crate::wire::Wire for BaseStationInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(44);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -216,6 +217,7 @@ impl crate::wire::Wire for RtkCorrectionsStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(50);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =

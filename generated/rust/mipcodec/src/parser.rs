@@ -32,6 +32,13 @@ impl Default for Parser {
     }
 }
 
+/// Whether `sent` is the checksum of `body` (byte by byte: no call to a slice comparison).
+#[inline(always)]
+fn checksum_matches(body: &[u8], sent: &[u8]) -> bool {
+    let sum = checksum_bytes(body);
+    sent.len() == CHECKSUM_SIZE && (0..CHECKSUM_SIZE).all(|i| sum[i] == sent[i])
+}
+
 enum Sync {
     // A full sync sequence at this index.
     Full(usize),
@@ -117,8 +124,10 @@ impl Parser {
                     }
                     Some(i) => at += i,
                 }
+                // The rest of the sync, or as much of it as `data` holds (byte by byte: no call
+                // to a slice comparison).
                 let n = (end - at).min(SYNC.len());
-                if data[at..at + n] == SYNC[..n] {
+                if (1..n).all(|k| data[at + k] == SYNC[k]) {
                     break;
                 }
                 at += 1;
@@ -141,7 +150,7 @@ impl Parser {
                 return pos;
             }
             let packet = &data[pos..pos + total];
-            if checksum_bytes(&packet[..body]) == packet[body..] {
+            if checksum_matches(&packet[..body], &packet[body..]) {
                 self.emit_skip(on);
                 on(Event::Packet {
                     offset: self.base,
@@ -230,7 +239,7 @@ impl Parser {
                 return;
             }
             let body = HEADER_SIZE + payload;
-            if checksum_bytes(&self.buf[..body]) == self.buf[body..total] {
+            if checksum_matches(&self.buf[..body], &self.buf[body..total]) {
                 self.emit_skip(on);
                 on(Event::Packet {
                     offset: self.base,

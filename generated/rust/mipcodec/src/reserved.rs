@@ -23,6 +23,7 @@ impl crate::wire::Wire for AckNack {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_command_descriptor =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("command_descriptor"))?;

@@ -25,6 +25,7 @@ impl crate::wire::Wire for ScaledAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_accel =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_accel"))?;
@@ -92,6 +93,7 @@ impl crate::wire::Wire for ScaledGyro {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_gyro =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_gyro"))?;
@@ -159,6 +161,7 @@ impl crate::wire::Wire for ScaledMag {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_mag =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_mag"))?;
@@ -226,6 +229,7 @@ impl crate::wire::Wire for DeltaTheta {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_theta =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_theta"))?;
@@ -293,6 +297,7 @@ impl crate::wire::Wire for DeltaVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_velocity"))?;
@@ -360,6 +365,7 @@ impl crate::wire::Wire for CfOrientationMatrix {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_m = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("m"))?;
         Ok(Self { m: p_m })
@@ -419,6 +425,7 @@ impl crate::wire::Wire for CfQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         Ok(Self { q: p_q })
@@ -484,6 +491,7 @@ impl crate::wire::Wire for CfEulerAngles {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -565,6 +573,7 @@ impl crate::wire::Wire for CfStabilizedNorth {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_stabilized_north =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("stabilized_north"))?;
@@ -632,6 +641,7 @@ impl crate::wire::Wire for CfStabilizedUp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_stabilized_up =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("stabilized_up"))?;
@@ -705,6 +715,7 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -800,6 +811,7 @@ impl crate::wire::Wire for TemperatureStatistics {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_min_temp = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("min_temp"))?;
         let p_max_temp = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_temp"))?;
@@ -881,6 +893,7 @@ impl crate::wire::Wire for ScaledPressure {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_pressure =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_pressure"))?;
@@ -948,6 +961,7 @@ impl crate::wire::Wire for OverrangeStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status = <crate::types::OverrangeStatusFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("status"))?;
@@ -1017,6 +1031,7 @@ impl crate::wire::Wire for OdometerData {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_speed = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("speed"))?;
         let p_uncertainty =

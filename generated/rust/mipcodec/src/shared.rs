@@ -25,6 +25,7 @@ impl crate::wire::Wire for EventSource {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_trigger_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("trigger_id"))?;
         Ok(Self {
@@ -94,6 +95,7 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -184,6 +186,7 @@ impl crate::wire::Wire for DeltaTime {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_seconds = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("seconds"))?;
         Ok(Self { seconds: p_seconds })
@@ -243,6 +246,7 @@ impl crate::wire::Wire for ReferenceTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_nanoseconds =
             <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("nanoseconds"))?;
@@ -310,6 +314,7 @@ impl crate::wire::Wire for ReferenceTimeDelta {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dt_nanos = <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("dt_nanos"))?;
         Ok(Self {
@@ -376,6 +381,7 @@ impl crate::wire::Wire for ExternalTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_nanoseconds =
             <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("nanoseconds"))?;
@@ -460,6 +466,7 @@ impl crate::wire::Wire for ExternalTimeDelta {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dt_nanos = <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("dt_nanos"))?;
         let p_valid_flags =

@@ -28,6 +28,7 @@ impl crate::wire::Wire for CommunicationMode {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -120,6 +121,7 @@ impl crate::wire::Wire for CommunicationModeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::SystemCommMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;

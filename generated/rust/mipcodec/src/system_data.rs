@@ -25,6 +25,7 @@ impl crate::wire::Wire for BuiltInTest {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_result = <crate::types::Cv7ContinuousBit as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("result"))?;
@@ -91,6 +92,7 @@ impl crate::wire::Wire for TimeSyncStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time_sync = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_sync"))?;
         let p_last_pps_rcvd =
@@ -167,6 +169,7 @@ impl crate::wire::Wire for GpioState {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_states = <crate::types::GpioPinStates as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("states"))?;

@@ -28,6 +28,7 @@ impl crate::wire::Wire for UartBaudRate {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -120,6 +121,7 @@ impl crate::wire::Wire for UartBaudRateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_baud_rate = <crate::types::BaudRate as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("baud_rate"))?;
@@ -190,6 +192,7 @@ impl crate::wire::Wire for Filter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -282,6 +285,7 @@ impl crate::wire::Wire for FilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bandwidth = <crate::types::FilterBandwidth as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("bandwidth"))?;
@@ -352,6 +356,7 @@ impl crate::wire::Wire for SampleRate {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -438,6 +443,7 @@ impl crate::wire::Wire for SampleRateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
         Ok(Self {
@@ -507,6 +513,7 @@ impl crate::wire::Wire for SelectSensors {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -615,6 +622,7 @@ impl crate::wire::Wire for SelectSensorsResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensors =
             crate::bounded::BoundedVec::<crate::types::SensorCode, 253>::decode_remaining(r)
@@ -671,6 +679,7 @@ impl crate::wire::Wire for GetInternalSampleRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -723,6 +732,7 @@ impl crate::wire::Wire for InternalSampleRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -785,6 +795,7 @@ impl crate::wire::Wire for AccelRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -877,6 +888,7 @@ impl crate::wire::Wire for AccelRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_range = <crate::types::AccelRange as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("range"))?;
@@ -943,6 +955,7 @@ impl crate::wire::Wire for GyroRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1035,6 +1048,7 @@ impl crate::wire::Wire for GyroRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_range =
             <crate::types::GyroRange as crate::wire::Wire>::decode(r).map_err(|e| e.at("range"))?;
@@ -1098,6 +1112,7 @@ impl crate::wire::Wire for ConfigAll {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1168,6 +1183,7 @@ impl crate::wire::Wire for DataOnOff {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1260,6 +1276,7 @@ impl crate::wire::Wire for DataOnOffResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_control =
             <crate::types::OnOff as crate::wire::Wire>::decode(r).map_err(|e| e.at("control"))?;
@@ -1326,6 +1343,7 @@ impl crate::wire::Wire for XtrigOnOff {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1418,6 +1436,7 @@ impl crate::wire::Wire for XtrigOnOffResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_control =
             <crate::types::OnOff as crate::wire::Wire>::decode(r).map_err(|e| e.at("control"))?;
@@ -1484,6 +1503,7 @@ impl crate::wire::Wire for SelectSensorsRevB {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1574,6 +1594,7 @@ impl crate::wire::Wire for SelectSensorsRevBResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensors =
             crate::bounded::BoundedVec::<crate::types::SensorCode, 253>::decode_remaining(r)
@@ -1638,6 +1659,7 @@ impl crate::wire::Wire for AuxAccelRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1730,6 +1752,7 @@ impl crate::wire::Wire for AuxAccelRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_range = <crate::types::AccelRange as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("range"))?;

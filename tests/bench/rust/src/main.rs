@@ -1,4 +1,5 @@
-//! Plain benchmark runner: `mipcodec-bench DIR [PASSES]` loads the streams of DIR (written by
+//! Plain benchmark runner: `mipcodec-bench DIR [PASSES [STREAM...]]` loads the streams of DIR
+//! (all four by default; written by
 //! `tests/bench/streams.py`), checks the counts of every pass against the sidecars and prints
 //! one line per stream and mode for `tests/bench/run.py`:
 //!   BENCH lang=rust stream=NAME mode=frame|decode packets=N bytes=B seconds=BEST
@@ -33,17 +34,30 @@ fn best_of(
 
 fn run() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
-    let dir = PathBuf::from(args.next().ok_or("usage: mipcodec-bench DIR [PASSES]")?);
+    let dir = PathBuf::from(
+        args.next()
+            .ok_or("usage: mipcodec-bench DIR [PASSES [STREAM...]]")?,
+    );
     let passes: u32 = match args.next() {
         Some(p) => p
             .parse()
             .map_err(|_| format!("PASSES must be a number, got {p}"))?,
         None => 5,
     };
+    let only: Vec<String> = args.collect();
+    if let Some(bad) = only.iter().find(|n| !STREAMS.contains(&n.as_str())) {
+        return Err(format!(
+            "unknown stream {bad} (streams: {})",
+            STREAMS.join(", ")
+        ));
+    }
     if passes == 0 {
         return Err("PASSES must be at least 1".into());
     }
     for name in STREAMS {
+        if !only.is_empty() && !only.iter().any(|n| n == name) {
+            continue;
+        }
         let stream = Stream::load(&dir, name)?;
         for (mode, work, is_decode) in [
             ("frame", frame as fn(&[u8]) -> Tally, false),
