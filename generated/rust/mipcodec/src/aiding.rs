@@ -40,7 +40,10 @@ impl crate::wire::Wire for FrameConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -230,7 +233,10 @@ impl crate::wire::Wire for FrameConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_format = <crate::types::AidingFrameFormat as crate::wire::Wire>::decode(r)
@@ -358,7 +364,10 @@ impl crate::wire::Wire for EchoControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -451,7 +460,10 @@ impl crate::wire::Wire for EchoControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AidingEchoMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -527,7 +539,10 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(49);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -664,7 +679,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(49);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -817,7 +835,10 @@ impl crate::wire::Wire for HeightAboveEllipsoid {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -944,7 +965,10 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1075,7 +1099,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1206,7 +1233,10 @@ impl crate::wire::Wire for BodyFrameVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1337,7 +1367,10 @@ impl crate::wire::Wire for TrueHeading {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1464,7 +1497,10 @@ impl crate::wire::Wire for MagneticField {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1601,7 +1637,10 @@ impl crate::wire::Wire for Pressure {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;

@@ -20,7 +20,10 @@ impl crate::wire::Wire for ResetFilter {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -79,7 +82,10 @@ impl crate::wire::Wire for SetInitialAttitude {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -161,7 +167,10 @@ impl crate::wire::Wire for SetInitialHeading {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_heading = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("heading"))?;
         Ok(Self { heading: p_heading })
@@ -216,7 +225,10 @@ impl crate::wire::Wire for RunFilter {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -272,7 +284,10 @@ impl crate::wire::Wire for VehicleDynamicsMode {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -365,7 +380,10 @@ impl crate::wire::Wire for VehicleDynamicsModeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::VehicleDynamicsMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -438,7 +456,10 @@ impl crate::wire::Wire for SensorToVehicleTransform {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -567,7 +588,10 @@ impl crate::wire::Wire for SensorToVehicleTransformResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -652,7 +676,10 @@ impl crate::wire::Wire for SensorToVehicleOffset {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -742,7 +769,10 @@ impl crate::wire::Wire for SensorToVehicleOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         Ok(Self { offset: p_offset })
@@ -808,7 +838,10 @@ impl crate::wire::Wire for AntennaOffset {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -898,7 +931,10 @@ impl crate::wire::Wire for AntennaOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         Ok(Self { offset: p_offset })
@@ -964,7 +1000,10 @@ impl crate::wire::Wire for EstimationControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1057,7 +1096,10 @@ impl crate::wire::Wire for EstimationControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_flags = <crate::types::EstimationControlFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("flags"))?;
@@ -1124,7 +1166,10 @@ impl crate::wire::Wire for GnssSourceControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1217,7 +1262,10 @@ impl crate::wire::Wire for GnssSourceControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::FilterGnssSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -1302,7 +1350,10 @@ impl crate::wire::Wire for ExternalGnssUpdate {
     };
     const FIXED_SIZE: Option<usize> = Some(70);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gps_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_tow"))?;
         let p_gps_week = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_week"))?;
@@ -1459,7 +1510,10 @@ impl crate::wire::Wire for ExternalHeadingUpdate {
     };
     const FIXED_SIZE: Option<usize> = Some(9);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_heading = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("heading"))?;
         let p_heading_uncertainty =
@@ -1552,7 +1606,10 @@ impl crate::wire::Wire for HeadingUpdateControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1645,7 +1702,10 @@ impl crate::wire::Wire for HeadingUpdateControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::HeadingUpdateSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -1712,7 +1772,10 @@ impl crate::wire::Wire for AutoInitControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1799,7 +1862,10 @@ impl crate::wire::Wire for AutoInitControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         Ok(Self { enable: p_enable })
@@ -1862,7 +1928,10 @@ impl crate::wire::Wire for AccelNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1949,7 +2018,10 @@ impl crate::wire::Wire for AccelNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -2012,7 +2084,10 @@ impl crate::wire::Wire for GyroNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2099,7 +2174,10 @@ impl crate::wire::Wire for GyroNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -2165,7 +2243,10 @@ impl crate::wire::Wire for AccelBiasModel {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2273,7 +2354,10 @@ impl crate::wire::Wire for AccelBiasModelResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(24);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_beta = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("beta"))?;
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
@@ -2352,7 +2436,10 @@ impl crate::wire::Wire for GyroBiasModel {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2460,7 +2547,10 @@ impl crate::wire::Wire for GyroBiasModelResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(24);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_beta = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("beta"))?;
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
@@ -2539,7 +2629,10 @@ impl crate::wire::Wire for ZuptControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2647,7 +2740,10 @@ impl crate::wire::Wire for ZuptControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_threshold = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("threshold"))?;
@@ -2732,7 +2828,10 @@ impl crate::wire::Wire for ExternalHeadingUpdateWithTime {
     };
     const FIXED_SIZE: Option<usize> = Some(19);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gps_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_tow"))?;
         let p_gps_week = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gps_week"))?;
@@ -2855,7 +2954,10 @@ impl crate::wire::Wire for ZeroAngularRateUpdateControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2963,7 +3065,10 @@ impl crate::wire::Wire for ZeroAngularRateUpdateControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_threshold = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("threshold"))?;
@@ -3039,7 +3144,10 @@ impl crate::wire::Wire for TareOrientation {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3127,7 +3235,10 @@ impl crate::wire::Wire for CommandedZupt {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -3175,7 +3286,10 @@ impl crate::wire::Wire for CommandedZeroAngularRateUpdate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -3228,7 +3342,10 @@ impl crate::wire::Wire for MagCaptureAutoCalibration {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3299,7 +3416,10 @@ impl crate::wire::Wire for GravityNoiseStdDev {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3386,7 +3506,10 @@ impl crate::wire::Wire for GravityNoiseStdDevResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3449,7 +3572,10 @@ impl crate::wire::Wire for PressureAltitudeNoiseStdDev {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3536,7 +3662,10 @@ impl crate::wire::Wire for PressureAltitudeNoiseStdDevResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3599,7 +3728,10 @@ impl crate::wire::Wire for HardIronOffsetNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3686,7 +3818,10 @@ impl crate::wire::Wire for HardIronOffsetNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3749,7 +3884,10 @@ impl crate::wire::Wire for SoftIronMatrixNoise {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3836,7 +3974,10 @@ impl crate::wire::Wire for SoftIronMatrixNoiseResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -3899,7 +4040,10 @@ impl crate::wire::Wire for MagNoiseStdDev {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3986,7 +4130,10 @@ impl crate::wire::Wire for MagNoiseStdDevResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_noise = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("noise"))?;
         Ok(Self { noise: p_noise })
@@ -4052,7 +4199,10 @@ impl crate::wire::Wire for DeclinationSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4169,7 +4319,10 @@ impl crate::wire::Wire for DeclinationSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -4271,7 +4424,10 @@ impl crate::wire::Wire for GravityMagnitudeAdaptiveMeasurement {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4514,7 +4670,10 @@ impl crate::wire::Wire for GravityMagnitudeAdaptiveMeasurementResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -4680,7 +4839,10 @@ impl crate::wire::Wire for MagMagnitudeAdaptiveMeasurement {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4923,7 +5085,10 @@ impl crate::wire::Wire for MagMagnitudeAdaptiveMeasurementResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -5083,7 +5248,10 @@ impl crate::wire::Wire for MagDipAngleAdaptiveMeasurement {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5279,7 +5447,10 @@ impl crate::wire::Wire for MagDipAngleAdaptiveMeasurementResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(17);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AdaptiveMeasurementMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -5403,7 +5574,10 @@ impl crate::wire::Wire for AltitudeAidingControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5496,7 +5670,10 @@ impl crate::wire::Wire for AltitudeAidingControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::AltitudeAidingSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -5563,7 +5740,10 @@ impl crate::wire::Wire for PitchRollAidingControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5656,7 +5836,10 @@ impl crate::wire::Wire for PitchRollAidingControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::PitchRollAidingSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -5726,7 +5909,10 @@ impl crate::wire::Wire for InclinationSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5843,7 +6029,10 @@ impl crate::wire::Wire for InclinationSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -5930,7 +6119,10 @@ impl crate::wire::Wire for MagneticFieldMagnitudeSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6044,7 +6236,10 @@ impl crate::wire::Wire for MagneticFieldMagnitudeSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::MagneticParamSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -6127,7 +6322,10 @@ impl crate::wire::Wire for AidingMeasurementControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6230,7 +6428,10 @@ impl crate::wire::Wire for AidingMeasurementControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::AidingMeasurementSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -6334,7 +6535,10 @@ impl crate::wire::Wire for InitializationConfiguration {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6640,7 +6844,10 @@ impl crate::wire::Wire for InitializationConfigurationResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(40);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_wait_for_run_command =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("wait_for_run_command"))?;
@@ -6834,7 +7041,10 @@ impl crate::wire::Wire for AdaptiveFilterControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6948,7 +7158,10 @@ impl crate::wire::Wire for AdaptiveFilterControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_level = <crate::types::AdaptiveFilterLevel as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("level"))?;
@@ -7031,7 +7244,10 @@ impl crate::wire::Wire for MultiAntennaOffset {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7134,7 +7350,10 @@ impl crate::wire::Wire for MultiAntennaOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -7221,7 +7440,10 @@ impl crate::wire::Wire for RelativePositionConfiguration {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7376,7 +7598,10 @@ impl crate::wire::Wire for RelativePositionConfigurationResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::RelativePositionSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -7484,7 +7709,10 @@ impl crate::wire::Wire for ReferencePointLeverArm {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7601,7 +7829,10 @@ impl crate::wire::Wire for ReferencePointLeverArmResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_ref_point_sel =
             <crate::types::ReferencePointSelector as crate::wire::Wire>::decode(r)
@@ -7689,7 +7920,10 @@ impl crate::wire::Wire for SpeedLeverArm {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7791,7 +8025,10 @@ impl crate::wire::Wire for SpeedLeverArmResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("source"))?;
         let p_lever_arm_offset =
@@ -7871,7 +8108,10 @@ impl crate::wire::Wire for WheeledVehicleConstraintControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7958,7 +8198,10 @@ impl crate::wire::Wire for WheeledVehicleConstraintControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         Ok(Self { enable: p_enable })
@@ -8024,7 +8267,10 @@ impl crate::wire::Wire for GnssAntennaCalibrationControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8132,7 +8378,10 @@ impl crate::wire::Wire for GnssAntennaCalibrationControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_max_offset = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_offset"))?;

@@ -34,7 +34,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_latitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("latitude"))?;
         let p_longitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("longitude"))?;
@@ -145,7 +148,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_north = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("north"))?;
         let p_east = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("east"))?;
@@ -243,7 +249,10 @@ impl crate::wire::Wire for AttitudeQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(18);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -323,7 +332,10 @@ impl crate::wire::Wire for AttitudeDcm {
     };
     const FIXED_SIZE: Option<usize> = Some(38);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dcm = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("dcm"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -409,7 +421,10 @@ impl crate::wire::Wire for EulerAngles {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -507,7 +522,10 @@ impl crate::wire::Wire for GyroBias {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -587,7 +605,10 @@ impl crate::wire::Wire for AccelBias {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -673,7 +694,10 @@ impl crate::wire::Wire for LlhPositionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_north = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("north"))?;
         let p_east = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("east"))?;
@@ -777,7 +801,10 @@ impl crate::wire::Wire for NedVelocityUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_north = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("north"))?;
         let p_east = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("east"))?;
@@ -881,7 +908,10 @@ impl crate::wire::Wire for EulerAnglesUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -979,7 +1009,10 @@ impl crate::wire::Wire for GyroBiasUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias_uncertainty"))?;
@@ -1063,7 +1096,10 @@ impl crate::wire::Wire for AccelBiasUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias_uncertainty"))?;
@@ -1147,7 +1183,10 @@ impl crate::wire::Wire for LinearAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_accel = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("accel"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1227,7 +1266,10 @@ impl crate::wire::Wire for CompAngularRate {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gyro = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("gyro"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1307,7 +1349,10 @@ impl crate::wire::Wire for Wgs84GravityMagnitude {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gravity_magnitude =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gravity_magnitude"))?;
@@ -1394,7 +1439,10 @@ impl crate::wire::Wire for FilterStatusGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_filter_state = <crate::types::FilterStateGx5 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("filter_state"))?;
@@ -1494,7 +1542,10 @@ impl crate::wire::Wire for FilterStatusCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_filter_state = <crate::types::FilterModeCv7 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("filter_state"))?;
@@ -1684,7 +1735,10 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -1777,7 +1831,10 @@ impl crate::wire::Wire for QuaternionAttitudeUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(18);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1857,7 +1914,10 @@ impl crate::wire::Wire for GravityVector {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gravity = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("gravity"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1946,7 +2006,10 @@ impl crate::wire::Wire for HeadingUpdateState {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_heading = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("heading"))?;
         let p_heading_uncertainty =
@@ -2068,7 +2131,10 @@ impl crate::wire::Wire for MagneticModel {
     };
     const FIXED_SIZE: Option<usize> = Some(22);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_intensity_north =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("intensity_north"))?;
@@ -2214,7 +2280,10 @@ impl crate::wire::Wire for GyroScaleFactor {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scale_factor"))?;
@@ -2298,7 +2367,10 @@ impl crate::wire::Wire for AccelScaleFactor {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scale_factor"))?;
@@ -2382,7 +2454,10 @@ impl crate::wire::Wire for GyroScaleFactorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("scale_factor_uncertainty"))?;
@@ -2466,7 +2541,10 @@ impl crate::wire::Wire for AccelScaleFactorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("scale_factor_uncertainty"))?;
@@ -2550,7 +2628,10 @@ impl crate::wire::Wire for CompensatedAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_accel = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("accel"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -2642,7 +2723,10 @@ impl crate::wire::Wire for StandardAtmosphere {
     };
     const FIXED_SIZE: Option<usize> = Some(22);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_geometric_altitude =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("geometric_altitude"))?;
@@ -2780,7 +2864,10 @@ impl crate::wire::Wire for PressureAltitude {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pressure_altitude =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pressure_altitude"))?;
@@ -2864,7 +2951,10 @@ impl crate::wire::Wire for MagAutoHardIronOffset {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_hard_iron_offset =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("hard_iron_offset"))?;
@@ -2948,7 +3038,10 @@ impl crate::wire::Wire for MagAutoSoftIronMatrix {
     };
     const FIXED_SIZE: Option<usize> = Some(38);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_soft_iron_matrix =
             <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("soft_iron_matrix"))?;
@@ -3032,7 +3125,10 @@ impl crate::wire::Wire for MagAutoHardIronOffsetUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_hard_iron_offset_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("hard_iron_offset_uncertainty"))?;
@@ -3116,7 +3212,10 @@ impl crate::wire::Wire for MagAutoSoftIronMatrixUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(38);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_soft_iron_matrix_uncertainty = <[f32; 9] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("soft_iron_matrix_uncertainty"))?;
@@ -3200,7 +3299,10 @@ impl crate::wire::Wire for GnssAntennaOffsetCorrection {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -3283,7 +3385,10 @@ impl crate::wire::Wire for GnssAntennaOffsetCorrectionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset_uncertainty"))?;
@@ -3370,7 +3475,10 @@ impl crate::wire::Wire for MultiAntennaOffsetCorrection {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -3466,7 +3574,10 @@ impl crate::wire::Wire for MultiAntennaOffsetCorrectionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -3561,7 +3672,10 @@ impl crate::wire::Wire for EcefPositionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_position_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("position_uncertainty"))?;
@@ -3645,7 +3759,10 @@ impl crate::wire::Wire for EcefVelocityUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity_uncertainty"))?;
@@ -3729,7 +3846,10 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_position =
             <[f64; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("position"))?;
@@ -3813,7 +3933,10 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -3897,7 +4020,10 @@ impl crate::wire::Wire for NedRelativePosition {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_relative_position =
             <[f64; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("relative_position"))?;
@@ -3987,7 +4113,10 @@ impl crate::wire::Wire for GnssPositionAidingStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -4100,7 +4229,10 @@ impl crate::wire::Wire for AidingMeasurementSummary {
     };
     const FIXED_SIZE: Option<usize> = Some(7);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time_of_week =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_of_week"))?;
@@ -4204,7 +4336,10 @@ impl crate::wire::Wire for OdometerScaleFactorError {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_error =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("scale_factor_error"))?;
@@ -4288,7 +4423,10 @@ impl crate::wire::Wire for OdometerScaleFactorErrorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_error_uncertainty = <f32 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("scale_factor_error_uncertainty"))?;
@@ -4384,7 +4522,10 @@ impl crate::wire::Wire for GnssDualAntennaStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(17);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time_of_week =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_of_week"))?;
@@ -4530,7 +4671,10 @@ impl crate::wire::Wire for AidingFrameConfigError {
     };
     const FIXED_SIZE: Option<usize> = Some(29);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_translation =
@@ -4626,7 +4770,10 @@ impl crate::wire::Wire for AidingFrameConfigErrorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_translation_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)

@@ -25,7 +25,10 @@ impl crate::wire::Wire for ScaledAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_accel =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_accel"))?;
@@ -93,7 +96,10 @@ impl crate::wire::Wire for ScaledGyro {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_gyro =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_gyro"))?;
@@ -161,7 +167,10 @@ impl crate::wire::Wire for ScaledMag {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_mag =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_mag"))?;
@@ -229,7 +238,10 @@ impl crate::wire::Wire for DeltaTheta {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_theta =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_theta"))?;
@@ -297,7 +309,10 @@ impl crate::wire::Wire for DeltaVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_velocity"))?;
@@ -365,7 +380,10 @@ impl crate::wire::Wire for CfOrientationMatrix {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_m = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("m"))?;
         Ok(Self { m: p_m })
@@ -425,7 +443,10 @@ impl crate::wire::Wire for CfQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         Ok(Self { q: p_q })
@@ -491,7 +512,10 @@ impl crate::wire::Wire for CfEulerAngles {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -573,7 +597,10 @@ impl crate::wire::Wire for CfStabilizedNorth {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_stabilized_north =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("stabilized_north"))?;
@@ -641,7 +668,10 @@ impl crate::wire::Wire for CfStabilizedUp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_stabilized_up =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("stabilized_up"))?;
@@ -715,7 +745,10 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -811,7 +844,10 @@ impl crate::wire::Wire for TemperatureStatistics {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_min_temp = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("min_temp"))?;
         let p_max_temp = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_temp"))?;
@@ -893,7 +929,10 @@ impl crate::wire::Wire for ScaledPressure {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_pressure =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_pressure"))?;
@@ -961,7 +1000,10 @@ impl crate::wire::Wire for OverrangeStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status = <crate::types::OverrangeStatusFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("status"))?;
@@ -1031,7 +1073,10 @@ impl crate::wire::Wire for OdometerData {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_speed = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("speed"))?;
         let p_uncertainty =

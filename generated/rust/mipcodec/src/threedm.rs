@@ -31,7 +31,10 @@ impl crate::wire::Wire for EventControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -136,7 +139,10 @@ impl crate::wire::Wire for EventControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_instance = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("instance"))?;
         let p_mode = <crate::types::EventControlMode as crate::wire::Wire>::decode(r)
@@ -216,7 +222,10 @@ impl crate::wire::Wire for GetEventTriggerStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_requested_count =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("requested_count"))?;
@@ -302,7 +311,10 @@ impl crate::wire::Wire for EventTriggerStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
         let p_triggers =
@@ -384,7 +396,10 @@ impl crate::wire::Wire for GetEventActionStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_requested_count =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("requested_count"))?;
@@ -470,7 +485,10 @@ impl crate::wire::Wire for EventActionStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
         let p_actions =
@@ -558,7 +576,10 @@ impl crate::wire::Wire for EventTriggerConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -690,7 +711,10 @@ impl crate::wire::Wire for EventTriggerConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_instance = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("instance"))?;
         let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
@@ -792,7 +816,10 @@ impl crate::wire::Wire for EventActionConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -948,7 +975,10 @@ impl crate::wire::Wire for EventActionConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_instance = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("instance"))?;
         let p_trigger = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("trigger"))?;
@@ -1047,7 +1077,10 @@ impl crate::wire::Wire for DeviceStartupSettingsGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1115,7 +1148,10 @@ impl crate::wire::Wire for DeviceStartupSettingsCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1282,7 +1318,10 @@ impl crate::wire::Wire for SensorToVehicleEuler {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1411,7 +1450,10 @@ impl crate::wire::Wire for SensorToVehicleEulerResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -1496,7 +1538,10 @@ impl crate::wire::Wire for SensorToVehicleQuaternion {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1583,7 +1628,10 @@ impl crate::wire::Wire for SensorToVehicleQuaternionResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         Ok(Self { q: p_q })
@@ -1646,7 +1694,10 @@ impl crate::wire::Wire for SensorToVehicleDcm {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1733,7 +1784,10 @@ impl crate::wire::Wire for SensorToVehicleDcmResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dcm = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("dcm"))?;
         Ok(Self { dcm: p_dcm })
@@ -1796,7 +1850,10 @@ impl crate::wire::Wire for AccelBiasGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1886,7 +1943,10 @@ impl crate::wire::Wire for AccelBiasCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2061,7 +2121,10 @@ impl crate::wire::Wire for AccelBiasResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         Ok(Self { bias: p_bias })
@@ -2124,7 +2187,10 @@ impl crate::wire::Wire for GyroBiasGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2214,7 +2280,10 @@ impl crate::wire::Wire for GyroBiasCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2389,7 +2458,10 @@ impl crate::wire::Wire for GyroBiasResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         Ok(Self { bias: p_bias })
@@ -2449,7 +2521,10 @@ impl crate::wire::Wire for CaptureGyroBias {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_averaging_time_ms =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("averaging_time_ms"))?;
@@ -2520,7 +2595,10 @@ impl crate::wire::Wire for MagHardIronOffsetGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2613,7 +2691,10 @@ impl crate::wire::Wire for MagHardIronOffsetCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2793,7 +2874,10 @@ impl crate::wire::Wire for MagHardIronOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         Ok(Self { offset: p_offset })
@@ -2859,7 +2943,10 @@ impl crate::wire::Wire for MagSoftIronMatrixGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2952,7 +3039,10 @@ impl crate::wire::Wire for MagSoftIronMatrixCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3132,7 +3222,10 @@ impl crate::wire::Wire for MagSoftIronMatrixResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_matrix = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("matrix"))?;
         Ok(Self { matrix: p_matrix })
@@ -3198,7 +3291,10 @@ impl crate::wire::Wire for ConingScullingEnable {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3285,7 +3381,10 @@ impl crate::wire::Wire for ConingScullingEnableResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         Ok(Self { enable: p_enable })
@@ -3348,7 +3447,10 @@ impl crate::wire::Wire for UartBaudrate {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3435,7 +3537,10 @@ impl crate::wire::Wire for UartBaudrateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_baud = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("baud"))?;
         Ok(Self { baud: p_baud })
@@ -3507,7 +3612,10 @@ impl crate::wire::Wire for GpioConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3667,7 +3775,10 @@ impl crate::wire::Wire for GpioConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_feature = <crate::types::GpioFeature as crate::wire::Wire>::decode(r)
@@ -3776,7 +3887,10 @@ impl crate::wire::Wire for GpioState {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3875,7 +3989,10 @@ impl crate::wire::Wire for GpioStateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_state = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("state"))?;
@@ -3957,7 +4074,10 @@ impl crate::wire::Wire for OdometerConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4095,7 +4215,10 @@ impl crate::wire::Wire for OdometerConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(9);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::OdometerMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -4200,7 +4323,10 @@ impl crate::wire::Wire for AdvancedLowpassFilter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4376,7 +4502,10 @@ impl crate::wire::Wire for AdvancedLowpassFilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_target_descriptor =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("target_descriptor"))?;
@@ -4501,7 +4630,10 @@ impl crate::wire::Wire for ComplementaryFilter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4675,7 +4807,10 @@ impl crate::wire::Wire for ComplementaryFilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pitch_roll_enable =
             <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch_roll_enable"))?;
@@ -4796,7 +4931,10 @@ impl crate::wire::Wire for SensorRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4899,7 +5037,10 @@ impl crate::wire::Wire for SensorRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensor = <crate::types::SensorRangeType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("sensor"))?;
@@ -4976,7 +5117,10 @@ impl crate::wire::Wire for GetCalibratedSensorRanges {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensor = <crate::types::SensorRangeType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("sensor"))?;
@@ -5046,7 +5190,10 @@ impl crate::wire::Wire for CalibratedSensorRanges {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensor = <crate::types::SensorRangeType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("sensor"))?;
@@ -5153,7 +5300,10 @@ impl crate::wire::Wire for LowpassFilter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5316,7 +5466,10 @@ impl crate::wire::Wire for LowpassFilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_field_desc = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("field_desc"))?;
@@ -5425,7 +5578,10 @@ impl crate::wire::Wire for PollImuData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::Gx5PollOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -5527,7 +5683,10 @@ impl crate::wire::Wire for PollGnssData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::Gx5PollOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -5629,7 +5788,10 @@ impl crate::wire::Wire for PollFilterData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::Gx5PollOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -5732,7 +5894,10 @@ impl crate::wire::Wire for PollNmeaData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_suppress_ack =
             <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("suppress_ack"))?;
@@ -5833,7 +5998,10 @@ impl crate::wire::Wire for PollData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_suppress_ack =
@@ -5936,7 +6104,10 @@ impl crate::wire::Wire for GetImuBaseRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -5989,7 +6160,10 @@ impl crate::wire::Wire for ImuBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -6044,7 +6218,10 @@ impl crate::wire::Wire for GetGnssBaseRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -6097,7 +6274,10 @@ impl crate::wire::Wire for GnssBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -6152,7 +6332,10 @@ impl crate::wire::Wire for GetFilterBaseRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -6205,7 +6388,10 @@ impl crate::wire::Wire for FilterBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -6265,7 +6451,10 @@ impl crate::wire::Wire for GetBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         Ok(Self {
@@ -6332,7 +6521,10 @@ impl crate::wire::Wire for BaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
@@ -6411,7 +6603,10 @@ impl crate::wire::Wire for ImuMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6510,7 +6705,10 @@ impl crate::wire::Wire for ImuMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_descriptors =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
@@ -6599,7 +6797,10 @@ impl crate::wire::Wire for GnssMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6698,7 +6899,10 @@ impl crate::wire::Wire for GnssMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_descriptors =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
@@ -6787,7 +6991,10 @@ impl crate::wire::Wire for FilterMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6886,7 +7093,10 @@ impl crate::wire::Wire for FilterMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_descriptors =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
@@ -6975,7 +7185,10 @@ impl crate::wire::Wire for NmeaMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7091,7 +7304,10 @@ impl crate::wire::Wire for NmeaMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
         let p_format_entries =
@@ -7179,7 +7395,10 @@ impl crate::wire::Wire for MessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7312,7 +7531,10 @@ impl crate::wire::Wire for MessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_num_descriptors =
@@ -7407,7 +7629,10 @@ impl crate::wire::Wire for FactoryStreaming {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_action = <crate::types::FactoryStreamingAction as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("action"))?;
@@ -7490,7 +7715,10 @@ impl crate::wire::Wire for DataStreamControlGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7586,7 +7814,10 @@ impl crate::wire::Wire for DataStreamControlCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7775,7 +8006,10 @@ impl crate::wire::Wire for DataStreamControlResponseGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_device_selector = <crate::types::Gx5StreamSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("device_selector"))?;
@@ -7855,7 +8089,10 @@ impl crate::wire::Wire for DataStreamControlResponseCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_enabled = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("enabled"))?;
@@ -8019,7 +8256,10 @@ impl crate::wire::Wire for RawRtcmMessage {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_data =
             crate::bounded::BoundedVec::<u8, 253>::decode_remaining(r).map_err(|e| e.at("data"))?;
@@ -8092,7 +8332,10 @@ impl crate::wire::Wire for GnssConstellationSettings {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8213,7 +8456,10 @@ impl crate::wire::Wire for GnssConstellationSettingsResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_max_channels_available =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_channels_available"))?;
@@ -8342,7 +8588,10 @@ impl crate::wire::Wire for GnssSbasSettings {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8520,7 +8769,10 @@ impl crate::wire::Wire for GnssSbasSettingsResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable_sbas =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable_sbas"))?;
@@ -8642,7 +8894,10 @@ impl crate::wire::Wire for GnssAssistedFixControl {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8735,7 +8990,10 @@ impl crate::wire::Wire for GnssAssistedFixControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::AssistedFixOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -8821,7 +9079,10 @@ impl crate::wire::Wire for GnssAssistTimeUpdate {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8926,7 +9187,10 @@ impl crate::wire::Wire for GnssAssistTimeUpdateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -9015,7 +9279,10 @@ impl crate::wire::Wire for PpsSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -9108,7 +9375,10 @@ impl crate::wire::Wire for PpsSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::PpsSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -9172,7 +9442,10 @@ impl crate::wire::Wire for GetSupportedEvents {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_query = <crate::types::SupportedEventsQuery as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("query"))?;
@@ -9239,7 +9512,10 @@ impl crate::wire::Wire for SupportedEvents {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_query = <crate::types::SupportedEventsQuery as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("query"))?;
@@ -9323,7 +9599,10 @@ impl crate::wire::Wire for DeviceStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_model_number =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("model_number"))?;
@@ -9411,7 +9690,10 @@ impl crate::wire::Wire for DeviceStatusResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_model_number =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("model_number"))?;

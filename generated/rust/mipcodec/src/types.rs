@@ -205,7 +205,10 @@ impl crate::wire::Wire for ActionGpioParams {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_mode = <crate::types::ActionGpioMode as crate::wire::Wire>::decode(r)
@@ -370,7 +373,10 @@ impl crate::wire::Wire for ActionStatusEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_action_type = <crate::types::ActionType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("action_type"))?;
@@ -749,7 +755,10 @@ impl crate::wire::Wire for AidingFrameEuler {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_euler = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("euler"))?;
         Ok(Self { euler: p_euler })
@@ -872,7 +881,10 @@ impl crate::wire::Wire for AidingFrameQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_quaternion =
             <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("quaternion"))?;
@@ -1212,7 +1224,10 @@ impl crate::wire::Wire for AidingTime {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_timebase = <crate::types::AidingTimebase as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("timebase"))?;
@@ -1600,7 +1615,10 @@ impl crate::wire::Wire for CombinationParams {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_logic_table =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("logic_table"))?;
@@ -1733,7 +1751,10 @@ impl crate::wire::Wire for ConstellationSettings {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_constellation_id = <crate::types::Gx5ConstellationId as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("constellation_id"))?;
@@ -2179,7 +2200,10 @@ impl crate::wire::Wire for Cv7ContinuousBit {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_system_byte_0 =
             <crate::types::Cv7ContinuousBitSystem0 as crate::wire::Wire>::decode(r)
@@ -3774,7 +3798,10 @@ impl crate::wire::Wire for DescriptorRate {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptor = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("descriptor"))?;
         let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
@@ -3852,7 +3879,10 @@ impl crate::wire::Wire for DeviceInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(82);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_firmware_version =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("firmware_version"))?;
@@ -9912,7 +9942,10 @@ impl crate::wire::Wire for GnssReceiverInfoEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(34);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -11539,7 +11572,10 @@ impl crate::wire::Wire for GpioBehaviorEncoder {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioEncoderBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11597,7 +11633,10 @@ impl crate::wire::Wire for GpioBehaviorIo {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioIoBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11655,7 +11694,10 @@ impl crate::wire::Wire for GpioBehaviorPps {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioPpsBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11713,7 +11755,10 @@ impl crate::wire::Wire for GpioBehaviorTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioTimestampBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11771,7 +11816,10 @@ impl crate::wire::Wire for GpioBehaviorUart {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioUartBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11829,7 +11877,10 @@ impl crate::wire::Wire for GpioBehaviorUnused {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioUnusedBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -12717,7 +12768,10 @@ impl crate::wire::Wire for Gx5BasicStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status_flags =
             <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("status_flags"))?;
@@ -13153,7 +13207,10 @@ impl crate::wire::Wire for Gx5DiagnosticStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(70);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status_flags =
             <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("status_flags"))?;
@@ -13499,7 +13556,10 @@ impl crate::wire::Wire for Gx5PollDescriptor {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptor = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("descriptor"))?;
         let p_reserved = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved"))?;
@@ -13991,7 +14051,10 @@ impl crate::wire::Wire for MessageParams {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
@@ -14090,7 +14153,10 @@ impl crate::wire::Wire for NmeaMessage {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_message_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("message_id"))?;
         let p_talker_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("talker_id"))?;
@@ -15454,7 +15520,10 @@ impl crate::wire::Wire for SensorRangeEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_setting = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("setting"))?;
         let p_range = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("range"))?;
@@ -15772,7 +15841,10 @@ impl crate::wire::Wire for SupportedActionType {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_type =
             <crate::types::ActionType as crate::wire::Wire>::decode(r).map_err(|e| e.at("type"))?;
@@ -15845,7 +15917,10 @@ impl crate::wire::Wire for SupportedActions {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_max_instances =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_instances"))?;
@@ -16095,7 +16170,10 @@ impl crate::wire::Wire for SupportedTriggerType {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("type"))?;
@@ -16168,7 +16246,10 @@ impl crate::wire::Wire for SupportedTriggers {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_max_instances =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_instances"))?;
@@ -16425,7 +16506,10 @@ impl crate::wire::Wire for ThresholdParams {
     };
     const FIXED_SIZE: Option<usize> = Some(20);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_field_desc = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("field_desc"))?;
@@ -16695,7 +16779,10 @@ impl crate::wire::Wire for TriggerGpioParams {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_mode = <crate::types::TriggerGpioMode as crate::wire::Wire>::decode(r)
@@ -16953,7 +17040,10 @@ impl crate::wire::Wire for TriggerStatusEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("type"))?;

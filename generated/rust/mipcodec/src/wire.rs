@@ -138,12 +138,15 @@ pub trait Layout: Wire {
     /// Decodes the whole field data; bytes after the last parameter are an error.
     #[inline(always)]
     fn decode_data(data: &[u8]) -> Result<Self, DecodeError> {
-        let mut r = Reader::new(data);
-        if Self::FIXED_SIZE == Some(data.len()) {
-            // A fixed layout over exactly its size: every read is in bounds and nothing is
-            // left, so once `decode` is inlined its length checks fold into this one.
-            return Self::decode(&mut r);
+        if let Some(size) = Self::FIXED_SIZE {
+            if size == data.len() {
+                // A fixed layout over exactly its size: every read is in bounds and nothing is
+                // left, so once `decode` is inlined its length checks fold into this one.
+                return Self::decode(&mut Reader::new(data));
+            }
+            return fixed_size_mismatch(data);
         }
+        let mut r = Reader::new(data);
         let value = Self::decode(&mut r)?;
         r.finish()?;
         Ok(value)
@@ -153,6 +156,18 @@ pub trait Layout: Wire {
     fn encode_data(&self, w: &mut Writer<'_>) -> Result<(), EncodeError> {
         self.encode(w)
     }
+}
+
+/// Field data whose length differs from its fixed layout's size: always an error, found by the
+/// checked decode so that it is the same error (and path) as for any other layout. Out of line,
+/// so that the straight-line path of [`Layout::decode_data`] stays small.
+#[cold]
+#[inline(never)]
+fn fixed_size_mismatch<T: Wire>(data: &[u8]) -> Result<T, DecodeError> {
+    let mut r = Reader::new(data);
+    let value = T::decode(&mut r)?;
+    r.finish()?;
+    Ok(value)
 }
 
 macro_rules! wire_int {

@@ -28,7 +28,10 @@ impl crate::wire::Wire for UartBaudRate {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -121,7 +124,10 @@ impl crate::wire::Wire for UartBaudRateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_baud_rate = <crate::types::BaudRate as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("baud_rate"))?;
@@ -192,7 +198,10 @@ impl crate::wire::Wire for Filter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -285,7 +294,10 @@ impl crate::wire::Wire for FilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bandwidth = <crate::types::FilterBandwidth as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("bandwidth"))?;
@@ -356,7 +368,10 @@ impl crate::wire::Wire for SampleRate {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -443,7 +458,10 @@ impl crate::wire::Wire for SampleRateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
         Ok(Self {
@@ -513,7 +531,10 @@ impl crate::wire::Wire for SelectSensors {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -622,7 +643,10 @@ impl crate::wire::Wire for SelectSensorsResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensors =
             crate::bounded::BoundedVec::<crate::types::SensorCode, 253>::decode_remaining(r)
@@ -679,7 +703,10 @@ impl crate::wire::Wire for GetInternalSampleRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -732,7 +759,10 @@ impl crate::wire::Wire for InternalSampleRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -795,7 +825,10 @@ impl crate::wire::Wire for AccelRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -888,7 +921,10 @@ impl crate::wire::Wire for AccelRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_range = <crate::types::AccelRange as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("range"))?;
@@ -955,7 +991,10 @@ impl crate::wire::Wire for GyroRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1048,7 +1087,10 @@ impl crate::wire::Wire for GyroRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_range =
             <crate::types::GyroRange as crate::wire::Wire>::decode(r).map_err(|e| e.at("range"))?;
@@ -1112,7 +1154,10 @@ impl crate::wire::Wire for ConfigAll {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1183,7 +1228,10 @@ impl crate::wire::Wire for DataOnOff {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1276,7 +1324,10 @@ impl crate::wire::Wire for DataOnOffResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_control =
             <crate::types::OnOff as crate::wire::Wire>::decode(r).map_err(|e| e.at("control"))?;
@@ -1343,7 +1394,10 @@ impl crate::wire::Wire for XtrigOnOff {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1436,7 +1490,10 @@ impl crate::wire::Wire for XtrigOnOffResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_control =
             <crate::types::OnOff as crate::wire::Wire>::decode(r).map_err(|e| e.at("control"))?;
@@ -1503,7 +1560,10 @@ impl crate::wire::Wire for SelectSensorsRevB {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1594,7 +1654,10 @@ impl crate::wire::Wire for SelectSensorsRevBResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensors =
             crate::bounded::BoundedVec::<crate::types::SensorCode, 253>::decode_remaining(r)
@@ -1659,7 +1722,10 @@ impl crate::wire::Wire for AuxAccelRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionCode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1752,7 +1818,10 @@ impl crate::wire::Wire for AuxAccelRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
-    #[inline]
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_range = <crate::types::AccelRange as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("range"))?;

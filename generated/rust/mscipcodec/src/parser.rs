@@ -39,6 +39,34 @@ fn checksum_matches(body: &[u8], sent: &[u8]) -> bool {
     sent.len() == CHECKSUM_SIZE && (0..CHECKSUM_SIZE).all(|i| sum[i] == sent[i])
 }
 
+/// Index of the first `byte` in `hay`, eight bytes at a time (one branch per eight bytes of
+/// garbage instead of one per byte).
+#[inline(always)]
+fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
+    const LOW: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let pattern = LOW * u64::from(byte);
+    let mut words = hay.chunks_exact(8);
+    let mut base = 0;
+    for word in &mut words {
+        let mut bytes = [0u8; 8];
+        bytes.copy_from_slice(word);
+        // Bytes equal to `byte` become zero; the lowest flagged byte is the first zero byte
+        // (a flag can be wrong only above a zero byte).
+        let x = u64::from_le_bytes(bytes) ^ pattern;
+        let zero = x.wrapping_sub(LOW) & !x & HIGH;
+        if zero != 0 {
+            return Some(base + (zero.trailing_zeros() / 8) as usize);
+        }
+        base += 8;
+    }
+    words
+        .remainder()
+        .iter()
+        .position(|&b| b == byte)
+        .map(|i| base + i)
+}
+
 enum Sync {
     // A full sync sequence at this index.
     Full(usize),
@@ -117,7 +145,7 @@ impl Parser {
             // Find the next sync (or a sync prefix at the very end).
             let mut at = pos;
             loop {
-                match data[at..].iter().position(|&b| b == SYNC[0]) {
+                match find_byte(&data[at..], SYNC[0]) {
                     None => {
                         self.skip_in_place(end - pos);
                         return end;
