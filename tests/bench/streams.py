@@ -27,7 +27,6 @@ of every stream decodes to a typed value in every language.
 from __future__ import annotations
 
 import argparse
-import itertools
 import json
 import random
 import sys
@@ -39,7 +38,6 @@ sys.path.insert(0, str(ROOT / "generated" / "python" / "mipcodec"))
 import mipcodec  # noqa: E402
 
 SYNC = b"\x75\x65"
-HEADER = 4
 
 # (set, [descriptors]) packet kinds of the mixed stream, in cycle order.
 MIXED = [
@@ -67,8 +65,12 @@ def field_sizes() -> dict[tuple[int, int], int]:
 def field_data(rng: random.Random, set_id: int, descriptor: int, size: int) -> bytes:
     for _ in range(1000):
         data = bytes(rng.getrandbits(8) for _ in range(size))
-        # decode_field reports a field that does not decode as a RawField (it does not raise).
-        if isinstance(mipcodec.decode_field(set_id, descriptor, data), mipcodec.RawField):
+        try:
+            entry = mipcodec.decode_field(set_id, descriptor, data)
+        except mipcodec.DecodeError:
+            continue
+        # decode_field reports a field that does not decode as a RawField (it does not raise)
+        if isinstance(entry, mipcodec.RawField):
             continue
         return data
     raise SystemExit(f"streams.py: no random bytes decode as field 0x{set_id:02x},0x{descriptor:02x}")
@@ -97,42 +99,49 @@ def garbage(rng: random.Random) -> bytes:
     return bytes(g)
 
 
-def fletcher16(data: bytes) -> bytes:
-    return bytes([sum(data) & 0xFF, sum(itertools.accumulate(data)) & 0xFF])
+def fletcher16(data) -> bytes:
+    s1 = s2 = 0
+    for b in data:
+        s1 = (s1 + b) & 0xFF
+        s2 = (s2 + s1) & 0xFF
+    return bytes([s1, s2])
 
 
-def fix_false_syncs(buf: bytearray, starts: list[int]) -> None:
-    """A deliberate false sync (at `starts`) whose stated length happens to end in a valid
-    checksum would be a packet swallowing the real packets it covers: change its set byte
-    until it is not. Last to first, so a change never alters the window of one already checked."""
-    for p in reversed(starts):
-        end = p + HEADER + buf[p + 3]
-        while end + 2 <= len(buf) and fletcher16(bytes(buf[p:end])) == buf[end : end + 2]:
-            buf[p + 2] = (buf[p + 2] + 1) & 0xFF
+def defuse_false_syncs(buf: bytearray, offsets: list[int]) -> None:
+    """A false sync spans 246+ bytes of the packets behind it; about one in 65536 has a valid
+    checksum by chance and would be a packet that hides the real ones. Change its set byte
+    until it does not (later offsets first: a change can only affect earlier false syncs)."""
+    for off in reversed(offsets):
+        for _ in range(256):
+            end = off + 4 + buf[off + 3]
+            if end + 2 > len(buf) or fletcher16(buf[off:end]) != buf[end : end + 2]:
+                break
+            buf[off + 2] = (buf[off + 2] + 1) & 0xFF
 
 
 def write(out: Path, name: str, kinds, count: int, with_garbage: bool, seed: int, sizes) -> None:
     rng = random.Random(seed)
     groups = templates(rng, kinds, sizes, 64)
     parts = []
-    packets = fields = garbage_bytes = size = 0
-    false_syncs = []
+    packets = fields = garbage_bytes = offset = 0
+    false_syncs: list[int] = []
     for i in range(count):
         group, nfields = groups[i % len(groups)]
         if with_garbage:
             g = garbage(rng)
-            if g.startswith(SYNC):
-                false_syncs.append(size)
+            if g[:2] == SYNC:
+                false_syncs.append(offset)
             parts.append(g)
+            offset += len(g)
             garbage_bytes += len(g)
-            size += len(g)
-        packet = group[rng.randrange(len(group))]
-        parts.append(packet)
-        size += len(packet)
+        parts.append(group[rng.randrange(len(group))])
+        offset += len(parts[-1])
         packets += 1
         fields += nfields
     buf = bytearray(b"".join(parts))
-    fix_false_syncs(buf, false_syncs)
+    if with_garbage:
+        defuse_false_syncs(buf, false_syncs)
+    buf = bytes(buf)
     (out / f"{name}.bin").write_bytes(buf)
     meta = {
         "name": name,
