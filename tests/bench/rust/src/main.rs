@@ -1,7 +1,7 @@
 //! Plain benchmark runner: `mipcodec-bench DIR [PASSES [STREAM...]]` loads the streams of DIR
-//! (all four by default; written by
-//! `tests/bench/streams.py`), checks the counts of every pass against the sidecars and prints
-//! one line per stream and mode for `tests/bench/run.py`:
+//! (written by `tests/bench/streams.py`; all four unless STREAMs are named), checks the counts
+//! of every pass against the sidecars and prints one line per stream and mode for
+//! `tests/bench/run.py`:
 //!   BENCH lang=rust stream=NAME mode=frame|decode packets=N bytes=B seconds=BEST
 //! where BEST is the fastest of PASSES (default 5) passes over the in-memory stream.
 //! Exits non-zero if a stream is missing or a count does not match.
