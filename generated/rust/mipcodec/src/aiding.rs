@@ -40,6 +40,10 @@ impl crate::wire::Wire for FrameConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -229,6 +233,10 @@ impl crate::wire::Wire for FrameConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_format = <crate::types::AidingFrameFormat as crate::wire::Wire>::decode(r)
@@ -356,6 +364,10 @@ impl crate::wire::Wire for EchoControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -448,6 +460,10 @@ impl crate::wire::Wire for EchoControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::AidingEchoMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -523,6 +539,10 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(49);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -659,6 +679,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(49);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -811,6 +835,10 @@ impl crate::wire::Wire for HeightAboveEllipsoid {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -937,6 +965,10 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1067,6 +1099,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1197,6 +1233,10 @@ impl crate::wire::Wire for BodyFrameVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1327,6 +1367,10 @@ impl crate::wire::Wire for TrueHeading {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1453,6 +1497,10 @@ impl crate::wire::Wire for MagneticField {
     };
     const FIXED_SIZE: Option<usize> = Some(37);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;
@@ -1589,6 +1637,10 @@ impl crate::wire::Wire for Pressure {
     };
     const FIXED_SIZE: Option<usize> = Some(21);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time =
             <crate::types::AidingTime as crate::wire::Wire>::decode(r).map_err(|e| e.at("time"))?;

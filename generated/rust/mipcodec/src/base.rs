@@ -20,6 +20,10 @@ impl crate::wire::Wire for Ping {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -67,6 +71,10 @@ impl crate::wire::Wire for SetToIdle {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -114,6 +122,10 @@ impl crate::wire::Wire for GetDeviceInfo {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -166,6 +178,10 @@ impl crate::wire::Wire for DeviceInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(82);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_info =
             <crate::types::DeviceInfo as crate::wire::Wire>::decode(r).map_err(|e| e.at("info"))?;
@@ -224,6 +240,10 @@ impl crate::wire::Wire for GetDeviceDescriptors {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -276,6 +296,10 @@ impl crate::wire::Wire for DeviceDescriptors {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptors = crate::bounded::BoundedVec::<u16, 126>::decode_remaining(r)
             .map_err(|e| e.at("descriptors"))?;
@@ -338,6 +362,10 @@ impl crate::wire::Wire for BuiltInTest {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -390,6 +418,10 @@ impl crate::wire::Wire for BuiltInTestResultGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_flags = <crate::types::Gx5BitFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("flags"))?;
@@ -453,6 +485,10 @@ impl crate::wire::Wire for BuiltInTestResultCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_flags = <crate::types::Cv7BitFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("flags"))?;
@@ -601,6 +637,10 @@ impl crate::wire::Wire for Resume {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -648,6 +688,10 @@ impl crate::wire::Wire for GetExtendedDescriptors {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -700,6 +744,10 @@ impl crate::wire::Wire for ExtendedDescriptors {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptors = crate::bounded::BoundedVec::<u16, 126>::decode_remaining(r)
             .map_err(|e| e.at("descriptors"))?;
@@ -762,6 +810,10 @@ impl crate::wire::Wire for ContinuousBit {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -814,6 +866,10 @@ impl crate::wire::Wire for ContinuousBitResult {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_result = <crate::types::Cv7ContinuousBit as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("result"))?;
@@ -883,6 +939,10 @@ impl crate::wire::Wire for CommPortSpeed {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -981,6 +1041,10 @@ impl crate::wire::Wire for CommPortSpeedResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_port = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("port"))?;
         let p_baud = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("baud"))?;
@@ -1059,6 +1123,10 @@ impl crate::wire::Wire for GpsTimeUpdateGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1164,6 +1232,10 @@ impl crate::wire::Wire for GpsTimeUpdateCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1343,6 +1415,10 @@ impl crate::wire::Wire for GpsWeek {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_week = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("week"))?;
         Ok(Self { week: p_week })
@@ -1402,6 +1478,10 @@ impl crate::wire::Wire for GpsSeconds {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_seconds = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("seconds"))?;
         Ok(Self { seconds: p_seconds })
@@ -1456,6 +1536,10 @@ impl crate::wire::Wire for DeviceReset {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})

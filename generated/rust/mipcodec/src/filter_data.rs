@@ -34,6 +34,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_latitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("latitude"))?;
         let p_longitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("longitude"))?;
@@ -144,6 +148,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_north = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("north"))?;
         let p_east = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("east"))?;
@@ -241,6 +249,10 @@ impl crate::wire::Wire for AttitudeQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(18);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -320,6 +332,10 @@ impl crate::wire::Wire for AttitudeDcm {
     };
     const FIXED_SIZE: Option<usize> = Some(38);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dcm = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("dcm"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -405,6 +421,10 @@ impl crate::wire::Wire for EulerAngles {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -502,6 +522,10 @@ impl crate::wire::Wire for GyroBias {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -581,6 +605,10 @@ impl crate::wire::Wire for AccelBias {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -666,6 +694,10 @@ impl crate::wire::Wire for LlhPositionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_north = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("north"))?;
         let p_east = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("east"))?;
@@ -769,6 +801,10 @@ impl crate::wire::Wire for NedVelocityUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_north = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("north"))?;
         let p_east = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("east"))?;
@@ -872,6 +908,10 @@ impl crate::wire::Wire for EulerAnglesUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -969,6 +1009,10 @@ impl crate::wire::Wire for GyroBiasUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias_uncertainty"))?;
@@ -1052,6 +1096,10 @@ impl crate::wire::Wire for AccelBiasUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias_uncertainty"))?;
@@ -1135,6 +1183,10 @@ impl crate::wire::Wire for LinearAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_accel = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("accel"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1214,6 +1266,10 @@ impl crate::wire::Wire for CompAngularRate {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gyro = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("gyro"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1293,6 +1349,10 @@ impl crate::wire::Wire for Wgs84GravityMagnitude {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gravity_magnitude =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gravity_magnitude"))?;
@@ -1379,6 +1439,10 @@ impl crate::wire::Wire for FilterStatusGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_filter_state = <crate::types::FilterStateGx5 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("filter_state"))?;
@@ -1478,6 +1542,10 @@ impl crate::wire::Wire for FilterStatusCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_filter_state = <crate::types::FilterModeCv7 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("filter_state"))?;
@@ -1667,6 +1735,10 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -1759,6 +1831,10 @@ impl crate::wire::Wire for QuaternionAttitudeUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(18);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1838,6 +1914,10 @@ impl crate::wire::Wire for GravityVector {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gravity = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("gravity"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -1926,6 +2006,10 @@ impl crate::wire::Wire for HeadingUpdateState {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_heading = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("heading"))?;
         let p_heading_uncertainty =
@@ -2047,6 +2131,10 @@ impl crate::wire::Wire for MagneticModel {
     };
     const FIXED_SIZE: Option<usize> = Some(22);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_intensity_north =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("intensity_north"))?;
@@ -2192,6 +2280,10 @@ impl crate::wire::Wire for GyroScaleFactor {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scale_factor"))?;
@@ -2275,6 +2367,10 @@ impl crate::wire::Wire for AccelScaleFactor {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scale_factor"))?;
@@ -2358,6 +2454,10 @@ impl crate::wire::Wire for GyroScaleFactorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("scale_factor_uncertainty"))?;
@@ -2441,6 +2541,10 @@ impl crate::wire::Wire for AccelScaleFactorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("scale_factor_uncertainty"))?;
@@ -2524,6 +2628,10 @@ impl crate::wire::Wire for CompensatedAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_accel = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("accel"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -2615,6 +2723,10 @@ impl crate::wire::Wire for StandardAtmosphere {
     };
     const FIXED_SIZE: Option<usize> = Some(22);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_geometric_altitude =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("geometric_altitude"))?;
@@ -2752,6 +2864,10 @@ impl crate::wire::Wire for PressureAltitude {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pressure_altitude =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pressure_altitude"))?;
@@ -2835,6 +2951,10 @@ impl crate::wire::Wire for MagAutoHardIronOffset {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_hard_iron_offset =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("hard_iron_offset"))?;
@@ -2918,6 +3038,10 @@ impl crate::wire::Wire for MagAutoSoftIronMatrix {
     };
     const FIXED_SIZE: Option<usize> = Some(38);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_soft_iron_matrix =
             <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("soft_iron_matrix"))?;
@@ -3001,6 +3125,10 @@ impl crate::wire::Wire for MagAutoHardIronOffsetUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_hard_iron_offset_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("hard_iron_offset_uncertainty"))?;
@@ -3084,6 +3212,10 @@ impl crate::wire::Wire for MagAutoSoftIronMatrixUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(38);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_soft_iron_matrix_uncertainty = <[f32; 9] as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("soft_iron_matrix_uncertainty"))?;
@@ -3167,6 +3299,10 @@ impl crate::wire::Wire for GnssAntennaOffsetCorrection {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         let p_valid_flags = <crate::types::FilterOutputValidFlags as crate::wire::Wire>::decode(r)
@@ -3249,6 +3385,10 @@ impl crate::wire::Wire for GnssAntennaOffsetCorrectionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset_uncertainty"))?;
@@ -3335,6 +3475,10 @@ impl crate::wire::Wire for MultiAntennaOffsetCorrection {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -3430,6 +3574,10 @@ impl crate::wire::Wire for MultiAntennaOffsetCorrectionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -3524,6 +3672,10 @@ impl crate::wire::Wire for EcefPositionUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_position_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("position_uncertainty"))?;
@@ -3607,6 +3759,10 @@ impl crate::wire::Wire for EcefVelocityUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity_uncertainty =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity_uncertainty"))?;
@@ -3690,6 +3846,10 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_position =
             <[f64; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("position"))?;
@@ -3773,6 +3933,10 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -3856,6 +4020,10 @@ impl crate::wire::Wire for NedRelativePosition {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_relative_position =
             <[f64; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("relative_position"))?;
@@ -3945,6 +4113,10 @@ impl crate::wire::Wire for GnssPositionAidingStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -4057,6 +4229,10 @@ impl crate::wire::Wire for AidingMeasurementSummary {
     };
     const FIXED_SIZE: Option<usize> = Some(7);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time_of_week =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_of_week"))?;
@@ -4160,6 +4336,10 @@ impl crate::wire::Wire for OdometerScaleFactorError {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_error =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("scale_factor_error"))?;
@@ -4243,6 +4423,10 @@ impl crate::wire::Wire for OdometerScaleFactorErrorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scale_factor_error_uncertainty = <f32 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("scale_factor_error_uncertainty"))?;
@@ -4338,6 +4522,10 @@ impl crate::wire::Wire for GnssDualAntennaStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(17);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time_of_week =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_of_week"))?;
@@ -4483,6 +4671,10 @@ impl crate::wire::Wire for AidingFrameConfigError {
     };
     const FIXED_SIZE: Option<usize> = Some(29);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_translation =
@@ -4578,6 +4770,10 @@ impl crate::wire::Wire for AidingFrameConfigErrorUncertainty {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_frame_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("frame_id"))?;
         let p_translation_uncertainty = <[f32; 3] as crate::wire::Wire>::decode(r)

@@ -20,6 +20,10 @@ impl crate::wire::Wire for ReceiverInfo {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -75,6 +79,10 @@ impl crate::wire::Wire for ReceiverInfoResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_receivers =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_receivers"))?;
@@ -172,6 +180,10 @@ impl crate::wire::Wire for SignalConfiguration {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -379,6 +391,10 @@ impl crate::wire::Wire for SignalConfigurationResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gps_enable = <crate::types::GnssGpsSignals as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("gps_enable"))?;
@@ -530,6 +546,10 @@ impl crate::wire::Wire for SpartnConfiguration {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -806,6 +826,10 @@ impl crate::wire::Wire for SpartnConfigurationResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(78);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         let p_type = <crate::types::SpartnConnectionType as crate::wire::Wire>::decode(r)

@@ -43,6 +43,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(42);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_latitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("latitude"))?;
         let p_longitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("longitude"))?;
@@ -194,6 +198,10 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(30);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_position =
             <[f64; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("position"))?;
@@ -306,6 +314,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(34);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -461,6 +473,10 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(18);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -576,6 +592,10 @@ impl crate::wire::Wire for Dop {
     };
     const FIXED_SIZE: Option<usize> = Some(30);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gdop = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gdop"))?;
         let p_pdop = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pdop"))?;
@@ -739,6 +759,10 @@ impl crate::wire::Wire for UtcTime {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_year = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("year"))?;
         let p_month = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("month"))?;
@@ -892,6 +916,10 @@ impl crate::wire::Wire for GpsTime {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -990,6 +1018,10 @@ impl crate::wire::Wire for ClockInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(26);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         let p_drift = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("drift"))?;
@@ -1098,6 +1130,10 @@ impl crate::wire::Wire for FixInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_fix_type = <crate::types::GnssFixTypeGx5 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("fix_type"))?;
@@ -1218,6 +1254,10 @@ impl crate::wire::Wire for SvInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_channel = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("channel"))?;
         let p_sv_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("sv_id"))?;
@@ -1367,6 +1407,10 @@ impl crate::wire::Wire for HardwareStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_state = <crate::types::GnssReceiverState as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("receiver_state"))?;
@@ -1494,6 +1538,10 @@ impl crate::wire::Wire for DgnssInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_newest_age = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("newest_age"))?;
         let p_base_station_id =
@@ -1631,6 +1679,10 @@ impl crate::wire::Wire for DgnssChannelStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sv_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("sv_id"))?;
         let p_age = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("age"))?;

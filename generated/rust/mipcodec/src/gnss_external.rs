@@ -43,6 +43,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(42);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_latitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("latitude"))?;
         let p_longitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("longitude"))?;
@@ -206,6 +210,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(34);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -376,6 +384,10 @@ impl crate::wire::Wire for UtcTime {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_year = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("year"))?;
         let p_month = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("month"))?;
@@ -532,6 +544,10 @@ impl crate::wire::Wire for FixInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_fix_type = <crate::types::GnssFixTypeCv7 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("fix_type"))?;
@@ -661,6 +677,10 @@ impl crate::wire::Wire for SatelliteStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;

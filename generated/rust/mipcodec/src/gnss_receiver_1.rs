@@ -43,6 +43,10 @@ impl crate::wire::Wire for LlhPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(42);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_latitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("latitude"))?;
         let p_longitude = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("longitude"))?;
@@ -194,6 +198,10 @@ impl crate::wire::Wire for EcefPosition {
     };
     const FIXED_SIZE: Option<usize> = Some(30);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_position =
             <[f64; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("position"))?;
@@ -306,6 +314,10 @@ impl crate::wire::Wire for NedVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(34);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -461,6 +473,10 @@ impl crate::wire::Wire for EcefVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(18);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("velocity"))?;
@@ -576,6 +592,10 @@ impl crate::wire::Wire for Dop {
     };
     const FIXED_SIZE: Option<usize> = Some(30);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gdop = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("gdop"))?;
         let p_pdop = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pdop"))?;
@@ -739,6 +759,10 @@ impl crate::wire::Wire for UtcTime {
     };
     const FIXED_SIZE: Option<usize> = Some(13);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_year = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("year"))?;
         let p_month = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("month"))?;
@@ -892,6 +916,10 @@ impl crate::wire::Wire for GpsTime {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -990,6 +1018,10 @@ impl crate::wire::Wire for FixInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_fix_type = <crate::types::GnssFixTypeCv7 as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("fix_type"))?;
@@ -1101,6 +1133,10 @@ impl crate::wire::Wire for HardwareStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_state = <crate::types::GnssReceiverState as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("receiver_state"))?;
@@ -1228,6 +1264,10 @@ impl crate::wire::Wire for ClockInfo2 {
     };
     const FIXED_SIZE: Option<usize> = Some(34);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         let p_drift = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("drift"))?;
@@ -1352,6 +1392,10 @@ impl crate::wire::Wire for GpsLeapSeconds {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_leap_seconds =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("leap_seconds"))?;
@@ -1451,6 +1495,10 @@ impl crate::wire::Wire for SbasInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -1622,6 +1670,10 @@ impl crate::wire::Wire for SatelliteStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(25);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
@@ -1851,6 +1903,10 @@ impl crate::wire::Wire for Raw {
     };
     const FIXED_SIZE: Option<usize> = Some(61);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
@@ -2254,6 +2310,10 @@ impl crate::wire::Wire for GpsEphemeris {
     };
     const FIXED_SIZE: Option<usize> = Some(218);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
@@ -2764,6 +2824,10 @@ impl crate::wire::Wire for GlonassEphemeris {
     };
     const FIXED_SIZE: Option<usize> = Some(102);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
@@ -3193,6 +3257,10 @@ impl crate::wire::Wire for GalileoEphemeris {
     };
     const FIXED_SIZE: Option<usize> = Some(218);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
@@ -3730,6 +3798,10 @@ impl crate::wire::Wire for BeidouEphemeris {
     };
     const FIXED_SIZE: Option<usize> = Some(218);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_index = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("index"))?;
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;

@@ -25,6 +25,10 @@ impl crate::wire::Wire for ScaledAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_accel =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_accel"))?;
@@ -92,6 +96,10 @@ impl crate::wire::Wire for ScaledGyro {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_gyro =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_gyro"))?;
@@ -159,6 +167,10 @@ impl crate::wire::Wire for ScaledMag {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_mag =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_mag"))?;
@@ -226,6 +238,10 @@ impl crate::wire::Wire for DeltaTheta {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_theta =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_theta"))?;
@@ -293,6 +309,10 @@ impl crate::wire::Wire for DeltaVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_velocity"))?;
@@ -360,6 +380,10 @@ impl crate::wire::Wire for CfOrientationMatrix {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_m = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("m"))?;
         Ok(Self { m: p_m })
@@ -419,6 +443,10 @@ impl crate::wire::Wire for CfQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         Ok(Self { q: p_q })
@@ -484,6 +512,10 @@ impl crate::wire::Wire for CfEulerAngles {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -565,6 +597,10 @@ impl crate::wire::Wire for CfStabilizedNorth {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_stabilized_north =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("stabilized_north"))?;
@@ -632,6 +668,10 @@ impl crate::wire::Wire for CfStabilizedUp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_stabilized_up =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("stabilized_up"))?;
@@ -705,6 +745,10 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -800,6 +844,10 @@ impl crate::wire::Wire for TemperatureStatistics {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_min_temp = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("min_temp"))?;
         let p_max_temp = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_temp"))?;
@@ -881,6 +929,10 @@ impl crate::wire::Wire for ScaledPressure {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_scaled_pressure =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("scaled_pressure"))?;
@@ -948,6 +1000,10 @@ impl crate::wire::Wire for OverrangeStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status = <crate::types::OverrangeStatusFlags as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("status"))?;
@@ -1017,6 +1073,10 @@ impl crate::wire::Wire for OdometerData {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_speed = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("speed"))?;
         let p_uncertainty =

@@ -25,6 +25,10 @@ impl crate::wire::Wire for EventSource {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_trigger_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("trigger_id"))?;
         Ok(Self {
@@ -94,6 +98,10 @@ impl crate::wire::Wire for GpsTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -184,6 +192,10 @@ impl crate::wire::Wire for DeltaTime {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_seconds = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("seconds"))?;
         Ok(Self { seconds: p_seconds })
@@ -243,6 +255,10 @@ impl crate::wire::Wire for ReferenceTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_nanoseconds =
             <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("nanoseconds"))?;
@@ -310,6 +326,10 @@ impl crate::wire::Wire for ReferenceTimeDelta {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dt_nanos = <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("dt_nanos"))?;
         Ok(Self {
@@ -376,6 +396,10 @@ impl crate::wire::Wire for ExternalTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_nanoseconds =
             <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("nanoseconds"))?;
@@ -460,6 +484,10 @@ impl crate::wire::Wire for ExternalTimeDelta {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dt_nanos = <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("dt_nanos"))?;
         let p_valid_flags =

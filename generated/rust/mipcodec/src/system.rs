@@ -28,6 +28,10 @@ impl crate::wire::Wire for CommunicationMode {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -120,6 +124,10 @@ impl crate::wire::Wire for CommunicationModeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::SystemCommMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;

@@ -25,6 +25,10 @@ impl crate::wire::Wire for BuiltInTest {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_result = <crate::types::Cv7ContinuousBit as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("result"))?;
@@ -91,6 +95,10 @@ impl crate::wire::Wire for TimeSyncStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_time_sync = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("time_sync"))?;
         let p_last_pps_rcvd =
@@ -167,6 +175,10 @@ impl crate::wire::Wire for GpioState {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_states = <crate::types::GpioPinStates as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("states"))?;

@@ -31,6 +31,10 @@ impl crate::wire::Wire for EventControl {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -135,6 +139,10 @@ impl crate::wire::Wire for EventControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_instance = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("instance"))?;
         let p_mode = <crate::types::EventControlMode as crate::wire::Wire>::decode(r)
@@ -214,6 +222,10 @@ impl crate::wire::Wire for GetEventTriggerStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_requested_count =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("requested_count"))?;
@@ -299,6 +311,10 @@ impl crate::wire::Wire for EventTriggerStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
         let p_triggers =
@@ -380,6 +396,10 @@ impl crate::wire::Wire for GetEventActionStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_requested_count =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("requested_count"))?;
@@ -465,6 +485,10 @@ impl crate::wire::Wire for EventActionStatus {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
         let p_actions =
@@ -552,6 +576,10 @@ impl crate::wire::Wire for EventTriggerConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -683,6 +711,10 @@ impl crate::wire::Wire for EventTriggerConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_instance = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("instance"))?;
         let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
@@ -784,6 +816,10 @@ impl crate::wire::Wire for EventActionConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -939,6 +975,10 @@ impl crate::wire::Wire for EventActionConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_instance = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("instance"))?;
         let p_trigger = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("trigger"))?;
@@ -1037,6 +1077,10 @@ impl crate::wire::Wire for DeviceStartupSettingsGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1104,6 +1148,10 @@ impl crate::wire::Wire for DeviceStartupSettingsCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1270,6 +1318,10 @@ impl crate::wire::Wire for SensorToVehicleEuler {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1398,6 +1450,10 @@ impl crate::wire::Wire for SensorToVehicleEulerResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_roll = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("roll"))?;
         let p_pitch = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch"))?;
@@ -1482,6 +1538,10 @@ impl crate::wire::Wire for SensorToVehicleQuaternion {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1568,6 +1628,10 @@ impl crate::wire::Wire for SensorToVehicleQuaternionResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_q = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("q"))?;
         Ok(Self { q: p_q })
@@ -1630,6 +1694,10 @@ impl crate::wire::Wire for SensorToVehicleDcm {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1716,6 +1784,10 @@ impl crate::wire::Wire for SensorToVehicleDcmResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_dcm = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("dcm"))?;
         Ok(Self { dcm: p_dcm })
@@ -1778,6 +1850,10 @@ impl crate::wire::Wire for AccelBiasGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -1867,6 +1943,10 @@ impl crate::wire::Wire for AccelBiasCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2041,6 +2121,10 @@ impl crate::wire::Wire for AccelBiasResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         Ok(Self { bias: p_bias })
@@ -2103,6 +2187,10 @@ impl crate::wire::Wire for GyroBiasGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2192,6 +2280,10 @@ impl crate::wire::Wire for GyroBiasCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2366,6 +2458,10 @@ impl crate::wire::Wire for GyroBiasResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_bias = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("bias"))?;
         Ok(Self { bias: p_bias })
@@ -2425,6 +2521,10 @@ impl crate::wire::Wire for CaptureGyroBias {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_averaging_time_ms =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("averaging_time_ms"))?;
@@ -2495,6 +2595,10 @@ impl crate::wire::Wire for MagHardIronOffsetGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2587,6 +2691,10 @@ impl crate::wire::Wire for MagHardIronOffsetCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2766,6 +2874,10 @@ impl crate::wire::Wire for MagHardIronOffsetResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_offset = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("offset"))?;
         Ok(Self { offset: p_offset })
@@ -2831,6 +2943,10 @@ impl crate::wire::Wire for MagSoftIronMatrixGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -2923,6 +3039,10 @@ impl crate::wire::Wire for MagSoftIronMatrixCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3102,6 +3222,10 @@ impl crate::wire::Wire for MagSoftIronMatrixResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(36);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_matrix = <[f32; 9] as crate::wire::Wire>::decode(r).map_err(|e| e.at("matrix"))?;
         Ok(Self { matrix: p_matrix })
@@ -3167,6 +3291,10 @@ impl crate::wire::Wire for ConingScullingEnable {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3253,6 +3381,10 @@ impl crate::wire::Wire for ConingScullingEnableResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
         Ok(Self { enable: p_enable })
@@ -3315,6 +3447,10 @@ impl crate::wire::Wire for UartBaudrate {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3401,6 +3537,10 @@ impl crate::wire::Wire for UartBaudrateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_baud = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("baud"))?;
         Ok(Self { baud: p_baud })
@@ -3472,6 +3612,10 @@ impl crate::wire::Wire for GpioConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3631,6 +3775,10 @@ impl crate::wire::Wire for GpioConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_feature = <crate::types::GpioFeature as crate::wire::Wire>::decode(r)
@@ -3739,6 +3887,10 @@ impl crate::wire::Wire for GpioState {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -3837,6 +3989,10 @@ impl crate::wire::Wire for GpioStateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_state = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("state"))?;
@@ -3918,6 +4074,10 @@ impl crate::wire::Wire for OdometerConfig {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4055,6 +4215,10 @@ impl crate::wire::Wire for OdometerConfigResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(9);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mode = <crate::types::OdometerMode as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("mode"))?;
@@ -4159,6 +4323,10 @@ impl crate::wire::Wire for AdvancedLowpassFilter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4334,6 +4502,10 @@ impl crate::wire::Wire for AdvancedLowpassFilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_target_descriptor =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("target_descriptor"))?;
@@ -4458,6 +4630,10 @@ impl crate::wire::Wire for ComplementaryFilter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4631,6 +4807,10 @@ impl crate::wire::Wire for ComplementaryFilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pitch_roll_enable =
             <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("pitch_roll_enable"))?;
@@ -4751,6 +4931,10 @@ impl crate::wire::Wire for SensorRange {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -4853,6 +5037,10 @@ impl crate::wire::Wire for SensorRangeResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensor = <crate::types::SensorRangeType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("sensor"))?;
@@ -4929,6 +5117,10 @@ impl crate::wire::Wire for GetCalibratedSensorRanges {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensor = <crate::types::SensorRangeType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("sensor"))?;
@@ -4998,6 +5190,10 @@ impl crate::wire::Wire for CalibratedSensorRanges {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_sensor = <crate::types::SensorRangeType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("sensor"))?;
@@ -5104,6 +5300,10 @@ impl crate::wire::Wire for LowpassFilter {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -5266,6 +5466,10 @@ impl crate::wire::Wire for LowpassFilterResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_field_desc = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("field_desc"))?;
@@ -5374,6 +5578,10 @@ impl crate::wire::Wire for PollImuData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::Gx5PollOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -5475,6 +5683,10 @@ impl crate::wire::Wire for PollGnssData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::Gx5PollOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -5576,6 +5788,10 @@ impl crate::wire::Wire for PollFilterData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::Gx5PollOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -5678,6 +5894,10 @@ impl crate::wire::Wire for PollNmeaData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_suppress_ack =
             <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("suppress_ack"))?;
@@ -5778,6 +5998,10 @@ impl crate::wire::Wire for PollData {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_suppress_ack =
@@ -5880,6 +6104,10 @@ impl crate::wire::Wire for GetImuBaseRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -5932,6 +6160,10 @@ impl crate::wire::Wire for ImuBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -5986,6 +6218,10 @@ impl crate::wire::Wire for GetGnssBaseRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -6038,6 +6274,10 @@ impl crate::wire::Wire for GnssBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -6092,6 +6332,10 @@ impl crate::wire::Wire for GetFilterBaseRate {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -6144,6 +6388,10 @@ impl crate::wire::Wire for FilterBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
         Ok(Self { rate: p_rate })
@@ -6203,6 +6451,10 @@ impl crate::wire::Wire for GetBaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         Ok(Self {
@@ -6269,6 +6521,10 @@ impl crate::wire::Wire for BaseRate {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_rate = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("rate"))?;
@@ -6347,6 +6603,10 @@ impl crate::wire::Wire for ImuMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6445,6 +6705,10 @@ impl crate::wire::Wire for ImuMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_descriptors =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
@@ -6533,6 +6797,10 @@ impl crate::wire::Wire for GnssMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6631,6 +6899,10 @@ impl crate::wire::Wire for GnssMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_descriptors =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
@@ -6719,6 +6991,10 @@ impl crate::wire::Wire for FilterMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -6817,6 +7093,10 @@ impl crate::wire::Wire for FilterMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_num_descriptors =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
@@ -6905,6 +7185,10 @@ impl crate::wire::Wire for NmeaMessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7020,6 +7304,10 @@ impl crate::wire::Wire for NmeaMessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_count = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("count"))?;
         let p_format_entries =
@@ -7107,6 +7395,10 @@ impl crate::wire::Wire for MessageFormat {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7239,6 +7531,10 @@ impl crate::wire::Wire for MessageFormatResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_num_descriptors =
@@ -7333,6 +7629,10 @@ impl crate::wire::Wire for FactoryStreaming {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_action = <crate::types::FactoryStreamingAction as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("action"))?;
@@ -7415,6 +7715,10 @@ impl crate::wire::Wire for DataStreamControlGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7510,6 +7814,10 @@ impl crate::wire::Wire for DataStreamControlCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -7698,6 +8006,10 @@ impl crate::wire::Wire for DataStreamControlResponseGx5_45 {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_device_selector = <crate::types::Gx5StreamSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("device_selector"))?;
@@ -7777,6 +8089,10 @@ impl crate::wire::Wire for DataStreamControlResponseCv7Ins {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_enabled = <bool as crate::wire::Wire>::decode(r).map_err(|e| e.at("enabled"))?;
@@ -7940,6 +8256,10 @@ impl crate::wire::Wire for RawRtcmMessage {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_data =
             crate::bounded::BoundedVec::<u8, 253>::decode_remaining(r).map_err(|e| e.at("data"))?;
@@ -8012,6 +8332,10 @@ impl crate::wire::Wire for GnssConstellationSettings {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8132,6 +8456,10 @@ impl crate::wire::Wire for GnssConstellationSettingsResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_max_channels_available =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_channels_available"))?;
@@ -8260,6 +8588,10 @@ impl crate::wire::Wire for GnssSbasSettings {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8437,6 +8769,10 @@ impl crate::wire::Wire for GnssSbasSettingsResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_enable_sbas =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable_sbas"))?;
@@ -8558,6 +8894,10 @@ impl crate::wire::Wire for GnssAssistedFixControl {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8650,6 +8990,10 @@ impl crate::wire::Wire for GnssAssistedFixControlResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_option = <crate::types::AssistedFixOption as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("option"))?;
@@ -8735,6 +9079,10 @@ impl crate::wire::Wire for GnssAssistTimeUpdate {
     };
     const FIXED_SIZE: Option<usize> = Some(15);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -8839,6 +9187,10 @@ impl crate::wire::Wire for GnssAssistTimeUpdateResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(14);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
         let p_week_number =
@@ -8927,6 +9279,10 @@ impl crate::wire::Wire for PpsSource {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
@@ -9019,6 +9375,10 @@ impl crate::wire::Wire for PpsSourceResponse {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_source = <crate::types::PpsSource as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("source"))?;
@@ -9082,6 +9442,10 @@ impl crate::wire::Wire for GetSupportedEvents {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_query = <crate::types::SupportedEventsQuery as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("query"))?;
@@ -9148,6 +9512,10 @@ impl crate::wire::Wire for SupportedEvents {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_query = <crate::types::SupportedEventsQuery as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("query"))?;
@@ -9231,6 +9599,10 @@ impl crate::wire::Wire for DeviceStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_model_number =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("model_number"))?;
@@ -9318,6 +9690,10 @@ impl crate::wire::Wire for DeviceStatusResponse {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_model_number =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("model_number"))?;

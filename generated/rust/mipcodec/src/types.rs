@@ -65,6 +65,7 @@ impl crate::wire::Wire for AckCode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -153,6 +154,7 @@ impl crate::wire::Wire for ActionGpioMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -203,6 +205,10 @@ impl crate::wire::Wire for ActionGpioParams {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_mode = <crate::types::ActionGpioMode as crate::wire::Wire>::decode(r)
@@ -367,6 +373,10 @@ impl crate::wire::Wire for ActionStatusEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_action_type = <crate::types::ActionType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("action_type"))?;
@@ -462,6 +472,7 @@ impl crate::wire::Wire for ActionType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -542,6 +553,7 @@ impl crate::wire::Wire for AdaptiveFilterLevel {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -618,6 +630,7 @@ impl crate::wire::Wire for AdaptiveMeasurementMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -694,6 +707,7 @@ impl crate::wire::Wire for AidingEchoMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -741,6 +755,10 @@ impl crate::wire::Wire for AidingFrameEuler {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_euler = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("euler"))?;
         Ok(Self { euler: p_euler })
@@ -815,6 +833,7 @@ impl crate::wire::Wire for AidingFrameFormat {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -862,6 +881,10 @@ impl crate::wire::Wire for AidingFrameQuaternion {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_quaternion =
             <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("quaternion"))?;
@@ -1050,6 +1073,7 @@ impl crate::wire::Wire for AidingLlhValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1146,6 +1170,7 @@ impl crate::wire::Wire for AidingMeasurementSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1199,6 +1224,10 @@ impl crate::wire::Wire for AidingTime {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_timebase = <crate::types::AidingTimebase as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("timebase"))?;
@@ -1307,6 +1336,7 @@ impl crate::wire::Wire for AidingTimebase {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1396,6 +1426,7 @@ impl crate::wire::Wire for AidingVectorValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1460,6 +1491,7 @@ impl crate::wire::Wire for AltitudeAidingSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1532,6 +1564,7 @@ impl crate::wire::Wire for AssistedFixOption {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1582,6 +1615,10 @@ impl crate::wire::Wire for CombinationParams {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_logic_table =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("logic_table"))?;
@@ -1662,6 +1699,7 @@ impl crate::wire::Wire for ConstellationOptions {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -1713,6 +1751,10 @@ impl crate::wire::Wire for ConstellationSettings {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_constellation_id = <crate::types::Gx5ConstellationId as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("constellation_id"))?;
@@ -2073,6 +2115,7 @@ impl crate::wire::Wire for Cv7BitFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u32 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u32 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -2157,6 +2200,10 @@ impl crate::wire::Wire for Cv7ContinuousBit {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_system_byte_0 =
             <crate::types::Cv7ContinuousBitSystem0 as crate::wire::Wire>::decode(r)
@@ -2534,6 +2581,7 @@ impl crate::wire::Wire for Cv7ContinuousBitGnss13 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -2611,6 +2659,7 @@ impl crate::wire::Wire for Cv7ContinuousBitGnss14 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -2772,6 +2821,7 @@ impl crate::wire::Wire for Cv7ContinuousBitImu4 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -2933,6 +2983,7 @@ impl crate::wire::Wire for Cv7ContinuousBitImu5 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3094,6 +3145,7 @@ impl crate::wire::Wire for Cv7ContinuousBitImu6 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3155,6 +3207,7 @@ impl crate::wire::Wire for Cv7ContinuousBitImu7 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3264,6 +3317,7 @@ impl crate::wire::Wire for Cv7ContinuousBitNav8 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3405,6 +3459,7 @@ impl crate::wire::Wire for Cv7ContinuousBitSystem0 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3578,6 +3633,7 @@ impl crate::wire::Wire for Cv7ContinuousBitSystem2 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3699,6 +3755,7 @@ impl crate::wire::Wire for Cv7ContinuousBitSystem3 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -3741,6 +3798,10 @@ impl crate::wire::Wire for DescriptorRate {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptor = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("descriptor"))?;
         let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
@@ -3818,6 +3879,10 @@ impl crate::wire::Wire for DeviceInfo {
     };
     const FIXED_SIZE: Option<usize> = Some(82);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_firmware_version =
             <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("firmware_version"))?;
@@ -3975,6 +4040,7 @@ impl crate::wire::Wire for DeviceStatusSelector {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4140,6 +4206,7 @@ impl crate::wire::Wire for EstimationControlFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4212,6 +4279,7 @@ impl crate::wire::Wire for EventControlMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4284,6 +4352,7 @@ impl crate::wire::Wire for ExternalHeadingType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4353,6 +4422,7 @@ impl crate::wire::Wire for ExternalTimeDeltaValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4414,6 +4484,7 @@ impl crate::wire::Wire for ExternalTimestampValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4482,6 +4553,7 @@ impl crate::wire::Wire for FactoryStreamingAction {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4619,6 +4691,7 @@ impl crate::wire::Wire for FilterAidingMeasurementIndicator {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4735,6 +4808,7 @@ impl crate::wire::Wire for FilterAidingMeasurementType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4811,6 +4885,7 @@ impl crate::wire::Wire for FilterDualAntennaFixType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4900,6 +4975,7 @@ impl crate::wire::Wire for FilterDualAntennaStatusFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -4960,6 +5036,7 @@ impl crate::wire::Wire for FilterDynamicsModeCv7 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5036,6 +5113,7 @@ impl crate::wire::Wire for FilterDynamicsModeGx5 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5333,6 +5411,7 @@ impl crate::wire::Wire for FilterGnssAidingStatusFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5405,6 +5484,7 @@ impl crate::wire::Wire for FilterGnssSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5494,6 +5574,7 @@ impl crate::wire::Wire for FilterHeadingSourceFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5543,6 +5624,7 @@ impl crate::wire::Wire for FilterHeadingUpdateValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5615,6 +5697,7 @@ impl crate::wire::Wire for FilterInitialConditionSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5695,6 +5778,7 @@ impl crate::wire::Wire for FilterModeCv7 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5752,6 +5836,7 @@ impl crate::wire::Wire for FilterOutputValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5816,6 +5901,7 @@ impl crate::wire::Wire for FilterReferenceFrame {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -5896,6 +5982,7 @@ impl crate::wire::Wire for FilterStateGx5 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -6121,6 +6208,7 @@ impl crate::wire::Wire for FilterStatusFlagsCv7 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -6442,6 +6530,7 @@ impl crate::wire::Wire for FilterStatusFlagsGx5 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -6522,6 +6611,7 @@ impl crate::wire::Wire for FunctionSelector {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -6598,6 +6688,7 @@ impl crate::wire::Wire for GnssAntennaPower {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -6682,6 +6773,7 @@ impl crate::wire::Wire for GnssAntennaState {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -6875,6 +6967,7 @@ impl crate::wire::Wire for GnssBaseStationIndicators {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7028,6 +7121,7 @@ impl crate::wire::Wire for GnssBaseStationInfoValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7109,6 +7203,7 @@ impl crate::wire::Wire for GnssBeidouSignals {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7230,6 +7325,7 @@ impl crate::wire::Wire for GnssClockInfo2ValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7323,6 +7419,7 @@ impl crate::wire::Wire for GnssClockInfoValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7403,6 +7500,7 @@ impl crate::wire::Wire for GnssConstellationId {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7499,6 +7597,7 @@ impl crate::wire::Wire for GnssDgnssBaseStationStatus {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <i16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <i16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7616,6 +7715,7 @@ impl crate::wire::Wire for GnssDgnssChannelStatusValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7725,6 +7825,7 @@ impl crate::wire::Wire for GnssDgnssInfoValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7894,6 +7995,7 @@ impl crate::wire::Wire for GnssDopValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -7983,6 +8085,7 @@ impl crate::wire::Wire for GnssEcefPositionValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8072,6 +8175,7 @@ impl crate::wire::Wire for GnssEcefVelocityValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8177,6 +8281,7 @@ impl crate::wire::Wire for GnssEphemerisValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8254,6 +8359,7 @@ impl crate::wire::Wire for GnssFixFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8359,6 +8465,7 @@ impl crate::wire::Wire for GnssFixInfoValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8447,6 +8554,7 @@ impl crate::wire::Wire for GnssFixTypeCv7 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8531,6 +8639,7 @@ impl crate::wire::Wire for GnssFixTypeGx5 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8620,6 +8729,7 @@ impl crate::wire::Wire for GnssGalileoSignals {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8697,6 +8807,7 @@ impl crate::wire::Wire for GnssGlonassEphemerisValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8761,6 +8872,7 @@ impl crate::wire::Wire for GnssGlonassSatelliteType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8834,6 +8946,7 @@ impl crate::wire::Wire for GnssGlonassSignals {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -8915,6 +9028,7 @@ impl crate::wire::Wire for GnssGpsSignals {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9004,6 +9118,7 @@ impl crate::wire::Wire for GnssGpsTimeValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9109,6 +9224,7 @@ impl crate::wire::Wire for GnssHardwareStatusValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9186,6 +9302,7 @@ impl crate::wire::Wire for GnssLeapSecondsValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9323,6 +9440,7 @@ impl crate::wire::Wire for GnssLlhPositionValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9476,6 +9594,7 @@ impl crate::wire::Wire for GnssNedVelocityValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9777,6 +9896,7 @@ impl crate::wire::Wire for GnssRawValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -9822,6 +9942,10 @@ impl crate::wire::Wire for GnssReceiverInfoEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(34);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_receiver_id =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("receiver_id"))?;
@@ -9934,6 +10058,7 @@ impl crate::wire::Wire for GnssReceiverState {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10111,6 +10236,7 @@ impl crate::wire::Wire for GnssSatelliteStatusValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10264,6 +10390,7 @@ impl crate::wire::Wire for GnssSbasInfoValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10373,6 +10500,7 @@ impl crate::wire::Wire for GnssSbasStatus {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10449,6 +10577,7 @@ impl crate::wire::Wire for GnssSbasSystem {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10777,6 +10906,7 @@ impl crate::wire::Wire for GnssSignalId {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10865,6 +10995,7 @@ impl crate::wire::Wire for GnssSignalQuality {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -10950,6 +11081,7 @@ impl crate::wire::Wire for GnssSvFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -11107,6 +11239,7 @@ impl crate::wire::Wire for GnssSvInfoValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -11196,6 +11329,7 @@ impl crate::wire::Wire for GnssUtcTimeValidFlagsCv7 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -11273,6 +11407,7 @@ impl crate::wire::Wire for GnssUtcTimeValidFlagsGx5 {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -11437,6 +11572,10 @@ impl crate::wire::Wire for GpioBehaviorEncoder {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioEncoderBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11494,6 +11633,10 @@ impl crate::wire::Wire for GpioBehaviorIo {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioIoBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11551,6 +11694,10 @@ impl crate::wire::Wire for GpioBehaviorPps {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioPpsBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11608,6 +11755,10 @@ impl crate::wire::Wire for GpioBehaviorTimestamp {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioTimestampBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11665,6 +11816,10 @@ impl crate::wire::Wire for GpioBehaviorUart {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioUartBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11722,6 +11877,10 @@ impl crate::wire::Wire for GpioBehaviorUnused {
     };
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_behavior = <crate::types::GpioUnusedBehavior as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("behavior"))?;
@@ -11808,6 +11967,7 @@ impl crate::wire::Wire for GpioEncoderBehavior {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -11896,6 +12056,7 @@ impl crate::wire::Wire for GpioFeature {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -11976,6 +12137,7 @@ impl crate::wire::Wire for GpioIoBehavior {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12065,6 +12227,7 @@ impl crate::wire::Wire for GpioPinMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12174,6 +12337,7 @@ impl crate::wire::Wire for GpioPinStates {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12242,6 +12406,7 @@ impl crate::wire::Wire for GpioPpsBehavior {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12322,6 +12487,7 @@ impl crate::wire::Wire for GpioTimestampBehavior {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12406,6 +12572,7 @@ impl crate::wire::Wire for GpioUartBehavior {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12474,6 +12641,7 @@ impl crate::wire::Wire for GpioUnusedBehavior {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12546,6 +12714,7 @@ impl crate::wire::Wire for GpsTimeField {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12599,6 +12768,10 @@ impl crate::wire::Wire for Gx5BasicStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(10);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status_flags =
             <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("status_flags"))?;
@@ -12756,6 +12929,7 @@ impl crate::wire::Wire for Gx5BitFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u32 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u32 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -12836,6 +13010,7 @@ impl crate::wire::Wire for Gx5ConstellationId {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -13032,6 +13207,10 @@ impl crate::wire::Wire for Gx5DiagnosticStatus {
     };
     const FIXED_SIZE: Option<usize> = Some(70);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_status_flags =
             <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("status_flags"))?;
@@ -13377,6 +13556,10 @@ impl crate::wire::Wire for Gx5PollDescriptor {
     };
     const FIXED_SIZE: Option<usize> = Some(3);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_descriptor = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("descriptor"))?;
         let p_reserved = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("reserved"))?;
@@ -13464,6 +13647,7 @@ impl crate::wire::Wire for Gx5PollOption {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -13536,6 +13720,7 @@ impl crate::wire::Wire for Gx5StreamSelector {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -13641,6 +13826,7 @@ impl crate::wire::Wire for HeadingAlignmentMethods {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -13731,6 +13917,7 @@ impl crate::wire::Wire for HeadingUpdateSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -13807,6 +13994,7 @@ impl crate::wire::Wire for MagneticParamSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -13863,6 +14051,10 @@ impl crate::wire::Wire for MessageParams {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_decimation = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("decimation"))?;
@@ -13961,6 +14153,10 @@ impl crate::wire::Wire for NmeaMessage {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_message_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("message_id"))?;
         let p_talker_id = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("talker_id"))?;
@@ -14070,6 +14266,7 @@ impl crate::wire::Wire for OdometerDataValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14134,6 +14331,7 @@ impl crate::wire::Wire for OdometerMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14395,6 +14593,7 @@ impl crate::wire::Wire for OverrangeStatusFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14459,6 +14658,7 @@ impl crate::wire::Wire for PitchRollAidingSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14543,6 +14743,7 @@ impl crate::wire::Wire for PpsSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14611,6 +14812,7 @@ impl crate::wire::Wire for ReferencePointSelector {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14683,6 +14885,7 @@ impl crate::wire::Wire for RelativePositionSource {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -14880,6 +15083,7 @@ impl crate::wire::Wire for RtkCorrectionsEpochStatus {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15065,6 +15269,7 @@ impl crate::wire::Wire for RtkCorrectionsStatusValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15146,6 +15351,7 @@ impl crate::wire::Wire for SbasOptions {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15271,6 +15477,7 @@ impl crate::wire::Wire for SensorGpsTimestampFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15313,6 +15520,10 @@ impl crate::wire::Wire for SensorRangeEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(5);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_setting = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("setting"))?;
         let p_range = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("range"))?;
@@ -15412,6 +15623,7 @@ impl crate::wire::Wire for SensorRangeType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15509,6 +15721,7 @@ impl crate::wire::Wire for SharedGpsTimestampValidFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15577,6 +15790,7 @@ impl crate::wire::Wire for SpartnConnectionType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15627,6 +15841,10 @@ impl crate::wire::Wire for SupportedActionType {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_type =
             <crate::types::ActionType as crate::wire::Wire>::decode(r).map_err(|e| e.at("type"))?;
@@ -15699,6 +15917,10 @@ impl crate::wire::Wire for SupportedActions {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_max_instances =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_instances"))?;
@@ -15897,6 +16119,7 @@ impl crate::wire::Wire for SupportedEventsQuery {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -15947,6 +16170,10 @@ impl crate::wire::Wire for SupportedTriggerType {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("type"))?;
@@ -16019,6 +16246,10 @@ impl crate::wire::Wire for SupportedTriggers {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_max_instances =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_instances"))?;
@@ -16130,6 +16361,7 @@ impl crate::wire::Wire for SystemCommMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -16219,6 +16451,7 @@ impl crate::wire::Wire for TareAxes {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -16273,6 +16506,10 @@ impl crate::wire::Wire for ThresholdParams {
     };
     const FIXED_SIZE: Option<usize> = Some(20);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_desc_set = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("desc_set"))?;
         let p_field_desc = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("field_desc"))?;
@@ -16410,6 +16647,7 @@ impl crate::wire::Wire for ThresholdType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -16490,6 +16728,7 @@ impl crate::wire::Wire for TriggerGpioMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -16540,6 +16779,10 @@ impl crate::wire::Wire for TriggerGpioParams {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pin = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pin"))?;
         let p_mode = <crate::types::TriggerGpioMode as crate::wire::Wire>::decode(r)
@@ -16754,6 +16997,7 @@ impl crate::wire::Wire for TriggerStatus {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -16796,6 +17040,10 @@ impl crate::wire::Wire for TriggerStatusEntry {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_type = <crate::types::TriggerType as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("type"))?;
@@ -16899,6 +17147,7 @@ impl crate::wire::Wire for TriggerType {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -16979,6 +17228,7 @@ impl crate::wire::Wire for VehicleDynamicsMode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }

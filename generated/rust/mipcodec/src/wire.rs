@@ -15,35 +15,47 @@ pub struct Reader<'a> {
 
 impl<'a> Reader<'a> {
     /// A reader at the start of `data`.
+    #[inline(always)]
     pub const fn new(data: &'a [u8]) -> Self {
         Self { data, pos: 0 }
     }
 
     /// Offset of the next byte.
+    #[inline(always)]
     pub const fn pos(&self) -> usize {
         self.pos
     }
 
     /// Bytes left.
+    #[inline(always)]
     pub const fn left(&self) -> usize {
         self.data.len() - self.pos
     }
 
     /// The next `n` bytes, or a "needs n bytes" error.
+    #[inline(always)]
     pub fn take_slice(&mut self, n: usize) -> Result<&'a [u8], DecodeError> {
         if self.left() < n {
-            return Err(DecodeError::new(DecodeErrorKind::Short {
-                need: n,
-                offset: self.pos,
-                left: self.left(),
-            }));
+            return Err(self.short(n));
         }
         let out = &self.data[self.pos..self.pos + n];
         self.pos += n;
         Ok(out)
     }
 
+    // Off the hot path: decoding a well-formed field never gets here.
+    #[cold]
+    #[inline(never)]
+    fn short(&self, n: usize) -> DecodeError {
+        DecodeError::new(DecodeErrorKind::Short {
+            need: n,
+            offset: self.pos,
+            left: self.left(),
+        })
+    }
+
     /// The next `N` bytes as an array.
+    #[inline(always)]
     pub fn take<const N: usize>(&mut self) -> Result<[u8; N], DecodeError> {
         let mut out = [0u8; N];
         out.copy_from_slice(self.take_slice(N)?);
@@ -51,6 +63,7 @@ impl<'a> Reader<'a> {
     }
 
     /// Error if bytes are left after the last parameter.
+    #[inline]
     pub fn finish(&self) -> Result<(), DecodeError> {
         if self.left() > 0 {
             return Err(DecodeError::new(DecodeErrorKind::Unexpected {
@@ -123,7 +136,16 @@ pub trait Layout: Wire {
     const NAME: &'static str;
 
     /// Decodes the whole field data; bytes after the last parameter are an error.
+    #[inline(always)]
     fn decode_data(data: &[u8]) -> Result<Self, DecodeError> {
+        if let Some(size) = Self::FIXED_SIZE {
+            if size == data.len() {
+                // A fixed layout over exactly its size: every read is in bounds and nothing is
+                // left, so once `decode` is inlined its length checks fold into this one.
+                return Self::decode(&mut Reader::new(data));
+            }
+            return fixed_size_mismatch(data);
+        }
         let mut r = Reader::new(data);
         let value = Self::decode(&mut r)?;
         r.finish()?;
@@ -136,13 +158,26 @@ pub trait Layout: Wire {
     }
 }
 
+/// Field data whose length differs from its fixed layout's size: always an error, found by the
+/// checked decode so that it is the same error (and path) as for any other layout. Out of line,
+/// so that the straight-line path of [`Layout::decode_data`] stays small.
+#[cold]
+#[inline(never)]
+fn fixed_size_mismatch<T: Wire>(data: &[u8]) -> Result<T, DecodeError> {
+    let mut r = Reader::new(data);
+    let value = T::decode(&mut r)?;
+    r.finish()?;
+    Ok(value)
+}
+
 macro_rules! wire_int {
     ($($t:ty),*) => {$(
         impl Wire for $t {
             const ZERO: Self = 0;
             const FIXED_SIZE: Option<usize> = Some(core::mem::size_of::<$t>());
 
-            fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+            #[inline(always)]
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
                 let bytes = r.take::<{ core::mem::size_of::<$t>() }>()?;
                 Ok(if BIG_ENDIAN { <$t>::from_be_bytes(bytes) } else { <$t>::from_le_bytes(bytes) })
             }
@@ -164,6 +199,7 @@ impl Wire for f32 {
     const ZERO: Self = 0.0;
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    #[inline(always)]
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         // From the raw bits: NaN payloads are kept.
         u32::decode(r).map(f32::from_bits)
@@ -182,6 +218,7 @@ impl Wire for f64 {
     const ZERO: Self = 0.0;
     const FIXED_SIZE: Option<usize> = Some(8);
 
+    #[inline(always)]
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         u64::decode(r).map(f64::from_bits)
     }
@@ -199,6 +236,7 @@ impl Wire for bool {
     const ZERO: Self = false;
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline(always)]
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         let offset = r.pos();
         match r.take::<1>()?[0] {
@@ -228,6 +266,7 @@ impl Wire for Char {
     const ZERO: Self = Char(0);
     const FIXED_SIZE: Option<usize> = Some(1);
 
+    #[inline(always)]
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         Ok(Char(r.take::<1>()?[0]))
     }
@@ -290,6 +329,7 @@ impl<const N: usize> Wire for Str<N> {
     const ZERO: Self = Self([0; N]);
     const FIXED_SIZE: Option<usize> = Some(N);
 
+    #[inline(always)]
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         r.take::<N>().map(Self)
     }
@@ -310,6 +350,7 @@ impl<T: Wire, const N: usize> Wire for [T; N] {
         None => None,
     };
 
+    #[inline(always)]
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         let mut out = [T::ZERO; N];
         for (i, slot) in out.iter_mut().enumerate() {

@@ -103,6 +103,65 @@ fn fletcher16_matches_the_definition() {
     );
 }
 
+/// The block-wise checksum against the byte-serial definition at every length up to a maximum
+/// packet and past it (every block/remainder split), on bytes that fill the 16-bit lanes
+/// (all 0xFF) and on varied bytes.
+#[test]
+fn fletcher16_matches_the_definition_at_every_length() {
+    let mut x: u32 = 12345;
+    let varied: Vec<u8> = (0..MAX_PACKET + 40)
+        .map(|_| {
+            x = x.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            (x >> 16) as u8
+        })
+        .collect();
+    let ones = vec![0xFFu8; MAX_PACKET + 40];
+    for data in [&varied, &ones] {
+        for n in 0..=data.len() {
+            let (mut s1, mut s2) = (0u32, 0u32);
+            for &b in &data[..n] {
+                s1 = (s1 + u32::from(b)) % 256;
+                s2 = (s2 + s1) % 256;
+            }
+            assert_eq!(fletcher16(&data[..n]), (s1 as u8, s2 as u8), "length {n}");
+        }
+    }
+}
+
+/// Packets are checked in place in the caller's buffer and only a split candidate is buffered:
+/// the events must not depend on where the input is split, at every split point, for packets,
+/// garbage, a false sync whose length runs into the next packet and a partial sync.
+#[test]
+fn events_do_not_depend_on_the_split_point() {
+    let mut input = vec![filler(), filler()];
+    input.extend(sample());
+    input.extend(header(SET, 20));
+    input.push(filler());
+    input.extend(sample());
+    input.push(SYNC[0]);
+    input.extend(sample());
+    input.push(SYNC[0]);
+    let whole = events_in_chunks(&input, usize::MAX);
+    assert_eq!(
+        whole.iter().filter(|e| matches!(e, Ev::Packet(..))).count(),
+        3
+    );
+    for k in 0..=input.len() {
+        let mut parser = Parser::new();
+        let mut out = Vec::new();
+        let mut push = |e: Event<'_>| {
+            out.push(match e {
+                Event::Skip { offset, count } => Ev::Skip(offset, count),
+                Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
+            })
+        };
+        parser.feed(&input[..k], &mut push);
+        parser.feed(&input[k..], &mut push);
+        parser.flush(&mut push);
+        assert_eq!(out, whole, "split at {k}");
+    }
+}
+
 #[test]
 fn builder_frames_a_field() {
     let p = sample();

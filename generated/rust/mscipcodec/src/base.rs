@@ -20,6 +20,10 @@ impl crate::wire::Wire for Ping {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -67,6 +71,10 @@ impl crate::wire::Wire for GetDeviceMessages {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -120,6 +128,10 @@ impl crate::wire::Wire for DeviceMessages {
     };
     const FIXED_SIZE: Option<usize> = None;
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_messages =
             crate::bounded::BoundedVec::<crate::types::MessageId, 126>::decode_remaining(r)
@@ -180,6 +192,10 @@ impl crate::wire::Wire for DeviceReset {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -227,6 +243,10 @@ impl crate::wire::Wire for GetDeviceModel {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -279,6 +299,10 @@ impl crate::wire::Wire for DeviceModel {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_model =
             <crate::wire::Str<16> as crate::wire::Wire>::decode(r).map_err(|e| e.at("model"))?;
@@ -337,6 +361,10 @@ impl crate::wire::Wire for GetDeviceSn {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -389,6 +417,10 @@ impl crate::wire::Wire for DeviceSn {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_serial_number = <crate::wire::Str<16> as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("serial_number"))?;
@@ -451,6 +483,10 @@ impl crate::wire::Wire for GetDeviceFw {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -503,6 +539,10 @@ impl crate::wire::Wire for DeviceFw {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_firmware =
             <crate::wire::Str<16> as crate::wire::Wire>::decode(r).map_err(|e| e.at("firmware"))?;
@@ -565,6 +605,10 @@ impl crate::wire::Wire for GetDeviceCal {
     const ZERO: Self = Self {};
     const FIXED_SIZE: Option<usize> = Some(0);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let _ = r;
         Ok(Self {})
@@ -617,6 +661,10 @@ impl crate::wire::Wire for DeviceCal {
     };
     const FIXED_SIZE: Option<usize> = Some(16);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_date =
             <crate::wire::Str<16> as crate::wire::Wire>::decode(r).map_err(|e| e.at("date"))?;
@@ -683,6 +731,10 @@ impl crate::wire::Wire for CorrelateGpsTime {
     };
     const FIXED_SIZE: Option<usize> = Some(6);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_week = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("week"))?;
         let p_seconds = <u32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("seconds"))?;

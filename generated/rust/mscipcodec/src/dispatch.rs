@@ -189,19 +189,69 @@ pub fn decode_field(
     data: &[u8],
     device: Option<Device>,
 ) -> Result<FieldValue, DecodeError> {
-    let found = match set {
-        0x01 => {
-            crate::base::SetField::decode(descriptor, data, device).map(|r| r.map(FieldValue::Base))
-        }
-        0x02 => crate::imu_config::SetField::decode(descriptor, data, device)
-            .map(|r| r.map(FieldValue::ImuConfig)),
-        0xA2 => crate::imu_data::SetField::decode(descriptor, data, device)
-            .map(|r| r.map(FieldValue::ImuData)),
-        _ => None,
-    };
-    if let Some(result) = found {
-        return result;
+    // The set's own fields: one match on (set, descriptor), compiled to jump tables, straight to
+    // the field's decoder, which builds the FieldValue in the caller's slot.
+    match (set, descriptor) {
+        (0x01, 0x02) => decoders::base_ping(data, device),
+        (0x01, 0x03) => decoders::base_get_device_messages(data, device),
+        (0x01, 0x83) => decoders::base_device_messages(data, device),
+        (0x01, 0x04) => decoders::base_device_reset(data, device),
+        (0x01, 0x05) => decoders::base_get_device_model(data, device),
+        (0x01, 0x85) => decoders::base_device_model(data, device),
+        (0x01, 0x06) => decoders::base_get_device_sn(data, device),
+        (0x01, 0x86) => decoders::base_device_sn(data, device),
+        (0x01, 0x07) => decoders::base_get_device_fw(data, device),
+        (0x01, 0x87) => decoders::base_device_fw(data, device),
+        (0x01, 0x08) => decoders::base_get_device_cal(data, device),
+        (0x01, 0x88) => decoders::base_device_cal(data, device),
+        (0x01, 0x09) => decoders::base_correlate_gps_time(data, device),
+        (0x02, 0x01) => decoders::imu_config_uart_baud_rate(data, device),
+        (0x02, 0x81) => decoders::imu_config_uart_baud_rate_response(data, device),
+        (0x02, 0x03) => decoders::imu_config_filter(data, device),
+        (0x02, 0x83) => decoders::imu_config_filter_response(data, device),
+        (0x02, 0x04) => decoders::imu_config_sample_rate(data, device),
+        (0x02, 0x84) => decoders::imu_config_sample_rate_response(data, device),
+        (0x02, 0x05) => decoders::imu_config_select_sensors(data, device),
+        (0x02, 0x85) => decoders::imu_config_select_sensors_response(data, device),
+        (0x02, 0x06) => decoders::imu_config_get_internal_sample_rate(data, device),
+        (0x02, 0x86) => decoders::imu_config_internal_sample_rate(data, device),
+        (0x02, 0x07) => decoders::imu_config_accel_range(data, device),
+        (0x02, 0x87) => decoders::imu_config_accel_range_response(data, device),
+        (0x02, 0x08) => decoders::imu_config_gyro_range(data, device),
+        (0x02, 0x88) => decoders::imu_config_gyro_range_response(data, device),
+        (0x02, 0x09) => decoders::imu_config_config_all(data, device),
+        (0x02, 0x0A) => decoders::imu_config_data_on_off(data, device),
+        (0x02, 0x8A) => decoders::imu_config_data_on_off_response(data, device),
+        (0x02, 0x0B) => decoders::imu_config_xtrig_on_off(data, device),
+        (0x02, 0x8B) => decoders::imu_config_xtrig_on_off_response(data, device),
+        (0x02, 0x0C) => decoders::imu_config_select_sensors_rev_b(data, device),
+        (0x02, 0x8C) => decoders::imu_config_select_sensors_rev_b_response(data, device),
+        (0x02, 0x0D) => decoders::imu_config_aux_accel_range(data, device),
+        (0x02, 0x8D) => decoders::imu_config_aux_accel_range_response(data, device),
+        (0xA2, 0x81) => decoders::imu_data_scaled_accel(data, device),
+        (0xA2, 0x82) => decoders::imu_data_scaled_gyro(data, device),
+        (0xA2, 0x83) => decoders::imu_data_scaled_mag(data, device),
+        (0xA2, 0x84) => decoders::imu_data_delta_theta(data, device),
+        (0xA2, 0x85) => decoders::imu_data_delta_velocity(data, device),
+        (0xA2, 0x86) => decoders::imu_data_scaled_pressure(data, device),
+        (0xA2, 0x87) => decoders::imu_data_scaled_temperature(data, device),
+        (0xA2, 0x88) => decoders::imu_data_gps_correlated_time(data, device),
+        (0xA2, 0x89) => decoders::imu_data_scaled_aux_accel(data, device),
+        _ => decode_other_field(set, descriptor, data, device),
     }
+}
+
+/// [`decode_field`] for a descriptor that is not one of the set's own fields. Out of line, so
+/// that `decode_field` itself is only the jump.
+#[inline(never)]
+fn decode_other_field(
+    set: u8,
+    descriptor: u8,
+    data: &[u8],
+    device: Option<Device>,
+) -> Result<FieldValue, DecodeError> {
+    // Not every protocol has reserved or shared fields to look at.
+    let _ = (descriptor, data, device);
     let kind = set_kind(set);
     if let Some(result) = crate::reserved::ReservedField::decode(kind, descriptor, data) {
         return result.map(FieldValue::Reserved);
@@ -211,6 +261,465 @@ pub fn decode_field(
     } else {
         DecodeErrorKind::UnknownSet
     }))
+}
+
+/// One decoder per field of every set, for [`decode_field`]. Not inlined: each is called from
+/// one place, so the compiler would otherwise merge all of them into `decode_field`, whose stack
+/// frame would then hold the largest of every layout on every call.
+mod decoders {
+    use super::{DecodeError, Device, FieldValue};
+
+    #[inline(never)]
+    pub(super) fn base_ping(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::Ping as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::Ping(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_get_device_messages(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::GetDeviceMessages as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceMessages(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_device_messages(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::DeviceMessages as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::DeviceMessages(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_device_reset(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::DeviceReset as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::DeviceReset(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_get_device_model(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::GetDeviceModel as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceModel(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_device_model(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::DeviceModel as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::DeviceModel(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_get_device_sn(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::GetDeviceSn as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceSn(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_device_sn(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::DeviceSn as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::DeviceSn(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_get_device_fw(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::GetDeviceFw as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceFw(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_device_fw(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::DeviceFw as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::DeviceFw(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_get_device_cal(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::GetDeviceCal as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceCal(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_device_cal(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::DeviceCal as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::DeviceCal(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn base_correlate_gps_time(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::base::CorrelateGpsTime as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::Base(crate::base::SetField::CorrelateGpsTime(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_uart_baud_rate(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::UartBaudRate as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::UartBaudRate(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_uart_baud_rate_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::UartBaudRateResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::UartBaudRateResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_filter(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::Filter as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::Filter(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_filter_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::FilterResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::FilterResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_sample_rate(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::SampleRate as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SampleRate(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_sample_rate_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::SampleRateResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SampleRateResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_select_sensors(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::SelectSensors as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensors(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_select_sensors_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::SelectSensorsResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_get_internal_sample_rate(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::GetInternalSampleRate as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::GetInternalSampleRate(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_internal_sample_rate(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::InternalSampleRate as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::InternalSampleRate(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_accel_range(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::AccelRange as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AccelRange(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_accel_range_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::AccelRangeResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AccelRangeResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_gyro_range(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::GyroRange as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::GyroRange(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_gyro_range_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::GyroRangeResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::GyroRangeResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_config_all(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::ConfigAll as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::ConfigAll(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_data_on_off(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::DataOnOff as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::DataOnOff(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_data_on_off_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::DataOnOffResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::DataOnOffResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_xtrig_on_off(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::XtrigOnOff as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::XtrigOnOff(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_xtrig_on_off_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::XtrigOnOffResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::XtrigOnOffResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_select_sensors_rev_b(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::SelectSensorsRevB as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsRevB(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_select_sensors_rev_b_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::SelectSensorsRevBResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| {
+                FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsRevBResponse(v))
+            })
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_aux_accel_range(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::AuxAccelRange as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AuxAccelRange(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_config_aux_accel_range_response(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_config::AuxAccelRangeResponse as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AuxAccelRangeResponse(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_scaled_accel(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::ScaledAccel as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledAccel(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_scaled_gyro(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::ScaledGyro as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledGyro(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_scaled_mag(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::ScaledMag as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledMag(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_delta_theta(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::DeltaTheta as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::DeltaTheta(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_delta_velocity(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::DeltaVelocity as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::DeltaVelocity(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_scaled_pressure(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::ScaledPressure as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledPressure(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_scaled_temperature(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::ScaledTemperature as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledTemperature(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_gps_correlated_time(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::GpsCorrelatedTime as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::GpsCorrelatedTime(v)))
+    }
+
+    #[inline(never)]
+    pub(super) fn imu_data_scaled_aux_accel(
+        data: &[u8],
+        device: Option<Device>,
+    ) -> Result<FieldValue, DecodeError> {
+        let _ = device;
+        <crate::imu_data::ScaledAuxAccel as crate::wire::Layout>::decode_data(data)
+            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledAuxAccel(v)))
+    }
 }
 
 /// Writes the canonical JSON of one field: decoded, or raw with the decode error.

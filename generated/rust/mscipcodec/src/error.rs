@@ -122,12 +122,14 @@ impl DecodeError {
     }
 
     /// The error happened inside the parameter or member `name`.
+    #[cold]
     pub fn at(mut self, name: &'static str) -> Self {
         self.path.push(Segment::Name(name));
         self
     }
 
     /// The error happened inside array element `index`.
+    #[cold]
     pub fn index(mut self, index: usize) -> Self {
         self.path.push(Segment::Index(index as u32));
         self
@@ -204,12 +206,14 @@ impl EncodeError {
     }
 
     /// The error happened inside the parameter or member `name`.
+    #[cold]
     pub fn at(mut self, name: &'static str) -> Self {
         self.path.push(Segment::Name(name));
         self
     }
 
     /// The error happened inside array element `index`.
+    #[cold]
     pub fn index(mut self, index: usize) -> Self {
         self.path.push(Segment::Index(index as u32));
         self

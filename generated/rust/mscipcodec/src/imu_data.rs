@@ -25,6 +25,10 @@ impl crate::wire::Wire for ScaledAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_accel = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("accel"))?;
         Ok(Self { accel: p_accel })
@@ -84,6 +88,10 @@ impl crate::wire::Wire for ScaledGyro {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_gyro = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("gyro"))?;
         Ok(Self { gyro: p_gyro })
@@ -143,6 +151,10 @@ impl crate::wire::Wire for ScaledMag {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_mag = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("mag"))?;
         Ok(Self { mag: p_mag })
@@ -202,6 +214,10 @@ impl crate::wire::Wire for DeltaTheta {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_theta =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_theta"))?;
@@ -269,6 +285,10 @@ impl crate::wire::Wire for DeltaVelocity {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_delta_velocity =
             <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("delta_velocity"))?;
@@ -336,6 +356,10 @@ impl crate::wire::Wire for ScaledPressure {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_pressure = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("pressure"))?;
         Ok(Self {
@@ -399,6 +423,10 @@ impl crate::wire::Wire for ScaledTemperature {
     };
     const FIXED_SIZE: Option<usize> = Some(4);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_temperature =
             <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("temperature"))?;
@@ -472,6 +500,10 @@ impl crate::wire::Wire for GpsCorrelatedTime {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_seconds = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("seconds"))?;
         let p_week = <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("week"))?;
@@ -557,6 +589,10 @@ impl crate::wire::Wire for ScaledAuxAccel {
     };
     const FIXED_SIZE: Option<usize> = Some(12);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_accel = <[f32; 3] as crate::wire::Wire>::decode(r).map_err(|e| e.at("accel"))?;
         Ok(Self { accel: p_accel })

@@ -32,6 +32,41 @@ impl Default for Parser {
     }
 }
 
+/// Whether `sent` is the checksum of `body` (byte by byte: no call to a slice comparison).
+#[inline(always)]
+fn checksum_matches(body: &[u8], sent: &[u8]) -> bool {
+    let sum = checksum_bytes(body);
+    sent.len() == CHECKSUM_SIZE && (0..CHECKSUM_SIZE).all(|i| sum[i] == sent[i])
+}
+
+/// Index of the first `byte` in `hay`, eight bytes at a time (one branch per eight bytes of
+/// garbage instead of one per byte).
+#[inline(always)]
+fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
+    const LOW: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let pattern = LOW * u64::from(byte);
+    let mut words = hay.chunks_exact(8);
+    let mut base = 0;
+    for word in &mut words {
+        let mut bytes = [0u8; 8];
+        bytes.copy_from_slice(word);
+        // Bytes equal to `byte` become zero; the lowest flagged byte is the first zero byte
+        // (a flag can be wrong only above a zero byte).
+        let x = u64::from_le_bytes(bytes) ^ pattern;
+        let zero = x.wrapping_sub(LOW) & !x & HIGH;
+        if zero != 0 {
+            return Some(base + (zero.trailing_zeros() / 8) as usize);
+        }
+        base += 8;
+    }
+    words
+        .remainder()
+        .iter()
+        .position(|&b| b == byte)
+        .map(|i| base + i)
+}
+
 enum Sync {
     // A full sync sequence at this index.
     Full(usize),
@@ -67,14 +102,108 @@ impl Parser {
     }
 
     /// Feeds `data`; calls `on` for every event it completes.
+    ///
+    /// Packets that lie wholly inside `data` are checked and reported in place (their bytes
+    /// borrow `data`); only a packet split across `feed` calls is copied into the parser's
+    /// buffer, and only the bytes it still needs.
     pub fn feed<F: FnMut(Event<'_>)>(&mut self, mut data: &[u8], mut on: F) {
-        while !data.is_empty() {
-            let n = data.len().min(MAX_PACKET - self.len);
+        // Finish the candidate buffered by the previous call.
+        while self.len > 0 && !data.is_empty() {
+            let n = data.len().min(self.wanted() - self.len);
             self.buf[self.len..self.len + n].copy_from_slice(&data[..n]);
             self.len += n;
             data = &data[n..];
             self.process(&mut on, false);
         }
+        if data.is_empty() {
+            return;
+        }
+        // Nothing buffered: search `data` itself, then keep the undecided tail.
+        let used = self.scan(data, &mut on);
+        let rest = &data[used..];
+        self.buf[..rest.len()].copy_from_slice(rest);
+        self.len = rest.len();
+    }
+
+    /// Bytes the buffered candidate needs before it can be decided (more than `self.len`
+    /// whenever `process` left bytes waiting).
+    fn wanted(&self) -> usize {
+        if self.len < HEADER_SIZE {
+            HEADER_SIZE
+        } else {
+            HEADER_SIZE + usize::from(self.buf[LENGTH_OFFSET]) + CHECKSUM_SIZE
+        }
+    }
+
+    /// The search of `process` over `data` in place, with nothing buffered (`self.base` is the
+    /// stream offset of `data[0]`). Returns how many bytes it consumed; the rest (a candidate
+    /// that needs more input, shorter than a maximum packet) is for the caller to buffer.
+    fn scan<F: FnMut(Event<'_>)>(&mut self, data: &[u8], on: &mut F) -> usize {
+        let end = data.len();
+        let mut pos = 0;
+        loop {
+            // Find the next sync (or a sync prefix at the very end).
+            let mut at = pos;
+            loop {
+                match find_byte(&data[at..], SYNC[0]) {
+                    None => {
+                        self.skip_in_place(end - pos);
+                        return end;
+                    }
+                    Some(i) => at += i,
+                }
+                // The rest of the sync, or as much of it as `data` holds (byte by byte: no call
+                // to a slice comparison).
+                let n = (end - at).min(SYNC.len());
+                if (1..n).all(|k| data[at + k] == SYNC[k]) {
+                    break;
+                }
+                at += 1;
+            }
+            self.skip_in_place(at - pos);
+            pos = at;
+            let left = end - pos;
+            if left < HEADER_SIZE {
+                return pos;
+            }
+            let payload = usize::from(data[pos + LENGTH_OFFSET]);
+            if payload > MAX_PAYLOAD {
+                self.skip_in_place(1);
+                pos += 1;
+                continue;
+            }
+            let body = HEADER_SIZE + payload;
+            let total = body + CHECKSUM_SIZE;
+            if left < total {
+                return pos;
+            }
+            let packet = &data[pos..pos + total];
+            if checksum_matches(&packet[..body], &packet[body..]) {
+                self.emit_skip(on);
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: packet,
+                });
+                self.base += total as u64;
+                pos += total;
+            } else {
+                // The sync was false: resynchronise at the next byte.
+                self.skip_in_place(1);
+                pos += 1;
+            }
+        }
+    }
+
+    /// Adds `n` bytes at the parser's offset to the skip run (nothing buffered).
+    fn skip_in_place(&mut self, n: usize) {
+        if n == 0 {
+            return;
+        }
+        if self.skip_count == 0 {
+            self.skip_start = self.base;
+        }
+        self.skip_count += n as u64;
+        self.base += n as u64;
     }
 
     /// End of input: the same search, but a candidate packet that would wait for more input is
@@ -138,7 +267,7 @@ impl Parser {
                 return;
             }
             let body = HEADER_SIZE + payload;
-            if checksum_bytes(&self.buf[..body]) == self.buf[body..total] {
+            if checksum_matches(&self.buf[..body], &self.buf[body..total]) {
                 self.emit_skip(on);
                 on(Event::Packet {
                     offset: self.base,

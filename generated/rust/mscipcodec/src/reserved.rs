@@ -23,6 +23,10 @@ impl crate::wire::Wire for Ack {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_command_code =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("command_code"))?;

@@ -65,6 +65,7 @@ impl crate::wire::Wire for AccelRange {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -153,6 +154,7 @@ impl crate::wire::Wire for BaudRate {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u32 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u32 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -237,6 +239,7 @@ impl crate::wire::Wire for ErrorCode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -333,6 +336,7 @@ impl crate::wire::Wire for FilterBandwidth {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -417,6 +421,7 @@ impl crate::wire::Wire for FunctionCode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -534,6 +539,7 @@ impl crate::wire::Wire for GpsTimeFlags {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u16 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u16 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -618,6 +624,7 @@ impl crate::wire::Wire for GyroRange {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -668,6 +675,10 @@ impl crate::wire::Wire for MessageId {
     };
     const FIXED_SIZE: Option<usize> = Some(2);
 
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_message_type =
             <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("message_type"))?;
@@ -763,6 +774,7 @@ impl crate::wire::Wire for OnOff {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }
@@ -861,6 +873,7 @@ impl crate::wire::Wire for SensorCode {
     const ZERO: Self = Self(0);
     const FIXED_SIZE: Option<usize> = <u8 as crate::wire::Wire>::FIXED_SIZE;
 
+    #[inline(always)]
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         <u8 as crate::wire::Wire>::decode(r).map(Self)
     }

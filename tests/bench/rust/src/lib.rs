@@ -1,0 +1,194 @@
+//! The work the Rust benchmark measures (issue 8), shared by the plain runner (`src/main.rs`)
+//! and the criterion bench (`benches/codec.rs`).
+//!
+//! - frame:  the stream parser over the whole in-memory stream (find sync, length, Fletcher
+//!   checksum), every packet reported with its offset and bytes, garbage skipped.
+//! - decode: frame, then split every packet into fields and decode every field to its typed
+//!   value (dispatch by set and descriptor).
+//!
+//! Both return counts that are checked against the stream's sidecar, and a checksum of what
+//! they saw so that nothing can be optimised away.
+
+use std::fs;
+use std::hint::black_box;
+use std::path::Path;
+
+use mipcodec::fields::{FieldItem, Packet};
+use mipcodec::parser::{Event, Parser};
+use mipcodec::{decode_field, FieldValue};
+
+/// The benchmark streams written by `tests/bench/streams.py`, in report order.
+pub const STREAMS: [&str; 4] = ["accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage"];
+
+/// A stream and the counts of its sidecar.
+pub struct Stream {
+    pub name: String,
+    pub data: Vec<u8>,
+    pub packets: u64,
+    pub fields: u64,
+    pub packet_bytes: u64,
+}
+
+fn sidecar_number(json: &str, key: &str) -> Result<u64, String> {
+    let pat = format!("\"{key}\":");
+    let at = json
+        .find(&pat)
+        .ok_or_else(|| format!("sidecar has no \"{key}\""))?
+        + pat.len();
+    let digits: String = json[at..]
+        .trim_start()
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    digits
+        .parse()
+        .map_err(|_| format!("sidecar \"{key}\" is not a number"))
+}
+
+impl Stream {
+    /// Reads `<dir>/<name>.bin` and its sidecar `<dir>/<name>.json`.
+    pub fn load(dir: &Path, name: &str) -> Result<Self, String> {
+        let bin = dir.join(format!("{name}.bin"));
+        let side = dir.join(format!("{name}.json"));
+        let data = fs::read(&bin).map_err(|e| format!("{}: {e}", bin.display()))?;
+        let json = fs::read_to_string(&side).map_err(|e| format!("{}: {e}", side.display()))?;
+        let bytes = sidecar_number(&json, "bytes")?;
+        if bytes != data.len() as u64 {
+            return Err(format!(
+                "{name}: sidecar says {bytes} bytes, file has {}",
+                data.len()
+            ));
+        }
+        Ok(Self {
+            name: name.to_string(),
+            data,
+            packets: sidecar_number(&json, "packets")?,
+            fields: sidecar_number(&json, "fields")?,
+            packet_bytes: sidecar_number(&json, "packet_bytes")?,
+        })
+    }
+}
+
+/// What one pass saw.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Tally {
+    pub packets: u64,
+    pub packet_bytes: u64,
+    pub skipped_bytes: u64,
+    pub fields: u64,
+    /// Fields that did not decode (or trailing bytes): must be 0 on the benchmark streams.
+    pub errors: u64,
+    /// Wrapping sum of packet offsets and last bytes (frame), or of the bits of one float of
+    /// each decoded field (decode).
+    pub checksum: u64,
+}
+
+impl Tally {
+    /// Error unless the counts match the sidecar (`fields` only for decode passes).
+    pub fn check(&self, stream: &Stream, decode: bool) -> Result<(), String> {
+        let name = &stream.name;
+        if self.packets != stream.packets {
+            return Err(format!(
+                "{name}: saw {} packets, sidecar says {}",
+                self.packets, stream.packets
+            ));
+        }
+        if self.packet_bytes != stream.packet_bytes {
+            return Err(format!(
+                "{name}: saw {} packet bytes, sidecar says {}",
+                self.packet_bytes, stream.packet_bytes
+            ));
+        }
+        if self.packet_bytes + self.skipped_bytes != stream.data.len() as u64 {
+            return Err(format!("{name}: packets and skips do not cover the stream"));
+        }
+        if decode {
+            if self.fields != stream.fields {
+                return Err(format!(
+                    "{name}: saw {} fields, sidecar says {}",
+                    self.fields, stream.fields
+                ));
+            }
+            if self.errors != 0 {
+                return Err(format!("{name}: {} fields did not decode", self.errors));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Frame: the stream parser over the whole stream, fed at once, then flushed.
+pub fn frame(data: &[u8]) -> Tally {
+    let mut t = Tally::default();
+    let mut on = |event: Event<'_>| match event {
+        Event::Packet { offset, bytes } => {
+            t.packets += 1;
+            t.packet_bytes += bytes.len() as u64;
+            t.checksum = t
+                .checksum
+                .wrapping_add(offset ^ u64::from(bytes[bytes.len() - 1]));
+        }
+        Event::Skip { count, .. } => t.skipped_bytes += count,
+    };
+    let mut parser = Parser::new();
+    parser.feed(data, &mut on);
+    parser.flush(&mut on);
+    t
+}
+
+/// The bits of one float of a decoded field (its first value), for the checksum; the
+/// descriptor for the fields of the mixed streams not listed here.
+#[inline]
+pub fn first_float_bits(value: &FieldValue) -> u64 {
+    use mipcodec::{filter_data as fd, gnss_data as gd, sensor};
+    match value {
+        FieldValue::Sensor(sensor::SetField::ScaledAccel(v)) => {
+            u64::from(v.scaled_accel[0].to_bits())
+        }
+        FieldValue::Sensor(sensor::SetField::ScaledGyro(v)) => {
+            u64::from(v.scaled_gyro[0].to_bits())
+        }
+        FieldValue::FilterData(fd::SetField::LlhPosition(v)) => v.latitude.to_bits(),
+        FieldValue::FilterData(fd::SetField::NedVelocity(v)) => u64::from(v.north.to_bits()),
+        FieldValue::GnssData(gd::SetField::LlhPosition(v)) => v.latitude.to_bits(),
+        other => u64::from(other.descriptor()),
+    }
+}
+
+/// Decode: frame, split every packet into fields and decode each one.
+pub fn decode(data: &[u8]) -> Tally {
+    let mut t = Tally::default();
+    let mut on = |event: Event<'_>| match event {
+        Event::Packet { bytes, .. } => {
+            t.packets += 1;
+            t.packet_bytes += bytes.len() as u64;
+            let Some(packet) = Packet::new(bytes) else {
+                t.errors += 1;
+                return;
+            };
+            let set = packet.set();
+            for item in packet.fields() {
+                match item {
+                    FieldItem::Field { descriptor, data } => {
+                        t.fields += 1;
+                        // By reference: the typed value stays where decode_field built it.
+                        match &decode_field(set, descriptor, data, None) {
+                            Ok(value) => {
+                                // The whole typed value is produced, not only the float summed.
+                                let value = black_box(value);
+                                t.checksum = t.checksum.wrapping_add(first_float_bits(value));
+                            }
+                            Err(_) => t.errors += 1,
+                        }
+                    }
+                    FieldItem::Trailing { .. } => t.errors += 1,
+                }
+            }
+        }
+        Event::Skip { count, .. } => t.skipped_bytes += count,
+    };
+    let mut parser = Parser::new();
+    parser.feed(data, &mut on);
+    parser.flush(&mut on);
+    t
+}
