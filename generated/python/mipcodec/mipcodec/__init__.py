@@ -33,6 +33,7 @@ from . import (
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
+    ACCELERATED,
     FramingError,
     PacketBuilder,
     Parser,
@@ -49,6 +50,7 @@ from .packets import (
     Packet,
     RawField,
     Trailing,
+    decode_all,
     decode_bytes,
     decode_field,
     decode_packet,
@@ -83,6 +85,7 @@ __all__ = [
     "Field",
     "Layout",
     "Struct",
+    "ACCELERATED",
     "FramingError",
     "PacketBuilder",
     "Parser",
@@ -97,6 +100,7 @@ __all__ = [
     "Packet",
     "RawField",
     "Trailing",
+    "decode_all",
     "decode_bytes",
     "decode_field",
     "decode_packet",

@@ -394,3 +394,52 @@ def test_sample_grouper_merges_continuation_packets():
     assert [f.descriptor for f in late.fields] == [stamp, 0x06]
     # Command-set packets are not samples.
     assert tracker.feed(PacketBuilder(0x01).build()) is None
+
+
+# ------------------------------------------------------------------------------ C accelerator
+def test_accelerator_is_what_the_environment_asks_for():
+    # tests/lang/python.sh runs this suite twice: MIPCODEC_PURE=1, and with the
+    # extension built (MIPCODEC_EXPECT_ACCELERATED=1), so neither run can silently be the other.
+    import os
+
+    import mipcodec
+
+    if os.environ.get("MIPCODEC_PURE", "") not in ("", "0"):
+        assert not mipcodec.ACCELERATED
+    if os.environ.get("MIPCODEC_EXPECT_ACCELERATED"):
+        assert mipcodec.ACCELERATED
+
+
+def _layout_data(items, fill):
+    size = sum(s * (1 if n < 0 else n) for _a, _k, s, n, _x in items)
+    if fill == "random":
+        return bytes(random.Random(size).getrandbits(8) for _ in range(size))
+    return bytes([fill]) * size
+
+
+def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
+    # Every field whose layout the C side reads itself, with data of all 0x00, 0x01, 0xFF (NaN
+    # floats, invalid bools, unknown enum values, every flag), random bytes, one byte short and
+    # one byte long, for each of its per-device layouts: the same entries (repr, line, types) as
+    # the pure-Python decoder, errors included.
+    from mipcodec import packets, registry
+
+    checked = 0
+    for (set_id, descriptor), classes in registry.FIELDS.items():
+        for cls in classes:
+            items = c.fast_items(cls)
+            if items is None:
+                continue
+            for fill in (0x00, 0x01, 0xFF, "random"):
+                full = _layout_data(items, fill)
+                for data in (full, full[:-1], full + b"\x00"):
+                    if len(data) > 200:
+                        continue
+                    packet = PacketBuilder(set_id).add_field(descriptor, data).build()
+                    got = packets.decode_packet(packet, 7)
+                    want = packets._decode_packet_pure(packet, 7)
+                    assert repr(got) == repr(want), (cls.__name__, data.hex())
+                    assert got.line() == want.line(), (cls.__name__, data.hex())
+                    assert [type(v) for v in got.values()] == [type(v) for v in want.values()]
+                    checked += 1
+    assert checked > 0

@@ -4,7 +4,20 @@ tests/streams/mip/): decode whole and fed in chunks of every size, encode back."
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
 import pytest
-from mipcodec import decode_bytes, decode_stream, encode_lines
+from mipcodec import packets
+from mipcodec import (
+    Packet,
+    Parser,
+    RawPacket,
+    Skip,
+    decode_all,
+    decode_bytes,
+    decode_packet,
+    decode_stream,
+    encode_lines,
+    parse,
+)
+from mipcodec.packets import event_line
 
 CASES = [
     {
@@ -5917,3 +5930,34 @@ def test_decode_every_chunking(case):
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
 def test_encode(case):
     assert encode_lines(case["expect"]).hex() == case["hex"], case["where"]
+
+
+def _pure_events(data):
+    parser = Parser()
+    parser._scan = parser._scan_pure  # the pure-Python parser loop, also when the accelerator is built
+    return parser.feed(data) + parser.flush()
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
+def test_accelerated_paths_match_the_pure_path(case):
+    # parse / decode_packet / decode_all (in C when the accelerator is built) against the
+    # pure-Python parser and decoder: the same events, lines, values and types.
+    data = bytes.fromhex(case["hex"])
+    events = _pure_events(data)
+    assert parse(data) == events, case["where"]
+    expected = [
+        packets._decode_packet_pure(e.data, e.offset, case["device"]) if isinstance(e, RawPacket) else e for e in events
+    ]
+    got = decode_all(data, case["device"])
+    assert [type(x) for x in got] == [type(x) for x in expected], case["where"]
+    assert [repr(x) for x in got] == [repr(x) for x in expected], case["where"]
+    assert [event_line(x) if isinstance(x, Skip) else x.line() for x in got] == case["expect"], case["where"]
+    for g, e in zip(got, expected):
+        if isinstance(g, Packet):
+            assert [type(f) for f in g.fields] == [type(f) for f in e.fields], case["where"]
+            assert [type(v) for v in g.values()] == [type(v) for v in e.values()], case["where"]
+            assert decode_packet(_raw(events, g.offset), g.offset, case["device"]).line() == e.line(), case["where"]
+
+
+def _raw(events, offset):
+    return next(e.data for e in events if isinstance(e, RawPacket) and e.offset == offset)

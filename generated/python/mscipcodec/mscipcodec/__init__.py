@@ -15,6 +15,7 @@ from . import base, imu_config, imu_data, reserved, types
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
+    ACCELERATED,
     FramingError,
     PacketBuilder,
     Parser,
@@ -31,6 +32,7 @@ from .packets import (
     Packet,
     RawField,
     Trailing,
+    decode_all,
     decode_bytes,
     decode_field,
     decode_packet,
@@ -53,6 +55,7 @@ __all__ = [
     "Field",
     "Layout",
     "Struct",
+    "ACCELERATED",
     "FramingError",
     "PacketBuilder",
     "Parser",
@@ -67,6 +70,7 @@ __all__ = [
     "Packet",
     "RawField",
     "Trailing",
+    "decode_all",
     "decode_bytes",
     "decode_field",
     "decode_packet",
