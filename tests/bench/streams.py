@@ -65,11 +65,9 @@ def field_sizes() -> dict[tuple[int, int], int]:
 def field_data(rng: random.Random, set_id: int, descriptor: int, size: int) -> bytes:
     for _ in range(1000):
         data = bytes(rng.getrandbits(8) for _ in range(size))
-        try:
-            mipcodec.decode_field(set_id, descriptor, data)
-        except mipcodec.DecodeError:
-            continue
-        return data
+        # decode_field does not raise: a field that does not decode comes back as a RawField.
+        if isinstance(mipcodec.decode_field(set_id, descriptor, data), mipcodec.DecodedField):
+            return data
     raise SystemExit(f"streams.py: no random bytes decode as field 0x{set_id:02x},0x{descriptor:02x}")
 
 
@@ -82,7 +80,11 @@ def templates(rng: random.Random, kinds, sizes, variants: int) -> list[tuple[lis
             b = mipcodec.PacketBuilder(set_id)
             for d in descs:
                 b.add_field(d, field_data(rng, set_id, d, sizes[(set_id, d)]))
-            group.append(b.build())
+            packet = b.build()
+            decoded = mipcodec.decode_packet(packet)
+            if [type(f) for f in decoded.fields] != [mipcodec.DecodedField] * len(descs):
+                raise SystemExit(f"streams.py: a packet of set 0x{set_id:02x} does not decode completely: {decoded!r}")
+            group.append(packet)
         out.append((group, len(descs)))
     return out
 

@@ -1,0 +1,151 @@
+"""Python benchmark (issue 8): frame and decode the benchmark streams with the generated mipcodec.
+
+    python tests/bench/python/bench.py DIR [--passes 5] [--pure-passes 1] [--only python|python-pure]
+                                           [--streams accel_gyro,...] [--gc]
+
+DIR holds the streams written by tests/bench/streams.py (<name>.bin + <name>.json sidecar).
+Two flavours, each in its own process (the choice is made when the package is imported):
+  lang=python       the package with its C accelerator, built in place by `tests/lang/python.sh ext`
+                    into build/python/ext/mipcodec (the package's own setup.py, nothing installed)
+  lang=python-pure  the same package with MIPCODEC_PURE=1 (the pure-Python fallback)
+Modes (one BENCH line each, see tests/bench/run.py):
+  frame   mipcodec.parse(data): every RawPacket (offset, bytes) and Skip run of the whole stream
+  decode  mipcodec.decode_all(data): every packet decoded into Packet / DecodedField / typed
+          dataclass values (the same objects as decode_packet(raw.data, raw.offset) per packet)
+Each pass runs over the whole in-memory file (read once, not timed); the best of the passes is
+printed. As in timeit, the garbage collector is off during a timed pass (--gc leaves it on: the
+collector then scans the millions of new objects over and over, see the README of the package).
+After the timed passes the packet and field counts are checked against the sidecar (exit 1 on a
+mismatch, or on any field that did not decode to a typed value), and a checksum of one number of
+every decoded field is printed, so the values are really there.
+"""
+
+from __future__ import annotations
+
+import argparse
+import gc
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[3]
+STREAMS = ["accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage"]
+
+
+def first_number(value) -> float:
+    """One number of a typed value (its first scalar, depth first) as a mantissa in [0.5, 1) (0 for
+    zero, NaN and infinities), so that the checksum of random floats stays finite."""
+    for f in value.__dataclass_fields__:
+        v = getattr(value, f)
+        while isinstance(v, list) and v:
+            v = v[0]
+        if hasattr(v, "__dataclass_fields__"):
+            return first_number(v)
+        if isinstance(v, (int, float)):
+            x = float(v)
+            return math.frexp(x)[0] if math.isfinite(x) else 0.0
+    return 0.0
+
+
+def timed(fn, data, passes: int, use_gc: bool):
+    best = math.inf
+    result = None
+    for _ in range(passes):
+        result = None
+        if not use_gc:
+            gc.disable()
+        t0 = time.perf_counter()
+        result = fn(data)
+        seconds = time.perf_counter() - t0
+        gc.enable()
+        best = min(best, seconds)
+    return best, result
+
+
+def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use_gc: bool) -> int:
+    import mipcodec
+    from mipcodec import DecodedField, Packet, RawPacket
+
+    if mipcodec.ACCELERATED != (lang == "python"):
+        print(f"bench.py: {lang}: mipcodec.ACCELERATED is {mipcodec.ACCELERATED}", file=sys.stderr)
+        return 1
+    status = 0
+    for name in streams:
+        data = (directory / f"{name}.bin").read_bytes()
+        side = json.loads((directory / f"{name}.json").read_text())
+        if len(data) != side["bytes"]:
+            print(f"bench.py: {name}.bin has {len(data)} bytes, the sidecar says {side['bytes']}", file=sys.stderr)
+            return 1
+
+        seconds, events = timed(mipcodec.parse, data, passes, use_gc)
+        packets = sum(1 for e in events if type(e) is RawPacket)
+        del events
+        print(f"BENCH lang={lang} stream={name} mode=frame packets={packets} bytes={len(data)} seconds={seconds:.6f}")
+        if packets != side["packets"]:
+            print(f"bench.py: {lang} frame {name}: {packets} packets, expected {side['packets']}", file=sys.stderr)
+            status = 1
+
+        seconds, events = timed(mipcodec.decode_all, data, passes, use_gc)
+        packets = fields = bad = 0
+        checksum = 0.0
+        for e in events:
+            if type(e) is Packet:
+                packets += 1
+                for f in e.fields:
+                    if type(f) is DecodedField:
+                        fields += 1
+                        checksum += first_number(f.value)
+                    else:
+                        bad += 1
+        del events
+        print(f"BENCH lang={lang} stream={name} mode=decode packets={packets} bytes={len(data)} seconds={seconds:.6f}")
+        print(f"# {lang} {name} decode: {fields} typed fields, checksum {checksum!r}")
+        if packets != side["packets"] or fields != side["fields"] or bad:
+            print(
+                f"bench.py: {lang} decode {name}: {packets} packets, {fields} typed fields, {bad} undecoded;"
+                f" expected {side['packets']} and {side['fields']}",
+                file=sys.stderr,
+            )
+            status = 1
+        sys.stdout.flush()
+    return status
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("dir", type=Path, help="directory of the benchmark streams (tests/bench/streams.py)")
+    ap.add_argument("--passes", type=int, default=5, help="timed passes with the C accelerator (best is printed)")
+    ap.add_argument("--pure-passes", type=int, default=1, help="timed passes of the pure-Python code (slow)")
+    ap.add_argument("--only", choices=["python", "python-pure"], help="run one flavour in this process")
+    ap.add_argument("--streams", default=",".join(STREAMS), help="comma-separated stream names")
+    ap.add_argument("--gc", action="store_true", help="leave the garbage collector on during the timed passes")
+    args = ap.parse_args()
+    streams = [s for s in args.streams.split(",") if s]
+
+    if args.only:
+        passes = args.passes if args.only == "python" else args.pure_passes
+        return run_flavour(args.only, args.dir, streams, passes, args.gc)
+
+    # Build the accelerated copy (no-op when up to date), then one process per flavour.
+    built = subprocess.run(
+        [str(ROOT / "tests/lang/python.sh"), "ext"], check=True, capture_output=True, text=True
+    ).stdout.split()
+    ext_dir = next(d for d in built if d.endswith("/mipcodec"))
+    status = 0
+    for lang, path in (("python", ext_dir), ("python-pure", str(ROOT / "generated/python/mipcodec"))):
+        env = dict(os.environ, PYTHONPATH=path)
+        env.pop("MIPCODEC_PURE", None)
+        if lang == "python-pure":
+            env["MIPCODEC_PURE"] = "1"
+        cmd = [sys.executable, __file__, str(args.dir), "--only", lang, "--streams", ",".join(streams)]
+        cmd += ["--passes", str(args.passes), "--pure-passes", str(args.pure_passes)] + (["--gc"] if args.gc else [])
+        status |= subprocess.run(cmd, env=env).returncode
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
