@@ -12,8 +12,9 @@ Streams (MIP, little packets to large ones):
   mixed_garbage       the mixed packets likewise
 
 Garbage never contains the sync byte 0x75 except as a deliberate false sync (0x75 0x65 set
-length), whose stated length runs into the next packet, so the parser has to resynchronise; the
-expected packet count is therefore exactly the number of packets written.
+length), whose stated length runs into the next packet, so the parser has to resynchronise (its
+length is changed in the rare case, about 1 in 65,536, where its checksum happens to match the bytes
+it covers); the expected packet count is therefore exactly the number of packets written.
 
 Each stream is `<name>.bin` with a sidecar `<name>.json`: packets, fields, bytes, garbage_bytes,
 packet_bytes. Benchmarks assert the packet and field counts they saw against it (so the work
@@ -98,21 +99,38 @@ def garbage(rng: random.Random) -> bytes:
     return bytes(g)
 
 
+def _is_packet(buf: bytearray, at: int) -> bool:
+    """True when the header at `at` starts a complete packet with a valid checksum."""
+    end = at + 4 + buf[at + 3]
+    return end + 2 <= len(buf) and mipcodec.checksum_bytes(buf[at:end]) == buf[end : end + 2]
+
+
 def write(out: Path, name: str, kinds, count: int, with_garbage: bool, seed: int, sizes) -> None:
     rng = random.Random(seed)
     groups = templates(rng, kinds, sizes, 64)
     parts = []
-    packets = fields = garbage_bytes = 0
+    false_syncs = []  # stream offsets of the deliberate false syncs
+    packets = fields = garbage_bytes = pos = 0
     for i in range(count):
         group, nfields = groups[i % len(groups)]
         if with_garbage:
             g = garbage(rng)
+            if g[:2] == SYNC:
+                false_syncs.append(pos)
             parts.append(g)
             garbage_bytes += len(g)
+            pos += len(g)
         parts.append(group[rng.randrange(len(group))])
+        pos += len(parts[-1])
         packets += 1
         fields += nfields
-    buf = b"".join(parts)
+    buf = bytearray(b"".join(parts))
+    for at in false_syncs:
+        # A false header's checksum matches the bytes it runs over about once in 65,536: then it
+        # would be a packet (hiding the real ones it covers). Change its length until it is not.
+        while _is_packet(buf, at):
+            buf[at + 3] = 0xF0 | ((buf[at + 3] + 1) & 0x0F)
+    buf = bytes(buf)
     (out / f"{name}.bin").write_bytes(buf)
     meta = {
         "name": name,

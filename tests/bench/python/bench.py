@@ -8,16 +8,17 @@ Two flavours, each in its own process (the choice is made when the package is im
   lang=python       the package with its C accelerator, built in place by `tests/lang/python.sh ext`
                     into build/python/ext/mipcodec (the package's own setup.py, nothing installed)
   lang=python-pure  the same package with MIPCODEC_PURE=1 (the pure-Python fallback)
-Modes (one BENCH line each, see tests/bench/run.py):
-  frame   mipcodec.parse(data): every RawPacket (offset, bytes) and Skip run of the whole stream
-  decode  mipcodec.decode_all(data): every packet decoded into Packet / DecodedField / typed
-          dataclass values (the same objects as decode_packet(raw.data, raw.offset) per packet)
-Each pass runs over the whole in-memory file (read once, not timed); the best of the passes is
-printed. As in timeit, the garbage collector is off during a timed pass (--gc leaves it on: the
-collector then scans the millions of new objects over and over, see the README of the package).
-After the timed passes the packet and field counts are checked against the sidecar (exit 1 on a
-mismatch, or on any field that did not decode to a typed value), and a checksum of one number of
-every decoded field is printed, so the values are really there.
+Modes (one BENCH line each, see tests/bench/run.py); the in-memory file is fed in 64 KiB chunks:
+  frame   mipcodec.Parser: every RawPacket (offset, bytes) and Skip run, packets counted
+  decode  mipcodec.Decoder: every packet decoded into Packet / DecodedField / typed dataclass
+          values (the objects decode_packet(raw.data, raw.offset) returns), packets and fields
+          counted; each chunk's objects are dropped before the next, as when processing a log
+lang=python also prints a `# extra:` line for mipcodec.decode_all(data) (whole stream, every
+object kept until the end of the pass). Each pass runs over the whole file (read once, not
+timed); the best of the passes is printed. As in timeit, the garbage collector is off during a
+timed pass (--gc leaves it on). The packet and field counts of every timed pass are checked
+against the sidecar (exit 1 on a mismatch); an untimed decode_all pass checks that every field
+decoded to a typed value and prints a checksum of one number of each.
 """
 
 from __future__ import annotations
@@ -51,24 +52,85 @@ def first_number(value) -> float:
     return 0.0
 
 
-def timed(fn, data, passes: int, use_gc: bool):
+CHUNK = 65536  # bytes fed to the parser at a time, as when reading a large log
+
+
+def frame_pass(mipcodec, data):
+    """Parser fed CHUNK bytes at a time: (packets, fields=0, None)."""
+    raw = mipcodec.RawPacket
+    parser = mipcodec.Parser()
+    packets = 0
+    for i in range(0, len(data), CHUNK):
+        for e in parser.feed(data[i : i + CHUNK]):
+            packets += type(e) is raw
+    for e in parser.flush():
+        packets += type(e) is raw
+    return packets, 0
+
+
+def decode_pass(mipcodec, data):
+    """Decoder fed CHUNK bytes at a time (every packet decoded to typed values): (packets, fields)."""
+    packet = mipcodec.Packet
+    decoder = mipcodec.Decoder()
+    packets = fields = 0
+    for i in range(0, len(data), CHUNK):
+        for e in decoder.feed(data[i : i + CHUNK]):
+            if type(e) is packet:
+                packets += 1
+                fields += len(e.fields)
+    for e in decoder.flush():
+        if type(e) is packet:
+            packets += 1
+            fields += len(e.fields)
+    return packets, fields
+
+
+def decode_all_pass(mipcodec, data):
+    """decode_all over the whole stream, every object kept until the end of the pass."""
+    events = mipcodec.decode_all(data)
+    packet = mipcodec.Packet
+    return sum(1 for e in events if type(e) is packet), sum(len(e.fields) for e in events if type(e) is packet)
+
+
+def timed(fn, mipcodec, data, passes: int, use_gc: bool):
+    """Best wall time of `passes` passes, and the counts of the last."""
     best = math.inf
-    result = None
+    counts = (0, 0)
     for _ in range(passes):
-        result = None
         if not use_gc:
             gc.disable()
         t0 = time.perf_counter()
-        result = fn(data)
+        counts = fn(mipcodec, data)
         seconds = time.perf_counter() - t0
         gc.enable()
         best = min(best, seconds)
-    return best, result
+    return best, counts
+
+
+def check_values(mipcodec, data, lang, name, side) -> int:
+    """Untimed: every field of every packet is a typed value; prints a checksum of their numbers."""
+    fields = bad = 0
+    checksum = 0.0
+    for e in mipcodec.decode_all(data):
+        if type(e) is mipcodec.Packet:
+            for f in e.fields:
+                if type(f) is mipcodec.DecodedField:
+                    fields += 1
+                    checksum += first_number(f.value)
+                else:
+                    bad += 1
+    print(f"# {lang} {name}: {fields} typed fields, {bad} undecoded, checksum {checksum!r}")
+    if fields != side["fields"] or bad:
+        print(
+            f"bench.py: {lang} {name}: {fields} typed fields, {bad} undecoded, expected {side['fields']}",
+            file=sys.stderr,
+        )
+        return 1
+    return 0
 
 
 def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use_gc: bool) -> int:
     import mipcodec
-    from mipcodec import DecodedField, Packet, RawPacket
 
     if mipcodec.ACCELERATED != (lang == "python"):
         print(f"bench.py: {lang}: mipcodec.ACCELERATED is {mipcodec.ACCELERATED}", file=sys.stderr)
@@ -80,38 +142,24 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
         if len(data) != side["bytes"]:
             print(f"bench.py: {name}.bin has {len(data)} bytes, the sidecar says {side['bytes']}", file=sys.stderr)
             return 1
-
-        seconds, events = timed(mipcodec.parse, data, passes, use_gc)
-        packets = sum(1 for e in events if type(e) is RawPacket)
-        del events
-        print(f"BENCH lang={lang} stream={name} mode=frame packets={packets} bytes={len(data)} seconds={seconds:.6f}")
-        if packets != side["packets"]:
-            print(f"bench.py: {lang} frame {name}: {packets} packets, expected {side['packets']}", file=sys.stderr)
-            status = 1
-
-        seconds, events = timed(mipcodec.decode_all, data, passes, use_gc)
-        packets = fields = bad = 0
-        checksum = 0.0
-        for e in events:
-            if type(e) is Packet:
-                packets += 1
-                for f in e.fields:
-                    if type(f) is DecodedField:
-                        fields += 1
-                        checksum += first_number(f.value)
-                    else:
-                        bad += 1
-        del events
-        print(f"BENCH lang={lang} stream={name} mode=decode packets={packets} bytes={len(data)} seconds={seconds:.6f}")
-        print(f"# {lang} {name} decode: {fields} typed fields, checksum {checksum!r}")
-        if packets != side["packets"] or fields != side["fields"] or bad:
+        status |= check_values(mipcodec, data, lang, name, side)
+        runs = [("frame", frame_pass), ("decode", decode_pass)]
+        if lang == "python":
+            runs.append(("decode_all", decode_all_pass))
+        for mode, fn in runs:
+            seconds, (packets, fields) = timed(fn, mipcodec, data, passes, use_gc)
+            prefix = "BENCH" if mode != "decode_all" else "# extra:"
             print(
-                f"bench.py: {lang} decode {name}: {packets} packets, {fields} typed fields, {bad} undecoded;"
-                f" expected {side['packets']} and {side['fields']}",
-                file=sys.stderr,
+                f"{prefix} lang={lang} stream={name} mode={mode} packets={packets} bytes={len(data)} seconds={seconds:.6f}"
             )
-            status = 1
-        sys.stdout.flush()
+            if packets != side["packets"] or (mode != "frame" and fields != side["fields"]):
+                print(
+                    f"bench.py: {lang} {mode} {name}: {packets} packets, {fields} fields;"
+                    f" expected {side['packets']} and {side['fields']}",
+                    file=sys.stderr,
+                )
+                status = 1
+            sys.stdout.flush()
     return status
 
 

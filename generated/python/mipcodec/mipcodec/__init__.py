@@ -47,6 +47,7 @@ from .framing import (
 )
 from .packets import (
     DecodedField,
+    Decoder,
     Packet,
     RawField,
     Trailing,
@@ -97,6 +98,7 @@ __all__ = [
     "iter_fields",
     "parse",
     "DecodedField",
+    "Decoder",
     "Packet",
     "RawField",
     "Trailing",

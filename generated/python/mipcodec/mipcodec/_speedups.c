@@ -291,25 +291,37 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
     return pos;
 }
 
-/* scan(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool)
- *   -> (events, consumed, skip_at) */
+/* scan(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool, decode: bool = False)
+ *   -> (events, consumed, skip_at); with decode, packets are decoded (Packet) instead of RawPacket. */
 static PyObject *scan(PyObject *self, PyObject *args) {
     (void)self;
     PyObject *buf;
     Py_ssize_t base;
     SkipRun skip;
-    int final;
-    if (!PyArg_ParseTuple(args, "O!nO!np", &PyByteArray_Type, &buf, &base, &PyByteArray_Type, &skip.bytes,
-                          &skip.at, &final)) {
+    int final, decode = 0;
+    if (!PyArg_ParseTuple(args, "O!nO!np|p", &PyByteArray_Type, &buf, &base, &PyByteArray_Type, &skip.bytes,
+                          &skip.at, &final, &decode)) {
         return NULL;
+    }
+    /* Decoding may run Python code (the fallbacks): it works on a private copy of the buffer.
+     * Framing alone runs none (only our own objects are made), so it reads buf in place. */
+    PyObject *copy = NULL;
+    const unsigned char *p = (const unsigned char *)PyByteArray_AS_STRING(buf);
+    Py_ssize_t n = PyByteArray_GET_SIZE(buf);
+    if (decode) {
+        copy = PyBytes_FromStringAndSize((const char *)p, n);
+        if (copy == NULL) {
+            return NULL;
+        }
+        p = (const unsigned char *)PyBytes_AS_STRING(copy);
     }
     PyObject *events = PyList_New(0);
     if (events == NULL) {
+        Py_XDECREF(copy);
         return NULL;
     }
-    /* Nothing here runs Python code that could resize buf (only our own objects are made). */
-    Py_ssize_t pos = scan_core((const unsigned char *)PyByteArray_AS_STRING(buf), PyByteArray_GET_SIZE(buf),
-                               base, final, 0, &skip, events);
+    Py_ssize_t pos = scan_core(p, n, base, final, decode, &skip, events);
+    Py_XDECREF(copy);
     if (pos < 0) {
         Py_DECREF(events);
         return NULL;

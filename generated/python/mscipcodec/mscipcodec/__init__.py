@@ -29,6 +29,7 @@ from .framing import (
 )
 from .packets import (
     DecodedField,
+    Decoder,
     Packet,
     RawField,
     Trailing,
@@ -67,6 +68,7 @@ __all__ = [
     "iter_fields",
     "parse",
     "DecodedField",
+    "Decoder",
     "Packet",
     "RawField",
     "Trailing",

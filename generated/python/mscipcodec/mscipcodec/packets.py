@@ -186,6 +186,38 @@ if _speedups is not None:
     decode_packet = _speedups.decode_packet  # noqa: F811 - same contract, in C
 
 
+class Decoder(Parser):
+    """A stream parser whose packets come out decoded: feed(bytes) -> [Packet | Skip], flush() at end.
+
+    The events are those of `Parser` with each `RawPacket` e replaced by
+    `decode_packet(e.data, e.offset, device)`; in C, without the intermediate RawPacket objects,
+    when the accelerator is built.
+    """
+
+    def __init__(self, device: Optional[str] = None) -> None:
+        super().__init__()
+        self.device = device
+
+    def feed(self, data: Any) -> List[Any]:
+        """Consume more input; returns the (decoded) events it completes."""
+        return super().feed(data)
+
+    def flush(self) -> List[Any]:
+        """End of input: returns the last (decoded) events."""
+        return super().flush()
+
+    def _scan(self, final: bool) -> List[Any]:
+        if _speedups is None or self.device is not None:
+            device = self.device
+            return [
+                decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in super()._scan(final)
+            ]
+        events, pos, self._skip_at = _speedups.scan(self._buf, self._base, self._skip, self._skip_at, final, True)
+        del self._buf[:pos]
+        self._base += pos
+        return events
+
+
 def decode_all(data: Any, device: Optional[str] = None) -> List[Union[Packet, Skip]]:
     """Every event of a complete stream with its packets decoded: `Packet` and `Skip` in stream order.
 
@@ -340,6 +372,7 @@ __all__ = [
     "decode_field",
     "decode_packet",
     "decode_all",
+    "Decoder",
     "decode_stream",
     "decode_bytes",
     "event_line",

@@ -6,6 +6,7 @@ tests/streams/mscip/): decode whole and fed in chunks of every size, encode back
 import pytest
 from mscipcodec import packets
 from mscipcodec import (
+    Decoder,
     Packet,
     Parser,
     RawPacket,
@@ -1511,6 +1512,10 @@ def test_decode_every_chunking(case):
     for size in range(1, len(data)):
         lines = list(decode_stream((data[i : i + size] for i in range(0, len(data), size)), case["device"]))
         assert lines == case["expect"], f"{case['where']}: decoded in chunks of {size} bytes"
+        decoder = Decoder(case["device"])
+        events = [e for i in range(0, len(data), size) for e in decoder.feed(data[i : i + size])] + decoder.flush()
+        lines = [event_line(e) if isinstance(e, Skip) else e.line() for e in events]
+        assert lines == case["expect"], f"{case['where']}: Decoder fed chunks of {size} bytes"
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
@@ -1535,6 +1540,9 @@ def test_accelerated_paths_match_the_pure_path(case):
         packets._decode_packet_pure(e.data, e.offset, case["device"]) if isinstance(e, RawPacket) else e for e in events
     ]
     got = decode_all(data, case["device"])
+    decoder = Decoder(case["device"])
+    streamed = [x for i in range(0, len(data), 5) for x in decoder.feed(data[i : i + 5])] + decoder.flush()
+    assert [repr(x) for x in streamed] == [repr(x) for x in expected], case["where"]
     assert [type(x) for x in got] == [type(x) for x in expected], case["where"]
     assert [repr(x) for x in got] == [repr(x) for x in expected], case["where"]
     assert [event_line(x) if isinstance(x, Skip) else x.line() for x in got] == case["expect"], case["where"]
