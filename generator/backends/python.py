@@ -30,6 +30,7 @@ EXPORTED = {
     "build_packet",
     "checksum_bytes",
     "decode_all",
+    "decode_columns",
     "decode_bytes",
     "decode_field",
     "decode_packet",

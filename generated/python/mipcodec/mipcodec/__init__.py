@@ -46,6 +46,7 @@ from .framing import (
     parse,
 )
 from .packets import (
+    Columns,
     DecodedField,
     Decoder,
     Packet,
@@ -53,6 +54,7 @@ from .packets import (
     Trailing,
     decode_all,
     decode_bytes,
+    decode_columns,
     decode_field,
     decode_packet,
     decode_stream,
@@ -97,6 +99,7 @@ __all__ = [
     "fletcher16",
     "iter_fields",
     "parse",
+    "Columns",
     "DecodedField",
     "Decoder",
     "Packet",
@@ -104,6 +107,7 @@ __all__ = [
     "Trailing",
     "decode_all",
     "decode_bytes",
+    "decode_columns",
     "decode_field",
     "decode_packet",
     "decode_stream",

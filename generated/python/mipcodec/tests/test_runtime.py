@@ -422,7 +422,7 @@ def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
     # floats, invalid bools, unknown enum values, every flag), random bytes, one byte short and
     # one byte long, for each of its per-device layouts: the same entries (repr, line, types) as
     # the pure-Python decoder, errors included.
-    from mipcodec import packets, registry
+    from mipcodec import decode_columns, packets, registry
 
     checked = 0
     for (set_id, descriptor), classes in registry.FIELDS.items():
@@ -441,5 +441,7 @@ def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
                     assert repr(got) == repr(want), (cls.__name__, data.hex())
                     assert got.line() == want.line(), (cls.__name__, data.hex())
                     assert [type(v) for v in got.values()] == [type(v) for v in want.values()]
+                    entries = [(o, k, repr(x)) for o, k, x in decode_columns(b"\0" * 7 + packet).entries()]
+                    assert entries == [(7, k, repr(f)) for k, f in enumerate(want.fields)], (cls.__name__, data.hex())
                     checked += 1
     assert checked > 0

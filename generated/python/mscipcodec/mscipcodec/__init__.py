@@ -28,6 +28,7 @@ from .framing import (
     parse,
 )
 from .packets import (
+    Columns,
     DecodedField,
     Decoder,
     Packet,
@@ -35,6 +36,7 @@ from .packets import (
     Trailing,
     decode_all,
     decode_bytes,
+    decode_columns,
     decode_field,
     decode_packet,
     decode_stream,
@@ -67,6 +69,7 @@ __all__ = [
     "fletcher16",
     "iter_fields",
     "parse",
+    "Columns",
     "DecodedField",
     "Decoder",
     "Packet",
@@ -74,6 +77,7 @@ __all__ = [
     "Trailing",
     "decode_all",
     "decode_bytes",
+    "decode_columns",
     "decode_field",
     "decode_packet",
     "decode_stream",

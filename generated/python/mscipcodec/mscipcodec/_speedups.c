@@ -219,11 +219,16 @@ static int flush_skip(SkipRun *s, PyObject *events) {
 
 static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject *offset);
 
+typedef struct Columns Columns;
+static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
+
+enum { SCAN_RAW, SCAN_DECODE, SCAN_COLUMNS };
+
 /* The parser loop of framing.Parser._scan over p[0:n] (stream offset `base`). A packet becomes
- * a RawPacket, or a decoded Packet when `decode` is set. Returns the number of bytes consumed,
- * or -1 with an exception set. */
-static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int decode,
-                            SkipRun *skip, PyObject *events) {
+ * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), or rows of `columns` (SCAN_COLUMNS);
+ * Skip events go to `events`. Returns the number of bytes consumed, or -1 with an exception set. */
+static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int mode,
+                            Columns *columns, SkipRun *skip, PyObject *events) {
     Py_ssize_t pos = 0;
     while (pos < n) {
         Py_ssize_t i = find_sync(p, pos, n);
@@ -260,9 +265,16 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
                     if (flush_skip(skip, events) < 0) {
                         return -1;
                     }
+                    if (mode == SCAN_COLUMNS) {
+                        if (column_packet(columns, p + i, total, base + i) < 0) {
+                            return -1;
+                        }
+                        pos = i + total;
+                        continue;
+                    }
                     PyObject *off = PyLong_FromSsize_t(base + i);
                     PyObject *ev;
-                    if (decode) {
+                    if (mode == SCAN_DECODE) {
                         ev = off == NULL ? NULL : decode_packet_c(p + i, total, off);
                         Py_XDECREF(off);
                     } else {
@@ -323,7 +335,7 @@ static PyObject *scan(PyObject *self, PyObject *args) {
         Py_XDECREF(copy);
         return NULL;
     }
-    Py_ssize_t pos = scan_core(p, n, base, final, decode, &skip, events);
+    Py_ssize_t pos = scan_core(p, n, base, final, decode ? SCAN_DECODE : SCAN_RAW, NULL, &skip, events);
     Py_XDECREF(copy);
     if (pos < 0) {
         Py_DECREF(events);
@@ -678,7 +690,7 @@ static PyObject *decode_all(PyObject *self, PyObject *arg) {
         return NULL;
     }
     Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0, 1,
-                               1, &skip, events);
+                               SCAN_DECODE, NULL, &skip, events);
     Py_DECREF(copy);
     if (pos < 0 || flush_skip(&skip, events) < 0) {
         Py_DECREF(skip.bytes);
@@ -687,6 +699,314 @@ static PyObject *decode_all(PyObject *self, PyObject *arg) {
     }
     Py_DECREF(skip.bytes);
     return events;
+}
+
+/* ------------------------------------------------------------------------------ columns */
+/* decode_columns: the fields the C side reads (fast entries without char or string items) become
+ * rows of per-(set, descriptor) tables of native numbers; every other field entry (and every
+ * packet that does not split into fields) goes to `others` as Python objects. */
+typedef struct {
+    char *p;
+    Py_ssize_t len, cap;
+} Buf;
+
+static int buf_reserve(Buf *b, Py_ssize_t more) {
+    if (b->len + more <= b->cap) {
+        return 0;
+    }
+    Py_ssize_t cap = b->cap ? b->cap : 4096;
+    while (cap < b->len + more) {
+        cap *= 2;
+    }
+    char *q = PyMem_Realloc(b->p, (size_t)cap);
+    if (q == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    b->p = q;
+    b->cap = cap;
+    return 0;
+}
+
+typedef struct {
+    const Entry *e;
+    int set_id, descriptor;
+    Py_ssize_t rows;
+    Buf offsets; /* long long per row: packet offset */
+    Buf index;   /* long long per row: position of the field in its packet */
+    Buf cols[];  /* per item: double (f, d), long long (i), unsigned long long (u, e, F), unsigned char (?) */
+} Table;
+
+struct Columns {
+    Table **by_key; /* [set << 8 | descriptor] */
+    Table **list;
+    Py_ssize_t ntables, cap;
+    Py_ssize_t packets;
+    PyObject *others; /* [(offset, index, entry) | (offset, -1, Packet)] */
+};
+
+static int columnable(const Entry *e) {
+    if (e->kind != ENTRY_FAST) {
+        return 0;
+    }
+    for (int k = 0; k < e->nitems; k++) {
+        if (e->items[k].kind == 'c' || e->items[k].kind == 's') {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int column_width(char kind) {
+    return kind == '?' ? 1 : 8;
+}
+
+/* True when every element reads as the pure decoder reads it (no NaN, no invalid bool). */
+static int row_ok(const Entry *e, const unsigned char *p) {
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        int n = it->count < 0 ? 1 : it->count;
+        for (int j = 0; j < n; j++, p += it->size) {
+            if (it->kind == 'f') {
+                unsigned int bits = load32(p);
+                if ((bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu)) {
+                    return 0;
+                }
+            } else if (it->kind == 'd') {
+                unsigned long long bits = load(p, 8);
+                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull &&
+                    (bits & 0x000FFFFFFFFFFFFFull)) {
+                    return 0;
+                }
+            } else if (it->kind == '?' && p[0] > 1) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+static Table *table_for(Columns *c, const Entry *e, int set_id, int descriptor) {
+    Table **slot = &c->by_key[set_id << 8 | descriptor];
+    if (*slot != NULL) {
+        return *slot;
+    }
+    Table *t = PyMem_Calloc(1, sizeof(Table) + (size_t)e->nitems * sizeof(Buf));
+    if (t == NULL) {
+        PyErr_NoMemory();
+        return NULL;
+    }
+    if (c->ntables == c->cap) {
+        Py_ssize_t cap = c->cap ? 2 * c->cap : 16;
+        Table **q = PyMem_Realloc(c->list, (size_t)cap * sizeof(Table *));
+        if (q == NULL) {
+            PyMem_Free(t);
+            PyErr_NoMemory();
+            return NULL;
+        }
+        c->list = q;
+        c->cap = cap;
+    }
+    t->e = e;
+    t->set_id = set_id;
+    t->descriptor = descriptor;
+    c->list[c->ntables++] = t;
+    *slot = t;
+    return t;
+}
+
+static int put_row(Table *t, const unsigned char *p, long long offset, long long index) {
+    const Entry *e = t->e;
+    if (buf_reserve(&t->offsets, 8) < 0 || buf_reserve(&t->index, 8) < 0) {
+        return -1;
+    }
+    memcpy(t->offsets.p + t->offsets.len, &offset, 8);
+    t->offsets.len += 8;
+    memcpy(t->index.p + t->index.len, &index, 8);
+    t->index.len += 8;
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        int n = it->count < 0 ? 1 : it->count;
+        Buf *b = &t->cols[k];
+        if (buf_reserve(b, (Py_ssize_t)n * column_width(it->kind)) < 0) {
+            return -1;
+        }
+        char *out = b->p + b->len;
+        for (int j = 0; j < n; j++, p += it->size) {
+            switch (it->kind) {
+            case 'f': {
+                unsigned int bits = load32(p);
+                float f;
+                memcpy(&f, &bits, 4);
+                double d = f;
+                memcpy(out, &d, 8);
+                out += 8;
+                break;
+            }
+            case 'd': {
+                unsigned long long bits = load(p, 8);
+                memcpy(out, &bits, 8);
+                out += 8;
+                break;
+            }
+            case 'i': {
+                unsigned long long v = load(p, it->size);
+                int shift = 64 - 8 * it->size;
+                long long x = shift ? (long long)(v << shift) >> shift : (long long)v;
+                memcpy(out, &x, 8);
+                out += 8;
+                break;
+            }
+            case '?':
+                *out++ = (char)p[0];
+                break;
+            default: { /* u, e, F */
+                unsigned long long v = load(p, it->size);
+                memcpy(out, &v, 8);
+                out += 8;
+                break;
+            }
+            }
+        }
+        b->len = out - b->p;
+    }
+    t->rows++;
+    return 0;
+}
+
+static int add_other(Columns *c, long long offset, long long index, PyObject *entry) {
+    if (entry == NULL) {
+        return -1;
+    }
+    PyObject *t = Py_BuildValue("LLN", offset, index, entry);
+    if (t == NULL || PyList_Append(c->others, t) < 0) {
+        Py_XDECREF(t);
+        return -1;
+    }
+    Py_DECREF(t);
+    return 0;
+}
+
+static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset) {
+    int set_id = p[SET_OFFSET];
+    const unsigned char *pl = p + HEADER_SIZE;
+    Py_ssize_t len = n - HEADER_SIZE - CHECKSUM_SIZE;
+    c->packets++;
+    /* A payload that does not split into fields: the whole packet, decoded in Python. */
+    for (Py_ssize_t o = 0; o < len;) {
+        int bad = len - o < FIELD_HEADER_SIZE;
+        if (!bad) {
+            int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+            int data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+            bad = data_length < 0 || FIELD_HEADER_SIZE + data_length > len - o;
+            o += FIELD_HEADER_SIZE + (data_length < 0 ? 0 : data_length);
+        }
+        if (bad) {
+            PyObject *off = PyLong_FromSsize_t(offset);
+            if (off == NULL) {
+                return -1;
+            }
+            PyObject *pkt = PyObject_CallFunction(py_decode_packet, "y#OO", (const char *)p, n, off, Py_None);
+            Py_DECREF(off);
+            return add_other(c, offset, -1, pkt);
+        }
+    }
+    long long index = 0;
+    for (Py_ssize_t o = 0; o < len; index++) {
+        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        Py_ssize_t data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+        const unsigned char *data = pl + o + FIELD_HEADER_SIZE;
+        o += FIELD_HEADER_SIZE + data_length;
+        Entry *e = entry_for(set_id, descriptor);
+        if (e == NULL) {
+            return -1;
+        }
+        if (e->kind == ENTRY_FAST && e->size == data_length && columnable(e) && row_ok(e, data)) {
+            Table *t = table_for(c, e, set_id, descriptor);
+            if (t == NULL || put_row(t, data, offset, index) < 0) {
+                return -1;
+            }
+        } else if (add_other(c, offset, index, slow_field(set_id, descriptor, data, data_length)) < 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static PyObject *buf_bytes(const Buf *b) {
+    return PyBytes_FromStringAndSize(b->p ? b->p : "", b->len);
+}
+
+static PyObject *tables_out(Columns *c) {
+    PyObject *out = PyList_New(c->ntables);
+    for (Py_ssize_t k = 0; out != NULL && k < c->ntables; k++) {
+        Table *t = c->list[k];
+        PyObject *cols = PyList_New(t->e->nitems);
+        for (int j = 0; cols != NULL && j < t->e->nitems; j++) {
+            PyObject *b = buf_bytes(&t->cols[j]);
+            if (b == NULL) {
+                Py_CLEAR(cols);
+                break;
+            }
+            PyList_SET_ITEM(cols, j, b);
+        }
+        PyObject *row = cols == NULL ? NULL
+                                     : Py_BuildValue("iiOnNNN", t->set_id, t->descriptor, t->e->cls, t->rows,
+                                                     buf_bytes(&t->offsets), buf_bytes(&t->index), cols);
+        if (row == NULL) {
+            Py_CLEAR(out);
+            break;
+        }
+        PyList_SET_ITEM(out, k, row);
+    }
+    return out;
+}
+
+static void columns_free(Columns *c) {
+    for (Py_ssize_t k = 0; k < c->ntables; k++) {
+        Table *t = c->list[k];
+        for (int j = 0; j < t->e->nitems; j++) {
+            PyMem_Free(t->cols[j].p);
+        }
+        PyMem_Free(t->offsets.p);
+        PyMem_Free(t->index.p);
+        PyMem_Free(t);
+    }
+    PyMem_Free(c->list);
+    PyMem_Free(c->by_key);
+    Py_XDECREF(c->others);
+}
+
+/* decode_columns(data) -> (packets, skips, tables, others); tables: [(set, descriptor, class, rows,
+ * offsets, index, [column bytes per item])] in native byte order. */
+static PyObject *decode_columns(PyObject *self, PyObject *arg) {
+    (void)self;
+    PyObject *copy = PyBytes_FromObject(arg);
+    if (copy == NULL) {
+        return NULL;
+    }
+    Columns c = {PyMem_Calloc(65536, sizeof(Table *)), NULL, 0, 0, 0, PyList_New(0)};
+    SkipRun skip = {PyByteArray_FromStringAndSize(NULL, 0), 0};
+    PyObject *skips = PyList_New(0), *result = NULL;
+    if (c.by_key == NULL || c.others == NULL || skip.bytes == NULL || skips == NULL) {
+        if (c.by_key == NULL) {
+            PyErr_NoMemory();
+        }
+    } else {
+        Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0,
+                                   1, SCAN_COLUMNS, &c, &skip, skips);
+        if (pos >= 0 && flush_skip(&skip, skips) >= 0) {
+            PyObject *tables = tables_out(&c);
+            if (tables != NULL) {
+                result = Py_BuildValue("nONO", c.packets, skips, tables, c.others);
+            }
+        }
+    }
+    Py_DECREF(copy);
+    Py_XDECREF(skip.bytes);
+    Py_XDECREF(skips);
+    columns_free(&c);
+    return result;
 }
 
 /* setup(RawPacket, Skip, Packet, DecodedField, decode_packet, decode_field, program) */
@@ -723,6 +1043,8 @@ static PyMethodDef methods[] = {
      "decode_packet(packet, offset=0, device=None): a complete packet decoded into typed fields."},
     {"decode_all", decode_all, METH_O,
      "decode_all(data): every event of a complete stream, packets decoded."},
+    {"decode_columns", decode_columns, METH_O,
+     "decode_columns(data): a complete stream as per-field tables."},
     {NULL, NULL, 0, NULL},
 };
 

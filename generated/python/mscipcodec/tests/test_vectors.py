@@ -11,7 +11,9 @@ from mscipcodec import (
     Parser,
     RawPacket,
     Skip,
+    Trailing,
     decode_all,
+    decode_columns,
     decode_bytes,
     decode_packet,
     decode_stream,
@@ -1555,3 +1557,30 @@ def test_accelerated_paths_match_the_pure_path(case):
 
 def _raw(events, offset):
     return next(e.data for e in events if isinstance(e, RawPacket) and e.offset == offset)
+
+
+def _pure_entries(events):
+    """(offset, index, repr) of every field entry, as Columns.entries() gives them."""
+    out = []
+    for e in events:
+        if isinstance(e, RawPacket):
+            p = packets._decode_packet_pure(e.data, e.offset)
+            if any(isinstance(f, Trailing) for f in p.fields):
+                out.append((p.offset, -1, repr(p)))
+            else:
+                out.extend((p.offset, k, repr(f)) for k, f in enumerate(p.fields))
+    return out
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
+def test_decode_columns_matches_the_pure_path(case):
+    # The columnar API (tables of numbers in C when accelerated, objects otherwise) holds every
+    # field entry of the pure-Python decoder (no device: decode_columns has no device choice).
+    data = bytes.fromhex(case["hex"])
+    events = _pure_events(data)
+    cols = decode_columns(data)
+    assert cols.packets == sum(isinstance(e, RawPacket) for e in events), case["where"]
+    assert cols.skips == [e for e in events if isinstance(e, Skip)], case["where"]
+    assert [(o, k, repr(x)) for o, k, x in cols.entries()] == _pure_entries(events), case["where"]
+    for table in cols.tables.values():
+        assert len(table.offsets) == len(table.index) == len(table)
