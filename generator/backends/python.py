@@ -24,7 +24,18 @@ from generator.render import environment
 OUTPUT_DIRS = ["python"]
 
 # Runtime modules of every package; a descriptor set whose name collides gets a "_set" suffix.
-RUNTIME_MODULES = {"_speedups", "canonical", "cli", "codec", "framing", "packets", "registry", "reserved", "types", "tests"}
+RUNTIME_MODULES = {
+    "_speedups",
+    "canonical",
+    "cli",
+    "codec",
+    "framing",
+    "packets",
+    "registry",
+    "reserved",
+    "types",
+    "tests",
+}
 # Names the package exports at top level (a set module must not shadow them).
 EXPORTED = {
     "build_packet",
