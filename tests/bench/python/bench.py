@@ -14,7 +14,9 @@ Modes (one BENCH line each, see tests/bench/run.py); the in-memory file is fed i
           values (the objects decode_packet(raw.data, raw.offset) returns), packets and fields
           counted; each chunk's objects are dropped before the next, as when processing a log
 lang=python also prints a `# extra:` line for mipcodec.decode_all(data) (whole stream, every
-object kept until the end of the pass). Each pass runs over the whole file (read once, not
+object kept until the end of the pass), and lang=python-columns mode=decode lines for
+mipcodec.decode_columns(data): the columnar fast API (per-field tables of numbers built in C, no
+Python object per packet for the fields it reads; every other field entry as an object). Each pass runs over the whole file (read once, not
 timed); the best of the passes is printed. As in timeit, the garbage collector is off during a
 timed pass (--gc leaves it on). The packet and field counts of every timed pass are checked
 against the sidecar (exit 1 on a mismatch); an untimed decode_all pass checks that every field
@@ -90,6 +92,13 @@ def decode_all_pass(mipcodec, data):
     events = mipcodec.decode_all(data)
     packet = mipcodec.Packet
     return sum(1 for e in events if type(e) is packet), sum(len(e.fields) for e in events if type(e) is packet)
+
+
+def columns_pass(mipcodec, data):
+    """decode_columns over the whole stream: per-field tables of numbers (C) plus other entries."""
+    cols = mipcodec.decode_columns(data)
+    fields = sum(len(t) for t in cols.tables.values()) + sum(1 for _o, k, _e in cols.others if k >= 0)
+    return cols.packets, fields
 
 
 def timed(fn, mipcodec, data, passes: int, use_gc: bool):
