@@ -154,13 +154,16 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
         status |= check_values(mipcodec, data, lang, name, side)
         runs = [("frame", frame_pass), ("decode", decode_pass)]
         if lang == "python":
-            runs.append(("decode_all", decode_all_pass))
+            runs += [("decode_all", decode_all_pass), ("columns", columns_pass)]
         for mode, fn in runs:
             seconds, (packets, fields) = timed(fn, mipcodec, data, passes, use_gc)
-            prefix = "BENCH" if mode != "decode_all" else "# extra:"
-            print(
-                f"{prefix} lang={lang} stream={name} mode={mode} packets={packets} bytes={len(data)} seconds={seconds:.6f}"
-            )
+            if mode == "columns":
+                head = f"BENCH lang=python-columns stream={name} mode=decode"
+            elif mode == "decode_all":
+                head = f"# extra: lang={lang} stream={name} mode=decode_all"
+            else:
+                head = f"BENCH lang={lang} stream={name} mode={mode}"
+            print(f"{head} packets={packets} bytes={len(data)} seconds={seconds:.6f}")
             if packets != side["packets"] or (mode != "frame" and fields != side["fields"]):
                 print(
                     f"bench.py: {lang} {mode} {name}: {packets} packets, {fields} fields;"

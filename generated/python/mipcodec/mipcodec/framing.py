@@ -151,6 +151,9 @@ class RawPacket(_EventBase):
     def __eq__(self, other: object) -> bool:
         return isinstance(other, RawPacket) and (other.offset, other.data) == (self.offset, self.data)
 
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.data))
+
     def __repr__(self) -> str:
         return f"RawPacket(offset={self.offset}, data={self.data.hex()})"
 
@@ -170,6 +173,9 @@ class Skip(_EventBase):
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Skip) and (other.offset, other.data) == (self.offset, self.data)
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.data))
 
     def __repr__(self) -> str:
         return f"Skip(offset={self.offset}, data={self.data.hex()})"

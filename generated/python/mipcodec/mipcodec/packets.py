@@ -67,6 +67,9 @@ class DecodedField(_DecodedBase):
             + "}"
         )
 
+    def __reduce__(self) -> Any:
+        return (type(self), (self.descriptor, self.value))
+
     def __repr__(self) -> str:
         return f"DecodedField({self.value!r})"
 
@@ -129,6 +132,9 @@ class Packet(_PacketBase):
         """The canonical JSON line of the packet."""
         inner = ",".join(f.line() for f in self.fields)
         return '{"offset":' + str(self.offset) + ',"set":' + str(self.set) + ',"fields":[' + inner + "]}"
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.set, self.fields))
 
     def values(self) -> List[Field]:
         """The typed values of the decoded fields."""

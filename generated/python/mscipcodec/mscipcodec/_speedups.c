@@ -310,6 +310,10 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
  *   -> (events, consumed, skip_at); with decode, packets are decoded (Packet) instead of RawPacket. */
 static PyObject *scan(PyObject *self, PyObject *args) {
     (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "mscipcodec._speedups.setup() was not called");
+        return NULL;
+    }
     PyObject *buf;
     Py_ssize_t base;
     SkipRun skip;
@@ -641,6 +645,10 @@ static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject 
 /* decode_packet(packet, offset=0, device=None) */
 static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs) {
     (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "mscipcodec._speedups.setup() was not called");
+        return NULL;
+    }
     static char *names[] = {"packet", "offset", "device", NULL};
     PyObject *packet, *offset = NULL, *device = Py_None;
     if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O|OO", names, &packet, &offset, &device)) {
@@ -677,6 +685,10 @@ static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs)
 /* decode_all(data) -> [Packet | Skip]: a complete stream, parsed and decoded in one pass. */
 static PyObject *decode_all(PyObject *self, PyObject *arg) {
     (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "mscipcodec._speedups.setup() was not called");
+        return NULL;
+    }
     PyObject *copy = PyBytes_FromObject(arg); /* a private immutable copy (no copy for bytes) */
     if (copy == NULL) {
         return NULL;
@@ -981,6 +993,10 @@ static void columns_free(Columns *c) {
  * offsets, index, [column bytes per item])] in native byte order. */
 static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "mscipcodec._speedups.setup() was not called");
+        return NULL;
+    }
     PyObject *copy = PyBytes_FromObject(arg);
     if (copy == NULL) {
         return NULL;

@@ -395,3 +395,22 @@ def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
                     assert entries == [(7, k, repr(f)) for k, f in enumerate(want.fields)], (cls.__name__, data.hex())
                     checked += 1
     assert checked > 0
+
+
+def test_events_and_packets_copy_and_pickle():
+    # RawPacket, Skip, Packet and DecodedField keep their attributes in C base classes when the
+    # accelerator is built: copying and pickling must still carry them.
+    import copy
+    import pickle
+
+    from mscipcodec import decode_all
+
+    data = b"\x00\x01" + PacketBuilder(0x80).add_field(0x01, b"\x00" * 4).build()
+    raw = parse(data)
+    assert [type(e) for e in raw] == [Skip, RawPacket]
+    for e in raw:
+        assert copy.copy(e) == e
+        assert pickle.loads(pickle.dumps(e)) == e
+    for e in decode_all(data):
+        assert repr(copy.deepcopy(e)) == repr(e)
+        assert repr(pickle.loads(pickle.dumps(e))) == repr(e)
