@@ -464,3 +464,23 @@ def test_events_and_packets_copy_and_pickle():
     for e in decode_all(data):
         assert repr(copy.deepcopy(e)) == repr(e)
         assert repr(pickle.loads(pickle.dumps(e))) == repr(e)
+
+
+def test_decoding_leaves_the_garbage_collector_as_it_was():
+    # The accelerator pauses the collector during a call; it must restore the caller's setting.
+    import gc
+
+    from mipcodec import Decoder, decode_all, decode_columns
+
+    data = PacketBuilder(0x80).add_field(0x01, b"\x00" * 4).build() * 3
+    was = gc.isenabled()
+    try:
+        for enabled in (True, False):
+            gc.enable() if enabled else gc.disable()
+            decode_all(data)
+            decode_columns(data)
+            Decoder().feed(data)
+            parse(data)
+            assert gc.isenabled() == enabled
+    finally:
+        gc.enable() if was else gc.disable()

@@ -306,6 +306,28 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
     return pos;
 }
 
+/* The cyclic garbage collector is paused while one call builds its objects: they form no cycle,
+ * and a collection in the middle would only rescan them (promoting them to older generations,
+ * which then get rescanned over and over on long streams). Objects the caller drops before the
+ * next call are never scanned at all; those it keeps are collected as usual afterwards. */
+static int gc_pause(void) {
+#if PY_VERSION_HEX >= 0x030A0000
+    return PyGC_Disable();
+#else
+    return 0;
+#endif
+}
+
+static void gc_resume(int was_enabled) {
+#if PY_VERSION_HEX >= 0x030A0000
+    if (was_enabled) {
+        PyGC_Enable();
+    }
+#else
+    (void)was_enabled;
+#endif
+}
+
 /* scan(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool, decode: bool = False)
  *   -> (events, consumed, skip_at); with decode, packets are decoded (Packet) instead of RawPacket. */
 static PyObject *scan(PyObject *self, PyObject *args) {
@@ -339,7 +361,9 @@ static PyObject *scan(PyObject *self, PyObject *args) {
         Py_XDECREF(copy);
         return NULL;
     }
+    int gc = gc_pause();
     Py_ssize_t pos = scan_core(p, n, base, final, decode ? SCAN_DECODE : SCAN_RAW, NULL, &skip, events);
+    gc_resume(gc);
     Py_XDECREF(copy);
     if (pos < 0) {
         Py_DECREF(events);
@@ -701,8 +725,10 @@ static PyObject *decode_all(PyObject *self, PyObject *arg) {
         Py_DECREF(copy);
         return NULL;
     }
+    int gc = gc_pause();
     Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0, 1,
                                SCAN_DECODE, NULL, &skip, events);
+    gc_resume(gc);
     Py_DECREF(copy);
     if (pos < 0 || flush_skip(&skip, events) < 0) {
         Py_DECREF(skip.bytes);
@@ -1009,8 +1035,10 @@ static PyObject *decode_columns(PyObject *self, PyObject *arg) {
             PyErr_NoMemory();
         }
     } else {
+        int gc = gc_pause();
         Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0,
                                    1, SCAN_COLUMNS, &c, &skip, skips);
+        gc_resume(gc);
         if (pos >= 0 && flush_skip(&skip, skips) >= 0) {
             PyObject *tables = tables_out(&c);
             if (tables != NULL) {
