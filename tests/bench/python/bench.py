@@ -2,6 +2,8 @@
 
     python tests/bench/python/bench.py DIR [--passes 5] [--pure-passes 1] [--only python|python-pure]
                                            [--streams accel_gyro,...] [--gc]
+(--passes 0 or --pure-passes 0 leaves that flavour out; the pure-Python passes take about a
+minute per stream.)
 
 DIR holds the streams written by tests/bench/streams.py (<name>.bin + <name>.json sidecar).
 Two flavours, each in its own process (the choice is made when the package is imported):
@@ -197,6 +199,8 @@ def main() -> int:
     ext_dir = next(d for d in built if d.endswith("/mipcodec"))
     status = 0
     for lang, path in (("python", ext_dir), ("python-pure", str(ROOT / "generated/python/mipcodec"))):
+        if (args.passes if lang == "python" else args.pure_passes) <= 0:
+            continue  # --passes 0 / --pure-passes 0 leave a flavour out
         env = dict(os.environ, PYTHONPATH=path)
         env.pop("MIPCODEC_PURE", None)
         if lang == "python-pure":
