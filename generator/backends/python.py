@@ -24,11 +24,24 @@ from generator.render import environment
 OUTPUT_DIRS = ["python"]
 
 # Runtime modules of every package; a descriptor set whose name collides gets a "_set" suffix.
-RUNTIME_MODULES = {"canonical", "cli", "codec", "framing", "packets", "registry", "reserved", "types", "tests"}
+RUNTIME_MODULES = {
+    "_speedups",
+    "canonical",
+    "cli",
+    "codec",
+    "framing",
+    "packets",
+    "registry",
+    "reserved",
+    "types",
+    "tests",
+}
 # Names the package exports at top level (a set module must not shadow them).
 EXPORTED = {
     "build_packet",
     "checksum_bytes",
+    "decode_all",
+    "decode_columns",
     "decode_bytes",
     "decode_field",
     "decode_packet",
@@ -50,6 +63,7 @@ RUNTIME_TEMPLATES = [
     "framing.py",
     "packets.py",
     "samples.py",
+    "_speedups.c",
 ]
 
 SCALARS = {
@@ -787,6 +801,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         files[f"{root}/{pkg}/reserved.py"] = tmpl.render(**ctx, mod=reserved)
         files[f"{root}/{pkg}/registry.py"] = env.get_template("python/package/registry.py.j2").render(**ctx)
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
+        files[f"{root}/setup.py"] = env.get_template("python/setup.py.j2").render(**ctx)
         files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx)
         files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
             **ctx, example=_example(proto)

@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # Build, test and run the generated Python packages.
 #   tests/lang/python.sh build                        byte-compile every package under generated/python/ into build/python/
-#   tests/lang/python.sh test                         ruff check + pytest of every package
+#   tests/lang/python.sh test                         ruff check + pytest of every package, twice: with the
+#                                                     C accelerator (built by `ext`) and forced pure (<PKG>_PURE=1)
+#   tests/lang/python.sh ext                          build every package with its C accelerator in place
+#                                                     into build/python/ext/<package>/ (prints the directory)
 #   tests/lang/python.sh decode FILE [--device ID]    python -m <package> decode (FILE may be -)
 #   tests/lang/python.sh encode                       python -m <package> encode (stdin -> stdout)
 #   tests/lang/python.sh example FILE                 the package's examples/getting_started.py FILE
 # The package for decode/encode/example is $PY_PACKAGE (default: mipcodec). Works from any directory.
-# Nothing needs compiling: decode/encode run straight from generated/python/<package>; bytecode
-# is cached under build/python/pycache (PYTHONPYCACHEPREFIX), never inside generated/.
+# decode/encode run the pure-Python code straight from generated/python/<package>; bytecode
+# is cached under build/python/pycache (PYTHONPYCACHEPREFIX), never inside generated/. The optional
+# C accelerator (<package>/_speedups.c) is built by the package's own setup.py (build_ext --inplace)
+# in a copy under build/python/ext/, never in generated/ and without installing anything.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -25,7 +30,7 @@ packages() {
 }
 
 usage() {
-    echo "usage: tests/lang/python.sh build | test | decode FILE [--device ID] | encode | example FILE" >&2
+    echo "usage: tests/lang/python.sh build | ext | test | decode FILE [--device ID] | encode | example FILE" >&2
     exit 2
 }
 
@@ -43,6 +48,26 @@ run_cli() {
     run_py -m "$PACKAGE" "$@"
 }
 
+# Copies package $1 to build/python/ext/$1 (timestamps kept, so an unchanged _speedups.c is not
+# recompiled) and builds its C accelerator in place there; fails when it did not build.
+build_ext() {
+    local pkg="$1" out="$ROOT/build/python/ext/$1"
+    mkdir -p "$out"
+    find "$out" -name '*.py' -delete
+    cp -Rp "$ROOT/generated/python/$pkg/." "$out/"
+    (cd "$out" && PYTHONPYCACHEPREFIX= "$PY" setup.py -q build_ext --inplace \
+        --build-temp "$ROOT/build/python/ext-tmp/$pkg" >"$out/build.log" 2>&1) || {
+        cat "$out/build.log" >&2
+        echo "tests/lang/python.sh: building $pkg/_speedups.c failed" >&2
+        exit 1
+    }
+    if ! ls "$out/$pkg"/_speedups*.so >/dev/null 2>&1; then
+        cat "$out/build.log" >&2
+        echo "tests/lang/python.sh: $pkg/_speedups.c did not build (a C compiler and the Python headers, e.g. Debian python3-dev, are needed)" >&2
+        exit 1
+    fi
+}
+
 [ $# -ge 1 ] || usage
 cmd="$1"
 shift
@@ -56,11 +81,22 @@ build)
         PYTHONPYCACHEPREFIX= "$PY" -m compileall -q "$out" >&2
     done
     ;;
+ext)
+    for pkg in $(packages); do
+        build_ext "$pkg"
+        echo "$ROOT/build/python/ext/$pkg"
+    done
+    ;;
 test)
     [ -n "$RUFF" ] || { echo "tests/lang/python.sh: ruff not found (run make)" >&2; exit 2; }
     (cd "$ROOT" && "$RUFF" check --config ruff.toml generated/python)
     for pkg in $(packages); do
-        (cd "$ROOT" && PYTHONPATH="$ROOT/generated/python/$pkg" "$PY" -m pytest -q -p no:cacheprovider "generated/python/$pkg/tests")
+        up="$(echo "$pkg" | tr '[:lower:]' '[:upper:]')"
+        echo "== $pkg: pure Python (${up}_PURE=1)"
+        (cd "$ROOT" && env "${up}_PURE=1" PYTHONPATH="$ROOT/generated/python/$pkg" "$PY" -m pytest -q -p no:cacheprovider "generated/python/$pkg/tests")
+        echo "== $pkg: with the C accelerator (build/python/ext/$pkg)"
+        build_ext "$pkg"
+        (cd "$ROOT/build/python/ext/$pkg" && env -u "${up}_PURE" "${up}_EXPECT_ACCELERATED=1" PYTHONPATH="$ROOT/build/python/ext/$pkg" "$PY" -m pytest -q -p no:cacheprovider tests)
     done
     ;;
 decode)

@@ -33,6 +33,7 @@ from . import (
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
+    ACCELERATED,
     FramingError,
     PacketBuilder,
     Parser,
@@ -45,11 +46,15 @@ from .framing import (
     parse,
 )
 from .packets import (
+    Columns,
     DecodedField,
+    Decoder,
     Packet,
     RawField,
     Trailing,
+    decode_all,
     decode_bytes,
+    decode_columns,
     decode_field,
     decode_packet,
     decode_stream,
@@ -83,6 +88,7 @@ __all__ = [
     "Field",
     "Layout",
     "Struct",
+    "ACCELERATED",
     "FramingError",
     "PacketBuilder",
     "Parser",
@@ -93,11 +99,15 @@ __all__ = [
     "fletcher16",
     "iter_fields",
     "parse",
+    "Columns",
     "DecodedField",
+    "Decoder",
     "Packet",
     "RawField",
     "Trailing",
+    "decode_all",
     "decode_bytes",
+    "decode_columns",
     "decode_field",
     "decode_packet",
     "decode_stream",

@@ -58,7 +58,19 @@ def _show(value: Any) -> str:
 class Scalar:
     """How one wire value is packed, unpacked, checked, printed and read back from JSON."""
 
-    __slots__ = ("code", "size", "type_name", "is_bool", "float_width", "post", "prep", "check", "json", "from_json")
+    __slots__ = (
+        "code",
+        "size",
+        "type_name",
+        "is_bool",
+        "float_width",
+        "post",
+        "prep",
+        "check",
+        "json",
+        "from_json",
+        "fast",
+    )
 
     def __init__(
         self,
@@ -72,6 +84,7 @@ class Scalar:
         prep: Optional[Callable[[Any], Any]] = None,
         is_bool: bool = False,
         float_width: int = 0,
+        fast: Optional[Tuple[str, Any]] = None,
     ) -> None:
         self.code = code
         self.size = size
@@ -83,6 +96,8 @@ class Scalar:
         self.prep = prep
         self.is_bool = is_bool
         self.float_width = float_width
+        # How the C accelerator reads it: (kind, aux), or None (pure-Python decoder); see fast_items.
+        self.fast = fast
 
     def __repr__(self) -> str:
         return f"<scalar {self.type_name}>"
@@ -111,7 +126,9 @@ def _int_checker(type_name: str, lo: int, hi: int) -> Callable[[Any], None]:
 def _int_scalar(code: str, size: int, name: str, signed: bool) -> Scalar:
     bits = size * 8
     lo, hi = (-(1 << (bits - 1)), (1 << (bits - 1)) - 1) if signed else (0, (1 << bits) - 1)
-    return Scalar(code, size, name, _int_json, _int_from_json, _int_checker(name, lo, hi))
+    return Scalar(
+        code, size, name, _int_json, _int_from_json, _int_checker(name, lo, hi), fast=("i" if signed else "u", None)
+    )
 
 
 def _bool_prep(v: Any) -> int:
@@ -203,6 +220,7 @@ F32 = Scalar(
     _float_checker("f", "float"),
     post=_f32_post,
     float_width=32,
+    fast=("f", None),
 )
 F64 = Scalar(
     "d",
@@ -213,9 +231,10 @@ F64 = Scalar(
     _float_checker("d", "double"),
     post=_f64_post,
     float_width=64,
+    fast=("d", None),
 )
-BOOL = Scalar("B", 1, "bool", _bool_json, _bool_from_json, _bool_check, prep=_bool_prep, is_bool=True)
-CHAR = Scalar("c", 1, "char", string_text, lambda x: _latin1_from_json(x, 1), _char_check)
+BOOL = Scalar("B", 1, "bool", _bool_json, _bool_from_json, _bool_check, prep=_bool_prep, is_bool=True, fast=("?", None))
+CHAR = Scalar("c", 1, "char", string_text, lambda x: _latin1_from_json(x, 1), _char_check, fast=("c", None))
 _BASES = {"u8": U8, "u16": U16, "u32": U32, "u64": U64, "s8": S8, "s16": S16, "s32": S32, "s64": S64}
 _CACHE: Dict[Any, Scalar] = {}
 
@@ -241,6 +260,7 @@ def string(length: int) -> Scalar:
             lambda x: _latin1_from_json(x, length),
             check,
             prep=prep,
+            fast=("s", None),
         )
     return _CACHE[key]
 
@@ -259,7 +279,10 @@ def enum(cls: Any, base: str) -> Scalar:
             x = _int_from_json(x)
             return members.get(x, x)
 
-        _CACHE[key] = Scalar(b.code, b.size, f"{cls.__name__} ({base})", _int_json, from_json, b.check, post=post)
+        fast = ("e", members) if base.startswith("u") else None
+        _CACHE[key] = Scalar(
+            b.code, b.size, f"{cls.__name__} ({base})", _int_json, from_json, b.check, post=post, fast=fast
+        )
     return _CACHE[key]
 
 
@@ -275,7 +298,10 @@ def flags(cls: Any) -> Scalar:
         def from_json(x: Any) -> Any:
             return cls(_int_from_json(x))
 
-        _CACHE[key] = Scalar(b.code, b.size, f"{cls.__name__} ({cls._BASE})", _int_json, from_json, b.check, post=post)
+        fast = ("F", cls) if cls._BASE.startswith("u") else None
+        _CACHE[key] = Scalar(
+            b.code, b.size, f"{cls.__name__} ({cls._BASE})", _int_json, from_json, b.check, post=post, fast=fast
+        )
     return _CACHE[key]
 
 
@@ -1027,6 +1053,30 @@ class Field(Layout):
     ROLE = ""
     DEVICE: Optional[str] = None
     APPLIES_TO: Optional[str] = None
+
+
+def fast_items(cls: Any) -> Optional[Tuple[Tuple[str, str, int, int, Any], ...]]:
+    """A layout as fixed-size wire items for the C accelerator, or None when the pure-Python decoder
+    must read it (optional, counted, nested or union parameters, signed enums).
+
+    Items are (attribute, kind, element size, count or -1 for a scalar, aux); the C side builds the
+    same values as `Run.read` and hands every NaN, invalid bool and size mismatch back to `decode`.
+    """
+    items = []
+    attrs = cls._ATTRS
+    for op in cls._OPS:
+        if type(op) is not Run:
+            return None
+        for p in op.params:
+            s = p.scalar
+            if s.fast is None or (p.count is not None and s.fast[0] == "s"):
+                return None
+            if len(items) >= len(attrs):
+                return None
+            items.append((attrs[len(items)], s.fast[0], s.size, -1 if p.count is None else p.count, s.fast[1]))
+    if len(items) != len(attrs):
+        return None
+    return tuple(items)
 
 
 class Union:

@@ -6,8 +6,26 @@ every protocol and follows docs/conformance.md sections 1 and 2.
 
 from __future__ import annotations
 
+import os
 from operator import mul
-from typing import Any, Iterator, List, Union
+from typing import Any, Iterator, List, Tuple, Union
+
+# The optional C accelerator (_speedups.c, built by setup.py when a compiler is there): the parser
+# loop and packet decoding run in C with the same results. MIPCODEC_PURE=1 in the
+# environment forces the pure-Python code (tests run both ways).
+_speedups: Any = None
+if os.environ.get("MIPCODEC_PURE", "") in ("", "0"):
+    try:
+        from . import _speedups  # type: ignore[attr-defined, no-redef]
+    except ImportError:
+        _speedups = None
+ACCELERATED = _speedups is not None
+if _speedups is not None:
+    _EventBase: Any = _speedups.EventBase
+    _EVENT_SLOTS: Tuple[str, ...] = ()  # offset and data live in the C base
+else:
+    _EventBase = object
+    _EVENT_SLOTS = ("offset", "data")
 
 # ----------------------------------------------------------------------------------- constants
 SYNC = b"\x75\x65"
@@ -113,10 +131,10 @@ def build_packet(set_id: int, *values: Any) -> bytes:
 
 
 # ----------------------------------------------------------------------------------- parser
-class RawPacket:
+class RawPacket(_EventBase):
     """A complete packet with a valid checksum found at `offset` in the stream."""
 
-    __slots__ = ("offset", "data")
+    __slots__ = _EVENT_SLOTS
 
     def __init__(self, offset: int, data: bytes) -> None:
         self.offset = offset
@@ -133,14 +151,17 @@ class RawPacket:
     def __eq__(self, other: object) -> bool:
         return isinstance(other, RawPacket) and (other.offset, other.data) == (self.offset, self.data)
 
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.data))
+
     def __repr__(self) -> str:
         return f"RawPacket(offset={self.offset}, data={self.data.hex()})"
 
 
-class Skip:
+class Skip(_EventBase):
     """A maximal run of skipped bytes (no packet there) starting at `offset` in the stream."""
 
-    __slots__ = ("offset", "data")
+    __slots__ = _EVENT_SLOTS
 
     def __init__(self, offset: int, data: bytes) -> None:
         self.offset = offset
@@ -152,6 +173,9 @@ class Skip:
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Skip) and (other.offset, other.data) == (self.offset, self.data)
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.data))
 
     def __repr__(self) -> str:
         return f"Skip(offset={self.offset}, data={self.data.hex()})"
@@ -196,6 +220,14 @@ class Parser:
         self._skip += self._buf[a:b]
 
     def _scan(self, final: bool) -> List[Event]:
+        if _speedups is None:
+            return self._scan_pure(final)
+        events, pos, self._skip_at = _speedups.scan(self._buf, self._base, self._skip, self._skip_at, final)
+        del self._buf[:pos]
+        self._base += pos
+        return events
+
+    def _scan_pure(self, final: bool) -> List[Event]:
         buf = self._buf
         n = len(buf)
         pos = 0

@@ -394,3 +394,93 @@ def test_sample_grouper_merges_continuation_packets():
     assert [f.descriptor for f in late.fields] == [stamp, 0x06]
     # Command-set packets are not samples.
     assert tracker.feed(PacketBuilder(0x01).build()) is None
+
+
+# ------------------------------------------------------------------------------ C accelerator
+def test_accelerator_is_what_the_environment_asks_for():
+    # tests/lang/python.sh runs this suite twice: MIPCODEC_PURE=1, and with the
+    # extension built (MIPCODEC_EXPECT_ACCELERATED=1), so neither run can silently be the other.
+    import os
+
+    import mipcodec
+
+    if os.environ.get("MIPCODEC_PURE", "") not in ("", "0"):
+        assert not mipcodec.ACCELERATED
+    if os.environ.get("MIPCODEC_EXPECT_ACCELERATED"):
+        assert mipcodec.ACCELERATED
+
+
+def _layout_data(items, fill):
+    size = sum(s * (1 if n < 0 else n) for _a, _k, s, n, _x in items)
+    if fill == "random":
+        return bytes(random.Random(size).getrandbits(8) for _ in range(size))
+    return bytes([fill]) * size
+
+
+def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
+    # Every field whose layout the C side reads itself, with data of all 0x00, 0x01, 0xFF (NaN
+    # floats, invalid bools, unknown enum values, every flag), random bytes, one byte short and
+    # one byte long, for each of its per-device layouts: the same entries (repr, line, types) as
+    # the pure-Python decoder, errors included.
+    from mipcodec import decode_columns, packets, registry
+
+    checked = 0
+    for (set_id, descriptor), classes in registry.FIELDS.items():
+        for cls in classes:
+            items = c.fast_items(cls)
+            if items is None:
+                continue
+            for fill in (0x00, 0x01, 0xFF, "random"):
+                full = _layout_data(items, fill)
+                for data in (full, full[:-1], full + b"\x00"):
+                    if len(data) > 200:
+                        continue
+                    packet = PacketBuilder(set_id).add_field(descriptor, data).build()
+                    got = packets.decode_packet(packet, 7)
+                    want = packets._decode_packet_pure(packet, 7)
+                    assert repr(got) == repr(want), (cls.__name__, data.hex())
+                    assert got.line() == want.line(), (cls.__name__, data.hex())
+                    assert [type(v) for v in got.values()] == [type(v) for v in want.values()]
+                    entries = [(o, k, repr(x)) for o, k, x in decode_columns(b"\0" * 7 + packet).entries()]
+                    assert entries == [(7, k, repr(f)) for k, f in enumerate(want.fields)], (cls.__name__, data.hex())
+                    checked += 1
+    assert checked > 0
+
+
+def test_events_and_packets_copy_and_pickle():
+    # RawPacket, Skip, Packet and DecodedField keep their attributes in C base classes when the
+    # accelerator is built: copying and pickling must still carry them.
+    import copy
+    import pickle
+
+    from mipcodec import decode_all
+
+    data = b"\x00\x01" + PacketBuilder(0x80).add_field(0x01, b"\x00" * 4).build()
+    raw = parse(data)
+    assert [type(e) for e in raw] == [Skip, RawPacket]
+    for e in raw:
+        assert copy.copy(e) == e
+        assert pickle.loads(pickle.dumps(e)) == e
+    for e in decode_all(data):
+        assert repr(copy.deepcopy(e)) == repr(e)
+        assert repr(pickle.loads(pickle.dumps(e))) == repr(e)
+
+
+def test_decoding_leaves_the_garbage_collector_as_it_was():
+    # The accelerator pauses the collector during a call; it must restore the caller's setting.
+    import gc
+
+    from mipcodec import Decoder, decode_all, decode_columns
+
+    data = PacketBuilder(0x80).add_field(0x01, b"\x00" * 4).build() * 3
+    was = gc.isenabled()
+    try:
+        for enabled in (True, False):
+            gc.enable() if enabled else gc.disable()
+            decode_all(data)
+            decode_columns(data)
+            Decoder().feed(data)
+            parse(data)
+            assert gc.isenabled() == enabled
+    finally:
+        gc.enable() if was else gc.disable()

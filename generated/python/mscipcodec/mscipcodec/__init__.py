@@ -15,6 +15,7 @@ from . import base, imu_config, imu_data, reserved, types
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
+    ACCELERATED,
     FramingError,
     PacketBuilder,
     Parser,
@@ -27,11 +28,15 @@ from .framing import (
     parse,
 )
 from .packets import (
+    Columns,
     DecodedField,
+    Decoder,
     Packet,
     RawField,
     Trailing,
+    decode_all,
     decode_bytes,
+    decode_columns,
     decode_field,
     decode_packet,
     decode_stream,
@@ -53,6 +58,7 @@ __all__ = [
     "Field",
     "Layout",
     "Struct",
+    "ACCELERATED",
     "FramingError",
     "PacketBuilder",
     "Parser",
@@ -63,11 +69,15 @@ __all__ = [
     "fletcher16",
     "iter_fields",
     "parse",
+    "Columns",
     "DecodedField",
+    "Decoder",
     "Packet",
     "RawField",
     "Trailing",
+    "decode_all",
     "decode_bytes",
+    "decode_columns",
     "decode_field",
     "decode_packet",
     "decode_stream",

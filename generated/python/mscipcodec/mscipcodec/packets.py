@@ -7,11 +7,12 @@ such line back into bytes (the encode CLI).
 
 from __future__ import annotations
 
-from typing import Any, Iterable, List, Optional, Union
+from array import array
+from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
 
 from . import registry
 from .canonical import JsonError, error_text, hex_bytes, is_int, loads, skip_line
-from .codec import DecodeError, EncodeError, Field
+from .codec import DecodeError, EncodeError, Field, fast_items
 from .framing import (
     CHECKSUM_SIZE,
     HEADER_SIZE,
@@ -22,14 +23,26 @@ from .framing import (
     RawPacket,
     Skip,
     TrailingBytes,
+    _speedups,
     iter_fields,
+    parse,
 )
 
+if _speedups is not None:
+    _PacketBase: Any = _speedups.PacketBase
+    _DecodedBase: Any = _speedups.DecodedFieldBase
+    _PACKET_SLOTS: Tuple[str, ...] = ()  # the attributes live in the C bases
+    _DECODED_SLOTS: Tuple[str, ...] = ()
+else:
+    _PacketBase = _DecodedBase = object
+    _PACKET_SLOTS = ("offset", "set", "fields")
+    _DECODED_SLOTS = ("descriptor", "value")
 
-class DecodedField:
+
+class DecodedField(_DecodedBase):
     """A field decoded into its typed value (value.NAME, value.DEVICE, ...)."""
 
-    __slots__ = ("descriptor", "value")
+    __slots__ = _DECODED_SLOTS
 
     def __init__(self, descriptor: int, value: Field) -> None:
         self.descriptor = descriptor
@@ -53,6 +66,9 @@ class DecodedField:
             + v.to_json()
             + "}"
         )
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.descriptor, self.value))
 
     def __repr__(self) -> str:
         return f"DecodedField({self.value!r})"
@@ -102,10 +118,10 @@ class Trailing:
 Entry = Union[DecodedField, RawField, Trailing]
 
 
-class Packet:
+class Packet(_PacketBase):
     """A decoded packet: stream offset, descriptor set and its field entries in payload order."""
 
-    __slots__ = ("offset", "set", "fields")
+    __slots__ = _PACKET_SLOTS
 
     def __init__(self, offset: int, set_id: int, fields: List[Entry]) -> None:
         self.offset = offset
@@ -116,6 +132,9 @@ class Packet:
         """The canonical JSON line of the packet."""
         inner = ",".join(f.line() for f in self.fields)
         return '{"offset":' + str(self.offset) + ',"set":' + str(self.set) + ',"fields":[' + inner + "]}"
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.set, self.fields))
 
     def values(self) -> List[Field]:
         """The typed values of the decoded fields."""
@@ -155,6 +174,165 @@ def decode_packet(packet: Any, offset: int = 0, device: Optional[str] = None) ->
         else:
             fields.append(decode_field(set_id, f.descriptor, f.data, device))
     return Packet(offset, set_id, fields)
+
+
+_decode_packet_pure = decode_packet
+
+
+def _program(set_id: int, descriptor: int) -> Any:
+    """For the C accelerator: (class, fast_items) of the first layout of a field, or None."""
+    classes = registry.lookup(set_id, descriptor)
+    if classes is None:
+        return None
+    items = fast_items(classes[0])
+    return None if items is None else (classes[0], items)
+
+
+if _speedups is not None:
+    _speedups.setup(RawPacket, Skip, Packet, DecodedField, _decode_packet_pure, decode_field, _program)
+    decode_packet = _speedups.decode_packet  # noqa: F811 - same contract, in C
+
+
+class Decoder(Parser):
+    """A stream parser whose packets come out decoded: feed(bytes) -> [Packet | Skip], flush() at end.
+
+    The events are those of `Parser` with each `RawPacket` e replaced by
+    `decode_packet(e.data, e.offset, device)`; in C, without the intermediate RawPacket objects,
+    when the accelerator is built.
+    """
+
+    def __init__(self, device: Optional[str] = None) -> None:
+        super().__init__()
+        self.device = device
+
+    def feed(self, data: Any) -> List[Any]:
+        """Consume more input; returns the (decoded) events it completes."""
+        return super().feed(data)
+
+    def flush(self) -> List[Any]:
+        """End of input: returns the last (decoded) events."""
+        return super().flush()
+
+    def _scan(self, final: bool) -> List[Any]:
+        if _speedups is None or self.device is not None:
+            device = self.device
+            return [
+                decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in super()._scan(final)
+            ]
+        events, pos, self._skip_at = _speedups.scan(self._buf, self._base, self._skip, self._skip_at, final, True)
+        del self._buf[:pos]
+        self._base += pos
+        return events
+
+
+def decode_all(data: Any, device: Optional[str] = None) -> List[Union[Packet, Skip]]:
+    """Every event of a complete stream with its packets decoded: `Packet` and `Skip` in stream order.
+
+    The same as `decode_packet(e.data, e.offset, device)` for each `RawPacket` of `parse(data)`, in
+    one pass (in C, without the intermediate RawPacket objects, when the accelerator is built).
+    """
+    if _speedups is not None and device is None:
+        return _speedups.decode_all(data)
+    return [decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in parse(data)]
+
+
+# Column type codes of the C accelerator's tables, by item kind (see fast_items).
+_COLUMN_CODES = {"f": "d", "d": "d", "i": "q", "u": "Q", "e": "Q", "F": "Q", "?": "B"}
+
+
+class Table:
+    """The rows of one field (set, descriptor) from `decode_columns`: one array per parameter.
+
+    `columns[attr]` is an `array` of numbers: floats as 'd', signed integers as 'q', unsigned
+    integers, enums and bitfields as 'Q' (their wire values), bools as 'B' (0 or 1); a fixed array
+    parameter of n values has n numbers per row. `offsets[i]` is the stream offset of row i's
+    packet and `index[i]` the position of the field in it. `row(i)` is the typed value (an instance
+    of `cls`) equal to the one `decode_packet` gives.
+    """
+
+    def __init__(
+        self, set_id: int, descriptor: int, cls: Any, rows: int, offsets: bytes, index: bytes, cols: List[bytes]
+    ) -> None:
+        self.set = set_id
+        self.descriptor = descriptor
+        self.cls = cls
+        self.rows = rows
+        self.offsets = array("q", offsets)
+        self.index = array("q", index)
+        self._items = fast_items(cls) or ()
+        self.columns: Dict[str, Any] = {}
+        for (attr, kind, _size, _count, _aux), data in zip(self._items, cols):
+            self.columns[attr] = array(_COLUMN_CODES[kind], data)
+
+    def __len__(self) -> int:
+        return self.rows
+
+    def row(self, i: int) -> Any:
+        """The typed value of row i."""
+        vals = []
+        for attr, kind, _size, count, aux in self._items:
+            col = self.columns[attr]
+            raw = [col[i]] if count < 0 else list(col[i * count : (i + 1) * count])
+            if kind == "e":
+                raw = [aux.get(v, v) for v in raw]
+            elif kind == "F":
+                raw = [aux(v) for v in raw]
+            elif kind == "?":
+                raw = [v == 1 for v in raw]
+            vals.append(raw[0] if count < 0 else raw)
+        return self.cls(*vals)
+
+    def __repr__(self) -> str:
+        return f"Table(set=0x{self.set:02X}, descriptor=0x{self.descriptor:02X}, {self.cls.__name__}, rows={self.rows})"
+
+
+class Columns:
+    """A complete stream decoded by `decode_columns`.
+
+    `packets` counts the packets; `skips` are the Skip events; `tables[(set, descriptor)]` holds
+    the fields the C accelerator reads (fixed layouts of numbers, enums, bitfields and bools, no
+    NaN, no decoding error) as arrays; `others` holds every other field entry as objects:
+    (packet offset, field index, entry), or (offset, -1, Packet) for a packet whose payload does
+    not split into fields. Without the accelerator every entry is in `others`.
+    """
+
+    def __init__(self, packets: int, skips: List[Skip], tables: List[Any], others: List[Tuple[int, int, Any]]) -> None:
+        self.packets = packets
+        self.skips = skips
+        self.tables: Dict[Tuple[int, int], Table] = {(t[0], t[1]): Table(*t) for t in tables}
+        self.others = others
+
+    def entries(self) -> List[Tuple[int, int, Any]]:
+        """Every field entry in stream order, as (packet offset, field index, DecodedField or other entry)."""
+        out = list(self.others)
+        for t in self.tables.values():
+            for i in range(t.rows):
+                out.append((t.offsets[i], t.index[i], DecodedField(t.descriptor, t.row(i))))
+        out.sort(key=lambda x: (x[0], x[1]))
+        return out
+
+
+def decode_columns(data: Any) -> Columns:
+    """A complete stream decoded into per-field tables of numbers (see `Columns`): the fast bulk API.
+
+    In C when the accelerator is built; it builds no Python object per packet for the fields it
+    reads. The same fields and values as `decode_all(data)` (see `Columns.entries`).
+    """
+    if _speedups is not None:
+        return Columns(*_speedups.decode_columns(data))
+    skips: List[Skip] = []
+    others: List[Tuple[int, int, Any]] = []
+    packets = 0
+    for e in decode_all(data):
+        if isinstance(e, Skip):
+            skips.append(e)
+            continue
+        packets += 1
+        if any(isinstance(f, Trailing) for f in e.fields):
+            others.append((e.offset, -1, e))
+        else:
+            others.extend((e.offset, k, f) for k, f in enumerate(e.fields))
+    return Columns(packets, skips, [], others)
 
 
 def event_line(event: Union[RawPacket, Skip], device: Optional[str] = None) -> str:
@@ -299,6 +477,11 @@ __all__ = [
     "Packet",
     "decode_field",
     "decode_packet",
+    "decode_all",
+    "decode_columns",
+    "Columns",
+    "Table",
+    "Decoder",
     "decode_stream",
     "decode_bytes",
     "event_line",

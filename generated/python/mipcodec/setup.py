@@ -1,0 +1,18 @@
+"""Build of mipcodec: pyproject.toml holds the metadata; this adds the optional C accelerator.
+
+`mipcodec/_speedups.c` (the stream parser and packet decoder in C) is compiled when a C compiler
+and the Python headers are there. Without them the build still succeeds (the extension is
+optional) and the package runs its pure-Python code, which gives the same results. At run time
+MIPCODEC_PURE=1 forces the pure-Python code; `mipcodec.ACCELERATED` tells which is in use.
+MIPCODEC_NO_EXTENSION=1 at build time skips the extension.
+"""
+
+import os
+
+from setuptools import Extension, setup
+
+extensions = []
+if os.environ.get("MIPCODEC_NO_EXTENSION", "") in ("", "0"):
+    extensions.append(Extension("mipcodec._speedups", ["mipcodec/_speedups.c"], optional=True))
+
+setup(ext_modules=extensions)
