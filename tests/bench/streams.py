@@ -66,8 +66,11 @@ def field_data(rng: random.Random, set_id: int, descriptor: int, size: int) -> b
     for _ in range(1000):
         data = bytes(rng.getrandbits(8) for _ in range(size))
         try:
-            mipcodec.decode_field(set_id, descriptor, data)
+            entry = mipcodec.decode_field(set_id, descriptor, data)
         except mipcodec.DecodeError:
+            continue
+        # decode_field reports a field that does not decode as a RawField (it does not raise)
+        if isinstance(entry, mipcodec.RawField):
             continue
         return data
     raise SystemExit(f"streams.py: no random bytes decode as field 0x{set_id:02x},0x{descriptor:02x}")
@@ -96,21 +99,49 @@ def garbage(rng: random.Random) -> bytes:
     return bytes(g)
 
 
+def fletcher16(data) -> bytes:
+    s1 = s2 = 0
+    for b in data:
+        s1 = (s1 + b) & 0xFF
+        s2 = (s2 + s1) & 0xFF
+    return bytes([s1, s2])
+
+
+def defuse_false_syncs(buf: bytearray, offsets: list[int]) -> None:
+    """A false sync spans 246+ bytes of the packets behind it; about one in 65536 has a valid
+    checksum by chance and would be a packet that hides the real ones. Change its set byte
+    until it does not (later offsets first: a change can only affect earlier false syncs)."""
+    for off in reversed(offsets):
+        for _ in range(256):
+            end = off + 4 + buf[off + 3]
+            if end + 2 > len(buf) or fletcher16(buf[off:end]) != buf[end : end + 2]:
+                break
+            buf[off + 2] = (buf[off + 2] + 1) & 0xFF
+
+
 def write(out: Path, name: str, kinds, count: int, with_garbage: bool, seed: int, sizes) -> None:
     rng = random.Random(seed)
     groups = templates(rng, kinds, sizes, 64)
     parts = []
-    packets = fields = garbage_bytes = 0
+    packets = fields = garbage_bytes = offset = 0
+    false_syncs: list[int] = []
     for i in range(count):
         group, nfields = groups[i % len(groups)]
         if with_garbage:
             g = garbage(rng)
+            if g[:2] == SYNC:
+                false_syncs.append(offset)
             parts.append(g)
+            offset += len(g)
             garbage_bytes += len(g)
         parts.append(group[rng.randrange(len(group))])
+        offset += len(parts[-1])
         packets += 1
         fields += nfields
-    buf = b"".join(parts)
+    buf = bytearray(b"".join(parts))
+    if with_garbage:
+        defuse_false_syncs(buf, false_syncs)
+    buf = bytes(buf)
     (out / f"{name}.bin").write_bytes(buf)
     meta = {
         "name": name,
