@@ -1,6 +1,6 @@
 /* Benchmark of the generated C package mipcodec (issue 8): a plain timed loop.
  *
- *   bench DIR [--passes N]
+ *   bench DIR [--passes N] [--baseline-only]
  *
  * For every stream DIR/<name>.bin (with its sidecar DIR/<name>.json) it times, best of N passes
  * over the whole file in memory (read once, not timed):
@@ -181,12 +181,15 @@ int main(int argc, char **argv) {
     static const char *const mode_names[] = {"frame", "decode", "copy"};
     const char *dir = NULL;
     int passes = 5;
+    int first_mode = MODE_FRAME;
     int failed = 0;
     size_t si;
     int i;
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--passes") == 0 && i + 1 < argc) {
             passes = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--baseline-only") == 0) {
+            first_mode = MODE_COPY;
         } else if (!dir) {
             dir = argv[i];
         } else {
@@ -195,7 +198,7 @@ int main(int argc, char **argv) {
         }
     }
     if (!dir || passes < 1) {
-        fprintf(stderr, "usage: bench DIR [--passes N]\n");
+        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only]\n");
         return 2;
     }
     for (si = 0; si < sizeof k_streams / sizeof k_streams[0]; si++) {
@@ -204,7 +207,7 @@ int main(int argc, char **argv) {
         if (load(dir, k_streams[si], &s) != 0) {
             return 1;
         }
-        for (m = MODE_FRAME; m <= MODE_COPY; m++) {
+        for (m = first_mode; m <= MODE_COPY; m++) {
             double best = 1e30;
             counts_t c;
             int k;

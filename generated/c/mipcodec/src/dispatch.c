@@ -2564,8 +2564,6 @@ mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *da
     size_t first;
     size_t count;
     size_t i;
-    mip_decode_error_t first_err;
-    mip_decode_error_t other_err;
     out->id = MIP_FIELD_NONE;
     if (!f) {
         return why;
@@ -2581,17 +2579,18 @@ mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *da
             }
         }
     }
-    memset(&first_err, 0, sizeof first_err);
+    /* No error details on the way (the common case is a field that decodes); when no layout
+     * decodes, the first one runs again to report its error. */
     for (i = 0; i < count; i++) {
-        if (decode_layout((mip_field_id_t)(first + i), data, len, out, i == 0 ? &first_err : &other_err) ==
-            MIP_OK) {
+        if (decode_layout((mip_field_id_t)(first + i), data, len, out, NULL) == MIP_OK) {
             return MIP_OK;
         }
     }
-    out->id = MIP_FIELD_NONE;
     if (err) {
-        *err = first_err;
+        memset(err, 0, sizeof *err);
+        (void)decode_layout((mip_field_id_t)first, data, len, out, err);
     }
+    out->id = MIP_FIELD_NONE;
     return MIP_ERR_DECODE;
 }
 

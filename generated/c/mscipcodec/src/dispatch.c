@@ -410,8 +410,6 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
     size_t first;
     size_t count;
     size_t i;
-    mscip_decode_error_t first_err;
-    mscip_decode_error_t other_err;
     out->id = MSCIP_FIELD_NONE;
     if (!f) {
         return why;
@@ -427,17 +425,18 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
             }
         }
     }
-    memset(&first_err, 0, sizeof first_err);
+    /* No error details on the way (the common case is a field that decodes); when no layout
+     * decodes, the first one runs again to report its error. */
     for (i = 0; i < count; i++) {
-        if (decode_layout((mscip_field_id_t)(first + i), data, len, out, i == 0 ? &first_err : &other_err) ==
-            MSCIP_OK) {
+        if (decode_layout((mscip_field_id_t)(first + i), data, len, out, NULL) == MSCIP_OK) {
             return MSCIP_OK;
         }
     }
-    out->id = MSCIP_FIELD_NONE;
     if (err) {
-        *err = first_err;
+        memset(err, 0, sizeof *err);
+        (void)decode_layout((mscip_field_id_t)first, data, len, out, err);
     }
+    out->id = MSCIP_FIELD_NONE;
     return MSCIP_ERR_DECODE;
 }
 

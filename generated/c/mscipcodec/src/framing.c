@@ -5,14 +5,43 @@
 
 const uint8_t mscip_sync[MSCIP_SYNC_SIZE] = {0xA5, 0xA5};
 
+/* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
+ * load on little-endian hosts). */
+static uint64_t load_le64(const uint8_t *b) {
+    return (uint64_t)b[0] | (uint64_t)b[1] << 8 | (uint64_t)b[2] << 16 | (uint64_t)b[3] << 24 |
+           (uint64_t)b[4] << 32 | (uint64_t)b[5] << 40 | (uint64_t)b[6] << 48 | (uint64_t)b[7] << 56;
+}
+
+/*
+ * Fletcher-16 with both sums modulo 256, eight bytes at a time. Over a block b0..b7 the byte-serial
+ * recurrence adds sum1 += b0 + .. + b7 and sum2 += 8 * sum1 + 8 b0 + 7 b1 + .. + 1 b7. The block
+ * sums come from one 64-bit word: even and odd bytes spread into 16-bit lanes, and a multiply by
+ * a constant of lane weights adds the weighted lanes into the top lane (no lane exceeds 16 bits:
+ * at most 255 * 20). Unsigned arithmetic wraps modulo 2^64 and 2^32, multiples of 256, so the
+ * sums are reduced only at the end.
+ */
 void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]) {
-    unsigned sum1 = 0;
-    unsigned sum2 = 0;
-    size_t i;
-    for (i = 0; i < len; i++) {
-        sum1 = (sum1 + bytes[i]) & 0xFFu;
-        sum2 = (sum2 + sum1) & 0xFFu;
+    const uint64_t lanes = 0x00FF00FF00FF00FFu;
+    uint64_t s1 = 0;
+    uint64_t s2 = 0;
+    unsigned sum1;
+    unsigned sum2;
+    size_t i = 0;
+    for (; i + 8 <= len; i += 8) {
+        uint64_t w = load_le64(bytes + i);
+        uint64_t even = w & lanes;       /* b0, b2, b4, b6 */
+        uint64_t odd = (w >> 8) & lanes; /* b1, b3, b5, b7 */
+        uint64_t sum = ((even + odd) * 0x0001000100010001u) >> 48;
+        uint64_t weighted = ((even * 0x0008000600040002u) >> 48) + ((odd * 0x0007000500030001u) >> 48);
+        s2 += 8 * s1 + weighted;
+        s1 += sum;
     }
+    for (; i < len; i++) {
+        s1 += bytes[i];
+        s2 += s1;
+    }
+    sum1 = (unsigned)(s1 & 0xFFu);
+    sum2 = (unsigned)(s2 & 0xFFu);
     out[0] = (uint8_t)sum1;
     out[1] = (uint8_t)sum2;
 }
