@@ -1,6 +1,6 @@
 /* Benchmark of the generated C package mipcodec (issue 8): a plain timed loop.
  *
- *   bench DIR [--passes N] [--baseline-only]
+ *   bench DIR [--passes N] [--baseline-only] [--stream NAME]
  *
  * For every stream DIR/<name>.bin (with its sidecar DIR/<name>.json) it times, best of N passes
  * over the whole file in memory (read once, not timed):
@@ -147,7 +147,9 @@ static void copy_pass(const stream_t *s, counts_t *c) {
     const uint8_t *end = s->data + s->len;
     while (p + MIP_HEADER_SIZE <= end) {
         size_t total;
-        p = memchr(p, MIP_SYNC_0, (size_t)(end - p));
+        if (*p != MIP_SYNC_0) {
+            p = memchr(p, MIP_SYNC_0, (size_t)(end - p));
+        }
         if (!p || p + MIP_HEADER_SIZE > end) {
             break;
         }
@@ -182,12 +184,15 @@ int main(int argc, char **argv) {
     const char *dir = NULL;
     int passes = 5;
     int first_mode = MODE_FRAME;
+    const char *only = NULL;
     int failed = 0;
     size_t si;
     int i;
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--passes") == 0 && i + 1 < argc) {
             passes = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--stream") == 0 && i + 1 < argc) {
+            only = argv[++i];
         } else if (strcmp(argv[i], "--baseline-only") == 0) {
             first_mode = MODE_COPY;
         } else if (!dir) {
@@ -198,12 +203,15 @@ int main(int argc, char **argv) {
         }
     }
     if (!dir || passes < 1) {
-        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only]\n");
+        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only] [--stream NAME]\n");
         return 2;
     }
     for (si = 0; si < sizeof k_streams / sizeof k_streams[0]; si++) {
         stream_t s;
         int m;
+        if (only && strcmp(only, k_streams[si]) != 0) {
+            continue;
+        }
         if (load(dir, k_streams[si], &s) != 0) {
             return 1;
         }
