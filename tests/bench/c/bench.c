@@ -1,6 +1,6 @@
 /* Benchmark of the generated C package mipcodec (issue 8): a plain timed loop.
  *
- *   bench DIR [--passes N] [--baseline-only] [--stream NAME]
+ *   bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode frame|decode|copy]
  *
  * For every stream DIR/<name>.bin (with its sidecar DIR/<name>.json) it times, best of N passes
  * over the whole file in memory (read once, not timed):
@@ -185,12 +185,15 @@ int main(int argc, char **argv) {
     int passes = 5;
     int first_mode = MODE_FRAME;
     const char *only = NULL;
+    const char *only_mode = NULL;
     int failed = 0;
     size_t si;
     int i;
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--passes") == 0 && i + 1 < argc) {
             passes = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--mode") == 0 && i + 1 < argc) {
+            only_mode = argv[++i];
         } else if (strcmp(argv[i], "--stream") == 0 && i + 1 < argc) {
             only = argv[++i];
         } else if (strcmp(argv[i], "--baseline-only") == 0) {
@@ -203,7 +206,7 @@ int main(int argc, char **argv) {
         }
     }
     if (!dir || passes < 1) {
-        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only] [--stream NAME]\n");
+        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode frame|decode|copy]\n");
         return 2;
     }
     for (si = 0; si < sizeof k_streams / sizeof k_streams[0]; si++) {
@@ -219,6 +222,9 @@ int main(int argc, char **argv) {
             double best = 1e30;
             counts_t c;
             int k;
+            if (only_mode && strcmp(only_mode, mode_names[m]) != 0) {
+                continue;
+            }
             for (k = 0; k < passes; k++) {
                 double t0 = now();
                 double dt;

@@ -1,6 +1,6 @@
 // Benchmark of the generated C++ package mipcodec (issue 8): a plain timed loop.
 //
-//   bench DIR [--passes N]
+//   bench DIR [--passes N] [--stream NAME] [--mode frame|decode]
 //
 // For every stream DIR/<name>.bin (sidecar DIR/<name>.json) it times, best of N passes over the
 // whole file in memory (read once, not timed):
@@ -138,9 +138,15 @@ void run_pass(const Stream &s, Mode mode, Counts &c) {
 int main(int argc, char **argv) {
     const char *dir = nullptr;
     int passes = 5;
+    const char *only = nullptr;
+    const char *only_mode = nullptr;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--passes") == 0 && i + 1 < argc) {
             passes = std::atoi(argv[++i]);
+        } else if (std::strcmp(argv[i], "--stream") == 0 && i + 1 < argc) {
+            only = argv[++i];
+        } else if (std::strcmp(argv[i], "--mode") == 0 && i + 1 < argc) {
+            only_mode = argv[++i];
         } else if (dir == nullptr) {
             dir = argv[i];
         } else {
@@ -149,17 +155,23 @@ int main(int argc, char **argv) {
         }
     }
     if (dir == nullptr || passes < 1) {
-        std::fprintf(stderr, "usage: bench DIR [--passes N]\n");
+        std::fprintf(stderr, "usage: bench DIR [--passes N] [--stream NAME] [--mode frame|decode]\n");
         return 2;
     }
     int failed = 0;
     for (const char *name : kStreams) {
         Stream s;
+        if (only != nullptr && std::strcmp(only, name) != 0) {
+            continue;
+        }
         if (!load(dir, name, s)) {
             return 1;
         }
         for (Mode m : {Mode::frame, Mode::decode}) {
             const char *mode_name = m == Mode::frame ? "frame" : "decode";
+            if (only_mode != nullptr && std::strcmp(only_mode, mode_name) != 0) {
+                continue;
+            }
             double best = 1e30;
             Counts c;
             for (int k = 0; k < passes; ++k) {
