@@ -93,6 +93,13 @@ fuzz-long: generate
 test-fuzz-regressions: generate
 	$(PY) tests/fuzz/fuzz.py replay
 
+# Benchmarks of the four languages (tests/bench/run.py, README "Benchmarks"): builds them into
+# build/bench/, runs them on the streams of tests/bench/streams.py and prints one table.
+# BENCH_ARGS passes options, e.g. BENCH_ARGS="--langs c,cpp --scale 0.1".
+BENCH_ARGS ?=
+bench: generate
+	$(PY) tests/bench/run.py $(BENCH_ARGS)
+
 # Fails when generated/ (or docs/errata.md) is not what the spec and templates produce.
 check: $(VENV)/.stamp
 	$(PY) -m generator.drift

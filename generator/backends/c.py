@@ -83,6 +83,28 @@ _RUNTIME = {
 }
 
 
+def _fast_loads(views: list[dict]) -> dict | None:
+    """The straight-line decode of a layout that is a fixed sequence of plain values (numbers,
+    enums, bitfields, bools, chars; scalars or fixed arrays): its size and one load per value at
+    a constant offset. None when the layout has anything else (the reader path handles it)."""
+    loads = []
+    off = 0
+    if not views:
+        return None
+    for v in views:
+        if v["optional"] or v["kind"] not in ("scalar", "fixed") or "ld" not in v["e"]:
+            return None
+        size = v["e"]["size"]
+        if v["kind"] == "scalar":
+            loads.append({"dst": v["c"], "ld": v["e"]["ld"], "off": off})
+            off += size
+        else:
+            for i in range(v["n"]):
+                loads.append({"dst": f"{v['c']}[{i}]", "ld": v["e"]["ld"], "off": off})
+                off += size
+    return {"size": off, "loads": loads}
+
+
 class BackendError(Exception):
     pass
 
@@ -328,6 +350,7 @@ class _Package:
                 "jw": ops % "jw",
                 "jr": ops % "jr",
                 "size": PRIMITIVES[tref["name"]][0],
+                "ld": suffix,
             }
         if k in ("enum", "bitfield"):
             suffix = _PRIM[tref["base"]][1]
@@ -339,6 +362,7 @@ class _Package:
                 "jw": ops % "jw",
                 "jr": ops % "jr",
                 "size": PRIMITIVES[tref["base"]][0],
+                "ld": suffix,
             }
         if k in ("struct", "union"):
             fn = self.type_fn(tref["name"])
@@ -424,6 +448,7 @@ class _Package:
             "needs_i": any(v["kind"] in ("fixed", "counted", "remaining") for v in views),
             "needs_n": any(v["kind"] == "remaining" and v["e"]["size"] for v in views),
             "has_optional": any(v["optional"] for v in views),
+            "fast": _fast_loads(views),
         }
 
     # -------------------------------------------------------------- fields and layouts

@@ -875,777 +875,415 @@ const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
     return &k_layouts[id];
 }
 
+/* Fields defined in each set: descriptor -> 1 + index into k_fields (0: not defined). Dispatch
+ * by (set, descriptor) is two table lookups. */
+static const uint16_t k_set_base[256] = {
+    [0x01] = 2,  /* ping */
+    [0x02] = 3,  /* set_to_idle */
+    [0x03] = 4,  /* get_device_info */
+    [0x81] = 5,  /* device_info */
+    [0x04] = 6,  /* get_device_descriptors */
+    [0x82] = 7,  /* device_descriptors */
+    [0x05] = 8,  /* built_in_test */
+    [0x83] = 9,  /* built_in_test_result */
+    [0x06] = 10, /* resume */
+    [0x07] = 11, /* get_extended_descriptors */
+    [0x86] = 12, /* extended_descriptors */
+    [0x08] = 13, /* continuous_bit */
+    [0x88] = 14, /* continuous_bit_result */
+    [0x09] = 15, /* comm_port_speed */
+    [0x89] = 16, /* comm_port_speed_response */
+    [0x72] = 17, /* gps_time_update */
+    [0x84] = 18, /* gps_week */
+    [0x85] = 19, /* gps_seconds */
+    [0x7E] = 20, /* device_reset */
+};
+static const uint16_t k_set_threedm[256] = {
+    [0x2B] = 21,  /* event_control */
+    [0xB5] = 22,  /* event_control_response */
+    [0x2C] = 23,  /* get_event_trigger_status */
+    [0xB6] = 24,  /* event_trigger_status */
+    [0x2D] = 25,  /* get_event_action_status */
+    [0xB7] = 26,  /* event_action_status */
+    [0x2E] = 27,  /* event_trigger_config */
+    [0xB8] = 28,  /* event_trigger_config_response */
+    [0x2F] = 29,  /* event_action_config */
+    [0xB9] = 30,  /* event_action_config_response */
+    [0x30] = 31,  /* device_startup_settings */
+    [0x31] = 32,  /* sensor_to_vehicle_euler */
+    [0xB1] = 33,  /* sensor_to_vehicle_euler_response */
+    [0x32] = 34,  /* sensor_to_vehicle_quaternion */
+    [0xB2] = 35,  /* sensor_to_vehicle_quaternion_response */
+    [0x33] = 36,  /* sensor_to_vehicle_dcm */
+    [0xB3] = 37,  /* sensor_to_vehicle_dcm_response */
+    [0x37] = 38,  /* accel_bias */
+    [0x9A] = 39,  /* accel_bias_response */
+    [0x38] = 40,  /* gyro_bias */
+    [0x9B] = 41,  /* gyro_bias_response */
+    [0x39] = 42,  /* capture_gyro_bias */
+    [0x3A] = 43,  /* mag_hard_iron_offset */
+    [0x9C] = 44,  /* mag_hard_iron_offset_response */
+    [0x3B] = 45,  /* mag_soft_iron_matrix */
+    [0x9D] = 46,  /* mag_soft_iron_matrix_response */
+    [0x3E] = 47,  /* coning_sculling_enable */
+    [0x9E] = 48,  /* coning_sculling_enable_response */
+    [0x40] = 49,  /* uart_baudrate */
+    [0x87] = 50,  /* uart_baudrate_response */
+    [0x41] = 51,  /* gpio_config */
+    [0xC1] = 52,  /* gpio_config_response */
+    [0x42] = 53,  /* gpio_state */
+    [0xC2] = 54,  /* gpio_state_response */
+    [0x43] = 55,  /* odometer_config */
+    [0xC3] = 56,  /* odometer_config_response */
+    [0x50] = 57,  /* advanced_lowpass_filter */
+    [0x8B] = 58,  /* advanced_lowpass_filter_response */
+    [0x51] = 59,  /* complementary_filter */
+    [0x97] = 60,  /* complementary_filter_response */
+    [0x52] = 61,  /* sensor_range */
+    [0xD2] = 62,  /* sensor_range_response */
+    [0x53] = 63,  /* get_calibrated_sensor_ranges */
+    [0xD3] = 64,  /* calibrated_sensor_ranges */
+    [0x54] = 65,  /* lowpass_filter */
+    [0xD4] = 66,  /* lowpass_filter_response */
+    [0x01] = 67,  /* poll_imu_data */
+    [0x02] = 68,  /* poll_gnss_data */
+    [0x03] = 69,  /* poll_filter_data */
+    [0x04] = 70,  /* poll_nmea_data */
+    [0x0D] = 71,  /* poll_data */
+    [0x06] = 72,  /* get_imu_base_rate */
+    [0x83] = 73,  /* imu_base_rate */
+    [0x07] = 74,  /* get_gnss_base_rate */
+    [0x84] = 75,  /* gnss_base_rate */
+    [0x0B] = 76,  /* get_filter_base_rate */
+    [0x8A] = 77,  /* filter_base_rate */
+    [0x0E] = 78,  /* get_base_rate */
+    [0x8E] = 79,  /* base_rate */
+    [0x08] = 80,  /* imu_message_format */
+    [0x80] = 81,  /* imu_message_format_response */
+    [0x09] = 82,  /* gnss_message_format */
+    [0x81] = 83,  /* gnss_message_format_response */
+    [0x0A] = 84,  /* filter_message_format */
+    [0x82] = 85,  /* filter_message_format_response */
+    [0x0C] = 86,  /* nmea_message_format */
+    [0x8C] = 87,  /* nmea_message_format_response */
+    [0x0F] = 88,  /* message_format */
+    [0x8F] = 89,  /* message_format_response */
+    [0x10] = 90,  /* factory_streaming */
+    [0x11] = 91,  /* data_stream_control */
+    [0x85] = 92,  /* data_stream_control_response */
+    [0x20] = 93,  /* raw_rtcm_message */
+    [0x21] = 94,  /* gnss_constellation_settings */
+    [0xA0] = 95,  /* gnss_constellation_settings_response */
+    [0x22] = 96,  /* gnss_sbas_settings */
+    [0xA1] = 97,  /* gnss_sbas_settings_response */
+    [0x23] = 98,  /* gnss_assisted_fix_control */
+    [0xA2] = 99,  /* gnss_assisted_fix_control_response */
+    [0x24] = 100, /* gnss_assist_time_update */
+    [0xA3] = 101, /* gnss_assist_time_update_response */
+    [0x28] = 102, /* pps_source */
+    [0xA8] = 103, /* pps_source_response */
+    [0x2A] = 104, /* get_supported_events */
+    [0xB4] = 105, /* supported_events */
+    [0x64] = 106, /* device_status */
+    [0x90] = 107, /* device_status_response */
+};
+static const uint16_t k_set_filter[256] = {
+    [0x01] = 108, /* reset_filter */
+    [0x02] = 109, /* set_initial_attitude */
+    [0x03] = 110, /* set_initial_heading */
+    [0x05] = 111, /* run_filter */
+    [0x10] = 112, /* vehicle_dynamics_mode */
+    [0x80] = 113, /* vehicle_dynamics_mode_response */
+    [0x11] = 114, /* sensor_to_vehicle_transform */
+    [0x81] = 115, /* sensor_to_vehicle_transform_response */
+    [0x12] = 116, /* sensor_to_vehicle_offset */
+    [0x82] = 117, /* sensor_to_vehicle_offset_response */
+    [0x13] = 118, /* antenna_offset */
+    [0x83] = 119, /* antenna_offset_response */
+    [0x14] = 120, /* estimation_control */
+    [0x84] = 121, /* estimation_control_response */
+    [0x15] = 122, /* gnss_source_control */
+    [0x86] = 123, /* gnss_source_control_response */
+    [0x16] = 124, /* external_gnss_update */
+    [0x17] = 125, /* external_heading_update */
+    [0x18] = 126, /* heading_update_control */
+    [0x87] = 127, /* heading_update_control_response */
+    [0x19] = 128, /* auto_init_control */
+    [0x88] = 129, /* auto_init_control_response */
+    [0x1A] = 130, /* accel_noise */
+    [0x89] = 131, /* accel_noise_response */
+    [0x1B] = 132, /* gyro_noise */
+    [0x8A] = 133, /* gyro_noise_response */
+    [0x1C] = 134, /* accel_bias_model */
+    [0x8B] = 135, /* accel_bias_model_response */
+    [0x1D] = 136, /* gyro_bias_model */
+    [0x8C] = 137, /* gyro_bias_model_response */
+    [0x1E] = 138, /* zupt_control */
+    [0x8D] = 139, /* zupt_control_response */
+    [0x1F] = 140, /* external_heading_update_with_time */
+    [0x20] = 141, /* zero_angular_rate_update_control */
+    [0x8E] = 142, /* zero_angular_rate_update_control_response */
+    [0x21] = 143, /* tare_orientation */
+    [0x22] = 144, /* commanded_zupt */
+    [0x23] = 145, /* commanded_zero_angular_rate_update */
+    [0x27] = 146, /* mag_capture_auto_calibration */
+    [0x28] = 147, /* gravity_noise_std_dev */
+    [0x93] = 148, /* gravity_noise_std_dev_response */
+    [0x29] = 149, /* pressure_altitude_noise_std_dev */
+    [0x94] = 150, /* pressure_altitude_noise_std_dev_response */
+    [0x2B] = 151, /* hard_iron_offset_noise */
+    [0x96] = 152, /* hard_iron_offset_noise_response */
+    [0x2C] = 153, /* soft_iron_matrix_noise */
+    [0x97] = 154, /* soft_iron_matrix_noise_response */
+    [0x42] = 155, /* mag_noise_std_dev */
+    [0xB1] = 156, /* mag_noise_std_dev_response */
+    [0x43] = 157, /* declination_source */
+    [0xB2] = 158, /* declination_source_response */
+    [0x44] = 159, /* gravity_magnitude_adaptive_measurement */
+    [0xB3] = 160, /* gravity_magnitude_adaptive_measurement_response */
+    [0x45] = 161, /* mag_magnitude_adaptive_measurement */
+    [0xB4] = 162, /* mag_magnitude_adaptive_measurement_response */
+    [0x46] = 163, /* mag_dip_angle_adaptive_measurement */
+    [0xB5] = 164, /* mag_dip_angle_adaptive_measurement_response */
+    [0x47] = 165, /* altitude_aiding_control */
+    [0xB7] = 166, /* altitude_aiding_control_response */
+    [0x4B] = 167, /* pitch_roll_aiding_control */
+    [0xBB] = 168, /* pitch_roll_aiding_control_response */
+    [0x4C] = 169, /* inclination_source */
+    [0xBC] = 170, /* inclination_source_response */
+    [0x4D] = 171, /* magnetic_field_magnitude_source */
+    [0xBD] = 172, /* magnetic_field_magnitude_source_response */
+    [0x50] = 173, /* aiding_measurement_control */
+    [0xD0] = 174, /* aiding_measurement_control_response */
+    [0x52] = 175, /* initialization_configuration */
+    [0xD2] = 176, /* initialization_configuration_response */
+    [0x53] = 177, /* adaptive_filter_control */
+    [0xD3] = 178, /* adaptive_filter_control_response */
+    [0x54] = 179, /* multi_antenna_offset */
+    [0xD4] = 180, /* multi_antenna_offset_response */
+    [0x55] = 181, /* relative_position_configuration */
+    [0xD5] = 182, /* relative_position_configuration_response */
+    [0x56] = 183, /* reference_point_lever_arm */
+    [0xD6] = 184, /* reference_point_lever_arm_response */
+    [0x61] = 185, /* speed_lever_arm */
+    [0xE1] = 186, /* speed_lever_arm_response */
+    [0x63] = 187, /* wheeled_vehicle_constraint_control */
+    [0xE3] = 188, /* wheeled_vehicle_constraint_control_response */
+    [0x64] = 189, /* gnss_antenna_calibration_control */
+    [0xE4] = 190, /* gnss_antenna_calibration_control_response */
+};
+static const uint16_t k_set_gnss[256] = {
+    [0x01] = 191, /* receiver_info */
+    [0x81] = 192, /* receiver_info_response */
+    [0x02] = 193, /* signal_configuration */
+    [0x82] = 194, /* signal_configuration_response */
+    [0x20] = 195, /* spartn_configuration */
+    [0xA0] = 196, /* spartn_configuration_response */
+};
+static const uint16_t k_set_aiding[256] = {
+    [0x01] = 197, /* frame_config */
+    [0x81] = 198, /* frame_config_response */
+    [0x1F] = 199, /* echo_control */
+    [0x9F] = 200, /* echo_control_response */
+    [0x21] = 201, /* ecef_position */
+    [0x22] = 202, /* llh_position */
+    [0x23] = 203, /* height_above_ellipsoid */
+    [0x28] = 204, /* ecef_velocity */
+    [0x29] = 205, /* ned_velocity */
+    [0x2A] = 206, /* body_frame_velocity */
+    [0x31] = 207, /* true_heading */
+    [0x32] = 208, /* magnetic_field */
+    [0x33] = 209, /* pressure */
+};
+static const uint16_t k_set_system[256] = {
+    [0x10] = 210, /* communication_mode */
+    [0x90] = 211, /* communication_mode_response */
+};
+static const uint16_t k_set_sensor[256] = {
+    [0x04] = 212, /* scaled_accel */
+    [0x05] = 213, /* scaled_gyro */
+    [0x06] = 214, /* scaled_mag */
+    [0x07] = 215, /* delta_theta */
+    [0x08] = 216, /* delta_velocity */
+    [0x09] = 217, /* cf_orientation_matrix */
+    [0x0A] = 218, /* cf_quaternion */
+    [0x0C] = 219, /* cf_euler_angles */
+    [0x10] = 220, /* cf_stabilized_north */
+    [0x11] = 221, /* cf_stabilized_up */
+    [0x12] = 222, /* gps_timestamp */
+    [0x14] = 223, /* temperature_statistics */
+    [0x17] = 224, /* scaled_pressure */
+    [0x18] = 225, /* overrange_status */
+    [0x40] = 226, /* odometer_data */
+};
+static const uint16_t k_set_gnss_data[256] = {
+    [0x03] = 227, /* llh_position */
+    [0x04] = 228, /* ecef_position */
+    [0x05] = 229, /* ned_velocity */
+    [0x06] = 230, /* ecef_velocity */
+    [0x07] = 231, /* dop */
+    [0x08] = 232, /* utc_time */
+    [0x09] = 233, /* gps_time */
+    [0x0A] = 234, /* clock_info */
+    [0x0B] = 235, /* fix_info */
+    [0x0C] = 236, /* sv_info */
+    [0x0D] = 237, /* hardware_status */
+    [0x0E] = 238, /* dgnss_info */
+    [0x0F] = 239, /* dgnss_channel_status */
+};
+static const uint16_t k_set_filter_data[256] = {
+    [0x01] = 240, /* llh_position */
+    [0x02] = 241, /* ned_velocity */
+    [0x03] = 242, /* attitude_quaternion */
+    [0x04] = 243, /* attitude_dcm */
+    [0x05] = 244, /* euler_angles */
+    [0x06] = 245, /* gyro_bias */
+    [0x07] = 246, /* accel_bias */
+    [0x08] = 247, /* llh_position_uncertainty */
+    [0x09] = 248, /* ned_velocity_uncertainty */
+    [0x0A] = 249, /* euler_angles_uncertainty */
+    [0x0B] = 250, /* gyro_bias_uncertainty */
+    [0x0C] = 251, /* accel_bias_uncertainty */
+    [0x0D] = 252, /* linear_accel */
+    [0x0E] = 253, /* comp_angular_rate */
+    [0x0F] = 254, /* wgs84_gravity_magnitude */
+    [0x10] = 255, /* filter_status */
+    [0x11] = 256, /* gps_timestamp */
+    [0x12] = 257, /* quaternion_attitude_uncertainty */
+    [0x13] = 258, /* gravity_vector */
+    [0x14] = 259, /* heading_update_state */
+    [0x15] = 260, /* magnetic_model */
+    [0x16] = 261, /* gyro_scale_factor */
+    [0x17] = 262, /* accel_scale_factor */
+    [0x18] = 263, /* gyro_scale_factor_uncertainty */
+    [0x19] = 264, /* accel_scale_factor_uncertainty */
+    [0x1C] = 265, /* compensated_accel */
+    [0x20] = 266, /* standard_atmosphere */
+    [0x21] = 267, /* pressure_altitude */
+    [0x25] = 268, /* mag_auto_hard_iron_offset */
+    [0x26] = 269, /* mag_auto_soft_iron_matrix */
+    [0x28] = 270, /* mag_auto_hard_iron_offset_uncertainty */
+    [0x29] = 271, /* mag_auto_soft_iron_matrix_uncertainty */
+    [0x30] = 272, /* gnss_antenna_offset_correction */
+    [0x31] = 273, /* gnss_antenna_offset_correction_uncertainty */
+    [0x34] = 274, /* multi_antenna_offset_correction */
+    [0x35] = 275, /* multi_antenna_offset_correction_uncertainty */
+    [0x36] = 276, /* ecef_position_uncertainty */
+    [0x37] = 277, /* ecef_velocity_uncertainty */
+    [0x40] = 278, /* ecef_position */
+    [0x41] = 279, /* ecef_velocity */
+    [0x42] = 280, /* ned_relative_position */
+    [0x43] = 281, /* gnss_position_aiding_status */
+    [0x46] = 282, /* aiding_measurement_summary */
+    [0x47] = 283, /* odometer_scale_factor_error */
+    [0x48] = 284, /* odometer_scale_factor_error_uncertainty */
+    [0x49] = 285, /* gnss_dual_antenna_status */
+    [0x50] = 286, /* aiding_frame_config_error */
+    [0x51] = 287, /* aiding_frame_config_error_uncertainty */
+};
+static const uint16_t k_set_gnss_receiver_1[256] = {
+    [0x03] = 288, /* llh_position */
+    [0x04] = 289, /* ecef_position */
+    [0x05] = 290, /* ned_velocity */
+    [0x06] = 291, /* ecef_velocity */
+    [0x07] = 292, /* dop */
+    [0x08] = 293, /* utc_time */
+    [0x09] = 294, /* gps_time */
+    [0x0B] = 295, /* fix_info */
+    [0x0D] = 296, /* hardware_status */
+    [0x10] = 297, /* clock_info_2 */
+    [0x11] = 298, /* gps_leap_seconds */
+    [0x12] = 299, /* sbas_info */
+    [0x20] = 300, /* satellite_status */
+    [0x22] = 301, /* raw */
+    [0x61] = 302, /* gps_ephemeris */
+    [0x62] = 303, /* glonass_ephemeris */
+    [0x63] = 304, /* galileo_ephemeris */
+    [0x64] = 305, /* beidou_ephemeris */
+};
+static const uint16_t k_set_gnss_receiver_2[256] = {
+    [0x03] = 306, /* llh_position */
+    [0x04] = 307, /* ecef_position */
+    [0x05] = 308, /* ned_velocity */
+    [0x06] = 309, /* ecef_velocity */
+    [0x07] = 310, /* dop */
+    [0x08] = 311, /* utc_time */
+    [0x09] = 312, /* gps_time */
+    [0x0B] = 313, /* fix_info */
+    [0x0D] = 314, /* hardware_status */
+    [0x10] = 315, /* clock_info_2 */
+    [0x11] = 316, /* gps_leap_seconds */
+    [0x12] = 317, /* sbas_info */
+    [0x20] = 318, /* satellite_status */
+    [0x22] = 319, /* raw */
+    [0x61] = 320, /* gps_ephemeris */
+    [0x62] = 321, /* glonass_ephemeris */
+    [0x63] = 322, /* galileo_ephemeris */
+    [0x64] = 323, /* beidou_ephemeris */
+};
+static const uint16_t k_set_gnss_corrections[256] = {
+    [0x30] = 324, /* base_station_info */
+    [0x31] = 325, /* rtk_corrections_status */
+};
+static const uint16_t k_set_gnss_external[256] = {
+    [0x03] = 326, /* llh_position */
+    [0x05] = 327, /* ned_velocity */
+    [0x08] = 328, /* utc_time */
+    [0x0B] = 329, /* fix_info */
+    [0x20] = 330, /* satellite_status */
+};
+static const uint16_t k_set_system_data[256] = {
+    [0x01] = 331, /* built_in_test */
+    [0x02] = 332, /* time_sync_status */
+    [0x03] = 333, /* gpio_state */
+};
+static const uint16_t k_set_shared[256] = {
+    [0xD0] = 334, /* event_source */
+    [0xD3] = 335, /* gps_timestamp */
+    [0xD4] = 336, /* delta_time */
+    [0xD5] = 337, /* reference_timestamp */
+    [0xD6] = 338, /* reference_time_delta */
+    [0xD7] = 339, /* external_timestamp */
+    [0xD8] = 340, /* external_time_delta */
+};
+
+static const uint16_t *const k_sets[256] = {
+    [0x01] = k_set_base,
+    [0x0C] = k_set_threedm,
+    [0x0D] = k_set_filter,
+    [0x0E] = k_set_gnss,
+    [0x13] = k_set_aiding,
+    [0x7F] = k_set_system,
+    [0x80] = k_set_sensor,
+    [0x81] = k_set_gnss_data,
+    [0x82] = k_set_filter_data,
+    [0x91] = k_set_gnss_receiver_1,
+    [0x92] = k_set_gnss_receiver_2,
+    [0x93] = k_set_gnss_corrections,
+    [0x94] = k_set_gnss_external,
+    [0xA0] = k_set_system_data,
+    [0xFF] = k_set_shared,
+};
+
 /* Fields defined in a set; *set_known tells whether the set is defined at all. */
 static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
-    *set_known = true;
-    switch (set) {
-    case 0x01: /* base */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[1]; /* ping */
-        case 0x02:
-            return &k_fields[2]; /* set_to_idle */
-        case 0x03:
-            return &k_fields[3]; /* get_device_info */
-        case 0x81:
-            return &k_fields[4]; /* device_info */
-        case 0x04:
-            return &k_fields[5]; /* get_device_descriptors */
-        case 0x82:
-            return &k_fields[6]; /* device_descriptors */
-        case 0x05:
-            return &k_fields[7]; /* built_in_test */
-        case 0x83:
-            return &k_fields[8]; /* built_in_test_result */
-        case 0x06:
-            return &k_fields[9]; /* resume */
-        case 0x07:
-            return &k_fields[10]; /* get_extended_descriptors */
-        case 0x86:
-            return &k_fields[11]; /* extended_descriptors */
-        case 0x08:
-            return &k_fields[12]; /* continuous_bit */
-        case 0x88:
-            return &k_fields[13]; /* continuous_bit_result */
-        case 0x09:
-            return &k_fields[14]; /* comm_port_speed */
-        case 0x89:
-            return &k_fields[15]; /* comm_port_speed_response */
-        case 0x72:
-            return &k_fields[16]; /* gps_time_update */
-        case 0x84:
-            return &k_fields[17]; /* gps_week */
-        case 0x85:
-            return &k_fields[18]; /* gps_seconds */
-        case 0x7E:
-            return &k_fields[19]; /* device_reset */
-        default:
-            return NULL;
-        }
-    case 0x0C: /* threedm */
-        switch (descriptor) {
-        case 0x2B:
-            return &k_fields[20]; /* event_control */
-        case 0xB5:
-            return &k_fields[21]; /* event_control_response */
-        case 0x2C:
-            return &k_fields[22]; /* get_event_trigger_status */
-        case 0xB6:
-            return &k_fields[23]; /* event_trigger_status */
-        case 0x2D:
-            return &k_fields[24]; /* get_event_action_status */
-        case 0xB7:
-            return &k_fields[25]; /* event_action_status */
-        case 0x2E:
-            return &k_fields[26]; /* event_trigger_config */
-        case 0xB8:
-            return &k_fields[27]; /* event_trigger_config_response */
-        case 0x2F:
-            return &k_fields[28]; /* event_action_config */
-        case 0xB9:
-            return &k_fields[29]; /* event_action_config_response */
-        case 0x30:
-            return &k_fields[30]; /* device_startup_settings */
-        case 0x31:
-            return &k_fields[31]; /* sensor_to_vehicle_euler */
-        case 0xB1:
-            return &k_fields[32]; /* sensor_to_vehicle_euler_response */
-        case 0x32:
-            return &k_fields[33]; /* sensor_to_vehicle_quaternion */
-        case 0xB2:
-            return &k_fields[34]; /* sensor_to_vehicle_quaternion_response */
-        case 0x33:
-            return &k_fields[35]; /* sensor_to_vehicle_dcm */
-        case 0xB3:
-            return &k_fields[36]; /* sensor_to_vehicle_dcm_response */
-        case 0x37:
-            return &k_fields[37]; /* accel_bias */
-        case 0x9A:
-            return &k_fields[38]; /* accel_bias_response */
-        case 0x38:
-            return &k_fields[39]; /* gyro_bias */
-        case 0x9B:
-            return &k_fields[40]; /* gyro_bias_response */
-        case 0x39:
-            return &k_fields[41]; /* capture_gyro_bias */
-        case 0x3A:
-            return &k_fields[42]; /* mag_hard_iron_offset */
-        case 0x9C:
-            return &k_fields[43]; /* mag_hard_iron_offset_response */
-        case 0x3B:
-            return &k_fields[44]; /* mag_soft_iron_matrix */
-        case 0x9D:
-            return &k_fields[45]; /* mag_soft_iron_matrix_response */
-        case 0x3E:
-            return &k_fields[46]; /* coning_sculling_enable */
-        case 0x9E:
-            return &k_fields[47]; /* coning_sculling_enable_response */
-        case 0x40:
-            return &k_fields[48]; /* uart_baudrate */
-        case 0x87:
-            return &k_fields[49]; /* uart_baudrate_response */
-        case 0x41:
-            return &k_fields[50]; /* gpio_config */
-        case 0xC1:
-            return &k_fields[51]; /* gpio_config_response */
-        case 0x42:
-            return &k_fields[52]; /* gpio_state */
-        case 0xC2:
-            return &k_fields[53]; /* gpio_state_response */
-        case 0x43:
-            return &k_fields[54]; /* odometer_config */
-        case 0xC3:
-            return &k_fields[55]; /* odometer_config_response */
-        case 0x50:
-            return &k_fields[56]; /* advanced_lowpass_filter */
-        case 0x8B:
-            return &k_fields[57]; /* advanced_lowpass_filter_response */
-        case 0x51:
-            return &k_fields[58]; /* complementary_filter */
-        case 0x97:
-            return &k_fields[59]; /* complementary_filter_response */
-        case 0x52:
-            return &k_fields[60]; /* sensor_range */
-        case 0xD2:
-            return &k_fields[61]; /* sensor_range_response */
-        case 0x53:
-            return &k_fields[62]; /* get_calibrated_sensor_ranges */
-        case 0xD3:
-            return &k_fields[63]; /* calibrated_sensor_ranges */
-        case 0x54:
-            return &k_fields[64]; /* lowpass_filter */
-        case 0xD4:
-            return &k_fields[65]; /* lowpass_filter_response */
-        case 0x01:
-            return &k_fields[66]; /* poll_imu_data */
-        case 0x02:
-            return &k_fields[67]; /* poll_gnss_data */
-        case 0x03:
-            return &k_fields[68]; /* poll_filter_data */
-        case 0x04:
-            return &k_fields[69]; /* poll_nmea_data */
-        case 0x0D:
-            return &k_fields[70]; /* poll_data */
-        case 0x06:
-            return &k_fields[71]; /* get_imu_base_rate */
-        case 0x83:
-            return &k_fields[72]; /* imu_base_rate */
-        case 0x07:
-            return &k_fields[73]; /* get_gnss_base_rate */
-        case 0x84:
-            return &k_fields[74]; /* gnss_base_rate */
-        case 0x0B:
-            return &k_fields[75]; /* get_filter_base_rate */
-        case 0x8A:
-            return &k_fields[76]; /* filter_base_rate */
-        case 0x0E:
-            return &k_fields[77]; /* get_base_rate */
-        case 0x8E:
-            return &k_fields[78]; /* base_rate */
-        case 0x08:
-            return &k_fields[79]; /* imu_message_format */
-        case 0x80:
-            return &k_fields[80]; /* imu_message_format_response */
-        case 0x09:
-            return &k_fields[81]; /* gnss_message_format */
-        case 0x81:
-            return &k_fields[82]; /* gnss_message_format_response */
-        case 0x0A:
-            return &k_fields[83]; /* filter_message_format */
-        case 0x82:
-            return &k_fields[84]; /* filter_message_format_response */
-        case 0x0C:
-            return &k_fields[85]; /* nmea_message_format */
-        case 0x8C:
-            return &k_fields[86]; /* nmea_message_format_response */
-        case 0x0F:
-            return &k_fields[87]; /* message_format */
-        case 0x8F:
-            return &k_fields[88]; /* message_format_response */
-        case 0x10:
-            return &k_fields[89]; /* factory_streaming */
-        case 0x11:
-            return &k_fields[90]; /* data_stream_control */
-        case 0x85:
-            return &k_fields[91]; /* data_stream_control_response */
-        case 0x20:
-            return &k_fields[92]; /* raw_rtcm_message */
-        case 0x21:
-            return &k_fields[93]; /* gnss_constellation_settings */
-        case 0xA0:
-            return &k_fields[94]; /* gnss_constellation_settings_response */
-        case 0x22:
-            return &k_fields[95]; /* gnss_sbas_settings */
-        case 0xA1:
-            return &k_fields[96]; /* gnss_sbas_settings_response */
-        case 0x23:
-            return &k_fields[97]; /* gnss_assisted_fix_control */
-        case 0xA2:
-            return &k_fields[98]; /* gnss_assisted_fix_control_response */
-        case 0x24:
-            return &k_fields[99]; /* gnss_assist_time_update */
-        case 0xA3:
-            return &k_fields[100]; /* gnss_assist_time_update_response */
-        case 0x28:
-            return &k_fields[101]; /* pps_source */
-        case 0xA8:
-            return &k_fields[102]; /* pps_source_response */
-        case 0x2A:
-            return &k_fields[103]; /* get_supported_events */
-        case 0xB4:
-            return &k_fields[104]; /* supported_events */
-        case 0x64:
-            return &k_fields[105]; /* device_status */
-        case 0x90:
-            return &k_fields[106]; /* device_status_response */
-        default:
-            return NULL;
-        }
-    case 0x0D: /* filter */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[107]; /* reset_filter */
-        case 0x02:
-            return &k_fields[108]; /* set_initial_attitude */
-        case 0x03:
-            return &k_fields[109]; /* set_initial_heading */
-        case 0x05:
-            return &k_fields[110]; /* run_filter */
-        case 0x10:
-            return &k_fields[111]; /* vehicle_dynamics_mode */
-        case 0x80:
-            return &k_fields[112]; /* vehicle_dynamics_mode_response */
-        case 0x11:
-            return &k_fields[113]; /* sensor_to_vehicle_transform */
-        case 0x81:
-            return &k_fields[114]; /* sensor_to_vehicle_transform_response */
-        case 0x12:
-            return &k_fields[115]; /* sensor_to_vehicle_offset */
-        case 0x82:
-            return &k_fields[116]; /* sensor_to_vehicle_offset_response */
-        case 0x13:
-            return &k_fields[117]; /* antenna_offset */
-        case 0x83:
-            return &k_fields[118]; /* antenna_offset_response */
-        case 0x14:
-            return &k_fields[119]; /* estimation_control */
-        case 0x84:
-            return &k_fields[120]; /* estimation_control_response */
-        case 0x15:
-            return &k_fields[121]; /* gnss_source_control */
-        case 0x86:
-            return &k_fields[122]; /* gnss_source_control_response */
-        case 0x16:
-            return &k_fields[123]; /* external_gnss_update */
-        case 0x17:
-            return &k_fields[124]; /* external_heading_update */
-        case 0x18:
-            return &k_fields[125]; /* heading_update_control */
-        case 0x87:
-            return &k_fields[126]; /* heading_update_control_response */
-        case 0x19:
-            return &k_fields[127]; /* auto_init_control */
-        case 0x88:
-            return &k_fields[128]; /* auto_init_control_response */
-        case 0x1A:
-            return &k_fields[129]; /* accel_noise */
-        case 0x89:
-            return &k_fields[130]; /* accel_noise_response */
-        case 0x1B:
-            return &k_fields[131]; /* gyro_noise */
-        case 0x8A:
-            return &k_fields[132]; /* gyro_noise_response */
-        case 0x1C:
-            return &k_fields[133]; /* accel_bias_model */
-        case 0x8B:
-            return &k_fields[134]; /* accel_bias_model_response */
-        case 0x1D:
-            return &k_fields[135]; /* gyro_bias_model */
-        case 0x8C:
-            return &k_fields[136]; /* gyro_bias_model_response */
-        case 0x1E:
-            return &k_fields[137]; /* zupt_control */
-        case 0x8D:
-            return &k_fields[138]; /* zupt_control_response */
-        case 0x1F:
-            return &k_fields[139]; /* external_heading_update_with_time */
-        case 0x20:
-            return &k_fields[140]; /* zero_angular_rate_update_control */
-        case 0x8E:
-            return &k_fields[141]; /* zero_angular_rate_update_control_response */
-        case 0x21:
-            return &k_fields[142]; /* tare_orientation */
-        case 0x22:
-            return &k_fields[143]; /* commanded_zupt */
-        case 0x23:
-            return &k_fields[144]; /* commanded_zero_angular_rate_update */
-        case 0x27:
-            return &k_fields[145]; /* mag_capture_auto_calibration */
-        case 0x28:
-            return &k_fields[146]; /* gravity_noise_std_dev */
-        case 0x93:
-            return &k_fields[147]; /* gravity_noise_std_dev_response */
-        case 0x29:
-            return &k_fields[148]; /* pressure_altitude_noise_std_dev */
-        case 0x94:
-            return &k_fields[149]; /* pressure_altitude_noise_std_dev_response */
-        case 0x2B:
-            return &k_fields[150]; /* hard_iron_offset_noise */
-        case 0x96:
-            return &k_fields[151]; /* hard_iron_offset_noise_response */
-        case 0x2C:
-            return &k_fields[152]; /* soft_iron_matrix_noise */
-        case 0x97:
-            return &k_fields[153]; /* soft_iron_matrix_noise_response */
-        case 0x42:
-            return &k_fields[154]; /* mag_noise_std_dev */
-        case 0xB1:
-            return &k_fields[155]; /* mag_noise_std_dev_response */
-        case 0x43:
-            return &k_fields[156]; /* declination_source */
-        case 0xB2:
-            return &k_fields[157]; /* declination_source_response */
-        case 0x44:
-            return &k_fields[158]; /* gravity_magnitude_adaptive_measurement */
-        case 0xB3:
-            return &k_fields[159]; /* gravity_magnitude_adaptive_measurement_response */
-        case 0x45:
-            return &k_fields[160]; /* mag_magnitude_adaptive_measurement */
-        case 0xB4:
-            return &k_fields[161]; /* mag_magnitude_adaptive_measurement_response */
-        case 0x46:
-            return &k_fields[162]; /* mag_dip_angle_adaptive_measurement */
-        case 0xB5:
-            return &k_fields[163]; /* mag_dip_angle_adaptive_measurement_response */
-        case 0x47:
-            return &k_fields[164]; /* altitude_aiding_control */
-        case 0xB7:
-            return &k_fields[165]; /* altitude_aiding_control_response */
-        case 0x4B:
-            return &k_fields[166]; /* pitch_roll_aiding_control */
-        case 0xBB:
-            return &k_fields[167]; /* pitch_roll_aiding_control_response */
-        case 0x4C:
-            return &k_fields[168]; /* inclination_source */
-        case 0xBC:
-            return &k_fields[169]; /* inclination_source_response */
-        case 0x4D:
-            return &k_fields[170]; /* magnetic_field_magnitude_source */
-        case 0xBD:
-            return &k_fields[171]; /* magnetic_field_magnitude_source_response */
-        case 0x50:
-            return &k_fields[172]; /* aiding_measurement_control */
-        case 0xD0:
-            return &k_fields[173]; /* aiding_measurement_control_response */
-        case 0x52:
-            return &k_fields[174]; /* initialization_configuration */
-        case 0xD2:
-            return &k_fields[175]; /* initialization_configuration_response */
-        case 0x53:
-            return &k_fields[176]; /* adaptive_filter_control */
-        case 0xD3:
-            return &k_fields[177]; /* adaptive_filter_control_response */
-        case 0x54:
-            return &k_fields[178]; /* multi_antenna_offset */
-        case 0xD4:
-            return &k_fields[179]; /* multi_antenna_offset_response */
-        case 0x55:
-            return &k_fields[180]; /* relative_position_configuration */
-        case 0xD5:
-            return &k_fields[181]; /* relative_position_configuration_response */
-        case 0x56:
-            return &k_fields[182]; /* reference_point_lever_arm */
-        case 0xD6:
-            return &k_fields[183]; /* reference_point_lever_arm_response */
-        case 0x61:
-            return &k_fields[184]; /* speed_lever_arm */
-        case 0xE1:
-            return &k_fields[185]; /* speed_lever_arm_response */
-        case 0x63:
-            return &k_fields[186]; /* wheeled_vehicle_constraint_control */
-        case 0xE3:
-            return &k_fields[187]; /* wheeled_vehicle_constraint_control_response */
-        case 0x64:
-            return &k_fields[188]; /* gnss_antenna_calibration_control */
-        case 0xE4:
-            return &k_fields[189]; /* gnss_antenna_calibration_control_response */
-        default:
-            return NULL;
-        }
-    case 0x0E: /* gnss */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[190]; /* receiver_info */
-        case 0x81:
-            return &k_fields[191]; /* receiver_info_response */
-        case 0x02:
-            return &k_fields[192]; /* signal_configuration */
-        case 0x82:
-            return &k_fields[193]; /* signal_configuration_response */
-        case 0x20:
-            return &k_fields[194]; /* spartn_configuration */
-        case 0xA0:
-            return &k_fields[195]; /* spartn_configuration_response */
-        default:
-            return NULL;
-        }
-    case 0x13: /* aiding */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[196]; /* frame_config */
-        case 0x81:
-            return &k_fields[197]; /* frame_config_response */
-        case 0x1F:
-            return &k_fields[198]; /* echo_control */
-        case 0x9F:
-            return &k_fields[199]; /* echo_control_response */
-        case 0x21:
-            return &k_fields[200]; /* ecef_position */
-        case 0x22:
-            return &k_fields[201]; /* llh_position */
-        case 0x23:
-            return &k_fields[202]; /* height_above_ellipsoid */
-        case 0x28:
-            return &k_fields[203]; /* ecef_velocity */
-        case 0x29:
-            return &k_fields[204]; /* ned_velocity */
-        case 0x2A:
-            return &k_fields[205]; /* body_frame_velocity */
-        case 0x31:
-            return &k_fields[206]; /* true_heading */
-        case 0x32:
-            return &k_fields[207]; /* magnetic_field */
-        case 0x33:
-            return &k_fields[208]; /* pressure */
-        default:
-            return NULL;
-        }
-    case 0x7F: /* system */
-        switch (descriptor) {
-        case 0x10:
-            return &k_fields[209]; /* communication_mode */
-        case 0x90:
-            return &k_fields[210]; /* communication_mode_response */
-        default:
-            return NULL;
-        }
-    case 0x80: /* sensor */
-        switch (descriptor) {
-        case 0x04:
-            return &k_fields[211]; /* scaled_accel */
-        case 0x05:
-            return &k_fields[212]; /* scaled_gyro */
-        case 0x06:
-            return &k_fields[213]; /* scaled_mag */
-        case 0x07:
-            return &k_fields[214]; /* delta_theta */
-        case 0x08:
-            return &k_fields[215]; /* delta_velocity */
-        case 0x09:
-            return &k_fields[216]; /* cf_orientation_matrix */
-        case 0x0A:
-            return &k_fields[217]; /* cf_quaternion */
-        case 0x0C:
-            return &k_fields[218]; /* cf_euler_angles */
-        case 0x10:
-            return &k_fields[219]; /* cf_stabilized_north */
-        case 0x11:
-            return &k_fields[220]; /* cf_stabilized_up */
-        case 0x12:
-            return &k_fields[221]; /* gps_timestamp */
-        case 0x14:
-            return &k_fields[222]; /* temperature_statistics */
-        case 0x17:
-            return &k_fields[223]; /* scaled_pressure */
-        case 0x18:
-            return &k_fields[224]; /* overrange_status */
-        case 0x40:
-            return &k_fields[225]; /* odometer_data */
-        default:
-            return NULL;
-        }
-    case 0x81: /* gnss_data */
-        switch (descriptor) {
-        case 0x03:
-            return &k_fields[226]; /* llh_position */
-        case 0x04:
-            return &k_fields[227]; /* ecef_position */
-        case 0x05:
-            return &k_fields[228]; /* ned_velocity */
-        case 0x06:
-            return &k_fields[229]; /* ecef_velocity */
-        case 0x07:
-            return &k_fields[230]; /* dop */
-        case 0x08:
-            return &k_fields[231]; /* utc_time */
-        case 0x09:
-            return &k_fields[232]; /* gps_time */
-        case 0x0A:
-            return &k_fields[233]; /* clock_info */
-        case 0x0B:
-            return &k_fields[234]; /* fix_info */
-        case 0x0C:
-            return &k_fields[235]; /* sv_info */
-        case 0x0D:
-            return &k_fields[236]; /* hardware_status */
-        case 0x0E:
-            return &k_fields[237]; /* dgnss_info */
-        case 0x0F:
-            return &k_fields[238]; /* dgnss_channel_status */
-        default:
-            return NULL;
-        }
-    case 0x82: /* filter_data */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[239]; /* llh_position */
-        case 0x02:
-            return &k_fields[240]; /* ned_velocity */
-        case 0x03:
-            return &k_fields[241]; /* attitude_quaternion */
-        case 0x04:
-            return &k_fields[242]; /* attitude_dcm */
-        case 0x05:
-            return &k_fields[243]; /* euler_angles */
-        case 0x06:
-            return &k_fields[244]; /* gyro_bias */
-        case 0x07:
-            return &k_fields[245]; /* accel_bias */
-        case 0x08:
-            return &k_fields[246]; /* llh_position_uncertainty */
-        case 0x09:
-            return &k_fields[247]; /* ned_velocity_uncertainty */
-        case 0x0A:
-            return &k_fields[248]; /* euler_angles_uncertainty */
-        case 0x0B:
-            return &k_fields[249]; /* gyro_bias_uncertainty */
-        case 0x0C:
-            return &k_fields[250]; /* accel_bias_uncertainty */
-        case 0x0D:
-            return &k_fields[251]; /* linear_accel */
-        case 0x0E:
-            return &k_fields[252]; /* comp_angular_rate */
-        case 0x0F:
-            return &k_fields[253]; /* wgs84_gravity_magnitude */
-        case 0x10:
-            return &k_fields[254]; /* filter_status */
-        case 0x11:
-            return &k_fields[255]; /* gps_timestamp */
-        case 0x12:
-            return &k_fields[256]; /* quaternion_attitude_uncertainty */
-        case 0x13:
-            return &k_fields[257]; /* gravity_vector */
-        case 0x14:
-            return &k_fields[258]; /* heading_update_state */
-        case 0x15:
-            return &k_fields[259]; /* magnetic_model */
-        case 0x16:
-            return &k_fields[260]; /* gyro_scale_factor */
-        case 0x17:
-            return &k_fields[261]; /* accel_scale_factor */
-        case 0x18:
-            return &k_fields[262]; /* gyro_scale_factor_uncertainty */
-        case 0x19:
-            return &k_fields[263]; /* accel_scale_factor_uncertainty */
-        case 0x1C:
-            return &k_fields[264]; /* compensated_accel */
-        case 0x20:
-            return &k_fields[265]; /* standard_atmosphere */
-        case 0x21:
-            return &k_fields[266]; /* pressure_altitude */
-        case 0x25:
-            return &k_fields[267]; /* mag_auto_hard_iron_offset */
-        case 0x26:
-            return &k_fields[268]; /* mag_auto_soft_iron_matrix */
-        case 0x28:
-            return &k_fields[269]; /* mag_auto_hard_iron_offset_uncertainty */
-        case 0x29:
-            return &k_fields[270]; /* mag_auto_soft_iron_matrix_uncertainty */
-        case 0x30:
-            return &k_fields[271]; /* gnss_antenna_offset_correction */
-        case 0x31:
-            return &k_fields[272]; /* gnss_antenna_offset_correction_uncertainty */
-        case 0x34:
-            return &k_fields[273]; /* multi_antenna_offset_correction */
-        case 0x35:
-            return &k_fields[274]; /* multi_antenna_offset_correction_uncertainty */
-        case 0x36:
-            return &k_fields[275]; /* ecef_position_uncertainty */
-        case 0x37:
-            return &k_fields[276]; /* ecef_velocity_uncertainty */
-        case 0x40:
-            return &k_fields[277]; /* ecef_position */
-        case 0x41:
-            return &k_fields[278]; /* ecef_velocity */
-        case 0x42:
-            return &k_fields[279]; /* ned_relative_position */
-        case 0x43:
-            return &k_fields[280]; /* gnss_position_aiding_status */
-        case 0x46:
-            return &k_fields[281]; /* aiding_measurement_summary */
-        case 0x47:
-            return &k_fields[282]; /* odometer_scale_factor_error */
-        case 0x48:
-            return &k_fields[283]; /* odometer_scale_factor_error_uncertainty */
-        case 0x49:
-            return &k_fields[284]; /* gnss_dual_antenna_status */
-        case 0x50:
-            return &k_fields[285]; /* aiding_frame_config_error */
-        case 0x51:
-            return &k_fields[286]; /* aiding_frame_config_error_uncertainty */
-        default:
-            return NULL;
-        }
-    case 0x91: /* gnss_receiver_1 */
-        switch (descriptor) {
-        case 0x03:
-            return &k_fields[287]; /* llh_position */
-        case 0x04:
-            return &k_fields[288]; /* ecef_position */
-        case 0x05:
-            return &k_fields[289]; /* ned_velocity */
-        case 0x06:
-            return &k_fields[290]; /* ecef_velocity */
-        case 0x07:
-            return &k_fields[291]; /* dop */
-        case 0x08:
-            return &k_fields[292]; /* utc_time */
-        case 0x09:
-            return &k_fields[293]; /* gps_time */
-        case 0x0B:
-            return &k_fields[294]; /* fix_info */
-        case 0x0D:
-            return &k_fields[295]; /* hardware_status */
-        case 0x10:
-            return &k_fields[296]; /* clock_info_2 */
-        case 0x11:
-            return &k_fields[297]; /* gps_leap_seconds */
-        case 0x12:
-            return &k_fields[298]; /* sbas_info */
-        case 0x20:
-            return &k_fields[299]; /* satellite_status */
-        case 0x22:
-            return &k_fields[300]; /* raw */
-        case 0x61:
-            return &k_fields[301]; /* gps_ephemeris */
-        case 0x62:
-            return &k_fields[302]; /* glonass_ephemeris */
-        case 0x63:
-            return &k_fields[303]; /* galileo_ephemeris */
-        case 0x64:
-            return &k_fields[304]; /* beidou_ephemeris */
-        default:
-            return NULL;
-        }
-    case 0x92: /* gnss_receiver_2 */
-        switch (descriptor) {
-        case 0x03:
-            return &k_fields[305]; /* llh_position */
-        case 0x04:
-            return &k_fields[306]; /* ecef_position */
-        case 0x05:
-            return &k_fields[307]; /* ned_velocity */
-        case 0x06:
-            return &k_fields[308]; /* ecef_velocity */
-        case 0x07:
-            return &k_fields[309]; /* dop */
-        case 0x08:
-            return &k_fields[310]; /* utc_time */
-        case 0x09:
-            return &k_fields[311]; /* gps_time */
-        case 0x0B:
-            return &k_fields[312]; /* fix_info */
-        case 0x0D:
-            return &k_fields[313]; /* hardware_status */
-        case 0x10:
-            return &k_fields[314]; /* clock_info_2 */
-        case 0x11:
-            return &k_fields[315]; /* gps_leap_seconds */
-        case 0x12:
-            return &k_fields[316]; /* sbas_info */
-        case 0x20:
-            return &k_fields[317]; /* satellite_status */
-        case 0x22:
-            return &k_fields[318]; /* raw */
-        case 0x61:
-            return &k_fields[319]; /* gps_ephemeris */
-        case 0x62:
-            return &k_fields[320]; /* glonass_ephemeris */
-        case 0x63:
-            return &k_fields[321]; /* galileo_ephemeris */
-        case 0x64:
-            return &k_fields[322]; /* beidou_ephemeris */
-        default:
-            return NULL;
-        }
-    case 0x93: /* gnss_corrections */
-        switch (descriptor) {
-        case 0x30:
-            return &k_fields[323]; /* base_station_info */
-        case 0x31:
-            return &k_fields[324]; /* rtk_corrections_status */
-        default:
-            return NULL;
-        }
-    case 0x94: /* gnss_external */
-        switch (descriptor) {
-        case 0x03:
-            return &k_fields[325]; /* llh_position */
-        case 0x05:
-            return &k_fields[326]; /* ned_velocity */
-        case 0x08:
-            return &k_fields[327]; /* utc_time */
-        case 0x0B:
-            return &k_fields[328]; /* fix_info */
-        case 0x20:
-            return &k_fields[329]; /* satellite_status */
-        default:
-            return NULL;
-        }
-    case 0xA0: /* system_data */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[330]; /* built_in_test */
-        case 0x02:
-            return &k_fields[331]; /* time_sync_status */
-        case 0x03:
-            return &k_fields[332]; /* gpio_state */
-        default:
-            return NULL;
-        }
-    case 0xFF: /* shared */
-        switch (descriptor) {
-        case 0xD0:
-            return &k_fields[333]; /* event_source */
-        case 0xD3:
-            return &k_fields[334]; /* gps_timestamp */
-        case 0xD4:
-            return &k_fields[335]; /* delta_time */
-        case 0xD5:
-            return &k_fields[336]; /* reference_timestamp */
-        case 0xD6:
-            return &k_fields[337]; /* reference_time_delta */
-        case 0xD7:
-            return &k_fields[338]; /* external_timestamp */
-        case 0xD8:
-            return &k_fields[339]; /* external_time_delta */
-        default:
-            return NULL;
-        }
-    default:
-        (void)descriptor;
-        *set_known = false;
+    const uint16_t *table = k_sets[set];
+    *set_known = table != NULL;
+    if (!table || table[descriptor] == 0) {
         return NULL;
     }
+    return &k_fields[table[descriptor] - 1];
 }
 
-const mip_field_info_t *mip_find_field(uint8_t set, uint8_t descriptor, mip_status_t *why) {
+/* The body of mip_find_field, static so that mip_decode_field inlines it. */
+static const mip_field_info_t *find_field(uint8_t set, uint8_t descriptor, mip_status_t *why) {
     bool known = false;
-    mip_set_kind_t kind = mip_set_kind(set);
+    mip_set_kind_t kind;
     const mip_field_info_t *f = defined(set, descriptor, &known);
     if (f) {
         return f;
     }
+    kind = mip_set_kind(set);
     /* reserved fields of the set's kind */
     switch (kind) {
     case MIP_SET_KIND_COMMAND:
@@ -1671,6 +1309,10 @@ const mip_field_info_t *mip_find_field(uint8_t set, uint8_t descriptor, mip_stat
         *why = known ? MIP_ERR_UNKNOWN_DESCRIPTOR : MIP_ERR_UNKNOWN_SET;
     }
     return NULL;
+}
+
+const mip_field_info_t *mip_find_field(uint8_t set, uint8_t descriptor, mip_status_t *why) {
+    return find_field(set, descriptor, why);
 }
 
 static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t len, mip_field_value_t *out,
@@ -2560,12 +2202,10 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
 mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                               mip_device_t device, mip_field_value_t *out, mip_decode_error_t *err) {
     mip_status_t why = MIP_ERR_UNKNOWN_SET;
-    const mip_field_info_t *f = mip_find_field(set, descriptor, &why);
+    const mip_field_info_t *f = find_field(set, descriptor, &why);
     size_t first;
     size_t count;
     size_t i;
-    mip_decode_error_t first_err;
-    mip_decode_error_t other_err;
     out->id = MIP_FIELD_NONE;
     if (!f) {
         return why;
@@ -2581,17 +2221,18 @@ mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *da
             }
         }
     }
-    memset(&first_err, 0, sizeof first_err);
+    /* No error details on the way (the common case is a field that decodes); when no layout
+     * decodes, the first one runs again to report its error. */
     for (i = 0; i < count; i++) {
-        if (decode_layout((mip_field_id_t)(first + i), data, len, out, i == 0 ? &first_err : &other_err) ==
-            MIP_OK) {
+        if (decode_layout((mip_field_id_t)(first + i), data, len, out, NULL) == MIP_OK) {
             return MIP_OK;
         }
     }
-    out->id = MIP_FIELD_NONE;
     if (err) {
-        *err = first_err;
+        memset(err, 0, sizeof *err);
+        (void)decode_layout((mip_field_id_t)first, data, len, out, err);
     }
+    out->id = MIP_FIELD_NONE;
     return MIP_ERR_DECODE;
 }
 

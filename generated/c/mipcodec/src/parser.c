@@ -102,10 +102,100 @@ static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final)
     }
 }
 
+/* Bytes the buffered candidate at buf[0] needs before process() can decide on it (0: none
+ * buffered). A partial sync or header needs the header; a header, the whole packet. */
+static size_t wanted(const mip_parser_t *parser) {
+    size_t total;
+    if (parser->used == 0) {
+        return 0;
+    }
+    if (parser->used < MIP_HEADER_SIZE) {
+        return MIP_HEADER_SIZE - parser->used;
+    }
+    total = MIP_HEADER_SIZE + (size_t)parser->buf[MIP_LENGTH_OFFSET] + MIP_CHECKSUM_SIZE;
+    return total > parser->used ? total - parser->used : 1;
+}
+
+/* The fast path: the same decisions as process(), made in place on the caller's bytes (no copy).
+ * Returns the number of bytes consumed; the rest (a candidate that needs more input, shorter
+ * than a maximum packet) is left for the caller to buffer. parser->base is the stream offset
+ * of data[0] on entry and of data[consumed] on return. */
+static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_event_fn fn, void *ctx) {
+    const uint64_t base = parser->base;
+    size_t pos = 0;
+    while (pos < len) {
+        const uint8_t *p = data + pos;
+        size_t left = len - pos;
+        size_t payload;
+        size_t total;
+        uint8_t ck[MIP_CHECKSUM_SIZE];
+        if (p[0] != mip_sync[0]) {
+            const uint8_t *q = memchr(p, mip_sync[0], left);
+            size_t n = q ? (size_t)(q - p) : left;
+            if (parser->skip_count == 0) {
+                parser->skip_offset = base + pos;
+            }
+            parser->skip_count += n;
+            pos += n;
+            continue;
+        }
+        if (left < MIP_HEADER_SIZE) {
+            /* a partial sync or header at the end: the caller buffers it (unless it already
+             * differs from the sync sequence, then skip its first byte) */
+            if (memcmp(p, mip_sync, left < MIP_SYNC_SIZE ? left : MIP_SYNC_SIZE) == 0) {
+                break;
+            }
+        } else if (memcmp(p, mip_sync, MIP_SYNC_SIZE) == 0 &&
+                   (payload = p[MIP_LENGTH_OFFSET]) <= MIP_MAX_PAYLOAD) {
+            total = MIP_HEADER_SIZE + payload + MIP_CHECKSUM_SIZE;
+            if (left < total) {
+                break; /* incomplete packet: the caller buffers it */
+            }
+            mip_checksum(p, MIP_HEADER_SIZE + payload, ck);
+            if (memcmp(ck, p + MIP_HEADER_SIZE + payload, MIP_CHECKSUM_SIZE) == 0) {
+                parser->base = base + pos;
+                emit_skip(parser, fn, ctx);
+                if (fn) {
+                    mip_event_t ev;
+                    ev.kind = MIP_EVENT_PACKET;
+                    ev.offset = base + pos;
+                    ev.length = total;
+                    ev.packet = p;
+                    fn(ctx, &ev);
+                }
+                pos += total;
+                continue;
+            }
+        }
+        /* false sync: skip one byte and resynchronise */
+        if (parser->skip_count == 0) {
+            parser->skip_offset = base + pos;
+        }
+        parser->skip_count++;
+        pos++;
+    }
+    parser->base = base + pos;
+    return pos;
+}
+
 void mip_parser_feed(mip_parser_t *parser, const uint8_t *data, size_t len, mip_event_fn fn, void *ctx) {
     while (len > 0) {
-        size_t room = sizeof parser->buf - parser->used;
-        size_t take = len < room ? len : room;
+        size_t take;
+        if (parser->used == 0) {
+            /* nothing buffered: packets are checked and reported in place */
+            size_t done = scan(data, len, parser, fn, ctx);
+            data += done;
+            len -= done;
+            memcpy(parser->buf, data, len); /* < one maximum packet: a candidate that waits */
+            parser->used = len;
+            return;
+        }
+        /* complete the buffered candidate, no more: once the buffer is empty again the fast
+         * path takes over */
+        take = wanted(parser);
+        if (take > len) {
+            take = len;
+        }
         memcpy(parser->buf + parser->used, data, take);
         parser->used += take;
         data += take;

@@ -44,9 +44,20 @@ mip_status_t mip_ack_nack_encode(const mip_ack_nack_t *value, uint8_t *buf, size
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_ack_nack_load(const uint8_t *d, mip_ack_nack_t *out) {
+    out->command_descriptor = mip_ld_u8(d + 0);
+    out->ack_code = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t mip_ack_nack_decode(const uint8_t *data, size_t len, mip_ack_nack_t *out,
                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_ack_nack_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_ack_nack_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -5,6 +5,8 @@
 
 #include "mipcodec/status.h"
 
+#include <string.h>
+
 /* Reads field data. Every read checks the bytes left first; on failure it fills *err with the
  * current parameter path and returns -1 (0 on success). */
 typedef struct {
@@ -45,6 +47,64 @@ int mip_rd_selector_error_u(mip_reader_t *r, uint64_t value);
 int mip_rd_selector_error_s(mip_reader_t *r, int64_t value);
 /* After the last parameter: leftover bytes are an error. */
 int mip_rd_finish(mip_reader_t *r);
+
+/* Straight big-endian loads for fixed layouts (the caller has checked the length). Signed and
+ * floating values take the bits of the unsigned value (exact-width types have no padding). */
+static inline uint8_t mip_ld_u8(const uint8_t *d) {
+    return d[0];
+}
+static inline uint16_t mip_ld_u16(const uint8_t *d) {
+    return (uint16_t)((unsigned)d[0] << 8 | d[1]);
+}
+static inline uint32_t mip_ld_u32(const uint8_t *d) {
+    return (uint32_t)d[0] << 24 | (uint32_t)d[1] << 16 | (uint32_t)d[2] << 8 | (uint32_t)d[3];
+}
+static inline uint64_t mip_ld_u64(const uint8_t *d) {
+    return (uint64_t)mip_ld_u32(d) << 32 | mip_ld_u32(d + 4);
+}
+static inline bool mip_ld_bool(const uint8_t *d) {
+    return d[0] != 0;
+}
+static inline char mip_ld_char(const uint8_t *d) {
+    char c;
+    memcpy(&c, d, 1);
+    return c;
+}
+static inline int8_t mip_ld_s8(const uint8_t *d) {
+    int8_t v;
+    memcpy(&v, d, 1);
+    return v;
+}
+static inline int16_t mip_ld_s16(const uint8_t *d) {
+    uint16_t u = mip_ld_u16(d);
+    int16_t v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+static inline int32_t mip_ld_s32(const uint8_t *d) {
+    uint32_t u = mip_ld_u32(d);
+    int32_t v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+static inline int64_t mip_ld_s64(const uint8_t *d) {
+    uint64_t u = mip_ld_u64(d);
+    int64_t v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+static inline float mip_ld_f32(const uint8_t *d) {
+    uint32_t u = mip_ld_u32(d);
+    float v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+static inline double mip_ld_f64(const uint8_t *d) {
+    uint64_t u = mip_ld_u64(d);
+    double v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
 
 /* Writes field data into a bounded buffer; functions return MIP_OK or MIP_ERR_BUFFER. */
 typedef struct {

@@ -70,6 +70,37 @@ TEST(Checksum, Fletcher16) {
     EXPECT_EQ(ck[1], 0);
 }
 
+// The checksum works eight bytes a step; it must equal the byte-serial definition
+// (sum1 += b, sum2 += sum1, modulo 256) for every length and alignment.
+TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
+    uint8_t bytes[300 + 7];
+    uint32_t state = 12345;
+    for (uint8_t &b : bytes) {
+        state = state * 1103515245u + 12345u;
+        b = (uint8_t)(state >> 16);
+    }
+    for (size_t start = 0; start < 8; start++) {
+        for (size_t len = 0; len <= 300; len++) {
+            unsigned sum1 = 0, sum2 = 0;
+            for (size_t i = 0; i < len; i++) {
+                sum1 = (sum1 + bytes[start + i]) & 0xFFu;
+                sum2 = (sum2 + sum1) & 0xFFu;
+            }
+            uint8_t ck[MIP_CHECKSUM_SIZE];
+            mip_checksum(bytes + start, len, ck);
+            ASSERT_EQ(ck[0], sum1) << "start " << start << " length " << len;
+            ASSERT_EQ(ck[1], sum2) << "start " << start << " length " << len;
+        }
+    }
+    // 261 bytes of 0xFF (-1 modulo 256): sum1 = -261 = 0xFB, sum2 = -(1 + .. + 261) = -34191 = 0x71
+    uint8_t ones[261];
+    memset(ones, 0xFF, sizeof ones);
+    uint8_t ck[MIP_CHECKSUM_SIZE];
+    mip_checksum(ones, sizeof ones, ck);
+    EXPECT_EQ(ck[0], 0xFB);
+    EXPECT_EQ(ck[1], 0x71);
+}
+
 TEST(Builder, BuildsAValidPacket) {
     std::vector<uint8_t> pkt = packet(0x01, {{0x10, {1, 2, 3}}, {0x11, {}}});
     ASSERT_EQ(pkt.size(), MIP_HEADER_SIZE + 2u * MIP_FIELD_HEADER_SIZE + 3u + MIP_CHECKSUM_SIZE);

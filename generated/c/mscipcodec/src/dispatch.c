@@ -144,129 +144,85 @@ const mscip_layout_info_t *mscip_layout_info(mscip_field_id_t id) {
     return &k_layouts[id];
 }
 
+/* Fields defined in each set: descriptor -> 1 + index into k_fields (0: not defined). Dispatch
+ * by (set, descriptor) is two table lookups. */
+static const uint16_t k_set_base[256] = {
+    [0x02] = 2,  /* ping */
+    [0x03] = 3,  /* get_device_messages */
+    [0x83] = 4,  /* device_messages */
+    [0x04] = 5,  /* device_reset */
+    [0x05] = 6,  /* get_device_model */
+    [0x85] = 7,  /* device_model */
+    [0x06] = 8,  /* get_device_sn */
+    [0x86] = 9,  /* device_sn */
+    [0x07] = 10, /* get_device_fw */
+    [0x87] = 11, /* device_fw */
+    [0x08] = 12, /* get_device_cal */
+    [0x88] = 13, /* device_cal */
+    [0x09] = 14, /* correlate_gps_time */
+};
+static const uint16_t k_set_imu_config[256] = {
+    [0x01] = 15, /* uart_baud_rate */
+    [0x81] = 16, /* uart_baud_rate_response */
+    [0x03] = 17, /* filter */
+    [0x83] = 18, /* filter_response */
+    [0x04] = 19, /* sample_rate */
+    [0x84] = 20, /* sample_rate_response */
+    [0x05] = 21, /* select_sensors */
+    [0x85] = 22, /* select_sensors_response */
+    [0x06] = 23, /* get_internal_sample_rate */
+    [0x86] = 24, /* internal_sample_rate */
+    [0x07] = 25, /* accel_range */
+    [0x87] = 26, /* accel_range_response */
+    [0x08] = 27, /* gyro_range */
+    [0x88] = 28, /* gyro_range_response */
+    [0x09] = 29, /* config_all */
+    [0x0A] = 30, /* data_on_off */
+    [0x8A] = 31, /* data_on_off_response */
+    [0x0B] = 32, /* xtrig_on_off */
+    [0x8B] = 33, /* xtrig_on_off_response */
+    [0x0C] = 34, /* select_sensors_rev_b */
+    [0x8C] = 35, /* select_sensors_rev_b_response */
+    [0x0D] = 36, /* aux_accel_range */
+    [0x8D] = 37, /* aux_accel_range_response */
+};
+static const uint16_t k_set_imu_data[256] = {
+    [0x81] = 38, /* scaled_accel */
+    [0x82] = 39, /* scaled_gyro */
+    [0x83] = 40, /* scaled_mag */
+    [0x84] = 41, /* delta_theta */
+    [0x85] = 42, /* delta_velocity */
+    [0x86] = 43, /* scaled_pressure */
+    [0x87] = 44, /* scaled_temperature */
+    [0x88] = 45, /* gps_correlated_time */
+    [0x89] = 46, /* scaled_aux_accel */
+};
+
+static const uint16_t *const k_sets[256] = {
+    [0x01] = k_set_base,
+    [0x02] = k_set_imu_config,
+    [0xA2] = k_set_imu_data,
+};
+
 /* Fields defined in a set; *set_known tells whether the set is defined at all. */
 static const mscip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
-    *set_known = true;
-    switch (set) {
-    case 0x01: /* base */
-        switch (descriptor) {
-        case 0x02:
-            return &k_fields[1]; /* ping */
-        case 0x03:
-            return &k_fields[2]; /* get_device_messages */
-        case 0x83:
-            return &k_fields[3]; /* device_messages */
-        case 0x04:
-            return &k_fields[4]; /* device_reset */
-        case 0x05:
-            return &k_fields[5]; /* get_device_model */
-        case 0x85:
-            return &k_fields[6]; /* device_model */
-        case 0x06:
-            return &k_fields[7]; /* get_device_sn */
-        case 0x86:
-            return &k_fields[8]; /* device_sn */
-        case 0x07:
-            return &k_fields[9]; /* get_device_fw */
-        case 0x87:
-            return &k_fields[10]; /* device_fw */
-        case 0x08:
-            return &k_fields[11]; /* get_device_cal */
-        case 0x88:
-            return &k_fields[12]; /* device_cal */
-        case 0x09:
-            return &k_fields[13]; /* correlate_gps_time */
-        default:
-            return NULL;
-        }
-    case 0x02: /* imu_config */
-        switch (descriptor) {
-        case 0x01:
-            return &k_fields[14]; /* uart_baud_rate */
-        case 0x81:
-            return &k_fields[15]; /* uart_baud_rate_response */
-        case 0x03:
-            return &k_fields[16]; /* filter */
-        case 0x83:
-            return &k_fields[17]; /* filter_response */
-        case 0x04:
-            return &k_fields[18]; /* sample_rate */
-        case 0x84:
-            return &k_fields[19]; /* sample_rate_response */
-        case 0x05:
-            return &k_fields[20]; /* select_sensors */
-        case 0x85:
-            return &k_fields[21]; /* select_sensors_response */
-        case 0x06:
-            return &k_fields[22]; /* get_internal_sample_rate */
-        case 0x86:
-            return &k_fields[23]; /* internal_sample_rate */
-        case 0x07:
-            return &k_fields[24]; /* accel_range */
-        case 0x87:
-            return &k_fields[25]; /* accel_range_response */
-        case 0x08:
-            return &k_fields[26]; /* gyro_range */
-        case 0x88:
-            return &k_fields[27]; /* gyro_range_response */
-        case 0x09:
-            return &k_fields[28]; /* config_all */
-        case 0x0A:
-            return &k_fields[29]; /* data_on_off */
-        case 0x8A:
-            return &k_fields[30]; /* data_on_off_response */
-        case 0x0B:
-            return &k_fields[31]; /* xtrig_on_off */
-        case 0x8B:
-            return &k_fields[32]; /* xtrig_on_off_response */
-        case 0x0C:
-            return &k_fields[33]; /* select_sensors_rev_b */
-        case 0x8C:
-            return &k_fields[34]; /* select_sensors_rev_b_response */
-        case 0x0D:
-            return &k_fields[35]; /* aux_accel_range */
-        case 0x8D:
-            return &k_fields[36]; /* aux_accel_range_response */
-        default:
-            return NULL;
-        }
-    case 0xA2: /* imu_data */
-        switch (descriptor) {
-        case 0x81:
-            return &k_fields[37]; /* scaled_accel */
-        case 0x82:
-            return &k_fields[38]; /* scaled_gyro */
-        case 0x83:
-            return &k_fields[39]; /* scaled_mag */
-        case 0x84:
-            return &k_fields[40]; /* delta_theta */
-        case 0x85:
-            return &k_fields[41]; /* delta_velocity */
-        case 0x86:
-            return &k_fields[42]; /* scaled_pressure */
-        case 0x87:
-            return &k_fields[43]; /* scaled_temperature */
-        case 0x88:
-            return &k_fields[44]; /* gps_correlated_time */
-        case 0x89:
-            return &k_fields[45]; /* scaled_aux_accel */
-        default:
-            return NULL;
-        }
-    default:
-        (void)descriptor;
-        *set_known = false;
+    const uint16_t *table = k_sets[set];
+    *set_known = table != NULL;
+    if (!table || table[descriptor] == 0) {
         return NULL;
     }
+    return &k_fields[table[descriptor] - 1];
 }
 
-const mscip_field_info_t *mscip_find_field(uint8_t set, uint8_t descriptor, mscip_status_t *why) {
+/* The body of mscip_find_field, static so that mscip_decode_field inlines it. */
+static const mscip_field_info_t *find_field(uint8_t set, uint8_t descriptor, mscip_status_t *why) {
     bool known = false;
-    mscip_set_kind_t kind = mscip_set_kind(set);
+    mscip_set_kind_t kind;
     const mscip_field_info_t *f = defined(set, descriptor, &known);
     if (f) {
         return f;
     }
+    kind = mscip_set_kind(set);
     /* reserved fields of the set's kind */
     switch (kind) {
     case MSCIP_SET_KIND_COMMAND:
@@ -284,6 +240,10 @@ const mscip_field_info_t *mscip_find_field(uint8_t set, uint8_t descriptor, msci
         *why = known ? MSCIP_ERR_UNKNOWN_DESCRIPTOR : MSCIP_ERR_UNKNOWN_SET;
     }
     return NULL;
+}
+
+const mscip_field_info_t *mscip_find_field(uint8_t set, uint8_t descriptor, mscip_status_t *why) {
+    return find_field(set, descriptor, why);
 }
 
 static mscip_status_t decode_layout(mscip_field_id_t id, const uint8_t *data, size_t len,
@@ -406,12 +366,10 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
                                   mscip_device_t device, mscip_field_value_t *out,
                                   mscip_decode_error_t *err) {
     mscip_status_t why = MSCIP_ERR_UNKNOWN_SET;
-    const mscip_field_info_t *f = mscip_find_field(set, descriptor, &why);
+    const mscip_field_info_t *f = find_field(set, descriptor, &why);
     size_t first;
     size_t count;
     size_t i;
-    mscip_decode_error_t first_err;
-    mscip_decode_error_t other_err;
     out->id = MSCIP_FIELD_NONE;
     if (!f) {
         return why;
@@ -427,17 +385,18 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
             }
         }
     }
-    memset(&first_err, 0, sizeof first_err);
+    /* No error details on the way (the common case is a field that decodes); when no layout
+     * decodes, the first one runs again to report its error. */
     for (i = 0; i < count; i++) {
-        if (decode_layout((mscip_field_id_t)(first + i), data, len, out, i == 0 ? &first_err : &other_err) ==
-            MSCIP_OK) {
+        if (decode_layout((mscip_field_id_t)(first + i), data, len, out, NULL) == MSCIP_OK) {
             return MSCIP_OK;
         }
     }
-    out->id = MSCIP_FIELD_NONE;
     if (err) {
-        *err = first_err;
+        memset(err, 0, sizeof *err);
+        (void)decode_layout((mscip_field_id_t)first, data, len, out, err);
     }
+    out->id = MSCIP_FIELD_NONE;
     return MSCIP_ERR_DECODE;
 }
 

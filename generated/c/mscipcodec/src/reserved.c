@@ -44,9 +44,20 @@ mscip_status_t mscip_ack_encode(const mscip_ack_t *value, uint8_t *buf, size_t c
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_ack_load(const uint8_t *d, mscip_ack_t *out) {
+    out->command_code = mscip_ld_u8(d + 0);
+    out->error_code = mscip_ld_u8(d + 1);
+    return 0;
+}
+
 mscip_status_t mscip_ack_decode(const uint8_t *data, size_t len, mscip_ack_t *out,
                                 mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 2 && mscip_ack_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_ack_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;

@@ -89,6 +89,42 @@ TEST(Checksum, Fletcher16KnownAnswer) {
     EXPECT_EQ(g.bytes()[pkg::kSum2Index], 0xFA);
 }
 
+// update() works eight bytes a step; it must equal the byte-serial definition (sum1 += b,
+// sum2 += sum1, modulo 256) for every length, alignment and split into two updates.
+TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
+    std::uint8_t bytes[200 + 7];
+    std::uint32_t state = 12345;
+    for (std::uint8_t &b : bytes) {
+        state = state * 1103515245u + 12345u;
+        b = static_cast<std::uint8_t>(state >> 16);
+    }
+    for (std::size_t start = 0; start < 8; ++start) {
+        for (std::size_t len = 0; len <= 200; ++len) {
+            unsigned sum1 = 0;
+            unsigned sum2 = 0;
+            for (std::size_t i = 0; i < len; ++i) {
+                sum1 = (sum1 + bytes[start + i]) & 0xFFu;
+                sum2 = (sum2 + sum1) & 0xFFu;
+            }
+            const pkg::Fletcher16 whole = pkg::fletcher16(bytes + start, len);
+            ASSERT_EQ(whole.sum1, sum1) << "start " << start << " length " << len;
+            ASSERT_EQ(whole.sum2, sum2) << "start " << start << " length " << len;
+            const std::size_t cut = len / 3;
+            pkg::Fletcher16 split;
+            split.update(bytes + start, cut);
+            split.update(bytes + start + cut, len - cut);
+            ASSERT_EQ(split.sum1, sum1) << "start " << start << " length " << len << " cut " << cut;
+            ASSERT_EQ(split.sum2, sum2) << "start " << start << " length " << len << " cut " << cut;
+        }
+    }
+    // 261 bytes of 0xFF (-1 modulo 256): sum1 = -261 = 0xFB, sum2 = -(1 + .. + 261) = -34191 = 0x71
+    std::uint8_t ones[261];
+    std::memset(ones, 0xFF, sizeof ones);
+    const pkg::Fletcher16 f = pkg::fletcher16(ones, sizeof ones);
+    EXPECT_EQ(f.sum1, 0xFB);
+    EXPECT_EQ(f.sum2, 0x71);
+}
+
 TEST(Checksum, BuilderWritesHeaderAndChecksum) {
     const Bytes p = packet(0x01, 0x7A, 3);
     ASSERT_EQ(p.size(), pkg::kHeaderSize + pkg::kFieldHeaderSize + 3 + pkg::kChecksumSize);

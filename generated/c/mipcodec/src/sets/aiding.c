@@ -599,10 +599,20 @@ mip_status_t mip_aiding_echo_control_response_encode(const mip_aiding_echo_contr
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_aiding_echo_control_response_load(const uint8_t *d, mip_aiding_echo_control_response_t *out) {
+    out->mode = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_aiding_echo_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_aiding_echo_control_response_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_aiding_echo_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_echo_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -467,10 +467,21 @@ mip_status_t mip_base_built_in_test_result_gx5_45_encode(const mip_base_built_in
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_base_built_in_test_result_gx5_45_load(const uint8_t *d,
+                                                     mip_base_built_in_test_result_gx5_45_t *out) {
+    out->flags = mip_ld_u32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_base_built_in_test_result_gx5_45_decode(const uint8_t *data, size_t len,
                                                          mip_base_built_in_test_result_gx5_45_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_base_built_in_test_result_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_result_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -543,10 +554,21 @@ mip_base_built_in_test_result_cv7_ins_encode(const mip_base_built_in_test_result
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_base_built_in_test_result_cv7_ins_load(const uint8_t *d,
+                                                      mip_base_built_in_test_result_cv7_ins_t *out) {
+    out->flags = mip_ld_u32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_base_built_in_test_result_cv7_ins_decode(const uint8_t *data, size_t len,
                                                           mip_base_built_in_test_result_cv7_ins_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_base_built_in_test_result_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_result_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1085,10 +1107,22 @@ mip_status_t mip_base_comm_port_speed_response_encode(const mip_base_comm_port_s
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_base_comm_port_speed_response_load(const uint8_t *d,
+                                                  mip_base_comm_port_speed_response_t *out) {
+    out->port = mip_ld_u8(d + 0);
+    out->baud = mip_ld_u32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_base_comm_port_speed_response_decode(const uint8_t *data, size_t len,
                                                       mip_base_comm_port_speed_response_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_base_comm_port_speed_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_comm_port_speed_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1315,10 +1349,22 @@ mip_status_t mip_base_gps_time_update_cv7_ins_encode(const mip_base_gps_time_upd
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_base_gps_time_update_cv7_ins_load(const uint8_t *d, mip_base_gps_time_update_cv7_ins_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    out->field_id = mip_ld_u8(d + 1);
+    out->value = mip_ld_u32(d + 2);
+    return 0;
+}
+
 mip_status_t mip_base_gps_time_update_cv7_ins_decode(const uint8_t *data, size_t len,
                                                      mip_base_gps_time_update_cv7_ins_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_base_gps_time_update_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_time_update_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1412,9 +1458,19 @@ mip_status_t mip_base_gps_week_encode(const mip_base_gps_week_t *value, uint8_t 
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_base_gps_week_load(const uint8_t *d, mip_base_gps_week_t *out) {
+    out->week = mip_ld_u32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_base_gps_week_decode(const uint8_t *data, size_t len, mip_base_gps_week_t *out,
                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_base_gps_week_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_week_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1481,9 +1537,19 @@ mip_status_t mip_base_gps_seconds_encode(const mip_base_gps_seconds_t *value, ui
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_base_gps_seconds_load(const uint8_t *d, mip_base_gps_seconds_t *out) {
+    out->seconds = mip_ld_u32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_base_gps_seconds_decode(const uint8_t *data, size_t len, mip_base_gps_seconds_t *out,
                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_base_gps_seconds_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_seconds_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

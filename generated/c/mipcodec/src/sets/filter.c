@@ -102,10 +102,22 @@ mip_status_t mip_filter_set_initial_attitude_encode(const mip_filter_set_initial
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_set_initial_attitude_load(const uint8_t *d, mip_filter_set_initial_attitude_t *out) {
+    out->roll = mip_ld_f32(d + 0);
+    out->pitch = mip_ld_f32(d + 4);
+    out->heading = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_filter_set_initial_attitude_decode(const uint8_t *data, size_t len,
                                                     mip_filter_set_initial_attitude_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_set_initial_attitude_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_set_initial_attitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -200,10 +212,20 @@ mip_status_t mip_filter_set_initial_heading_encode(const mip_filter_set_initial_
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_set_initial_heading_load(const uint8_t *d, mip_filter_set_initial_heading_t *out) {
+    out->heading = mip_ld_f32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_set_initial_heading_decode(const uint8_t *data, size_t len,
                                                    mip_filter_set_initial_heading_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_filter_set_initial_heading_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_set_initial_heading_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -432,11 +454,22 @@ mip_filter_vehicle_dynamics_mode_response_encode(const mip_filter_vehicle_dynami
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_vehicle_dynamics_mode_response_load(const uint8_t *d,
+                                                          mip_filter_vehicle_dynamics_mode_response_t *out) {
+    out->mode = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_filter_vehicle_dynamics_mode_response_decode(const uint8_t *data, size_t len,
                                                  mip_filter_vehicle_dynamics_mode_response_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_vehicle_dynamics_mode_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_vehicle_dynamics_mode_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -705,11 +738,25 @@ mip_status_t mip_filter_sensor_to_vehicle_transform_response_encode(
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_sensor_to_vehicle_transform_response_load(const uint8_t *d,
+                                                     mip_filter_sensor_to_vehicle_transform_response_t *out) {
+    out->roll = mip_ld_f32(d + 0);
+    out->pitch = mip_ld_f32(d + 4);
+    out->yaw = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t
 mip_filter_sensor_to_vehicle_transform_response_decode(const uint8_t *data, size_t len,
                                                        mip_filter_sensor_to_vehicle_transform_response_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_sensor_to_vehicle_transform_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_sensor_to_vehicle_transform_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -961,11 +1008,25 @@ mip_status_t mip_filter_sensor_to_vehicle_offset_response_encode(
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_sensor_to_vehicle_offset_response_load(const uint8_t *d,
+                                                  mip_filter_sensor_to_vehicle_offset_response_t *out) {
+    out->offset[0] = mip_ld_f32(d + 0);
+    out->offset[1] = mip_ld_f32(d + 4);
+    out->offset[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t
 mip_filter_sensor_to_vehicle_offset_response_decode(const uint8_t *data, size_t len,
                                                     mip_filter_sensor_to_vehicle_offset_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_sensor_to_vehicle_offset_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_sensor_to_vehicle_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1213,10 +1274,23 @@ mip_status_t mip_filter_antenna_offset_response_encode(const mip_filter_antenna_
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_antenna_offset_response_load(const uint8_t *d,
+                                                   mip_filter_antenna_offset_response_t *out) {
+    out->offset[0] = mip_ld_f32(d + 0);
+    out->offset[1] = mip_ld_f32(d + 4);
+    out->offset[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_filter_antenna_offset_response_decode(const uint8_t *data, size_t len,
                                                        mip_filter_antenna_offset_response_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_antenna_offset_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_antenna_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1424,10 +1498,21 @@ mip_filter_estimation_control_response_encode(const mip_filter_estimation_contro
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_estimation_control_response_load(const uint8_t *d,
+                                                       mip_filter_estimation_control_response_t *out) {
+    out->flags = mip_ld_u16(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_estimation_control_response_decode(const uint8_t *data, size_t len,
                                                            mip_filter_estimation_control_response_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_filter_estimation_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_estimation_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1608,10 +1693,21 @@ mip_filter_gnss_source_control_response_encode(const mip_filter_gnss_source_cont
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_gnss_source_control_response_load(const uint8_t *d,
+                                                        mip_filter_gnss_source_control_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_gnss_source_control_response_decode(const uint8_t *data, size_t len,
                                                             mip_filter_gnss_source_control_response_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_gnss_source_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_source_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1754,10 +1850,33 @@ mip_status_t mip_filter_external_gnss_update_encode(const mip_filter_external_gn
     return st;
 }
 
+/* The layout is 70 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_external_gnss_update_load(const uint8_t *d, mip_filter_external_gnss_update_t *out) {
+    out->gps_tow = mip_ld_f64(d + 0);
+    out->gps_week = mip_ld_u16(d + 8);
+    out->latitude = mip_ld_f64(d + 10);
+    out->longitude = mip_ld_f64(d + 18);
+    out->height = mip_ld_f64(d + 26);
+    out->velocity[0] = mip_ld_f32(d + 34);
+    out->velocity[1] = mip_ld_f32(d + 38);
+    out->velocity[2] = mip_ld_f32(d + 42);
+    out->position_uncertainty[0] = mip_ld_f32(d + 46);
+    out->position_uncertainty[1] = mip_ld_f32(d + 50);
+    out->position_uncertainty[2] = mip_ld_f32(d + 54);
+    out->velocity_uncertainty[0] = mip_ld_f32(d + 58);
+    out->velocity_uncertainty[1] = mip_ld_f32(d + 62);
+    out->velocity_uncertainty[2] = mip_ld_f32(d + 66);
+    return 0;
+}
+
 mip_status_t mip_filter_external_gnss_update_decode(const uint8_t *data, size_t len,
                                                     mip_filter_external_gnss_update_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 70 && mip_filter_external_gnss_update_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_gnss_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2020,10 +2139,23 @@ mip_status_t mip_filter_external_heading_update_encode(const mip_filter_external
     return st;
 }
 
+/* The layout is 9 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_external_heading_update_load(const uint8_t *d,
+                                                   mip_filter_external_heading_update_t *out) {
+    out->heading = mip_ld_f32(d + 0);
+    out->heading_uncertainty = mip_ld_f32(d + 4);
+    out->type = mip_ld_u8(d + 8);
+    return 0;
+}
+
 mip_status_t mip_filter_external_heading_update_decode(const uint8_t *data, size_t len,
                                                        mip_filter_external_heading_update_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 9 && mip_filter_external_heading_update_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_heading_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2230,11 +2362,23 @@ mip_filter_heading_update_control_response_encode(const mip_filter_heading_updat
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_heading_update_control_response_load(const uint8_t *d,
+                                                mip_filter_heading_update_control_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_filter_heading_update_control_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_heading_update_control_response_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_heading_update_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_heading_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2414,10 +2558,21 @@ mip_filter_auto_init_control_response_encode(const mip_filter_auto_init_control_
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_auto_init_control_response_load(const uint8_t *d,
+                                                      mip_filter_auto_init_control_response_t *out) {
+    out->enable = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_auto_init_control_response_decode(const uint8_t *data, size_t len,
                                                           mip_filter_auto_init_control_response_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_auto_init_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_auto_init_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2635,10 +2790,22 @@ mip_status_t mip_filter_accel_noise_response_encode(const mip_filter_accel_noise
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_accel_noise_response_load(const uint8_t *d, mip_filter_accel_noise_response_t *out) {
+    out->noise[0] = mip_ld_f32(d + 0);
+    out->noise[1] = mip_ld_f32(d + 4);
+    out->noise[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_filter_accel_noise_response_decode(const uint8_t *data, size_t len,
                                                     mip_filter_accel_noise_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_accel_noise_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2884,10 +3051,22 @@ mip_status_t mip_filter_gyro_noise_response_encode(const mip_filter_gyro_noise_r
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_gyro_noise_response_load(const uint8_t *d, mip_filter_gyro_noise_response_t *out) {
+    out->noise[0] = mip_ld_f32(d + 0);
+    out->noise[1] = mip_ld_f32(d + 4);
+    out->noise[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_filter_gyro_noise_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_gyro_noise_response_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_gyro_noise_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3213,10 +3392,26 @@ mip_status_t mip_filter_accel_bias_model_response_encode(const mip_filter_accel_
     return st;
 }
 
+/* The layout is 24 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_accel_bias_model_response_load(const uint8_t *d,
+                                                     mip_filter_accel_bias_model_response_t *out) {
+    out->beta[0] = mip_ld_f32(d + 0);
+    out->beta[1] = mip_ld_f32(d + 4);
+    out->beta[2] = mip_ld_f32(d + 8);
+    out->noise[0] = mip_ld_f32(d + 12);
+    out->noise[1] = mip_ld_f32(d + 16);
+    out->noise[2] = mip_ld_f32(d + 20);
+    return 0;
+}
+
 mip_status_t mip_filter_accel_bias_model_response_decode(const uint8_t *data, size_t len,
                                                          mip_filter_accel_bias_model_response_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 24 && mip_filter_accel_bias_model_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_bias_model_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3580,10 +3775,26 @@ mip_status_t mip_filter_gyro_bias_model_response_encode(const mip_filter_gyro_bi
     return st;
 }
 
+/* The layout is 24 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_gyro_bias_model_response_load(const uint8_t *d,
+                                                    mip_filter_gyro_bias_model_response_t *out) {
+    out->beta[0] = mip_ld_f32(d + 0);
+    out->beta[1] = mip_ld_f32(d + 4);
+    out->beta[2] = mip_ld_f32(d + 8);
+    out->noise[0] = mip_ld_f32(d + 12);
+    out->noise[1] = mip_ld_f32(d + 16);
+    out->noise[2] = mip_ld_f32(d + 20);
+    return 0;
+}
+
 mip_status_t mip_filter_gyro_bias_model_response_decode(const uint8_t *data, size_t len,
                                                         mip_filter_gyro_bias_model_response_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 24 && mip_filter_gyro_bias_model_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_bias_model_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3867,10 +4078,21 @@ mip_status_t mip_filter_zupt_control_response_encode(const mip_filter_zupt_contr
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_zupt_control_response_load(const uint8_t *d, mip_filter_zupt_control_response_t *out) {
+    out->enable = mip_ld_u8(d + 0);
+    out->threshold = mip_ld_f32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_filter_zupt_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_zupt_control_response_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_filter_zupt_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zupt_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3987,11 +4209,27 @@ mip_status_t mip_filter_external_heading_update_with_time_encode(
     return st;
 }
 
+/* The layout is 19 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_external_heading_update_with_time_load(const uint8_t *d,
+                                                  mip_filter_external_heading_update_with_time_t *out) {
+    out->gps_tow = mip_ld_f64(d + 0);
+    out->gps_week = mip_ld_u16(d + 8);
+    out->heading = mip_ld_f32(d + 10);
+    out->heading_uncertainty = mip_ld_f32(d + 14);
+    out->type = mip_ld_u8(d + 18);
+    return 0;
+}
+
 mip_status_t
 mip_filter_external_heading_update_with_time_decode(const uint8_t *data, size_t len,
                                                     mip_filter_external_heading_update_with_time_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 19 && mip_filter_external_heading_update_with_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_heading_update_with_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4271,10 +4509,22 @@ mip_status_t mip_filter_zero_angular_rate_update_control_response_encode(
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_zero_angular_rate_update_control_response_load(
+    const uint8_t *d, mip_filter_zero_angular_rate_update_control_response_t *out) {
+    out->enable = mip_ld_u8(d + 0);
+    out->threshold = mip_ld_f32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_filter_zero_angular_rate_update_control_response_decode(
     const uint8_t *data, size_t len, mip_filter_zero_angular_rate_update_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_filter_zero_angular_rate_update_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zero_angular_rate_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4571,10 +4821,21 @@ mip_filter_mag_capture_auto_calibration_encode(const mip_filter_mag_capture_auto
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_mag_capture_auto_calibration_load(const uint8_t *d,
+                                                        mip_filter_mag_capture_auto_calibration_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_mag_capture_auto_calibration_decode(const uint8_t *data, size_t len,
                                                             mip_filter_mag_capture_auto_calibration_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_mag_capture_auto_calibration_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_capture_auto_calibration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4798,11 +5059,24 @@ mip_filter_gravity_noise_std_dev_response_encode(const mip_filter_gravity_noise_
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_gravity_noise_std_dev_response_load(const uint8_t *d,
+                                                          mip_filter_gravity_noise_std_dev_response_t *out) {
+    out->noise[0] = mip_ld_f32(d + 0);
+    out->noise[1] = mip_ld_f32(d + 4);
+    out->noise[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t
 mip_filter_gravity_noise_std_dev_response_decode(const uint8_t *data, size_t len,
                                                  mip_filter_gravity_noise_std_dev_response_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_gravity_noise_std_dev_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5017,10 +5291,21 @@ mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_encode(
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_pressure_altitude_noise_std_dev_response_load(
+    const uint8_t *d, mip_filter_pressure_altitude_noise_std_dev_response_t *out) {
+    out->noise = mip_ld_f32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_decode(
     const uint8_t *data, size_t len, mip_filter_pressure_altitude_noise_std_dev_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_filter_pressure_altitude_noise_std_dev_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pressure_altitude_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5245,11 +5530,25 @@ mip_filter_hard_iron_offset_noise_response_encode(const mip_filter_hard_iron_off
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_hard_iron_offset_noise_response_load(const uint8_t *d,
+                                                mip_filter_hard_iron_offset_noise_response_t *out) {
+    out->noise[0] = mip_ld_f32(d + 0);
+    out->noise[1] = mip_ld_f32(d + 4);
+    out->noise[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t
 mip_filter_hard_iron_offset_noise_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_hard_iron_offset_noise_response_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_hard_iron_offset_noise_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_hard_iron_offset_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5503,11 +5802,31 @@ mip_filter_soft_iron_matrix_noise_response_encode(const mip_filter_soft_iron_mat
     return st;
 }
 
+/* The layout is 36 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_soft_iron_matrix_noise_response_load(const uint8_t *d,
+                                                mip_filter_soft_iron_matrix_noise_response_t *out) {
+    out->noise[0] = mip_ld_f32(d + 0);
+    out->noise[1] = mip_ld_f32(d + 4);
+    out->noise[2] = mip_ld_f32(d + 8);
+    out->noise[3] = mip_ld_f32(d + 12);
+    out->noise[4] = mip_ld_f32(d + 16);
+    out->noise[5] = mip_ld_f32(d + 20);
+    out->noise[6] = mip_ld_f32(d + 24);
+    out->noise[7] = mip_ld_f32(d + 28);
+    out->noise[8] = mip_ld_f32(d + 32);
+    return 0;
+}
+
 mip_status_t
 mip_filter_soft_iron_matrix_noise_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_soft_iron_matrix_noise_response_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 36 && mip_filter_soft_iron_matrix_noise_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_soft_iron_matrix_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5759,10 +6078,23 @@ mip_filter_mag_noise_std_dev_response_encode(const mip_filter_mag_noise_std_dev_
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_mag_noise_std_dev_response_load(const uint8_t *d,
+                                                      mip_filter_mag_noise_std_dev_response_t *out) {
+    out->noise[0] = mip_ld_f32(d + 0);
+    out->noise[1] = mip_ld_f32(d + 4);
+    out->noise[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_filter_mag_noise_std_dev_response_decode(const uint8_t *data, size_t len,
                                                           mip_filter_mag_noise_std_dev_response_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_mag_noise_std_dev_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6013,10 +6345,22 @@ mip_filter_declination_source_response_encode(const mip_filter_declination_sourc
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_declination_source_response_load(const uint8_t *d,
+                                                       mip_filter_declination_source_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    out->declination = mip_ld_f32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_filter_declination_source_response_decode(const uint8_t *data, size_t len,
                                                            mip_filter_declination_source_response_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_filter_declination_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_declination_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6471,10 +6815,27 @@ mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_encode(
     return st;
 }
 
+/* The layout is 25 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_gravity_magnitude_adaptive_measurement_response_load(
+    const uint8_t *d, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out) {
+    out->mode = mip_ld_u8(d + 0);
+    out->frequency = mip_ld_f32(d + 1);
+    out->low_limit = mip_ld_f32(d + 5);
+    out->high_limit = mip_ld_f32(d + 9);
+    out->low_limit_uncertainty = mip_ld_f32(d + 13);
+    out->high_limit_uncertainty = mip_ld_f32(d + 17);
+    out->minimum_uncertainty = mip_ld_f32(d + 21);
+    return 0;
+}
+
 mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_decode(
     const uint8_t *data, size_t len, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 25 && mip_filter_gravity_magnitude_adaptive_measurement_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_magnitude_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7001,10 +7362,27 @@ mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_encode(
     return st;
 }
 
+/* The layout is 25 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_mag_magnitude_adaptive_measurement_response_load(
+    const uint8_t *d, mip_filter_mag_magnitude_adaptive_measurement_response_t *out) {
+    out->mode = mip_ld_u8(d + 0);
+    out->frequency = mip_ld_f32(d + 1);
+    out->low_limit = mip_ld_f32(d + 5);
+    out->high_limit = mip_ld_f32(d + 9);
+    out->low_limit_uncertainty = mip_ld_f32(d + 13);
+    out->high_limit_uncertainty = mip_ld_f32(d + 17);
+    out->minimum_uncertainty = mip_ld_f32(d + 21);
+    return 0;
+}
+
 mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_decode(
     const uint8_t *data, size_t len, mip_filter_mag_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 25 && mip_filter_mag_magnitude_adaptive_measurement_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_magnitude_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7441,10 +7819,25 @@ mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_encode(
     return st;
 }
 
+/* The layout is 17 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_mag_dip_angle_adaptive_measurement_response_load(
+    const uint8_t *d, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out) {
+    out->mode = mip_ld_u8(d + 0);
+    out->frequency = mip_ld_f32(d + 1);
+    out->high_limit = mip_ld_f32(d + 5);
+    out->high_limit_uncertainty = mip_ld_f32(d + 9);
+    out->minimum_uncertainty = mip_ld_f32(d + 13);
+    return 0;
+}
+
 mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_decode(
     const uint8_t *data, size_t len, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 17 && mip_filter_mag_dip_angle_adaptive_measurement_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_dip_angle_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7680,11 +8073,23 @@ mip_filter_altitude_aiding_control_response_encode(const mip_filter_altitude_aid
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_altitude_aiding_control_response_load(const uint8_t *d,
+                                                 mip_filter_altitude_aiding_control_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_filter_altitude_aiding_control_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_altitude_aiding_control_response_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_altitude_aiding_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_altitude_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7867,11 +8272,23 @@ mip_status_t mip_filter_pitch_roll_aiding_control_response_encode(
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_pitch_roll_aiding_control_response_load(const uint8_t *d,
+                                                   mip_filter_pitch_roll_aiding_control_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_filter_pitch_roll_aiding_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_pitch_roll_aiding_control_response_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_pitch_roll_aiding_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pitch_roll_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8093,10 +8510,22 @@ mip_filter_inclination_source_response_encode(const mip_filter_inclination_sourc
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_inclination_source_response_load(const uint8_t *d,
+                                                       mip_filter_inclination_source_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    out->inclination = mip_ld_f32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_filter_inclination_source_response_decode(const uint8_t *data, size_t len,
                                                            mip_filter_inclination_source_response_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_filter_inclination_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_inclination_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8337,10 +8766,22 @@ mip_status_t mip_filter_magnetic_field_magnitude_source_response_encode(
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_magnetic_field_magnitude_source_response_load(
+    const uint8_t *d, mip_filter_magnetic_field_magnitude_source_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    out->magnitude = mip_ld_f32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_filter_magnetic_field_magnitude_source_response_decode(
     const uint8_t *data, size_t len, mip_filter_magnetic_field_magnitude_source_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_filter_magnetic_field_magnitude_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_magnetic_field_magnitude_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8567,11 +9008,27 @@ mip_status_t mip_filter_aiding_measurement_control_response_encode(
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_aiding_measurement_control_response_load(const uint8_t *d,
+                                                    mip_filter_aiding_measurement_control_response_t *out) {
+    out->source = mip_ld_u16(d + 0);
+    if (d[2] > 1) {
+        return -1;
+    }
+    out->enable = mip_ld_bool(d + 2);
+    return 0;
+}
+
 mip_status_t
 mip_filter_aiding_measurement_control_response_decode(const uint8_t *data, size_t len,
                                                       mip_filter_aiding_measurement_control_response_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_filter_aiding_measurement_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_aiding_measurement_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9186,10 +9643,33 @@ mip_status_t mip_filter_initialization_configuration_response_encode(
     return st;
 }
 
+/* The layout is 40 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_initialization_configuration_response_load(
+    const uint8_t *d, mip_filter_initialization_configuration_response_t *out) {
+    out->wait_for_run_command = mip_ld_u8(d + 0);
+    out->initial_cond_src = mip_ld_u8(d + 1);
+    out->auto_heading_alignment_selector = mip_ld_u8(d + 2);
+    out->initial_heading = mip_ld_f32(d + 3);
+    out->initial_pitch = mip_ld_f32(d + 7);
+    out->initial_roll = mip_ld_f32(d + 11);
+    out->initial_position[0] = mip_ld_f32(d + 15);
+    out->initial_position[1] = mip_ld_f32(d + 19);
+    out->initial_position[2] = mip_ld_f32(d + 23);
+    out->initial_velocity[0] = mip_ld_f32(d + 27);
+    out->initial_velocity[1] = mip_ld_f32(d + 31);
+    out->initial_velocity[2] = mip_ld_f32(d + 35);
+    out->reference_frame_selector = mip_ld_u8(d + 39);
+    return 0;
+}
+
 mip_status_t mip_filter_initialization_configuration_response_decode(
     const uint8_t *data, size_t len, mip_filter_initialization_configuration_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 40 && mip_filter_initialization_configuration_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_initialization_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9575,11 +10055,24 @@ mip_filter_adaptive_filter_control_response_encode(const mip_filter_adaptive_fil
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_adaptive_filter_control_response_load(const uint8_t *d,
+                                                 mip_filter_adaptive_filter_control_response_t *out) {
+    out->level = mip_ld_u8(d + 0);
+    out->time_limit = mip_ld_u16(d + 1);
+    return 0;
+}
+
 mip_status_t
 mip_filter_adaptive_filter_control_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_adaptive_filter_control_response_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_filter_adaptive_filter_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_adaptive_filter_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9845,10 +10338,24 @@ mip_filter_multi_antenna_offset_response_encode(const mip_filter_multi_antenna_o
     return st;
 }
 
+/* The layout is 13 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_multi_antenna_offset_response_load(const uint8_t *d,
+                                                         mip_filter_multi_antenna_offset_response_t *out) {
+    out->receiver_id = mip_ld_u8(d + 0);
+    out->antenna_offset[0] = mip_ld_f32(d + 1);
+    out->antenna_offset[1] = mip_ld_f32(d + 5);
+    out->antenna_offset[2] = mip_ld_f32(d + 9);
+    return 0;
+}
+
 mip_status_t mip_filter_multi_antenna_offset_response_decode(const uint8_t *data, size_t len,
                                                              mip_filter_multi_antenna_offset_response_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 13 && mip_filter_multi_antenna_offset_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_multi_antenna_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10204,10 +10711,25 @@ mip_status_t mip_filter_relative_position_configuration_response_encode(
     return st;
 }
 
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_relative_position_configuration_response_load(
+    const uint8_t *d, mip_filter_relative_position_configuration_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    out->reference_frame_selector = mip_ld_u8(d + 1);
+    out->reference_coordinates[0] = mip_ld_f64(d + 2);
+    out->reference_coordinates[1] = mip_ld_f64(d + 10);
+    out->reference_coordinates[2] = mip_ld_f64(d + 18);
+    return 0;
+}
+
 mip_status_t mip_filter_relative_position_configuration_response_decode(
     const uint8_t *data, size_t len, mip_filter_relative_position_configuration_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 26 && mip_filter_relative_position_configuration_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_relative_position_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10530,11 +11052,26 @@ mip_status_t mip_filter_reference_point_lever_arm_response_encode(
     return st;
 }
 
+/* The layout is 13 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_reference_point_lever_arm_response_load(const uint8_t *d,
+                                                   mip_filter_reference_point_lever_arm_response_t *out) {
+    out->ref_point_sel = mip_ld_u8(d + 0);
+    out->lever_arm_offset[0] = mip_ld_f32(d + 1);
+    out->lever_arm_offset[1] = mip_ld_f32(d + 5);
+    out->lever_arm_offset[2] = mip_ld_f32(d + 9);
+    return 0;
+}
+
 mip_status_t
 mip_filter_reference_point_lever_arm_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_reference_point_lever_arm_response_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 13 && mip_filter_reference_point_lever_arm_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_reference_point_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10825,10 +11362,24 @@ mip_status_t mip_filter_speed_lever_arm_response_encode(const mip_filter_speed_l
     return st;
 }
 
+/* The layout is 13 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_speed_lever_arm_response_load(const uint8_t *d,
+                                                    mip_filter_speed_lever_arm_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    out->lever_arm_offset[0] = mip_ld_f32(d + 1);
+    out->lever_arm_offset[1] = mip_ld_f32(d + 5);
+    out->lever_arm_offset[2] = mip_ld_f32(d + 9);
+    return 0;
+}
+
 mip_status_t mip_filter_speed_lever_arm_response_decode(const uint8_t *data, size_t len,
                                                         mip_filter_speed_lever_arm_response_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 13 && mip_filter_speed_lever_arm_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_speed_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11054,10 +11605,21 @@ mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_encode(
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_wheeled_vehicle_constraint_control_response_load(
+    const uint8_t *d, mip_filter_wheeled_vehicle_constraint_control_response_t *out) {
+    out->enable = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_decode(
     const uint8_t *data, size_t len, mip_filter_wheeled_vehicle_constraint_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_filter_wheeled_vehicle_constraint_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_wheeled_vehicle_constraint_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11285,10 +11847,22 @@ mip_status_t mip_filter_gnss_antenna_calibration_control_response_encode(
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_gnss_antenna_calibration_control_response_load(
+    const uint8_t *d, mip_filter_gnss_antenna_calibration_control_response_t *out) {
+    out->enable = mip_ld_u8(d + 0);
+    out->max_offset = mip_ld_f32(d + 1);
+    return 0;
+}
+
 mip_status_t mip_filter_gnss_antenna_calibration_control_response_decode(
     const uint8_t *data, size_t len, mip_filter_gnss_antenna_calibration_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_filter_gnss_antenna_calibration_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_antenna_calibration_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

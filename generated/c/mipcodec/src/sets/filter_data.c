@@ -61,10 +61,23 @@ mip_status_t mip_filter_data_llh_position_encode(const mip_filter_data_llh_posit
     return st;
 }
 
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_llh_position_load(const uint8_t *d, mip_filter_data_llh_position_t *out) {
+    out->latitude = mip_ld_f64(d + 0);
+    out->longitude = mip_ld_f64(d + 8);
+    out->ellipsoid_height = mip_ld_f64(d + 16);
+    out->valid_flags = mip_ld_u16(d + 24);
+    return 0;
+}
+
 mip_status_t mip_filter_data_llh_position_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_llh_position_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 26 && mip_filter_data_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -195,10 +208,23 @@ mip_status_t mip_filter_data_ned_velocity_encode(const mip_filter_data_ned_veloc
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ned_velocity_load(const uint8_t *d, mip_filter_data_ned_velocity_t *out) {
+    out->north = mip_ld_f32(d + 0);
+    out->east = mip_ld_f32(d + 4);
+    out->down = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ned_velocity_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -321,10 +347,25 @@ mip_status_t mip_filter_data_attitude_quaternion_encode(const mip_filter_data_at
     return st;
 }
 
+/* The layout is 18 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_attitude_quaternion_load(const uint8_t *d,
+                                                    mip_filter_data_attitude_quaternion_t *out) {
+    out->q[0] = mip_ld_f32(d + 0);
+    out->q[1] = mip_ld_f32(d + 4);
+    out->q[2] = mip_ld_f32(d + 8);
+    out->q[3] = mip_ld_f32(d + 12);
+    out->valid_flags = mip_ld_u16(d + 16);
+    return 0;
+}
+
 mip_status_t mip_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
                                                         mip_filter_data_attitude_quaternion_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 18 && mip_filter_data_attitude_quaternion_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_attitude_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -451,10 +492,29 @@ mip_status_t mip_filter_data_attitude_dcm_encode(const mip_filter_data_attitude_
     return st;
 }
 
+/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_attitude_dcm_load(const uint8_t *d, mip_filter_data_attitude_dcm_t *out) {
+    out->dcm[0] = mip_ld_f32(d + 0);
+    out->dcm[1] = mip_ld_f32(d + 4);
+    out->dcm[2] = mip_ld_f32(d + 8);
+    out->dcm[3] = mip_ld_f32(d + 12);
+    out->dcm[4] = mip_ld_f32(d + 16);
+    out->dcm[5] = mip_ld_f32(d + 20);
+    out->dcm[6] = mip_ld_f32(d + 24);
+    out->dcm[7] = mip_ld_f32(d + 28);
+    out->dcm[8] = mip_ld_f32(d + 32);
+    out->valid_flags = mip_ld_u16(d + 36);
+    return 0;
+}
+
 mip_status_t mip_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_attitude_dcm_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 38 && mip_filter_data_attitude_dcm_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_attitude_dcm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -588,10 +648,23 @@ mip_status_t mip_filter_data_euler_angles_encode(const mip_filter_data_euler_ang
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_euler_angles_load(const uint8_t *d, mip_filter_data_euler_angles_t *out) {
+    out->roll = mip_ld_f32(d + 0);
+    out->pitch = mip_ld_f32(d + 4);
+    out->yaw = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_euler_angles_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_euler_angles_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -712,9 +785,22 @@ mip_status_t mip_filter_data_gyro_bias_encode(const mip_filter_data_gyro_bias_t 
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gyro_bias_load(const uint8_t *d, mip_filter_data_gyro_bias_t *out) {
+    out->bias[0] = mip_ld_f32(d + 0);
+    out->bias[1] = mip_ld_f32(d + 4);
+    out->bias[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
                                               mip_filter_data_gyro_bias_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gyro_bias_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -839,9 +925,22 @@ mip_status_t mip_filter_data_accel_bias_encode(const mip_filter_data_accel_bias_
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_accel_bias_load(const uint8_t *d, mip_filter_data_accel_bias_t *out) {
+    out->bias[0] = mip_ld_f32(d + 0);
+    out->bias[1] = mip_ld_f32(d + 4);
+    out->bias[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
                                                mip_filter_data_accel_bias_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_accel_bias_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -978,10 +1077,24 @@ mip_filter_data_llh_position_uncertainty_encode(const mip_filter_data_llh_positi
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_llh_position_uncertainty_load(const uint8_t *d,
+                                                         mip_filter_data_llh_position_uncertainty_t *out) {
+    out->north = mip_ld_f32(d + 0);
+    out->east = mip_ld_f32(d + 4);
+    out->down = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_llh_position_uncertainty_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_llh_position_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_llh_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1117,10 +1230,24 @@ mip_filter_data_ned_velocity_uncertainty_encode(const mip_filter_data_ned_veloci
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ned_velocity_uncertainty_load(const uint8_t *d,
+                                                         mip_filter_data_ned_velocity_uncertainty_t *out) {
+    out->north = mip_ld_f32(d + 0);
+    out->east = mip_ld_f32(d + 4);
+    out->down = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_ned_velocity_uncertainty_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_ned_velocity_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1256,10 +1383,24 @@ mip_filter_data_euler_angles_uncertainty_encode(const mip_filter_data_euler_angl
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_euler_angles_uncertainty_load(const uint8_t *d,
+                                                         mip_filter_data_euler_angles_uncertainty_t *out) {
+    out->roll = mip_ld_f32(d + 0);
+    out->pitch = mip_ld_f32(d + 4);
+    out->yaw = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_euler_angles_uncertainty_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_euler_angles_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_euler_angles_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1386,10 +1527,24 @@ mip_filter_data_gyro_bias_uncertainty_encode(const mip_filter_data_gyro_bias_unc
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gyro_bias_uncertainty_load(const uint8_t *d,
+                                                      mip_filter_data_gyro_bias_uncertainty_t *out) {
+    out->bias_uncertainty[0] = mip_ld_f32(d + 0);
+    out->bias_uncertainty[1] = mip_ld_f32(d + 4);
+    out->bias_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
                                                           mip_filter_data_gyro_bias_uncertainty_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gyro_bias_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1519,10 +1674,24 @@ mip_filter_data_accel_bias_uncertainty_encode(const mip_filter_data_accel_bias_u
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_accel_bias_uncertainty_load(const uint8_t *d,
+                                                       mip_filter_data_accel_bias_uncertainty_t *out) {
+    out->bias_uncertainty[0] = mip_ld_f32(d + 0);
+    out->bias_uncertainty[1] = mip_ld_f32(d + 4);
+    out->bias_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
                                                            mip_filter_data_accel_bias_uncertainty_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_accel_bias_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1649,10 +1818,23 @@ mip_status_t mip_filter_data_linear_accel_encode(const mip_filter_data_linear_ac
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_linear_accel_load(const uint8_t *d, mip_filter_data_linear_accel_t *out) {
+    out->accel[0] = mip_ld_f32(d + 0);
+    out->accel[1] = mip_ld_f32(d + 4);
+    out->accel[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_linear_accel_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_linear_accel_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_linear_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1777,10 +1959,24 @@ mip_status_t mip_filter_data_comp_angular_rate_encode(const mip_filter_data_comp
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_comp_angular_rate_load(const uint8_t *d,
+                                                  mip_filter_data_comp_angular_rate_t *out) {
+    out->gyro[0] = mip_ld_f32(d + 0);
+    out->gyro[1] = mip_ld_f32(d + 4);
+    out->gyro[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_comp_angular_rate_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_comp_angular_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_comp_angular_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1902,10 +2098,22 @@ mip_filter_data_wgs84_gravity_magnitude_encode(const mip_filter_data_wgs84_gravi
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_wgs84_gravity_magnitude_load(const uint8_t *d,
+                                                        mip_filter_data_wgs84_gravity_magnitude_t *out) {
+    out->gravity_magnitude = mip_ld_f32(d + 0);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
                                                             mip_filter_data_wgs84_gravity_magnitude_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_filter_data_wgs84_gravity_magnitude_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_wgs84_gravity_magnitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2006,10 +2214,23 @@ mip_status_t mip_filter_data_filter_status_gx5_45_encode(const mip_filter_data_f
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_filter_status_gx5_45_load(const uint8_t *d,
+                                                     mip_filter_data_filter_status_gx5_45_t *out) {
+    out->filter_state = mip_ld_u16(d + 0);
+    out->dynamics_mode = mip_ld_u16(d + 2);
+    out->status_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
                                                          mip_filter_data_filter_status_gx5_45_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_filter_data_filter_status_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_filter_status_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2124,10 +2345,23 @@ mip_filter_data_filter_status_cv7_ins_encode(const mip_filter_data_filter_status
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_filter_status_cv7_ins_load(const uint8_t *d,
+                                                      mip_filter_data_filter_status_cv7_ins_t *out) {
+    out->filter_state = mip_ld_u16(d + 0);
+    out->dynamics_mode = mip_ld_u16(d + 2);
+    out->status_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
                                                           mip_filter_data_filter_status_cv7_ins_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_filter_data_filter_status_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_filter_status_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2239,10 +2473,22 @@ mip_status_t mip_filter_data_gps_timestamp_encode(const mip_filter_data_gps_time
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gps_timestamp_load(const uint8_t *d, mip_filter_data_gps_timestamp_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_gps_timestamp_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_data_gps_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2354,11 +2600,27 @@ mip_status_t mip_filter_data_quaternion_attitude_uncertainty_encode(
     return st;
 }
 
+/* The layout is 18 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_quaternion_attitude_uncertainty_load(const uint8_t *d,
+                                                     mip_filter_data_quaternion_attitude_uncertainty_t *out) {
+    out->q[0] = mip_ld_f32(d + 0);
+    out->q[1] = mip_ld_f32(d + 4);
+    out->q[2] = mip_ld_f32(d + 8);
+    out->q[3] = mip_ld_f32(d + 12);
+    out->valid_flags = mip_ld_u16(d + 16);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_quaternion_attitude_uncertainty_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_quaternion_attitude_uncertainty_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 18 && mip_filter_data_quaternion_attitude_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_quaternion_attitude_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2485,10 +2747,23 @@ mip_status_t mip_filter_data_gravity_vector_encode(const mip_filter_data_gravity
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gravity_vector_load(const uint8_t *d, mip_filter_data_gravity_vector_t *out) {
+    out->gravity[0] = mip_ld_f32(d + 0);
+    out->gravity[1] = mip_ld_f32(d + 4);
+    out->gravity[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_gravity_vector_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gravity_vector_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gravity_vector_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2625,10 +2900,24 @@ mip_status_t mip_filter_data_heading_update_state_encode(const mip_filter_data_h
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_heading_update_state_load(const uint8_t *d,
+                                                     mip_filter_data_heading_update_state_t *out) {
+    out->heading = mip_ld_f32(d + 0);
+    out->heading_uncertainty = mip_ld_f32(d + 4);
+    out->source = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
                                                          mip_filter_data_heading_update_state_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_filter_data_heading_update_state_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_heading_update_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2777,10 +3066,25 @@ mip_status_t mip_filter_data_magnetic_model_encode(const mip_filter_data_magneti
     return st;
 }
 
+/* The layout is 22 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_magnetic_model_load(const uint8_t *d, mip_filter_data_magnetic_model_t *out) {
+    out->intensity_north = mip_ld_f32(d + 0);
+    out->intensity_east = mip_ld_f32(d + 4);
+    out->intensity_down = mip_ld_f32(d + 8);
+    out->inclination = mip_ld_f32(d + 12);
+    out->declination = mip_ld_f32(d + 16);
+    out->valid_flags = mip_ld_u16(d + 20);
+    return 0;
+}
+
 mip_status_t mip_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_magnetic_model_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 22 && mip_filter_data_magnetic_model_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_magnetic_model_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2930,10 +3234,24 @@ mip_status_t mip_filter_data_gyro_scale_factor_encode(const mip_filter_data_gyro
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gyro_scale_factor_load(const uint8_t *d,
+                                                  mip_filter_data_gyro_scale_factor_t *out) {
+    out->scale_factor[0] = mip_ld_f32(d + 0);
+    out->scale_factor[1] = mip_ld_f32(d + 4);
+    out->scale_factor[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_gyro_scale_factor_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gyro_scale_factor_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3060,10 +3378,24 @@ mip_status_t mip_filter_data_accel_scale_factor_encode(const mip_filter_data_acc
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_accel_scale_factor_load(const uint8_t *d,
+                                                   mip_filter_data_accel_scale_factor_t *out) {
+    out->scale_factor[0] = mip_ld_f32(d + 0);
+    out->scale_factor[1] = mip_ld_f32(d + 4);
+    out->scale_factor[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_accel_scale_factor_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_accel_scale_factor_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3191,11 +3523,26 @@ mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_encode(
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_gyro_scale_factor_uncertainty_load(const uint8_t *d,
+                                                   mip_filter_data_gyro_scale_factor_uncertainty_t *out) {
+    out->scale_factor_uncertainty[0] = mip_ld_f32(d + 0);
+    out->scale_factor_uncertainty[1] = mip_ld_f32(d + 4);
+    out->scale_factor_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
                                                      mip_filter_data_gyro_scale_factor_uncertainty_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gyro_scale_factor_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3325,11 +3672,26 @@ mip_status_t mip_filter_data_accel_scale_factor_uncertainty_encode(
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_accel_scale_factor_uncertainty_load(const uint8_t *d,
+                                                    mip_filter_data_accel_scale_factor_uncertainty_t *out) {
+    out->scale_factor_uncertainty[0] = mip_ld_f32(d + 0);
+    out->scale_factor_uncertainty[1] = mip_ld_f32(d + 4);
+    out->scale_factor_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_accel_scale_factor_uncertainty_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_accel_scale_factor_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3456,10 +3818,24 @@ mip_status_t mip_filter_data_compensated_accel_encode(const mip_filter_data_comp
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_compensated_accel_load(const uint8_t *d,
+                                                  mip_filter_data_compensated_accel_t *out) {
+    out->accel[0] = mip_ld_f32(d + 0);
+    out->accel[1] = mip_ld_f32(d + 4);
+    out->accel[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_compensated_accel_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_compensated_accel_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_compensated_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3611,10 +3987,26 @@ mip_status_t mip_filter_data_standard_atmosphere_encode(const mip_filter_data_st
     return st;
 }
 
+/* The layout is 22 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_standard_atmosphere_load(const uint8_t *d,
+                                                    mip_filter_data_standard_atmosphere_t *out) {
+    out->geometric_altitude = mip_ld_f32(d + 0);
+    out->geopotential_altitude = mip_ld_f32(d + 4);
+    out->temperature = mip_ld_f32(d + 8);
+    out->pressure = mip_ld_f32(d + 12);
+    out->density = mip_ld_f32(d + 16);
+    out->valid_flags = mip_ld_u16(d + 20);
+    return 0;
+}
+
 mip_status_t mip_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
                                                         mip_filter_data_standard_atmosphere_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 22 && mip_filter_data_standard_atmosphere_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_standard_atmosphere_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3758,10 +4150,22 @@ mip_status_t mip_filter_data_pressure_altitude_encode(const mip_filter_data_pres
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_pressure_altitude_load(const uint8_t *d,
+                                                  mip_filter_data_pressure_altitude_t *out) {
+    out->pressure_altitude = mip_ld_f32(d + 0);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_pressure_altitude_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_filter_data_pressure_altitude_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_pressure_altitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3861,11 +4265,25 @@ mip_filter_data_mag_auto_hard_iron_offset_encode(const mip_filter_data_mag_auto_
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_mag_auto_hard_iron_offset_load(const uint8_t *d,
+                                                          mip_filter_data_mag_auto_hard_iron_offset_t *out) {
+    out->hard_iron_offset[0] = mip_ld_f32(d + 0);
+    out->hard_iron_offset[1] = mip_ld_f32(d + 4);
+    out->hard_iron_offset[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_mag_auto_hard_iron_offset_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_hard_iron_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3995,11 +4413,31 @@ mip_filter_data_mag_auto_soft_iron_matrix_encode(const mip_filter_data_mag_auto_
     return st;
 }
 
+/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_mag_auto_soft_iron_matrix_load(const uint8_t *d,
+                                                          mip_filter_data_mag_auto_soft_iron_matrix_t *out) {
+    out->soft_iron_matrix[0] = mip_ld_f32(d + 0);
+    out->soft_iron_matrix[1] = mip_ld_f32(d + 4);
+    out->soft_iron_matrix[2] = mip_ld_f32(d + 8);
+    out->soft_iron_matrix[3] = mip_ld_f32(d + 12);
+    out->soft_iron_matrix[4] = mip_ld_f32(d + 16);
+    out->soft_iron_matrix[5] = mip_ld_f32(d + 20);
+    out->soft_iron_matrix[6] = mip_ld_f32(d + 24);
+    out->soft_iron_matrix[7] = mip_ld_f32(d + 28);
+    out->soft_iron_matrix[8] = mip_ld_f32(d + 32);
+    out->valid_flags = mip_ld_u16(d + 36);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_mag_auto_soft_iron_matrix_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_soft_iron_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4128,10 +4566,24 @@ mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(
+    const uint8_t *d, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out) {
+    out->hard_iron_offset_uncertainty[0] = mip_ld_f32(d + 0);
+    out->hard_iron_offset_uncertainty[1] = mip_ld_f32(d + 4);
+    out->hard_iron_offset_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4260,10 +4712,30 @@ mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
     return st;
 }
 
+/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(
+    const uint8_t *d, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out) {
+    out->soft_iron_matrix_uncertainty[0] = mip_ld_f32(d + 0);
+    out->soft_iron_matrix_uncertainty[1] = mip_ld_f32(d + 4);
+    out->soft_iron_matrix_uncertainty[2] = mip_ld_f32(d + 8);
+    out->soft_iron_matrix_uncertainty[3] = mip_ld_f32(d + 12);
+    out->soft_iron_matrix_uncertainty[4] = mip_ld_f32(d + 16);
+    out->soft_iron_matrix_uncertainty[5] = mip_ld_f32(d + 20);
+    out->soft_iron_matrix_uncertainty[6] = mip_ld_f32(d + 24);
+    out->soft_iron_matrix_uncertainty[7] = mip_ld_f32(d + 28);
+    out->soft_iron_matrix_uncertainty[8] = mip_ld_f32(d + 32);
+    out->valid_flags = mip_ld_u16(d + 36);
+    return 0;
+}
+
 mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4393,11 +4865,26 @@ mip_status_t mip_filter_data_gnss_antenna_offset_correction_encode(
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_gnss_antenna_offset_correction_load(const uint8_t *d,
+                                                    mip_filter_data_gnss_antenna_offset_correction_t *out) {
+    out->offset[0] = mip_ld_f32(d + 0);
+    out->offset[1] = mip_ld_f32(d + 4);
+    out->offset[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_gnss_antenna_offset_correction_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4526,10 +5013,24 @@ mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(
+    const uint8_t *d, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out) {
+    out->offset_uncertainty[0] = mip_ld_f32(d + 0);
+    out->offset_uncertainty[1] = mip_ld_f32(d + 4);
+    out->offset_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4667,11 +5168,27 @@ mip_status_t mip_filter_data_multi_antenna_offset_correction_encode(
     return st;
 }
 
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_multi_antenna_offset_correction_load(const uint8_t *d,
+                                                     mip_filter_data_multi_antenna_offset_correction_t *out) {
+    out->receiver_id = mip_ld_u8(d + 0);
+    out->offset[0] = mip_ld_f32(d + 1);
+    out->offset[1] = mip_ld_f32(d + 5);
+    out->offset[2] = mip_ld_f32(d + 9);
+    out->valid_flags = mip_ld_u16(d + 13);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_multi_antenna_offset_correction_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_multi_antenna_offset_correction_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 15 && mip_filter_data_multi_antenna_offset_correction_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_multi_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4821,10 +5338,25 @@ mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_encode(
     return st;
 }
 
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_multi_antenna_offset_correction_uncertainty_load(
+    const uint8_t *d, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out) {
+    out->receiver_id = mip_ld_u8(d + 0);
+    out->offset_uncertainty[0] = mip_ld_f32(d + 1);
+    out->offset_uncertainty[1] = mip_ld_f32(d + 5);
+    out->offset_uncertainty[2] = mip_ld_f32(d + 9);
+    out->valid_flags = mip_ld_u16(d + 13);
+    return 0;
+}
+
 mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 15 && mip_filter_data_multi_antenna_offset_correction_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_multi_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE
@@ -4968,11 +5500,25 @@ mip_filter_data_ecef_position_uncertainty_encode(const mip_filter_data_ecef_posi
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ecef_position_uncertainty_load(const uint8_t *d,
+                                                          mip_filter_data_ecef_position_uncertainty_t *out) {
+    out->position_uncertainty[0] = mip_ld_f32(d + 0);
+    out->position_uncertainty[1] = mip_ld_f32(d + 4);
+    out->position_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ecef_position_uncertainty_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_ecef_position_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5102,11 +5648,25 @@ mip_filter_data_ecef_velocity_uncertainty_encode(const mip_filter_data_ecef_velo
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ecef_velocity_uncertainty_load(const uint8_t *d,
+                                                          mip_filter_data_ecef_velocity_uncertainty_t *out) {
+    out->velocity_uncertainty[0] = mip_ld_f32(d + 0);
+    out->velocity_uncertainty[1] = mip_ld_f32(d + 4);
+    out->velocity_uncertainty[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ecef_velocity_uncertainty_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_ecef_velocity_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5233,10 +5793,23 @@ mip_status_t mip_filter_data_ecef_position_encode(const mip_filter_data_ecef_pos
     return st;
 }
 
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ecef_position_load(const uint8_t *d, mip_filter_data_ecef_position_t *out) {
+    out->position[0] = mip_ld_f64(d + 0);
+    out->position[1] = mip_ld_f64(d + 8);
+    out->position[2] = mip_ld_f64(d + 16);
+    out->valid_flags = mip_ld_u16(d + 24);
+    return 0;
+}
+
 mip_status_t mip_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_ecef_position_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 26 && mip_filter_data_ecef_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5361,10 +5934,23 @@ mip_status_t mip_filter_data_ecef_velocity_encode(const mip_filter_data_ecef_vel
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ecef_velocity_load(const uint8_t *d, mip_filter_data_ecef_velocity_t *out) {
+    out->velocity[0] = mip_ld_f32(d + 0);
+    out->velocity[1] = mip_ld_f32(d + 4);
+    out->velocity[2] = mip_ld_f32(d + 8);
+    out->valid_flags = mip_ld_u16(d + 12);
+    return 0;
+}
+
 mip_status_t mip_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_ecef_velocity_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_filter_data_ecef_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5492,10 +6078,24 @@ mip_filter_data_ned_relative_position_encode(const mip_filter_data_ned_relative_
     return st;
 }
 
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_ned_relative_position_load(const uint8_t *d,
+                                                      mip_filter_data_ned_relative_position_t *out) {
+    out->relative_position[0] = mip_ld_f64(d + 0);
+    out->relative_position[1] = mip_ld_f64(d + 8);
+    out->relative_position[2] = mip_ld_f64(d + 16);
+    out->valid_flags = mip_ld_u16(d + 24);
+    return 0;
+}
+
 mip_status_t mip_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
                                                           mip_filter_data_ned_relative_position_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 26 && mip_filter_data_ned_relative_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_relative_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5642,11 +6242,33 @@ mip_filter_data_gnss_position_aiding_status_encode(const mip_filter_data_gnss_po
     return st;
 }
 
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_gnss_position_aiding_status_load(const uint8_t *d,
+                                                 mip_filter_data_gnss_position_aiding_status_t *out) {
+    out->receiver_id = mip_ld_u8(d + 0);
+    out->time_of_week = mip_ld_f32(d + 1);
+    out->status = mip_ld_u16(d + 5);
+    out->reserved[0] = mip_ld_u8(d + 7);
+    out->reserved[1] = mip_ld_u8(d + 8);
+    out->reserved[2] = mip_ld_u8(d + 9);
+    out->reserved[3] = mip_ld_u8(d + 10);
+    out->reserved[4] = mip_ld_u8(d + 11);
+    out->reserved[5] = mip_ld_u8(d + 12);
+    out->reserved[6] = mip_ld_u8(d + 13);
+    out->reserved[7] = mip_ld_u8(d + 14);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_gnss_position_aiding_status_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 15 && mip_filter_data_gnss_position_aiding_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_position_aiding_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5812,11 +6434,26 @@ mip_filter_data_aiding_measurement_summary_encode(const mip_filter_data_aiding_m
     return st;
 }
 
+/* The layout is 7 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_aiding_measurement_summary_load(const uint8_t *d,
+                                                mip_filter_data_aiding_measurement_summary_t *out) {
+    out->time_of_week = mip_ld_f32(d + 0);
+    out->source = mip_ld_u8(d + 4);
+    out->type = mip_ld_u8(d + 5);
+    out->indicator = mip_ld_u8(d + 6);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_aiding_measurement_summary_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 7 && mip_filter_data_aiding_measurement_summary_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_measurement_summary_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5937,11 +6574,24 @@ mip_filter_data_odometer_scale_factor_error_encode(const mip_filter_data_odomete
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_filter_data_odometer_scale_factor_error_load(const uint8_t *d,
+                                                 mip_filter_data_odometer_scale_factor_error_t *out) {
+    out->scale_factor_error = mip_ld_f32(d + 0);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_odometer_scale_factor_error_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_filter_data_odometer_scale_factor_error_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_odometer_scale_factor_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6034,10 +6684,22 @@ mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_encode(
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_odometer_scale_factor_error_uncertainty_load(
+    const uint8_t *d, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out) {
+    out->scale_factor_error_uncertainty = mip_ld_f32(d + 0);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_filter_data_odometer_scale_factor_error_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_odometer_scale_factor_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6163,10 +6825,26 @@ mip_filter_data_gnss_dual_antenna_status_encode(const mip_filter_data_gnss_dual_
     return st;
 }
 
+/* The layout is 17 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_gnss_dual_antenna_status_load(const uint8_t *d,
+                                                         mip_filter_data_gnss_dual_antenna_status_t *out) {
+    out->time_of_week = mip_ld_f32(d + 0);
+    out->heading = mip_ld_f32(d + 4);
+    out->heading_uncertainty = mip_ld_f32(d + 8);
+    out->fix_type = mip_ld_u8(d + 12);
+    out->status_flags = mip_ld_u16(d + 13);
+    out->valid_flags = mip_ld_u16(d + 15);
+    return 0;
+}
+
 mip_status_t mip_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_gnss_dual_antenna_status_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 17 && mip_filter_data_gnss_dual_antenna_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_dual_antenna_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6333,11 +7011,29 @@ mip_filter_data_aiding_frame_config_error_encode(const mip_filter_data_aiding_fr
     return st;
 }
 
+/* The layout is 29 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_aiding_frame_config_error_load(const uint8_t *d,
+                                                          mip_filter_data_aiding_frame_config_error_t *out) {
+    out->frame_id = mip_ld_u8(d + 0);
+    out->translation[0] = mip_ld_f32(d + 1);
+    out->translation[1] = mip_ld_f32(d + 5);
+    out->translation[2] = mip_ld_f32(d + 9);
+    out->attitude[0] = mip_ld_f32(d + 13);
+    out->attitude[1] = mip_ld_f32(d + 17);
+    out->attitude[2] = mip_ld_f32(d + 21);
+    out->attitude[3] = mip_ld_f32(d + 25);
+    return 0;
+}
+
 mip_status_t
 mip_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_aiding_frame_config_error_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 29 && mip_filter_data_aiding_frame_config_error_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_frame_config_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6517,10 +7213,27 @@ mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_encode(
     return st;
 }
 
+/* The layout is 25 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_filter_data_aiding_frame_config_error_uncertainty_load(
+    const uint8_t *d, mip_filter_data_aiding_frame_config_error_uncertainty_t *out) {
+    out->frame_id = mip_ld_u8(d + 0);
+    out->translation_uncertainty[0] = mip_ld_f32(d + 1);
+    out->translation_uncertainty[1] = mip_ld_f32(d + 5);
+    out->translation_uncertainty[2] = mip_ld_f32(d + 9);
+    out->attitude_uncertainty[0] = mip_ld_f32(d + 13);
+    out->attitude_uncertainty[1] = mip_ld_f32(d + 17);
+    out->attitude_uncertainty[2] = mip_ld_f32(d + 21);
+    return 0;
+}
+
 mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 25 && mip_filter_data_aiding_frame_config_error_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_frame_config_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -543,10 +543,28 @@ mip_gnss_signal_configuration_response_encode(const mip_gnss_signal_configuratio
     return st;
 }
 
+/* The layout is 8 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_signal_configuration_response_load(const uint8_t *d,
+                                                       mip_gnss_signal_configuration_response_t *out) {
+    out->gps_enable = mip_ld_u8(d + 0);
+    out->glonass_enable = mip_ld_u8(d + 1);
+    out->galileo_enable = mip_ld_u8(d + 2);
+    out->beidou_enable = mip_ld_u8(d + 3);
+    out->reserved[0] = mip_ld_u8(d + 4);
+    out->reserved[1] = mip_ld_u8(d + 5);
+    out->reserved[2] = mip_ld_u8(d + 6);
+    out->reserved[3] = mip_ld_u8(d + 7);
+    return 0;
+}
+
 mip_status_t mip_gnss_signal_configuration_response_decode(const uint8_t *data, size_t len,
                                                            mip_gnss_signal_configuration_response_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 8 && mip_gnss_signal_configuration_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_signal_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

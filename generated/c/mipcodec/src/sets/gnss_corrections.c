@@ -95,10 +95,29 @@ mip_gnss_corrections_base_station_info_encode(const mip_gnss_corrections_base_st
     return st;
 }
 
+/* The layout is 44 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_corrections_base_station_info_load(const uint8_t *d,
+                                                       mip_gnss_corrections_base_station_info_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->ecef_position[0] = mip_ld_f64(d + 10);
+    out->ecef_position[1] = mip_ld_f64(d + 18);
+    out->ecef_position[2] = mip_ld_f64(d + 26);
+    out->height = mip_ld_f32(d + 34);
+    out->station_id = mip_ld_u16(d + 38);
+    out->indicators = mip_ld_u16(d + 40);
+    out->valid_flags = mip_ld_u16(d + 42);
+    return 0;
+}
+
 mip_status_t mip_gnss_corrections_base_station_info_decode(const uint8_t *data, size_t len,
                                                            mip_gnss_corrections_base_station_info_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 44 && mip_gnss_corrections_base_station_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_corrections_base_station_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -359,11 +378,35 @@ mip_gnss_corrections_rtk_corrections_status_encode(const mip_gnss_corrections_rt
     return st;
 }
 
+/* The layout is 50 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_gnss_corrections_rtk_corrections_status_load(const uint8_t *d,
+                                                 mip_gnss_corrections_rtk_corrections_status_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->epoch_status = mip_ld_u16(d + 10);
+    out->dongle_status = mip_ld_u32(d + 12);
+    out->gps_correction_latency = mip_ld_f32(d + 16);
+    out->glonass_correction_latency = mip_ld_f32(d + 20);
+    out->galileo_correction_latency = mip_ld_f32(d + 24);
+    out->beidou_correction_latency = mip_ld_f32(d + 28);
+    out->reserved[0] = mip_ld_u32(d + 32);
+    out->reserved[1] = mip_ld_u32(d + 36);
+    out->reserved[2] = mip_ld_u32(d + 40);
+    out->reserved[3] = mip_ld_u32(d + 44);
+    out->valid_flags = mip_ld_u16(d + 48);
+    return 0;
+}
+
 mip_status_t
 mip_gnss_corrections_rtk_corrections_status_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_corrections_rtk_corrections_status_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 50 && mip_gnss_corrections_rtk_corrections_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_corrections_rtk_corrections_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -85,9 +85,25 @@ mip_status_t mip_gnss_data_llh_position_encode(const mip_gnss_data_llh_position_
     return st;
 }
 
+/* The layout is 42 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_llh_position_load(const uint8_t *d, mip_gnss_data_llh_position_t *out) {
+    out->latitude = mip_ld_f64(d + 0);
+    out->longitude = mip_ld_f64(d + 8);
+    out->ellipsoid_height = mip_ld_f64(d + 16);
+    out->msl_height = mip_ld_f64(d + 24);
+    out->horizontal_accuracy = mip_ld_f32(d + 32);
+    out->vertical_accuracy = mip_ld_f32(d + 36);
+    out->valid_flags = mip_ld_u16(d + 40);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_llh_position_decode(const uint8_t *data, size_t len,
                                                mip_gnss_data_llh_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 42 && mip_gnss_data_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -258,9 +274,23 @@ mip_status_t mip_gnss_data_ecef_position_encode(const mip_gnss_data_ecef_positio
     return st;
 }
 
+/* The layout is 30 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_ecef_position_load(const uint8_t *d, mip_gnss_data_ecef_position_t *out) {
+    out->position[0] = mip_ld_f64(d + 0);
+    out->position[1] = mip_ld_f64(d + 8);
+    out->position[2] = mip_ld_f64(d + 16);
+    out->position_accuracy = mip_ld_f32(d + 24);
+    out->valid_flags = mip_ld_u16(d + 28);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_ecef_position_decode(const uint8_t *data, size_t len,
                                                 mip_gnss_data_ecef_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 30 && mip_gnss_data_ecef_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -438,9 +468,27 @@ mip_status_t mip_gnss_data_ned_velocity_encode(const mip_gnss_data_ned_velocity_
     return st;
 }
 
+/* The layout is 34 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_ned_velocity_load(const uint8_t *d, mip_gnss_data_ned_velocity_t *out) {
+    out->velocity[0] = mip_ld_f32(d + 0);
+    out->velocity[1] = mip_ld_f32(d + 4);
+    out->velocity[2] = mip_ld_f32(d + 8);
+    out->speed = mip_ld_f32(d + 12);
+    out->ground_speed = mip_ld_f32(d + 16);
+    out->heading = mip_ld_f32(d + 20);
+    out->speed_accuracy = mip_ld_f32(d + 24);
+    out->heading_accuracy = mip_ld_f32(d + 28);
+    out->valid_flags = mip_ld_u16(d + 32);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_ned_velocity_decode(const uint8_t *data, size_t len,
                                                mip_gnss_data_ned_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 34 && mip_gnss_data_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -639,9 +687,23 @@ mip_status_t mip_gnss_data_ecef_velocity_encode(const mip_gnss_data_ecef_velocit
     return st;
 }
 
+/* The layout is 18 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_ecef_velocity_load(const uint8_t *d, mip_gnss_data_ecef_velocity_t *out) {
+    out->velocity[0] = mip_ld_f32(d + 0);
+    out->velocity[1] = mip_ld_f32(d + 4);
+    out->velocity[2] = mip_ld_f32(d + 8);
+    out->velocity_accuracy = mip_ld_f32(d + 12);
+    out->valid_flags = mip_ld_u16(d + 16);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_ecef_velocity_decode(const uint8_t *data, size_t len,
                                                 mip_gnss_data_ecef_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 18 && mip_gnss_data_ecef_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -819,9 +881,26 @@ mip_status_t mip_gnss_data_dop_encode(const mip_gnss_data_dop_t *value, uint8_t 
     return st;
 }
 
+/* The layout is 30 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_dop_load(const uint8_t *d, mip_gnss_data_dop_t *out) {
+    out->gdop = mip_ld_f32(d + 0);
+    out->pdop = mip_ld_f32(d + 4);
+    out->hdop = mip_ld_f32(d + 8);
+    out->vdop = mip_ld_f32(d + 12);
+    out->tdop = mip_ld_f32(d + 16);
+    out->ndop = mip_ld_f32(d + 20);
+    out->edop = mip_ld_f32(d + 24);
+    out->valid_flags = mip_ld_u16(d + 28);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_dop_decode(const uint8_t *data, size_t len, mip_gnss_data_dop_t *out,
                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 30 && mip_gnss_data_dop_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dop_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1035,9 +1114,26 @@ mip_status_t mip_gnss_data_utc_time_encode(const mip_gnss_data_utc_time_t *value
     return st;
 }
 
+/* The layout is 13 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_utc_time_load(const uint8_t *d, mip_gnss_data_utc_time_t *out) {
+    out->year = mip_ld_u16(d + 0);
+    out->month = mip_ld_u8(d + 2);
+    out->day = mip_ld_u8(d + 3);
+    out->hour = mip_ld_u8(d + 4);
+    out->minute = mip_ld_u8(d + 5);
+    out->second = mip_ld_u8(d + 6);
+    out->millisecond = mip_ld_u32(d + 7);
+    out->valid_flags = mip_ld_u16(d + 11);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_utc_time_decode(const uint8_t *data, size_t len, mip_gnss_data_utc_time_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 13 && mip_gnss_data_utc_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1212,9 +1308,21 @@ mip_status_t mip_gnss_data_gps_time_encode(const mip_gnss_data_gps_time_t *value
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_gps_time_load(const uint8_t *d, mip_gnss_data_gps_time_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_gps_time_decode(const uint8_t *data, size_t len, mip_gnss_data_gps_time_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_gnss_data_gps_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_gps_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1331,9 +1439,22 @@ mip_status_t mip_gnss_data_clock_info_encode(const mip_gnss_data_clock_info_t *v
     return st;
 }
 
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_clock_info_load(const uint8_t *d, mip_gnss_data_clock_info_t *out) {
+    out->bias = mip_ld_f64(d + 0);
+    out->drift = mip_ld_f64(d + 8);
+    out->accuracy_estimate = mip_ld_f64(d + 16);
+    out->valid_flags = mip_ld_u16(d + 24);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_clock_info_decode(const uint8_t *data, size_t len, mip_gnss_data_clock_info_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 26 && mip_gnss_data_clock_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_clock_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1463,9 +1584,22 @@ mip_status_t mip_gnss_data_fix_info_encode(const mip_gnss_data_fix_info_t *value
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_fix_info_load(const uint8_t *d, mip_gnss_data_fix_info_t *out) {
+    out->fix_type = mip_ld_u8(d + 0);
+    out->num_sv = mip_ld_u8(d + 1);
+    out->fix_flags = mip_ld_u16(d + 2);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_fix_info_decode(const uint8_t *data, size_t len, mip_gnss_data_fix_info_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_gnss_data_fix_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1619,9 +1753,25 @@ mip_status_t mip_gnss_data_sv_info_encode(const mip_gnss_data_sv_info_t *value, 
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_sv_info_load(const uint8_t *d, mip_gnss_data_sv_info_t *out) {
+    out->channel = mip_ld_u8(d + 0);
+    out->sv_id = mip_ld_u8(d + 1);
+    out->carrier_to_noise_ratio = mip_ld_u16(d + 2);
+    out->azimuth = mip_ld_s16(d + 4);
+    out->elevation = mip_ld_s16(d + 6);
+    out->sv_flags = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_sv_info_decode(const uint8_t *data, size_t len, mip_gnss_data_sv_info_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_gnss_data_sv_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_sv_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1792,10 +1942,23 @@ mip_status_t mip_gnss_data_hardware_status_encode(const mip_gnss_data_hardware_s
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_hardware_status_load(const uint8_t *d, mip_gnss_data_hardware_status_t *out) {
+    out->receiver_state = mip_ld_u8(d + 0);
+    out->antenna_state = mip_ld_u8(d + 1);
+    out->antenna_power = mip_ld_u8(d + 2);
+    out->valid_flags = mip_ld_u16(d + 3);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_hardware_status_decode(const uint8_t *data, size_t len,
                                                   mip_gnss_data_hardware_status_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_gnss_data_hardware_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_hardware_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1933,9 +2096,23 @@ mip_status_t mip_gnss_data_dgnss_info_encode(const mip_gnss_data_dgnss_info_t *v
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_dgnss_info_load(const uint8_t *d, mip_gnss_data_dgnss_info_t *out) {
+    out->newest_age = mip_ld_f32(d + 0);
+    out->base_station_id = mip_ld_s16(d + 4);
+    out->base_station_status = mip_ld_s16(d + 6);
+    out->num_channels = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_dgnss_info_decode(const uint8_t *data, size_t len, mip_gnss_data_dgnss_info_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_gnss_data_dgnss_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dgnss_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2089,10 +2266,25 @@ mip_status_t mip_gnss_data_dgnss_channel_status_encode(const mip_gnss_data_dgnss
     return st;
 }
 
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_data_dgnss_channel_status_load(const uint8_t *d,
+                                                   mip_gnss_data_dgnss_channel_status_t *out) {
+    out->sv_id = mip_ld_u8(d + 0);
+    out->age = mip_ld_f32(d + 1);
+    out->pseudorange_correction = mip_ld_f32(d + 5);
+    out->pseudorange_rate_correction = mip_ld_f32(d + 9);
+    out->valid_flags = mip_ld_u16(d + 13);
+    return 0;
+}
+
 mip_status_t mip_gnss_data_dgnss_channel_status_decode(const uint8_t *data, size_t len,
                                                        mip_gnss_data_dgnss_channel_status_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 15 && mip_gnss_data_dgnss_channel_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dgnss_channel_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

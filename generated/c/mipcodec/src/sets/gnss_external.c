@@ -85,10 +85,26 @@ mip_status_t mip_gnss_external_llh_position_encode(const mip_gnss_external_llh_p
     return st;
 }
 
+/* The layout is 42 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_external_llh_position_load(const uint8_t *d, mip_gnss_external_llh_position_t *out) {
+    out->latitude = mip_ld_f64(d + 0);
+    out->longitude = mip_ld_f64(d + 8);
+    out->ellipsoid_height = mip_ld_f64(d + 16);
+    out->msl_height = mip_ld_f64(d + 24);
+    out->horizontal_accuracy = mip_ld_f32(d + 32);
+    out->vertical_accuracy = mip_ld_f32(d + 36);
+    out->valid_flags = mip_ld_u16(d + 40);
+    return 0;
+}
+
 mip_status_t mip_gnss_external_llh_position_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_external_llh_position_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 42 && mip_gnss_external_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -292,10 +308,28 @@ mip_status_t mip_gnss_external_ned_velocity_encode(const mip_gnss_external_ned_v
     return st;
 }
 
+/* The layout is 34 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_external_ned_velocity_load(const uint8_t *d, mip_gnss_external_ned_velocity_t *out) {
+    out->velocity[0] = mip_ld_f32(d + 0);
+    out->velocity[1] = mip_ld_f32(d + 4);
+    out->velocity[2] = mip_ld_f32(d + 8);
+    out->speed = mip_ld_f32(d + 12);
+    out->ground_speed = mip_ld_f32(d + 16);
+    out->heading = mip_ld_f32(d + 20);
+    out->speed_accuracy = mip_ld_f32(d + 24);
+    out->heading_accuracy = mip_ld_f32(d + 28);
+    out->valid_flags = mip_ld_u16(d + 32);
+    return 0;
+}
+
 mip_status_t mip_gnss_external_ned_velocity_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_external_ned_velocity_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 34 && mip_gnss_external_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -528,9 +562,26 @@ mip_status_t mip_gnss_external_utc_time_encode(const mip_gnss_external_utc_time_
     return st;
 }
 
+/* The layout is 13 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_external_utc_time_load(const uint8_t *d, mip_gnss_external_utc_time_t *out) {
+    out->year = mip_ld_u16(d + 0);
+    out->month = mip_ld_u8(d + 2);
+    out->day = mip_ld_u8(d + 3);
+    out->hour = mip_ld_u8(d + 4);
+    out->minute = mip_ld_u8(d + 5);
+    out->second = mip_ld_u8(d + 6);
+    out->millisecond = mip_ld_u32(d + 7);
+    out->valid_flags = mip_ld_u16(d + 11);
+    return 0;
+}
+
 mip_status_t mip_gnss_external_utc_time_decode(const uint8_t *data, size_t len,
                                                mip_gnss_external_utc_time_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 13 && mip_gnss_external_utc_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -714,9 +765,22 @@ mip_status_t mip_gnss_external_fix_info_encode(const mip_gnss_external_fix_info_
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_external_fix_info_load(const uint8_t *d, mip_gnss_external_fix_info_t *out) {
+    out->fix_type = mip_ld_u8(d + 0);
+    out->num_sv = mip_ld_u8(d + 1);
+    out->fix_flags = mip_ld_u16(d + 2);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_gnss_external_fix_info_decode(const uint8_t *data, size_t len,
                                                mip_gnss_external_fix_info_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_gnss_external_fix_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -896,10 +960,33 @@ mip_status_t mip_gnss_external_satellite_status_encode(const mip_gnss_external_s
     return st;
 }
 
+/* The layout is 25 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_external_satellite_status_load(const uint8_t *d,
+                                                   mip_gnss_external_satellite_status_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->gnss_id = mip_ld_u8(d + 12);
+    out->satellite_id = mip_ld_u8(d + 13);
+    out->elevation = mip_ld_f32(d + 14);
+    out->azimuth = mip_ld_f32(d + 18);
+    if (d[22] > 1) {
+        return -1;
+    }
+    out->health = mip_ld_bool(d + 22);
+    out->valid_flags = mip_ld_u16(d + 23);
+    return 0;
+}
+
 mip_status_t mip_gnss_external_satellite_status_decode(const uint8_t *data, size_t len,
                                                        mip_gnss_external_satellite_status_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 25 && mip_gnss_external_satellite_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_satellite_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

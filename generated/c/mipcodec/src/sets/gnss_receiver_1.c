@@ -85,10 +85,26 @@ mip_status_t mip_gnss_receiver_1_llh_position_encode(const mip_gnss_receiver_1_l
     return st;
 }
 
+/* The layout is 42 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_llh_position_load(const uint8_t *d, mip_gnss_receiver_1_llh_position_t *out) {
+    out->latitude = mip_ld_f64(d + 0);
+    out->longitude = mip_ld_f64(d + 8);
+    out->ellipsoid_height = mip_ld_f64(d + 16);
+    out->msl_height = mip_ld_f64(d + 24);
+    out->horizontal_accuracy = mip_ld_f32(d + 32);
+    out->vertical_accuracy = mip_ld_f32(d + 36);
+    out->valid_flags = mip_ld_u16(d + 40);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_llh_position_decode(const uint8_t *data, size_t len,
                                                      mip_gnss_receiver_1_llh_position_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 42 && mip_gnss_receiver_1_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -260,10 +276,25 @@ mip_status_t mip_gnss_receiver_1_ecef_position_encode(const mip_gnss_receiver_1_
     return st;
 }
 
+/* The layout is 30 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_ecef_position_load(const uint8_t *d,
+                                                  mip_gnss_receiver_1_ecef_position_t *out) {
+    out->position[0] = mip_ld_f64(d + 0);
+    out->position[1] = mip_ld_f64(d + 8);
+    out->position[2] = mip_ld_f64(d + 16);
+    out->position_accuracy = mip_ld_f32(d + 24);
+    out->valid_flags = mip_ld_u16(d + 28);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_ecef_position_decode(const uint8_t *data, size_t len,
                                                       mip_gnss_receiver_1_ecef_position_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 30 && mip_gnss_receiver_1_ecef_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -442,10 +473,28 @@ mip_status_t mip_gnss_receiver_1_ned_velocity_encode(const mip_gnss_receiver_1_n
     return st;
 }
 
+/* The layout is 34 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_ned_velocity_load(const uint8_t *d, mip_gnss_receiver_1_ned_velocity_t *out) {
+    out->velocity[0] = mip_ld_f32(d + 0);
+    out->velocity[1] = mip_ld_f32(d + 4);
+    out->velocity[2] = mip_ld_f32(d + 8);
+    out->speed = mip_ld_f32(d + 12);
+    out->ground_speed = mip_ld_f32(d + 16);
+    out->heading = mip_ld_f32(d + 20);
+    out->speed_accuracy = mip_ld_f32(d + 24);
+    out->heading_accuracy = mip_ld_f32(d + 28);
+    out->valid_flags = mip_ld_u16(d + 32);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_ned_velocity_decode(const uint8_t *data, size_t len,
                                                      mip_gnss_receiver_1_ned_velocity_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 34 && mip_gnss_receiver_1_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -645,10 +694,25 @@ mip_status_t mip_gnss_receiver_1_ecef_velocity_encode(const mip_gnss_receiver_1_
     return st;
 }
 
+/* The layout is 18 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_ecef_velocity_load(const uint8_t *d,
+                                                  mip_gnss_receiver_1_ecef_velocity_t *out) {
+    out->velocity[0] = mip_ld_f32(d + 0);
+    out->velocity[1] = mip_ld_f32(d + 4);
+    out->velocity[2] = mip_ld_f32(d + 8);
+    out->velocity_accuracy = mip_ld_f32(d + 12);
+    out->valid_flags = mip_ld_u16(d + 16);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_ecef_velocity_decode(const uint8_t *data, size_t len,
                                                       mip_gnss_receiver_1_ecef_velocity_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 18 && mip_gnss_receiver_1_ecef_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -827,9 +891,26 @@ mip_status_t mip_gnss_receiver_1_dop_encode(const mip_gnss_receiver_1_dop_t *val
     return st;
 }
 
+/* The layout is 30 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_dop_load(const uint8_t *d, mip_gnss_receiver_1_dop_t *out) {
+    out->gdop = mip_ld_f32(d + 0);
+    out->pdop = mip_ld_f32(d + 4);
+    out->hdop = mip_ld_f32(d + 8);
+    out->vdop = mip_ld_f32(d + 12);
+    out->tdop = mip_ld_f32(d + 16);
+    out->ndop = mip_ld_f32(d + 20);
+    out->edop = mip_ld_f32(d + 24);
+    out->valid_flags = mip_ld_u16(d + 28);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_dop_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_dop_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 30 && mip_gnss_receiver_1_dop_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_dop_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1044,10 +1125,27 @@ mip_status_t mip_gnss_receiver_1_utc_time_encode(const mip_gnss_receiver_1_utc_t
     return st;
 }
 
+/* The layout is 13 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_utc_time_load(const uint8_t *d, mip_gnss_receiver_1_utc_time_t *out) {
+    out->year = mip_ld_u16(d + 0);
+    out->month = mip_ld_u8(d + 2);
+    out->day = mip_ld_u8(d + 3);
+    out->hour = mip_ld_u8(d + 4);
+    out->minute = mip_ld_u8(d + 5);
+    out->second = mip_ld_u8(d + 6);
+    out->millisecond = mip_ld_u32(d + 7);
+    out->valid_flags = mip_ld_u16(d + 11);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_utc_time_decode(const uint8_t *data, size_t len,
                                                  mip_gnss_receiver_1_utc_time_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 13 && mip_gnss_receiver_1_utc_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1223,10 +1321,22 @@ mip_status_t mip_gnss_receiver_1_gps_time_encode(const mip_gnss_receiver_1_gps_t
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_gps_time_load(const uint8_t *d, mip_gnss_receiver_1_gps_time_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_gps_time_decode(const uint8_t *data, size_t len,
                                                  mip_gnss_receiver_1_gps_time_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_gnss_receiver_1_gps_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1344,10 +1454,23 @@ mip_status_t mip_gnss_receiver_1_fix_info_encode(const mip_gnss_receiver_1_fix_i
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_fix_info_load(const uint8_t *d, mip_gnss_receiver_1_fix_info_t *out) {
+    out->fix_type = mip_ld_u8(d + 0);
+    out->num_sv = mip_ld_u8(d + 1);
+    out->fix_flags = mip_ld_u16(d + 2);
+    out->valid_flags = mip_ld_u16(d + 4);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_fix_info_decode(const uint8_t *data, size_t len,
                                                  mip_gnss_receiver_1_fix_info_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_gnss_receiver_1_fix_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1479,10 +1602,24 @@ mip_status_t mip_gnss_receiver_1_hardware_status_encode(const mip_gnss_receiver_
     return st;
 }
 
+/* The layout is 5 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_hardware_status_load(const uint8_t *d,
+                                                    mip_gnss_receiver_1_hardware_status_t *out) {
+    out->receiver_state = mip_ld_u8(d + 0);
+    out->antenna_state = mip_ld_u8(d + 1);
+    out->antenna_power = mip_ld_u8(d + 2);
+    out->valid_flags = mip_ld_u16(d + 3);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_hardware_status_decode(const uint8_t *data, size_t len,
                                                         mip_gnss_receiver_1_hardware_status_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 5 && mip_gnss_receiver_1_hardware_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_hardware_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1623,10 +1760,24 @@ mip_status_t mip_gnss_receiver_1_clock_info_2_encode(const mip_gnss_receiver_1_c
     return st;
 }
 
+/* The layout is 34 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_clock_info_2_load(const uint8_t *d, mip_gnss_receiver_1_clock_info_2_t *out) {
+    out->bias = mip_ld_f64(d + 0);
+    out->drift = mip_ld_f64(d + 8);
+    out->bias_accuracy_estimate = mip_ld_f64(d + 16);
+    out->drift_accuracy_estimate = mip_ld_f64(d + 24);
+    out->valid_flags = mip_ld_u16(d + 32);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_clock_info_2_decode(const uint8_t *data, size_t len,
                                                      mip_gnss_receiver_1_clock_info_2_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 34 && mip_gnss_receiver_1_clock_info_2_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_clock_info_2_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1758,10 +1909,22 @@ mip_status_t mip_gnss_receiver_1_gps_leap_seconds_encode(const mip_gnss_receiver
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_gps_leap_seconds_load(const uint8_t *d,
+                                                     mip_gnss_receiver_1_gps_leap_seconds_t *out) {
+    out->leap_seconds = mip_ld_u8(d + 0);
+    out->valid_flags = mip_ld_u16(d + 1);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode(const uint8_t *data, size_t len,
                                                          mip_gnss_receiver_1_gps_leap_seconds_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_gnss_receiver_1_gps_leap_seconds_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_leap_seconds_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1892,10 +2055,26 @@ mip_status_t mip_gnss_receiver_1_sbas_info_encode(const mip_gnss_receiver_1_sbas
     return st;
 }
 
+/* The layout is 16 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_sbas_info_load(const uint8_t *d, mip_gnss_receiver_1_sbas_info_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->sbas_system = mip_ld_u8(d + 10);
+    out->sbas_id = mip_ld_u8(d + 11);
+    out->count = mip_ld_u8(d + 12);
+    out->sbas_status = mip_ld_u8(d + 13);
+    out->valid_flags = mip_ld_u16(d + 14);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_sbas_info_decode(const uint8_t *data, size_t len,
                                                   mip_gnss_receiver_1_sbas_info_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 16 && mip_gnss_receiver_1_sbas_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_sbas_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2116,10 +2295,33 @@ mip_status_t mip_gnss_receiver_1_satellite_status_encode(const mip_gnss_receiver
     return st;
 }
 
+/* The layout is 25 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_satellite_status_load(const uint8_t *d,
+                                                     mip_gnss_receiver_1_satellite_status_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->gnss_id = mip_ld_u8(d + 12);
+    out->satellite_id = mip_ld_u8(d + 13);
+    out->elevation = mip_ld_f32(d + 14);
+    out->azimuth = mip_ld_f32(d + 18);
+    if (d[22] > 1) {
+        return -1;
+    }
+    out->health = mip_ld_bool(d + 22);
+    out->valid_flags = mip_ld_u16(d + 23);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_satellite_status_decode(const uint8_t *data, size_t len,
                                                          mip_gnss_receiver_1_satellite_status_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 25 && mip_gnss_receiver_1_satellite_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_satellite_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2450,9 +2652,37 @@ mip_status_t mip_gnss_receiver_1_raw_encode(const mip_gnss_receiver_1_raw_t *val
     return st;
 }
 
+/* The layout is 61 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_raw_load(const uint8_t *d, mip_gnss_receiver_1_raw_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->receiver_id = mip_ld_u16(d + 12);
+    out->tracking_channel = mip_ld_u8(d + 14);
+    out->gnss_id = mip_ld_u8(d + 15);
+    out->satellite_id = mip_ld_u8(d + 16);
+    out->signal_id = mip_ld_u8(d + 17);
+    out->signal_strength = mip_ld_f32(d + 18);
+    out->quality = mip_ld_u8(d + 22);
+    out->pseudorange = mip_ld_f64(d + 23);
+    out->carrier_phase = mip_ld_f64(d + 31);
+    out->doppler = mip_ld_f32(d + 39);
+    out->range_uncert = mip_ld_f32(d + 43);
+    out->phase_uncert = mip_ld_f32(d + 47);
+    out->doppler_uncert = mip_ld_f32(d + 51);
+    out->lock_time = mip_ld_f32(d + 55);
+    out->valid_flags = mip_ld_u16(d + 59);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_raw_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_raw_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 61 && mip_gnss_receiver_1_raw_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_raw_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3024,10 +3254,54 @@ mip_status_t mip_gnss_receiver_1_gps_ephemeris_encode(const mip_gnss_receiver_1_
     return st;
 }
 
+/* The layout is 218 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_gps_ephemeris_load(const uint8_t *d,
+                                                  mip_gnss_receiver_1_gps_ephemeris_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->satellite_id = mip_ld_u8(d + 12);
+    out->health = mip_ld_u8(d + 13);
+    out->iodc = mip_ld_u8(d + 14);
+    out->iode = mip_ld_u8(d + 15);
+    out->t_oc = mip_ld_f64(d + 16);
+    out->af0 = mip_ld_f64(d + 24);
+    out->af1 = mip_ld_f64(d + 32);
+    out->af2 = mip_ld_f64(d + 40);
+    out->t_gd = mip_ld_f64(d + 48);
+    out->isc_l1ca = mip_ld_f64(d + 56);
+    out->isc_l2c = mip_ld_f64(d + 64);
+    out->t_oe = mip_ld_f64(d + 72);
+    out->a = mip_ld_f64(d + 80);
+    out->a_dot = mip_ld_f64(d + 88);
+    out->mean_anomaly = mip_ld_f64(d + 96);
+    out->delta_mean_motion = mip_ld_f64(d + 104);
+    out->delta_mean_motion_dot = mip_ld_f64(d + 112);
+    out->eccentricity = mip_ld_f64(d + 120);
+    out->argument_of_perigee = mip_ld_f64(d + 128);
+    out->omega = mip_ld_f64(d + 136);
+    out->omega_dot = mip_ld_f64(d + 144);
+    out->inclination = mip_ld_f64(d + 152);
+    out->inclination_dot = mip_ld_f64(d + 160);
+    out->c_ic = mip_ld_f64(d + 168);
+    out->c_is = mip_ld_f64(d + 176);
+    out->c_uc = mip_ld_f64(d + 184);
+    out->c_us = mip_ld_f64(d + 192);
+    out->c_rc = mip_ld_f64(d + 200);
+    out->c_rs = mip_ld_f64(d + 208);
+    out->valid_flags = mip_ld_u16(d + 216);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode(const uint8_t *data, size_t len,
                                                       mip_gnss_receiver_1_gps_ephemeris_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 218 && mip_gnss_receiver_1_gps_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3770,10 +4044,51 @@ mip_gnss_receiver_1_glonass_ephemeris_encode(const mip_gnss_receiver_1_glonass_e
     return st;
 }
 
+/* The layout is 102 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_glonass_ephemeris_load(const uint8_t *d,
+                                                      mip_gnss_receiver_1_glonass_ephemeris_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->satellite_id = mip_ld_u8(d + 12);
+    out->freq_number = mip_ld_s8(d + 13);
+    out->tk = mip_ld_u32(d + 14);
+    out->tb = mip_ld_u32(d + 18);
+    out->sat_type = mip_ld_u8(d + 22);
+    out->gamma = mip_ld_f64(d + 23);
+    out->tau_n = mip_ld_f64(d + 31);
+    out->x[0] = mip_ld_f64(d + 39);
+    out->x[1] = mip_ld_f64(d + 47);
+    out->x[2] = mip_ld_f64(d + 55);
+    out->v[0] = mip_ld_f32(d + 63);
+    out->v[1] = mip_ld_f32(d + 67);
+    out->v[2] = mip_ld_f32(d + 71);
+    out->a[0] = mip_ld_f32(d + 75);
+    out->a[1] = mip_ld_f32(d + 79);
+    out->a[2] = mip_ld_f32(d + 83);
+    out->health = mip_ld_u8(d + 87);
+    out->p = mip_ld_u8(d + 88);
+    out->nt = mip_ld_u8(d + 89);
+    out->delta_tau_n = mip_ld_f32(d + 90);
+    out->ft = mip_ld_u8(d + 94);
+    out->en = mip_ld_u8(d + 95);
+    out->p1 = mip_ld_u8(d + 96);
+    out->p2 = mip_ld_u8(d + 97);
+    out->p3 = mip_ld_u8(d + 98);
+    out->p4 = mip_ld_u8(d + 99);
+    out->valid_flags = mip_ld_u16(d + 100);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode(const uint8_t *data, size_t len,
                                                           mip_gnss_receiver_1_glonass_ephemeris_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 102 && mip_gnss_receiver_1_glonass_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_glonass_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4505,10 +4820,54 @@ mip_gnss_receiver_1_galileo_ephemeris_encode(const mip_gnss_receiver_1_galileo_e
     return st;
 }
 
+/* The layout is 218 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_galileo_ephemeris_load(const uint8_t *d,
+                                                      mip_gnss_receiver_1_galileo_ephemeris_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->satellite_id = mip_ld_u8(d + 12);
+    out->health = mip_ld_u8(d + 13);
+    out->iodc = mip_ld_u8(d + 14);
+    out->iode = mip_ld_u8(d + 15);
+    out->t_oc = mip_ld_f64(d + 16);
+    out->af0 = mip_ld_f64(d + 24);
+    out->af1 = mip_ld_f64(d + 32);
+    out->af2 = mip_ld_f64(d + 40);
+    out->t_gd = mip_ld_f64(d + 48);
+    out->isc_l1ca = mip_ld_f64(d + 56);
+    out->isc_l2c = mip_ld_f64(d + 64);
+    out->t_oe = mip_ld_f64(d + 72);
+    out->a = mip_ld_f64(d + 80);
+    out->a_dot = mip_ld_f64(d + 88);
+    out->mean_anomaly = mip_ld_f64(d + 96);
+    out->delta_mean_motion = mip_ld_f64(d + 104);
+    out->delta_mean_motion_dot = mip_ld_f64(d + 112);
+    out->eccentricity = mip_ld_f64(d + 120);
+    out->argument_of_perigee = mip_ld_f64(d + 128);
+    out->omega = mip_ld_f64(d + 136);
+    out->omega_dot = mip_ld_f64(d + 144);
+    out->inclination = mip_ld_f64(d + 152);
+    out->inclination_dot = mip_ld_f64(d + 160);
+    out->c_ic = mip_ld_f64(d + 168);
+    out->c_is = mip_ld_f64(d + 176);
+    out->c_uc = mip_ld_f64(d + 184);
+    out->c_us = mip_ld_f64(d + 192);
+    out->c_rc = mip_ld_f64(d + 200);
+    out->c_rs = mip_ld_f64(d + 208);
+    out->valid_flags = mip_ld_u16(d + 216);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode(const uint8_t *data, size_t len,
                                                           mip_gnss_receiver_1_galileo_ephemeris_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 218 && mip_gnss_receiver_1_galileo_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_galileo_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5306,10 +5665,54 @@ mip_status_t mip_gnss_receiver_1_beidou_ephemeris_encode(const mip_gnss_receiver
     return st;
 }
 
+/* The layout is 218 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_gnss_receiver_1_beidou_ephemeris_load(const uint8_t *d,
+                                                     mip_gnss_receiver_1_beidou_ephemeris_t *out) {
+    out->index = mip_ld_u8(d + 0);
+    out->count = mip_ld_u8(d + 1);
+    out->tow = mip_ld_f64(d + 2);
+    out->week_number = mip_ld_u16(d + 10);
+    out->satellite_id = mip_ld_u8(d + 12);
+    out->health = mip_ld_u8(d + 13);
+    out->iodc = mip_ld_u8(d + 14);
+    out->iode = mip_ld_u8(d + 15);
+    out->t_oc = mip_ld_f64(d + 16);
+    out->af0 = mip_ld_f64(d + 24);
+    out->af1 = mip_ld_f64(d + 32);
+    out->af2 = mip_ld_f64(d + 40);
+    out->t_gd = mip_ld_f64(d + 48);
+    out->isc_l1ca = mip_ld_f64(d + 56);
+    out->isc_l2c = mip_ld_f64(d + 64);
+    out->t_oe = mip_ld_f64(d + 72);
+    out->a = mip_ld_f64(d + 80);
+    out->a_dot = mip_ld_f64(d + 88);
+    out->mean_anomaly = mip_ld_f64(d + 96);
+    out->delta_mean_motion = mip_ld_f64(d + 104);
+    out->delta_mean_motion_dot = mip_ld_f64(d + 112);
+    out->eccentricity = mip_ld_f64(d + 120);
+    out->argument_of_perigee = mip_ld_f64(d + 128);
+    out->omega = mip_ld_f64(d + 136);
+    out->omega_dot = mip_ld_f64(d + 144);
+    out->inclination = mip_ld_f64(d + 152);
+    out->inclination_dot = mip_ld_f64(d + 160);
+    out->c_ic = mip_ld_f64(d + 168);
+    out->c_is = mip_ld_f64(d + 176);
+    out->c_uc = mip_ld_f64(d + 184);
+    out->c_us = mip_ld_f64(d + 192);
+    out->c_rc = mip_ld_f64(d + 200);
+    out->c_rs = mip_ld_f64(d + 208);
+    out->valid_flags = mip_ld_u16(d + 216);
+    return 0;
+}
+
 mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode(const uint8_t *data, size_t len,
                                                          mip_gnss_receiver_1_beidou_ephemeris_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 218 && mip_gnss_receiver_1_beidou_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_beidou_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

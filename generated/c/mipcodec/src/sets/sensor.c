@@ -43,9 +43,21 @@ mip_status_t mip_sensor_scaled_accel_encode(const mip_sensor_scaled_accel_t *val
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_scaled_accel_load(const uint8_t *d, mip_sensor_scaled_accel_t *out) {
+    out->scaled_accel[0] = mip_ld_f32(d + 0);
+    out->scaled_accel[1] = mip_ld_f32(d + 4);
+    out->scaled_accel[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_scaled_accel_decode(const uint8_t *data, size_t len, mip_sensor_scaled_accel_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_scaled_accel_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -148,9 +160,21 @@ mip_status_t mip_sensor_scaled_gyro_encode(const mip_sensor_scaled_gyro_t *value
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_scaled_gyro_load(const uint8_t *d, mip_sensor_scaled_gyro_t *out) {
+    out->scaled_gyro[0] = mip_ld_f32(d + 0);
+    out->scaled_gyro[1] = mip_ld_f32(d + 4);
+    out->scaled_gyro[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_scaled_gyro_decode(const uint8_t *data, size_t len, mip_sensor_scaled_gyro_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_scaled_gyro_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_gyro_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -253,9 +277,21 @@ mip_status_t mip_sensor_scaled_mag_encode(const mip_sensor_scaled_mag_t *value, 
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_scaled_mag_load(const uint8_t *d, mip_sensor_scaled_mag_t *out) {
+    out->scaled_mag[0] = mip_ld_f32(d + 0);
+    out->scaled_mag[1] = mip_ld_f32(d + 4);
+    out->scaled_mag[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_scaled_mag_decode(const uint8_t *data, size_t len, mip_sensor_scaled_mag_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_scaled_mag_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_mag_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -358,9 +394,21 @@ mip_status_t mip_sensor_delta_theta_encode(const mip_sensor_delta_theta_t *value
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_delta_theta_load(const uint8_t *d, mip_sensor_delta_theta_t *out) {
+    out->delta_theta[0] = mip_ld_f32(d + 0);
+    out->delta_theta[1] = mip_ld_f32(d + 4);
+    out->delta_theta[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_delta_theta_decode(const uint8_t *data, size_t len, mip_sensor_delta_theta_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_delta_theta_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_delta_theta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -463,9 +511,21 @@ mip_status_t mip_sensor_delta_velocity_encode(const mip_sensor_delta_velocity_t 
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_delta_velocity_load(const uint8_t *d, mip_sensor_delta_velocity_t *out) {
+    out->delta_velocity[0] = mip_ld_f32(d + 0);
+    out->delta_velocity[1] = mip_ld_f32(d + 4);
+    out->delta_velocity[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_delta_velocity_decode(const uint8_t *data, size_t len,
                                               mip_sensor_delta_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_delta_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_delta_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -569,10 +629,28 @@ mip_status_t mip_sensor_cf_orientation_matrix_encode(const mip_sensor_cf_orienta
     return st;
 }
 
+/* The layout is 36 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_cf_orientation_matrix_load(const uint8_t *d, mip_sensor_cf_orientation_matrix_t *out) {
+    out->m[0] = mip_ld_f32(d + 0);
+    out->m[1] = mip_ld_f32(d + 4);
+    out->m[2] = mip_ld_f32(d + 8);
+    out->m[3] = mip_ld_f32(d + 12);
+    out->m[4] = mip_ld_f32(d + 16);
+    out->m[5] = mip_ld_f32(d + 20);
+    out->m[6] = mip_ld_f32(d + 24);
+    out->m[7] = mip_ld_f32(d + 28);
+    out->m[8] = mip_ld_f32(d + 32);
+    return 0;
+}
+
 mip_status_t mip_sensor_cf_orientation_matrix_decode(const uint8_t *data, size_t len,
                                                      mip_sensor_cf_orientation_matrix_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 36 && mip_sensor_cf_orientation_matrix_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_orientation_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -676,9 +754,22 @@ mip_status_t mip_sensor_cf_quaternion_encode(const mip_sensor_cf_quaternion_t *v
     return st;
 }
 
+/* The layout is 16 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_cf_quaternion_load(const uint8_t *d, mip_sensor_cf_quaternion_t *out) {
+    out->q[0] = mip_ld_f32(d + 0);
+    out->q[1] = mip_ld_f32(d + 4);
+    out->q[2] = mip_ld_f32(d + 8);
+    out->q[3] = mip_ld_f32(d + 12);
+    return 0;
+}
+
 mip_status_t mip_sensor_cf_quaternion_decode(const uint8_t *data, size_t len, mip_sensor_cf_quaternion_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 16 && mip_sensor_cf_quaternion_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -791,9 +882,21 @@ mip_status_t mip_sensor_cf_euler_angles_encode(const mip_sensor_cf_euler_angles_
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_cf_euler_angles_load(const uint8_t *d, mip_sensor_cf_euler_angles_t *out) {
+    out->roll = mip_ld_f32(d + 0);
+    out->pitch = mip_ld_f32(d + 4);
+    out->yaw = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_cf_euler_angles_decode(const uint8_t *data, size_t len,
                                                mip_sensor_cf_euler_angles_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_cf_euler_angles_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -894,10 +997,22 @@ mip_status_t mip_sensor_cf_stabilized_north_encode(const mip_sensor_cf_stabilize
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_cf_stabilized_north_load(const uint8_t *d, mip_sensor_cf_stabilized_north_t *out) {
+    out->stabilized_north[0] = mip_ld_f32(d + 0);
+    out->stabilized_north[1] = mip_ld_f32(d + 4);
+    out->stabilized_north[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_cf_stabilized_north_decode(const uint8_t *data, size_t len,
                                                    mip_sensor_cf_stabilized_north_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_cf_stabilized_north_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_stabilized_north_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1002,9 +1117,21 @@ mip_status_t mip_sensor_cf_stabilized_up_encode(const mip_sensor_cf_stabilized_u
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_cf_stabilized_up_load(const uint8_t *d, mip_sensor_cf_stabilized_up_t *out) {
+    out->stabilized_up[0] = mip_ld_f32(d + 0);
+    out->stabilized_up[1] = mip_ld_f32(d + 4);
+    out->stabilized_up[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_cf_stabilized_up_decode(const uint8_t *data, size_t len,
                                                 mip_sensor_cf_stabilized_up_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_cf_stabilized_up_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_stabilized_up_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1116,9 +1243,21 @@ mip_status_t mip_sensor_gps_timestamp_encode(const mip_sensor_gps_timestamp_t *v
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_gps_timestamp_load(const uint8_t *d, mip_sensor_gps_timestamp_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_sensor_gps_timestamp_decode(const uint8_t *data, size_t len, mip_sensor_gps_timestamp_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_gps_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1228,10 +1367,23 @@ mip_status_t mip_sensor_temperature_statistics_encode(const mip_sensor_temperatu
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_temperature_statistics_load(const uint8_t *d,
+                                                  mip_sensor_temperature_statistics_t *out) {
+    out->min_temp = mip_ld_f32(d + 0);
+    out->max_temp = mip_ld_f32(d + 4);
+    out->mean_temp = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_temperature_statistics_decode(const uint8_t *data, size_t len,
                                                       mip_sensor_temperature_statistics_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_sensor_temperature_statistics_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_temperature_statistics_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1326,9 +1478,19 @@ mip_status_t mip_sensor_scaled_pressure_encode(const mip_sensor_scaled_pressure_
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_scaled_pressure_load(const uint8_t *d, mip_sensor_scaled_pressure_t *out) {
+    out->scaled_pressure = mip_ld_f32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_sensor_scaled_pressure_decode(const uint8_t *data, size_t len,
                                                mip_sensor_scaled_pressure_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_sensor_scaled_pressure_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_pressure_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1396,9 +1558,19 @@ mip_status_t mip_sensor_overrange_status_encode(const mip_sensor_overrange_statu
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_overrange_status_load(const uint8_t *d, mip_sensor_overrange_status_t *out) {
+    out->status = mip_ld_u16(d + 0);
+    return 0;
+}
+
 mip_status_t mip_sensor_overrange_status_decode(const uint8_t *data, size_t len,
                                                 mip_sensor_overrange_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_sensor_overrange_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_overrange_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1481,9 +1653,21 @@ mip_status_t mip_sensor_odometer_data_encode(const mip_sensor_odometer_data_t *v
     return st;
 }
 
+/* The layout is 10 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_sensor_odometer_data_load(const uint8_t *d, mip_sensor_odometer_data_t *out) {
+    out->speed = mip_ld_f32(d + 0);
+    out->uncertainty = mip_ld_f32(d + 4);
+    out->valid_flags = mip_ld_u16(d + 8);
+    return 0;
+}
+
 mip_status_t mip_sensor_odometer_data_decode(const uint8_t *data, size_t len, mip_sensor_odometer_data_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 10 && mip_sensor_odometer_data_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_odometer_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -36,9 +36,19 @@ mip_status_t mip_shared_event_source_encode(const mip_shared_event_source_t *val
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_event_source_load(const uint8_t *d, mip_shared_event_source_t *out) {
+    out->trigger_id = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_shared_event_source_decode(const uint8_t *data, size_t len, mip_shared_event_source_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_shared_event_source_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_event_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -121,9 +131,21 @@ mip_status_t mip_shared_gps_timestamp_encode(const mip_shared_gps_timestamp_t *v
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_gps_timestamp_load(const uint8_t *d, mip_shared_gps_timestamp_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->valid_flags = mip_ld_u16(d + 10);
+    return 0;
+}
+
 mip_status_t mip_shared_gps_timestamp_decode(const uint8_t *data, size_t len, mip_shared_gps_timestamp_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_shared_gps_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -216,9 +238,19 @@ mip_status_t mip_shared_delta_time_encode(const mip_shared_delta_time_t *value, 
     return st;
 }
 
+/* The layout is 8 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_delta_time_load(const uint8_t *d, mip_shared_delta_time_t *out) {
+    out->seconds = mip_ld_f64(d + 0);
+    return 0;
+}
+
 mip_status_t mip_shared_delta_time_decode(const uint8_t *data, size_t len, mip_shared_delta_time_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 8 && mip_shared_delta_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_delta_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -286,10 +318,20 @@ mip_status_t mip_shared_reference_timestamp_encode(const mip_shared_reference_ti
     return st;
 }
 
+/* The layout is 8 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_reference_timestamp_load(const uint8_t *d, mip_shared_reference_timestamp_t *out) {
+    out->nanoseconds = mip_ld_u64(d + 0);
+    return 0;
+}
+
 mip_status_t mip_shared_reference_timestamp_decode(const uint8_t *data, size_t len,
                                                    mip_shared_reference_timestamp_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 8 && mip_shared_reference_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_reference_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -358,10 +400,20 @@ mip_status_t mip_shared_reference_time_delta_encode(const mip_shared_reference_t
     return st;
 }
 
+/* The layout is 8 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_reference_time_delta_load(const uint8_t *d, mip_shared_reference_time_delta_t *out) {
+    out->dt_nanos = mip_ld_u64(d + 0);
+    return 0;
+}
+
 mip_status_t mip_shared_reference_time_delta_decode(const uint8_t *data, size_t len,
                                                     mip_shared_reference_time_delta_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 8 && mip_shared_reference_time_delta_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_reference_time_delta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -438,10 +490,21 @@ mip_status_t mip_shared_external_timestamp_encode(const mip_shared_external_time
     return st;
 }
 
+/* The layout is 10 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_external_timestamp_load(const uint8_t *d, mip_shared_external_timestamp_t *out) {
+    out->nanoseconds = mip_ld_u64(d + 0);
+    out->valid_flags = mip_ld_u16(d + 8);
+    return 0;
+}
+
 mip_status_t mip_shared_external_timestamp_decode(const uint8_t *data, size_t len,
                                                   mip_shared_external_timestamp_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 10 && mip_shared_external_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_external_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -530,10 +593,21 @@ mip_status_t mip_shared_external_time_delta_encode(const mip_shared_external_tim
     return st;
 }
 
+/* The layout is 10 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_shared_external_time_delta_load(const uint8_t *d, mip_shared_external_time_delta_t *out) {
+    out->dt_nanos = mip_ld_u64(d + 0);
+    out->valid_flags = mip_ld_u16(d + 8);
+    return 0;
+}
+
 mip_status_t mip_shared_external_time_delta_decode(const uint8_t *data, size_t len,
                                                    mip_shared_external_time_delta_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 10 && mip_shared_external_time_delta_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_external_time_delta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

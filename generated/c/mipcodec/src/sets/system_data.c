@@ -116,10 +116,24 @@ mip_status_t mip_system_data_time_sync_status_encode(const mip_system_data_time_
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_system_data_time_sync_status_load(const uint8_t *d, mip_system_data_time_sync_status_t *out) {
+    if (d[0] > 1) {
+        return -1;
+    }
+    out->time_sync = mip_ld_bool(d + 0);
+    out->last_pps_rcvd = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t mip_system_data_time_sync_status_decode(const uint8_t *data, size_t len,
                                                      mip_system_data_time_sync_status_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_system_data_time_sync_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_time_sync_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -201,9 +215,19 @@ mip_status_t mip_system_data_gpio_state_encode(const mip_system_data_gpio_state_
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_system_data_gpio_state_load(const uint8_t *d, mip_system_data_gpio_state_t *out) {
+    out->states = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_system_data_gpio_state_decode(const uint8_t *data, size_t len,
                                                mip_system_data_gpio_state_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_system_data_gpio_state_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_gpio_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

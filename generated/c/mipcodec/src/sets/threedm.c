@@ -172,10 +172,22 @@ mip_status_t mip_threedm_event_control_response_encode(const mip_threedm_event_c
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_event_control_response_load(const uint8_t *d,
+                                                   mip_threedm_event_control_response_t *out) {
+    out->instance = mip_ld_u8(d + 0);
+    out->mode = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t mip_threedm_event_control_response_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_event_control_response_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_event_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1426,11 +1438,23 @@ mip_threedm_device_startup_settings_gx5_45_encode(const mip_threedm_device_start
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_device_startup_settings_gx5_45_load(const uint8_t *d,
+                                                mip_threedm_device_startup_settings_gx5_45_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_device_startup_settings_gx5_45_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_device_startup_settings_gx5_45_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_device_startup_settings_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_startup_settings_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1504,11 +1528,23 @@ mip_threedm_device_startup_settings_cv7_ins_encode(const mip_threedm_device_star
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_device_startup_settings_cv7_ins_load(const uint8_t *d,
+                                                 mip_threedm_device_startup_settings_cv7_ins_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_device_startup_settings_cv7_ins_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_device_startup_settings_cv7_ins_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_device_startup_settings_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_startup_settings_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1775,11 +1811,25 @@ mip_status_t mip_threedm_sensor_to_vehicle_euler_response_encode(
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_sensor_to_vehicle_euler_response_load(const uint8_t *d,
+                                                  mip_threedm_sensor_to_vehicle_euler_response_t *out) {
+    out->roll = mip_ld_f32(d + 0);
+    out->pitch = mip_ld_f32(d + 4);
+    out->yaw = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_sensor_to_vehicle_euler_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_sensor_to_vehicle_euler_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_threedm_sensor_to_vehicle_euler_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_euler_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2032,10 +2082,24 @@ mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_encode(
     return st;
 }
 
+/* The layout is 16 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_sensor_to_vehicle_quaternion_response_load(
+    const uint8_t *d, mip_threedm_sensor_to_vehicle_quaternion_response_t *out) {
+    out->q[0] = mip_ld_f32(d + 0);
+    out->q[1] = mip_ld_f32(d + 4);
+    out->q[2] = mip_ld_f32(d + 8);
+    out->q[3] = mip_ld_f32(d + 12);
+    return 0;
+}
+
 mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_decode(
     const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_quaternion_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 16 && mip_threedm_sensor_to_vehicle_quaternion_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_quaternion_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2289,11 +2353,31 @@ mip_threedm_sensor_to_vehicle_dcm_response_encode(const mip_threedm_sensor_to_ve
     return st;
 }
 
+/* The layout is 36 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_sensor_to_vehicle_dcm_response_load(const uint8_t *d,
+                                                mip_threedm_sensor_to_vehicle_dcm_response_t *out) {
+    out->dcm[0] = mip_ld_f32(d + 0);
+    out->dcm[1] = mip_ld_f32(d + 4);
+    out->dcm[2] = mip_ld_f32(d + 8);
+    out->dcm[3] = mip_ld_f32(d + 12);
+    out->dcm[4] = mip_ld_f32(d + 16);
+    out->dcm[5] = mip_ld_f32(d + 20);
+    out->dcm[6] = mip_ld_f32(d + 24);
+    out->dcm[7] = mip_ld_f32(d + 28);
+    out->dcm[8] = mip_ld_f32(d + 32);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_sensor_to_vehicle_dcm_response_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_sensor_to_vehicle_dcm_response_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 36 && mip_threedm_sensor_to_vehicle_dcm_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_dcm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2686,10 +2770,22 @@ mip_status_t mip_threedm_accel_bias_response_encode(const mip_threedm_accel_bias
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_accel_bias_response_load(const uint8_t *d, mip_threedm_accel_bias_response_t *out) {
+    out->bias[0] = mip_ld_f32(d + 0);
+    out->bias[1] = mip_ld_f32(d + 4);
+    out->bias[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_threedm_accel_bias_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_accel_bias_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_threedm_accel_bias_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_accel_bias_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3080,10 +3176,22 @@ mip_status_t mip_threedm_gyro_bias_response_encode(const mip_threedm_gyro_bias_r
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_gyro_bias_response_load(const uint8_t *d, mip_threedm_gyro_bias_response_t *out) {
+    out->bias[0] = mip_ld_f32(d + 0);
+    out->bias[1] = mip_ld_f32(d + 4);
+    out->bias[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t mip_threedm_gyro_bias_response_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_gyro_bias_response_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_threedm_gyro_bias_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gyro_bias_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3181,10 +3289,20 @@ mip_status_t mip_threedm_capture_gyro_bias_encode(const mip_threedm_capture_gyro
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_capture_gyro_bias_load(const uint8_t *d, mip_threedm_capture_gyro_bias_t *out) {
+    out->averaging_time_ms = mip_ld_u16(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_capture_gyro_bias_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_capture_gyro_bias_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_capture_gyro_bias_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_capture_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3558,11 +3676,24 @@ mip_threedm_mag_hard_iron_offset_response_encode(const mip_threedm_mag_hard_iron
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_mag_hard_iron_offset_response_load(const uint8_t *d,
+                                                          mip_threedm_mag_hard_iron_offset_response_t *out) {
+    out->offset[0] = mip_ld_f32(d + 0);
+    out->offset[1] = mip_ld_f32(d + 4);
+    out->offset[2] = mip_ld_f32(d + 8);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_mag_hard_iron_offset_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_mag_hard_iron_offset_response_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 12 && mip_threedm_mag_hard_iron_offset_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_hard_iron_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3967,11 +4098,30 @@ mip_threedm_mag_soft_iron_matrix_response_encode(const mip_threedm_mag_soft_iron
     return st;
 }
 
+/* The layout is 36 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_mag_soft_iron_matrix_response_load(const uint8_t *d,
+                                                          mip_threedm_mag_soft_iron_matrix_response_t *out) {
+    out->matrix[0] = mip_ld_f32(d + 0);
+    out->matrix[1] = mip_ld_f32(d + 4);
+    out->matrix[2] = mip_ld_f32(d + 8);
+    out->matrix[3] = mip_ld_f32(d + 12);
+    out->matrix[4] = mip_ld_f32(d + 16);
+    out->matrix[5] = mip_ld_f32(d + 20);
+    out->matrix[6] = mip_ld_f32(d + 24);
+    out->matrix[7] = mip_ld_f32(d + 28);
+    out->matrix[8] = mip_ld_f32(d + 32);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_mag_soft_iron_matrix_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_mag_soft_iron_matrix_response_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 36 && mip_threedm_mag_soft_iron_matrix_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_soft_iron_matrix_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4183,11 +4333,26 @@ mip_threedm_coning_sculling_enable_response_encode(const mip_threedm_coning_scul
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_coning_sculling_enable_response_load(const uint8_t *d,
+                                                 mip_threedm_coning_sculling_enable_response_t *out) {
+    if (d[0] > 1) {
+        return -1;
+    }
+    out->enable = mip_ld_bool(d + 0);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_coning_sculling_enable_response_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_coning_sculling_enable_response_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_coning_sculling_enable_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_coning_sculling_enable_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4363,10 +4528,21 @@ mip_status_t mip_threedm_uart_baudrate_response_encode(const mip_threedm_uart_ba
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_uart_baudrate_response_load(const uint8_t *d,
+                                                   mip_threedm_uart_baudrate_response_t *out) {
+    out->baud = mip_ld_u32(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_uart_baudrate_response_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_uart_baudrate_response_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 4 && mip_threedm_uart_baudrate_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_uart_baudrate_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4898,10 +5074,24 @@ mip_status_t mip_threedm_gpio_state_response_encode(const mip_threedm_gpio_state
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_gpio_state_response_load(const uint8_t *d, mip_threedm_gpio_state_response_t *out) {
+    out->pin = mip_ld_u8(d + 0);
+    if (d[1] > 1) {
+        return -1;
+    }
+    out->state = mip_ld_bool(d + 1);
+    return 0;
+}
+
 mip_status_t mip_threedm_gpio_state_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_gpio_state_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_gpio_state_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gpio_state_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5175,10 +5365,23 @@ mip_status_t mip_threedm_odometer_config_response_encode(const mip_threedm_odome
     return st;
 }
 
+/* The layout is 9 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_odometer_config_response_load(const uint8_t *d,
+                                                     mip_threedm_odometer_config_response_t *out) {
+    out->mode = mip_ld_u8(d + 0);
+    out->scaling = mip_ld_f32(d + 1);
+    out->uncertainty = mip_ld_f32(d + 5);
+    return 0;
+}
+
 mip_status_t mip_threedm_odometer_config_response_decode(const uint8_t *data, size_t len,
                                                          mip_threedm_odometer_config_response_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 9 && mip_threedm_odometer_config_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_odometer_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5543,11 +5746,33 @@ mip_status_t mip_threedm_advanced_lowpass_filter_response_encode(
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_advanced_lowpass_filter_response_load(const uint8_t *d,
+                                                  mip_threedm_advanced_lowpass_filter_response_t *out) {
+    out->target_descriptor = mip_ld_u8(d + 0);
+    if (d[1] > 1) {
+        return -1;
+    }
+    out->enable = mip_ld_bool(d + 1);
+    if (d[2] > 1) {
+        return -1;
+    }
+    out->manual = mip_ld_bool(d + 2);
+    out->frequency = mip_ld_u16(d + 3);
+    out->reserved = mip_ld_u8(d + 5);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_advanced_lowpass_filter_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_advanced_lowpass_filter_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 6 && mip_threedm_advanced_lowpass_filter_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_advanced_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5907,11 +6132,31 @@ mip_threedm_complementary_filter_response_encode(const mip_threedm_complementary
     return st;
 }
 
+/* The layout is 10 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_complementary_filter_response_load(const uint8_t *d,
+                                                          mip_threedm_complementary_filter_response_t *out) {
+    if (d[0] > 1) {
+        return -1;
+    }
+    out->pitch_roll_enable = mip_ld_bool(d + 0);
+    if (d[1] > 1) {
+        return -1;
+    }
+    out->heading_enable = mip_ld_bool(d + 1);
+    out->pitch_roll_time_constant = mip_ld_f32(d + 2);
+    out->heading_time_constant = mip_ld_f32(d + 6);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_complementary_filter_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_complementary_filter_response_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 10 && mip_threedm_complementary_filter_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_complementary_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6155,10 +6400,22 @@ mip_status_t mip_threedm_sensor_range_response_encode(const mip_threedm_sensor_r
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_sensor_range_response_load(const uint8_t *d,
+                                                  mip_threedm_sensor_range_response_t *out) {
+    out->sensor = mip_ld_u8(d + 0);
+    out->setting = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t mip_threedm_sensor_range_response_decode(const uint8_t *data, size_t len,
                                                       mip_threedm_sensor_range_response_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_sensor_range_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_range_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6243,10 +6500,21 @@ mip_threedm_get_calibrated_sensor_ranges_encode(const mip_threedm_get_calibrated
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_get_calibrated_sensor_ranges_load(const uint8_t *d,
+                                                         mip_threedm_get_calibrated_sensor_ranges_t *out) {
+    out->sensor = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode(const uint8_t *data, size_t len,
                                                              mip_threedm_get_calibrated_sensor_ranges_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_get_calibrated_sensor_ranges_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_calibrated_sensor_ranges_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6724,10 +6992,31 @@ mip_status_t mip_threedm_lowpass_filter_response_encode(const mip_threedm_lowpas
     return st;
 }
 
+/* The layout is 8 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_lowpass_filter_response_load(const uint8_t *d,
+                                                    mip_threedm_lowpass_filter_response_t *out) {
+    out->desc_set = mip_ld_u8(d + 0);
+    out->field_desc = mip_ld_u8(d + 1);
+    if (d[2] > 1) {
+        return -1;
+    }
+    out->enable = mip_ld_bool(d + 2);
+    if (d[3] > 1) {
+        return -1;
+    }
+    out->manual = mip_ld_bool(d + 3);
+    out->frequency = mip_ld_f32(d + 4);
+    return 0;
+}
+
 mip_status_t mip_threedm_lowpass_filter_response_decode(const uint8_t *data, size_t len,
                                                         mip_threedm_lowpass_filter_response_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 8 && mip_threedm_lowpass_filter_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7693,9 +7982,19 @@ mip_status_t mip_threedm_imu_base_rate_encode(const mip_threedm_imu_base_rate_t 
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_imu_base_rate_load(const uint8_t *d, mip_threedm_imu_base_rate_t *out) {
+    out->rate = mip_ld_u16(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_imu_base_rate_decode(const uint8_t *data, size_t len,
                                               mip_threedm_imu_base_rate_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_imu_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_imu_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7815,9 +8114,19 @@ mip_status_t mip_threedm_gnss_base_rate_encode(const mip_threedm_gnss_base_rate_
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_gnss_base_rate_load(const uint8_t *d, mip_threedm_gnss_base_rate_t *out) {
+    out->rate = mip_ld_u16(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_gnss_base_rate_decode(const uint8_t *data, size_t len,
                                                mip_threedm_gnss_base_rate_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_gnss_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7937,10 +8246,20 @@ mip_status_t mip_threedm_filter_base_rate_encode(const mip_threedm_filter_base_r
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_filter_base_rate_load(const uint8_t *d, mip_threedm_filter_base_rate_t *out) {
+    out->rate = mip_ld_u16(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_filter_base_rate_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_filter_base_rate_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_filter_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_filter_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8007,9 +8326,19 @@ mip_status_t mip_threedm_get_base_rate_encode(const mip_threedm_get_base_rate_t 
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_get_base_rate_load(const uint8_t *d, mip_threedm_get_base_rate_t *out) {
+    out->desc_set = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_get_base_rate_decode(const uint8_t *data, size_t len,
                                               mip_threedm_get_base_rate_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_get_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8084,9 +8413,20 @@ mip_status_t mip_threedm_base_rate_encode(const mip_threedm_base_rate_t *value, 
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_base_rate_load(const uint8_t *d, mip_threedm_base_rate_t *out) {
+    out->desc_set = mip_ld_u8(d + 0);
+    out->rate = mip_ld_u16(d + 1);
+    return 0;
+}
+
 mip_status_t mip_threedm_base_rate_decode(const uint8_t *data, size_t len, mip_threedm_base_rate_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_threedm_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9754,10 +10094,21 @@ mip_status_t mip_threedm_factory_streaming_encode(const mip_threedm_factory_stre
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_factory_streaming_load(const uint8_t *d, mip_threedm_factory_streaming_t *out) {
+    out->action = mip_ld_u8(d + 0);
+    out->reserved = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t mip_threedm_factory_streaming_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_factory_streaming_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_factory_streaming_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_factory_streaming_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9857,10 +10208,23 @@ mip_threedm_data_stream_control_gx5_45_encode(const mip_threedm_data_stream_cont
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_data_stream_control_gx5_45_load(const uint8_t *d,
+                                                       mip_threedm_data_stream_control_gx5_45_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    out->device_selector = mip_ld_u8(d + 1);
+    out->enable = mip_ld_u8(d + 2);
+    return 0;
+}
+
 mip_status_t mip_threedm_data_stream_control_gx5_45_decode(const uint8_t *data, size_t len,
                                                            mip_threedm_data_stream_control_gx5_45_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_threedm_data_stream_control_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10100,11 +10464,24 @@ mip_status_t mip_threedm_data_stream_control_response_gx5_45_encode(
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_data_stream_control_response_gx5_45_load(const uint8_t *d,
+                                                     mip_threedm_data_stream_control_response_gx5_45_t *out) {
+    out->device_selector = mip_ld_u8(d + 0);
+    out->enabled = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_data_stream_control_response_gx5_45_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_data_stream_control_response_gx5_45_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_data_stream_control_response_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_response_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10197,10 +10574,25 @@ mip_status_t mip_threedm_data_stream_control_response_cv7_ins_encode(
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_data_stream_control_response_cv7_ins_load(
+    const uint8_t *d, mip_threedm_data_stream_control_response_cv7_ins_t *out) {
+    out->desc_set = mip_ld_u8(d + 0);
+    if (d[1] > 1) {
+        return -1;
+    }
+    out->enabled = mip_ld_bool(d + 1);
+    return 0;
+}
+
 mip_status_t mip_threedm_data_stream_control_response_cv7_ins_decode(
     const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_cv7_ins_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_data_stream_control_response_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_response_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11212,10 +11604,23 @@ mip_threedm_gnss_assisted_fix_control_encode(const mip_threedm_gnss_assisted_fix
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_gnss_assisted_fix_control_load(const uint8_t *d,
+                                                      mip_threedm_gnss_assisted_fix_control_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    out->option = mip_ld_u8(d + 1);
+    out->flags = mip_ld_u8(d + 2);
+    return 0;
+}
+
 mip_status_t mip_threedm_gnss_assisted_fix_control_decode(const uint8_t *data, size_t len,
                                                           mip_threedm_gnss_assisted_fix_control_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_threedm_gnss_assisted_fix_control_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assisted_fix_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11322,11 +11727,24 @@ mip_status_t mip_threedm_gnss_assisted_fix_control_response_encode(
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_gnss_assisted_fix_control_response_load(const uint8_t *d,
+                                                    mip_threedm_gnss_assisted_fix_control_response_t *out) {
+    out->option = mip_ld_u8(d + 0);
+    out->flags = mip_ld_u8(d + 1);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_gnss_assisted_fix_control_response_decode(const uint8_t *data, size_t len,
                                                       mip_threedm_gnss_assisted_fix_control_response_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 2 && mip_threedm_gnss_assisted_fix_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assisted_fix_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11434,10 +11852,24 @@ mip_status_t mip_threedm_gnss_assist_time_update_encode(const mip_threedm_gnss_a
     return st;
 }
 
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_gnss_assist_time_update_load(const uint8_t *d,
+                                                    mip_threedm_gnss_assist_time_update_t *out) {
+    out->function = mip_ld_u8(d + 0);
+    out->tow = mip_ld_f64(d + 1);
+    out->week_number = mip_ld_u16(d + 9);
+    out->accuracy = mip_ld_f32(d + 11);
+    return 0;
+}
+
 mip_status_t mip_threedm_gnss_assist_time_update_decode(const uint8_t *data, size_t len,
                                                         mip_threedm_gnss_assist_time_update_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 15 && mip_threedm_gnss_assist_time_update_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assist_time_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11565,11 +11997,25 @@ mip_status_t mip_threedm_gnss_assist_time_update_response_encode(
     return st;
 }
 
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mip_threedm_gnss_assist_time_update_response_load(const uint8_t *d,
+                                                  mip_threedm_gnss_assist_time_update_response_t *out) {
+    out->tow = mip_ld_f64(d + 0);
+    out->week_number = mip_ld_u16(d + 8);
+    out->accuracy = mip_ld_f32(d + 10);
+    return 0;
+}
+
 mip_status_t
 mip_threedm_gnss_assist_time_update_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_gnss_assist_time_update_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 14 && mip_threedm_gnss_assist_time_update_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assist_time_update_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11770,10 +12216,20 @@ mip_status_t mip_threedm_pps_source_response_encode(const mip_threedm_pps_source
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_pps_source_response_load(const uint8_t *d, mip_threedm_pps_source_response_t *out) {
+    out->source = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_pps_source_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_pps_source_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_pps_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_pps_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11842,10 +12298,20 @@ mip_status_t mip_threedm_get_supported_events_encode(const mip_threedm_get_suppo
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_get_supported_events_load(const uint8_t *d, mip_threedm_get_supported_events_t *out) {
+    out->query = mip_ld_u8(d + 0);
+    return 0;
+}
+
 mip_status_t mip_threedm_get_supported_events_decode(const uint8_t *data, size_t len,
                                                      mip_threedm_get_supported_events_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 1 && mip_threedm_get_supported_events_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_supported_events_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12013,9 +12479,20 @@ mip_status_t mip_threedm_device_status_encode(const mip_threedm_device_status_t 
     return st;
 }
 
+/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mip_threedm_device_status_load(const uint8_t *d, mip_threedm_device_status_t *out) {
+    out->model_number = mip_ld_u16(d + 0);
+    out->status_selector = mip_ld_u8(d + 2);
+    return 0;
+}
+
 mip_status_t mip_threedm_device_status_decode(const uint8_t *data, size_t len,
                                               mip_threedm_device_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    if (len == 3 && mip_threedm_device_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -785,10 +785,21 @@ mscip_status_t mscip_base_correlate_gps_time_encode(const mscip_base_correlate_g
     return st;
 }
 
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_base_correlate_gps_time_load(const uint8_t *d, mscip_base_correlate_gps_time_t *out) {
+    out->week = mscip_ld_u16(d + 0);
+    out->seconds = mscip_ld_u32(d + 2);
+    return 0;
+}
+
 mscip_status_t mscip_base_correlate_gps_time_decode(const uint8_t *data, size_t len,
                                                     mscip_base_correlate_gps_time_t *out,
                                                     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 6 && mscip_base_correlate_gps_time_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_correlate_gps_time_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;

@@ -148,11 +148,22 @@ mscip_imu_config_uart_baud_rate_response_encode(const mscip_imu_config_uart_baud
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_uart_baud_rate_response_load(const uint8_t *d,
+                                                         mscip_imu_config_uart_baud_rate_response_t *out) {
+    out->baud_rate = mscip_ld_u32(d + 0);
+    return 0;
+}
+
 mscip_status_t
 mscip_imu_config_uart_baud_rate_response_decode(const uint8_t *data, size_t len,
                                                 mscip_imu_config_uart_baud_rate_response_t *out,
                                                 mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 4 && mscip_imu_config_uart_baud_rate_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_uart_baud_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -327,10 +338,20 @@ mscip_status_t mscip_imu_config_filter_response_encode(const mscip_imu_config_fi
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_filter_response_load(const uint8_t *d, mscip_imu_config_filter_response_t *out) {
+    out->bandwidth = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_filter_response_decode(const uint8_t *data, size_t len,
                                                        mscip_imu_config_filter_response_t *out,
                                                        mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_filter_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_filter_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -509,10 +530,21 @@ mscip_imu_config_sample_rate_response_encode(const mscip_imu_config_sample_rate_
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_sample_rate_response_load(const uint8_t *d,
+                                                      mscip_imu_config_sample_rate_response_t *out) {
+    out->decimation = mscip_ld_u16(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_sample_rate_response_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_sample_rate_response_t *out,
                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 2 && mscip_imu_config_sample_rate_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_sample_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -945,10 +977,21 @@ mscip_imu_config_internal_sample_rate_encode(const mscip_imu_config_internal_sam
     return st;
 }
 
+/* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_internal_sample_rate_load(const uint8_t *d,
+                                                      mscip_imu_config_internal_sample_rate_t *out) {
+    out->rate = mscip_ld_u16(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_internal_sample_rate_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_internal_sample_rate_t *out,
                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 2 && mscip_imu_config_internal_sample_rate_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_internal_sample_rate_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1128,10 +1171,21 @@ mscip_imu_config_accel_range_response_encode(const mscip_imu_config_accel_range_
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_accel_range_response_load(const uint8_t *d,
+                                                      mscip_imu_config_accel_range_response_t *out) {
+    out->range = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_accel_range_response_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_accel_range_response_t *out,
                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_accel_range_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1311,10 +1365,21 @@ mscip_imu_config_gyro_range_response_encode(const mscip_imu_config_gyro_range_re
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_gyro_range_response_load(const uint8_t *d,
+                                                     mscip_imu_config_gyro_range_response_t *out) {
+    out->range = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_gyro_range_response_decode(const uint8_t *data, size_t len,
                                                            mscip_imu_config_gyro_range_response_t *out,
                                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_gyro_range_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_gyro_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1384,10 +1449,20 @@ mscip_status_t mscip_imu_config_config_all_encode(const mscip_imu_config_config_
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_config_all_load(const uint8_t *d, mscip_imu_config_config_all_t *out) {
+    out->function = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_config_all_decode(const uint8_t *data, size_t len,
                                                   mscip_imu_config_config_all_t *out,
                                                   mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_config_all_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_config_all_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1565,10 +1640,21 @@ mscip_imu_config_data_on_off_response_encode(const mscip_imu_config_data_on_off_
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_data_on_off_response_load(const uint8_t *d,
+                                                      mscip_imu_config_data_on_off_response_t *out) {
+    out->control = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_data_on_off_response_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_data_on_off_response_t *out,
                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_data_on_off_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_data_on_off_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1749,10 +1835,21 @@ mscip_imu_config_xtrig_on_off_response_encode(const mscip_imu_config_xtrig_on_of
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_xtrig_on_off_response_load(const uint8_t *d,
+                                                       mscip_imu_config_xtrig_on_off_response_t *out) {
+    out->control = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_config_xtrig_on_off_response_decode(const uint8_t *data, size_t len,
                                                              mscip_imu_config_xtrig_on_off_response_t *out,
                                                              mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_xtrig_on_off_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_xtrig_on_off_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -2206,11 +2303,22 @@ mscip_imu_config_aux_accel_range_response_encode(const mscip_imu_config_aux_acce
     return st;
 }
 
+/* The layout is 1 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_config_aux_accel_range_response_load(const uint8_t *d,
+                                                          mscip_imu_config_aux_accel_range_response_t *out) {
+    out->range = mscip_ld_u8(d + 0);
+    return 0;
+}
+
 mscip_status_t
 mscip_imu_config_aux_accel_range_response_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_config_aux_accel_range_response_t *out,
                                                  mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 1 && mscip_imu_config_aux_accel_range_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_aux_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;

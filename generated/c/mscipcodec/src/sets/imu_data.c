@@ -44,10 +44,22 @@ mscip_status_t mscip_imu_data_scaled_accel_encode(const mscip_imu_data_scaled_ac
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_scaled_accel_load(const uint8_t *d, mscip_imu_data_scaled_accel_t *out) {
+    out->accel[0] = mscip_ld_f32(d + 0);
+    out->accel[1] = mscip_ld_f32(d + 4);
+    out->accel[2] = mscip_ld_f32(d + 8);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_scaled_accel_decode(const uint8_t *data, size_t len,
                                                   mscip_imu_data_scaled_accel_t *out,
                                                   mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_scaled_accel_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_accel_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -151,10 +163,22 @@ mscip_status_t mscip_imu_data_scaled_gyro_encode(const mscip_imu_data_scaled_gyr
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_scaled_gyro_load(const uint8_t *d, mscip_imu_data_scaled_gyro_t *out) {
+    out->gyro[0] = mscip_ld_f32(d + 0);
+    out->gyro[1] = mscip_ld_f32(d + 4);
+    out->gyro[2] = mscip_ld_f32(d + 8);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_scaled_gyro_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_data_scaled_gyro_t *out,
                                                  mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_scaled_gyro_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_gyro_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -258,9 +282,21 @@ mscip_status_t mscip_imu_data_scaled_mag_encode(const mscip_imu_data_scaled_mag_
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_scaled_mag_load(const uint8_t *d, mscip_imu_data_scaled_mag_t *out) {
+    out->mag[0] = mscip_ld_f32(d + 0);
+    out->mag[1] = mscip_ld_f32(d + 4);
+    out->mag[2] = mscip_ld_f32(d + 8);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_scaled_mag_decode(const uint8_t *data, size_t len,
                                                 mscip_imu_data_scaled_mag_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_scaled_mag_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_mag_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -364,10 +400,22 @@ mscip_status_t mscip_imu_data_delta_theta_encode(const mscip_imu_data_delta_thet
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_delta_theta_load(const uint8_t *d, mscip_imu_data_delta_theta_t *out) {
+    out->delta_theta[0] = mscip_ld_f32(d + 0);
+    out->delta_theta[1] = mscip_ld_f32(d + 4);
+    out->delta_theta[2] = mscip_ld_f32(d + 8);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_delta_theta_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_data_delta_theta_t *out,
                                                  mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_delta_theta_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_delta_theta_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -471,10 +519,22 @@ mscip_status_t mscip_imu_data_delta_velocity_encode(const mscip_imu_data_delta_v
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_delta_velocity_load(const uint8_t *d, mscip_imu_data_delta_velocity_t *out) {
+    out->delta_velocity[0] = mscip_ld_f32(d + 0);
+    out->delta_velocity[1] = mscip_ld_f32(d + 4);
+    out->delta_velocity[2] = mscip_ld_f32(d + 8);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_delta_velocity_decode(const uint8_t *data, size_t len,
                                                     mscip_imu_data_delta_velocity_t *out,
                                                     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_delta_velocity_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_delta_velocity_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -572,10 +632,20 @@ mscip_status_t mscip_imu_data_scaled_pressure_encode(const mscip_imu_data_scaled
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_scaled_pressure_load(const uint8_t *d, mscip_imu_data_scaled_pressure_t *out) {
+    out->pressure = mscip_ld_f32(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_scaled_pressure_decode(const uint8_t *data, size_t len,
                                                      mscip_imu_data_scaled_pressure_t *out,
                                                      mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 4 && mscip_imu_data_scaled_pressure_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_pressure_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -645,10 +715,21 @@ mscip_status_t mscip_imu_data_scaled_temperature_encode(const mscip_imu_data_sca
     return st;
 }
 
+/* The layout is 4 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_scaled_temperature_load(const uint8_t *d,
+                                                  mscip_imu_data_scaled_temperature_t *out) {
+    out->temperature = mscip_ld_f32(d + 0);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_scaled_temperature_decode(const uint8_t *data, size_t len,
                                                         mscip_imu_data_scaled_temperature_t *out,
                                                         mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 4 && mscip_imu_data_scaled_temperature_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_temperature_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -734,10 +815,23 @@ mscip_status_t mscip_imu_data_gps_correlated_time_encode(const mscip_imu_data_gp
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_gps_correlated_time_load(const uint8_t *d,
+                                                   mscip_imu_data_gps_correlated_time_t *out) {
+    out->seconds = mscip_ld_f64(d + 0);
+    out->week = mscip_ld_u16(d + 8);
+    out->flags = mscip_ld_u16(d + 10);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_gps_correlated_time_decode(const uint8_t *data, size_t len,
                                                          mscip_imu_data_gps_correlated_time_t *out,
                                                          mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_gps_correlated_time_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_gps_correlated_time_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -840,10 +934,22 @@ mscip_status_t mscip_imu_data_scaled_aux_accel_encode(const mscip_imu_data_scale
     return st;
 }
 
+/* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mscip_imu_data_scaled_aux_accel_load(const uint8_t *d, mscip_imu_data_scaled_aux_accel_t *out) {
+    out->accel[0] = mscip_ld_f32(d + 0);
+    out->accel[1] = mscip_ld_f32(d + 4);
+    out->accel[2] = mscip_ld_f32(d + 8);
+    return 0;
+}
+
 mscip_status_t mscip_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
                                                       mscip_imu_data_scaled_aux_accel_t *out,
                                                       mscip_decode_error_t *err) {
     mscip_reader_t r;
+    if (len == 12 && mscip_imu_data_scaled_aux_accel_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_aux_accel_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;

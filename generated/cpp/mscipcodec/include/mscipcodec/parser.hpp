@@ -28,13 +28,26 @@ class StreamParser {
     /// Feeds bytes; on_event(const StreamEvent&) is called for every packet and skip run found.
     template <class Handler> void feed(const std::uint8_t *data, std::size_t size, Handler &&on_event) {
         while (size > 0) {
-            if (start_ + len_ == buf_.size()) {
-                std::memmove(buf_.data(), buf_.data() + start_, len_);
+            if (len_ == 0) {
+                // Nothing buffered: packets are checked and reported in place; what is left is
+                // a candidate waiting for more input, shorter than a maximum packet.
+                const std::size_t done = scan(data, size, on_event);
+                data += done;
+                size -= done;
+                std::memcpy(buf_.data(), data, size);
                 start_ = 0;
+                len_ = size;
+                return;
             }
-            std::size_t n = buf_.size() - (start_ + len_);
+            // Complete the buffered candidate, no more: once the buffer is empty again the fast
+            // path takes over.
+            std::size_t n = wanted();
             if (n > size) {
                 n = size;
+            }
+            if (start_ + len_ + n > buf_.size()) {
+                std::memmove(buf_.data(), buf_.data() + start_, len_);
+                start_ = 0;
             }
             std::memcpy(buf_.data() + start_ + len_, data, n);
             len_ += n;
@@ -59,6 +72,69 @@ class StreamParser {
     }
 
   private:
+    /// Bytes the buffered candidate (at buf_[start_]) needs before process() can decide on it.
+    std::size_t wanted() const {
+        if (len_ < kHeaderSize) {
+            return kHeaderSize - len_;
+        }
+        const std::size_t total = kHeaderSize + buf_[start_ + kLengthOffset] + kChecksumSize;
+        return total > len_ ? total - len_ : 1;
+    }
+
+    /// The decisions of process() made in place on the caller's bytes (nothing is buffered).
+    /// Returns the bytes consumed; base_ follows them.
+    template <class Handler> std::size_t scan(const std::uint8_t *data, std::size_t size, Handler &on_event) {
+        const std::uint64_t base = base_;
+        std::size_t pos = 0;
+        while (pos < size) {
+            const std::uint8_t *p = data + pos;
+            const std::size_t left = size - pos;
+            if (p[0] != kSync[0]) {
+                const void *q = std::memchr(p, kSync[0], left);
+                const std::size_t n =
+                    q != nullptr ? static_cast<std::size_t>(static_cast<const std::uint8_t *>(q) - p) : left;
+                skip_at(base + pos, n);
+                pos += n;
+                continue;
+            }
+            if (left < kHeaderSize) {
+                // A partial sync or header at the end waits in the buffer (unless it already
+                // differs from the sync sequence).
+                if (std::memcmp(p, kSync.data(), left < kSyncSize ? left : kSyncSize) == 0) {
+                    break;
+                }
+            } else if (std::memcmp(p, kSync.data(), kSyncSize) == 0 && p[kLengthOffset] <= kMaxPayload) {
+                const std::size_t length = p[kLengthOffset];
+                const std::size_t total = kHeaderSize + length + kChecksumSize;
+                if (left < total) {
+                    break; // incomplete packet: buffered
+                }
+                const auto sums = fletcher16(p, kHeaderSize + length).bytes();
+                if (p[kHeaderSize + length] == sums[0] && p[kHeaderSize + length + 1] == sums[1]) {
+                    emit_skip(on_event);
+                    StreamEvent e;
+                    e.kind = StreamEvent::Kind::packet;
+                    e.offset = base + pos;
+                    e.packet = PacketView{p, total};
+                    on_event(static_cast<const StreamEvent &>(e));
+                    pos += total;
+                    continue;
+                }
+            }
+            skip_at(base + pos, 1); // false sync: resynchronise at the next byte
+            ++pos;
+        }
+        base_ = base + pos;
+        return pos;
+    }
+
+    void skip_at(std::uint64_t offset, std::size_t n) {
+        if (skip_count_ == 0) {
+            skip_offset_ = offset;
+        }
+        skip_count_ += n;
+    }
+
     template <class Handler> void process(Handler &on_event, bool final) {
         for (;;) {
             const std::uint8_t *p = buf_.data() + start_;

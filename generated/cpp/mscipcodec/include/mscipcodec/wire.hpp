@@ -342,9 +342,28 @@ class Reader {
     }
     /// Takes an n-byte unsigned integer (n <= 8) in the protocol's byte order; call need() first.
     std::uint64_t take_uint(std::size_t n) {
+        const std::uint8_t *const p = data_ + pos_;
+        // The common sizes as straight expressions (one load and a byte swap), the rest a loop.
+        switch (n) {
+        case 2:
+            pos_ += 2;
+            return load2(p);
+        case 4:
+            pos_ += 4;
+            return load4(p);
+        case 8:
+            pos_ += 8;
+            if constexpr (kBigEndian) {
+                return load4(p) << 32 | load4(p + 4);
+            } else {
+                return load4(p + 4) << 32 | load4(p);
+            }
+        default:
+            break;
+        }
         std::uint64_t v = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            const std::uint64_t b = data_[pos_ + i];
+            const std::uint64_t b = p[i];
             if constexpr (kBigEndian) {
                 v = (v << 8) | b;
             } else {
@@ -353,6 +372,22 @@ class Reader {
         }
         pos_ += n;
         return v;
+    }
+    static std::uint64_t load2(const std::uint8_t *p) {
+        if constexpr (kBigEndian) {
+            return static_cast<std::uint64_t>(p[0]) << 8 | p[1];
+        } else {
+            return static_cast<std::uint64_t>(p[1]) << 8 | p[0];
+        }
+    }
+    static std::uint64_t load4(const std::uint8_t *p) {
+        if constexpr (kBigEndian) {
+            return static_cast<std::uint64_t>(p[0]) << 24 | static_cast<std::uint64_t>(p[1]) << 16 |
+                   static_cast<std::uint64_t>(p[2]) << 8 | p[3];
+        } else {
+            return static_cast<std::uint64_t>(p[3]) << 24 | static_cast<std::uint64_t>(p[2]) << 16 |
+                   static_cast<std::uint64_t>(p[1]) << 8 | p[0];
+        }
     }
     /// Takes n raw bytes; call need() first.
     const std::uint8_t *take(std::size_t n) {

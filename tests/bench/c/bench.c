@@ -1,0 +1,258 @@
+/* Benchmark of the generated C package mipcodec (issue 8): a plain timed loop.
+ *
+ *   bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode frame|decode|copy]
+ *
+ * For every stream DIR/<name>.bin (with its sidecar DIR/<name>.json) it times, best of N passes
+ * over the whole file in memory (read once, not timed):
+ *   lang=c        mode=frame   mip_parser_feed + flush: every packet reported, garbage skipped
+ *   lang=c        mode=decode  the same, plus field splitting and mip_decode_field of every field
+ *   lang=baseline mode=copy    memchr(sync byte) + memcpy of each packet into a buffer
+ * and prints one line per measurement:
+ *   BENCH lang=c stream=accel_gyro mode=frame packets=N bytes=B seconds=S
+ * The packet and field counts are checked against the sidecar (exit 1 on mismatch); a checksum
+ * of the decoded values is printed to stderr so the work cannot be optimised away.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "mipcodec/mipcodec.h"
+
+static const char *const k_streams[] = {"accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage"};
+
+typedef struct {
+    uint8_t *data;
+    size_t len;
+    uint64_t packets; /* sidecar */
+    uint64_t fields;
+} stream_t;
+
+typedef struct {
+    uint64_t packets;
+    uint64_t fields;
+    uint64_t errors;
+    uint64_t check; /* consumes the decoded values */
+} counts_t;
+
+static double now(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static int read_file(const char *path, uint8_t **data, size_t *len) {
+    FILE *f = fopen(path, "rb");
+    long n;
+    if (!f) {
+        return -1;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return -1;
+    }
+    *data = malloc((size_t)n + 1);
+    if (!*data || fread(*data, 1, (size_t)n, f) != (size_t)n) {
+        fclose(f);
+        return -1;
+    }
+    fclose(f);
+    *len = (size_t)n;
+    return 0;
+}
+
+/* The integer value of "key": in a flat JSON object (the sidecar). */
+static int json_u64(const char *json, const char *key, uint64_t *out) {
+    char pat[64];
+    const char *p;
+    snprintf(pat, sizeof pat, "\"%s\":", key);
+    p = strstr(json, pat);
+    if (!p) {
+        return -1;
+    }
+    *out = strtoull(p + strlen(pat), NULL, 10);
+    return 0;
+}
+
+static int load(const char *dir, const char *name, stream_t *s) {
+    char path[4096];
+    uint8_t *json;
+    size_t json_len;
+    snprintf(path, sizeof path, "%s/%s.json", dir, name);
+    if (read_file(path, &json, &json_len) != 0) {
+        fprintf(stderr, "bench: cannot read %s\n", path);
+        return -1;
+    }
+    json[json_len] = 0;
+    if (json_u64((const char *)json, "packets", &s->packets) != 0 ||
+        json_u64((const char *)json, "fields", &s->fields) != 0) {
+        fprintf(stderr, "bench: %s has no packets/fields counts\n", path);
+        free(json);
+        return -1;
+    }
+    free(json);
+    snprintf(path, sizeof path, "%s/%s.bin", dir, name);
+    if (read_file(path, &s->data, &s->len) != 0) {
+        fprintf(stderr, "bench: cannot read %s\n", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- frame: the callback parser ---- */
+
+static void on_frame(void *ctx, const mip_event_t *ev) {
+    counts_t *c = ctx;
+    if (ev->kind == MIP_EVENT_PACKET) {
+        c->packets++;
+        c->check += ev->length + ev->packet[MIP_SET_OFFSET];
+    }
+}
+
+/* ---- decode: callback parser + field iterator + dispatch ---- */
+
+static void on_decode(void *ctx, const mip_event_t *ev) {
+    counts_t *c = ctx;
+    mip_field_iter_t it;
+    mip_field_entry_t e;
+    mip_field_value_t value;
+    uint8_t set;
+    if (ev->kind != MIP_EVENT_PACKET) {
+        return;
+    }
+    c->packets++;
+    set = mip_packet_set(ev->packet);
+    mip_field_iter_init(&it, set, mip_packet_payload(ev->packet), mip_packet_payload_length(ev->packet));
+    while (mip_field_iter_next(&it, &e)) {
+        uint64_t word = 0;
+        if (e.kind != MIP_ENTRY_FIELD ||
+            mip_decode_field(set, e.descriptor, e.data, e.length, MIP_DEVICE_ANY, &value, NULL) != MIP_OK) {
+            c->errors++;
+            continue;
+        }
+        c->fields++;
+        /* the first 8 bytes of the decoded struct (the first float of scaled accel / gyro, ...) */
+        memcpy(&word, &value.u, sizeof word);
+        c->check += word ^ (uint64_t)value.id;
+    }
+}
+
+/* ---- baseline: memchr + memcpy ---- */
+
+static void copy_pass(const stream_t *s, counts_t *c) {
+    static uint8_t buf[MIP_MAX_PACKET];
+    const uint8_t *p = s->data;
+    const uint8_t *end = s->data + s->len;
+    while (p + MIP_HEADER_SIZE <= end) {
+        size_t total;
+        if (*p != MIP_SYNC_0) {
+            p = memchr(p, MIP_SYNC_0, (size_t)(end - p));
+        }
+        if (!p || p + MIP_HEADER_SIZE > end) {
+            break;
+        }
+        total = MIP_HEADER_SIZE + (size_t)p[MIP_LENGTH_OFFSET] + MIP_CHECKSUM_SIZE;
+        if (p[1] != MIP_SYNC_1 || total > (size_t)(end - p)) {
+            p++;
+            continue;
+        }
+        memcpy(buf, p, total);
+        c->packets++;
+        c->check += buf[total - 1];
+        p += total;
+    }
+}
+
+typedef enum { MODE_FRAME, MODE_DECODE, MODE_COPY } mode_t_;
+
+static void run_pass(const stream_t *s, mode_t_ mode, counts_t *c) {
+    mip_parser_t parser;
+    memset(c, 0, sizeof *c);
+    if (mode == MODE_COPY) {
+        copy_pass(s, c);
+        return;
+    }
+    mip_parser_init(&parser);
+    mip_parser_feed(&parser, s->data, s->len, mode == MODE_FRAME ? on_frame : on_decode, c);
+    mip_parser_flush(&parser, mode == MODE_FRAME ? on_frame : on_decode, c);
+}
+
+int main(int argc, char **argv) {
+    static const char *const mode_names[] = {"frame", "decode", "copy"};
+    const char *dir = NULL;
+    int passes = 5;
+    int first_mode = MODE_FRAME;
+    const char *only = NULL;
+    const char *only_mode = NULL;
+    int failed = 0;
+    size_t si;
+    int i;
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--passes") == 0 && i + 1 < argc) {
+            passes = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--mode") == 0 && i + 1 < argc) {
+            only_mode = argv[++i];
+        } else if (strcmp(argv[i], "--stream") == 0 && i + 1 < argc) {
+            only = argv[++i];
+        } else if (strcmp(argv[i], "--baseline-only") == 0) {
+            first_mode = MODE_COPY;
+        } else if (!dir) {
+            dir = argv[i];
+        } else {
+            dir = NULL;
+            break;
+        }
+    }
+    if (!dir || passes < 1) {
+        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode frame|decode|copy]\n");
+        return 2;
+    }
+    for (si = 0; si < sizeof k_streams / sizeof k_streams[0]; si++) {
+        stream_t s;
+        int m;
+        if (only && strcmp(only, k_streams[si]) != 0) {
+            continue;
+        }
+        if (load(dir, k_streams[si], &s) != 0) {
+            return 1;
+        }
+        for (m = first_mode; m <= MODE_COPY; m++) {
+            double best = 1e30;
+            counts_t c;
+            int k;
+            if (only_mode && strcmp(only_mode, mode_names[m]) != 0) {
+                continue;
+            }
+            for (k = 0; k < passes; k++) {
+                double t0 = now();
+                double dt;
+                run_pass(&s, (mode_t_)m, &c);
+                dt = now() - t0;
+                if (dt < best) {
+                    best = dt;
+                }
+            }
+            if (m != MODE_COPY && c.packets != s.packets) {
+                fprintf(stderr, "bench: %s %s: %llu packets, the sidecar says %llu\n", k_streams[si],
+                        mode_names[m], (unsigned long long)c.packets, (unsigned long long)s.packets);
+                failed = 1;
+            }
+            if (m == MODE_DECODE && (c.fields != s.fields || c.errors != 0)) {
+                fprintf(stderr, "bench: %s decode: %llu fields (%llu errors), the sidecar says %llu\n",
+                        k_streams[si], (unsigned long long)c.fields, (unsigned long long)c.errors,
+                        (unsigned long long)s.fields);
+                failed = 1;
+            }
+            printf("BENCH lang=%s stream=%s mode=%s packets=%llu bytes=%zu seconds=%.6f\n",
+                   m == MODE_COPY ? "baseline" : "c", k_streams[si], mode_names[m],
+                   (unsigned long long)(m == MODE_COPY ? s.packets : c.packets), s.len, best);
+            fprintf(stderr, "bench: %s %s check %016llx\n", k_streams[si], mode_names[m],
+                    (unsigned long long)c.check);
+            fflush(stdout);
+        }
+        free(s.data);
+    }
+    return failed;
+}

@@ -1,0 +1,249 @@
+"""Builds and runs the benchmarks of every language (issue 8) and prints one table.
+
+    python tests/bench/run.py [--langs c,cpp,rust,python] [--scale 1.0] [--passes 5]
+
+`make bench` runs it (BENCH_ARGS="..." passes arguments). Steps:
+  1. the streams of tests/bench/streams.py in build/bench/ (written again only when missing, when
+     --scale changed or when streams.py changed);
+  2. each language's benchmark, built with release flags into build/bench/bin/ (C: gcc -O2,
+     C++: g++ -O2; Rust: cargo --release; Python: the package as installed in this interpreter);
+  3. their `BENCH lang=.. stream=.. mode=.. packets=N bytes=B seconds=S` lines, collected into a
+     table: language, stream, mode, Mpkt/s, MB/s and the ratio to the baseline (a memchr+memcpy
+     pass in C over the same bytes, measured in the same run) so figures from a noisy machine
+     can be compared.
+A language whose benchmark directory does not exist is skipped with a message. The exit status
+is non-zero when a benchmark failed to build or run, or reported counts that do not match the
+stream's sidecar (each benchmark checks them and exits non-zero).
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import os
+import platform
+import shlex
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+BENCH = ROOT / "tests" / "bench"
+STREAMS = ("accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage")
+LANGS = ("c", "cpp", "rust", "python")
+# Row order of the table: the baseline first, then the languages in --langs order.
+LANG_ROWS = {
+    "c": ("c",),
+    "cpp": ("cpp",),
+    "rust": ("rust",),
+    "python": ("python", "python-pure"),
+}
+
+
+def log(msg: str) -> None:
+    print(f"bench: {msg}", file=sys.stderr, flush=True)
+
+
+def streams(out: Path, scale: float) -> None:
+    """Writes the streams unless they exist for this scale and this version of streams.py."""
+    script = BENCH / "streams.py"
+    stamp = out / "streams.stamp"
+    want = f"scale={scale!r} streams.py={hashlib.sha256(script.read_bytes()).hexdigest()}\n"
+    have = all((out / f"{s}{ext}").is_file() for s in STREAMS for ext in (".bin", ".json"))
+    if have and stamp.is_file() and stamp.read_text() == want:
+        return
+    log(f"writing the streams (scale {scale}) into {out.relative_to(ROOT)}/")
+    subprocess.run([sys.executable, str(script), "--out", str(out), "--scale", repr(scale)], check=True)
+    stamp.write_text(want)
+
+
+def stale(target: Path, inputs: list[Path]) -> bool:
+    if not target.is_file():
+        return True
+    t = target.stat().st_mtime
+    return any(p.stat().st_mtime > t for p in inputs)
+
+
+def build_c(bindir: Path) -> Path:
+    pkg = ROOT / "generated" / "c" / "mipcodec"
+    sources = sorted((pkg / "src").glob("*.c")) + sorted((pkg / "src" / "sets").glob("*.c"))
+    main = BENCH / "c" / "bench.c"
+    exe = bindir / "bench-c"
+    headers = sorted((pkg / "include").rglob("*.h")) + sorted((pkg / "src").glob("*.h"))
+    if stale(exe, [main, *sources, *headers]):
+        cc = os.environ.get("CC", "gcc")
+        cmd = [cc, "-O2", "-std=c99", "-Wall", "-Wextra", "-Werror", "-I", str(pkg / "include")]
+        cmd += ["-I", str(pkg / "src"), str(main), *map(str, sources), "-o", str(exe)]
+        log("building the C benchmark: " + shlex.join([cc, "-O2", "-std=c99", "..."]))
+        subprocess.run(cmd, check=True)
+    return exe
+
+
+def build_cpp(bindir: Path) -> Path:
+    inc = ROOT / "generated" / "cpp" / "mipcodec" / "include"
+    main = BENCH / "cpp" / "bench.cpp"
+    exe = bindir / "bench-cpp"
+    if stale(exe, [main, *sorted(inc.rglob("*.hpp"))]):
+        cxx = os.environ.get("CXX", "g++")
+        cmd = [cxx, "-O2", "-std=c++17", "-Wall", "-Wextra", "-Werror", "-I", str(inc), str(main), "-o", str(exe)]
+        log("building the C++ benchmark: " + shlex.join([cxx, "-O2", "-std=c++17", "..."]))
+        subprocess.run(cmd, check=True)
+    return exe
+
+
+def commands(langs: list[str], out: Path, passes: int) -> list[tuple[str, list[str] | None, str]]:
+    """(name, command or None when skipped, skip reason) per benchmark to run."""
+    bindir = out / "bin"
+    bindir.mkdir(parents=True, exist_ok=True)
+    runs: list[tuple[str, list[str] | None, str]] = []
+    c_args = [str(out), "--passes", str(passes)]
+    # The C benchmark also measures the baseline; without C in --langs it measures only that.
+    runs.append(("c" if "c" in langs else "baseline", [str(build_c(bindir)), *c_args], ""))
+    if "c" not in langs:
+        runs[-1][1].append("--baseline-only")
+    if "cpp" in langs:
+        runs.append(("cpp", [str(build_cpp(bindir)), *c_args], ""))
+    if "rust" in langs:
+        manifest = BENCH / "rust" / "Cargo.toml"
+        if manifest.is_file():
+            cmd = ["cargo", "run", "--quiet", "--release", "--manifest-path", str(manifest), "--", str(out)]
+            runs.append(("rust", cmd, ""))
+        else:
+            runs.append(("rust", None, f"{manifest.relative_to(ROOT)} not found"))
+    if "python" in langs:
+        script = BENCH / "python" / "bench.py"
+        if script.is_file():
+            runs.append(("python", [sys.executable, str(script), str(out)], ""))
+        else:
+            runs.append(("python", None, f"{script.relative_to(ROOT)} not found"))
+    return runs
+
+
+def parse(line: str) -> dict[str, str] | None:
+    if not line.startswith("BENCH "):
+        return None
+    fields = dict(kv.split("=", 1) for kv in line.split()[1:] if "=" in kv)
+    need = ("lang", "stream", "mode", "packets", "bytes", "seconds")
+    return fields if all(k in fields for k in need) else None
+
+
+def run(name: str, cmd: list[str]) -> tuple[list[dict[str, str]], bool]:
+    log(f"running {name}: {shlex.join(cmd)}")
+    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, text=True)
+    rows = []
+    assert proc.stdout is not None
+    for line in proc.stdout:
+        row = parse(line.strip())
+        if row:
+            rows.append(row)
+            print(line.rstrip(), file=sys.stderr, flush=True)
+        elif line.strip():
+            print(f"  {name}: {line.rstrip()}", file=sys.stderr, flush=True)
+    ok = proc.wait() == 0
+    if not ok:
+        log(f"{name}: exit status {proc.returncode}")
+    if not rows:
+        log(f"{name}: no BENCH lines")
+        ok = False
+    return rows, ok
+
+
+def table(rows: list[dict[str, str]], langs: list[str]) -> str:
+    base: dict[str, float] = {}
+    for r in rows:
+        if r["lang"] == "baseline" and r["mode"] == "copy":
+            base[r["stream"]] = int(r["bytes"]) / float(r["seconds"])
+    order = ["baseline"] + [row for lang in langs for row in LANG_ROWS[lang]]
+    lang_rank = {name: i for i, name in enumerate(order)}
+    mode_rank = {"copy": 0, "frame": 1, "decode": 2}
+    stream_rank = {s: i for i, s in enumerate(STREAMS)}
+
+    def key(r: dict[str, str]):
+        return (
+            lang_rank.get(r["lang"], len(order)),
+            r["lang"],
+            stream_rank.get(r["stream"], len(STREAMS)),
+            r["stream"],
+            mode_rank.get(r["mode"], 9),
+        )
+
+    head = ("language", "stream", "mode", "Mpkt/s", "MB/s", "x baseline")
+    lines = [head]
+    for r in sorted(rows, key=key):
+        seconds = float(r["seconds"])
+        pps = int(r["packets"]) / seconds / 1e6 if seconds > 0 else 0.0
+        bps = int(r["bytes"]) / seconds if seconds > 0 else 0.0
+        ratio = f"{bps / base[r['stream']]:.2f}" if r["stream"] in base and base[r["stream"]] > 0 else "-"
+        lines.append((r["lang"], r["stream"], r["mode"], f"{pps:.2f}", f"{bps / 1e6:.0f}", ratio))
+    widths = [max(len(line[i]) for line in lines) for i in range(len(head))]
+    out = []
+    for n, line in enumerate(lines):
+        cells = [c.ljust(w) if i < 3 else c.rjust(w) for i, (c, w) in enumerate(zip(line, widths))]
+        out.append("| " + " | ".join(cells) + " |")
+        if n == 0:
+            out.append(
+                "|" + "|".join("-" * (w + 2) if i < 3 else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|"
+            )
+    return "\n".join(out)
+
+
+def machine() -> str:
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return f"{cpu}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}"
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--langs", default=",".join(LANGS), help="comma-separated subset of c,cpp,rust,python")
+    ap.add_argument("--scale", type=float, default=1.0, help="stream size factor (streams.py --scale)")
+    ap.add_argument("--passes", type=int, default=5, help="passes per measurement, best kept (C and C++)")
+    ap.add_argument("--out", default=str(ROOT / "build" / "bench"), help="stream and binary directory")
+    args = ap.parse_args()
+    langs = [x for x in (s.strip() for s in args.langs.split(",")) if x]
+    unknown = [x for x in langs if x not in LANGS]
+    if unknown or not langs:
+        ap.error(f"unknown language(s) {','.join(unknown)}: choose from {','.join(LANGS)}")
+    out = Path(args.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    streams(out, args.scale)
+    failed: list[str] = []
+    skipped: list[str] = []
+    rows: list[dict[str, str]] = []
+    try:
+        runs = commands(langs, out, args.passes)
+    except subprocess.CalledProcessError as e:
+        log(f"build failed: {e}")
+        return 1
+    for name, cmd, why in runs:
+        if cmd is None:
+            log(f"{name}: skipped ({why}; its benchmark has not landed)")
+            skipped.append(name)
+            continue
+        try:
+            got, ok = run(name, cmd)
+        except OSError as e:
+            got, ok = [], False
+            log(f"{name}: cannot run: {e}")
+        rows += got
+        if not ok:
+            failed.append(name)
+    print(f"Benchmarks (issue 8): {machine()}; best of {args.passes} passes; scale {args.scale}")
+    print()
+    print(table(rows, langs))
+    if skipped:
+        print(f"\nskipped: {', '.join(skipped)}")
+    if failed:
+        print(f"\nFAILED: {', '.join(failed)}")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
