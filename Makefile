@@ -30,8 +30,8 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 test: generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions
 
 test-generator: $(VENV)/.stamp
-	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz
-	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz
+	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz tests/bench
+	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz tests/bench
 	$(PY) -m pytest -q tests/generator
 
 $(addprefix test-,$(LANGS)): test-%: generate

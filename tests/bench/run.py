@@ -36,7 +36,7 @@ LANG_ROWS = {
     "c": ("c",),
     "cpp": ("cpp",),
     "rust": ("rust",),
-    "python": ("python", "python-pure"),
+    "python": ("python", "python-columns", "python-pure"),
 }
 
 
@@ -106,6 +106,7 @@ def commands(langs: list[str], out: Path, passes: int) -> list[tuple[str, list[s
     if "rust" in langs:
         manifest = BENCH / "rust" / "Cargo.toml"
         if manifest.is_file():
+            # the build stays out of the source tree (CARGO_TARGET_DIR, set in run())
             cmd = ["cargo", "run", "--quiet", "--release", "--manifest-path", str(manifest), "--", str(out)]
             runs.append(("rust", cmd, ""))
         else:
@@ -129,7 +130,8 @@ def parse(line: str) -> dict[str, str] | None:
 
 def run(name: str, cmd: list[str]) -> tuple[list[dict[str, str]], bool]:
     log(f"running {name}: {shlex.join(cmd)}")
-    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, text=True)
+    env = dict(os.environ, CARGO_TARGET_DIR=str(ROOT / "build" / "bench" / "rust"))
+    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, text=True, env=env)
     rows = []
     assert proc.stdout is not None
     for line in proc.stdout:
