@@ -182,6 +182,20 @@ std::vector<Ev> events(const std::uint8_t *stream, std::size_t size, fz::Chunks 
     return out;
 }
 
+// The stream (n > 0) wrapped as (set = first byte, payload = the rest, at most the maximum) into
+// a packet with a valid checksum; it must parse as exactly one packet (`each` sees it).
+template <class Each> std::vector<std::uint8_t> wrapped(const std::uint8_t *stream, std::size_t n, Each &&each) {
+    const std::size_t plen = n - 1 < pkg::kMaxPayload ? n - 1 : pkg::kMaxPayload;
+    pkg::PacketBuilder b(stream[0]);
+    FZ_CHECK(b.append(stream + 1, plen) == pkg::EncodeError::none, "append of %zu bytes", plen);
+    const pkg::PacketView p = b.finish();
+    std::vector<std::uint8_t> built(p.data, p.data + p.size);
+    const auto one = events(built.data(), built.size(), nullptr, each);
+    FZ_CHECK(one.size() == 1 && one[0].kind == Kind::packet && one[0].length == built.size(),
+             "a built packet parses as %zu events", one.size());
+    return built;
+}
+
 } // namespace fz_parser
 
 extern "C" int fz_cpp_parser(const std::uint8_t *data, std::size_t size) {
@@ -209,15 +223,8 @@ extern "C" int fz_cpp_parser(const std::uint8_t *data, std::size_t size) {
     const auto chunked = events(stream, n, &plan, [](bool, std::uint64_t, const std::uint8_t *, std::size_t) {});
     FZ_CHECK(whole == chunked, "events differ when fed in chunks (%zu / %zu)", whole.size(), chunked.size());
     if (n > 0) {
-        const std::size_t plen = n - 1 < pkg::kMaxPayload ? n - 1 : pkg::kMaxPayload;
-        pkg::PacketBuilder b(stream[0]);
-        FZ_CHECK(b.append(stream + 1, plen) == pkg::EncodeError::none, "append of %zu bytes", plen);
-        const pkg::PacketView p = b.finish();
-        const std::vector<std::uint8_t> built(p.data, p.data + p.size);
-        const auto one = events(built.data(), built.size(), nullptr,
-                                [](bool, std::uint64_t, const std::uint8_t *, std::size_t) {});
-        FZ_CHECK(one.size() == 1 && one[0].kind == Kind::packet && one[0].length == built.size(),
-                 "a built packet parses as %zu events", one.size());
+        const std::vector<std::uint8_t> built =
+            wrapped(stream, n, [](bool, std::uint64_t, const std::uint8_t *, std::size_t) {});
         pkg::SampleTracker fresh;
         check_packet(built.data(), built.size(), 0, device, fresh);
     }
@@ -272,14 +279,7 @@ extern "C" int fz_cpp_decode(const std::uint8_t *data, std::size_t size) {
     };
     events(stream, n, nullptr, each);
     if (n > 0) {
-        const std::size_t plen = n - 1 < pkg::kMaxPayload ? n - 1 : pkg::kMaxPayload;
-        pkg::PacketBuilder b(stream[0]);
-        FZ_CHECK(b.append(stream + 1, plen) == pkg::EncodeError::none, "append of %zu bytes", plen);
-        const pkg::PacketView p = b.finish();
-        const std::vector<std::uint8_t> built(p.data, p.data + p.size);
-        const auto one = events(built.data(), built.size(), nullptr, each);
-        FZ_CHECK(one.size() == 1 && one[0].kind == Kind::packet && one[0].length == built.size(),
-                 "a built packet parses as %zu events", one.size());
+        wrapped(stream, n, each);
     }
     return 0;
 }
