@@ -52,9 +52,17 @@ def streams(out: Path, scale: float) -> None:
     have = all((out / f"{s}{ext}").is_file() for s in STREAMS for ext in (".bin", ".json"))
     if have and stamp.is_file() and stamp.read_text() == want:
         return
-    log(f"writing the streams (scale {scale}) into {out.relative_to(ROOT)}/")
+    log(f"writing the streams (scale {scale}) into {shown(out)}/")
     subprocess.run([sys.executable, str(script), "--out", str(out), "--scale", repr(scale)], check=True)
     stamp.write_text(want)
+
+
+def shown(path: Path) -> str:
+    """path relative to the project when it is inside, else as given (--out may be anywhere)."""
+    try:
+        return str(path.relative_to(ROOT))
+    except ValueError:
+        return str(path)
 
 
 def stale(target: Path, inputs: list[Path]) -> bool:

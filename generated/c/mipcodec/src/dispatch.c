@@ -2199,8 +2199,11 @@ static mip_status_t decode_layout(mip_field_id_t id, const uint8_t *data, size_t
     }
 }
 
-mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
-                              mip_device_t device, mip_field_value_t *out, mip_decode_error_t *err) {
+/* Every case of mip_decode_field: several layouts per field, a device to choose among them, error
+ * details. Out of line (MIP_NOINLINE) so that the common case below stays a short function. */
+static MIP_NOINLINE mip_status_t decode_field_general(uint8_t set, uint8_t descriptor, const uint8_t *data,
+                                                      size_t len, mip_device_t device, mip_field_value_t *out,
+                                                      mip_decode_error_t *err) {
     mip_status_t why = MIP_ERR_UNKNOWN_SET;
     const mip_field_info_t *f = find_field(set, descriptor, &why);
     size_t first;
@@ -2234,6 +2237,25 @@ mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *da
     }
     out->id = MIP_FIELD_NONE;
     return MIP_ERR_DECODE;
+}
+
+/* The common case first: a field its set defines, with one layout (the device does not choose
+ * among one). Its decoder fills *err itself when it fails (as decode_field_general's second run
+ * does). Anything else goes to decode_field_general, which starts over. */
+mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
+                              mip_device_t device, mip_field_value_t *out, mip_decode_error_t *err) {
+    const uint16_t *table = k_sets[set];
+    if (table && table[descriptor] != 0) {
+        const mip_field_info_t *f = &k_fields[table[descriptor] - 1];
+        if (f->layout_count == 1) {
+            if (decode_layout(f->first_layout, data, len, out, err) == MIP_OK) {
+                return MIP_OK;
+            }
+            out->id = MIP_FIELD_NONE;
+            return MIP_ERR_DECODE;
+        }
+    }
+    return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
 mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {

@@ -3,54 +3,16 @@
 
 #include <stdio.h>
 
-void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const uint8_t *payload, size_t len) {
-    it->set = set;
-    it->payload = payload;
-    it->len = payload ? len : 0;
-    it->pos = 0;
-}
-
-static bool trailing(mip_field_iter_t *it, mip_field_entry_t *entry, mip_trailing_kind_t why) {
+bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, uint8_t length_byte,
+                              mip_trailing_kind_t why) {
     entry->kind = MIP_ENTRY_TRAILING;
     entry->offset = it->pos;
     entry->descriptor = 0;
     entry->data = it->payload + it->pos;
     entry->length = it->len - it->pos;
     entry->trailing = why;
+    entry->length_byte = length_byte;
     it->pos = it->len;
-    return true;
-}
-
-bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry) {
-    size_t left = it->len - it->pos;
-    int data_len;
-    size_t total;
-    const uint8_t *head;
-    if (left == 0) {
-        return false;
-    }
-    entry->length_byte = 0;
-    if (left < MIP_FIELD_HEADER_SIZE) {
-        return trailing(it, entry, MIP_TRAILING_SHORT_HEADER);
-    }
-    head = it->payload + it->pos;
-    entry->length_byte = head[MIP_FIELD_LENGTH_OFFSET];
-    data_len = (int)head[MIP_FIELD_LENGTH_OFFSET] -
-               mip_field_length_adjust(it->set, head[MIP_FIELD_DESCRIPTOR_OFFSET]);
-    if (data_len < 0) {
-        return trailing(it, entry, MIP_TRAILING_SHORT_LENGTH);
-    }
-    total = MIP_FIELD_HEADER_SIZE + (size_t)data_len;
-    if (total > left) {
-        return trailing(it, entry, MIP_TRAILING_OVERRUN);
-    }
-    entry->kind = MIP_ENTRY_FIELD;
-    entry->offset = it->pos;
-    entry->descriptor = head[MIP_FIELD_DESCRIPTOR_OFFSET];
-    entry->data = head + MIP_FIELD_HEADER_SIZE;
-    entry->length = total - MIP_FIELD_HEADER_SIZE;
-    entry->trailing = MIP_TRAILING_SHORT_HEADER;
-    it->pos += total;
     return true;
 }
 

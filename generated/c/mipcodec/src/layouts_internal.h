@@ -6,6 +6,16 @@
 #include "json_reader.h"
 #include "json_writer.h"
 
+/* Keeps a rarely taken path (the general reader, error details) out of line so that the common
+ * path around it stays a short function without register saves. */
+#if defined(__GNUC__) || defined(__clang__)
+#define MIP_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define MIP_NOINLINE __declspec(noinline)
+#else
+#define MIP_NOINLINE
+#endif
+
 void mip_ack_nack_to_json(mip_jw_t *w, const mip_ack_nack_t *in);
 int mip_ack_nack_from_json(mip_jr_t *jr, size_t pos, mip_ack_nack_t *out);
 void mip_base_ping_to_json(mip_jw_t *w, const mip_base_ping_t *in);

@@ -52,15 +52,21 @@ static int mip_ack_nack_load(const uint8_t *d, mip_ack_nack_t *out) {
     return 0;
 }
 
-mip_status_t mip_ack_nack_decode(const uint8_t *data, size_t len, mip_ack_nack_t *out,
-                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_ack_nack_decode_read(const uint8_t *data, size_t len,
+                                                          mip_ack_nack_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_ack_nack_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_ack_nack_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_ack_nack_decode(const uint8_t *data, size_t len, mip_ack_nack_t *out,
+                                 mip_decode_error_t *err) {
+    if (len == 2 && mip_ack_nack_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_ack_nack_decode_read(data, len, out, err);
 }
 
 void mip_ack_nack_to_json(mip_jw_t *w, const mip_ack_nack_t *in) {

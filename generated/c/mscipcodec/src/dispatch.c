@@ -362,9 +362,12 @@ static mscip_status_t decode_layout(mscip_field_id_t id, const uint8_t *data, si
     }
 }
 
-mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
-                                  mscip_device_t device, mscip_field_value_t *out,
-                                  mscip_decode_error_t *err) {
+/* Every case of mscip_decode_field: several layouts per field, a device to choose among them, error
+ * details. Out of line (MSCIP_NOINLINE) so that the common case below stays a short function. */
+static MSCIP_NOINLINE mscip_status_t decode_field_general(uint8_t set, uint8_t descriptor,
+                                                          const uint8_t *data, size_t len,
+                                                          mscip_device_t device, mscip_field_value_t *out,
+                                                          mscip_decode_error_t *err) {
     mscip_status_t why = MSCIP_ERR_UNKNOWN_SET;
     const mscip_field_info_t *f = find_field(set, descriptor, &why);
     size_t first;
@@ -398,6 +401,26 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
     }
     out->id = MSCIP_FIELD_NONE;
     return MSCIP_ERR_DECODE;
+}
+
+/* The common case first: a field its set defines, with one layout (the device does not choose
+ * among one). Its decoder fills *err itself when it fails (as decode_field_general's second run
+ * does). Anything else goes to decode_field_general, which starts over. */
+mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
+                                  mscip_device_t device, mscip_field_value_t *out,
+                                  mscip_decode_error_t *err) {
+    const uint16_t *table = k_sets[set];
+    if (table && table[descriptor] != 0) {
+        const mscip_field_info_t *f = &k_fields[table[descriptor] - 1];
+        if (f->layout_count == 1) {
+            if (decode_layout(f->first_layout, data, len, out, err) == MSCIP_OK) {
+                return MSCIP_OK;
+            }
+            out->id = MSCIP_FIELD_NONE;
+            return MSCIP_ERR_DECODE;
+        }
+    }
+    return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
 mscip_status_t mscip_encode_field(const mscip_field_value_t *value, uint8_t *buf, size_t cap,

@@ -13,17 +13,21 @@ static uint64_t load_le64(const uint8_t *b) {
 }
 
 /*
- * Fletcher-16 with both sums modulo 256, eight bytes at a time. Over blocks B_0 .. B_{K-1} of
- * eight bytes (block sums S_k, weighted sums W_k = 8 b0 + 7 b1 + .. + 1 b7) the byte-serial
+ * Fletcher-16 with both sums modulo 256, eight bytes at a time. Over words B_0 .. B_{K-1} of
+ * eight bytes (word sums S_k, weighted sums W_k = 8 b0 + 7 b1 + .. + 1 b7) the byte-serial
  * recurrence gives sum1 = sum1_0 + sum_k S_k and
  * sum2 = sum2_0 + 8 K sum1_0 + 8 sum_k (K - 1 - k) S_k + sum_k W_k. The even and odd bytes of a
  * little-endian word are spread into four 16-bit lanes and summed lane by lane:
- *   E, O = sum of the even, odd lanes; R = running sum of both; Q = sum of R after each block,
- * so sum_k S_k = hsum(R), sum_k (K - 1 - k) S_k = hsum(Q) - hsum(R) and sum_k W_k comes from E
- * and O with the lane weights (8, 6, 4, 2) and (7, 5, 3, 1). Only the sums modulo 256 matter, so
- * every lane is reduced modulo 256 (masked) after each add and never carries into the next; a
- * multiply by lane constants adds the lanes into the top one (at most 255 * 20). Unsigned
- * arithmetic wraps modulo 2^64, a multiple of 256.
+ *   E, O = sum of the even, odd lanes; Q = sum of E + O after each word,
+ * so sum_k S_k = hsum(E + O), sum_k (K - 1 - k) S_k = hsum(Q) - hsum(E + O) and sum_k W_k comes
+ * from E and O with the lane weights (8, 6, 4, 2) and (7, 5, 3, 1).
+ * No lane may carry into the next: over a run of n words a lane of E or O reaches at most 255 n,
+ * and Q, reduced modulo 256 (masked: only the sums modulo 256 matter) after each add, at most
+ * 255 + 510 n; both stay below 65536 for n <= 128 (1024 bytes, more than a packet). So words go
+ * in runs of at most 128 with one mask per word; after a run every lane is reduced, a multiply by
+ * lane constants adds the lanes into the top one (at most 255 * 20) and the run's sums are folded
+ * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
+ * of 256.
  */
 void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]) {
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
@@ -33,23 +37,29 @@ void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM
     unsigned sum1;
     unsigned sum2;
     size_t i = 0;
-    if (len >= 8) {
-        uint64_t e_sum = 0;
-        uint64_t o_sum = 0;
-        uint64_t r = 0;
+    while (len - i >= 8) {
+        size_t words = (len - i) / 8;
+        size_t end;
+        uint64_t e = 0;
+        uint64_t o = 0;
         uint64_t q = 0;
-        for (; i + 8 <= len; i += 8) {
-            uint64_t w = load_le64(bytes + i);
-            uint64_t even = w & lanes;       /* b0, b2, b4, b6 */
-            uint64_t odd = (w >> 8) & lanes; /* b1, b3, b5, b7 */
-            e_sum = (e_sum + even) & lanes;
-            o_sum = (o_sum + odd) & lanes;
-            r = (r + even + odd) & lanes;
-            q = (q + r) & lanes;
+        uint64_t r1;
+        if (words > 128) {
+            words = 128;
         }
-        s1 = (r * ones) >> 48;
-        s2 = 8 * (((q * ones) >> 48) - s1) + ((e_sum * 0x0008000600040002u) >> 48) +
-             ((o_sum * 0x0007000500030001u) >> 48);
+        end = i + 8 * words;
+        for (; i < end; i += 8) {
+            uint64_t w = load_le64(bytes + i);
+            e += w & lanes;        /* b0, b2, b4, b6 */
+            o += (w >> 8) & lanes; /* b1, b3, b5, b7 */
+            q = (q + e + o) & lanes;
+        }
+        e &= lanes;
+        o &= lanes;
+        r1 = ((e + o) * ones) >> 48;
+        s2 += 8 * words * s1 + 8 * (((q * ones) >> 48) - r1) + ((e * 0x0008000600040002u) >> 48) +
+              ((o * 0x0007000500030001u) >> 48);
+        s1 += r1;
     }
     for (; i < len; i++) {
         s1 += bytes[i];
@@ -73,18 +83,6 @@ bool mscip_packet_valid(const uint8_t *packet, size_t len) {
     }
     mscip_checksum(packet, MSCIP_HEADER_SIZE + payload, ck);
     return memcmp(ck, packet + MSCIP_HEADER_SIZE + payload, MSCIP_CHECKSUM_SIZE) == 0;
-}
-
-uint8_t mscip_packet_set(const uint8_t *packet) {
-    return packet[MSCIP_SET_OFFSET];
-}
-
-uint8_t mscip_packet_payload_length(const uint8_t *packet) {
-    return packet[MSCIP_LENGTH_OFFSET];
-}
-
-const uint8_t *mscip_packet_payload(const uint8_t *packet) {
-    return packet + MSCIP_HEADER_SIZE;
 }
 
 void mscip_packet_begin(mscip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {

@@ -6,6 +6,16 @@
 #include "json_reader.h"
 #include "json_writer.h"
 
+/* Keeps a rarely taken path (the general reader, error details) out of line so that the common
+ * path around it stays a short function without register saves. */
+#if defined(__GNUC__) || defined(__clang__)
+#define MSCIP_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define MSCIP_NOINLINE __declspec(noinline)
+#else
+#define MSCIP_NOINLINE
+#endif
+
 void mscip_ack_to_json(mscip_jw_t *w, const mscip_ack_t *in);
 int mscip_ack_from_json(mscip_jr_t *jr, size_t pos, mscip_ack_t *out);
 void mscip_base_ping_to_json(mscip_jw_t *w, const mscip_base_ping_t *in);

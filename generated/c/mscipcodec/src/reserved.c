@@ -52,15 +52,21 @@ static int mscip_ack_load(const uint8_t *d, mscip_ack_t *out) {
     return 0;
 }
 
-mscip_status_t mscip_ack_decode(const uint8_t *data, size_t len, mscip_ack_t *out,
-                                mscip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_ack_decode_read(const uint8_t *data, size_t len, mscip_ack_t *out,
+                                                           mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 2 && mscip_ack_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_ack_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_ack_decode(const uint8_t *data, size_t len, mscip_ack_t *out,
+                                mscip_decode_error_t *err) {
+    if (len == 2 && mscip_ack_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_ack_decode_read(data, len, out, err);
 }
 
 void mscip_ack_to_json(mscip_jw_t *w, const mscip_ack_t *in) {

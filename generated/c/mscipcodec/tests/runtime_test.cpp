@@ -70,27 +70,39 @@ TEST(Checksum, Fletcher16) {
     EXPECT_EQ(ck[1], 0);
 }
 
-// The checksum works eight bytes a step; it must equal the byte-serial definition
-// (sum1 += b, sum2 += sum1, modulo 256) for every length and alignment.
+// The checksum works eight bytes a step in runs of at most 128 words; it must equal the
+// byte-serial definition (sum1 += b, sum2 += sum1, modulo 256) for every length and alignment,
+// across run boundaries (1024 bytes) and with all bytes 0xFF (the largest lane sums).
+static void expect_byte_serial(const uint8_t *bytes, size_t len, const char *what) {
+    unsigned sum1 = 0, sum2 = 0;
+    for (size_t i = 0; i < len; i++) {
+        sum1 = (sum1 + bytes[i]) & 0xFFu;
+        sum2 = (sum2 + sum1) & 0xFFu;
+    }
+    uint8_t ck[MSCIP_CHECKSUM_SIZE];
+    mscip_checksum(bytes, len, ck);
+    ASSERT_EQ(ck[0], sum1) << what << ", length " << len;
+    ASSERT_EQ(ck[1], sum2) << what << ", length " << len;
+}
+
 TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
-    uint8_t bytes[300 + 7];
+    static uint8_t bytes[2100 + 7];
+    static uint8_t all_ff[2100];
     uint32_t state = 12345;
     for (uint8_t &b : bytes) {
         state = state * 1103515245u + 12345u;
         b = (uint8_t)(state >> 16);
     }
+    memset(all_ff, 0xFF, sizeof all_ff);
     for (size_t start = 0; start < 8; start++) {
         for (size_t len = 0; len <= 300; len++) {
-            unsigned sum1 = 0, sum2 = 0;
-            for (size_t i = 0; i < len; i++) {
-                sum1 = (sum1 + bytes[start + i]) & 0xFFu;
-                sum2 = (sum2 + sum1) & 0xFFu;
-            }
-            uint8_t ck[MSCIP_CHECKSUM_SIZE];
-            mscip_checksum(bytes + start, len, ck);
-            ASSERT_EQ(ck[0], sum1) << "start " << start << " length " << len;
-            ASSERT_EQ(ck[1], sum2) << "start " << start << " length " << len;
+            expect_byte_serial(bytes + start, len, start % 2 ? "random bytes, odd start" : "random bytes");
         }
+    }
+    const size_t long_lengths[] = {1016, 1023, 1024, 1025, 1031, 1032, 1040, 2047, 2048, 2049, 2100};
+    for (size_t len : long_lengths) {
+        expect_byte_serial(bytes + 3, len, "random bytes");
+        expect_byte_serial(all_ff, len, "all 0xFF");
     }
     // 261 bytes of 0xFF (-1 modulo 256): sum1 = -261 = 0xFB, sum2 = -(1 + .. + 261) = -34191 = 0x71
     uint8_t ones[261];

@@ -51,12 +51,19 @@ void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZ
 
 /** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
 bool mip_packet_valid(const uint8_t *packet, size_t len);
+/* The header accessors are inline: a decode loop calls them for every packet. */
 /** Descriptor set of a packet (at least MIP_HEADER_SIZE bytes). */
-uint8_t mip_packet_set(const uint8_t *packet);
+static inline uint8_t mip_packet_set(const uint8_t *packet) {
+    return packet[MIP_SET_OFFSET];
+}
 /** Payload length byte of a packet (at least MIP_HEADER_SIZE bytes). */
-uint8_t mip_packet_payload_length(const uint8_t *packet);
+static inline uint8_t mip_packet_payload_length(const uint8_t *packet) {
+    return packet[MIP_LENGTH_OFFSET];
+}
 /** Start of the payload of a packet. */
-const uint8_t *mip_packet_payload(const uint8_t *packet);
+static inline const uint8_t *mip_packet_payload(const uint8_t *packet) {
+    return packet + MIP_HEADER_SIZE;
+}
 
 /**
  * Builds one packet into a caller buffer: begin, add fields (or raw payload bytes), finish.

@@ -606,16 +606,22 @@ static int mip_aiding_echo_control_response_load(const uint8_t *d, mip_aiding_ec
     return 0;
 }
 
-mip_status_t mip_aiding_echo_control_response_decode(const uint8_t *data, size_t len,
-                                                     mip_aiding_echo_control_response_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_aiding_echo_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_aiding_echo_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_aiding_echo_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_echo_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_aiding_echo_control_response_decode(const uint8_t *data, size_t len,
+                                                     mip_aiding_echo_control_response_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 1 && mip_aiding_echo_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_aiding_echo_control_response_decode_read(data, len, out, err);
 }
 
 void mip_aiding_echo_control_response_to_json(mip_jw_t *w, const mip_aiding_echo_control_response_t *in) {

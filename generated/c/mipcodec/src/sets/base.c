@@ -475,16 +475,22 @@ static int mip_base_built_in_test_result_gx5_45_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_base_built_in_test_result_gx5_45_decode(const uint8_t *data, size_t len,
-                                                         mip_base_built_in_test_result_gx5_45_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_base_built_in_test_result_gx5_45_decode_read(
+    const uint8_t *data, size_t len, mip_base_built_in_test_result_gx5_45_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_base_built_in_test_result_gx5_45_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_result_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_base_built_in_test_result_gx5_45_decode(const uint8_t *data, size_t len,
+                                                         mip_base_built_in_test_result_gx5_45_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 4 && mip_base_built_in_test_result_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_base_built_in_test_result_gx5_45_decode_read(data, len, out, err);
 }
 
 void mip_base_built_in_test_result_gx5_45_to_json(mip_jw_t *w,
@@ -562,16 +568,22 @@ static int mip_base_built_in_test_result_cv7_ins_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_base_built_in_test_result_cv7_ins_decode(const uint8_t *data, size_t len,
-                                                          mip_base_built_in_test_result_cv7_ins_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_base_built_in_test_result_cv7_ins_decode_read(
+    const uint8_t *data, size_t len, mip_base_built_in_test_result_cv7_ins_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_base_built_in_test_result_cv7_ins_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_result_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_base_built_in_test_result_cv7_ins_decode(const uint8_t *data, size_t len,
+                                                          mip_base_built_in_test_result_cv7_ins_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 4 && mip_base_built_in_test_result_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_base_built_in_test_result_cv7_ins_decode_read(data, len, out, err);
 }
 
 void mip_base_built_in_test_result_cv7_ins_to_json(mip_jw_t *w,
@@ -1116,16 +1128,22 @@ static int mip_base_comm_port_speed_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_base_comm_port_speed_response_decode(const uint8_t *data, size_t len,
-                                                      mip_base_comm_port_speed_response_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_base_comm_port_speed_response_decode_read(
+    const uint8_t *data, size_t len, mip_base_comm_port_speed_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_base_comm_port_speed_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_comm_port_speed_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_base_comm_port_speed_response_decode(const uint8_t *data, size_t len,
+                                                      mip_base_comm_port_speed_response_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 5 && mip_base_comm_port_speed_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_base_comm_port_speed_response_decode_read(data, len, out, err);
 }
 
 void mip_base_comm_port_speed_response_to_json(mip_jw_t *w, const mip_base_comm_port_speed_response_t *in) {
@@ -1358,16 +1376,22 @@ static int mip_base_gps_time_update_cv7_ins_load(const uint8_t *d, mip_base_gps_
     return 0;
 }
 
-mip_status_t mip_base_gps_time_update_cv7_ins_decode(const uint8_t *data, size_t len,
-                                                     mip_base_gps_time_update_cv7_ins_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_base_gps_time_update_cv7_ins_decode_read(
+    const uint8_t *data, size_t len, mip_base_gps_time_update_cv7_ins_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_base_gps_time_update_cv7_ins_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_time_update_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_base_gps_time_update_cv7_ins_decode(const uint8_t *data, size_t len,
+                                                     mip_base_gps_time_update_cv7_ins_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 6 && mip_base_gps_time_update_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_base_gps_time_update_cv7_ins_decode_read(data, len, out, err);
 }
 
 void mip_base_gps_time_update_cv7_ins_to_json(mip_jw_t *w, const mip_base_gps_time_update_cv7_ins_t *in) {
@@ -1465,15 +1489,22 @@ static int mip_base_gps_week_load(const uint8_t *d, mip_base_gps_week_t *out) {
     return 0;
 }
 
-mip_status_t mip_base_gps_week_decode(const uint8_t *data, size_t len, mip_base_gps_week_t *out,
-                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_base_gps_week_decode_read(const uint8_t *data, size_t len,
+                                                               mip_base_gps_week_t *out,
+                                                               mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_base_gps_week_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_week_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_base_gps_week_decode(const uint8_t *data, size_t len, mip_base_gps_week_t *out,
+                                      mip_decode_error_t *err) {
+    if (len == 4 && mip_base_gps_week_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_base_gps_week_decode_read(data, len, out, err);
 }
 
 void mip_base_gps_week_to_json(mip_jw_t *w, const mip_base_gps_week_t *in) {
@@ -1544,15 +1575,22 @@ static int mip_base_gps_seconds_load(const uint8_t *d, mip_base_gps_seconds_t *o
     return 0;
 }
 
-mip_status_t mip_base_gps_seconds_decode(const uint8_t *data, size_t len, mip_base_gps_seconds_t *out,
-                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_base_gps_seconds_decode_read(const uint8_t *data, size_t len,
+                                                                  mip_base_gps_seconds_t *out,
+                                                                  mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_base_gps_seconds_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_seconds_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_base_gps_seconds_decode(const uint8_t *data, size_t len, mip_base_gps_seconds_t *out,
+                                         mip_decode_error_t *err) {
+    if (len == 4 && mip_base_gps_seconds_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_base_gps_seconds_decode_read(data, len, out, err);
 }
 
 void mip_base_gps_seconds_to_json(mip_jw_t *w, const mip_base_gps_seconds_t *in) {

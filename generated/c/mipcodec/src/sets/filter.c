@@ -111,16 +111,22 @@ static int mip_filter_set_initial_attitude_load(const uint8_t *d, mip_filter_set
     return 0;
 }
 
-mip_status_t mip_filter_set_initial_attitude_decode(const uint8_t *data, size_t len,
-                                                    mip_filter_set_initial_attitude_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_set_initial_attitude_decode_read(
+    const uint8_t *data, size_t len, mip_filter_set_initial_attitude_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_set_initial_attitude_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_set_initial_attitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_set_initial_attitude_decode(const uint8_t *data, size_t len,
+                                                    mip_filter_set_initial_attitude_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_set_initial_attitude_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_set_initial_attitude_decode_read(data, len, out, err);
 }
 
 void mip_filter_set_initial_attitude_to_json(mip_jw_t *w, const mip_filter_set_initial_attitude_t *in) {
@@ -219,16 +225,22 @@ static int mip_filter_set_initial_heading_load(const uint8_t *d, mip_filter_set_
     return 0;
 }
 
-mip_status_t mip_filter_set_initial_heading_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_set_initial_heading_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_set_initial_heading_decode_read(
+    const uint8_t *data, size_t len, mip_filter_set_initial_heading_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_filter_set_initial_heading_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_set_initial_heading_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_set_initial_heading_decode(const uint8_t *data, size_t len,
+                                                   mip_filter_set_initial_heading_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 4 && mip_filter_set_initial_heading_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_set_initial_heading_decode_read(data, len, out, err);
 }
 
 void mip_filter_set_initial_heading_to_json(mip_jw_t *w, const mip_filter_set_initial_heading_t *in) {
@@ -462,17 +474,24 @@ static int mip_filter_vehicle_dynamics_mode_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_vehicle_dynamics_mode_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_vehicle_dynamics_mode_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_vehicle_dynamics_mode_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_vehicle_dynamics_mode_response_decode(const uint8_t *data, size_t len,
                                                  mip_filter_vehicle_dynamics_mode_response_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_filter_vehicle_dynamics_mode_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_vehicle_dynamics_mode_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_vehicle_dynamics_mode_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_vehicle_dynamics_mode_response_to_json(
@@ -749,17 +768,24 @@ mip_filter_sensor_to_vehicle_transform_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_sensor_to_vehicle_transform_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_sensor_to_vehicle_transform_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_sensor_to_vehicle_transform_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_sensor_to_vehicle_transform_response_decode(const uint8_t *data, size_t len,
                                                        mip_filter_sensor_to_vehicle_transform_response_t *out,
                                                        mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 12 && mip_filter_sensor_to_vehicle_transform_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_sensor_to_vehicle_transform_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_sensor_to_vehicle_transform_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_sensor_to_vehicle_transform_response_to_json(
@@ -1019,17 +1045,24 @@ mip_filter_sensor_to_vehicle_offset_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_sensor_to_vehicle_offset_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_sensor_to_vehicle_offset_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_sensor_to_vehicle_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_sensor_to_vehicle_offset_response_decode(const uint8_t *data, size_t len,
                                                     mip_filter_sensor_to_vehicle_offset_response_t *out,
                                                     mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 12 && mip_filter_sensor_to_vehicle_offset_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_sensor_to_vehicle_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_sensor_to_vehicle_offset_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_sensor_to_vehicle_offset_response_to_json(
@@ -1284,16 +1317,22 @@ static int mip_filter_antenna_offset_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_antenna_offset_response_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_antenna_offset_response_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_antenna_offset_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_antenna_offset_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_antenna_offset_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_antenna_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_antenna_offset_response_decode(const uint8_t *data, size_t len,
+                                                       mip_filter_antenna_offset_response_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_antenna_offset_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_antenna_offset_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_antenna_offset_response_to_json(mip_jw_t *w, const mip_filter_antenna_offset_response_t *in) {
@@ -1506,16 +1545,22 @@ static int mip_filter_estimation_control_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_estimation_control_response_decode(const uint8_t *data, size_t len,
-                                                           mip_filter_estimation_control_response_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_estimation_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_estimation_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_filter_estimation_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_estimation_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_estimation_control_response_decode(const uint8_t *data, size_t len,
+                                                           mip_filter_estimation_control_response_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 2 && mip_filter_estimation_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_estimation_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_estimation_control_response_to_json(mip_jw_t *w,
@@ -1701,16 +1746,23 @@ static int mip_filter_gnss_source_control_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_gnss_source_control_response_decode(const uint8_t *data, size_t len,
-                                                            mip_filter_gnss_source_control_response_t *out,
-                                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_gnss_source_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_gnss_source_control_response_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_filter_gnss_source_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_source_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_gnss_source_control_response_decode(const uint8_t *data, size_t len,
+                                                            mip_filter_gnss_source_control_response_t *out,
+                                                            mip_decode_error_t *err) {
+    if (len == 1 && mip_filter_gnss_source_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_gnss_source_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_gnss_source_control_response_to_json(mip_jw_t *w,
@@ -1870,16 +1922,22 @@ static int mip_filter_external_gnss_update_load(const uint8_t *d, mip_filter_ext
     return 0;
 }
 
-mip_status_t mip_filter_external_gnss_update_decode(const uint8_t *data, size_t len,
-                                                    mip_filter_external_gnss_update_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 70, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_external_gnss_update_decode_read(
+    const uint8_t *data, size_t len, mip_filter_external_gnss_update_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 70 && mip_filter_external_gnss_update_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_gnss_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_external_gnss_update_decode(const uint8_t *data, size_t len,
+                                                    mip_filter_external_gnss_update_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 70 && mip_filter_external_gnss_update_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_external_gnss_update_decode_read(data, len, out, err);
 }
 
 void mip_filter_external_gnss_update_to_json(mip_jw_t *w, const mip_filter_external_gnss_update_t *in) {
@@ -2149,16 +2207,22 @@ static int mip_filter_external_heading_update_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_external_heading_update_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_external_heading_update_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 9, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_external_heading_update_decode_read(
+    const uint8_t *data, size_t len, mip_filter_external_heading_update_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 9 && mip_filter_external_heading_update_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_heading_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_external_heading_update_decode(const uint8_t *data, size_t len,
+                                                       mip_filter_external_heading_update_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 9 && mip_filter_external_heading_update_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_external_heading_update_decode_read(data, len, out, err);
 }
 
 void mip_filter_external_heading_update_to_json(mip_jw_t *w, const mip_filter_external_heading_update_t *in) {
@@ -2371,17 +2435,24 @@ mip_filter_heading_update_control_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_heading_update_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_heading_update_control_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_heading_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_heading_update_control_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_heading_update_control_response_t *out,
                                                   mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_filter_heading_update_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_heading_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_heading_update_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_heading_update_control_response_to_json(
@@ -2566,16 +2637,22 @@ static int mip_filter_auto_init_control_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_auto_init_control_response_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_auto_init_control_response_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_auto_init_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_auto_init_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_filter_auto_init_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_auto_init_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_auto_init_control_response_decode(const uint8_t *data, size_t len,
+                                                          mip_filter_auto_init_control_response_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 1 && mip_filter_auto_init_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_auto_init_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_auto_init_control_response_to_json(mip_jw_t *w,
@@ -2799,16 +2876,22 @@ static int mip_filter_accel_noise_response_load(const uint8_t *d, mip_filter_acc
     return 0;
 }
 
-mip_status_t mip_filter_accel_noise_response_decode(const uint8_t *data, size_t len,
-                                                    mip_filter_accel_noise_response_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_accel_noise_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_accel_noise_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_accel_noise_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_accel_noise_response_decode(const uint8_t *data, size_t len,
+                                                    mip_filter_accel_noise_response_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_accel_noise_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_accel_noise_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_accel_noise_response_to_json(mip_jw_t *w, const mip_filter_accel_noise_response_t *in) {
@@ -3060,16 +3143,22 @@ static int mip_filter_gyro_noise_response_load(const uint8_t *d, mip_filter_gyro
     return 0;
 }
 
-mip_status_t mip_filter_gyro_noise_response_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_gyro_noise_response_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_gyro_noise_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_gyro_noise_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_gyro_noise_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_gyro_noise_response_decode(const uint8_t *data, size_t len,
+                                                   mip_filter_gyro_noise_response_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_gyro_noise_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_gyro_noise_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_gyro_noise_response_to_json(mip_jw_t *w, const mip_filter_gyro_noise_response_t *in) {
@@ -3405,16 +3494,22 @@ static int mip_filter_accel_bias_model_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_accel_bias_model_response_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_accel_bias_model_response_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 24, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_accel_bias_model_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_accel_bias_model_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 24 && mip_filter_accel_bias_model_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_bias_model_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_accel_bias_model_response_decode(const uint8_t *data, size_t len,
+                                                         mip_filter_accel_bias_model_response_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 24 && mip_filter_accel_bias_model_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_accel_bias_model_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_accel_bias_model_response_to_json(mip_jw_t *w,
@@ -3788,16 +3883,22 @@ static int mip_filter_gyro_bias_model_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_gyro_bias_model_response_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_gyro_bias_model_response_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 24, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_gyro_bias_model_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_gyro_bias_model_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 24 && mip_filter_gyro_bias_model_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_bias_model_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_gyro_bias_model_response_decode(const uint8_t *data, size_t len,
+                                                        mip_filter_gyro_bias_model_response_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 24 && mip_filter_gyro_bias_model_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_gyro_bias_model_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_gyro_bias_model_response_to_json(mip_jw_t *w,
@@ -4086,16 +4187,22 @@ static int mip_filter_zupt_control_response_load(const uint8_t *d, mip_filter_zu
     return 0;
 }
 
-mip_status_t mip_filter_zupt_control_response_decode(const uint8_t *data, size_t len,
-                                                     mip_filter_zupt_control_response_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_zupt_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_zupt_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_filter_zupt_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zupt_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_zupt_control_response_decode(const uint8_t *data, size_t len,
+                                                     mip_filter_zupt_control_response_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 5 && mip_filter_zupt_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_zupt_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_zupt_control_response_to_json(mip_jw_t *w, const mip_filter_zupt_control_response_t *in) {
@@ -4222,17 +4329,24 @@ mip_filter_external_heading_update_with_time_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 19, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_external_heading_update_with_time_decode_read(
+    const uint8_t *data, size_t len, mip_filter_external_heading_update_with_time_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_external_heading_update_with_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_external_heading_update_with_time_decode(const uint8_t *data, size_t len,
                                                     mip_filter_external_heading_update_with_time_t *out,
                                                     mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 19 && mip_filter_external_heading_update_with_time_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_external_heading_update_with_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_external_heading_update_with_time_decode_read(data, len, out, err);
 }
 
 void mip_filter_external_heading_update_with_time_to_json(
@@ -4518,16 +4632,23 @@ static int mip_filter_zero_angular_rate_update_control_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_zero_angular_rate_update_control_response_decode(
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_zero_angular_rate_update_control_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_zero_angular_rate_update_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_filter_zero_angular_rate_update_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zero_angular_rate_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_zero_angular_rate_update_control_response_decode(
+    const uint8_t *data, size_t len, mip_filter_zero_angular_rate_update_control_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 5 && mip_filter_zero_angular_rate_update_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_zero_angular_rate_update_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_zero_angular_rate_update_control_response_to_json(
@@ -4829,16 +4950,23 @@ static int mip_filter_mag_capture_auto_calibration_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_mag_capture_auto_calibration_decode(const uint8_t *data, size_t len,
-                                                            mip_filter_mag_capture_auto_calibration_t *out,
-                                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_mag_capture_auto_calibration_decode_read(
+    const uint8_t *data, size_t len, mip_filter_mag_capture_auto_calibration_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_filter_mag_capture_auto_calibration_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_capture_auto_calibration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_mag_capture_auto_calibration_decode(const uint8_t *data, size_t len,
+                                                            mip_filter_mag_capture_auto_calibration_t *out,
+                                                            mip_decode_error_t *err) {
+    if (len == 1 && mip_filter_mag_capture_auto_calibration_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_mag_capture_auto_calibration_decode_read(data, len, out, err);
 }
 
 void mip_filter_mag_capture_auto_calibration_to_json(mip_jw_t *w,
@@ -5069,17 +5197,24 @@ static int mip_filter_gravity_noise_std_dev_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_gravity_noise_std_dev_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_gravity_noise_std_dev_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_gravity_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_gravity_noise_std_dev_response_decode(const uint8_t *data, size_t len,
                                                  mip_filter_gravity_noise_std_dev_response_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 12 && mip_filter_gravity_noise_std_dev_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_gravity_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_gravity_noise_std_dev_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_gravity_noise_std_dev_response_to_json(
@@ -5299,16 +5434,23 @@ static int mip_filter_pressure_altitude_noise_std_dev_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_decode(
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_pressure_altitude_noise_std_dev_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_filter_pressure_altitude_noise_std_dev_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pressure_altitude_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_decode(
+    const uint8_t *data, size_t len, mip_filter_pressure_altitude_noise_std_dev_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 4 && mip_filter_pressure_altitude_noise_std_dev_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_pressure_altitude_noise_std_dev_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_pressure_altitude_noise_std_dev_response_to_json(
@@ -5541,17 +5683,24 @@ mip_filter_hard_iron_offset_noise_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_hard_iron_offset_noise_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_hard_iron_offset_noise_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_hard_iron_offset_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_hard_iron_offset_noise_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_hard_iron_offset_noise_response_t *out,
                                                   mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 12 && mip_filter_hard_iron_offset_noise_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_hard_iron_offset_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_hard_iron_offset_noise_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_hard_iron_offset_noise_response_to_json(
@@ -5819,17 +5968,24 @@ mip_filter_soft_iron_matrix_noise_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 36, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_soft_iron_matrix_noise_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_soft_iron_matrix_noise_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_soft_iron_matrix_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_soft_iron_matrix_noise_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_soft_iron_matrix_noise_response_t *out,
                                                   mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 36 && mip_filter_soft_iron_matrix_noise_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_soft_iron_matrix_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_soft_iron_matrix_noise_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_soft_iron_matrix_noise_response_to_json(
@@ -6088,16 +6244,22 @@ static int mip_filter_mag_noise_std_dev_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_mag_noise_std_dev_response_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_mag_noise_std_dev_response_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_mag_noise_std_dev_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_mag_noise_std_dev_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_mag_noise_std_dev_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_mag_noise_std_dev_response_decode(const uint8_t *data, size_t len,
+                                                          mip_filter_mag_noise_std_dev_response_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_mag_noise_std_dev_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_mag_noise_std_dev_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_mag_noise_std_dev_response_to_json(mip_jw_t *w,
@@ -6354,16 +6516,22 @@ static int mip_filter_declination_source_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_declination_source_response_decode(const uint8_t *data, size_t len,
-                                                           mip_filter_declination_source_response_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_declination_source_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_declination_source_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_filter_declination_source_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_declination_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_declination_source_response_decode(const uint8_t *data, size_t len,
+                                                           mip_filter_declination_source_response_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 5 && mip_filter_declination_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_declination_source_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_declination_source_response_to_json(mip_jw_t *w,
@@ -6829,16 +6997,23 @@ static int mip_filter_gravity_magnitude_adaptive_measurement_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_decode(
+/* The general reader: lengths other than 25, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 25 && mip_filter_gravity_magnitude_adaptive_measurement_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_magnitude_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_decode(
+    const uint8_t *data, size_t len, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 25 && mip_filter_gravity_magnitude_adaptive_measurement_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_gravity_magnitude_adaptive_measurement_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_gravity_magnitude_adaptive_measurement_response_to_json(
@@ -7376,16 +7551,23 @@ static int mip_filter_mag_magnitude_adaptive_measurement_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_decode(
+/* The general reader: lengths other than 25, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_mag_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 25 && mip_filter_mag_magnitude_adaptive_measurement_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_magnitude_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_decode(
+    const uint8_t *data, size_t len, mip_filter_mag_magnitude_adaptive_measurement_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 25 && mip_filter_mag_magnitude_adaptive_measurement_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_mag_magnitude_adaptive_measurement_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_mag_magnitude_adaptive_measurement_response_to_json(
@@ -7831,16 +8013,23 @@ static int mip_filter_mag_dip_angle_adaptive_measurement_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_decode(
+/* The general reader: lengths other than 17, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 17 && mip_filter_mag_dip_angle_adaptive_measurement_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_dip_angle_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_decode(
+    const uint8_t *data, size_t len, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 17 && mip_filter_mag_dip_angle_adaptive_measurement_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_mag_dip_angle_adaptive_measurement_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_mag_dip_angle_adaptive_measurement_response_to_json(
@@ -8082,17 +8271,24 @@ mip_filter_altitude_aiding_control_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_altitude_aiding_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_altitude_aiding_control_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_altitude_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_altitude_aiding_control_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_altitude_aiding_control_response_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_filter_altitude_aiding_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_altitude_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_altitude_aiding_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_altitude_aiding_control_response_to_json(
@@ -8281,17 +8477,24 @@ mip_filter_pitch_roll_aiding_control_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_pitch_roll_aiding_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_pitch_roll_aiding_control_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_pitch_roll_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_pitch_roll_aiding_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_pitch_roll_aiding_control_response_t *out,
                                                      mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_filter_pitch_roll_aiding_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_pitch_roll_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_pitch_roll_aiding_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_pitch_roll_aiding_control_response_to_json(
@@ -8519,16 +8722,22 @@ static int mip_filter_inclination_source_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_inclination_source_response_decode(const uint8_t *data, size_t len,
-                                                           mip_filter_inclination_source_response_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_inclination_source_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_inclination_source_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_filter_inclination_source_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_inclination_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_inclination_source_response_decode(const uint8_t *data, size_t len,
+                                                           mip_filter_inclination_source_response_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 5 && mip_filter_inclination_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_inclination_source_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_inclination_source_response_to_json(mip_jw_t *w,
@@ -8775,16 +8984,23 @@ static int mip_filter_magnetic_field_magnitude_source_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_magnetic_field_magnitude_source_response_decode(
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_magnetic_field_magnitude_source_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_magnetic_field_magnitude_source_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_filter_magnetic_field_magnitude_source_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_magnetic_field_magnitude_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_magnetic_field_magnitude_source_response_decode(
+    const uint8_t *data, size_t len, mip_filter_magnetic_field_magnitude_source_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 5 && mip_filter_magnetic_field_magnitude_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_magnetic_field_magnitude_source_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_magnetic_field_magnitude_source_response_to_json(
@@ -9021,17 +9237,24 @@ mip_filter_aiding_measurement_control_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_aiding_measurement_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_aiding_measurement_control_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_aiding_measurement_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_aiding_measurement_control_response_decode(const uint8_t *data, size_t len,
                                                       mip_filter_aiding_measurement_control_response_t *out,
                                                       mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 3 && mip_filter_aiding_measurement_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_aiding_measurement_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_aiding_measurement_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_aiding_measurement_control_response_to_json(
@@ -9663,16 +9886,23 @@ static int mip_filter_initialization_configuration_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_initialization_configuration_response_decode(
+/* The general reader: lengths other than 40, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_initialization_configuration_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_initialization_configuration_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 40 && mip_filter_initialization_configuration_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_initialization_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_initialization_configuration_response_decode(
+    const uint8_t *data, size_t len, mip_filter_initialization_configuration_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 40 && mip_filter_initialization_configuration_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_initialization_configuration_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_initialization_configuration_response_to_json(
@@ -10065,17 +10295,24 @@ mip_filter_adaptive_filter_control_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_adaptive_filter_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_adaptive_filter_control_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_adaptive_filter_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_adaptive_filter_control_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_adaptive_filter_control_response_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 3 && mip_filter_adaptive_filter_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_adaptive_filter_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_adaptive_filter_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_adaptive_filter_control_response_to_json(
@@ -10349,16 +10586,23 @@ static int mip_filter_multi_antenna_offset_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_multi_antenna_offset_response_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_multi_antenna_offset_response_t *out,
-                                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 13, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_multi_antenna_offset_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_multi_antenna_offset_response_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 13 && mip_filter_multi_antenna_offset_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_multi_antenna_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_multi_antenna_offset_response_decode(const uint8_t *data, size_t len,
+                                                             mip_filter_multi_antenna_offset_response_t *out,
+                                                             mip_decode_error_t *err) {
+    if (len == 13 && mip_filter_multi_antenna_offset_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_multi_antenna_offset_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_multi_antenna_offset_response_to_json(mip_jw_t *w,
@@ -10723,16 +10967,23 @@ static int mip_filter_relative_position_configuration_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_relative_position_configuration_response_decode(
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_relative_position_configuration_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_relative_position_configuration_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 26 && mip_filter_relative_position_configuration_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_relative_position_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_relative_position_configuration_response_decode(
+    const uint8_t *data, size_t len, mip_filter_relative_position_configuration_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 26 && mip_filter_relative_position_configuration_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_relative_position_configuration_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_relative_position_configuration_response_to_json(
@@ -11064,17 +11315,24 @@ mip_filter_reference_point_lever_arm_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 13, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_reference_point_lever_arm_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_reference_point_lever_arm_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_reference_point_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_reference_point_lever_arm_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_reference_point_lever_arm_response_t *out,
                                                      mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 13 && mip_filter_reference_point_lever_arm_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_reference_point_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_reference_point_lever_arm_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_reference_point_lever_arm_response_to_json(
@@ -11373,16 +11631,22 @@ static int mip_filter_speed_lever_arm_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_speed_lever_arm_response_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_speed_lever_arm_response_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 13, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_speed_lever_arm_response_decode_read(
+    const uint8_t *data, size_t len, mip_filter_speed_lever_arm_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 13 && mip_filter_speed_lever_arm_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_speed_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_speed_lever_arm_response_decode(const uint8_t *data, size_t len,
+                                                        mip_filter_speed_lever_arm_response_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 13 && mip_filter_speed_lever_arm_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_speed_lever_arm_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_speed_lever_arm_response_to_json(mip_jw_t *w,
@@ -11613,16 +11877,23 @@ static int mip_filter_wheeled_vehicle_constraint_control_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_decode(
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_wheeled_vehicle_constraint_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_filter_wheeled_vehicle_constraint_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_wheeled_vehicle_constraint_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_decode(
+    const uint8_t *data, size_t len, mip_filter_wheeled_vehicle_constraint_control_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 1 && mip_filter_wheeled_vehicle_constraint_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_wheeled_vehicle_constraint_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_wheeled_vehicle_constraint_control_response_to_json(
@@ -11856,16 +12127,23 @@ static int mip_filter_gnss_antenna_calibration_control_response_load(
     return 0;
 }
 
-mip_status_t mip_filter_gnss_antenna_calibration_control_response_decode(
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_gnss_antenna_calibration_control_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_gnss_antenna_calibration_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_filter_gnss_antenna_calibration_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_antenna_calibration_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_gnss_antenna_calibration_control_response_decode(
+    const uint8_t *data, size_t len, mip_filter_gnss_antenna_calibration_control_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 5 && mip_filter_gnss_antenna_calibration_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_gnss_antenna_calibration_control_response_decode_read(data, len, out, err);
 }
 
 void mip_filter_gnss_antenna_calibration_control_response_to_json(

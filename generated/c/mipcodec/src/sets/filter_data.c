@@ -71,16 +71,23 @@ static int mip_filter_data_llh_position_load(const uint8_t *d, mip_filter_data_l
     return 0;
 }
 
-mip_status_t mip_filter_data_llh_position_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_llh_position_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_filter_data_llh_position_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 26 && mip_filter_data_llh_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_llh_position_decode(const uint8_t *data, size_t len,
+                                                 mip_filter_data_llh_position_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 26 && mip_filter_data_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_llh_position_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_llh_position_to_json(mip_jw_t *w, const mip_filter_data_llh_position_t *in) {
@@ -218,16 +225,23 @@ static int mip_filter_data_ned_velocity_load(const uint8_t *d, mip_filter_data_n
     return 0;
 }
 
-mip_status_t mip_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ned_velocity_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_filter_data_ned_velocity_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_ned_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
+                                                 mip_filter_data_ned_velocity_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_ned_velocity_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ned_velocity_to_json(mip_jw_t *w, const mip_filter_data_ned_velocity_t *in) {
@@ -359,16 +373,22 @@ static int mip_filter_data_attitude_quaternion_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_data_attitude_quaternion_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 18, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_attitude_quaternion_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_attitude_quaternion_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 18 && mip_filter_data_attitude_quaternion_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_attitude_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
+                                                        mip_filter_data_attitude_quaternion_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 18 && mip_filter_data_attitude_quaternion_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_attitude_quaternion_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_attitude_quaternion_to_json(mip_jw_t *w,
@@ -508,16 +528,23 @@ static int mip_filter_data_attitude_dcm_load(const uint8_t *d, mip_filter_data_a
     return 0;
 }
 
-mip_status_t mip_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_attitude_dcm_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 38, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_attitude_dcm_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_filter_data_attitude_dcm_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 38 && mip_filter_data_attitude_dcm_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_attitude_dcm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
+                                                 mip_filter_data_attitude_dcm_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 38 && mip_filter_data_attitude_dcm_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_attitude_dcm_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_attitude_dcm_to_json(mip_jw_t *w, const mip_filter_data_attitude_dcm_t *in) {
@@ -658,16 +685,23 @@ static int mip_filter_data_euler_angles_load(const uint8_t *d, mip_filter_data_e
     return 0;
 }
 
-mip_status_t mip_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_euler_angles_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_filter_data_euler_angles_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_euler_angles_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
+                                                 mip_filter_data_euler_angles_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_euler_angles_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_euler_angles_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_euler_angles_to_json(mip_jw_t *w, const mip_filter_data_euler_angles_t *in) {
@@ -795,15 +829,22 @@ static int mip_filter_data_gyro_bias_load(const uint8_t *d, mip_filter_data_gyro
     return 0;
 }
 
-mip_status_t mip_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
-                                              mip_filter_data_gyro_bias_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_decode_read(const uint8_t *data, size_t len,
+                                                                       mip_filter_data_gyro_bias_t *out,
+                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_gyro_bias_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
+                                              mip_filter_data_gyro_bias_t *out, mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_gyro_bias_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gyro_bias_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gyro_bias_to_json(mip_jw_t *w, const mip_filter_data_gyro_bias_t *in) {
@@ -935,15 +976,22 @@ static int mip_filter_data_accel_bias_load(const uint8_t *d, mip_filter_data_acc
     return 0;
 }
 
-mip_status_t mip_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
-                                               mip_filter_data_accel_bias_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_filter_data_accel_bias_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_accel_bias_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
+                                               mip_filter_data_accel_bias_t *out, mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_accel_bias_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_accel_bias_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_accel_bias_to_json(mip_jw_t *w, const mip_filter_data_accel_bias_t *in) {
@@ -1088,16 +1136,23 @@ static int mip_filter_data_llh_position_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_llh_position_uncertainty_t *out,
-                                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_llh_position_uncertainty_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_llh_position_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_llh_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
+                                                             mip_filter_data_llh_position_uncertainty_t *out,
+                                                             mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_llh_position_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_llh_position_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_llh_position_uncertainty_to_json(mip_jw_t *w,
@@ -1241,16 +1296,23 @@ static int mip_filter_data_ned_velocity_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_ned_velocity_uncertainty_t *out,
-                                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_ned_velocity_uncertainty_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_ned_velocity_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
+                                                             mip_filter_data_ned_velocity_uncertainty_t *out,
+                                                             mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_ned_velocity_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_ned_velocity_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ned_velocity_uncertainty_to_json(mip_jw_t *w,
@@ -1394,16 +1456,23 @@ static int mip_filter_data_euler_angles_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_euler_angles_uncertainty_t *out,
-                                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_euler_angles_uncertainty_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_euler_angles_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_euler_angles_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
+                                                             mip_filter_data_euler_angles_uncertainty_t *out,
+                                                             mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_euler_angles_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_euler_angles_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_euler_angles_uncertainty_to_json(mip_jw_t *w,
@@ -1538,16 +1607,22 @@ static int mip_filter_data_gyro_bias_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_gyro_bias_uncertainty_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gyro_bias_uncertainty_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_gyro_bias_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
+                                                          mip_filter_data_gyro_bias_uncertainty_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_gyro_bias_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gyro_bias_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gyro_bias_uncertainty_to_json(mip_jw_t *w,
@@ -1685,16 +1760,22 @@ static int mip_filter_data_accel_bias_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
-                                                           mip_filter_data_accel_bias_uncertainty_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_accel_bias_uncertainty_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_accel_bias_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
+                                                           mip_filter_data_accel_bias_uncertainty_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_accel_bias_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_accel_bias_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_accel_bias_uncertainty_to_json(mip_jw_t *w,
@@ -1828,16 +1909,23 @@ static int mip_filter_data_linear_accel_load(const uint8_t *d, mip_filter_data_l
     return 0;
 }
 
-mip_status_t mip_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_linear_accel_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_linear_accel_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_filter_data_linear_accel_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_linear_accel_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_linear_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
+                                                 mip_filter_data_linear_accel_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_linear_accel_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_linear_accel_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_linear_accel_to_json(mip_jw_t *w, const mip_filter_data_linear_accel_t *in) {
@@ -1970,16 +2058,22 @@ static int mip_filter_data_comp_angular_rate_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_comp_angular_rate_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_comp_angular_rate_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_comp_angular_rate_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_comp_angular_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_comp_angular_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
+                                                      mip_filter_data_comp_angular_rate_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_comp_angular_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_comp_angular_rate_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_comp_angular_rate_to_json(mip_jw_t *w, const mip_filter_data_comp_angular_rate_t *in) {
@@ -2107,16 +2201,23 @@ static int mip_filter_data_wgs84_gravity_magnitude_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
-                                                            mip_filter_data_wgs84_gravity_magnitude_t *out,
-                                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_wgs84_gravity_magnitude_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_filter_data_wgs84_gravity_magnitude_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_wgs84_gravity_magnitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
+                                                            mip_filter_data_wgs84_gravity_magnitude_t *out,
+                                                            mip_decode_error_t *err) {
+    if (len == 6 && mip_filter_data_wgs84_gravity_magnitude_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_wgs84_gravity_magnitude_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_wgs84_gravity_magnitude_to_json(mip_jw_t *w,
@@ -2224,16 +2325,22 @@ static int mip_filter_data_filter_status_gx5_45_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_data_filter_status_gx5_45_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_gx5_45_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_filter_status_gx5_45_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_filter_data_filter_status_gx5_45_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_filter_status_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
+                                                         mip_filter_data_filter_status_gx5_45_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 6 && mip_filter_data_filter_status_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_filter_status_gx5_45_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_filter_status_gx5_45_to_json(mip_jw_t *w,
@@ -2355,16 +2462,22 @@ static int mip_filter_data_filter_status_cv7_ins_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_filter_status_cv7_ins_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_cv7_ins_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_filter_status_cv7_ins_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_filter_data_filter_status_cv7_ins_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_filter_status_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
+                                                          mip_filter_data_filter_status_cv7_ins_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 6 && mip_filter_data_filter_status_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_filter_status_cv7_ins_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_filter_status_cv7_ins_to_json(mip_jw_t *w,
@@ -2482,16 +2595,22 @@ static int mip_filter_data_gps_timestamp_load(const uint8_t *d, mip_filter_data_
     return 0;
 }
 
-mip_status_t mip_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_gps_timestamp_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gps_timestamp_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gps_timestamp_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_data_gps_timestamp_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
+                                                  mip_filter_data_gps_timestamp_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_data_gps_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gps_timestamp_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gps_timestamp_to_json(mip_jw_t *w, const mip_filter_data_gps_timestamp_t *in) {
@@ -2613,17 +2732,24 @@ mip_filter_data_quaternion_attitude_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 18, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_quaternion_attitude_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_quaternion_attitude_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_quaternion_attitude_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_quaternion_attitude_uncertainty_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_quaternion_attitude_uncertainty_t *out,
                                                        mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 18 && mip_filter_data_quaternion_attitude_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_quaternion_attitude_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_quaternion_attitude_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_quaternion_attitude_uncertainty_to_json(
@@ -2757,16 +2883,22 @@ static int mip_filter_data_gravity_vector_load(const uint8_t *d, mip_filter_data
     return 0;
 }
 
-mip_status_t mip_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_gravity_vector_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gravity_vector_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gravity_vector_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_gravity_vector_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gravity_vector_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
+                                                   mip_filter_data_gravity_vector_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_gravity_vector_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gravity_vector_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gravity_vector_to_json(mip_jw_t *w, const mip_filter_data_gravity_vector_t *in) {
@@ -2911,16 +3043,22 @@ static int mip_filter_data_heading_update_state_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_data_heading_update_state_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_heading_update_state_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_heading_update_state_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_filter_data_heading_update_state_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_heading_update_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
+                                                         mip_filter_data_heading_update_state_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 12 && mip_filter_data_heading_update_state_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_heading_update_state_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_heading_update_state_to_json(mip_jw_t *w,
@@ -3078,16 +3216,22 @@ static int mip_filter_data_magnetic_model_load(const uint8_t *d, mip_filter_data
     return 0;
 }
 
-mip_status_t mip_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_magnetic_model_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 22, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_magnetic_model_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_magnetic_model_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 22 && mip_filter_data_magnetic_model_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_magnetic_model_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
+                                                   mip_filter_data_magnetic_model_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 22 && mip_filter_data_magnetic_model_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_magnetic_model_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_magnetic_model_to_json(mip_jw_t *w, const mip_filter_data_magnetic_model_t *in) {
@@ -3245,16 +3389,22 @@ static int mip_filter_data_gyro_scale_factor_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_gyro_scale_factor_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gyro_scale_factor_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_gyro_scale_factor_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
+                                                      mip_filter_data_gyro_scale_factor_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_gyro_scale_factor_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gyro_scale_factor_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gyro_scale_factor_to_json(mip_jw_t *w, const mip_filter_data_gyro_scale_factor_t *in) {
@@ -3389,16 +3539,22 @@ static int mip_filter_data_accel_scale_factor_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_accel_scale_factor_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_accel_scale_factor_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_accel_scale_factor_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
+                                                       mip_filter_data_accel_scale_factor_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_accel_scale_factor_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_accel_scale_factor_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_accel_scale_factor_to_json(mip_jw_t *w, const mip_filter_data_accel_scale_factor_t *in) {
@@ -3535,17 +3691,24 @@ mip_filter_data_gyro_scale_factor_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gyro_scale_factor_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_gyro_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
                                                      mip_filter_data_gyro_scale_factor_uncertainty_t *out,
                                                      mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_filter_data_gyro_scale_factor_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gyro_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_gyro_scale_factor_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gyro_scale_factor_uncertainty_to_json(
@@ -3684,17 +3847,24 @@ mip_filter_data_accel_scale_factor_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_accel_scale_factor_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_accel_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_accel_scale_factor_uncertainty_t *out,
                                                       mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_filter_data_accel_scale_factor_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_accel_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_accel_scale_factor_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_accel_scale_factor_uncertainty_to_json(
@@ -3829,16 +3999,22 @@ static int mip_filter_data_compensated_accel_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_compensated_accel_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_compensated_accel_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_compensated_accel_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_compensated_accel_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_compensated_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
+                                                      mip_filter_data_compensated_accel_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_compensated_accel_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_compensated_accel_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_compensated_accel_to_json(mip_jw_t *w, const mip_filter_data_compensated_accel_t *in) {
@@ -4000,16 +4176,22 @@ static int mip_filter_data_standard_atmosphere_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_data_standard_atmosphere_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 22, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_standard_atmosphere_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_standard_atmosphere_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 22 && mip_filter_data_standard_atmosphere_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_standard_atmosphere_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
+                                                        mip_filter_data_standard_atmosphere_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 22 && mip_filter_data_standard_atmosphere_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_standard_atmosphere_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_standard_atmosphere_to_json(mip_jw_t *w,
@@ -4159,16 +4341,22 @@ static int mip_filter_data_pressure_altitude_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_pressure_altitude_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_pressure_altitude_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_pressure_altitude_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_filter_data_pressure_altitude_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_pressure_altitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
+                                                      mip_filter_data_pressure_altitude_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 6 && mip_filter_data_pressure_altitude_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_pressure_altitude_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_pressure_altitude_to_json(mip_jw_t *w, const mip_filter_data_pressure_altitude_t *in) {
@@ -4276,17 +4464,24 @@ static int mip_filter_data_mag_auto_hard_iron_offset_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_mag_auto_hard_iron_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_mag_auto_hard_iron_offset_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_mag_auto_hard_iron_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_mag_auto_hard_iron_offset_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_mag_auto_hard_iron_offset_to_json(
@@ -4430,17 +4625,24 @@ static int mip_filter_data_mag_auto_soft_iron_matrix_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 38, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_mag_auto_soft_iron_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_mag_auto_soft_iron_matrix_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_mag_auto_soft_iron_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_mag_auto_soft_iron_matrix_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_mag_auto_soft_iron_matrix_to_json(
@@ -4577,16 +4779,23 @@ static int mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(
     return 0;
 }
 
-mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
+    const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_mag_auto_hard_iron_offset_uncertainty_to_json(
@@ -4729,16 +4938,23 @@ static int mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(
     return 0;
 }
 
-mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
+/* The general reader: lengths other than 38, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
+    const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_to_json(
@@ -4877,17 +5093,24 @@ mip_filter_data_gnss_antenna_offset_correction_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_gnss_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_gnss_antenna_offset_correction_t *out,
                                                       mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gnss_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_gnss_antenna_offset_correction_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gnss_antenna_offset_correction_to_json(
@@ -5024,16 +5247,23 @@ static int mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(
     return 0;
 }
 
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
+    const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gnss_antenna_offset_correction_uncertainty_to_json(
@@ -5181,17 +5411,24 @@ mip_filter_data_multi_antenna_offset_correction_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_multi_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_multi_antenna_offset_correction_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_multi_antenna_offset_correction_t *out,
                                                        mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 15 && mip_filter_data_multi_antenna_offset_correction_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_multi_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_multi_antenna_offset_correction_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_multi_antenna_offset_correction_to_json(
@@ -5350,17 +5587,24 @@ static int mip_filter_data_multi_antenna_offset_correction_uncertainty_load(
     return 0;
 }
 
-mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 15 && mip_filter_data_multi_antenna_offset_correction_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_multi_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE
                                                                                      : MIP_OK;
+}
+
+mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
+    const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    if (len == 15 && mip_filter_data_multi_antenna_offset_correction_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_multi_antenna_offset_correction_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_multi_antenna_offset_correction_uncertainty_to_json(
@@ -5511,17 +5755,24 @@ static int mip_filter_data_ecef_position_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_ecef_position_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_ecef_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ecef_position_uncertainty_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_filter_data_ecef_position_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ecef_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_ecef_position_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ecef_position_uncertainty_to_json(
@@ -5659,17 +5910,24 @@ static int mip_filter_data_ecef_velocity_uncertainty_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_ecef_velocity_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_ecef_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ecef_velocity_uncertainty_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_filter_data_ecef_velocity_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ecef_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_ecef_velocity_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ecef_velocity_uncertainty_to_json(
@@ -5803,16 +6061,22 @@ static int mip_filter_data_ecef_position_load(const uint8_t *d, mip_filter_data_
     return 0;
 }
 
-mip_status_t mip_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_ecef_position_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_ecef_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 26 && mip_filter_data_ecef_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
+                                                  mip_filter_data_ecef_position_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 26 && mip_filter_data_ecef_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_ecef_position_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ecef_position_to_json(mip_jw_t *w, const mip_filter_data_ecef_position_t *in) {
@@ -5944,16 +6208,22 @@ static int mip_filter_data_ecef_velocity_load(const uint8_t *d, mip_filter_data_
     return 0;
 }
 
-mip_status_t mip_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_ecef_velocity_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_ecef_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 14 && mip_filter_data_ecef_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
+                                                  mip_filter_data_ecef_velocity_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 14 && mip_filter_data_ecef_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_ecef_velocity_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ecef_velocity_to_json(mip_jw_t *w, const mip_filter_data_ecef_velocity_t *in) {
@@ -6089,16 +6359,22 @@ static int mip_filter_data_ned_relative_position_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_ned_relative_position_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_ned_relative_position_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_ned_relative_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 26 && mip_filter_data_ned_relative_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_relative_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
+                                                          mip_filter_data_ned_relative_position_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 26 && mip_filter_data_ned_relative_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_ned_relative_position_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_ned_relative_position_to_json(mip_jw_t *w,
@@ -6261,17 +6537,24 @@ mip_filter_data_gnss_position_aiding_status_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gnss_position_aiding_status_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gnss_position_aiding_status_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_gnss_position_aiding_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_gnss_position_aiding_status_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 15 && mip_filter_data_gnss_position_aiding_status_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gnss_position_aiding_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_gnss_position_aiding_status_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gnss_position_aiding_status_to_json(
@@ -6446,17 +6729,24 @@ mip_filter_data_aiding_measurement_summary_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 7, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_aiding_measurement_summary_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_aiding_measurement_summary_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_aiding_measurement_summary_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_aiding_measurement_summary_t *out,
                                                   mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 7 && mip_filter_data_aiding_measurement_summary_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_aiding_measurement_summary_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_aiding_measurement_summary_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_aiding_measurement_summary_to_json(
@@ -6584,17 +6874,24 @@ mip_filter_data_odometer_scale_factor_error_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_odometer_scale_factor_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_odometer_scale_factor_error_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 6 && mip_filter_data_odometer_scale_factor_error_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_odometer_scale_factor_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_odometer_scale_factor_error_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_odometer_scale_factor_error_to_json(
@@ -6693,16 +6990,23 @@ static int mip_filter_data_odometer_scale_factor_error_uncertainty_load(
     return 0;
 }
 
-mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_filter_data_odometer_scale_factor_error_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_odometer_scale_factor_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
+    const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    if (len == 6 && mip_filter_data_odometer_scale_factor_error_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_odometer_scale_factor_error_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_odometer_scale_factor_error_uncertainty_to_json(
@@ -6838,16 +7142,23 @@ static int mip_filter_data_gnss_dual_antenna_status_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_gnss_dual_antenna_status_t *out,
-                                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 17, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_gnss_dual_antenna_status_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_gnss_dual_antenna_status_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 17 && mip_filter_data_gnss_dual_antenna_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_dual_antenna_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
+                                                             mip_filter_data_gnss_dual_antenna_status_t *out,
+                                                             mip_decode_error_t *err) {
+    if (len == 17 && mip_filter_data_gnss_dual_antenna_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_gnss_dual_antenna_status_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_gnss_dual_antenna_status_to_json(mip_jw_t *w,
@@ -7026,17 +7337,24 @@ static int mip_filter_data_aiding_frame_config_error_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 29, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_decode_read(
+    const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_filter_data_aiding_frame_config_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_aiding_frame_config_error_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 29 && mip_filter_data_aiding_frame_config_error_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_aiding_frame_config_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_filter_data_aiding_frame_config_error_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_aiding_frame_config_error_to_json(
@@ -7227,16 +7545,23 @@ static int mip_filter_data_aiding_frame_config_error_uncertainty_load(
     return 0;
 }
 
-mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode(
+/* The general reader: lengths other than 25, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 25 && mip_filter_data_aiding_frame_config_error_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_frame_config_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode(
+    const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
+    mip_decode_error_t *err) {
+    if (len == 25 && mip_filter_data_aiding_frame_config_error_uncertainty_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_filter_data_aiding_frame_config_error_uncertainty_decode_read(data, len, out, err);
 }
 
 void mip_filter_data_aiding_frame_config_error_uncertainty_to_json(

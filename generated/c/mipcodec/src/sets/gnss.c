@@ -558,16 +558,22 @@ static int mip_gnss_signal_configuration_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_signal_configuration_response_decode(const uint8_t *data, size_t len,
-                                                           mip_gnss_signal_configuration_response_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 8, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_signal_configuration_response_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_signal_configuration_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 8 && mip_gnss_signal_configuration_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_signal_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_signal_configuration_response_decode(const uint8_t *data, size_t len,
+                                                           mip_gnss_signal_configuration_response_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 8 && mip_gnss_signal_configuration_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_signal_configuration_response_decode_read(data, len, out, err);
 }
 
 void mip_gnss_signal_configuration_response_to_json(mip_jw_t *w,

@@ -111,16 +111,22 @@ static int mip_gnss_corrections_base_station_info_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_corrections_base_station_info_decode(const uint8_t *data, size_t len,
-                                                           mip_gnss_corrections_base_station_info_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 44, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_corrections_base_station_info_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_corrections_base_station_info_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 44 && mip_gnss_corrections_base_station_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_corrections_base_station_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_corrections_base_station_info_decode(const uint8_t *data, size_t len,
+                                                           mip_gnss_corrections_base_station_info_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 44 && mip_gnss_corrections_base_station_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_corrections_base_station_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_corrections_base_station_info_to_json(mip_jw_t *w,
@@ -399,17 +405,24 @@ mip_gnss_corrections_rtk_corrections_status_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 50, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_corrections_rtk_corrections_status_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_corrections_rtk_corrections_status_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_gnss_corrections_rtk_corrections_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_gnss_corrections_rtk_corrections_status_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_corrections_rtk_corrections_status_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 50 && mip_gnss_corrections_rtk_corrections_status_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_gnss_corrections_rtk_corrections_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_gnss_corrections_rtk_corrections_status_decode_read(data, len, out, err);
 }
 
 void mip_gnss_corrections_rtk_corrections_status_to_json(

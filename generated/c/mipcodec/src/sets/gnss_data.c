@@ -98,15 +98,22 @@ static int mip_gnss_data_llh_position_load(const uint8_t *d, mip_gnss_data_llh_p
     return 0;
 }
 
-mip_status_t mip_gnss_data_llh_position_decode(const uint8_t *data, size_t len,
-                                               mip_gnss_data_llh_position_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 42, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_llh_position_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_gnss_data_llh_position_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 42 && mip_gnss_data_llh_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_llh_position_decode(const uint8_t *data, size_t len,
+                                               mip_gnss_data_llh_position_t *out, mip_decode_error_t *err) {
+    if (len == 42 && mip_gnss_data_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_llh_position_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_llh_position_to_json(mip_jw_t *w, const mip_gnss_data_llh_position_t *in) {
@@ -285,15 +292,22 @@ static int mip_gnss_data_ecef_position_load(const uint8_t *d, mip_gnss_data_ecef
     return 0;
 }
 
-mip_status_t mip_gnss_data_ecef_position_decode(const uint8_t *data, size_t len,
-                                                mip_gnss_data_ecef_position_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 30, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_ecef_position_decode_read(const uint8_t *data, size_t len,
+                                                                         mip_gnss_data_ecef_position_t *out,
+                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 30 && mip_gnss_data_ecef_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_ecef_position_decode(const uint8_t *data, size_t len,
+                                                mip_gnss_data_ecef_position_t *out, mip_decode_error_t *err) {
+    if (len == 30 && mip_gnss_data_ecef_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_ecef_position_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_ecef_position_to_json(mip_jw_t *w, const mip_gnss_data_ecef_position_t *in) {
@@ -483,15 +497,22 @@ static int mip_gnss_data_ned_velocity_load(const uint8_t *d, mip_gnss_data_ned_v
     return 0;
 }
 
-mip_status_t mip_gnss_data_ned_velocity_decode(const uint8_t *data, size_t len,
-                                               mip_gnss_data_ned_velocity_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 34, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_ned_velocity_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_gnss_data_ned_velocity_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 34 && mip_gnss_data_ned_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_ned_velocity_decode(const uint8_t *data, size_t len,
+                                               mip_gnss_data_ned_velocity_t *out, mip_decode_error_t *err) {
+    if (len == 34 && mip_gnss_data_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_ned_velocity_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_data_ned_velocity_t *in) {
@@ -698,15 +719,22 @@ static int mip_gnss_data_ecef_velocity_load(const uint8_t *d, mip_gnss_data_ecef
     return 0;
 }
 
-mip_status_t mip_gnss_data_ecef_velocity_decode(const uint8_t *data, size_t len,
-                                                mip_gnss_data_ecef_velocity_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 18, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_ecef_velocity_decode_read(const uint8_t *data, size_t len,
+                                                                         mip_gnss_data_ecef_velocity_t *out,
+                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 18 && mip_gnss_data_ecef_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_ecef_velocity_decode(const uint8_t *data, size_t len,
+                                                mip_gnss_data_ecef_velocity_t *out, mip_decode_error_t *err) {
+    if (len == 18 && mip_gnss_data_ecef_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_ecef_velocity_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_ecef_velocity_to_json(mip_jw_t *w, const mip_gnss_data_ecef_velocity_t *in) {
@@ -895,15 +923,22 @@ static int mip_gnss_data_dop_load(const uint8_t *d, mip_gnss_data_dop_t *out) {
     return 0;
 }
 
-mip_status_t mip_gnss_data_dop_decode(const uint8_t *data, size_t len, mip_gnss_data_dop_t *out,
-                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 30, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_dop_decode_read(const uint8_t *data, size_t len,
+                                                               mip_gnss_data_dop_t *out,
+                                                               mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 30 && mip_gnss_data_dop_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dop_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_dop_decode(const uint8_t *data, size_t len, mip_gnss_data_dop_t *out,
+                                      mip_decode_error_t *err) {
+    if (len == 30 && mip_gnss_data_dop_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_dop_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_dop_to_json(mip_jw_t *w, const mip_gnss_data_dop_t *in) {
@@ -1128,15 +1163,22 @@ static int mip_gnss_data_utc_time_load(const uint8_t *d, mip_gnss_data_utc_time_
     return 0;
 }
 
-mip_status_t mip_gnss_data_utc_time_decode(const uint8_t *data, size_t len, mip_gnss_data_utc_time_t *out,
-                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 13, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_utc_time_decode_read(const uint8_t *data, size_t len,
+                                                                    mip_gnss_data_utc_time_t *out,
+                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 13 && mip_gnss_data_utc_time_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_utc_time_decode(const uint8_t *data, size_t len, mip_gnss_data_utc_time_t *out,
+                                           mip_decode_error_t *err) {
+    if (len == 13 && mip_gnss_data_utc_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_utc_time_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_utc_time_to_json(mip_jw_t *w, const mip_gnss_data_utc_time_t *in) {
@@ -1317,15 +1359,22 @@ static int mip_gnss_data_gps_time_load(const uint8_t *d, mip_gnss_data_gps_time_
     return 0;
 }
 
-mip_status_t mip_gnss_data_gps_time_decode(const uint8_t *data, size_t len, mip_gnss_data_gps_time_t *out,
-                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_gps_time_decode_read(const uint8_t *data, size_t len,
+                                                                    mip_gnss_data_gps_time_t *out,
+                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_gnss_data_gps_time_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_gps_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_gps_time_decode(const uint8_t *data, size_t len, mip_gnss_data_gps_time_t *out,
+                                           mip_decode_error_t *err) {
+    if (len == 12 && mip_gnss_data_gps_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_gps_time_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_gps_time_to_json(mip_jw_t *w, const mip_gnss_data_gps_time_t *in) {
@@ -1449,15 +1498,22 @@ static int mip_gnss_data_clock_info_load(const uint8_t *d, mip_gnss_data_clock_i
     return 0;
 }
 
-mip_status_t mip_gnss_data_clock_info_decode(const uint8_t *data, size_t len, mip_gnss_data_clock_info_t *out,
-                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_clock_info_decode_read(const uint8_t *data, size_t len,
+                                                                      mip_gnss_data_clock_info_t *out,
+                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 26 && mip_gnss_data_clock_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_clock_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_clock_info_decode(const uint8_t *data, size_t len, mip_gnss_data_clock_info_t *out,
+                                             mip_decode_error_t *err) {
+    if (len == 26 && mip_gnss_data_clock_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_clock_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_clock_info_to_json(mip_jw_t *w, const mip_gnss_data_clock_info_t *in) {
@@ -1594,15 +1650,22 @@ static int mip_gnss_data_fix_info_load(const uint8_t *d, mip_gnss_data_fix_info_
     return 0;
 }
 
-mip_status_t mip_gnss_data_fix_info_decode(const uint8_t *data, size_t len, mip_gnss_data_fix_info_t *out,
-                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_fix_info_decode_read(const uint8_t *data, size_t len,
+                                                                    mip_gnss_data_fix_info_t *out,
+                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_gnss_data_fix_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_fix_info_decode(const uint8_t *data, size_t len, mip_gnss_data_fix_info_t *out,
+                                           mip_decode_error_t *err) {
+    if (len == 6 && mip_gnss_data_fix_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_fix_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_fix_info_to_json(mip_jw_t *w, const mip_gnss_data_fix_info_t *in) {
@@ -1766,15 +1829,22 @@ static int mip_gnss_data_sv_info_load(const uint8_t *d, mip_gnss_data_sv_info_t 
     return 0;
 }
 
-mip_status_t mip_gnss_data_sv_info_decode(const uint8_t *data, size_t len, mip_gnss_data_sv_info_t *out,
-                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_sv_info_decode_read(const uint8_t *data, size_t len,
+                                                                   mip_gnss_data_sv_info_t *out,
+                                                                   mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_gnss_data_sv_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_sv_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_sv_info_decode(const uint8_t *data, size_t len, mip_gnss_data_sv_info_t *out,
+                                          mip_decode_error_t *err) {
+    if (len == 12 && mip_gnss_data_sv_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_sv_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_sv_info_to_json(mip_jw_t *w, const mip_gnss_data_sv_info_t *in) {
@@ -1952,16 +2022,22 @@ static int mip_gnss_data_hardware_status_load(const uint8_t *d, mip_gnss_data_ha
     return 0;
 }
 
-mip_status_t mip_gnss_data_hardware_status_decode(const uint8_t *data, size_t len,
-                                                  mip_gnss_data_hardware_status_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_hardware_status_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_data_hardware_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_gnss_data_hardware_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_hardware_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_hardware_status_decode(const uint8_t *data, size_t len,
+                                                  mip_gnss_data_hardware_status_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 5 && mip_gnss_data_hardware_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_hardware_status_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_hardware_status_to_json(mip_jw_t *w, const mip_gnss_data_hardware_status_t *in) {
@@ -2107,15 +2183,22 @@ static int mip_gnss_data_dgnss_info_load(const uint8_t *d, mip_gnss_data_dgnss_i
     return 0;
 }
 
-mip_status_t mip_gnss_data_dgnss_info_decode(const uint8_t *data, size_t len, mip_gnss_data_dgnss_info_t *out,
-                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_dgnss_info_decode_read(const uint8_t *data, size_t len,
+                                                                      mip_gnss_data_dgnss_info_t *out,
+                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_gnss_data_dgnss_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dgnss_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_dgnss_info_decode(const uint8_t *data, size_t len, mip_gnss_data_dgnss_info_t *out,
+                                             mip_decode_error_t *err) {
+    if (len == 12 && mip_gnss_data_dgnss_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_dgnss_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_dgnss_info_to_json(mip_jw_t *w, const mip_gnss_data_dgnss_info_t *in) {
@@ -2278,16 +2361,22 @@ static int mip_gnss_data_dgnss_channel_status_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_data_dgnss_channel_status_decode(const uint8_t *data, size_t len,
-                                                       mip_gnss_data_dgnss_channel_status_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_data_dgnss_channel_status_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_data_dgnss_channel_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 15 && mip_gnss_data_dgnss_channel_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dgnss_channel_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_data_dgnss_channel_status_decode(const uint8_t *data, size_t len,
+                                                       mip_gnss_data_dgnss_channel_status_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 15 && mip_gnss_data_dgnss_channel_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_data_dgnss_channel_status_decode_read(data, len, out, err);
 }
 
 void mip_gnss_data_dgnss_channel_status_to_json(mip_jw_t *w, const mip_gnss_data_dgnss_channel_status_t *in) {

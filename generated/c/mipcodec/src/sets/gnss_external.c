@@ -98,16 +98,22 @@ static int mip_gnss_external_llh_position_load(const uint8_t *d, mip_gnss_extern
     return 0;
 }
 
-mip_status_t mip_gnss_external_llh_position_decode(const uint8_t *data, size_t len,
-                                                   mip_gnss_external_llh_position_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 42, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_external_llh_position_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_external_llh_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 42 && mip_gnss_external_llh_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_external_llh_position_decode(const uint8_t *data, size_t len,
+                                                   mip_gnss_external_llh_position_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 42 && mip_gnss_external_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_external_llh_position_decode_read(data, len, out, err);
 }
 
 void mip_gnss_external_llh_position_to_json(mip_jw_t *w, const mip_gnss_external_llh_position_t *in) {
@@ -323,16 +329,22 @@ static int mip_gnss_external_ned_velocity_load(const uint8_t *d, mip_gnss_extern
     return 0;
 }
 
-mip_status_t mip_gnss_external_ned_velocity_decode(const uint8_t *data, size_t len,
-                                                   mip_gnss_external_ned_velocity_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 34, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_external_ned_velocity_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_external_ned_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 34 && mip_gnss_external_ned_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_external_ned_velocity_decode(const uint8_t *data, size_t len,
+                                                   mip_gnss_external_ned_velocity_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 34 && mip_gnss_external_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_external_ned_velocity_decode_read(data, len, out, err);
 }
 
 void mip_gnss_external_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_external_ned_velocity_t *in) {
@@ -576,15 +588,22 @@ static int mip_gnss_external_utc_time_load(const uint8_t *d, mip_gnss_external_u
     return 0;
 }
 
-mip_status_t mip_gnss_external_utc_time_decode(const uint8_t *data, size_t len,
-                                               mip_gnss_external_utc_time_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 13, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_external_utc_time_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_gnss_external_utc_time_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 13 && mip_gnss_external_utc_time_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_external_utc_time_decode(const uint8_t *data, size_t len,
+                                               mip_gnss_external_utc_time_t *out, mip_decode_error_t *err) {
+    if (len == 13 && mip_gnss_external_utc_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_external_utc_time_decode_read(data, len, out, err);
 }
 
 void mip_gnss_external_utc_time_to_json(mip_jw_t *w, const mip_gnss_external_utc_time_t *in) {
@@ -775,15 +794,22 @@ static int mip_gnss_external_fix_info_load(const uint8_t *d, mip_gnss_external_f
     return 0;
 }
 
-mip_status_t mip_gnss_external_fix_info_decode(const uint8_t *data, size_t len,
-                                               mip_gnss_external_fix_info_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_external_fix_info_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_gnss_external_fix_info_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_gnss_external_fix_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_external_fix_info_decode(const uint8_t *data, size_t len,
+                                               mip_gnss_external_fix_info_t *out, mip_decode_error_t *err) {
+    if (len == 6 && mip_gnss_external_fix_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_external_fix_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_external_fix_info_to_json(mip_jw_t *w, const mip_gnss_external_fix_info_t *in) {
@@ -980,16 +1006,22 @@ static int mip_gnss_external_satellite_status_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_external_satellite_status_decode(const uint8_t *data, size_t len,
-                                                       mip_gnss_external_satellite_status_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 25, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_external_satellite_status_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_external_satellite_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 25 && mip_gnss_external_satellite_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_satellite_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_external_satellite_status_decode(const uint8_t *data, size_t len,
+                                                       mip_gnss_external_satellite_status_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 25 && mip_gnss_external_satellite_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_external_satellite_status_decode_read(data, len, out, err);
 }
 
 void mip_gnss_external_satellite_status_to_json(mip_jw_t *w, const mip_gnss_external_satellite_status_t *in) {

@@ -98,16 +98,22 @@ static int mip_gnss_receiver_1_llh_position_load(const uint8_t *d, mip_gnss_rece
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_llh_position_decode(const uint8_t *data, size_t len,
-                                                     mip_gnss_receiver_1_llh_position_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 42, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_llh_position_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_llh_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 42 && mip_gnss_receiver_1_llh_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_llh_position_decode(const uint8_t *data, size_t len,
+                                                     mip_gnss_receiver_1_llh_position_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 42 && mip_gnss_receiver_1_llh_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_llh_position_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_llh_position_to_json(mip_jw_t *w, const mip_gnss_receiver_1_llh_position_t *in) {
@@ -288,16 +294,22 @@ static int mip_gnss_receiver_1_ecef_position_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_ecef_position_decode(const uint8_t *data, size_t len,
-                                                      mip_gnss_receiver_1_ecef_position_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 30, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ecef_position_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_ecef_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 30 && mip_gnss_receiver_1_ecef_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_ecef_position_decode(const uint8_t *data, size_t len,
+                                                      mip_gnss_receiver_1_ecef_position_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 30 && mip_gnss_receiver_1_ecef_position_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_ecef_position_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_ecef_position_to_json(mip_jw_t *w, const mip_gnss_receiver_1_ecef_position_t *in) {
@@ -488,16 +500,22 @@ static int mip_gnss_receiver_1_ned_velocity_load(const uint8_t *d, mip_gnss_rece
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_ned_velocity_decode(const uint8_t *data, size_t len,
-                                                     mip_gnss_receiver_1_ned_velocity_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 34, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ned_velocity_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_ned_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 34 && mip_gnss_receiver_1_ned_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_ned_velocity_decode(const uint8_t *data, size_t len,
+                                                     mip_gnss_receiver_1_ned_velocity_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 34 && mip_gnss_receiver_1_ned_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_ned_velocity_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_ned_velocity_to_json(mip_jw_t *w, const mip_gnss_receiver_1_ned_velocity_t *in) {
@@ -706,16 +724,22 @@ static int mip_gnss_receiver_1_ecef_velocity_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_ecef_velocity_decode(const uint8_t *data, size_t len,
-                                                      mip_gnss_receiver_1_ecef_velocity_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 18, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ecef_velocity_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_ecef_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 18 && mip_gnss_receiver_1_ecef_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_ecef_velocity_decode(const uint8_t *data, size_t len,
+                                                      mip_gnss_receiver_1_ecef_velocity_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 18 && mip_gnss_receiver_1_ecef_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_ecef_velocity_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_ecef_velocity_to_json(mip_jw_t *w, const mip_gnss_receiver_1_ecef_velocity_t *in) {
@@ -905,15 +929,22 @@ static int mip_gnss_receiver_1_dop_load(const uint8_t *d, mip_gnss_receiver_1_do
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_dop_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_dop_t *out,
-                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 30, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_dop_decode_read(const uint8_t *data, size_t len,
+                                                                     mip_gnss_receiver_1_dop_t *out,
+                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 30 && mip_gnss_receiver_1_dop_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_dop_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_dop_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_dop_t *out,
+                                            mip_decode_error_t *err) {
+    if (len == 30 && mip_gnss_receiver_1_dop_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_dop_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_dop_to_json(mip_jw_t *w, const mip_gnss_receiver_1_dop_t *in) {
@@ -1139,16 +1170,23 @@ static int mip_gnss_receiver_1_utc_time_load(const uint8_t *d, mip_gnss_receiver
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_utc_time_decode(const uint8_t *data, size_t len,
-                                                 mip_gnss_receiver_1_utc_time_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 13, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_utc_time_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_gnss_receiver_1_utc_time_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 13 && mip_gnss_receiver_1_utc_time_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_utc_time_decode(const uint8_t *data, size_t len,
+                                                 mip_gnss_receiver_1_utc_time_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 13 && mip_gnss_receiver_1_utc_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_utc_time_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_utc_time_to_json(mip_jw_t *w, const mip_gnss_receiver_1_utc_time_t *in) {
@@ -1330,16 +1368,23 @@ static int mip_gnss_receiver_1_gps_time_load(const uint8_t *d, mip_gnss_receiver
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_gps_time_decode(const uint8_t *data, size_t len,
-                                                 mip_gnss_receiver_1_gps_time_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_time_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_gnss_receiver_1_gps_time_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_gnss_receiver_1_gps_time_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_gps_time_decode(const uint8_t *data, size_t len,
+                                                 mip_gnss_receiver_1_gps_time_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 12 && mip_gnss_receiver_1_gps_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_gps_time_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_gps_time_to_json(mip_jw_t *w, const mip_gnss_receiver_1_gps_time_t *in) {
@@ -1464,16 +1509,23 @@ static int mip_gnss_receiver_1_fix_info_load(const uint8_t *d, mip_gnss_receiver
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_fix_info_decode(const uint8_t *data, size_t len,
-                                                 mip_gnss_receiver_1_fix_info_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_fix_info_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_gnss_receiver_1_fix_info_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 6 && mip_gnss_receiver_1_fix_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_fix_info_decode(const uint8_t *data, size_t len,
+                                                 mip_gnss_receiver_1_fix_info_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 6 && mip_gnss_receiver_1_fix_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_fix_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_fix_info_to_json(mip_jw_t *w, const mip_gnss_receiver_1_fix_info_t *in) {
@@ -1613,16 +1665,22 @@ static int mip_gnss_receiver_1_hardware_status_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_hardware_status_decode(const uint8_t *data, size_t len,
-                                                        mip_gnss_receiver_1_hardware_status_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 5, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_hardware_status_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_hardware_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 5 && mip_gnss_receiver_1_hardware_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_hardware_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_hardware_status_decode(const uint8_t *data, size_t len,
+                                                        mip_gnss_receiver_1_hardware_status_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 5 && mip_gnss_receiver_1_hardware_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_hardware_status_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_hardware_status_to_json(mip_jw_t *w,
@@ -1771,16 +1829,22 @@ static int mip_gnss_receiver_1_clock_info_2_load(const uint8_t *d, mip_gnss_rece
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_clock_info_2_decode(const uint8_t *data, size_t len,
-                                                     mip_gnss_receiver_1_clock_info_2_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 34, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_clock_info_2_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_clock_info_2_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 34 && mip_gnss_receiver_1_clock_info_2_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_clock_info_2_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_clock_info_2_decode(const uint8_t *data, size_t len,
+                                                     mip_gnss_receiver_1_clock_info_2_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 34 && mip_gnss_receiver_1_clock_info_2_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_clock_info_2_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_clock_info_2_to_json(mip_jw_t *w, const mip_gnss_receiver_1_clock_info_2_t *in) {
@@ -1918,16 +1982,22 @@ static int mip_gnss_receiver_1_gps_leap_seconds_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode(const uint8_t *data, size_t len,
-                                                         mip_gnss_receiver_1_gps_leap_seconds_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_gps_leap_seconds_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 3 && mip_gnss_receiver_1_gps_leap_seconds_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_leap_seconds_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode(const uint8_t *data, size_t len,
+                                                         mip_gnss_receiver_1_gps_leap_seconds_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 3 && mip_gnss_receiver_1_gps_leap_seconds_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_gps_leap_seconds_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_gps_leap_seconds_to_json(mip_jw_t *w,
@@ -2068,16 +2138,22 @@ static int mip_gnss_receiver_1_sbas_info_load(const uint8_t *d, mip_gnss_receive
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_sbas_info_decode(const uint8_t *data, size_t len,
-                                                  mip_gnss_receiver_1_sbas_info_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 16, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_sbas_info_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_sbas_info_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 16 && mip_gnss_receiver_1_sbas_info_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_sbas_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_sbas_info_decode(const uint8_t *data, size_t len,
+                                                  mip_gnss_receiver_1_sbas_info_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 16 && mip_gnss_receiver_1_sbas_info_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_sbas_info_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_sbas_info_to_json(mip_jw_t *w, const mip_gnss_receiver_1_sbas_info_t *in) {
@@ -2315,16 +2391,22 @@ static int mip_gnss_receiver_1_satellite_status_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_satellite_status_decode(const uint8_t *data, size_t len,
-                                                         mip_gnss_receiver_1_satellite_status_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 25, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_satellite_status_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_satellite_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 25 && mip_gnss_receiver_1_satellite_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_satellite_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_satellite_status_decode(const uint8_t *data, size_t len,
+                                                         mip_gnss_receiver_1_satellite_status_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 25 && mip_gnss_receiver_1_satellite_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_satellite_status_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_satellite_status_to_json(mip_jw_t *w,
@@ -2677,15 +2759,22 @@ static int mip_gnss_receiver_1_raw_load(const uint8_t *d, mip_gnss_receiver_1_ra
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_raw_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_raw_t *out,
-                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 61, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_raw_decode_read(const uint8_t *data, size_t len,
+                                                                     mip_gnss_receiver_1_raw_t *out,
+                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 61 && mip_gnss_receiver_1_raw_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_raw_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_raw_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_raw_t *out,
+                                            mip_decode_error_t *err) {
+    if (len == 61 && mip_gnss_receiver_1_raw_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_raw_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_raw_to_json(mip_jw_t *w, const mip_gnss_receiver_1_raw_t *in) {
@@ -3295,16 +3384,22 @@ static int mip_gnss_receiver_1_gps_ephemeris_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode(const uint8_t *data, size_t len,
-                                                      mip_gnss_receiver_1_gps_ephemeris_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 218, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_gps_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 218 && mip_gnss_receiver_1_gps_ephemeris_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode(const uint8_t *data, size_t len,
+                                                      mip_gnss_receiver_1_gps_ephemeris_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 218 && mip_gnss_receiver_1_gps_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_gps_ephemeris_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_gps_ephemeris_to_json(mip_jw_t *w, const mip_gnss_receiver_1_gps_ephemeris_t *in) {
@@ -4082,16 +4177,22 @@ static int mip_gnss_receiver_1_glonass_ephemeris_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode(const uint8_t *data, size_t len,
-                                                          mip_gnss_receiver_1_glonass_ephemeris_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 102, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_glonass_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 102 && mip_gnss_receiver_1_glonass_ephemeris_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_glonass_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode(const uint8_t *data, size_t len,
+                                                          mip_gnss_receiver_1_glonass_ephemeris_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 102 && mip_gnss_receiver_1_glonass_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_glonass_ephemeris_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_glonass_ephemeris_to_json(mip_jw_t *w,
@@ -4861,16 +4962,22 @@ static int mip_gnss_receiver_1_galileo_ephemeris_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode(const uint8_t *data, size_t len,
-                                                          mip_gnss_receiver_1_galileo_ephemeris_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 218, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_galileo_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 218 && mip_gnss_receiver_1_galileo_ephemeris_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_galileo_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode(const uint8_t *data, size_t len,
+                                                          mip_gnss_receiver_1_galileo_ephemeris_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 218 && mip_gnss_receiver_1_galileo_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_galileo_ephemeris_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_galileo_ephemeris_to_json(mip_jw_t *w,
@@ -5706,16 +5813,22 @@ static int mip_gnss_receiver_1_beidou_ephemeris_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode(const uint8_t *data, size_t len,
-                                                         mip_gnss_receiver_1_beidou_ephemeris_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 218, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode_read(
+    const uint8_t *data, size_t len, mip_gnss_receiver_1_beidou_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 218 && mip_gnss_receiver_1_beidou_ephemeris_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_beidou_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode(const uint8_t *data, size_t len,
+                                                         mip_gnss_receiver_1_beidou_ephemeris_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 218 && mip_gnss_receiver_1_beidou_ephemeris_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_gnss_receiver_1_beidou_ephemeris_decode_read(data, len, out, err);
 }
 
 void mip_gnss_receiver_1_beidou_ephemeris_to_json(mip_jw_t *w,

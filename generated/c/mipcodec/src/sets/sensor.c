@@ -52,15 +52,22 @@ static int mip_sensor_scaled_accel_load(const uint8_t *d, mip_sensor_scaled_acce
     return 0;
 }
 
-mip_status_t mip_sensor_scaled_accel_decode(const uint8_t *data, size_t len, mip_sensor_scaled_accel_t *out,
-                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_scaled_accel_decode_read(const uint8_t *data, size_t len,
+                                                                     mip_sensor_scaled_accel_t *out,
+                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_scaled_accel_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_scaled_accel_decode(const uint8_t *data, size_t len, mip_sensor_scaled_accel_t *out,
+                                            mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_scaled_accel_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_scaled_accel_decode_read(data, len, out, err);
 }
 
 void mip_sensor_scaled_accel_to_json(mip_jw_t *w, const mip_sensor_scaled_accel_t *in) {
@@ -169,15 +176,22 @@ static int mip_sensor_scaled_gyro_load(const uint8_t *d, mip_sensor_scaled_gyro_
     return 0;
 }
 
-mip_status_t mip_sensor_scaled_gyro_decode(const uint8_t *data, size_t len, mip_sensor_scaled_gyro_t *out,
-                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_scaled_gyro_decode_read(const uint8_t *data, size_t len,
+                                                                    mip_sensor_scaled_gyro_t *out,
+                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_scaled_gyro_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_gyro_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_scaled_gyro_decode(const uint8_t *data, size_t len, mip_sensor_scaled_gyro_t *out,
+                                           mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_scaled_gyro_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_scaled_gyro_decode_read(data, len, out, err);
 }
 
 void mip_sensor_scaled_gyro_to_json(mip_jw_t *w, const mip_sensor_scaled_gyro_t *in) {
@@ -286,15 +300,22 @@ static int mip_sensor_scaled_mag_load(const uint8_t *d, mip_sensor_scaled_mag_t 
     return 0;
 }
 
-mip_status_t mip_sensor_scaled_mag_decode(const uint8_t *data, size_t len, mip_sensor_scaled_mag_t *out,
-                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_scaled_mag_decode_read(const uint8_t *data, size_t len,
+                                                                   mip_sensor_scaled_mag_t *out,
+                                                                   mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_scaled_mag_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_mag_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_scaled_mag_decode(const uint8_t *data, size_t len, mip_sensor_scaled_mag_t *out,
+                                          mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_scaled_mag_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_scaled_mag_decode_read(data, len, out, err);
 }
 
 void mip_sensor_scaled_mag_to_json(mip_jw_t *w, const mip_sensor_scaled_mag_t *in) {
@@ -403,15 +424,22 @@ static int mip_sensor_delta_theta_load(const uint8_t *d, mip_sensor_delta_theta_
     return 0;
 }
 
-mip_status_t mip_sensor_delta_theta_decode(const uint8_t *data, size_t len, mip_sensor_delta_theta_t *out,
-                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_delta_theta_decode_read(const uint8_t *data, size_t len,
+                                                                    mip_sensor_delta_theta_t *out,
+                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_delta_theta_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_delta_theta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_delta_theta_decode(const uint8_t *data, size_t len, mip_sensor_delta_theta_t *out,
+                                           mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_delta_theta_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_delta_theta_decode_read(data, len, out, err);
 }
 
 void mip_sensor_delta_theta_to_json(mip_jw_t *w, const mip_sensor_delta_theta_t *in) {
@@ -520,15 +548,22 @@ static int mip_sensor_delta_velocity_load(const uint8_t *d, mip_sensor_delta_vel
     return 0;
 }
 
-mip_status_t mip_sensor_delta_velocity_decode(const uint8_t *data, size_t len,
-                                              mip_sensor_delta_velocity_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_delta_velocity_decode_read(const uint8_t *data, size_t len,
+                                                                       mip_sensor_delta_velocity_t *out,
+                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_delta_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_delta_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_delta_velocity_decode(const uint8_t *data, size_t len,
+                                              mip_sensor_delta_velocity_t *out, mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_delta_velocity_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_delta_velocity_decode_read(data, len, out, err);
 }
 
 void mip_sensor_delta_velocity_to_json(mip_jw_t *w, const mip_sensor_delta_velocity_t *in) {
@@ -644,16 +679,22 @@ static int mip_sensor_cf_orientation_matrix_load(const uint8_t *d, mip_sensor_cf
     return 0;
 }
 
-mip_status_t mip_sensor_cf_orientation_matrix_decode(const uint8_t *data, size_t len,
-                                                     mip_sensor_cf_orientation_matrix_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 36, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_cf_orientation_matrix_decode_read(
+    const uint8_t *data, size_t len, mip_sensor_cf_orientation_matrix_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 36 && mip_sensor_cf_orientation_matrix_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_orientation_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_cf_orientation_matrix_decode(const uint8_t *data, size_t len,
+                                                     mip_sensor_cf_orientation_matrix_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 36 && mip_sensor_cf_orientation_matrix_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_cf_orientation_matrix_decode_read(data, len, out, err);
 }
 
 void mip_sensor_cf_orientation_matrix_to_json(mip_jw_t *w, const mip_sensor_cf_orientation_matrix_t *in) {
@@ -764,15 +805,22 @@ static int mip_sensor_cf_quaternion_load(const uint8_t *d, mip_sensor_cf_quatern
     return 0;
 }
 
-mip_status_t mip_sensor_cf_quaternion_decode(const uint8_t *data, size_t len, mip_sensor_cf_quaternion_t *out,
-                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 16, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_cf_quaternion_decode_read(const uint8_t *data, size_t len,
+                                                                      mip_sensor_cf_quaternion_t *out,
+                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 16 && mip_sensor_cf_quaternion_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_cf_quaternion_decode(const uint8_t *data, size_t len, mip_sensor_cf_quaternion_t *out,
+                                             mip_decode_error_t *err) {
+    if (len == 16 && mip_sensor_cf_quaternion_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_cf_quaternion_decode_read(data, len, out, err);
 }
 
 void mip_sensor_cf_quaternion_to_json(mip_jw_t *w, const mip_sensor_cf_quaternion_t *in) {
@@ -891,15 +939,22 @@ static int mip_sensor_cf_euler_angles_load(const uint8_t *d, mip_sensor_cf_euler
     return 0;
 }
 
-mip_status_t mip_sensor_cf_euler_angles_decode(const uint8_t *data, size_t len,
-                                               mip_sensor_cf_euler_angles_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_cf_euler_angles_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_sensor_cf_euler_angles_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_cf_euler_angles_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_cf_euler_angles_decode(const uint8_t *data, size_t len,
+                                               mip_sensor_cf_euler_angles_t *out, mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_cf_euler_angles_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_cf_euler_angles_decode_read(data, len, out, err);
 }
 
 void mip_sensor_cf_euler_angles_to_json(mip_jw_t *w, const mip_sensor_cf_euler_angles_t *in) {
@@ -1006,16 +1061,22 @@ static int mip_sensor_cf_stabilized_north_load(const uint8_t *d, mip_sensor_cf_s
     return 0;
 }
 
-mip_status_t mip_sensor_cf_stabilized_north_decode(const uint8_t *data, size_t len,
-                                                   mip_sensor_cf_stabilized_north_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_cf_stabilized_north_decode_read(
+    const uint8_t *data, size_t len, mip_sensor_cf_stabilized_north_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_cf_stabilized_north_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_stabilized_north_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_cf_stabilized_north_decode(const uint8_t *data, size_t len,
+                                                   mip_sensor_cf_stabilized_north_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_cf_stabilized_north_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_cf_stabilized_north_decode_read(data, len, out, err);
 }
 
 void mip_sensor_cf_stabilized_north_to_json(mip_jw_t *w, const mip_sensor_cf_stabilized_north_t *in) {
@@ -1126,15 +1187,22 @@ static int mip_sensor_cf_stabilized_up_load(const uint8_t *d, mip_sensor_cf_stab
     return 0;
 }
 
-mip_status_t mip_sensor_cf_stabilized_up_decode(const uint8_t *data, size_t len,
-                                                mip_sensor_cf_stabilized_up_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_cf_stabilized_up_decode_read(const uint8_t *data, size_t len,
+                                                                         mip_sensor_cf_stabilized_up_t *out,
+                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_cf_stabilized_up_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_stabilized_up_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_cf_stabilized_up_decode(const uint8_t *data, size_t len,
+                                                mip_sensor_cf_stabilized_up_t *out, mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_cf_stabilized_up_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_cf_stabilized_up_decode_read(data, len, out, err);
 }
 
 void mip_sensor_cf_stabilized_up_to_json(mip_jw_t *w, const mip_sensor_cf_stabilized_up_t *in) {
@@ -1252,15 +1320,22 @@ static int mip_sensor_gps_timestamp_load(const uint8_t *d, mip_sensor_gps_timest
     return 0;
 }
 
-mip_status_t mip_sensor_gps_timestamp_decode(const uint8_t *data, size_t len, mip_sensor_gps_timestamp_t *out,
-                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_gps_timestamp_decode_read(const uint8_t *data, size_t len,
+                                                                      mip_sensor_gps_timestamp_t *out,
+                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_gps_timestamp_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_gps_timestamp_decode(const uint8_t *data, size_t len, mip_sensor_gps_timestamp_t *out,
+                                             mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_gps_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_gps_timestamp_decode_read(data, len, out, err);
 }
 
 void mip_sensor_gps_timestamp_to_json(mip_jw_t *w, const mip_sensor_gps_timestamp_t *in) {
@@ -1377,16 +1452,22 @@ static int mip_sensor_temperature_statistics_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_sensor_temperature_statistics_decode(const uint8_t *data, size_t len,
-                                                      mip_sensor_temperature_statistics_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_temperature_statistics_decode_read(
+    const uint8_t *data, size_t len, mip_sensor_temperature_statistics_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_sensor_temperature_statistics_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_temperature_statistics_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_temperature_statistics_decode(const uint8_t *data, size_t len,
+                                                      mip_sensor_temperature_statistics_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 12 && mip_sensor_temperature_statistics_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_temperature_statistics_decode_read(data, len, out, err);
 }
 
 void mip_sensor_temperature_statistics_to_json(mip_jw_t *w, const mip_sensor_temperature_statistics_t *in) {
@@ -1485,15 +1566,22 @@ static int mip_sensor_scaled_pressure_load(const uint8_t *d, mip_sensor_scaled_p
     return 0;
 }
 
-mip_status_t mip_sensor_scaled_pressure_decode(const uint8_t *data, size_t len,
-                                               mip_sensor_scaled_pressure_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_scaled_pressure_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_sensor_scaled_pressure_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_sensor_scaled_pressure_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_pressure_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_scaled_pressure_decode(const uint8_t *data, size_t len,
+                                               mip_sensor_scaled_pressure_t *out, mip_decode_error_t *err) {
+    if (len == 4 && mip_sensor_scaled_pressure_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_scaled_pressure_decode_read(data, len, out, err);
 }
 
 void mip_sensor_scaled_pressure_to_json(mip_jw_t *w, const mip_sensor_scaled_pressure_t *in) {
@@ -1565,15 +1653,22 @@ static int mip_sensor_overrange_status_load(const uint8_t *d, mip_sensor_overran
     return 0;
 }
 
-mip_status_t mip_sensor_overrange_status_decode(const uint8_t *data, size_t len,
-                                                mip_sensor_overrange_status_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_overrange_status_decode_read(const uint8_t *data, size_t len,
+                                                                         mip_sensor_overrange_status_t *out,
+                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_sensor_overrange_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_overrange_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_overrange_status_decode(const uint8_t *data, size_t len,
+                                                mip_sensor_overrange_status_t *out, mip_decode_error_t *err) {
+    if (len == 2 && mip_sensor_overrange_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_overrange_status_decode_read(data, len, out, err);
 }
 
 void mip_sensor_overrange_status_to_json(mip_jw_t *w, const mip_sensor_overrange_status_t *in) {
@@ -1662,15 +1757,22 @@ static int mip_sensor_odometer_data_load(const uint8_t *d, mip_sensor_odometer_d
     return 0;
 }
 
-mip_status_t mip_sensor_odometer_data_decode(const uint8_t *data, size_t len, mip_sensor_odometer_data_t *out,
-                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 10, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_sensor_odometer_data_decode_read(const uint8_t *data, size_t len,
+                                                                      mip_sensor_odometer_data_t *out,
+                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 10 && mip_sensor_odometer_data_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_odometer_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_sensor_odometer_data_decode(const uint8_t *data, size_t len, mip_sensor_odometer_data_t *out,
+                                             mip_decode_error_t *err) {
+    if (len == 10 && mip_sensor_odometer_data_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_sensor_odometer_data_decode_read(data, len, out, err);
 }
 
 void mip_sensor_odometer_data_to_json(mip_jw_t *w, const mip_sensor_odometer_data_t *in) {

@@ -43,15 +43,22 @@ static int mip_shared_event_source_load(const uint8_t *d, mip_shared_event_sourc
     return 0;
 }
 
-mip_status_t mip_shared_event_source_decode(const uint8_t *data, size_t len, mip_shared_event_source_t *out,
-                                            mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_event_source_decode_read(const uint8_t *data, size_t len,
+                                                                     mip_shared_event_source_t *out,
+                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_shared_event_source_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_event_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_event_source_decode(const uint8_t *data, size_t len, mip_shared_event_source_t *out,
+                                            mip_decode_error_t *err) {
+    if (len == 1 && mip_shared_event_source_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_event_source_decode_read(data, len, out, err);
 }
 
 void mip_shared_event_source_to_json(mip_jw_t *w, const mip_shared_event_source_t *in) {
@@ -140,15 +147,22 @@ static int mip_shared_gps_timestamp_load(const uint8_t *d, mip_shared_gps_timest
     return 0;
 }
 
-mip_status_t mip_shared_gps_timestamp_decode(const uint8_t *data, size_t len, mip_shared_gps_timestamp_t *out,
-                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_gps_timestamp_decode_read(const uint8_t *data, size_t len,
+                                                                      mip_shared_gps_timestamp_t *out,
+                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_shared_gps_timestamp_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_gps_timestamp_decode(const uint8_t *data, size_t len, mip_shared_gps_timestamp_t *out,
+                                             mip_decode_error_t *err) {
+    if (len == 12 && mip_shared_gps_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_gps_timestamp_decode_read(data, len, out, err);
 }
 
 void mip_shared_gps_timestamp_to_json(mip_jw_t *w, const mip_shared_gps_timestamp_t *in) {
@@ -245,15 +259,22 @@ static int mip_shared_delta_time_load(const uint8_t *d, mip_shared_delta_time_t 
     return 0;
 }
 
-mip_status_t mip_shared_delta_time_decode(const uint8_t *data, size_t len, mip_shared_delta_time_t *out,
-                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 8, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_delta_time_decode_read(const uint8_t *data, size_t len,
+                                                                   mip_shared_delta_time_t *out,
+                                                                   mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 8 && mip_shared_delta_time_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_delta_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_delta_time_decode(const uint8_t *data, size_t len, mip_shared_delta_time_t *out,
+                                          mip_decode_error_t *err) {
+    if (len == 8 && mip_shared_delta_time_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_delta_time_decode_read(data, len, out, err);
 }
 
 void mip_shared_delta_time_to_json(mip_jw_t *w, const mip_shared_delta_time_t *in) {
@@ -325,16 +346,22 @@ static int mip_shared_reference_timestamp_load(const uint8_t *d, mip_shared_refe
     return 0;
 }
 
-mip_status_t mip_shared_reference_timestamp_decode(const uint8_t *data, size_t len,
-                                                   mip_shared_reference_timestamp_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 8, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_reference_timestamp_decode_read(
+    const uint8_t *data, size_t len, mip_shared_reference_timestamp_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 8 && mip_shared_reference_timestamp_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_reference_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_reference_timestamp_decode(const uint8_t *data, size_t len,
+                                                   mip_shared_reference_timestamp_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 8 && mip_shared_reference_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_reference_timestamp_decode_read(data, len, out, err);
 }
 
 void mip_shared_reference_timestamp_to_json(mip_jw_t *w, const mip_shared_reference_timestamp_t *in) {
@@ -407,16 +434,22 @@ static int mip_shared_reference_time_delta_load(const uint8_t *d, mip_shared_ref
     return 0;
 }
 
-mip_status_t mip_shared_reference_time_delta_decode(const uint8_t *data, size_t len,
-                                                    mip_shared_reference_time_delta_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 8, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_reference_time_delta_decode_read(
+    const uint8_t *data, size_t len, mip_shared_reference_time_delta_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 8 && mip_shared_reference_time_delta_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_reference_time_delta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_reference_time_delta_decode(const uint8_t *data, size_t len,
+                                                    mip_shared_reference_time_delta_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 8 && mip_shared_reference_time_delta_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_reference_time_delta_decode_read(data, len, out, err);
 }
 
 void mip_shared_reference_time_delta_to_json(mip_jw_t *w, const mip_shared_reference_time_delta_t *in) {
@@ -498,16 +531,22 @@ static int mip_shared_external_timestamp_load(const uint8_t *d, mip_shared_exter
     return 0;
 }
 
-mip_status_t mip_shared_external_timestamp_decode(const uint8_t *data, size_t len,
-                                                  mip_shared_external_timestamp_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 10, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_external_timestamp_decode_read(
+    const uint8_t *data, size_t len, mip_shared_external_timestamp_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 10 && mip_shared_external_timestamp_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_external_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_external_timestamp_decode(const uint8_t *data, size_t len,
+                                                  mip_shared_external_timestamp_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 10 && mip_shared_external_timestamp_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_external_timestamp_decode_read(data, len, out, err);
 }
 
 void mip_shared_external_timestamp_to_json(mip_jw_t *w, const mip_shared_external_timestamp_t *in) {
@@ -601,16 +640,22 @@ static int mip_shared_external_time_delta_load(const uint8_t *d, mip_shared_exte
     return 0;
 }
 
-mip_status_t mip_shared_external_time_delta_decode(const uint8_t *data, size_t len,
-                                                   mip_shared_external_time_delta_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 10, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_shared_external_time_delta_decode_read(
+    const uint8_t *data, size_t len, mip_shared_external_time_delta_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 10 && mip_shared_external_time_delta_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_external_time_delta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_shared_external_time_delta_decode(const uint8_t *data, size_t len,
+                                                   mip_shared_external_time_delta_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 10 && mip_shared_external_time_delta_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_shared_external_time_delta_decode_read(data, len, out, err);
 }
 
 void mip_shared_external_time_delta_to_json(mip_jw_t *w, const mip_shared_external_time_delta_t *in) {

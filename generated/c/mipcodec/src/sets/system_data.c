@@ -127,16 +127,22 @@ static int mip_system_data_time_sync_status_load(const uint8_t *d, mip_system_da
     return 0;
 }
 
-mip_status_t mip_system_data_time_sync_status_decode(const uint8_t *data, size_t len,
-                                                     mip_system_data_time_sync_status_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_system_data_time_sync_status_decode_read(
+    const uint8_t *data, size_t len, mip_system_data_time_sync_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_system_data_time_sync_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_time_sync_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_system_data_time_sync_status_decode(const uint8_t *data, size_t len,
+                                                     mip_system_data_time_sync_status_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 2 && mip_system_data_time_sync_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_system_data_time_sync_status_decode_read(data, len, out, err);
 }
 
 void mip_system_data_time_sync_status_to_json(mip_jw_t *w, const mip_system_data_time_sync_status_t *in) {
@@ -222,15 +228,22 @@ static int mip_system_data_gpio_state_load(const uint8_t *d, mip_system_data_gpi
     return 0;
 }
 
-mip_status_t mip_system_data_gpio_state_decode(const uint8_t *data, size_t len,
-                                               mip_system_data_gpio_state_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_system_data_gpio_state_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_system_data_gpio_state_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_system_data_gpio_state_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_gpio_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_system_data_gpio_state_decode(const uint8_t *data, size_t len,
+                                               mip_system_data_gpio_state_t *out, mip_decode_error_t *err) {
+    if (len == 1 && mip_system_data_gpio_state_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_system_data_gpio_state_decode_read(data, len, out, err);
 }
 
 void mip_system_data_gpio_state_to_json(mip_jw_t *w, const mip_system_data_gpio_state_t *in) {

@@ -181,16 +181,22 @@ static int mip_threedm_event_control_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_event_control_response_decode(const uint8_t *data, size_t len,
-                                                       mip_threedm_event_control_response_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_event_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_event_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_event_control_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_event_control_response_decode(const uint8_t *data, size_t len,
+                                                       mip_threedm_event_control_response_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_event_control_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_event_control_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_event_control_response_to_json(mip_jw_t *w, const mip_threedm_event_control_response_t *in) {
@@ -1447,17 +1453,24 @@ mip_threedm_device_startup_settings_gx5_45_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_device_startup_settings_gx5_45_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_device_startup_settings_gx5_45_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_device_startup_settings_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_device_startup_settings_gx5_45_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_device_startup_settings_gx5_45_t *out,
                                                   mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_threedm_device_startup_settings_gx5_45_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_device_startup_settings_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_device_startup_settings_gx5_45_decode_read(data, len, out, err);
 }
 
 void mip_threedm_device_startup_settings_gx5_45_to_json(
@@ -1537,17 +1550,24 @@ mip_threedm_device_startup_settings_cv7_ins_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_device_startup_settings_cv7_ins_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_device_startup_settings_cv7_ins_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_device_startup_settings_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_device_startup_settings_cv7_ins_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_device_startup_settings_cv7_ins_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_threedm_device_startup_settings_cv7_ins_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_device_startup_settings_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_device_startup_settings_cv7_ins_decode_read(data, len, out, err);
 }
 
 void mip_threedm_device_startup_settings_cv7_ins_to_json(
@@ -1822,17 +1842,24 @@ mip_threedm_sensor_to_vehicle_euler_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_euler_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_euler_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_sensor_to_vehicle_euler_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_sensor_to_vehicle_euler_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_sensor_to_vehicle_euler_response_t *out,
                                                     mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 12 && mip_threedm_sensor_to_vehicle_euler_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_sensor_to_vehicle_euler_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_sensor_to_vehicle_euler_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_sensor_to_vehicle_euler_response_to_json(
@@ -2093,16 +2120,23 @@ static int mip_threedm_sensor_to_vehicle_quaternion_response_load(
     return 0;
 }
 
-mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_decode(
+/* The general reader: lengths other than 16, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_quaternion_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 16 && mip_threedm_sensor_to_vehicle_quaternion_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_quaternion_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_decode(
+    const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_quaternion_response_t *out,
+    mip_decode_error_t *err) {
+    if (len == 16 && mip_threedm_sensor_to_vehicle_quaternion_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_sensor_to_vehicle_quaternion_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_sensor_to_vehicle_quaternion_response_to_json(
@@ -2370,17 +2404,24 @@ mip_threedm_sensor_to_vehicle_dcm_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 36, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_dcm_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_dcm_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_sensor_to_vehicle_dcm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_sensor_to_vehicle_dcm_response_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_sensor_to_vehicle_dcm_response_t *out,
                                                   mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 36 && mip_threedm_sensor_to_vehicle_dcm_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_sensor_to_vehicle_dcm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_sensor_to_vehicle_dcm_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_sensor_to_vehicle_dcm_response_to_json(
@@ -2779,16 +2820,22 @@ static int mip_threedm_accel_bias_response_load(const uint8_t *d, mip_threedm_ac
     return 0;
 }
 
-mip_status_t mip_threedm_accel_bias_response_decode(const uint8_t *data, size_t len,
-                                                    mip_threedm_accel_bias_response_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_accel_bias_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_accel_bias_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_threedm_accel_bias_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_accel_bias_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_accel_bias_response_decode(const uint8_t *data, size_t len,
+                                                    mip_threedm_accel_bias_response_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 12 && mip_threedm_accel_bias_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_accel_bias_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_accel_bias_response_to_json(mip_jw_t *w, const mip_threedm_accel_bias_response_t *in) {
@@ -3185,16 +3232,22 @@ static int mip_threedm_gyro_bias_response_load(const uint8_t *d, mip_threedm_gyr
     return 0;
 }
 
-mip_status_t mip_threedm_gyro_bias_response_decode(const uint8_t *data, size_t len,
-                                                   mip_threedm_gyro_bias_response_t *out,
-                                                   mip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gyro_bias_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_gyro_bias_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 12 && mip_threedm_gyro_bias_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gyro_bias_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_gyro_bias_response_decode(const uint8_t *data, size_t len,
+                                                   mip_threedm_gyro_bias_response_t *out,
+                                                   mip_decode_error_t *err) {
+    if (len == 12 && mip_threedm_gyro_bias_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_gyro_bias_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gyro_bias_response_to_json(mip_jw_t *w, const mip_threedm_gyro_bias_response_t *in) {
@@ -3296,16 +3349,22 @@ static int mip_threedm_capture_gyro_bias_load(const uint8_t *d, mip_threedm_capt
     return 0;
 }
 
-mip_status_t mip_threedm_capture_gyro_bias_decode(const uint8_t *data, size_t len,
-                                                  mip_threedm_capture_gyro_bias_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_capture_gyro_bias_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_capture_gyro_bias_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_capture_gyro_bias_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_capture_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_capture_gyro_bias_decode(const uint8_t *data, size_t len,
+                                                  mip_threedm_capture_gyro_bias_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_capture_gyro_bias_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_capture_gyro_bias_decode_read(data, len, out, err);
 }
 
 void mip_threedm_capture_gyro_bias_to_json(mip_jw_t *w, const mip_threedm_capture_gyro_bias_t *in) {
@@ -3686,17 +3745,24 @@ static int mip_threedm_mag_hard_iron_offset_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_mag_hard_iron_offset_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_mag_hard_iron_offset_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_mag_hard_iron_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_mag_hard_iron_offset_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_mag_hard_iron_offset_response_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 12 && mip_threedm_mag_hard_iron_offset_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_mag_hard_iron_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_mag_hard_iron_offset_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_mag_hard_iron_offset_response_to_json(
@@ -4114,17 +4180,24 @@ static int mip_threedm_mag_soft_iron_matrix_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 36, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_mag_soft_iron_matrix_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_mag_soft_iron_matrix_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_mag_soft_iron_matrix_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_mag_soft_iron_matrix_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_mag_soft_iron_matrix_response_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 36 && mip_threedm_mag_soft_iron_matrix_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_mag_soft_iron_matrix_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_mag_soft_iron_matrix_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_mag_soft_iron_matrix_response_to_json(
@@ -4345,17 +4418,24 @@ mip_threedm_coning_sculling_enable_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_coning_sculling_enable_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_coning_sculling_enable_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_coning_sculling_enable_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_coning_sculling_enable_response_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_coning_sculling_enable_response_t *out,
                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 1 && mip_threedm_coning_sculling_enable_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_coning_sculling_enable_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_coning_sculling_enable_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_coning_sculling_enable_response_to_json(
@@ -4536,16 +4616,22 @@ static int mip_threedm_uart_baudrate_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_uart_baudrate_response_decode(const uint8_t *data, size_t len,
-                                                       mip_threedm_uart_baudrate_response_t *out,
-                                                       mip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_uart_baudrate_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_uart_baudrate_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 4 && mip_threedm_uart_baudrate_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_uart_baudrate_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_uart_baudrate_response_decode(const uint8_t *data, size_t len,
+                                                       mip_threedm_uart_baudrate_response_t *out,
+                                                       mip_decode_error_t *err) {
+    if (len == 4 && mip_threedm_uart_baudrate_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_uart_baudrate_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_uart_baudrate_response_to_json(mip_jw_t *w, const mip_threedm_uart_baudrate_response_t *in) {
@@ -5085,16 +5171,22 @@ static int mip_threedm_gpio_state_response_load(const uint8_t *d, mip_threedm_gp
     return 0;
 }
 
-mip_status_t mip_threedm_gpio_state_response_decode(const uint8_t *data, size_t len,
-                                                    mip_threedm_gpio_state_response_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gpio_state_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_gpio_state_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_gpio_state_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gpio_state_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_gpio_state_response_decode(const uint8_t *data, size_t len,
+                                                    mip_threedm_gpio_state_response_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_gpio_state_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_gpio_state_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gpio_state_response_to_json(mip_jw_t *w, const mip_threedm_gpio_state_response_t *in) {
@@ -5375,16 +5467,22 @@ static int mip_threedm_odometer_config_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_odometer_config_response_decode(const uint8_t *data, size_t len,
-                                                         mip_threedm_odometer_config_response_t *out,
-                                                         mip_decode_error_t *err) {
+/* The general reader: lengths other than 9, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_odometer_config_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_odometer_config_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 9 && mip_threedm_odometer_config_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_odometer_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_odometer_config_response_decode(const uint8_t *data, size_t len,
+                                                         mip_threedm_odometer_config_response_t *out,
+                                                         mip_decode_error_t *err) {
+    if (len == 9 && mip_threedm_odometer_config_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_odometer_config_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_odometer_config_response_to_json(mip_jw_t *w,
@@ -5765,17 +5863,24 @@ mip_threedm_advanced_lowpass_filter_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_advanced_lowpass_filter_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_advanced_lowpass_filter_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_advanced_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_advanced_lowpass_filter_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_advanced_lowpass_filter_response_t *out,
                                                     mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 6 && mip_threedm_advanced_lowpass_filter_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_advanced_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_advanced_lowpass_filter_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_advanced_lowpass_filter_response_to_json(
@@ -6149,17 +6254,24 @@ static int mip_threedm_complementary_filter_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 10, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_complementary_filter_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_complementary_filter_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_complementary_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_complementary_filter_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_complementary_filter_response_t *out,
                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 10 && mip_threedm_complementary_filter_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_complementary_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_complementary_filter_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_complementary_filter_response_to_json(
@@ -6409,16 +6521,22 @@ static int mip_threedm_sensor_range_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_sensor_range_response_decode(const uint8_t *data, size_t len,
-                                                      mip_threedm_sensor_range_response_t *out,
-                                                      mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_sensor_range_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_sensor_range_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_sensor_range_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_range_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_sensor_range_response_decode(const uint8_t *data, size_t len,
+                                                      mip_threedm_sensor_range_response_t *out,
+                                                      mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_sensor_range_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_sensor_range_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_sensor_range_response_to_json(mip_jw_t *w, const mip_threedm_sensor_range_response_t *in) {
@@ -6508,16 +6626,23 @@ static int mip_threedm_get_calibrated_sensor_ranges_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode(const uint8_t *data, size_t len,
-                                                             mip_threedm_get_calibrated_sensor_ranges_t *out,
-                                                             mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_get_calibrated_sensor_ranges_t *out,
+    mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_threedm_get_calibrated_sensor_ranges_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_calibrated_sensor_ranges_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode(const uint8_t *data, size_t len,
+                                                             mip_threedm_get_calibrated_sensor_ranges_t *out,
+                                                             mip_decode_error_t *err) {
+    if (len == 1 && mip_threedm_get_calibrated_sensor_ranges_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_get_calibrated_sensor_ranges_decode_read(data, len, out, err);
 }
 
 void mip_threedm_get_calibrated_sensor_ranges_to_json(mip_jw_t *w,
@@ -7010,16 +7135,22 @@ static int mip_threedm_lowpass_filter_response_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_lowpass_filter_response_decode(const uint8_t *data, size_t len,
-                                                        mip_threedm_lowpass_filter_response_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 8, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_lowpass_filter_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_lowpass_filter_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 8 && mip_threedm_lowpass_filter_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_lowpass_filter_response_decode(const uint8_t *data, size_t len,
+                                                        mip_threedm_lowpass_filter_response_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 8 && mip_threedm_lowpass_filter_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_lowpass_filter_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_lowpass_filter_response_to_json(mip_jw_t *w,
@@ -7989,15 +8120,22 @@ static int mip_threedm_imu_base_rate_load(const uint8_t *d, mip_threedm_imu_base
     return 0;
 }
 
-mip_status_t mip_threedm_imu_base_rate_decode(const uint8_t *data, size_t len,
-                                              mip_threedm_imu_base_rate_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_imu_base_rate_decode_read(const uint8_t *data, size_t len,
+                                                                       mip_threedm_imu_base_rate_t *out,
+                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_imu_base_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_imu_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_imu_base_rate_decode(const uint8_t *data, size_t len,
+                                              mip_threedm_imu_base_rate_t *out, mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_imu_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_imu_base_rate_decode_read(data, len, out, err);
 }
 
 void mip_threedm_imu_base_rate_to_json(mip_jw_t *w, const mip_threedm_imu_base_rate_t *in) {
@@ -8121,15 +8259,22 @@ static int mip_threedm_gnss_base_rate_load(const uint8_t *d, mip_threedm_gnss_ba
     return 0;
 }
 
-mip_status_t mip_threedm_gnss_base_rate_decode(const uint8_t *data, size_t len,
-                                               mip_threedm_gnss_base_rate_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gnss_base_rate_decode_read(const uint8_t *data, size_t len,
+                                                                        mip_threedm_gnss_base_rate_t *out,
+                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_gnss_base_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_gnss_base_rate_decode(const uint8_t *data, size_t len,
+                                               mip_threedm_gnss_base_rate_t *out, mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_gnss_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_gnss_base_rate_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_base_rate_to_json(mip_jw_t *w, const mip_threedm_gnss_base_rate_t *in) {
@@ -8253,16 +8398,23 @@ static int mip_threedm_filter_base_rate_load(const uint8_t *d, mip_threedm_filte
     return 0;
 }
 
-mip_status_t mip_threedm_filter_base_rate_decode(const uint8_t *data, size_t len,
-                                                 mip_threedm_filter_base_rate_t *out,
-                                                 mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_filter_base_rate_decode_read(const uint8_t *data, size_t len,
+                                                                          mip_threedm_filter_base_rate_t *out,
+                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_filter_base_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_filter_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_filter_base_rate_decode(const uint8_t *data, size_t len,
+                                                 mip_threedm_filter_base_rate_t *out,
+                                                 mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_filter_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_filter_base_rate_decode_read(data, len, out, err);
 }
 
 void mip_threedm_filter_base_rate_to_json(mip_jw_t *w, const mip_threedm_filter_base_rate_t *in) {
@@ -8333,15 +8485,22 @@ static int mip_threedm_get_base_rate_load(const uint8_t *d, mip_threedm_get_base
     return 0;
 }
 
-mip_status_t mip_threedm_get_base_rate_decode(const uint8_t *data, size_t len,
-                                              mip_threedm_get_base_rate_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_get_base_rate_decode_read(const uint8_t *data, size_t len,
+                                                                       mip_threedm_get_base_rate_t *out,
+                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_threedm_get_base_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_get_base_rate_decode(const uint8_t *data, size_t len,
+                                              mip_threedm_get_base_rate_t *out, mip_decode_error_t *err) {
+    if (len == 1 && mip_threedm_get_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_get_base_rate_decode_read(data, len, out, err);
 }
 
 void mip_threedm_get_base_rate_to_json(mip_jw_t *w, const mip_threedm_get_base_rate_t *in) {
@@ -8421,15 +8580,22 @@ static int mip_threedm_base_rate_load(const uint8_t *d, mip_threedm_base_rate_t 
     return 0;
 }
 
-mip_status_t mip_threedm_base_rate_decode(const uint8_t *data, size_t len, mip_threedm_base_rate_t *out,
-                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_base_rate_decode_read(const uint8_t *data, size_t len,
+                                                                   mip_threedm_base_rate_t *out,
+                                                                   mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 3 && mip_threedm_base_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_base_rate_decode(const uint8_t *data, size_t len, mip_threedm_base_rate_t *out,
+                                          mip_decode_error_t *err) {
+    if (len == 3 && mip_threedm_base_rate_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_base_rate_decode_read(data, len, out, err);
 }
 
 void mip_threedm_base_rate_to_json(mip_jw_t *w, const mip_threedm_base_rate_t *in) {
@@ -10102,16 +10268,22 @@ static int mip_threedm_factory_streaming_load(const uint8_t *d, mip_threedm_fact
     return 0;
 }
 
-mip_status_t mip_threedm_factory_streaming_decode(const uint8_t *data, size_t len,
-                                                  mip_threedm_factory_streaming_t *out,
-                                                  mip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_factory_streaming_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_factory_streaming_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_factory_streaming_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_factory_streaming_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_factory_streaming_decode(const uint8_t *data, size_t len,
+                                                  mip_threedm_factory_streaming_t *out,
+                                                  mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_factory_streaming_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_factory_streaming_decode_read(data, len, out, err);
 }
 
 void mip_threedm_factory_streaming_to_json(mip_jw_t *w, const mip_threedm_factory_streaming_t *in) {
@@ -10218,16 +10390,22 @@ static int mip_threedm_data_stream_control_gx5_45_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_data_stream_control_gx5_45_decode(const uint8_t *data, size_t len,
-                                                           mip_threedm_data_stream_control_gx5_45_t *out,
-                                                           mip_decode_error_t *err) {
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_gx5_45_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_data_stream_control_gx5_45_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 3 && mip_threedm_data_stream_control_gx5_45_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_data_stream_control_gx5_45_decode(const uint8_t *data, size_t len,
+                                                           mip_threedm_data_stream_control_gx5_45_t *out,
+                                                           mip_decode_error_t *err) {
+    if (len == 3 && mip_threedm_data_stream_control_gx5_45_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_data_stream_control_gx5_45_decode_read(data, len, out, err);
 }
 
 void mip_threedm_data_stream_control_gx5_45_to_json(mip_jw_t *w,
@@ -10474,17 +10652,24 @@ mip_threedm_data_stream_control_response_gx5_45_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_response_gx5_45_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_gx5_45_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_data_stream_control_response_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_data_stream_control_response_gx5_45_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_data_stream_control_response_gx5_45_t *out,
                                                        mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 2 && mip_threedm_data_stream_control_response_gx5_45_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_data_stream_control_response_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_data_stream_control_response_gx5_45_decode_read(data, len, out, err);
 }
 
 void mip_threedm_data_stream_control_response_gx5_45_to_json(
@@ -10586,16 +10771,23 @@ static int mip_threedm_data_stream_control_response_cv7_ins_load(
     return 0;
 }
 
-mip_status_t mip_threedm_data_stream_control_response_cv7_ins_decode(
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_response_cv7_ins_decode_read(
     const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_cv7_ins_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 2 && mip_threedm_data_stream_control_response_cv7_ins_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_response_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_data_stream_control_response_cv7_ins_decode(
+    const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_cv7_ins_t *out,
+    mip_decode_error_t *err) {
+    if (len == 2 && mip_threedm_data_stream_control_response_cv7_ins_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_data_stream_control_response_cv7_ins_decode_read(data, len, out, err);
 }
 
 void mip_threedm_data_stream_control_response_cv7_ins_to_json(
@@ -11614,16 +11806,22 @@ static int mip_threedm_gnss_assisted_fix_control_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_gnss_assisted_fix_control_decode(const uint8_t *data, size_t len,
-                                                          mip_threedm_gnss_assisted_fix_control_t *out,
-                                                          mip_decode_error_t *err) {
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gnss_assisted_fix_control_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_gnss_assisted_fix_control_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 3 && mip_threedm_gnss_assisted_fix_control_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assisted_fix_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_gnss_assisted_fix_control_decode(const uint8_t *data, size_t len,
+                                                          mip_threedm_gnss_assisted_fix_control_t *out,
+                                                          mip_decode_error_t *err) {
+    if (len == 3 && mip_threedm_gnss_assisted_fix_control_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_gnss_assisted_fix_control_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_assisted_fix_control_to_json(mip_jw_t *w,
@@ -11737,17 +11935,24 @@ mip_threedm_gnss_assisted_fix_control_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gnss_assisted_fix_control_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_gnss_assisted_fix_control_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_gnss_assisted_fix_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_gnss_assisted_fix_control_response_decode(const uint8_t *data, size_t len,
                                                       mip_threedm_gnss_assisted_fix_control_response_t *out,
                                                       mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 2 && mip_threedm_gnss_assisted_fix_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_gnss_assisted_fix_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_gnss_assisted_fix_control_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_assisted_fix_control_response_to_json(
@@ -11863,16 +12068,22 @@ static int mip_threedm_gnss_assist_time_update_load(const uint8_t *d,
     return 0;
 }
 
-mip_status_t mip_threedm_gnss_assist_time_update_decode(const uint8_t *data, size_t len,
-                                                        mip_threedm_gnss_assist_time_update_t *out,
-                                                        mip_decode_error_t *err) {
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gnss_assist_time_update_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_gnss_assist_time_update_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 15 && mip_threedm_gnss_assist_time_update_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assist_time_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_gnss_assist_time_update_decode(const uint8_t *data, size_t len,
+                                                        mip_threedm_gnss_assist_time_update_t *out,
+                                                        mip_decode_error_t *err) {
+    if (len == 15 && mip_threedm_gnss_assist_time_update_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_gnss_assist_time_update_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_assist_time_update_to_json(mip_jw_t *w,
@@ -12008,17 +12219,24 @@ mip_threedm_gnss_assist_time_update_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_gnss_assist_time_update_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_gnss_assist_time_update_response_t *out,
+    mip_decode_error_t *err) {
+    mip_reader_t r;
+    mip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mip_threedm_gnss_assist_time_update_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
 mip_status_t
 mip_threedm_gnss_assist_time_update_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_gnss_assist_time_update_response_t *out,
                                                     mip_decode_error_t *err) {
-    mip_reader_t r;
     if (len == 14 && mip_threedm_gnss_assist_time_update_response_load(data, out) == 0) {
         return MIP_OK;
     }
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_threedm_gnss_assist_time_update_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mip_threedm_gnss_assist_time_update_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_assist_time_update_response_to_json(
@@ -12223,16 +12441,22 @@ static int mip_threedm_pps_source_response_load(const uint8_t *d, mip_threedm_pp
     return 0;
 }
 
-mip_status_t mip_threedm_pps_source_response_decode(const uint8_t *data, size_t len,
-                                                    mip_threedm_pps_source_response_t *out,
-                                                    mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_pps_source_response_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_pps_source_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_threedm_pps_source_response_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_pps_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_pps_source_response_decode(const uint8_t *data, size_t len,
+                                                    mip_threedm_pps_source_response_t *out,
+                                                    mip_decode_error_t *err) {
+    if (len == 1 && mip_threedm_pps_source_response_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_pps_source_response_decode_read(data, len, out, err);
 }
 
 void mip_threedm_pps_source_response_to_json(mip_jw_t *w, const mip_threedm_pps_source_response_t *in) {
@@ -12305,16 +12529,22 @@ static int mip_threedm_get_supported_events_load(const uint8_t *d, mip_threedm_g
     return 0;
 }
 
-mip_status_t mip_threedm_get_supported_events_decode(const uint8_t *data, size_t len,
-                                                     mip_threedm_get_supported_events_t *out,
-                                                     mip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_get_supported_events_decode_read(
+    const uint8_t *data, size_t len, mip_threedm_get_supported_events_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 1 && mip_threedm_get_supported_events_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_supported_events_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_get_supported_events_decode(const uint8_t *data, size_t len,
+                                                     mip_threedm_get_supported_events_t *out,
+                                                     mip_decode_error_t *err) {
+    if (len == 1 && mip_threedm_get_supported_events_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_get_supported_events_decode_read(data, len, out, err);
 }
 
 void mip_threedm_get_supported_events_to_json(mip_jw_t *w, const mip_threedm_get_supported_events_t *in) {
@@ -12487,15 +12717,22 @@ static int mip_threedm_device_status_load(const uint8_t *d, mip_threedm_device_s
     return 0;
 }
 
-mip_status_t mip_threedm_device_status_decode(const uint8_t *data, size_t len,
-                                              mip_threedm_device_status_t *out, mip_decode_error_t *err) {
+/* The general reader: lengths other than 3, bad bool bytes, error details. */
+static MIP_NOINLINE mip_status_t mip_threedm_device_status_decode_read(const uint8_t *data, size_t len,
+                                                                       mip_threedm_device_status_t *out,
+                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
-    if (len == 3 && mip_threedm_device_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+}
+
+mip_status_t mip_threedm_device_status_decode(const uint8_t *data, size_t len,
+                                              mip_threedm_device_status_t *out, mip_decode_error_t *err) {
+    if (len == 3 && mip_threedm_device_status_load(data, out) == 0) {
+        return MIP_OK;
+    }
+    return mip_threedm_device_status_decode_read(data, len, out, err);
 }
 
 void mip_threedm_device_status_to_json(mip_jw_t *w, const mip_threedm_device_status_t *in) {

@@ -38,10 +38,55 @@ typedef struct {
     uint8_t set;
 } mscip_field_iter_t;
 
+/* Private: the trailing entry of mscip_field_iter_next (out of line: it is rare). */
+bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *entry, uint8_t length_byte,
+                                mscip_trailing_kind_t why);
+
+/* init and next are inline: a decode loop calls next for every field, and inline the iterator
+ * and the entry stay in registers. */
 /** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths). */
-void mscip_field_iter_init(mscip_field_iter_t *it, uint8_t set, const uint8_t *payload, size_t len);
+static inline void mscip_field_iter_init(mscip_field_iter_t *it, uint8_t set, const uint8_t *payload,
+                                         size_t len) {
+    it->set = set;
+    it->payload = payload;
+    it->len = payload ? len : 0;
+    it->pos = 0;
+}
+
 /** Next entry: returns true and fills *entry, or false after the last one. */
-bool mscip_field_iter_next(mscip_field_iter_t *it, mscip_field_entry_t *entry);
+static inline bool mscip_field_iter_next(mscip_field_iter_t *it, mscip_field_entry_t *entry) {
+    size_t left = it->len - it->pos;
+    int data_len;
+    size_t total;
+    const uint8_t *head;
+    if (left == 0) {
+        return false;
+    }
+    if (left < MSCIP_FIELD_HEADER_SIZE) {
+        return mscip_field_iter_trailing_(it, entry, 0, MSCIP_TRAILING_SHORT_HEADER);
+    }
+    head = it->payload + it->pos;
+    data_len = (int)head[MSCIP_FIELD_LENGTH_OFFSET] -
+               mscip_field_length_adjust(it->set, head[MSCIP_FIELD_DESCRIPTOR_OFFSET]);
+    if (data_len < 0) {
+        return mscip_field_iter_trailing_(it, entry, head[MSCIP_FIELD_LENGTH_OFFSET],
+                                          MSCIP_TRAILING_SHORT_LENGTH);
+    }
+    total = MSCIP_FIELD_HEADER_SIZE + (size_t)data_len;
+    if (total > left) {
+        return mscip_field_iter_trailing_(it, entry, head[MSCIP_FIELD_LENGTH_OFFSET], MSCIP_TRAILING_OVERRUN);
+    }
+    entry->kind = MSCIP_ENTRY_FIELD;
+    entry->offset = it->pos;
+    entry->descriptor = head[MSCIP_FIELD_DESCRIPTOR_OFFSET];
+    entry->data = head + MSCIP_FIELD_HEADER_SIZE;
+    entry->length = (size_t)data_len;
+    entry->trailing = MSCIP_TRAILING_SHORT_HEADER;
+    entry->length_byte = head[MSCIP_FIELD_LENGTH_OFFSET];
+    it->pos += total;
+    return true;
+}
+
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
 size_t mscip_trailing_format(const mscip_field_entry_t *entry, char *buf, size_t cap);
 

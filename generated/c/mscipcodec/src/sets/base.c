@@ -793,16 +793,22 @@ static int mscip_base_correlate_gps_time_load(const uint8_t *d, mscip_base_corre
     return 0;
 }
 
-mscip_status_t mscip_base_correlate_gps_time_decode(const uint8_t *data, size_t len,
-                                                    mscip_base_correlate_gps_time_t *out,
-                                                    mscip_decode_error_t *err) {
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_base_correlate_gps_time_decode_read(
+    const uint8_t *data, size_t len, mscip_base_correlate_gps_time_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 6 && mscip_base_correlate_gps_time_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_correlate_gps_time_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_base_correlate_gps_time_decode(const uint8_t *data, size_t len,
+                                                    mscip_base_correlate_gps_time_t *out,
+                                                    mscip_decode_error_t *err) {
+    if (len == 6 && mscip_base_correlate_gps_time_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_base_correlate_gps_time_decode_read(data, len, out, err);
 }
 
 void mscip_base_correlate_gps_time_to_json(mscip_jw_t *w, const mscip_base_correlate_gps_time_t *in) {

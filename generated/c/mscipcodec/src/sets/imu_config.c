@@ -156,17 +156,24 @@ static int mscip_imu_config_uart_baud_rate_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_uart_baud_rate_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_uart_baud_rate_response_t *out,
+    mscip_decode_error_t *err) {
+    mscip_reader_t r;
+    mscip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mscip_imu_config_uart_baud_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
 mscip_status_t
 mscip_imu_config_uart_baud_rate_response_decode(const uint8_t *data, size_t len,
                                                 mscip_imu_config_uart_baud_rate_response_t *out,
                                                 mscip_decode_error_t *err) {
-    mscip_reader_t r;
     if (len == 4 && mscip_imu_config_uart_baud_rate_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
-    mscip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mscip_imu_config_uart_baud_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+    return mscip_imu_config_uart_baud_rate_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_uart_baud_rate_response_to_json(mscip_jw_t *w,
@@ -345,16 +352,22 @@ static int mscip_imu_config_filter_response_load(const uint8_t *d, mscip_imu_con
     return 0;
 }
 
-mscip_status_t mscip_imu_config_filter_response_decode(const uint8_t *data, size_t len,
-                                                       mscip_imu_config_filter_response_t *out,
-                                                       mscip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_filter_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_filter_response_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 1 && mscip_imu_config_filter_response_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_filter_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_filter_response_decode(const uint8_t *data, size_t len,
+                                                       mscip_imu_config_filter_response_t *out,
+                                                       mscip_decode_error_t *err) {
+    if (len == 1 && mscip_imu_config_filter_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_filter_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_filter_response_to_json(mscip_jw_t *w, const mscip_imu_config_filter_response_t *in) {
@@ -538,16 +551,23 @@ static int mscip_imu_config_sample_rate_response_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_config_sample_rate_response_decode(const uint8_t *data, size_t len,
-                                                            mscip_imu_config_sample_rate_response_t *out,
-                                                            mscip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_sample_rate_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_sample_rate_response_t *out,
+    mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 2 && mscip_imu_config_sample_rate_response_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_sample_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_sample_rate_response_decode(const uint8_t *data, size_t len,
+                                                            mscip_imu_config_sample_rate_response_t *out,
+                                                            mscip_decode_error_t *err) {
+    if (len == 2 && mscip_imu_config_sample_rate_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_sample_rate_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_sample_rate_response_to_json(mscip_jw_t *w,
@@ -985,16 +1005,23 @@ static int mscip_imu_config_internal_sample_rate_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_config_internal_sample_rate_decode(const uint8_t *data, size_t len,
-                                                            mscip_imu_config_internal_sample_rate_t *out,
-                                                            mscip_decode_error_t *err) {
+/* The general reader: lengths other than 2, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_internal_sample_rate_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_internal_sample_rate_t *out,
+    mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 2 && mscip_imu_config_internal_sample_rate_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_internal_sample_rate_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_internal_sample_rate_decode(const uint8_t *data, size_t len,
+                                                            mscip_imu_config_internal_sample_rate_t *out,
+                                                            mscip_decode_error_t *err) {
+    if (len == 2 && mscip_imu_config_internal_sample_rate_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_internal_sample_rate_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_internal_sample_rate_to_json(mscip_jw_t *w,
@@ -1179,16 +1206,23 @@ static int mscip_imu_config_accel_range_response_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_config_accel_range_response_decode(const uint8_t *data, size_t len,
-                                                            mscip_imu_config_accel_range_response_t *out,
-                                                            mscip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_accel_range_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_accel_range_response_t *out,
+    mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 1 && mscip_imu_config_accel_range_response_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_accel_range_response_decode(const uint8_t *data, size_t len,
+                                                            mscip_imu_config_accel_range_response_t *out,
+                                                            mscip_decode_error_t *err) {
+    if (len == 1 && mscip_imu_config_accel_range_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_accel_range_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_accel_range_response_to_json(mscip_jw_t *w,
@@ -1373,16 +1407,22 @@ static int mscip_imu_config_gyro_range_response_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_config_gyro_range_response_decode(const uint8_t *data, size_t len,
-                                                           mscip_imu_config_gyro_range_response_t *out,
-                                                           mscip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_gyro_range_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_gyro_range_response_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 1 && mscip_imu_config_gyro_range_response_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_gyro_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_gyro_range_response_decode(const uint8_t *data, size_t len,
+                                                           mscip_imu_config_gyro_range_response_t *out,
+                                                           mscip_decode_error_t *err) {
+    if (len == 1 && mscip_imu_config_gyro_range_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_gyro_range_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_gyro_range_response_to_json(mscip_jw_t *w,
@@ -1456,16 +1496,22 @@ static int mscip_imu_config_config_all_load(const uint8_t *d, mscip_imu_config_c
     return 0;
 }
 
-mscip_status_t mscip_imu_config_config_all_decode(const uint8_t *data, size_t len,
-                                                  mscip_imu_config_config_all_t *out,
-                                                  mscip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_config_all_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_config_all_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 1 && mscip_imu_config_config_all_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_config_all_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_config_all_decode(const uint8_t *data, size_t len,
+                                                  mscip_imu_config_config_all_t *out,
+                                                  mscip_decode_error_t *err) {
+    if (len == 1 && mscip_imu_config_config_all_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_config_all_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_config_all_to_json(mscip_jw_t *w, const mscip_imu_config_config_all_t *in) {
@@ -1648,16 +1694,23 @@ static int mscip_imu_config_data_on_off_response_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_config_data_on_off_response_decode(const uint8_t *data, size_t len,
-                                                            mscip_imu_config_data_on_off_response_t *out,
-                                                            mscip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_data_on_off_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_data_on_off_response_t *out,
+    mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 1 && mscip_imu_config_data_on_off_response_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_data_on_off_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_data_on_off_response_decode(const uint8_t *data, size_t len,
+                                                            mscip_imu_config_data_on_off_response_t *out,
+                                                            mscip_decode_error_t *err) {
+    if (len == 1 && mscip_imu_config_data_on_off_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_data_on_off_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_data_on_off_response_to_json(mscip_jw_t *w,
@@ -1843,16 +1896,23 @@ static int mscip_imu_config_xtrig_on_off_response_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_config_xtrig_on_off_response_decode(const uint8_t *data, size_t len,
-                                                             mscip_imu_config_xtrig_on_off_response_t *out,
-                                                             mscip_decode_error_t *err) {
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_xtrig_on_off_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_xtrig_on_off_response_t *out,
+    mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 1 && mscip_imu_config_xtrig_on_off_response_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_xtrig_on_off_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_config_xtrig_on_off_response_decode(const uint8_t *data, size_t len,
+                                                             mscip_imu_config_xtrig_on_off_response_t *out,
+                                                             mscip_decode_error_t *err) {
+    if (len == 1 && mscip_imu_config_xtrig_on_off_response_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_config_xtrig_on_off_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_xtrig_on_off_response_to_json(mscip_jw_t *w,
@@ -2311,17 +2371,24 @@ static int mscip_imu_config_aux_accel_range_response_load(const uint8_t *d,
     return 0;
 }
 
+/* The general reader: lengths other than 1, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_config_aux_accel_range_response_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_config_aux_accel_range_response_t *out,
+    mscip_decode_error_t *err) {
+    mscip_reader_t r;
+    mscip_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mscip_imu_config_aux_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
 mscip_status_t
 mscip_imu_config_aux_accel_range_response_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_config_aux_accel_range_response_t *out,
                                                  mscip_decode_error_t *err) {
-    mscip_reader_t r;
     if (len == 1 && mscip_imu_config_aux_accel_range_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
-    mscip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mscip_imu_config_aux_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+    return mscip_imu_config_aux_accel_range_response_decode_read(data, len, out, err);
 }
 
 void mscip_imu_config_aux_accel_range_response_to_json(

@@ -53,16 +53,22 @@ static int mscip_imu_data_scaled_accel_load(const uint8_t *d, mscip_imu_data_sca
     return 0;
 }
 
-mscip_status_t mscip_imu_data_scaled_accel_decode(const uint8_t *data, size_t len,
-                                                  mscip_imu_data_scaled_accel_t *out,
-                                                  mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_accel_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_data_scaled_accel_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_scaled_accel_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_accel_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_scaled_accel_decode(const uint8_t *data, size_t len,
+                                                  mscip_imu_data_scaled_accel_t *out,
+                                                  mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_scaled_accel_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_scaled_accel_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_scaled_accel_to_json(mscip_jw_t *w, const mscip_imu_data_scaled_accel_t *in) {
@@ -172,16 +178,23 @@ static int mscip_imu_data_scaled_gyro_load(const uint8_t *d, mscip_imu_data_scal
     return 0;
 }
 
-mscip_status_t mscip_imu_data_scaled_gyro_decode(const uint8_t *data, size_t len,
-                                                 mscip_imu_data_scaled_gyro_t *out,
-                                                 mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_gyro_decode_read(const uint8_t *data, size_t len,
+                                                                            mscip_imu_data_scaled_gyro_t *out,
+                                                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_scaled_gyro_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_gyro_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_scaled_gyro_decode(const uint8_t *data, size_t len,
+                                                 mscip_imu_data_scaled_gyro_t *out,
+                                                 mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_scaled_gyro_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_scaled_gyro_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_scaled_gyro_to_json(mscip_jw_t *w, const mscip_imu_data_scaled_gyro_t *in) {
@@ -291,15 +304,22 @@ static int mscip_imu_data_scaled_mag_load(const uint8_t *d, mscip_imu_data_scale
     return 0;
 }
 
-mscip_status_t mscip_imu_data_scaled_mag_decode(const uint8_t *data, size_t len,
-                                                mscip_imu_data_scaled_mag_t *out, mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_mag_decode_read(const uint8_t *data, size_t len,
+                                                                           mscip_imu_data_scaled_mag_t *out,
+                                                                           mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_scaled_mag_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_mag_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_scaled_mag_decode(const uint8_t *data, size_t len,
+                                                mscip_imu_data_scaled_mag_t *out, mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_scaled_mag_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_scaled_mag_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_scaled_mag_to_json(mscip_jw_t *w, const mscip_imu_data_scaled_mag_t *in) {
@@ -409,16 +429,23 @@ static int mscip_imu_data_delta_theta_load(const uint8_t *d, mscip_imu_data_delt
     return 0;
 }
 
-mscip_status_t mscip_imu_data_delta_theta_decode(const uint8_t *data, size_t len,
-                                                 mscip_imu_data_delta_theta_t *out,
-                                                 mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_delta_theta_decode_read(const uint8_t *data, size_t len,
+                                                                            mscip_imu_data_delta_theta_t *out,
+                                                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_delta_theta_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_delta_theta_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_delta_theta_decode(const uint8_t *data, size_t len,
+                                                 mscip_imu_data_delta_theta_t *out,
+                                                 mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_delta_theta_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_delta_theta_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_delta_theta_to_json(mscip_jw_t *w, const mscip_imu_data_delta_theta_t *in) {
@@ -528,16 +555,22 @@ static int mscip_imu_data_delta_velocity_load(const uint8_t *d, mscip_imu_data_d
     return 0;
 }
 
-mscip_status_t mscip_imu_data_delta_velocity_decode(const uint8_t *data, size_t len,
-                                                    mscip_imu_data_delta_velocity_t *out,
-                                                    mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_delta_velocity_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_data_delta_velocity_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_delta_velocity_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_delta_velocity_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_delta_velocity_decode(const uint8_t *data, size_t len,
+                                                    mscip_imu_data_delta_velocity_t *out,
+                                                    mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_delta_velocity_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_delta_velocity_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_delta_velocity_to_json(mscip_jw_t *w, const mscip_imu_data_delta_velocity_t *in) {
@@ -639,16 +672,22 @@ static int mscip_imu_data_scaled_pressure_load(const uint8_t *d, mscip_imu_data_
     return 0;
 }
 
-mscip_status_t mscip_imu_data_scaled_pressure_decode(const uint8_t *data, size_t len,
-                                                     mscip_imu_data_scaled_pressure_t *out,
-                                                     mscip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_pressure_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_data_scaled_pressure_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 4 && mscip_imu_data_scaled_pressure_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_pressure_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_scaled_pressure_decode(const uint8_t *data, size_t len,
+                                                     mscip_imu_data_scaled_pressure_t *out,
+                                                     mscip_decode_error_t *err) {
+    if (len == 4 && mscip_imu_data_scaled_pressure_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_scaled_pressure_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_scaled_pressure_to_json(mscip_jw_t *w, const mscip_imu_data_scaled_pressure_t *in) {
@@ -723,16 +762,22 @@ static int mscip_imu_data_scaled_temperature_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_data_scaled_temperature_decode(const uint8_t *data, size_t len,
-                                                        mscip_imu_data_scaled_temperature_t *out,
-                                                        mscip_decode_error_t *err) {
+/* The general reader: lengths other than 4, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_temperature_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_data_scaled_temperature_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 4 && mscip_imu_data_scaled_temperature_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_temperature_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_scaled_temperature_decode(const uint8_t *data, size_t len,
+                                                        mscip_imu_data_scaled_temperature_t *out,
+                                                        mscip_decode_error_t *err) {
+    if (len == 4 && mscip_imu_data_scaled_temperature_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_scaled_temperature_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_scaled_temperature_to_json(mscip_jw_t *w, const mscip_imu_data_scaled_temperature_t *in) {
@@ -825,16 +870,22 @@ static int mscip_imu_data_gps_correlated_time_load(const uint8_t *d,
     return 0;
 }
 
-mscip_status_t mscip_imu_data_gps_correlated_time_decode(const uint8_t *data, size_t len,
-                                                         mscip_imu_data_gps_correlated_time_t *out,
-                                                         mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_gps_correlated_time_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_data_gps_correlated_time_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_gps_correlated_time_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_gps_correlated_time_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_gps_correlated_time_decode(const uint8_t *data, size_t len,
+                                                         mscip_imu_data_gps_correlated_time_t *out,
+                                                         mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_gps_correlated_time_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_gps_correlated_time_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_gps_correlated_time_to_json(mscip_jw_t *w,
@@ -943,16 +994,22 @@ static int mscip_imu_data_scaled_aux_accel_load(const uint8_t *d, mscip_imu_data
     return 0;
 }
 
-mscip_status_t mscip_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
-                                                      mscip_imu_data_scaled_aux_accel_t *out,
-                                                      mscip_decode_error_t *err) {
+/* The general reader: lengths other than 12, bad bool bytes, error details. */
+static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_aux_accel_decode_read(
+    const uint8_t *data, size_t len, mscip_imu_data_scaled_aux_accel_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
-    if (len == 12 && mscip_imu_data_scaled_aux_accel_load(data, out) == 0) {
-        return MSCIP_OK;
-    }
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_aux_accel_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
+}
+
+mscip_status_t mscip_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
+                                                      mscip_imu_data_scaled_aux_accel_t *out,
+                                                      mscip_decode_error_t *err) {
+    if (len == 12 && mscip_imu_data_scaled_aux_accel_load(data, out) == 0) {
+        return MSCIP_OK;
+    }
+    return mscip_imu_data_scaled_aux_accel_decode_read(data, len, out, err);
 }
 
 void mscip_imu_data_scaled_aux_accel_to_json(mscip_jw_t *w, const mscip_imu_data_scaled_aux_accel_t *in) {
