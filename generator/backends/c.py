@@ -201,6 +201,7 @@ class _Package:
         shared = proto.get("shared_data")
         self.shared_set = shared["set"] if shared and any(s["id"] == shared["set"] for s in proto["sets"]) else None
         self.data_kind = next((k for k in self.set_kinds if k["name"] == "data"), None)
+        self._add_lookup_tables()
         self.path_depth = max([self._layout_depth(v) for v in self._all_ir_layouts()] + [1])
         longest = max([len(n) for n in self._all_param_names()] + [8])
         self.error_message_max = self.path_depth * (longest + 24) + 160
@@ -510,6 +511,24 @@ class _Package:
             "guard": f"{self.P}_SETS_{name.upper()}_H",
             "fields": [self._field_view(s, f) for f in s["fields"]],
         }
+
+    def _add_lookup_tables(self) -> None:
+        """Each set view's `lookup`: the (set, descriptor) -> field table of the C dispatch.
+
+        A set's own fields and, in a data set, the shared data fields it does not define itself
+        (unless a reserved field of the data kind has that descriptor: find_field tries set,
+        reserved, then shared, and the table must give the same answer), so that a shared field
+        such as a timestamp in every packet is one table lookup like any other."""
+        shared = next((s for s in self.sets if s["id"] == self.shared_set), None)
+        dk = self.data_kind
+        reserved_data = {r["descriptor"] for r in self.reserved if dk and r["applies_to"] == dk["name"]}
+        for s in self.sets:
+            lookup = [dict(f, shared=False) for f in s["fields"]]
+            is_data = dk is not None and dk["first"] <= s["id"] <= dk["last"]
+            if shared is not None and s is not shared and is_data:
+                own = {f["descriptor"] for f in s["fields"]} | reserved_data
+                lookup += [dict(f, shared=True) for f in shared["fields"] if f["descriptor"] not in own]
+            s["lookup"] = sorted(lookup, key=lambda f: f["descriptor"])
 
     def _all_ir_layouts(self):
         for r in self.proto["reserved_fields"]:

@@ -144,46 +144,47 @@ const mscip_layout_info_t *mscip_layout_info(mscip_field_id_t id) {
     return &k_layouts[id];
 }
 
-/* Fields defined in each set: descriptor -> 1 + index into k_fields (0: not defined). Dispatch
- * by (set, descriptor) is two table lookups. */
+/* Fields of each set: descriptor -> 1 + index into k_fields (0: not defined). Dispatch by
+ * (set, descriptor) is two table lookups. A data set's table also holds the shared data fields it
+ * does not define itself (the answer find_field would reach after the reserved fields). */
 static const uint16_t k_set_base[256] = {
     [0x02] = 2,  /* ping */
     [0x03] = 3,  /* get_device_messages */
-    [0x83] = 4,  /* device_messages */
     [0x04] = 5,  /* device_reset */
     [0x05] = 6,  /* get_device_model */
-    [0x85] = 7,  /* device_model */
     [0x06] = 8,  /* get_device_sn */
-    [0x86] = 9,  /* device_sn */
     [0x07] = 10, /* get_device_fw */
-    [0x87] = 11, /* device_fw */
     [0x08] = 12, /* get_device_cal */
-    [0x88] = 13, /* device_cal */
     [0x09] = 14, /* correlate_gps_time */
+    [0x83] = 4,  /* device_messages */
+    [0x85] = 7,  /* device_model */
+    [0x86] = 9,  /* device_sn */
+    [0x87] = 11, /* device_fw */
+    [0x88] = 13, /* device_cal */
 };
 static const uint16_t k_set_imu_config[256] = {
     [0x01] = 15, /* uart_baud_rate */
-    [0x81] = 16, /* uart_baud_rate_response */
     [0x03] = 17, /* filter */
-    [0x83] = 18, /* filter_response */
     [0x04] = 19, /* sample_rate */
-    [0x84] = 20, /* sample_rate_response */
     [0x05] = 21, /* select_sensors */
-    [0x85] = 22, /* select_sensors_response */
     [0x06] = 23, /* get_internal_sample_rate */
-    [0x86] = 24, /* internal_sample_rate */
     [0x07] = 25, /* accel_range */
-    [0x87] = 26, /* accel_range_response */
     [0x08] = 27, /* gyro_range */
-    [0x88] = 28, /* gyro_range_response */
     [0x09] = 29, /* config_all */
     [0x0A] = 30, /* data_on_off */
-    [0x8A] = 31, /* data_on_off_response */
     [0x0B] = 32, /* xtrig_on_off */
-    [0x8B] = 33, /* xtrig_on_off_response */
     [0x0C] = 34, /* select_sensors_rev_b */
-    [0x8C] = 35, /* select_sensors_rev_b_response */
     [0x0D] = 36, /* aux_accel_range */
+    [0x81] = 16, /* uart_baud_rate_response */
+    [0x83] = 18, /* filter_response */
+    [0x84] = 20, /* sample_rate_response */
+    [0x85] = 22, /* select_sensors_response */
+    [0x86] = 24, /* internal_sample_rate */
+    [0x87] = 26, /* accel_range_response */
+    [0x88] = 28, /* gyro_range_response */
+    [0x8A] = 31, /* data_on_off_response */
+    [0x8B] = 33, /* xtrig_on_off_response */
+    [0x8C] = 35, /* select_sensors_rev_b_response */
     [0x8D] = 37, /* aux_accel_range_response */
 };
 static const uint16_t k_set_imu_data[256] = {
@@ -204,7 +205,8 @@ static const uint16_t *const k_sets[256] = {
     [0xA2] = k_set_imu_data,
 };
 
-/* Fields defined in a set; *set_known tells whether the set is defined at all. */
+/* Fields of a set (shared data fields included, see k_set_*); *set_known tells whether the set
+ * is defined at all. */
 static const mscip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
     const uint16_t *table = k_sets[set];
     *set_known = table != NULL;
