@@ -16,6 +16,7 @@ pub struct Packet<'a> {
 impl<'a> Packet<'a> {
     /// Wraps the bytes of a packet whose framing and checksum were checked (by the parser or
     /// the builder). Returns `None` if `bytes` is shorter than its header says.
+    #[inline]
     pub fn new(bytes: &'a [u8]) -> Option<Self> {
         if bytes.len() < HEADER_SIZE
             || bytes.len() < HEADER_SIZE + usize::from(bytes[LENGTH_OFFSET])
@@ -26,21 +27,25 @@ impl<'a> Packet<'a> {
     }
 
     /// All bytes of the packet.
+    #[inline]
     pub fn bytes(&self) -> &'a [u8] {
         self.bytes
     }
 
     /// Descriptor set.
+    #[inline]
     pub fn set(&self) -> u8 {
         self.bytes[SET_OFFSET]
     }
 
     /// Payload (the fields).
+    #[inline]
     pub fn payload(&self) -> &'a [u8] {
         &self.bytes[HEADER_SIZE..HEADER_SIZE + usize::from(self.bytes[LENGTH_OFFSET])]
     }
 
     /// The fields of the payload.
+    #[inline]
     pub fn fields(&self) -> Fields<'a> {
         Fields::new(self.set(), self.payload())
     }
@@ -104,6 +109,7 @@ pub struct Fields<'a> {
 impl<'a> Fields<'a> {
     /// Fields of `payload`, the payload of a packet of descriptor set `set` (the set decides
     /// irregular field lengths).
+    #[inline]
     pub const fn new(set: u8, payload: &'a [u8]) -> Self {
         Self {
             set,
@@ -116,6 +122,7 @@ impl<'a> Fields<'a> {
 impl<'a> Iterator for Fields<'a> {
     type Item = FieldItem<'a>;
 
+    #[inline]
     fn next(&mut self) -> Option<FieldItem<'a>> {
         let offset = self.pos;
         let left = self.payload.len() - offset;

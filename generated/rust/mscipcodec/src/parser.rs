@@ -67,6 +67,24 @@ fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
         .map(|i| base + i)
 }
 
+/// Index of the first full sync in `data` at or after `from`, or of a sync prefix at its very
+/// end; `None` if there is neither.
+#[inline(always)]
+fn find_sync_from(data: &[u8], from: usize) -> Option<usize> {
+    let end = data.len();
+    let mut at = from;
+    loop {
+        at += find_byte(&data[at..], SYNC[0])?;
+        // The rest of the sync, or as much of it as `data` holds (byte by byte: no call to a
+        // slice comparison).
+        let n = (end - at).min(SYNC.len());
+        if (1..n).all(|k| data[at + k] == SYNC[k]) {
+            return Some(at);
+        }
+        at += 1;
+    }
+}
+
 enum Sync {
     // A full sync sequence at this index.
     Full(usize),
@@ -142,24 +160,20 @@ impl Parser {
         let end = data.len();
         let mut pos = 0;
         loop {
-            // Find the next sync (or a sync prefix at the very end).
-            let mut at = pos;
-            loop {
-                match find_byte(&data[at..], SYNC[0]) {
+            // The next sync (or a sync prefix at the very end): usually right here, after a
+            // packet; else searched for.
+            let at = if end - pos >= SYNC.len() && (0..SYNC.len()).all(|k| data[pos + k] == SYNC[k])
+            {
+                pos
+            } else {
+                match find_sync_from(data, pos) {
+                    Some(at) => at,
                     None => {
                         self.skip_in_place(end - pos);
                         return end;
                     }
-                    Some(i) => at += i,
                 }
-                // The rest of the sync, or as much of it as `data` holds (byte by byte: no call
-                // to a slice comparison).
-                let n = (end - at).min(SYNC.len());
-                if (1..n).all(|k| data[at + k] == SYNC[k]) {
-                    break;
-                }
-                at += 1;
-            }
+            };
             self.skip_in_place(at - pos);
             pos = at;
             let left = end - pos;
