@@ -102,8 +102,9 @@ pub enum FieldItem<'a> {
 #[derive(Clone, Debug)]
 pub struct Fields<'a> {
     set: u8,
-    payload: &'a [u8],
-    pos: usize,
+    // The payload from the next field on, and its offset in the payload.
+    rest: &'a [u8],
+    offset: usize,
 }
 
 impl<'a> Fields<'a> {
@@ -113,8 +114,8 @@ impl<'a> Fields<'a> {
     pub const fn new(set: u8, payload: &'a [u8]) -> Self {
         Self {
             set,
-            payload,
-            pos: 0,
+            rest: payload,
+            offset: 0,
         }
     }
 }
@@ -124,15 +125,18 @@ impl<'a> Iterator for Fields<'a> {
 
     #[inline]
     fn next(&mut self) -> Option<FieldItem<'a>> {
-        let offset = self.pos;
-        let left = self.payload.len() - offset;
+        let rest = self.rest;
+        let offset = self.offset;
+        let left = rest.len();
         if left == 0 {
             return None;
         }
-        let rest = &self.payload[offset..];
-        let trailing = |error| Some(FieldItem::Trailing { bytes: rest, error });
+        let mut trailing = |error| {
+            self.rest = &[];
+            self.offset += left;
+            Some(FieldItem::Trailing { bytes: rest, error })
+        };
         if left < FIELD_HEADER_SIZE {
-            self.pos = self.payload.len();
             return trailing(FramingError::HeaderShort { offset, left });
         }
         let length = rest[FIELD_LENGTH_OFFSET];
@@ -141,24 +145,22 @@ impl<'a> Iterator for Fields<'a> {
             isize::from(length) - field_length_adjust(self.set, descriptor),
         ) {
             Ok(n) => n,
-            Err(_) => {
-                self.pos = self.payload.len();
-                return trailing(FramingError::LengthShort { length, offset });
-            }
+            Err(_) => return trailing(FramingError::LengthShort { length, offset }),
         };
         let total = FIELD_HEADER_SIZE + data_len;
         if total > left {
-            self.pos = self.payload.len();
             return trailing(FramingError::Overrun {
                 length,
                 offset,
                 left,
             });
         }
-        self.pos += total;
+        let (field, after) = rest.split_at(total);
+        self.rest = after;
+        self.offset += total;
         Some(FieldItem::Field {
             descriptor,
-            data: &rest[FIELD_HEADER_SIZE..total],
+            data: &field[FIELD_HEADER_SIZE..],
         })
     }
 }

@@ -70,6 +70,7 @@ pub fn set_defined(set: u8) -> bool {
 /// A decoded field, by the group that defines it.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(u8)]
 pub enum FieldValue {
     /// A field of set 0x01.
     Base(crate::base::SetField),

@@ -65,13 +65,29 @@ pub fn fletcher16(bytes: &[u8]) -> (u8, u8) {
     const W_ODD: u64 = 0x0007_0005_0003_0001;
     let (mut e, mut o, mut q) = (0u64, 0u64, 0u64);
     let mut blocks = bytes.chunks_exact(8);
-    for block in &mut blocks {
+    let word = |block: &[u8]| {
         let mut word = [0u8; 8];
         word.copy_from_slice(block);
-        let x = u64::from_le_bytes(word);
-        e = (e + (x & LANES)) & LANES;
-        o = (o + ((x >> 8) & LANES)) & LANES;
-        q = (q + e + o) & LANES;
+        u64::from_le_bytes(word)
+    };
+    if bytes.len() <= 8 * 64 {
+        // Up to 64 blocks (every packet): E and O stay below 255 · 64 per lane, so they need
+        // no reduction until the end (Q + E + O stays below 2^16).
+        for block in &mut blocks {
+            let x = word(block);
+            e += x & LANES;
+            o += (x >> 8) & LANES;
+            q = (q + e + o) & LANES;
+        }
+        e &= LANES;
+        o &= LANES;
+    } else {
+        for block in &mut blocks {
+            let x = word(block);
+            e = (e + (x & LANES)) & LANES;
+            o = (o + ((x >> 8) & LANES)) & LANES;
+            q = (q + e + o) & LANES;
+        }
     }
     let hsum = |lanes: u64| lanes.wrapping_mul(ONES) >> 48;
     let mut sum1 = hsum(e + o);

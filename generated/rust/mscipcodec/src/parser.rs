@@ -161,9 +161,10 @@ impl Parser {
         let mut pos = 0;
         loop {
             // The next sync (or a sync prefix at the very end): usually right here, after a
-            // packet; else searched for.
-            let at = if end - pos >= SYNC.len() && (0..SYNC.len()).all(|k| data[pos + k] == SYNC[k])
-            {
+            // packet; else searched for. (Reads through slices whose length was checked, so
+            // that they need no further bounds checks.)
+            let here = &data[pos..];
+            let at = if here.len() >= SYNC.len() && (0..SYNC.len()).all(|k| here[k] == SYNC[k]) {
                 pos
             } else {
                 match find_sync_from(data, pos) {
@@ -176,11 +177,11 @@ impl Parser {
             };
             self.skip_in_place(at - pos);
             pos = at;
-            let left = end - pos;
-            if left < HEADER_SIZE {
+            let candidate = &data[pos..];
+            if candidate.len() < HEADER_SIZE {
                 return pos;
             }
-            let payload = usize::from(data[pos + LENGTH_OFFSET]);
+            let payload = usize::from(candidate[LENGTH_OFFSET]);
             if payload > MAX_PAYLOAD {
                 self.skip_in_place(1);
                 pos += 1;
@@ -188,10 +189,9 @@ impl Parser {
             }
             let body = HEADER_SIZE + payload;
             let total = body + CHECKSUM_SIZE;
-            if left < total {
+            let Some(packet) = candidate.get(..total) else {
                 return pos;
-            }
-            let packet = &data[pos..pos + total];
+            };
             if checksum_matches(&packet[..body], &packet[body..]) {
                 self.emit_skip(on);
                 on(Event::Packet {
