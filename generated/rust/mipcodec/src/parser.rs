@@ -312,13 +312,21 @@ impl Parser {
         self.base += n as u64;
     }
 
+    #[inline(always)]
     fn emit_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
         if self.skip_count > 0 {
-            on(Event::Skip {
-                offset: self.skip_start,
-                count: self.skip_count,
-            });
-            self.skip_count = 0;
+            self.report_skip(on);
         }
+    }
+
+    /// Reports the skip run (out of line: the packet loop then calls `on` in one place only,
+    /// where the compiler can inline it).
+    #[inline(never)]
+    fn report_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
+        on(Event::Skip {
+            offset: self.skip_start,
+            count: self.skip_count,
+        });
+        self.skip_count = 0;
     }
 }
