@@ -91,6 +91,7 @@ pub fn set_defined(set: u8) -> bool {
 /// A decoded field, by the group that defines it.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(u8)]
 pub enum FieldValue {
     /// A field of set 0x01.
     Base(crate::base::SetField),
@@ -317,366 +318,481 @@ impl FieldValue {
 /// Decodes the data of field `descriptor` in a packet of set `set`: the set's own field, else a
 /// reserved field of the set's kind, else (in a data set) a field of the shared data set. With
 /// `device`, fields that have per-device layouts use that device's layout.
+#[inline]
 pub fn decode_field(
     set: u8,
     descriptor: u8,
     data: &[u8],
     device: Option<Device>,
 ) -> Result<FieldValue, DecodeError> {
-    // The set's own fields: one match on (set, descriptor), compiled to jump tables, straight to
-    // the field's decoder, which builds the FieldValue in the caller's slot.
-    match (set, descriptor) {
-        (0x01, 0x01) => decoders::base_ping(data, device),
-        (0x01, 0x02) => decoders::base_set_to_idle(data, device),
-        (0x01, 0x03) => decoders::base_get_device_info(data, device),
-        (0x01, 0x81) => decoders::base_device_info(data, device),
-        (0x01, 0x04) => decoders::base_get_device_descriptors(data, device),
-        (0x01, 0x82) => decoders::base_device_descriptors(data, device),
-        (0x01, 0x05) => decoders::base_built_in_test(data, device),
-        (0x01, 0x83) => decoders::base_built_in_test_result(data, device),
-        (0x01, 0x06) => decoders::base_resume(data, device),
-        (0x01, 0x07) => decoders::base_get_extended_descriptors(data, device),
-        (0x01, 0x86) => decoders::base_extended_descriptors(data, device),
-        (0x01, 0x08) => decoders::base_continuous_bit(data, device),
-        (0x01, 0x88) => decoders::base_continuous_bit_result(data, device),
-        (0x01, 0x09) => decoders::base_comm_port_speed(data, device),
-        (0x01, 0x89) => decoders::base_comm_port_speed_response(data, device),
-        (0x01, 0x72) => decoders::base_gps_time_update(data, device),
-        (0x01, 0x84) => decoders::base_gps_week(data, device),
-        (0x01, 0x85) => decoders::base_gps_seconds(data, device),
-        (0x01, 0x7E) => decoders::base_device_reset(data, device),
-        (0x0C, 0x2B) => decoders::threedm_event_control(data, device),
-        (0x0C, 0xB5) => decoders::threedm_event_control_response(data, device),
-        (0x0C, 0x2C) => decoders::threedm_get_event_trigger_status(data, device),
-        (0x0C, 0xB6) => decoders::threedm_event_trigger_status(data, device),
-        (0x0C, 0x2D) => decoders::threedm_get_event_action_status(data, device),
-        (0x0C, 0xB7) => decoders::threedm_event_action_status(data, device),
-        (0x0C, 0x2E) => decoders::threedm_event_trigger_config(data, device),
-        (0x0C, 0xB8) => decoders::threedm_event_trigger_config_response(data, device),
-        (0x0C, 0x2F) => decoders::threedm_event_action_config(data, device),
-        (0x0C, 0xB9) => decoders::threedm_event_action_config_response(data, device),
-        (0x0C, 0x30) => decoders::threedm_device_startup_settings(data, device),
-        (0x0C, 0x31) => decoders::threedm_sensor_to_vehicle_euler(data, device),
-        (0x0C, 0xB1) => decoders::threedm_sensor_to_vehicle_euler_response(data, device),
-        (0x0C, 0x32) => decoders::threedm_sensor_to_vehicle_quaternion(data, device),
-        (0x0C, 0xB2) => decoders::threedm_sensor_to_vehicle_quaternion_response(data, device),
-        (0x0C, 0x33) => decoders::threedm_sensor_to_vehicle_dcm(data, device),
-        (0x0C, 0xB3) => decoders::threedm_sensor_to_vehicle_dcm_response(data, device),
-        (0x0C, 0x37) => decoders::threedm_accel_bias(data, device),
-        (0x0C, 0x9A) => decoders::threedm_accel_bias_response(data, device),
-        (0x0C, 0x38) => decoders::threedm_gyro_bias(data, device),
-        (0x0C, 0x9B) => decoders::threedm_gyro_bias_response(data, device),
-        (0x0C, 0x39) => decoders::threedm_capture_gyro_bias(data, device),
-        (0x0C, 0x3A) => decoders::threedm_mag_hard_iron_offset(data, device),
-        (0x0C, 0x9C) => decoders::threedm_mag_hard_iron_offset_response(data, device),
-        (0x0C, 0x3B) => decoders::threedm_mag_soft_iron_matrix(data, device),
-        (0x0C, 0x9D) => decoders::threedm_mag_soft_iron_matrix_response(data, device),
-        (0x0C, 0x3E) => decoders::threedm_coning_sculling_enable(data, device),
-        (0x0C, 0x9E) => decoders::threedm_coning_sculling_enable_response(data, device),
-        (0x0C, 0x40) => decoders::threedm_uart_baudrate(data, device),
-        (0x0C, 0x87) => decoders::threedm_uart_baudrate_response(data, device),
-        (0x0C, 0x41) => decoders::threedm_gpio_config(data, device),
-        (0x0C, 0xC1) => decoders::threedm_gpio_config_response(data, device),
-        (0x0C, 0x42) => decoders::threedm_gpio_state(data, device),
-        (0x0C, 0xC2) => decoders::threedm_gpio_state_response(data, device),
-        (0x0C, 0x43) => decoders::threedm_odometer_config(data, device),
-        (0x0C, 0xC3) => decoders::threedm_odometer_config_response(data, device),
-        (0x0C, 0x50) => decoders::threedm_advanced_lowpass_filter(data, device),
-        (0x0C, 0x8B) => decoders::threedm_advanced_lowpass_filter_response(data, device),
-        (0x0C, 0x51) => decoders::threedm_complementary_filter(data, device),
-        (0x0C, 0x97) => decoders::threedm_complementary_filter_response(data, device),
-        (0x0C, 0x52) => decoders::threedm_sensor_range(data, device),
-        (0x0C, 0xD2) => decoders::threedm_sensor_range_response(data, device),
-        (0x0C, 0x53) => decoders::threedm_get_calibrated_sensor_ranges(data, device),
-        (0x0C, 0xD3) => decoders::threedm_calibrated_sensor_ranges(data, device),
-        (0x0C, 0x54) => decoders::threedm_lowpass_filter(data, device),
-        (0x0C, 0xD4) => decoders::threedm_lowpass_filter_response(data, device),
-        (0x0C, 0x01) => decoders::threedm_poll_imu_data(data, device),
-        (0x0C, 0x02) => decoders::threedm_poll_gnss_data(data, device),
-        (0x0C, 0x03) => decoders::threedm_poll_filter_data(data, device),
-        (0x0C, 0x04) => decoders::threedm_poll_nmea_data(data, device),
-        (0x0C, 0x0D) => decoders::threedm_poll_data(data, device),
-        (0x0C, 0x06) => decoders::threedm_get_imu_base_rate(data, device),
-        (0x0C, 0x83) => decoders::threedm_imu_base_rate(data, device),
-        (0x0C, 0x07) => decoders::threedm_get_gnss_base_rate(data, device),
-        (0x0C, 0x84) => decoders::threedm_gnss_base_rate(data, device),
-        (0x0C, 0x0B) => decoders::threedm_get_filter_base_rate(data, device),
-        (0x0C, 0x8A) => decoders::threedm_filter_base_rate(data, device),
-        (0x0C, 0x0E) => decoders::threedm_get_base_rate(data, device),
-        (0x0C, 0x8E) => decoders::threedm_base_rate(data, device),
-        (0x0C, 0x08) => decoders::threedm_imu_message_format(data, device),
-        (0x0C, 0x80) => decoders::threedm_imu_message_format_response(data, device),
-        (0x0C, 0x09) => decoders::threedm_gnss_message_format(data, device),
-        (0x0C, 0x81) => decoders::threedm_gnss_message_format_response(data, device),
-        (0x0C, 0x0A) => decoders::threedm_filter_message_format(data, device),
-        (0x0C, 0x82) => decoders::threedm_filter_message_format_response(data, device),
-        (0x0C, 0x0C) => decoders::threedm_nmea_message_format(data, device),
-        (0x0C, 0x8C) => decoders::threedm_nmea_message_format_response(data, device),
-        (0x0C, 0x0F) => decoders::threedm_message_format(data, device),
-        (0x0C, 0x8F) => decoders::threedm_message_format_response(data, device),
-        (0x0C, 0x10) => decoders::threedm_factory_streaming(data, device),
-        (0x0C, 0x11) => decoders::threedm_data_stream_control(data, device),
-        (0x0C, 0x85) => decoders::threedm_data_stream_control_response(data, device),
-        (0x0C, 0x20) => decoders::threedm_raw_rtcm_message(data, device),
-        (0x0C, 0x21) => decoders::threedm_gnss_constellation_settings(data, device),
-        (0x0C, 0xA0) => decoders::threedm_gnss_constellation_settings_response(data, device),
-        (0x0C, 0x22) => decoders::threedm_gnss_sbas_settings(data, device),
-        (0x0C, 0xA1) => decoders::threedm_gnss_sbas_settings_response(data, device),
-        (0x0C, 0x23) => decoders::threedm_gnss_assisted_fix_control(data, device),
-        (0x0C, 0xA2) => decoders::threedm_gnss_assisted_fix_control_response(data, device),
-        (0x0C, 0x24) => decoders::threedm_gnss_assist_time_update(data, device),
-        (0x0C, 0xA3) => decoders::threedm_gnss_assist_time_update_response(data, device),
-        (0x0C, 0x28) => decoders::threedm_pps_source(data, device),
-        (0x0C, 0xA8) => decoders::threedm_pps_source_response(data, device),
-        (0x0C, 0x2A) => decoders::threedm_get_supported_events(data, device),
-        (0x0C, 0xB4) => decoders::threedm_supported_events(data, device),
-        (0x0C, 0x64) => decoders::threedm_device_status(data, device),
-        (0x0C, 0x90) => decoders::threedm_device_status_response(data, device),
-        (0x0D, 0x01) => decoders::filter_reset_filter(data, device),
-        (0x0D, 0x02) => decoders::filter_set_initial_attitude(data, device),
-        (0x0D, 0x03) => decoders::filter_set_initial_heading(data, device),
-        (0x0D, 0x05) => decoders::filter_run_filter(data, device),
-        (0x0D, 0x10) => decoders::filter_vehicle_dynamics_mode(data, device),
-        (0x0D, 0x80) => decoders::filter_vehicle_dynamics_mode_response(data, device),
-        (0x0D, 0x11) => decoders::filter_sensor_to_vehicle_transform(data, device),
-        (0x0D, 0x81) => decoders::filter_sensor_to_vehicle_transform_response(data, device),
-        (0x0D, 0x12) => decoders::filter_sensor_to_vehicle_offset(data, device),
-        (0x0D, 0x82) => decoders::filter_sensor_to_vehicle_offset_response(data, device),
-        (0x0D, 0x13) => decoders::filter_antenna_offset(data, device),
-        (0x0D, 0x83) => decoders::filter_antenna_offset_response(data, device),
-        (0x0D, 0x14) => decoders::filter_estimation_control(data, device),
-        (0x0D, 0x84) => decoders::filter_estimation_control_response(data, device),
-        (0x0D, 0x15) => decoders::filter_gnss_source_control(data, device),
-        (0x0D, 0x86) => decoders::filter_gnss_source_control_response(data, device),
-        (0x0D, 0x16) => decoders::filter_external_gnss_update(data, device),
-        (0x0D, 0x17) => decoders::filter_external_heading_update(data, device),
-        (0x0D, 0x18) => decoders::filter_heading_update_control(data, device),
-        (0x0D, 0x87) => decoders::filter_heading_update_control_response(data, device),
-        (0x0D, 0x19) => decoders::filter_auto_init_control(data, device),
-        (0x0D, 0x88) => decoders::filter_auto_init_control_response(data, device),
-        (0x0D, 0x1A) => decoders::filter_accel_noise(data, device),
-        (0x0D, 0x89) => decoders::filter_accel_noise_response(data, device),
-        (0x0D, 0x1B) => decoders::filter_gyro_noise(data, device),
-        (0x0D, 0x8A) => decoders::filter_gyro_noise_response(data, device),
-        (0x0D, 0x1C) => decoders::filter_accel_bias_model(data, device),
-        (0x0D, 0x8B) => decoders::filter_accel_bias_model_response(data, device),
-        (0x0D, 0x1D) => decoders::filter_gyro_bias_model(data, device),
-        (0x0D, 0x8C) => decoders::filter_gyro_bias_model_response(data, device),
-        (0x0D, 0x1E) => decoders::filter_zupt_control(data, device),
-        (0x0D, 0x8D) => decoders::filter_zupt_control_response(data, device),
-        (0x0D, 0x1F) => decoders::filter_external_heading_update_with_time(data, device),
-        (0x0D, 0x20) => decoders::filter_zero_angular_rate_update_control(data, device),
-        (0x0D, 0x8E) => decoders::filter_zero_angular_rate_update_control_response(data, device),
-        (0x0D, 0x21) => decoders::filter_tare_orientation(data, device),
-        (0x0D, 0x22) => decoders::filter_commanded_zupt(data, device),
-        (0x0D, 0x23) => decoders::filter_commanded_zero_angular_rate_update(data, device),
-        (0x0D, 0x27) => decoders::filter_mag_capture_auto_calibration(data, device),
-        (0x0D, 0x28) => decoders::filter_gravity_noise_std_dev(data, device),
-        (0x0D, 0x93) => decoders::filter_gravity_noise_std_dev_response(data, device),
-        (0x0D, 0x29) => decoders::filter_pressure_altitude_noise_std_dev(data, device),
-        (0x0D, 0x94) => decoders::filter_pressure_altitude_noise_std_dev_response(data, device),
-        (0x0D, 0x2B) => decoders::filter_hard_iron_offset_noise(data, device),
-        (0x0D, 0x96) => decoders::filter_hard_iron_offset_noise_response(data, device),
-        (0x0D, 0x2C) => decoders::filter_soft_iron_matrix_noise(data, device),
-        (0x0D, 0x97) => decoders::filter_soft_iron_matrix_noise_response(data, device),
-        (0x0D, 0x42) => decoders::filter_mag_noise_std_dev(data, device),
-        (0x0D, 0xB1) => decoders::filter_mag_noise_std_dev_response(data, device),
-        (0x0D, 0x43) => decoders::filter_declination_source(data, device),
-        (0x0D, 0xB2) => decoders::filter_declination_source_response(data, device),
-        (0x0D, 0x44) => decoders::filter_gravity_magnitude_adaptive_measurement(data, device),
-        (0x0D, 0xB3) => {
-            decoders::filter_gravity_magnitude_adaptive_measurement_response(data, device)
+    // The set's own fields: two table loads, straight to the field's decoder, which builds the
+    // FieldValue in the caller's slot.
+    if let Some(decoders) = SET_DECODERS[usize::from(set)] {
+        if let Some(decode) = decoders[usize::from(descriptor)] {
+            return decode(data, device);
         }
-        (0x0D, 0x45) => decoders::filter_mag_magnitude_adaptive_measurement(data, device),
-        (0x0D, 0xB4) => decoders::filter_mag_magnitude_adaptive_measurement_response(data, device),
-        (0x0D, 0x46) => decoders::filter_mag_dip_angle_adaptive_measurement(data, device),
-        (0x0D, 0xB5) => decoders::filter_mag_dip_angle_adaptive_measurement_response(data, device),
-        (0x0D, 0x47) => decoders::filter_altitude_aiding_control(data, device),
-        (0x0D, 0xB7) => decoders::filter_altitude_aiding_control_response(data, device),
-        (0x0D, 0x4B) => decoders::filter_pitch_roll_aiding_control(data, device),
-        (0x0D, 0xBB) => decoders::filter_pitch_roll_aiding_control_response(data, device),
-        (0x0D, 0x4C) => decoders::filter_inclination_source(data, device),
-        (0x0D, 0xBC) => decoders::filter_inclination_source_response(data, device),
-        (0x0D, 0x4D) => decoders::filter_magnetic_field_magnitude_source(data, device),
-        (0x0D, 0xBD) => decoders::filter_magnetic_field_magnitude_source_response(data, device),
-        (0x0D, 0x50) => decoders::filter_aiding_measurement_control(data, device),
-        (0x0D, 0xD0) => decoders::filter_aiding_measurement_control_response(data, device),
-        (0x0D, 0x52) => decoders::filter_initialization_configuration(data, device),
-        (0x0D, 0xD2) => decoders::filter_initialization_configuration_response(data, device),
-        (0x0D, 0x53) => decoders::filter_adaptive_filter_control(data, device),
-        (0x0D, 0xD3) => decoders::filter_adaptive_filter_control_response(data, device),
-        (0x0D, 0x54) => decoders::filter_multi_antenna_offset(data, device),
-        (0x0D, 0xD4) => decoders::filter_multi_antenna_offset_response(data, device),
-        (0x0D, 0x55) => decoders::filter_relative_position_configuration(data, device),
-        (0x0D, 0xD5) => decoders::filter_relative_position_configuration_response(data, device),
-        (0x0D, 0x56) => decoders::filter_reference_point_lever_arm(data, device),
-        (0x0D, 0xD6) => decoders::filter_reference_point_lever_arm_response(data, device),
-        (0x0D, 0x61) => decoders::filter_speed_lever_arm(data, device),
-        (0x0D, 0xE1) => decoders::filter_speed_lever_arm_response(data, device),
-        (0x0D, 0x63) => decoders::filter_wheeled_vehicle_constraint_control(data, device),
-        (0x0D, 0xE3) => decoders::filter_wheeled_vehicle_constraint_control_response(data, device),
-        (0x0D, 0x64) => decoders::filter_gnss_antenna_calibration_control(data, device),
-        (0x0D, 0xE4) => decoders::filter_gnss_antenna_calibration_control_response(data, device),
-        (0x0E, 0x01) => decoders::gnss_receiver_info(data, device),
-        (0x0E, 0x81) => decoders::gnss_receiver_info_response(data, device),
-        (0x0E, 0x02) => decoders::gnss_signal_configuration(data, device),
-        (0x0E, 0x82) => decoders::gnss_signal_configuration_response(data, device),
-        (0x0E, 0x20) => decoders::gnss_spartn_configuration(data, device),
-        (0x0E, 0xA0) => decoders::gnss_spartn_configuration_response(data, device),
-        (0x13, 0x01) => decoders::aiding_frame_config(data, device),
-        (0x13, 0x81) => decoders::aiding_frame_config_response(data, device),
-        (0x13, 0x1F) => decoders::aiding_echo_control(data, device),
-        (0x13, 0x9F) => decoders::aiding_echo_control_response(data, device),
-        (0x13, 0x21) => decoders::aiding_ecef_position(data, device),
-        (0x13, 0x22) => decoders::aiding_llh_position(data, device),
-        (0x13, 0x23) => decoders::aiding_height_above_ellipsoid(data, device),
-        (0x13, 0x28) => decoders::aiding_ecef_velocity(data, device),
-        (0x13, 0x29) => decoders::aiding_ned_velocity(data, device),
-        (0x13, 0x2A) => decoders::aiding_body_frame_velocity(data, device),
-        (0x13, 0x31) => decoders::aiding_true_heading(data, device),
-        (0x13, 0x32) => decoders::aiding_magnetic_field(data, device),
-        (0x13, 0x33) => decoders::aiding_pressure(data, device),
-        (0x7F, 0x10) => decoders::system_communication_mode(data, device),
-        (0x7F, 0x90) => decoders::system_communication_mode_response(data, device),
-        (0x80, 0x04) => decoders::sensor_scaled_accel(data, device),
-        (0x80, 0x05) => decoders::sensor_scaled_gyro(data, device),
-        (0x80, 0x06) => decoders::sensor_scaled_mag(data, device),
-        (0x80, 0x07) => decoders::sensor_delta_theta(data, device),
-        (0x80, 0x08) => decoders::sensor_delta_velocity(data, device),
-        (0x80, 0x09) => decoders::sensor_cf_orientation_matrix(data, device),
-        (0x80, 0x0A) => decoders::sensor_cf_quaternion(data, device),
-        (0x80, 0x0C) => decoders::sensor_cf_euler_angles(data, device),
-        (0x80, 0x10) => decoders::sensor_cf_stabilized_north(data, device),
-        (0x80, 0x11) => decoders::sensor_cf_stabilized_up(data, device),
-        (0x80, 0x12) => decoders::sensor_gps_timestamp(data, device),
-        (0x80, 0x14) => decoders::sensor_temperature_statistics(data, device),
-        (0x80, 0x17) => decoders::sensor_scaled_pressure(data, device),
-        (0x80, 0x18) => decoders::sensor_overrange_status(data, device),
-        (0x80, 0x40) => decoders::sensor_odometer_data(data, device),
-        (0x81, 0x03) => decoders::gnss_data_llh_position(data, device),
-        (0x81, 0x04) => decoders::gnss_data_ecef_position(data, device),
-        (0x81, 0x05) => decoders::gnss_data_ned_velocity(data, device),
-        (0x81, 0x06) => decoders::gnss_data_ecef_velocity(data, device),
-        (0x81, 0x07) => decoders::gnss_data_dop(data, device),
-        (0x81, 0x08) => decoders::gnss_data_utc_time(data, device),
-        (0x81, 0x09) => decoders::gnss_data_gps_time(data, device),
-        (0x81, 0x0A) => decoders::gnss_data_clock_info(data, device),
-        (0x81, 0x0B) => decoders::gnss_data_fix_info(data, device),
-        (0x81, 0x0C) => decoders::gnss_data_sv_info(data, device),
-        (0x81, 0x0D) => decoders::gnss_data_hardware_status(data, device),
-        (0x81, 0x0E) => decoders::gnss_data_dgnss_info(data, device),
-        (0x81, 0x0F) => decoders::gnss_data_dgnss_channel_status(data, device),
-        (0x82, 0x01) => decoders::filter_data_llh_position(data, device),
-        (0x82, 0x02) => decoders::filter_data_ned_velocity(data, device),
-        (0x82, 0x03) => decoders::filter_data_attitude_quaternion(data, device),
-        (0x82, 0x04) => decoders::filter_data_attitude_dcm(data, device),
-        (0x82, 0x05) => decoders::filter_data_euler_angles(data, device),
-        (0x82, 0x06) => decoders::filter_data_gyro_bias(data, device),
-        (0x82, 0x07) => decoders::filter_data_accel_bias(data, device),
-        (0x82, 0x08) => decoders::filter_data_llh_position_uncertainty(data, device),
-        (0x82, 0x09) => decoders::filter_data_ned_velocity_uncertainty(data, device),
-        (0x82, 0x0A) => decoders::filter_data_euler_angles_uncertainty(data, device),
-        (0x82, 0x0B) => decoders::filter_data_gyro_bias_uncertainty(data, device),
-        (0x82, 0x0C) => decoders::filter_data_accel_bias_uncertainty(data, device),
-        (0x82, 0x0D) => decoders::filter_data_linear_accel(data, device),
-        (0x82, 0x0E) => decoders::filter_data_comp_angular_rate(data, device),
-        (0x82, 0x0F) => decoders::filter_data_wgs84_gravity_magnitude(data, device),
-        (0x82, 0x10) => decoders::filter_data_filter_status(data, device),
-        (0x82, 0x11) => decoders::filter_data_gps_timestamp(data, device),
-        (0x82, 0x12) => decoders::filter_data_quaternion_attitude_uncertainty(data, device),
-        (0x82, 0x13) => decoders::filter_data_gravity_vector(data, device),
-        (0x82, 0x14) => decoders::filter_data_heading_update_state(data, device),
-        (0x82, 0x15) => decoders::filter_data_magnetic_model(data, device),
-        (0x82, 0x16) => decoders::filter_data_gyro_scale_factor(data, device),
-        (0x82, 0x17) => decoders::filter_data_accel_scale_factor(data, device),
-        (0x82, 0x18) => decoders::filter_data_gyro_scale_factor_uncertainty(data, device),
-        (0x82, 0x19) => decoders::filter_data_accel_scale_factor_uncertainty(data, device),
-        (0x82, 0x1C) => decoders::filter_data_compensated_accel(data, device),
-        (0x82, 0x20) => decoders::filter_data_standard_atmosphere(data, device),
-        (0x82, 0x21) => decoders::filter_data_pressure_altitude(data, device),
-        (0x82, 0x25) => decoders::filter_data_mag_auto_hard_iron_offset(data, device),
-        (0x82, 0x26) => decoders::filter_data_mag_auto_soft_iron_matrix(data, device),
-        (0x82, 0x28) => decoders::filter_data_mag_auto_hard_iron_offset_uncertainty(data, device),
-        (0x82, 0x29) => decoders::filter_data_mag_auto_soft_iron_matrix_uncertainty(data, device),
-        (0x82, 0x30) => decoders::filter_data_gnss_antenna_offset_correction(data, device),
-        (0x82, 0x31) => {
-            decoders::filter_data_gnss_antenna_offset_correction_uncertainty(data, device)
-        }
-        (0x82, 0x34) => decoders::filter_data_multi_antenna_offset_correction(data, device),
-        (0x82, 0x35) => {
-            decoders::filter_data_multi_antenna_offset_correction_uncertainty(data, device)
-        }
-        (0x82, 0x36) => decoders::filter_data_ecef_position_uncertainty(data, device),
-        (0x82, 0x37) => decoders::filter_data_ecef_velocity_uncertainty(data, device),
-        (0x82, 0x40) => decoders::filter_data_ecef_position(data, device),
-        (0x82, 0x41) => decoders::filter_data_ecef_velocity(data, device),
-        (0x82, 0x42) => decoders::filter_data_ned_relative_position(data, device),
-        (0x82, 0x43) => decoders::filter_data_gnss_position_aiding_status(data, device),
-        (0x82, 0x46) => decoders::filter_data_aiding_measurement_summary(data, device),
-        (0x82, 0x47) => decoders::filter_data_odometer_scale_factor_error(data, device),
-        (0x82, 0x48) => decoders::filter_data_odometer_scale_factor_error_uncertainty(data, device),
-        (0x82, 0x49) => decoders::filter_data_gnss_dual_antenna_status(data, device),
-        (0x82, 0x50) => decoders::filter_data_aiding_frame_config_error(data, device),
-        (0x82, 0x51) => decoders::filter_data_aiding_frame_config_error_uncertainty(data, device),
-        (0x91, 0x03) => decoders::gnss_receiver_1_llh_position(data, device),
-        (0x91, 0x04) => decoders::gnss_receiver_1_ecef_position(data, device),
-        (0x91, 0x05) => decoders::gnss_receiver_1_ned_velocity(data, device),
-        (0x91, 0x06) => decoders::gnss_receiver_1_ecef_velocity(data, device),
-        (0x91, 0x07) => decoders::gnss_receiver_1_dop(data, device),
-        (0x91, 0x08) => decoders::gnss_receiver_1_utc_time(data, device),
-        (0x91, 0x09) => decoders::gnss_receiver_1_gps_time(data, device),
-        (0x91, 0x0B) => decoders::gnss_receiver_1_fix_info(data, device),
-        (0x91, 0x0D) => decoders::gnss_receiver_1_hardware_status(data, device),
-        (0x91, 0x10) => decoders::gnss_receiver_1_clock_info_2(data, device),
-        (0x91, 0x11) => decoders::gnss_receiver_1_gps_leap_seconds(data, device),
-        (0x91, 0x12) => decoders::gnss_receiver_1_sbas_info(data, device),
-        (0x91, 0x20) => decoders::gnss_receiver_1_satellite_status(data, device),
-        (0x91, 0x22) => decoders::gnss_receiver_1_raw(data, device),
-        (0x91, 0x61) => decoders::gnss_receiver_1_gps_ephemeris(data, device),
-        (0x91, 0x62) => decoders::gnss_receiver_1_glonass_ephemeris(data, device),
-        (0x91, 0x63) => decoders::gnss_receiver_1_galileo_ephemeris(data, device),
-        (0x91, 0x64) => decoders::gnss_receiver_1_beidou_ephemeris(data, device),
-        (0x92, 0x03) => decoders::gnss_receiver_2_llh_position(data, device),
-        (0x92, 0x04) => decoders::gnss_receiver_2_ecef_position(data, device),
-        (0x92, 0x05) => decoders::gnss_receiver_2_ned_velocity(data, device),
-        (0x92, 0x06) => decoders::gnss_receiver_2_ecef_velocity(data, device),
-        (0x92, 0x07) => decoders::gnss_receiver_2_dop(data, device),
-        (0x92, 0x08) => decoders::gnss_receiver_2_utc_time(data, device),
-        (0x92, 0x09) => decoders::gnss_receiver_2_gps_time(data, device),
-        (0x92, 0x0B) => decoders::gnss_receiver_2_fix_info(data, device),
-        (0x92, 0x0D) => decoders::gnss_receiver_2_hardware_status(data, device),
-        (0x92, 0x10) => decoders::gnss_receiver_2_clock_info_2(data, device),
-        (0x92, 0x11) => decoders::gnss_receiver_2_gps_leap_seconds(data, device),
-        (0x92, 0x12) => decoders::gnss_receiver_2_sbas_info(data, device),
-        (0x92, 0x20) => decoders::gnss_receiver_2_satellite_status(data, device),
-        (0x92, 0x22) => decoders::gnss_receiver_2_raw(data, device),
-        (0x92, 0x61) => decoders::gnss_receiver_2_gps_ephemeris(data, device),
-        (0x92, 0x62) => decoders::gnss_receiver_2_glonass_ephemeris(data, device),
-        (0x92, 0x63) => decoders::gnss_receiver_2_galileo_ephemeris(data, device),
-        (0x92, 0x64) => decoders::gnss_receiver_2_beidou_ephemeris(data, device),
-        (0x93, 0x30) => decoders::gnss_corrections_base_station_info(data, device),
-        (0x93, 0x31) => decoders::gnss_corrections_rtk_corrections_status(data, device),
-        (0x94, 0x03) => decoders::gnss_external_llh_position(data, device),
-        (0x94, 0x05) => decoders::gnss_external_ned_velocity(data, device),
-        (0x94, 0x08) => decoders::gnss_external_utc_time(data, device),
-        (0x94, 0x0B) => decoders::gnss_external_fix_info(data, device),
-        (0x94, 0x20) => decoders::gnss_external_satellite_status(data, device),
-        (0xA0, 0x01) => decoders::system_data_built_in_test(data, device),
-        (0xA0, 0x02) => decoders::system_data_time_sync_status(data, device),
-        (0xA0, 0x03) => decoders::system_data_gpio_state(data, device),
-        (0xFF, 0xD0) => decoders::shared_event_source(data, device),
-        (0xFF, 0xD3) => decoders::shared_gps_timestamp(data, device),
-        (0xFF, 0xD4) => decoders::shared_delta_time(data, device),
-        (0xFF, 0xD5) => decoders::shared_reference_timestamp(data, device),
-        (0xFF, 0xD6) => decoders::shared_reference_time_delta(data, device),
-        (0xFF, 0xD7) => decoders::shared_external_timestamp(data, device),
-        (0xFF, 0xD8) => decoders::shared_external_time_delta(data, device),
-        _ => decode_other_field(set, descriptor, data, device),
     }
+    decode_other_field(set, descriptor, data, device)
 }
 
+/// The decoder of one field (in `decoders`).
+type Decoder = fn(&[u8], Option<Device>) -> Result<FieldValue, DecodeError>;
+
+/// Decoders of a set's own fields, by descriptor (`None`: not a field of the set).
+type DescriptorDecoders = [Option<Decoder>; 256];
+
+/// The decoders of every set that has fields, by set (`None`: no fields of its own).
+static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
+    let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
+    t[0x01] = Some(&BASE_DECODERS);
+    t[0x0C] = Some(&THREEDM_DECODERS);
+    t[0x0D] = Some(&FILTER_DECODERS);
+    t[0x0E] = Some(&GNSS_DECODERS);
+    t[0x13] = Some(&AIDING_DECODERS);
+    t[0x7F] = Some(&SYSTEM_DECODERS);
+    t[0x80] = Some(&SENSOR_DECODERS);
+    t[0x81] = Some(&GNSS_DATA_DECODERS);
+    t[0x82] = Some(&FILTER_DATA_DECODERS);
+    t[0x91] = Some(&GNSS_RECEIVER_1_DECODERS);
+    t[0x92] = Some(&GNSS_RECEIVER_2_DECODERS);
+    t[0x93] = Some(&GNSS_CORRECTIONS_DECODERS);
+    t[0x94] = Some(&GNSS_EXTERNAL_DECODERS);
+    t[0xA0] = Some(&SYSTEM_DATA_DECODERS);
+    t[0xFF] = Some(&SHARED_DECODERS);
+    t
+};
+
+/// Decoders of the fields of set 0x01, by descriptor.
+static BASE_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::base_ping);
+    t[0x02] = Some(decoders::base_set_to_idle);
+    t[0x03] = Some(decoders::base_get_device_info);
+    t[0x81] = Some(decoders::base_device_info);
+    t[0x04] = Some(decoders::base_get_device_descriptors);
+    t[0x82] = Some(decoders::base_device_descriptors);
+    t[0x05] = Some(decoders::base_built_in_test);
+    t[0x83] = Some(decoders::base_built_in_test_result);
+    t[0x06] = Some(decoders::base_resume);
+    t[0x07] = Some(decoders::base_get_extended_descriptors);
+    t[0x86] = Some(decoders::base_extended_descriptors);
+    t[0x08] = Some(decoders::base_continuous_bit);
+    t[0x88] = Some(decoders::base_continuous_bit_result);
+    t[0x09] = Some(decoders::base_comm_port_speed);
+    t[0x89] = Some(decoders::base_comm_port_speed_response);
+    t[0x72] = Some(decoders::base_gps_time_update);
+    t[0x84] = Some(decoders::base_gps_week);
+    t[0x85] = Some(decoders::base_gps_seconds);
+    t[0x7E] = Some(decoders::base_device_reset);
+    t
+};
+
+/// Decoders of the fields of set 0x0C, by descriptor.
+static THREEDM_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x2B] = Some(decoders::threedm_event_control);
+    t[0xB5] = Some(decoders::threedm_event_control_response);
+    t[0x2C] = Some(decoders::threedm_get_event_trigger_status);
+    t[0xB6] = Some(decoders::threedm_event_trigger_status);
+    t[0x2D] = Some(decoders::threedm_get_event_action_status);
+    t[0xB7] = Some(decoders::threedm_event_action_status);
+    t[0x2E] = Some(decoders::threedm_event_trigger_config);
+    t[0xB8] = Some(decoders::threedm_event_trigger_config_response);
+    t[0x2F] = Some(decoders::threedm_event_action_config);
+    t[0xB9] = Some(decoders::threedm_event_action_config_response);
+    t[0x30] = Some(decoders::threedm_device_startup_settings);
+    t[0x31] = Some(decoders::threedm_sensor_to_vehicle_euler);
+    t[0xB1] = Some(decoders::threedm_sensor_to_vehicle_euler_response);
+    t[0x32] = Some(decoders::threedm_sensor_to_vehicle_quaternion);
+    t[0xB2] = Some(decoders::threedm_sensor_to_vehicle_quaternion_response);
+    t[0x33] = Some(decoders::threedm_sensor_to_vehicle_dcm);
+    t[0xB3] = Some(decoders::threedm_sensor_to_vehicle_dcm_response);
+    t[0x37] = Some(decoders::threedm_accel_bias);
+    t[0x9A] = Some(decoders::threedm_accel_bias_response);
+    t[0x38] = Some(decoders::threedm_gyro_bias);
+    t[0x9B] = Some(decoders::threedm_gyro_bias_response);
+    t[0x39] = Some(decoders::threedm_capture_gyro_bias);
+    t[0x3A] = Some(decoders::threedm_mag_hard_iron_offset);
+    t[0x9C] = Some(decoders::threedm_mag_hard_iron_offset_response);
+    t[0x3B] = Some(decoders::threedm_mag_soft_iron_matrix);
+    t[0x9D] = Some(decoders::threedm_mag_soft_iron_matrix_response);
+    t[0x3E] = Some(decoders::threedm_coning_sculling_enable);
+    t[0x9E] = Some(decoders::threedm_coning_sculling_enable_response);
+    t[0x40] = Some(decoders::threedm_uart_baudrate);
+    t[0x87] = Some(decoders::threedm_uart_baudrate_response);
+    t[0x41] = Some(decoders::threedm_gpio_config);
+    t[0xC1] = Some(decoders::threedm_gpio_config_response);
+    t[0x42] = Some(decoders::threedm_gpio_state);
+    t[0xC2] = Some(decoders::threedm_gpio_state_response);
+    t[0x43] = Some(decoders::threedm_odometer_config);
+    t[0xC3] = Some(decoders::threedm_odometer_config_response);
+    t[0x50] = Some(decoders::threedm_advanced_lowpass_filter);
+    t[0x8B] = Some(decoders::threedm_advanced_lowpass_filter_response);
+    t[0x51] = Some(decoders::threedm_complementary_filter);
+    t[0x97] = Some(decoders::threedm_complementary_filter_response);
+    t[0x52] = Some(decoders::threedm_sensor_range);
+    t[0xD2] = Some(decoders::threedm_sensor_range_response);
+    t[0x53] = Some(decoders::threedm_get_calibrated_sensor_ranges);
+    t[0xD3] = Some(decoders::threedm_calibrated_sensor_ranges);
+    t[0x54] = Some(decoders::threedm_lowpass_filter);
+    t[0xD4] = Some(decoders::threedm_lowpass_filter_response);
+    t[0x01] = Some(decoders::threedm_poll_imu_data);
+    t[0x02] = Some(decoders::threedm_poll_gnss_data);
+    t[0x03] = Some(decoders::threedm_poll_filter_data);
+    t[0x04] = Some(decoders::threedm_poll_nmea_data);
+    t[0x0D] = Some(decoders::threedm_poll_data);
+    t[0x06] = Some(decoders::threedm_get_imu_base_rate);
+    t[0x83] = Some(decoders::threedm_imu_base_rate);
+    t[0x07] = Some(decoders::threedm_get_gnss_base_rate);
+    t[0x84] = Some(decoders::threedm_gnss_base_rate);
+    t[0x0B] = Some(decoders::threedm_get_filter_base_rate);
+    t[0x8A] = Some(decoders::threedm_filter_base_rate);
+    t[0x0E] = Some(decoders::threedm_get_base_rate);
+    t[0x8E] = Some(decoders::threedm_base_rate);
+    t[0x08] = Some(decoders::threedm_imu_message_format);
+    t[0x80] = Some(decoders::threedm_imu_message_format_response);
+    t[0x09] = Some(decoders::threedm_gnss_message_format);
+    t[0x81] = Some(decoders::threedm_gnss_message_format_response);
+    t[0x0A] = Some(decoders::threedm_filter_message_format);
+    t[0x82] = Some(decoders::threedm_filter_message_format_response);
+    t[0x0C] = Some(decoders::threedm_nmea_message_format);
+    t[0x8C] = Some(decoders::threedm_nmea_message_format_response);
+    t[0x0F] = Some(decoders::threedm_message_format);
+    t[0x8F] = Some(decoders::threedm_message_format_response);
+    t[0x10] = Some(decoders::threedm_factory_streaming);
+    t[0x11] = Some(decoders::threedm_data_stream_control);
+    t[0x85] = Some(decoders::threedm_data_stream_control_response);
+    t[0x20] = Some(decoders::threedm_raw_rtcm_message);
+    t[0x21] = Some(decoders::threedm_gnss_constellation_settings);
+    t[0xA0] = Some(decoders::threedm_gnss_constellation_settings_response);
+    t[0x22] = Some(decoders::threedm_gnss_sbas_settings);
+    t[0xA1] = Some(decoders::threedm_gnss_sbas_settings_response);
+    t[0x23] = Some(decoders::threedm_gnss_assisted_fix_control);
+    t[0xA2] = Some(decoders::threedm_gnss_assisted_fix_control_response);
+    t[0x24] = Some(decoders::threedm_gnss_assist_time_update);
+    t[0xA3] = Some(decoders::threedm_gnss_assist_time_update_response);
+    t[0x28] = Some(decoders::threedm_pps_source);
+    t[0xA8] = Some(decoders::threedm_pps_source_response);
+    t[0x2A] = Some(decoders::threedm_get_supported_events);
+    t[0xB4] = Some(decoders::threedm_supported_events);
+    t[0x64] = Some(decoders::threedm_device_status);
+    t[0x90] = Some(decoders::threedm_device_status_response);
+    t
+};
+
+/// Decoders of the fields of set 0x0D, by descriptor.
+static FILTER_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::filter_reset_filter);
+    t[0x02] = Some(decoders::filter_set_initial_attitude);
+    t[0x03] = Some(decoders::filter_set_initial_heading);
+    t[0x05] = Some(decoders::filter_run_filter);
+    t[0x10] = Some(decoders::filter_vehicle_dynamics_mode);
+    t[0x80] = Some(decoders::filter_vehicle_dynamics_mode_response);
+    t[0x11] = Some(decoders::filter_sensor_to_vehicle_transform);
+    t[0x81] = Some(decoders::filter_sensor_to_vehicle_transform_response);
+    t[0x12] = Some(decoders::filter_sensor_to_vehicle_offset);
+    t[0x82] = Some(decoders::filter_sensor_to_vehicle_offset_response);
+    t[0x13] = Some(decoders::filter_antenna_offset);
+    t[0x83] = Some(decoders::filter_antenna_offset_response);
+    t[0x14] = Some(decoders::filter_estimation_control);
+    t[0x84] = Some(decoders::filter_estimation_control_response);
+    t[0x15] = Some(decoders::filter_gnss_source_control);
+    t[0x86] = Some(decoders::filter_gnss_source_control_response);
+    t[0x16] = Some(decoders::filter_external_gnss_update);
+    t[0x17] = Some(decoders::filter_external_heading_update);
+    t[0x18] = Some(decoders::filter_heading_update_control);
+    t[0x87] = Some(decoders::filter_heading_update_control_response);
+    t[0x19] = Some(decoders::filter_auto_init_control);
+    t[0x88] = Some(decoders::filter_auto_init_control_response);
+    t[0x1A] = Some(decoders::filter_accel_noise);
+    t[0x89] = Some(decoders::filter_accel_noise_response);
+    t[0x1B] = Some(decoders::filter_gyro_noise);
+    t[0x8A] = Some(decoders::filter_gyro_noise_response);
+    t[0x1C] = Some(decoders::filter_accel_bias_model);
+    t[0x8B] = Some(decoders::filter_accel_bias_model_response);
+    t[0x1D] = Some(decoders::filter_gyro_bias_model);
+    t[0x8C] = Some(decoders::filter_gyro_bias_model_response);
+    t[0x1E] = Some(decoders::filter_zupt_control);
+    t[0x8D] = Some(decoders::filter_zupt_control_response);
+    t[0x1F] = Some(decoders::filter_external_heading_update_with_time);
+    t[0x20] = Some(decoders::filter_zero_angular_rate_update_control);
+    t[0x8E] = Some(decoders::filter_zero_angular_rate_update_control_response);
+    t[0x21] = Some(decoders::filter_tare_orientation);
+    t[0x22] = Some(decoders::filter_commanded_zupt);
+    t[0x23] = Some(decoders::filter_commanded_zero_angular_rate_update);
+    t[0x27] = Some(decoders::filter_mag_capture_auto_calibration);
+    t[0x28] = Some(decoders::filter_gravity_noise_std_dev);
+    t[0x93] = Some(decoders::filter_gravity_noise_std_dev_response);
+    t[0x29] = Some(decoders::filter_pressure_altitude_noise_std_dev);
+    t[0x94] = Some(decoders::filter_pressure_altitude_noise_std_dev_response);
+    t[0x2B] = Some(decoders::filter_hard_iron_offset_noise);
+    t[0x96] = Some(decoders::filter_hard_iron_offset_noise_response);
+    t[0x2C] = Some(decoders::filter_soft_iron_matrix_noise);
+    t[0x97] = Some(decoders::filter_soft_iron_matrix_noise_response);
+    t[0x42] = Some(decoders::filter_mag_noise_std_dev);
+    t[0xB1] = Some(decoders::filter_mag_noise_std_dev_response);
+    t[0x43] = Some(decoders::filter_declination_source);
+    t[0xB2] = Some(decoders::filter_declination_source_response);
+    t[0x44] = Some(decoders::filter_gravity_magnitude_adaptive_measurement);
+    t[0xB3] = Some(decoders::filter_gravity_magnitude_adaptive_measurement_response);
+    t[0x45] = Some(decoders::filter_mag_magnitude_adaptive_measurement);
+    t[0xB4] = Some(decoders::filter_mag_magnitude_adaptive_measurement_response);
+    t[0x46] = Some(decoders::filter_mag_dip_angle_adaptive_measurement);
+    t[0xB5] = Some(decoders::filter_mag_dip_angle_adaptive_measurement_response);
+    t[0x47] = Some(decoders::filter_altitude_aiding_control);
+    t[0xB7] = Some(decoders::filter_altitude_aiding_control_response);
+    t[0x4B] = Some(decoders::filter_pitch_roll_aiding_control);
+    t[0xBB] = Some(decoders::filter_pitch_roll_aiding_control_response);
+    t[0x4C] = Some(decoders::filter_inclination_source);
+    t[0xBC] = Some(decoders::filter_inclination_source_response);
+    t[0x4D] = Some(decoders::filter_magnetic_field_magnitude_source);
+    t[0xBD] = Some(decoders::filter_magnetic_field_magnitude_source_response);
+    t[0x50] = Some(decoders::filter_aiding_measurement_control);
+    t[0xD0] = Some(decoders::filter_aiding_measurement_control_response);
+    t[0x52] = Some(decoders::filter_initialization_configuration);
+    t[0xD2] = Some(decoders::filter_initialization_configuration_response);
+    t[0x53] = Some(decoders::filter_adaptive_filter_control);
+    t[0xD3] = Some(decoders::filter_adaptive_filter_control_response);
+    t[0x54] = Some(decoders::filter_multi_antenna_offset);
+    t[0xD4] = Some(decoders::filter_multi_antenna_offset_response);
+    t[0x55] = Some(decoders::filter_relative_position_configuration);
+    t[0xD5] = Some(decoders::filter_relative_position_configuration_response);
+    t[0x56] = Some(decoders::filter_reference_point_lever_arm);
+    t[0xD6] = Some(decoders::filter_reference_point_lever_arm_response);
+    t[0x61] = Some(decoders::filter_speed_lever_arm);
+    t[0xE1] = Some(decoders::filter_speed_lever_arm_response);
+    t[0x63] = Some(decoders::filter_wheeled_vehicle_constraint_control);
+    t[0xE3] = Some(decoders::filter_wheeled_vehicle_constraint_control_response);
+    t[0x64] = Some(decoders::filter_gnss_antenna_calibration_control);
+    t[0xE4] = Some(decoders::filter_gnss_antenna_calibration_control_response);
+    t
+};
+
+/// Decoders of the fields of set 0x0E, by descriptor.
+static GNSS_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::gnss_receiver_info);
+    t[0x81] = Some(decoders::gnss_receiver_info_response);
+    t[0x02] = Some(decoders::gnss_signal_configuration);
+    t[0x82] = Some(decoders::gnss_signal_configuration_response);
+    t[0x20] = Some(decoders::gnss_spartn_configuration);
+    t[0xA0] = Some(decoders::gnss_spartn_configuration_response);
+    t
+};
+
+/// Decoders of the fields of set 0x13, by descriptor.
+static AIDING_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::aiding_frame_config);
+    t[0x81] = Some(decoders::aiding_frame_config_response);
+    t[0x1F] = Some(decoders::aiding_echo_control);
+    t[0x9F] = Some(decoders::aiding_echo_control_response);
+    t[0x21] = Some(decoders::aiding_ecef_position);
+    t[0x22] = Some(decoders::aiding_llh_position);
+    t[0x23] = Some(decoders::aiding_height_above_ellipsoid);
+    t[0x28] = Some(decoders::aiding_ecef_velocity);
+    t[0x29] = Some(decoders::aiding_ned_velocity);
+    t[0x2A] = Some(decoders::aiding_body_frame_velocity);
+    t[0x31] = Some(decoders::aiding_true_heading);
+    t[0x32] = Some(decoders::aiding_magnetic_field);
+    t[0x33] = Some(decoders::aiding_pressure);
+    t
+};
+
+/// Decoders of the fields of set 0x7F, by descriptor.
+static SYSTEM_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x10] = Some(decoders::system_communication_mode);
+    t[0x90] = Some(decoders::system_communication_mode_response);
+    t
+};
+
+/// Decoders of the fields of set 0x80, by descriptor.
+static SENSOR_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x04] = Some(decoders::sensor_scaled_accel);
+    t[0x05] = Some(decoders::sensor_scaled_gyro);
+    t[0x06] = Some(decoders::sensor_scaled_mag);
+    t[0x07] = Some(decoders::sensor_delta_theta);
+    t[0x08] = Some(decoders::sensor_delta_velocity);
+    t[0x09] = Some(decoders::sensor_cf_orientation_matrix);
+    t[0x0A] = Some(decoders::sensor_cf_quaternion);
+    t[0x0C] = Some(decoders::sensor_cf_euler_angles);
+    t[0x10] = Some(decoders::sensor_cf_stabilized_north);
+    t[0x11] = Some(decoders::sensor_cf_stabilized_up);
+    t[0x12] = Some(decoders::sensor_gps_timestamp);
+    t[0x14] = Some(decoders::sensor_temperature_statistics);
+    t[0x17] = Some(decoders::sensor_scaled_pressure);
+    t[0x18] = Some(decoders::sensor_overrange_status);
+    t[0x40] = Some(decoders::sensor_odometer_data);
+    t
+};
+
+/// Decoders of the fields of set 0x81, by descriptor.
+static GNSS_DATA_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x03] = Some(decoders::gnss_data_llh_position);
+    t[0x04] = Some(decoders::gnss_data_ecef_position);
+    t[0x05] = Some(decoders::gnss_data_ned_velocity);
+    t[0x06] = Some(decoders::gnss_data_ecef_velocity);
+    t[0x07] = Some(decoders::gnss_data_dop);
+    t[0x08] = Some(decoders::gnss_data_utc_time);
+    t[0x09] = Some(decoders::gnss_data_gps_time);
+    t[0x0A] = Some(decoders::gnss_data_clock_info);
+    t[0x0B] = Some(decoders::gnss_data_fix_info);
+    t[0x0C] = Some(decoders::gnss_data_sv_info);
+    t[0x0D] = Some(decoders::gnss_data_hardware_status);
+    t[0x0E] = Some(decoders::gnss_data_dgnss_info);
+    t[0x0F] = Some(decoders::gnss_data_dgnss_channel_status);
+    t
+};
+
+/// Decoders of the fields of set 0x82, by descriptor.
+static FILTER_DATA_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::filter_data_llh_position);
+    t[0x02] = Some(decoders::filter_data_ned_velocity);
+    t[0x03] = Some(decoders::filter_data_attitude_quaternion);
+    t[0x04] = Some(decoders::filter_data_attitude_dcm);
+    t[0x05] = Some(decoders::filter_data_euler_angles);
+    t[0x06] = Some(decoders::filter_data_gyro_bias);
+    t[0x07] = Some(decoders::filter_data_accel_bias);
+    t[0x08] = Some(decoders::filter_data_llh_position_uncertainty);
+    t[0x09] = Some(decoders::filter_data_ned_velocity_uncertainty);
+    t[0x0A] = Some(decoders::filter_data_euler_angles_uncertainty);
+    t[0x0B] = Some(decoders::filter_data_gyro_bias_uncertainty);
+    t[0x0C] = Some(decoders::filter_data_accel_bias_uncertainty);
+    t[0x0D] = Some(decoders::filter_data_linear_accel);
+    t[0x0E] = Some(decoders::filter_data_comp_angular_rate);
+    t[0x0F] = Some(decoders::filter_data_wgs84_gravity_magnitude);
+    t[0x10] = Some(decoders::filter_data_filter_status);
+    t[0x11] = Some(decoders::filter_data_gps_timestamp);
+    t[0x12] = Some(decoders::filter_data_quaternion_attitude_uncertainty);
+    t[0x13] = Some(decoders::filter_data_gravity_vector);
+    t[0x14] = Some(decoders::filter_data_heading_update_state);
+    t[0x15] = Some(decoders::filter_data_magnetic_model);
+    t[0x16] = Some(decoders::filter_data_gyro_scale_factor);
+    t[0x17] = Some(decoders::filter_data_accel_scale_factor);
+    t[0x18] = Some(decoders::filter_data_gyro_scale_factor_uncertainty);
+    t[0x19] = Some(decoders::filter_data_accel_scale_factor_uncertainty);
+    t[0x1C] = Some(decoders::filter_data_compensated_accel);
+    t[0x20] = Some(decoders::filter_data_standard_atmosphere);
+    t[0x21] = Some(decoders::filter_data_pressure_altitude);
+    t[0x25] = Some(decoders::filter_data_mag_auto_hard_iron_offset);
+    t[0x26] = Some(decoders::filter_data_mag_auto_soft_iron_matrix);
+    t[0x28] = Some(decoders::filter_data_mag_auto_hard_iron_offset_uncertainty);
+    t[0x29] = Some(decoders::filter_data_mag_auto_soft_iron_matrix_uncertainty);
+    t[0x30] = Some(decoders::filter_data_gnss_antenna_offset_correction);
+    t[0x31] = Some(decoders::filter_data_gnss_antenna_offset_correction_uncertainty);
+    t[0x34] = Some(decoders::filter_data_multi_antenna_offset_correction);
+    t[0x35] = Some(decoders::filter_data_multi_antenna_offset_correction_uncertainty);
+    t[0x36] = Some(decoders::filter_data_ecef_position_uncertainty);
+    t[0x37] = Some(decoders::filter_data_ecef_velocity_uncertainty);
+    t[0x40] = Some(decoders::filter_data_ecef_position);
+    t[0x41] = Some(decoders::filter_data_ecef_velocity);
+    t[0x42] = Some(decoders::filter_data_ned_relative_position);
+    t[0x43] = Some(decoders::filter_data_gnss_position_aiding_status);
+    t[0x46] = Some(decoders::filter_data_aiding_measurement_summary);
+    t[0x47] = Some(decoders::filter_data_odometer_scale_factor_error);
+    t[0x48] = Some(decoders::filter_data_odometer_scale_factor_error_uncertainty);
+    t[0x49] = Some(decoders::filter_data_gnss_dual_antenna_status);
+    t[0x50] = Some(decoders::filter_data_aiding_frame_config_error);
+    t[0x51] = Some(decoders::filter_data_aiding_frame_config_error_uncertainty);
+    t
+};
+
+/// Decoders of the fields of set 0x91, by descriptor.
+static GNSS_RECEIVER_1_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x03] = Some(decoders::gnss_receiver_1_llh_position);
+    t[0x04] = Some(decoders::gnss_receiver_1_ecef_position);
+    t[0x05] = Some(decoders::gnss_receiver_1_ned_velocity);
+    t[0x06] = Some(decoders::gnss_receiver_1_ecef_velocity);
+    t[0x07] = Some(decoders::gnss_receiver_1_dop);
+    t[0x08] = Some(decoders::gnss_receiver_1_utc_time);
+    t[0x09] = Some(decoders::gnss_receiver_1_gps_time);
+    t[0x0B] = Some(decoders::gnss_receiver_1_fix_info);
+    t[0x0D] = Some(decoders::gnss_receiver_1_hardware_status);
+    t[0x10] = Some(decoders::gnss_receiver_1_clock_info_2);
+    t[0x11] = Some(decoders::gnss_receiver_1_gps_leap_seconds);
+    t[0x12] = Some(decoders::gnss_receiver_1_sbas_info);
+    t[0x20] = Some(decoders::gnss_receiver_1_satellite_status);
+    t[0x22] = Some(decoders::gnss_receiver_1_raw);
+    t[0x61] = Some(decoders::gnss_receiver_1_gps_ephemeris);
+    t[0x62] = Some(decoders::gnss_receiver_1_glonass_ephemeris);
+    t[0x63] = Some(decoders::gnss_receiver_1_galileo_ephemeris);
+    t[0x64] = Some(decoders::gnss_receiver_1_beidou_ephemeris);
+    t
+};
+
+/// Decoders of the fields of set 0x92, by descriptor.
+static GNSS_RECEIVER_2_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x03] = Some(decoders::gnss_receiver_2_llh_position);
+    t[0x04] = Some(decoders::gnss_receiver_2_ecef_position);
+    t[0x05] = Some(decoders::gnss_receiver_2_ned_velocity);
+    t[0x06] = Some(decoders::gnss_receiver_2_ecef_velocity);
+    t[0x07] = Some(decoders::gnss_receiver_2_dop);
+    t[0x08] = Some(decoders::gnss_receiver_2_utc_time);
+    t[0x09] = Some(decoders::gnss_receiver_2_gps_time);
+    t[0x0B] = Some(decoders::gnss_receiver_2_fix_info);
+    t[0x0D] = Some(decoders::gnss_receiver_2_hardware_status);
+    t[0x10] = Some(decoders::gnss_receiver_2_clock_info_2);
+    t[0x11] = Some(decoders::gnss_receiver_2_gps_leap_seconds);
+    t[0x12] = Some(decoders::gnss_receiver_2_sbas_info);
+    t[0x20] = Some(decoders::gnss_receiver_2_satellite_status);
+    t[0x22] = Some(decoders::gnss_receiver_2_raw);
+    t[0x61] = Some(decoders::gnss_receiver_2_gps_ephemeris);
+    t[0x62] = Some(decoders::gnss_receiver_2_glonass_ephemeris);
+    t[0x63] = Some(decoders::gnss_receiver_2_galileo_ephemeris);
+    t[0x64] = Some(decoders::gnss_receiver_2_beidou_ephemeris);
+    t
+};
+
+/// Decoders of the fields of set 0x93, by descriptor.
+static GNSS_CORRECTIONS_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x30] = Some(decoders::gnss_corrections_base_station_info);
+    t[0x31] = Some(decoders::gnss_corrections_rtk_corrections_status);
+    t
+};
+
+/// Decoders of the fields of set 0x94, by descriptor.
+static GNSS_EXTERNAL_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x03] = Some(decoders::gnss_external_llh_position);
+    t[0x05] = Some(decoders::gnss_external_ned_velocity);
+    t[0x08] = Some(decoders::gnss_external_utc_time);
+    t[0x0B] = Some(decoders::gnss_external_fix_info);
+    t[0x20] = Some(decoders::gnss_external_satellite_status);
+    t
+};
+
+/// Decoders of the fields of set 0xA0, by descriptor.
+static SYSTEM_DATA_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::system_data_built_in_test);
+    t[0x02] = Some(decoders::system_data_time_sync_status);
+    t[0x03] = Some(decoders::system_data_gpio_state);
+    t
+};
+
+/// Decoders of the fields of set 0xFF, by descriptor.
+static SHARED_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
+    t
+};
+
 /// [`decode_field`] for a descriptor that is not one of the set's own fields. Out of line, so
-/// that `decode_field` itself is only the jump.
+/// that `decode_field` itself is only the table lookup.
 #[inline(never)]
 fn decode_other_field(
     set: u8,
@@ -702,11 +818,44 @@ fn decode_other_field(
     }))
 }
 
-/// One decoder per field of every set, for [`decode_field`]. Not inlined: each is called from
-/// one place, so the compiler would otherwise merge all of them into `decode_field`, whose stack
-/// frame would then hold the largest of every layout on every call.
+/// One decoder per field of every set, for [`decode_field`] (through the tables above). Not
+/// inlined, so that each keeps its own stack frame, as large as its own layout only.
 mod decoders {
     use super::{DecodeError, Device, FieldValue};
+    use crate::wire::{Layout, Reader};
+
+    /// Decodes `data` as layout `L` and wraps it into a FieldValue. A fixed layout over exactly
+    /// its size is read straight into the caller's slot; anything else (a wrong length, an
+    /// invalid value) goes to the checked decode, out of line, so that the straight path needs
+    /// no room for an error.
+    #[inline(always)]
+    fn decode_layout<L: Layout, W: FnOnce(L) -> FieldValue>(
+        data: &[u8],
+        wrap: W,
+    ) -> Result<FieldValue, DecodeError> {
+        match L::FIXED_SIZE {
+            Some(size) => {
+                if size == data.len() {
+                    if let Ok(value) = L::decode(&mut Reader::new(data)) {
+                        return Ok(wrap(value));
+                    }
+                }
+                decode_layout_checked(data, wrap)
+            }
+            None => L::decode_data(data).map(wrap),
+        }
+    }
+
+    /// The checked decode of [`decode_layout`] (the same value or error as
+    /// [`Layout::decode_data`]).
+    #[cold]
+    #[inline(never)]
+    fn decode_layout_checked<L: Layout, W: FnOnce(L) -> FieldValue>(
+        data: &[u8],
+        wrap: W,
+    ) -> Result<FieldValue, DecodeError> {
+        L::decode_data(data).map(wrap)
+    }
 
     #[inline(never)]
     pub(super) fn base_ping(
@@ -714,8 +863,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::Ping as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::Ping(v)))
+        decode_layout(data, |v: crate::base::Ping| {
+            FieldValue::Base(crate::base::SetField::Ping(v))
+        })
     }
 
     #[inline(never)]
@@ -724,8 +874,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::SetToIdle as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::SetToIdle(v)))
+        decode_layout(data, |v: crate::base::SetToIdle| {
+            FieldValue::Base(crate::base::SetField::SetToIdle(v))
+        })
     }
 
     #[inline(never)]
@@ -734,8 +885,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceInfo(v)))
+        decode_layout(data, |v: crate::base::GetDeviceInfo| {
+            FieldValue::Base(crate::base::SetField::GetDeviceInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -744,8 +896,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceInfo(v)))
+        decode_layout(data, |v: crate::base::DeviceInfo| {
+            FieldValue::Base(crate::base::SetField::DeviceInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -754,8 +907,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceDescriptors as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceDescriptors(v)))
+        decode_layout(data, |v: crate::base::GetDeviceDescriptors| {
+            FieldValue::Base(crate::base::SetField::GetDeviceDescriptors(v))
+        })
     }
 
     #[inline(never)]
@@ -764,8 +918,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceDescriptors as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceDescriptors(v)))
+        decode_layout(data, |v: crate::base::DeviceDescriptors| {
+            FieldValue::Base(crate::base::SetField::DeviceDescriptors(v))
+        })
     }
 
     #[inline(never)]
@@ -774,8 +929,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::BuiltInTest as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::BuiltInTest(v)))
+        decode_layout(data, |v: crate::base::BuiltInTest| {
+            FieldValue::Base(crate::base::SetField::BuiltInTest(v))
+        })
     }
 
     #[inline(never)]
@@ -793,8 +949,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::Resume as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::Resume(v)))
+        decode_layout(data, |v: crate::base::Resume| {
+            FieldValue::Base(crate::base::SetField::Resume(v))
+        })
     }
 
     #[inline(never)]
@@ -803,8 +960,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetExtendedDescriptors as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetExtendedDescriptors(v)))
+        decode_layout(data, |v: crate::base::GetExtendedDescriptors| {
+            FieldValue::Base(crate::base::SetField::GetExtendedDescriptors(v))
+        })
     }
 
     #[inline(never)]
@@ -813,8 +971,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::ExtendedDescriptors as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::ExtendedDescriptors(v)))
+        decode_layout(data, |v: crate::base::ExtendedDescriptors| {
+            FieldValue::Base(crate::base::SetField::ExtendedDescriptors(v))
+        })
     }
 
     #[inline(never)]
@@ -823,8 +982,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::ContinuousBit as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::ContinuousBit(v)))
+        decode_layout(data, |v: crate::base::ContinuousBit| {
+            FieldValue::Base(crate::base::SetField::ContinuousBit(v))
+        })
     }
 
     #[inline(never)]
@@ -833,8 +993,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::ContinuousBitResult as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::ContinuousBitResult(v)))
+        decode_layout(data, |v: crate::base::ContinuousBitResult| {
+            FieldValue::Base(crate::base::SetField::ContinuousBitResult(v))
+        })
     }
 
     #[inline(never)]
@@ -843,8 +1004,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::CommPortSpeed as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::CommPortSpeed(v)))
+        decode_layout(data, |v: crate::base::CommPortSpeed| {
+            FieldValue::Base(crate::base::SetField::CommPortSpeed(v))
+        })
     }
 
     #[inline(never)]
@@ -853,8 +1015,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::CommPortSpeedResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::CommPortSpeedResponse(v)))
+        decode_layout(data, |v: crate::base::CommPortSpeedResponse| {
+            FieldValue::Base(crate::base::SetField::CommPortSpeedResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -872,8 +1035,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GpsWeek as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GpsWeek(v)))
+        decode_layout(data, |v: crate::base::GpsWeek| {
+            FieldValue::Base(crate::base::SetField::GpsWeek(v))
+        })
     }
 
     #[inline(never)]
@@ -882,8 +1046,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GpsSeconds as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GpsSeconds(v)))
+        decode_layout(data, |v: crate::base::GpsSeconds| {
+            FieldValue::Base(crate::base::SetField::GpsSeconds(v))
+        })
     }
 
     #[inline(never)]
@@ -892,8 +1057,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceReset as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceReset(v)))
+        decode_layout(data, |v: crate::base::DeviceReset| {
+            FieldValue::Base(crate::base::SetField::DeviceReset(v))
+        })
     }
 
     #[inline(never)]
@@ -902,8 +1068,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventControl(v)))
+        decode_layout(data, |v: crate::threedm::EventControl| {
+            FieldValue::Threedm(crate::threedm::SetField::EventControl(v))
+        })
     }
 
     #[inline(never)]
@@ -912,8 +1079,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventControlResponse(v)))
+        decode_layout(data, |v: crate::threedm::EventControlResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::EventControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -922,8 +1090,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetEventTriggerStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetEventTriggerStatus(v)))
+        decode_layout(data, |v: crate::threedm::GetEventTriggerStatus| {
+            FieldValue::Threedm(crate::threedm::SetField::GetEventTriggerStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -932,8 +1101,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventTriggerStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventTriggerStatus(v)))
+        decode_layout(data, |v: crate::threedm::EventTriggerStatus| {
+            FieldValue::Threedm(crate::threedm::SetField::EventTriggerStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -942,8 +1112,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetEventActionStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetEventActionStatus(v)))
+        decode_layout(data, |v: crate::threedm::GetEventActionStatus| {
+            FieldValue::Threedm(crate::threedm::SetField::GetEventActionStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -952,8 +1123,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventActionStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventActionStatus(v)))
+        decode_layout(data, |v: crate::threedm::EventActionStatus| {
+            FieldValue::Threedm(crate::threedm::SetField::EventActionStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -962,8 +1134,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventTriggerConfig as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventTriggerConfig(v)))
+        decode_layout(data, |v: crate::threedm::EventTriggerConfig| {
+            FieldValue::Threedm(crate::threedm::SetField::EventTriggerConfig(v))
+        })
     }
 
     #[inline(never)]
@@ -972,8 +1145,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventTriggerConfigResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventTriggerConfigResponse(v)))
+        decode_layout(data, |v: crate::threedm::EventTriggerConfigResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::EventTriggerConfigResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -982,8 +1156,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventActionConfig as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventActionConfig(v)))
+        decode_layout(data, |v: crate::threedm::EventActionConfig| {
+            FieldValue::Threedm(crate::threedm::SetField::EventActionConfig(v))
+        })
     }
 
     #[inline(never)]
@@ -992,8 +1167,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::EventActionConfigResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::EventActionConfigResponse(v)))
+        decode_layout(data, |v: crate::threedm::EventActionConfigResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::EventActionConfigResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1011,8 +1187,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorToVehicleEuler as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleEuler(v)))
+        decode_layout(data, |v: crate::threedm::SensorToVehicleEuler| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleEuler(v))
+        })
     }
 
     #[inline(never)]
@@ -1021,8 +1198,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorToVehicleEulerResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleEulerResponse(v)))
+        decode_layout(data, |v: crate::threedm::SensorToVehicleEulerResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleEulerResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1031,8 +1209,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorToVehicleQuaternion as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleQuaternion(v)))
+        decode_layout(data, |v: crate::threedm::SensorToVehicleQuaternion| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleQuaternion(v))
+        })
     }
 
     #[inline(never)]
@@ -1041,14 +1220,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorToVehicleQuaternionResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::threedm::SensorToVehicleQuaternionResponse| {
+                FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleQuaternionResponse(
+                    v,
+                ))
+            },
         )
-        .map(|v| {
-            FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleQuaternionResponse(
-                v,
-            ))
-        })
     }
 
     #[inline(never)]
@@ -1057,8 +1236,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorToVehicleDcm as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleDcm(v)))
+        decode_layout(data, |v: crate::threedm::SensorToVehicleDcm| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleDcm(v))
+        })
     }
 
     #[inline(never)]
@@ -1067,8 +1247,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorToVehicleDcmResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleDcmResponse(v)))
+        decode_layout(data, |v: crate::threedm::SensorToVehicleDcmResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorToVehicleDcmResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1086,8 +1267,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::AccelBiasResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::AccelBiasResponse(v)))
+        decode_layout(data, |v: crate::threedm::AccelBiasResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::AccelBiasResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1105,8 +1287,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GyroBiasResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GyroBiasResponse(v)))
+        decode_layout(data, |v: crate::threedm::GyroBiasResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GyroBiasResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1115,8 +1298,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::CaptureGyroBias as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::CaptureGyroBias(v)))
+        decode_layout(data, |v: crate::threedm::CaptureGyroBias| {
+            FieldValue::Threedm(crate::threedm::SetField::CaptureGyroBias(v))
+        })
     }
 
     #[inline(never)]
@@ -1134,8 +1318,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::MagHardIronOffsetResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::MagHardIronOffsetResponse(v)))
+        decode_layout(data, |v: crate::threedm::MagHardIronOffsetResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::MagHardIronOffsetResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1153,8 +1338,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::MagSoftIronMatrixResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::MagSoftIronMatrixResponse(v)))
+        decode_layout(data, |v: crate::threedm::MagSoftIronMatrixResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::MagSoftIronMatrixResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1163,8 +1349,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ConingScullingEnable as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ConingScullingEnable(v)))
+        decode_layout(data, |v: crate::threedm::ConingScullingEnable| {
+            FieldValue::Threedm(crate::threedm::SetField::ConingScullingEnable(v))
+        })
     }
 
     #[inline(never)]
@@ -1173,8 +1360,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ConingScullingEnableResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ConingScullingEnableResponse(v)))
+        decode_layout(data, |v: crate::threedm::ConingScullingEnableResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::ConingScullingEnableResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1183,8 +1371,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::UartBaudrate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::UartBaudrate(v)))
+        decode_layout(data, |v: crate::threedm::UartBaudrate| {
+            FieldValue::Threedm(crate::threedm::SetField::UartBaudrate(v))
+        })
     }
 
     #[inline(never)]
@@ -1193,8 +1382,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::UartBaudrateResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::UartBaudrateResponse(v)))
+        decode_layout(data, |v: crate::threedm::UartBaudrateResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::UartBaudrateResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1203,8 +1393,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GpioConfig as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GpioConfig(v)))
+        decode_layout(data, |v: crate::threedm::GpioConfig| {
+            FieldValue::Threedm(crate::threedm::SetField::GpioConfig(v))
+        })
     }
 
     #[inline(never)]
@@ -1213,8 +1404,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GpioConfigResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GpioConfigResponse(v)))
+        decode_layout(data, |v: crate::threedm::GpioConfigResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GpioConfigResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1223,8 +1415,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GpioState as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GpioState(v)))
+        decode_layout(data, |v: crate::threedm::GpioState| {
+            FieldValue::Threedm(crate::threedm::SetField::GpioState(v))
+        })
     }
 
     #[inline(never)]
@@ -1233,8 +1426,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GpioStateResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GpioStateResponse(v)))
+        decode_layout(data, |v: crate::threedm::GpioStateResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GpioStateResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1243,8 +1437,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::OdometerConfig as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::OdometerConfig(v)))
+        decode_layout(data, |v: crate::threedm::OdometerConfig| {
+            FieldValue::Threedm(crate::threedm::SetField::OdometerConfig(v))
+        })
     }
 
     #[inline(never)]
@@ -1253,8 +1448,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::OdometerConfigResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::OdometerConfigResponse(v)))
+        decode_layout(data, |v: crate::threedm::OdometerConfigResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::OdometerConfigResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1263,8 +1459,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::AdvancedLowpassFilter as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::AdvancedLowpassFilter(v)))
+        decode_layout(data, |v: crate::threedm::AdvancedLowpassFilter| {
+            FieldValue::Threedm(crate::threedm::SetField::AdvancedLowpassFilter(v))
+        })
     }
 
     #[inline(never)]
@@ -1273,10 +1470,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::AdvancedLowpassFilterResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::Threedm(crate::threedm::SetField::AdvancedLowpassFilterResponse(v))
-            })
+        decode_layout(data, |v: crate::threedm::AdvancedLowpassFilterResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::AdvancedLowpassFilterResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1285,8 +1481,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ComplementaryFilter as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ComplementaryFilter(v)))
+        decode_layout(data, |v: crate::threedm::ComplementaryFilter| {
+            FieldValue::Threedm(crate::threedm::SetField::ComplementaryFilter(v))
+        })
     }
 
     #[inline(never)]
@@ -1295,8 +1492,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ComplementaryFilterResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ComplementaryFilterResponse(v)))
+        decode_layout(data, |v: crate::threedm::ComplementaryFilterResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::ComplementaryFilterResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1305,8 +1503,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorRange as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorRange(v)))
+        decode_layout(data, |v: crate::threedm::SensorRange| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorRange(v))
+        })
     }
 
     #[inline(never)]
@@ -1315,8 +1514,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SensorRangeResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SensorRangeResponse(v)))
+        decode_layout(data, |v: crate::threedm::SensorRangeResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::SensorRangeResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1325,8 +1525,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetCalibratedSensorRanges as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetCalibratedSensorRanges(v)))
+        decode_layout(data, |v: crate::threedm::GetCalibratedSensorRanges| {
+            FieldValue::Threedm(crate::threedm::SetField::GetCalibratedSensorRanges(v))
+        })
     }
 
     #[inline(never)]
@@ -1335,8 +1536,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::CalibratedSensorRanges as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::CalibratedSensorRanges(v)))
+        decode_layout(data, |v: crate::threedm::CalibratedSensorRanges| {
+            FieldValue::Threedm(crate::threedm::SetField::CalibratedSensorRanges(v))
+        })
     }
 
     #[inline(never)]
@@ -1345,8 +1547,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::LowpassFilter as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::LowpassFilter(v)))
+        decode_layout(data, |v: crate::threedm::LowpassFilter| {
+            FieldValue::Threedm(crate::threedm::SetField::LowpassFilter(v))
+        })
     }
 
     #[inline(never)]
@@ -1355,8 +1558,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::LowpassFilterResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::LowpassFilterResponse(v)))
+        decode_layout(data, |v: crate::threedm::LowpassFilterResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::LowpassFilterResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1365,8 +1569,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PollImuData as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PollImuData(v)))
+        decode_layout(data, |v: crate::threedm::PollImuData| {
+            FieldValue::Threedm(crate::threedm::SetField::PollImuData(v))
+        })
     }
 
     #[inline(never)]
@@ -1375,8 +1580,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PollGnssData as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PollGnssData(v)))
+        decode_layout(data, |v: crate::threedm::PollGnssData| {
+            FieldValue::Threedm(crate::threedm::SetField::PollGnssData(v))
+        })
     }
 
     #[inline(never)]
@@ -1385,8 +1591,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PollFilterData as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PollFilterData(v)))
+        decode_layout(data, |v: crate::threedm::PollFilterData| {
+            FieldValue::Threedm(crate::threedm::SetField::PollFilterData(v))
+        })
     }
 
     #[inline(never)]
@@ -1395,8 +1602,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PollNmeaData as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PollNmeaData(v)))
+        decode_layout(data, |v: crate::threedm::PollNmeaData| {
+            FieldValue::Threedm(crate::threedm::SetField::PollNmeaData(v))
+        })
     }
 
     #[inline(never)]
@@ -1405,8 +1613,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PollData as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PollData(v)))
+        decode_layout(data, |v: crate::threedm::PollData| {
+            FieldValue::Threedm(crate::threedm::SetField::PollData(v))
+        })
     }
 
     #[inline(never)]
@@ -1415,8 +1624,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetImuBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetImuBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::GetImuBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::GetImuBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1425,8 +1635,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ImuBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ImuBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::ImuBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::ImuBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1435,8 +1646,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetGnssBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetGnssBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::GetGnssBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::GetGnssBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1445,8 +1657,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::GnssBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1455,8 +1668,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetFilterBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetFilterBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::GetFilterBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::GetFilterBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1465,8 +1679,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::FilterBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::FilterBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::FilterBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::FilterBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1475,8 +1690,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetBaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetBaseRate(v)))
+        decode_layout(data, |v: crate::threedm::GetBaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::GetBaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1485,8 +1701,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::BaseRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::BaseRate(v)))
+        decode_layout(data, |v: crate::threedm::BaseRate| {
+            FieldValue::Threedm(crate::threedm::SetField::BaseRate(v))
+        })
     }
 
     #[inline(never)]
@@ -1495,8 +1712,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ImuMessageFormat as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(v)))
+        decode_layout(data, |v: crate::threedm::ImuMessageFormat| {
+            FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(v))
+        })
     }
 
     #[inline(never)]
@@ -1505,8 +1723,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::ImuMessageFormatResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormatResponse(v)))
+        decode_layout(data, |v: crate::threedm::ImuMessageFormatResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormatResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1515,8 +1734,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssMessageFormat as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(v)))
+        decode_layout(data, |v: crate::threedm::GnssMessageFormat| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(v))
+        })
     }
 
     #[inline(never)]
@@ -1525,8 +1745,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssMessageFormatResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormatResponse(v)))
+        decode_layout(data, |v: crate::threedm::GnssMessageFormatResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormatResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1535,8 +1756,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::FilterMessageFormat as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(v)))
+        decode_layout(data, |v: crate::threedm::FilterMessageFormat| {
+            FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(v))
+        })
     }
 
     #[inline(never)]
@@ -1545,8 +1767,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::FilterMessageFormatResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormatResponse(v)))
+        decode_layout(data, |v: crate::threedm::FilterMessageFormatResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormatResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1555,8 +1778,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::NmeaMessageFormat as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::NmeaMessageFormat(v)))
+        decode_layout(data, |v: crate::threedm::NmeaMessageFormat| {
+            FieldValue::Threedm(crate::threedm::SetField::NmeaMessageFormat(v))
+        })
     }
 
     #[inline(never)]
@@ -1565,8 +1789,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::NmeaMessageFormatResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::NmeaMessageFormatResponse(v)))
+        decode_layout(data, |v: crate::threedm::NmeaMessageFormatResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::NmeaMessageFormatResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1575,8 +1800,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::MessageFormat as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::MessageFormat(v)))
+        decode_layout(data, |v: crate::threedm::MessageFormat| {
+            FieldValue::Threedm(crate::threedm::SetField::MessageFormat(v))
+        })
     }
 
     #[inline(never)]
@@ -1585,8 +1811,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::MessageFormatResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::MessageFormatResponse(v)))
+        decode_layout(data, |v: crate::threedm::MessageFormatResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::MessageFormatResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1595,8 +1822,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::FactoryStreaming as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::FactoryStreaming(v)))
+        decode_layout(data, |v: crate::threedm::FactoryStreaming| {
+            FieldValue::Threedm(crate::threedm::SetField::FactoryStreaming(v))
+        })
     }
 
     #[inline(never)]
@@ -1623,8 +1851,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::RawRtcmMessage as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::RawRtcmMessage(v)))
+        decode_layout(data, |v: crate::threedm::RawRtcmMessage| {
+            FieldValue::Threedm(crate::threedm::SetField::RawRtcmMessage(v))
+        })
     }
 
     #[inline(never)]
@@ -1633,8 +1862,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssConstellationSettings as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(v)))
+        decode_layout(data, |v: crate::threedm::GnssConstellationSettings| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(v))
+        })
     }
 
     #[inline(never)]
@@ -1643,14 +1873,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssConstellationSettingsResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::threedm::GnssConstellationSettingsResponse| {
+                FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettingsResponse(
+                    v,
+                ))
+            },
         )
-        .map(|v| {
-            FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettingsResponse(
-                v,
-            ))
-        })
     }
 
     #[inline(never)]
@@ -1659,8 +1889,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssSbasSettings as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssSbasSettings(v)))
+        decode_layout(data, |v: crate::threedm::GnssSbasSettings| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssSbasSettings(v))
+        })
     }
 
     #[inline(never)]
@@ -1669,8 +1900,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssSbasSettingsResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssSbasSettingsResponse(v)))
+        decode_layout(data, |v: crate::threedm::GnssSbasSettingsResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssSbasSettingsResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1679,8 +1911,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssAssistedFixControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssAssistedFixControl(v)))
+        decode_layout(data, |v: crate::threedm::GnssAssistedFixControl| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssAssistedFixControl(v))
+        })
     }
 
     #[inline(never)]
@@ -1689,10 +1922,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssAssistedFixControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::Threedm(crate::threedm::SetField::GnssAssistedFixControlResponse(v))
-            })
+        decode_layout(data, |v: crate::threedm::GnssAssistedFixControlResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssAssistedFixControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1701,8 +1933,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssAssistTimeUpdate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssAssistTimeUpdate(v)))
+        decode_layout(data, |v: crate::threedm::GnssAssistTimeUpdate| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssAssistTimeUpdate(v))
+        })
     }
 
     #[inline(never)]
@@ -1711,8 +1944,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GnssAssistTimeUpdateResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GnssAssistTimeUpdateResponse(v)))
+        decode_layout(data, |v: crate::threedm::GnssAssistTimeUpdateResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::GnssAssistTimeUpdateResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1721,8 +1955,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PpsSource as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PpsSource(v)))
+        decode_layout(data, |v: crate::threedm::PpsSource| {
+            FieldValue::Threedm(crate::threedm::SetField::PpsSource(v))
+        })
     }
 
     #[inline(never)]
@@ -1731,8 +1966,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::PpsSourceResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::PpsSourceResponse(v)))
+        decode_layout(data, |v: crate::threedm::PpsSourceResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::PpsSourceResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1741,8 +1977,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::GetSupportedEvents as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::GetSupportedEvents(v)))
+        decode_layout(data, |v: crate::threedm::GetSupportedEvents| {
+            FieldValue::Threedm(crate::threedm::SetField::GetSupportedEvents(v))
+        })
     }
 
     #[inline(never)]
@@ -1751,8 +1988,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::SupportedEvents as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::SupportedEvents(v)))
+        decode_layout(data, |v: crate::threedm::SupportedEvents| {
+            FieldValue::Threedm(crate::threedm::SetField::SupportedEvents(v))
+        })
     }
 
     #[inline(never)]
@@ -1761,8 +1999,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::DeviceStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::DeviceStatus(v)))
+        decode_layout(data, |v: crate::threedm::DeviceStatus| {
+            FieldValue::Threedm(crate::threedm::SetField::DeviceStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -1771,8 +2010,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::threedm::DeviceStatusResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Threedm(crate::threedm::SetField::DeviceStatusResponse(v)))
+        decode_layout(data, |v: crate::threedm::DeviceStatusResponse| {
+            FieldValue::Threedm(crate::threedm::SetField::DeviceStatusResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1781,8 +2021,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ResetFilter as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ResetFilter(v)))
+        decode_layout(data, |v: crate::filter::ResetFilter| {
+            FieldValue::Filter(crate::filter::SetField::ResetFilter(v))
+        })
     }
 
     #[inline(never)]
@@ -1791,8 +2032,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SetInitialAttitude as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SetInitialAttitude(v)))
+        decode_layout(data, |v: crate::filter::SetInitialAttitude| {
+            FieldValue::Filter(crate::filter::SetField::SetInitialAttitude(v))
+        })
     }
 
     #[inline(never)]
@@ -1801,8 +2043,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SetInitialHeading as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SetInitialHeading(v)))
+        decode_layout(data, |v: crate::filter::SetInitialHeading| {
+            FieldValue::Filter(crate::filter::SetField::SetInitialHeading(v))
+        })
     }
 
     #[inline(never)]
@@ -1811,8 +2054,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::RunFilter as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::RunFilter(v)))
+        decode_layout(data, |v: crate::filter::RunFilter| {
+            FieldValue::Filter(crate::filter::SetField::RunFilter(v))
+        })
     }
 
     #[inline(never)]
@@ -1821,8 +2065,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::VehicleDynamicsMode as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::VehicleDynamicsMode(v)))
+        decode_layout(data, |v: crate::filter::VehicleDynamicsMode| {
+            FieldValue::Filter(crate::filter::SetField::VehicleDynamicsMode(v))
+        })
     }
 
     #[inline(never)]
@@ -1831,8 +2076,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::VehicleDynamicsModeResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::VehicleDynamicsModeResponse(v)))
+        decode_layout(data, |v: crate::filter::VehicleDynamicsModeResponse| {
+            FieldValue::Filter(crate::filter::SetField::VehicleDynamicsModeResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1841,8 +2087,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SensorToVehicleTransform as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SensorToVehicleTransform(v)))
+        decode_layout(data, |v: crate::filter::SensorToVehicleTransform| {
+            FieldValue::Filter(crate::filter::SetField::SensorToVehicleTransform(v))
+        })
     }
 
     #[inline(never)]
@@ -1851,10 +2098,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SensorToVehicleTransformResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
+        decode_layout(
+            data,
+            |v: crate::filter::SensorToVehicleTransformResponse| {
                 FieldValue::Filter(crate::filter::SetField::SensorToVehicleTransformResponse(v))
-            })
+            },
+        )
     }
 
     #[inline(never)]
@@ -1863,8 +2112,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SensorToVehicleOffset as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SensorToVehicleOffset(v)))
+        decode_layout(data, |v: crate::filter::SensorToVehicleOffset| {
+            FieldValue::Filter(crate::filter::SetField::SensorToVehicleOffset(v))
+        })
     }
 
     #[inline(never)]
@@ -1873,8 +2123,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SensorToVehicleOffsetResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SensorToVehicleOffsetResponse(v)))
+        decode_layout(data, |v: crate::filter::SensorToVehicleOffsetResponse| {
+            FieldValue::Filter(crate::filter::SetField::SensorToVehicleOffsetResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1883,8 +2134,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AntennaOffset as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AntennaOffset(v)))
+        decode_layout(data, |v: crate::filter::AntennaOffset| {
+            FieldValue::Filter(crate::filter::SetField::AntennaOffset(v))
+        })
     }
 
     #[inline(never)]
@@ -1893,8 +2145,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AntennaOffsetResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AntennaOffsetResponse(v)))
+        decode_layout(data, |v: crate::filter::AntennaOffsetResponse| {
+            FieldValue::Filter(crate::filter::SetField::AntennaOffsetResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1903,8 +2156,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::EstimationControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::EstimationControl(v)))
+        decode_layout(data, |v: crate::filter::EstimationControl| {
+            FieldValue::Filter(crate::filter::SetField::EstimationControl(v))
+        })
     }
 
     #[inline(never)]
@@ -1913,8 +2167,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::EstimationControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::EstimationControlResponse(v)))
+        decode_layout(data, |v: crate::filter::EstimationControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::EstimationControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1923,8 +2178,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GnssSourceControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GnssSourceControl(v)))
+        decode_layout(data, |v: crate::filter::GnssSourceControl| {
+            FieldValue::Filter(crate::filter::SetField::GnssSourceControl(v))
+        })
     }
 
     #[inline(never)]
@@ -1933,8 +2189,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GnssSourceControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GnssSourceControlResponse(v)))
+        decode_layout(data, |v: crate::filter::GnssSourceControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::GnssSourceControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1943,8 +2200,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ExternalGnssUpdate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ExternalGnssUpdate(v)))
+        decode_layout(data, |v: crate::filter::ExternalGnssUpdate| {
+            FieldValue::Filter(crate::filter::SetField::ExternalGnssUpdate(v))
+        })
     }
 
     #[inline(never)]
@@ -1953,8 +2211,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ExternalHeadingUpdate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ExternalHeadingUpdate(v)))
+        decode_layout(data, |v: crate::filter::ExternalHeadingUpdate| {
+            FieldValue::Filter(crate::filter::SetField::ExternalHeadingUpdate(v))
+        })
     }
 
     #[inline(never)]
@@ -1963,8 +2222,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::HeadingUpdateControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::HeadingUpdateControl(v)))
+        decode_layout(data, |v: crate::filter::HeadingUpdateControl| {
+            FieldValue::Filter(crate::filter::SetField::HeadingUpdateControl(v))
+        })
     }
 
     #[inline(never)]
@@ -1973,8 +2233,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::HeadingUpdateControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::HeadingUpdateControlResponse(v)))
+        decode_layout(data, |v: crate::filter::HeadingUpdateControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::HeadingUpdateControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -1983,8 +2244,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AutoInitControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AutoInitControl(v)))
+        decode_layout(data, |v: crate::filter::AutoInitControl| {
+            FieldValue::Filter(crate::filter::SetField::AutoInitControl(v))
+        })
     }
 
     #[inline(never)]
@@ -1993,8 +2255,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AutoInitControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AutoInitControlResponse(v)))
+        decode_layout(data, |v: crate::filter::AutoInitControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::AutoInitControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2003,8 +2266,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AccelNoise as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AccelNoise(v)))
+        decode_layout(data, |v: crate::filter::AccelNoise| {
+            FieldValue::Filter(crate::filter::SetField::AccelNoise(v))
+        })
     }
 
     #[inline(never)]
@@ -2013,8 +2277,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AccelNoiseResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AccelNoiseResponse(v)))
+        decode_layout(data, |v: crate::filter::AccelNoiseResponse| {
+            FieldValue::Filter(crate::filter::SetField::AccelNoiseResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2023,8 +2288,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GyroNoise as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GyroNoise(v)))
+        decode_layout(data, |v: crate::filter::GyroNoise| {
+            FieldValue::Filter(crate::filter::SetField::GyroNoise(v))
+        })
     }
 
     #[inline(never)]
@@ -2033,8 +2299,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GyroNoiseResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GyroNoiseResponse(v)))
+        decode_layout(data, |v: crate::filter::GyroNoiseResponse| {
+            FieldValue::Filter(crate::filter::SetField::GyroNoiseResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2043,8 +2310,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AccelBiasModel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AccelBiasModel(v)))
+        decode_layout(data, |v: crate::filter::AccelBiasModel| {
+            FieldValue::Filter(crate::filter::SetField::AccelBiasModel(v))
+        })
     }
 
     #[inline(never)]
@@ -2053,8 +2321,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AccelBiasModelResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AccelBiasModelResponse(v)))
+        decode_layout(data, |v: crate::filter::AccelBiasModelResponse| {
+            FieldValue::Filter(crate::filter::SetField::AccelBiasModelResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2063,8 +2332,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GyroBiasModel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GyroBiasModel(v)))
+        decode_layout(data, |v: crate::filter::GyroBiasModel| {
+            FieldValue::Filter(crate::filter::SetField::GyroBiasModel(v))
+        })
     }
 
     #[inline(never)]
@@ -2073,8 +2343,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GyroBiasModelResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GyroBiasModelResponse(v)))
+        decode_layout(data, |v: crate::filter::GyroBiasModelResponse| {
+            FieldValue::Filter(crate::filter::SetField::GyroBiasModelResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2083,8 +2354,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ZuptControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ZuptControl(v)))
+        decode_layout(data, |v: crate::filter::ZuptControl| {
+            FieldValue::Filter(crate::filter::SetField::ZuptControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2093,8 +2365,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ZuptControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ZuptControlResponse(v)))
+        decode_layout(data, |v: crate::filter::ZuptControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::ZuptControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2103,8 +2376,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ExternalHeadingUpdateWithTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ExternalHeadingUpdateWithTime(v)))
+        decode_layout(data, |v: crate::filter::ExternalHeadingUpdateWithTime| {
+            FieldValue::Filter(crate::filter::SetField::ExternalHeadingUpdateWithTime(v))
+        })
     }
 
     #[inline(never)]
@@ -2113,8 +2387,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ZeroAngularRateUpdateControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ZeroAngularRateUpdateControl(v)))
+        decode_layout(data, |v: crate::filter::ZeroAngularRateUpdateControl| {
+            FieldValue::Filter(crate::filter::SetField::ZeroAngularRateUpdateControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2123,12 +2398,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ZeroAngularRateUpdateControlResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::ZeroAngularRateUpdateControlResponse| {
+                FieldValue::Filter(crate::filter::SetField::ZeroAngularRateUpdateControlResponse(v))
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::ZeroAngularRateUpdateControlResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2137,8 +2412,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::TareOrientation as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::TareOrientation(v)))
+        decode_layout(data, |v: crate::filter::TareOrientation| {
+            FieldValue::Filter(crate::filter::SetField::TareOrientation(v))
+        })
     }
 
     #[inline(never)]
@@ -2147,8 +2423,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::CommandedZupt as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::CommandedZupt(v)))
+        decode_layout(data, |v: crate::filter::CommandedZupt| {
+            FieldValue::Filter(crate::filter::SetField::CommandedZupt(v))
+        })
     }
 
     #[inline(never)]
@@ -2157,8 +2434,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::CommandedZeroAngularRateUpdate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::CommandedZeroAngularRateUpdate(v)))
+        decode_layout(data, |v: crate::filter::CommandedZeroAngularRateUpdate| {
+            FieldValue::Filter(crate::filter::SetField::CommandedZeroAngularRateUpdate(v))
+        })
     }
 
     #[inline(never)]
@@ -2167,8 +2445,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagCaptureAutoCalibration as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MagCaptureAutoCalibration(v)))
+        decode_layout(data, |v: crate::filter::MagCaptureAutoCalibration| {
+            FieldValue::Filter(crate::filter::SetField::MagCaptureAutoCalibration(v))
+        })
     }
 
     #[inline(never)]
@@ -2177,8 +2456,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GravityNoiseStdDev as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GravityNoiseStdDev(v)))
+        decode_layout(data, |v: crate::filter::GravityNoiseStdDev| {
+            FieldValue::Filter(crate::filter::SetField::GravityNoiseStdDev(v))
+        })
     }
 
     #[inline(never)]
@@ -2187,8 +2467,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GravityNoiseStdDevResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GravityNoiseStdDevResponse(v)))
+        decode_layout(data, |v: crate::filter::GravityNoiseStdDevResponse| {
+            FieldValue::Filter(crate::filter::SetField::GravityNoiseStdDevResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2197,8 +2478,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::PressureAltitudeNoiseStdDev as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::PressureAltitudeNoiseStdDev(v)))
+        decode_layout(data, |v: crate::filter::PressureAltitudeNoiseStdDev| {
+            FieldValue::Filter(crate::filter::SetField::PressureAltitudeNoiseStdDev(v))
+        })
     }
 
     #[inline(never)]
@@ -2207,12 +2489,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::PressureAltitudeNoiseStdDevResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::PressureAltitudeNoiseStdDevResponse| {
+                FieldValue::Filter(crate::filter::SetField::PressureAltitudeNoiseStdDevResponse(v))
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::PressureAltitudeNoiseStdDevResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2221,8 +2503,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::HardIronOffsetNoise as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::HardIronOffsetNoise(v)))
+        decode_layout(data, |v: crate::filter::HardIronOffsetNoise| {
+            FieldValue::Filter(crate::filter::SetField::HardIronOffsetNoise(v))
+        })
     }
 
     #[inline(never)]
@@ -2231,8 +2514,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::HardIronOffsetNoiseResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::HardIronOffsetNoiseResponse(v)))
+        decode_layout(data, |v: crate::filter::HardIronOffsetNoiseResponse| {
+            FieldValue::Filter(crate::filter::SetField::HardIronOffsetNoiseResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2241,8 +2525,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SoftIronMatrixNoise as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SoftIronMatrixNoise(v)))
+        decode_layout(data, |v: crate::filter::SoftIronMatrixNoise| {
+            FieldValue::Filter(crate::filter::SetField::SoftIronMatrixNoise(v))
+        })
     }
 
     #[inline(never)]
@@ -2251,8 +2536,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SoftIronMatrixNoiseResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SoftIronMatrixNoiseResponse(v)))
+        decode_layout(data, |v: crate::filter::SoftIronMatrixNoiseResponse| {
+            FieldValue::Filter(crate::filter::SetField::SoftIronMatrixNoiseResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2261,8 +2547,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagNoiseStdDev as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MagNoiseStdDev(v)))
+        decode_layout(data, |v: crate::filter::MagNoiseStdDev| {
+            FieldValue::Filter(crate::filter::SetField::MagNoiseStdDev(v))
+        })
     }
 
     #[inline(never)]
@@ -2271,8 +2558,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagNoiseStdDevResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MagNoiseStdDevResponse(v)))
+        decode_layout(data, |v: crate::filter::MagNoiseStdDevResponse| {
+            FieldValue::Filter(crate::filter::SetField::MagNoiseStdDevResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2281,8 +2569,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::DeclinationSource as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::DeclinationSource(v)))
+        decode_layout(data, |v: crate::filter::DeclinationSource| {
+            FieldValue::Filter(crate::filter::SetField::DeclinationSource(v))
+        })
     }
 
     #[inline(never)]
@@ -2291,8 +2580,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::DeclinationSourceResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::DeclinationSourceResponse(v)))
+        decode_layout(data, |v: crate::filter::DeclinationSourceResponse| {
+            FieldValue::Filter(crate::filter::SetField::DeclinationSourceResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2301,12 +2591,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GravityMagnitudeAdaptiveMeasurement as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::GravityMagnitudeAdaptiveMeasurement| {
+                FieldValue::Filter(crate::filter::SetField::GravityMagnitudeAdaptiveMeasurement(v))
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::GravityMagnitudeAdaptiveMeasurement(v))
-        })
     }
 
     #[inline(never)]
@@ -2315,8 +2605,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GravityMagnitudeAdaptiveMeasurementResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GravityMagnitudeAdaptiveMeasurementResponse(v)))
+        decode_layout(
+            data,
+            |v: crate::filter::GravityMagnitudeAdaptiveMeasurementResponse| {
+                FieldValue::Filter(
+                    crate::filter::SetField::GravityMagnitudeAdaptiveMeasurementResponse(v),
+                )
+            },
+        )
     }
 
     #[inline(never)]
@@ -2325,10 +2621,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagMagnitudeAdaptiveMeasurement as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::Filter(crate::filter::SetField::MagMagnitudeAdaptiveMeasurement(v))
-            })
+        decode_layout(data, |v: crate::filter::MagMagnitudeAdaptiveMeasurement| {
+            FieldValue::Filter(crate::filter::SetField::MagMagnitudeAdaptiveMeasurement(v))
+        })
     }
 
     #[inline(never)]
@@ -2337,8 +2632,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagMagnitudeAdaptiveMeasurementResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MagMagnitudeAdaptiveMeasurementResponse(v)))
+        decode_layout(
+            data,
+            |v: crate::filter::MagMagnitudeAdaptiveMeasurementResponse| {
+                FieldValue::Filter(
+                    crate::filter::SetField::MagMagnitudeAdaptiveMeasurementResponse(v),
+                )
+            },
+        )
     }
 
     #[inline(never)]
@@ -2347,8 +2648,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagDipAngleAdaptiveMeasurement as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MagDipAngleAdaptiveMeasurement(v)))
+        decode_layout(data, |v: crate::filter::MagDipAngleAdaptiveMeasurement| {
+            FieldValue::Filter(crate::filter::SetField::MagDipAngleAdaptiveMeasurement(v))
+        })
     }
 
     #[inline(never)]
@@ -2357,12 +2659,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagDipAngleAdaptiveMeasurementResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::MagDipAngleAdaptiveMeasurementResponse| {
+                FieldValue::Filter(
+                    crate::filter::SetField::MagDipAngleAdaptiveMeasurementResponse(v),
+                )
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::MagDipAngleAdaptiveMeasurementResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2371,8 +2675,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AltitudeAidingControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AltitudeAidingControl(v)))
+        decode_layout(data, |v: crate::filter::AltitudeAidingControl| {
+            FieldValue::Filter(crate::filter::SetField::AltitudeAidingControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2381,8 +2686,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AltitudeAidingControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AltitudeAidingControlResponse(v)))
+        decode_layout(data, |v: crate::filter::AltitudeAidingControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::AltitudeAidingControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2391,8 +2697,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::PitchRollAidingControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::PitchRollAidingControl(v)))
+        decode_layout(data, |v: crate::filter::PitchRollAidingControl| {
+            FieldValue::Filter(crate::filter::SetField::PitchRollAidingControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2401,8 +2708,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::PitchRollAidingControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::PitchRollAidingControlResponse(v)))
+        decode_layout(data, |v: crate::filter::PitchRollAidingControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::PitchRollAidingControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2411,8 +2719,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::InclinationSource as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::InclinationSource(v)))
+        decode_layout(data, |v: crate::filter::InclinationSource| {
+            FieldValue::Filter(crate::filter::SetField::InclinationSource(v))
+        })
     }
 
     #[inline(never)]
@@ -2421,8 +2730,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::InclinationSourceResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::InclinationSourceResponse(v)))
+        decode_layout(data, |v: crate::filter::InclinationSourceResponse| {
+            FieldValue::Filter(crate::filter::SetField::InclinationSourceResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2431,8 +2741,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagneticFieldMagnitudeSource as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MagneticFieldMagnitudeSource(v)))
+        decode_layout(data, |v: crate::filter::MagneticFieldMagnitudeSource| {
+            FieldValue::Filter(crate::filter::SetField::MagneticFieldMagnitudeSource(v))
+        })
     }
 
     #[inline(never)]
@@ -2441,12 +2752,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MagneticFieldMagnitudeSourceResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::MagneticFieldMagnitudeSourceResponse| {
+                FieldValue::Filter(crate::filter::SetField::MagneticFieldMagnitudeSourceResponse(v))
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::MagneticFieldMagnitudeSourceResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2455,8 +2766,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AidingMeasurementControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AidingMeasurementControl(v)))
+        decode_layout(data, |v: crate::filter::AidingMeasurementControl| {
+            FieldValue::Filter(crate::filter::SetField::AidingMeasurementControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2465,10 +2777,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AidingMeasurementControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
+        decode_layout(
+            data,
+            |v: crate::filter::AidingMeasurementControlResponse| {
                 FieldValue::Filter(crate::filter::SetField::AidingMeasurementControlResponse(v))
-            })
+            },
+        )
     }
 
     #[inline(never)]
@@ -2477,8 +2791,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::InitializationConfiguration as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::InitializationConfiguration(v)))
+        decode_layout(data, |v: crate::filter::InitializationConfiguration| {
+            FieldValue::Filter(crate::filter::SetField::InitializationConfiguration(v))
+        })
     }
 
     #[inline(never)]
@@ -2487,12 +2802,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::InitializationConfigurationResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::InitializationConfigurationResponse| {
+                FieldValue::Filter(crate::filter::SetField::InitializationConfigurationResponse(v))
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::InitializationConfigurationResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2501,8 +2816,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AdaptiveFilterControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AdaptiveFilterControl(v)))
+        decode_layout(data, |v: crate::filter::AdaptiveFilterControl| {
+            FieldValue::Filter(crate::filter::SetField::AdaptiveFilterControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2511,8 +2827,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::AdaptiveFilterControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::AdaptiveFilterControlResponse(v)))
+        decode_layout(data, |v: crate::filter::AdaptiveFilterControlResponse| {
+            FieldValue::Filter(crate::filter::SetField::AdaptiveFilterControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2521,8 +2838,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MultiAntennaOffset as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MultiAntennaOffset(v)))
+        decode_layout(data, |v: crate::filter::MultiAntennaOffset| {
+            FieldValue::Filter(crate::filter::SetField::MultiAntennaOffset(v))
+        })
     }
 
     #[inline(never)]
@@ -2531,8 +2849,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::MultiAntennaOffsetResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::MultiAntennaOffsetResponse(v)))
+        decode_layout(data, |v: crate::filter::MultiAntennaOffsetResponse| {
+            FieldValue::Filter(crate::filter::SetField::MultiAntennaOffsetResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2541,8 +2860,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::RelativePositionConfiguration as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::RelativePositionConfiguration(v)))
+        decode_layout(data, |v: crate::filter::RelativePositionConfiguration| {
+            FieldValue::Filter(crate::filter::SetField::RelativePositionConfiguration(v))
+        })
     }
 
     #[inline(never)]
@@ -2551,12 +2871,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::RelativePositionConfigurationResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::RelativePositionConfigurationResponse| {
+                FieldValue::Filter(
+                    crate::filter::SetField::RelativePositionConfigurationResponse(v),
+                )
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::RelativePositionConfigurationResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2565,8 +2887,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ReferencePointLeverArm as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ReferencePointLeverArm(v)))
+        decode_layout(data, |v: crate::filter::ReferencePointLeverArm| {
+            FieldValue::Filter(crate::filter::SetField::ReferencePointLeverArm(v))
+        })
     }
 
     #[inline(never)]
@@ -2575,8 +2898,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::ReferencePointLeverArmResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::ReferencePointLeverArmResponse(v)))
+        decode_layout(data, |v: crate::filter::ReferencePointLeverArmResponse| {
+            FieldValue::Filter(crate::filter::SetField::ReferencePointLeverArmResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2585,8 +2909,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SpeedLeverArm as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SpeedLeverArm(v)))
+        decode_layout(data, |v: crate::filter::SpeedLeverArm| {
+            FieldValue::Filter(crate::filter::SetField::SpeedLeverArm(v))
+        })
     }
 
     #[inline(never)]
@@ -2595,8 +2920,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::SpeedLeverArmResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::SpeedLeverArmResponse(v)))
+        decode_layout(data, |v: crate::filter::SpeedLeverArmResponse| {
+            FieldValue::Filter(crate::filter::SetField::SpeedLeverArmResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2605,10 +2931,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::WheeledVehicleConstraintControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::Filter(crate::filter::SetField::WheeledVehicleConstraintControl(v))
-            })
+        decode_layout(data, |v: crate::filter::WheeledVehicleConstraintControl| {
+            FieldValue::Filter(crate::filter::SetField::WheeledVehicleConstraintControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2617,8 +2942,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::WheeledVehicleConstraintControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::WheeledVehicleConstraintControlResponse(v)))
+        decode_layout(
+            data,
+            |v: crate::filter::WheeledVehicleConstraintControlResponse| {
+                FieldValue::Filter(
+                    crate::filter::SetField::WheeledVehicleConstraintControlResponse(v),
+                )
+            },
+        )
     }
 
     #[inline(never)]
@@ -2627,8 +2958,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GnssAntennaCalibrationControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Filter(crate::filter::SetField::GnssAntennaCalibrationControl(v)))
+        decode_layout(data, |v: crate::filter::GnssAntennaCalibrationControl| {
+            FieldValue::Filter(crate::filter::SetField::GnssAntennaCalibrationControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2637,12 +2969,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter::GnssAntennaCalibrationControlResponse as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter::GnssAntennaCalibrationControlResponse| {
+                FieldValue::Filter(
+                    crate::filter::SetField::GnssAntennaCalibrationControlResponse(v),
+                )
+            },
         )
-        .map(|v| {
-            FieldValue::Filter(crate::filter::SetField::GnssAntennaCalibrationControlResponse(v))
-        })
     }
 
     #[inline(never)]
@@ -2651,8 +2985,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss::ReceiverInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Gnss(crate::gnss::SetField::ReceiverInfo(v)))
+        decode_layout(data, |v: crate::gnss::ReceiverInfo| {
+            FieldValue::Gnss(crate::gnss::SetField::ReceiverInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -2661,8 +2996,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss::ReceiverInfoResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Gnss(crate::gnss::SetField::ReceiverInfoResponse(v)))
+        decode_layout(data, |v: crate::gnss::ReceiverInfoResponse| {
+            FieldValue::Gnss(crate::gnss::SetField::ReceiverInfoResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2671,8 +3007,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss::SignalConfiguration as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Gnss(crate::gnss::SetField::SignalConfiguration(v)))
+        decode_layout(data, |v: crate::gnss::SignalConfiguration| {
+            FieldValue::Gnss(crate::gnss::SetField::SignalConfiguration(v))
+        })
     }
 
     #[inline(never)]
@@ -2681,8 +3018,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss::SignalConfigurationResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Gnss(crate::gnss::SetField::SignalConfigurationResponse(v)))
+        decode_layout(data, |v: crate::gnss::SignalConfigurationResponse| {
+            FieldValue::Gnss(crate::gnss::SetField::SignalConfigurationResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2691,8 +3029,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss::SpartnConfiguration as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Gnss(crate::gnss::SetField::SpartnConfiguration(v)))
+        decode_layout(data, |v: crate::gnss::SpartnConfiguration| {
+            FieldValue::Gnss(crate::gnss::SetField::SpartnConfiguration(v))
+        })
     }
 
     #[inline(never)]
@@ -2701,8 +3040,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss::SpartnConfigurationResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Gnss(crate::gnss::SetField::SpartnConfigurationResponse(v)))
+        decode_layout(data, |v: crate::gnss::SpartnConfigurationResponse| {
+            FieldValue::Gnss(crate::gnss::SetField::SpartnConfigurationResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2711,8 +3051,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::FrameConfig as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::FrameConfig(v)))
+        decode_layout(data, |v: crate::aiding::FrameConfig| {
+            FieldValue::Aiding(crate::aiding::SetField::FrameConfig(v))
+        })
     }
 
     #[inline(never)]
@@ -2721,8 +3062,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::FrameConfigResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::FrameConfigResponse(v)))
+        decode_layout(data, |v: crate::aiding::FrameConfigResponse| {
+            FieldValue::Aiding(crate::aiding::SetField::FrameConfigResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2731,8 +3073,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::EchoControl as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::EchoControl(v)))
+        decode_layout(data, |v: crate::aiding::EchoControl| {
+            FieldValue::Aiding(crate::aiding::SetField::EchoControl(v))
+        })
     }
 
     #[inline(never)]
@@ -2741,8 +3084,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::EchoControlResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::EchoControlResponse(v)))
+        decode_layout(data, |v: crate::aiding::EchoControlResponse| {
+            FieldValue::Aiding(crate::aiding::SetField::EchoControlResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2751,8 +3095,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::EcefPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::EcefPosition(v)))
+        decode_layout(data, |v: crate::aiding::EcefPosition| {
+            FieldValue::Aiding(crate::aiding::SetField::EcefPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -2761,8 +3106,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::LlhPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::LlhPosition(v)))
+        decode_layout(data, |v: crate::aiding::LlhPosition| {
+            FieldValue::Aiding(crate::aiding::SetField::LlhPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -2771,8 +3117,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::HeightAboveEllipsoid as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::HeightAboveEllipsoid(v)))
+        decode_layout(data, |v: crate::aiding::HeightAboveEllipsoid| {
+            FieldValue::Aiding(crate::aiding::SetField::HeightAboveEllipsoid(v))
+        })
     }
 
     #[inline(never)]
@@ -2781,8 +3128,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::EcefVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::EcefVelocity(v)))
+        decode_layout(data, |v: crate::aiding::EcefVelocity| {
+            FieldValue::Aiding(crate::aiding::SetField::EcefVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -2791,8 +3139,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::NedVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::NedVelocity(v)))
+        decode_layout(data, |v: crate::aiding::NedVelocity| {
+            FieldValue::Aiding(crate::aiding::SetField::NedVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -2801,8 +3150,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::BodyFrameVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::BodyFrameVelocity(v)))
+        decode_layout(data, |v: crate::aiding::BodyFrameVelocity| {
+            FieldValue::Aiding(crate::aiding::SetField::BodyFrameVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -2811,8 +3161,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::TrueHeading as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::TrueHeading(v)))
+        decode_layout(data, |v: crate::aiding::TrueHeading| {
+            FieldValue::Aiding(crate::aiding::SetField::TrueHeading(v))
+        })
     }
 
     #[inline(never)]
@@ -2821,8 +3172,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::MagneticField as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::MagneticField(v)))
+        decode_layout(data, |v: crate::aiding::MagneticField| {
+            FieldValue::Aiding(crate::aiding::SetField::MagneticField(v))
+        })
     }
 
     #[inline(never)]
@@ -2831,8 +3183,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::aiding::Pressure as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Aiding(crate::aiding::SetField::Pressure(v)))
+        decode_layout(data, |v: crate::aiding::Pressure| {
+            FieldValue::Aiding(crate::aiding::SetField::Pressure(v))
+        })
     }
 
     #[inline(never)]
@@ -2841,8 +3194,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::system::CommunicationMode as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::System(crate::system::SetField::CommunicationMode(v)))
+        decode_layout(data, |v: crate::system::CommunicationMode| {
+            FieldValue::System(crate::system::SetField::CommunicationMode(v))
+        })
     }
 
     #[inline(never)]
@@ -2851,8 +3205,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::system::CommunicationModeResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::System(crate::system::SetField::CommunicationModeResponse(v)))
+        decode_layout(data, |v: crate::system::CommunicationModeResponse| {
+            FieldValue::System(crate::system::SetField::CommunicationModeResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -2861,8 +3216,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::ScaledAccel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::ScaledAccel(v)))
+        decode_layout(data, |v: crate::sensor::ScaledAccel| {
+            FieldValue::Sensor(crate::sensor::SetField::ScaledAccel(v))
+        })
     }
 
     #[inline(never)]
@@ -2871,8 +3227,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::ScaledGyro as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::ScaledGyro(v)))
+        decode_layout(data, |v: crate::sensor::ScaledGyro| {
+            FieldValue::Sensor(crate::sensor::SetField::ScaledGyro(v))
+        })
     }
 
     #[inline(never)]
@@ -2881,8 +3238,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::ScaledMag as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::ScaledMag(v)))
+        decode_layout(data, |v: crate::sensor::ScaledMag| {
+            FieldValue::Sensor(crate::sensor::SetField::ScaledMag(v))
+        })
     }
 
     #[inline(never)]
@@ -2891,8 +3249,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::DeltaTheta as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::DeltaTheta(v)))
+        decode_layout(data, |v: crate::sensor::DeltaTheta| {
+            FieldValue::Sensor(crate::sensor::SetField::DeltaTheta(v))
+        })
     }
 
     #[inline(never)]
@@ -2901,8 +3260,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::DeltaVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::DeltaVelocity(v)))
+        decode_layout(data, |v: crate::sensor::DeltaVelocity| {
+            FieldValue::Sensor(crate::sensor::SetField::DeltaVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -2911,8 +3271,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::CfOrientationMatrix as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::CfOrientationMatrix(v)))
+        decode_layout(data, |v: crate::sensor::CfOrientationMatrix| {
+            FieldValue::Sensor(crate::sensor::SetField::CfOrientationMatrix(v))
+        })
     }
 
     #[inline(never)]
@@ -2921,8 +3282,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::CfQuaternion as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::CfQuaternion(v)))
+        decode_layout(data, |v: crate::sensor::CfQuaternion| {
+            FieldValue::Sensor(crate::sensor::SetField::CfQuaternion(v))
+        })
     }
 
     #[inline(never)]
@@ -2931,8 +3293,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::CfEulerAngles as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::CfEulerAngles(v)))
+        decode_layout(data, |v: crate::sensor::CfEulerAngles| {
+            FieldValue::Sensor(crate::sensor::SetField::CfEulerAngles(v))
+        })
     }
 
     #[inline(never)]
@@ -2941,8 +3304,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::CfStabilizedNorth as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::CfStabilizedNorth(v)))
+        decode_layout(data, |v: crate::sensor::CfStabilizedNorth| {
+            FieldValue::Sensor(crate::sensor::SetField::CfStabilizedNorth(v))
+        })
     }
 
     #[inline(never)]
@@ -2951,8 +3315,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::CfStabilizedUp as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::CfStabilizedUp(v)))
+        decode_layout(data, |v: crate::sensor::CfStabilizedUp| {
+            FieldValue::Sensor(crate::sensor::SetField::CfStabilizedUp(v))
+        })
     }
 
     #[inline(never)]
@@ -2961,8 +3326,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::GpsTimestamp as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::GpsTimestamp(v)))
+        decode_layout(data, |v: crate::sensor::GpsTimestamp| {
+            FieldValue::Sensor(crate::sensor::SetField::GpsTimestamp(v))
+        })
     }
 
     #[inline(never)]
@@ -2971,8 +3337,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::TemperatureStatistics as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::TemperatureStatistics(v)))
+        decode_layout(data, |v: crate::sensor::TemperatureStatistics| {
+            FieldValue::Sensor(crate::sensor::SetField::TemperatureStatistics(v))
+        })
     }
 
     #[inline(never)]
@@ -2981,8 +3348,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::ScaledPressure as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::ScaledPressure(v)))
+        decode_layout(data, |v: crate::sensor::ScaledPressure| {
+            FieldValue::Sensor(crate::sensor::SetField::ScaledPressure(v))
+        })
     }
 
     #[inline(never)]
@@ -2991,8 +3359,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::OverrangeStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::OverrangeStatus(v)))
+        decode_layout(data, |v: crate::sensor::OverrangeStatus| {
+            FieldValue::Sensor(crate::sensor::SetField::OverrangeStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3001,8 +3370,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::sensor::OdometerData as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Sensor(crate::sensor::SetField::OdometerData(v)))
+        decode_layout(data, |v: crate::sensor::OdometerData| {
+            FieldValue::Sensor(crate::sensor::SetField::OdometerData(v))
+        })
     }
 
     #[inline(never)]
@@ -3011,8 +3381,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::LlhPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::LlhPosition(v)))
+        decode_layout(data, |v: crate::gnss_data::LlhPosition| {
+            FieldValue::GnssData(crate::gnss_data::SetField::LlhPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3021,8 +3392,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::EcefPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::EcefPosition(v)))
+        decode_layout(data, |v: crate::gnss_data::EcefPosition| {
+            FieldValue::GnssData(crate::gnss_data::SetField::EcefPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3031,8 +3403,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::NedVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::NedVelocity(v)))
+        decode_layout(data, |v: crate::gnss_data::NedVelocity| {
+            FieldValue::GnssData(crate::gnss_data::SetField::NedVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3041,8 +3414,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::EcefVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::EcefVelocity(v)))
+        decode_layout(data, |v: crate::gnss_data::EcefVelocity| {
+            FieldValue::GnssData(crate::gnss_data::SetField::EcefVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3051,8 +3425,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::Dop as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::Dop(v)))
+        decode_layout(data, |v: crate::gnss_data::Dop| {
+            FieldValue::GnssData(crate::gnss_data::SetField::Dop(v))
+        })
     }
 
     #[inline(never)]
@@ -3061,8 +3436,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::UtcTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::UtcTime(v)))
+        decode_layout(data, |v: crate::gnss_data::UtcTime| {
+            FieldValue::GnssData(crate::gnss_data::SetField::UtcTime(v))
+        })
     }
 
     #[inline(never)]
@@ -3071,8 +3447,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::GpsTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::GpsTime(v)))
+        decode_layout(data, |v: crate::gnss_data::GpsTime| {
+            FieldValue::GnssData(crate::gnss_data::SetField::GpsTime(v))
+        })
     }
 
     #[inline(never)]
@@ -3081,8 +3458,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::ClockInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::ClockInfo(v)))
+        decode_layout(data, |v: crate::gnss_data::ClockInfo| {
+            FieldValue::GnssData(crate::gnss_data::SetField::ClockInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3091,8 +3469,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::FixInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::FixInfo(v)))
+        decode_layout(data, |v: crate::gnss_data::FixInfo| {
+            FieldValue::GnssData(crate::gnss_data::SetField::FixInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3101,8 +3480,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::SvInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::SvInfo(v)))
+        decode_layout(data, |v: crate::gnss_data::SvInfo| {
+            FieldValue::GnssData(crate::gnss_data::SetField::SvInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3111,8 +3491,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::HardwareStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::HardwareStatus(v)))
+        decode_layout(data, |v: crate::gnss_data::HardwareStatus| {
+            FieldValue::GnssData(crate::gnss_data::SetField::HardwareStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3121,8 +3502,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::DgnssInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::DgnssInfo(v)))
+        decode_layout(data, |v: crate::gnss_data::DgnssInfo| {
+            FieldValue::GnssData(crate::gnss_data::SetField::DgnssInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3131,8 +3513,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_data::DgnssChannelStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssData(crate::gnss_data::SetField::DgnssChannelStatus(v)))
+        decode_layout(data, |v: crate::gnss_data::DgnssChannelStatus| {
+            FieldValue::GnssData(crate::gnss_data::SetField::DgnssChannelStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3141,8 +3524,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::LlhPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::LlhPosition(v)))
+        decode_layout(data, |v: crate::filter_data::LlhPosition| {
+            FieldValue::FilterData(crate::filter_data::SetField::LlhPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3151,8 +3535,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::NedVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::NedVelocity(v)))
+        decode_layout(data, |v: crate::filter_data::NedVelocity| {
+            FieldValue::FilterData(crate::filter_data::SetField::NedVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3161,8 +3546,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AttitudeQuaternion as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::AttitudeQuaternion(v)))
+        decode_layout(data, |v: crate::filter_data::AttitudeQuaternion| {
+            FieldValue::FilterData(crate::filter_data::SetField::AttitudeQuaternion(v))
+        })
     }
 
     #[inline(never)]
@@ -3171,8 +3557,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AttitudeDcm as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::AttitudeDcm(v)))
+        decode_layout(data, |v: crate::filter_data::AttitudeDcm| {
+            FieldValue::FilterData(crate::filter_data::SetField::AttitudeDcm(v))
+        })
     }
 
     #[inline(never)]
@@ -3181,8 +3568,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::EulerAngles as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::EulerAngles(v)))
+        decode_layout(data, |v: crate::filter_data::EulerAngles| {
+            FieldValue::FilterData(crate::filter_data::SetField::EulerAngles(v))
+        })
     }
 
     #[inline(never)]
@@ -3191,8 +3579,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GyroBias as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GyroBias(v)))
+        decode_layout(data, |v: crate::filter_data::GyroBias| {
+            FieldValue::FilterData(crate::filter_data::SetField::GyroBias(v))
+        })
     }
 
     #[inline(never)]
@@ -3201,8 +3590,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AccelBias as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::AccelBias(v)))
+        decode_layout(data, |v: crate::filter_data::AccelBias| {
+            FieldValue::FilterData(crate::filter_data::SetField::AccelBias(v))
+        })
     }
 
     #[inline(never)]
@@ -3211,9 +3601,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::LlhPositionUncertainty as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::FilterData(crate::filter_data::SetField::LlhPositionUncertainty(v)),
-        )
+        decode_layout(data, |v: crate::filter_data::LlhPositionUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::LlhPositionUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3222,9 +3612,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::NedVelocityUncertainty as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::FilterData(crate::filter_data::SetField::NedVelocityUncertainty(v)),
-        )
+        decode_layout(data, |v: crate::filter_data::NedVelocityUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::NedVelocityUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3233,9 +3623,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::EulerAnglesUncertainty as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::FilterData(crate::filter_data::SetField::EulerAnglesUncertainty(v)),
-        )
+        decode_layout(data, |v: crate::filter_data::EulerAnglesUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::EulerAnglesUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3244,8 +3634,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GyroBiasUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GyroBiasUncertainty(v)))
+        decode_layout(data, |v: crate::filter_data::GyroBiasUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::GyroBiasUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3254,8 +3645,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AccelBiasUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::AccelBiasUncertainty(v)))
+        decode_layout(data, |v: crate::filter_data::AccelBiasUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::AccelBiasUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3264,8 +3656,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::LinearAccel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::LinearAccel(v)))
+        decode_layout(data, |v: crate::filter_data::LinearAccel| {
+            FieldValue::FilterData(crate::filter_data::SetField::LinearAccel(v))
+        })
     }
 
     #[inline(never)]
@@ -3274,8 +3667,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::CompAngularRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::CompAngularRate(v)))
+        decode_layout(data, |v: crate::filter_data::CompAngularRate| {
+            FieldValue::FilterData(crate::filter_data::SetField::CompAngularRate(v))
+        })
     }
 
     #[inline(never)]
@@ -3284,8 +3678,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::Wgs84GravityMagnitude as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::Wgs84GravityMagnitude(v)))
+        decode_layout(data, |v: crate::filter_data::Wgs84GravityMagnitude| {
+            FieldValue::FilterData(crate::filter_data::SetField::Wgs84GravityMagnitude(v))
+        })
     }
 
     #[inline(never)]
@@ -3303,8 +3698,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GpsTimestamp as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GpsTimestamp(v)))
+        decode_layout(data, |v: crate::filter_data::GpsTimestamp| {
+            FieldValue::FilterData(crate::filter_data::SetField::GpsTimestamp(v))
+        })
     }
 
     #[inline(never)]
@@ -3313,14 +3709,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::QuaternionAttitudeUncertainty as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter_data::QuaternionAttitudeUncertainty| {
+                FieldValue::FilterData(crate::filter_data::SetField::QuaternionAttitudeUncertainty(
+                    v,
+                ))
+            },
         )
-        .map(|v| {
-            FieldValue::FilterData(crate::filter_data::SetField::QuaternionAttitudeUncertainty(
-                v,
-            ))
-        })
     }
 
     #[inline(never)]
@@ -3329,8 +3725,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GravityVector as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GravityVector(v)))
+        decode_layout(data, |v: crate::filter_data::GravityVector| {
+            FieldValue::FilterData(crate::filter_data::SetField::GravityVector(v))
+        })
     }
 
     #[inline(never)]
@@ -3339,8 +3736,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::HeadingUpdateState as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::HeadingUpdateState(v)))
+        decode_layout(data, |v: crate::filter_data::HeadingUpdateState| {
+            FieldValue::FilterData(crate::filter_data::SetField::HeadingUpdateState(v))
+        })
     }
 
     #[inline(never)]
@@ -3349,8 +3747,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MagneticModel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::MagneticModel(v)))
+        decode_layout(data, |v: crate::filter_data::MagneticModel| {
+            FieldValue::FilterData(crate::filter_data::SetField::MagneticModel(v))
+        })
     }
 
     #[inline(never)]
@@ -3359,8 +3758,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GyroScaleFactor as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GyroScaleFactor(v)))
+        decode_layout(data, |v: crate::filter_data::GyroScaleFactor| {
+            FieldValue::FilterData(crate::filter_data::SetField::GyroScaleFactor(v))
+        })
     }
 
     #[inline(never)]
@@ -3369,8 +3769,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AccelScaleFactor as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::AccelScaleFactor(v)))
+        decode_layout(data, |v: crate::filter_data::AccelScaleFactor| {
+            FieldValue::FilterData(crate::filter_data::SetField::AccelScaleFactor(v))
+        })
     }
 
     #[inline(never)]
@@ -3379,10 +3780,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GyroScaleFactorUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::FilterData(crate::filter_data::SetField::GyroScaleFactorUncertainty(v))
-            })
+        decode_layout(data, |v: crate::filter_data::GyroScaleFactorUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::GyroScaleFactorUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3391,10 +3791,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AccelScaleFactorUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
+        decode_layout(
+            data,
+            |v: crate::filter_data::AccelScaleFactorUncertainty| {
                 FieldValue::FilterData(crate::filter_data::SetField::AccelScaleFactorUncertainty(v))
-            })
+            },
+        )
     }
 
     #[inline(never)]
@@ -3403,8 +3805,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::CompensatedAccel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::CompensatedAccel(v)))
+        decode_layout(data, |v: crate::filter_data::CompensatedAccel| {
+            FieldValue::FilterData(crate::filter_data::SetField::CompensatedAccel(v))
+        })
     }
 
     #[inline(never)]
@@ -3413,8 +3816,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::StandardAtmosphere as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::StandardAtmosphere(v)))
+        decode_layout(data, |v: crate::filter_data::StandardAtmosphere| {
+            FieldValue::FilterData(crate::filter_data::SetField::StandardAtmosphere(v))
+        })
     }
 
     #[inline(never)]
@@ -3423,8 +3827,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::PressureAltitude as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::PressureAltitude(v)))
+        decode_layout(data, |v: crate::filter_data::PressureAltitude| {
+            FieldValue::FilterData(crate::filter_data::SetField::PressureAltitude(v))
+        })
     }
 
     #[inline(never)]
@@ -3433,8 +3838,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MagAutoHardIronOffset as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::MagAutoHardIronOffset(v)))
+        decode_layout(data, |v: crate::filter_data::MagAutoHardIronOffset| {
+            FieldValue::FilterData(crate::filter_data::SetField::MagAutoHardIronOffset(v))
+        })
     }
 
     #[inline(never)]
@@ -3443,8 +3849,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MagAutoSoftIronMatrix as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::MagAutoSoftIronMatrix(v)))
+        decode_layout(data, |v: crate::filter_data::MagAutoSoftIronMatrix| {
+            FieldValue::FilterData(crate::filter_data::SetField::MagAutoSoftIronMatrix(v))
+        })
     }
 
     #[inline(never)]
@@ -3453,14 +3860,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MagAutoHardIronOffsetUncertainty as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter_data::MagAutoHardIronOffsetUncertainty| {
+                FieldValue::FilterData(
+                    crate::filter_data::SetField::MagAutoHardIronOffsetUncertainty(v),
+                )
+            },
         )
-        .map(|v| {
-            FieldValue::FilterData(
-                crate::filter_data::SetField::MagAutoHardIronOffsetUncertainty(v),
-            )
-        })
     }
 
     #[inline(never)]
@@ -3469,14 +3876,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MagAutoSoftIronMatrixUncertainty as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter_data::MagAutoSoftIronMatrixUncertainty| {
+                FieldValue::FilterData(
+                    crate::filter_data::SetField::MagAutoSoftIronMatrixUncertainty(v),
+                )
+            },
         )
-        .map(|v| {
-            FieldValue::FilterData(
-                crate::filter_data::SetField::MagAutoSoftIronMatrixUncertainty(v),
-            )
-        })
     }
 
     #[inline(never)]
@@ -3485,10 +3892,12 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GnssAntennaOffsetCorrection as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
+        decode_layout(
+            data,
+            |v: crate::filter_data::GnssAntennaOffsetCorrection| {
                 FieldValue::FilterData(crate::filter_data::SetField::GnssAntennaOffsetCorrection(v))
-            })
+            },
+        )
     }
 
     #[inline(never)]
@@ -3497,8 +3906,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GnssAntennaOffsetCorrectionUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GnssAntennaOffsetCorrectionUncertainty(v)))
+        decode_layout(
+            data,
+            |v: crate::filter_data::GnssAntennaOffsetCorrectionUncertainty| {
+                FieldValue::FilterData(
+                    crate::filter_data::SetField::GnssAntennaOffsetCorrectionUncertainty(v),
+                )
+            },
+        )
     }
 
     #[inline(never)]
@@ -3507,12 +3922,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MultiAntennaOffsetCorrection as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
+        decode_layout(
+            data,
+            |v: crate::filter_data::MultiAntennaOffsetCorrection| {
                 FieldValue::FilterData(crate::filter_data::SetField::MultiAntennaOffsetCorrection(
                     v,
                 ))
-            })
+            },
+        )
     }
 
     #[inline(never)]
@@ -3521,8 +3938,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::MultiAntennaOffsetCorrectionUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::MultiAntennaOffsetCorrectionUncertainty(v)))
+        decode_layout(
+            data,
+            |v: crate::filter_data::MultiAntennaOffsetCorrectionUncertainty| {
+                FieldValue::FilterData(
+                    crate::filter_data::SetField::MultiAntennaOffsetCorrectionUncertainty(v),
+                )
+            },
+        )
     }
 
     #[inline(never)]
@@ -3531,9 +3954,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::EcefPositionUncertainty as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::FilterData(crate::filter_data::SetField::EcefPositionUncertainty(v)),
-        )
+        decode_layout(data, |v: crate::filter_data::EcefPositionUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::EcefPositionUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3542,9 +3965,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::EcefVelocityUncertainty as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::FilterData(crate::filter_data::SetField::EcefVelocityUncertainty(v)),
-        )
+        decode_layout(data, |v: crate::filter_data::EcefVelocityUncertainty| {
+            FieldValue::FilterData(crate::filter_data::SetField::EcefVelocityUncertainty(v))
+        })
     }
 
     #[inline(never)]
@@ -3553,8 +3976,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::EcefPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::EcefPosition(v)))
+        decode_layout(data, |v: crate::filter_data::EcefPosition| {
+            FieldValue::FilterData(crate::filter_data::SetField::EcefPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3563,8 +3987,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::EcefVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::EcefVelocity(v)))
+        decode_layout(data, |v: crate::filter_data::EcefVelocity| {
+            FieldValue::FilterData(crate::filter_data::SetField::EcefVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3573,8 +3998,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::NedRelativePosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::NedRelativePosition(v)))
+        decode_layout(data, |v: crate::filter_data::NedRelativePosition| {
+            FieldValue::FilterData(crate::filter_data::SetField::NedRelativePosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3583,10 +4009,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GnssPositionAidingStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::FilterData(crate::filter_data::SetField::GnssPositionAidingStatus(v))
-            })
+        decode_layout(data, |v: crate::filter_data::GnssPositionAidingStatus| {
+            FieldValue::FilterData(crate::filter_data::SetField::GnssPositionAidingStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3595,10 +4020,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AidingMeasurementSummary as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::FilterData(crate::filter_data::SetField::AidingMeasurementSummary(v))
-            })
+        decode_layout(data, |v: crate::filter_data::AidingMeasurementSummary| {
+            FieldValue::FilterData(crate::filter_data::SetField::AidingMeasurementSummary(v))
+        })
     }
 
     #[inline(never)]
@@ -3607,10 +4031,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::OdometerScaleFactorError as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::FilterData(crate::filter_data::SetField::OdometerScaleFactorError(v))
-            })
+        decode_layout(data, |v: crate::filter_data::OdometerScaleFactorError| {
+            FieldValue::FilterData(crate::filter_data::SetField::OdometerScaleFactorError(v))
+        })
     }
 
     #[inline(never)]
@@ -3619,8 +4042,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::OdometerScaleFactorErrorUncertainty as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::OdometerScaleFactorErrorUncertainty(v)))
+        decode_layout(
+            data,
+            |v: crate::filter_data::OdometerScaleFactorErrorUncertainty| {
+                FieldValue::FilterData(
+                    crate::filter_data::SetField::OdometerScaleFactorErrorUncertainty(v),
+                )
+            },
+        )
     }
 
     #[inline(never)]
@@ -3629,8 +4058,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::GnssDualAntennaStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::FilterData(crate::filter_data::SetField::GnssDualAntennaStatus(v)))
+        decode_layout(data, |v: crate::filter_data::GnssDualAntennaStatus| {
+            FieldValue::FilterData(crate::filter_data::SetField::GnssDualAntennaStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3639,9 +4069,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AidingFrameConfigError as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::FilterData(crate::filter_data::SetField::AidingFrameConfigError(v)),
-        )
+        decode_layout(data, |v: crate::filter_data::AidingFrameConfigError| {
+            FieldValue::FilterData(crate::filter_data::SetField::AidingFrameConfigError(v))
+        })
     }
 
     #[inline(never)]
@@ -3650,14 +4080,14 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::filter_data::AidingFrameConfigErrorUncertainty as crate::wire::Layout>::decode_data(
+        decode_layout(
             data,
+            |v: crate::filter_data::AidingFrameConfigErrorUncertainty| {
+                FieldValue::FilterData(
+                    crate::filter_data::SetField::AidingFrameConfigErrorUncertainty(v),
+                )
+            },
         )
-        .map(|v| {
-            FieldValue::FilterData(
-                crate::filter_data::SetField::AidingFrameConfigErrorUncertainty(v),
-            )
-        })
     }
 
     #[inline(never)]
@@ -3666,8 +4096,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::LlhPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::LlhPosition(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::LlhPosition| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::LlhPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3676,8 +4107,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::EcefPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::EcefPosition(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::EcefPosition| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::EcefPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3686,8 +4118,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::NedVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::NedVelocity(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::NedVelocity| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::NedVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3696,8 +4129,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::EcefVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::EcefVelocity(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::EcefVelocity| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::EcefVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3706,8 +4140,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::Dop as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::Dop(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::Dop| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::Dop(v))
+        })
     }
 
     #[inline(never)]
@@ -3716,8 +4151,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::UtcTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::UtcTime(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::UtcTime| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::UtcTime(v))
+        })
     }
 
     #[inline(never)]
@@ -3726,8 +4162,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::GpsTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GpsTime(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::GpsTime| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GpsTime(v))
+        })
     }
 
     #[inline(never)]
@@ -3736,8 +4173,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::FixInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::FixInfo(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::FixInfo| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::FixInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3746,8 +4184,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::HardwareStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::HardwareStatus(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::HardwareStatus| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::HardwareStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3756,8 +4195,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::ClockInfo2 as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::ClockInfo2(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::ClockInfo2| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::ClockInfo2(v))
+        })
     }
 
     #[inline(never)]
@@ -3766,8 +4206,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::GpsLeapSeconds as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GpsLeapSeconds(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::GpsLeapSeconds| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GpsLeapSeconds(v))
+        })
     }
 
     #[inline(never)]
@@ -3776,8 +4217,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::SbasInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::SbasInfo(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::SbasInfo| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::SbasInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3786,9 +4228,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::SatelliteStatus as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::SatelliteStatus(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_1::SatelliteStatus| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::SatelliteStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3797,8 +4239,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::Raw as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::Raw(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::Raw| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::Raw(v))
+        })
     }
 
     #[inline(never)]
@@ -3807,8 +4250,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::GpsEphemeris as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GpsEphemeris(v)))
+        decode_layout(data, |v: crate::gnss_receiver_1::GpsEphemeris| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GpsEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -3817,9 +4261,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::GlonassEphemeris as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GlonassEphemeris(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_1::GlonassEphemeris| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GlonassEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -3828,9 +4272,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::GalileoEphemeris as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GalileoEphemeris(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_1::GalileoEphemeris| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::GalileoEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -3839,9 +4283,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_1::BeidouEphemeris as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::BeidouEphemeris(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_1::BeidouEphemeris| {
+            FieldValue::GnssReceiver1(crate::gnss_receiver_1::SetField::BeidouEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -3850,8 +4294,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::LlhPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::LlhPosition(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::LlhPosition| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::LlhPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3860,8 +4305,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::EcefPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::EcefPosition(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::EcefPosition| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::EcefPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -3870,8 +4316,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::NedVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::NedVelocity(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::NedVelocity| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::NedVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3880,8 +4327,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::EcefVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::EcefVelocity(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::EcefVelocity| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::EcefVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -3890,8 +4338,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::Dop as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::Dop(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::Dop| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::Dop(v))
+        })
     }
 
     #[inline(never)]
@@ -3900,8 +4349,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::UtcTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::UtcTime(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::UtcTime| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::UtcTime(v))
+        })
     }
 
     #[inline(never)]
@@ -3910,8 +4360,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::GpsTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GpsTime(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::GpsTime| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GpsTime(v))
+        })
     }
 
     #[inline(never)]
@@ -3920,8 +4371,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::FixInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::FixInfo(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::FixInfo| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::FixInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3930,8 +4382,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::HardwareStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::HardwareStatus(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::HardwareStatus| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::HardwareStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3940,8 +4393,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::ClockInfo2 as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::ClockInfo2(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::ClockInfo2| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::ClockInfo2(v))
+        })
     }
 
     #[inline(never)]
@@ -3950,8 +4404,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::GpsLeapSeconds as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GpsLeapSeconds(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::GpsLeapSeconds| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GpsLeapSeconds(v))
+        })
     }
 
     #[inline(never)]
@@ -3960,8 +4415,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::SbasInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::SbasInfo(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::SbasInfo| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::SbasInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -3970,9 +4426,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::SatelliteStatus as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::SatelliteStatus(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_2::SatelliteStatus| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::SatelliteStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -3981,8 +4437,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::Raw as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::Raw(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::Raw| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::Raw(v))
+        })
     }
 
     #[inline(never)]
@@ -3991,8 +4448,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::GpsEphemeris as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GpsEphemeris(v)))
+        decode_layout(data, |v: crate::gnss_receiver_2::GpsEphemeris| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GpsEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -4001,9 +4459,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::GlonassEphemeris as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GlonassEphemeris(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_2::GlonassEphemeris| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GlonassEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -4012,9 +4470,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::GalileoEphemeris as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GalileoEphemeris(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_2::GalileoEphemeris| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::GalileoEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -4023,9 +4481,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_receiver_2::BeidouEphemeris as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::BeidouEphemeris(v)),
-        )
+        decode_layout(data, |v: crate::gnss_receiver_2::BeidouEphemeris| {
+            FieldValue::GnssReceiver2(crate::gnss_receiver_2::SetField::BeidouEphemeris(v))
+        })
     }
 
     #[inline(never)]
@@ -4034,9 +4492,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_corrections::BaseStationInfo as crate::wire::Layout>::decode_data(data).map(
-            |v| FieldValue::GnssCorrections(crate::gnss_corrections::SetField::BaseStationInfo(v)),
-        )
+        decode_layout(data, |v: crate::gnss_corrections::BaseStationInfo| {
+            FieldValue::GnssCorrections(crate::gnss_corrections::SetField::BaseStationInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -4045,12 +4503,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_corrections::RtkCorrectionsStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::GnssCorrections(
-                    crate::gnss_corrections::SetField::RtkCorrectionsStatus(v),
-                )
-            })
+        decode_layout(data, |v: crate::gnss_corrections::RtkCorrectionsStatus| {
+            FieldValue::GnssCorrections(crate::gnss_corrections::SetField::RtkCorrectionsStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -4059,8 +4514,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_external::LlhPosition as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssExternal(crate::gnss_external::SetField::LlhPosition(v)))
+        decode_layout(data, |v: crate::gnss_external::LlhPosition| {
+            FieldValue::GnssExternal(crate::gnss_external::SetField::LlhPosition(v))
+        })
     }
 
     #[inline(never)]
@@ -4069,8 +4525,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_external::NedVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssExternal(crate::gnss_external::SetField::NedVelocity(v)))
+        decode_layout(data, |v: crate::gnss_external::NedVelocity| {
+            FieldValue::GnssExternal(crate::gnss_external::SetField::NedVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -4079,8 +4536,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_external::UtcTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssExternal(crate::gnss_external::SetField::UtcTime(v)))
+        decode_layout(data, |v: crate::gnss_external::UtcTime| {
+            FieldValue::GnssExternal(crate::gnss_external::SetField::UtcTime(v))
+        })
     }
 
     #[inline(never)]
@@ -4089,8 +4547,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_external::FixInfo as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssExternal(crate::gnss_external::SetField::FixInfo(v)))
+        decode_layout(data, |v: crate::gnss_external::FixInfo| {
+            FieldValue::GnssExternal(crate::gnss_external::SetField::FixInfo(v))
+        })
     }
 
     #[inline(never)]
@@ -4099,8 +4558,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::gnss_external::SatelliteStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::GnssExternal(crate::gnss_external::SetField::SatelliteStatus(v)))
+        decode_layout(data, |v: crate::gnss_external::SatelliteStatus| {
+            FieldValue::GnssExternal(crate::gnss_external::SetField::SatelliteStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -4109,8 +4569,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::system_data::BuiltInTest as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::SystemData(crate::system_data::SetField::BuiltInTest(v)))
+        decode_layout(data, |v: crate::system_data::BuiltInTest| {
+            FieldValue::SystemData(crate::system_data::SetField::BuiltInTest(v))
+        })
     }
 
     #[inline(never)]
@@ -4119,8 +4580,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::system_data::TimeSyncStatus as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::SystemData(crate::system_data::SetField::TimeSyncStatus(v)))
+        decode_layout(data, |v: crate::system_data::TimeSyncStatus| {
+            FieldValue::SystemData(crate::system_data::SetField::TimeSyncStatus(v))
+        })
     }
 
     #[inline(never)]
@@ -4129,8 +4591,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::system_data::GpioState as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::SystemData(crate::system_data::SetField::GpioState(v)))
+        decode_layout(data, |v: crate::system_data::GpioState| {
+            FieldValue::SystemData(crate::system_data::SetField::GpioState(v))
+        })
     }
 
     #[inline(never)]
@@ -4139,8 +4602,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::EventSource as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::EventSource(v)))
+        decode_layout(data, |v: crate::shared::EventSource| {
+            FieldValue::Shared(crate::shared::SetField::EventSource(v))
+        })
     }
 
     #[inline(never)]
@@ -4149,8 +4613,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::GpsTimestamp as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::GpsTimestamp(v)))
+        decode_layout(data, |v: crate::shared::GpsTimestamp| {
+            FieldValue::Shared(crate::shared::SetField::GpsTimestamp(v))
+        })
     }
 
     #[inline(never)]
@@ -4159,8 +4624,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::DeltaTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::DeltaTime(v)))
+        decode_layout(data, |v: crate::shared::DeltaTime| {
+            FieldValue::Shared(crate::shared::SetField::DeltaTime(v))
+        })
     }
 
     #[inline(never)]
@@ -4169,8 +4635,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::ReferenceTimestamp as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::ReferenceTimestamp(v)))
+        decode_layout(data, |v: crate::shared::ReferenceTimestamp| {
+            FieldValue::Shared(crate::shared::SetField::ReferenceTimestamp(v))
+        })
     }
 
     #[inline(never)]
@@ -4179,8 +4646,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::ReferenceTimeDelta as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::ReferenceTimeDelta(v)))
+        decode_layout(data, |v: crate::shared::ReferenceTimeDelta| {
+            FieldValue::Shared(crate::shared::SetField::ReferenceTimeDelta(v))
+        })
     }
 
     #[inline(never)]
@@ -4189,8 +4657,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::ExternalTimestamp as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::ExternalTimestamp(v)))
+        decode_layout(data, |v: crate::shared::ExternalTimestamp| {
+            FieldValue::Shared(crate::shared::SetField::ExternalTimestamp(v))
+        })
     }
 
     #[inline(never)]
@@ -4199,8 +4668,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::shared::ExternalTimeDelta as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Shared(crate::shared::SetField::ExternalTimeDelta(v)))
+        decode_layout(data, |v: crate::shared::ExternalTimeDelta| {
+            FieldValue::Shared(crate::shared::SetField::ExternalTimeDelta(v))
+        })
     }
 }
 

@@ -70,6 +70,7 @@ pub fn set_defined(set: u8) -> bool {
 /// A decoded field, by the group that defines it.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(u8)]
 pub enum FieldValue {
     /// A field of set 0x01.
     Base(crate::base::SetField),
@@ -183,66 +184,103 @@ impl FieldValue {
 /// Decodes the data of field `descriptor` in a packet of set `set`: the set's own field, else a
 /// reserved field of the set's kind, else (in a data set) a field of the shared data set. With
 /// `device`, fields that have per-device layouts use that device's layout.
+#[inline]
 pub fn decode_field(
     set: u8,
     descriptor: u8,
     data: &[u8],
     device: Option<Device>,
 ) -> Result<FieldValue, DecodeError> {
-    // The set's own fields: one match on (set, descriptor), compiled to jump tables, straight to
-    // the field's decoder, which builds the FieldValue in the caller's slot.
-    match (set, descriptor) {
-        (0x01, 0x02) => decoders::base_ping(data, device),
-        (0x01, 0x03) => decoders::base_get_device_messages(data, device),
-        (0x01, 0x83) => decoders::base_device_messages(data, device),
-        (0x01, 0x04) => decoders::base_device_reset(data, device),
-        (0x01, 0x05) => decoders::base_get_device_model(data, device),
-        (0x01, 0x85) => decoders::base_device_model(data, device),
-        (0x01, 0x06) => decoders::base_get_device_sn(data, device),
-        (0x01, 0x86) => decoders::base_device_sn(data, device),
-        (0x01, 0x07) => decoders::base_get_device_fw(data, device),
-        (0x01, 0x87) => decoders::base_device_fw(data, device),
-        (0x01, 0x08) => decoders::base_get_device_cal(data, device),
-        (0x01, 0x88) => decoders::base_device_cal(data, device),
-        (0x01, 0x09) => decoders::base_correlate_gps_time(data, device),
-        (0x02, 0x01) => decoders::imu_config_uart_baud_rate(data, device),
-        (0x02, 0x81) => decoders::imu_config_uart_baud_rate_response(data, device),
-        (0x02, 0x03) => decoders::imu_config_filter(data, device),
-        (0x02, 0x83) => decoders::imu_config_filter_response(data, device),
-        (0x02, 0x04) => decoders::imu_config_sample_rate(data, device),
-        (0x02, 0x84) => decoders::imu_config_sample_rate_response(data, device),
-        (0x02, 0x05) => decoders::imu_config_select_sensors(data, device),
-        (0x02, 0x85) => decoders::imu_config_select_sensors_response(data, device),
-        (0x02, 0x06) => decoders::imu_config_get_internal_sample_rate(data, device),
-        (0x02, 0x86) => decoders::imu_config_internal_sample_rate(data, device),
-        (0x02, 0x07) => decoders::imu_config_accel_range(data, device),
-        (0x02, 0x87) => decoders::imu_config_accel_range_response(data, device),
-        (0x02, 0x08) => decoders::imu_config_gyro_range(data, device),
-        (0x02, 0x88) => decoders::imu_config_gyro_range_response(data, device),
-        (0x02, 0x09) => decoders::imu_config_config_all(data, device),
-        (0x02, 0x0A) => decoders::imu_config_data_on_off(data, device),
-        (0x02, 0x8A) => decoders::imu_config_data_on_off_response(data, device),
-        (0x02, 0x0B) => decoders::imu_config_xtrig_on_off(data, device),
-        (0x02, 0x8B) => decoders::imu_config_xtrig_on_off_response(data, device),
-        (0x02, 0x0C) => decoders::imu_config_select_sensors_rev_b(data, device),
-        (0x02, 0x8C) => decoders::imu_config_select_sensors_rev_b_response(data, device),
-        (0x02, 0x0D) => decoders::imu_config_aux_accel_range(data, device),
-        (0x02, 0x8D) => decoders::imu_config_aux_accel_range_response(data, device),
-        (0xA2, 0x81) => decoders::imu_data_scaled_accel(data, device),
-        (0xA2, 0x82) => decoders::imu_data_scaled_gyro(data, device),
-        (0xA2, 0x83) => decoders::imu_data_scaled_mag(data, device),
-        (0xA2, 0x84) => decoders::imu_data_delta_theta(data, device),
-        (0xA2, 0x85) => decoders::imu_data_delta_velocity(data, device),
-        (0xA2, 0x86) => decoders::imu_data_scaled_pressure(data, device),
-        (0xA2, 0x87) => decoders::imu_data_scaled_temperature(data, device),
-        (0xA2, 0x88) => decoders::imu_data_gps_correlated_time(data, device),
-        (0xA2, 0x89) => decoders::imu_data_scaled_aux_accel(data, device),
-        _ => decode_other_field(set, descriptor, data, device),
+    // The set's own fields: two table loads, straight to the field's decoder, which builds the
+    // FieldValue in the caller's slot.
+    if let Some(decoders) = SET_DECODERS[usize::from(set)] {
+        if let Some(decode) = decoders[usize::from(descriptor)] {
+            return decode(data, device);
+        }
     }
+    decode_other_field(set, descriptor, data, device)
 }
 
+/// The decoder of one field (in `decoders`).
+type Decoder = fn(&[u8], Option<Device>) -> Result<FieldValue, DecodeError>;
+
+/// Decoders of a set's own fields, by descriptor (`None`: not a field of the set).
+type DescriptorDecoders = [Option<Decoder>; 256];
+
+/// The decoders of every set that has fields, by set (`None`: no fields of its own).
+static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
+    let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
+    t[0x01] = Some(&BASE_DECODERS);
+    t[0x02] = Some(&IMU_CONFIG_DECODERS);
+    t[0xA2] = Some(&IMU_DATA_DECODERS);
+    t
+};
+
+/// Decoders of the fields of set 0x01, by descriptor.
+static BASE_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x02] = Some(decoders::base_ping);
+    t[0x03] = Some(decoders::base_get_device_messages);
+    t[0x83] = Some(decoders::base_device_messages);
+    t[0x04] = Some(decoders::base_device_reset);
+    t[0x05] = Some(decoders::base_get_device_model);
+    t[0x85] = Some(decoders::base_device_model);
+    t[0x06] = Some(decoders::base_get_device_sn);
+    t[0x86] = Some(decoders::base_device_sn);
+    t[0x07] = Some(decoders::base_get_device_fw);
+    t[0x87] = Some(decoders::base_device_fw);
+    t[0x08] = Some(decoders::base_get_device_cal);
+    t[0x88] = Some(decoders::base_device_cal);
+    t[0x09] = Some(decoders::base_correlate_gps_time);
+    t
+};
+
+/// Decoders of the fields of set 0x02, by descriptor.
+static IMU_CONFIG_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x01] = Some(decoders::imu_config_uart_baud_rate);
+    t[0x81] = Some(decoders::imu_config_uart_baud_rate_response);
+    t[0x03] = Some(decoders::imu_config_filter);
+    t[0x83] = Some(decoders::imu_config_filter_response);
+    t[0x04] = Some(decoders::imu_config_sample_rate);
+    t[0x84] = Some(decoders::imu_config_sample_rate_response);
+    t[0x05] = Some(decoders::imu_config_select_sensors);
+    t[0x85] = Some(decoders::imu_config_select_sensors_response);
+    t[0x06] = Some(decoders::imu_config_get_internal_sample_rate);
+    t[0x86] = Some(decoders::imu_config_internal_sample_rate);
+    t[0x07] = Some(decoders::imu_config_accel_range);
+    t[0x87] = Some(decoders::imu_config_accel_range_response);
+    t[0x08] = Some(decoders::imu_config_gyro_range);
+    t[0x88] = Some(decoders::imu_config_gyro_range_response);
+    t[0x09] = Some(decoders::imu_config_config_all);
+    t[0x0A] = Some(decoders::imu_config_data_on_off);
+    t[0x8A] = Some(decoders::imu_config_data_on_off_response);
+    t[0x0B] = Some(decoders::imu_config_xtrig_on_off);
+    t[0x8B] = Some(decoders::imu_config_xtrig_on_off_response);
+    t[0x0C] = Some(decoders::imu_config_select_sensors_rev_b);
+    t[0x8C] = Some(decoders::imu_config_select_sensors_rev_b_response);
+    t[0x0D] = Some(decoders::imu_config_aux_accel_range);
+    t[0x8D] = Some(decoders::imu_config_aux_accel_range_response);
+    t
+};
+
+/// Decoders of the fields of set 0xA2, by descriptor.
+static IMU_DATA_DECODERS: DescriptorDecoders = {
+    let mut t: DescriptorDecoders = [None; 256];
+    t[0x81] = Some(decoders::imu_data_scaled_accel);
+    t[0x82] = Some(decoders::imu_data_scaled_gyro);
+    t[0x83] = Some(decoders::imu_data_scaled_mag);
+    t[0x84] = Some(decoders::imu_data_delta_theta);
+    t[0x85] = Some(decoders::imu_data_delta_velocity);
+    t[0x86] = Some(decoders::imu_data_scaled_pressure);
+    t[0x87] = Some(decoders::imu_data_scaled_temperature);
+    t[0x88] = Some(decoders::imu_data_gps_correlated_time);
+    t[0x89] = Some(decoders::imu_data_scaled_aux_accel);
+    t
+};
+
 /// [`decode_field`] for a descriptor that is not one of the set's own fields. Out of line, so
-/// that `decode_field` itself is only the jump.
+/// that `decode_field` itself is only the table lookup.
 #[inline(never)]
 fn decode_other_field(
     set: u8,
@@ -263,11 +301,44 @@ fn decode_other_field(
     }))
 }
 
-/// One decoder per field of every set, for [`decode_field`]. Not inlined: each is called from
-/// one place, so the compiler would otherwise merge all of them into `decode_field`, whose stack
-/// frame would then hold the largest of every layout on every call.
+/// One decoder per field of every set, for [`decode_field`] (through the tables above). Not
+/// inlined, so that each keeps its own stack frame, as large as its own layout only.
 mod decoders {
     use super::{DecodeError, Device, FieldValue};
+    use crate::wire::{Layout, Reader};
+
+    /// Decodes `data` as layout `L` and wraps it into a FieldValue. A fixed layout over exactly
+    /// its size is read straight into the caller's slot; anything else (a wrong length, an
+    /// invalid value) goes to the checked decode, out of line, so that the straight path needs
+    /// no room for an error.
+    #[inline(always)]
+    fn decode_layout<L: Layout, W: FnOnce(L) -> FieldValue>(
+        data: &[u8],
+        wrap: W,
+    ) -> Result<FieldValue, DecodeError> {
+        match L::FIXED_SIZE {
+            Some(size) => {
+                if size == data.len() {
+                    if let Ok(value) = L::decode(&mut Reader::new(data)) {
+                        return Ok(wrap(value));
+                    }
+                }
+                decode_layout_checked(data, wrap)
+            }
+            None => L::decode_data(data).map(wrap),
+        }
+    }
+
+    /// The checked decode of [`decode_layout`] (the same value or error as
+    /// [`Layout::decode_data`]).
+    #[cold]
+    #[inline(never)]
+    fn decode_layout_checked<L: Layout, W: FnOnce(L) -> FieldValue>(
+        data: &[u8],
+        wrap: W,
+    ) -> Result<FieldValue, DecodeError> {
+        L::decode_data(data).map(wrap)
+    }
 
     #[inline(never)]
     pub(super) fn base_ping(
@@ -275,8 +346,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::Ping as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::Ping(v)))
+        decode_layout(data, |v: crate::base::Ping| {
+            FieldValue::Base(crate::base::SetField::Ping(v))
+        })
     }
 
     #[inline(never)]
@@ -285,8 +357,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceMessages as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceMessages(v)))
+        decode_layout(data, |v: crate::base::GetDeviceMessages| {
+            FieldValue::Base(crate::base::SetField::GetDeviceMessages(v))
+        })
     }
 
     #[inline(never)]
@@ -295,8 +368,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceMessages as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceMessages(v)))
+        decode_layout(data, |v: crate::base::DeviceMessages| {
+            FieldValue::Base(crate::base::SetField::DeviceMessages(v))
+        })
     }
 
     #[inline(never)]
@@ -305,8 +379,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceReset as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceReset(v)))
+        decode_layout(data, |v: crate::base::DeviceReset| {
+            FieldValue::Base(crate::base::SetField::DeviceReset(v))
+        })
     }
 
     #[inline(never)]
@@ -315,8 +390,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceModel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceModel(v)))
+        decode_layout(data, |v: crate::base::GetDeviceModel| {
+            FieldValue::Base(crate::base::SetField::GetDeviceModel(v))
+        })
     }
 
     #[inline(never)]
@@ -325,8 +401,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceModel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceModel(v)))
+        decode_layout(data, |v: crate::base::DeviceModel| {
+            FieldValue::Base(crate::base::SetField::DeviceModel(v))
+        })
     }
 
     #[inline(never)]
@@ -335,8 +412,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceSn as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceSn(v)))
+        decode_layout(data, |v: crate::base::GetDeviceSn| {
+            FieldValue::Base(crate::base::SetField::GetDeviceSn(v))
+        })
     }
 
     #[inline(never)]
@@ -345,8 +423,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceSn as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceSn(v)))
+        decode_layout(data, |v: crate::base::DeviceSn| {
+            FieldValue::Base(crate::base::SetField::DeviceSn(v))
+        })
     }
 
     #[inline(never)]
@@ -355,8 +434,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceFw as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceFw(v)))
+        decode_layout(data, |v: crate::base::GetDeviceFw| {
+            FieldValue::Base(crate::base::SetField::GetDeviceFw(v))
+        })
     }
 
     #[inline(never)]
@@ -365,8 +445,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceFw as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceFw(v)))
+        decode_layout(data, |v: crate::base::DeviceFw| {
+            FieldValue::Base(crate::base::SetField::DeviceFw(v))
+        })
     }
 
     #[inline(never)]
@@ -375,8 +456,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::GetDeviceCal as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::GetDeviceCal(v)))
+        decode_layout(data, |v: crate::base::GetDeviceCal| {
+            FieldValue::Base(crate::base::SetField::GetDeviceCal(v))
+        })
     }
 
     #[inline(never)]
@@ -385,8 +467,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::DeviceCal as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::DeviceCal(v)))
+        decode_layout(data, |v: crate::base::DeviceCal| {
+            FieldValue::Base(crate::base::SetField::DeviceCal(v))
+        })
     }
 
     #[inline(never)]
@@ -395,8 +478,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::base::CorrelateGpsTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::Base(crate::base::SetField::CorrelateGpsTime(v)))
+        decode_layout(data, |v: crate::base::CorrelateGpsTime| {
+            FieldValue::Base(crate::base::SetField::CorrelateGpsTime(v))
+        })
     }
 
     #[inline(never)]
@@ -405,8 +489,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::UartBaudRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::UartBaudRate(v)))
+        decode_layout(data, |v: crate::imu_config::UartBaudRate| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::UartBaudRate(v))
+        })
     }
 
     #[inline(never)]
@@ -415,8 +500,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::UartBaudRateResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::UartBaudRateResponse(v)))
+        decode_layout(data, |v: crate::imu_config::UartBaudRateResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::UartBaudRateResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -425,8 +511,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::Filter as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::Filter(v)))
+        decode_layout(data, |v: crate::imu_config::Filter| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::Filter(v))
+        })
     }
 
     #[inline(never)]
@@ -435,8 +522,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::FilterResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::FilterResponse(v)))
+        decode_layout(data, |v: crate::imu_config::FilterResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::FilterResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -445,8 +533,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::SampleRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SampleRate(v)))
+        decode_layout(data, |v: crate::imu_config::SampleRate| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::SampleRate(v))
+        })
     }
 
     #[inline(never)]
@@ -455,8 +544,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::SampleRateResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SampleRateResponse(v)))
+        decode_layout(data, |v: crate::imu_config::SampleRateResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::SampleRateResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -465,8 +555,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::SelectSensors as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensors(v)))
+        decode_layout(data, |v: crate::imu_config::SelectSensors| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensors(v))
+        })
     }
 
     #[inline(never)]
@@ -475,8 +566,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::SelectSensorsResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsResponse(v)))
+        decode_layout(data, |v: crate::imu_config::SelectSensorsResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -485,8 +577,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::GetInternalSampleRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::GetInternalSampleRate(v)))
+        decode_layout(data, |v: crate::imu_config::GetInternalSampleRate| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::GetInternalSampleRate(v))
+        })
     }
 
     #[inline(never)]
@@ -495,8 +588,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::InternalSampleRate as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::InternalSampleRate(v)))
+        decode_layout(data, |v: crate::imu_config::InternalSampleRate| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::InternalSampleRate(v))
+        })
     }
 
     #[inline(never)]
@@ -505,8 +599,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::AccelRange as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AccelRange(v)))
+        decode_layout(data, |v: crate::imu_config::AccelRange| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::AccelRange(v))
+        })
     }
 
     #[inline(never)]
@@ -515,8 +610,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::AccelRangeResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AccelRangeResponse(v)))
+        decode_layout(data, |v: crate::imu_config::AccelRangeResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::AccelRangeResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -525,8 +621,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::GyroRange as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::GyroRange(v)))
+        decode_layout(data, |v: crate::imu_config::GyroRange| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::GyroRange(v))
+        })
     }
 
     #[inline(never)]
@@ -535,8 +632,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::GyroRangeResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::GyroRangeResponse(v)))
+        decode_layout(data, |v: crate::imu_config::GyroRangeResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::GyroRangeResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -545,8 +643,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::ConfigAll as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::ConfigAll(v)))
+        decode_layout(data, |v: crate::imu_config::ConfigAll| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::ConfigAll(v))
+        })
     }
 
     #[inline(never)]
@@ -555,8 +654,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::DataOnOff as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::DataOnOff(v)))
+        decode_layout(data, |v: crate::imu_config::DataOnOff| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::DataOnOff(v))
+        })
     }
 
     #[inline(never)]
@@ -565,8 +665,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::DataOnOffResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::DataOnOffResponse(v)))
+        decode_layout(data, |v: crate::imu_config::DataOnOffResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::DataOnOffResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -575,8 +676,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::XtrigOnOff as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::XtrigOnOff(v)))
+        decode_layout(data, |v: crate::imu_config::XtrigOnOff| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::XtrigOnOff(v))
+        })
     }
 
     #[inline(never)]
@@ -585,8 +687,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::XtrigOnOffResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::XtrigOnOffResponse(v)))
+        decode_layout(data, |v: crate::imu_config::XtrigOnOffResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::XtrigOnOffResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -595,8 +698,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::SelectSensorsRevB as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsRevB(v)))
+        decode_layout(data, |v: crate::imu_config::SelectSensorsRevB| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsRevB(v))
+        })
     }
 
     #[inline(never)]
@@ -605,10 +709,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::SelectSensorsRevBResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| {
-                FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsRevBResponse(v))
-            })
+        decode_layout(data, |v: crate::imu_config::SelectSensorsRevBResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::SelectSensorsRevBResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -617,8 +720,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::AuxAccelRange as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AuxAccelRange(v)))
+        decode_layout(data, |v: crate::imu_config::AuxAccelRange| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::AuxAccelRange(v))
+        })
     }
 
     #[inline(never)]
@@ -627,8 +731,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_config::AuxAccelRangeResponse as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuConfig(crate::imu_config::SetField::AuxAccelRangeResponse(v)))
+        decode_layout(data, |v: crate::imu_config::AuxAccelRangeResponse| {
+            FieldValue::ImuConfig(crate::imu_config::SetField::AuxAccelRangeResponse(v))
+        })
     }
 
     #[inline(never)]
@@ -637,8 +742,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::ScaledAccel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledAccel(v)))
+        decode_layout(data, |v: crate::imu_data::ScaledAccel| {
+            FieldValue::ImuData(crate::imu_data::SetField::ScaledAccel(v))
+        })
     }
 
     #[inline(never)]
@@ -647,8 +753,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::ScaledGyro as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledGyro(v)))
+        decode_layout(data, |v: crate::imu_data::ScaledGyro| {
+            FieldValue::ImuData(crate::imu_data::SetField::ScaledGyro(v))
+        })
     }
 
     #[inline(never)]
@@ -657,8 +764,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::ScaledMag as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledMag(v)))
+        decode_layout(data, |v: crate::imu_data::ScaledMag| {
+            FieldValue::ImuData(crate::imu_data::SetField::ScaledMag(v))
+        })
     }
 
     #[inline(never)]
@@ -667,8 +775,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::DeltaTheta as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::DeltaTheta(v)))
+        decode_layout(data, |v: crate::imu_data::DeltaTheta| {
+            FieldValue::ImuData(crate::imu_data::SetField::DeltaTheta(v))
+        })
     }
 
     #[inline(never)]
@@ -677,8 +786,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::DeltaVelocity as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::DeltaVelocity(v)))
+        decode_layout(data, |v: crate::imu_data::DeltaVelocity| {
+            FieldValue::ImuData(crate::imu_data::SetField::DeltaVelocity(v))
+        })
     }
 
     #[inline(never)]
@@ -687,8 +797,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::ScaledPressure as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledPressure(v)))
+        decode_layout(data, |v: crate::imu_data::ScaledPressure| {
+            FieldValue::ImuData(crate::imu_data::SetField::ScaledPressure(v))
+        })
     }
 
     #[inline(never)]
@@ -697,8 +808,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::ScaledTemperature as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledTemperature(v)))
+        decode_layout(data, |v: crate::imu_data::ScaledTemperature| {
+            FieldValue::ImuData(crate::imu_data::SetField::ScaledTemperature(v))
+        })
     }
 
     #[inline(never)]
@@ -707,8 +819,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::GpsCorrelatedTime as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::GpsCorrelatedTime(v)))
+        decode_layout(data, |v: crate::imu_data::GpsCorrelatedTime| {
+            FieldValue::ImuData(crate::imu_data::SetField::GpsCorrelatedTime(v))
+        })
     }
 
     #[inline(never)]
@@ -717,8 +830,9 @@ mod decoders {
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        <crate::imu_data::ScaledAuxAccel as crate::wire::Layout>::decode_data(data)
-            .map(|v| FieldValue::ImuData(crate::imu_data::SetField::ScaledAuxAccel(v)))
+        decode_layout(data, |v: crate::imu_data::ScaledAuxAccel| {
+            FieldValue::ImuData(crate::imu_data::SetField::ScaledAuxAccel(v))
+        })
     }
 }
 

@@ -16,6 +16,7 @@ pub struct Packet<'a> {
 impl<'a> Packet<'a> {
     /// Wraps the bytes of a packet whose framing and checksum were checked (by the parser or
     /// the builder). Returns `None` if `bytes` is shorter than its header says.
+    #[inline]
     pub fn new(bytes: &'a [u8]) -> Option<Self> {
         if bytes.len() < HEADER_SIZE
             || bytes.len() < HEADER_SIZE + usize::from(bytes[LENGTH_OFFSET])
@@ -26,21 +27,25 @@ impl<'a> Packet<'a> {
     }
 
     /// All bytes of the packet.
+    #[inline]
     pub fn bytes(&self) -> &'a [u8] {
         self.bytes
     }
 
     /// Descriptor set.
+    #[inline]
     pub fn set(&self) -> u8 {
         self.bytes[SET_OFFSET]
     }
 
     /// Payload (the fields).
+    #[inline]
     pub fn payload(&self) -> &'a [u8] {
         &self.bytes[HEADER_SIZE..HEADER_SIZE + usize::from(self.bytes[LENGTH_OFFSET])]
     }
 
     /// The fields of the payload.
+    #[inline]
     pub fn fields(&self) -> Fields<'a> {
         Fields::new(self.set(), self.payload())
     }
@@ -97,18 +102,20 @@ pub enum FieldItem<'a> {
 #[derive(Clone, Debug)]
 pub struct Fields<'a> {
     set: u8,
-    payload: &'a [u8],
-    pos: usize,
+    // The payload from the next field on, and its offset in the payload.
+    rest: &'a [u8],
+    offset: usize,
 }
 
 impl<'a> Fields<'a> {
     /// Fields of `payload`, the payload of a packet of descriptor set `set` (the set decides
     /// irregular field lengths).
+    #[inline]
     pub const fn new(set: u8, payload: &'a [u8]) -> Self {
         Self {
             set,
-            payload,
-            pos: 0,
+            rest: payload,
+            offset: 0,
         }
     }
 }
@@ -116,16 +123,20 @@ impl<'a> Fields<'a> {
 impl<'a> Iterator for Fields<'a> {
     type Item = FieldItem<'a>;
 
+    #[inline]
     fn next(&mut self) -> Option<FieldItem<'a>> {
-        let offset = self.pos;
-        let left = self.payload.len() - offset;
+        let rest = self.rest;
+        let offset = self.offset;
+        let left = rest.len();
         if left == 0 {
             return None;
         }
-        let rest = &self.payload[offset..];
-        let trailing = |error| Some(FieldItem::Trailing { bytes: rest, error });
+        let mut trailing = |error| {
+            self.rest = &[];
+            self.offset += left;
+            Some(FieldItem::Trailing { bytes: rest, error })
+        };
         if left < FIELD_HEADER_SIZE {
-            self.pos = self.payload.len();
             return trailing(FramingError::HeaderShort { offset, left });
         }
         let length = rest[FIELD_LENGTH_OFFSET];
@@ -134,24 +145,22 @@ impl<'a> Iterator for Fields<'a> {
             isize::from(length) - field_length_adjust(self.set, descriptor),
         ) {
             Ok(n) => n,
-            Err(_) => {
-                self.pos = self.payload.len();
-                return trailing(FramingError::LengthShort { length, offset });
-            }
+            Err(_) => return trailing(FramingError::LengthShort { length, offset }),
         };
         let total = FIELD_HEADER_SIZE + data_len;
         if total > left {
-            self.pos = self.payload.len();
             return trailing(FramingError::Overrun {
                 length,
                 offset,
                 left,
             });
         }
-        self.pos += total;
+        let (field, after) = rest.split_at(total);
+        self.rest = after;
+        self.offset += total;
         Some(FieldItem::Field {
             descriptor,
-            data: &rest[FIELD_HEADER_SIZE..total],
+            data: &field[FIELD_HEADER_SIZE..],
         })
     }
 }

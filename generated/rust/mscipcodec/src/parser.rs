@@ -67,6 +67,24 @@ fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
         .map(|i| base + i)
 }
 
+/// Index of the first full sync in `data` at or after `from`, or of a sync prefix at its very
+/// end; `None` if there is neither.
+#[inline(always)]
+fn find_sync_from(data: &[u8], from: usize) -> Option<usize> {
+    let end = data.len();
+    let mut at = from;
+    loop {
+        at += find_byte(&data[at..], SYNC[0])?;
+        // The rest of the sync, or as much of it as `data` holds (byte by byte: no call to a
+        // slice comparison).
+        let n = (end - at).min(SYNC.len());
+        if (1..n).all(|k| data[at + k] == SYNC[k]) {
+            return Some(at);
+        }
+        at += 1;
+    }
+}
+
 enum Sync {
     // A full sync sequence at this index.
     Full(usize),
@@ -142,31 +160,28 @@ impl Parser {
         let end = data.len();
         let mut pos = 0;
         loop {
-            // Find the next sync (or a sync prefix at the very end).
-            let mut at = pos;
-            loop {
-                match find_byte(&data[at..], SYNC[0]) {
+            // The next sync (or a sync prefix at the very end): usually right here, after a
+            // packet; else searched for. (Reads through slices whose length was checked, so
+            // that they need no further bounds checks.)
+            let here = &data[pos..];
+            let at = if here.len() >= SYNC.len() && (0..SYNC.len()).all(|k| here[k] == SYNC[k]) {
+                pos
+            } else {
+                match find_sync_from(data, pos) {
+                    Some(at) => at,
                     None => {
                         self.skip_in_place(end - pos);
                         return end;
                     }
-                    Some(i) => at += i,
                 }
-                // The rest of the sync, or as much of it as `data` holds (byte by byte: no call
-                // to a slice comparison).
-                let n = (end - at).min(SYNC.len());
-                if (1..n).all(|k| data[at + k] == SYNC[k]) {
-                    break;
-                }
-                at += 1;
-            }
+            };
             self.skip_in_place(at - pos);
             pos = at;
-            let left = end - pos;
-            if left < HEADER_SIZE {
+            let candidate = &data[pos..];
+            if candidate.len() < HEADER_SIZE {
                 return pos;
             }
-            let payload = usize::from(data[pos + LENGTH_OFFSET]);
+            let payload = usize::from(candidate[LENGTH_OFFSET]);
             if payload > MAX_PAYLOAD {
                 self.skip_in_place(1);
                 pos += 1;
@@ -174,10 +189,9 @@ impl Parser {
             }
             let body = HEADER_SIZE + payload;
             let total = body + CHECKSUM_SIZE;
-            if left < total {
+            let Some(packet) = candidate.get(..total) else {
                 return pos;
-            }
-            let packet = &data[pos..pos + total];
+            };
             if checksum_matches(&packet[..body], &packet[body..]) {
                 self.emit_skip(on);
                 on(Event::Packet {
@@ -298,13 +312,21 @@ impl Parser {
         self.base += n as u64;
     }
 
+    #[inline(always)]
     fn emit_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
         if self.skip_count > 0 {
-            on(Event::Skip {
-                offset: self.skip_start,
-                count: self.skip_count,
-            });
-            self.skip_count = 0;
+            self.report_skip(on);
         }
+    }
+
+    /// Reports the skip run (out of line: the packet loop then calls `on` in one place only,
+    /// where the compiler can inline it).
+    #[inline(never)]
+    fn report_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
+        on(Event::Skip {
+            offset: self.skip_start,
+            count: self.skip_count,
+        });
+        self.skip_count = 0;
     }
 }
