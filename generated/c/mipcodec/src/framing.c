@@ -29,7 +29,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
  * of 256.
  */
-void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]) {
+uint16_t mip_checksum_word(const uint8_t *bytes, size_t len) {
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
     uint64_t s1 = 0;
@@ -67,12 +67,22 @@ void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZ
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
-    out[0] = (uint8_t)sum1;
-    out[1] = (uint8_t)sum2;
+    return (uint16_t)(sum1 << 8 | sum2);
+}
+
+void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]) {
+    unsigned word = mip_checksum_word(bytes, len);
+    out[0] = (uint8_t)(word >> 8);
+    out[1] = (uint8_t)(word & 0xFFu);
+}
+
+/* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
+ * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
+bool mip_checksum_matches(const uint8_t *bytes, size_t len) {
+    return mip_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
 bool mip_packet_valid(const uint8_t *packet, size_t len) {
-    uint8_t ck[MIP_CHECKSUM_SIZE];
     size_t payload;
     if (len < MIP_HEADER_SIZE + MIP_CHECKSUM_SIZE || memcmp(packet, mip_sync, MIP_SYNC_SIZE) != 0) {
         return false;
@@ -81,8 +91,7 @@ bool mip_packet_valid(const uint8_t *packet, size_t len) {
     if (payload > MIP_MAX_PAYLOAD || len != MIP_HEADER_SIZE + payload + MIP_CHECKSUM_SIZE) {
         return false;
     }
-    mip_checksum(packet, MIP_HEADER_SIZE + payload, ck);
-    return memcmp(ck, packet + MIP_HEADER_SIZE + payload, MIP_CHECKSUM_SIZE) == 0;
+    return mip_checksum_matches(packet, MIP_HEADER_SIZE + payload);
 }
 
 void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {

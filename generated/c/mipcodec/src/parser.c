@@ -55,7 +55,6 @@ static size_t find_sync(const mip_parser_t *parser) {
  * input (final) there is no more: a candidate that would wait is a false sync instead. */
 static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final) {
     for (;;) {
-        uint8_t ck[MIP_CHECKSUM_SIZE];
         size_t payload;
         size_t total;
         skip(parser, find_sync(parser));
@@ -82,8 +81,7 @@ static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final)
             skip(parser, 1);
             continue;
         }
-        mip_checksum(parser->buf, MIP_HEADER_SIZE + payload, ck);
-        if (memcmp(ck, parser->buf + MIP_HEADER_SIZE + payload, MIP_CHECKSUM_SIZE) != 0) {
+        if (!mip_checksum_matches(parser->buf, MIP_HEADER_SIZE + payload)) {
             skip(parser, 1); /* false sync: resynchronise at the next byte */
             continue;
         }
@@ -128,7 +126,6 @@ static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_ev
         size_t left = len - pos;
         size_t payload;
         size_t total;
-        uint8_t ck[MIP_CHECKSUM_SIZE];
         if (p[0] != mip_sync[0]) {
             const uint8_t *q = memchr(p, mip_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
@@ -151,8 +148,7 @@ static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_ev
             if (left < total) {
                 break; /* incomplete packet: the caller buffers it */
             }
-            mip_checksum(p, MIP_HEADER_SIZE + payload, ck);
-            if (memcmp(ck, p + MIP_HEADER_SIZE + payload, MIP_CHECKSUM_SIZE) == 0) {
+            if (mip_checksum_matches(p, MIP_HEADER_SIZE + payload)) {
                 parser->base = base + pos;
                 emit_skip(parser, fn, ctx);
                 if (fn) {

@@ -29,7 +29,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
  * of 256.
  */
-void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]) {
+uint16_t mscip_checksum_word(const uint8_t *bytes, size_t len) {
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
     uint64_t s1 = 0;
@@ -67,12 +67,22 @@ void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
-    out[0] = (uint8_t)sum1;
-    out[1] = (uint8_t)sum2;
+    return (uint16_t)(sum1 << 8 | sum2);
+}
+
+void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]) {
+    unsigned word = mscip_checksum_word(bytes, len);
+    out[0] = (uint8_t)(word >> 8);
+    out[1] = (uint8_t)(word & 0xFFu);
+}
+
+/* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
+ * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
+bool mscip_checksum_matches(const uint8_t *bytes, size_t len) {
+    return mscip_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
 bool mscip_packet_valid(const uint8_t *packet, size_t len) {
-    uint8_t ck[MSCIP_CHECKSUM_SIZE];
     size_t payload;
     if (len < MSCIP_HEADER_SIZE + MSCIP_CHECKSUM_SIZE || memcmp(packet, mscip_sync, MSCIP_SYNC_SIZE) != 0) {
         return false;
@@ -81,8 +91,7 @@ bool mscip_packet_valid(const uint8_t *packet, size_t len) {
     if (payload > MSCIP_MAX_PAYLOAD || len != MSCIP_HEADER_SIZE + payload + MSCIP_CHECKSUM_SIZE) {
         return false;
     }
-    mscip_checksum(packet, MSCIP_HEADER_SIZE + payload, ck);
-    return memcmp(ck, packet + MSCIP_HEADER_SIZE + payload, MSCIP_CHECKSUM_SIZE) == 0;
+    return mscip_checksum_matches(packet, MSCIP_HEADER_SIZE + payload);
 }
 
 void mscip_packet_begin(mscip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {

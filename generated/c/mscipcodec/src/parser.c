@@ -55,7 +55,6 @@ static size_t find_sync(const mscip_parser_t *parser) {
  * input (final) there is no more: a candidate that would wait is a false sync instead. */
 static void process(mscip_parser_t *parser, mscip_event_fn fn, void *ctx, int final) {
     for (;;) {
-        uint8_t ck[MSCIP_CHECKSUM_SIZE];
         size_t payload;
         size_t total;
         skip(parser, find_sync(parser));
@@ -82,8 +81,7 @@ static void process(mscip_parser_t *parser, mscip_event_fn fn, void *ctx, int fi
             skip(parser, 1);
             continue;
         }
-        mscip_checksum(parser->buf, MSCIP_HEADER_SIZE + payload, ck);
-        if (memcmp(ck, parser->buf + MSCIP_HEADER_SIZE + payload, MSCIP_CHECKSUM_SIZE) != 0) {
+        if (!mscip_checksum_matches(parser->buf, MSCIP_HEADER_SIZE + payload)) {
             skip(parser, 1); /* false sync: resynchronise at the next byte */
             continue;
         }
@@ -128,7 +126,6 @@ static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, msci
         size_t left = len - pos;
         size_t payload;
         size_t total;
-        uint8_t ck[MSCIP_CHECKSUM_SIZE];
         if (p[0] != mscip_sync[0]) {
             const uint8_t *q = memchr(p, mscip_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
@@ -151,8 +148,7 @@ static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, msci
             if (left < total) {
                 break; /* incomplete packet: the caller buffers it */
             }
-            mscip_checksum(p, MSCIP_HEADER_SIZE + payload, ck);
-            if (memcmp(ck, p + MSCIP_HEADER_SIZE + payload, MSCIP_CHECKSUM_SIZE) == 0) {
+            if (mscip_checksum_matches(p, MSCIP_HEADER_SIZE + payload)) {
                 parser->base = base + pos;
                 emit_skip(parser, fn, ctx);
                 if (fn) {

@@ -68,6 +68,18 @@ TEST(Checksum, Fletcher16) {
     mscip_checksum(bytes, 0, ck);
     EXPECT_EQ(ck[0], 0);
     EXPECT_EQ(ck[1], 0);
+    // the same as a number (first wire byte high) and as a check of the two bytes that follow
+    EXPECT_EQ(mscip_checksum_word(bytes, sizeof bytes), 0xE0C6);
+    uint8_t packet[sizeof bytes + MSCIP_CHECKSUM_SIZE];
+    memcpy(packet, bytes, sizeof bytes);
+    packet[sizeof bytes + 0] = 0xE0;
+    packet[sizeof bytes + 1] = 0xC6;
+    EXPECT_TRUE(mscip_checksum_matches(packet, sizeof bytes));
+    for (size_t i = 0; i < MSCIP_CHECKSUM_SIZE; i++) {
+        packet[sizeof bytes + i] ^= 0x01;
+        EXPECT_FALSE(mscip_checksum_matches(packet, sizeof bytes)) << "checksum byte " << i << " changed";
+        packet[sizeof bytes + i] ^= 0x01;
+    }
 }
 
 // The checksum works eight bytes a step in runs of at most 128 words; it must equal the

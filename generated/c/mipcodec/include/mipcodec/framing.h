@@ -48,6 +48,10 @@ extern const uint8_t mip_sync[MIP_SYNC_SIZE];
  * out[0..1] receive the checksum in wire order (sum1, sum2).
  */
 void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]);
+/** The same checksum as one number: the first byte in wire order in the high 8 bits. */
+uint16_t mip_checksum_word(const uint8_t *bytes, size_t len);
+/** True when the MIP_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
+bool mip_checksum_matches(const uint8_t *bytes, size_t len);
 
 /** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
 bool mip_packet_valid(const uint8_t *packet, size_t len);
