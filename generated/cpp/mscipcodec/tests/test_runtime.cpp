@@ -284,6 +284,57 @@ TEST(Dispatch, ReadmeExampleShape) {
     }
 }
 
+// Every layout that decodes by straight loads (Plain<T>, decode_field's fast path): loading
+// kSize distinct bytes and encoding the value back gives the same bytes, and so does the checked
+// Codec<T>::read, which must also take exactly those bytes.
+struct PlainLayoutCheck {
+    int plain = 0;
+    std::vector<std::string> failures;
+
+    template <class T, class... Rest> void operator()(pkg::Layouts<T, Rest...>) {
+        one<T>();
+        (one<Rest>(), ...);
+    }
+    template <class T> void one() {
+        if constexpr (pkg::Plain<T>::kPlain) {
+            constexpr std::size_t n = pkg::Plain<T>::kSize;
+            std::uint8_t bytes[n + 1];
+            for (std::size_t i = 0; i < n; ++i) {
+                bytes[i] = static_cast<std::uint8_t>(0x5A + 37 * i);
+            }
+            T straight;
+            pkg::Plain<T>::load(bytes, straight);
+            T checked{};
+            pkg::Reader r(bytes, n);
+            pkg::DecodeError err;
+            const bool ok = pkg::Codec<T>::read(r, checked, err) && r.left() == 0;
+            std::uint8_t out1[pkg::kMaxFieldData + 1];
+            std::uint8_t out2[pkg::kMaxFieldData + 1];
+            std::size_t w1 = 0;
+            std::size_t w2 = 0;
+            const bool same = pkg::encode(straight, out1, sizeof out1, w1) == pkg::EncodeError::none &&
+                              pkg::encode(checked, out2, sizeof out2, w2) == pkg::EncodeError::none &&
+                              w1 == n && w2 == n && std::memcmp(out1, bytes, n) == 0 &&
+                              std::memcmp(out2, bytes, n) == 0;
+            if (!ok || !same) {
+                failures.push_back(T::kName);
+            }
+            ++plain;
+        }
+    }
+};
+
+TEST(Dispatch, PlainLayoutsLoadLikeTheCheckedDecode) {
+    PlainLayoutCheck check;
+    unsigned cases = 0;
+    for (unsigned c = 2; pkg::visit_case(c, check); ++c) {
+        ++cases;
+    }
+    EXPECT_GT(cases, 0u);
+    EXPECT_GT(check.plain, 0);
+    EXPECT_EQ(check.failures, std::vector<std::string>{});
+}
+
 TEST(Fields, TrailingMessages) {
     const std::uint8_t one[] = {0x05};
     pkg::FieldIterator a(0x01, one, 1);
