@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "mipcodec/devices.hpp"
 #include "mipcodec/fields/base.hpp"
@@ -235,1039 +236,376 @@ inline unsigned field_case(std::uint8_t set, std::uint8_t descriptor) {
     return detail::kFieldCases[detail::kSetRow[set]][descriptor];
 }
 
+namespace detail {
+
+/// One function per case, called through a table: each keeps its own (small) stack frame, and
+/// the dispatch is one bounds check, one load and one indirect call.
+template <class F> struct CaseCalls {
+    template <class L> static void call(F &f) {
+        f(L{});
+    }
+    static constexpr void (*kCalls[])(F &) = {
+        nullptr,
+        nullptr,
+        &call<Layouts<::mipcodec::base::Ping>>,
+        &call<Layouts<::mipcodec::base::SetToIdle>>,
+        &call<Layouts<::mipcodec::base::GetDeviceInfo>>,
+        &call<Layouts<::mipcodec::base::GetDeviceDescriptors>>,
+        &call<Layouts<::mipcodec::base::BuiltInTest>>,
+        &call<Layouts<::mipcodec::base::Resume>>,
+        &call<Layouts<::mipcodec::base::GetExtendedDescriptors>>,
+        &call<Layouts<::mipcodec::base::ContinuousBit>>,
+        &call<Layouts<::mipcodec::base::CommPortSpeed>>,
+        &call<Layouts<::mipcodec::base::GpsTimeUpdateGx545, ::mipcodec::base::GpsTimeUpdateCv7Ins>>,
+        &call<Layouts<::mipcodec::base::DeviceReset>>,
+        &call<Layouts<::mipcodec::base::DeviceInfo>>,
+        &call<Layouts<::mipcodec::base::DeviceDescriptors>>,
+        &call<Layouts<::mipcodec::base::BuiltInTestResultGx545, ::mipcodec::base::BuiltInTestResultCv7Ins>>,
+        &call<Layouts<::mipcodec::base::GpsWeek>>,
+        &call<Layouts<::mipcodec::base::GpsSeconds>>,
+        &call<Layouts<::mipcodec::base::ExtendedDescriptors>>,
+        &call<Layouts<::mipcodec::base::ContinuousBitResult>>,
+        &call<Layouts<::mipcodec::base::CommPortSpeedResponse>>,
+        &call<Layouts<::mipcodec::reserved::AckNack>>,
+        &call<Layouts<::mipcodec::threedm::PollImuData>>,
+        &call<Layouts<::mipcodec::threedm::PollGnssData>>,
+        &call<Layouts<::mipcodec::threedm::PollFilterData>>,
+        &call<Layouts<::mipcodec::threedm::PollNmeaData>>,
+        &call<Layouts<::mipcodec::threedm::GetImuBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::GetGnssBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::ImuMessageFormat>>,
+        &call<Layouts<::mipcodec::threedm::GnssMessageFormat>>,
+        &call<Layouts<::mipcodec::threedm::FilterMessageFormat>>,
+        &call<Layouts<::mipcodec::threedm::GetFilterBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::NmeaMessageFormat>>,
+        &call<Layouts<::mipcodec::threedm::PollData>>,
+        &call<Layouts<::mipcodec::threedm::GetBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::MessageFormat>>,
+        &call<Layouts<::mipcodec::threedm::FactoryStreaming>>,
+        &call<Layouts<::mipcodec::threedm::DataStreamControlGx545,
+                      ::mipcodec::threedm::DataStreamControlCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::RawRtcmMessage>>,
+        &call<Layouts<::mipcodec::threedm::GnssConstellationSettings>>,
+        &call<Layouts<::mipcodec::threedm::GnssSbasSettings>>,
+        &call<Layouts<::mipcodec::threedm::GnssAssistedFixControl>>,
+        &call<Layouts<::mipcodec::threedm::GnssAssistTimeUpdate>>,
+        &call<Layouts<::mipcodec::threedm::PpsSource>>,
+        &call<Layouts<::mipcodec::threedm::GetSupportedEvents>>,
+        &call<Layouts<::mipcodec::threedm::EventControl>>,
+        &call<Layouts<::mipcodec::threedm::GetEventTriggerStatus>>,
+        &call<Layouts<::mipcodec::threedm::GetEventActionStatus>>,
+        &call<Layouts<::mipcodec::threedm::EventTriggerConfig>>,
+        &call<Layouts<::mipcodec::threedm::EventActionConfig>>,
+        &call<Layouts<::mipcodec::threedm::DeviceStartupSettingsGx545,
+                      ::mipcodec::threedm::DeviceStartupSettingsCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::SensorToVehicleEuler>>,
+        &call<Layouts<::mipcodec::threedm::SensorToVehicleQuaternion>>,
+        &call<Layouts<::mipcodec::threedm::SensorToVehicleDcm>>,
+        &call<Layouts<::mipcodec::threedm::AccelBiasGx545, ::mipcodec::threedm::AccelBiasCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::GyroBiasGx545, ::mipcodec::threedm::GyroBiasCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::CaptureGyroBias>>,
+        &call<Layouts<::mipcodec::threedm::MagHardIronOffsetGx545,
+                      ::mipcodec::threedm::MagHardIronOffsetCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::MagSoftIronMatrixGx545,
+                      ::mipcodec::threedm::MagSoftIronMatrixCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::ConingScullingEnable>>,
+        &call<Layouts<::mipcodec::threedm::UartBaudrate>>,
+        &call<Layouts<::mipcodec::threedm::GpioConfig>>,
+        &call<Layouts<::mipcodec::threedm::GpioState>>,
+        &call<Layouts<::mipcodec::threedm::OdometerConfig>>,
+        &call<Layouts<::mipcodec::threedm::AdvancedLowpassFilter>>,
+        &call<Layouts<::mipcodec::threedm::ComplementaryFilter>>,
+        &call<Layouts<::mipcodec::threedm::SensorRange>>,
+        &call<Layouts<::mipcodec::threedm::GetCalibratedSensorRanges>>,
+        &call<Layouts<::mipcodec::threedm::LowpassFilter>>,
+        &call<Layouts<::mipcodec::threedm::DeviceStatus>>,
+        &call<Layouts<::mipcodec::threedm::ImuMessageFormatResponse>>,
+        &call<Layouts<::mipcodec::threedm::GnssMessageFormatResponse>>,
+        &call<Layouts<::mipcodec::threedm::FilterMessageFormatResponse>>,
+        &call<Layouts<::mipcodec::threedm::ImuBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::GnssBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::DataStreamControlResponseGx545,
+                      ::mipcodec::threedm::DataStreamControlResponseCv7Ins>>,
+        &call<Layouts<::mipcodec::threedm::UartBaudrateResponse>>,
+        &call<Layouts<::mipcodec::threedm::FilterBaseRate>>,
+        &call<Layouts<::mipcodec::threedm::AdvancedLowpassFilterResponse>>,
+        &call<Layouts<::mipcodec::threedm::NmeaMessageFormatResponse>>,
+        &call<Layouts<::mipcodec::threedm::BaseRate>>,
+        &call<Layouts<::mipcodec::threedm::MessageFormatResponse>>,
+        &call<Layouts<::mipcodec::threedm::DeviceStatusResponse>>,
+        &call<Layouts<::mipcodec::threedm::ComplementaryFilterResponse>>,
+        &call<Layouts<::mipcodec::threedm::AccelBiasResponse>>,
+        &call<Layouts<::mipcodec::threedm::GyroBiasResponse>>,
+        &call<Layouts<::mipcodec::threedm::MagHardIronOffsetResponse>>,
+        &call<Layouts<::mipcodec::threedm::MagSoftIronMatrixResponse>>,
+        &call<Layouts<::mipcodec::threedm::ConingScullingEnableResponse>>,
+        &call<Layouts<::mipcodec::threedm::GnssConstellationSettingsResponse>>,
+        &call<Layouts<::mipcodec::threedm::GnssSbasSettingsResponse>>,
+        &call<Layouts<::mipcodec::threedm::GnssAssistedFixControlResponse>>,
+        &call<Layouts<::mipcodec::threedm::GnssAssistTimeUpdateResponse>>,
+        &call<Layouts<::mipcodec::threedm::PpsSourceResponse>>,
+        &call<Layouts<::mipcodec::threedm::SensorToVehicleEulerResponse>>,
+        &call<Layouts<::mipcodec::threedm::SensorToVehicleQuaternionResponse>>,
+        &call<Layouts<::mipcodec::threedm::SensorToVehicleDcmResponse>>,
+        &call<Layouts<::mipcodec::threedm::SupportedEvents>>,
+        &call<Layouts<::mipcodec::threedm::EventControlResponse>>,
+        &call<Layouts<::mipcodec::threedm::EventTriggerStatus>>,
+        &call<Layouts<::mipcodec::threedm::EventActionStatus>>,
+        &call<Layouts<::mipcodec::threedm::EventTriggerConfigResponse>>,
+        &call<Layouts<::mipcodec::threedm::EventActionConfigResponse>>,
+        &call<Layouts<::mipcodec::threedm::GpioConfigResponse>>,
+        &call<Layouts<::mipcodec::threedm::GpioStateResponse>>,
+        &call<Layouts<::mipcodec::threedm::OdometerConfigResponse>>,
+        &call<Layouts<::mipcodec::threedm::SensorRangeResponse>>,
+        &call<Layouts<::mipcodec::threedm::CalibratedSensorRanges>>,
+        &call<Layouts<::mipcodec::threedm::LowpassFilterResponse>>,
+        &call<Layouts<::mipcodec::filter::ResetFilter>>,
+        &call<Layouts<::mipcodec::filter::SetInitialAttitude>>,
+        &call<Layouts<::mipcodec::filter::SetInitialHeading>>,
+        &call<Layouts<::mipcodec::filter::RunFilter>>,
+        &call<Layouts<::mipcodec::filter::VehicleDynamicsMode>>,
+        &call<Layouts<::mipcodec::filter::SensorToVehicleTransform>>,
+        &call<Layouts<::mipcodec::filter::SensorToVehicleOffset>>,
+        &call<Layouts<::mipcodec::filter::AntennaOffset>>,
+        &call<Layouts<::mipcodec::filter::EstimationControl>>,
+        &call<Layouts<::mipcodec::filter::GnssSourceControl>>,
+        &call<Layouts<::mipcodec::filter::ExternalGnssUpdate>>,
+        &call<Layouts<::mipcodec::filter::ExternalHeadingUpdate>>,
+        &call<Layouts<::mipcodec::filter::HeadingUpdateControl>>,
+        &call<Layouts<::mipcodec::filter::AutoInitControl>>,
+        &call<Layouts<::mipcodec::filter::AccelNoise>>,
+        &call<Layouts<::mipcodec::filter::GyroNoise>>,
+        &call<Layouts<::mipcodec::filter::AccelBiasModel>>,
+        &call<Layouts<::mipcodec::filter::GyroBiasModel>>,
+        &call<Layouts<::mipcodec::filter::ZuptControl>>,
+        &call<Layouts<::mipcodec::filter::ExternalHeadingUpdateWithTime>>,
+        &call<Layouts<::mipcodec::filter::ZeroAngularRateUpdateControl>>,
+        &call<Layouts<::mipcodec::filter::TareOrientation>>,
+        &call<Layouts<::mipcodec::filter::CommandedZupt>>,
+        &call<Layouts<::mipcodec::filter::CommandedZeroAngularRateUpdate>>,
+        &call<Layouts<::mipcodec::filter::MagCaptureAutoCalibration>>,
+        &call<Layouts<::mipcodec::filter::GravityNoiseStdDev>>,
+        &call<Layouts<::mipcodec::filter::PressureAltitudeNoiseStdDev>>,
+        &call<Layouts<::mipcodec::filter::HardIronOffsetNoise>>,
+        &call<Layouts<::mipcodec::filter::SoftIronMatrixNoise>>,
+        &call<Layouts<::mipcodec::filter::MagNoiseStdDev>>,
+        &call<Layouts<::mipcodec::filter::DeclinationSource>>,
+        &call<Layouts<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement>>,
+        &call<Layouts<::mipcodec::filter::MagMagnitudeAdaptiveMeasurement>>,
+        &call<Layouts<::mipcodec::filter::MagDipAngleAdaptiveMeasurement>>,
+        &call<Layouts<::mipcodec::filter::AltitudeAidingControl>>,
+        &call<Layouts<::mipcodec::filter::PitchRollAidingControl>>,
+        &call<Layouts<::mipcodec::filter::InclinationSource>>,
+        &call<Layouts<::mipcodec::filter::MagneticFieldMagnitudeSource>>,
+        &call<Layouts<::mipcodec::filter::AidingMeasurementControl>>,
+        &call<Layouts<::mipcodec::filter::InitializationConfiguration>>,
+        &call<Layouts<::mipcodec::filter::AdaptiveFilterControl>>,
+        &call<Layouts<::mipcodec::filter::MultiAntennaOffset>>,
+        &call<Layouts<::mipcodec::filter::RelativePositionConfiguration>>,
+        &call<Layouts<::mipcodec::filter::ReferencePointLeverArm>>,
+        &call<Layouts<::mipcodec::filter::SpeedLeverArm>>,
+        &call<Layouts<::mipcodec::filter::WheeledVehicleConstraintControl>>,
+        &call<Layouts<::mipcodec::filter::GnssAntennaCalibrationControl>>,
+        &call<Layouts<::mipcodec::filter::VehicleDynamicsModeResponse>>,
+        &call<Layouts<::mipcodec::filter::SensorToVehicleTransformResponse>>,
+        &call<Layouts<::mipcodec::filter::SensorToVehicleOffsetResponse>>,
+        &call<Layouts<::mipcodec::filter::AntennaOffsetResponse>>,
+        &call<Layouts<::mipcodec::filter::EstimationControlResponse>>,
+        &call<Layouts<::mipcodec::filter::GnssSourceControlResponse>>,
+        &call<Layouts<::mipcodec::filter::HeadingUpdateControlResponse>>,
+        &call<Layouts<::mipcodec::filter::AutoInitControlResponse>>,
+        &call<Layouts<::mipcodec::filter::AccelNoiseResponse>>,
+        &call<Layouts<::mipcodec::filter::GyroNoiseResponse>>,
+        &call<Layouts<::mipcodec::filter::AccelBiasModelResponse>>,
+        &call<Layouts<::mipcodec::filter::GyroBiasModelResponse>>,
+        &call<Layouts<::mipcodec::filter::ZuptControlResponse>>,
+        &call<Layouts<::mipcodec::filter::ZeroAngularRateUpdateControlResponse>>,
+        &call<Layouts<::mipcodec::filter::GravityNoiseStdDevResponse>>,
+        &call<Layouts<::mipcodec::filter::PressureAltitudeNoiseStdDevResponse>>,
+        &call<Layouts<::mipcodec::filter::HardIronOffsetNoiseResponse>>,
+        &call<Layouts<::mipcodec::filter::SoftIronMatrixNoiseResponse>>,
+        &call<Layouts<::mipcodec::filter::MagNoiseStdDevResponse>>,
+        &call<Layouts<::mipcodec::filter::DeclinationSourceResponse>>,
+        &call<Layouts<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse>>,
+        &call<Layouts<::mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse>>,
+        &call<Layouts<::mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse>>,
+        &call<Layouts<::mipcodec::filter::AltitudeAidingControlResponse>>,
+        &call<Layouts<::mipcodec::filter::PitchRollAidingControlResponse>>,
+        &call<Layouts<::mipcodec::filter::InclinationSourceResponse>>,
+        &call<Layouts<::mipcodec::filter::MagneticFieldMagnitudeSourceResponse>>,
+        &call<Layouts<::mipcodec::filter::AidingMeasurementControlResponse>>,
+        &call<Layouts<::mipcodec::filter::InitializationConfigurationResponse>>,
+        &call<Layouts<::mipcodec::filter::AdaptiveFilterControlResponse>>,
+        &call<Layouts<::mipcodec::filter::MultiAntennaOffsetResponse>>,
+        &call<Layouts<::mipcodec::filter::RelativePositionConfigurationResponse>>,
+        &call<Layouts<::mipcodec::filter::ReferencePointLeverArmResponse>>,
+        &call<Layouts<::mipcodec::filter::SpeedLeverArmResponse>>,
+        &call<Layouts<::mipcodec::filter::WheeledVehicleConstraintControlResponse>>,
+        &call<Layouts<::mipcodec::filter::GnssAntennaCalibrationControlResponse>>,
+        &call<Layouts<::mipcodec::gnss::ReceiverInfo>>,
+        &call<Layouts<::mipcodec::gnss::SignalConfiguration>>,
+        &call<Layouts<::mipcodec::gnss::SpartnConfiguration>>,
+        &call<Layouts<::mipcodec::gnss::ReceiverInfoResponse>>,
+        &call<Layouts<::mipcodec::gnss::SignalConfigurationResponse>>,
+        &call<Layouts<::mipcodec::gnss::SpartnConfigurationResponse>>,
+        &call<Layouts<::mipcodec::aiding::FrameConfig>>,
+        &call<Layouts<::mipcodec::aiding::EchoControl>>,
+        &call<Layouts<::mipcodec::aiding::EcefPosition>>,
+        &call<Layouts<::mipcodec::aiding::LlhPosition>>,
+        &call<Layouts<::mipcodec::aiding::HeightAboveEllipsoid>>,
+        &call<Layouts<::mipcodec::aiding::EcefVelocity>>,
+        &call<Layouts<::mipcodec::aiding::NedVelocity>>,
+        &call<Layouts<::mipcodec::aiding::BodyFrameVelocity>>,
+        &call<Layouts<::mipcodec::aiding::TrueHeading>>,
+        &call<Layouts<::mipcodec::aiding::MagneticField>>,
+        &call<Layouts<::mipcodec::aiding::Pressure>>,
+        &call<Layouts<::mipcodec::aiding::FrameConfigResponse>>,
+        &call<Layouts<::mipcodec::aiding::EchoControlResponse>>,
+        &call<Layouts<::mipcodec::system::CommunicationMode>>,
+        &call<Layouts<::mipcodec::system::CommunicationModeResponse>>,
+        &call<Layouts<::mipcodec::sensor::ScaledAccel>>,
+        &call<Layouts<::mipcodec::sensor::ScaledGyro>>,
+        &call<Layouts<::mipcodec::sensor::ScaledMag>>,
+        &call<Layouts<::mipcodec::sensor::DeltaTheta>>,
+        &call<Layouts<::mipcodec::sensor::DeltaVelocity>>,
+        &call<Layouts<::mipcodec::sensor::CfOrientationMatrix>>,
+        &call<Layouts<::mipcodec::sensor::CfQuaternion>>,
+        &call<Layouts<::mipcodec::sensor::CfEulerAngles>>,
+        &call<Layouts<::mipcodec::sensor::CfStabilizedNorth>>,
+        &call<Layouts<::mipcodec::sensor::CfStabilizedUp>>,
+        &call<Layouts<::mipcodec::sensor::GpsTimestamp>>,
+        &call<Layouts<::mipcodec::sensor::TemperatureStatistics>>,
+        &call<Layouts<::mipcodec::sensor::ScaledPressure>>,
+        &call<Layouts<::mipcodec::sensor::OverrangeStatus>>,
+        &call<Layouts<::mipcodec::sensor::OdometerData>>,
+        &call<Layouts<::mipcodec::shared::EventSource>>,
+        &call<Layouts<::mipcodec::shared::GpsTimestamp>>,
+        &call<Layouts<::mipcodec::shared::DeltaTime>>,
+        &call<Layouts<::mipcodec::shared::ReferenceTimestamp>>,
+        &call<Layouts<::mipcodec::shared::ReferenceTimeDelta>>,
+        &call<Layouts<::mipcodec::shared::ExternalTimestamp>>,
+        &call<Layouts<::mipcodec::shared::ExternalTimeDelta>>,
+        &call<Layouts<::mipcodec::gnss_data::LlhPosition>>,
+        &call<Layouts<::mipcodec::gnss_data::EcefPosition>>,
+        &call<Layouts<::mipcodec::gnss_data::NedVelocity>>,
+        &call<Layouts<::mipcodec::gnss_data::EcefVelocity>>,
+        &call<Layouts<::mipcodec::gnss_data::Dop>>,
+        &call<Layouts<::mipcodec::gnss_data::UtcTime>>,
+        &call<Layouts<::mipcodec::gnss_data::GpsTime>>,
+        &call<Layouts<::mipcodec::gnss_data::ClockInfo>>,
+        &call<Layouts<::mipcodec::gnss_data::FixInfo>>,
+        &call<Layouts<::mipcodec::gnss_data::SvInfo>>,
+        &call<Layouts<::mipcodec::gnss_data::HardwareStatus>>,
+        &call<Layouts<::mipcodec::gnss_data::DgnssInfo>>,
+        &call<Layouts<::mipcodec::gnss_data::DgnssChannelStatus>>,
+        &call<Layouts<::mipcodec::filter_data::LlhPosition>>,
+        &call<Layouts<::mipcodec::filter_data::NedVelocity>>,
+        &call<Layouts<::mipcodec::filter_data::AttitudeQuaternion>>,
+        &call<Layouts<::mipcodec::filter_data::AttitudeDcm>>,
+        &call<Layouts<::mipcodec::filter_data::EulerAngles>>,
+        &call<Layouts<::mipcodec::filter_data::GyroBias>>,
+        &call<Layouts<::mipcodec::filter_data::AccelBias>>,
+        &call<Layouts<::mipcodec::filter_data::LlhPositionUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::NedVelocityUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::EulerAnglesUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::GyroBiasUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::AccelBiasUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::LinearAccel>>,
+        &call<Layouts<::mipcodec::filter_data::CompAngularRate>>,
+        &call<Layouts<::mipcodec::filter_data::Wgs84GravityMagnitude>>,
+        &call<
+            Layouts<::mipcodec::filter_data::FilterStatusGx545, ::mipcodec::filter_data::FilterStatusCv7Ins>>,
+        &call<Layouts<::mipcodec::filter_data::GpsTimestamp>>,
+        &call<Layouts<::mipcodec::filter_data::QuaternionAttitudeUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::GravityVector>>,
+        &call<Layouts<::mipcodec::filter_data::HeadingUpdateState>>,
+        &call<Layouts<::mipcodec::filter_data::MagneticModel>>,
+        &call<Layouts<::mipcodec::filter_data::GyroScaleFactor>>,
+        &call<Layouts<::mipcodec::filter_data::AccelScaleFactor>>,
+        &call<Layouts<::mipcodec::filter_data::GyroScaleFactorUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::AccelScaleFactorUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::CompensatedAccel>>,
+        &call<Layouts<::mipcodec::filter_data::StandardAtmosphere>>,
+        &call<Layouts<::mipcodec::filter_data::PressureAltitude>>,
+        &call<Layouts<::mipcodec::filter_data::MagAutoHardIronOffset>>,
+        &call<Layouts<::mipcodec::filter_data::MagAutoSoftIronMatrix>>,
+        &call<Layouts<::mipcodec::filter_data::MagAutoHardIronOffsetUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::GnssAntennaOffsetCorrection>>,
+        &call<Layouts<::mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::MultiAntennaOffsetCorrection>>,
+        &call<Layouts<::mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::EcefPositionUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::EcefVelocityUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::EcefPosition>>,
+        &call<Layouts<::mipcodec::filter_data::EcefVelocity>>,
+        &call<Layouts<::mipcodec::filter_data::NedRelativePosition>>,
+        &call<Layouts<::mipcodec::filter_data::GnssPositionAidingStatus>>,
+        &call<Layouts<::mipcodec::filter_data::AidingMeasurementSummary>>,
+        &call<Layouts<::mipcodec::filter_data::OdometerScaleFactorError>>,
+        &call<Layouts<::mipcodec::filter_data::OdometerScaleFactorErrorUncertainty>>,
+        &call<Layouts<::mipcodec::filter_data::GnssDualAntennaStatus>>,
+        &call<Layouts<::mipcodec::filter_data::AidingFrameConfigError>>,
+        &call<Layouts<::mipcodec::filter_data::AidingFrameConfigErrorUncertainty>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::LlhPosition>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::EcefPosition>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::NedVelocity>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::EcefVelocity>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::Dop>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::UtcTime>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::GpsTime>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::FixInfo>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::HardwareStatus>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::ClockInfo2>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::GpsLeapSeconds>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::SbasInfo>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::SatelliteStatus>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::Raw>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::GpsEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::GlonassEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::GalileoEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_1::BeidouEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::LlhPosition>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::EcefPosition>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::NedVelocity>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::EcefVelocity>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::Dop>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::UtcTime>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::GpsTime>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::FixInfo>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::HardwareStatus>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::ClockInfo2>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::GpsLeapSeconds>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::SbasInfo>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::SatelliteStatus>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::Raw>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::GpsEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::GlonassEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::GalileoEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_receiver_2::BeidouEphemeris>>,
+        &call<Layouts<::mipcodec::gnss_corrections::BaseStationInfo>>,
+        &call<Layouts<::mipcodec::gnss_corrections::RtkCorrectionsStatus>>,
+        &call<Layouts<::mipcodec::gnss_external::LlhPosition>>,
+        &call<Layouts<::mipcodec::gnss_external::NedVelocity>>,
+        &call<Layouts<::mipcodec::gnss_external::UtcTime>>,
+        &call<Layouts<::mipcodec::gnss_external::FixInfo>>,
+        &call<Layouts<::mipcodec::gnss_external::SatelliteStatus>>,
+        &call<Layouts<::mipcodec::system_data::BuiltInTest>>,
+        &call<Layouts<::mipcodec::system_data::TimeSyncStatus>>,
+        &call<Layouts<::mipcodec::system_data::GpioState>>,
+    };
+};
+
+} // namespace detail
+
 /// Calls f(Layouts<...>{}) for the layouts of case field_case(set, descriptor) (>= 2); false for 0 and 1.
 template <class F> bool visit_case(unsigned c, F &&f) {
-    switch (c) {
-    case 2:
-        f(Layouts<::mipcodec::base::Ping>{});
-        return true;
-    case 3:
-        f(Layouts<::mipcodec::base::SetToIdle>{});
-        return true;
-    case 4:
-        f(Layouts<::mipcodec::base::GetDeviceInfo>{});
-        return true;
-    case 5:
-        f(Layouts<::mipcodec::base::GetDeviceDescriptors>{});
-        return true;
-    case 6:
-        f(Layouts<::mipcodec::base::BuiltInTest>{});
-        return true;
-    case 7:
-        f(Layouts<::mipcodec::base::Resume>{});
-        return true;
-    case 8:
-        f(Layouts<::mipcodec::base::GetExtendedDescriptors>{});
-        return true;
-    case 9:
-        f(Layouts<::mipcodec::base::ContinuousBit>{});
-        return true;
-    case 10:
-        f(Layouts<::mipcodec::base::CommPortSpeed>{});
-        return true;
-    case 11:
-        f(Layouts<::mipcodec::base::GpsTimeUpdateGx545, ::mipcodec::base::GpsTimeUpdateCv7Ins>{});
-        return true;
-    case 12:
-        f(Layouts<::mipcodec::base::DeviceReset>{});
-        return true;
-    case 13:
-        f(Layouts<::mipcodec::base::DeviceInfo>{});
-        return true;
-    case 14:
-        f(Layouts<::mipcodec::base::DeviceDescriptors>{});
-        return true;
-    case 15:
-        f(Layouts<::mipcodec::base::BuiltInTestResultGx545, ::mipcodec::base::BuiltInTestResultCv7Ins>{});
-        return true;
-    case 16:
-        f(Layouts<::mipcodec::base::GpsWeek>{});
-        return true;
-    case 17:
-        f(Layouts<::mipcodec::base::GpsSeconds>{});
-        return true;
-    case 18:
-        f(Layouts<::mipcodec::base::ExtendedDescriptors>{});
-        return true;
-    case 19:
-        f(Layouts<::mipcodec::base::ContinuousBitResult>{});
-        return true;
-    case 20:
-        f(Layouts<::mipcodec::base::CommPortSpeedResponse>{});
-        return true;
-    case 21:
-        f(Layouts<::mipcodec::reserved::AckNack>{});
-        return true;
-    case 22:
-        f(Layouts<::mipcodec::threedm::PollImuData>{});
-        return true;
-    case 23:
-        f(Layouts<::mipcodec::threedm::PollGnssData>{});
-        return true;
-    case 24:
-        f(Layouts<::mipcodec::threedm::PollFilterData>{});
-        return true;
-    case 25:
-        f(Layouts<::mipcodec::threedm::PollNmeaData>{});
-        return true;
-    case 26:
-        f(Layouts<::mipcodec::threedm::GetImuBaseRate>{});
-        return true;
-    case 27:
-        f(Layouts<::mipcodec::threedm::GetGnssBaseRate>{});
-        return true;
-    case 28:
-        f(Layouts<::mipcodec::threedm::ImuMessageFormat>{});
-        return true;
-    case 29:
-        f(Layouts<::mipcodec::threedm::GnssMessageFormat>{});
-        return true;
-    case 30:
-        f(Layouts<::mipcodec::threedm::FilterMessageFormat>{});
-        return true;
-    case 31:
-        f(Layouts<::mipcodec::threedm::GetFilterBaseRate>{});
-        return true;
-    case 32:
-        f(Layouts<::mipcodec::threedm::NmeaMessageFormat>{});
-        return true;
-    case 33:
-        f(Layouts<::mipcodec::threedm::PollData>{});
-        return true;
-    case 34:
-        f(Layouts<::mipcodec::threedm::GetBaseRate>{});
-        return true;
-    case 35:
-        f(Layouts<::mipcodec::threedm::MessageFormat>{});
-        return true;
-    case 36:
-        f(Layouts<::mipcodec::threedm::FactoryStreaming>{});
-        return true;
-    case 37:
-        f(Layouts<::mipcodec::threedm::DataStreamControlGx545,
-                  ::mipcodec::threedm::DataStreamControlCv7Ins>{});
-        return true;
-    case 38:
-        f(Layouts<::mipcodec::threedm::RawRtcmMessage>{});
-        return true;
-    case 39:
-        f(Layouts<::mipcodec::threedm::GnssConstellationSettings>{});
-        return true;
-    case 40:
-        f(Layouts<::mipcodec::threedm::GnssSbasSettings>{});
-        return true;
-    case 41:
-        f(Layouts<::mipcodec::threedm::GnssAssistedFixControl>{});
-        return true;
-    case 42:
-        f(Layouts<::mipcodec::threedm::GnssAssistTimeUpdate>{});
-        return true;
-    case 43:
-        f(Layouts<::mipcodec::threedm::PpsSource>{});
-        return true;
-    case 44:
-        f(Layouts<::mipcodec::threedm::GetSupportedEvents>{});
-        return true;
-    case 45:
-        f(Layouts<::mipcodec::threedm::EventControl>{});
-        return true;
-    case 46:
-        f(Layouts<::mipcodec::threedm::GetEventTriggerStatus>{});
-        return true;
-    case 47:
-        f(Layouts<::mipcodec::threedm::GetEventActionStatus>{});
-        return true;
-    case 48:
-        f(Layouts<::mipcodec::threedm::EventTriggerConfig>{});
-        return true;
-    case 49:
-        f(Layouts<::mipcodec::threedm::EventActionConfig>{});
-        return true;
-    case 50:
-        f(Layouts<::mipcodec::threedm::DeviceStartupSettingsGx545,
-                  ::mipcodec::threedm::DeviceStartupSettingsCv7Ins>{});
-        return true;
-    case 51:
-        f(Layouts<::mipcodec::threedm::SensorToVehicleEuler>{});
-        return true;
-    case 52:
-        f(Layouts<::mipcodec::threedm::SensorToVehicleQuaternion>{});
-        return true;
-    case 53:
-        f(Layouts<::mipcodec::threedm::SensorToVehicleDcm>{});
-        return true;
-    case 54:
-        f(Layouts<::mipcodec::threedm::AccelBiasGx545, ::mipcodec::threedm::AccelBiasCv7Ins>{});
-        return true;
-    case 55:
-        f(Layouts<::mipcodec::threedm::GyroBiasGx545, ::mipcodec::threedm::GyroBiasCv7Ins>{});
-        return true;
-    case 56:
-        f(Layouts<::mipcodec::threedm::CaptureGyroBias>{});
-        return true;
-    case 57:
-        f(Layouts<::mipcodec::threedm::MagHardIronOffsetGx545,
-                  ::mipcodec::threedm::MagHardIronOffsetCv7Ins>{});
-        return true;
-    case 58:
-        f(Layouts<::mipcodec::threedm::MagSoftIronMatrixGx545,
-                  ::mipcodec::threedm::MagSoftIronMatrixCv7Ins>{});
-        return true;
-    case 59:
-        f(Layouts<::mipcodec::threedm::ConingScullingEnable>{});
-        return true;
-    case 60:
-        f(Layouts<::mipcodec::threedm::UartBaudrate>{});
-        return true;
-    case 61:
-        f(Layouts<::mipcodec::threedm::GpioConfig>{});
-        return true;
-    case 62:
-        f(Layouts<::mipcodec::threedm::GpioState>{});
-        return true;
-    case 63:
-        f(Layouts<::mipcodec::threedm::OdometerConfig>{});
-        return true;
-    case 64:
-        f(Layouts<::mipcodec::threedm::AdvancedLowpassFilter>{});
-        return true;
-    case 65:
-        f(Layouts<::mipcodec::threedm::ComplementaryFilter>{});
-        return true;
-    case 66:
-        f(Layouts<::mipcodec::threedm::SensorRange>{});
-        return true;
-    case 67:
-        f(Layouts<::mipcodec::threedm::GetCalibratedSensorRanges>{});
-        return true;
-    case 68:
-        f(Layouts<::mipcodec::threedm::LowpassFilter>{});
-        return true;
-    case 69:
-        f(Layouts<::mipcodec::threedm::DeviceStatus>{});
-        return true;
-    case 70:
-        f(Layouts<::mipcodec::threedm::ImuMessageFormatResponse>{});
-        return true;
-    case 71:
-        f(Layouts<::mipcodec::threedm::GnssMessageFormatResponse>{});
-        return true;
-    case 72:
-        f(Layouts<::mipcodec::threedm::FilterMessageFormatResponse>{});
-        return true;
-    case 73:
-        f(Layouts<::mipcodec::threedm::ImuBaseRate>{});
-        return true;
-    case 74:
-        f(Layouts<::mipcodec::threedm::GnssBaseRate>{});
-        return true;
-    case 75:
-        f(Layouts<::mipcodec::threedm::DataStreamControlResponseGx545,
-                  ::mipcodec::threedm::DataStreamControlResponseCv7Ins>{});
-        return true;
-    case 76:
-        f(Layouts<::mipcodec::threedm::UartBaudrateResponse>{});
-        return true;
-    case 77:
-        f(Layouts<::mipcodec::threedm::FilterBaseRate>{});
-        return true;
-    case 78:
-        f(Layouts<::mipcodec::threedm::AdvancedLowpassFilterResponse>{});
-        return true;
-    case 79:
-        f(Layouts<::mipcodec::threedm::NmeaMessageFormatResponse>{});
-        return true;
-    case 80:
-        f(Layouts<::mipcodec::threedm::BaseRate>{});
-        return true;
-    case 81:
-        f(Layouts<::mipcodec::threedm::MessageFormatResponse>{});
-        return true;
-    case 82:
-        f(Layouts<::mipcodec::threedm::DeviceStatusResponse>{});
-        return true;
-    case 83:
-        f(Layouts<::mipcodec::threedm::ComplementaryFilterResponse>{});
-        return true;
-    case 84:
-        f(Layouts<::mipcodec::threedm::AccelBiasResponse>{});
-        return true;
-    case 85:
-        f(Layouts<::mipcodec::threedm::GyroBiasResponse>{});
-        return true;
-    case 86:
-        f(Layouts<::mipcodec::threedm::MagHardIronOffsetResponse>{});
-        return true;
-    case 87:
-        f(Layouts<::mipcodec::threedm::MagSoftIronMatrixResponse>{});
-        return true;
-    case 88:
-        f(Layouts<::mipcodec::threedm::ConingScullingEnableResponse>{});
-        return true;
-    case 89:
-        f(Layouts<::mipcodec::threedm::GnssConstellationSettingsResponse>{});
-        return true;
-    case 90:
-        f(Layouts<::mipcodec::threedm::GnssSbasSettingsResponse>{});
-        return true;
-    case 91:
-        f(Layouts<::mipcodec::threedm::GnssAssistedFixControlResponse>{});
-        return true;
-    case 92:
-        f(Layouts<::mipcodec::threedm::GnssAssistTimeUpdateResponse>{});
-        return true;
-    case 93:
-        f(Layouts<::mipcodec::threedm::PpsSourceResponse>{});
-        return true;
-    case 94:
-        f(Layouts<::mipcodec::threedm::SensorToVehicleEulerResponse>{});
-        return true;
-    case 95:
-        f(Layouts<::mipcodec::threedm::SensorToVehicleQuaternionResponse>{});
-        return true;
-    case 96:
-        f(Layouts<::mipcodec::threedm::SensorToVehicleDcmResponse>{});
-        return true;
-    case 97:
-        f(Layouts<::mipcodec::threedm::SupportedEvents>{});
-        return true;
-    case 98:
-        f(Layouts<::mipcodec::threedm::EventControlResponse>{});
-        return true;
-    case 99:
-        f(Layouts<::mipcodec::threedm::EventTriggerStatus>{});
-        return true;
-    case 100:
-        f(Layouts<::mipcodec::threedm::EventActionStatus>{});
-        return true;
-    case 101:
-        f(Layouts<::mipcodec::threedm::EventTriggerConfigResponse>{});
-        return true;
-    case 102:
-        f(Layouts<::mipcodec::threedm::EventActionConfigResponse>{});
-        return true;
-    case 103:
-        f(Layouts<::mipcodec::threedm::GpioConfigResponse>{});
-        return true;
-    case 104:
-        f(Layouts<::mipcodec::threedm::GpioStateResponse>{});
-        return true;
-    case 105:
-        f(Layouts<::mipcodec::threedm::OdometerConfigResponse>{});
-        return true;
-    case 106:
-        f(Layouts<::mipcodec::threedm::SensorRangeResponse>{});
-        return true;
-    case 107:
-        f(Layouts<::mipcodec::threedm::CalibratedSensorRanges>{});
-        return true;
-    case 108:
-        f(Layouts<::mipcodec::threedm::LowpassFilterResponse>{});
-        return true;
-    case 109:
-        f(Layouts<::mipcodec::filter::ResetFilter>{});
-        return true;
-    case 110:
-        f(Layouts<::mipcodec::filter::SetInitialAttitude>{});
-        return true;
-    case 111:
-        f(Layouts<::mipcodec::filter::SetInitialHeading>{});
-        return true;
-    case 112:
-        f(Layouts<::mipcodec::filter::RunFilter>{});
-        return true;
-    case 113:
-        f(Layouts<::mipcodec::filter::VehicleDynamicsMode>{});
-        return true;
-    case 114:
-        f(Layouts<::mipcodec::filter::SensorToVehicleTransform>{});
-        return true;
-    case 115:
-        f(Layouts<::mipcodec::filter::SensorToVehicleOffset>{});
-        return true;
-    case 116:
-        f(Layouts<::mipcodec::filter::AntennaOffset>{});
-        return true;
-    case 117:
-        f(Layouts<::mipcodec::filter::EstimationControl>{});
-        return true;
-    case 118:
-        f(Layouts<::mipcodec::filter::GnssSourceControl>{});
-        return true;
-    case 119:
-        f(Layouts<::mipcodec::filter::ExternalGnssUpdate>{});
-        return true;
-    case 120:
-        f(Layouts<::mipcodec::filter::ExternalHeadingUpdate>{});
-        return true;
-    case 121:
-        f(Layouts<::mipcodec::filter::HeadingUpdateControl>{});
-        return true;
-    case 122:
-        f(Layouts<::mipcodec::filter::AutoInitControl>{});
-        return true;
-    case 123:
-        f(Layouts<::mipcodec::filter::AccelNoise>{});
-        return true;
-    case 124:
-        f(Layouts<::mipcodec::filter::GyroNoise>{});
-        return true;
-    case 125:
-        f(Layouts<::mipcodec::filter::AccelBiasModel>{});
-        return true;
-    case 126:
-        f(Layouts<::mipcodec::filter::GyroBiasModel>{});
-        return true;
-    case 127:
-        f(Layouts<::mipcodec::filter::ZuptControl>{});
-        return true;
-    case 128:
-        f(Layouts<::mipcodec::filter::ExternalHeadingUpdateWithTime>{});
-        return true;
-    case 129:
-        f(Layouts<::mipcodec::filter::ZeroAngularRateUpdateControl>{});
-        return true;
-    case 130:
-        f(Layouts<::mipcodec::filter::TareOrientation>{});
-        return true;
-    case 131:
-        f(Layouts<::mipcodec::filter::CommandedZupt>{});
-        return true;
-    case 132:
-        f(Layouts<::mipcodec::filter::CommandedZeroAngularRateUpdate>{});
-        return true;
-    case 133:
-        f(Layouts<::mipcodec::filter::MagCaptureAutoCalibration>{});
-        return true;
-    case 134:
-        f(Layouts<::mipcodec::filter::GravityNoiseStdDev>{});
-        return true;
-    case 135:
-        f(Layouts<::mipcodec::filter::PressureAltitudeNoiseStdDev>{});
-        return true;
-    case 136:
-        f(Layouts<::mipcodec::filter::HardIronOffsetNoise>{});
-        return true;
-    case 137:
-        f(Layouts<::mipcodec::filter::SoftIronMatrixNoise>{});
-        return true;
-    case 138:
-        f(Layouts<::mipcodec::filter::MagNoiseStdDev>{});
-        return true;
-    case 139:
-        f(Layouts<::mipcodec::filter::DeclinationSource>{});
-        return true;
-    case 140:
-        f(Layouts<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement>{});
-        return true;
-    case 141:
-        f(Layouts<::mipcodec::filter::MagMagnitudeAdaptiveMeasurement>{});
-        return true;
-    case 142:
-        f(Layouts<::mipcodec::filter::MagDipAngleAdaptiveMeasurement>{});
-        return true;
-    case 143:
-        f(Layouts<::mipcodec::filter::AltitudeAidingControl>{});
-        return true;
-    case 144:
-        f(Layouts<::mipcodec::filter::PitchRollAidingControl>{});
-        return true;
-    case 145:
-        f(Layouts<::mipcodec::filter::InclinationSource>{});
-        return true;
-    case 146:
-        f(Layouts<::mipcodec::filter::MagneticFieldMagnitudeSource>{});
-        return true;
-    case 147:
-        f(Layouts<::mipcodec::filter::AidingMeasurementControl>{});
-        return true;
-    case 148:
-        f(Layouts<::mipcodec::filter::InitializationConfiguration>{});
-        return true;
-    case 149:
-        f(Layouts<::mipcodec::filter::AdaptiveFilterControl>{});
-        return true;
-    case 150:
-        f(Layouts<::mipcodec::filter::MultiAntennaOffset>{});
-        return true;
-    case 151:
-        f(Layouts<::mipcodec::filter::RelativePositionConfiguration>{});
-        return true;
-    case 152:
-        f(Layouts<::mipcodec::filter::ReferencePointLeverArm>{});
-        return true;
-    case 153:
-        f(Layouts<::mipcodec::filter::SpeedLeverArm>{});
-        return true;
-    case 154:
-        f(Layouts<::mipcodec::filter::WheeledVehicleConstraintControl>{});
-        return true;
-    case 155:
-        f(Layouts<::mipcodec::filter::GnssAntennaCalibrationControl>{});
-        return true;
-    case 156:
-        f(Layouts<::mipcodec::filter::VehicleDynamicsModeResponse>{});
-        return true;
-    case 157:
-        f(Layouts<::mipcodec::filter::SensorToVehicleTransformResponse>{});
-        return true;
-    case 158:
-        f(Layouts<::mipcodec::filter::SensorToVehicleOffsetResponse>{});
-        return true;
-    case 159:
-        f(Layouts<::mipcodec::filter::AntennaOffsetResponse>{});
-        return true;
-    case 160:
-        f(Layouts<::mipcodec::filter::EstimationControlResponse>{});
-        return true;
-    case 161:
-        f(Layouts<::mipcodec::filter::GnssSourceControlResponse>{});
-        return true;
-    case 162:
-        f(Layouts<::mipcodec::filter::HeadingUpdateControlResponse>{});
-        return true;
-    case 163:
-        f(Layouts<::mipcodec::filter::AutoInitControlResponse>{});
-        return true;
-    case 164:
-        f(Layouts<::mipcodec::filter::AccelNoiseResponse>{});
-        return true;
-    case 165:
-        f(Layouts<::mipcodec::filter::GyroNoiseResponse>{});
-        return true;
-    case 166:
-        f(Layouts<::mipcodec::filter::AccelBiasModelResponse>{});
-        return true;
-    case 167:
-        f(Layouts<::mipcodec::filter::GyroBiasModelResponse>{});
-        return true;
-    case 168:
-        f(Layouts<::mipcodec::filter::ZuptControlResponse>{});
-        return true;
-    case 169:
-        f(Layouts<::mipcodec::filter::ZeroAngularRateUpdateControlResponse>{});
-        return true;
-    case 170:
-        f(Layouts<::mipcodec::filter::GravityNoiseStdDevResponse>{});
-        return true;
-    case 171:
-        f(Layouts<::mipcodec::filter::PressureAltitudeNoiseStdDevResponse>{});
-        return true;
-    case 172:
-        f(Layouts<::mipcodec::filter::HardIronOffsetNoiseResponse>{});
-        return true;
-    case 173:
-        f(Layouts<::mipcodec::filter::SoftIronMatrixNoiseResponse>{});
-        return true;
-    case 174:
-        f(Layouts<::mipcodec::filter::MagNoiseStdDevResponse>{});
-        return true;
-    case 175:
-        f(Layouts<::mipcodec::filter::DeclinationSourceResponse>{});
-        return true;
-    case 176:
-        f(Layouts<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse>{});
-        return true;
-    case 177:
-        f(Layouts<::mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse>{});
-        return true;
-    case 178:
-        f(Layouts<::mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse>{});
-        return true;
-    case 179:
-        f(Layouts<::mipcodec::filter::AltitudeAidingControlResponse>{});
-        return true;
-    case 180:
-        f(Layouts<::mipcodec::filter::PitchRollAidingControlResponse>{});
-        return true;
-    case 181:
-        f(Layouts<::mipcodec::filter::InclinationSourceResponse>{});
-        return true;
-    case 182:
-        f(Layouts<::mipcodec::filter::MagneticFieldMagnitudeSourceResponse>{});
-        return true;
-    case 183:
-        f(Layouts<::mipcodec::filter::AidingMeasurementControlResponse>{});
-        return true;
-    case 184:
-        f(Layouts<::mipcodec::filter::InitializationConfigurationResponse>{});
-        return true;
-    case 185:
-        f(Layouts<::mipcodec::filter::AdaptiveFilterControlResponse>{});
-        return true;
-    case 186:
-        f(Layouts<::mipcodec::filter::MultiAntennaOffsetResponse>{});
-        return true;
-    case 187:
-        f(Layouts<::mipcodec::filter::RelativePositionConfigurationResponse>{});
-        return true;
-    case 188:
-        f(Layouts<::mipcodec::filter::ReferencePointLeverArmResponse>{});
-        return true;
-    case 189:
-        f(Layouts<::mipcodec::filter::SpeedLeverArmResponse>{});
-        return true;
-    case 190:
-        f(Layouts<::mipcodec::filter::WheeledVehicleConstraintControlResponse>{});
-        return true;
-    case 191:
-        f(Layouts<::mipcodec::filter::GnssAntennaCalibrationControlResponse>{});
-        return true;
-    case 192:
-        f(Layouts<::mipcodec::gnss::ReceiverInfo>{});
-        return true;
-    case 193:
-        f(Layouts<::mipcodec::gnss::SignalConfiguration>{});
-        return true;
-    case 194:
-        f(Layouts<::mipcodec::gnss::SpartnConfiguration>{});
-        return true;
-    case 195:
-        f(Layouts<::mipcodec::gnss::ReceiverInfoResponse>{});
-        return true;
-    case 196:
-        f(Layouts<::mipcodec::gnss::SignalConfigurationResponse>{});
-        return true;
-    case 197:
-        f(Layouts<::mipcodec::gnss::SpartnConfigurationResponse>{});
-        return true;
-    case 198:
-        f(Layouts<::mipcodec::aiding::FrameConfig>{});
-        return true;
-    case 199:
-        f(Layouts<::mipcodec::aiding::EchoControl>{});
-        return true;
-    case 200:
-        f(Layouts<::mipcodec::aiding::EcefPosition>{});
-        return true;
-    case 201:
-        f(Layouts<::mipcodec::aiding::LlhPosition>{});
-        return true;
-    case 202:
-        f(Layouts<::mipcodec::aiding::HeightAboveEllipsoid>{});
-        return true;
-    case 203:
-        f(Layouts<::mipcodec::aiding::EcefVelocity>{});
-        return true;
-    case 204:
-        f(Layouts<::mipcodec::aiding::NedVelocity>{});
-        return true;
-    case 205:
-        f(Layouts<::mipcodec::aiding::BodyFrameVelocity>{});
-        return true;
-    case 206:
-        f(Layouts<::mipcodec::aiding::TrueHeading>{});
-        return true;
-    case 207:
-        f(Layouts<::mipcodec::aiding::MagneticField>{});
-        return true;
-    case 208:
-        f(Layouts<::mipcodec::aiding::Pressure>{});
-        return true;
-    case 209:
-        f(Layouts<::mipcodec::aiding::FrameConfigResponse>{});
-        return true;
-    case 210:
-        f(Layouts<::mipcodec::aiding::EchoControlResponse>{});
-        return true;
-    case 211:
-        f(Layouts<::mipcodec::system::CommunicationMode>{});
-        return true;
-    case 212:
-        f(Layouts<::mipcodec::system::CommunicationModeResponse>{});
-        return true;
-    case 213:
-        f(Layouts<::mipcodec::sensor::ScaledAccel>{});
-        return true;
-    case 214:
-        f(Layouts<::mipcodec::sensor::ScaledGyro>{});
-        return true;
-    case 215:
-        f(Layouts<::mipcodec::sensor::ScaledMag>{});
-        return true;
-    case 216:
-        f(Layouts<::mipcodec::sensor::DeltaTheta>{});
-        return true;
-    case 217:
-        f(Layouts<::mipcodec::sensor::DeltaVelocity>{});
-        return true;
-    case 218:
-        f(Layouts<::mipcodec::sensor::CfOrientationMatrix>{});
-        return true;
-    case 219:
-        f(Layouts<::mipcodec::sensor::CfQuaternion>{});
-        return true;
-    case 220:
-        f(Layouts<::mipcodec::sensor::CfEulerAngles>{});
-        return true;
-    case 221:
-        f(Layouts<::mipcodec::sensor::CfStabilizedNorth>{});
-        return true;
-    case 222:
-        f(Layouts<::mipcodec::sensor::CfStabilizedUp>{});
-        return true;
-    case 223:
-        f(Layouts<::mipcodec::sensor::GpsTimestamp>{});
-        return true;
-    case 224:
-        f(Layouts<::mipcodec::sensor::TemperatureStatistics>{});
-        return true;
-    case 225:
-        f(Layouts<::mipcodec::sensor::ScaledPressure>{});
-        return true;
-    case 226:
-        f(Layouts<::mipcodec::sensor::OverrangeStatus>{});
-        return true;
-    case 227:
-        f(Layouts<::mipcodec::sensor::OdometerData>{});
-        return true;
-    case 228:
-        f(Layouts<::mipcodec::shared::EventSource>{});
-        return true;
-    case 229:
-        f(Layouts<::mipcodec::shared::GpsTimestamp>{});
-        return true;
-    case 230:
-        f(Layouts<::mipcodec::shared::DeltaTime>{});
-        return true;
-    case 231:
-        f(Layouts<::mipcodec::shared::ReferenceTimestamp>{});
-        return true;
-    case 232:
-        f(Layouts<::mipcodec::shared::ReferenceTimeDelta>{});
-        return true;
-    case 233:
-        f(Layouts<::mipcodec::shared::ExternalTimestamp>{});
-        return true;
-    case 234:
-        f(Layouts<::mipcodec::shared::ExternalTimeDelta>{});
-        return true;
-    case 235:
-        f(Layouts<::mipcodec::gnss_data::LlhPosition>{});
-        return true;
-    case 236:
-        f(Layouts<::mipcodec::gnss_data::EcefPosition>{});
-        return true;
-    case 237:
-        f(Layouts<::mipcodec::gnss_data::NedVelocity>{});
-        return true;
-    case 238:
-        f(Layouts<::mipcodec::gnss_data::EcefVelocity>{});
-        return true;
-    case 239:
-        f(Layouts<::mipcodec::gnss_data::Dop>{});
-        return true;
-    case 240:
-        f(Layouts<::mipcodec::gnss_data::UtcTime>{});
-        return true;
-    case 241:
-        f(Layouts<::mipcodec::gnss_data::GpsTime>{});
-        return true;
-    case 242:
-        f(Layouts<::mipcodec::gnss_data::ClockInfo>{});
-        return true;
-    case 243:
-        f(Layouts<::mipcodec::gnss_data::FixInfo>{});
-        return true;
-    case 244:
-        f(Layouts<::mipcodec::gnss_data::SvInfo>{});
-        return true;
-    case 245:
-        f(Layouts<::mipcodec::gnss_data::HardwareStatus>{});
-        return true;
-    case 246:
-        f(Layouts<::mipcodec::gnss_data::DgnssInfo>{});
-        return true;
-    case 247:
-        f(Layouts<::mipcodec::gnss_data::DgnssChannelStatus>{});
-        return true;
-    case 248:
-        f(Layouts<::mipcodec::filter_data::LlhPosition>{});
-        return true;
-    case 249:
-        f(Layouts<::mipcodec::filter_data::NedVelocity>{});
-        return true;
-    case 250:
-        f(Layouts<::mipcodec::filter_data::AttitudeQuaternion>{});
-        return true;
-    case 251:
-        f(Layouts<::mipcodec::filter_data::AttitudeDcm>{});
-        return true;
-    case 252:
-        f(Layouts<::mipcodec::filter_data::EulerAngles>{});
-        return true;
-    case 253:
-        f(Layouts<::mipcodec::filter_data::GyroBias>{});
-        return true;
-    case 254:
-        f(Layouts<::mipcodec::filter_data::AccelBias>{});
-        return true;
-    case 255:
-        f(Layouts<::mipcodec::filter_data::LlhPositionUncertainty>{});
-        return true;
-    case 256:
-        f(Layouts<::mipcodec::filter_data::NedVelocityUncertainty>{});
-        return true;
-    case 257:
-        f(Layouts<::mipcodec::filter_data::EulerAnglesUncertainty>{});
-        return true;
-    case 258:
-        f(Layouts<::mipcodec::filter_data::GyroBiasUncertainty>{});
-        return true;
-    case 259:
-        f(Layouts<::mipcodec::filter_data::AccelBiasUncertainty>{});
-        return true;
-    case 260:
-        f(Layouts<::mipcodec::filter_data::LinearAccel>{});
-        return true;
-    case 261:
-        f(Layouts<::mipcodec::filter_data::CompAngularRate>{});
-        return true;
-    case 262:
-        f(Layouts<::mipcodec::filter_data::Wgs84GravityMagnitude>{});
-        return true;
-    case 263:
-        f(Layouts<::mipcodec::filter_data::FilterStatusGx545, ::mipcodec::filter_data::FilterStatusCv7Ins>{});
-        return true;
-    case 264:
-        f(Layouts<::mipcodec::filter_data::GpsTimestamp>{});
-        return true;
-    case 265:
-        f(Layouts<::mipcodec::filter_data::QuaternionAttitudeUncertainty>{});
-        return true;
-    case 266:
-        f(Layouts<::mipcodec::filter_data::GravityVector>{});
-        return true;
-    case 267:
-        f(Layouts<::mipcodec::filter_data::HeadingUpdateState>{});
-        return true;
-    case 268:
-        f(Layouts<::mipcodec::filter_data::MagneticModel>{});
-        return true;
-    case 269:
-        f(Layouts<::mipcodec::filter_data::GyroScaleFactor>{});
-        return true;
-    case 270:
-        f(Layouts<::mipcodec::filter_data::AccelScaleFactor>{});
-        return true;
-    case 271:
-        f(Layouts<::mipcodec::filter_data::GyroScaleFactorUncertainty>{});
-        return true;
-    case 272:
-        f(Layouts<::mipcodec::filter_data::AccelScaleFactorUncertainty>{});
-        return true;
-    case 273:
-        f(Layouts<::mipcodec::filter_data::CompensatedAccel>{});
-        return true;
-    case 274:
-        f(Layouts<::mipcodec::filter_data::StandardAtmosphere>{});
-        return true;
-    case 275:
-        f(Layouts<::mipcodec::filter_data::PressureAltitude>{});
-        return true;
-    case 276:
-        f(Layouts<::mipcodec::filter_data::MagAutoHardIronOffset>{});
-        return true;
-    case 277:
-        f(Layouts<::mipcodec::filter_data::MagAutoSoftIronMatrix>{});
-        return true;
-    case 278:
-        f(Layouts<::mipcodec::filter_data::MagAutoHardIronOffsetUncertainty>{});
-        return true;
-    case 279:
-        f(Layouts<::mipcodec::filter_data::MagAutoSoftIronMatrixUncertainty>{});
-        return true;
-    case 280:
-        f(Layouts<::mipcodec::filter_data::GnssAntennaOffsetCorrection>{});
-        return true;
-    case 281:
-        f(Layouts<::mipcodec::filter_data::GnssAntennaOffsetCorrectionUncertainty>{});
-        return true;
-    case 282:
-        f(Layouts<::mipcodec::filter_data::MultiAntennaOffsetCorrection>{});
-        return true;
-    case 283:
-        f(Layouts<::mipcodec::filter_data::MultiAntennaOffsetCorrectionUncertainty>{});
-        return true;
-    case 284:
-        f(Layouts<::mipcodec::filter_data::EcefPositionUncertainty>{});
-        return true;
-    case 285:
-        f(Layouts<::mipcodec::filter_data::EcefVelocityUncertainty>{});
-        return true;
-    case 286:
-        f(Layouts<::mipcodec::filter_data::EcefPosition>{});
-        return true;
-    case 287:
-        f(Layouts<::mipcodec::filter_data::EcefVelocity>{});
-        return true;
-    case 288:
-        f(Layouts<::mipcodec::filter_data::NedRelativePosition>{});
-        return true;
-    case 289:
-        f(Layouts<::mipcodec::filter_data::GnssPositionAidingStatus>{});
-        return true;
-    case 290:
-        f(Layouts<::mipcodec::filter_data::AidingMeasurementSummary>{});
-        return true;
-    case 291:
-        f(Layouts<::mipcodec::filter_data::OdometerScaleFactorError>{});
-        return true;
-    case 292:
-        f(Layouts<::mipcodec::filter_data::OdometerScaleFactorErrorUncertainty>{});
-        return true;
-    case 293:
-        f(Layouts<::mipcodec::filter_data::GnssDualAntennaStatus>{});
-        return true;
-    case 294:
-        f(Layouts<::mipcodec::filter_data::AidingFrameConfigError>{});
-        return true;
-    case 295:
-        f(Layouts<::mipcodec::filter_data::AidingFrameConfigErrorUncertainty>{});
-        return true;
-    case 296:
-        f(Layouts<::mipcodec::gnss_receiver_1::LlhPosition>{});
-        return true;
-    case 297:
-        f(Layouts<::mipcodec::gnss_receiver_1::EcefPosition>{});
-        return true;
-    case 298:
-        f(Layouts<::mipcodec::gnss_receiver_1::NedVelocity>{});
-        return true;
-    case 299:
-        f(Layouts<::mipcodec::gnss_receiver_1::EcefVelocity>{});
-        return true;
-    case 300:
-        f(Layouts<::mipcodec::gnss_receiver_1::Dop>{});
-        return true;
-    case 301:
-        f(Layouts<::mipcodec::gnss_receiver_1::UtcTime>{});
-        return true;
-    case 302:
-        f(Layouts<::mipcodec::gnss_receiver_1::GpsTime>{});
-        return true;
-    case 303:
-        f(Layouts<::mipcodec::gnss_receiver_1::FixInfo>{});
-        return true;
-    case 304:
-        f(Layouts<::mipcodec::gnss_receiver_1::HardwareStatus>{});
-        return true;
-    case 305:
-        f(Layouts<::mipcodec::gnss_receiver_1::ClockInfo2>{});
-        return true;
-    case 306:
-        f(Layouts<::mipcodec::gnss_receiver_1::GpsLeapSeconds>{});
-        return true;
-    case 307:
-        f(Layouts<::mipcodec::gnss_receiver_1::SbasInfo>{});
-        return true;
-    case 308:
-        f(Layouts<::mipcodec::gnss_receiver_1::SatelliteStatus>{});
-        return true;
-    case 309:
-        f(Layouts<::mipcodec::gnss_receiver_1::Raw>{});
-        return true;
-    case 310:
-        f(Layouts<::mipcodec::gnss_receiver_1::GpsEphemeris>{});
-        return true;
-    case 311:
-        f(Layouts<::mipcodec::gnss_receiver_1::GlonassEphemeris>{});
-        return true;
-    case 312:
-        f(Layouts<::mipcodec::gnss_receiver_1::GalileoEphemeris>{});
-        return true;
-    case 313:
-        f(Layouts<::mipcodec::gnss_receiver_1::BeidouEphemeris>{});
-        return true;
-    case 314:
-        f(Layouts<::mipcodec::gnss_receiver_2::LlhPosition>{});
-        return true;
-    case 315:
-        f(Layouts<::mipcodec::gnss_receiver_2::EcefPosition>{});
-        return true;
-    case 316:
-        f(Layouts<::mipcodec::gnss_receiver_2::NedVelocity>{});
-        return true;
-    case 317:
-        f(Layouts<::mipcodec::gnss_receiver_2::EcefVelocity>{});
-        return true;
-    case 318:
-        f(Layouts<::mipcodec::gnss_receiver_2::Dop>{});
-        return true;
-    case 319:
-        f(Layouts<::mipcodec::gnss_receiver_2::UtcTime>{});
-        return true;
-    case 320:
-        f(Layouts<::mipcodec::gnss_receiver_2::GpsTime>{});
-        return true;
-    case 321:
-        f(Layouts<::mipcodec::gnss_receiver_2::FixInfo>{});
-        return true;
-    case 322:
-        f(Layouts<::mipcodec::gnss_receiver_2::HardwareStatus>{});
-        return true;
-    case 323:
-        f(Layouts<::mipcodec::gnss_receiver_2::ClockInfo2>{});
-        return true;
-    case 324:
-        f(Layouts<::mipcodec::gnss_receiver_2::GpsLeapSeconds>{});
-        return true;
-    case 325:
-        f(Layouts<::mipcodec::gnss_receiver_2::SbasInfo>{});
-        return true;
-    case 326:
-        f(Layouts<::mipcodec::gnss_receiver_2::SatelliteStatus>{});
-        return true;
-    case 327:
-        f(Layouts<::mipcodec::gnss_receiver_2::Raw>{});
-        return true;
-    case 328:
-        f(Layouts<::mipcodec::gnss_receiver_2::GpsEphemeris>{});
-        return true;
-    case 329:
-        f(Layouts<::mipcodec::gnss_receiver_2::GlonassEphemeris>{});
-        return true;
-    case 330:
-        f(Layouts<::mipcodec::gnss_receiver_2::GalileoEphemeris>{});
-        return true;
-    case 331:
-        f(Layouts<::mipcodec::gnss_receiver_2::BeidouEphemeris>{});
-        return true;
-    case 332:
-        f(Layouts<::mipcodec::gnss_corrections::BaseStationInfo>{});
-        return true;
-    case 333:
-        f(Layouts<::mipcodec::gnss_corrections::RtkCorrectionsStatus>{});
-        return true;
-    case 334:
-        f(Layouts<::mipcodec::gnss_external::LlhPosition>{});
-        return true;
-    case 335:
-        f(Layouts<::mipcodec::gnss_external::NedVelocity>{});
-        return true;
-    case 336:
-        f(Layouts<::mipcodec::gnss_external::UtcTime>{});
-        return true;
-    case 337:
-        f(Layouts<::mipcodec::gnss_external::FixInfo>{});
-        return true;
-    case 338:
-        f(Layouts<::mipcodec::gnss_external::SatelliteStatus>{});
-        return true;
-    case 339:
-        f(Layouts<::mipcodec::system_data::BuiltInTest>{});
-        return true;
-    case 340:
-        f(Layouts<::mipcodec::system_data::TimeSyncStatus>{});
-        return true;
-    case 341:
-        f(Layouts<::mipcodec::system_data::GpioState>{});
-        return true;
-    default:
-        break;
+    using Calls = detail::CaseCalls<std::remove_reference_t<F>>;
+    if (c < 2 || c >= sizeof Calls::kCalls / sizeof Calls::kCalls[0]) {
+        return false;
     }
-    (void)f;
-    return false;
+    Calls::kCalls[c](f);
+    return true;
 }
 
 /// Calls f(Layouts<...>{}) for the field (set, descriptor) and returns found, or says why not.

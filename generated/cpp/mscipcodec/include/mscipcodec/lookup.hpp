@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "mscipcodec/devices.hpp"
 #include "mscipcodec/fields/base.hpp"
@@ -85,152 +86,76 @@ inline unsigned field_case(std::uint8_t set, std::uint8_t descriptor) {
     return detail::kFieldCases[detail::kSetRow[set]][descriptor];
 }
 
+namespace detail {
+
+/// One function per case, called through a table: each keeps its own (small) stack frame, and
+/// the dispatch is one bounds check, one load and one indirect call.
+template <class F> struct CaseCalls {
+    template <class L> static void call(F &f) {
+        f(L{});
+    }
+    static constexpr void (*kCalls[])(F &) = {
+        nullptr,
+        nullptr,
+        &call<Layouts<::mscipcodec::base::Ping>>,
+        &call<Layouts<::mscipcodec::base::GetDeviceMessages>>,
+        &call<Layouts<::mscipcodec::base::DeviceReset>>,
+        &call<Layouts<::mscipcodec::base::GetDeviceModel>>,
+        &call<Layouts<::mscipcodec::base::GetDeviceSn>>,
+        &call<Layouts<::mscipcodec::base::GetDeviceFw>>,
+        &call<Layouts<::mscipcodec::base::GetDeviceCal>>,
+        &call<Layouts<::mscipcodec::base::CorrelateGpsTime>>,
+        &call<Layouts<::mscipcodec::reserved::Ack>>,
+        &call<Layouts<::mscipcodec::base::DeviceMessages>>,
+        &call<Layouts<::mscipcodec::base::DeviceModel>>,
+        &call<Layouts<::mscipcodec::base::DeviceSn>>,
+        &call<Layouts<::mscipcodec::base::DeviceFw>>,
+        &call<Layouts<::mscipcodec::base::DeviceCal>>,
+        &call<Layouts<::mscipcodec::imu_config::UartBaudRate>>,
+        &call<Layouts<::mscipcodec::imu_config::Filter>>,
+        &call<Layouts<::mscipcodec::imu_config::SampleRate>>,
+        &call<Layouts<::mscipcodec::imu_config::SelectSensors>>,
+        &call<Layouts<::mscipcodec::imu_config::GetInternalSampleRate>>,
+        &call<Layouts<::mscipcodec::imu_config::AccelRange>>,
+        &call<Layouts<::mscipcodec::imu_config::GyroRange>>,
+        &call<Layouts<::mscipcodec::imu_config::ConfigAll>>,
+        &call<Layouts<::mscipcodec::imu_config::DataOnOff>>,
+        &call<Layouts<::mscipcodec::imu_config::XtrigOnOff>>,
+        &call<Layouts<::mscipcodec::imu_config::SelectSensorsRevB>>,
+        &call<Layouts<::mscipcodec::imu_config::AuxAccelRange>>,
+        &call<Layouts<::mscipcodec::imu_config::UartBaudRateResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::FilterResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::SampleRateResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::SelectSensorsResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::InternalSampleRate>>,
+        &call<Layouts<::mscipcodec::imu_config::AccelRangeResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::GyroRangeResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::DataOnOffResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::XtrigOnOffResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::SelectSensorsRevBResponse>>,
+        &call<Layouts<::mscipcodec::imu_config::AuxAccelRangeResponse>>,
+        &call<Layouts<::mscipcodec::imu_data::ScaledAccel>>,
+        &call<Layouts<::mscipcodec::imu_data::ScaledGyro>>,
+        &call<Layouts<::mscipcodec::imu_data::ScaledMag>>,
+        &call<Layouts<::mscipcodec::imu_data::DeltaTheta>>,
+        &call<Layouts<::mscipcodec::imu_data::DeltaVelocity>>,
+        &call<Layouts<::mscipcodec::imu_data::ScaledPressure>>,
+        &call<Layouts<::mscipcodec::imu_data::ScaledTemperature>>,
+        &call<Layouts<::mscipcodec::imu_data::GpsCorrelatedTime>>,
+        &call<Layouts<::mscipcodec::imu_data::ScaledAuxAccel>>,
+    };
+};
+
+} // namespace detail
+
 /// Calls f(Layouts<...>{}) for the layouts of case field_case(set, descriptor) (>= 2); false for 0 and 1.
 template <class F> bool visit_case(unsigned c, F &&f) {
-    switch (c) {
-    case 2:
-        f(Layouts<::mscipcodec::base::Ping>{});
-        return true;
-    case 3:
-        f(Layouts<::mscipcodec::base::GetDeviceMessages>{});
-        return true;
-    case 4:
-        f(Layouts<::mscipcodec::base::DeviceReset>{});
-        return true;
-    case 5:
-        f(Layouts<::mscipcodec::base::GetDeviceModel>{});
-        return true;
-    case 6:
-        f(Layouts<::mscipcodec::base::GetDeviceSn>{});
-        return true;
-    case 7:
-        f(Layouts<::mscipcodec::base::GetDeviceFw>{});
-        return true;
-    case 8:
-        f(Layouts<::mscipcodec::base::GetDeviceCal>{});
-        return true;
-    case 9:
-        f(Layouts<::mscipcodec::base::CorrelateGpsTime>{});
-        return true;
-    case 10:
-        f(Layouts<::mscipcodec::reserved::Ack>{});
-        return true;
-    case 11:
-        f(Layouts<::mscipcodec::base::DeviceMessages>{});
-        return true;
-    case 12:
-        f(Layouts<::mscipcodec::base::DeviceModel>{});
-        return true;
-    case 13:
-        f(Layouts<::mscipcodec::base::DeviceSn>{});
-        return true;
-    case 14:
-        f(Layouts<::mscipcodec::base::DeviceFw>{});
-        return true;
-    case 15:
-        f(Layouts<::mscipcodec::base::DeviceCal>{});
-        return true;
-    case 16:
-        f(Layouts<::mscipcodec::imu_config::UartBaudRate>{});
-        return true;
-    case 17:
-        f(Layouts<::mscipcodec::imu_config::Filter>{});
-        return true;
-    case 18:
-        f(Layouts<::mscipcodec::imu_config::SampleRate>{});
-        return true;
-    case 19:
-        f(Layouts<::mscipcodec::imu_config::SelectSensors>{});
-        return true;
-    case 20:
-        f(Layouts<::mscipcodec::imu_config::GetInternalSampleRate>{});
-        return true;
-    case 21:
-        f(Layouts<::mscipcodec::imu_config::AccelRange>{});
-        return true;
-    case 22:
-        f(Layouts<::mscipcodec::imu_config::GyroRange>{});
-        return true;
-    case 23:
-        f(Layouts<::mscipcodec::imu_config::ConfigAll>{});
-        return true;
-    case 24:
-        f(Layouts<::mscipcodec::imu_config::DataOnOff>{});
-        return true;
-    case 25:
-        f(Layouts<::mscipcodec::imu_config::XtrigOnOff>{});
-        return true;
-    case 26:
-        f(Layouts<::mscipcodec::imu_config::SelectSensorsRevB>{});
-        return true;
-    case 27:
-        f(Layouts<::mscipcodec::imu_config::AuxAccelRange>{});
-        return true;
-    case 28:
-        f(Layouts<::mscipcodec::imu_config::UartBaudRateResponse>{});
-        return true;
-    case 29:
-        f(Layouts<::mscipcodec::imu_config::FilterResponse>{});
-        return true;
-    case 30:
-        f(Layouts<::mscipcodec::imu_config::SampleRateResponse>{});
-        return true;
-    case 31:
-        f(Layouts<::mscipcodec::imu_config::SelectSensorsResponse>{});
-        return true;
-    case 32:
-        f(Layouts<::mscipcodec::imu_config::InternalSampleRate>{});
-        return true;
-    case 33:
-        f(Layouts<::mscipcodec::imu_config::AccelRangeResponse>{});
-        return true;
-    case 34:
-        f(Layouts<::mscipcodec::imu_config::GyroRangeResponse>{});
-        return true;
-    case 35:
-        f(Layouts<::mscipcodec::imu_config::DataOnOffResponse>{});
-        return true;
-    case 36:
-        f(Layouts<::mscipcodec::imu_config::XtrigOnOffResponse>{});
-        return true;
-    case 37:
-        f(Layouts<::mscipcodec::imu_config::SelectSensorsRevBResponse>{});
-        return true;
-    case 38:
-        f(Layouts<::mscipcodec::imu_config::AuxAccelRangeResponse>{});
-        return true;
-    case 39:
-        f(Layouts<::mscipcodec::imu_data::ScaledAccel>{});
-        return true;
-    case 40:
-        f(Layouts<::mscipcodec::imu_data::ScaledGyro>{});
-        return true;
-    case 41:
-        f(Layouts<::mscipcodec::imu_data::ScaledMag>{});
-        return true;
-    case 42:
-        f(Layouts<::mscipcodec::imu_data::DeltaTheta>{});
-        return true;
-    case 43:
-        f(Layouts<::mscipcodec::imu_data::DeltaVelocity>{});
-        return true;
-    case 44:
-        f(Layouts<::mscipcodec::imu_data::ScaledPressure>{});
-        return true;
-    case 45:
-        f(Layouts<::mscipcodec::imu_data::ScaledTemperature>{});
-        return true;
-    case 46:
-        f(Layouts<::mscipcodec::imu_data::GpsCorrelatedTime>{});
-        return true;
-    case 47:
-        f(Layouts<::mscipcodec::imu_data::ScaledAuxAccel>{});
-        return true;
-    default:
-        break;
+    using Calls = detail::CaseCalls<std::remove_reference_t<F>>;
+    if (c < 2 || c >= sizeof Calls::kCalls / sizeof Calls::kCalls[0]) {
+        return false;
     }
-    (void)f;
-    return false;
+    Calls::kCalls[c](f);
+    return true;
 }
 
 /// Calls f(Layouts<...>{}) for the field (set, descriptor) and returns found, or says why not.
