@@ -208,6 +208,26 @@ class _Proto:
             return f"std::array<char, {tref['length']}>"
         return self.type_name(tref["name"])
 
+    def plain_tref(self, tref: dict, seen: tuple = ()) -> bool:
+        """True when every value of the type's fixed size decodes (no bool, union or variable part)."""
+        k = tref["kind"]
+        if k == "primitive":
+            return tref["name"] != "bool"
+        if k in ("string", "enum", "bitfield"):
+            return True
+        if k == "struct" and tref["name"] not in seen:
+            return all(self.plain_param(q, seen + (tref["name"],)) for q in self.types[tref["name"]]["params"])
+        return False
+
+    def plain_param(self, q: dict, seen: tuple = ()) -> bool:
+        c = q["count"]
+        return (
+            not q["optional"]
+            and q["type"]["kind"] != "union"
+            and (c is None or c["kind"] == "fixed")
+            and self.plain_tref(q["type"], seen)
+        )
+
     def param(self, q: dict, siblings: dict[str, dict]) -> dict:
         """Everything a template prints for one parameter (struct member or layout parameter)."""
         t = q["type"]
@@ -286,6 +306,7 @@ class _Proto:
             "type": f"std::optional<{value_type}>" if optional else value_type,
             "optional": optional,
             "shape": shape,
+            "plain": self.plain_param(q),
             "read": ops[0],
             "write": ops[1],
             "json_write": ops[2],
@@ -381,6 +402,7 @@ class _Proto:
             m["params"] = self.params(t["params"])
             m["fixed"] = "true" if t["size"]["fixed"] else "false"
             m["size"] = t["size"]["min"] if t["size"]["fixed"] else 0
+            m["plain"] = all(p["plain"] for p in m["params"])
         else:
             sel = self.types[t["selector_enum"]]
             alts = ["std::monostate"]
@@ -413,6 +435,7 @@ class _Proto:
         for f in fields:
             multi = len(f["variants"]) > 1
             for v in f["variants"]:
+                params = self.params(v["params"], function=v["functions"] is not None)
                 out.append(
                     {
                         "cpp": names[(f["name"], v["device"] if multi else None)],
@@ -422,8 +445,9 @@ class _Proto:
                         "descriptor": f["id"],
                         "device": v["device"] if multi else None,
                         "device_cpp": ident(v["device"]) if multi else None,
-                        "params": self.params(v["params"], function=v["functions"] is not None),
+                        "params": params,
                         "has_optional": any(q["optional"] for q in v["params"]),
+                        "plain": all(q["plain"] for q in params),
                         "role": f["role"],
                     }
                 )
@@ -491,7 +515,73 @@ class _Proto:
             sset = next((s for s in self.p["sets"] if s["id"] == sd["set"]), None)
             if sset and any(k["name"] == "data" for k in kinds):
                 shared = {"kind": ident("data"), "cases": self.lookup_cases(sset["fields"], _set_ns(sset))}
-        return {"sets": sets, "kinds": kinds, "reserved": reserved, "shared": shared}
+        return {
+            "sets": sets,
+            "kinds": kinds,
+            "reserved": reserved,
+            "shared": shared,
+            **self.lookup_table(sets, reserved, shared),
+        }
+
+    def lookup_table(self, sets: list[dict], reserved: list[dict], shared: dict | None) -> dict:
+        """The (set, descriptor) -> case table of lookup.hpp: the same answers as the search order of
+        docs/conformance.md section 2 (set fields, reserved fields of the set's kind, shared data
+        fields), computed here once. Case 0 is an unknown set, 1 an unknown descriptor, 2.. a field."""
+        cases: list[list[str]] = []
+        index: dict[tuple, int] = {}
+
+        def case(c: dict) -> int:
+            key = tuple(c["types"])
+            if key not in index:
+                index[key] = len(cases) + 2
+                cases.append(c["types"])
+            return index[key]
+
+        def kind_of(set_id: int) -> str:
+            for k, r in self.p["set_kinds"].items():
+                if r["first"] <= set_id <= r["last"]:
+                    return ident(k)
+            return "none"
+
+        def row(own: list[dict] | None, kind: str) -> list[int]:
+            # Searched in order: the set's own fields, reserved fields of its kind, shared data fields.
+            found: dict[int, dict] = {}
+            lists = [own or []] + [r["cases"] for r in reserved if r["kind"] == kind]
+            if shared and shared["kind"] == kind:
+                lists.append(shared["cases"])
+            for cs in lists:
+                for c in cs:
+                    found.setdefault(c["descriptor"], c)
+            miss = 1 if own is not None else 0
+            return [case(found[d]) if d in found else miss for d in range(256)]
+
+        rows: list[list[int]] = []
+        row_of: dict[tuple, int] = {}
+
+        def add(r: list[int]) -> int:
+            key = tuple(r)
+            if key not in row_of:
+                row_of[key] = len(rows)
+                rows.append(r)
+            return row_of[key]
+
+        defined = {s["id"]: s for s in sets}
+        undefined: dict[str, int] = {}
+        set_row = []
+        for i in range(256):
+            k = kind_of(i)
+            if i in defined:
+                set_row.append(add(row(defined[i]["cases"], k)))
+            else:
+                if k not in undefined:
+                    undefined[k] = add(row(None, k))
+                set_row.append(undefined[k])
+        return {
+            "cases": [{"index": i + 2, "types": t} for i, t in enumerate(cases)],
+            "set_row": set_row,
+            "rows": rows,
+            "case_type": "std::uint8_t" if len(cases) + 2 <= 256 else "std::uint16_t",
+        }
 
     # ------------------------------------------------------------ limits
     def _value_path(self, tref: dict, seen: tuple = ()) -> int:

@@ -92,14 +92,15 @@ TEST(Checksum, Fletcher16KnownAnswer) {
 // update() works eight bytes a step; it must equal the byte-serial definition (sum1 += b,
 // sum2 += sum1, modulo 256) for every length, alignment and split into two updates.
 TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
-    std::uint8_t bytes[200 + 7];
+    // Lengths past 256 bytes: the lanes are masked once per run of 32 eight-byte blocks.
+    std::uint8_t bytes[600 + 7];
     std::uint32_t state = 12345;
     for (std::uint8_t &b : bytes) {
         state = state * 1103515245u + 12345u;
         b = static_cast<std::uint8_t>(state >> 16);
     }
     for (std::size_t start = 0; start < 8; ++start) {
-        for (std::size_t len = 0; len <= 200; ++len) {
+        for (std::size_t len = 0; len <= 600; ++len) {
             unsigned sum1 = 0;
             unsigned sum2 = 0;
             for (std::size_t i = 0; i < len; ++i) {
@@ -123,6 +124,14 @@ TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
     const pkg::Fletcher16 f = pkg::fletcher16(ones, sizeof ones);
     EXPECT_EQ(f.sum1, 0xFB);
     EXPECT_EQ(f.sum2, 0x71);
+    // 4000 bytes of 0xFF, the largest lane values (16 runs; one unmasked run of all 500 blocks
+    // would overflow a 16-bit lane): sum1 = -4000 = 0x60 (4000 = 0xFA0),
+    // sum2 = -(1 + .. + 4000) = -8002000 = 0x30 (8002000 = 0x7A19D0).
+    std::uint8_t many[4000];
+    std::memset(many, 0xFF, sizeof many);
+    const pkg::Fletcher16 g = pkg::fletcher16(many, sizeof many);
+    EXPECT_EQ(g.sum1, 0x60);
+    EXPECT_EQ(g.sum2, 0x30);
 }
 
 TEST(Checksum, BuilderWritesHeaderAndChecksum) {
@@ -282,6 +291,57 @@ TEST(Dispatch, ReadmeExampleShape) {
     if (counter.undecoded == 1) {
         EXPECT_FALSE(counter.last_error.empty());
     }
+}
+
+// Every layout that decodes by straight loads (Plain<T>, decode_field's fast path): loading
+// kSize distinct bytes and encoding the value back gives the same bytes, and so does the checked
+// Codec<T>::read, which must also take exactly those bytes.
+struct PlainLayoutCheck {
+    int plain = 0;
+    std::vector<std::string> failures;
+
+    template <class T, class... Rest> void operator()(pkg::Layouts<T, Rest...>) {
+        one<T>();
+        (one<Rest>(), ...);
+    }
+    template <class T> void one() {
+        if constexpr (pkg::Plain<T>::kPlain) {
+            constexpr std::size_t n = pkg::Plain<T>::kSize;
+            std::uint8_t bytes[n + 1] = {};
+            for (std::size_t i = 0; i < n; ++i) {
+                bytes[i] = static_cast<std::uint8_t>(0x5A + 37 * i);
+            }
+            T straight;
+            pkg::Plain<T>::load(bytes, straight);
+            T checked{};
+            pkg::Reader r(bytes, n);
+            pkg::DecodeError err;
+            const bool ok = pkg::Codec<T>::read(r, checked, err) && r.left() == 0;
+            std::uint8_t out1[pkg::kMaxFieldData + 1];
+            std::uint8_t out2[pkg::kMaxFieldData + 1];
+            std::size_t w1 = 0;
+            std::size_t w2 = 0;
+            const bool same = pkg::encode(straight, out1, sizeof out1, w1) == pkg::EncodeError::none &&
+                              pkg::encode(checked, out2, sizeof out2, w2) == pkg::EncodeError::none &&
+                              w1 == n && w2 == n && std::memcmp(out1, bytes, n) == 0 &&
+                              std::memcmp(out2, bytes, n) == 0;
+            if (!ok || !same) {
+                failures.push_back(T::kName);
+            }
+            ++plain;
+        }
+    }
+};
+
+TEST(Dispatch, PlainLayoutsLoadLikeTheCheckedDecode) {
+    PlainLayoutCheck check;
+    unsigned cases = 0;
+    for (unsigned c = 2; pkg::visit_case(c, check); ++c) {
+        ++cases;
+    }
+    EXPECT_GT(cases, 0u);
+    EXPECT_GT(check.plain, 0);
+    EXPECT_EQ(check.failures, std::vector<std::string>{});
 }
 
 TEST(Fields, TrailingMessages) {

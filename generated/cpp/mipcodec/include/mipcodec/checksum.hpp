@@ -20,8 +20,8 @@ struct Fletcher16 {
     /// little-endian word are spread into four 16-bit lanes and summed lane by lane: E, O (even,
     /// odd), R (running sum of both) and Q (sum of R after each block), so sum_k S_k = hsum(R),
     /// sum_k (K - 1 - k) S_k = hsum(Q) - hsum(R), and sum_k W_k comes from E and O with the lane
-    /// weights (8, 6, 4, 2) and (7, 5, 3, 1). Only the sums modulo 256 matter: every lane is
-    /// masked after each add (no carry into the next lane), and a multiply by lane constants adds
+    /// weights (8, 6, 4, 2) and (7, 5, 3, 1). Only the sums modulo 256 matter: lanes are masked
+    /// before they could carry into the next lane, and a multiply by lane constants adds
     /// the lanes into the top one (at most 255 * 20). Unsigned arithmetic wraps modulo 2^64.
     void update(const std::uint8_t *data, std::size_t size) {
         constexpr std::uint64_t kLanes = 0x00FF00FF00FF00FFu;
@@ -34,17 +34,26 @@ struct Fletcher16 {
             std::uint64_t o_sum = 0;
             std::uint64_t r = 0;
             std::uint64_t q = 0;
-            std::uint64_t blocks = 0;
-            for (; i + 8 <= size; i += 8) {
-                const std::uint64_t w = load_le64(data + i);
-                const std::uint64_t even = w & kLanes;
-                const std::uint64_t odd = (w >> 8) & kLanes;
-                e_sum = (e_sum + even) & kLanes;
-                o_sum = (o_sum + odd) & kLanes;
-                r = (r + even + odd) & kLanes;
-                q = (q + r) & kLanes;
-                ++blocks;
+            // E, O and R are masked once per run of at most kRun blocks (a lane then stays below
+            // 255 + 2 * 255 * kRun < 2^16, so no carry crosses lanes), Q after every block.
+            constexpr std::size_t kRun = 32;
+            const std::size_t whole = size & ~static_cast<std::size_t>(7);
+            while (i < whole) {
+                const std::size_t end = whole - i > 8 * kRun ? i + 8 * kRun : whole;
+                for (; i < end; i += 8) {
+                    const std::uint64_t w = load_le64(data + i);
+                    const std::uint64_t even = w & kLanes;
+                    const std::uint64_t odd = (w >> 8) & kLanes;
+                    e_sum += even;
+                    o_sum += odd;
+                    r += even + odd;
+                    q = (q + r) & kLanes;
+                }
+                e_sum &= kLanes;
+                o_sum &= kLanes;
+                r &= kLanes;
             }
+            const std::uint64_t blocks = whole / 8;
             const std::uint64_t block_sum = (r * kOnes) >> 48;
             s2 += 8 * blocks * s1 + 8 * (((q * kOnes) >> 48) - block_sum) +
                   ((e_sum * 0x0008000600040002u) >> 48) + ((o_sum * 0x0007000500030001u) >> 48);

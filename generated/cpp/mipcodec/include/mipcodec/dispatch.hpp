@@ -22,31 +22,58 @@ template <class Visitor> struct DecodeLayouts {
 
     template <class T, class... Rest> void operator()(Layouts<T, Rest...>) const {
         if constexpr (!T::kHasVariants) {
-            T value{};
-            DecodeError err;
-            if (decode(data, size, value, err)) {
-                visitor.field(static_cast<const T &>(value));
-            } else {
-                visitor.raw(static_cast<const DecodeError &>(err));
+            if constexpr (Plain<T>::kPlain) {
+                if (size == Plain<T>::kSize) {
+                    T value;
+                    Plain<T>::load(data, value);
+                    visitor.field(static_cast<const T &>(value));
+                    return;
+                }
             }
+            checked<T>();
         } else {
-            // Only the chosen device's layout when the field has one for it, else all in order.
-            const bool chosen =
-                device.has_value() && ((T::kDeviceId == *device) || ... || (Rest::kDeviceId == *device));
-            DecodeError first;
-            bool have_first = false;
-            bool done = false;
-            attempt<T>(chosen, first, have_first, done);
-            (attempt<Rest>(chosen, first, have_first, done), ...);
-            if (!done) {
-                visitor.raw(static_cast<const DecodeError &>(first));
-            }
+            variants<T, Rest...>();
+        }
+    }
+
+    // Fields with per-device layouts: only the chosen device's layout when the field has one
+    // for it, else all in order; the first that decodes wins, else the first error.
+    template <class T, class... Rest> MIPCODEC_NOINLINE void variants() const {
+        const bool chosen =
+            device.has_value() && ((T::kDeviceId == *device) || ... || (Rest::kDeviceId == *device));
+        DecodeError first;
+        bool have_first = false;
+        bool done = false;
+        attempt<T>(chosen, first, have_first, done);
+        (attempt<Rest>(chosen, first, have_first, done), ...);
+        if (!done) {
+            visitor.raw(static_cast<const DecodeError &>(first));
+        }
+    }
+
+    // The checked decode of a single-layout field (and its error), out of the straight path.
+    template <class T> MIPCODEC_NOINLINE void checked() const {
+        T value{};
+        DecodeError err;
+        if (decode(data, size, value, err)) {
+            visitor.field(static_cast<const T &>(value));
+        } else {
+            visitor.raw(static_cast<const DecodeError &>(err));
         }
     }
 
     template <class T> void attempt(bool chosen, DecodeError &first, bool &have_first, bool &done) const {
         if (done || (chosen && T::kDeviceId != *device)) {
             return;
+        }
+        if constexpr (Plain<T>::kPlain) {
+            if (size == Plain<T>::kSize) {
+                T value;
+                Plain<T>::load(data, value);
+                visitor.field(static_cast<const T &>(value));
+                done = true;
+                return;
+            }
         }
         T value{};
         DecodeError err;

@@ -9010,6 +9010,12 @@ namespace mipcodec {
 template <> struct Codec<::mipcodec::types::AidingLlhValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::AidingLlhValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::AidingLlhValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9026,6 +9032,12 @@ template <> struct Codec<::mipcodec::types::AidingLlhValidFlags> {
 template <> struct Codec<::mipcodec::types::AidingVectorValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::AidingVectorValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::AidingVectorValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9042,6 +9054,12 @@ template <> struct Codec<::mipcodec::types::AidingVectorValidFlags> {
 template <> struct Codec<::mipcodec::types::ConstellationOptions> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::ConstellationOptions &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::ConstellationOptions &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9058,6 +9076,12 @@ template <> struct Codec<::mipcodec::types::ConstellationOptions> {
 template <> struct Codec<::mipcodec::types::Cv7BitFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint32_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7BitFlags &v) {
+        std::uint32_t raw{};
+        Codec<std::uint32_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7BitFlags &v, DecodeError &err) {
         std::uint32_t raw{};
         if (!Codec<std::uint32_t>::read(r, raw, err)) {
@@ -9074,6 +9098,12 @@ template <> struct Codec<::mipcodec::types::Cv7BitFlags> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitGnss13> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitGnss13 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitGnss13 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9090,6 +9120,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitGnss13> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitGnss14> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitGnss14 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitGnss14 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9106,6 +9142,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitGnss14> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu4> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitImu4 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu4 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9122,6 +9164,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu4> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu5> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitImu5 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu5 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9138,6 +9186,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu5> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu6> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitImu6 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu6 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9154,6 +9208,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu6> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu7> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitImu7 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitImu7 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9170,6 +9230,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitImu7> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitNav8> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitNav8 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitNav8 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9186,6 +9252,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitNav8> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem0> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitSystem0 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitSystem0 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9202,6 +9274,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem0> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem2> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitSystem2 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitSystem2 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9218,6 +9296,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem2> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem3> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBitSystem3 &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBitSystem3 &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9234,6 +9318,12 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBitSystem3> {
 template <> struct Codec<::mipcodec::types::EstimationControlFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::EstimationControlFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::EstimationControlFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9250,6 +9340,13 @@ template <> struct Codec<::mipcodec::types::EstimationControlFlags> {
 template <> struct Codec<::mipcodec::types::ExternalTimeDeltaValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::ExternalTimeDeltaValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::ExternalTimeDeltaValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9266,6 +9363,13 @@ template <> struct Codec<::mipcodec::types::ExternalTimeDeltaValidFlags> {
 template <> struct Codec<::mipcodec::types::ExternalTimestampValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::ExternalTimestampValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::ExternalTimestampValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9282,6 +9386,13 @@ template <> struct Codec<::mipcodec::types::ExternalTimestampValidFlags> {
 template <> struct Codec<::mipcodec::types::FilterAidingMeasurementIndicator> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::FilterAidingMeasurementIndicator &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterAidingMeasurementIndicator &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9298,6 +9409,13 @@ template <> struct Codec<::mipcodec::types::FilterAidingMeasurementIndicator> {
 template <> struct Codec<::mipcodec::types::FilterDualAntennaStatusFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::FilterDualAntennaStatusFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterDualAntennaStatusFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9314,6 +9432,13 @@ template <> struct Codec<::mipcodec::types::FilterDualAntennaStatusFlags> {
 template <> struct Codec<::mipcodec::types::FilterGnssAidingStatusFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::FilterGnssAidingStatusFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterGnssAidingStatusFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9330,6 +9455,12 @@ template <> struct Codec<::mipcodec::types::FilterGnssAidingStatusFlags> {
 template <> struct Codec<::mipcodec::types::FilterHeadingSourceFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::FilterHeadingSourceFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterHeadingSourceFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9346,6 +9477,13 @@ template <> struct Codec<::mipcodec::types::FilterHeadingSourceFlags> {
 template <> struct Codec<::mipcodec::types::FilterHeadingUpdateValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::FilterHeadingUpdateValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterHeadingUpdateValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9362,6 +9500,12 @@ template <> struct Codec<::mipcodec::types::FilterHeadingUpdateValidFlags> {
 template <> struct Codec<::mipcodec::types::FilterOutputValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::FilterOutputValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterOutputValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9378,6 +9522,12 @@ template <> struct Codec<::mipcodec::types::FilterOutputValidFlags> {
 template <> struct Codec<::mipcodec::types::FilterStatusFlagsCv7> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::FilterStatusFlagsCv7 &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterStatusFlagsCv7 &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9394,6 +9544,12 @@ template <> struct Codec<::mipcodec::types::FilterStatusFlagsCv7> {
 template <> struct Codec<::mipcodec::types::FilterStatusFlagsGx5> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::FilterStatusFlagsGx5 &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::FilterStatusFlagsGx5 &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9410,6 +9566,12 @@ template <> struct Codec<::mipcodec::types::FilterStatusFlagsGx5> {
 template <> struct Codec<::mipcodec::types::GnssBaseStationIndicators> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssBaseStationIndicators &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssBaseStationIndicators &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9426,6 +9588,13 @@ template <> struct Codec<::mipcodec::types::GnssBaseStationIndicators> {
 template <> struct Codec<::mipcodec::types::GnssBaseStationInfoValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssBaseStationInfoValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssBaseStationInfoValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9442,6 +9611,12 @@ template <> struct Codec<::mipcodec::types::GnssBaseStationInfoValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssBeidouSignals> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssBeidouSignals &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssBeidouSignals &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9458,6 +9633,12 @@ template <> struct Codec<::mipcodec::types::GnssBeidouSignals> {
 template <> struct Codec<::mipcodec::types::GnssClockInfo2ValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssClockInfo2ValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssClockInfo2ValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9474,6 +9655,12 @@ template <> struct Codec<::mipcodec::types::GnssClockInfo2ValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssClockInfoValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssClockInfoValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssClockInfoValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9490,6 +9677,13 @@ template <> struct Codec<::mipcodec::types::GnssClockInfoValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssDgnssChannelStatusValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssDgnssChannelStatusValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssDgnssChannelStatusValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9506,6 +9700,12 @@ template <> struct Codec<::mipcodec::types::GnssDgnssChannelStatusValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssDgnssInfoValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssDgnssInfoValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssDgnssInfoValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9522,6 +9722,12 @@ template <> struct Codec<::mipcodec::types::GnssDgnssInfoValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssDopValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssDopValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssDopValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9538,6 +9744,13 @@ template <> struct Codec<::mipcodec::types::GnssDopValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssEcefPositionValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssEcefPositionValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssEcefPositionValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9554,6 +9767,13 @@ template <> struct Codec<::mipcodec::types::GnssEcefPositionValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssEcefVelocityValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssEcefVelocityValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssEcefVelocityValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9570,6 +9790,12 @@ template <> struct Codec<::mipcodec::types::GnssEcefVelocityValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssEphemerisValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssEphemerisValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssEphemerisValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9586,6 +9812,12 @@ template <> struct Codec<::mipcodec::types::GnssEphemerisValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssFixFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssFixFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssFixFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9602,6 +9834,12 @@ template <> struct Codec<::mipcodec::types::GnssFixFlags> {
 template <> struct Codec<::mipcodec::types::GnssFixInfoValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssFixInfoValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssFixInfoValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9618,6 +9856,12 @@ template <> struct Codec<::mipcodec::types::GnssFixInfoValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssGalileoSignals> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssGalileoSignals &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssGalileoSignals &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9634,6 +9878,13 @@ template <> struct Codec<::mipcodec::types::GnssGalileoSignals> {
 template <> struct Codec<::mipcodec::types::GnssGlonassEphemerisValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssGlonassEphemerisValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssGlonassEphemerisValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9650,6 +9901,12 @@ template <> struct Codec<::mipcodec::types::GnssGlonassEphemerisValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssGlonassSignals> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssGlonassSignals &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssGlonassSignals &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9666,6 +9923,12 @@ template <> struct Codec<::mipcodec::types::GnssGlonassSignals> {
 template <> struct Codec<::mipcodec::types::GnssGpsSignals> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssGpsSignals &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssGpsSignals &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9682,6 +9945,12 @@ template <> struct Codec<::mipcodec::types::GnssGpsSignals> {
 template <> struct Codec<::mipcodec::types::GnssGpsTimeValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssGpsTimeValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssGpsTimeValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9698,6 +9967,13 @@ template <> struct Codec<::mipcodec::types::GnssGpsTimeValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssHardwareStatusValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssHardwareStatusValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssHardwareStatusValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9714,6 +9990,12 @@ template <> struct Codec<::mipcodec::types::GnssHardwareStatusValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssLeapSecondsValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssLeapSecondsValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssLeapSecondsValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9730,6 +10012,12 @@ template <> struct Codec<::mipcodec::types::GnssLeapSecondsValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssLlhPositionValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssLlhPositionValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssLlhPositionValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9746,6 +10034,12 @@ template <> struct Codec<::mipcodec::types::GnssLlhPositionValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssNedVelocityValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssNedVelocityValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssNedVelocityValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9762,6 +10056,12 @@ template <> struct Codec<::mipcodec::types::GnssNedVelocityValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssRawValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssRawValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssRawValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9778,6 +10078,13 @@ template <> struct Codec<::mipcodec::types::GnssRawValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssSatelliteStatusValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::GnssSatelliteStatusValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssSatelliteStatusValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9794,6 +10101,12 @@ template <> struct Codec<::mipcodec::types::GnssSatelliteStatusValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssSbasInfoValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssSbasInfoValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssSbasInfoValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9810,6 +10123,12 @@ template <> struct Codec<::mipcodec::types::GnssSbasInfoValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssSbasStatus> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssSbasStatus &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssSbasStatus &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9826,6 +10145,12 @@ template <> struct Codec<::mipcodec::types::GnssSbasStatus> {
 template <> struct Codec<::mipcodec::types::GnssSvFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssSvFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssSvFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9842,6 +10167,12 @@ template <> struct Codec<::mipcodec::types::GnssSvFlags> {
 template <> struct Codec<::mipcodec::types::GnssSvInfoValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssSvInfoValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssSvInfoValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9858,6 +10189,12 @@ template <> struct Codec<::mipcodec::types::GnssSvInfoValidFlags> {
 template <> struct Codec<::mipcodec::types::GnssUtcTimeValidFlagsCv7> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssUtcTimeValidFlagsCv7 &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssUtcTimeValidFlagsCv7 &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9874,6 +10211,12 @@ template <> struct Codec<::mipcodec::types::GnssUtcTimeValidFlagsCv7> {
 template <> struct Codec<::mipcodec::types::GnssUtcTimeValidFlagsGx5> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssUtcTimeValidFlagsGx5 &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GnssUtcTimeValidFlagsGx5 &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9890,6 +10233,12 @@ template <> struct Codec<::mipcodec::types::GnssUtcTimeValidFlagsGx5> {
 template <> struct Codec<::mipcodec::types::GpioPinMode> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioPinMode &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GpioPinMode &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9906,6 +10255,12 @@ template <> struct Codec<::mipcodec::types::GpioPinMode> {
 template <> struct Codec<::mipcodec::types::GpioPinStates> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioPinStates &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::GpioPinStates &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9922,6 +10277,12 @@ template <> struct Codec<::mipcodec::types::GpioPinStates> {
 template <> struct Codec<::mipcodec::types::Gx5BitFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint32_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Gx5BitFlags &v) {
+        std::uint32_t raw{};
+        Codec<std::uint32_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::Gx5BitFlags &v, DecodeError &err) {
         std::uint32_t raw{};
         if (!Codec<std::uint32_t>::read(r, raw, err)) {
@@ -9938,6 +10299,12 @@ template <> struct Codec<::mipcodec::types::Gx5BitFlags> {
 template <> struct Codec<::mipcodec::types::HeadingAlignmentMethods> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::HeadingAlignmentMethods &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::HeadingAlignmentMethods &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -9954,6 +10321,12 @@ template <> struct Codec<::mipcodec::types::HeadingAlignmentMethods> {
 template <> struct Codec<::mipcodec::types::OdometerDataValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::OdometerDataValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::OdometerDataValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9970,6 +10343,12 @@ template <> struct Codec<::mipcodec::types::OdometerDataValidFlags> {
 template <> struct Codec<::mipcodec::types::OverrangeStatusFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::OverrangeStatusFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::OverrangeStatusFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -9986,6 +10365,12 @@ template <> struct Codec<::mipcodec::types::OverrangeStatusFlags> {
 template <> struct Codec<::mipcodec::types::RtkCorrectionsEpochStatus> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::RtkCorrectionsEpochStatus &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::RtkCorrectionsEpochStatus &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -10002,6 +10387,13 @@ template <> struct Codec<::mipcodec::types::RtkCorrectionsEpochStatus> {
 template <> struct Codec<::mipcodec::types::RtkCorrectionsStatusValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::RtkCorrectionsStatusValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::RtkCorrectionsStatusValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -10018,6 +10410,12 @@ template <> struct Codec<::mipcodec::types::RtkCorrectionsStatusValidFlags> {
 template <> struct Codec<::mipcodec::types::SbasOptions> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::SbasOptions &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::SbasOptions &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -10034,6 +10432,12 @@ template <> struct Codec<::mipcodec::types::SbasOptions> {
 template <> struct Codec<::mipcodec::types::SensorGpsTimestampFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::SensorGpsTimestampFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::SensorGpsTimestampFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -10050,6 +10454,13 @@ template <> struct Codec<::mipcodec::types::SensorGpsTimestampFlags> {
 template <> struct Codec<::mipcodec::types::SharedGpsTimestampValidFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     ::mipcodec::types::SharedGpsTimestampValidFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::SharedGpsTimestampValidFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -10066,6 +10477,12 @@ template <> struct Codec<::mipcodec::types::SharedGpsTimestampValidFlags> {
 template <> struct Codec<::mipcodec::types::TareAxes> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::TareAxes &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::TareAxes &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -10082,6 +10499,12 @@ template <> struct Codec<::mipcodec::types::TareAxes> {
 template <> struct Codec<::mipcodec::types::TriggerStatus> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint8_t);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::TriggerStatus &v) {
+        std::uint8_t raw{};
+        Codec<std::uint8_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mipcodec::types::TriggerStatus &v, DecodeError &err) {
         std::uint8_t raw{};
         if (!Codec<std::uint8_t>::read(r, raw, err)) {
@@ -10098,6 +10521,19 @@ template <> struct Codec<::mipcodec::types::TriggerStatus> {
 template <> struct Codec<::mipcodec::types::ActionGpioParams> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::ActionGpioMode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::ActionGpioParams &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.pin);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::ActionGpioMode>::load(p, v.mode);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::ActionGpioParams &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10214,6 +10650,19 @@ template <> struct Codec<::mipcodec::types::ActionParams> {
 template <> struct Codec<::mipcodec::types::ActionStatusEntry> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::ActionType>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::ActionStatusEntry &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::ActionType>::load(p, v.action_type);
+        p += Plain<::mipcodec::types::ActionType>::kSize;
+        Plain<std::uint8_t>::load(p, v.trigger_id);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::ActionStatusEntry &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10241,6 +10690,16 @@ template <> struct Codec<::mipcodec::types::ActionStatusEntry> {
 template <> struct Codec<::mipcodec::types::AidingFrameEuler> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 12;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::AidingFrameEuler &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.euler);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::AidingFrameEuler &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10263,6 +10722,16 @@ template <> struct Codec<::mipcodec::types::AidingFrameEuler> {
 template <> struct Codec<::mipcodec::types::AidingFrameQuaternion> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 16;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 4>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::AidingFrameQuaternion &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 4>>::load(p, v.quaternion);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::AidingFrameQuaternion &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10326,6 +10795,21 @@ template <> struct Codec<::mipcodec::types::AidingFrameRotation> {
 template <> struct Codec<::mipcodec::types::AidingTime> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 10;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AidingTimebase>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<std::uint64_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::AidingTime &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTimebase>::load(p, v.timebase);
+        p += Plain<::mipcodec::types::AidingTimebase>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint64_t>::load(p, v.nanoseconds);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::AidingTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10358,6 +10842,19 @@ template <> struct Codec<::mipcodec::types::AidingTime> {
 template <> struct Codec<::mipcodec::types::CombinationParams> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 6;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint16_t>::kSize + Plain<std::array<std::uint8_t, 4>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::CombinationParams &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.logic_table);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::array<std::uint8_t, 4>>::load(p, v.input_triggers);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::CombinationParams &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10385,6 +10882,27 @@ template <> struct Codec<::mipcodec::types::CombinationParams> {
 template <> struct Codec<::mipcodec::types::ConstellationSettings> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 6;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::Gx5ConstellationId>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+                                              Plain<std::uint8_t>::kSize +
+                                              Plain<::mipcodec::types::ConstellationOptions>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::ConstellationSettings &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Gx5ConstellationId>::load(p, v.constellation_id);
+        p += Plain<::mipcodec::types::Gx5ConstellationId>::kSize;
+        Plain<std::uint8_t>::load(p, v.enable);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_channels);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.max_channels);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::ConstellationOptions>::load(p, v.option_flags);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::ConstellationSettings &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10427,6 +10945,57 @@ template <> struct Codec<::mipcodec::types::ConstellationSettings> {
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBit> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 16;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::Cv7ContinuousBitSystem0>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitSystem2>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitSystem3>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitImu4>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitImu5>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitImu6>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitImu7>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitNav8>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitGnss13>::kSize +
+        Plain<::mipcodec::types::Cv7ContinuousBitGnss14>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Cv7ContinuousBit &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Cv7ContinuousBitSystem0>::load(p, v.system_byte_0);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitSystem0>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_byte_1);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitSystem2>::load(p, v.system_byte_2);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitSystem2>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitSystem3>::load(p, v.system_byte_3);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitSystem3>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitImu4>::load(p, v.imu_byte_4);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitImu4>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitImu5>::load(p, v.imu_byte_5);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitImu5>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitImu6>::load(p, v.imu_byte_6);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitImu6>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitImu7>::load(p, v.imu_byte_7);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitImu7>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitNav8>::load(p, v.nav_byte_8);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitNav8>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_byte_9);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_byte_10);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_byte_11);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_byte_12);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitGnss13>::load(p, v.gnss_byte_13);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitGnss13>::kSize;
+        Plain<::mipcodec::types::Cv7ContinuousBitGnss14>::load(p, v.gnss_byte_14);
+        p += Plain<::mipcodec::types::Cv7ContinuousBitGnss14>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved_byte_15);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBit &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10524,6 +11093,18 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBit> {
 template <> struct Codec<::mipcodec::types::DescriptorRate> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 3;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::DescriptorRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.descriptor);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.decimation);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::DescriptorRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10551,6 +11132,29 @@ template <> struct Codec<::mipcodec::types::DescriptorRate> {
 template <> struct Codec<::mipcodec::types::DeviceInfo> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 82;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint16_t>::kSize + Plain<std::array<char, 16>>::kSize +
+        Plain<std::array<char, 16>>::kSize + Plain<std::array<char, 16>>::kSize +
+        Plain<std::array<char, 16>>::kSize + Plain<std::array<char, 16>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::DeviceInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.firmware_version);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::array<char, 16>>::load(p, v.model_name);
+        p += Plain<std::array<char, 16>>::kSize;
+        Plain<std::array<char, 16>>::load(p, v.model_number);
+        p += Plain<std::array<char, 16>>::kSize;
+        Plain<std::array<char, 16>>::load(p, v.serial_number);
+        p += Plain<std::array<char, 16>>::kSize;
+        Plain<std::array<char, 16>>::load(p, v.lot_number);
+        p += Plain<std::array<char, 16>>::kSize;
+        Plain<std::array<char, 16>>::load(p, v.device_options);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::DeviceInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10598,6 +11202,21 @@ template <> struct Codec<::mipcodec::types::DeviceInfo> {
 template <> struct Codec<::mipcodec::types::GnssReceiverInfoEntry> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 34;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::array<char, 32>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GnssReceiverInfoEntry &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.receiver_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.mip_data_descriptor_set);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<char, 32>>::load(p, v.description);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GnssReceiverInfoEntry &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10630,6 +11249,16 @@ template <> struct Codec<::mipcodec::types::GnssReceiverInfoEntry> {
 template <> struct Codec<::mipcodec::types::GpioBehaviorUnused> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioUnusedBehavior>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioBehaviorUnused &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioUnusedBehavior>::load(p, v.behavior);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUnused &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10652,6 +11281,16 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorUnused> {
 template <> struct Codec<::mipcodec::types::GpioBehaviorIo> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioIoBehavior>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioBehaviorIo &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioIoBehavior>::load(p, v.behavior);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GpioBehaviorIo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10674,6 +11313,16 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorIo> {
 template <> struct Codec<::mipcodec::types::GpioBehaviorPps> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioPpsBehavior>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioBehaviorPps &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioPpsBehavior>::load(p, v.behavior);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GpioBehaviorPps &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10696,6 +11345,16 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorPps> {
 template <> struct Codec<::mipcodec::types::GpioBehaviorEncoder> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioEncoderBehavior>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioBehaviorEncoder &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioEncoderBehavior>::load(p, v.behavior);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GpioBehaviorEncoder &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10718,6 +11377,16 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorEncoder> {
 template <> struct Codec<::mipcodec::types::GpioBehaviorTimestamp> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioTimestampBehavior>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioBehaviorTimestamp &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioTimestampBehavior>::load(p, v.behavior);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GpioBehaviorTimestamp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10740,6 +11409,16 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorTimestamp> {
 template <> struct Codec<::mipcodec::types::GpioBehaviorUart> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioUartBehavior>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::GpioBehaviorUart &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioUartBehavior>::load(p, v.behavior);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUart &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10851,6 +11530,21 @@ template <> struct Codec<::mipcodec::types::GpioBehavior> {
 template <> struct Codec<::mipcodec::types::Gx5BasicStatus> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 10;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint32_t>::kSize + Plain<std::uint16_t>::kSize + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Gx5BasicStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint32_t>::load(p, v.status_flags);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.system_state);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.system_timer);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::Gx5BasicStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -10883,6 +11577,63 @@ template <> struct Codec<::mipcodec::types::Gx5BasicStatus> {
 template <> struct Codec<::mipcodec::types::Gx5DiagnosticStatus> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 70;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint32_t>::kSize + Plain<std::uint16_t>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Gx5DiagnosticStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint32_t>::load(p, v.status_flags);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.system_state);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.system_timer);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.gnss_power_state);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.pps_pulse_count);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.last_pps_time);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.imu_stream_enabled);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.gnss_stream_enabled);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.filter_stream_enabled);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.imu_dropped_packets);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.gnss_dropped_packets);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.filter_dropped_packets);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.com_bytes_written);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.com_bytes_read);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.com_write_overruns);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.imu_parse_errors);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.imu_messages_read);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.last_imu_message_time);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.gnss_parse_errors);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.gnss_messages_read);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.last_gnss_message_time);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::Gx5DiagnosticStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11046,6 +11797,18 @@ template <> struct Codec<::mipcodec::types::Gx5DeviceStatus> {
 template <> struct Codec<::mipcodec::types::Gx5PollDescriptor> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 3;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::Gx5PollDescriptor &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.descriptor);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.reserved);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::Gx5PollDescriptor &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11073,6 +11836,23 @@ template <> struct Codec<::mipcodec::types::Gx5PollDescriptor> {
 template <> struct Codec<::mipcodec::types::NmeaMessage> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 5;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::NmeaMessage &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.message_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.talker_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.source_desc_set);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.decimation);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::NmeaMessage &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11110,6 +11890,18 @@ template <> struct Codec<::mipcodec::types::NmeaMessage> {
 template <> struct Codec<::mipcodec::types::SensorRangeEntry> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 5;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::SensorRangeEntry &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.setting);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.range);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::SensorRangeEntry &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11137,6 +11929,19 @@ template <> struct Codec<::mipcodec::types::SensorRangeEntry> {
 template <> struct Codec<::mipcodec::types::SupportedActionType> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::ActionType>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::SupportedActionType &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::ActionType>::load(p, v.type);
+        p += Plain<::mipcodec::types::ActionType>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::SupportedActionType &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11196,6 +12001,19 @@ template <> struct Codec<::mipcodec::types::SupportedActions> {
 template <> struct Codec<::mipcodec::types::SupportedTriggerType> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::TriggerType>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::SupportedTriggerType &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::TriggerType>::load(p, v.type);
+        p += Plain<::mipcodec::types::TriggerType>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::SupportedTriggerType &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11296,6 +12114,28 @@ template <> struct Codec<::mipcodec::types::SupportedEventsInfo> {
 template <> struct Codec<::mipcodec::types::ThresholdParams> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 20;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::ThresholdType>::kSize + Plain<double>::kSize + Plain<double>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::ThresholdParams &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.desc_set);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.field_desc);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.param_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::ThresholdType>::load(p, v.type);
+        p += Plain<::mipcodec::types::ThresholdType>::kSize;
+        Plain<double>::load(p, v.low_thres);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.high_thres);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::ThresholdParams &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11343,6 +12183,19 @@ template <> struct Codec<::mipcodec::types::ThresholdParams> {
 template <> struct Codec<::mipcodec::types::TriggerGpioParams> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::TriggerGpioMode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::TriggerGpioParams &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.pin);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::TriggerGpioMode>::load(p, v.mode);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::TriggerGpioParams &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -11434,6 +12287,19 @@ template <> struct Codec<::mipcodec::types::TriggerParams> {
 template <> struct Codec<::mipcodec::types::TriggerStatusEntry> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::TriggerType>::kSize + Plain<::mipcodec::types::TriggerStatus>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, ::mipcodec::types::TriggerStatusEntry &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::TriggerType>::load(p, v.type);
+        p += Plain<::mipcodec::types::TriggerType>::kSize;
+        Plain<::mipcodec::types::TriggerStatus>::load(p, v.status);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mipcodec::types::TriggerStatusEntry &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -15,6 +15,25 @@
 
 #include "mipcodec/framing.hpp"
 
+/// Keeps a function out of line (the checked and error paths of decode_field), so that the
+/// straight path it is called from needs no stack frame.
+#if defined(__GNUC__) || defined(__clang__)
+#define MIPCODEC_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define MIPCODEC_NOINLINE __declspec(noinline)
+#else
+#define MIPCODEC_NOINLINE
+#endif
+/// Inlines the straight loads of plain layouts (Plain<V>::load) into their caller: they are a
+/// few loads and byte swaps, but a big caller (the switch of visit_case) would not inline them.
+#if defined(__GNUC__) || defined(__clang__)
+#define MIPCODEC_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define MIPCODEC_INLINE __forceinline
+#else
+#define MIPCODEC_INLINE inline
+#endif
+
 namespace mipcodec {
 
 /// A vector with a fixed capacity N (counted and `remaining` arrays); no heap.
@@ -373,14 +392,14 @@ class Reader {
         pos_ += n;
         return v;
     }
-    static std::uint64_t load2(const std::uint8_t *p) {
+    MIPCODEC_INLINE static std::uint64_t load2(const std::uint8_t *p) {
         if constexpr (kBigEndian) {
             return static_cast<std::uint64_t>(p[0]) << 8 | p[1];
         } else {
             return static_cast<std::uint64_t>(p[1]) << 8 | p[0];
         }
     }
-    static std::uint64_t load4(const std::uint8_t *p) {
+    MIPCODEC_INLINE static std::uint64_t load4(const std::uint8_t *p) {
         if constexpr (kBigEndian) {
             return static_cast<std::uint64_t>(p[0]) << 24 | static_cast<std::uint64_t>(p[1]) << 16 |
                    static_cast<std::uint64_t>(p[2]) << 8 | p[3];
@@ -453,16 +472,65 @@ class Writer {
     EncodeError error_ = EncodeError::none;
 };
 
+/// An N-byte unsigned integer (N in 1, 2, 4, 8) in the protocol's byte order, read from p
+/// without checks (the caller knows N bytes are there): one load and a byte swap.
+template <std::size_t N> MIPCODEC_INLINE std::uint64_t load_uint(const std::uint8_t *p) {
+    static_assert(N == 1 || N == 2 || N == 4 || N == 8, "load_uint: 1, 2, 4 or 8 bytes");
+    if constexpr (N == 1) {
+        return p[0];
+    } else if constexpr (N == 2) {
+        return Reader::load2(p);
+    } else if constexpr (N == 4) {
+        return Reader::load4(p);
+    } else if constexpr (kBigEndian) {
+        return Reader::load4(p) << 32 | Reader::load4(p + 4);
+    } else {
+        return Reader::load4(p + 4) << 32 | Reader::load4(p);
+    }
+}
+
 /// Binary codec of a wire type: read(Reader&, T&, DecodeError&) and write(Writer&, const T&).
 /// kFixedSize/kSize give the encoded size when it does not depend on the value.
 /// Specialised here for primitives and enums, and in the generated headers for every type and layout.
 template <class T, class Enable = void> struct Codec;
+
+/// Plain<V>: V (a parameter's value type: a wire type or a std::array of one) is decoded by
+/// straight loads when its data has exactly Plain<V>::kSize bytes: every byte pattern of that
+/// size is a valid value (no bool, union, optional or variable-length array inside), so the
+/// checked Codec<T>::read cannot fail on it and gives the same value. Codec<T>::kPlain and
+/// Codec<T>::load(p, v) (reads kSize bytes at p, no checks) say so for a wire type.
+template <class V, class Enable = void> struct Plain {
+    static constexpr bool kPlain = false;
+    static constexpr std::size_t kSize = 0;
+};
+template <class V> struct Plain<V, std::enable_if_t<Codec<V>::kPlain>> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kSize = Codec<V>::kSize;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, V &v) {
+        Codec<V>::load(p, v);
+    }
+};
+template <class E, std::size_t N> struct Plain<std::array<E, N>, std::enable_if_t<Plain<E>::kPlain>> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kSize = N * Plain<E>::kSize;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, std::array<E, N> &v) {
+        for (std::size_t i = 0; i < N; ++i) {
+            Plain<E>::load(p + i * Plain<E>::kSize, v[i]);
+        }
+    }
+};
 
 template <class T>
 struct Codec<
     T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char>>> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(T);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, T &v) {
+        using U = std::make_unsigned_t<T>;
+        const U u = static_cast<U>(load_uint<sizeof(T)>(p));
+        std::memcpy(&v, &u, sizeof v);
+    }
     static bool read(Reader &r, T &v, DecodeError &err) {
         if (!r.need(sizeof(T), err)) {
             return false;
@@ -484,6 +552,12 @@ template <class T> struct Codec<T, std::enable_if_t<std::is_enum_v<T>>> {
     using U = std::underlying_type_t<T>;
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(U);
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, T &v) {
+        U u{};
+        Codec<U>::load(p, u);
+        v = static_cast<T>(u);
+    }
     static bool read(Reader &r, T &v, DecodeError &err) {
         U u{};
         if (!Codec<U>::read(r, u, err)) {
@@ -521,6 +595,10 @@ template <> struct Codec<bool> {
 template <> struct Codec<char> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, char &v) {
+        std::memcpy(&v, p, 1);
+    }
     static bool read(Reader &r, char &v, DecodeError &err) {
         if (!r.need(1, err)) {
             return false;
@@ -537,6 +615,11 @@ template <> struct Codec<char> {
 template <> struct Codec<float> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 4;
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, float &v) {
+        const auto bits = static_cast<std::uint32_t>(load_uint<4>(p));
+        std::memcpy(&v, &bits, 4); // keeps NaN payloads
+    }
     static bool read(Reader &r, float &v, DecodeError &err) {
         if (!r.need(4, err)) {
             return false;
@@ -555,6 +638,11 @@ template <> struct Codec<float> {
 template <> struct Codec<double> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 8;
+    static constexpr bool kPlain = true;
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, double &v) {
+        const std::uint64_t bits = load_uint<8>(p);
+        std::memcpy(&v, &bits, 8); // keeps NaN payloads
+    }
     static bool read(Reader &r, double &v, DecodeError &err) {
         if (!r.need(8, err)) {
             return false;
@@ -669,6 +757,12 @@ template <class T, std::size_t M> void write_remaining(Writer &w, const BoundedV
 
 /// Decodes one layout (all of `size` bytes): leftover bytes are an error.
 template <class T> bool decode(const std::uint8_t *data, std::size_t size, T &out, DecodeError &err) {
+    if constexpr (Plain<T>::kPlain) {
+        if (size == Plain<T>::kSize) { // the straight path: sets every member, cannot fail
+            Plain<T>::load(data, out);
+            return true;
+        }
+    }
     Reader r(data, size);
     out = T{};
     if (!Codec<T>::read(r, out, err)) {

@@ -605,6 +605,12 @@ namespace mscipcodec {
 template <> struct Codec<::mscipcodec::types::GpsTimeFlags> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(std::uint16_t);
+    static constexpr bool kPlain = true;
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, ::mscipcodec::types::GpsTimeFlags &v) {
+        std::uint16_t raw{};
+        Codec<std::uint16_t>::load(p, raw);
+        v.set_raw(raw);
+    }
     static bool read(Reader &r, ::mscipcodec::types::GpsTimeFlags &v, DecodeError &err) {
         std::uint16_t raw{};
         if (!Codec<std::uint16_t>::read(r, raw, err)) {
@@ -621,6 +627,18 @@ template <> struct Codec<::mscipcodec::types::GpsTimeFlags> {
 template <> struct Codec<::mscipcodec::types::MessageId> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, ::mscipcodec::types::MessageId &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.message_type);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.message_code);
+    }
+
+    static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
     static bool read(Reader &r, ::mscipcodec::types::MessageId &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -500,6 +500,17 @@ template <> struct Codec<aiding::EchoControl> {
 };
 
 template <> struct Codec<aiding::EchoControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AidingEchoMode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::EchoControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingEchoMode>::load(p, v.mode);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::EchoControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -520,6 +531,28 @@ template <> struct Codec<aiding::EchoControlResponse> {
 };
 
 template <> struct Codec<aiding::EcefPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AidingTime>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::array<double, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::AidingVectorValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::EcefPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<double, 3>>::load(p, v.position);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::AidingVectorValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::EcefPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -560,6 +593,32 @@ template <> struct Codec<aiding::EcefPosition> {
 };
 
 template <> struct Codec<aiding::LlhPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AidingTime>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::AidingLlhValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::LlhPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.latitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.longitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.height);
+        p += Plain<double>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::AidingLlhValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::LlhPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -610,6 +669,27 @@ template <> struct Codec<aiding::LlhPosition> {
 };
 
 template <> struct Codec<aiding::HeightAboveEllipsoid> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AidingTime>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::HeightAboveEllipsoid &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.height);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.uncertainty);
+        p += Plain<float>::kSize;
+        Plain<std::uint16_t>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::HeightAboveEllipsoid &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -650,6 +730,28 @@ template <> struct Codec<aiding::HeightAboveEllipsoid> {
 };
 
 template <> struct Codec<aiding::EcefVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AidingTime>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::AidingVectorValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::EcefVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::AidingVectorValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::EcefVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -690,6 +792,28 @@ template <> struct Codec<aiding::EcefVelocity> {
 };
 
 template <> struct Codec<aiding::NedVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AidingTime>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::AidingVectorValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::NedVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::AidingVectorValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::NedVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -730,6 +854,28 @@ template <> struct Codec<aiding::NedVelocity> {
 };
 
 template <> struct Codec<aiding::BodyFrameVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AidingTime>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::AidingVectorValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::BodyFrameVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::AidingVectorValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::BodyFrameVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -770,6 +916,27 @@ template <> struct Codec<aiding::BodyFrameVelocity> {
 };
 
 template <> struct Codec<aiding::TrueHeading> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AidingTime>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::TrueHeading &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.uncertainty);
+        p += Plain<float>::kSize;
+        Plain<std::uint16_t>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::TrueHeading &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -810,6 +977,28 @@ template <> struct Codec<aiding::TrueHeading> {
 };
 
 template <> struct Codec<aiding::MagneticField> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AidingTime>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::AidingVectorValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::MagneticField &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.magnetic_field);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::AidingVectorValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::MagneticField &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -850,6 +1039,27 @@ template <> struct Codec<aiding::MagneticField> {
 };
 
 template <> struct Codec<aiding::Pressure> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AidingTime>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, aiding::Pressure &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AidingTime>::load(p, v.time);
+        p += Plain<::mipcodec::types::AidingTime>::kSize;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.pressure);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.uncertainty);
+        p += Plain<float>::kSize;
+        Plain<std::uint16_t>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, aiding::Pressure &v, DecodeError &err) {
         (void)r;
         (void)v;

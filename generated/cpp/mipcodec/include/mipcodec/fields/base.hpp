@@ -422,6 +422,16 @@ struct DeviceReset {
 namespace mipcodec {
 
 template <> struct Codec<base::Ping> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::Ping &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::Ping &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -437,6 +447,16 @@ template <> struct Codec<base::Ping> {
 };
 
 template <> struct Codec<base::SetToIdle> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::SetToIdle &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::SetToIdle &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -452,6 +472,16 @@ template <> struct Codec<base::SetToIdle> {
 };
 
 template <> struct Codec<base::GetDeviceInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceInfo &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -467,6 +497,17 @@ template <> struct Codec<base::GetDeviceInfo> {
 };
 
 template <> struct Codec<base::DeviceInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::DeviceInfo>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::DeviceInfo>::load(p, v.info);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -487,6 +528,16 @@ template <> struct Codec<base::DeviceInfo> {
 };
 
 template <> struct Codec<base::GetDeviceDescriptors> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceDescriptors &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceDescriptors &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -522,6 +573,16 @@ template <> struct Codec<base::DeviceDescriptors> {
 };
 
 template <> struct Codec<base::BuiltInTest> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::BuiltInTest &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::BuiltInTest &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -537,6 +598,17 @@ template <> struct Codec<base::BuiltInTest> {
 };
 
 template <> struct Codec<base::BuiltInTestResultGx545> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::Gx5BitFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::BuiltInTestResultGx545 &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Gx5BitFlags>::load(p, v.flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::BuiltInTestResultGx545 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -557,6 +629,17 @@ template <> struct Codec<base::BuiltInTestResultGx545> {
 };
 
 template <> struct Codec<base::BuiltInTestResultCv7Ins> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::Cv7BitFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::BuiltInTestResultCv7Ins &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Cv7BitFlags>::load(p, v.flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::BuiltInTestResultCv7Ins &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -577,6 +660,16 @@ template <> struct Codec<base::BuiltInTestResultCv7Ins> {
 };
 
 template <> struct Codec<base::Resume> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::Resume &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::Resume &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -592,6 +685,16 @@ template <> struct Codec<base::Resume> {
 };
 
 template <> struct Codec<base::GetExtendedDescriptors> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetExtendedDescriptors &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetExtendedDescriptors &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -627,6 +730,16 @@ template <> struct Codec<base::ExtendedDescriptors> {
 };
 
 template <> struct Codec<base::ContinuousBit> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::ContinuousBit &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::ContinuousBit &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -642,6 +755,17 @@ template <> struct Codec<base::ContinuousBit> {
 };
 
 template <> struct Codec<base::ContinuousBitResult> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::Cv7ContinuousBit>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::ContinuousBitResult &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Cv7ContinuousBit>::load(p, v.result);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::ContinuousBitResult &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -703,6 +827,19 @@ template <> struct Codec<base::CommPortSpeed> {
 };
 
 template <> struct Codec<base::CommPortSpeedResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::CommPortSpeedResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.port);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.baud);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::CommPortSpeedResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -769,6 +906,23 @@ template <> struct Codec<base::GpsTimeUpdateGx545> {
 };
 
 template <> struct Codec<base::GpsTimeUpdateCv7Ins> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
+                                              Plain<::mipcodec::types::GpsTimeField>::kSize +
+                                              Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::GpsTimeUpdateCv7Ins &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
+        Plain<::mipcodec::types::GpsTimeField>::load(p, v.field_id);
+        p += Plain<::mipcodec::types::GpsTimeField>::kSize;
+        Plain<std::uint32_t>::load(p, v.value);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GpsTimeUpdateCv7Ins &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -799,6 +953,17 @@ template <> struct Codec<base::GpsTimeUpdateCv7Ins> {
 };
 
 template <> struct Codec<base::GpsWeek> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::GpsWeek &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint32_t>::load(p, v.week);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GpsWeek &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -819,6 +984,17 @@ template <> struct Codec<base::GpsWeek> {
 };
 
 template <> struct Codec<base::GpsSeconds> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::GpsSeconds &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint32_t>::load(p, v.seconds);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GpsSeconds &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -839,6 +1015,16 @@ template <> struct Codec<base::GpsSeconds> {
 };
 
 template <> struct Codec<base::DeviceReset> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceReset &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceReset &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -1814,6 +1814,16 @@ struct GnssAntennaCalibrationControlResponse {
 namespace mipcodec {
 
 template <> struct Codec<filter::ResetFilter> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ResetFilter &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ResetFilter &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1829,6 +1839,22 @@ template <> struct Codec<filter::ResetFilter> {
 };
 
 template <> struct Codec<filter::SetInitialAttitude> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::SetInitialAttitude &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.roll);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::SetInitialAttitude &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1859,6 +1885,17 @@ template <> struct Codec<filter::SetInitialAttitude> {
 };
 
 template <> struct Codec<filter::SetInitialHeading> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::SetInitialHeading &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.heading);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::SetInitialHeading &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1879,6 +1916,16 @@ template <> struct Codec<filter::SetInitialHeading> {
 };
 
 template <> struct Codec<filter::RunFilter> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::RunFilter &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::RunFilter &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1930,6 +1977,17 @@ template <> struct Codec<filter::VehicleDynamicsMode> {
 };
 
 template <> struct Codec<filter::VehicleDynamicsModeResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::VehicleDynamicsMode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::VehicleDynamicsModeResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::VehicleDynamicsMode>::load(p, v.mode);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::VehicleDynamicsModeResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2018,6 +2076,22 @@ template <> struct Codec<filter::SensorToVehicleTransform> {
 };
 
 template <> struct Codec<filter::SensorToVehicleTransformResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::SensorToVehicleTransformResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.roll);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.yaw);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::SensorToVehicleTransformResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2084,6 +2158,17 @@ template <> struct Codec<filter::SensorToVehicleOffset> {
 };
 
 template <> struct Codec<filter::SensorToVehicleOffsetResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::SensorToVehicleOffsetResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::SensorToVehicleOffsetResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2140,6 +2225,17 @@ template <> struct Codec<filter::AntennaOffset> {
 };
 
 template <> struct Codec<filter::AntennaOffsetResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::AntennaOffsetResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::AntennaOffsetResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2196,6 +2292,17 @@ template <> struct Codec<filter::EstimationControl> {
 };
 
 template <> struct Codec<filter::EstimationControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::EstimationControlFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::EstimationControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::EstimationControlFlags>::load(p, v.flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::EstimationControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2252,6 +2359,17 @@ template <> struct Codec<filter::GnssSourceControl> {
 };
 
 template <> struct Codec<filter::GnssSourceControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FilterGnssSource>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::GnssSourceControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FilterGnssSource>::load(p, v.source);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::GnssSourceControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2272,6 +2390,34 @@ template <> struct Codec<filter::GnssSourceControlResponse> {
 };
 
 template <> struct Codec<filter::ExternalGnssUpdate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ExternalGnssUpdate &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.gps_tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.gps_week);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<double>::load(p, v.latitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.longitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.height);
+        p += Plain<double>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.position_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.velocity_uncertainty);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ExternalGnssUpdate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2327,6 +2473,22 @@ template <> struct Codec<filter::ExternalGnssUpdate> {
 };
 
 template <> struct Codec<filter::ExternalHeadingUpdate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<::mipcodec::types::ExternalHeadingType>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ExternalHeadingUpdate &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::ExternalHeadingType>::load(p, v.type);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ExternalHeadingUpdate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2393,6 +2555,17 @@ template <> struct Codec<filter::HeadingUpdateControl> {
 };
 
 template <> struct Codec<filter::HeadingUpdateControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::HeadingUpdateSource>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::HeadingUpdateControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::HeadingUpdateSource>::load(p, v.source);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::HeadingUpdateControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2449,6 +2622,17 @@ template <> struct Codec<filter::AutoInitControl> {
 };
 
 template <> struct Codec<filter::AutoInitControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::AutoInitControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.enable);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::AutoInitControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2505,6 +2689,17 @@ template <> struct Codec<filter::AccelNoise> {
 };
 
 template <> struct Codec<filter::AccelNoiseResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::AccelNoiseResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::AccelNoiseResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2561,6 +2756,17 @@ template <> struct Codec<filter::GyroNoise> {
 };
 
 template <> struct Codec<filter::GyroNoiseResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::GyroNoiseResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::GyroNoiseResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2633,6 +2839,20 @@ template <> struct Codec<filter::AccelBiasModel> {
 };
 
 template <> struct Codec<filter::AccelBiasModelResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::AccelBiasModelResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.beta);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::AccelBiasModelResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2710,6 +2930,20 @@ template <> struct Codec<filter::GyroBiasModel> {
 };
 
 template <> struct Codec<filter::GyroBiasModelResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::GyroBiasModelResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.beta);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::GyroBiasModelResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2787,6 +3021,19 @@ template <> struct Codec<filter::ZuptControl> {
 };
 
 template <> struct Codec<filter::ZuptControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ZuptControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.enable);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.threshold);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ZuptControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2812,6 +3059,27 @@ template <> struct Codec<filter::ZuptControlResponse> {
 };
 
 template <> struct Codec<filter::ExternalHeadingUpdateWithTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::ExternalHeadingType>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ExternalHeadingUpdateWithTime &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.gps_tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.gps_week);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::ExternalHeadingType>::load(p, v.type);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ExternalHeadingUpdateWithTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2904,6 +3172,19 @@ template <> struct Codec<filter::ZeroAngularRateUpdateControl> {
 };
 
 template <> struct Codec<filter::ZeroAngularRateUpdateControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ZeroAngularRateUpdateControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.enable);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.threshold);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ZeroAngularRateUpdateControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2965,6 +3246,16 @@ template <> struct Codec<filter::TareOrientation> {
 };
 
 template <> struct Codec<filter::CommandedZupt> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::CommandedZupt &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::CommandedZupt &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2980,6 +3271,16 @@ template <> struct Codec<filter::CommandedZupt> {
 };
 
 template <> struct Codec<filter::CommandedZeroAngularRateUpdate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::CommandedZeroAngularRateUpdate &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::CommandedZeroAngularRateUpdate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2995,6 +3296,17 @@ template <> struct Codec<filter::CommandedZeroAngularRateUpdate> {
 };
 
 template <> struct Codec<filter::MagCaptureAutoCalibration> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::MagCaptureAutoCalibration &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::MagCaptureAutoCalibration &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3051,6 +3363,17 @@ template <> struct Codec<filter::GravityNoiseStdDev> {
 };
 
 template <> struct Codec<filter::GravityNoiseStdDevResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::GravityNoiseStdDevResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::GravityNoiseStdDevResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3107,6 +3430,17 @@ template <> struct Codec<filter::PressureAltitudeNoiseStdDev> {
 };
 
 template <> struct Codec<filter::PressureAltitudeNoiseStdDevResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::PressureAltitudeNoiseStdDevResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::PressureAltitudeNoiseStdDevResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3163,6 +3497,17 @@ template <> struct Codec<filter::HardIronOffsetNoise> {
 };
 
 template <> struct Codec<filter::HardIronOffsetNoiseResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::HardIronOffsetNoiseResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::HardIronOffsetNoiseResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3219,6 +3564,17 @@ template <> struct Codec<filter::SoftIronMatrixNoise> {
 };
 
 template <> struct Codec<filter::SoftIronMatrixNoiseResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 9>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::SoftIronMatrixNoiseResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::SoftIronMatrixNoiseResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3275,6 +3631,17 @@ template <> struct Codec<filter::MagNoiseStdDev> {
 };
 
 template <> struct Codec<filter::MagNoiseStdDevResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::MagNoiseStdDevResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.noise);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::MagNoiseStdDevResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3347,6 +3714,20 @@ template <> struct Codec<filter::DeclinationSource> {
 };
 
 template <> struct Codec<filter::DeclinationSourceResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::MagneticParamSource>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::DeclinationSourceResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::MagneticParamSource>::load(p, v.source);
+        p += Plain<::mipcodec::types::MagneticParamSource>::kSize;
+        Plain<float>::load(p, v.declination);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::DeclinationSourceResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3504,6 +3885,33 @@ template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurement> {
 };
 
 template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurementResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AdaptiveMeasurementMode>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter::GravityMagnitudeAdaptiveMeasurementResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AdaptiveMeasurementMode>::load(p, v.mode);
+        p += Plain<::mipcodec::types::AdaptiveMeasurementMode>::kSize;
+        Plain<float>::load(p, v.frequency);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.low_limit);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.high_limit);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.low_limit_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.high_limit_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.minimum_uncertainty);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3686,6 +4094,33 @@ template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurement> {
 };
 
 template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurementResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AdaptiveMeasurementMode>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter::MagMagnitudeAdaptiveMeasurementResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AdaptiveMeasurementMode>::load(p, v.mode);
+        p += Plain<::mipcodec::types::AdaptiveMeasurementMode>::kSize;
+        Plain<float>::load(p, v.frequency);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.low_limit);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.high_limit);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.low_limit_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.high_limit_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.minimum_uncertainty);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3836,6 +4271,28 @@ template <> struct Codec<filter::MagDipAngleAdaptiveMeasurement> {
 };
 
 template <> struct Codec<filter::MagDipAngleAdaptiveMeasurementResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AdaptiveMeasurementMode>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter::MagDipAngleAdaptiveMeasurementResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AdaptiveMeasurementMode>::load(p, v.mode);
+        p += Plain<::mipcodec::types::AdaptiveMeasurementMode>::kSize;
+        Plain<float>::load(p, v.frequency);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.high_limit);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.high_limit_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.minimum_uncertainty);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurementResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3912,6 +4369,17 @@ template <> struct Codec<filter::AltitudeAidingControl> {
 };
 
 template <> struct Codec<filter::AltitudeAidingControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::AltitudeAidingSource>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::AltitudeAidingControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AltitudeAidingSource>::load(p, v.source);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::AltitudeAidingControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3968,6 +4436,17 @@ template <> struct Codec<filter::PitchRollAidingControl> {
 };
 
 template <> struct Codec<filter::PitchRollAidingControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::PitchRollAidingSource>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::PitchRollAidingControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::PitchRollAidingSource>::load(p, v.source);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::PitchRollAidingControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4040,6 +4519,20 @@ template <> struct Codec<filter::InclinationSource> {
 };
 
 template <> struct Codec<filter::InclinationSourceResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::MagneticParamSource>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::InclinationSourceResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::MagneticParamSource>::load(p, v.source);
+        p += Plain<::mipcodec::types::MagneticParamSource>::kSize;
+        Plain<float>::load(p, v.inclination);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::InclinationSourceResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4117,6 +4610,20 @@ template <> struct Codec<filter::MagneticFieldMagnitudeSource> {
 };
 
 template <> struct Codec<filter::MagneticFieldMagnitudeSourceResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::MagneticParamSource>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::MagneticFieldMagnitudeSourceResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::MagneticParamSource>::load(p, v.source);
+        p += Plain<::mipcodec::types::MagneticParamSource>::kSize;
+        Plain<float>::load(p, v.magnitude);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::MagneticFieldMagnitudeSourceResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4372,6 +4879,37 @@ template <> struct Codec<filter::InitializationConfiguration> {
 };
 
 template <> struct Codec<filter::InitializationConfigurationResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::FilterInitialConditionSource>::kSize +
+        Plain<::mipcodec::types::HeadingAlignmentMethods>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<float>::kSize + Plain<std::array<float, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<::mipcodec::types::FilterReferenceFrame>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::InitializationConfigurationResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.wait_for_run_command);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::FilterInitialConditionSource>::load(p, v.initial_cond_src);
+        p += Plain<::mipcodec::types::FilterInitialConditionSource>::kSize;
+        Plain<::mipcodec::types::HeadingAlignmentMethods>::load(p, v.auto_heading_alignment_selector);
+        p += Plain<::mipcodec::types::HeadingAlignmentMethods>::kSize;
+        Plain<float>::load(p, v.initial_heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.initial_pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.initial_roll);
+        p += Plain<float>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.initial_position);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.initial_velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterReferenceFrame>::load(p, v.reference_frame_selector);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::InitializationConfigurationResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4484,6 +5022,20 @@ template <> struct Codec<filter::AdaptiveFilterControl> {
 };
 
 template <> struct Codec<filter::AdaptiveFilterControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AdaptiveFilterLevel>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::AdaptiveFilterControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AdaptiveFilterLevel>::load(p, v.level);
+        p += Plain<::mipcodec::types::AdaptiveFilterLevel>::kSize;
+        Plain<std::uint16_t>::load(p, v.time_limit);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::AdaptiveFilterControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4550,6 +5102,20 @@ template <> struct Codec<filter::MultiAntennaOffset> {
 };
 
 template <> struct Codec<filter::MultiAntennaOffsetResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::MultiAntennaOffsetResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.receiver_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.antenna_offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::MultiAntennaOffsetResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4643,6 +5209,24 @@ template <> struct Codec<filter::RelativePositionConfiguration> {
 };
 
 template <> struct Codec<filter::RelativePositionConfigurationResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::RelativePositionSource>::kSize +
+                                              Plain<::mipcodec::types::FilterReferenceFrame>::kSize +
+                                              Plain<std::array<double, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter::RelativePositionConfigurationResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::RelativePositionSource>::load(p, v.source);
+        p += Plain<::mipcodec::types::RelativePositionSource>::kSize;
+        Plain<::mipcodec::types::FilterReferenceFrame>::load(p, v.reference_frame_selector);
+        p += Plain<::mipcodec::types::FilterReferenceFrame>::kSize;
+        Plain<std::array<double, 3>>::load(p, v.reference_coordinates);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::RelativePositionConfigurationResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4725,6 +5309,20 @@ template <> struct Codec<filter::ReferencePointLeverArm> {
 };
 
 template <> struct Codec<filter::ReferencePointLeverArmResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::ReferencePointSelector>::kSize + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::ReferencePointLeverArmResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::ReferencePointSelector>::load(p, v.ref_point_sel);
+        p += Plain<::mipcodec::types::ReferencePointSelector>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.lever_arm_offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::ReferencePointLeverArmResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4791,6 +5389,20 @@ template <> struct Codec<filter::SpeedLeverArm> {
 };
 
 template <> struct Codec<filter::SpeedLeverArmResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter::SpeedLeverArmResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.source);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.lever_arm_offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::SpeedLeverArmResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4852,6 +5464,18 @@ template <> struct Codec<filter::WheeledVehicleConstraintControl> {
 };
 
 template <> struct Codec<filter::WheeledVehicleConstraintControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter::WheeledVehicleConstraintControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.enable);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::WheeledVehicleConstraintControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4924,6 +5548,20 @@ template <> struct Codec<filter::GnssAntennaCalibrationControl> {
 };
 
 template <> struct Codec<filter::GnssAntennaCalibrationControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter::GnssAntennaCalibrationControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.enable);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.max_offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter::GnssAntennaCalibrationControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -1081,6 +1081,25 @@ struct AidingFrameConfigErrorUncertainty {
 namespace mipcodec {
 
 template <> struct Codec<filter_data::LlhPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<double>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::LlhPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.latitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.longitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.ellipsoid_height);
+        p += Plain<double>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::LlhPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1116,6 +1135,25 @@ template <> struct Codec<filter_data::LlhPosition> {
 };
 
 template <> struct Codec<filter_data::NedVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::NedVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.north);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.east);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.down);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::NedVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1151,6 +1189,20 @@ template <> struct Codec<filter_data::NedVelocity> {
 };
 
 template <> struct Codec<filter_data::AttitudeQuaternion> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 4>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AttitudeQuaternion &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 4>>::load(p, v.q);
+        p += Plain<std::array<float, 4>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AttitudeQuaternion &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1176,6 +1228,20 @@ template <> struct Codec<filter_data::AttitudeQuaternion> {
 };
 
 template <> struct Codec<filter_data::AttitudeDcm> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 9>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AttitudeDcm &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.dcm);
+        p += Plain<std::array<float, 9>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AttitudeDcm &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1201,6 +1267,25 @@ template <> struct Codec<filter_data::AttitudeDcm> {
 };
 
 template <> struct Codec<filter_data::EulerAngles> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::EulerAngles &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.roll);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.yaw);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::EulerAngles &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1236,6 +1321,20 @@ template <> struct Codec<filter_data::EulerAngles> {
 };
 
 template <> struct Codec<filter_data::GyroBias> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GyroBias &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.bias);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GyroBias &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1261,6 +1360,20 @@ template <> struct Codec<filter_data::GyroBias> {
 };
 
 template <> struct Codec<filter_data::AccelBias> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AccelBias &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.bias);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AccelBias &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1286,6 +1399,25 @@ template <> struct Codec<filter_data::AccelBias> {
 };
 
 template <> struct Codec<filter_data::LlhPositionUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::LlhPositionUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.north);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.east);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.down);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::LlhPositionUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1321,6 +1453,25 @@ template <> struct Codec<filter_data::LlhPositionUncertainty> {
 };
 
 template <> struct Codec<filter_data::NedVelocityUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::NedVelocityUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.north);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.east);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.down);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::NedVelocityUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1356,6 +1507,25 @@ template <> struct Codec<filter_data::NedVelocityUncertainty> {
 };
 
 template <> struct Codec<filter_data::EulerAnglesUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::EulerAnglesUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.roll);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.yaw);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::EulerAnglesUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1391,6 +1561,20 @@ template <> struct Codec<filter_data::EulerAnglesUncertainty> {
 };
 
 template <> struct Codec<filter_data::GyroBiasUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GyroBiasUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.bias_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GyroBiasUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1416,6 +1600,20 @@ template <> struct Codec<filter_data::GyroBiasUncertainty> {
 };
 
 template <> struct Codec<filter_data::AccelBiasUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AccelBiasUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.bias_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AccelBiasUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1441,6 +1639,20 @@ template <> struct Codec<filter_data::AccelBiasUncertainty> {
 };
 
 template <> struct Codec<filter_data::LinearAccel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::LinearAccel &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.accel);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::LinearAccel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1466,6 +1678,20 @@ template <> struct Codec<filter_data::LinearAccel> {
 };
 
 template <> struct Codec<filter_data::CompAngularRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::CompAngularRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.gyro);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::CompAngularRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1491,6 +1717,20 @@ template <> struct Codec<filter_data::CompAngularRate> {
 };
 
 template <> struct Codec<filter_data::Wgs84GravityMagnitude> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::Wgs84GravityMagnitude &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.gravity_magnitude);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::Wgs84GravityMagnitude &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1516,6 +1756,23 @@ template <> struct Codec<filter_data::Wgs84GravityMagnitude> {
 };
 
 template <> struct Codec<filter_data::FilterStatusGx545> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FilterStateGx5>::kSize +
+                                              Plain<::mipcodec::types::FilterDynamicsModeGx5>::kSize +
+                                              Plain<::mipcodec::types::FilterStatusFlagsGx5>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::FilterStatusGx545 &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FilterStateGx5>::load(p, v.filter_state);
+        p += Plain<::mipcodec::types::FilterStateGx5>::kSize;
+        Plain<::mipcodec::types::FilterDynamicsModeGx5>::load(p, v.dynamics_mode);
+        p += Plain<::mipcodec::types::FilterDynamicsModeGx5>::kSize;
+        Plain<::mipcodec::types::FilterStatusFlagsGx5>::load(p, v.status_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::FilterStatusGx545 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1546,6 +1803,23 @@ template <> struct Codec<filter_data::FilterStatusGx545> {
 };
 
 template <> struct Codec<filter_data::FilterStatusCv7Ins> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FilterModeCv7>::kSize +
+                                              Plain<::mipcodec::types::FilterDynamicsModeCv7>::kSize +
+                                              Plain<::mipcodec::types::FilterStatusFlagsCv7>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::FilterStatusCv7Ins &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FilterModeCv7>::load(p, v.filter_state);
+        p += Plain<::mipcodec::types::FilterModeCv7>::kSize;
+        Plain<::mipcodec::types::FilterDynamicsModeCv7>::load(p, v.dynamics_mode);
+        p += Plain<::mipcodec::types::FilterDynamicsModeCv7>::kSize;
+        Plain<::mipcodec::types::FilterStatusFlagsCv7>::load(p, v.status_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::FilterStatusCv7Ins &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1576,6 +1850,22 @@ template <> struct Codec<filter_data::FilterStatusCv7Ins> {
 };
 
 template <> struct Codec<filter_data::GpsTimestamp> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GpsTimestamp &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GpsTimestamp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1606,6 +1896,20 @@ template <> struct Codec<filter_data::GpsTimestamp> {
 };
 
 template <> struct Codec<filter_data::QuaternionAttitudeUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 4>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::QuaternionAttitudeUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 4>>::load(p, v.q);
+        p += Plain<std::array<float, 4>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::QuaternionAttitudeUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1631,6 +1935,20 @@ template <> struct Codec<filter_data::QuaternionAttitudeUncertainty> {
 };
 
 template <> struct Codec<filter_data::GravityVector> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GravityVector &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.gravity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GravityVector &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1656,6 +1974,25 @@ template <> struct Codec<filter_data::GravityVector> {
 };
 
 template <> struct Codec<filter_data::HeadingUpdateState> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterHeadingSourceFlags>::kSize +
+                                              Plain<::mipcodec::types::FilterHeadingUpdateValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::HeadingUpdateState &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterHeadingSourceFlags>::load(p, v.source);
+        p += Plain<::mipcodec::types::FilterHeadingSourceFlags>::kSize;
+        Plain<::mipcodec::types::FilterHeadingUpdateValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::HeadingUpdateState &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1691,6 +2028,29 @@ template <> struct Codec<filter_data::HeadingUpdateState> {
 };
 
 template <> struct Codec<filter_data::MagneticModel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<float>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::MagneticModel &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.intensity_north);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.intensity_east);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.intensity_down);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.inclination);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.declination);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MagneticModel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1736,6 +2096,20 @@ template <> struct Codec<filter_data::MagneticModel> {
 };
 
 template <> struct Codec<filter_data::GyroScaleFactor> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GyroScaleFactor &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scale_factor);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GyroScaleFactor &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1761,6 +2135,20 @@ template <> struct Codec<filter_data::GyroScaleFactor> {
 };
 
 template <> struct Codec<filter_data::AccelScaleFactor> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AccelScaleFactor &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scale_factor);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AccelScaleFactor &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1786,6 +2174,20 @@ template <> struct Codec<filter_data::AccelScaleFactor> {
 };
 
 template <> struct Codec<filter_data::GyroScaleFactorUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GyroScaleFactorUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scale_factor_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GyroScaleFactorUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1811,6 +2213,20 @@ template <> struct Codec<filter_data::GyroScaleFactorUncertainty> {
 };
 
 template <> struct Codec<filter_data::AccelScaleFactorUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AccelScaleFactorUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scale_factor_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AccelScaleFactorUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1836,6 +2252,20 @@ template <> struct Codec<filter_data::AccelScaleFactorUncertainty> {
 };
 
 template <> struct Codec<filter_data::CompensatedAccel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::CompensatedAccel &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.accel);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::CompensatedAccel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1861,6 +2291,29 @@ template <> struct Codec<filter_data::CompensatedAccel> {
 };
 
 template <> struct Codec<filter_data::StandardAtmosphere> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<float>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::StandardAtmosphere &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.geometric_altitude);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.geopotential_altitude);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.temperature);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pressure);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.density);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::StandardAtmosphere &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1906,6 +2359,20 @@ template <> struct Codec<filter_data::StandardAtmosphere> {
 };
 
 template <> struct Codec<filter_data::PressureAltitude> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::PressureAltitude &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.pressure_altitude);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::PressureAltitude &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1931,6 +2398,20 @@ template <> struct Codec<filter_data::PressureAltitude> {
 };
 
 template <> struct Codec<filter_data::MagAutoHardIronOffset> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::MagAutoHardIronOffset &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.hard_iron_offset);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MagAutoHardIronOffset &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1956,6 +2437,20 @@ template <> struct Codec<filter_data::MagAutoHardIronOffset> {
 };
 
 template <> struct Codec<filter_data::MagAutoSoftIronMatrix> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 9>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::MagAutoSoftIronMatrix &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.soft_iron_matrix);
+        p += Plain<std::array<float, 9>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MagAutoSoftIronMatrix &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1981,6 +2476,21 @@ template <> struct Codec<filter_data::MagAutoSoftIronMatrix> {
 };
 
 template <> struct Codec<filter_data::MagAutoHardIronOffsetUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter_data::MagAutoHardIronOffsetUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.hard_iron_offset_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MagAutoHardIronOffsetUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2006,6 +2516,21 @@ template <> struct Codec<filter_data::MagAutoHardIronOffsetUncertainty> {
 };
 
 template <> struct Codec<filter_data::MagAutoSoftIronMatrixUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 9>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter_data::MagAutoSoftIronMatrixUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.soft_iron_matrix_uncertainty);
+        p += Plain<std::array<float, 9>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MagAutoSoftIronMatrixUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2031,6 +2556,20 @@ template <> struct Codec<filter_data::MagAutoSoftIronMatrixUncertainty> {
 };
 
 template <> struct Codec<filter_data::GnssAntennaOffsetCorrection> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GnssAntennaOffsetCorrection &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.offset);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GnssAntennaOffsetCorrection &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2056,6 +2595,21 @@ template <> struct Codec<filter_data::GnssAntennaOffsetCorrection> {
 };
 
 template <> struct Codec<filter_data::GnssAntennaOffsetCorrectionUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter_data::GnssAntennaOffsetCorrectionUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.offset_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GnssAntennaOffsetCorrectionUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2081,6 +2635,23 @@ template <> struct Codec<filter_data::GnssAntennaOffsetCorrectionUncertainty> {
 };
 
 template <> struct Codec<filter_data::MultiAntennaOffsetCorrection> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize +
+                                              Plain<std::array<float, 3>>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::MultiAntennaOffsetCorrection &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.receiver_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.offset);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MultiAntennaOffsetCorrection &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2111,6 +2682,24 @@ template <> struct Codec<filter_data::MultiAntennaOffsetCorrection> {
 };
 
 template <> struct Codec<filter_data::MultiAntennaOffsetCorrectionUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize +
+                                              Plain<std::array<float, 3>>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter_data::MultiAntennaOffsetCorrectionUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.receiver_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.offset_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::MultiAntennaOffsetCorrectionUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2141,6 +2730,20 @@ template <> struct Codec<filter_data::MultiAntennaOffsetCorrectionUncertainty> {
 };
 
 template <> struct Codec<filter_data::EcefPositionUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::EcefPositionUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.position_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::EcefPositionUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2166,6 +2769,20 @@ template <> struct Codec<filter_data::EcefPositionUncertainty> {
 };
 
 template <> struct Codec<filter_data::EcefVelocityUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::EcefVelocityUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::EcefVelocityUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2191,6 +2808,20 @@ template <> struct Codec<filter_data::EcefVelocityUncertainty> {
 };
 
 template <> struct Codec<filter_data::EcefPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<double, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::EcefPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<double, 3>>::load(p, v.position);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::EcefPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2216,6 +2847,20 @@ template <> struct Codec<filter_data::EcefPosition> {
 };
 
 template <> struct Codec<filter_data::EcefVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<float, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::EcefVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::EcefVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2241,6 +2886,20 @@ template <> struct Codec<filter_data::EcefVelocity> {
 };
 
 template <> struct Codec<filter_data::NedRelativePosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::array<double, 3>>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::NedRelativePosition &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<double, 3>>::load(p, v.relative_position);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::NedRelativePosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2266,6 +2925,25 @@ template <> struct Codec<filter_data::NedRelativePosition> {
 };
 
 template <> struct Codec<filter_data::GnssPositionAidingStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterGnssAidingStatusFlags>::kSize +
+                                              Plain<std::array<std::uint8_t, 8>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GnssPositionAidingStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.receiver_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.time_of_week);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterGnssAidingStatusFlags>::load(p, v.status);
+        p += Plain<::mipcodec::types::FilterGnssAidingStatusFlags>::kSize;
+        Plain<std::array<std::uint8_t, 8>>::load(p, v.reserved);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GnssPositionAidingStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2301,6 +2979,26 @@ template <> struct Codec<filter_data::GnssPositionAidingStatus> {
 };
 
 template <> struct Codec<filter_data::AidingMeasurementSummary> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::FilterAidingMeasurementType>::kSize +
+        Plain<::mipcodec::types::FilterAidingMeasurementIndicator>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AidingMeasurementSummary &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.time_of_week);
+        p += Plain<float>::kSize;
+        Plain<std::uint8_t>::load(p, v.source);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::FilterAidingMeasurementType>::load(p, v.type);
+        p += Plain<::mipcodec::types::FilterAidingMeasurementType>::kSize;
+        Plain<::mipcodec::types::FilterAidingMeasurementIndicator>::load(p, v.indicator);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AidingMeasurementSummary &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2336,6 +3034,20 @@ template <> struct Codec<filter_data::AidingMeasurementSummary> {
 };
 
 template <> struct Codec<filter_data::OdometerScaleFactorError> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::OdometerScaleFactorError &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.scale_factor_error);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::OdometerScaleFactorError &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2361,6 +3073,21 @@ template <> struct Codec<filter_data::OdometerScaleFactorError> {
 };
 
 template <> struct Codec<filter_data::OdometerScaleFactorErrorUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter_data::OdometerScaleFactorErrorUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.scale_factor_error_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::OdometerScaleFactorErrorUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2386,6 +3113,31 @@ template <> struct Codec<filter_data::OdometerScaleFactorErrorUncertainty> {
 };
 
 template <> struct Codec<filter_data::GnssDualAntennaStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize +
+                                              Plain<::mipcodec::types::FilterDualAntennaFixType>::kSize +
+                                              Plain<::mipcodec::types::FilterDualAntennaStatusFlags>::kSize +
+                                              Plain<::mipcodec::types::FilterOutputValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::GnssDualAntennaStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.time_of_week);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_uncertainty);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::FilterDualAntennaFixType>::load(p, v.fix_type);
+        p += Plain<::mipcodec::types::FilterDualAntennaFixType>::kSize;
+        Plain<::mipcodec::types::FilterDualAntennaStatusFlags>::load(p, v.status_flags);
+        p += Plain<::mipcodec::types::FilterDualAntennaStatusFlags>::kSize;
+        Plain<::mipcodec::types::FilterOutputValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::GnssDualAntennaStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2431,6 +3183,23 @@ template <> struct Codec<filter_data::GnssDualAntennaStatus> {
 };
 
 template <> struct Codec<filter_data::AidingFrameConfigError> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize +
+                                              Plain<std::array<float, 3>>::kSize +
+                                              Plain<std::array<float, 4>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, filter_data::AidingFrameConfigError &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.translation);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 4>>::load(p, v.attitude);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AidingFrameConfigError &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2461,6 +3230,24 @@ template <> struct Codec<filter_data::AidingFrameConfigError> {
 };
 
 template <> struct Codec<filter_data::AidingFrameConfigErrorUncertainty> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize +
+                                              Plain<std::array<float, 3>>::kSize +
+                                              Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p,
+                                     filter_data::AidingFrameConfigErrorUncertainty &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.frame_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.translation_uncertainty);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.attitude_uncertainty);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, filter_data::AidingFrameConfigErrorUncertainty &v, DecodeError &err) {
         (void)r;
         (void)v;

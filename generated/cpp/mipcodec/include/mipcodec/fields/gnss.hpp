@@ -170,6 +170,16 @@ struct SpartnConfigurationResponse {
 namespace mipcodec {
 
 template <> struct Codec<gnss::ReceiverInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss::ReceiverInfo &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss::ReceiverInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -310,6 +320,29 @@ template <> struct Codec<gnss::SignalConfiguration> {
 };
 
 template <> struct Codec<gnss::SignalConfigurationResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GnssGpsSignals>::kSize +
+                                              Plain<::mipcodec::types::GnssGlonassSignals>::kSize +
+                                              Plain<::mipcodec::types::GnssGalileoSignals>::kSize +
+                                              Plain<::mipcodec::types::GnssBeidouSignals>::kSize +
+                                              Plain<std::array<std::uint8_t, 4>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss::SignalConfigurationResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GnssGpsSignals>::load(p, v.gps_enable);
+        p += Plain<::mipcodec::types::GnssGpsSignals>::kSize;
+        Plain<::mipcodec::types::GnssGlonassSignals>::load(p, v.glonass_enable);
+        p += Plain<::mipcodec::types::GnssGlonassSignals>::kSize;
+        Plain<::mipcodec::types::GnssGalileoSignals>::load(p, v.galileo_enable);
+        p += Plain<::mipcodec::types::GnssGalileoSignals>::kSize;
+        Plain<::mipcodec::types::GnssBeidouSignals>::load(p, v.beidou_enable);
+        p += Plain<::mipcodec::types::GnssBeidouSignals>::kSize;
+        Plain<std::array<std::uint8_t, 4>>::load(p, v.reserved);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss::SignalConfigurationResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -498,6 +531,34 @@ template <> struct Codec<gnss::SpartnConfiguration> {
 };
 
 template <> struct Codec<gnss::SpartnConfigurationResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::SpartnConnectionType>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint16_t>::kSize + Plain<std::array<char, 32>>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint16_t>::kSize + Plain<std::array<char, 32>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss::SpartnConfigurationResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.enable);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::SpartnConnectionType>::load(p, v.type);
+        p += Plain<::mipcodec::types::SpartnConnectionType>::kSize;
+        Plain<std::uint32_t>::load(p, v.current_key_tow);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.current_key_week);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::array<char, 32>>::load(p, v.current_key);
+        p += Plain<std::array<char, 32>>::kSize;
+        Plain<std::uint32_t>::load(p, v.next_key_tow);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.next_key_week);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::array<char, 32>>::load(p, v.next_key);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss::SpartnConfigurationResponse &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -79,6 +79,33 @@ struct RtkCorrectionsStatus {
 namespace mipcodec {
 
 template <> struct Codec<gnss_corrections::BaseStationInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<std::array<double, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::GnssBaseStationIndicators>::kSize +
+                                              Plain<::mipcodec::types::GnssBaseStationInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_corrections::BaseStationInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::array<double, 3>>::load(p, v.ecef_position);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<float>::load(p, v.height);
+        p += Plain<float>::kSize;
+        Plain<std::uint16_t>::load(p, v.station_id);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::GnssBaseStationIndicators>::load(p, v.indicators);
+        p += Plain<::mipcodec::types::GnssBaseStationIndicators>::kSize;
+        Plain<::mipcodec::types::GnssBaseStationInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_corrections::BaseStationInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -129,6 +156,40 @@ template <> struct Codec<gnss_corrections::BaseStationInfo> {
 };
 
 template <> struct Codec<gnss_corrections::RtkCorrectionsStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+        Plain<::mipcodec::types::RtkCorrectionsEpochStatus>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<std::array<std::uint32_t, 4>>::kSize +
+        Plain<::mipcodec::types::RtkCorrectionsStatusValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_corrections::RtkCorrectionsStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::RtkCorrectionsEpochStatus>::load(p, v.epoch_status);
+        p += Plain<::mipcodec::types::RtkCorrectionsEpochStatus>::kSize;
+        Plain<std::uint32_t>::load(p, v.dongle_status);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<float>::load(p, v.gps_correction_latency);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.glonass_correction_latency);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.galileo_correction_latency);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.beidou_correction_latency);
+        p += Plain<float>::kSize;
+        Plain<std::array<std::uint32_t, 4>>::load(p, v.reserved);
+        p += Plain<std::array<std::uint32_t, 4>>::kSize;
+        Plain<::mipcodec::types::RtkCorrectionsStatusValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_corrections::RtkCorrectionsStatus &v, DecodeError &err) {
         (void)r;
         (void)v;

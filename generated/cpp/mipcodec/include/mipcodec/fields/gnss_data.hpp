@@ -341,6 +341,32 @@ struct DgnssChannelStatus {
 namespace mipcodec {
 
 template <> struct Codec<gnss_data::LlhPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssLlhPositionValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::LlhPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.latitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.longitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.ellipsoid_height);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.msl_height);
+        p += Plain<double>::kSize;
+        Plain<float>::load(p, v.horizontal_accuracy);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.vertical_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssLlhPositionValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::LlhPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -391,6 +417,22 @@ template <> struct Codec<gnss_data::LlhPosition> {
 };
 
 template <> struct Codec<gnss_data::EcefPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<double, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssEcefPositionValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::EcefPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<double, 3>>::load(p, v.position);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<float>::load(p, v.position_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssEcefPositionValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::EcefPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -421,6 +463,32 @@ template <> struct Codec<gnss_data::EcefPosition> {
 };
 
 template <> struct Codec<gnss_data::NedVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssNedVelocityValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::NedVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<float>::load(p, v.speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.ground_speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.speed_accuracy);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssNedVelocityValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::NedVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -471,6 +539,22 @@ template <> struct Codec<gnss_data::NedVelocity> {
 };
 
 template <> struct Codec<gnss_data::EcefVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssEcefVelocityValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::EcefVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<float>::load(p, v.velocity_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssEcefVelocityValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::EcefVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -501,6 +585,34 @@ template <> struct Codec<gnss_data::EcefVelocity> {
 };
 
 template <> struct Codec<gnss_data::Dop> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<::mipcodec::types::GnssDopValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::Dop &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.gdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.hdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.vdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.tdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.ndop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.edop);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssDopValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::Dop &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -556,6 +668,34 @@ template <> struct Codec<gnss_data::Dop> {
 };
 
 template <> struct Codec<gnss_data::UtcTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<::mipcodec::types::GnssUtcTimeValidFlagsGx5>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::UtcTime &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.year);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.month);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.day);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.hour);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.minute);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.second);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.millisecond);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<::mipcodec::types::GnssUtcTimeValidFlagsGx5>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::UtcTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -611,6 +751,22 @@ template <> struct Codec<gnss_data::UtcTime> {
 };
 
 template <> struct Codec<gnss_data::GpsTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::GnssGpsTimeValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::GpsTime &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::GnssGpsTimeValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::GpsTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -641,6 +797,25 @@ template <> struct Codec<gnss_data::GpsTime> {
 };
 
 template <> struct Codec<gnss_data::ClockInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<double>::kSize +
+                                              Plain<::mipcodec::types::GnssClockInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::ClockInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.bias);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.drift);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.accuracy_estimate);
+        p += Plain<double>::kSize;
+        Plain<::mipcodec::types::GnssClockInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::ClockInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -676,6 +851,26 @@ template <> struct Codec<gnss_data::ClockInfo> {
 };
 
 template <> struct Codec<gnss_data::FixInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GnssFixTypeGx5>::kSize +
+                                              Plain<std::uint8_t>::kSize +
+                                              Plain<::mipcodec::types::GnssFixFlags>::kSize +
+                                              Plain<::mipcodec::types::GnssFixInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::FixInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GnssFixTypeGx5>::load(p, v.fix_type);
+        p += Plain<::mipcodec::types::GnssFixTypeGx5>::kSize;
+        Plain<std::uint8_t>::load(p, v.num_sv);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssFixFlags>::load(p, v.fix_flags);
+        p += Plain<::mipcodec::types::GnssFixFlags>::kSize;
+        Plain<::mipcodec::types::GnssFixInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::FixInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -711,6 +906,32 @@ template <> struct Codec<gnss_data::FixInfo> {
 };
 
 template <> struct Codec<gnss_data::SvInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint16_t>::kSize +
+        Plain<std::int16_t>::kSize + Plain<std::int16_t>::kSize +
+        Plain<::mipcodec::types::GnssSvFlags>::kSize + Plain<::mipcodec::types::GnssSvInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::SvInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.channel);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.sv_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.carrier_to_noise_ratio);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::int16_t>::load(p, v.azimuth);
+        p += Plain<std::int16_t>::kSize;
+        Plain<std::int16_t>::load(p, v.elevation);
+        p += Plain<std::int16_t>::kSize;
+        Plain<::mipcodec::types::GnssSvFlags>::load(p, v.sv_flags);
+        p += Plain<::mipcodec::types::GnssSvFlags>::kSize;
+        Plain<::mipcodec::types::GnssSvInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::SvInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -761,6 +982,26 @@ template <> struct Codec<gnss_data::SvInfo> {
 };
 
 template <> struct Codec<gnss_data::HardwareStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GnssReceiverState>::kSize +
+                                              Plain<::mipcodec::types::GnssAntennaState>::kSize +
+                                              Plain<::mipcodec::types::GnssAntennaPower>::kSize +
+                                              Plain<::mipcodec::types::GnssHardwareStatusValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::HardwareStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GnssReceiverState>::load(p, v.receiver_state);
+        p += Plain<::mipcodec::types::GnssReceiverState>::kSize;
+        Plain<::mipcodec::types::GnssAntennaState>::load(p, v.antenna_state);
+        p += Plain<::mipcodec::types::GnssAntennaState>::kSize;
+        Plain<::mipcodec::types::GnssAntennaPower>::load(p, v.antenna_power);
+        p += Plain<::mipcodec::types::GnssAntennaPower>::kSize;
+        Plain<::mipcodec::types::GnssHardwareStatusValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::HardwareStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -796,6 +1037,28 @@ template <> struct Codec<gnss_data::HardwareStatus> {
 };
 
 template <> struct Codec<gnss_data::DgnssInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<std::int16_t>::kSize +
+                                              Plain<::mipcodec::types::GnssDgnssBaseStationStatus>::kSize +
+                                              Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::GnssDgnssInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::DgnssInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.newest_age);
+        p += Plain<float>::kSize;
+        Plain<std::int16_t>::load(p, v.base_station_id);
+        p += Plain<std::int16_t>::kSize;
+        Plain<::mipcodec::types::GnssDgnssBaseStationStatus>::load(p, v.base_station_status);
+        p += Plain<::mipcodec::types::GnssDgnssBaseStationStatus>::kSize;
+        Plain<std::uint16_t>::load(p, v.num_channels);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::GnssDgnssInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::DgnssInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -836,6 +1099,27 @@ template <> struct Codec<gnss_data::DgnssInfo> {
 };
 
 template <> struct Codec<gnss_data::DgnssChannelStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<::mipcodec::types::GnssDgnssChannelStatusValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_data::DgnssChannelStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.sv_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.age);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pseudorange_correction);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pseudorange_rate_correction);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssDgnssChannelStatusValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_data::DgnssChannelStatus &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -156,6 +156,32 @@ struct SatelliteStatus {
 namespace mipcodec {
 
 template <> struct Codec<gnss_external::LlhPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssLlhPositionValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_external::LlhPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.latitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.longitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.ellipsoid_height);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.msl_height);
+        p += Plain<double>::kSize;
+        Plain<float>::load(p, v.horizontal_accuracy);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.vertical_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssLlhPositionValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_external::LlhPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -206,6 +232,32 @@ template <> struct Codec<gnss_external::LlhPosition> {
 };
 
 template <> struct Codec<gnss_external::NedVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssNedVelocityValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_external::NedVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<float>::load(p, v.speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.ground_speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.speed_accuracy);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssNedVelocityValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_external::NedVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -256,6 +308,34 @@ template <> struct Codec<gnss_external::NedVelocity> {
 };
 
 template <> struct Codec<gnss_external::UtcTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<::mipcodec::types::GnssUtcTimeValidFlagsCv7>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_external::UtcTime &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.year);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.month);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.day);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.hour);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.minute);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.second);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.millisecond);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<::mipcodec::types::GnssUtcTimeValidFlagsCv7>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_external::UtcTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -311,6 +391,26 @@ template <> struct Codec<gnss_external::UtcTime> {
 };
 
 template <> struct Codec<gnss_external::FixInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GnssFixTypeCv7>::kSize +
+                                              Plain<std::uint8_t>::kSize +
+                                              Plain<::mipcodec::types::GnssFixFlags>::kSize +
+                                              Plain<::mipcodec::types::GnssFixInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_external::FixInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GnssFixTypeCv7>::load(p, v.fix_type);
+        p += Plain<::mipcodec::types::GnssFixTypeCv7>::kSize;
+        Plain<std::uint8_t>::load(p, v.num_sv);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssFixFlags>::load(p, v.fix_flags);
+        p += Plain<::mipcodec::types::GnssFixFlags>::kSize;
+        Plain<::mipcodec::types::GnssFixInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_external::FixInfo &v, DecodeError &err) {
         (void)r;
         (void)v;

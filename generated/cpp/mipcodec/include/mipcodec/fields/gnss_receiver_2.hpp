@@ -634,6 +634,32 @@ struct BeidouEphemeris {
 namespace mipcodec {
 
 template <> struct Codec<gnss_receiver_2::LlhPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssLlhPositionValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::LlhPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.latitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.longitude);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.ellipsoid_height);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.msl_height);
+        p += Plain<double>::kSize;
+        Plain<float>::load(p, v.horizontal_accuracy);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.vertical_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssLlhPositionValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::LlhPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -684,6 +710,22 @@ template <> struct Codec<gnss_receiver_2::LlhPosition> {
 };
 
 template <> struct Codec<gnss_receiver_2::EcefPosition> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<double, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssEcefPositionValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::EcefPosition &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<double, 3>>::load(p, v.position);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<float>::load(p, v.position_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssEcefPositionValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::EcefPosition &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -714,6 +756,32 @@ template <> struct Codec<gnss_receiver_2::EcefPosition> {
 };
 
 template <> struct Codec<gnss_receiver_2::NedVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssNedVelocityValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::NedVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<float>::load(p, v.speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.ground_speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.speed_accuracy);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.heading_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssNedVelocityValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::NedVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -764,6 +832,22 @@ template <> struct Codec<gnss_receiver_2::NedVelocity> {
 };
 
 template <> struct Codec<gnss_receiver_2::EcefVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::GnssEcefVelocityValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::EcefVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.velocity);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<float>::load(p, v.velocity_accuracy);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssEcefVelocityValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::EcefVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -794,6 +878,34 @@ template <> struct Codec<gnss_receiver_2::EcefVelocity> {
 };
 
 template <> struct Codec<gnss_receiver_2::Dop> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<::mipcodec::types::GnssDopValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::Dop &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.gdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.hdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.vdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.tdop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.ndop);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.edop);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssDopValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::Dop &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -849,6 +961,34 @@ template <> struct Codec<gnss_receiver_2::Dop> {
 };
 
 template <> struct Codec<gnss_receiver_2::UtcTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<::mipcodec::types::GnssUtcTimeValidFlagsCv7>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::UtcTime &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.year);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.month);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.day);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.hour);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.minute);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.second);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.millisecond);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<::mipcodec::types::GnssUtcTimeValidFlagsCv7>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::UtcTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -904,6 +1044,22 @@ template <> struct Codec<gnss_receiver_2::UtcTime> {
 };
 
 template <> struct Codec<gnss_receiver_2::GpsTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::GnssGpsTimeValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::GpsTime &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::GnssGpsTimeValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::GpsTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -934,6 +1090,26 @@ template <> struct Codec<gnss_receiver_2::GpsTime> {
 };
 
 template <> struct Codec<gnss_receiver_2::FixInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GnssFixTypeCv7>::kSize +
+                                              Plain<std::uint8_t>::kSize +
+                                              Plain<::mipcodec::types::GnssFixFlags>::kSize +
+                                              Plain<::mipcodec::types::GnssFixInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::FixInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GnssFixTypeCv7>::load(p, v.fix_type);
+        p += Plain<::mipcodec::types::GnssFixTypeCv7>::kSize;
+        Plain<std::uint8_t>::load(p, v.num_sv);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssFixFlags>::load(p, v.fix_flags);
+        p += Plain<::mipcodec::types::GnssFixFlags>::kSize;
+        Plain<::mipcodec::types::GnssFixInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::FixInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -969,6 +1145,26 @@ template <> struct Codec<gnss_receiver_2::FixInfo> {
 };
 
 template <> struct Codec<gnss_receiver_2::HardwareStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GnssReceiverState>::kSize +
+                                              Plain<::mipcodec::types::GnssAntennaState>::kSize +
+                                              Plain<::mipcodec::types::GnssAntennaPower>::kSize +
+                                              Plain<::mipcodec::types::GnssHardwareStatusValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::HardwareStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GnssReceiverState>::load(p, v.receiver_state);
+        p += Plain<::mipcodec::types::GnssReceiverState>::kSize;
+        Plain<::mipcodec::types::GnssAntennaState>::load(p, v.antenna_state);
+        p += Plain<::mipcodec::types::GnssAntennaState>::kSize;
+        Plain<::mipcodec::types::GnssAntennaPower>::load(p, v.antenna_power);
+        p += Plain<::mipcodec::types::GnssAntennaPower>::kSize;
+        Plain<::mipcodec::types::GnssHardwareStatusValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::HardwareStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1004,6 +1200,27 @@ template <> struct Codec<gnss_receiver_2::HardwareStatus> {
 };
 
 template <> struct Codec<gnss_receiver_2::ClockInfo2> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<double>::kSize + Plain<double>::kSize +
+                                              Plain<::mipcodec::types::GnssClockInfo2ValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::ClockInfo2 &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.bias);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.drift);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.bias_accuracy_estimate);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.drift_accuracy_estimate);
+        p += Plain<double>::kSize;
+        Plain<::mipcodec::types::GnssClockInfo2ValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::ClockInfo2 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1044,6 +1261,20 @@ template <> struct Codec<gnss_receiver_2::ClockInfo2> {
 };
 
 template <> struct Codec<gnss_receiver_2::GpsLeapSeconds> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::GnssLeapSecondsValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::GpsLeapSeconds &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.leap_seconds);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssLeapSecondsValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::GpsLeapSeconds &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1069,6 +1300,33 @@ template <> struct Codec<gnss_receiver_2::GpsLeapSeconds> {
 };
 
 template <> struct Codec<gnss_receiver_2::SbasInfo> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::GnssSbasSystem>::kSize +
+                                              Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+                                              Plain<::mipcodec::types::GnssSbasStatus>::kSize +
+                                              Plain<::mipcodec::types::GnssSbasInfoValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::SbasInfo &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::GnssSbasSystem>::load(p, v.sbas_system);
+        p += Plain<::mipcodec::types::GnssSbasSystem>::kSize;
+        Plain<std::uint8_t>::load(p, v.sbas_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssSbasStatus>::load(p, v.sbas_status);
+        p += Plain<::mipcodec::types::GnssSbasStatus>::kSize;
+        Plain<::mipcodec::types::GnssSbasInfoValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::SbasInfo &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1184,6 +1442,60 @@ template <> struct Codec<gnss_receiver_2::SatelliteStatus> {
 };
 
 template <> struct Codec<gnss_receiver_2::Raw> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<std::uint16_t>::kSize + Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::GnssConstellationId>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::GnssSignalId>::kSize + Plain<float>::kSize +
+        Plain<::mipcodec::types::GnssSignalQuality>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize +
+        Plain<float>::kSize + Plain<::mipcodec::types::GnssRawValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::Raw &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.index);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.receiver_id);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.tracking_channel);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssConstellationId>::load(p, v.gnss_id);
+        p += Plain<::mipcodec::types::GnssConstellationId>::kSize;
+        Plain<std::uint8_t>::load(p, v.satellite_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssSignalId>::load(p, v.signal_id);
+        p += Plain<::mipcodec::types::GnssSignalId>::kSize;
+        Plain<float>::load(p, v.signal_strength);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssSignalQuality>::load(p, v.quality);
+        p += Plain<::mipcodec::types::GnssSignalQuality>::kSize;
+        Plain<double>::load(p, v.pseudorange);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.carrier_phase);
+        p += Plain<double>::kSize;
+        Plain<float>::load(p, v.doppler);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.range_uncert);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.phase_uncert);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.doppler_uncert);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.lock_time);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::GnssRawValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::Raw &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1294,6 +1606,93 @@ template <> struct Codec<gnss_receiver_2::Raw> {
 };
 
 template <> struct Codec<gnss_receiver_2::GpsEphemeris> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<::mipcodec::types::GnssEphemerisValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::GpsEphemeris &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.index);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.satellite_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.health);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.iodc);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.iode);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.t_oc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af0);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af1);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af2);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.t_gd);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.isc_l1ca);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.isc_l2c);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.t_oe);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.a);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.a_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.mean_anomaly);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.delta_mean_motion);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.delta_mean_motion_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.eccentricity);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.argument_of_perigee);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.omega);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.omega_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.inclination);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.inclination_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_ic);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_is);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_uc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_us);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_rc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_rs);
+        p += Plain<double>::kSize;
+        Plain<::mipcodec::types::GnssEphemerisValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::GpsEphemeris &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1479,6 +1878,75 @@ template <> struct Codec<gnss_receiver_2::GpsEphemeris> {
 };
 
 template <> struct Codec<gnss_receiver_2::GlonassEphemeris> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::int8_t>::kSize +
+        Plain<std::uint32_t>::kSize + Plain<std::uint32_t>::kSize +
+        Plain<::mipcodec::types::GnssGlonassSatelliteType>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<std::array<double, 3>>::kSize + Plain<std::array<float, 3>>::kSize +
+        Plain<std::array<float, 3>>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<float>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<::mipcodec::types::GnssGlonassEphemerisValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::GlonassEphemeris &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.index);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.satellite_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::int8_t>::load(p, v.freq_number);
+        p += Plain<std::int8_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.tk);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.tb);
+        p += Plain<std::uint32_t>::kSize;
+        Plain<::mipcodec::types::GnssGlonassSatelliteType>::load(p, v.sat_type);
+        p += Plain<::mipcodec::types::GnssGlonassSatelliteType>::kSize;
+        Plain<double>::load(p, v.gamma);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.tau_n);
+        p += Plain<double>::kSize;
+        Plain<std::array<double, 3>>::load(p, v.x);
+        p += Plain<std::array<double, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.v);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::array<float, 3>>::load(p, v.a);
+        p += Plain<std::array<float, 3>>::kSize;
+        Plain<std::uint8_t>::load(p, v.health);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.p);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.nt);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<float>::load(p, v.delta_tau_n);
+        p += Plain<float>::kSize;
+        Plain<std::uint8_t>::load(p, v.ft);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.en);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.p1);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.p2);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.p3);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.p4);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::GnssGlonassEphemerisValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::GlonassEphemeris &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1619,6 +2087,93 @@ template <> struct Codec<gnss_receiver_2::GlonassEphemeris> {
 };
 
 template <> struct Codec<gnss_receiver_2::GalileoEphemeris> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<::mipcodec::types::GnssEphemerisValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::GalileoEphemeris &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.index);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.satellite_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.health);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.iodc);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.iode);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.t_oc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af0);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af1);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af2);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.t_gd);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.isc_l1ca);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.isc_l2c);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.t_oe);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.a);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.a_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.mean_anomaly);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.delta_mean_motion);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.delta_mean_motion_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.eccentricity);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.argument_of_perigee);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.omega);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.omega_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.inclination);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.inclination_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_ic);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_is);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_uc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_us);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_rc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_rs);
+        p += Plain<double>::kSize;
+        Plain<::mipcodec::types::GnssEphemerisValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::GalileoEphemeris &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1804,6 +2359,93 @@ template <> struct Codec<gnss_receiver_2::GalileoEphemeris> {
 };
 
 template <> struct Codec<gnss_receiver_2::BeidouEphemeris> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<std::uint16_t>::kSize + Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize +
+        Plain<std::uint8_t>::kSize + Plain<std::uint8_t>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize + Plain<double>::kSize +
+        Plain<::mipcodec::types::GnssEphemerisValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, gnss_receiver_2::BeidouEphemeris &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.index);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.count);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.satellite_id);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.health);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.iodc);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint8_t>::load(p, v.iode);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<double>::load(p, v.t_oc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af0);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af1);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.af2);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.t_gd);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.isc_l1ca);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.isc_l2c);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.t_oe);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.a);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.a_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.mean_anomaly);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.delta_mean_motion);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.delta_mean_motion_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.eccentricity);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.argument_of_perigee);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.omega);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.omega_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.inclination);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.inclination_dot);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_ic);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_is);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_uc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_us);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_rc);
+        p += Plain<double>::kSize;
+        Plain<double>::load(p, v.c_rs);
+        p += Plain<double>::kSize;
+        Plain<::mipcodec::types::GnssEphemerisValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, gnss_receiver_2::BeidouEphemeris &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -37,6 +37,20 @@ struct AckNack {
 namespace mipcodec {
 
 template <> struct Codec<reserved::AckNack> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::AckCode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, reserved::AckNack &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.command_descriptor);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::AckCode>::load(p, v.ack_code);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, reserved::AckNack &v, DecodeError &err) {
         (void)r;
         (void)v;

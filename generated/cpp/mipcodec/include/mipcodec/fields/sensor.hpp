@@ -312,6 +312,17 @@ struct OdometerData {
 namespace mipcodec {
 
 template <> struct Codec<sensor::ScaledAccel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::ScaledAccel &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scaled_accel);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::ScaledAccel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -332,6 +343,17 @@ template <> struct Codec<sensor::ScaledAccel> {
 };
 
 template <> struct Codec<sensor::ScaledGyro> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::ScaledGyro &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scaled_gyro);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::ScaledGyro &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -352,6 +374,17 @@ template <> struct Codec<sensor::ScaledGyro> {
 };
 
 template <> struct Codec<sensor::ScaledMag> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::ScaledMag &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.scaled_mag);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::ScaledMag &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -372,6 +405,17 @@ template <> struct Codec<sensor::ScaledMag> {
 };
 
 template <> struct Codec<sensor::DeltaTheta> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::DeltaTheta &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.delta_theta);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::DeltaTheta &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -392,6 +436,17 @@ template <> struct Codec<sensor::DeltaTheta> {
 };
 
 template <> struct Codec<sensor::DeltaVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::DeltaVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.delta_velocity);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::DeltaVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -412,6 +467,17 @@ template <> struct Codec<sensor::DeltaVelocity> {
 };
 
 template <> struct Codec<sensor::CfOrientationMatrix> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 9>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::CfOrientationMatrix &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.m);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::CfOrientationMatrix &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -432,6 +498,17 @@ template <> struct Codec<sensor::CfOrientationMatrix> {
 };
 
 template <> struct Codec<sensor::CfQuaternion> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 4>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::CfQuaternion &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 4>>::load(p, v.q);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::CfQuaternion &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -452,6 +529,22 @@ template <> struct Codec<sensor::CfQuaternion> {
 };
 
 template <> struct Codec<sensor::CfEulerAngles> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::CfEulerAngles &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.roll);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.yaw);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::CfEulerAngles &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -482,6 +575,17 @@ template <> struct Codec<sensor::CfEulerAngles> {
 };
 
 template <> struct Codec<sensor::CfStabilizedNorth> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::CfStabilizedNorth &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.stabilized_north);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::CfStabilizedNorth &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -502,6 +606,17 @@ template <> struct Codec<sensor::CfStabilizedNorth> {
 };
 
 template <> struct Codec<sensor::CfStabilizedUp> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::CfStabilizedUp &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.stabilized_up);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::CfStabilizedUp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -522,6 +637,22 @@ template <> struct Codec<sensor::CfStabilizedUp> {
 };
 
 template <> struct Codec<sensor::GpsTimestamp> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::SensorGpsTimestampFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::GpsTimestamp &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::SensorGpsTimestampFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::GpsTimestamp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -552,6 +683,22 @@ template <> struct Codec<sensor::GpsTimestamp> {
 };
 
 template <> struct Codec<sensor::TemperatureStatistics> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::TemperatureStatistics &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.min_temp);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.max_temp);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.mean_temp);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::TemperatureStatistics &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -582,6 +729,17 @@ template <> struct Codec<sensor::TemperatureStatistics> {
 };
 
 template <> struct Codec<sensor::ScaledPressure> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::ScaledPressure &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.scaled_pressure);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::ScaledPressure &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -602,6 +760,17 @@ template <> struct Codec<sensor::ScaledPressure> {
 };
 
 template <> struct Codec<sensor::OverrangeStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::OverrangeStatusFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::OverrangeStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::OverrangeStatusFlags>::load(p, v.status);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::OverrangeStatus &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -622,6 +791,22 @@ template <> struct Codec<sensor::OverrangeStatus> {
 };
 
 template <> struct Codec<sensor::OdometerData> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize + Plain<float>::kSize +
+                                              Plain<::mipcodec::types::OdometerDataValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, sensor::OdometerData &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.speed);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.uncertainty);
+        p += Plain<float>::kSize;
+        Plain<::mipcodec::types::OdometerDataValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, sensor::OdometerData &v, DecodeError &err) {
         (void)r;
         (void)v;

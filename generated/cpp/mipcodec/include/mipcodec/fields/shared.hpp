@@ -156,6 +156,17 @@ struct ExternalTimeDelta {
 namespace mipcodec {
 
 template <> struct Codec<shared::EventSource> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::EventSource &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.trigger_id);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::EventSource &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -176,6 +187,22 @@ template <> struct Codec<shared::EventSource> {
 };
 
 template <> struct Codec<shared::GpsTimestamp> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mipcodec::types::SharedGpsTimestampValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::GpsTimestamp &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::SharedGpsTimestampValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::GpsTimestamp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -206,6 +233,17 @@ template <> struct Codec<shared::GpsTimestamp> {
 };
 
 template <> struct Codec<shared::DeltaTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::DeltaTime &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.seconds);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::DeltaTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -226,6 +264,17 @@ template <> struct Codec<shared::DeltaTime> {
 };
 
 template <> struct Codec<shared::ReferenceTimestamp> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint64_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::ReferenceTimestamp &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint64_t>::load(p, v.nanoseconds);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::ReferenceTimestamp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -246,6 +295,17 @@ template <> struct Codec<shared::ReferenceTimestamp> {
 };
 
 template <> struct Codec<shared::ReferenceTimeDelta> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint64_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::ReferenceTimeDelta &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint64_t>::load(p, v.dt_nanos);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::ReferenceTimeDelta &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -266,6 +326,20 @@ template <> struct Codec<shared::ReferenceTimeDelta> {
 };
 
 template <> struct Codec<shared::ExternalTimestamp> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint64_t>::kSize + Plain<::mipcodec::types::ExternalTimestampValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::ExternalTimestamp &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint64_t>::load(p, v.nanoseconds);
+        p += Plain<std::uint64_t>::kSize;
+        Plain<::mipcodec::types::ExternalTimestampValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::ExternalTimestamp &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -291,6 +365,20 @@ template <> struct Codec<shared::ExternalTimestamp> {
 };
 
 template <> struct Codec<shared::ExternalTimeDelta> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint64_t>::kSize + Plain<::mipcodec::types::ExternalTimeDeltaValidFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, shared::ExternalTimeDelta &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint64_t>::load(p, v.dt_nanos);
+        p += Plain<std::uint64_t>::kSize;
+        Plain<::mipcodec::types::ExternalTimeDeltaValidFlags>::load(p, v.valid_flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, shared::ExternalTimeDelta &v, DecodeError &err) {
         (void)r;
         (void)v;

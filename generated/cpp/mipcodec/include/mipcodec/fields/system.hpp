@@ -94,6 +94,17 @@ template <> struct Codec<system::CommunicationMode> {
 };
 
 template <> struct Codec<system::CommunicationModeResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::SystemCommMode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, system::CommunicationModeResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::SystemCommMode>::load(p, v.mode);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, system::CommunicationModeResponse &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -77,6 +77,17 @@ struct GpioState {
 namespace mipcodec {
 
 template <> struct Codec<system_data::BuiltInTest> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::Cv7ContinuousBit>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, system_data::BuiltInTest &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Cv7ContinuousBit>::load(p, v.result);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, system_data::BuiltInTest &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -122,6 +133,17 @@ template <> struct Codec<system_data::TimeSyncStatus> {
 };
 
 template <> struct Codec<system_data::GpioState> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::GpioPinStates>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, system_data::GpioState &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::GpioPinStates>::load(p, v.states);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, system_data::GpioState &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -2072,6 +2072,20 @@ template <> struct Codec<threedm::EventControl> {
 };
 
 template <> struct Codec<threedm::EventControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mipcodec::types::EventControlMode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::EventControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.instance);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mipcodec::types::EventControlMode>::load(p, v.mode);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::EventControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2396,6 +2410,17 @@ template <> struct Codec<threedm::EventActionConfigResponse> {
 };
 
 template <> struct Codec<threedm::DeviceStartupSettingsGx545> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::DeviceStartupSettingsGx545 &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::DeviceStartupSettingsGx545 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2416,6 +2441,17 @@ template <> struct Codec<threedm::DeviceStartupSettingsGx545> {
 };
 
 template <> struct Codec<threedm::DeviceStartupSettingsCv7Ins> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::DeviceStartupSettingsCv7Ins &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::DeviceStartupSettingsCv7Ins &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2504,6 +2540,22 @@ template <> struct Codec<threedm::SensorToVehicleEuler> {
 };
 
 template <> struct Codec<threedm::SensorToVehicleEulerResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<float>::kSize + Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::SensorToVehicleEulerResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.roll);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.pitch);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.yaw);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::SensorToVehicleEulerResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2570,6 +2622,17 @@ template <> struct Codec<threedm::SensorToVehicleQuaternion> {
 };
 
 template <> struct Codec<threedm::SensorToVehicleQuaternionResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 4>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::SensorToVehicleQuaternionResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 4>>::load(p, v.q);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::SensorToVehicleQuaternionResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2626,6 +2689,17 @@ template <> struct Codec<threedm::SensorToVehicleDcm> {
 };
 
 template <> struct Codec<threedm::SensorToVehicleDcmResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 9>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::SensorToVehicleDcmResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.dcm);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::SensorToVehicleDcmResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2718,6 +2792,17 @@ template <> struct Codec<threedm::AccelBiasCv7Ins> {
 };
 
 template <> struct Codec<threedm::AccelBiasResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::AccelBiasResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.bias);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::AccelBiasResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2810,6 +2895,17 @@ template <> struct Codec<threedm::GyroBiasCv7Ins> {
 };
 
 template <> struct Codec<threedm::GyroBiasResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GyroBiasResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.bias);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GyroBiasResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2830,6 +2926,17 @@ template <> struct Codec<threedm::GyroBiasResponse> {
 };
 
 template <> struct Codec<threedm::CaptureGyroBias> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::CaptureGyroBias &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.averaging_time_ms);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::CaptureGyroBias &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -2922,6 +3029,17 @@ template <> struct Codec<threedm::MagHardIronOffsetCv7Ins> {
 };
 
 template <> struct Codec<threedm::MagHardIronOffsetResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::MagHardIronOffsetResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.offset);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::MagHardIronOffsetResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3014,6 +3132,17 @@ template <> struct Codec<threedm::MagSoftIronMatrixCv7Ins> {
 };
 
 template <> struct Codec<threedm::MagSoftIronMatrixResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 9>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::MagSoftIronMatrixResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 9>>::load(p, v.matrix);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::MagSoftIronMatrixResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3126,6 +3255,17 @@ template <> struct Codec<threedm::UartBaudrate> {
 };
 
 template <> struct Codec<threedm::UartBaudrateResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::UartBaudrateResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint32_t>::load(p, v.baud);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::UartBaudrateResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3390,6 +3530,22 @@ template <> struct Codec<threedm::OdometerConfig> {
 };
 
 template <> struct Codec<threedm::OdometerConfigResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::OdometerMode>::kSize + Plain<float>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::OdometerConfigResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::OdometerMode>::load(p, v.mode);
+        p += Plain<::mipcodec::types::OdometerMode>::kSize;
+        Plain<float>::load(p, v.scaling);
+        p += Plain<float>::kSize;
+        Plain<float>::load(p, v.uncertainty);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::OdometerConfigResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3709,6 +3865,20 @@ template <> struct Codec<threedm::SensorRange> {
 };
 
 template <> struct Codec<threedm::SensorRangeResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::SensorRangeType>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::SensorRangeResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::SensorRangeType>::load(p, v.sensor);
+        p += Plain<::mipcodec::types::SensorRangeType>::kSize;
+        Plain<std::uint8_t>::load(p, v.setting);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::SensorRangeResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -3734,6 +3904,17 @@ template <> struct Codec<threedm::SensorRangeResponse> {
 };
 
 template <> struct Codec<threedm::GetCalibratedSensorRanges> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::SensorRangeType>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GetCalibratedSensorRanges &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::SensorRangeType>::load(p, v.sensor);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GetCalibratedSensorRanges &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4057,6 +4238,16 @@ template <> struct Codec<threedm::PollData> {
 };
 
 template <> struct Codec<threedm::GetImuBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GetImuBaseRate &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GetImuBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4072,6 +4263,17 @@ template <> struct Codec<threedm::GetImuBaseRate> {
 };
 
 template <> struct Codec<threedm::ImuBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::ImuBaseRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.rate);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::ImuBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4092,6 +4294,16 @@ template <> struct Codec<threedm::ImuBaseRate> {
 };
 
 template <> struct Codec<threedm::GetGnssBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GetGnssBaseRate &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GetGnssBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4107,6 +4319,17 @@ template <> struct Codec<threedm::GetGnssBaseRate> {
 };
 
 template <> struct Codec<threedm::GnssBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssBaseRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.rate);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4127,6 +4350,16 @@ template <> struct Codec<threedm::GnssBaseRate> {
 };
 
 template <> struct Codec<threedm::GetFilterBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GetFilterBaseRate &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GetFilterBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4142,6 +4375,17 @@ template <> struct Codec<threedm::GetFilterBaseRate> {
 };
 
 template <> struct Codec<threedm::FilterBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::FilterBaseRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.rate);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::FilterBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4162,6 +4406,17 @@ template <> struct Codec<threedm::FilterBaseRate> {
 };
 
 template <> struct Codec<threedm::GetBaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GetBaseRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.desc_set);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GetBaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4182,6 +4437,19 @@ template <> struct Codec<threedm::GetBaseRate> {
 };
 
 template <> struct Codec<threedm::BaseRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint8_t>::kSize + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::BaseRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.desc_set);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<std::uint16_t>::load(p, v.rate);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::BaseRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4537,6 +4805,20 @@ template <> struct Codec<threedm::MessageFormatResponse> {
 };
 
 template <> struct Codec<threedm::FactoryStreaming> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::FactoryStreamingAction>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::FactoryStreaming &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FactoryStreamingAction>::load(p, v.action);
+        p += Plain<::mipcodec::types::FactoryStreamingAction>::kSize;
+        Plain<std::uint8_t>::load(p, v.reserved);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::FactoryStreaming &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4562,6 +4844,23 @@ template <> struct Codec<threedm::FactoryStreaming> {
 };
 
 template <> struct Codec<threedm::DataStreamControlGx545> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
+                                              Plain<::mipcodec::types::Gx5StreamSelector>::kSize +
+                                              Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::DataStreamControlGx545 &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
+        Plain<::mipcodec::types::Gx5StreamSelector>::load(p, v.device_selector);
+        p += Plain<::mipcodec::types::Gx5StreamSelector>::kSize;
+        Plain<std::uint8_t>::load(p, v.enable);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::DataStreamControlGx545 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4633,6 +4932,20 @@ template <> struct Codec<threedm::DataStreamControlCv7Ins> {
 };
 
 template <> struct Codec<threedm::DataStreamControlResponseGx545> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::Gx5StreamSelector>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::DataStreamControlResponseGx545 &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::Gx5StreamSelector>::load(p, v.device_selector);
+        p += Plain<::mipcodec::types::Gx5StreamSelector>::kSize;
+        Plain<std::uint8_t>::load(p, v.enabled);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::DataStreamControlResponseGx545 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4893,6 +5206,23 @@ template <> struct Codec<threedm::GnssSbasSettingsResponse> {
 };
 
 template <> struct Codec<threedm::GnssAssistedFixControl> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
+                                              Plain<::mipcodec::types::AssistedFixOption>::kSize +
+                                              Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssAssistedFixControl &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
+        Plain<::mipcodec::types::AssistedFixOption>::load(p, v.option);
+        p += Plain<::mipcodec::types::AssistedFixOption>::kSize;
+        Plain<std::uint8_t>::load(p, v.flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssAssistedFixControl &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4923,6 +5253,20 @@ template <> struct Codec<threedm::GnssAssistedFixControl> {
 };
 
 template <> struct Codec<threedm::GnssAssistedFixControlResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<::mipcodec::types::AssistedFixOption>::kSize + Plain<std::uint8_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssAssistedFixControlResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::AssistedFixOption>::load(p, v.option);
+        p += Plain<::mipcodec::types::AssistedFixOption>::kSize;
+        Plain<std::uint8_t>::load(p, v.flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssAssistedFixControlResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4948,6 +5292,25 @@ template <> struct Codec<threedm::GnssAssistedFixControlResponse> {
 };
 
 template <> struct Codec<threedm::GnssAssistTimeUpdate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
+                                              Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssAssistTimeUpdate &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
+        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<float>::load(p, v.accuracy);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssAssistTimeUpdate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4983,6 +5346,22 @@ template <> struct Codec<threedm::GnssAssistTimeUpdate> {
 };
 
 template <> struct Codec<threedm::GnssAssistTimeUpdateResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssAssistTimeUpdateResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.tow);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<float>::load(p, v.accuracy);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssAssistTimeUpdateResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -5049,6 +5428,17 @@ template <> struct Codec<threedm::PpsSource> {
 };
 
 template <> struct Codec<threedm::PpsSourceResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::PpsSource>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::PpsSourceResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::PpsSource>::load(p, v.source);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::PpsSourceResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -5069,6 +5459,17 @@ template <> struct Codec<threedm::PpsSourceResponse> {
 };
 
 template <> struct Codec<threedm::GetSupportedEvents> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::SupportedEventsQuery>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GetSupportedEvents &v) {
+        (void)p;
+        (void)v;
+        Plain<::mipcodec::types::SupportedEventsQuery>::load(p, v.query);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GetSupportedEvents &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -5114,6 +5515,20 @@ template <> struct Codec<threedm::SupportedEvents> {
 };
 
 template <> struct Codec<threedm::DeviceStatus> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint16_t>::kSize + Plain<::mipcodec::types::DeviceStatusSelector>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::DeviceStatus &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.model_number);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mipcodec::types::DeviceStatusSelector>::load(p, v.status_selector);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::DeviceStatus &v, DecodeError &err) {
         (void)r;
         (void)v;

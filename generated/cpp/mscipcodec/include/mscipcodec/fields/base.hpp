@@ -260,6 +260,16 @@ struct CorrelateGpsTime {
 namespace mscipcodec {
 
 template <> struct Codec<base::Ping> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::Ping &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::Ping &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -275,6 +285,16 @@ template <> struct Codec<base::Ping> {
 };
 
 template <> struct Codec<base::GetDeviceMessages> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceMessages &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceMessages &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -310,6 +330,16 @@ template <> struct Codec<base::DeviceMessages> {
 };
 
 template <> struct Codec<base::DeviceReset> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceReset &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceReset &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -325,6 +355,16 @@ template <> struct Codec<base::DeviceReset> {
 };
 
 template <> struct Codec<base::GetDeviceModel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceModel &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceModel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -340,6 +380,17 @@ template <> struct Codec<base::GetDeviceModel> {
 };
 
 template <> struct Codec<base::DeviceModel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<char, 16>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceModel &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<char, 16>>::load(p, v.model);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceModel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -360,6 +411,16 @@ template <> struct Codec<base::DeviceModel> {
 };
 
 template <> struct Codec<base::GetDeviceSn> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceSn &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceSn &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -375,6 +436,17 @@ template <> struct Codec<base::GetDeviceSn> {
 };
 
 template <> struct Codec<base::DeviceSn> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<char, 16>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceSn &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<char, 16>>::load(p, v.serial_number);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceSn &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -395,6 +467,16 @@ template <> struct Codec<base::DeviceSn> {
 };
 
 template <> struct Codec<base::GetDeviceFw> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceFw &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceFw &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -410,6 +492,17 @@ template <> struct Codec<base::GetDeviceFw> {
 };
 
 template <> struct Codec<base::DeviceFw> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<char, 16>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceFw &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<char, 16>>::load(p, v.firmware);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceFw &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -430,6 +523,16 @@ template <> struct Codec<base::DeviceFw> {
 };
 
 template <> struct Codec<base::GetDeviceCal> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::GetDeviceCal &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::GetDeviceCal &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -445,6 +548,17 @@ template <> struct Codec<base::GetDeviceCal> {
 };
 
 template <> struct Codec<base::DeviceCal> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<char, 16>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::DeviceCal &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<char, 16>>::load(p, v.date);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::DeviceCal &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -465,6 +579,19 @@ template <> struct Codec<base::DeviceCal> {
 };
 
 template <> struct Codec<base::CorrelateGpsTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize + Plain<std::uint32_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, base::CorrelateGpsTime &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.week);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<std::uint32_t>::load(p, v.seconds);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, base::CorrelateGpsTime &v, DecodeError &err) {
         (void)r;
         (void)v;

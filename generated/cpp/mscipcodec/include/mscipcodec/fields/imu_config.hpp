@@ -503,6 +503,17 @@ template <> struct Codec<imu_config::UartBaudRate> {
 };
 
 template <> struct Codec<imu_config::UartBaudRateResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::BaudRate>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::UartBaudRateResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::BaudRate>::load(p, v.baud_rate);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::UartBaudRateResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -559,6 +570,17 @@ template <> struct Codec<imu_config::Filter> {
 };
 
 template <> struct Codec<imu_config::FilterResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::FilterBandwidth>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::FilterResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::FilterBandwidth>::load(p, v.bandwidth);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::FilterResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -615,6 +637,17 @@ template <> struct Codec<imu_config::SampleRate> {
 };
 
 template <> struct Codec<imu_config::SampleRateResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::SampleRateResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.decimation);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::SampleRateResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -707,6 +740,16 @@ template <> struct Codec<imu_config::SelectSensorsResponse> {
 };
 
 template <> struct Codec<imu_config::GetInternalSampleRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::GetInternalSampleRate &v) {
+        (void)p;
+        (void)v;
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::GetInternalSampleRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -722,6 +765,17 @@ template <> struct Codec<imu_config::GetInternalSampleRate> {
 };
 
 template <> struct Codec<imu_config::InternalSampleRate> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::uint16_t>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::InternalSampleRate &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint16_t>::load(p, v.rate);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::InternalSampleRate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -778,6 +832,17 @@ template <> struct Codec<imu_config::AccelRange> {
 };
 
 template <> struct Codec<imu_config::AccelRangeResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::AccelRange>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::AccelRangeResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::AccelRange>::load(p, v.range);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::AccelRangeResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -834,6 +899,17 @@ template <> struct Codec<imu_config::GyroRange> {
 };
 
 template <> struct Codec<imu_config::GyroRangeResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::GyroRange>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::GyroRangeResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::GyroRange>::load(p, v.range);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::GyroRangeResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -854,6 +930,17 @@ template <> struct Codec<imu_config::GyroRangeResponse> {
 };
 
 template <> struct Codec<imu_config::ConfigAll> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::FunctionCode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::ConfigAll &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::FunctionCode>::load(p, v.function);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::ConfigAll &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -910,6 +997,17 @@ template <> struct Codec<imu_config::DataOnOff> {
 };
 
 template <> struct Codec<imu_config::DataOnOffResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::OnOff>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::DataOnOffResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::OnOff>::load(p, v.control);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::DataOnOffResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -966,6 +1064,17 @@ template <> struct Codec<imu_config::XtrigOnOff> {
 };
 
 template <> struct Codec<imu_config::XtrigOnOffResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::OnOff>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::XtrigOnOffResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::OnOff>::load(p, v.control);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::XtrigOnOffResponse &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -1078,6 +1187,17 @@ template <> struct Codec<imu_config::AuxAccelRange> {
 };
 
 template <> struct Codec<imu_config::AuxAccelRangeResponse> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<::mscipcodec::types::AccelRange>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_config::AuxAccelRangeResponse &v) {
+        (void)p;
+        (void)v;
+        Plain<::mscipcodec::types::AccelRange>::load(p, v.range);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_config::AuxAccelRangeResponse &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -191,6 +191,17 @@ struct ScaledAuxAccel {
 namespace mscipcodec {
 
 template <> struct Codec<imu_data::ScaledAccel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::ScaledAccel &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.accel);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::ScaledAccel &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -211,6 +222,17 @@ template <> struct Codec<imu_data::ScaledAccel> {
 };
 
 template <> struct Codec<imu_data::ScaledGyro> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::ScaledGyro &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.gyro);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::ScaledGyro &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -231,6 +253,17 @@ template <> struct Codec<imu_data::ScaledGyro> {
 };
 
 template <> struct Codec<imu_data::ScaledMag> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::ScaledMag &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.mag);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::ScaledMag &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -251,6 +284,17 @@ template <> struct Codec<imu_data::ScaledMag> {
 };
 
 template <> struct Codec<imu_data::DeltaTheta> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::DeltaTheta &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.delta_theta);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::DeltaTheta &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -271,6 +315,17 @@ template <> struct Codec<imu_data::DeltaTheta> {
 };
 
 template <> struct Codec<imu_data::DeltaVelocity> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::DeltaVelocity &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.delta_velocity);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::DeltaVelocity &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -291,6 +346,17 @@ template <> struct Codec<imu_data::DeltaVelocity> {
 };
 
 template <> struct Codec<imu_data::ScaledPressure> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::ScaledPressure &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.pressure);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::ScaledPressure &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -311,6 +377,17 @@ template <> struct Codec<imu_data::ScaledPressure> {
 };
 
 template <> struct Codec<imu_data::ScaledTemperature> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<float>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::ScaledTemperature &v) {
+        (void)p;
+        (void)v;
+        Plain<float>::load(p, v.temperature);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::ScaledTemperature &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -331,6 +408,22 @@ template <> struct Codec<imu_data::ScaledTemperature> {
 };
 
 template <> struct Codec<imu_data::GpsCorrelatedTime> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<double>::kSize + Plain<std::uint16_t>::kSize +
+                                              Plain<::mscipcodec::types::GpsTimeFlags>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::GpsCorrelatedTime &v) {
+        (void)p;
+        (void)v;
+        Plain<double>::load(p, v.seconds);
+        p += Plain<double>::kSize;
+        Plain<std::uint16_t>::load(p, v.week);
+        p += Plain<std::uint16_t>::kSize;
+        Plain<::mscipcodec::types::GpsTimeFlags>::load(p, v.flags);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::GpsCorrelatedTime &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -361,6 +454,17 @@ template <> struct Codec<imu_data::GpsCorrelatedTime> {
 };
 
 template <> struct Codec<imu_data::ScaledAuxAccel> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize = 0 + Plain<std::array<float, 3>>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, imu_data::ScaledAuxAccel &v) {
+        (void)p;
+        (void)v;
+        Plain<std::array<float, 3>>::load(p, v.accel);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, imu_data::ScaledAuxAccel &v, DecodeError &err) {
         (void)r;
         (void)v;

@@ -37,6 +37,20 @@ struct Ack {
 namespace mscipcodec {
 
 template <> struct Codec<reserved::Ack> {
+    static constexpr bool kPlain = true;
+    static constexpr std::size_t kPlainSize =
+        0 + Plain<std::uint8_t>::kSize + Plain<::mscipcodec::types::ErrorCode>::kSize;
+    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
+    MSCIPCODEC_INLINE static void load(const std::uint8_t *p, reserved::Ack &v) {
+        (void)p;
+        (void)v;
+        Plain<std::uint8_t>::load(p, v.command_code);
+        p += Plain<std::uint8_t>::kSize;
+        Plain<::mscipcodec::types::ErrorCode>::load(p, v.error_code);
+    }
+
+    static constexpr bool kFixedSize = true;
+    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, reserved::Ack &v, DecodeError &err) {
         (void)r;
         (void)v;
