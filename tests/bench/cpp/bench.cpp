@@ -78,11 +78,13 @@ bool load(const std::string &dir, const char *name, Stream &s) {
     return true;
 }
 
-// Consumes a decoded value: its first 8 bytes (the first float of scaled accel / gyro, ...).
+// Consumes a decoded value: its first 4 bytes (the first float of scaled accel / gyro, ...), as a
+// reader of one value would load them (an 8-byte load over two 4-byte stores would stall on store
+// forwarding and measure that instead of the decoder).
 struct Consume {
     Counts &c;
     template <class T> void field(const T &value) {
-        std::uint64_t word = 0;
+        std::uint32_t word = 0;
         if constexpr (std::is_trivially_copyable_v<T>) {
             std::memcpy(&word, &value, sizeof(T) < sizeof word ? sizeof(T) : sizeof word);
         } else {
