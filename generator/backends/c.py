@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from generator.examples import example_context
+from generator.lookup import resolve
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
 
@@ -513,22 +514,21 @@ class _Package:
         }
 
     def _add_lookup_tables(self) -> None:
-        """Each set view's `lookup`: the (set, descriptor) -> field table of the C dispatch.
-
-        A set's own fields and, in a data set, the shared data fields it does not define itself
-        (unless a reserved field of the data kind has that descriptor: find_field tries set,
-        reserved, then shared, and the table must give the same answer), so that a shared field
-        such as a timestamp in every packet is one table lookup like any other."""
-        shared = next((s for s in self.sets if s["id"] == self.shared_set), None)
-        dk = self.data_kind
-        reserved_data = {r["descriptor"] for r in self.reserved if dk and r["applies_to"] == dk["name"]}
+        """Each set view's `lookup`: its descriptor -> field table in the C dispatch, as
+        generator.lookup resolves it (the set's fields, reserved fields of its kind, shared data
+        fields), so that a reserved or shared field (an ack/nack, a timestamp in every packet) is
+        one table lookup like any other. `source` says which of the three an entry is."""
+        views = {(s["id"], f["descriptor"]): f for s in self.sets for f in s["fields"]}
+        views.update({(("reserved", r["applies_to"]), r["descriptor"]): r for r in self.reserved})
         for s in self.sets:
-            lookup = [dict(f, shared=False) for f in s["fields"]]
-            is_data = dk is not None and dk["first"] <= s["id"] <= dk["last"]
-            if shared is not None and s is not shared and is_data:
-                own = {f["descriptor"] for f in s["fields"]} | reserved_data
-                lookup += [dict(f, shared=True) for f in shared["fields"] if f["descriptor"] not in own]
-            s["lookup"] = sorted(lookup, key=lambda f: f["descriptor"])
+            lookup = []
+            for d, (owner, f) in sorted(resolve(self.proto, s["id"]).items()):
+                if owner is None:
+                    view, source = views[(("reserved", f["applies_to"]), d)], "reserved"
+                else:
+                    view, source = views[(owner["id"], d)], "own" if owner["id"] == s["id"] else "shared"
+                lookup.append(dict(view, source=source))
+            s["lookup"] = lookup
 
     def _all_ir_layouts(self):
         for r in self.proto["reserved_fields"]:

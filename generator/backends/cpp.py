@@ -24,6 +24,7 @@ from __future__ import annotations
 import re
 
 from generator.examples import example_context
+from generator.lookup import resolve
 from generator.render import environment
 
 OUTPUT_DIRS = ["cpp"]
@@ -520,13 +521,14 @@ class _Proto:
             "kinds": kinds,
             "reserved": reserved,
             "shared": shared,
-            **self.lookup_table(sets, reserved, shared),
+            **self.lookup_table(sets, reserved),
         }
 
-    def lookup_table(self, sets: list[dict], reserved: list[dict], shared: dict | None) -> dict:
-        """The (set, descriptor) -> case table of lookup.hpp: the same answers as the search order of
+    def lookup_table(self, sets: list[dict], reserved: list[dict]) -> dict:
+        """The (set, descriptor) -> case table of lookup.hpp: the answers of the search order of
         docs/conformance.md section 2 (set fields, reserved fields of the set's kind, shared data
-        fields), computed here once. Case 0 is an unknown set, 1 an unknown descriptor, 2.. a field."""
+        fields) as generator.lookup resolves it. Case 0 is an unknown set, 1 an unknown descriptor,
+        2.. a field."""
         cases: list[list[str]] = []
         index: dict[tuple, int] = {}
 
@@ -537,23 +539,24 @@ class _Proto:
                 cases.append(c["types"])
             return index[key]
 
-        def kind_of(set_id: int) -> str:
-            for k, r in self.p["set_kinds"].items():
-                if r["first"] <= set_id <= r["last"]:
-                    return ident(k)
-            return "none"
+        # Each field's case: a set's cases, the reserved cases of each kind (names are unique
+        # within those lists), found by where generator.lookup resolves (set, descriptor) to.
+        by_owner: dict[tuple, dict] = {("set", st["id"]): st["cases"] for st in sets}
+        by_owner.update({("reserved", r["kind"]): r["cases"] for r in reserved})
+        by_owner = {k: {c["descriptor"]: c for c in v} for k, v in by_owner.items()}
 
-        def row(own: list[dict] | None, kind: str) -> list[int]:
-            # Searched in order: the set's own fields, reserved fields of its kind, shared data fields.
-            found: dict[int, dict] = {}
-            lists = [own or []] + [r["cases"] for r in reserved if r["kind"] == kind]
-            if shared and shared["kind"] == kind:
-                lists.append(shared["cases"])
-            for cs in lists:
-                for c in cs:
-                    found.setdefault(c["descriptor"], c)
-            miss = 1 if own is not None else 0
-            return [case(found[d]) if d in found else miss for d in range(256)]
+        def row(set_id: int) -> list[int]:
+            found = resolve(self.p, set_id)
+            miss = 1 if any(st["id"] == set_id for st in sets) else 0
+            out = []
+            for d in range(256):
+                if d not in found:
+                    out.append(miss)
+                    continue
+                owner, f = found[d]
+                key = ("set", owner["id"]) if owner else ("reserved", ident(f["applies_to"]))
+                out.append(case(by_owner[key][d]))
+            return out
 
         rows: list[list[int]] = []
         row_of: dict[tuple, int] = {}
@@ -565,17 +568,8 @@ class _Proto:
                 rows.append(r)
             return row_of[key]
 
-        defined = {s["id"]: s for s in sets}
-        undefined: dict[str, int] = {}
-        set_row = []
-        for i in range(256):
-            k = kind_of(i)
-            if i in defined:
-                set_row.append(add(row(defined[i]["cases"], k)))
-            else:
-                if k not in undefined:
-                    undefined[k] = add(row(None, k))
-                set_row.append(undefined[k])
+        # Undefined sets of one kind resolve alike: their row is shared through add().
+        set_row = [add(row(i)) for i in range(256)]
         return {
             "cases": [{"index": i + 2, "types": t} for i, t in enumerate(cases)],
             "set_row": set_row,

@@ -876,8 +876,9 @@ const mip_layout_info_t *mip_layout_info(mip_field_id_t id) {
 }
 
 /* Fields of each set: descriptor -> 1 + index into k_fields (0: not defined). Dispatch by
- * (set, descriptor) is two table lookups. A data set's table also holds the shared data fields it
- * does not define itself (the answer find_field would reach after the reserved fields). */
+ * (set, descriptor) is two table lookups. A set's table also holds the reserved fields of its
+ * kind and, in a data set, the shared data fields that it does not define itself: the answer
+ * find_field's search would reach (the generator resolves the search once). */
 static const uint16_t k_set_base[256] = {
     [0x01] = 2,  /* ping */
     [0x02] = 3,  /* set_to_idle */
@@ -898,6 +899,7 @@ static const uint16_t k_set_base[256] = {
     [0x86] = 12, /* extended_descriptors */
     [0x88] = 14, /* continuous_bit_result */
     [0x89] = 16, /* comm_port_speed_response */
+    [0xF1] = 1,  /* reserved ack_nack */
 };
 static const uint16_t k_set_threedm[256] = {
     [0x01] = 67,  /* poll_imu_data */
@@ -987,6 +989,7 @@ static const uint16_t k_set_threedm[256] = {
     [0xD2] = 62,  /* sensor_range_response */
     [0xD3] = 64,  /* calibrated_sensor_ranges */
     [0xD4] = 66,  /* lowpass_filter_response */
+    [0xF1] = 1,   /* reserved ack_nack */
 };
 static const uint16_t k_set_filter[256] = {
     [0x01] = 108, /* reset_filter */
@@ -1072,6 +1075,7 @@ static const uint16_t k_set_filter[256] = {
     [0xE1] = 186, /* speed_lever_arm_response */
     [0xE3] = 188, /* wheeled_vehicle_constraint_control_response */
     [0xE4] = 190, /* gnss_antenna_calibration_control_response */
+    [0xF1] = 1,   /* reserved ack_nack */
 };
 static const uint16_t k_set_gnss[256] = {
     [0x01] = 191, /* receiver_info */
@@ -1080,6 +1084,7 @@ static const uint16_t k_set_gnss[256] = {
     [0x81] = 192, /* receiver_info_response */
     [0x82] = 194, /* signal_configuration_response */
     [0xA0] = 196, /* spartn_configuration_response */
+    [0xF1] = 1,   /* reserved ack_nack */
 };
 static const uint16_t k_set_aiding[256] = {
     [0x01] = 197, /* frame_config */
@@ -1095,10 +1100,12 @@ static const uint16_t k_set_aiding[256] = {
     [0x33] = 209, /* pressure */
     [0x81] = 198, /* frame_config_response */
     [0x9F] = 200, /* echo_control_response */
+    [0xF1] = 1,   /* reserved ack_nack */
 };
 static const uint16_t k_set_system[256] = {
     [0x10] = 210, /* communication_mode */
     [0x90] = 211, /* communication_mode_response */
+    [0xF1] = 1,   /* reserved ack_nack */
 };
 static const uint16_t k_set_sensor[256] = {
     [0x04] = 212, /* scaled_accel */
@@ -1322,8 +1329,8 @@ static const uint16_t *const k_sets[256] = {
     [0xFF] = k_set_shared,
 };
 
-/* Fields of a set (shared data fields included, see k_set_*); *set_known tells whether the set
- * is defined at all. */
+/* Fields of a set (reserved and shared data fields included, see k_set_*); *set_known tells
+ * whether the set is defined at all. */
 static const mip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
     const uint16_t *table = k_sets[set];
     *set_known = table != NULL;

@@ -145,8 +145,9 @@ const mscip_layout_info_t *mscip_layout_info(mscip_field_id_t id) {
 }
 
 /* Fields of each set: descriptor -> 1 + index into k_fields (0: not defined). Dispatch by
- * (set, descriptor) is two table lookups. A data set's table also holds the shared data fields it
- * does not define itself (the answer find_field would reach after the reserved fields). */
+ * (set, descriptor) is two table lookups. A set's table also holds the reserved fields of its
+ * kind and, in a data set, the shared data fields that it does not define itself: the answer
+ * find_field's search would reach (the generator resolves the search once). */
 static const uint16_t k_set_base[256] = {
     [0x02] = 2,  /* ping */
     [0x03] = 3,  /* get_device_messages */
@@ -156,6 +157,7 @@ static const uint16_t k_set_base[256] = {
     [0x07] = 10, /* get_device_fw */
     [0x08] = 12, /* get_device_cal */
     [0x09] = 14, /* correlate_gps_time */
+    [0x80] = 1,  /* reserved ack */
     [0x83] = 4,  /* device_messages */
     [0x85] = 7,  /* device_model */
     [0x86] = 9,  /* device_sn */
@@ -175,6 +177,7 @@ static const uint16_t k_set_imu_config[256] = {
     [0x0B] = 32, /* xtrig_on_off */
     [0x0C] = 34, /* select_sensors_rev_b */
     [0x0D] = 36, /* aux_accel_range */
+    [0x80] = 1,  /* reserved ack */
     [0x81] = 16, /* uart_baud_rate_response */
     [0x83] = 18, /* filter_response */
     [0x84] = 20, /* sample_rate_response */
@@ -205,8 +208,8 @@ static const uint16_t *const k_sets[256] = {
     [0xA2] = k_set_imu_data,
 };
 
-/* Fields of a set (shared data fields included, see k_set_*); *set_known tells whether the set
- * is defined at all. */
+/* Fields of a set (reserved and shared data fields included, see k_set_*); *set_known tells
+ * whether the set is defined at all. */
 static const mscip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
     const uint16_t *table = k_sets[set];
     *set_known = table != NULL;
