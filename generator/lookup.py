@@ -3,7 +3,7 @@
 A field is looked up in its set's own fields, then among the reserved fields of the set's kind,
 then (in a data set, when the protocol has shared data fields) among the shared data fields; the
 first match wins. Every runtime performs this search; the back ends that compile it into
-dispatch tables (C, C++) take the resolved answer from here, so the order lives in one place.
+dispatch tables (C, C++, Rust) take the resolved answer from here, so the order lives in one place.
 """
 
 from __future__ import annotations

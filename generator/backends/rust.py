@@ -13,6 +13,7 @@ import struct
 
 from generator.canonical import float_text, string_text
 from generator.examples import example_context
+from generator.lookup import resolve
 from generator.primitives import PRIMITIVES
 from generator.render import ToolError, environment
 
@@ -513,7 +514,18 @@ class _Protocol:
             "fields": fields,
             "has_multi": any(f["multi"] for f in fields),
             "shared": s["shared"],
+            "decoders": self.set_decoders(s),
         }
+
+    def set_decoders(self, s: dict) -> list[dict]:
+        """The entries of set s's decoder table: every descriptor that generator.lookup resolves
+        to a field of a set (its own, or a shared data field it does not define). Descriptors
+        that resolve to a reserved field stay out: decode_other_field decodes those."""
+        out = []
+        for d, (owner, f) in sorted(resolve(self.proto, s["id"]).items()):
+            if owner is not None:
+                out.append({"descriptor": _hex(d), "fn": f"{self.set_module(owner)}_{f['name']}"})
+        return out
 
     def reserved_model(self) -> list[dict]:
         out = []

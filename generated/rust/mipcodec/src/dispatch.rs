@@ -325,8 +325,9 @@ pub fn decode_field(
     data: &[u8],
     device: Option<Device>,
 ) -> Result<FieldValue, DecodeError> {
-    // The set's own fields: two table loads, straight to the field's decoder, which builds the
-    // FieldValue in the caller's slot.
+    // The set's own fields and the shared data fields it does not define (the search order as
+    // the generator resolves it): two table loads, straight to the field's decoder, which builds
+    // the FieldValue in the caller's slot. Reserved fields and unknown descriptors go on.
     if let Some(decoders) = SET_DECODERS[usize::from(set)] {
         if let Some(decode) = decoders[usize::from(descriptor)] {
             return decode(data, device);
@@ -338,10 +339,10 @@ pub fn decode_field(
 /// The decoder of one field (in `decoders`).
 type Decoder = fn(&[u8], Option<Device>) -> Result<FieldValue, DecodeError>;
 
-/// Decoders of a set's own fields, by descriptor (`None`: not a field of the set).
+/// Decoders of a set's fields (its own and shared ones), by descriptor (`None`: look further).
 type DescriptorDecoders = [Option<Decoder>; 256];
 
-/// The decoders of every set that has fields, by set (`None`: no fields of its own).
+/// The decoder tables of every set that has any, by set (`None`: look further).
 static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
     let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
     t[0x01] = Some(&BASE_DECODERS);
@@ -362,125 +363,125 @@ static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
     t
 };
 
-/// Decoders of the fields of set 0x01, by descriptor.
+/// Decoders of the fields of set 0x01 (its own and the shared ones), by descriptor.
 static BASE_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::base_ping);
     t[0x02] = Some(decoders::base_set_to_idle);
     t[0x03] = Some(decoders::base_get_device_info);
-    t[0x81] = Some(decoders::base_device_info);
     t[0x04] = Some(decoders::base_get_device_descriptors);
-    t[0x82] = Some(decoders::base_device_descriptors);
     t[0x05] = Some(decoders::base_built_in_test);
-    t[0x83] = Some(decoders::base_built_in_test_result);
     t[0x06] = Some(decoders::base_resume);
     t[0x07] = Some(decoders::base_get_extended_descriptors);
-    t[0x86] = Some(decoders::base_extended_descriptors);
     t[0x08] = Some(decoders::base_continuous_bit);
-    t[0x88] = Some(decoders::base_continuous_bit_result);
     t[0x09] = Some(decoders::base_comm_port_speed);
-    t[0x89] = Some(decoders::base_comm_port_speed_response);
     t[0x72] = Some(decoders::base_gps_time_update);
+    t[0x7E] = Some(decoders::base_device_reset);
+    t[0x81] = Some(decoders::base_device_info);
+    t[0x82] = Some(decoders::base_device_descriptors);
+    t[0x83] = Some(decoders::base_built_in_test_result);
     t[0x84] = Some(decoders::base_gps_week);
     t[0x85] = Some(decoders::base_gps_seconds);
-    t[0x7E] = Some(decoders::base_device_reset);
+    t[0x86] = Some(decoders::base_extended_descriptors);
+    t[0x88] = Some(decoders::base_continuous_bit_result);
+    t[0x89] = Some(decoders::base_comm_port_speed_response);
     t
 };
 
-/// Decoders of the fields of set 0x0C, by descriptor.
+/// Decoders of the fields of set 0x0C (its own and the shared ones), by descriptor.
 static THREEDM_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
-    t[0x2B] = Some(decoders::threedm_event_control);
-    t[0xB5] = Some(decoders::threedm_event_control_response);
-    t[0x2C] = Some(decoders::threedm_get_event_trigger_status);
-    t[0xB6] = Some(decoders::threedm_event_trigger_status);
-    t[0x2D] = Some(decoders::threedm_get_event_action_status);
-    t[0xB7] = Some(decoders::threedm_event_action_status);
-    t[0x2E] = Some(decoders::threedm_event_trigger_config);
-    t[0xB8] = Some(decoders::threedm_event_trigger_config_response);
-    t[0x2F] = Some(decoders::threedm_event_action_config);
-    t[0xB9] = Some(decoders::threedm_event_action_config_response);
-    t[0x30] = Some(decoders::threedm_device_startup_settings);
-    t[0x31] = Some(decoders::threedm_sensor_to_vehicle_euler);
-    t[0xB1] = Some(decoders::threedm_sensor_to_vehicle_euler_response);
-    t[0x32] = Some(decoders::threedm_sensor_to_vehicle_quaternion);
-    t[0xB2] = Some(decoders::threedm_sensor_to_vehicle_quaternion_response);
-    t[0x33] = Some(decoders::threedm_sensor_to_vehicle_dcm);
-    t[0xB3] = Some(decoders::threedm_sensor_to_vehicle_dcm_response);
-    t[0x37] = Some(decoders::threedm_accel_bias);
-    t[0x9A] = Some(decoders::threedm_accel_bias_response);
-    t[0x38] = Some(decoders::threedm_gyro_bias);
-    t[0x9B] = Some(decoders::threedm_gyro_bias_response);
-    t[0x39] = Some(decoders::threedm_capture_gyro_bias);
-    t[0x3A] = Some(decoders::threedm_mag_hard_iron_offset);
-    t[0x9C] = Some(decoders::threedm_mag_hard_iron_offset_response);
-    t[0x3B] = Some(decoders::threedm_mag_soft_iron_matrix);
-    t[0x9D] = Some(decoders::threedm_mag_soft_iron_matrix_response);
-    t[0x3E] = Some(decoders::threedm_coning_sculling_enable);
-    t[0x9E] = Some(decoders::threedm_coning_sculling_enable_response);
-    t[0x40] = Some(decoders::threedm_uart_baudrate);
-    t[0x87] = Some(decoders::threedm_uart_baudrate_response);
-    t[0x41] = Some(decoders::threedm_gpio_config);
-    t[0xC1] = Some(decoders::threedm_gpio_config_response);
-    t[0x42] = Some(decoders::threedm_gpio_state);
-    t[0xC2] = Some(decoders::threedm_gpio_state_response);
-    t[0x43] = Some(decoders::threedm_odometer_config);
-    t[0xC3] = Some(decoders::threedm_odometer_config_response);
-    t[0x50] = Some(decoders::threedm_advanced_lowpass_filter);
-    t[0x8B] = Some(decoders::threedm_advanced_lowpass_filter_response);
-    t[0x51] = Some(decoders::threedm_complementary_filter);
-    t[0x97] = Some(decoders::threedm_complementary_filter_response);
-    t[0x52] = Some(decoders::threedm_sensor_range);
-    t[0xD2] = Some(decoders::threedm_sensor_range_response);
-    t[0x53] = Some(decoders::threedm_get_calibrated_sensor_ranges);
-    t[0xD3] = Some(decoders::threedm_calibrated_sensor_ranges);
-    t[0x54] = Some(decoders::threedm_lowpass_filter);
-    t[0xD4] = Some(decoders::threedm_lowpass_filter_response);
     t[0x01] = Some(decoders::threedm_poll_imu_data);
     t[0x02] = Some(decoders::threedm_poll_gnss_data);
     t[0x03] = Some(decoders::threedm_poll_filter_data);
     t[0x04] = Some(decoders::threedm_poll_nmea_data);
-    t[0x0D] = Some(decoders::threedm_poll_data);
     t[0x06] = Some(decoders::threedm_get_imu_base_rate);
-    t[0x83] = Some(decoders::threedm_imu_base_rate);
     t[0x07] = Some(decoders::threedm_get_gnss_base_rate);
-    t[0x84] = Some(decoders::threedm_gnss_base_rate);
-    t[0x0B] = Some(decoders::threedm_get_filter_base_rate);
-    t[0x8A] = Some(decoders::threedm_filter_base_rate);
-    t[0x0E] = Some(decoders::threedm_get_base_rate);
-    t[0x8E] = Some(decoders::threedm_base_rate);
     t[0x08] = Some(decoders::threedm_imu_message_format);
-    t[0x80] = Some(decoders::threedm_imu_message_format_response);
     t[0x09] = Some(decoders::threedm_gnss_message_format);
-    t[0x81] = Some(decoders::threedm_gnss_message_format_response);
     t[0x0A] = Some(decoders::threedm_filter_message_format);
-    t[0x82] = Some(decoders::threedm_filter_message_format_response);
+    t[0x0B] = Some(decoders::threedm_get_filter_base_rate);
     t[0x0C] = Some(decoders::threedm_nmea_message_format);
-    t[0x8C] = Some(decoders::threedm_nmea_message_format_response);
+    t[0x0D] = Some(decoders::threedm_poll_data);
+    t[0x0E] = Some(decoders::threedm_get_base_rate);
     t[0x0F] = Some(decoders::threedm_message_format);
-    t[0x8F] = Some(decoders::threedm_message_format_response);
     t[0x10] = Some(decoders::threedm_factory_streaming);
     t[0x11] = Some(decoders::threedm_data_stream_control);
-    t[0x85] = Some(decoders::threedm_data_stream_control_response);
     t[0x20] = Some(decoders::threedm_raw_rtcm_message);
     t[0x21] = Some(decoders::threedm_gnss_constellation_settings);
-    t[0xA0] = Some(decoders::threedm_gnss_constellation_settings_response);
     t[0x22] = Some(decoders::threedm_gnss_sbas_settings);
-    t[0xA1] = Some(decoders::threedm_gnss_sbas_settings_response);
     t[0x23] = Some(decoders::threedm_gnss_assisted_fix_control);
-    t[0xA2] = Some(decoders::threedm_gnss_assisted_fix_control_response);
     t[0x24] = Some(decoders::threedm_gnss_assist_time_update);
-    t[0xA3] = Some(decoders::threedm_gnss_assist_time_update_response);
     t[0x28] = Some(decoders::threedm_pps_source);
-    t[0xA8] = Some(decoders::threedm_pps_source_response);
     t[0x2A] = Some(decoders::threedm_get_supported_events);
-    t[0xB4] = Some(decoders::threedm_supported_events);
+    t[0x2B] = Some(decoders::threedm_event_control);
+    t[0x2C] = Some(decoders::threedm_get_event_trigger_status);
+    t[0x2D] = Some(decoders::threedm_get_event_action_status);
+    t[0x2E] = Some(decoders::threedm_event_trigger_config);
+    t[0x2F] = Some(decoders::threedm_event_action_config);
+    t[0x30] = Some(decoders::threedm_device_startup_settings);
+    t[0x31] = Some(decoders::threedm_sensor_to_vehicle_euler);
+    t[0x32] = Some(decoders::threedm_sensor_to_vehicle_quaternion);
+    t[0x33] = Some(decoders::threedm_sensor_to_vehicle_dcm);
+    t[0x37] = Some(decoders::threedm_accel_bias);
+    t[0x38] = Some(decoders::threedm_gyro_bias);
+    t[0x39] = Some(decoders::threedm_capture_gyro_bias);
+    t[0x3A] = Some(decoders::threedm_mag_hard_iron_offset);
+    t[0x3B] = Some(decoders::threedm_mag_soft_iron_matrix);
+    t[0x3E] = Some(decoders::threedm_coning_sculling_enable);
+    t[0x40] = Some(decoders::threedm_uart_baudrate);
+    t[0x41] = Some(decoders::threedm_gpio_config);
+    t[0x42] = Some(decoders::threedm_gpio_state);
+    t[0x43] = Some(decoders::threedm_odometer_config);
+    t[0x50] = Some(decoders::threedm_advanced_lowpass_filter);
+    t[0x51] = Some(decoders::threedm_complementary_filter);
+    t[0x52] = Some(decoders::threedm_sensor_range);
+    t[0x53] = Some(decoders::threedm_get_calibrated_sensor_ranges);
+    t[0x54] = Some(decoders::threedm_lowpass_filter);
     t[0x64] = Some(decoders::threedm_device_status);
+    t[0x80] = Some(decoders::threedm_imu_message_format_response);
+    t[0x81] = Some(decoders::threedm_gnss_message_format_response);
+    t[0x82] = Some(decoders::threedm_filter_message_format_response);
+    t[0x83] = Some(decoders::threedm_imu_base_rate);
+    t[0x84] = Some(decoders::threedm_gnss_base_rate);
+    t[0x85] = Some(decoders::threedm_data_stream_control_response);
+    t[0x87] = Some(decoders::threedm_uart_baudrate_response);
+    t[0x8A] = Some(decoders::threedm_filter_base_rate);
+    t[0x8B] = Some(decoders::threedm_advanced_lowpass_filter_response);
+    t[0x8C] = Some(decoders::threedm_nmea_message_format_response);
+    t[0x8E] = Some(decoders::threedm_base_rate);
+    t[0x8F] = Some(decoders::threedm_message_format_response);
     t[0x90] = Some(decoders::threedm_device_status_response);
+    t[0x97] = Some(decoders::threedm_complementary_filter_response);
+    t[0x9A] = Some(decoders::threedm_accel_bias_response);
+    t[0x9B] = Some(decoders::threedm_gyro_bias_response);
+    t[0x9C] = Some(decoders::threedm_mag_hard_iron_offset_response);
+    t[0x9D] = Some(decoders::threedm_mag_soft_iron_matrix_response);
+    t[0x9E] = Some(decoders::threedm_coning_sculling_enable_response);
+    t[0xA0] = Some(decoders::threedm_gnss_constellation_settings_response);
+    t[0xA1] = Some(decoders::threedm_gnss_sbas_settings_response);
+    t[0xA2] = Some(decoders::threedm_gnss_assisted_fix_control_response);
+    t[0xA3] = Some(decoders::threedm_gnss_assist_time_update_response);
+    t[0xA8] = Some(decoders::threedm_pps_source_response);
+    t[0xB1] = Some(decoders::threedm_sensor_to_vehicle_euler_response);
+    t[0xB2] = Some(decoders::threedm_sensor_to_vehicle_quaternion_response);
+    t[0xB3] = Some(decoders::threedm_sensor_to_vehicle_dcm_response);
+    t[0xB4] = Some(decoders::threedm_supported_events);
+    t[0xB5] = Some(decoders::threedm_event_control_response);
+    t[0xB6] = Some(decoders::threedm_event_trigger_status);
+    t[0xB7] = Some(decoders::threedm_event_action_status);
+    t[0xB8] = Some(decoders::threedm_event_trigger_config_response);
+    t[0xB9] = Some(decoders::threedm_event_action_config_response);
+    t[0xC1] = Some(decoders::threedm_gpio_config_response);
+    t[0xC2] = Some(decoders::threedm_gpio_state_response);
+    t[0xC3] = Some(decoders::threedm_odometer_config_response);
+    t[0xD2] = Some(decoders::threedm_sensor_range_response);
+    t[0xD3] = Some(decoders::threedm_calibrated_sensor_ranges);
+    t[0xD4] = Some(decoders::threedm_lowpass_filter_response);
     t
 };
 
-/// Decoders of the fields of set 0x0D, by descriptor.
+/// Decoders of the fields of set 0x0D (its own and the shared ones), by descriptor.
 static FILTER_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::filter_reset_filter);
@@ -488,106 +489,104 @@ static FILTER_DECODERS: DescriptorDecoders = {
     t[0x03] = Some(decoders::filter_set_initial_heading);
     t[0x05] = Some(decoders::filter_run_filter);
     t[0x10] = Some(decoders::filter_vehicle_dynamics_mode);
-    t[0x80] = Some(decoders::filter_vehicle_dynamics_mode_response);
     t[0x11] = Some(decoders::filter_sensor_to_vehicle_transform);
-    t[0x81] = Some(decoders::filter_sensor_to_vehicle_transform_response);
     t[0x12] = Some(decoders::filter_sensor_to_vehicle_offset);
-    t[0x82] = Some(decoders::filter_sensor_to_vehicle_offset_response);
     t[0x13] = Some(decoders::filter_antenna_offset);
-    t[0x83] = Some(decoders::filter_antenna_offset_response);
     t[0x14] = Some(decoders::filter_estimation_control);
-    t[0x84] = Some(decoders::filter_estimation_control_response);
     t[0x15] = Some(decoders::filter_gnss_source_control);
-    t[0x86] = Some(decoders::filter_gnss_source_control_response);
     t[0x16] = Some(decoders::filter_external_gnss_update);
     t[0x17] = Some(decoders::filter_external_heading_update);
     t[0x18] = Some(decoders::filter_heading_update_control);
-    t[0x87] = Some(decoders::filter_heading_update_control_response);
     t[0x19] = Some(decoders::filter_auto_init_control);
-    t[0x88] = Some(decoders::filter_auto_init_control_response);
     t[0x1A] = Some(decoders::filter_accel_noise);
-    t[0x89] = Some(decoders::filter_accel_noise_response);
     t[0x1B] = Some(decoders::filter_gyro_noise);
-    t[0x8A] = Some(decoders::filter_gyro_noise_response);
     t[0x1C] = Some(decoders::filter_accel_bias_model);
-    t[0x8B] = Some(decoders::filter_accel_bias_model_response);
     t[0x1D] = Some(decoders::filter_gyro_bias_model);
-    t[0x8C] = Some(decoders::filter_gyro_bias_model_response);
     t[0x1E] = Some(decoders::filter_zupt_control);
-    t[0x8D] = Some(decoders::filter_zupt_control_response);
     t[0x1F] = Some(decoders::filter_external_heading_update_with_time);
     t[0x20] = Some(decoders::filter_zero_angular_rate_update_control);
-    t[0x8E] = Some(decoders::filter_zero_angular_rate_update_control_response);
     t[0x21] = Some(decoders::filter_tare_orientation);
     t[0x22] = Some(decoders::filter_commanded_zupt);
     t[0x23] = Some(decoders::filter_commanded_zero_angular_rate_update);
     t[0x27] = Some(decoders::filter_mag_capture_auto_calibration);
     t[0x28] = Some(decoders::filter_gravity_noise_std_dev);
-    t[0x93] = Some(decoders::filter_gravity_noise_std_dev_response);
     t[0x29] = Some(decoders::filter_pressure_altitude_noise_std_dev);
-    t[0x94] = Some(decoders::filter_pressure_altitude_noise_std_dev_response);
     t[0x2B] = Some(decoders::filter_hard_iron_offset_noise);
-    t[0x96] = Some(decoders::filter_hard_iron_offset_noise_response);
     t[0x2C] = Some(decoders::filter_soft_iron_matrix_noise);
-    t[0x97] = Some(decoders::filter_soft_iron_matrix_noise_response);
     t[0x42] = Some(decoders::filter_mag_noise_std_dev);
-    t[0xB1] = Some(decoders::filter_mag_noise_std_dev_response);
     t[0x43] = Some(decoders::filter_declination_source);
-    t[0xB2] = Some(decoders::filter_declination_source_response);
     t[0x44] = Some(decoders::filter_gravity_magnitude_adaptive_measurement);
-    t[0xB3] = Some(decoders::filter_gravity_magnitude_adaptive_measurement_response);
     t[0x45] = Some(decoders::filter_mag_magnitude_adaptive_measurement);
-    t[0xB4] = Some(decoders::filter_mag_magnitude_adaptive_measurement_response);
     t[0x46] = Some(decoders::filter_mag_dip_angle_adaptive_measurement);
-    t[0xB5] = Some(decoders::filter_mag_dip_angle_adaptive_measurement_response);
     t[0x47] = Some(decoders::filter_altitude_aiding_control);
-    t[0xB7] = Some(decoders::filter_altitude_aiding_control_response);
     t[0x4B] = Some(decoders::filter_pitch_roll_aiding_control);
-    t[0xBB] = Some(decoders::filter_pitch_roll_aiding_control_response);
     t[0x4C] = Some(decoders::filter_inclination_source);
-    t[0xBC] = Some(decoders::filter_inclination_source_response);
     t[0x4D] = Some(decoders::filter_magnetic_field_magnitude_source);
-    t[0xBD] = Some(decoders::filter_magnetic_field_magnitude_source_response);
     t[0x50] = Some(decoders::filter_aiding_measurement_control);
-    t[0xD0] = Some(decoders::filter_aiding_measurement_control_response);
     t[0x52] = Some(decoders::filter_initialization_configuration);
-    t[0xD2] = Some(decoders::filter_initialization_configuration_response);
     t[0x53] = Some(decoders::filter_adaptive_filter_control);
-    t[0xD3] = Some(decoders::filter_adaptive_filter_control_response);
     t[0x54] = Some(decoders::filter_multi_antenna_offset);
-    t[0xD4] = Some(decoders::filter_multi_antenna_offset_response);
     t[0x55] = Some(decoders::filter_relative_position_configuration);
-    t[0xD5] = Some(decoders::filter_relative_position_configuration_response);
     t[0x56] = Some(decoders::filter_reference_point_lever_arm);
-    t[0xD6] = Some(decoders::filter_reference_point_lever_arm_response);
     t[0x61] = Some(decoders::filter_speed_lever_arm);
-    t[0xE1] = Some(decoders::filter_speed_lever_arm_response);
     t[0x63] = Some(decoders::filter_wheeled_vehicle_constraint_control);
-    t[0xE3] = Some(decoders::filter_wheeled_vehicle_constraint_control_response);
     t[0x64] = Some(decoders::filter_gnss_antenna_calibration_control);
+    t[0x80] = Some(decoders::filter_vehicle_dynamics_mode_response);
+    t[0x81] = Some(decoders::filter_sensor_to_vehicle_transform_response);
+    t[0x82] = Some(decoders::filter_sensor_to_vehicle_offset_response);
+    t[0x83] = Some(decoders::filter_antenna_offset_response);
+    t[0x84] = Some(decoders::filter_estimation_control_response);
+    t[0x86] = Some(decoders::filter_gnss_source_control_response);
+    t[0x87] = Some(decoders::filter_heading_update_control_response);
+    t[0x88] = Some(decoders::filter_auto_init_control_response);
+    t[0x89] = Some(decoders::filter_accel_noise_response);
+    t[0x8A] = Some(decoders::filter_gyro_noise_response);
+    t[0x8B] = Some(decoders::filter_accel_bias_model_response);
+    t[0x8C] = Some(decoders::filter_gyro_bias_model_response);
+    t[0x8D] = Some(decoders::filter_zupt_control_response);
+    t[0x8E] = Some(decoders::filter_zero_angular_rate_update_control_response);
+    t[0x93] = Some(decoders::filter_gravity_noise_std_dev_response);
+    t[0x94] = Some(decoders::filter_pressure_altitude_noise_std_dev_response);
+    t[0x96] = Some(decoders::filter_hard_iron_offset_noise_response);
+    t[0x97] = Some(decoders::filter_soft_iron_matrix_noise_response);
+    t[0xB1] = Some(decoders::filter_mag_noise_std_dev_response);
+    t[0xB2] = Some(decoders::filter_declination_source_response);
+    t[0xB3] = Some(decoders::filter_gravity_magnitude_adaptive_measurement_response);
+    t[0xB4] = Some(decoders::filter_mag_magnitude_adaptive_measurement_response);
+    t[0xB5] = Some(decoders::filter_mag_dip_angle_adaptive_measurement_response);
+    t[0xB7] = Some(decoders::filter_altitude_aiding_control_response);
+    t[0xBB] = Some(decoders::filter_pitch_roll_aiding_control_response);
+    t[0xBC] = Some(decoders::filter_inclination_source_response);
+    t[0xBD] = Some(decoders::filter_magnetic_field_magnitude_source_response);
+    t[0xD0] = Some(decoders::filter_aiding_measurement_control_response);
+    t[0xD2] = Some(decoders::filter_initialization_configuration_response);
+    t[0xD3] = Some(decoders::filter_adaptive_filter_control_response);
+    t[0xD4] = Some(decoders::filter_multi_antenna_offset_response);
+    t[0xD5] = Some(decoders::filter_relative_position_configuration_response);
+    t[0xD6] = Some(decoders::filter_reference_point_lever_arm_response);
+    t[0xE1] = Some(decoders::filter_speed_lever_arm_response);
+    t[0xE3] = Some(decoders::filter_wheeled_vehicle_constraint_control_response);
     t[0xE4] = Some(decoders::filter_gnss_antenna_calibration_control_response);
     t
 };
 
-/// Decoders of the fields of set 0x0E, by descriptor.
+/// Decoders of the fields of set 0x0E (its own and the shared ones), by descriptor.
 static GNSS_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::gnss_receiver_info);
-    t[0x81] = Some(decoders::gnss_receiver_info_response);
     t[0x02] = Some(decoders::gnss_signal_configuration);
-    t[0x82] = Some(decoders::gnss_signal_configuration_response);
     t[0x20] = Some(decoders::gnss_spartn_configuration);
+    t[0x81] = Some(decoders::gnss_receiver_info_response);
+    t[0x82] = Some(decoders::gnss_signal_configuration_response);
     t[0xA0] = Some(decoders::gnss_spartn_configuration_response);
     t
 };
 
-/// Decoders of the fields of set 0x13, by descriptor.
+/// Decoders of the fields of set 0x13 (its own and the shared ones), by descriptor.
 static AIDING_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::aiding_frame_config);
-    t[0x81] = Some(decoders::aiding_frame_config_response);
     t[0x1F] = Some(decoders::aiding_echo_control);
-    t[0x9F] = Some(decoders::aiding_echo_control_response);
     t[0x21] = Some(decoders::aiding_ecef_position);
     t[0x22] = Some(decoders::aiding_llh_position);
     t[0x23] = Some(decoders::aiding_height_above_ellipsoid);
@@ -597,10 +596,12 @@ static AIDING_DECODERS: DescriptorDecoders = {
     t[0x31] = Some(decoders::aiding_true_heading);
     t[0x32] = Some(decoders::aiding_magnetic_field);
     t[0x33] = Some(decoders::aiding_pressure);
+    t[0x81] = Some(decoders::aiding_frame_config_response);
+    t[0x9F] = Some(decoders::aiding_echo_control_response);
     t
 };
 
-/// Decoders of the fields of set 0x7F, by descriptor.
+/// Decoders of the fields of set 0x7F (its own and the shared ones), by descriptor.
 static SYSTEM_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x10] = Some(decoders::system_communication_mode);
@@ -608,7 +609,7 @@ static SYSTEM_DECODERS: DescriptorDecoders = {
     t
 };
 
-/// Decoders of the fields of set 0x80, by descriptor.
+/// Decoders of the fields of set 0x80 (its own and the shared ones), by descriptor.
 static SENSOR_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x04] = Some(decoders::sensor_scaled_accel);
@@ -626,10 +627,17 @@ static SENSOR_DECODERS: DescriptorDecoders = {
     t[0x17] = Some(decoders::sensor_scaled_pressure);
     t[0x18] = Some(decoders::sensor_overrange_status);
     t[0x40] = Some(decoders::sensor_odometer_data);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0x81, by descriptor.
+/// Decoders of the fields of set 0x81 (its own and the shared ones), by descriptor.
 static GNSS_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_data_llh_position);
@@ -645,10 +653,17 @@ static GNSS_DATA_DECODERS: DescriptorDecoders = {
     t[0x0D] = Some(decoders::gnss_data_hardware_status);
     t[0x0E] = Some(decoders::gnss_data_dgnss_info);
     t[0x0F] = Some(decoders::gnss_data_dgnss_channel_status);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0x82, by descriptor.
+/// Decoders of the fields of set 0x82 (its own and the shared ones), by descriptor.
 static FILTER_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::filter_data_llh_position);
@@ -699,10 +714,17 @@ static FILTER_DATA_DECODERS: DescriptorDecoders = {
     t[0x49] = Some(decoders::filter_data_gnss_dual_antenna_status);
     t[0x50] = Some(decoders::filter_data_aiding_frame_config_error);
     t[0x51] = Some(decoders::filter_data_aiding_frame_config_error_uncertainty);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0x91, by descriptor.
+/// Decoders of the fields of set 0x91 (its own and the shared ones), by descriptor.
 static GNSS_RECEIVER_1_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_receiver_1_llh_position);
@@ -723,10 +745,17 @@ static GNSS_RECEIVER_1_DECODERS: DescriptorDecoders = {
     t[0x62] = Some(decoders::gnss_receiver_1_glonass_ephemeris);
     t[0x63] = Some(decoders::gnss_receiver_1_galileo_ephemeris);
     t[0x64] = Some(decoders::gnss_receiver_1_beidou_ephemeris);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0x92, by descriptor.
+/// Decoders of the fields of set 0x92 (its own and the shared ones), by descriptor.
 static GNSS_RECEIVER_2_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_receiver_2_llh_position);
@@ -747,18 +776,32 @@ static GNSS_RECEIVER_2_DECODERS: DescriptorDecoders = {
     t[0x62] = Some(decoders::gnss_receiver_2_glonass_ephemeris);
     t[0x63] = Some(decoders::gnss_receiver_2_galileo_ephemeris);
     t[0x64] = Some(decoders::gnss_receiver_2_beidou_ephemeris);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0x93, by descriptor.
+/// Decoders of the fields of set 0x93 (its own and the shared ones), by descriptor.
 static GNSS_CORRECTIONS_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x30] = Some(decoders::gnss_corrections_base_station_info);
     t[0x31] = Some(decoders::gnss_corrections_rtk_corrections_status);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0x94, by descriptor.
+/// Decoders of the fields of set 0x94 (its own and the shared ones), by descriptor.
 static GNSS_EXTERNAL_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_external_llh_position);
@@ -766,19 +809,33 @@ static GNSS_EXTERNAL_DECODERS: DescriptorDecoders = {
     t[0x08] = Some(decoders::gnss_external_utc_time);
     t[0x0B] = Some(decoders::gnss_external_fix_info);
     t[0x20] = Some(decoders::gnss_external_satellite_status);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0xA0, by descriptor.
+/// Decoders of the fields of set 0xA0 (its own and the shared ones), by descriptor.
 static SYSTEM_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::system_data_built_in_test);
     t[0x02] = Some(decoders::system_data_time_sync_status);
     t[0x03] = Some(decoders::system_data_gpio_state);
+    t[0xD0] = Some(decoders::shared_event_source);
+    t[0xD3] = Some(decoders::shared_gps_timestamp);
+    t[0xD4] = Some(decoders::shared_delta_time);
+    t[0xD5] = Some(decoders::shared_reference_timestamp);
+    t[0xD6] = Some(decoders::shared_reference_time_delta);
+    t[0xD7] = Some(decoders::shared_external_timestamp);
+    t[0xD8] = Some(decoders::shared_external_time_delta);
     t
 };
 
-/// Decoders of the fields of set 0xFF, by descriptor.
+/// Decoders of the fields of set 0xFF (its own and the shared ones), by descriptor.
 static SHARED_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0xD0] = Some(decoders::shared_event_source);

@@ -191,8 +191,9 @@ pub fn decode_field(
     data: &[u8],
     device: Option<Device>,
 ) -> Result<FieldValue, DecodeError> {
-    // The set's own fields: two table loads, straight to the field's decoder, which builds the
-    // FieldValue in the caller's slot.
+    // The set's own fields and the shared data fields it does not define (the search order as
+    // the generator resolves it): two table loads, straight to the field's decoder, which builds
+    // the FieldValue in the caller's slot. Reserved fields and unknown descriptors go on.
     if let Some(decoders) = SET_DECODERS[usize::from(set)] {
         if let Some(decode) = decoders[usize::from(descriptor)] {
             return decode(data, device);
@@ -204,10 +205,10 @@ pub fn decode_field(
 /// The decoder of one field (in `decoders`).
 type Decoder = fn(&[u8], Option<Device>) -> Result<FieldValue, DecodeError>;
 
-/// Decoders of a set's own fields, by descriptor (`None`: not a field of the set).
+/// Decoders of a set's fields (its own and shared ones), by descriptor (`None`: look further).
 type DescriptorDecoders = [Option<Decoder>; 256];
 
-/// The decoders of every set that has fields, by set (`None`: no fields of its own).
+/// The decoder tables of every set that has any, by set (`None`: look further).
 static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
     let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
     t[0x01] = Some(&BASE_DECODERS);
@@ -216,55 +217,55 @@ static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
     t
 };
 
-/// Decoders of the fields of set 0x01, by descriptor.
+/// Decoders of the fields of set 0x01 (its own and the shared ones), by descriptor.
 static BASE_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x02] = Some(decoders::base_ping);
     t[0x03] = Some(decoders::base_get_device_messages);
-    t[0x83] = Some(decoders::base_device_messages);
     t[0x04] = Some(decoders::base_device_reset);
     t[0x05] = Some(decoders::base_get_device_model);
-    t[0x85] = Some(decoders::base_device_model);
     t[0x06] = Some(decoders::base_get_device_sn);
-    t[0x86] = Some(decoders::base_device_sn);
     t[0x07] = Some(decoders::base_get_device_fw);
-    t[0x87] = Some(decoders::base_device_fw);
     t[0x08] = Some(decoders::base_get_device_cal);
-    t[0x88] = Some(decoders::base_device_cal);
     t[0x09] = Some(decoders::base_correlate_gps_time);
+    t[0x83] = Some(decoders::base_device_messages);
+    t[0x85] = Some(decoders::base_device_model);
+    t[0x86] = Some(decoders::base_device_sn);
+    t[0x87] = Some(decoders::base_device_fw);
+    t[0x88] = Some(decoders::base_device_cal);
     t
 };
 
-/// Decoders of the fields of set 0x02, by descriptor.
+/// Decoders of the fields of set 0x02 (its own and the shared ones), by descriptor.
 static IMU_CONFIG_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::imu_config_uart_baud_rate);
-    t[0x81] = Some(decoders::imu_config_uart_baud_rate_response);
     t[0x03] = Some(decoders::imu_config_filter);
-    t[0x83] = Some(decoders::imu_config_filter_response);
     t[0x04] = Some(decoders::imu_config_sample_rate);
-    t[0x84] = Some(decoders::imu_config_sample_rate_response);
     t[0x05] = Some(decoders::imu_config_select_sensors);
-    t[0x85] = Some(decoders::imu_config_select_sensors_response);
     t[0x06] = Some(decoders::imu_config_get_internal_sample_rate);
-    t[0x86] = Some(decoders::imu_config_internal_sample_rate);
     t[0x07] = Some(decoders::imu_config_accel_range);
-    t[0x87] = Some(decoders::imu_config_accel_range_response);
     t[0x08] = Some(decoders::imu_config_gyro_range);
-    t[0x88] = Some(decoders::imu_config_gyro_range_response);
     t[0x09] = Some(decoders::imu_config_config_all);
     t[0x0A] = Some(decoders::imu_config_data_on_off);
-    t[0x8A] = Some(decoders::imu_config_data_on_off_response);
     t[0x0B] = Some(decoders::imu_config_xtrig_on_off);
-    t[0x8B] = Some(decoders::imu_config_xtrig_on_off_response);
     t[0x0C] = Some(decoders::imu_config_select_sensors_rev_b);
-    t[0x8C] = Some(decoders::imu_config_select_sensors_rev_b_response);
     t[0x0D] = Some(decoders::imu_config_aux_accel_range);
+    t[0x81] = Some(decoders::imu_config_uart_baud_rate_response);
+    t[0x83] = Some(decoders::imu_config_filter_response);
+    t[0x84] = Some(decoders::imu_config_sample_rate_response);
+    t[0x85] = Some(decoders::imu_config_select_sensors_response);
+    t[0x86] = Some(decoders::imu_config_internal_sample_rate);
+    t[0x87] = Some(decoders::imu_config_accel_range_response);
+    t[0x88] = Some(decoders::imu_config_gyro_range_response);
+    t[0x8A] = Some(decoders::imu_config_data_on_off_response);
+    t[0x8B] = Some(decoders::imu_config_xtrig_on_off_response);
+    t[0x8C] = Some(decoders::imu_config_select_sensors_rev_b_response);
     t[0x8D] = Some(decoders::imu_config_aux_accel_range_response);
     t
 };
 
-/// Decoders of the fields of set 0xA2, by descriptor.
+/// Decoders of the fields of set 0xA2 (its own and the shared ones), by descriptor.
 static IMU_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x81] = Some(decoders::imu_data_scaled_accel);
