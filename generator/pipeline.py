@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib
 import os
 from pathlib import Path
 
@@ -11,17 +10,8 @@ from .export import ir_to_json
 from .ir import lint_stated_lengths
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .spec import ROOT, load_spec
+from .targets import TARGETS
 from .vectors import load_corpus
-
-# Back ends, in render order. Each is generator/backends/<name>.py with
-#   OUTPUT_DIRS: list of directories under generated/ that it owns entirely
-#   render(ir: dict, vectors: list[dict]) -> dict[path relative to generated/, file text]
-BACKENDS = ["c", "cpp", "python", "rust"]
-
-
-def _available_backends() -> list[str]:
-    here = Path(__file__).parent / "backends"
-    return [b for b in BACKENDS if (here / f"{b}.py").exists()]
 
 
 def run(
@@ -48,10 +38,9 @@ def run(
     out_dir = out_dir or ROOT / "generated"
     files: dict[str, str] = {"ir.json": ir_to_json(ir)}
     owned: list[str] = []
-    for name in _available_backends():
+    for name, mod in TARGETS.items():
         if only and name not in only:
             continue
-        mod = importlib.import_module(f"generator.backends.{name}")
         owned.extend(mod.OUTPUT_DIRS)
         rendered = mod.render(ir, vectors)
         for rel in rendered:
@@ -61,7 +50,7 @@ def run(
     files = format_files(files)
     if not only or "docs" in only:
         # The documentation quotes the formatted example programs, so it renders last.
-        from .backends import docs
+        from .docs import backend as docs
 
         owned.extend(docs.OUTPUT_DIRS)
         files.update(docs.render(ir, vectors, files))

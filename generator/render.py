@@ -90,3 +90,25 @@ def format_files(files: dict[str, str]) -> dict[str, str]:
             for rel in tool_files:
                 out[rel] = Path(tmp, rel).read_text(encoding="utf-8")
     return out
+
+
+TARGETS_DIR = ROOT / "generator" / "targets"
+
+
+def runtime_dir(lang: str) -> Path:
+    """Where a target's hand-written runtime lives: plain source files, compiled, linted and
+    unit-tested in place (generator/targets/<lang>/runtime/)."""
+    return TARGETS_DIR / lang / "runtime"
+
+
+def copy_runtime(lang: str, mapping: dict[str, str], replace: list[tuple[str, str]] | None = None) -> dict[str, str]:
+    """The runtime files of a target for one package: {source path under runtime/: destination
+    path under generated/}. The text is copied verbatim, except for the plain-text replacements
+    `replace` (old, new), applied in order (e.g. a C package's symbol prefix)."""
+    out: dict[str, str] = {}
+    for src, dest in mapping.items():
+        text = (runtime_dir(lang) / src).read_text(encoding="utf-8")
+        for old, new in replace or []:
+            text = text.replace(old, new)
+        out[dest] = text
+    return out

@@ -34,7 +34,7 @@ def _generated_examples() -> dict[str, str]:
 
 
 def build_site(out: Path) -> int:
-    from ..backends.docs import build
+    from .backend import build
 
     ir = load_spec(None, root=ROOT)
     vectors = load_corpus(ir, ROOT)

@@ -6,18 +6,15 @@ quote the example programs as the language back ends generated and formatted the
 
 from __future__ import annotations
 
-import importlib
-
-from ..docs.markdown import write_markdown
-from ..docs.model import Docs
+from ..targets import TARGETS
+from .markdown import write_markdown
+from .model import Docs
 
 OUTPUT_DIRS = ["docs"]
 
 
 def build(ir: dict, vectors: list[dict], generated: dict[str, str]) -> Docs:
-    from ..pipeline import BACKENDS  # the language back ends, in their order
-
-    api = {lang: importlib.import_module(f"generator.backends.{lang}") for lang in BACKENDS}
+    api = dict(TARGETS)  # the language targets, in their order
     docs = Docs(ir, vectors, api, generated)
     docs.build()
     return docs

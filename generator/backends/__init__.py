@@ -1,1 +1,0 @@
-"""One module per target language; see generator/pipeline.py for the interface."""
