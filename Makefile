@@ -10,15 +10,21 @@ MANUALS ?= ../shared/manuals
 CAPTURE ?= ../shared/captures/mip_data.bin
 export RUFF := $(abspath $(VENV)/bin/ruff)
 
-SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml
+SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml
 
-.PHONY: all generate html test test-generator test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all bootstrap generate html test test-generator test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
+# The generator's own tools, pinned (requirements.txt: jinja2, pyyaml, jsonschema, pytest, ruff,
+# clang-format, ...). Each failure says the one command that fixes it.
 $(VENV)/.stamp: requirements.txt
-	$(PYTHON) -m venv $(VENV)
-	$(VENV)/bin/pip install --quiet --disable-pip-version-check -r requirements.txt
+	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 9))' 2>/dev/null || \
+	  { echo "error: make needs Python 3.9 or later as '$(PYTHON)'; run: apt-get install python3 (or make PYTHON=/path/to/python3)" >&2; exit 1; }
+	@$(PYTHON) -m venv $(VENV) || \
+	  { rm -rf $(VENV); echo "error: '$(PYTHON) -m venv' failed; run: apt-get install python3-venv" >&2; exit 1; }
+	@$(VENV)/bin/pip install --quiet --disable-pip-version-check -r requirements.txt || \
+	  { echo "error: installing requirements.txt into $(VENV) failed (is PyPI reachable?); run: make distclean && make" >&2; exit 1; }
 	touch $@
 
 # Regenerate only when an input changed; the generator itself writes only changed files.
@@ -27,7 +33,12 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 	$(PY) -m generator
 	@mkdir -p build && touch $@
 
-test: generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions
+# What the tests need beyond `make` (cmake, googletest, Chromium, clippy, ...): tools/bootstrap
+# installs what is missing (as root) or prints the command that does.
+bootstrap:
+	@tools/bootstrap
+
+test: bootstrap generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions
 
 test-generator: $(VENV)/.stamp
 	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz tests/bench
