@@ -55,12 +55,13 @@ def _which(name: str, env_var: str) -> str:
             exe = str(cargo_bin) if cargo_bin.exists() else shutil.which(name)
     if not exe:
         raise ToolError(f"'{name}' is not installed (it formats the generated code); run: {_FIX[name]}")
+    fix = f"unset {env_var} to use the pinned one" if os.environ.get(env_var) else f"run: {_FIX[name]}"
     try:
         probe = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=60)
     except (OSError, subprocess.TimeoutExpired) as e:
-        raise ToolError(f"'{exe}' does not run ({e}); run: {_FIX[name]}") from None
+        raise ToolError(f"'{exe}' does not run ({e}); {fix}") from None
     if probe.returncode != 0:
-        raise ToolError(f"'{exe} --version' failed (exit {probe.returncode}); run: {_FIX[name]}")
+        raise ToolError(f"'{exe} --version' failed (exit {probe.returncode}); {fix}")
     return exe
 
 
