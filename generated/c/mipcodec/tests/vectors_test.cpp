@@ -786,11 +786,11 @@ TEST(Vectors, imu_message_format_read) {
 }
 
 TEST(Vectors, imu_message_format_read_reply) {
-    check_vector("75650c0d04f1080009800203000a04000a9606", MIP_DEVICE_ANY,
+    check_vector("75650c0d04f1080009800204000a05000a980f", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"imu_message_"
-                 "format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,"
-                 "\"decimation\":10},{\"descriptor\":4,\"decimation\":10}]}}]}\n");
+                 "format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,"
+                 "\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_read_reply_table_published) {
@@ -1960,6 +1960,20 @@ TEST(Vectors, event_control_enable_3) {
 }
 
 TEST(Vectors, event_action_gpio_trigger_3) {
+    check_vector("75650c08082f010103010401303f", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
+                 "\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":"
+                 "4,\"mode\":1}}}]}\n");
+}
+
+TEST(Vectors, event_action_gpio_oneshot_trigger_3) {
+    check_vector("75650c08082f0101030104053443", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
+                 "\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":"
+                 "4,\"mode\":5}}}]}\n");
+}
+
+TEST(Vectors, event_action_gpio_oneshot_trigger_3_published) {
     check_vector("75650c08082f010103010401303f", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":"

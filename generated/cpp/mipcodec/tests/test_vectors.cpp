@@ -1113,12 +1113,12 @@ TEST(Vectors, imu_message_format_read) {
 
 // imu_message_format_read_reply
 TEST(Vectors, imu_message_format_read_reply) {
-    check_vector("75650c0d04f1080009800203000a04000a9606", nullptr, false,
+    check_vector("75650c0d04f1080009800204000a05000a980f", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\","
                      "\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":"
                      "\"imu_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{"
-                     "\"descriptor\":3,\"decimation\":10},{\"descriptor\":4,\"decimation\":10}]}}]}",
+                     "\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
                  });
 }
 
@@ -2803,6 +2803,26 @@ TEST(Vectors, event_control_enable_3) {
 
 // event_action_gpio_trigger_3
 TEST(Vectors, event_action_gpio_trigger_3) {
+    check_vector("75650c08082f010103010401303f", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_"
+                     "config\",\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,"
+                     "\"parameters\":{\"pin\":4,\"mode\":1}}}]}",
+                 });
+}
+
+// event_action_gpio_oneshot_trigger_3
+TEST(Vectors, event_action_gpio_oneshot_trigger_3) {
+    check_vector("75650c08082f0101030104053443", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_"
+                     "config\",\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,"
+                     "\"parameters\":{\"pin\":4,\"mode\":5}}}]}",
+                 });
+}
+
+// event_action_gpio_oneshot_trigger_3_published
+TEST(Vectors, event_action_gpio_oneshot_trigger_3_published) {
     check_vector("75650c08082f010103010401303f", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_"

@@ -284,12 +284,12 @@ class CommPortSpeed(_c.Field):
     the change; send it alone, with the device idle.
 
     Functions: write, read, save, load, default. Responses: 0x89 comm_port_speed_response. Sources:
-    3dm-cv7-ins-docs.txt line 8141. Field data: 2..6 bytes.
+    3dm-cv7-ins-docs.txt line 8141; 3dm-cv7-ins-docs.txt line 2150. Field data: 2..6 bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    port: int = 0  # Port ID, starting with 1; 0 means all ports for save, load and default.
+    port: int = 0  # Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB); 0 means all ports for save, load and default.
     baud: _ty.Optional[int] = None  # Port baud rate; must be a supported rate. [bit/s] (sent for: write)
 
     SET = 0x01
@@ -312,7 +312,7 @@ class CommPortSpeedResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 8153. Field data: 5 bytes.
     """
 
-    port: int = 0  # Port ID, starting with 1.
+    port: int = 0  # Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB).
     baud: int = 0  # Port baud rate. [bit/s]
 
     SET = 0x01

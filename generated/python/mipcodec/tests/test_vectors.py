@@ -1151,12 +1151,12 @@ CASES = [
     },
     {
         "name": "imu_message_format_read_reply",
-        "hex": "75650c0d04f1080009800203000a04000a9606",
+        "hex": "75650c0d04f1080009800204000a05000a980f",
         "device": None,
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:365",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}},{"descriptor":128,"name":"imu_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":10},{"descriptor":4,"decimation":10}]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":8,"ack_code":0}},{"descriptor":128,"name":"imu_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
         ],
     },
     {
@@ -1164,7 +1164,7 @@ CASES = [
         "hex": "75650c0d04f1080009800203000a04000a980f",
         "device": None,
         "rejected": True,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:381",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:384",
         "expect": ['{"offset":0,"skipped":"75650c0d04f1080009800203000a04000a980f"}'],
     },
     {
@@ -1172,7 +1172,7 @@ CASES = [
         "hex": "75650c0404080400faf7",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:394",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:398",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":4,"num_descriptors":0,"descriptors":[]}}]}'
         ],
@@ -1182,7 +1182,7 @@ CASES = [
         "hex": "75650c0a0a0901020300040500041685",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:404",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:408",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":4},{"descriptor":5,"decimation":4}]}}]}'
         ],
@@ -1192,7 +1192,7 @@ CASES = [
         "hex": "75650c0404f10900e8bc",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:416",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:420",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":9,"ack_code":0}}]}'
         ],
@@ -1202,7 +1202,7 @@ CASES = [
         "hex": "75650c0404090200f9f6",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:425",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:429",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
         ],
@@ -1212,7 +1212,7 @@ CASES = [
         "hex": "75650c0404090200f9f3",
         "device": None,
         "rejected": True,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:434",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:438",
         "expect": ['{"offset":0,"skipped":"75650c0404090200f9f3"}'],
     },
     {
@@ -1220,7 +1220,7 @@ CASES = [
         "hex": "75650c0d04f109000981020300040500048dfe",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:446",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:450",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":9,"ack_code":0}},{"descriptor":129,"name":"gnss_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":4},{"descriptor":5,"decimation":4}]}}]}'
         ],
@@ -1230,7 +1230,7 @@ CASES = [
         "hex": "75650c0a0a0a01020100010200010c6a",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:458",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:462",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":1,"decimation":1},{"descriptor":2,"decimation":1}]}}]}'
         ],
@@ -1240,7 +1240,7 @@ CASES = [
         "hex": "75650c0a0a0901020300040500041685",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:469",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:473",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":1,"num_descriptors":2,"descriptors":[{"descriptor":3,"decimation":4},{"descriptor":5,"decimation":4}]}}]}'
         ],
@@ -1250,7 +1250,7 @@ CASES = [
         "hex": "75650c04040a0200faf9",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:488",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:492",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
         ],
@@ -1260,7 +1260,7 @@ CASES = [
         "hex": "75650c0404090200f9f6",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:497",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:501",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
         ],
@@ -1270,7 +1270,7 @@ CASES = [
         "hex": "75650c0d04f10a0009820201000102000184ed",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:513",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:517",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":10,"ack_code":0}},{"descriptor":130,"name":"filter_message_format_response","values":{"num_descriptors":2,"descriptors":[{"descriptor":1,"decimation":1},{"descriptor":2,"decimation":1}]}}]}'
         ],
@@ -1280,7 +1280,7 @@ CASES = [
         "hex": "75650c200d08010312000a04000a05000a130a010511000a10000a01000a02000a03000ad43d",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:526",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:530",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":1,"num_descriptors":3,"descriptors":[{"descriptor":18,"decimation":10},{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}},{"descriptor":10,"name":"filter_message_format","values":{"function":1,"num_descriptors":5,"descriptors":[{"descriptor":17,"decimation":10},{"descriptor":16,"decimation":10},{"descriptor":1,"decimation":10},{"descriptor":2,"decimation":10},{"descriptor":3,"decimation":10}]}}]}'
         ],
@@ -1290,7 +1290,7 @@ CASES = [
         "hex": "75650c050511010101041a",
         "device": "gx5_45",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:554",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:558",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":1,"device_selector":1,"enable":1}}]}'
         ],
@@ -1300,7 +1300,7 @@ CASES = [
         "hex": "75650c0505110101000319",
         "device": "gx5_45",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:565",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:569",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":1,"device_selector":1,"enable":0}}]}'
         ],
@@ -1310,7 +1310,7 @@ CASES = [
         "hex": "75650c0404f11100f0cc",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:575",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:579",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}}]}'
         ],
@@ -1320,7 +1320,7 @@ CASES = [
         "hex": "75650c0505110203000620",
         "device": "gx5_45",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:584",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:588",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":2,"device_selector":3,"enable":0}}]}'
         ],
@@ -1330,7 +1330,7 @@ CASES = [
         "hex": "75650c0804f11100048503018156",
         "device": "gx5_45",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:598",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:602",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":133,"name":"data_stream_control_response","device":"gx5_45","values":{"device_selector":3,"enabled":1}}]}'
         ],
@@ -1340,7 +1340,7 @@ CASES = [
         "hex": "75650c121221010020020001081000000601080e0000845a",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:613",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:617",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":1,"max_channels":32,"config_count":2,"settings":[{"constellation_id":0,"enable":1,"reserved_channels":8,"max_channels":16,"option_flags":0},{"constellation_id":6,"enable":1,"reserved_channels":8,"max_channels":14,"option_flags":0}]}}]}'
         ],
@@ -1350,7 +1350,7 @@ CASES = [
         "hex": "75650c0404f1210000ec",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:631",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:635",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":33,"ack_code":0}}]}'
         ],
@@ -1360,7 +1360,7 @@ CASES = [
         "hex": "75650c06062102000000157a",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:640",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:644",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":2,"max_channels":0,"config_count":0,"settings":[]}}]}'
         ],
@@ -1370,7 +1370,7 @@ CASES = [
         "hex": "75650c2304f121001fa000200020040001081000000601080e0000010101030000050100030001683c",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:652",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:656",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":33,"ack_code":0}},{"descriptor":160,"name":"gnss_constellation_settings_response","values":{"max_channels_available":32,"max_channels":32,"config_count":4,"settings":[{"constellation_id":0,"enable":1,"reserved_channels":8,"max_channels":16,"option_flags":0},{"constellation_id":6,"enable":1,"reserved_channels":8,"max_channels":14,"option_flags":0},{"constellation_id":1,"enable":1,"reserved_channels":1,"max_channels":3,"option_flags":0},{"constellation_id":5,"enable":1,"reserved_channels":0,"max_channels":3,"option_flags":1}]}}]}'
         ],
@@ -1380,7 +1380,7 @@ CASES = [
         "hex": "75650c0b0b22010100030200780079165c",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:680",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:684",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":34,"name":"gnss_sbas_settings","values":{"function":1,"enable_sbas":1,"sbas_options":3,"num_included_prns":2,"included_prns":[120,121]}}]}'
         ],
@@ -1390,7 +1390,7 @@ CASES = [
         "hex": "75650c0404f1220001ee",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:697",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:701",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}}]}'
         ],
@@ -1400,7 +1400,7 @@ CASES = [
         "hex": "75650c1004f122000ca10100070300780079007a30d5",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:706",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:710",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}},{"descriptor":161,"name":"gnss_sbas_settings_response","values":{"enable_sbas":1,"sbas_options":7,"num_included_prns":3,"included_prns":[120,121,122]}}]}'
         ],
@@ -1410,7 +1410,7 @@ CASES = [
         "hex": "75650c030322021028",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:727",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:731",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":34,"name":"gnss_sbas_settings","values":{"function":2}}]}'
         ],
@@ -1420,7 +1420,7 @@ CASES = [
         "hex": "75650c07072201010003001ba9",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:737",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:741",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":34,"name":"gnss_sbas_settings","values":{"function":1,"enable_sbas":1,"sbas_options":3,"num_included_prns":0}}]}'
         ],
@@ -1430,7 +1430,7 @@ CASES = [
         "hex": "75650c0a04f1220006a100000000ae7f",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:752",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:756",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":34,"ack_code":0}},{"descriptor":161,"name":"gnss_sbas_settings_response","values":{"enable_sbas":0,"sbas_options":0,"num_included_prns":0,"included_prns":[]}}]}'
         ],
@@ -1440,7 +1440,7 @@ CASES = [
         "hex": "75650c0505230101ff1460",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:766",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:770",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":35,"name":"gnss_assisted_fix_control","values":{"function":1,"option":1,"flags":255}}]}'
         ],
@@ -1450,7 +1450,7 @@ CASES = [
         "hex": "75650c0404f1230002f0",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:776",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:780",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":35,"ack_code":0}}]}'
         ],
@@ -1460,7 +1460,7 @@ CASES = [
         "hex": "75650c0505230200ff1461",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:785",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:789",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":35,"name":"gnss_assisted_fix_control","values":{"function":2,"option":0,"flags":255}}]}'
         ],
@@ -1470,7 +1470,7 @@ CASES = [
         "hex": "75650c0804f1230004a201ffac13",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:797",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:801",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":35,"ack_code":0}},{"descriptor":162,"name":"gnss_assisted_fix_control_response","values":{"option":1,"flags":255}}]}'
         ],
@@ -1480,7 +1480,7 @@ CASES = [
         "hex": "75650c1111240140e722c6b851eb85078140a000001deb",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:809",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:813",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":47382.21,"week_number":1921,"accuracy":5.0}}]}'
         ],
@@ -1490,7 +1490,7 @@ CASES = [
         "hex": "75650c0404f1240003f2",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:823",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:827",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":36,"ack_code":0}}]}'
         ],
@@ -1500,7 +1500,7 @@ CASES = [
         "hex": "75650c1111240200000000000000000000000000002e12",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:832",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:836",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":2,"tow":0.0,"week_number":0,"accuracy":0.0}}]}'
         ],
@@ -1510,7 +1510,7 @@ CASES = [
         "hex": "75650c1404f1240010a340e722c6b851eb85078140a00000b6e7",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:844",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:848",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":36,"ack_code":0}},{"descriptor":163,"name":"gnss_assist_time_update_response","values":{"tow":47382.21,"week_number":1921,"accuracy":5.0}}]}'
         ],
@@ -1520,7 +1520,7 @@ CASES = [
         "hex": "75650c050564186b01d87f",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:858",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:862",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":100,"name":"device_status","values":{"model_number":6251,"status_selector":1}}]}'
         ],
@@ -1530,7 +1530,7 @@ CASES = [
         "hex": "75650c1304f164000f90186b010000000000010000ea60c0cc",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:868",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:872",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":100,"ack_code":0}},{"descriptor":144,"name":"device_status_response","values":{"model_number":6251,"status_selector":1,"status":{"status_flags":0,"system_state":1,"system_timer":60000}}}]}'
         ],
@@ -1540,7 +1540,7 @@ CASES = [
         "hex": "75650c050564186b02d980",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:890",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:894",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":100,"name":"device_status","values":{"model_number":6251,"status_selector":2}}]}'
         ],
@@ -1550,7 +1550,7 @@ CASES = [
         "hex": "75650c4f04f164004b90186b020000000000010000ea60010000003c0000e86c0101010000000000000000000000000001e240000003150000000000000000000075300000ea5e00000002000000f00000e9663669",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:900",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:904",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":100,"ack_code":0}},{"descriptor":144,"name":"device_status_response","values":{"model_number":6251,"status_selector":2,"status":{"status_flags":0,"system_state":1,"system_timer":60000,"gnss_power_state":1,"pps_pulse_count":60,"last_pps_time":59500,"imu_stream_enabled":1,"gnss_stream_enabled":1,"filter_stream_enabled":1,"imu_dropped_packets":0,"gnss_dropped_packets":0,"filter_dropped_packets":0,"com_bytes_written":123456,"com_bytes_read":789,"com_write_overruns":0,"imu_parse_errors":0,"imu_messages_read":30000,"last_imu_message_time":59998,"gnss_parse_errors":2,"gnss_messages_read":240,"last_gnss_message_time":59750}}}]}'
         ],
@@ -1560,7 +1560,7 @@ CASES = [
         "hex": "75650c080820664100a0fcc019f4",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:948",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:952",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":32,"name":"raw_rtcm_message","values":{"data":[102,65,0,160,252,192]}}]}'
         ],
@@ -1570,7 +1570,7 @@ CASES = [
         "hex": "75650c0404f12000ffea",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:960",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:964",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":32,"ack_code":0}}]}'
         ],
@@ -1580,7 +1580,7 @@ CASES = [
         "hex": "75650c03030e807a7e",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:970",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:974",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":14,"name":"get_base_rate","values":{"desc_set":128}}]}'
         ],
@@ -1590,7 +1590,7 @@ CASES = [
         "hex": "75650c0904f10e00058e8003e8f058",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:979",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:983",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":14,"ack_code":0}},{"descriptor":142,"name":"base_rate","values":{"desc_set":128,"rate":1000}}]}'
         ],
@@ -1600,7 +1600,7 @@ CASES = [
         "hex": "75650c04042801041b55",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:989",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:993",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":1,"source":4}}]}'
         ],
@@ -1610,7 +1610,7 @@ CASES = [
         "hex": "75650c0404f1280007fa",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:998",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1002",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}}]}'
         ],
@@ -1620,7 +1620,7 @@ CASES = [
         "hex": "75650c030328031735",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1008",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1012",
         "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":3}}]}'],
     },
     {
@@ -1628,7 +1628,7 @@ CASES = [
         "hex": "75650c04042801001751",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1017",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1021",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":1,"source":0}}]}'
         ],
@@ -1638,7 +1638,7 @@ CASES = [
         "hex": "75650c030328041836",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1026",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1030",
         "expect": ['{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":4}}]}'],
     },
     {
@@ -1646,7 +1646,7 @@ CASES = [
         "hex": "75650c0404f128040bfe",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1038",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1042",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":4}}]}'
         ],
@@ -1656,7 +1656,7 @@ CASES = [
         "hex": "75650c090328050328030328027a4a",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1056",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1060",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":5}},{"descriptor":40,"name":"pps_source","values":{"function":3}},{"descriptor":40,"name":"pps_source","values":{"function":2}}]}'
         ],
@@ -1666,7 +1666,7 @@ CASES = [
         "hex": "75650c0f04f1280004f1280004f1280003a801f8d9",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1067",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1071",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":168,"name":"pps_source_response","values":{"source":1}}]}'
         ],
@@ -1676,7 +1676,7 @@ CASES = [
         "hex": "75650c04042801031a54",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1080",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1084",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":40,"name":"pps_source","values":{"function":1,"source":3}}]}'
         ],
@@ -1686,7 +1686,7 @@ CASES = [
         "hex": "75650c0704f1280003a802b782",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1090",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1094",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":40,"ack_code":0}},{"descriptor":168,"name":"pps_source_response","values":{"source":2}}]}'
         ],
@@ -1696,7 +1696,7 @@ CASES = [
         "hex": "75650c0404100000fe07",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1101",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1105",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":16,"name":"factory_streaming","values":{"action":0,"reserved":0}}]}'
         ],
@@ -1706,7 +1706,7 @@ CASES = [
         "hex": "75650c0909040001010191000595c3",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1111",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1115",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":4,"name":"poll_nmea_data","values":{"suppress_ack":false,"count":1,"format_entries":[{"message_id":1,"talker_id":1,"source_desc_set":145,"decimation":5}]}}]}'
         ],
@@ -1716,7 +1716,7 @@ CASES = [
         "hex": "75650c0e0e0c0102010182000a04029100013732",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1126",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1130",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":12,"name":"nmea_message_format","values":{"function":1,"count":2,"format_entries":[{"message_id":1,"talker_id":1,"source_desc_set":130,"decimation":10},{"message_id":4,"talker_id":2,"source_desc_set":145,"decimation":1}]}}]}'
         ],
@@ -1726,7 +1726,7 @@ CASES = [
         "hex": "75650c03030c02fafc",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1146",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1150",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":12,"name":"nmea_message_format","values":{"function":2}}]}'
         ],
@@ -1736,7 +1736,7 @@ CASES = [
         "hex": "75650c1104f10c000d8c02010182000a0402910001b919",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1156",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1160",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":12,"ack_code":0}},{"descriptor":140,"name":"nmea_message_format_response","values":{"count":2,"format_entries":[{"message_id":1,"talker_id":1,"source_desc_set":130,"decimation":10},{"message_id":4,"talker_id":2,"source_desc_set":145,"decimation":1}]}}]}'
         ],
@@ -1746,7 +1746,7 @@ CASES = [
         "hex": "75650c07070d80010204058db3",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1175",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1179",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":13,"name":"poll_data","values":{"desc_set":128,"suppress_ack":true,"num_descriptors":2,"descriptors":[4,5]}}]}'
         ],
@@ -1756,7 +1756,7 @@ CASES = [
         "hex": "75650c0b0b0f01800204000a05000aab00",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1187",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1191",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":15,"name":"message_format","values":{"function":1,"desc_set":128,"num_descriptors":2,"descriptors":[{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
         ],
@@ -1766,7 +1766,7 @@ CASES = [
         "hex": "75650c04040f02807f88",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1201",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1205",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":15,"name":"message_format","values":{"function":2,"desc_set":128}}]}'
         ],
@@ -1776,7 +1776,7 @@ CASES = [
         "hex": "75650c0e04f10f000a8f800204000a05000a307c",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1211",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1215",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":15,"ack_code":0}},{"descriptor":143,"name":"message_format_response","values":{"desc_set":128,"num_descriptors":2,"descriptors":[{"descriptor":4,"decimation":10},{"descriptor":5,"decimation":10}]}}]}'
         ],
@@ -1786,7 +1786,7 @@ CASES = [
         "hex": "75650c04040f0300000a",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1226",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1230",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":15,"name":"message_format","values":{"function":3,"desc_set":0}}]}'
         ],
@@ -1796,7 +1796,7 @@ CASES = [
         "hex": "75650c0404100100ff09",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1236",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1240",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":16,"name":"factory_streaming","values":{"action":1,"reserved":0}}]}'
         ],
@@ -1806,7 +1806,7 @@ CASES = [
         "hex": "75650c050511018201851c",
         "device": "cv7_ins",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1246",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1250",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"cv7_ins","values":{"function":1,"desc_set":130,"enable":true}}]}'
         ],
@@ -1816,7 +1816,7 @@ CASES = [
         "hex": "75650c04041102828390",
         "device": "cv7_ins",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1257",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1261",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"cv7_ins","values":{"function":2,"desc_set":130}}]}'
         ],
@@ -1826,7 +1826,7 @@ CASES = [
         "hex": "75650c0804f11100048582010054",
         "device": "cv7_ins",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1268",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1272",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":17,"ack_code":0}},{"descriptor":133,"name":"data_stream_control_response","device":"cv7_ins","values":{"desc_set":130,"enabled":true}}]}'
         ],
@@ -1836,7 +1836,7 @@ CASES = [
         "hex": "75650c04041103000210",
         "device": "cv7_ins",
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1280",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1284",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"cv7_ins","values":{"function":3,"desc_set":0}}]}'
         ],
@@ -1846,7 +1846,7 @@ CASES = [
         "hex": "75650c03032a011737",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1291",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1295",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":42,"name":"get_supported_events","values":{"query":1}}]}'
         ],
@@ -1856,7 +1856,7 @@ CASES = [
         "hex": "75650c0f04f12a000bb4010c03010402080308fd58",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1301",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1305",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":42,"ack_code":0}},{"descriptor":180,"name":"supported_events","values":{"query":1,"info":{"max_instances":12,"num_entries":3,"entries":[{"type":1,"count":4},{"type":2,"count":8},{"type":3,"count":8}]}}}]}'
         ],
@@ -1866,7 +1866,7 @@ CASES = [
         "hex": "75650c03032a021838",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1323",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1327",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":42,"name":"get_supported_events","values":{"query":2}}]}'
         ],
@@ -1876,7 +1876,7 @@ CASES = [
         "hex": "75650c0d04f12a0009b4020c0201060208f040",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/3dm_streaming.yaml:1333",
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1337",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":42,"ack_code":0}},{"descriptor":180,"name":"supported_events","values":{"query":2,"info":{"max_instances":12,"num_entries":2,"entries":[{"type":1,"count":6},{"type":2,"count":8}]}}}]}'
         ],
@@ -2790,11 +2790,31 @@ CASES = [
         ],
     },
     {
+        "name": "event_action_gpio_oneshot_trigger_3",
+        "hex": "75650c08082f0101030104053443",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/events.yaml:250",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":47,"name":"event_action_config","values":{"function":1,"instance":1,"trigger":3,"type":1,"parameters":{"pin":4,"mode":5}}}]}'
+        ],
+    },
+    {
+        "name": "event_action_gpio_oneshot_trigger_3_published",
+        "hex": "75650c08082f010103010401303f",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/events.yaml:266",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":47,"name":"event_action_config","values":{"function":1,"instance":1,"trigger":3,"type":1,"parameters":{"pin":4,"mode":1}}}]}'
+        ],
+    },
+    {
         "name": "event_trigger_threshold_roll_10",
         "hex": "75650c19192e010202800c0101bfc6571814c9bba03fc6571814c9bba0b1fa",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:251",
+        "where": "tests/vectors/mip/events.yaml:287",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":2,"type":2,"parameters":{"desc_set":128,"field_desc":12,"param_id":1,"type":1,"low_thres":-0.1745329,"high_thres":0.1745329}}}]}'
         ],
@@ -2804,7 +2824,7 @@ CASES = [
         "hex": "75650c0b0b2e010303cece03010200d3e9",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:267",
+        "where": "tests/vectors/mip/events.yaml:303",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":3,"type":3,"parameters":{"logic_table":52942,"input_triggers":[3,1,2,0]}}}]}'
         ],
@@ -2814,7 +2834,7 @@ CASES = [
         "hex": "75650c08082f0102020104063545",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:277",
+        "where": "tests/vectors/mip/events.yaml:313",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":47,"name":"event_action_config","values":{"function":1,"instance":2,"trigger":2,"type":1,"parameters":{"pin":4,"mode":6}}}]}'
         ],
@@ -2824,7 +2844,7 @@ CASES = [
         "hex": "75650c04042e02011f66",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:287",
+        "where": "tests/vectors/mip/events.yaml:323",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":2,"instance":1}}]}'
         ],
@@ -2834,7 +2854,7 @@ CASES = [
         "hex": "75650c0804f12e0004b80100ce98",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:298",
+        "where": "tests/vectors/mip/events.yaml:334",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":46,"ack_code":0}},{"descriptor":184,"name":"event_trigger_config_response","values":{"instance":1,"type":0,"parameters":null}}]}'
         ],
@@ -2844,7 +2864,7 @@ CASES = [
         "hex": "75650c0b04f12d0007b70202010103da41",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:311",
+        "where": "tests/vectors/mip/events.yaml:347",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":241,"name":"ack_nack","values":{"command_descriptor":45,"ack_code":0}},{"descriptor":183,"name":"event_action_status","values":{"count":2,"actions":[{"action_type":2,"trigger_id":1},{"action_type":1,"trigger_id":3}]}}]}'
         ],
@@ -2854,7 +2874,7 @@ CASES = [
         "hex": "75650c19192e010402800c010116900000000000008000000000000000014c",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:329",
+        "where": "tests/vectors/mip/events.yaml:365",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":4,"type":2,"parameters":{"desc_set":128,"field_desc":12,"param_id":1,"type":1,"low_thres":5.225680706521042e-200,"high_thres":-0.0}}}]}'
         ],
@@ -2864,7 +2884,7 @@ CASES = [
         "hex": "75650c19192e010402800c010100000000000000014341c37937e0800033cf",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:343",
+        "where": "tests/vectors/mip/events.yaml:379",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":4,"type":2,"parameters":{"desc_set":128,"field_desc":12,"param_id":1,"type":1,"low_thres":5e-324,"high_thres":1e+16}}}]}'
         ],
@@ -2874,7 +2894,7 @@ CASES = [
         "hex": "75650c19192e010402800c01013f1a36e2eb1c432d3ee4f8b588e368f156da",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:354",
+        "where": "tests/vectors/mip/events.yaml:390",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":4,"type":2,"parameters":{"desc_set":128,"field_desc":12,"param_id":1,"type":1,"low_thres":0.0001,"high_thres":1e-05}}}]}'
         ],
@@ -2884,7 +2904,7 @@ CASES = [
         "hex": "75650c19192e010402800c01017e37e43c8800759c42dc12218377de6bdd44",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:365",
+        "where": "tests/vectors/mip/events.yaml:401",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":4,"type":2,"parameters":{"desc_set":128,"field_desc":12,"param_id":1,"type":1,"low_thres":1e+300,"high_thres":123456789012345.67}}}]}'
         ],
@@ -2894,7 +2914,7 @@ CASES = [
         "hex": "75650c19192e010402800c01017ff0000000000000fff00000000000013a05",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/events.yaml:376",
+        "where": "tests/vectors/mip/events.yaml:412",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"name":"event_trigger_config","values":{"function":1,"instance":4,"type":2,"parameters":{"desc_set":128,"field_desc":12,"param_id":1,"type":1,"low_thres":"inf","high_thres":"nan:0xfff0000000000001"}}}]}'
         ],

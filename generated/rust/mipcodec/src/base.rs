@@ -919,7 +919,7 @@ impl crate::wire::Layout for ContinuousBitResult {
 pub struct CommPortSpeed {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
-    /// Port ID, starting with 1; 0 means all ports for save, load and default. Sent for: write, read, save, load, default.
+    /// Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB); 0 means all ports for save, load and default. Sent for: write, read, save, load, default.
     pub port: u8,
     /// Port baud rate; must be a supported rate. Units: bit/s. Sent for: write.
     pub baud: Option<u32>,
@@ -1022,7 +1022,7 @@ impl crate::wire::Layout for CommPortSpeed {
 /// Comm port speed (response). Current baud rate of a port.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CommPortSpeedResponse {
-    /// Port ID, starting with 1.
+    /// Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB).
     pub port: u8,
     /// Port baud rate. Units: bit/s.
     pub baud: u32,

@@ -1523,16 +1523,16 @@ fn case_imu_message_format_read() {
 #[test]
 fn case_imu_message_format_read_reply() {
     check(
-        "75650c0d04f1080009800203000a04000a9606",
+        "75650c0d04f1080009800204000a05000a980f",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"imu_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,\"decimation\":10},{\"descriptor\":4,\"decimation\":10}]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"imu_message_format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}",
         ],
         false,
     );
 }
 
-/// `imu_message_format_read_reply_table_published` (tests/vectors/mip/3dm_streaming.yaml:381)
+/// `imu_message_format_read_reply_table_published` (tests/vectors/mip/3dm_streaming.yaml:384)
 #[test]
 fn case_imu_message_format_read_reply_table_published() {
     check(
@@ -1543,7 +1543,7 @@ fn case_imu_message_format_read_reply_table_published() {
     );
 }
 
-/// `imu_message_format_load` (tests/vectors/mip/3dm_streaming.yaml:394)
+/// `imu_message_format_load` (tests/vectors/mip/3dm_streaming.yaml:398)
 #[test]
 fn case_imu_message_format_load() {
     check(
@@ -1556,7 +1556,7 @@ fn case_imu_message_format_load() {
     );
 }
 
-/// `gnss_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:404)
+/// `gnss_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:408)
 #[test]
 fn case_gnss_message_format_write() {
     check(
@@ -1569,7 +1569,7 @@ fn case_gnss_message_format_write() {
     );
 }
 
-/// `gnss_message_format_ack` (tests/vectors/mip/3dm_streaming.yaml:416)
+/// `gnss_message_format_ack` (tests/vectors/mip/3dm_streaming.yaml:420)
 #[test]
 fn case_gnss_message_format_ack() {
     check(
@@ -1582,7 +1582,7 @@ fn case_gnss_message_format_ack() {
     );
 }
 
-/// `gnss_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:425)
+/// `gnss_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:429)
 #[test]
 fn case_gnss_message_format_read() {
     check(
@@ -1595,7 +1595,7 @@ fn case_gnss_message_format_read() {
     );
 }
 
-/// `gnss_message_format_read_table_published` (tests/vectors/mip/3dm_streaming.yaml:434)
+/// `gnss_message_format_read_table_published` (tests/vectors/mip/3dm_streaming.yaml:438)
 #[test]
 fn case_gnss_message_format_read_table_published() {
     check(
@@ -1606,7 +1606,7 @@ fn case_gnss_message_format_read_table_published() {
     );
 }
 
-/// `gnss_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:446)
+/// `gnss_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:450)
 #[test]
 fn case_gnss_message_format_read_reply() {
     check(
@@ -1619,7 +1619,7 @@ fn case_gnss_message_format_read_reply() {
     );
 }
 
-/// `filter_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:458)
+/// `filter_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:462)
 #[test]
 fn case_filter_message_format_write() {
     check(
@@ -1632,7 +1632,7 @@ fn case_filter_message_format_write() {
     );
 }
 
-/// `filter_message_format_write_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:469)
+/// `filter_message_format_write_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:473)
 #[test]
 fn case_filter_message_format_write_copy_paste_published() {
     check(
@@ -1645,7 +1645,7 @@ fn case_filter_message_format_write_copy_paste_published() {
     );
 }
 
-/// `filter_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:488)
+/// `filter_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:492)
 #[test]
 fn case_filter_message_format_read() {
     check(
@@ -1658,7 +1658,7 @@ fn case_filter_message_format_read() {
     );
 }
 
-/// `filter_message_format_read_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:497)
+/// `filter_message_format_read_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:501)
 #[test]
 fn case_filter_message_format_read_copy_paste_published() {
     check(
@@ -1671,7 +1671,7 @@ fn case_filter_message_format_read_copy_paste_published() {
     );
 }
 
-/// `filter_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:513)
+/// `filter_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:517)
 #[test]
 fn case_filter_message_format_read_reply() {
     check(
@@ -1684,7 +1684,7 @@ fn case_filter_message_format_read_reply() {
     );
 }
 
-/// `two_message_formats_in_one_packet` (tests/vectors/mip/3dm_streaming.yaml:526)
+/// `two_message_formats_in_one_packet` (tests/vectors/mip/3dm_streaming.yaml:530)
 #[test]
 fn case_two_message_formats_in_one_packet() {
     check(
@@ -1697,7 +1697,7 @@ fn case_two_message_formats_in_one_packet() {
     );
 }
 
-/// `data_stream_imu_on` (tests/vectors/mip/3dm_streaming.yaml:554)
+/// `data_stream_imu_on` (tests/vectors/mip/3dm_streaming.yaml:558)
 #[test]
 fn case_data_stream_imu_on() {
     check(
@@ -1710,7 +1710,7 @@ fn case_data_stream_imu_on() {
     );
 }
 
-/// `data_stream_imu_off` (tests/vectors/mip/3dm_streaming.yaml:565)
+/// `data_stream_imu_off` (tests/vectors/mip/3dm_streaming.yaml:569)
 #[test]
 fn case_data_stream_imu_off() {
     check(
@@ -1723,7 +1723,7 @@ fn case_data_stream_imu_off() {
     );
 }
 
-/// `data_stream_ack` (tests/vectors/mip/3dm_streaming.yaml:575)
+/// `data_stream_ack` (tests/vectors/mip/3dm_streaming.yaml:579)
 #[test]
 fn case_data_stream_ack() {
     check(
@@ -1736,7 +1736,7 @@ fn case_data_stream_ack() {
     );
 }
 
-/// `data_stream_gx5_read_filter` (tests/vectors/mip/3dm_streaming.yaml:584)
+/// `data_stream_gx5_read_filter` (tests/vectors/mip/3dm_streaming.yaml:588)
 #[test]
 fn case_data_stream_gx5_read_filter() {
     check(
@@ -1749,7 +1749,7 @@ fn case_data_stream_gx5_read_filter() {
     );
 }
 
-/// `data_stream_gx5_read_reply` (tests/vectors/mip/3dm_streaming.yaml:598)
+/// `data_stream_gx5_read_reply` (tests/vectors/mip/3dm_streaming.yaml:602)
 #[test]
 fn case_data_stream_gx5_read_reply() {
     check(
@@ -1762,7 +1762,7 @@ fn case_data_stream_gx5_read_reply() {
     );
 }
 
-/// `gnss_constellation_settings_write` (tests/vectors/mip/3dm_streaming.yaml:613)
+/// `gnss_constellation_settings_write` (tests/vectors/mip/3dm_streaming.yaml:617)
 #[test]
 fn case_gnss_constellation_settings_write() {
     check(
@@ -1775,7 +1775,7 @@ fn case_gnss_constellation_settings_write() {
     );
 }
 
-/// `gnss_constellation_settings_ack` (tests/vectors/mip/3dm_streaming.yaml:631)
+/// `gnss_constellation_settings_ack` (tests/vectors/mip/3dm_streaming.yaml:635)
 #[test]
 fn case_gnss_constellation_settings_ack() {
     check(
@@ -1788,7 +1788,7 @@ fn case_gnss_constellation_settings_ack() {
     );
 }
 
-/// `gnss_constellation_settings_read` (tests/vectors/mip/3dm_streaming.yaml:640)
+/// `gnss_constellation_settings_read` (tests/vectors/mip/3dm_streaming.yaml:644)
 #[test]
 fn case_gnss_constellation_settings_read() {
     check(
@@ -1801,7 +1801,7 @@ fn case_gnss_constellation_settings_read() {
     );
 }
 
-/// `gnss_constellation_settings_read_reply` (tests/vectors/mip/3dm_streaming.yaml:652)
+/// `gnss_constellation_settings_read_reply` (tests/vectors/mip/3dm_streaming.yaml:656)
 #[test]
 fn case_gnss_constellation_settings_read_reply() {
     check(
@@ -1814,7 +1814,7 @@ fn case_gnss_constellation_settings_read_reply() {
     );
 }
 
-/// `gnss_sbas_settings_write` (tests/vectors/mip/3dm_streaming.yaml:680)
+/// `gnss_sbas_settings_write` (tests/vectors/mip/3dm_streaming.yaml:684)
 #[test]
 fn case_gnss_sbas_settings_write() {
     check(
@@ -1827,7 +1827,7 @@ fn case_gnss_sbas_settings_write() {
     );
 }
 
-/// `gnss_sbas_settings_ack` (tests/vectors/mip/3dm_streaming.yaml:697)
+/// `gnss_sbas_settings_ack` (tests/vectors/mip/3dm_streaming.yaml:701)
 #[test]
 fn case_gnss_sbas_settings_ack() {
     check(
@@ -1840,7 +1840,7 @@ fn case_gnss_sbas_settings_ack() {
     );
 }
 
-/// `gnss_sbas_settings_read_reply_three_prns` (tests/vectors/mip/3dm_streaming.yaml:706)
+/// `gnss_sbas_settings_read_reply_three_prns` (tests/vectors/mip/3dm_streaming.yaml:710)
 #[test]
 fn case_gnss_sbas_settings_read_reply_three_prns() {
     check(
@@ -1853,7 +1853,7 @@ fn case_gnss_sbas_settings_read_reply_three_prns() {
     );
 }
 
-/// `gnss_sbas_settings_read_short` (tests/vectors/mip/3dm_streaming.yaml:727)
+/// `gnss_sbas_settings_read_short` (tests/vectors/mip/3dm_streaming.yaml:731)
 #[test]
 fn case_gnss_sbas_settings_read_short() {
     check(
@@ -1866,7 +1866,7 @@ fn case_gnss_sbas_settings_read_short() {
     );
 }
 
-/// `gnss_sbas_settings_write_include_all` (tests/vectors/mip/3dm_streaming.yaml:737)
+/// `gnss_sbas_settings_write_include_all` (tests/vectors/mip/3dm_streaming.yaml:741)
 #[test]
 fn case_gnss_sbas_settings_write_include_all() {
     check(
@@ -1879,7 +1879,7 @@ fn case_gnss_sbas_settings_write_include_all() {
     );
 }
 
-/// `gnss_sbas_settings_read_reply_disabled` (tests/vectors/mip/3dm_streaming.yaml:752)
+/// `gnss_sbas_settings_read_reply_disabled` (tests/vectors/mip/3dm_streaming.yaml:756)
 #[test]
 fn case_gnss_sbas_settings_read_reply_disabled() {
     check(
@@ -1892,7 +1892,7 @@ fn case_gnss_sbas_settings_read_reply_disabled() {
     );
 }
 
-/// `gnss_assisted_fix_enable` (tests/vectors/mip/3dm_streaming.yaml:766)
+/// `gnss_assisted_fix_enable` (tests/vectors/mip/3dm_streaming.yaml:770)
 #[test]
 fn case_gnss_assisted_fix_enable() {
     check(
@@ -1905,7 +1905,7 @@ fn case_gnss_assisted_fix_enable() {
     );
 }
 
-/// `gnss_assisted_fix_ack` (tests/vectors/mip/3dm_streaming.yaml:776)
+/// `gnss_assisted_fix_ack` (tests/vectors/mip/3dm_streaming.yaml:780)
 #[test]
 fn case_gnss_assisted_fix_ack() {
     check(
@@ -1918,7 +1918,7 @@ fn case_gnss_assisted_fix_ack() {
     );
 }
 
-/// `gnss_assisted_fix_read` (tests/vectors/mip/3dm_streaming.yaml:785)
+/// `gnss_assisted_fix_read` (tests/vectors/mip/3dm_streaming.yaml:789)
 #[test]
 fn case_gnss_assisted_fix_read() {
     check(
@@ -1931,7 +1931,7 @@ fn case_gnss_assisted_fix_read() {
     );
 }
 
-/// `gnss_assisted_fix_read_reply` (tests/vectors/mip/3dm_streaming.yaml:797)
+/// `gnss_assisted_fix_read_reply` (tests/vectors/mip/3dm_streaming.yaml:801)
 #[test]
 fn case_gnss_assisted_fix_read_reply() {
     check(
@@ -1944,7 +1944,7 @@ fn case_gnss_assisted_fix_read_reply() {
     );
 }
 
-/// `gnss_assist_time_update_command` (tests/vectors/mip/3dm_streaming.yaml:809)
+/// `gnss_assist_time_update_command` (tests/vectors/mip/3dm_streaming.yaml:813)
 #[test]
 fn case_gnss_assist_time_update_command() {
     check(
@@ -1957,7 +1957,7 @@ fn case_gnss_assist_time_update_command() {
     );
 }
 
-/// `gnss_assist_time_update_ack` (tests/vectors/mip/3dm_streaming.yaml:823)
+/// `gnss_assist_time_update_ack` (tests/vectors/mip/3dm_streaming.yaml:827)
 #[test]
 fn case_gnss_assist_time_update_ack() {
     check(
@@ -1970,7 +1970,7 @@ fn case_gnss_assist_time_update_ack() {
     );
 }
 
-/// `gnss_assist_time_update_read` (tests/vectors/mip/3dm_streaming.yaml:832)
+/// `gnss_assist_time_update_read` (tests/vectors/mip/3dm_streaming.yaml:836)
 #[test]
 fn case_gnss_assist_time_update_read() {
     check(
@@ -1983,7 +1983,7 @@ fn case_gnss_assist_time_update_read() {
     );
 }
 
-/// `gnss_assist_time_update_read_reply` (tests/vectors/mip/3dm_streaming.yaml:844)
+/// `gnss_assist_time_update_read_reply` (tests/vectors/mip/3dm_streaming.yaml:848)
 #[test]
 fn case_gnss_assist_time_update_read_reply() {
     check(
@@ -1996,7 +1996,7 @@ fn case_gnss_assist_time_update_read_reply() {
     );
 }
 
-/// `device_status_basic_command` (tests/vectors/mip/3dm_streaming.yaml:858)
+/// `device_status_basic_command` (tests/vectors/mip/3dm_streaming.yaml:862)
 #[test]
 fn case_device_status_basic_command() {
     check(
@@ -2009,7 +2009,7 @@ fn case_device_status_basic_command() {
     );
 }
 
-/// `device_status_basic_reply` (tests/vectors/mip/3dm_streaming.yaml:868)
+/// `device_status_basic_reply` (tests/vectors/mip/3dm_streaming.yaml:872)
 #[test]
 fn case_device_status_basic_reply() {
     check(
@@ -2022,7 +2022,7 @@ fn case_device_status_basic_reply() {
     );
 }
 
-/// `device_status_diagnostic_command` (tests/vectors/mip/3dm_streaming.yaml:890)
+/// `device_status_diagnostic_command` (tests/vectors/mip/3dm_streaming.yaml:894)
 #[test]
 fn case_device_status_diagnostic_command() {
     check(
@@ -2035,7 +2035,7 @@ fn case_device_status_diagnostic_command() {
     );
 }
 
-/// `device_status_diagnostic_reply` (tests/vectors/mip/3dm_streaming.yaml:900)
+/// `device_status_diagnostic_reply` (tests/vectors/mip/3dm_streaming.yaml:904)
 #[test]
 fn case_device_status_diagnostic_reply() {
     check(
@@ -2048,7 +2048,7 @@ fn case_device_status_diagnostic_reply() {
     );
 }
 
-/// `raw_rtcm_message_command` (tests/vectors/mip/3dm_streaming.yaml:948)
+/// `raw_rtcm_message_command` (tests/vectors/mip/3dm_streaming.yaml:952)
 #[test]
 fn case_raw_rtcm_message_command() {
     check(
@@ -2061,7 +2061,7 @@ fn case_raw_rtcm_message_command() {
     );
 }
 
-/// `raw_rtcm_message_ack` (tests/vectors/mip/3dm_streaming.yaml:960)
+/// `raw_rtcm_message_ack` (tests/vectors/mip/3dm_streaming.yaml:964)
 #[test]
 fn case_raw_rtcm_message_ack() {
     check(
@@ -2074,7 +2074,7 @@ fn case_raw_rtcm_message_ack() {
     );
 }
 
-/// `get_base_rate_sensor_command` (tests/vectors/mip/3dm_streaming.yaml:970)
+/// `get_base_rate_sensor_command` (tests/vectors/mip/3dm_streaming.yaml:974)
 #[test]
 fn case_get_base_rate_sensor_command() {
     check(
@@ -2087,7 +2087,7 @@ fn case_get_base_rate_sensor_command() {
     );
 }
 
-/// `get_base_rate_sensor_reply` (tests/vectors/mip/3dm_streaming.yaml:979)
+/// `get_base_rate_sensor_reply` (tests/vectors/mip/3dm_streaming.yaml:983)
 #[test]
 fn case_get_base_rate_sensor_reply() {
     check(
@@ -2100,7 +2100,7 @@ fn case_get_base_rate_sensor_reply() {
     );
 }
 
-/// `pps_source_write_generated` (tests/vectors/mip/3dm_streaming.yaml:989)
+/// `pps_source_write_generated` (tests/vectors/mip/3dm_streaming.yaml:993)
 #[test]
 fn case_pps_source_write_generated() {
     check(
@@ -2113,7 +2113,7 @@ fn case_pps_source_write_generated() {
     );
 }
 
-/// `pps_source_ack` (tests/vectors/mip/3dm_streaming.yaml:998)
+/// `pps_source_ack` (tests/vectors/mip/3dm_streaming.yaml:1002)
 #[test]
 fn case_pps_source_ack() {
     check(
@@ -2126,7 +2126,7 @@ fn case_pps_source_ack() {
     );
 }
 
-/// `pps_source_save` (tests/vectors/mip/3dm_streaming.yaml:1008)
+/// `pps_source_save` (tests/vectors/mip/3dm_streaming.yaml:1012)
 #[test]
 fn case_pps_source_save() {
     check(
@@ -2139,7 +2139,7 @@ fn case_pps_source_save() {
     );
 }
 
-/// `pps_source_write_disabled` (tests/vectors/mip/3dm_streaming.yaml:1017)
+/// `pps_source_write_disabled` (tests/vectors/mip/3dm_streaming.yaml:1021)
 #[test]
 fn case_pps_source_write_disabled() {
     check(
@@ -2152,7 +2152,7 @@ fn case_pps_source_write_disabled() {
     );
 }
 
-/// `pps_source_load` (tests/vectors/mip/3dm_streaming.yaml:1026)
+/// `pps_source_load` (tests/vectors/mip/3dm_streaming.yaml:1030)
 #[test]
 fn case_pps_source_load() {
     check(
@@ -2165,7 +2165,7 @@ fn case_pps_source_load() {
     );
 }
 
-/// `pps_source_load_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:1038)
+/// `pps_source_load_copy_paste_published` (tests/vectors/mip/3dm_streaming.yaml:1042)
 #[test]
 fn case_pps_source_load_copy_paste_published() {
     check(
@@ -2178,7 +2178,7 @@ fn case_pps_source_load_copy_paste_published() {
     );
 }
 
-/// `pps_source_default_save_read` (tests/vectors/mip/3dm_streaming.yaml:1056)
+/// `pps_source_default_save_read` (tests/vectors/mip/3dm_streaming.yaml:1060)
 #[test]
 fn case_pps_source_default_save_read() {
     check(
@@ -2191,7 +2191,7 @@ fn case_pps_source_default_save_read() {
     );
 }
 
-/// `pps_source_default_save_read_reply` (tests/vectors/mip/3dm_streaming.yaml:1067)
+/// `pps_source_default_save_read_reply` (tests/vectors/mip/3dm_streaming.yaml:1071)
 #[test]
 fn case_pps_source_default_save_read_reply() {
     check(
@@ -2204,7 +2204,7 @@ fn case_pps_source_default_save_read_reply() {
     );
 }
 
-/// `pps_source_write_gpio` (tests/vectors/mip/3dm_streaming.yaml:1080)
+/// `pps_source_write_gpio` (tests/vectors/mip/3dm_streaming.yaml:1084)
 #[test]
 fn case_pps_source_write_gpio() {
     check(
@@ -2217,7 +2217,7 @@ fn case_pps_source_write_gpio() {
     );
 }
 
-/// `pps_source_read_reply_receiver_2` (tests/vectors/mip/3dm_streaming.yaml:1090)
+/// `pps_source_read_reply_receiver_2` (tests/vectors/mip/3dm_streaming.yaml:1094)
 #[test]
 fn case_pps_source_read_reply_receiver_2() {
     check(
@@ -2230,7 +2230,7 @@ fn case_pps_source_read_reply_receiver_2() {
     );
 }
 
-/// `factory_streaming_overwrite` (tests/vectors/mip/3dm_streaming.yaml:1101)
+/// `factory_streaming_overwrite` (tests/vectors/mip/3dm_streaming.yaml:1105)
 #[test]
 fn case_factory_streaming_overwrite() {
     check(
@@ -2243,7 +2243,7 @@ fn case_factory_streaming_overwrite() {
     );
 }
 
-/// `poll_nmea_data_one_sentence` (tests/vectors/mip/3dm_streaming.yaml:1111)
+/// `poll_nmea_data_one_sentence` (tests/vectors/mip/3dm_streaming.yaml:1115)
 #[test]
 fn case_poll_nmea_data_one_sentence() {
     check(
@@ -2256,7 +2256,7 @@ fn case_poll_nmea_data_one_sentence() {
     );
 }
 
-/// `nmea_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:1126)
+/// `nmea_message_format_write` (tests/vectors/mip/3dm_streaming.yaml:1130)
 #[test]
 fn case_nmea_message_format_write() {
     check(
@@ -2269,7 +2269,7 @@ fn case_nmea_message_format_write() {
     );
 }
 
-/// `nmea_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:1146)
+/// `nmea_message_format_read` (tests/vectors/mip/3dm_streaming.yaml:1150)
 #[test]
 fn case_nmea_message_format_read() {
     check(
@@ -2282,7 +2282,7 @@ fn case_nmea_message_format_read() {
     );
 }
 
-/// `nmea_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:1156)
+/// `nmea_message_format_read_reply` (tests/vectors/mip/3dm_streaming.yaml:1160)
 #[test]
 fn case_nmea_message_format_read_reply() {
     check(
@@ -2295,7 +2295,7 @@ fn case_nmea_message_format_read_reply() {
     );
 }
 
-/// `poll_data_sensor_suppress_ack` (tests/vectors/mip/3dm_streaming.yaml:1175)
+/// `poll_data_sensor_suppress_ack` (tests/vectors/mip/3dm_streaming.yaml:1179)
 #[test]
 fn case_poll_data_sensor_suppress_ack() {
     check(
@@ -2308,7 +2308,7 @@ fn case_poll_data_sensor_suppress_ack() {
     );
 }
 
-/// `message_format_write_sensor` (tests/vectors/mip/3dm_streaming.yaml:1187)
+/// `message_format_write_sensor` (tests/vectors/mip/3dm_streaming.yaml:1191)
 #[test]
 fn case_message_format_write_sensor() {
     check(
@@ -2321,7 +2321,7 @@ fn case_message_format_write_sensor() {
     );
 }
 
-/// `message_format_read_sensor` (tests/vectors/mip/3dm_streaming.yaml:1201)
+/// `message_format_read_sensor` (tests/vectors/mip/3dm_streaming.yaml:1205)
 #[test]
 fn case_message_format_read_sensor() {
     check(
@@ -2334,7 +2334,7 @@ fn case_message_format_read_sensor() {
     );
 }
 
-/// `message_format_read_sensor_reply` (tests/vectors/mip/3dm_streaming.yaml:1211)
+/// `message_format_read_sensor_reply` (tests/vectors/mip/3dm_streaming.yaml:1215)
 #[test]
 fn case_message_format_read_sensor_reply() {
     check(
@@ -2347,7 +2347,7 @@ fn case_message_format_read_sensor_reply() {
     );
 }
 
-/// `message_format_save_all` (tests/vectors/mip/3dm_streaming.yaml:1226)
+/// `message_format_save_all` (tests/vectors/mip/3dm_streaming.yaml:1230)
 #[test]
 fn case_message_format_save_all() {
     check(
@@ -2360,7 +2360,7 @@ fn case_message_format_save_all() {
     );
 }
 
-/// `factory_streaming_merge` (tests/vectors/mip/3dm_streaming.yaml:1236)
+/// `factory_streaming_merge` (tests/vectors/mip/3dm_streaming.yaml:1240)
 #[test]
 fn case_factory_streaming_merge() {
     check(
@@ -2373,7 +2373,7 @@ fn case_factory_streaming_merge() {
     );
 }
 
-/// `data_stream_cv7_enable_filter` (tests/vectors/mip/3dm_streaming.yaml:1246)
+/// `data_stream_cv7_enable_filter` (tests/vectors/mip/3dm_streaming.yaml:1250)
 #[test]
 fn case_data_stream_cv7_enable_filter() {
     check(
@@ -2386,7 +2386,7 @@ fn case_data_stream_cv7_enable_filter() {
     );
 }
 
-/// `data_stream_cv7_read_filter` (tests/vectors/mip/3dm_streaming.yaml:1257)
+/// `data_stream_cv7_read_filter` (tests/vectors/mip/3dm_streaming.yaml:1261)
 #[test]
 fn case_data_stream_cv7_read_filter() {
     check(
@@ -2399,7 +2399,7 @@ fn case_data_stream_cv7_read_filter() {
     );
 }
 
-/// `data_stream_cv7_read_filter_reply` (tests/vectors/mip/3dm_streaming.yaml:1268)
+/// `data_stream_cv7_read_filter_reply` (tests/vectors/mip/3dm_streaming.yaml:1272)
 #[test]
 fn case_data_stream_cv7_read_filter_reply() {
     check(
@@ -2412,7 +2412,7 @@ fn case_data_stream_cv7_read_filter_reply() {
     );
 }
 
-/// `data_stream_cv7_save_all` (tests/vectors/mip/3dm_streaming.yaml:1280)
+/// `data_stream_cv7_save_all` (tests/vectors/mip/3dm_streaming.yaml:1284)
 #[test]
 fn case_data_stream_cv7_save_all() {
     check(
@@ -2425,7 +2425,7 @@ fn case_data_stream_cv7_save_all() {
     );
 }
 
-/// `get_supported_events_triggers` (tests/vectors/mip/3dm_streaming.yaml:1291)
+/// `get_supported_events_triggers` (tests/vectors/mip/3dm_streaming.yaml:1295)
 #[test]
 fn case_get_supported_events_triggers() {
     check(
@@ -2438,7 +2438,7 @@ fn case_get_supported_events_triggers() {
     );
 }
 
-/// `get_supported_events_triggers_reply` (tests/vectors/mip/3dm_streaming.yaml:1301)
+/// `get_supported_events_triggers_reply` (tests/vectors/mip/3dm_streaming.yaml:1305)
 #[test]
 fn case_get_supported_events_triggers_reply() {
     check(
@@ -2451,7 +2451,7 @@ fn case_get_supported_events_triggers_reply() {
     );
 }
 
-/// `get_supported_events_actions` (tests/vectors/mip/3dm_streaming.yaml:1323)
+/// `get_supported_events_actions` (tests/vectors/mip/3dm_streaming.yaml:1327)
 #[test]
 fn case_get_supported_events_actions() {
     check(
@@ -2464,7 +2464,7 @@ fn case_get_supported_events_actions() {
     );
 }
 
-/// `get_supported_events_actions_reply` (tests/vectors/mip/3dm_streaming.yaml:1333)
+/// `get_supported_events_actions_reply` (tests/vectors/mip/3dm_streaming.yaml:1337)
 #[test]
 fn case_get_supported_events_actions_reply() {
     check(
@@ -3693,7 +3693,33 @@ fn case_event_action_gpio_trigger_3() {
     );
 }
 
-/// `event_trigger_threshold_roll_10` (tests/vectors/mip/events.yaml:251)
+/// `event_action_gpio_oneshot_trigger_3` (tests/vectors/mip/events.yaml:250)
+#[test]
+fn case_event_action_gpio_oneshot_trigger_3() {
+    check(
+        "75650c08082f0101030104053443",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\",\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":4,\"mode\":5}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `event_action_gpio_oneshot_trigger_3_published` (tests/vectors/mip/events.yaml:266)
+#[test]
+fn case_event_action_gpio_oneshot_trigger_3_published() {
+    check(
+        "75650c08082f010103010401303f",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\",\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":4,\"mode\":1}}}]}",
+        ],
+        false,
+    );
+}
+
+/// `event_trigger_threshold_roll_10` (tests/vectors/mip/events.yaml:287)
 #[test]
 fn case_event_trigger_threshold_roll_10() {
     check(
@@ -3706,7 +3732,7 @@ fn case_event_trigger_threshold_roll_10() {
     );
 }
 
-/// `event_trigger_combination_latch` (tests/vectors/mip/events.yaml:267)
+/// `event_trigger_combination_latch` (tests/vectors/mip/events.yaml:303)
 #[test]
 fn case_event_trigger_combination_latch() {
     check(
@@ -3719,7 +3745,7 @@ fn case_event_trigger_combination_latch() {
     );
 }
 
-/// `event_action_gpio_oneshot_low` (tests/vectors/mip/events.yaml:277)
+/// `event_action_gpio_oneshot_low` (tests/vectors/mip/events.yaml:313)
 #[test]
 fn case_event_action_gpio_oneshot_low() {
     check(
@@ -3732,7 +3758,7 @@ fn case_event_action_gpio_oneshot_low() {
     );
 }
 
-/// `event_trigger_config_read` (tests/vectors/mip/events.yaml:287)
+/// `event_trigger_config_read` (tests/vectors/mip/events.yaml:323)
 #[test]
 fn case_event_trigger_config_read() {
     check(
@@ -3745,7 +3771,7 @@ fn case_event_trigger_config_read() {
     );
 }
 
-/// `event_trigger_config_read_reply_none` (tests/vectors/mip/events.yaml:298)
+/// `event_trigger_config_read_reply_none` (tests/vectors/mip/events.yaml:334)
 #[test]
 fn case_event_trigger_config_read_reply_none() {
     check(
@@ -3758,7 +3784,7 @@ fn case_event_trigger_config_read_reply_none() {
     );
 }
 
-/// `get_event_action_status_all_reply` (tests/vectors/mip/events.yaml:311)
+/// `get_event_action_status_all_reply` (tests/vectors/mip/events.yaml:347)
 #[test]
 fn case_get_event_action_status_all_reply() {
     check(
@@ -3771,7 +3797,7 @@ fn case_get_event_action_status_all_reply() {
     );
 }
 
-/// `doubles_power_of_two_and_negative_zero` (tests/vectors/mip/events.yaml:329)
+/// `doubles_power_of_two_and_negative_zero` (tests/vectors/mip/events.yaml:365)
 #[test]
 fn case_doubles_power_of_two_and_negative_zero() {
     check(
@@ -3784,7 +3810,7 @@ fn case_doubles_power_of_two_and_negative_zero() {
     );
 }
 
-/// `doubles_denormal_and_1e16` (tests/vectors/mip/events.yaml:343)
+/// `doubles_denormal_and_1e16` (tests/vectors/mip/events.yaml:379)
 #[test]
 fn case_doubles_denormal_and_1e16() {
     check(
@@ -3797,7 +3823,7 @@ fn case_doubles_denormal_and_1e16() {
     );
 }
 
-/// `doubles_positional_boundary` (tests/vectors/mip/events.yaml:354)
+/// `doubles_positional_boundary` (tests/vectors/mip/events.yaml:390)
 #[test]
 fn case_doubles_positional_boundary() {
     check(
@@ -3810,7 +3836,7 @@ fn case_doubles_positional_boundary() {
     );
 }
 
-/// `doubles_large_values` (tests/vectors/mip/events.yaml:365)
+/// `doubles_large_values` (tests/vectors/mip/events.yaml:401)
 #[test]
 fn case_doubles_large_values() {
     check(
@@ -3823,7 +3849,7 @@ fn case_doubles_large_values() {
     );
 }
 
-/// `doubles_infinity_and_nan_payload` (tests/vectors/mip/events.yaml:376)
+/// `doubles_infinity_and_nan_payload` (tests/vectors/mip/events.yaml:412)
 #[test]
 fn case_doubles_infinity_and_nan_payload() {
     check(

@@ -282,7 +282,8 @@ mip_status_t mip_base_continuous_bit_result_decode(const uint8_t *data, size_t l
  * applying the change; send it alone, with the device idle. */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read, save, load, default) */
-    uint8_t port;  /* Port ID, starting with 1; 0 means all ports for save, load and default. */
+    uint8_t port;  /* Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB); 0 means all ports for save, load and
+                      default. */
     bool has_baud; /* baud is present */
     uint32_t baud; /* Port baud rate; must be a supported rate. [bit/s] */
 } mip_base_comm_port_speed_t;
@@ -302,7 +303,7 @@ mip_status_t mip_base_comm_port_speed_decode(const uint8_t *data, size_t len, mi
 
 /** Comm port speed (response). Current baud rate of a port. */
 typedef struct {
-    uint8_t port;  /* Port ID, starting with 1. */
+    uint8_t port;  /* Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB). */
     uint32_t baud; /* Port baud rate. [bit/s] */
 } mip_base_comm_port_speed_response_t;
 

@@ -285,7 +285,8 @@ struct CommPortSpeed {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    std::uint8_t port{}; ///< Port ID, starting with 1; 0 means all ports for save, load and default.
+    std::uint8_t port{}; ///< Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB); 0 means all ports for save,
+                         ///< load and default.
     std::optional<std::uint32_t> baud{}; ///< Port baud rate; must be a supported rate. [bit/s]
     friend bool operator==(const CommPortSpeed &a, const CommPortSpeed &b) {
         (void)a;
@@ -305,7 +306,7 @@ struct CommPortSpeedResponse {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    std::uint8_t port{};  ///< Port ID, starting with 1.
+    std::uint8_t port{};  ///< Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB).
     std::uint32_t baud{}; ///< Port baud rate. [bit/s]
     friend bool operator==(const CommPortSpeedResponse &a, const CommPortSpeedResponse &b) {
         (void)a;
