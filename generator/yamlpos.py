@@ -20,9 +20,31 @@ _LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 # One constructor for every scalar (its construct_object keeps no state between plain scalars).
 _SCALARS = yaml.constructor.SafeConstructor()
 
+# Limits for files from outside (overlays, vendor updates): a spec or vector file nests a few
+# levels and holds a few thousand values (the largest of the project: 2,524), so these are far
+# above any real file and far below what would exhaust the stack or the memory. Aliases are
+# allowed (spec/mscip shares notes with them), but every value they expand to counts.
+MAX_DEPTH = 64
+MAX_VALUES = 200_000
 
-def _construct(node: yaml.Node, path: Path, file: str, marks: dict) -> Any:
-    marks[path] = Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
+
+class _Budget:
+    def __init__(self) -> None:
+        self.values = 0
+
+
+def _construct(node: yaml.Node, path: Path, file: str, marks: dict, budget: _Budget) -> Any:
+    loc = Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
+    if len(path) > MAX_DEPTH:
+        raise SpecError(loc, f"values nested deeper than {MAX_DEPTH} levels", f"at most {MAX_DEPTH} levels")
+    budget.values += 1
+    if budget.values > MAX_VALUES:
+        raise SpecError(
+            loc,
+            f"the file expands to more than {MAX_VALUES} values (aliases of aliases?)",
+            f"at most {MAX_VALUES} values after expanding aliases",
+        )
+    marks[path] = loc
     if isinstance(node, yaml.MappingNode):
         out: dict = {}
         for key_node, value_node in node.value:
@@ -35,10 +57,10 @@ def _construct(node: yaml.Node, path: Path, file: str, marks: dict) -> Any:
                 loc = Location(file, key_node.start_mark.line + 1, key_node.start_mark.column + 1)
                 raise SpecError(loc, f"duplicate key '{key}'", "each key once per mapping")
             marks[path + (("key", key),)] = Location(file, key_node.start_mark.line + 1, key_node.start_mark.column + 1)
-            out[key] = _construct(value_node, path + (key,), file, marks)
+            out[key] = _construct(value_node, path + (key,), file, marks, budget)
         return out
     if isinstance(node, yaml.SequenceNode):
-        return [_construct(v, path + (i,), file, marks) for i, v in enumerate(node.value)]
+        return [_construct(v, path + (i,), file, marks, budget) for i, v in enumerate(node.value)]
     return _scalar(node, file)
 
 
@@ -54,10 +76,19 @@ def _scalar(node: yaml.Node, file: str):
 def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable[[Path], Location]]:
     name = display_name or file_path
     try:
-        with open(file_path, encoding="utf-8") as fh:
-            text = fh.read()
+        with open(file_path, "rb") as fh:
+            raw = fh.read()
     except OSError as exc:
         raise SpecError(Location(name, 1, 1), f"cannot read file: {exc.strerror}") from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        before = raw[: exc.start]
+        line = before.count(b"\n") + 1
+        column = len(before) - (before.rfind(b"\n") + 1) + 1
+        raise SpecError(
+            Location(name, line, column), f"the file is not UTF-8 (byte 0x{raw[exc.start]:02X})", "UTF-8 text"
+        ) from None
     try:
         node = yaml.compose(text, Loader=_LOADER)
     except yaml.MarkedYAMLError as exc:
@@ -66,10 +97,12 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
         raise SpecError(loc, f"invalid YAML: {exc.problem or exc.context}") from None
     except yaml.YAMLError as exc:  # pragma: no cover - defensive
         raise SpecError(Location(name, 1, 1), f"invalid YAML: {exc}") from None
+    except RecursionError:  # the pure-Python composer on absurd nesting
+        raise SpecError(Location(name, 1, 1), "values nested too deeply", f"at most {MAX_DEPTH} levels") from None
     marks: dict = {}
     if node is None:
         raise SpecError(Location(name, 1, 1), "empty file", "a YAML mapping")
-    data = _construct(node, (), name, marks)
+    data = _construct(node, (), name, marks, _Budget())
 
     def locate(path: Path) -> Location:
         p = tuple(path)
