@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from .errata import render_errata
 from .export import ir_to_json
 from .ir import lint_stated_lengths
+from .output import write_file, write_tree
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .spec import ROOT, load_spec
 from .targets import TARGETS
@@ -54,29 +54,7 @@ def run(
 
         owned.extend(docs.OUTPUT_DIRS)
         files.update(docs.render(ir, vectors, files))
-    _write_tree(out_dir, files, owned)
+    write_tree(out_dir, files, owned)
     docs_dir = docs_dir or ROOT / "docs"
-    _write_tree(docs_dir, {"errata.md": render_errata(ir, vectors)}, [])
+    write_file(docs_dir / "errata.md", render_errata(ir, vectors))
     return 0
-
-
-def _write_tree(out_dir: Path, files: dict[str, str], owned: list[str]) -> None:
-    out_dir.mkdir(parents=True, exist_ok=True)
-    for rel, text in sorted(files.items()):
-        p = out_dir / rel
-        p.parent.mkdir(parents=True, exist_ok=True)
-        if not p.exists() or p.read_text(encoding="utf-8") != text:
-            p.write_text(text, encoding="utf-8")
-    # Remove stale files in directories a back end owns.
-    keep = set(files)
-    for d in owned:
-        base = out_dir / d
-        if not base.exists():
-            continue
-        for root, _dirs, names in os.walk(base, topdown=False):
-            for n in names:
-                rel = os.path.relpath(os.path.join(root, n), out_dir)
-                if rel not in keep:
-                    os.remove(os.path.join(root, n))
-            if not os.listdir(root):
-                os.rmdir(root)
