@@ -94,6 +94,7 @@ class Param:
     count_check: bool = False
     selector: str | None = None  # UNION: the earlier enum parameter that selects the member
     selector_optional: bool = False  # UNION: that parameter is optional (absent reads as 0)
+    selector_enum: str | None = None  # UNION: the enum type of the selector parameter
     members: tuple[UnionMember, ...] = ()  # UNION: the union's members, in spec order
     # Every byte pattern of the parameter's fixed size decodes: a scalar or fixed array, not
     # optional, of numbers (not bool), chars, strings, enums, bitfields or structs of such.
@@ -198,7 +199,12 @@ def param(q: dict, earlier: dict[str, dict], types: dict[str, dict]) -> Param:
         sel = earlier[tref["selector"]]
         members = tuple(UnionMember(m["when"], m["value"], m["type"]) for m in types[tref["name"]]["members"])
         return Param(
-            kind=UNION, selector=sel["name"], selector_optional=bool(sel["optional"]), members=members, **common
+            kind=UNION,
+            selector=sel["name"],
+            selector_optional=bool(sel["optional"]),
+            selector_enum=types[tref["name"]]["selector_enum"],
+            members=members,
+            **common,
         )
     if count is None:
         return Param(kind=SCALAR, **common)

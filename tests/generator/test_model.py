@@ -80,7 +80,7 @@ def test_each_kind_is_classified_once():
     # A u8 count can say 255 > 10 elements, so decoders must check it.
     assert items.count_check
     assert (label.elem.length, label.elem.padding, label.elem.justify) == (8, "space", "right")
-    assert choice.selector == "mode" and not choice.selector_optional
+    assert choice.selector == "mode" and choice.selector_enum == "Mode" and not choice.selector_optional
     assert choice.members == (model.UnionMember("none", 0, None), model.UnionMember("pair", 1, "Pair"))
     assert rest.max_count == 100 and rest.count_check and rest.count_param is None
     assert not ps.has_optional and ps.has_array and ps.functions is None
