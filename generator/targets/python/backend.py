@@ -290,7 +290,6 @@ class _Proto:
                 ops.append({"run": None, "param": v})
         return {
             "fields": fields,
-            "attrs": tuple_literal([f'"{f["attr"]}"' for f in fields]) if fields else "()",
             "ops": ops,
             "uses_types": any(v["cls"] for v in views),
         }

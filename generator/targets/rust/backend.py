@@ -255,9 +255,6 @@ class _Protocol:
     def enum_base(self, enum_name: str) -> str:
         return _int_rust(self.types[enum_name]["base"])
 
-    def fixed_size(self, size: dict) -> str:
-        return f"Some({size['min']})" if size["fixed"] else "None"
-
     def param(self, p: model.Param) -> dict:
         """Names and types of one parameter of the layout model; layout_macros.j2 writes the Rust."""
         if p.function:
@@ -366,7 +363,7 @@ class _Protocol:
         elif kind == "struct":
             m["params"] = self.params_model(t["params"], None)
             m["has_optional"] = False
-            m["fixed_size"] = self.fixed_size(t["size"])
+            m["fixed_size"] = t["size"]["min"] if t["size"]["fixed"] else None
         elif kind == "union":
             m["base"] = self.enum_base(t["selector_enum"])
             seen = set()
@@ -399,7 +396,7 @@ class _Protocol:
             "set": _hex(set_id) if set_id is not None else None,
             "params": params,
             "has_optional": any(p["optional"] for p in params),
-            "fixed_size": self.fixed_size(layout["size"]),
+            "fixed_size": layout["size"]["min"] if layout["size"]["fixed"] else None,
             "doc": doc,
             "device": layout["device"],
         }
