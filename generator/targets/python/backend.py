@@ -8,8 +8,9 @@ generated/python/<package>/
     tests/                golden vectors (generated), typed round trips (generated), runtime tests
 
 All naming and type mapping happens here; templates only loop and print. Layouts are described to
-the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...) whose source text is
-built below, so the generated modules read like declarations.
+the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...), so the generated
+modules read like declarations: each parameter is classified by the layout model
+(generator/model.py), named here, and written by templates/python/layout_macros.j2.
 """
 
 from __future__ import annotations
