@@ -9,9 +9,10 @@ from __future__ import annotations
 
 import re
 
+from generator import model
 from generator.examples import example_context
 from generator.lookup import resolve
-from generator.primitives import PRIMITIVES, int_range
+from generator.primitives import PRIMITIVES
 from generator.render import environment
 
 OUTPUT_DIRS = ["c"]
@@ -97,11 +98,11 @@ def _fast_loads(views: list[dict]) -> dict | None:
             return None
         size = v["e"]["size"]
         if v["kind"] == "scalar":
-            loads.append({"dst": v["c"], "ld": v["e"]["ld"], "off": off})
+            loads.append({"c": v["c"], "index": None, "ld": v["e"]["ld"], "off": off})
             off += size
         else:
             for i in range(v["n"]):
-                loads.append({"dst": f"{v['c']}[{i}]", "ld": v["e"]["ld"], "off": off})
+                loads.append({"c": v["c"], "index": i, "ld": v["e"]["ld"], "off": off})
                 off += size
     return {"size": off, "loads": loads}
 
@@ -339,114 +340,74 @@ class _Package:
         return view
 
     # -------------------------------------------------------------- parameters
-    def _elem(self, tref: dict) -> dict:
+    def _elem(self, e: model.Elem) -> dict:
         """The C type of one value and the functions that read/write/print/parse it."""
-        k = tref["kind"]
-        if k == "primitive":
-            ctype, suffix = _PRIM[tref["name"]]
+        if e.kind in ("primitive", "enum", "bitfield"):
+            suffix = _PRIM[e.primitive][1]
             ops = f"{self.p}_%s_{suffix}"
             return {
-                "ctype": ctype,
+                "ctype": _PRIM[e.name][0] if e.kind == "primitive" else self.type_c(e.name),
                 "rd": ops % "rd",
                 "wr": ops % "wr",
                 "jw": ops % "jw",
                 "jr": ops % "jr",
-                "size": PRIMITIVES[tref["name"]][0],
+                "size": e.size.min,
                 "ld": suffix,
             }
-        if k in ("enum", "bitfield"):
-            suffix = _PRIM[tref["base"]][1]
-            ops = f"{self.p}_%s_{suffix}"
+        if e.kind in ("struct", "union"):
+            fn = self.type_fn(e.name)
             return {
-                "ctype": self.type_c(tref["name"]),
-                "rd": ops % "rd",
-                "wr": ops % "wr",
-                "jw": ops % "jw",
-                "jr": ops % "jr",
-                "size": PRIMITIVES[tref["base"]][0],
-                "ld": suffix,
-            }
-        if k in ("struct", "union"):
-            fn = self.type_fn(tref["name"])
-            size = tref["size"]
-            return {
-                "ctype": self.type_c(tref["name"]),
+                "ctype": self.type_c(e.name),
                 "rd": f"{fn}_read",
                 "wr": f"{fn}_write",
                 "jw": f"{fn}_to_json",
                 "jr": f"{fn}_from_json",
-                "size": size["min"] if size["fixed"] and size["min"] > 0 else None,
+                "size": e.size.min if e.size.fixed and e.size.min > 0 else None,
             }
-        if k == "string":
-            return {"ctype": "char", "size": tref["length"]}
-        raise BackendError(f"C back end: unsupported type kind {k}")
+        if e.kind == "string":
+            return {"ctype": "char", "size": e.length}
+        raise BackendError(f"C back end: unsupported type kind {e.kind}")
 
-    def _param_view(self, q: dict, by_name: dict) -> dict:
-        tref = q["type"]
-        c = member(q["name"])
-        e = self._elem(tref)
-        count = q["count"]
-        view = {
-            "name": q["name"],
-            "c": c,
-            "optional": q["optional"],
-            "has": f"has_{q['name']}",
-            "e": e,
-            "doc": _comment(q.get("description")) + (f" [{q['units']}]" if q.get("units") else ""),
-        }
-        if tref["kind"] == "string":
-            view.update(kind="string", n=tref["length"], decl=f"char {c}[{tref['length']}]")
-        elif tref["kind"] == "union":
-            view.update(kind="union", sel_c=member(tref["selector"]), decl=f"{e['ctype']} {c}")
-        elif count is None:
-            view.update(kind="scalar", decl=f"{e['ctype']} {c}")
-        elif count["kind"] == "fixed":
-            view.update(kind="fixed", n=count["value"], decl=f"{e['ctype']} {c}[{count['value']}]")
+    def _param_view(self, q: model.Param) -> dict:
+        """Names and C types of one parameter of the layout model; layout_code.j2 writes the C."""
+        if q.function:
+            doc = "function selector (" + ", ".join(q.functions) + ")"
         else:
-            mx = q["max_count"]
-            view.update(max=mx, decl=f"{e['ctype']} {c}[{max(mx, 1)}]")
-            if count["kind"] == "param":
-                ref = by_name[count["param"]]
-                cmax = int_range(ref["type"]["name"])[1]
-                view.update(kind="counted", count_c=member(count["param"]), count_check=mx < cmax)
-            else:
-                view.update(kind="remaining", count_c=f"{q['name']}_count", count_check=True)
+            doc = _comment(q.description) + (f" [{q.units}]" if q.units else "")
+        view = {
+            "name": q.name,
+            "c": member(q.name),
+            "kind": q.kind,
+            "optional": q.optional,
+            "has": f"has_{q.name}" if q.optional else None,
+            "e": self._elem(q.elem),
+            "doc": doc,
+            "n": q.elem.length if q.kind == model.STRING else q.count,
+            "max": q.max_count,
+            "count_check": q.count_check,
+        }
+        if q.kind == model.UNION:
+            view["sel_c"] = member(q.selector)
+        elif q.kind == model.COUNTED:
+            view["count_c"] = member(q.count_param)
+        elif q.kind == model.REMAINING:
+            view["count_c"] = f"{q.name}_count"
         return view
 
     def _params_view(self, params: list[dict], functions: list[str] | None, owner: str) -> dict:
-        views = []
-        by_name: dict[str, dict] = {}
-        if functions is not None:
-            fs = self.types[self.proto["function_selector"]["enum"]]
-            views.append(
-                {
-                    "name": "function",
-                    "c": "function",
-                    "optional": False,
-                    "has": None,
-                    "kind": "scalar",
-                    "e": self._elem({"kind": "enum", "name": fs["name"], "base": fs["base"]}),
-                    "decl": f"{self.type_c(fs['name'])} function",
-                    "doc": "function selector (" + ", ".join(functions) + ")",
-                }
-            )
-        for q in params:
-            views.append(self._param_view(q, by_name))
-            by_name[q["name"]] = q
-        members: list[dict] = []
+        views = [self._param_view(q) for q in model.params(self.proto, params, functions)]
+        # The struct members (layout_code.j2 `members`): a presence flag before each optional
+        # parameter, an element count before each array that runs to the end of the data.
+        names = []
         for v in views:
-            if v["optional"]:
-                members.append({"decl": f"bool {v['has']}", "doc": f"{v['name']} is present"})
-            if v["kind"] == "remaining":
-                members.append({"decl": f"size_t {v['count_c']}", "doc": f"number of elements in {v['name']}"})
-            members.append({"decl": v["decl"], "doc": v["doc"]})
-        names = [m["decl"].split()[-1].split("[")[0] for m in members]
+            names += [v["has"]] if v["optional"] else []
+            names += [v["count_c"]] if v["kind"] == model.REMAINING else []
+            names.append(v["c"])
         dup = {n for n in names if names.count(n) > 1}
         if dup:
             raise BackendError(f"C back end: {owner} would have two members named {', '.join(sorted(dup))}")
         return {
             "params": views,
-            "members": members,
             "needs_i": any(v["kind"] in ("fixed", "counted", "remaining") for v in views),
             "needs_n": any(v["kind"] == "remaining" and v["e"]["size"] for v in views),
             "has_optional": any(v["optional"] for v in views),

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import re
 
+from generator import model
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.render import environment
@@ -201,141 +202,43 @@ class _Proto:
     def type_name(self, name: str) -> str:
         return f"::{self.ns}::types::{name}"
 
-    def elem_cpp(self, tref: dict) -> str:
-        k = tref["kind"]
-        if k == "primitive":
-            return PRIM_CPP[tref["name"]]
-        if k == "string":
-            return f"std::array<char, {tref['length']}>"
-        return self.type_name(tref["name"])
+    def elem_cpp(self, e: model.Elem) -> str:
+        """The C++ type of one value."""
+        if e.kind == "primitive":
+            return PRIM_CPP[e.name]
+        if e.kind == "string":
+            return f"std::array<char, {e.length}>"
+        return self.type_name(e.name)
 
-    def plain_tref(self, tref: dict, seen: tuple = ()) -> bool:
-        """True when every value of the type's fixed size decodes (no bool, union or variable part)."""
-        k = tref["kind"]
-        if k == "primitive":
-            return tref["name"] != "bool"
-        if k in ("string", "enum", "bitfield"):
-            return True
-        if k == "struct" and tref["name"] not in seen:
-            return all(self.plain_param(q, seen + (tref["name"],)) for q in self.types[tref["name"]]["params"])
-        return False
-
-    def plain_param(self, q: dict, seen: tuple = ()) -> bool:
-        c = q["count"]
-        return (
-            not q["optional"]
-            and q["type"]["kind"] != "union"
-            and (c is None or c["kind"] == "fixed")
-            and self.plain_tref(q["type"], seen)
-        )
-
-    def param(self, q: dict, siblings: dict[str, dict]) -> dict:
-        """Everything a template prints for one parameter (struct member or layout parameter)."""
-        t = q["type"]
-        c = q["count"]
-        member = ident(q["name"])
-        elem = self.elem_cpp(t)
-        ns = self.ns
-
-        def ref(name: str) -> str:
-            sib = siblings[name]
-            return f"(*v.{sib['member']})" if sib["optional"] else f"v.{sib['member']}"
-
-        count_expr = sel_expr = None
-        if t["kind"] == "string":
-            shape, value_type = "string", elem
-        elif t["kind"] == "union":
-            shape, value_type = "union", elem
-            sib = siblings[t["selector"]]
-            sel_type = sib["value_type"]
-            sel_expr = f"v.{sib['member']}.value_or({sel_type}{{}})" if sib["optional"] else f"v.{sib['member']}"
-        elif c is None:
-            shape, value_type = "scalar", elem
-        elif c["kind"] == "fixed":
-            shape, value_type = "fixed", f"std::array<{elem}, {c['value']}>"
-        elif c["kind"] == "param":
-            shape, value_type = "counted", f"::{ns}::BoundedVector<{elem}, {q['max_count']}>"
-            sib = siblings[c["param"]]
-            base = f"v.{sib['member']}.value_or(0)" if sib["optional"] else f"v.{sib['member']}"
-            count_expr = f"static_cast<std::uint64_t>({base})"
+    def param(self, p: model.Param) -> dict:
+        """Names and types of one parameter of the layout model (struct member or layout
+        parameter); include/macros.j2 writes the C++ for its kind."""
+        if p.function:
+            doc = "Function selector."
         else:
-            shape, value_type = "remaining", f"::{ns}::BoundedVector<{elem}, {q['max_count']}>"
-        optional = bool(q["optional"])
-        tgt = f"(*v.{member})" if optional else f"v.{member}"
-        ops = {
-            "scalar": (
-                f"read_value(r, {tgt}, err)",
-                f"write_value(w, {tgt})",
-                f"json_write_value(w, {tgt})",
-                f"json_read_value(x, {tgt}, err)",
-            ),
-            "string": (
-                f"read_string(r, {tgt}, err)",
-                f"write_string(w, {tgt})",
-                f"json_write_string(w, {tgt})",
-                f"json_read_string(x, {tgt}, err)",
-            ),
-            "union": (
-                f"::{ns}::Codec<{elem}>::read(r, {tgt}, {sel_expr}, err)",
-                f"::{ns}::Codec<{elem}>::write(w, {tgt}, {sel_expr})",
-                f"::{ns}::Json<{elem}>::write(w, {tgt})",
-                f"::{ns}::Json<{elem}>::read(x, {tgt}, {sel_expr}, err)",
-            ),
-            "fixed": (
-                f"read_fixed(r, {tgt}, err)",
-                f"write_fixed(w, {tgt})",
-                f"json_write_array(w, {tgt})",
-                f"json_read_fixed(x, {tgt}, err)",
-            ),
-            "counted": (
-                f"read_counted(r, {tgt}, {count_expr}, err)",
-                f"write_counted(w, {tgt}, {count_expr})",
-                f"json_write_array(w, {tgt})",
-                f"json_read_counted(x, {tgt}, {count_expr}, err)",
-            ),
-            "remaining": (
-                f"read_remaining(r, {tgt}, err)",
-                f"write_remaining(w, {tgt})",
-                f"json_write_array(w, {tgt})",
-                f"json_read_remaining(x, {tgt}, err)",
-            ),
-        }[shape]
-        out = {
-            "json": q["name"],
-            "member": member,
-            "value_type": value_type,
-            "type": f"std::optional<{value_type}>" if optional else value_type,
-            "optional": optional,
-            "shape": shape,
-            "plain": self.plain_param(q),
-            "read": ops[0],
-            "write": ops[1],
-            "json_write": ops[2],
-            "json_read": ops[3],
-            "doc": " ".join((q.get("description") or "").split()) + (f" [{q['units']}]" if q.get("units") else ""),
+            doc = " ".join(p.description.split()) + (f" [{p.units}]" if p.units else "")
+        view = {
+            "json": p.name,
+            "member": ident(p.name),
+            "kind": p.kind,
+            "optional": p.optional,
+            "elem": self.elem_cpp(p.elem),
+            "ns": self.ns,
+            "count": p.count,
+            "max_count": p.max_count,
+            "plain": p.plain,
+            "doc": doc,
         }
-        siblings[q["name"]] = out
-        return out
-
-    def params(self, params: list[dict], function: bool = False) -> list[dict]:
-        siblings: dict[str, dict] = {}
-        out = []
-        if function:
-            fs = self.p["function_selector"]["enum"]
-            out.append(
-                self.param(
-                    {
-                        "name": "function",
-                        "type": {"kind": "enum", "name": fs},
-                        "count": None,
-                        "optional": False,
-                        "description": "Function selector.",
-                    },
-                    siblings,
-                )
+        if p.count_param is not None:
+            view.update(count_member=ident(p.count_param), count_optional=p.count_optional)
+        if p.selector is not None:
+            view.update(
+                sel_member=ident(p.selector), sel_optional=p.selector_optional, sel_type=self.type_name(p.selector_enum)
             )
-        out.extend(self.param(q, siblings) for q in params)
-        return out
+        return view
+
+    def params(self, params: list[dict], functions: list[str] | None = None) -> list[dict]:
+        return [self.param(p) for p in model.params(self.p, params, functions)]
 
     # ------------------------------------------------------------ types
     def ordered_types(self) -> list[dict]:
@@ -436,7 +339,7 @@ class _Proto:
         for f in fields:
             multi = len(f["variants"]) > 1
             for v in f["variants"]:
-                params = self.params(v["params"], function=v["functions"] is not None)
+                params = self.params(v["params"], v["functions"])
                 out.append(
                     {
                         "cpp": names[(f["name"], v["device"] if multi else None)],

@@ -8,8 +8,9 @@ generated/python/<package>/
     tests/                golden vectors (generated), typed round trips (generated), runtime tests
 
 All naming and type mapping happens here; templates only loop and print. Layouts are described to
-the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...) whose source text is
-built below, so the generated modules read like declarations.
+the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...), so the generated
+modules read like declarations: each parameter is classified by the layout model
+(generator/model.py), named here, and written by templates/python/layout_macros.j2.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from __future__ import annotations
 import keyword
 import textwrap
 
+from generator import model
 from generator.examples import example_context
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
@@ -204,161 +206,93 @@ class _Proto:
         fs = proto.get("function_selector") or {}
         self.function_enum = fs.get("enum")
         self.byte_order = ">" if proto["byte_order"] == "big" else "<"
+        # The Python syntax of a parameter's declaration lives in the layout template; field_decl
+        # calls its macros because where the comment goes depends on the declaration's length.
+        self.syntax = environment().get_template("python/layout_macros.j2").module
 
-    # -------------------------------------------------------------- type mapping
-    def scalar_expr(self, tref: dict, tp: str) -> str | None:
-        """Runtime scalar for a type reference, or None when it is not a scalar (struct/union)."""
-        kind = tref["kind"]
-        if kind == "primitive":
-            return SCALARS[tref["name"]]
-        if kind == "string":
-            return f"_c.string({tref['length']})"
-        if kind == "enum":
-            return f"_c.enum({tp}{tref['name']}, {tref['base']!r})"
-        if kind == "bitfield":
-            return f"_c.flags({tp}{tref['name']})"
-        return None
-
-    def elem_annotation(self, tref: dict, tp: str) -> str:
-        kind = tref["kind"]
-        if kind == "primitive":
-            return PY_TYPES[PRIMITIVES[tref["name"]][1]]
-        if kind == "string":
-            return "bytes"
-        if kind in ("enum", "bitfield", "struct"):
-            return f"{tp}{tref['name']}"
-        if kind == "union":
-            members = [m["type"] for m in self.types[tref["name"]]["members"] if m["type"]]
-            inner = ", ".join(f"{tp}{m}" for m in dict.fromkeys(members))
-            if not members:
-                return "None"
-            return f"_ty.Optional[_ty.Union[{inner}]]" if len(members) > 1 else f"_ty.Optional[{inner}]"
-        raise ValueError(kind)
-
-    def elem_default(self, tref: dict, tp: str) -> str:
-        kind = tref["kind"]
-        if kind == "primitive":
-            pk = PRIMITIVES[tref["name"]][1]
-            return {"int": "0", "float": "0.0", "bool": "False", "char": 'b"\\x00"'}[pk]
-        if kind == "string":
-            pad = "b' '" if tref.get("padding") == "space" else "b'\\x00'"
-            return f"{pad} * {tref['length']}"
-        if kind == "enum":
-            first = self.types[tref["name"]]["values"][0]["name"]
-            return f"{tp}{tref['name']}.{const_name(first)}"
-        if kind == "bitfield":
-            return f"{tp}{tref['name']}(0)"
-        if kind == "struct":
-            return f"{tp}{tref['name']}()"
-        if kind == "union":
-            return "None"
-        raise ValueError(kind)
-
-    def field_decl(self, q: dict, tp: str) -> dict:
-        """Dataclass field: attribute, annotation and default for one parameter."""
-        tref, count = q["type"], q["count"]
-        elem = self.elem_annotation(tref, tp)
-        if count is None:
-            ann = elem
-            if tref["kind"] == "struct":
-                default = f"_dc.field(default_factory={tp}{tref['name']})"
-            else:
-                default = self.elem_default(tref, tp)
+    # -------------------------------------------------------------- layouts
+    def param(self, p: model.Param, tp: str) -> dict:
+        """Names and Python types of one parameter of the layout model (`tp` qualifies the names of
+        the spec's types); layout_macros.j2 writes its runtime operation and its declaration."""
+        e = p.elem
+        if p.function:
+            first = p.functions[0]
+        elif e.kind == "enum":
+            first = self.types[e.name]["values"][0]["name"]
         else:
-            ann = f"_ty.List[{elem}]"
-            if count["kind"] == "fixed":
-                d = self.elem_default(tref, tp)
-                if tref["kind"] == "struct":
-                    default = f"_dc.field(default_factory=lambda: [{d} for _ in range({count['value']})])"
-                else:
-                    default = f"_dc.field(default_factory=lambda: [{d}] * {count['value']})"
-            else:
-                default = "_dc.field(default_factory=list)"
-        if q["optional"]:
-            if not ann.startswith("_ty.Optional["):
-                ann = f"_ty.Optional[{ann}]"
-            default = "None"
-        notes = [comment(q.get("description", ""))]
-        if q.get("units"):
-            notes.append(f"[{q['units']}]")
-        if q["optional"] and q.get("functions") is not None:
-            notes.append("(sent for: " + ", ".join(q["functions"]) + ")")
-        if count is not None and count["kind"] == "param":
-            notes.append(f"(count: {count['param']})")
-        elif count is not None and count["kind"] == "remaining":
-            notes.append("(to the end of the field)")
-        attr = py_attr(q["name"])
+            first = None
+        members = []
+        if e.kind == "union":
+            members = list(dict.fromkeys(f"{tp}{m.type}" for m in p.members if m.type))
         return {
-            "attr": attr,
-            "name": q["name"],
-            "annotation": ann,
-            "default": default,
-            "lines": decl(f"{attr}: {ann} = {default}", " ".join(n for n in notes if n)),
+            "name": p.name,
+            "attr": py_attr(p.name),
+            "kind": p.kind,
+            "array": p.array,
+            "optional": p.optional,
+            "elem_kind": e.kind,
+            "codec": SCALARS[e.name] if e.kind == "primitive" else None,
+            "py_kind": PRIMITIVES[e.name][1] if e.kind == "primitive" else None,
+            "py_type": PY_TYPES[PRIMITIVES[e.name][1]] if e.kind == "primitive" else None,
+            "cls": f"{tp}{e.name}" if e.named else None,
+            "base": e.primitive,
+            "length": e.length,
+            "padding": e.padding,
+            "first_value": const_name(first) if first else None,
+            "member_classes": members,
+            "count": p.count,
+            "max_count": p.max_count,
+            "count_param": p.count_param,
+            "selector": p.selector,
+            # Scalars and fixed arrays of numbers, strings, enums and bitfields: the runtime reads
+            # a run of consecutive ones with one struct format (_c.Run).
+            "flat": e.kind not in ("struct", "union") and p.kind in (model.SCALAR, model.FIXED, model.STRING),
         }
 
-    def ops(self, params: list[dict], tp: str, function: bool) -> list[str]:
-        """Source of the runtime operations that read/write a layout, in order."""
-        ops: list[str] = []
-        run: list[str] = []
-
-        def flush() -> None:
-            if run:
-                ops.append("_c.Run(" + ", ".join(run) + ")")
-                run.clear()
-
-        if function:
+    def field_decl(self, p: model.Param, view: dict) -> dict:
+        """Dataclass field of one parameter: its declaration (from the template) and its note."""
+        if p.function:
             et = self.types[self.function_enum]
-            run.append(f'_c.P("function", _c.enum({tp}{self.function_enum}, {et["base"]!r}))')
-        for q in params:
-            tref, count = q["type"], q["count"]
-            name = q["name"]
-            scalar = self.scalar_expr(tref, tp)
-            flat = scalar is not None and (count is None or count["kind"] == "fixed")
-            if flat:
-                p = f'_c.P("{name}", {scalar}' + (f", {count['value']})" if count else ")")
-                if q["optional"]:
-                    flush()
-                    ops.append(f"_c.Opt(_c.Run({p}))")
-                else:
-                    run.append(p)
-                continue
-            flush()
-            elem = scalar if scalar is not None else f"{tp}{tref['name']}"
-            if tref["kind"] == "union":
-                op = f'_c.Choice("{name}", {tp}{tref["name"]}, selector="{tref["selector"]}")'
-            elif count is None:
-                op = f'_c.Nested("{name}", {elem})'
-            elif count["kind"] == "fixed":
-                op = f'_c.Repeat("{name}", {elem}, {count["value"]})'
-            elif count["kind"] == "param":
-                op = f'_c.Counted("{name}", {elem}, count="{count["param"]}", maximum={q["max_count"]})'
-            else:
-                op = f'_c.Remaining("{name}", {elem}, maximum={q["max_count"]})'
-            ops.append(f"_c.Opt({op})" if q["optional"] else op)
-        flush()
-        return ops
+            notes = [comment(et.get("title", "")) + " (one of: " + ", ".join(p.functions) + ")"]
+        else:
+            notes = [comment(p.description)]
+            if p.units:
+                notes.append(f"[{p.units}]")
+            if p.optional and p.functions is not None:
+                notes.append("(sent for: " + ", ".join(p.functions) + ")")
+            if p.kind == model.COUNTED:
+                notes.append(f"(count: {p.count_param})")
+            elif p.kind == model.REMAINING:
+                notes.append("(to the end of the field)")
+        syntax = self.syntax
+        annotation, default = syntax.annotation(view), syntax.default(view)
+        return {
+            "attr": view["attr"],
+            "name": p.name,
+            "annotation": annotation,
+            "default": default,
+            "lines": decl(syntax.declaration(view), " ".join(n for n in notes if n)),
+        }
 
     def layout(self, params: list[dict], tp: str, function_names: list[str] | None) -> dict:
-        fields = []
-        if function_names is not None:
-            et = self.types[self.function_enum]
-            ann = f"{tp}{self.function_enum}"
-            default = f"{tp}{self.function_enum}.{const_name(function_names[0])}"
-            note = comment(et.get("title", "")) + " (one of: " + ", ".join(function_names) + ")"
-            fields.append(
-                {
-                    "attr": "function",
-                    "name": "function",
-                    "annotation": ann,
-                    "default": default,
-                    "lines": decl(f"function: {ann} = {default}", note),
-                }
-            )
-        fields.extend(self.field_decl(q, tp) for q in params)
+        plist = model.params(self.p, params, function_names)
+        views = [self.param(p, tp) for p in plist]
+        fields = [self.field_decl(p, v) for p, v in zip(plist, views)]
+        # The runtime operations: runs of consecutive flat required parameters, then one
+        # operation per other parameter (layout_macros.j2 `op`).
+        ops: list[dict] = []
+        for v in views:
+            if v["flat"] and not v["optional"]:
+                if ops and ops[-1]["run"]:
+                    ops[-1]["run"].append(v)
+                else:
+                    ops.append({"run": [v], "param": None})
+            else:
+                ops.append({"run": None, "param": v})
         return {
             "fields": fields,
-            "attrs": tuple_literal([f'"{f["attr"]}"' for f in fields]) if fields else "()",
-            "ops": self.ops(params, tp, function_names is not None),
+            "ops": ops,
+            "uses_types": any(v["cls"] for v in views),
         }
 
     # -------------------------------------------------------------- types module
@@ -544,13 +478,10 @@ class _Proto:
         return out
 
     def module_uses(self, classes: list[dict]) -> dict:
-        text = " ".join(
-            " ".join(c["ops"]) + " " + " ".join(f["annotation"] + " " + f["default"] for f in c["fields"])
-            for c in classes
-        )
+        text = " ".join(" ".join(f["annotation"] + " " + f["default"] for f in c["fields"]) for c in classes)
         return {
             "typing": "_ty." in text,
-            "types": "_t." in text,
+            "types": "_t." in text or any(c["uses_types"] for c in classes),
             "dataclasses": bool(classes),
         }
 

@@ -11,6 +11,7 @@ import random
 import re
 import struct
 
+from generator import model
 from generator.canonical import float_text, string_text
 from generator.examples import example_context
 from generator.lookup import resolve
@@ -243,111 +244,47 @@ class _Protocol:
         return camel(device_id)
 
     # ---------------------------------------------------------------- types
-    def elem_type(self, tref: dict) -> str:
-        kind = tref["kind"]
-        if kind == "primitive":
-            return _PRIM_RUST[tref["name"]]
-        if kind == "string":
-            return f"crate::wire::Str<{tref['length']}>"
-        return f"crate::types::{camel(tref['name'])}"
+    def elem_type(self, e: model.Elem) -> str:
+        """The Rust type of one value."""
+        if e.kind == "primitive":
+            return _PRIM_RUST[e.name]
+        if e.kind == "string":
+            return f"crate::wire::Str<{e.length}>"
+        return f"crate::types::{camel(e.name)}"
 
     def enum_base(self, enum_name: str) -> str:
         return _int_rust(self.types[enum_name]["base"])
 
-    def fixed_size(self, size: dict) -> str:
-        return f"Some({size['min']})" if size["fixed"] else "None"
-
-    def param(self, q: dict, params: list[dict], function_enum: str | None = None) -> dict:
-        """Model of one parameter (or of the function selector when function_enum is given)."""
-        if function_enum is not None:
-            t = f"crate::types::{camel(function_enum)}"
-            return {
-                "name": "function",
-                "field": "function",
-                "local": "p_function",
-                "optional": False,
-                "union": False,
-                "type": t,
-                "inner": t,
-                "zero": f"<{t} as crate::wire::Wire>::ZERO",
-                "decode": f"<{t} as crate::wire::Wire>::decode(r)",
-                "encode": "crate::wire::Wire::encode(v, w)",
-                "from_json": f"<{t} as crate::json_read::FromJson>::from_json",
-                "write_json": "crate::wire::Wire::write_json(v, w)",
-                "doc": "Function selector (sent first).",
-            }
-        name = q["name"]
-        tref = q["type"]
-        elem = self.elem_type(tref)
-        count = q["count"]
-        by_name = {p["name"]: p for p in params}
-        union = tref["kind"] == "union"
-        if union:
-            sel = by_name[tref["selector"]]
-            if sel["optional"]:
-                sel_local = f"p_{sel['name']}.map_or(0, |s| s.0)"
-                sel_self = f"self.{ident(sel['name'])}.map_or(0, |s| s.0)"
-            else:
-                sel_local = f"p_{sel['name']}.0"
-                sel_self = f"self.{ident(sel['name'])}.0"
-            inner = elem
-            decode = f"{elem}::decode_selected(r, {sel_local})"
-            encode = f"v.encode_selected(w, {sel_self})"
-            from_json = f"|v| {elem}::from_json_selected(v, {sel_local})"
-            write_json = "v.write_json(w)"
-            zero = f"{elem}::ZERO"
+    def param(self, p: model.Param) -> dict:
+        """Names and types of one parameter of the layout model; layout_macros.j2 writes the Rust."""
+        if p.function:
+            doc = "Function selector (sent first)."
         else:
-            write_json = "crate::wire::Wire::write_json(v, w)"
-            encode = "crate::wire::Wire::encode(v, w)"
-            if count is None:
-                inner = elem
-                decode = f"<{inner} as crate::wire::Wire>::decode(r)"
-            elif count["kind"] == "fixed":
-                inner = f"[{elem}; {count['value']}]"
-                decode = f"<{inner} as crate::wire::Wire>::decode(r)"
-            elif count["kind"] == "param":
-                cq = by_name[count["param"]]
-                inner = f"crate::bounded::BoundedVec<{elem}, {q['max_count']}>"
-                if cq["optional"]:
-                    c_local = f"p_{cq['name']}.map_or(0, u64::from)"
-                    c_self = f"self.{ident(cq['name'])}.map_or(0, u64::from)"
-                else:
-                    c_local = f"u64::from(p_{cq['name']})"
-                    c_self = f"u64::from(self.{ident(cq['name'])})"
-                decode = f"crate::bounded::BoundedVec::<{elem}, {q['max_count']}>::decode_counted(r, {c_local})"
-                encode = f"v.encode_counted(w, {c_self})"
-            else:  # remaining
-                inner = f"crate::bounded::BoundedVec<{elem}, {q['max_count']}>"
-                decode = f"crate::bounded::BoundedVec::<{elem}, {q['max_count']}>::decode_remaining(r)"
-            from_json = f"<{inner} as crate::json_read::FromJson>::from_json"
-            zero = f"<{inner} as crate::wire::Wire>::ZERO"
-        optional = q["optional"]
-        units = f" Units: {q['units']}." if q.get("units") else ""
-        doc = doc_line(q.get("description")) + units
-        if q.get("functions") is not None:
-            doc = (doc + " Sent for: " + ", ".join(q["functions"]) + ".").strip()
-        return {
-            "name": name,
-            "field": ident(name),
-            "local": f"p_{name}",
-            "optional": optional,
-            "union": union,
-            "type": f"Option<{inner}>" if optional else inner,
-            "inner": inner,
-            "zero": "None" if optional else zero,
-            "decode": decode,
-            "encode": encode,
-            "from_json": from_json,
-            "write_json": write_json,
+            units = f" Units: {p.units}." if p.units else ""
+            doc = doc_line(p.description) + units
+            if p.functions is not None:
+                doc = (doc + " Sent for: " + ", ".join(p.functions) + ".").strip()
+        view = {
+            "name": p.name,
+            "kind": p.kind,
+            "field": ident(p.name),
+            "local": f"p_{p.name}",
+            "optional": p.optional,
+            "elem": self.elem_type(p.elem),
+            "count": p.count,
+            "max_count": p.max_count,
             "doc": doc.strip(),
         }
+        if p.count_param is not None:
+            view.update(
+                count_field=ident(p.count_param), count_local=f"p_{p.count_param}", count_optional=p.count_optional
+            )
+        if p.selector is not None:
+            view.update(sel_field=ident(p.selector), sel_local=f"p_{p.selector}", sel_optional=p.selector_optional)
+        return view
 
     def params_model(self, params: list[dict], functions: list[str] | None) -> list[dict]:
-        out = []
-        if functions is not None:
-            out.append(self.param(None, params, function_enum=self.proto["function_selector"]["enum"]))
-        out.extend(self.param(q, params) for q in params)
-        return out
+        return [self.param(p) for p in model.params(self.proto, params, functions)]
 
     def type_model(self, t: dict) -> dict:
         kind = t["kind"]
@@ -426,7 +363,7 @@ class _Protocol:
         elif kind == "struct":
             m["params"] = self.params_model(t["params"], None)
             m["has_optional"] = False
-            m["fixed_size"] = self.fixed_size(t["size"])
+            m["fixed_size"] = t["size"]["min"] if t["size"]["fixed"] else None
         elif kind == "union":
             m["base"] = self.enum_base(t["selector_enum"])
             seen = set()
@@ -459,7 +396,7 @@ class _Protocol:
             "set": _hex(set_id) if set_id is not None else None,
             "params": params,
             "has_optional": any(p["optional"] for p in params),
-            "fixed_size": self.fixed_size(layout["size"]),
+            "fixed_size": layout["size"]["min"] if layout["size"]["fixed"] else None,
             "doc": doc,
             "device": layout["device"],
         }
