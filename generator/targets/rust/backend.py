@@ -734,7 +734,6 @@ _TEMPLATES = [
     ("Cargo.toml.j2", "Cargo.toml"),
     ("README.md.j2", "README.md"),
     ("lib.rs.j2", "src/lib.rs"),
-    ("samples.rs.j2", "src/samples.rs"),
     ("types.rs.j2", "src/types.rs"),
     ("reserved.rs.j2", "src/reserved.rs"),
     ("dispatch.rs.j2", "src/dispatch.rs"),
@@ -749,7 +748,7 @@ _TEMPLATES = [
 _RUNTIME_CRATE = "protocodec"
 _RUNTIME = {
     f"src/{name}.rs": f"src/{name}.rs"
-    for name in ("error", "wire", "bounded", "json", "json_read", "parser", "fields", "builder", "text")
+    for name in ("error", "wire", "bounded", "json", "json_read", "parser", "fields", "builder", "samples", "text")
 }
 _RUNTIME_TOOLS = [f"src/bin/{_RUNTIME_CRATE}-decode.rs", f"src/bin/{_RUNTIME_CRATE}-encode.rs"]
 # The checksum half of `crate::framing`, after the constants rendered from framing.rs.j2.
