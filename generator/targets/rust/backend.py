@@ -738,7 +738,6 @@ _TEMPLATES = [
     ("reserved.rs.j2", "src/reserved.rs"),
     ("dispatch.rs.j2", "src/dispatch.rs"),
     ("test_vectors.rs.j2", "tests/vectors.rs"),
-    ("test_runtime.rs.j2", "tests/runtime.rs"),
     ("test_spec.rs.j2", "tests/spec.rs"),
     ("example_getting_started.rs.j2", "examples/getting_started.rs"),
 ]
