@@ -23,6 +23,7 @@ from .facts import KEYWORDS, NOT_RAW, PRIMITIVE_TYPES, RESERVED_MODULES
 
 OUTPUT_DIRS = ["rust"]
 
+
 # ---------------------------------------------------------------------------------------- naming
 def camel(name: str) -> str:
     """snake_case -> CamelCase; names that already are CamelCase are kept. Digit-digit joins keep a `_`."""
