@@ -17,7 +17,7 @@ from generator.canonical import float_text, string_text
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.primitives import PRIMITIVES
-from generator.render import ToolError, copy_runtime, environment, runtime_dir
+from generator.render import ToolError, copy_runtime, environment
 
 from .facts import KEYWORDS, NOT_RAW, PRIMITIVE_TYPES, RESERVED_MODULES
 
@@ -765,7 +765,7 @@ def _runtime_files(package: str) -> dict[str, str]:
 
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
     env = environment()
-    checksum = (runtime_dir("rust") / _RUNTIME_CHECKSUM).read_text(encoding="utf-8")
+    checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
         model = _Protocol(proto, [v for v in vectors if v["protocol"] == proto["name"]])
