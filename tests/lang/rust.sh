@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Build, test and run the generated Rust crates.
 #   tests/lang/rust.sh build                      cargo build --release of every crate under generated/rust/
-#   tests/lang/rust.sh test                       first the runtime in place (generator/targets/rust/
-#                                                 runtime/: rustfmt --check, clippy, cargo test); then
-#                                                 clippy -D warnings, cargo test, and a core-only
+#   tests/lang/rust.sh test                       the runtime in place (as `runtime`), then clippy
+#                                                 -D warnings, cargo test, and a core-only
 #                                                 (--no-default-features) build, for every crate
-#   tests/lang/rust.sh runtime                    only the runtime in place (no generated crate needed)
+#   tests/lang/rust.sh runtime                    the runtime where it is edited, generator/targets/rust/
+#                                                 runtime/ (no regeneration needed): rustfmt --check,
+#                                                 clippy, rustdoc and cargo test
 #   tests/lang/rust.sh decode FILE [--device ID]  run <package>-decode (FILE may be -)
 #   tests/lang/rust.sh encode                     run <package>-encode (stdin -> stdout)
 #   tests/lang/rust.sh example FILE               cargo run --example getting_started -- FILE
@@ -48,6 +49,8 @@ test_runtime() {
     CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo clippy --quiet --manifest-path "$m" --all-targets -- -D warnings
     echo "== runtime: clippy (core only)" >&2
     CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo clippy --quiet --manifest-path "$m" --lib --no-default-features -- -D warnings
+    echo "== runtime: doc (warnings are errors)" >&2
+    CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps --manifest-path "$m"
     echo "== runtime: test" >&2
     CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo test --quiet --manifest-path "$m"
 }
