@@ -1,8 +1,10 @@
 """Rust back end: one `no_std` crate (optional `std` feature) per protocol at generated/rust/<package>/.
 
-All naming and type mapping happens here; the templates in templates/rust/ only loop and print.
-The runtime pieces that do not depend on the spec (parser, checksum, JSON) are template files
-rendered with the framing constants of the protocol.
+All naming and type mapping happens here (the language's keywords and type table are data, in
+facts.py); the templates in templates/rust/ only loop and print. The runtime, the code that does
+not depend on the spec (parser, checksum, builder, JSON, errors, the command-line tools), is plain
+Rust in runtime/, copied verbatim into each crate: its only protocol input is the generated
+`crate::framing` constants module (templates/rust/framing.rs.j2).
 """
 
 from __future__ import annotations
@@ -16,102 +18,11 @@ from generator.canonical import float_text, string_text
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.primitives import PRIMITIVES
-from generator.render import ToolError, environment
+from generator.render import ToolError, copy_runtime, environment
+
+from .facts import KEYWORDS, NOT_RAW, PRIMITIVE_TYPES, RESERVED_MODULES
 
 OUTPUT_DIRS = ["rust"]
-
-# Rust keywords (2021 edition plus reserved words). Most can be written as raw identifiers;
-# the few that cannot get a trailing underscore.
-_KEYWORDS = {
-    "as",
-    "break",
-    "const",
-    "continue",
-    "crate",
-    "else",
-    "enum",
-    "extern",
-    "false",
-    "fn",
-    "for",
-    "if",
-    "impl",
-    "in",
-    "let",
-    "loop",
-    "match",
-    "mod",
-    "move",
-    "mut",
-    "pub",
-    "ref",
-    "return",
-    "self",
-    "Self",
-    "static",
-    "struct",
-    "super",
-    "trait",
-    "true",
-    "type",
-    "unsafe",
-    "use",
-    "where",
-    "while",
-    "async",
-    "await",
-    "dyn",
-    "abstract",
-    "become",
-    "box",
-    "do",
-    "final",
-    "macro",
-    "override",
-    "priv",
-    "typeof",
-    "unsized",
-    "virtual",
-    "yield",
-    "try",
-    "gen",
-}
-_NOT_RAW = {"crate", "self", "Self", "super", "_"}
-
-# Modules of the runtime; a descriptor set cannot use these names as its module.
-_RUNTIME_MODULES = {
-    "bounded",
-    "builder",
-    "dispatch",
-    "error",
-    "fields",
-    "framing",
-    "json",
-    "json_read",
-    "parser",
-    "reserved",
-    "text",
-    "types",
-    "wire",
-    "std",
-    "core",
-    "alloc",
-}
-
-_PRIM_RUST = {
-    "bool": "bool",
-    "char": "crate::wire::Char",
-    "u8": "u8",
-    "u16": "u16",
-    "u32": "u32",
-    "u64": "u64",
-    "s8": "i8",
-    "s16": "i16",
-    "s32": "i32",
-    "s64": "i64",
-    "float": "f32",
-    "double": "f64",
-}
 
 
 # ---------------------------------------------------------------------------------------- naming
@@ -132,9 +43,9 @@ def camel(name: str) -> str:
 
 def ident(name: str) -> str:
     """A snake_case Rust identifier for a spec name (keywords escaped)."""
-    if name in _NOT_RAW:
+    if name in NOT_RAW:
         return name + "_"
-    if name in _KEYWORDS:
+    if name in KEYWORDS:
         return "r#" + name
     return name
 
@@ -170,7 +81,7 @@ def doc_line(*texts: str | None) -> str:
 
 
 def _int_rust(name: str) -> str:
-    return _PRIM_RUST[name]
+    return PRIMITIVE_TYPES[name]
 
 
 def _hex(v: int, width: int = 2) -> str:
@@ -195,10 +106,10 @@ class _Protocol:
     def _check_names(self) -> None:
         proto = self.proto
         self._set_modules: dict[int, str] = {}
-        used = set(_RUNTIME_MODULES) | {self.package}
+        used = set(RESERVED_MODULES) | {self.package}
         for s in proto["sets"]:
             m = s["name"]
-            if m in used or m in _KEYWORDS or m in _NOT_RAW:
+            if m in used or m in KEYWORDS or m in NOT_RAW:
                 m = m + "_set"
             if m in used:
                 raise ToolError(f"rust back end: set {s['name']} (0x{s['id']:02X}) has no free module name")
@@ -247,7 +158,7 @@ class _Protocol:
     def elem_type(self, e: model.Elem) -> str:
         """The Rust type of one value."""
         if e.kind == "primitive":
-            return _PRIM_RUST[e.name]
+            return PRIMITIVE_TYPES[e.name]
         if e.kind == "string":
             return f"crate::wire::Str<{e.length}>"
         return f"crate::types::{camel(e.name)}"
@@ -761,31 +672,37 @@ _TEMPLATES = [
     ("Cargo.toml.j2", "Cargo.toml"),
     ("README.md.j2", "README.md"),
     ("lib.rs.j2", "src/lib.rs"),
-    ("framing.rs.j2", "src/framing.rs"),
-    ("error.rs.j2", "src/error.rs"),
-    ("wire.rs.j2", "src/wire.rs"),
-    ("bounded.rs.j2", "src/bounded.rs"),
-    ("json_write.rs.j2", "src/json.rs"),
-    ("json_read.rs.j2", "src/json_read.rs"),
-    ("parser.rs.j2", "src/parser.rs"),
-    ("fields.rs.j2", "src/fields.rs"),
-    ("samples.rs.j2", "src/samples.rs"),
-    ("builder.rs.j2", "src/builder.rs"),
     ("types.rs.j2", "src/types.rs"),
     ("reserved.rs.j2", "src/reserved.rs"),
     ("dispatch.rs.j2", "src/dispatch.rs"),
-    ("text.rs.j2", "src/text.rs"),
-    ("bin_decode.rs.j2", "src/bin/{package}-decode.rs"),
-    ("bin_encode.rs.j2", "src/bin/{package}-encode.rs"),
     ("test_vectors.rs.j2", "tests/vectors.rs"),
-    ("test_runtime.rs.j2", "tests/runtime.rs"),
     ("test_spec.rs.j2", "tests/spec.rs"),
     ("example_getting_started.rs.j2", "examples/getting_started.rs"),
 ]
 
+# The runtime (runtime/src/ beside this module) by name in the crate. The command-line tools
+# name the crate they use; in runtime/ that is its own crate, `protocodec`.
+_RUNTIME_CRATE = "protocodec"
+_RUNTIME = {
+    f"src/{name}.rs": f"src/{name}.rs"
+    for name in ("error", "wire", "bounded", "json", "json_read", "parser", "fields", "builder", "samples", "text")
+}
+_RUNTIME_TOOLS = [f"src/bin/{_RUNTIME_CRATE}-decode.rs", f"src/bin/{_RUNTIME_CRATE}-encode.rs"]
+# The checksum half of `crate::framing`, after the constants rendered from framing.rs.j2.
+_RUNTIME_CHECKSUM = "src/framing_checksum.rs"
+
+
+def _runtime_files(package: str) -> dict[str, str]:
+    """The runtime files of one crate, by path in the crate."""
+    files = copy_runtime("rust", _RUNTIME)
+    tools = {src: src.replace(_RUNTIME_CRATE, package) for src in _RUNTIME_TOOLS}
+    files.update(copy_runtime("rust", tools, replace=[(_RUNTIME_CRATE, package)]))
+    return files
+
 
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
     env = environment()
+    checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
         model = _Protocol(proto, [v for v in vectors if v["protocol"] == proto["name"]])
@@ -798,7 +715,10 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         ctx["example"] = _example(proto)
         root = f"rust/{model.package}/"
         for tpl, out in _TEMPLATES:
-            files[root + out.format(package=model.package)] = env.get_template(f"rust/{tpl}").render(**ctx)
+            files[root + out] = env.get_template(f"rust/{tpl}").render(**ctx)
+        files[root + "src/framing.rs"] = env.get_template("rust/framing.rs.j2").render(**ctx) + "\n" + checksum
+        for path, text in _runtime_files(model.package).items():
+            files[root + path] = text
         set_tpl = env.get_template("rust/set.rs.j2")
         for s in ctx["sets"]:
             files[root + f"src/{s['module']}.rs"] = set_tpl.render(set=s, **ctx)

@@ -4,7 +4,7 @@
 use core::fmt;
 
 /// Deepest parameter path of any layout in the spec (names and array indices).
-pub const PATH_DEPTH: usize = 4;
+pub use crate::framing::PATH_DEPTH;
 
 /// One step of a parameter path.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,5 +1,6 @@
 //! Framing of the MicroStrain MIP protocol, rendered from `ir.json` → `protocols[].framing`, and the
-//! Fletcher-16 checksum.
+//! Fletcher-16 checksum. These constants are the only protocol input of the runtime modules
+//! (parser, builder, fields, wire, error, samples), which are the same in every crate.
 //!
 //! Packet: sync (75 65), header [set, payload_length], payload, checksum.
 //! Field: header [length, descriptor], then the field data.
@@ -42,6 +43,18 @@ pub const MAX_FIELD_DATA: usize = 253;
 pub const BIG_ENDIAN: bool = true;
 /// Whether sum1 is transmitted before sum2.
 pub const CHECKSUM_SUM1_FIRST: bool = true;
+/// Deepest parameter path of any layout in the spec (names and array indices).
+pub const PATH_DEPTH: usize = 4;
+
+// The sample rule: continuation packets of a data set grouped by their timestamp (samples.rs).
+/// Data sets that group continuation packets (one sample tracker slot each).
+pub const DATA_SETS: [u8; 8] = [0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0];
+/// The first shared descriptor.
+pub const FIRST_SHARED: u16 = 208;
+/// (descriptor, data size) of the shared fields whose value identifies a sample.
+pub const TIMESTAMPS: [(u8, usize); 3] = [(0xD3, 12), (0xD5, 8), (0xD7, 10)];
+/// Bytes of the largest sample key.
+pub const MAX_KEY: usize = 36;
 
 /// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
 ///

@@ -1,6 +1,6 @@
 //! Stream parser (`docs/conformance.md` §1): finds packets in a byte stream fed in chunks of
 //! any size and reports the bytes between them as skip runs. The events do not depend on the
-//! chunking. State: one maximum packet (261 bytes) and a few counters.
+//! chunking. State: one maximum packet ([`MAX_PACKET`] bytes) and a few counters.
 
 use crate::framing::{
     checksum_bytes, CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, MAX_PAYLOAD, SYNC,

@@ -6,14 +6,8 @@
 use crate::fields::{FieldItem, Packet};
 use crate::framing::FIELD_HEADER_SIZE;
 
-/// Data sets that group continuation packets (one tracker slot each).
-pub const DATA_SETS: [u8; 8] = [0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0];
-/// The first shared descriptor.
-pub const FIRST_SHARED: u16 = 208;
-/// (descriptor, data size) of the shared fields whose value identifies a sample.
-pub const TIMESTAMPS: [(u8, usize); 3] = [(0xD3, 12), (0xD5, 8), (0xD7, 10)];
-/// Bytes of the largest key.
-pub const MAX_KEY: usize = 36;
+// The sample rule of the protocol (`ir.json` → `protocols[].samples`).
+pub use crate::framing::{DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS};
 
 /// The key of a packet and the size of its leading shared run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,7 +32,7 @@ pub fn sample_key(packet: &Packet<'_>) -> SampleKey {
         len: 0,
         shared_prefix: 0,
     };
-    let mut seen = [false; 3];
+    let mut seen = [false; TIMESTAMPS.len()];
     let mut pos = 0;
     for item in packet.fields() {
         let FieldItem::Field { descriptor, data } = item else {
@@ -85,7 +79,7 @@ struct Slot {
 /// Numbers the samples of complete packets; fixed state, one slot per data set.
 #[derive(Clone, Debug)]
 pub struct SampleTracker {
-    slots: [Slot; 8],
+    slots: [Slot; DATA_SETS.len()],
     next: u64,
 }
 
@@ -108,7 +102,7 @@ impl SampleTracker {
             },
         };
         Self {
-            slots: [EMPTY; 8],
+            slots: [EMPTY; DATA_SETS.len()],
             next: 0,
         }
     }

@@ -1,5 +1,6 @@
 //! Framing of the Memsense MS-CIP protocol, rendered from `ir.json` → `protocols[].framing`, and the
-//! Fletcher-16 checksum.
+//! Fletcher-16 checksum. These constants are the only protocol input of the runtime modules
+//! (parser, builder, fields, wire, error, samples), which are the same in every crate.
 //!
 //! Packet: sync (A5 A5), header [set, payload_length], payload, checksum.
 //! Field: header [descriptor, length], then the field data.
@@ -44,6 +45,18 @@ pub const MAX_FIELD_DATA: usize = 253;
 pub const BIG_ENDIAN: bool = true;
 /// Whether sum1 is transmitted before sum2.
 pub const CHECKSUM_SUM1_FIRST: bool = true;
+/// Deepest parameter path of any layout in the spec (names and array indices).
+pub const PATH_DEPTH: usize = 3;
+
+// The sample rule: continuation packets of a data set grouped by their timestamp (samples.rs).
+/// Data sets that group continuation packets (one sample tracker slot each).
+pub const DATA_SETS: [u8; 0] = [];
+/// The first shared descriptor.
+pub const FIRST_SHARED: u16 = 256;
+/// (descriptor, data size) of the shared fields whose value identifies a sample.
+pub const TIMESTAMPS: [(u8, usize); 0] = [];
+/// Bytes of the largest sample key.
+pub const MAX_KEY: usize = 1;
 
 /// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
 ///

@@ -1,5 +1,5 @@
-//! Reading and writing values on the wire (big-endian), the [`Wire`] trait
-//! every value type implements, and the [`Layout`] trait of field layouts.
+//! Reading and writing values on the wire (in the byte order that [`BIG_ENDIAN`] gives), the
+//! [`Wire`] trait every value type implements, and the [`Layout`] trait of field layouts.
 
 use core::fmt;
 

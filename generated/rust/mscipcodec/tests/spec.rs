@@ -1,6 +1,7 @@
 //! Tests computed by the generator from the spec and the reference canonical JSON
 //! (generator/canonical.py): float and string text, bitfield accessors, decode errors of each
-//! fixed layout.
+//! fixed layout, dispatch errors. The runtime's own tests run where it is edited
+//! (generator/targets/rust/runtime/tests/).
 
 use mscipcodec::json::{write_f32, write_f64, write_str_bytes};
 use mscipcodec::json_read::{parse, string_bytes, FromJson};
@@ -1911,4 +1912,33 @@ fn zero_values_round_trip_through_packets() {
         assert_eq!(Ack::decode_data(data), Ok(value));
         assert!(fields.next().is_none());
     }
+}
+
+#[test]
+fn unknown_set_and_descriptor_errors() {
+    let mut checked_set = false;
+    for set in 0..=255u8 {
+        for descriptor in 0..=255u8 {
+            let Err(e) = mscipcodec::dispatch::decode_field(set, descriptor, &[0xFF; 3], None)
+            else {
+                continue;
+            };
+            let text = e.to_string();
+            if mscipcodec::dispatch::set_defined(set) {
+                if text == "unknown descriptor" {
+                    checked_set = true;
+                }
+            } else if e.path.is_empty() && !text.contains("offset") {
+                assert_eq!(text, "unknown descriptor set");
+            }
+        }
+    }
+    assert!(checked_set || (0..=255u8).all(|s| !mscipcodec::dispatch::set_defined(s)));
+}
+
+#[test]
+fn skip_json() {
+    let mut s = String::new();
+    mscipcodec::dispatch::write_skip_json(&mut s, 12, &[0xA5, 0xFF, 0x75]).unwrap();
+    assert_eq!(s, "{\"offset\":12,\"skipped\":\"a5ff75\"}");
 }

@@ -49,7 +49,10 @@ pub struct JsonError {
 impl JsonError {
     /// An error about the value itself.
     pub fn new(message: impl Into<String>) -> Self {
-        Self { path: String::new(), message: message.into() }
+        Self {
+            path: String::new(),
+            message: message.into(),
+        }
     }
 
     /// The error is inside member `key`.
@@ -89,7 +92,10 @@ impl std::error::Error for JsonError {}
 
 /// Parses one JSON text (surrounding whitespace allowed).
 pub fn parse(text: &str) -> Result<Json, JsonError> {
-    let mut p = JsonParser { s: text.as_bytes(), pos: 0 };
+    let mut p = JsonParser {
+        s: text.as_bytes(),
+        pos: 0,
+    };
     p.ws();
     let v = p.value(0)?;
     p.ws();
@@ -210,7 +216,10 @@ impl JsonParser<'_> {
     }
 
     fn hex4(&mut self) -> Result<u32, JsonError> {
-        let digits = self.s.get(self.pos..self.pos + 4).ok_or_else(|| self.err("short \\u escape"))?;
+        let digits = self
+            .s
+            .get(self.pos..self.pos + 4)
+            .ok_or_else(|| self.err("short \\u escape"))?;
         let text = std::str::from_utf8(digits).map_err(|_| self.err("bad \\u escape"))?;
         let v = u32::from_str_radix(text, 16).map_err(|_| self.err("bad \\u escape"))?;
         if !digits.iter().all(u8::is_ascii_hexdigit) {
@@ -225,11 +234,18 @@ impl JsonParser<'_> {
         let mut out = String::new();
         loop {
             let start = self.pos;
-            while self.pos < self.s.len() && self.s[self.pos] != b'"' && self.s[self.pos] != b'\\' && self.s[self.pos] >= 0x20 {
+            while self.pos < self.s.len()
+                && self.s[self.pos] != b'"'
+                && self.s[self.pos] != b'\\'
+                && self.s[self.pos] >= 0x20
+            {
                 self.pos += 1;
             }
             // The input is a &str, so a run between ASCII delimiters is valid UTF-8.
-            out.push_str(std::str::from_utf8(&self.s[start..self.pos]).map_err(|_| self.err("invalid UTF-8"))?);
+            out.push_str(
+                std::str::from_utf8(&self.s[start..self.pos])
+                    .map_err(|_| self.err("invalid UTF-8"))?,
+            );
             match self.peek() {
                 Some(b'"') => {
                     self.pos += 1;
@@ -251,7 +267,9 @@ impl JsonParser<'_> {
                         b'u' => {
                             let hi = self.hex4()?;
                             let mut code = hi;
-                            if (0xD800..0xDC00).contains(&hi) && self.s.get(self.pos..self.pos + 2) == Some(b"\\u") {
+                            if (0xD800..0xDC00).contains(&hi)
+                                && self.s.get(self.pos..self.pos + 2) == Some(b"\\u")
+                            {
                                 let save = self.pos;
                                 self.pos += 2;
                                 let lo = self.hex4()?;
@@ -308,7 +326,8 @@ impl JsonParser<'_> {
                 return Err(self.err("bad number"));
             }
         }
-        let text = std::str::from_utf8(&self.s[start..self.pos]).map_err(|_| self.err("bad number"))?;
+        let text =
+            std::str::from_utf8(&self.s[start..self.pos]).map_err(|_| self.err("bad number"))?;
         Ok(Json::Number(text.to_string()))
     }
 }
@@ -319,7 +338,12 @@ pub trait FromJson: Sized {
 }
 
 fn integer(v: &Json, lo: i128, hi: i128) -> Result<i128, JsonError> {
-    let expected = || JsonError::new(format!("expected an integer in {lo}..{hi}, got {}", describe(v)));
+    let expected = || {
+        JsonError::new(format!(
+            "expected an integer in {lo}..{hi}, got {}",
+            describe(v)
+        ))
+    };
     let Json::Number(text) = v else {
         return Err(expected());
     };
@@ -355,7 +379,10 @@ impl FromJson for bool {
     fn from_json(v: &Json) -> Result<Self, JsonError> {
         match v {
             Json::Bool(b) => Ok(*b),
-            other => Err(JsonError::new(format!("expected true or false, got {}", describe(other)))),
+            other => Err(JsonError::new(format!(
+                "expected true or false, got {}",
+                describe(other)
+            ))),
         }
     }
 }
@@ -379,9 +406,13 @@ fn float_special(v: &Json, hex_digits: usize) -> Result<Option<u64>, JsonError> 
 /// The double nearest to a JSON number (ties to even); an infinite result is an error, one that
 /// underflows is 0 or a denormal (docs/conformance.md §5).
 fn finite_double(t: &str) -> Result<f64, JsonError> {
-    let x: f64 = t.parse().map_err(|_| JsonError::new(format!("bad number {t}")))?;
+    let x: f64 = t
+        .parse()
+        .map_err(|_| JsonError::new(format!("bad number {t}")))?;
     if x.is_infinite() {
-        return Err(JsonError::new(format!("number {t} is out of range for a double")));
+        return Err(JsonError::new(format!(
+            "number {t} is out of range for a double"
+        )));
     }
     Ok(x)
 }
@@ -401,7 +432,10 @@ impl FromJson for f64 {
                 }
                 Ok(x)
             }
-            other => Err(JsonError::new(format!("expected a number, got {}", describe(other)))),
+            other => Err(JsonError::new(format!(
+                "expected a number, got {}",
+                describe(other)
+            ))),
         }
     }
 }
@@ -414,7 +448,9 @@ impl FromJson for f32 {
             Json::Number(t) => {
                 let x = finite_double(t)? as f32;
                 if x.is_infinite() {
-                    return Err(JsonError::new(format!("number {t} is out of range for a float")));
+                    return Err(JsonError::new(format!(
+                        "number {t} is out of range for a float"
+                    )));
                 }
                 Ok(x)
             }
@@ -429,7 +465,10 @@ impl FromJson for f32 {
                 }
                 Ok(x)
             }
-            other => Err(JsonError::new(format!("expected a number, got {}", describe(other)))),
+            other => Err(JsonError::new(format!(
+                "expected a number, got {}",
+                describe(other)
+            ))),
         }
     }
 }
@@ -437,12 +476,19 @@ impl FromJson for f32 {
 /// The bytes of a JSON string whose characters are all U+0000..U+00FF.
 pub fn string_bytes(v: &Json) -> Result<Vec<u8>, JsonError> {
     let Json::String(s) = v else {
-        return Err(JsonError::new(format!("expected a string, got {}", describe(v))));
+        return Err(JsonError::new(format!(
+            "expected a string, got {}",
+            describe(v)
+        )));
     };
     s.chars()
         .map(|c| {
-            u8::try_from(u32::from(c))
-                .map_err(|_| JsonError::new(format!("character U+{:04X} is not a byte (U+0000..U+00FF)", u32::from(c))))
+            u8::try_from(u32::from(c)).map_err(|_| {
+                JsonError::new(format!(
+                    "character U+{:04X} is not a byte (U+0000..U+00FF)",
+                    u32::from(c)
+                ))
+            })
         })
         .collect()
 }
@@ -452,7 +498,10 @@ impl FromJson for Char {
         let bytes = string_bytes(v)?;
         match bytes[..] {
             [b] => Ok(Char(b)),
-            _ => Err(JsonError::new(format!("expected a string of 1 character, got {}", bytes.len()))),
+            _ => Err(JsonError::new(format!(
+                "expected a string of 1 character, got {}",
+                bytes.len()
+            ))),
         }
     }
 }
@@ -460,9 +509,12 @@ impl FromJson for Char {
 impl<const N: usize> FromJson for Str<N> {
     fn from_json(v: &Json) -> Result<Self, JsonError> {
         let bytes = string_bytes(v)?;
-        let arr: [u8; N] = bytes[..]
-            .try_into()
-            .map_err(|_| JsonError::new(format!("expected a string of {N} characters, got {}", bytes.len())))?;
+        let arr: [u8; N] = bytes[..].try_into().map_err(|_| {
+            JsonError::new(format!(
+                "expected a string of {N} characters, got {}",
+                bytes.len()
+            ))
+        })?;
         Ok(Str(arr))
     }
 }
@@ -470,7 +522,10 @@ impl<const N: usize> FromJson for Str<N> {
 fn array(v: &Json) -> Result<&[Json], JsonError> {
     match v {
         Json::Array(items) => Ok(items),
-        other => Err(JsonError::new(format!("expected an array, got {}", describe(other)))),
+        other => Err(JsonError::new(format!(
+            "expected an array, got {}",
+            describe(other)
+        ))),
     }
 }
 
@@ -478,7 +533,10 @@ impl<T: Wire + FromJson, const N: usize> FromJson for [T; N] {
     fn from_json(v: &Json) -> Result<Self, JsonError> {
         let items = array(v)?;
         if items.len() != N {
-            return Err(JsonError::new(format!("expected {N} elements, got {}", items.len())));
+            return Err(JsonError::new(format!(
+                "expected {N} elements, got {}",
+                items.len()
+            )));
         }
         let mut out = [T::ZERO; N];
         for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
@@ -492,7 +550,10 @@ impl<T: Wire + FromJson, const N: usize> FromJson for BoundedVec<T, N> {
     fn from_json(v: &Json) -> Result<Self, JsonError> {
         let items = array(v)?;
         if items.len() > N {
-            return Err(JsonError::new(format!("at most {N} elements, got {}", items.len())));
+            return Err(JsonError::new(format!(
+                "at most {N} elements, got {}",
+                items.len()
+            )));
         }
         let mut out = Self::new();
         for (i, item) in items.iter().enumerate() {
@@ -513,12 +574,21 @@ impl<'a> Obj<'a> {
     /// `v` must be an object whose keys are all in `keys`.
     pub fn new(v: &'a Json, keys: &[&str]) -> Result<Self, JsonError> {
         let Json::Object(items) = v else {
-            return Err(JsonError::new(format!("expected an object, got {}", describe(v))));
+            return Err(JsonError::new(format!(
+                "expected an object, got {}",
+                describe(v)
+            )));
         };
         for (k, _) in items {
             if !keys.contains(&k.as_str()) {
-                let expected = if keys.is_empty() { "no keys".to_string() } else { keys.join(", ") };
-                return Err(JsonError::new(format!("unknown key \"{k}\" (expected {expected})")));
+                let expected = if keys.is_empty() {
+                    "no keys".to_string()
+                } else {
+                    keys.join(", ")
+                };
+                return Err(JsonError::new(format!(
+                    "unknown key \"{k}\" (expected {expected})"
+                )));
             }
         }
         Ok(Self { items })
@@ -529,7 +599,11 @@ impl<'a> Obj<'a> {
     }
 
     /// A required member.
-    pub fn req<T>(&self, key: &str, read: impl FnOnce(&'a Json) -> Result<T, JsonError>) -> Result<T, JsonError> {
+    pub fn req<T>(
+        &self,
+        key: &str,
+        read: impl FnOnce(&'a Json) -> Result<T, JsonError>,
+    ) -> Result<T, JsonError> {
         match self.get(key) {
             Some(v) => read(v).map_err(|e| e.at(key)),
             None => Err(JsonError::new(format!("missing \"{key}\""))),
@@ -537,7 +611,11 @@ impl<'a> Obj<'a> {
     }
 
     /// An optional member (absent: `None`).
-    pub fn opt<T>(&self, key: &str, read: impl FnOnce(&'a Json) -> Result<T, JsonError>) -> Result<Option<T>, JsonError> {
+    pub fn opt<T>(
+        &self,
+        key: &str,
+        read: impl FnOnce(&'a Json) -> Result<T, JsonError>,
+    ) -> Result<Option<T>, JsonError> {
         match self.get(key) {
             Some(v) => read(v).map(Some).map_err(|e| e.at(key)),
             None => Ok(None),
@@ -549,14 +627,20 @@ impl<'a> Obj<'a> {
 pub fn null(v: &Json) -> Result<(), JsonError> {
     match v {
         Json::Null => Ok(()),
-        other => Err(JsonError::new(format!("expected null (this member has no data), got {}", describe(other)))),
+        other => Err(JsonError::new(format!(
+            "expected null (this member has no data), got {}",
+            describe(other)
+        ))),
     }
 }
 
 /// Decodes lowercase or uppercase hex (an even number of digits).
 pub fn hex_bytes(v: &Json) -> Result<Vec<u8>, JsonError> {
     let Json::String(s) = v else {
-        return Err(JsonError::new(format!("expected a hex string, got {}", describe(v))));
+        return Err(JsonError::new(format!(
+            "expected a hex string, got {}",
+            describe(v)
+        )));
     };
     let bytes = s.as_bytes();
     if bytes.len() % 2 != 0 || !bytes.iter().all(u8::is_ascii_hexdigit) {

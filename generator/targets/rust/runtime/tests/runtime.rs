@@ -1,17 +1,20 @@
-//! Runtime tests that hold for any protocol: checksum, builder, stream parser (resync, truncated
-//! packets, chunk independence), field iterator errors, dispatch errors, encode round trips.
+//! Unit tests of the runtime (src/), against the tiny protocol of harness/: checksum, builder,
+//! stream parser (resync, truncated packets, chunk independence), field iterator errors,
+//! samples, and the text round trip of skip runs, raw fields and trailing bytes. They hold for
+//! any protocol; the tests that need a spec's own types are generated (templates/rust/test_*.rs.j2).
 
-use mscipcodec::builder::PacketBuilder;
-use mscipcodec::dispatch::{decode_field, set_defined, write_skip_json};
-use mscipcodec::error::EncodeErrorKind;
-use mscipcodec::fields::{FieldItem, Fields, FramingError, Packet};
-use mscipcodec::framing::{
+use protocodec::builder::PacketBuilder;
+use protocodec::dispatch::{COUNTER, DATA_SET};
+use protocodec::error::EncodeErrorKind;
+use protocodec::fields::{FieldItem, Fields, FramingError, Packet};
+use protocodec::framing::{
     checksum_bytes, fletcher16, CHECKSUM_SIZE, CHECKSUM_SUM1_FIRST, FIELD_DESCRIPTOR_OFFSET,
     FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST, FIELD_LENGTH_COUNTS_HEADER, FIELD_LENGTH_OFFSET,
     HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD, SET_OFFSET, SYNC,
 };
-use mscipcodec::parser::{Event, Parser};
-use mscipcodec::text::{decode_bytes, encode_line, encode_text};
+use protocodec::parser::{Event, Parser};
+use protocodec::samples::{SampleGrouper, SampleTracker, DATA_SETS, TIMESTAMPS};
+use protocodec::text::{decode_bytes, encode_line, encode_text};
 
 const SET: u8 = 0x01;
 
@@ -412,34 +415,6 @@ fn trailing_entries_round_trip_through_json() {
 }
 
 #[test]
-fn unknown_set_and_descriptor_errors() {
-    let mut checked_set = false;
-    for set in 0..=255u8 {
-        for descriptor in 0..=255u8 {
-            let Err(e) = decode_field(set, descriptor, &[0xFF; 3], None) else {
-                continue;
-            };
-            let text = e.to_string();
-            if set_defined(set) {
-                if text == "unknown descriptor" {
-                    checked_set = true;
-                }
-            } else if e.path.is_empty() && !text.contains("offset") {
-                assert_eq!(text, "unknown descriptor set");
-            }
-        }
-    }
-    assert!(checked_set || (0..=255u8).all(|s| !set_defined(s)));
-}
-
-#[test]
-fn skip_json() {
-    let mut s = String::new();
-    write_skip_json(&mut s, 12, &[0xA5, 0xFF, 0x75]).unwrap();
-    assert_eq!(s, "{\"offset\":12,\"skipped\":\"a5ff75\"}");
-}
-
-#[test]
 fn garbage_and_packets_round_trip() {
     let mut input = vec![0x00, filler(), SYNC[0]];
     input.extend_from_slice(&sample());
@@ -468,4 +443,104 @@ fn encode_reports_bad_lines() {
         + ",\"fields\":[{\"descriptor\":122,\"data\":\"010203\",\"error\":\"x\"}]}";
     let bytes = encode_line(&line).unwrap();
     assert_eq!(bytes, sample());
+}
+
+fn stamped(stamp: u8, key: bool, fields: &[(u8, &[u8])]) -> Vec<u8> {
+    let (descriptor, size) = TIMESTAMPS[0];
+    let mut b = PacketBuilder::new(DATA_SETS[0]);
+    if key {
+        b.add_raw_field(descriptor, &vec![stamp; size]).unwrap();
+    }
+    for (d, data) in fields {
+        b.add_raw_field(*d, data).unwrap();
+    }
+    b.finish().to_vec()
+}
+
+#[test]
+fn sample_grouper_merges_continuation_packets() {
+    let packets = [
+        stamped(1, true, &[(0x01, b"a")]),
+        stamped(1, true, &[(0x02, b"b")]),
+        stamped(2, true, &[(0x03, b"c")]),
+        stamped(0, false, &[(0x04, b"d")]),
+    ];
+    let mut tracker = SampleTracker::new();
+    let places: Vec<(u64, bool)> = packets
+        .iter()
+        .map(|p| {
+            tracker
+                .feed(&Packet::new(p).unwrap())
+                .map(|s| (s.number, s.continues))
+                .unwrap()
+        })
+        .collect();
+    assert_eq!(places, vec![(0, false), (0, true), (1, false), (2, false)]);
+    let mut grouper = SampleGrouper::new();
+    let mut done = Vec::new();
+    for (i, p) in packets.iter().enumerate() {
+        done.extend(grouper.feed(&Packet::new(p).unwrap(), i as u64 * 100));
+    }
+    assert_eq!(
+        done.iter().map(|s| s.number).collect::<Vec<_>>(),
+        vec![0, 1]
+    );
+    assert_eq!(done[0].offsets, vec![0, 100]);
+    let descriptors = |s: &protocodec::samples::Sample| -> Vec<u8> {
+        s.fields()
+            .map(|f| match f {
+                FieldItem::Field { descriptor, .. } => descriptor,
+                FieldItem::Trailing { .. } => panic!("trailing"),
+            })
+            .collect()
+    };
+    assert_eq!(descriptors(&done[0]), vec![TIMESTAMPS[0].0, 0x01, 0x02]);
+    let rest = grouper.flush();
+    assert_eq!(rest.len(), 1);
+    assert_eq!((rest[0].number, descriptors(&rest[0])), (2, vec![0x04]));
+    assert!(grouper.flush().is_empty());
+    let mut command = PacketBuilder::new(0x01);
+    assert_eq!(tracker.feed(&Packet::new(command.finish()).unwrap()), None);
+}
+
+/// A decoded field goes to JSON and back, a short one stays raw with its error; values are in
+/// the protocol's byte order (little-endian here).
+#[test]
+fn decoded_fields_round_trip_through_json() {
+    let mut b = PacketBuilder::new(DATA_SET);
+    b.add_raw_field(COUNTER, &[0x34, 0x12]).unwrap();
+    b.add_raw_field(COUNTER, &[0x34]).unwrap();
+    let p = b.finish().to_vec();
+    let text = decode_bytes(&p, None, 1);
+    assert!(
+        text.contains("{\"descriptor\":1,\"name\":\"counter\",\"values\":{\"count\":4660}}"),
+        "{text}"
+    );
+    assert!(
+        text.contains("\"data\":\"34\",\"error\":\"count: needs 2 bytes at offset 0, 1 left\""),
+        "{text}"
+    );
+    assert_eq!(encode_text(&text).unwrap(), p);
+}
+
+/// A field the spec gives an irregular length byte (`field_length_adjust`) is framed and read
+/// back with it.
+#[test]
+fn irregular_field_lengths_are_honoured() {
+    let mut b = PacketBuilder::new(0x01);
+    b.add_raw_field(0x05, &[7, 8, 9]).unwrap();
+    let p = b.finish().to_vec();
+    assert_eq!(
+        usize::from(p[HEADER_SIZE + FIELD_LENGTH_OFFSET]),
+        3 + FIELD_LENGTH_ADJUST - 1
+    );
+    let packet = Packet::new(&p).unwrap();
+    let items: Vec<_> = packet.fields().collect();
+    assert_eq!(
+        items,
+        vec![FieldItem::Field {
+            descriptor: 0x05,
+            data: &[7, 8, 9]
+        }]
+    );
 }

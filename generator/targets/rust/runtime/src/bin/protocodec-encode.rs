@@ -1,4 +1,4 @@
-//! `{{ package }}-encode`: reads JSON lines (as printed by `{{ package }}-decode`) on stdin and
+//! `protocodec-encode`: reads JSON lines (as printed by `protocodec-decode`) on stdin and
 //! writes the bytes on stdout: packets rebuilt from their fields with payload length and
 //! checksum recomputed, skip runs as their bytes. Blank lines are ignored.
 //! Exit status: 0; 1 for bad input (a bad line writes nothing and is reported as `line N: ...`
@@ -8,9 +8,9 @@
 use std::io::{self, BufRead, Write};
 use std::process::ExitCode;
 
-use {{ package }}::text::encode_line;
+use protocodec::text::encode_line;
 
-const PROG: &str = "{{ package }}-encode";
+const PROG: &str = "protocodec-encode";
 
 fn main() -> ExitCode {
     if let Some(arg) = std::env::args().nth(1) {

@@ -1,8 +1,10 @@
 //! Stream parser (`docs/conformance.md` §1): finds packets in a byte stream fed in chunks of
 //! any size and reports the bytes between them as skip runs. The events do not depend on the
-//! chunking. State: one maximum packet ({{ framing.max_packet }} bytes) and a few counters.
+//! chunking. State: one maximum packet ([`MAX_PACKET`] bytes) and a few counters.
 
-use crate::framing::{checksum_bytes, CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, MAX_PAYLOAD, SYNC};
+use crate::framing::{
+    checksum_bytes, CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, MAX_PAYLOAD, SYNC,
+};
 
 /// What the parser found.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,7 +60,11 @@ fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
         }
         base += 8;
     }
-    words.remainder().iter().position(|&b| b == byte).map(|i| base + i)
+    words
+        .remainder()
+        .iter()
+        .position(|&b| b == byte)
+        .map(|i| base + i)
 }
 
 /// Index of the first full sync in `data` at or after `from`, or of a sync prefix at its very
@@ -89,7 +95,13 @@ enum Sync {
 impl Parser {
     /// A parser at stream offset 0.
     pub const fn new() -> Self {
-        Self { buf: [0; MAX_PACKET], len: 0, base: 0, skip_start: 0, skip_count: 0 }
+        Self {
+            buf: [0; MAX_PACKET],
+            len: 0,
+            base: 0,
+            skip_start: 0,
+            skip_count: 0,
+        }
     }
 
     /// Stream offset of the next byte to be fed.
@@ -182,7 +194,10 @@ impl Parser {
             };
             if checksum_matches(&packet[..body], &packet[body..]) {
                 self.emit_skip(on);
-                on(Event::Packet { offset: self.base, bytes: packet });
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: packet,
+                });
                 self.base += total as u64;
                 pos += total;
             } else {
@@ -268,7 +283,10 @@ impl Parser {
             let body = HEADER_SIZE + payload;
             if checksum_matches(&self.buf[..body], &self.buf[body..total]) {
                 self.emit_skip(on);
-                on(Event::Packet { offset: self.base, bytes: &self.buf[..total] });
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: &self.buf[..total],
+                });
                 self.consume(total);
             } else {
                 // The sync was false: resynchronise at the next byte.
@@ -305,7 +323,10 @@ impl Parser {
     /// where the compiler can inline it).
     #[inline(never)]
     fn report_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
-        on(Event::Skip { offset: self.skip_start, count: self.skip_count });
+        on(Event::Skip {
+            offset: self.skip_start,
+            count: self.skip_count,
+        });
         self.skip_count = 0;
     }
 }

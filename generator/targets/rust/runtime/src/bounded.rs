@@ -20,7 +20,10 @@ impl<T: Wire, const N: usize> BoundedVec<T, N> {
 
     /// An empty vector.
     pub const fn new() -> Self {
-        Self { items: [T::ZERO; N], len: 0 }
+        Self {
+            items: [T::ZERO; N],
+            len: 0,
+        }
     }
 
     /// A vector holding a copy of `items`, or `None` if there are more than `N`.
@@ -86,7 +89,10 @@ impl<T: Wire, const N: usize> BoundedVec<T, N> {
     /// Reads `count` elements (a counted array).
     pub fn decode_counted(r: &mut Reader<'_>, count: u64) -> Result<Self, DecodeError> {
         if count > N as u64 {
-            return Err(DecodeError::new(DecodeErrorKind::CountExceeds { count, max: N }));
+            return Err(DecodeError::new(DecodeErrorKind::CountExceeds {
+                count,
+                max: N,
+            }));
         }
         let mut out = Self::new();
         for i in 0..count as usize {
@@ -101,16 +107,26 @@ impl<T: Wire, const N: usize> BoundedVec<T, N> {
         if let Some(size) = T::FIXED_SIZE {
             let left = r.left();
             if size > 0 && !left.is_multiple_of(size) {
-                return Err(DecodeError::new(DecodeErrorKind::Partial { left, offset: r.pos(), size }));
+                return Err(DecodeError::new(DecodeErrorKind::Partial {
+                    left,
+                    offset: r.pos(),
+                    size,
+                }));
             }
             if size > 0 && left / size > N {
-                return Err(DecodeError::new(DecodeErrorKind::CountExceeds { count: (left / size) as u64, max: N }));
+                return Err(DecodeError::new(DecodeErrorKind::CountExceeds {
+                    count: (left / size) as u64,
+                    max: N,
+                }));
             }
         }
         let mut out = Self::new();
         while r.left() > 0 {
             if out.len == N {
-                return Err(DecodeError::new(DecodeErrorKind::CountExceeds { count: N as u64 + 1, max: N }));
+                return Err(DecodeError::new(DecodeErrorKind::CountExceeds {
+                    count: N as u64 + 1,
+                    max: N,
+                }));
             }
             out.items[out.len] = T::decode(r).map_err(|e| e.index(out.len))?;
             out.len += 1;
@@ -121,7 +137,10 @@ impl<T: Wire, const N: usize> BoundedVec<T, N> {
     /// Writes the elements after checking that the count parameter equals the length.
     pub fn encode_counted(&self, w: &mut Writer<'_>, count: u64) -> Result<(), EncodeError> {
         if count != self.len as u64 {
-            return Err(EncodeError::new(EncodeErrorKind::CountMismatch { count, len: self.len }));
+            return Err(EncodeError::new(EncodeErrorKind::CountMismatch {
+                count,
+                len: self.len,
+            }));
         }
         self.encode(w)
     }

@@ -37,7 +37,8 @@ fn write_event(
             Some(packet) => {
                 let r = write_packet_json(out, offset, &packet, device);
                 let place = samples.as_mut().and_then(|t| t.feed(&packet));
-                if let (Some(place), Some(at)) = (place, out[start_of_line..].find(",\"fields\":")) {
+                if let (Some(place), Some(at)) = (place, out[start_of_line..].find(",\"fields\":"))
+                {
                     out.insert_str(start_of_line + at, &format!(",\"sample\":{}", place.number));
                 }
                 r
@@ -51,7 +52,13 @@ fn write_event(
 impl StreamDecoder {
     /// A decoder at stream offset 0; `device` selects per-device layouts.
     pub fn new(device: Option<Device>) -> Self {
-        Self { parser: Parser::new(), device, samples: None, hist: Vec::new(), hist_base: 0 }
+        Self {
+            parser: Parser::new(),
+            device,
+            samples: None,
+            hist: Vec::new(),
+            hist_base: 0,
+        }
     }
 
     /// Numbers the samples of data packets (`"sample":N`, `docs/conformance.md` §6).
@@ -63,15 +70,20 @@ impl StreamDecoder {
     /// Feeds `chunk`; appends the lines of completed events to `out`.
     pub fn feed(&mut self, chunk: &[u8], out: &mut String) {
         self.hist.extend_from_slice(chunk);
-        let (hist, base, device, samples) = (&self.hist, self.hist_base, self.device, &mut self.samples);
-        self.parser.feed(chunk, |event| write_event(out, event, hist, base, device, samples));
+        let (hist, base, device, samples) =
+            (&self.hist, self.hist_base, self.device, &mut self.samples);
+        self.parser.feed(chunk, |event| {
+            write_event(out, event, hist, base, device, samples)
+        });
         self.trim();
     }
 
     /// End of input: appends the remaining lines to `out`.
     pub fn finish(&mut self, out: &mut String) {
-        let (hist, base, device, samples) = (&self.hist, self.hist_base, self.device, &mut self.samples);
-        self.parser.flush(|event| write_event(out, event, hist, base, device, samples));
+        let (hist, base, device, samples) =
+            (&self.hist, self.hist_base, self.device, &mut self.samples);
+        self.parser
+            .flush(|event| write_event(out, event, hist, base, device, samples));
         self.trim();
     }
 
@@ -100,7 +112,10 @@ pub fn decode_bytes(input: &[u8], device: Option<Device>, chunk: usize) -> Strin
 fn error_text(v: &Json) -> Result<(), JsonError> {
     match v {
         Json::String(_) => Ok(()),
-        other => Err(JsonError::new(format!("expected a string, got {}", other.kind()))),
+        other => Err(JsonError::new(format!(
+            "expected a string, got {}",
+            other.kind()
+        ))),
     }
 }
 
@@ -109,14 +124,18 @@ fn field_bytes(set: u8, field: &Json, builder: &mut PacketBuilder) -> Result<(),
         let o = Obj::new(field, &["trailing", "error"])?;
         o.req("error", error_text)?;
         let bytes = o.req("trailing", hex_bytes)?;
-        return builder.add_bytes(&bytes).map_err(|e| JsonError::new(e.to_string()).at("trailing"));
+        return builder
+            .add_bytes(&bytes)
+            .map_err(|e| JsonError::new(e.to_string()).at("trailing"));
     }
     if field.get("data").is_some() {
         let o = Obj::new(field, &["descriptor", "data", "error"])?;
         o.req("error", error_text)?;
         let descriptor = o.req("descriptor", u8::from_json)?;
         let data = o.req("data", hex_bytes)?;
-        return builder.add_raw_field(descriptor, &data).map_err(|e| JsonError::new(e.to_string()).at("data"));
+        return builder
+            .add_raw_field(descriptor, &data)
+            .map_err(|e| JsonError::new(e.to_string()).at("data"));
     }
     let o = Obj::new(field, &["descriptor", "name", "device", "values"])?;
     let descriptor = o.req("descriptor", u8::from_json)?;
@@ -124,13 +143,24 @@ fn field_bytes(set: u8, field: &Json, builder: &mut PacketBuilder) -> Result<(),
         Json::String(id) => {
             Device::from_id(id).ok_or_else(|| JsonError::new(format!("unknown device \"{id}\"")))
         }
-        other => Err(JsonError::new(format!("expected a device id string, got {}", other.kind()))),
+        other => Err(JsonError::new(format!(
+            "expected a device id string, got {}",
+            other.kind()
+        ))),
     })?;
-    let values = field.get("values").ok_or_else(|| JsonError::new("missing \"values\" (or \"data\" for a raw field)"))?;
+    let values = field
+        .get("values")
+        .ok_or_else(|| JsonError::new("missing \"values\" (or \"data\" for a raw field)"))?;
     let value = FieldValue::from_json(set, descriptor, device, values)?;
-    let name = field.get("name").ok_or_else(|| JsonError::new("missing \"name\""))?;
+    let name = field
+        .get("name")
+        .ok_or_else(|| JsonError::new("missing \"name\""))?;
     if *name != Json::String(value.name().to_string()) {
-        return Err(JsonError::new(format!("descriptor {descriptor} in set {set} is \"{}\"", value.name())).at("name"));
+        return Err(JsonError::new(format!(
+            "descriptor {descriptor} in set {set} is \"{}\"",
+            value.name()
+        ))
+        .at("name"));
     }
     builder
         .add_field_with(descriptor, |w| value.encode_data(w))
@@ -142,7 +172,10 @@ fn field_bytes(set: u8, field: &Json, builder: &mut PacketBuilder) -> Result<(),
 pub fn encode_line(line: &str) -> Result<Vec<u8>, JsonError> {
     let v = parse(line)?;
     if !matches!(v, Json::Object(_)) {
-        return Err(JsonError::new(format!("expected a JSON object, got {}", v.kind())));
+        return Err(JsonError::new(format!(
+            "expected a JSON object, got {}",
+            v.kind()
+        )));
     }
     if v.get("skipped").is_some() {
         let o = Obj::new(&v, &["offset", "skipped"])?;
@@ -159,7 +192,10 @@ pub fn encode_line(line: &str) -> Result<Vec<u8>, JsonError> {
     let set = o.req("set", u8::from_json)?;
     let fields = o.req("fields", |f| match f {
         Json::Array(items) => Ok(items),
-        other => Err(JsonError::new(format!("expected an array, got {}", other.kind()))),
+        other => Err(JsonError::new(format!(
+            "expected an array, got {}",
+            other.kind()
+        ))),
     })?;
     let mut builder = PacketBuilder::new(set);
     for (i, field) in fields.iter().enumerate() {

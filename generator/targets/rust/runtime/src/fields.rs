@@ -3,8 +3,8 @@
 use core::fmt;
 
 use crate::framing::{
-    field_length_adjust, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET,
-    SET_OFFSET,
+    field_length_adjust, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_OFFSET,
+    HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET,
 };
 
 /// A complete packet as the parser reports it (sync to checksum).
@@ -18,7 +18,9 @@ impl<'a> Packet<'a> {
     /// the builder). Returns `None` if `bytes` is shorter than its header says.
     #[inline]
     pub fn new(bytes: &'a [u8]) -> Option<Self> {
-        if bytes.len() < HEADER_SIZE || bytes.len() < HEADER_SIZE + usize::from(bytes[LENGTH_OFFSET]) {
+        if bytes.len() < HEADER_SIZE
+            || bytes.len() < HEADER_SIZE + usize::from(bytes[LENGTH_OFFSET])
+        {
             return None;
         }
         Some(Self { bytes })
@@ -57,7 +59,11 @@ pub enum FramingError {
     /// A field length smaller than the field header it counts.
     LengthShort { length: u8, offset: usize },
     /// A field that runs past the payload.
-    Overrun { length: u8, offset: usize, left: usize },
+    Overrun {
+        length: u8,
+        offset: usize,
+        left: usize,
+    },
 }
 
 impl fmt::Display for FramingError {
@@ -69,7 +75,11 @@ impl fmt::Display for FramingError {
             FramingError::LengthShort { length, offset } => {
                 write!(f, "field length {length} at payload offset {offset} is shorter than the field header")
             }
-            FramingError::Overrun { length, offset, left } => {
+            FramingError::Overrun {
+                length,
+                offset,
+                left,
+            } => {
                 write!(f, "field length {length} at payload offset {offset} overruns the payload ({left} bytes left)")
             }
         }
@@ -82,7 +92,10 @@ pub enum FieldItem<'a> {
     /// A complete field: descriptor and data (after the field header).
     Field { descriptor: u8, data: &'a [u8] },
     /// The rest of the payload after a framing problem.
-    Trailing { bytes: &'a [u8], error: FramingError },
+    Trailing {
+        bytes: &'a [u8],
+        error: FramingError,
+    },
 }
 
 /// Iterator over the fields of a payload.
@@ -99,7 +112,11 @@ impl<'a> Fields<'a> {
     /// irregular field lengths).
     #[inline]
     pub const fn new(set: u8, payload: &'a [u8]) -> Self {
-        Self { set, rest: payload, offset: 0 }
+        Self {
+            set,
+            rest: payload,
+            offset: 0,
+        }
     }
 }
 
@@ -124,17 +141,26 @@ impl<'a> Iterator for Fields<'a> {
         }
         let length = rest[FIELD_LENGTH_OFFSET];
         let descriptor = rest[FIELD_DESCRIPTOR_OFFSET];
-        let data_len = match usize::try_from(isize::from(length) - field_length_adjust(self.set, descriptor)) {
+        let data_len = match usize::try_from(
+            isize::from(length) - field_length_adjust(self.set, descriptor),
+        ) {
             Ok(n) => n,
             Err(_) => return trailing(FramingError::LengthShort { length, offset }),
         };
         let total = FIELD_HEADER_SIZE + data_len;
         if total > left {
-            return trailing(FramingError::Overrun { length, offset, left });
+            return trailing(FramingError::Overrun {
+                length,
+                offset,
+                left,
+            });
         }
         let (field, after) = rest.split_at(total);
         self.rest = after;
         self.offset += total;
-        Some(FieldItem::Field { descriptor, data: &field[FIELD_HEADER_SIZE..] })
+        Some(FieldItem::Field {
+            descriptor,
+            data: &field[FIELD_HEADER_SIZE..],
+        })
     }
 }

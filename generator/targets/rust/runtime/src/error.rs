@@ -4,7 +4,7 @@
 use core::fmt;
 
 /// Deepest parameter path of any layout in the spec (names and array indices).
-pub const PATH_DEPTH: usize = {{ path_depth }};
+pub use crate::framing::PATH_DEPTH;
 
 /// One step of a parameter path.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,7 +25,10 @@ pub struct Path {
 
 impl Path {
     /// The empty path (errors about the whole field).
-    pub const EMPTY: Self = Self { segs: [Segment::Index(0); PATH_DEPTH], len: 0 };
+    pub const EMPTY: Self = Self {
+        segs: [Segment::Index(0); PATH_DEPTH],
+        len: 0,
+    };
 
     /// Number of segments.
     pub fn len(&self) -> usize {
@@ -77,11 +80,19 @@ impl fmt::Debug for Path {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DecodeErrorKind {
     /// Not enough bytes for a value of `need` bytes at `offset`; `left` bytes were left.
-    Short { need: usize, offset: usize, left: usize },
+    Short {
+        need: usize,
+        offset: usize,
+        left: usize,
+    },
     /// A counted array is longer than the layout allows.
     CountExceeds { count: u64, max: usize },
     /// An array that runs to the end of the data has a partial element.
-    Partial { left: usize, offset: usize, size: usize },
+    Partial {
+        left: usize,
+        offset: usize,
+        size: usize,
+    },
     /// A bool byte that is neither 0 nor 1.
     InvalidBool { value: u8, offset: usize },
     /// A union selector value without a member.
@@ -104,7 +115,10 @@ pub struct DecodeError {
 impl DecodeError {
     /// An error about the whole field (empty path).
     pub const fn new(kind: DecodeErrorKind) -> Self {
-        Self { kind, path: Path::EMPTY }
+        Self {
+            kind,
+            path: Path::EMPTY,
+        }
     }
 
     /// The error happened inside the parameter or member `name`.
@@ -135,12 +149,17 @@ impl fmt::Display for DecodeError {
                 write!(f, "count {count} exceeds maximum {max}")
             }
             DecodeErrorKind::Partial { left, offset, size } => {
-                write!(f, "{left} bytes left at offset {offset}, not a multiple of {size}")
+                write!(
+                    f,
+                    "{left} bytes left at offset {offset}, not a multiple of {size}"
+                )
             }
             DecodeErrorKind::InvalidBool { value, offset } => {
                 write!(f, "invalid bool value {value} at offset {offset}")
             }
-            DecodeErrorKind::NoMember { value } => write!(f, "no member for selector value {value}"),
+            DecodeErrorKind::NoMember { value } => {
+                write!(f, "no member for selector value {value}")
+            }
             DecodeErrorKind::Unexpected { left, offset } => {
                 write!(f, "{left} unexpected bytes at offset {offset}")
             }
@@ -180,7 +199,10 @@ pub struct EncodeError {
 impl EncodeError {
     /// An error about the whole field (empty path).
     pub const fn new(kind: EncodeErrorKind) -> Self {
-        Self { kind, path: Path::EMPTY }
+        Self {
+            kind,
+            path: Path::EMPTY,
+        }
     }
 
     /// The error happened inside the parameter or member `name`.
@@ -211,17 +233,28 @@ impl fmt::Display for EncodeError {
                 crate::framing::MAX_PAYLOAD
             ),
             EncodeErrorKind::CountMismatch { count, len } => {
-                write!(f, "the count parameter says {count} but the array has {len} elements")
+                write!(
+                    f,
+                    "the count parameter says {count} but the array has {len} elements"
+                )
             }
             EncodeErrorKind::UnionMismatch { value } => {
                 write!(f, "union member does not match the selector value {value}")
             }
-            EncodeErrorKind::NoMember { value } => write!(f, "no member for selector value {value}"),
+            EncodeErrorKind::NoMember { value } => {
+                write!(f, "no member for selector value {value}")
+            }
             EncodeErrorKind::TooShort { data_len } => {
-                write!(f, "field data of {data_len} bytes is too short for its size byte")
+                write!(
+                    f,
+                    "field data of {data_len} bytes is too short for its size byte"
+                )
             }
             EncodeErrorKind::OptionalGap { later } => {
-                write!(f, "absent, but the later optional parameter {later} is present")
+                write!(
+                    f,
+                    "absent, but the later optional parameter {later} is present"
+                )
             }
         }
     }

@@ -6,14 +6,8 @@
 use crate::fields::{FieldItem, Packet};
 use crate::framing::FIELD_HEADER_SIZE;
 
-/// Data sets that group continuation packets (one tracker slot each).
-pub const DATA_SETS: [u8; {{ sample_rule.data_sets | length }}] = [{% for s in sample_rule.data_sets %}{{ s | hex2 }}{{ ", " if not loop.last }}{% endfor %}];
-/// The first shared descriptor.
-pub const FIRST_SHARED: u16 = {{ sample_rule.first_shared }};
-/// (descriptor, data size) of the shared fields whose value identifies a sample.
-pub const TIMESTAMPS: [(u8, usize); {{ sample_rule.timestamps | length }}] = [{% for t in sample_rule.timestamps %}({{ t.descriptor | hex2 }}, {{ t.size }}){{ ", " if not loop.last }}{% endfor %}];
-/// Bytes of the largest key.
-pub const MAX_KEY: usize = {{ [sample_rule.max_key, 1] | max }};
+// The sample rule of the protocol (`ir.json` → `protocols[].samples`).
+pub use crate::framing::{DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS};
 
 /// The key of a packet and the size of its leading shared run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,16 +27,25 @@ impl SampleKey {
 
 /// The key of a complete packet.
 pub fn sample_key(packet: &Packet<'_>) -> SampleKey {
-    let mut key = SampleKey { bytes: [0; MAX_KEY], len: 0, shared_prefix: 0 };
-    let mut seen = [false; {{ sample_rule.timestamps | length }}];
+    let mut key = SampleKey {
+        bytes: [0; MAX_KEY],
+        len: 0,
+        shared_prefix: 0,
+    };
+    let mut seen = [false; TIMESTAMPS.len()];
     let mut pos = 0;
     for item in packet.fields() {
-        let FieldItem::Field { descriptor, data } = item else { break };
+        let FieldItem::Field { descriptor, data } = item else {
+            break;
+        };
         if u16::from(descriptor) < FIRST_SHARED {
             break;
         }
         let n = FIELD_HEADER_SIZE + data.len();
-        if let Some(t) = TIMESTAMPS.iter().position(|&(d, size)| d == descriptor && size == data.len()) {
+        if let Some(t) = TIMESTAMPS
+            .iter()
+            .position(|&(d, size)| d == descriptor && size == data.len())
+        {
             if !seen[t] && key.len + n <= MAX_KEY {
                 key.bytes[key.len..key.len + n].copy_from_slice(&packet.payload()[pos..pos + n]);
                 key.len += n;
@@ -76,7 +79,7 @@ struct Slot {
 /// Numbers the samples of complete packets; fixed state, one slot per data set.
 #[derive(Clone, Debug)]
 pub struct SampleTracker {
-    slots: [Slot; {{ sample_rule.data_sets | length }}],
+    slots: [Slot; DATA_SETS.len()],
     next: u64,
 }
 
@@ -89,8 +92,19 @@ impl Default for SampleTracker {
 impl SampleTracker {
     /// A tracker before the first packet.
     pub const fn new() -> Self {
-        const EMPTY: Slot = Slot { used: false, number: 0, key: SampleKey { bytes: [0; MAX_KEY], len: 0, shared_prefix: 0 } };
-        Self { slots: [EMPTY; {{ sample_rule.data_sets | length }}], next: 0 }
+        const EMPTY: Slot = Slot {
+            used: false,
+            number: 0,
+            key: SampleKey {
+                bytes: [0; MAX_KEY],
+                len: 0,
+                shared_prefix: 0,
+            },
+        };
+        Self {
+            slots: [EMPTY; DATA_SETS.len()],
+            next: 0,
+        }
     }
 
     /// The place of a packet of a data set; `None` for other packets.
@@ -99,11 +113,23 @@ impl SampleTracker {
         let key = sample_key(packet);
         let slot = &mut self.slots[i];
         if key.len > 0 && slot.used && slot.key.bytes() == key.bytes() {
-            return Some(SamplePlace { number: slot.number, continues: true, shared_prefix: key.shared_prefix });
+            return Some(SamplePlace {
+                number: slot.number,
+                continues: true,
+                shared_prefix: key.shared_prefix,
+            });
         }
-        *slot = Slot { used: true, number: self.next, key };
+        *slot = Slot {
+            used: true,
+            number: self.next,
+            key,
+        };
         self.next += 1;
-        Some(SamplePlace { number: slot.number, continues: false, shared_prefix: key.shared_prefix })
+        Some(SamplePlace {
+            number: slot.number,
+            continues: false,
+            shared_prefix: key.shared_prefix,
+        })
     }
 }
 
@@ -134,7 +160,9 @@ mod grouper {
         /// its leading shared run (those are copies).
         pub fn fields(&self) -> impl Iterator<Item = FieldItem<'_>> + '_ {
             self.packets.iter().zip(&self.skip).flat_map(|(p, &skip)| {
-                let (set, payload) = Packet::new(p).map(|p| (p.set(), p.payload())).unwrap_or((0, &[]));
+                let (set, payload) = Packet::new(p)
+                    .map(|p| (p.set(), p.payload()))
+                    .unwrap_or((0, &[]));
                 Fields::new(set, payload.get(skip..).unwrap_or(&[]))
             })
         }
@@ -151,7 +179,10 @@ mod grouper {
     impl SampleGrouper {
         /// An empty grouper.
         pub fn new() -> Self {
-            Self { tracker: SampleTracker::new(), open: vec![None; DATA_SETS.len()] }
+            Self {
+                tracker: SampleTracker::new(),
+                open: vec![None; DATA_SETS.len()],
+            }
         }
 
         /// Feeds one complete packet found at `offset`; returns the sample it completes, if any.

@@ -4,7 +4,8 @@
 use crate::error::{EncodeError, EncodeErrorKind};
 use crate::framing::{
     checksum_bytes, field_length_adjust, CHECKSUM_SIZE, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE,
-    FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD, SET_OFFSET, SYNC,
+    FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD,
+    SET_OFFSET, SYNC,
 };
 use crate::wire::{Layout, Writer};
 
@@ -21,7 +22,10 @@ impl PacketBuilder {
         let mut buf = [0u8; MAX_PACKET];
         buf[..SYNC.len()].copy_from_slice(&SYNC);
         buf[SET_OFFSET] = set;
-        Self { buf, len: HEADER_SIZE }
+        Self {
+            buf,
+            len: HEADER_SIZE,
+        }
     }
 
     /// Descriptor set of the packet.

@@ -1,5 +1,5 @@
-//! Reading and writing values on the wire ({{ framing.byte_order }}-endian), the [`Wire`] trait
-//! every value type implements, and the [`Layout`] trait of field layouts.
+//! Reading and writing values on the wire (in the byte order that [`BIG_ENDIAN`] gives), the
+//! [`Wire`] trait every value type implements, and the [`Layout`] trait of field layouts.
 
 use core::fmt;
 
@@ -242,7 +242,10 @@ impl Wire for bool {
         match r.take::<1>()?[0] {
             0 => Ok(false),
             1 => Ok(true),
-            value => Err(DecodeError::new(DecodeErrorKind::InvalidBool { value, offset })),
+            value => Err(DecodeError::new(DecodeErrorKind::InvalidBool {
+                value,
+                offset,
+            })),
         }
     }
 
@@ -383,7 +386,9 @@ impl Optionals {
     /// Optional parameter `name` is present: error if an earlier one was absent.
     pub fn present(&self, name: &'static str) -> Result<(), EncodeError> {
         match self.absent {
-            Some(earlier) => Err(EncodeError::new(EncodeErrorKind::OptionalGap { later: name }).at(earlier)),
+            Some(earlier) => {
+                Err(EncodeError::new(EncodeErrorKind::OptionalGap { later: name }).at(earlier))
+            }
             None => Ok(()),
         }
     }

@@ -115,7 +115,10 @@ struct StackBuf<const N: usize> {
 
 impl<const N: usize> StackBuf<N> {
     const fn new() -> Self {
-        Self { buf: [0; N], len: 0 }
+        Self {
+            buf: [0; N],
+            len: 0,
+        }
     }
 
     fn bytes(&self) -> &[u8] {
@@ -191,7 +194,11 @@ fn break_tie(a: f64, n: usize, exp: i32, digits: &mut [u8; 24]) -> fmt::Result {
     write!(exact, "{a:.800e}")?;
     let mut exact_digits = [0u8; 810];
     let (en, eexp) = split_sci(exact.bytes(), &mut exact_digits);
-    if eexp != exp || en <= n || exact_digits[n] != b'5' || exact_digits[n + 1..en].iter().any(|&d| d != b'0') {
+    if eexp != exp
+        || en <= n
+        || exact_digits[n] != b'5'
+        || exact_digits[n + 1..en].iter().any(|&d| d != b'0')
+    {
         return Ok(());
     }
     // Exactly halfway between truncated (T) and T + 1 in the last digit: take the even one.
@@ -218,7 +225,9 @@ fn break_tie(a: f64, n: usize, exp: i32, digits: &mut [u8; 24]) -> fmt::Result {
     text.write_char('.')?;
     write_digits(&mut text, &other[1..n])?;
     write!(text, "e{exp}")?;
-    let back = core::str::from_utf8(text.bytes()).ok().and_then(|t| t.parse::<f64>().ok());
+    let back = core::str::from_utf8(text.bytes())
+        .ok()
+        .and_then(|t| t.parse::<f64>().ok());
     if back.map(f64::to_bits) == Some(a.to_bits()) {
         digits[..n].copy_from_slice(&other[..n]);
     }
@@ -276,6 +285,11 @@ fn write_number(w: &mut dyn Write, x: f64) -> fmt::Result {
             w.write_char('.')?;
             write_digits(w, &digits[1..])?;
         }
-        write!(w, "e{}{:02}", if exp < 0 { '-' } else { '+' }, exp.unsigned_abs())
+        write!(
+            w,
+            "e{}{:02}",
+            if exp < 0 { '-' } else { '+' },
+            exp.unsigned_abs()
+        )
     }
 }

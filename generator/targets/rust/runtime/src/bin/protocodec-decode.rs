@@ -1,14 +1,14 @@
-//! `{{ package }}-decode [--device ID] [--samples] [FILE|-]`: reads a binary stream (FILE, or stdin when
+//! `protocodec-decode [--device ID] [--samples] [FILE|-]`: reads a binary stream (FILE, or stdin when
 //! FILE is absent or `-`) and prints the canonical JSON lines of `docs/conformance.md` §4.
 //! Exit status: 0, or 2 for usage and I/O errors (one line on stderr).
 
 use std::io::{self, Read, Write};
 use std::process::ExitCode;
 
-use {{ package }}::text::StreamDecoder;
-use {{ package }}::Device;
+use protocodec::text::StreamDecoder;
+use protocodec::Device;
 
-const PROG: &str = "{{ package }}-decode";
+const PROG: &str = "protocodec-decode";
 
 fn usage_error(message: &str) -> ExitCode {
     eprintln!("{PROG}: {message} (usage: {PROG} [--device ID] [--samples] [FILE|-])");
@@ -16,7 +16,11 @@ fn usage_error(message: &str) -> ExitCode {
 }
 
 fn device_ids() -> String {
-    Device::ALL.iter().map(|d| d.id()).collect::<Vec<_>>().join(", ")
+    Device::ALL
+        .iter()
+        .map(|d| d.id())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn main() -> ExitCode {
@@ -39,12 +43,20 @@ fn main() -> ExitCode {
         if let Some(id) = id {
             match Device::from_id(id) {
                 Some(d) => device = Some(d),
-                None => return usage_error(&format!("unknown device '{id}' (devices: {})", device_ids())),
+                None => {
+                    return usage_error(&format!(
+                        "unknown device '{id}' (devices: {})",
+                        device_ids()
+                    ))
+                }
             }
         } else if arg == "--samples" {
             samples = true;
         } else if arg == "-h" || arg == "--help" {
-            println!("usage: {PROG} [--device ID] [--samples] [FILE|-]    (devices: {})", device_ids());
+            println!(
+                "usage: {PROG} [--device ID] [--samples] [FILE|-]    (devices: {})",
+                device_ids()
+            );
             return ExitCode::SUCCESS;
         } else if arg.starts_with('-') && arg != "-" {
             return usage_error(&format!("unknown option '{arg}'"));

@@ -1,0 +1,57 @@
+"""Facts of the Rust language and of the generated crate's layout, as data for the back end."""
+
+from __future__ import annotations
+
+# Rust keywords: strict and reserved words of the 2021 edition, plus `gen` (reserved in 2024).
+# Most can be written as raw identifiers (`r#type`).
+KEYWORDS = frozenset(
+    """
+    as break const continue crate else enum extern false fn for if impl in let loop match mod move
+    mut pub ref return self Self static struct super trait true type unsafe use where while
+    async await dyn abstract become box do final macro override priv typeof unsized virtual yield
+    try gen
+    """.split()
+)
+
+# Words that cannot be raw identifiers; the back end appends `_` to them instead.
+NOT_RAW = frozenset({"crate", "self", "Self", "super", "_"})
+
+# Primitive type of the spec -> Rust type. `char` is the runtime's one-byte character type.
+PRIMITIVE_TYPES = {
+    "bool": "bool",
+    "char": "crate::wire::Char",
+    "u8": "u8",
+    "u16": "u16",
+    "u32": "u32",
+    "u64": "u64",
+    "s8": "i8",
+    "s16": "i16",
+    "s32": "i32",
+    "s64": "i64",
+    "float": "f32",
+    "double": "f64",
+}
+
+# Module names the crate already uses (runtime, generated modules, and the standard crates a
+# module path could shadow); a descriptor set cannot take one of these as its module name.
+RESERVED_MODULES = frozenset(
+    {
+        "bounded",
+        "builder",
+        "dispatch",
+        "error",
+        "fields",
+        "framing",
+        "json",
+        "json_read",
+        "parser",
+        "reserved",
+        "samples",
+        "text",
+        "types",
+        "wire",
+        "std",
+        "core",
+        "alloc",
+    }
+)

@@ -1,0 +1,54 @@
+"""The Rust runtime (generator/targets/rust/runtime/src/) reaches every crate verbatim, and the
+Rust facts cover the spec's primitives."""
+
+import json
+
+from generator.primitives import PRIMITIVES
+from generator.render import ROOT, runtime_dir
+from generator.targets.rust import backend, facts
+
+SRC = runtime_dir("rust") / "src"
+
+
+def _crate() -> tuple[str, dict[str, str]]:
+    """The files of the first crate, rendered (not formatted) from the committed IR."""
+    ir = json.loads((ROOT / "generated" / "ir.json").read_text(encoding="utf-8"))
+    ir["protocols"] = ir["protocols"][:1]
+    package = ir["protocols"][0]["package"]
+    files = backend.render(ir, [])
+    root = f"rust/{package}/"
+    return package, {k.removeprefix(root): v for k, v in files.items() if k.startswith(root)}
+
+
+def test_every_runtime_file_is_copied_verbatim() -> None:
+    package, crate = _crate()
+    checksum = (SRC / "framing_checksum.rs").read_text(encoding="utf-8")
+    for path in sorted(SRC.rglob("*.rs")):
+        rel = path.relative_to(SRC.parent).as_posix()
+        text = path.read_text(encoding="utf-8")
+        assert "{{" not in text and "{%" not in text, f"{rel}: runtime files are plain Rust"
+        if path.name == "framing_checksum.rs":
+            assert crate["src/framing.rs"].endswith("\n\n" + checksum)
+        elif rel.startswith("src/bin/"):
+            # The tools name the crate they use: the runtime's own crate, renamed.
+            dest = rel.replace("protocodec", package)
+            assert crate[dest] == text.replace("protocodec", package), rel
+        else:
+            assert crate[rel] == text, rel
+
+
+def test_the_runtime_reads_the_protocol_from_framing_only() -> None:
+    _, crate = _crate()
+    framing = crate["src/framing.rs"]
+    for const in ("SYNC", "MAX_PACKET", "BIG_ENDIAN", "PATH_DEPTH", "DATA_SETS", "TIMESTAMPS", "MAX_KEY"):
+        assert f"pub const {const}:" in framing, const
+
+
+def test_every_primitive_has_a_rust_type() -> None:
+    assert set(facts.PRIMITIVE_TYPES) == set(PRIMITIVES)
+
+
+def test_runtime_modules_are_reserved_names() -> None:
+    modules = {p.stem for p in SRC.glob("*.rs") if p.stem != "framing_checksum"}
+    assert modules <= facts.RESERVED_MODULES
+    assert {"framing", "dispatch", "types", "reserved"} <= facts.RESERVED_MODULES
