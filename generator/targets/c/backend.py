@@ -1,8 +1,8 @@
 """C back end: one C99 library per protocol at generated/c/<package>/ (see docs/design.md).
 
 All naming and type mapping happens here; the templates in templates/c/ only loop and print.
-The runtime (parser, checksum, JSON) is spec-independent template code rendered with the
-framing constants of the protocol.
+The runtime (parser, checksum, JSON) is plain C in generator/targets/c/runtime/, copied into each
+package with its symbol prefix; its only protocol input is the generated include/<pkg>/protocol.h.
 """
 
 from __future__ import annotations
@@ -12,57 +12,37 @@ import re
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.primitives import PRIMITIVES, int_range
-from generator.render import environment
+from generator.render import copy_runtime, environment
+
+from .facts import KEYWORDS as _KEYWORDS
+from .facts import PRIMITIVE_TYPES as _PRIM
 
 OUTPUT_DIRS = ["c"]
 
-# C99 and C++ keywords (the headers are also compiled as C++ by the tests) and names the
-# generated code uses itself.
-_KEYWORDS = set(
-    """
-auto break case char const continue default do double else enum extern float for goto if inline int long
-register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while
-_Bool _Complex _Imaginary bool true false alignas alignof and and_eq asm bitand bitor catch class compl
-const_cast constexpr decltype delete dynamic_cast explicit export friend mutable namespace new noexcept not
-not_eq nullptr operator or or_eq private protected public reinterpret_cast static_assert static_cast
-template this thread_local throw try typeid typename using virtual wchar_t xor xor_eq char16_t char32_t
-""".split()
-)
+# The runtime: plain C in generator/targets/c/runtime/, written with the neutral prefix codec_/CODEC_
+# and include directory codec/ (so that it compiles and is tested in place) -> generated file.
+_RUNTIME_FILES = [
+    "include/codec/status.h",
+    "src/status.c",
+    "include/codec/framing.h",
+    "src/framing.c",
+    "include/codec/parser.h",
+    "src/parser.c",
+    "include/codec/field_iter.h",
+    "src/field_iter.c",
+    "include/codec/samples.h",
+    "src/samples.c",
+    "src/wire.h",
+    "src/wire.c",
+    "src/json_writer.h",
+    "src/json_writer.c",
+    "src/json_reader.h",
+    "src/json_reader.c",
+]
 
-# wire primitive -> (C type, suffix of the runtime functions rd_/wr_/jw_/jr_)
-_PRIM = {
-    "bool": ("bool", "bool"),
-    "char": ("char", "char"),
-    "u8": ("uint8_t", "u8"),
-    "u16": ("uint16_t", "u16"),
-    "u32": ("uint32_t", "u32"),
-    "u64": ("uint64_t", "u64"),
-    "s8": ("int8_t", "s8"),
-    "s16": ("int16_t", "s16"),
-    "s32": ("int32_t", "s32"),
-    "s64": ("int64_t", "s64"),
-    "float": ("float", "f32"),
-    "double": ("double", "f64"),
-}
-
-# Runtime template -> generated file (relative to the package directory).
-_RUNTIME = {
-    "runtime/status.h.j2": "include/{pkg}/status.h",
-    "runtime/status.c.j2": "src/status.c",
-    "runtime/framing.h.j2": "include/{pkg}/framing.h",
-    "runtime/framing.c.j2": "src/framing.c",
-    "runtime/parser.h.j2": "include/{pkg}/parser.h",
-    "runtime/parser.c.j2": "src/parser.c",
-    "runtime/field_iter.h.j2": "include/{pkg}/field_iter.h",
-    "runtime/field_iter.c.j2": "src/field_iter.c",
-    "runtime/samples.h.j2": "include/{pkg}/samples.h",
-    "runtime/samples.c.j2": "src/samples.c",
-    "runtime/wire.h.j2": "src/wire.h",
-    "runtime/wire.c.j2": "src/wire.c",
-    "runtime/json_writer.h.j2": "src/json_writer.h",
-    "runtime/json_writer.c.j2": "src/json_writer.c",
-    "runtime/json_reader.h.j2": "src/json_reader.h",
-    "runtime/json_reader.c.j2": "src/json_reader.c",
+# Template -> generated file (relative to the package directory): what varies with the spec.
+_TEMPLATES = {
+    "protocol.h.j2": "include/{pkg}/protocol.h",
     "json.h.j2": "include/{pkg}/json.h",
     "json_codec.c.j2": "src/json_codec.c",
     "types.h.j2": "include/{pkg}/types.h",
@@ -585,6 +565,7 @@ class _Package:
             "p": self.p,
             "P": self.P,
             "pkg": self.pkg,
+            "byte_order": self.proto["byte_order"],
             "title": self.proto["title"],
             "protocol": self.proto["name"],
             "framing": self.framing,
@@ -606,6 +587,15 @@ class _Package:
         }
 
 
+def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
+    """The replacements that turn the runtime's neutral names into a package's: symbols codec_ and
+    CODEC_, include directory codec/. In this order no replacement can match the text of an
+    earlier one (a prefix is [a-z0-9_], so neither its upper case nor a slash comes out of the
+    first); tests/generator/test_c_runtime.py checks that the runtime uses the tokens only as
+    whole prefixes."""
+    return [("codec_", f"{prefix}_"), ("CODEC_", f"{prefix.upper()}_"), ("codec/", f"{package}/")]
+
+
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
     env = environment()
     out: dict[str, str] = {}
@@ -613,7 +603,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         pkg = _Package(proto, vectors)
         ctx = pkg.context()
         root = f"c/{pkg.pkg}/"
-        for tpl, path in _RUNTIME.items():
+        runtime = {src: root + src.replace("codec/", f"{pkg.pkg}/") for src in _RUNTIME_FILES}
+        out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
+        for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
         for s in pkg.sets:
             out[root + f"include/{s['header']}"] = env.get_template("c/set.h.j2").render(ctx, set=s)

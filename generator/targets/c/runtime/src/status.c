@@ -1,28 +1,28 @@
 /* Status texts and the exact decode error messages of docs/conformance.md section 3.
  * Generated: do not edit. */
-#include "{{ pkg }}/status.h"
+#include "codec/status.h"
 
 #include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
 
-const char *{{ p }}_status_text({{ p }}_status_t status) {
+const char *codec_status_text(codec_status_t status) {
     switch (status) {
-    case {{ P }}_OK:
+    case CODEC_OK:
         return "ok";
-    case {{ P }}_ERR_DECODE:
+    case CODEC_ERR_DECODE:
         return "field data does not match the layout";
-    case {{ P }}_ERR_BUFFER:
+    case CODEC_ERR_BUFFER:
         return "output buffer too small";
-    case {{ P }}_ERR_INVALID:
+    case CODEC_ERR_INVALID:
         return "value cannot be encoded";
-    case {{ P }}_ERR_UNKNOWN_SET:
+    case CODEC_ERR_UNKNOWN_SET:
         return "unknown descriptor set";
-    case {{ P }}_ERR_UNKNOWN_DESCRIPTOR:
+    case CODEC_ERR_UNKNOWN_DESCRIPTOR:
         return "unknown descriptor";
-    case {{ P }}_ERR_TOO_LONG:
+    case CODEC_ERR_TOO_LONG:
         return "exceeds the framing limits";
-    case {{ P }}_ERR_JSON:
+    case CODEC_ERR_JSON:
         return "invalid JSON line";
     }
     return "unknown status";
@@ -40,15 +40,15 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
     *len += n;
 }
 
-size_t {{ p }}_decode_error_format(const {{ p }}_decode_error_t *err, char *buf, size_t cap) {
+size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, size_t cap) {
     char num[96];
     size_t len = 0;
     size_t i;
     if (cap > 0) {
         buf[0] = '\0';
     }
-    if (err->kind != {{ P }}_DECODE_UNEXPECTED) {
-        for (i = 0; i < err->depth && i < {{ P }}_PATH_MAX_DEPTH; i++) {
+    if (err->kind != CODEC_DECODE_UNEXPECTED) {
+        for (i = 0; i < err->depth && i < CODEC_PATH_MAX_DEPTH; i++) {
             if (i > 0) {
                 append(buf, cap, &len, ".");
             }
@@ -61,22 +61,22 @@ size_t {{ p }}_decode_error_format(const {{ p }}_decode_error_t *err, char *buf,
         append(buf, cap, &len, ": ");
     }
     switch (err->kind) {
-    case {{ P }}_DECODE_NEEDS_BYTES:
+    case CODEC_DECODE_NEEDS_BYTES:
         snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need,
                  err->offset, err->have);
         break;
-    case {{ P }}_DECODE_COUNT:
+    case CODEC_DECODE_COUNT:
         snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
         break;
-    case {{ P }}_DECODE_REMAINING:
+    case CODEC_DECODE_REMAINING:
         snprintf(num, sizeof num, "%zu bytes left at offset %zu, not a multiple of %zu", err->have,
                  err->offset, err->need);
         break;
-    case {{ P }}_DECODE_BOOL:
+    case CODEC_DECODE_BOOL:
         snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value,
                  err->offset);
         break;
-    case {{ P }}_DECODE_SELECTOR:
+    case CODEC_DECODE_SELECTOR:
         if (err->value_signed) {
             int64_t v = err->value > (uint64_t)INT64_MAX ? -(int64_t)(~err->value) - 1 : (int64_t)err->value;
             snprintf(num, sizeof num, "no member for selector value %" PRId64, v);
@@ -84,11 +84,11 @@ size_t {{ p }}_decode_error_format(const {{ p }}_decode_error_t *err, char *buf,
             snprintf(num, sizeof num, "no member for selector value %" PRIu64, err->value);
         }
         break;
-    case {{ P }}_DECODE_UNEXPECTED:
+    case CODEC_DECODE_UNEXPECTED:
         snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have,
                  err->offset);
         break;
-    case {{ P }}_DECODE_NONE:
+    case CODEC_DECODE_NONE:
     default:
         snprintf(num, sizeof num, "no error");
         break;

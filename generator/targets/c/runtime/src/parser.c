@@ -1,14 +1,14 @@
 /* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
-#include "{{ pkg }}/parser.h"
+#include "codec/parser.h"
 
 #include <string.h>
 
-void {{ p }}_parser_init({{ p }}_parser_t *parser) {
+void codec_parser_init(codec_parser_t *parser) {
     memset(parser, 0, sizeof *parser);
 }
 
 /* Marks the first n buffered bytes as skipped and drops them. */
-static void skip({{ p }}_parser_t *parser, size_t n) {
+static void skip(codec_parser_t *parser, size_t n) {
     if (n == 0) {
         return;
     }
@@ -21,12 +21,12 @@ static void skip({{ p }}_parser_t *parser, size_t n) {
     parser->base += n;
 }
 
-static void emit_skip({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx) {
-    {{ p }}_event_t ev;
+static void emit_skip(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
+    codec_event_t ev;
     if (parser->skip_count == 0) {
         return;
     }
-    ev.kind = {{ P }}_EVENT_SKIP;
+    ev.kind = CODEC_EVENT_SKIP;
     ev.offset = parser->skip_offset;
     ev.length = parser->skip_count;
     ev.packet = NULL;
@@ -37,14 +37,14 @@ static void emit_skip({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx) 
 }
 
 /* Index of the first full sync sequence, or of a partial one at the end, or used. */
-static size_t find_sync(const {{ p }}_parser_t *parser) {
+static size_t find_sync(const codec_parser_t *parser) {
     size_t i;
     for (i = 0; i < parser->used; i++) {
         size_t k = 0;
-        while (k < {{ P }}_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == {{ p }}_sync[k]) {
+        while (k < CODEC_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == codec_sync[k]) {
             k++;
         }
-        if (k == {{ P }}_SYNC_SIZE || i + k == parser->used) {
+        if (k == CODEC_SYNC_SIZE || i + k == parser->used) {
             return i;
         }
     }
@@ -53,7 +53,7 @@ static size_t find_sync(const {{ p }}_parser_t *parser) {
 
 /* Consumes what the buffered bytes decide; stops when more input is needed. At the end of
  * input (final) there is no more: a candidate that would wait is a false sync instead. */
-static void process({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx, int final) {
+static void process(codec_parser_t *parser, codec_event_fn fn, void *ctx, int final) {
     for (;;) {
         size_t payload;
         size_t total;
@@ -61,19 +61,19 @@ static void process({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx, in
         if (parser->used == 0) {
             return;
         }
-        if (parser->used < {{ P }}_HEADER_SIZE) {
+        if (parser->used < CODEC_HEADER_SIZE) {
             if (!final) {
                 return; /* a partial sync or an incomplete header: wait */
             }
             skip(parser, 1);
             continue;
         }
-        payload = parser->buf[{{ P }}_LENGTH_OFFSET];
-        if (payload > {{ P }}_MAX_PAYLOAD) {
+        payload = parser->buf[CODEC_LENGTH_OFFSET];
+        if (payload > CODEC_MAX_PAYLOAD) {
             skip(parser, 1); /* false sync */
             continue;
         }
-        total = {{ P }}_HEADER_SIZE + payload + {{ P }}_CHECKSUM_SIZE;
+        total = CODEC_HEADER_SIZE + payload + CODEC_CHECKSUM_SIZE;
         if (parser->used < total) {
             if (!final) {
                 return; /* incomplete packet: wait */
@@ -81,14 +81,14 @@ static void process({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx, in
             skip(parser, 1);
             continue;
         }
-        if (!{{ p }}_checksum_matches(parser->buf, {{ P }}_HEADER_SIZE + payload)) {
+        if (!codec_checksum_matches(parser->buf, CODEC_HEADER_SIZE + payload)) {
             skip(parser, 1); /* false sync: resynchronise at the next byte */
             continue;
         }
         emit_skip(parser, fn, ctx);
         if (fn) {
-            {{ p }}_event_t ev;
-            ev.kind = {{ P }}_EVENT_PACKET;
+            codec_event_t ev;
+            ev.kind = CODEC_EVENT_PACKET;
             ev.offset = parser->base;
             ev.length = total;
             ev.packet = parser->buf;
@@ -102,15 +102,15 @@ static void process({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx, in
 
 /* Bytes the buffered candidate at buf[0] needs before process() can decide on it (0: none
  * buffered). A partial sync or header needs the header; a header, the whole packet. */
-static size_t wanted(const {{ p }}_parser_t *parser) {
+static size_t wanted(const codec_parser_t *parser) {
     size_t total;
     if (parser->used == 0) {
         return 0;
     }
-    if (parser->used < {{ P }}_HEADER_SIZE) {
-        return {{ P }}_HEADER_SIZE - parser->used;
+    if (parser->used < CODEC_HEADER_SIZE) {
+        return CODEC_HEADER_SIZE - parser->used;
     }
-    total = {{ P }}_HEADER_SIZE + (size_t)parser->buf[{{ P }}_LENGTH_OFFSET] + {{ P }}_CHECKSUM_SIZE;
+    total = CODEC_HEADER_SIZE + (size_t)parser->buf[CODEC_LENGTH_OFFSET] + CODEC_CHECKSUM_SIZE;
     return total > parser->used ? total - parser->used : 1;
 }
 
@@ -118,7 +118,7 @@ static size_t wanted(const {{ p }}_parser_t *parser) {
  * Returns the number of bytes consumed; the rest (a candidate that needs more input, shorter
  * than a maximum packet) is left for the caller to buffer. parser->base is the stream offset
  * of data[0] on entry and of data[consumed] on return. */
-static size_t scan(const uint8_t *data, size_t len, {{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx) {
+static size_t scan(const uint8_t *data, size_t len, codec_parser_t *parser, codec_event_fn fn, void *ctx) {
     const uint64_t base = parser->base;
     size_t pos = 0;
     while (pos < len) {
@@ -126,8 +126,8 @@ static size_t scan(const uint8_t *data, size_t len, {{ p }}_parser_t *parser, {{
         size_t left = len - pos;
         size_t payload;
         size_t total;
-        if (p[0] != {{ p }}_sync[0]) {
-            const uint8_t *q = memchr(p, {{ p }}_sync[0], left);
+        if (p[0] != codec_sync[0]) {
+            const uint8_t *q = memchr(p, codec_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
             if (parser->skip_count == 0) {
                 parser->skip_offset = base + pos;
@@ -136,24 +136,24 @@ static size_t scan(const uint8_t *data, size_t len, {{ p }}_parser_t *parser, {{
             pos += n;
             continue;
         }
-        if (left < {{ P }}_HEADER_SIZE) {
+        if (left < CODEC_HEADER_SIZE) {
             /* a partial sync or header at the end: the caller buffers it (unless it already
              * differs from the sync sequence, then skip its first byte) */
-            if (memcmp(p, {{ p }}_sync, left < {{ P }}_SYNC_SIZE ? left : {{ P }}_SYNC_SIZE) == 0) {
+            if (memcmp(p, codec_sync, left < CODEC_SYNC_SIZE ? left : CODEC_SYNC_SIZE) == 0) {
                 break;
             }
-        } else if (memcmp(p, {{ p }}_sync, {{ P }}_SYNC_SIZE) == 0 &&
-                   (payload = p[{{ P }}_LENGTH_OFFSET]) <= {{ P }}_MAX_PAYLOAD) {
-            total = {{ P }}_HEADER_SIZE + payload + {{ P }}_CHECKSUM_SIZE;
+        } else if (memcmp(p, codec_sync, CODEC_SYNC_SIZE) == 0 &&
+                   (payload = p[CODEC_LENGTH_OFFSET]) <= CODEC_MAX_PAYLOAD) {
+            total = CODEC_HEADER_SIZE + payload + CODEC_CHECKSUM_SIZE;
             if (left < total) {
                 break; /* incomplete packet: the caller buffers it */
             }
-            if ({{ p }}_checksum_matches(p, {{ P }}_HEADER_SIZE + payload)) {
+            if (codec_checksum_matches(p, CODEC_HEADER_SIZE + payload)) {
                 parser->base = base + pos;
                 emit_skip(parser, fn, ctx);
                 if (fn) {
-                    {{ p }}_event_t ev;
-                    ev.kind = {{ P }}_EVENT_PACKET;
+                    codec_event_t ev;
+                    ev.kind = CODEC_EVENT_PACKET;
                     ev.offset = base + pos;
                     ev.length = total;
                     ev.packet = p;
@@ -174,7 +174,7 @@ static size_t scan(const uint8_t *data, size_t len, {{ p }}_parser_t *parser, {{
     return pos;
 }
 
-void {{ p }}_parser_feed({{ p }}_parser_t *parser, const uint8_t *data, size_t len, {{ p }}_event_fn fn, void *ctx) {
+void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, codec_event_fn fn, void *ctx) {
     while (len > 0) {
         size_t take;
         if (parser->used == 0) {
@@ -200,7 +200,7 @@ void {{ p }}_parser_feed({{ p }}_parser_t *parser, const uint8_t *data, size_t l
     }
 }
 
-void {{ p }}_parser_flush({{ p }}_parser_t *parser, {{ p }}_event_fn fn, void *ctx) {
+void codec_parser_flush(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }

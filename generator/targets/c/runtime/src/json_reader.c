@@ -10,7 +10,7 @@
 
 #define MAX_NESTING 64
 
-void {{ p }}_jr_init({{ p }}_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
+void codec_jr_init(codec_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
     memset(jr, 0, sizeof *jr);
     jr->s = s;
     jr->len = s ? len : 0;
@@ -21,7 +21,7 @@ void {{ p }}_jr_init({{ p }}_jr_t *jr, const char *s, size_t len, char *msg, siz
     }
 }
 
-int {{ p }}_jr_fail({{ p }}_jr_t *jr, const char *fmt, ...) {
+int codec_jr_fail(codec_jr_t *jr, const char *fmt, ...) {
     va_list ap;
     size_t len = 0;
     size_t i;
@@ -30,7 +30,7 @@ int {{ p }}_jr_fail({{ p }}_jr_t *jr, const char *fmt, ...) {
         return -1;
     }
     jr->failed = true;
-    for (i = 0; i < jr->depth && i < {{ P }}_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
+    for (i = 0; i < jr->depth && i < CODEC_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
         int n;
         if (jr->index[i] != SIZE_MAX) {
             n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s[%zu]", i ? "." : "", jr->path[i], jr->index[i]);
@@ -51,38 +51,38 @@ int {{ p }}_jr_fail({{ p }}_jr_t *jr, const char *fmt, ...) {
     return -1;
 }
 
-void {{ p }}_jr_push({{ p }}_jr_t *jr, const char *name) {
-    if (jr->depth < {{ P }}_JR_MAX_DEPTH) {
+void codec_jr_push(codec_jr_t *jr, const char *name) {
+    if (jr->depth < CODEC_JR_MAX_DEPTH) {
         jr->path[jr->depth] = name;
         jr->index[jr->depth] = SIZE_MAX;
     }
     jr->depth++;
 }
 
-void {{ p }}_jr_index({{ p }}_jr_t *jr, size_t index) {
-    if (jr->depth > 0 && jr->depth <= {{ P }}_JR_MAX_DEPTH) {
+void codec_jr_index(codec_jr_t *jr, size_t index) {
+    if (jr->depth > 0 && jr->depth <= CODEC_JR_MAX_DEPTH) {
         jr->index[jr->depth - 1] = index;
     }
 }
 
-void {{ p }}_jr_pop({{ p }}_jr_t *jr) {
+void codec_jr_pop(codec_jr_t *jr) {
     if (jr->depth > 0) {
         jr->depth--;
     }
 }
 
-size_t {{ p }}_jr_ws(const {{ p }}_jr_t *jr, size_t pos) {
+size_t codec_jr_ws(const codec_jr_t *jr, size_t pos) {
     while (pos < jr->len && (jr->s[pos] == ' ' || jr->s[pos] == '\t' || jr->s[pos] == '\r' || jr->s[pos] == '\n')) {
         pos++;
     }
     return pos;
 }
 
-static int at(const {{ p }}_jr_t *jr, size_t pos, char c) {
+static int at(const codec_jr_t *jr, size_t pos, char c) {
     return pos < jr->len && jr->s[pos] == c;
 }
 
-static int is_digit(const {{ p }}_jr_t *jr, size_t pos) {
+static int is_digit(const codec_jr_t *jr, size_t pos) {
     return pos < jr->len && jr->s[pos] >= '0' && jr->s[pos] <= '9';
 }
 
@@ -132,17 +132,17 @@ static size_t utf8_length(const unsigned char *s, size_t n) {
 }
 
 /* Scans a string starting at the quote; *end after the closing quote. */
-static int scan_string({{ p }}_jr_t *jr, size_t pos, size_t *end) {
+static int scan_string(codec_jr_t *jr, size_t pos, size_t *end) {
     size_t i = pos + 1;
     while (i < jr->len && jr->s[i] != '"') {
         unsigned char c = (unsigned char)jr->s[i];
         if (c < 0x20) {
-            return {{ p }}_jr_fail(jr, "control character in a string");
+            return codec_jr_fail(jr, "control character in a string");
         }
         if (c >= 0x80) { /* the line is UTF-8 text (§5) */
             size_t len = utf8_length((const unsigned char *)jr->s + i, jr->len - i);
             if (len == 0) {
-                return {{ p }}_jr_fail(jr, "invalid UTF-8");
+                return codec_jr_fail(jr, "invalid UTF-8");
             }
             i += len;
             continue;
@@ -156,25 +156,25 @@ static int scan_string({{ p }}_jr_t *jr, size_t pos, size_t *end) {
                 int k;
                 for (k = 1; k <= 4; k++) {
                     if (i + (size_t)k >= jr->len || hex_value(jr->s[i + (size_t)k]) < 0) {
-                        return {{ p }}_jr_fail(jr, "bad \\u escape in a string");
+                        return codec_jr_fail(jr, "bad \\u escape in a string");
                     }
                 }
                 i += 4;
             } else if (jr->s[i] == '\0' || !strchr("\"\\/bfnrt", jr->s[i])) {
-                return {{ p }}_jr_fail(jr, "bad escape in a string");
+                return codec_jr_fail(jr, "bad escape in a string");
             }
         }
         i++;
     }
     if (i >= jr->len) {
-        return {{ p }}_jr_fail(jr, "unterminated string");
+        return codec_jr_fail(jr, "unterminated string");
     }
     *end = i + 1;
     return 0;
 }
 
 /* Scans a number; *is_int tells whether it has neither fraction nor exponent. */
-static int scan_number({{ p }}_jr_t *jr, size_t pos, size_t *end, int *is_int) {
+static int scan_number(codec_jr_t *jr, size_t pos, size_t *end, int *is_int) {
     size_t i = pos;
     *is_int = 1;
     if (at(jr, i, '-')) {
@@ -187,13 +187,13 @@ static int scan_number({{ p }}_jr_t *jr, size_t pos, size_t *end, int *is_int) {
             i++;
         }
     } else {
-        return {{ p }}_jr_fail(jr, "invalid number");
+        return codec_jr_fail(jr, "invalid number");
     }
     if (at(jr, i, '.')) {
         *is_int = 0;
         i++;
         if (!is_digit(jr, i)) {
-            return {{ p }}_jr_fail(jr, "invalid number");
+            return codec_jr_fail(jr, "invalid number");
         }
         while (is_digit(jr, i)) {
             i++;
@@ -206,7 +206,7 @@ static int scan_number({{ p }}_jr_t *jr, size_t pos, size_t *end, int *is_int) {
             i++;
         }
         if (!is_digit(jr, i)) {
-            return {{ p }}_jr_fail(jr, "invalid number");
+            return codec_jr_fail(jr, "invalid number");
         }
         while (is_digit(jr, i)) {
             i++;
@@ -216,30 +216,30 @@ static int scan_number({{ p }}_jr_t *jr, size_t pos, size_t *end, int *is_int) {
     return 0;
 }
 
-static int literal({{ p }}_jr_t *jr, size_t pos, const char *word, size_t *end) {
+static int literal(codec_jr_t *jr, size_t pos, const char *word, size_t *end) {
     size_t n = strlen(word);
     if (jr->len - pos < n || memcmp(jr->s + pos, word, n) != 0) {
-        return {{ p }}_jr_fail(jr, "invalid JSON value");
+        return codec_jr_fail(jr, "invalid JSON value");
     }
     *end = pos + n;
     return 0;
 }
 
-static int skip_value({{ p }}_jr_t *jr, size_t pos, size_t *end, int nesting) {
+static int skip_value(codec_jr_t *jr, size_t pos, size_t *end, int nesting) {
     int is_int;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (pos >= jr->len) {
-        return {{ p }}_jr_fail(jr, "missing JSON value");
+        return codec_jr_fail(jr, "missing JSON value");
     }
     if (nesting > MAX_NESTING) {
-        return {{ p }}_jr_fail(jr, "JSON nested too deeply");
+        return codec_jr_fail(jr, "JSON nested too deeply");
     }
     switch (jr->s[pos]) {
     case '{':
     case '[': {
         char close = jr->s[pos] == '{' ? '}' : ']';
         int object = close == '}';
-        pos = {{ p }}_jr_ws(jr, pos + 1);
+        pos = codec_jr_ws(jr, pos + 1);
         if (at(jr, pos, close)) {
             *end = pos + 1;
             return 0;
@@ -247,29 +247,29 @@ static int skip_value({{ p }}_jr_t *jr, size_t pos, size_t *end, int nesting) {
         for (;;) {
             if (object) {
                 if (!at(jr, pos, '"')) {
-                    return {{ p }}_jr_fail(jr, "expected a key in quotes");
+                    return codec_jr_fail(jr, "expected a key in quotes");
                 }
                 if (scan_string(jr, pos, &pos)) {
                     return -1;
                 }
-                pos = {{ p }}_jr_ws(jr, pos);
+                pos = codec_jr_ws(jr, pos);
                 if (!at(jr, pos, ':')) {
-                    return {{ p }}_jr_fail(jr, "expected ':' after a key");
+                    return codec_jr_fail(jr, "expected ':' after a key");
                 }
                 pos++;
             }
             if (skip_value(jr, pos, &pos, nesting + 1)) {
                 return -1;
             }
-            pos = {{ p }}_jr_ws(jr, pos);
+            pos = codec_jr_ws(jr, pos);
             if (at(jr, pos, close)) {
                 *end = pos + 1;
                 return 0;
             }
             if (!at(jr, pos, ',')) {
-                return {{ p }}_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
+                return codec_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
             }
-            pos = {{ p }}_jr_ws(jr, pos + 1);
+            pos = codec_jr_ws(jr, pos + 1);
         }
     }
     case '"':
@@ -285,30 +285,30 @@ static int skip_value({{ p }}_jr_t *jr, size_t pos, size_t *end, int nesting) {
     }
 }
 
-int {{ p }}_jr_skip({{ p }}_jr_t *jr, size_t pos, size_t *end) {
+int codec_jr_skip(codec_jr_t *jr, size_t pos, size_t *end) {
     return skip_value(jr, pos, end, 0);
 }
 
-int {{ p }}_jr_document({{ p }}_jr_t *jr, size_t *pos) {
-    size_t start = {{ p }}_jr_ws(jr, 0);
+int codec_jr_document(codec_jr_t *jr, size_t *pos) {
+    size_t start = codec_jr_ws(jr, 0);
     size_t end;
     if (!at(jr, start, '{')) {
-        return {{ p }}_jr_fail(jr, "expected a JSON object");
+        return codec_jr_fail(jr, "expected a JSON object");
     }
-    if ({{ p }}_jr_skip(jr, start, &end)) {
+    if (codec_jr_skip(jr, start, &end)) {
         return -1;
     }
-    if ({{ p }}_jr_ws(jr, end) != jr->len) {
-        return {{ p }}_jr_fail(jr, "unexpected text after the JSON object");
+    if (codec_jr_ws(jr, end) != jr->len) {
+        return codec_jr_fail(jr, "unexpected text after the JSON object");
     }
     *pos = start;
     return 0;
 }
 
-/* Walks an object that {{ p }}_jr_skip accepted: calls back for each key. */
+/* Walks an object that codec_jr_skip accepted: calls back for each key. */
 /* The character at jr->s[*i] inside a string that scan_string accepted: escapes decoded and a
  * UTF-8 sequence read as one code point; advances *i past it. */
-static unsigned string_char(const {{ p }}_jr_t *jr, size_t *i) {
+static unsigned string_char(const codec_jr_t *jr, size_t *i) {
     const unsigned char *u = (const unsigned char *)jr->s + *i;
     unsigned code = u[0];
     if (code == '\\') {
@@ -340,7 +340,7 @@ static unsigned string_char(const {{ p }}_jr_t *jr, size_t *i) {
 
 /* True when the JSON string at key_pos..key_end (quotes included, already scanned) denotes the
  * ASCII text name: escapes are decoded first ("na\u006de" is the key "name", §5). */
-static bool key_equals(const {{ p }}_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
+static bool key_equals(const codec_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
     size_t i = key_pos + 1;
     size_t k = 0;
     while (i < key_end - 1) {
@@ -353,7 +353,7 @@ static bool key_equals(const {{ p }}_jr_t *jr, size_t key_pos, size_t key_end, c
     return name[k] == '\0';
 }
 
-static size_t key_index(const {{ p }}_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys, size_t n) {
+static size_t key_index(const codec_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys, size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
         if (key_equals(jr, key_pos, key_end, keys[i])) {
@@ -363,17 +363,17 @@ static size_t key_index(const {{ p }}_jr_t *jr, size_t key_pos, size_t key_end, 
     return n;
 }
 
-int {{ p }}_jr_object({{ p }}_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
+int codec_jr_object(codec_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
     size_t end;
     uint64_t seen = 0;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (!at(jr, pos, '{')) {
-        return {{ p }}_jr_fail(jr, "expected an object");
+        return codec_jr_fail(jr, "expected an object");
     }
-    if ({{ p }}_jr_skip(jr, pos, &end)) {
+    if (codec_jr_skip(jr, pos, &end)) {
         return -1;
     }
-    pos = {{ p }}_jr_ws(jr, pos + 1);
+    pos = codec_jr_ws(jr, pos + 1);
     while (!at(jr, pos, '}')) {
         size_t key_end;
         size_t k;
@@ -381,64 +381,64 @@ int {{ p }}_jr_object({{ p }}_jr_t *jr, size_t pos, const char *const *keys, siz
         k = key_index(jr, pos, key_end, keys, n);
         if (k == n) {
             int shown = (int)(key_end - pos > 40 ? 40 : key_end - pos);
-            return {{ p }}_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
+            return codec_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
         }
         if (k < 64 && (seen & ((uint64_t)1 << k))) {
-            return {{ p }}_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
+            return codec_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
         }
         if (k < 64) {
             seen |= (uint64_t)1 << k;
         }
-        pos = {{ p }}_jr_ws(jr, key_end) + 1;
+        pos = codec_jr_ws(jr, key_end) + 1;
         skip_value(jr, pos, &pos, 0);
-        pos = {{ p }}_jr_ws(jr, pos);
+        pos = codec_jr_ws(jr, pos);
         if (at(jr, pos, ',')) {
-            pos = {{ p }}_jr_ws(jr, pos + 1);
+            pos = codec_jr_ws(jr, pos + 1);
         }
     }
     return 0;
 }
 
-int {{ p }}_jr_get({{ p }}_jr_t *jr, size_t pos, const char *key, size_t *value) {
-    pos = {{ p }}_jr_ws(jr, pos) + 1;
-    pos = {{ p }}_jr_ws(jr, pos);
+int codec_jr_get(codec_jr_t *jr, size_t pos, const char *key, size_t *value) {
+    pos = codec_jr_ws(jr, pos) + 1;
+    pos = codec_jr_ws(jr, pos);
     while (at(jr, pos, '"')) {
         size_t key_end;
         scan_string(jr, pos, &key_end);
         if (key_index(jr, pos, key_end, &key, 1) == 0) {
-            *value = {{ p }}_jr_ws(jr, {{ p }}_jr_ws(jr, key_end) + 1);
+            *value = codec_jr_ws(jr, codec_jr_ws(jr, key_end) + 1);
             return 1;
         }
-        pos = {{ p }}_jr_ws(jr, key_end) + 1;
+        pos = codec_jr_ws(jr, key_end) + 1;
         skip_value(jr, pos, &pos, 0);
-        pos = {{ p }}_jr_ws(jr, pos);
+        pos = codec_jr_ws(jr, pos);
         if (at(jr, pos, ',')) {
-            pos = {{ p }}_jr_ws(jr, pos + 1);
+            pos = codec_jr_ws(jr, pos + 1);
         }
     }
     return 0;
 }
 
-int {{ p }}_jr_array({{ p }}_jr_t *jr, size_t pos, size_t *it) {
+int codec_jr_array(codec_jr_t *jr, size_t pos, size_t *it) {
     size_t end;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (!at(jr, pos, '[')) {
-        return {{ p }}_jr_fail(jr, "expected an array");
+        return codec_jr_fail(jr, "expected an array");
     }
-    if ({{ p }}_jr_skip(jr, pos, &end)) {
+    if (codec_jr_skip(jr, pos, &end)) {
         return -1;
     }
-    *it = {{ p }}_jr_ws(jr, pos + 1);
+    *it = codec_jr_ws(jr, pos + 1);
     return 0;
 }
 
-int {{ p }}_jr_next({{ p }}_jr_t *jr, size_t *it, size_t *elem) {
-    size_t pos = {{ p }}_jr_ws(jr, *it);
+int codec_jr_next(codec_jr_t *jr, size_t *it, size_t *elem) {
+    size_t pos = codec_jr_ws(jr, *it);
     if (at(jr, pos, ']')) {
         return 0;
     }
     if (at(jr, pos, ',')) {
-        pos = {{ p }}_jr_ws(jr, pos + 1);
+        pos = codec_jr_ws(jr, pos + 1);
     }
     *elem = pos;
     if (skip_value(jr, pos, it, 0)) {
@@ -448,33 +448,33 @@ int {{ p }}_jr_next({{ p }}_jr_t *jr, size_t *it, size_t *elem) {
 }
 
 /* Magnitude of an integer token; *negative for a leading '-'. */
-static int integer({{ p }}_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
+static int integer(codec_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
     size_t end;
     size_t i;
     int is_int;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (pos >= jr->len || !(jr->s[pos] == '-' || (jr->s[pos] >= '0' && jr->s[pos] <= '9'))) {
-        return {{ p }}_jr_fail(jr, "expected %s", expected);
+        return codec_jr_fail(jr, "expected %s", expected);
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     if (!is_int) {
-        return {{ p }}_jr_fail(jr, "expected %s", expected);
+        return codec_jr_fail(jr, "expected %s", expected);
     }
     *negative = jr->s[pos] == '-';
     *mag = 0;
     for (i = pos + (*negative ? 1u : 0u); i < end; i++) {
         unsigned d = (unsigned)(jr->s[i] - '0');
         if (*mag > (UINT64_MAX - d) / 10) {
-            return {{ p }}_jr_fail(jr, "expected %s", expected);
+            return codec_jr_fail(jr, "expected %s", expected);
         }
         *mag = *mag * 10 + d;
     }
     return 0;
 }
 
-int {{ p }}_jr_uint({{ p }}_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
+int codec_jr_uint(codec_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
     char expected[64];
     uint64_t mag;
     int negative;
@@ -483,13 +483,13 @@ int {{ p }}_jr_uint({{ p }}_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
         return -1;
     }
     if ((negative && mag != 0) || mag > max) {
-        return {{ p }}_jr_fail(jr, "expected %s", expected);
+        return codec_jr_fail(jr, "expected %s", expected);
     }
     *out = mag;
     return 0;
 }
 
-int {{ p }}_jr_sint({{ p }}_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
+int codec_jr_sint(codec_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
     char expected[80];
     uint64_t mag;
     int negative;
@@ -501,38 +501,38 @@ int {{ p }}_jr_sint({{ p }}_jr_t *jr, size_t pos, int64_t min, int64_t max, int6
         /* -mag >= min  <=>  mag <= -(min + 1) + 1 */
         uint64_t limit = (uint64_t)(-(min + 1)) + 1u;
         if (mag > limit) {
-            return {{ p }}_jr_fail(jr, "expected %s", expected);
+            return codec_jr_fail(jr, "expected %s", expected);
         }
         *out = mag == 0 ? 0 : -(int64_t)(mag - 1) - 1;
     } else {
         if (mag > (uint64_t)max) {
-            return {{ p }}_jr_fail(jr, "expected %s", expected);
+            return codec_jr_fail(jr, "expected %s", expected);
         }
         *out = (int64_t)mag;
     }
     return 0;
 }
 
-int {{ p }}_jr_null({{ p }}_jr_t *jr, size_t pos) {
-    pos = {{ p }}_jr_ws(jr, pos);
+int codec_jr_null(codec_jr_t *jr, size_t pos) {
+    pos = codec_jr_ws(jr, pos);
     if (jr->len - pos < 4 || memcmp(jr->s + pos, "null", 4) != 0) {
-        return {{ p }}_jr_fail(jr, "expected null");
+        return codec_jr_fail(jr, "expected null");
     }
     return 0;
 }
 
-bool {{ p }}_jr_is_string(const {{ p }}_jr_t *jr, size_t pos) {
-    return at(jr, {{ p }}_jr_ws(jr, pos), '"');
+bool codec_jr_is_string(const codec_jr_t *jr, size_t pos) {
+    return at(jr, codec_jr_ws(jr, pos), '"');
 }
 
 /* Decodes the string at pos into bytes (code points up to U+00FF); *n gets the byte count,
  * which may exceed cap (then only cap bytes are stored). */
-static int string_bytes({{ p }}_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
+static int string_bytes(codec_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
     size_t end;
     size_t i;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
-        return {{ p }}_jr_fail(jr, "expected %s", expected);
+        return codec_jr_fail(jr, "expected %s", expected);
     }
     if (scan_string(jr, pos, &end)) {
         return -1;
@@ -572,13 +572,13 @@ static int string_bytes({{ p }}_jr_t *jr, size_t pos, char *out, size_t cap, siz
             /* UTF-8 of U+0080..U+00FF */
             unsigned char c2 = i + 1 < end - 1 ? (unsigned char)jr->s[i + 1] : 0;
             if ((c != 0xC2 && c != 0xC3) || (c2 & 0xC0) != 0x80) {
-                return {{ p }}_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+                return codec_jr_fail(jr, "character outside U+0000..U+00FF in a string");
             }
             code = ((unsigned)(c & 0x1F) << 6) | (c2 & 0x3Fu);
             i++;
         }
         if (code > 0xFF) {
-            return {{ p }}_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+            return codec_jr_fail(jr, "character outside U+0000..U+00FF in a string");
         }
         if (*n < cap) {
             out[*n] = (char)(unsigned char)code;
@@ -588,7 +588,7 @@ static int string_bytes({{ p }}_jr_t *jr, size_t pos, char *out, size_t cap, siz
     return 0;
 }
 
-int {{ p }}_jr_chars({{ p }}_jr_t *jr, size_t pos, char *out, size_t n) {
+int codec_jr_chars(codec_jr_t *jr, size_t pos, char *out, size_t n) {
     char expected[64];
     size_t got;
     snprintf(expected, sizeof expected, "a string of exactly %zu characters", n);
@@ -596,19 +596,19 @@ int {{ p }}_jr_chars({{ p }}_jr_t *jr, size_t pos, char *out, size_t n) {
         return -1;
     }
     if (got != n) {
-        return {{ p }}_jr_fail(jr, "expected %s, got %zu", expected, got);
+        return codec_jr_fail(jr, "expected %s, got %zu", expected, got);
     }
     return 0;
 }
 
-int {{ p }}_jr_hex({{ p }}_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
+int codec_jr_hex(codec_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     size_t end;
     size_t i;
     size_t digits = 0;
     int hi = 0;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
-        return {{ p }}_jr_fail(jr, "expected a hex string");
+        return codec_jr_fail(jr, "expected a hex string");
     }
     if (scan_string(jr, pos, &end)) {
         return -1;
@@ -618,7 +618,7 @@ int {{ p }}_jr_hex({{ p }}_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_
         unsigned code = string_char(jr, &i);
         int d = code < 0x80 ? hex_value((char)code) : -1;
         if (d < 0) {
-            return {{ p }}_jr_fail(jr, "expected hex digits");
+            return codec_jr_fail(jr, "expected hex digits");
         }
         if (digits % 2 == 0) {
             hi = d;
@@ -628,17 +628,17 @@ int {{ p }}_jr_hex({{ p }}_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_
         digits++;
     }
     if (digits % 2 != 0) {
-        return {{ p }}_jr_fail(jr, "expected an even number of hex digits");
+        return codec_jr_fail(jr, "expected an even number of hex digits");
     }
     *n = digits / 2;
     if (*n > cap) {
-        return {{ p }}_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
+        return codec_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
     }
     return 0;
 }
 
-int {{ p }}_jr_bool({{ p }}_jr_t *jr, size_t pos, bool *out) {
-    pos = {{ p }}_jr_ws(jr, pos);
+int codec_jr_bool(codec_jr_t *jr, size_t pos, bool *out) {
+    pos = codec_jr_ws(jr, pos);
     if (jr->len - pos >= 4 && memcmp(jr->s + pos, "true", 4) == 0) {
         *out = true;
         return 0;
@@ -647,35 +647,85 @@ int {{ p }}_jr_bool({{ p }}_jr_t *jr, size_t pos, bool *out) {
         *out = false;
         return 0;
     }
-    return {{ p }}_jr_fail(jr, "expected true or false");
+    return codec_jr_fail(jr, "expected true or false");
 }
 
-int {{ p }}_jr_char({{ p }}_jr_t *jr, size_t pos, char *out) {
-    return {{ p }}_jr_chars(jr, pos, out, 1);
+int codec_jr_char(codec_jr_t *jr, size_t pos, char *out) {
+    return codec_jr_chars(jr, pos, out, 1);
 }
 
-{% for name, ctype, max in [("u8", "uint8_t", "UINT8_MAX"), ("u16", "uint16_t", "UINT16_MAX"), ("u32", "uint32_t", "UINT32_MAX"), ("u64", "uint64_t", "UINT64_MAX")] %}
-int {{ p }}_jr_{{ name }}({{ p }}_jr_t *jr, size_t pos, {{ ctype }} *out) {
+int codec_jr_u8(codec_jr_t *jr, size_t pos, uint8_t *out) {
     uint64_t v;
-    if ({{ p }}_jr_uint(jr, pos, {{ max }}, &v)) {
+    if (codec_jr_uint(jr, pos, UINT8_MAX, &v)) {
         return -1;
     }
-    *out = ({{ ctype }})v;
+    *out = (uint8_t)v;
     return 0;
 }
 
-{% endfor %}
-{% for name, ctype, min, max in [("s8", "int8_t", "INT8_MIN", "INT8_MAX"), ("s16", "int16_t", "INT16_MIN", "INT16_MAX"), ("s32", "int32_t", "INT32_MIN", "INT32_MAX"), ("s64", "int64_t", "INT64_MIN", "INT64_MAX")] %}
-int {{ p }}_jr_{{ name }}({{ p }}_jr_t *jr, size_t pos, {{ ctype }} *out) {
+int codec_jr_u16(codec_jr_t *jr, size_t pos, uint16_t *out) {
+    uint64_t v;
+    if (codec_jr_uint(jr, pos, UINT16_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint16_t)v;
+    return 0;
+}
+
+int codec_jr_u32(codec_jr_t *jr, size_t pos, uint32_t *out) {
+    uint64_t v;
+    if (codec_jr_uint(jr, pos, UINT32_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint32_t)v;
+    return 0;
+}
+
+int codec_jr_u64(codec_jr_t *jr, size_t pos, uint64_t *out) {
+    uint64_t v;
+    if (codec_jr_uint(jr, pos, UINT64_MAX, &v)) {
+        return -1;
+    }
+    *out = (uint64_t)v;
+    return 0;
+}
+
+int codec_jr_s8(codec_jr_t *jr, size_t pos, int8_t *out) {
     int64_t v;
-    if ({{ p }}_jr_sint(jr, pos, {{ min }}, {{ max }}, &v)) {
+    if (codec_jr_sint(jr, pos, INT8_MIN, INT8_MAX, &v)) {
         return -1;
     }
-    *out = ({{ ctype }})v;
+    *out = (int8_t)v;
     return 0;
 }
 
-{% endfor %}
+int codec_jr_s16(codec_jr_t *jr, size_t pos, int16_t *out) {
+    int64_t v;
+    if (codec_jr_sint(jr, pos, INT16_MIN, INT16_MAX, &v)) {
+        return -1;
+    }
+    *out = (int16_t)v;
+    return 0;
+}
+
+int codec_jr_s32(codec_jr_t *jr, size_t pos, int32_t *out) {
+    int64_t v;
+    if (codec_jr_sint(jr, pos, INT32_MIN, INT32_MAX, &v)) {
+        return -1;
+    }
+    *out = (int32_t)v;
+    return 0;
+}
+
+int codec_jr_s64(codec_jr_t *jr, size_t pos, int64_t *out) {
+    int64_t v;
+    if (codec_jr_sint(jr, pos, INT64_MIN, INT64_MAX, &v)) {
+        return -1;
+    }
+    *out = (int64_t)v;
+    return 0;
+}
+
 /* The double nearest to a JSON number of any length (docs/conformance.md §5: round to nearest,
  * ties to even; +-HUGE_VAL when it overflows, 0 or a denormal when it underflows). The number
  * is rewritten as at most NUMBER_DIGITS significant digits and an exponent for strtod: a 1 is
@@ -749,12 +799,12 @@ static double number_value(const char *s, size_t n) {
 }
 
 /* A number, or "inf", "-inf", "nan", "nan:0x<hex_digits>"; *bits set for "nan:0x..". */
-static int number({{ p }}_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
+static int number(codec_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
                   const char *expected) {
     size_t end;
     int is_int;
     *has_bits = 0;
-    pos = {{ p }}_jr_ws(jr, pos);
+    pos = codec_jr_ws(jr, pos);
     if (at(jr, pos, '"')) {
         size_t n;
         char text[32];
@@ -792,19 +842,19 @@ static int number({{ p }}_jr_t *jr, size_t pos, double *out, uint64_t *bits, int
                 }
             }
         }
-        return {{ p }}_jr_fail(jr, "expected %s", expected);
+        return codec_jr_fail(jr, "expected %s", expected);
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     *out = number_value(jr->s + pos, end - pos);
     if (*out == HUGE_VAL || *out == -HUGE_VAL) {
-        return {{ p }}_jr_fail(jr, "number out of range for a double");
+        return codec_jr_fail(jr, "number out of range for a double");
     }
     return 0;
 }
 
-int {{ p }}_jr_f64({{ p }}_jr_t *jr, size_t pos, double *out) {
+int codec_jr_f64(codec_jr_t *jr, size_t pos, double *out) {
     uint64_t bits;
     int has_bits;
     const char *expected = "a number, \"inf\", \"-inf\", \"nan\" or \"nan:0x\" and 16 hex digits";
@@ -813,14 +863,14 @@ int {{ p }}_jr_f64({{ p }}_jr_t *jr, size_t pos, double *out) {
     }
     if (has_bits) {
         if (((bits >> 52) & 0x7FF) != 0x7FF || (bits & 0xFFFFFFFFFFFFFull) == 0) {
-            return {{ p }}_jr_fail(jr, "not a NaN bit pattern");
+            return codec_jr_fail(jr, "not a NaN bit pattern");
         }
         memcpy(out, &bits, sizeof bits);
     }
     return 0;
 }
 
-int {{ p }}_jr_f32({{ p }}_jr_t *jr, size_t pos, float *out) {
+int codec_jr_f32(codec_jr_t *jr, size_t pos, float *out) {
     uint64_t bits;
     int has_bits;
     double d = 0;
@@ -831,7 +881,7 @@ int {{ p }}_jr_f32({{ p }}_jr_t *jr, size_t pos, float *out) {
     if (has_bits) {
         uint32_t b32 = (uint32_t)bits;
         if (((b32 >> 23) & 0xFF) != 0xFF || (b32 & 0x7FFFFFu) == 0) {
-            return {{ p }}_jr_fail(jr, "not a NaN bit pattern");
+            return codec_jr_fail(jr, "not a NaN bit pattern");
         }
         memcpy(out, &b32, sizeof b32);
         return 0;
@@ -844,7 +894,7 @@ int {{ p }}_jr_f32({{ p }}_jr_t *jr, size_t pos, float *out) {
      * (0x1.ffffffp127) up is infinite as a float: out of range (§5). Below it, a double beyond
      * FLT_MAX rounds to FLT_MAX (spelled out: C leaves that conversion undefined). */
     if (d >= 0x1.ffffffp127 || d <= -0x1.ffffffp127) {
-        return {{ p }}_jr_fail(jr, "number out of range for a float");
+        return codec_jr_fail(jr, "number out of range for a float");
     }
     if (d > FLT_MAX || d < -FLT_MAX) {
         *out = d > 0 ? FLT_MAX : -FLT_MAX;

@@ -1,27 +1,27 @@
 /* Canonical JSON writer: integers, floats (shortest round-trip, Python repr layout), strings,
  * hex. Generated: do not edit. */
 #include "json_writer.h"
-#include "{{ pkg }}/json.h"
+#include "codec/json.h"
 
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-void {{ p }}_jw_init({{ p }}_jw_t *w, char *buf, size_t cap) {
+void codec_jw_init(codec_jw_t *w, char *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
-size_t {{ p }}_jw_finish({{ p }}_jw_t *w) {
+size_t codec_jw_finish(codec_jw_t *w) {
     if (w->cap > 0) {
         w->buf[w->len < w->cap ? w->len : w->cap - 1] = '\0';
     }
     return w->len;
 }
 
-void {{ p }}_jw_raw({{ p }}_jw_t *w, const char *text, size_t n) {
+void codec_jw_raw(codec_jw_t *w, const char *text, size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
         if (w->len + 1 < w->cap) {
@@ -31,61 +31,61 @@ void {{ p }}_jw_raw({{ p }}_jw_t *w, const char *text, size_t n) {
     }
 }
 
-void {{ p }}_jw_lit({{ p }}_jw_t *w, const char *text) {
-    {{ p }}_jw_raw(w, text, strlen(text));
+void codec_jw_lit(codec_jw_t *w, const char *text) {
+    codec_jw_raw(w, text, strlen(text));
 }
 
-void {{ p }}_jw_key({{ p }}_jw_t *w, int *first, const char *key) {
+void codec_jw_key(codec_jw_t *w, int *first, const char *key) {
     if (!*first) {
-        {{ p }}_jw_raw(w, ",", 1);
+        codec_jw_raw(w, ",", 1);
     }
     *first = 0;
-    {{ p }}_jw_raw(w, "\"", 1);
-    {{ p }}_jw_lit(w, key);
-    {{ p }}_jw_raw(w, "\":", 2);
+    codec_jw_raw(w, "\"", 1);
+    codec_jw_lit(w, key);
+    codec_jw_raw(w, "\":", 2);
 }
 
-void {{ p }}_jw_sep({{ p }}_jw_t *w, size_t index) {
+void codec_jw_sep(codec_jw_t *w, size_t index) {
     if (index > 0) {
-        {{ p }}_jw_raw(w, ",", 1);
+        codec_jw_raw(w, ",", 1);
     }
 }
 
-void {{ p }}_jw_uint({{ p }}_jw_t *w, uint64_t v) {
+void codec_jw_uint(codec_jw_t *w, uint64_t v) {
     char buf[24];
     int n = snprintf(buf, sizeof buf, "%" PRIu64, v);
-    {{ p }}_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    codec_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
-void {{ p }}_jw_int({{ p }}_jw_t *w, int64_t v) {
+void codec_jw_int(codec_jw_t *w, int64_t v) {
     char buf[24];
     int n = snprintf(buf, sizeof buf, "%" PRId64, v);
-    {{ p }}_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    codec_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
 static const char k_hex[] = "0123456789abcdef";
 
-void {{ p }}_jw_hex({{ p }}_jw_t *w, const uint8_t *bytes, size_t n) {
+void codec_jw_hex(codec_jw_t *w, const uint8_t *bytes, size_t n) {
     size_t i;
-    {{ p }}_jw_raw(w, "\"", 1);
+    codec_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         char two[2];
         two[0] = k_hex[bytes[i] >> 4];
         two[1] = k_hex[bytes[i] & 0x0F];
-        {{ p }}_jw_raw(w, two, 2);
+        codec_jw_raw(w, two, 2);
     }
-    {{ p }}_jw_raw(w, "\"", 1);
+    codec_jw_raw(w, "\"", 1);
 }
 
-void {{ p }}_jw_string({{ p }}_jw_t *w, const char *bytes, size_t n) {
+void codec_jw_string(codec_jw_t *w, const char *bytes, size_t n) {
     size_t i;
-    {{ p }}_jw_raw(w, "\"", 1);
+    codec_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         unsigned char b = (unsigned char)bytes[i];
         if (b == '"') {
-            {{ p }}_jw_raw(w, "\\\"", 2);
+            codec_jw_raw(w, "\\\"", 2);
         } else if (b == '\\') {
-            {{ p }}_jw_raw(w, "\\\\", 2);
+            codec_jw_raw(w, "\\\\", 2);
         } else if (b < 0x20 || b >= 0x7F) {
             char esc[6];
             esc[0] = '\\';
@@ -94,68 +94,68 @@ void {{ p }}_jw_string({{ p }}_jw_t *w, const char *bytes, size_t n) {
             esc[3] = '0';
             esc[4] = k_hex[b >> 4];
             esc[5] = k_hex[b & 0x0F];
-            {{ p }}_jw_raw(w, esc, 6);
+            codec_jw_raw(w, esc, 6);
         } else {
-            {{ p }}_jw_raw(w, (const char *)&bytes[i], 1);
+            codec_jw_raw(w, (const char *)&bytes[i], 1);
         }
     }
-    {{ p }}_jw_raw(w, "\"", 1);
+    codec_jw_raw(w, "\"", 1);
 }
 
-void {{ p }}_jw_bool({{ p }}_jw_t *w, const bool *v) {
-    {{ p }}_jw_lit(w, *v ? "true" : "false");
+void codec_jw_bool(codec_jw_t *w, const bool *v) {
+    codec_jw_lit(w, *v ? "true" : "false");
 }
 
-void {{ p }}_jw_char({{ p }}_jw_t *w, const char *v) {
-    {{ p }}_jw_string(w, v, 1);
+void codec_jw_char(codec_jw_t *w, const char *v) {
+    codec_jw_string(w, v, 1);
 }
 
-void {{ p }}_jw_u8({{ p }}_jw_t *w, const uint8_t *v) {
-    {{ p }}_jw_uint(w, *v);
+void codec_jw_u8(codec_jw_t *w, const uint8_t *v) {
+    codec_jw_uint(w, *v);
 }
 
-void {{ p }}_jw_u16({{ p }}_jw_t *w, const uint16_t *v) {
-    {{ p }}_jw_uint(w, *v);
+void codec_jw_u16(codec_jw_t *w, const uint16_t *v) {
+    codec_jw_uint(w, *v);
 }
 
-void {{ p }}_jw_u32({{ p }}_jw_t *w, const uint32_t *v) {
-    {{ p }}_jw_uint(w, *v);
+void codec_jw_u32(codec_jw_t *w, const uint32_t *v) {
+    codec_jw_uint(w, *v);
 }
 
-void {{ p }}_jw_u64({{ p }}_jw_t *w, const uint64_t *v) {
-    {{ p }}_jw_uint(w, *v);
+void codec_jw_u64(codec_jw_t *w, const uint64_t *v) {
+    codec_jw_uint(w, *v);
 }
 
-void {{ p }}_jw_s8({{ p }}_jw_t *w, const int8_t *v) {
-    {{ p }}_jw_int(w, *v);
+void codec_jw_s8(codec_jw_t *w, const int8_t *v) {
+    codec_jw_int(w, *v);
 }
 
-void {{ p }}_jw_s16({{ p }}_jw_t *w, const int16_t *v) {
-    {{ p }}_jw_int(w, *v);
+void codec_jw_s16(codec_jw_t *w, const int16_t *v) {
+    codec_jw_int(w, *v);
 }
 
-void {{ p }}_jw_s32({{ p }}_jw_t *w, const int32_t *v) {
-    {{ p }}_jw_int(w, *v);
+void codec_jw_s32(codec_jw_t *w, const int32_t *v) {
+    codec_jw_int(w, *v);
 }
 
-void {{ p }}_jw_s64({{ p }}_jw_t *w, const int64_t *v) {
-    {{ p }}_jw_int(w, *v);
+void codec_jw_s64(codec_jw_t *w, const int64_t *v) {
+    codec_jw_int(w, *v);
 }
 
-void {{ p }}_jw_f32({{ p }}_jw_t *w, const float *v) {
-    char buf[{{ P }}_JSON_NUMBER_MAX];
-    size_t n = {{ p }}_json_format_float(*v, buf, sizeof buf);
-    {{ p }}_jw_raw(w, buf, n);
+void codec_jw_f32(codec_jw_t *w, const float *v) {
+    char buf[CODEC_JSON_NUMBER_MAX];
+    size_t n = codec_json_format_float(*v, buf, sizeof buf);
+    codec_jw_raw(w, buf, n);
 }
 
-void {{ p }}_jw_f64({{ p }}_jw_t *w, const double *v) {
-    char buf[{{ P }}_JSON_NUMBER_MAX];
-    size_t n = {{ p }}_json_format_double(*v, buf, sizeof buf);
-    {{ p }}_jw_raw(w, buf, n);
+void codec_jw_f64(codec_jw_t *w, const double *v) {
+    char buf[CODEC_JSON_NUMBER_MAX];
+    size_t n = codec_json_format_double(*v, buf, sizeof buf);
+    codec_jw_raw(w, buf, n);
 }
 
-void {{ p }}_jw_chars({{ p }}_jw_t *w, const char *v, size_t n) {
-    {{ p }}_jw_string(w, v, n);
+void codec_jw_chars(codec_jw_t *w, const char *v, size_t n) {
+    codec_jw_string(w, v, n);
 }
 
 /* ------------------------------------------------------------------ numbers */
@@ -313,7 +313,7 @@ static size_t format_finite(double v, char *buf, size_t cap) {
     return finish(buf, cap, len);
 }
 
-size_t {{ p }}_json_format_double(double v, char *buf, size_t cap) {
+size_t codec_json_format_double(double v, char *buf, size_t cap) {
     uint64_t bits;
     char text[32];
     memcpy(&bits, &v, sizeof bits);
@@ -330,7 +330,7 @@ size_t {{ p }}_json_format_double(double v, char *buf, size_t cap) {
     return format_finite(v, buf, cap);
 }
 
-size_t {{ p }}_json_format_float(float v, char *buf, size_t cap) {
+size_t codec_json_format_float(float v, char *buf, size_t cap) {
     uint32_t bits;
     char text[32];
     memcpy(&bits, &v, sizeof bits);
@@ -347,9 +347,9 @@ size_t {{ p }}_json_format_float(float v, char *buf, size_t cap) {
     return format_finite((double)v, buf, cap);
 }
 
-size_t {{ p }}_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
-    {{ p }}_jw_t w;
-    {{ p }}_jw_init(&w, buf, cap);
-    {{ p }}_jw_string(&w, bytes, n);
-    return {{ p }}_jw_finish(&w);
+size_t codec_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
+    codec_jw_t w;
+    codec_jw_init(&w, buf, cap);
+    codec_jw_string(&w, bytes, n);
+    return codec_jw_finish(&w);
 }

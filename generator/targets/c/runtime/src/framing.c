@@ -1,9 +1,9 @@
 /* Checksum and packet builder. Generated: do not edit. */
-#include "{{ pkg }}/framing.h"
+#include "codec/framing.h"
 
 #include <string.h>
 
-const uint8_t {{ p }}_sync[{{ P }}_SYNC_SIZE] = { {% for b in framing.sync %}{{ b | hex2 }}{{ ", " if not loop.last }}{% endfor %} };
+const uint8_t codec_sync[CODEC_SYNC_SIZE] = CODEC_SYNC_BYTES;
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
  * load on little-endian hosts). */
@@ -29,7 +29,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
  * of 256.
  */
-uint16_t {{ p }}_checksum_word(const uint8_t *bytes, size_t len) {
+uint16_t codec_checksum_word(const uint8_t *bytes, size_t len) {
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
     uint64_t s1 = 0;
@@ -67,107 +67,111 @@ uint16_t {{ p }}_checksum_word(const uint8_t *bytes, size_t len) {
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
-    return (uint16_t)({{ framing.checksum.order[0] }} << 8 | {{ framing.checksum.order[1] }});
+#if CODEC_CHECKSUM_SUM1_FIRST
+    return (uint16_t)(sum1 << 8 | sum2);
+#else
+    return (uint16_t)(sum2 << 8 | sum1);
+#endif
 }
 
-void {{ p }}_checksum(const uint8_t *bytes, size_t len, uint8_t out[{{ P }}_CHECKSUM_SIZE]) {
-    unsigned word = {{ p }}_checksum_word(bytes, len);
+void codec_checksum(const uint8_t *bytes, size_t len, uint8_t out[CODEC_CHECKSUM_SIZE]) {
+    unsigned word = codec_checksum_word(bytes, len);
     out[0] = (uint8_t)(word >> 8);
     out[1] = (uint8_t)(word & 0xFFu);
 }
 
 /* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
  * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
-bool {{ p }}_checksum_matches(const uint8_t *bytes, size_t len) {
-    return {{ p }}_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
+bool codec_checksum_matches(const uint8_t *bytes, size_t len) {
+    return codec_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
-bool {{ p }}_packet_valid(const uint8_t *packet, size_t len) {
+bool codec_packet_valid(const uint8_t *packet, size_t len) {
     size_t payload;
-    if (len < {{ P }}_HEADER_SIZE + {{ P }}_CHECKSUM_SIZE || memcmp(packet, {{ p }}_sync, {{ P }}_SYNC_SIZE) != 0) {
+    if (len < CODEC_HEADER_SIZE + CODEC_CHECKSUM_SIZE || memcmp(packet, codec_sync, CODEC_SYNC_SIZE) != 0) {
         return false;
     }
-    payload = packet[{{ P }}_LENGTH_OFFSET];
-    if (payload > {{ P }}_MAX_PAYLOAD || len != {{ P }}_HEADER_SIZE + payload + {{ P }}_CHECKSUM_SIZE) {
+    payload = packet[CODEC_LENGTH_OFFSET];
+    if (payload > CODEC_MAX_PAYLOAD || len != CODEC_HEADER_SIZE + payload + CODEC_CHECKSUM_SIZE) {
         return false;
     }
-    return {{ p }}_checksum_matches(packet, {{ P }}_HEADER_SIZE + payload);
+    return codec_checksum_matches(packet, CODEC_HEADER_SIZE + payload);
 }
 
-void {{ p }}_packet_begin({{ p }}_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
+void codec_packet_begin(codec_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
     b->buf = buf;
     b->cap = buf ? cap : 0;
     b->len = 0;
-    b->status = {{ P }}_OK;
-    if (b->cap < {{ P }}_HEADER_SIZE) {
-        b->status = {{ P }}_ERR_BUFFER;
+    b->status = CODEC_OK;
+    if (b->cap < CODEC_HEADER_SIZE) {
+        b->status = CODEC_ERR_BUFFER;
         return;
     }
-    memcpy(buf, {{ p }}_sync, {{ P }}_SYNC_SIZE);
-    buf[{{ P }}_SET_OFFSET] = set;
+    memcpy(buf, codec_sync, CODEC_SYNC_SIZE);
+    buf[CODEC_SET_OFFSET] = set;
     b->set = set;
-    buf[{{ P }}_LENGTH_OFFSET] = 0;
-    b->len = {{ P }}_HEADER_SIZE;
+    buf[CODEC_LENGTH_OFFSET] = 0;
+    b->len = CODEC_HEADER_SIZE;
 }
 
-static {{ p }}_status_t reserve({{ p }}_packet_builder_t *b, size_t n) {
-    if (b->status != {{ P }}_OK) {
+static codec_status_t reserve(codec_packet_builder_t *b, size_t n) {
+    if (b->status != CODEC_OK) {
         return b->status;
     }
-    if (b->len - {{ P }}_HEADER_SIZE + n > {{ P }}_MAX_PAYLOAD) {
-        b->status = {{ P }}_ERR_TOO_LONG;
-    } else if (b->cap - b->len < n + {{ P }}_CHECKSUM_SIZE) {
-        b->status = {{ P }}_ERR_BUFFER;
+    if (b->len - CODEC_HEADER_SIZE + n > CODEC_MAX_PAYLOAD) {
+        b->status = CODEC_ERR_TOO_LONG;
+    } else if (b->cap - b->len < n + CODEC_CHECKSUM_SIZE) {
+        b->status = CODEC_ERR_BUFFER;
     }
     return b->status;
 }
 
-{{ p }}_status_t {{ p }}_packet_add_field({{ p }}_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+codec_status_t codec_packet_add_field(codec_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
                                           size_t data_len) {
-    int adjust = {{ p }}_field_length_adjust(b->set, descriptor);
-    if (b->status == {{ P }}_OK && data_len > {{ P }}_MAX_FIELD_DATA) {
-        b->status = {{ P }}_ERR_TOO_LONG;
+    int adjust = codec_field_length_adjust(b->set, descriptor);
+    if (b->status == CODEC_OK && data_len > CODEC_MAX_FIELD_DATA) {
+        b->status = CODEC_ERR_TOO_LONG;
     }
-    if (b->status == {{ P }}_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
+    if (b->status == CODEC_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
         /* too long for the length byte, or shorter than an irregular field's size byte allows */
-        b->status = (int)data_len + adjust > 0xFF ? {{ P }}_ERR_TOO_LONG : {{ P }}_ERR_INVALID;
+        b->status = (int)data_len + adjust > 0xFF ? CODEC_ERR_TOO_LONG : CODEC_ERR_INVALID;
     }
-    if (reserve(b, {{ P }}_FIELD_HEADER_SIZE + data_len) != {{ P }}_OK) {
+    if (reserve(b, CODEC_FIELD_HEADER_SIZE + data_len) != CODEC_OK) {
         return b->status;
     }
-    b->buf[b->len + {{ P }}_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
-    b->buf[b->len + {{ P }}_FIELD_DESCRIPTOR_OFFSET] = descriptor;
+    b->buf[b->len + CODEC_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
+    b->buf[b->len + CODEC_FIELD_DESCRIPTOR_OFFSET] = descriptor;
     if (data_len > 0) {
-        memcpy(b->buf + b->len + {{ P }}_FIELD_HEADER_SIZE, data, data_len);
+        memcpy(b->buf + b->len + CODEC_FIELD_HEADER_SIZE, data, data_len);
     }
-    b->len += {{ P }}_FIELD_HEADER_SIZE + data_len;
-    return {{ P }}_OK;
+    b->len += CODEC_FIELD_HEADER_SIZE + data_len;
+    return CODEC_OK;
 }
 
-{{ p }}_status_t {{ p }}_packet_add_raw({{ p }}_packet_builder_t *b, const uint8_t *bytes, size_t len) {
-    if (reserve(b, len) != {{ P }}_OK) {
+codec_status_t codec_packet_add_raw(codec_packet_builder_t *b, const uint8_t *bytes, size_t len) {
+    if (reserve(b, len) != CODEC_OK) {
         return b->status;
     }
     if (len > 0) {
         memcpy(b->buf + b->len, bytes, len);
     }
     b->len += len;
-    return {{ P }}_OK;
+    return CODEC_OK;
 }
 
-{{ p }}_status_t {{ p }}_packet_finish({{ p }}_packet_builder_t *b, size_t *len_out) {
-    if (b->status != {{ P }}_OK) {
+codec_status_t codec_packet_finish(codec_packet_builder_t *b, size_t *len_out) {
+    if (b->status != CODEC_OK) {
         return b->status;
     }
-    if (b->cap - b->len < {{ P }}_CHECKSUM_SIZE) {
-        b->status = {{ P }}_ERR_BUFFER;
+    if (b->cap - b->len < CODEC_CHECKSUM_SIZE) {
+        b->status = CODEC_ERR_BUFFER;
         return b->status;
     }
-    b->buf[{{ P }}_LENGTH_OFFSET] = (uint8_t)(b->len - {{ P }}_HEADER_SIZE);
-    {{ p }}_checksum(b->buf, b->len, b->buf + b->len);
-    b->len += {{ P }}_CHECKSUM_SIZE;
+    b->buf[CODEC_LENGTH_OFFSET] = (uint8_t)(b->len - CODEC_HEADER_SIZE);
+    codec_checksum(b->buf, b->len, b->buf + b->len);
+    b->len += CODEC_CHECKSUM_SIZE;
     if (len_out) {
         *len_out = b->len;
     }
-    return {{ P }}_OK;
+    return CODEC_OK;
 }
