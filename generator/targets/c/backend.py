@@ -19,32 +19,38 @@ from .facts import PRIMITIVE_TYPES as _PRIM
 
 OUTPUT_DIRS = ["c"]
 
-# The runtime: plain C in generator/targets/c/runtime/, written with the neutral prefix codec_/CODEC_
-# and include directory codec/ (so that it compiles and is tested in place) -> generated file.
-_RUNTIME_FILES = [
-    "include/codec/status.h",
-    "src/status.c",
-    "include/codec/framing.h",
-    "src/framing.c",
-    "include/codec/parser.h",
-    "src/parser.c",
-    "include/codec/field_iter.h",
-    "src/field_iter.c",
-    "include/codec/samples.h",
-    "src/samples.c",
-    "src/wire.h",
-    "src/wire.c",
-    "src/json_writer.h",
-    "src/json_writer.c",
-    "src/json_reader.h",
-    "src/json_reader.c",
-]
+# The runtime: plain C in generator/targets/c/runtime/, written with the neutral prefix codec_/CODEC_,
+# package name codec and include directory codec/ (so that it compiles and is tested in place)
+# -> generated file, where "codec/" becomes the package's include directory.
+_RUNTIME_FILES = {
+    "include/codec/status.h": "include/codec/status.h",
+    "src/status.c": "src/status.c",
+    "include/codec/framing.h": "include/codec/framing.h",
+    "src/framing.c": "src/framing.c",
+    "include/codec/parser.h": "include/codec/parser.h",
+    "src/parser.c": "src/parser.c",
+    "include/codec/field_iter.h": "include/codec/field_iter.h",
+    "src/field_iter.c": "src/field_iter.c",
+    "include/codec/samples.h": "include/codec/samples.h",
+    "src/samples.c": "src/samples.c",
+    "src/wire.h": "src/wire.h",
+    "src/wire.c": "src/wire.c",
+    "src/json_writer.h": "src/json_writer.h",
+    "src/json_writer.c": "src/json_writer.c",
+    "src/json_reader.h": "src/json_reader.h",
+    "src/json_reader.c": "src/json_reader.c",
+    "include/codec/json.h": "include/codec/json.h",
+    "src/json_codec.c": "src/json_codec.c",
+    "tools/decode.c": "tools/decode.c",
+    "tools/encode.c": "tools/encode.c",
+    "tools/read_all.h": "tools/read_all.h",
+    "tests/package/test_support.hpp": "tests/test_support.hpp",
+    "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
+}
 
 # Template -> generated file (relative to the package directory): what varies with the spec.
 _TEMPLATES = {
     "protocol.h.j2": "include/{pkg}/protocol.h",
-    "json.h.j2": "include/{pkg}/json.h",
-    "json_codec.c.j2": "src/json_codec.c",
     "types.h.j2": "include/{pkg}/types.h",
     "types_internal.h.j2": "src/types_internal.h",
     "types.c.j2": "src/types.c",
@@ -54,12 +60,7 @@ _TEMPLATES = {
     "umbrella.h.j2": "include/{pkg}/{pkg}.h",
     "CMakeLists.txt.j2": "CMakeLists.txt",
     "README.md.j2": "README.md",
-    "tools/decode.c.j2": "tools/decode.c",
-    "tools/encode.c.j2": "tools/encode.c",
-    "tools/read_all.h.j2": "tools/read_all.h",
     "examples/getting_started.c.j2": "examples/getting_started.c",
-    "tests/test_support.hpp.j2": "tests/test_support.hpp",
-    "tests/runtime_test.cpp.j2": "tests/runtime_test.cpp",
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
 }
 
@@ -589,11 +590,17 @@ class _Package:
 
 def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
     """The replacements that turn the runtime's neutral names into a package's: symbols codec_ and
-    CODEC_, include directory codec/. In this order no replacement can match the text of an
-    earlier one (a prefix is [a-z0-9_], so neither its upper case nor a slash comes out of the
-    first); tests/generator/test_c_runtime.py checks that the runtime uses the tokens only as
-    whole prefixes."""
-    return [("codec_", f"{prefix}_"), ("CODEC_", f"{prefix.upper()}_"), ("codec/", f"{package}/")]
+    CODEC_, program names codec-decode/codec-encode, include directory codec/. In this order no
+    replacement matches the text an earlier one wrote (a prefix is [a-z0-9_]: its lower case has
+    no '-' or '/', its upper case no lower-case letter; a package name has no '/').
+    tests/generator/test_c_runtime.py checks that the runtime writes the tokens only at the start
+    of a word, so that no other text changes."""
+    return [
+        ("codec_", f"{prefix}_"),
+        ("CODEC_", f"{prefix.upper()}_"),
+        ("codec-", f"{package}-"),
+        ("codec/", f"{package}/"),
+    ]
 
 
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
@@ -603,7 +610,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         pkg = _Package(proto, vectors)
         ctx = pkg.context()
         root = f"c/{pkg.pkg}/"
-        runtime = {src: root + src.replace("codec/", f"{pkg.pkg}/") for src in _RUNTIME_FILES}
+        runtime = {src: root + dest.replace("codec/", f"{pkg.pkg}/") for src, dest in _RUNTIME_FILES.items()}
         out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)

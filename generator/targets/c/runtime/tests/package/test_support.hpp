@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "{{ pkg }}/{{ pkg }}.h"
+#include "codec/json.h"
+#include "codec/parser.h"
 
 namespace test_support {
 
@@ -29,7 +30,7 @@ inline std::string to_hex(const std::vector<uint8_t> &bytes) {
 }
 
 struct Event {
-    {{ p }}_event_kind_t kind;
+    codec_event_kind_t kind;
     uint64_t offset;
     uint64_t length;
     bool operator==(const Event &o) const {
@@ -39,22 +40,22 @@ struct Event {
 
 struct Collector {
     const std::vector<uint8_t> *input = nullptr;
-    {{ p }}_device_t device = {{ P }}_DEVICE_ANY;
+    codec_device_t device = CODEC_DEVICE_ANY;
     std::string text;
     std::vector<Event> events;
 };
 
-inline void collect(void *arg, const {{ p }}_event_t *ev) {
+inline void collect(void *arg, const codec_event_t *ev) {
     Collector *c = static_cast<Collector *>(arg);
     c->events.push_back(Event{ev->kind, ev->offset, ev->length});
     std::string line(1024, '\0');
     size_t n;
     for (;;) {
-        if (ev->kind == {{ P }}_EVENT_SKIP) {
-            n = {{ p }}_json_skip_line(ev->offset, c->input->data() + ev->offset, static_cast<size_t>(ev->length),
+        if (ev->kind == CODEC_EVENT_SKIP) {
+            n = codec_json_skip_line(ev->offset, c->input->data() + ev->offset, static_cast<size_t>(ev->length),
                                       &line[0], line.size());
         } else {
-            n = {{ p }}_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device, &line[0],
+            n = codec_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device, &line[0],
                                         line.size());
         }
         if (n < line.size()) {
@@ -67,26 +68,26 @@ inline void collect(void *arg, const {{ p }}_event_t *ev) {
 }
 
 // Feeds the bytes in chunks of `chunk` bytes (0: all at once); returns the JSON lines.
-inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk, {{ p }}_device_t device = {{ P }}_DEVICE_ANY) {
+inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk, codec_device_t device = CODEC_DEVICE_ANY) {
     Collector c;
     c.input = &bytes;
     c.device = device;
-    {{ p }}_parser_t parser;
-    {{ p }}_parser_init(&parser);
+    codec_parser_t parser;
+    codec_parser_init(&parser);
     if (chunk == 0) {
-        {{ p }}_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
+        codec_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
     } else {
         for (size_t i = 0; i < bytes.size(); i += chunk) {
             size_t n = bytes.size() - i < chunk ? bytes.size() - i : chunk;
-            {{ p }}_parser_feed(&parser, bytes.data() + i, n, collect, &c);
+            codec_parser_feed(&parser, bytes.data() + i, n, collect, &c);
         }
     }
-    {{ p }}_parser_flush(&parser, collect, &c);
+    codec_parser_flush(&parser, collect, &c);
     return c;
 }
 
 inline std::string decode_text(const std::vector<uint8_t> &bytes, size_t chunk,
-                               {{ p }}_device_t device = {{ P }}_DEVICE_ANY) {
+                               codec_device_t device = CODEC_DEVICE_ANY) {
     return decode(bytes, chunk, device).text;
 }
 
@@ -103,11 +104,11 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
         if (line.empty()) {
             continue;
         }
-        std::vector<uint8_t> buf(line.size() / 2 + {{ P }}_MAX_PACKET);
+        std::vector<uint8_t> buf(line.size() / 2 + CODEC_MAX_PACKET);
         char msg[512];
         size_t n = 0;
-        {{ p }}_status_t st = {{ p }}_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
-        if (st != {{ P }}_OK) {
+        codec_status_t st = codec_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
+        if (st != CODEC_OK) {
             *error = msg;
             return false;
         }
@@ -118,14 +119,14 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
 
 // A packet of descriptor set `set` holding the given (descriptor, data) fields.
 inline std::vector<uint8_t> packet(uint8_t set, const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
-    std::vector<uint8_t> buf({{ P }}_MAX_PACKET);
-    {{ p }}_packet_builder_t b;
-    {{ p }}_packet_begin(&b, buf.data(), buf.size(), set);
+    std::vector<uint8_t> buf(CODEC_MAX_PACKET);
+    codec_packet_builder_t b;
+    codec_packet_begin(&b, buf.data(), buf.size(), set);
     for (const auto &f : fields) {
-        {{ p }}_packet_add_field(&b, f.first, f.second.data(), f.second.size());
+        codec_packet_add_field(&b, f.first, f.second.data(), f.second.size());
     }
     size_t n = 0;
-    if ({{ p }}_packet_finish(&b, &n) != {{ P }}_OK) {
+    if (codec_packet_finish(&b, &n) != CODEC_OK) {
         return {};
     }
     buf.resize(n);
@@ -136,8 +137,8 @@ inline std::vector<uint8_t> packet(uint8_t set, const std::vector<std::pair<uint
 inline uint8_t garbage_byte() {
     for (unsigned b = 0;; b++) {
         bool in_sync = false;
-        for (size_t i = 0; i < {{ P }}_SYNC_SIZE; i++) {
-            in_sync = in_sync || {{ p }}_sync[i] == b;
+        for (size_t i = 0; i < CODEC_SYNC_SIZE; i++) {
+            in_sync = in_sync || codec_sync[i] == b;
         }
         if (!in_sync) {
             return static_cast<uint8_t>(b);

@@ -1,7 +1,7 @@
-/* {{ pkg }}-encode: canonical JSON lines on stdin -> bytes on stdout (docs/conformance.md
+/* codec-encode: canonical JSON lines on stdin -> bytes on stdout (docs/conformance.md
  * section 5). A bad line is reported on stderr with its number and nothing is written for it;
  * the other lines are still encoded and the exit status is 1. Generated: do not edit. */
-#include "{{ pkg }}/{{ pkg }}.h"
+#include "codec/json.h"
 #include "read_all.h"
 
 static int blank(const char *s, size_t n) {
@@ -23,15 +23,15 @@ int main(int argc, char **argv) {
     char msg[512];
     if (argc > 1) {
         if (strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
-            fputs("usage: {{ pkg }}-encode < JSON-LINES > BYTES\n", stdout);
+            fputs("usage: codec-encode < JSON-LINES > BYTES\n", stdout);
             return 0;
         }
-        fprintf(stderr, "{{ pkg }}-encode: unexpected argument %s\nusage: {{ pkg }}-encode < JSON-LINES > BYTES\n", argv[1]);
+        fprintf(stderr, "codec-encode: unexpected argument %s\nusage: codec-encode < JSON-LINES > BYTES\n", argv[1]);
         return 2;
     }
     input = read_all(stdin, &len);
     if (!input) {
-        fprintf(stderr, "{{ pkg }}-encode: cannot read standard input\n");
+        fprintf(stderr, "codec-encode: cannot read standard input\n");
         return 2;
     }
     while (start < len) {
@@ -41,17 +41,17 @@ int main(int argc, char **argv) {
         start += n + 1;
         line_no++;
         if (!blank(line, n)) {
-            size_t cap = n / 2 + {{ P }}_MAX_PACKET;
+            size_t cap = n / 2 + CODEC_MAX_PACKET;
             size_t out_len = 0;
             uint8_t *out = (uint8_t *)malloc(cap);
-            {{ p }}_status_t st;
+            codec_status_t st;
             if (!out) {
-                fprintf(stderr, "{{ pkg }}-encode: out of memory\n");
+                fprintf(stderr, "codec-encode: out of memory\n");
                 free(input);
                 return 2;
             }
-            st = {{ p }}_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
-            if (st == {{ P }}_OK) {
+            st = codec_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
+            if (st == CODEC_OK) {
                 fwrite(out, 1, out_len, stdout);
             } else {
                 fprintf(stderr, "line %lu: %s\n", line_no, msg);
@@ -62,7 +62,7 @@ int main(int argc, char **argv) {
     }
     free(input);
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "{{ pkg }}-encode: cannot write the output\n");
+        fprintf(stderr, "codec-encode: cannot write the output\n");
         return 2;
     }
     return status;

@@ -1,6 +1,6 @@
 /* Reads a whole stream into memory (the command-line tools may allocate). Generated: do not edit. */
-#ifndef {{ P }}_TOOLS_READ_ALL_H
-#define {{ P }}_TOOLS_READ_ALL_H
+#ifndef CODEC_TOOLS_READ_ALL_H
+#define CODEC_TOOLS_READ_ALL_H
 
 #include <stdio.h>
 #include <stdlib.h>

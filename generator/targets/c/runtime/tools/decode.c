@@ -1,18 +1,20 @@
-/* {{ pkg }}-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
+/* codec-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
  * (docs/conformance.md section 5). Generated: do not edit. */
-#include "{{ pkg }}/{{ pkg }}.h"
+#include "codec/json.h"
+#include "codec/parser.h"
+#include "codec/samples.h"
 #include "read_all.h"
 
-static const char k_usage[] = "usage: {{ pkg }}-decode [--device ID] [--samples] [FILE|-]\n";
+static const char k_usage[] = "usage: codec-decode [--device ID] [--samples] [FILE|-]\n";
 
 typedef struct {
     const unsigned char *input;
-    {{ p }}_device_t device;
+    codec_device_t device;
     char *line;
     size_t line_cap;
     int failed;
     int samples;
-    {{ p }}_sample_tracker_t tracker;
+    codec_sample_tracker_t tracker;
 } decode_ctx_t;
 
 static int grow(decode_ctx_t *ctx, size_t need) {
@@ -27,15 +29,15 @@ static int grow(decode_ctx_t *ctx, size_t need) {
 }
 
 /* The line of an event into ctx->line; returns its full length. */
-static size_t format(decode_ctx_t *ctx, const {{ p }}_event_t *ev) {
-    if (ev->kind == {{ P }}_EVENT_SKIP) {
-        return {{ p }}_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length, ctx->line,
+static size_t format(decode_ctx_t *ctx, const codec_event_t *ev) {
+    if (ev->kind == CODEC_EVENT_SKIP) {
+        return codec_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length, ctx->line,
                                      ctx->line_cap);
     }
-    return {{ p }}_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line, ctx->line_cap);
+    return codec_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line, ctx->line_cap);
 }
 
-static void on_event(void *arg, const {{ p }}_event_t *ev) {
+static void on_event(void *arg, const codec_event_t *ev) {
     decode_ctx_t *ctx = (decode_ctx_t *)arg;
     size_t need;
     if (ctx->failed) {
@@ -48,10 +50,10 @@ static void on_event(void *arg, const {{ p }}_event_t *ev) {
         }
         need = format(ctx, ev);
     }
-    if (ctx->samples && ev->kind == {{ P }}_EVENT_PACKET) {
-        {{ p }}_sample_info_t info;
+    if (ctx->samples && ev->kind == CODEC_EVENT_PACKET) {
+        codec_sample_info_t info;
         const char *at = strstr(ctx->line, ",\"fields\":");
-        if (at && {{ p }}_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
+        if (at && codec_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
             size_t head = (size_t)(at - ctx->line);
             fwrite(ctx->line, 1, head, stdout);
             fprintf(stdout, ",\"sample\":%llu", (unsigned long long)info.number);
@@ -64,21 +66,30 @@ static void on_event(void *arg, const {{ p }}_event_t *ev) {
     fputc('\n', stdout);
 }
 
+/* The device ids the spec names, each after a space (devices are numbered from 1 up). */
+static void print_device_ids(FILE *out) {
+    int d;
+    const char *id;
+    for (d = 1; (id = codec_device_id((codec_device_t)d)) != NULL; d++) {
+        fprintf(out, " %s", id);
+    }
+}
+
 static int usage_error(const char *what) {
-    fprintf(stderr, "{{ pkg }}-decode: %s\n%s", what, k_usage);
+    fprintf(stderr, "codec-decode: %s\n%s", what, k_usage);
     return 2;
 }
 
 int main(int argc, char **argv) {
     const char *path = NULL;
     decode_ctx_t ctx;
-    {{ p }}_parser_t parser;
+    codec_parser_t parser;
     unsigned char *input;
     size_t len = 0;
     FILE *in = stdin;
     int i;
     memset(&ctx, 0, sizeof ctx);
-    ctx.device = {{ P }}_DEVICE_ANY;
+    ctx.device = CODEC_DEVICE_ANY;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *id = NULL;
@@ -95,22 +106,24 @@ int main(int argc, char **argv) {
             fputs(k_usage, stdout);
             return 0;
         } else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "{{ pkg }}-decode: unknown option %s\n%s", a, k_usage);
+            fprintf(stderr, "codec-decode: unknown option %s\n%s", a, k_usage);
             return 2;
         } else if (path) {
             return usage_error("only one input file");
         } else {
             path = a;
         }
-        if (id && !{{ p }}_device_from_id(id, &ctx.device)) {
-            fprintf(stderr, "{{ pkg }}-decode: unknown device '%s' (expected one of:{% for d in devices %} {{ d.id }}{% endfor %})\n", id);
+        if (id && !codec_device_from_id(id, &ctx.device)) {
+            fprintf(stderr, "codec-decode: unknown device '%s' (expected one of:", id);
+            print_device_ids(stderr);
+            fputs(")\n", stderr);
             return 2;
         }
     }
     if (path && strcmp(path, "-") != 0) {
         in = fopen(path, "rb");
         if (!in) {
-            fprintf(stderr, "{{ pkg }}-decode: cannot open %s\n", path);
+            fprintf(stderr, "codec-decode: cannot open %s\n", path);
             return 2;
         }
     }
@@ -119,7 +132,7 @@ int main(int argc, char **argv) {
         fclose(in);
     }
     if (!input) {
-        fprintf(stderr, "{{ pkg }}-decode: cannot read %s\n", path ? path : "standard input");
+        fprintf(stderr, "codec-decode: cannot read %s\n", path ? path : "standard input");
         return 2;
     }
     ctx.input = input;
@@ -127,21 +140,21 @@ int main(int argc, char **argv) {
     ctx.line = (char *)malloc(ctx.line_cap);
     if (!ctx.line) {
         free(input);
-        fprintf(stderr, "{{ pkg }}-decode: out of memory\n");
+        fprintf(stderr, "codec-decode: out of memory\n");
         return 2;
     }
-    {{ p }}_parser_init(&parser);
-    {{ p }}_sample_tracker_init(&ctx.tracker);
-    {{ p }}_parser_feed(&parser, input, len, on_event, &ctx);
-    {{ p }}_parser_flush(&parser, on_event, &ctx);
+    codec_parser_init(&parser);
+    codec_sample_tracker_init(&ctx.tracker);
+    codec_parser_feed(&parser, input, len, on_event, &ctx);
+    codec_parser_flush(&parser, on_event, &ctx);
     free(ctx.line);
     free(input);
     if (ctx.failed) {
-        fprintf(stderr, "{{ pkg }}-decode: out of memory\n");
+        fprintf(stderr, "codec-decode: out of memory\n");
         return 2;
     }
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "{{ pkg }}-decode: cannot write the output\n");
+        fprintf(stderr, "codec-decode: cannot write the output\n");
         return 2;
     }
     return 0;
