@@ -38,9 +38,13 @@ ensure_built() {
 }
 
 # The runtime's own tests, built in place from generator/targets/c/runtime/ (no regeneration):
-# one googletest binary per hand-written test protocol (big- and little-endian).
+# its formatting checked, then one googletest binary per hand-written test protocol (big- and
+# little-endian).
 runtime_tests() {
-    local src="$ROOT/generator/targets/c/runtime/tests" out="$ROOT/build/c-runtime" variant
+    local runtime="$ROOT/generator/targets/c/runtime" out="$ROOT/build/c-runtime" variant
+    local src="$runtime/tests" format="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}"
+    find "$runtime" -name '*.[ch]' -o -name '*.[ch]pp' | sort |
+        xargs "$format" --style="file:$ROOT/.clang-format" --dry-run -Werror
     if [ ! -f "$out/build.ninja" ]; then
         cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug >&2
     fi

@@ -127,7 +127,7 @@ static codec_status_t reserve(codec_packet_builder_t *b, size_t n) {
 }
 
 codec_status_t codec_packet_add_field(codec_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                          size_t data_len) {
+                                      size_t data_len) {
     int adjust = codec_field_length_adjust(b->set, descriptor);
     if (b->status == CODEC_OK && data_len > CODEC_MAX_FIELD_DATA) {
         b->status = CODEC_ERR_TOO_LONG;

@@ -56,7 +56,8 @@ static void field_json(codec_jw_t *w, uint8_t set, const codec_field_entry_t *e,
             n = sizeof msg - 1;
         }
     } else {
-        const char *text = st == CODEC_ERR_UNKNOWN_DESCRIPTOR ? "unknown descriptor" : "unknown descriptor set";
+        const char *text =
+            st == CODEC_ERR_UNKNOWN_DESCRIPTOR ? "unknown descriptor" : "unknown descriptor set";
         n = strlen(text);
         memcpy(msg, text, n + 1);
     }
@@ -67,8 +68,8 @@ static void field_json(codec_jw_t *w, uint8_t set, const codec_field_entry_t *e,
     codec_jw_lit(w, "}");
 }
 
-size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device, char *out,
-                                size_t cap) {
+size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device,
+                              char *out, size_t cap) {
     codec_jw_t w;
     codec_field_iter_t it;
     codec_field_entry_t e;
@@ -132,7 +133,8 @@ static int check_error_text(codec_jr_t *jr, size_t pos) {
 }
 
 /* A decoded field: find its layout from descriptor, name and device, then read its values. */
-static int decoded_field(codec_jr_t *jr, size_t pos, uint8_t set, uint8_t descriptor, codec_field_value_t *value) {
+static int decoded_field(codec_jr_t *jr, size_t pos, uint8_t set, uint8_t descriptor,
+                         codec_field_value_t *value) {
     codec_status_t why = CODEC_ERR_UNKNOWN_SET;
     const codec_field_info_t *f = codec_find_field(set, descriptor, &why);
     codec_field_id_t id;
@@ -140,8 +142,9 @@ static int decoded_field(codec_jr_t *jr, size_t pos, uint8_t set, uint8_t descri
     char text[CODEC_NAME_MAX]; /* longest field name or device id, and a NUL */
     size_t i;
     if (!f) {
-        return codec_jr_fail(jr, "descriptor %u in set %u is not defined (%s); write it as a raw field with \"data\"",
-                              (unsigned)descriptor, (unsigned)set, codec_status_text(why));
+        return codec_jr_fail(
+            jr, "descriptor %u in set %u is not defined (%s); write it as a raw field with \"data\"",
+            (unsigned)descriptor, (unsigned)set, codec_status_text(why));
     }
     if (codec_jr_get(jr, pos, "name", &vp) != 1) {
         return codec_jr_fail(jr, "missing \"name\"");
@@ -149,7 +152,8 @@ static int decoded_field(codec_jr_t *jr, size_t pos, uint8_t set, uint8_t descri
     codec_jr_push(jr, "name");
     if (codec_jr_chars(jr, vp, text, strlen(f->name)) || memcmp(text, f->name, strlen(f->name)) != 0) {
         jr->failed = false;
-        return codec_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set, f->name);
+        return codec_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set,
+                             f->name);
     }
     codec_jr_pop(jr);
     id = f->first_layout;
@@ -232,7 +236,8 @@ static int field_entry(codec_jr_t *jr, size_t pos, uint8_t set, codec_packet_bui
             }
             st = codec_encode_field(&value, data, CODEC_MAX_FIELD_DATA, &n);
             if (st == CODEC_ERR_BUFFER) {
-                return codec_jr_fail(jr, "the values need more than the %d bytes a field can carry", CODEC_MAX_FIELD_DATA);
+                return codec_jr_fail(jr, "the values need more than the %d bytes a field can carry",
+                                     CODEC_MAX_FIELD_DATA);
             }
             if (st != CODEC_OK) {
                 return codec_jr_fail(jr, "the values cannot be encoded (%s)", codec_status_text(st));
@@ -245,9 +250,9 @@ static int field_entry(codec_jr_t *jr, size_t pos, uint8_t set, codec_packet_bui
     }
     if (st == CODEC_ERR_INVALID) {
         /* a field whose size byte is irregular needs at least -adjust bytes of data */
-        return codec_jr_fail(jr, "field data of %u bytes is shorter than the minimum %d for descriptor %u of set %u",
-                               (unsigned)n, -codec_field_length_adjust(set, descriptor), (unsigned)descriptor,
-                               (unsigned)set);
+        return codec_jr_fail(
+            jr, "field data of %u bytes is shorter than the minimum %d for descriptor %u of set %u",
+            (unsigned)n, -codec_field_length_adjust(set, descriptor), (unsigned)descriptor, (unsigned)set);
     }
     if (st != CODEC_OK && st != CODEC_ERR_BUFFER) {
         return codec_jr_fail(jr, "%s", codec_status_text(st));
@@ -256,7 +261,7 @@ static int field_entry(codec_jr_t *jr, size_t pos, uint8_t set, codec_packet_bui
 }
 
 codec_status_t codec_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
-                                          char *msg, size_t msg_cap) {
+                                      char *msg, size_t msg_cap) {
     codec_jr_t jr;
     codec_packet_builder_t b;
     size_t pos;

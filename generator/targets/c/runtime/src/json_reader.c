@@ -33,7 +33,8 @@ int codec_jr_fail(codec_jr_t *jr, const char *fmt, ...) {
     for (i = 0; i < jr->depth && i < CODEC_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
         int n;
         if (jr->index[i] != SIZE_MAX) {
-            n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s[%zu]", i ? "." : "", jr->path[i], jr->index[i]);
+            n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s[%zu]", i ? "." : "", jr->path[i],
+                         jr->index[i]);
         } else {
             n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s", i ? "." : "", jr->path[i]);
         }
@@ -72,7 +73,8 @@ void codec_jr_pop(codec_jr_t *jr) {
 }
 
 size_t codec_jr_ws(const codec_jr_t *jr, size_t pos) {
-    while (pos < jr->len && (jr->s[pos] == ' ' || jr->s[pos] == '\t' || jr->s[pos] == '\r' || jr->s[pos] == '\n')) {
+    while (pos < jr->len &&
+           (jr->s[pos] == ' ' || jr->s[pos] == '\t' || jr->s[pos] == '\r' || jr->s[pos] == '\n')) {
         pos++;
     }
     return pos;
@@ -317,8 +319,8 @@ static unsigned string_char(const codec_jr_t *jr, size_t *i) {
         const char *at_e;
         if (u[1] == 'u') {
             *i += 6;
-            return (unsigned)(hex_value((char)u[2]) << 12 | hex_value((char)u[3]) << 8 | hex_value((char)u[4]) << 4 |
-                              hex_value((char)u[5]));
+            return (unsigned)(hex_value((char)u[2]) << 12 | hex_value((char)u[3]) << 8 |
+                              hex_value((char)u[4]) << 4 | hex_value((char)u[5]));
         }
         *i += 2;
         at_e = strchr(from, (char)u[1]);
@@ -353,7 +355,8 @@ static bool key_equals(const codec_jr_t *jr, size_t key_pos, size_t key_end, con
     return name[k] == '\0';
 }
 
-static size_t key_index(const codec_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys, size_t n) {
+static size_t key_index(const codec_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
+                        size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
         if (key_equals(jr, key_pos, key_end, keys[i])) {

@@ -174,7 +174,8 @@ static size_t scan(const uint8_t *data, size_t len, codec_parser_t *parser, code
     return pos;
 }
 
-void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, codec_event_fn fn, void *ctx) {
+void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, codec_event_fn fn,
+                       void *ctx) {
     while (len > 0) {
         size_t take;
         if (parser->used == 0) {

@@ -100,7 +100,7 @@ void codec_sample_tracker_init(codec_sample_tracker_t *tracker) {
 }
 
 bool codec_sample_tracker_feed(codec_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                                 codec_sample_info_t *info) {
+                               codec_sample_info_t *info) {
     uint8_t key[CODEC_SAMPLE_KEY_MAX];
     size_t key_len;
     size_t prefix = 0;

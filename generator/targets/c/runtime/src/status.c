@@ -62,8 +62,8 @@ size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, siz
     }
     switch (err->kind) {
     case CODEC_DECODE_NEEDS_BYTES:
-        snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need,
-                 err->offset, err->have);
+        snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need, err->offset,
+                 err->have);
         break;
     case CODEC_DECODE_COUNT:
         snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
@@ -73,8 +73,7 @@ size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, siz
                  err->offset, err->need);
         break;
     case CODEC_DECODE_BOOL:
-        snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value,
-                 err->offset);
+        snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value, err->offset);
         break;
     case CODEC_DECODE_SELECTOR:
         if (err->value_signed) {
@@ -85,8 +84,7 @@ size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, siz
         }
         break;
     case CODEC_DECODE_UNEXPECTED:
-        snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have,
-                 err->offset);
+        snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have, err->offset);
         break;
     case CODEC_DECODE_NONE:
     default:

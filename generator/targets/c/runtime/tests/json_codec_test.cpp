@@ -25,18 +25,21 @@ std::vector<uint8_t> wire(uint64_t v, size_t n) {
     return out;
 }
 
-}  // namespace
+} // namespace
 
 TEST(JsonCodec, DecodedFieldsAndDeviceVariantsRoundTrip) {
     const std::vector<uint8_t> ping = packet(0x01, {{0x01, {}}});
     const std::vector<uint8_t> alpha = packet(0x01, {{0x02, wire(500, 2)}});
     const std::vector<uint8_t> beta = packet(0x01, {{0x02, wire(70000, 4)}});
-    EXPECT_EQ(line_of(ping), "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
-    EXPECT_EQ(line_of(alpha), "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":"
-                              "\"alpha\",\"values\":{\"hz\":500}}]}\n");
+    EXPECT_EQ(line_of(ping),
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+    EXPECT_EQ(line_of(alpha),
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":"
+              "\"alpha\",\"values\":{\"hz\":500}}]}\n");
     // the first variant that decodes wins; a device chooses its own variant
-    EXPECT_EQ(line_of(beta), "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":"
-                             "\"beta\",\"values\":{\"hz\":70000}}]}\n");
+    EXPECT_EQ(line_of(beta),
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":"
+              "\"beta\",\"values\":{\"hz\":70000}}]}\n");
     EXPECT_NE(line_of(alpha, CODEC_DEVICE_BETA).find("\"error\":\"hz: needs 4 bytes at offset 0, 2 left\""),
               std::string::npos);
     for (const auto &pkt : {ping, alpha, beta}) {
@@ -49,8 +52,9 @@ TEST(JsonCodec, DecodedFieldsAndDeviceVariantsRoundTrip) {
 
 TEST(JsonCodec, UndecodableDataIsARawFieldWithTheFirstVariantsError) {
     const std::vector<uint8_t> pkt = packet(0x01, {{0x02, {1, 2, 3}}});
-    EXPECT_EQ(line_of(pkt), "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"010203\",\"error\":"
-                            "\"1 unexpected bytes at offset 2\"}]}\n");
+    EXPECT_EQ(line_of(pkt),
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"010203\",\"error\":"
+              "\"1 unexpected bytes at offset 2\"}]}\n");
     std::vector<uint8_t> back;
     std::string error;
     ASSERT_TRUE(encode_text(line_of(pkt), &back, &error)) << error;

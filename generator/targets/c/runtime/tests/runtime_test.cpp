@@ -18,7 +18,7 @@
 #include "codec/parser.h"
 #include "codec/samples.h"
 
-extern "C" {  // private headers of the runtime (C only)
+extern "C" { // private headers of the runtime (C only)
 #include "json_reader.h"
 #include "json_writer.h"
 #include "wire.h"
@@ -35,7 +35,8 @@ std::vector<uint8_t> concat(std::initializer_list<std::vector<uint8_t>> parts) {
 }
 
 // A packet of descriptor set `set` holding the given (descriptor, data) fields.
-std::vector<uint8_t> packet(uint8_t set, const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
+std::vector<uint8_t> packet(uint8_t set,
+                            const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
     std::vector<uint8_t> buf(CODEC_MAX_PACKET);
     codec_packet_builder_t b;
     codec_packet_begin(&b, buf.data(), buf.size(), set);
@@ -78,7 +79,7 @@ std::ostream &operator<<(std::ostream &os, const Event &e) {
 
 struct Collector {
     std::vector<Event> events;
-    std::vector<std::vector<uint8_t>> packets;  // the bytes of each packet event
+    std::vector<std::vector<uint8_t>> packets; // the bytes of each packet event
 };
 
 void collect(void *arg, const codec_event_t *ev) {
@@ -141,7 +142,7 @@ std::string format_double_bits(uint64_t bits) {
     return format_double(d);
 }
 
-}  // namespace
+} // namespace
 
 TEST(Protocol, TheTestProtocolIsConsistent) {
     const uint8_t sync[] = CODEC_SYNC_BYTES;
@@ -169,7 +170,8 @@ TEST(Checksum, Fletcher16) {
     EXPECT_TRUE(codec_checksum_matches(packet_bytes, sizeof bytes));
     for (size_t i = 0; i < CODEC_CHECKSUM_SIZE; i++) {
         packet_bytes[sizeof bytes + i] ^= 0x01;
-        EXPECT_FALSE(codec_checksum_matches(packet_bytes, sizeof bytes)) << "checksum byte " << i << " changed";
+        EXPECT_FALSE(codec_checksum_matches(packet_bytes, sizeof bytes))
+            << "checksum byte " << i << " changed";
         packet_bytes[sizeof bytes + i] ^= 0x01;
     }
 }
@@ -250,8 +252,8 @@ TEST(Parser, GarbageBeforeBetweenAndAfterIsIndependentOfChunking) {
     uint8_t g = garbage_byte();
     std::vector<uint8_t> p1 = packet(0x01, {{0x01, {}}});
     std::vector<uint8_t> p2 = packet(0x02, {{0x05, {9, 8, 7, 6}}});
-    std::vector<uint8_t> stream =
-        concat({std::vector<uint8_t>{g, g}, p1, std::vector<uint8_t>{g, g, g, g}, p2, std::vector<uint8_t>{g}});
+    std::vector<uint8_t> stream = concat(
+        {std::vector<uint8_t>{g, g}, p1, std::vector<uint8_t>{g, g, g, g}, p2, std::vector<uint8_t>{g}});
     std::vector<Event> want = {
         {CODEC_EVENT_SKIP, 0, 2},
         {CODEC_EVENT_PACKET, 2, p1.size()},
@@ -471,11 +473,10 @@ TEST(Wire, ValuesUseTheProtocolByteOrder) {
     ASSERT_EQ(codec_wr_s64(&w, &s64), CODEC_OK);
     ASSERT_EQ(codec_wr_f32(&w, &f32), CODEC_OK);
     ASSERT_EQ(codec_wr_f64(&w, &f64), CODEC_OK);
-    std::vector<uint8_t> want = concat({wire_bytes(u16, 2), wire_bytes(u32, 4), wire_bytes(u64, 8),
-                                        wire_bytes(static_cast<uint16_t>(s16), 2),
-                                        wire_bytes(static_cast<uint32_t>(s32), 4),
-                                        wire_bytes(static_cast<uint64_t>(s64), 8), wire_bytes(f32_bits, 4),
-                                        wire_bytes(f64_bits, 8)});
+    std::vector<uint8_t> want =
+        concat({wire_bytes(u16, 2), wire_bytes(u32, 4), wire_bytes(u64, 8),
+                wire_bytes(static_cast<uint16_t>(s16), 2), wire_bytes(static_cast<uint32_t>(s32), 4),
+                wire_bytes(static_cast<uint64_t>(s64), 8), wire_bytes(f32_bits, 4), wire_bytes(f64_bits, 8)});
     ASSERT_EQ(std::vector<uint8_t>(buf, buf + w.len), want);
 #if CODEC_LITTLE_ENDIAN
     EXPECT_EQ(buf[0], 0x34);
@@ -606,7 +607,8 @@ TEST(Json, Strings) {
 }
 
 TEST(JsonReader, ValuesAndRangeErrors) {
-    const std::string line = "{\"small\": 255, \"big\": 256, \"neg\": -129, \"hex\": \"0aFf\", \"list\": [1, 2]}";
+    const std::string line =
+        "{\"small\": 255, \"big\": 256, \"neg\": -129, \"hex\": \"0aFf\", \"list\": [1, 2]}";
     const char *const keys[] = {"small", "big", "neg", "hex", "list"};
     char msg[256] = "";
     codec_jr_t jr;
@@ -681,8 +683,9 @@ static std::vector<uint8_t> stamped(uint8_t stamp, bool key, uint8_t descriptor)
 
 TEST(Samples, TrackerNumbersContinuationPackets) {
     static const uint8_t k_stamp_size[] = CODEC_SAMPLE_STAMP_SIZES;
-    const std::vector<std::vector<uint8_t>> packets = {stamped(1, true, 1), stamped(1, true, 2), stamped(2, true, 3),
-                                                       stamped(0, false, 4), stamped(0, false, 5)};
+    const std::vector<std::vector<uint8_t>> packets = {stamped(1, true, 1), stamped(1, true, 2),
+                                                       stamped(2, true, 3), stamped(0, false, 4),
+                                                       stamped(0, false, 5)};
     const uint64_t want_number[] = {0, 0, 1, 2, 3};
     const bool want_continues[] = {false, true, false, false, false};
     codec_sample_tracker_t tracker;
@@ -715,7 +718,7 @@ TEST(Samples, WithoutDataSetsNoPacketIsASample) {
         uint8_t key[CODEC_SAMPLE_KEY_MAX];
         size_t prefix = 99;
         EXPECT_EQ(codec_sample_key(pkt.data(), pkt.size(), key, &prefix), 0u);
-        EXPECT_EQ(prefix, 0u);  // no descriptor is shared
+        EXPECT_EQ(prefix, 0u); // no descriptor is shared
     }
 }
 #endif

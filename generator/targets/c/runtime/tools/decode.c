@@ -31,10 +31,11 @@ static int grow(decode_ctx_t *ctx, size_t need) {
 /* The line of an event into ctx->line; returns its full length. */
 static size_t format(decode_ctx_t *ctx, const codec_event_t *ev) {
     if (ev->kind == CODEC_EVENT_SKIP) {
-        return codec_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length, ctx->line,
-                                     ctx->line_cap);
+        return codec_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length,
+                                    ctx->line, ctx->line_cap);
     }
-    return codec_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line, ctx->line_cap);
+    return codec_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
+                                  ctx->line_cap);
 }
 
 static void on_event(void *arg, const codec_event_t *ev) {

@@ -26,7 +26,8 @@ int main(int argc, char **argv) {
             fputs("usage: codec-encode < JSON-LINES > BYTES\n", stdout);
             return 0;
         }
-        fprintf(stderr, "codec-encode: unexpected argument %s\nusage: codec-encode < JSON-LINES > BYTES\n", argv[1]);
+        fprintf(stderr, "codec-encode: unexpected argument %s\nusage: codec-encode < JSON-LINES > BYTES\n",
+                argv[1]);
         return 2;
     }
     input = read_all(stdin, &len);

@@ -9,24 +9,26 @@ extern "C" {
 #endif
 
 typedef enum {
-    CODEC_ENTRY_FIELD = 1,    /* a complete field */
-    CODEC_ENTRY_TRAILING = 2  /* the rest of the payload, which is not a complete field */
+    CODEC_ENTRY_FIELD = 1,   /* a complete field */
+    CODEC_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
 } codec_entry_kind_t;
 
 typedef enum {
-    CODEC_TRAILING_SHORT_HEADER = 1,  /* field header at payload offset {offset} needs N bytes, {left} left */
-    CODEC_TRAILING_SHORT_LENGTH = 2,  /* field length {length} at payload offset {offset} is shorter than the field header */
-    CODEC_TRAILING_OVERRUN = 3        /* field length {length} at payload offset {offset} overruns the payload ({left} bytes left) */
+    CODEC_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
+    CODEC_TRAILING_SHORT_LENGTH =
+        2, /* field length {length} at payload offset {offset} is shorter than the field header */
+    CODEC_TRAILING_OVERRUN =
+        3 /* field length {length} at payload offset {offset} overruns the payload ({left} bytes left) */
 } codec_trailing_kind_t;
 
 typedef struct {
     codec_entry_kind_t kind;
-    size_t offset;          /* payload offset of the field header / trailing bytes */
-    uint8_t descriptor;     /* fields */
-    const uint8_t *data;    /* field data (after the header), or the trailing bytes */
-    size_t length;          /* bytes at data */
-    codec_trailing_kind_t trailing;  /* trailing entries: why */
-    uint8_t length_byte;    /* trailing entries: the field length byte as sent */
+    size_t offset;                  /* payload offset of the field header / trailing bytes */
+    uint8_t descriptor;             /* fields */
+    const uint8_t *data;            /* field data (after the header), or the trailing bytes */
+    size_t length;                  /* bytes at data */
+    codec_trailing_kind_t trailing; /* trailing entries: why */
+    uint8_t length_byte;            /* trailing entries: the field length byte as sent */
 } codec_field_entry_t;
 
 typedef struct {
@@ -43,7 +45,8 @@ bool codec_field_iter_trailing_(codec_field_iter_t *it, codec_field_entry_t *ent
 /* init and next are inline: a decode loop calls next for every field, and inline the iterator
  * and the entry stay in registers. */
 /** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths). */
-static inline void codec_field_iter_init(codec_field_iter_t *it, uint8_t set, const uint8_t *payload, size_t len) {
+static inline void codec_field_iter_init(codec_field_iter_t *it, uint8_t set, const uint8_t *payload,
+                                         size_t len) {
     it->set = set;
     it->payload = payload;
     it->len = payload ? len : 0;
@@ -66,7 +69,8 @@ static inline bool codec_field_iter_next(codec_field_iter_t *it, codec_field_ent
     data_len = (int)head[CODEC_FIELD_LENGTH_OFFSET] -
                codec_field_length_adjust(it->set, head[CODEC_FIELD_DESCRIPTOR_OFFSET]);
     if (data_len < 0) {
-        return codec_field_iter_trailing_(it, entry, head[CODEC_FIELD_LENGTH_OFFSET], CODEC_TRAILING_SHORT_LENGTH);
+        return codec_field_iter_trailing_(it, entry, head[CODEC_FIELD_LENGTH_OFFSET],
+                                          CODEC_TRAILING_SHORT_LENGTH);
     }
     total = CODEC_FIELD_HEADER_SIZE + (size_t)data_len;
     if (total > left) {

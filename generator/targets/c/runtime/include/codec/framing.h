@@ -55,7 +55,7 @@ typedef struct {
 void codec_packet_begin(codec_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
 /** Appends a field: header (descriptor, length) and data_len bytes of data. */
 codec_status_t codec_packet_add_field(codec_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                          size_t data_len);
+                                      size_t data_len);
 /** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
 codec_status_t codec_packet_add_raw(codec_packet_builder_t *b, const uint8_t *bytes, size_t len);
 /** Writes the payload length and checksum; *len_out receives the packet size. */

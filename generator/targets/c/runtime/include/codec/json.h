@@ -29,8 +29,8 @@ size_t codec_json_format_string(const char *bytes, size_t n, char *buf, size_t c
  * The JSON line (without newline) of a packet the parser reported: every field decoded, or
  * raw with its error, trailing bytes last. Returns the full length, like snprintf.
  */
-size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device, char *out,
-                                size_t cap);
+size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device,
+                              char *out, size_t cap);
 /** The JSON line (without newline) of a skip run. Returns the full length, like snprintf. */
 size_t codec_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
 
@@ -40,7 +40,7 @@ size_t codec_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, cha
  * Returns CODEC_OK, CODEC_ERR_BUFFER (out too small) or CODEC_ERR_JSON with a message in msg.
  */
 codec_status_t codec_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
-                                          char *msg, size_t msg_cap);
+                                      char *msg, size_t msg_cap);
 
 #ifdef __cplusplus
 }

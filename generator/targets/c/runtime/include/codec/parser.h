@@ -15,9 +15,9 @@ typedef enum {
 
 typedef struct {
     codec_event_kind_t kind;
-    uint64_t offset;        /* stream offset of the packet or of the first skipped byte */
-    uint64_t length;        /* packet size, or number of skipped bytes */
-    const uint8_t *packet;  /* the packet bytes (valid during the callback); NULL for skips */
+    uint64_t offset;       /* stream offset of the packet or of the first skipped byte */
+    uint64_t length;       /* packet size, or number of skipped bytes */
+    const uint8_t *packet; /* the packet bytes (valid during the callback); NULL for skips */
 } codec_event_t;
 
 typedef void (*codec_event_fn)(void *ctx, const codec_event_t *event);

@@ -10,16 +10,16 @@ extern "C" {
 #endif
 
 typedef struct {
-    uint64_t number;      /* sample number of the last packet of this set */
-    uint8_t key_len;      /* 0: that packet had no key */
-    uint8_t used;         /* a packet of this set was seen */
+    uint64_t number; /* sample number of the last packet of this set */
+    uint8_t key_len; /* 0: that packet had no key */
+    uint8_t used;    /* a packet of this set was seen */
     uint8_t key[CODEC_SAMPLE_KEY_MAX];
 } codec_sample_slot_t;
 
 /** Fixed-size state (no allocation): the key and sample number of the last packet of each set. */
 typedef struct {
     codec_sample_slot_t slots[CODEC_SAMPLE_SETS];
-    uint64_t next;        /* number of the next new sample */
+    uint64_t next; /* number of the next new sample */
 } codec_sample_tracker_t;
 
 typedef struct {
@@ -34,7 +34,7 @@ void codec_sample_tracker_init(codec_sample_tracker_t *tracker);
  * packet of a data set; false for other packets (command sets, unknown sets, a malformed buffer).
  */
 bool codec_sample_tracker_feed(codec_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                                 codec_sample_info_t *info);
+                               codec_sample_info_t *info);
 /**
  * The key of a complete packet into key[CODEC_SAMPLE_KEY_MAX]; returns its length (0: no key).
  * *shared_prefix (if not NULL) receives the payload bytes of the leading shared run.

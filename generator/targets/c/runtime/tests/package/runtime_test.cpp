@@ -30,7 +30,7 @@ bool unknown_field(uint8_t *set, uint8_t *descriptor, codec_status_t want) {
     return false;
 }
 
-}  // namespace
+} // namespace
 
 TEST(Parser, JsonLinesAreIndependentOfChunking) {
     uint8_t g = garbage_byte();
@@ -58,15 +58,16 @@ TEST(Dispatch, UnknownSetAndDescriptorBecomeRawFields) {
     uint8_t descriptor = 0;
     if (unknown_field(&set, &descriptor, CODEC_ERR_UNKNOWN_SET)) {
         std::vector<uint8_t> pkt = packet(set, {{descriptor, {0x3e, 0x7a}}});
-        EXPECT_EQ(decode_text(pkt, 0), "{\"offset\":0,\"set\":" + std::to_string(set) + ",\"fields\":[{\"descriptor\":" +
-                                           std::to_string(descriptor) +
+        EXPECT_EQ(decode_text(pkt, 0), "{\"offset\":0,\"set\":" + std::to_string(set) +
+                                           ",\"fields\":[{\"descriptor\":" + std::to_string(descriptor) +
                                            ",\"data\":\"3e7a\",\"error\":\"unknown descriptor set\"}]}\n");
     }
     if (unknown_field(&set, &descriptor, CODEC_ERR_UNKNOWN_DESCRIPTOR)) {
         std::vector<uint8_t> pkt = packet(set, {{descriptor, {}}});
         std::string text = decode_text(pkt, 0);
-        EXPECT_EQ(text, "{\"offset\":0,\"set\":" + std::to_string(set) + ",\"fields\":[{\"descriptor\":" +
-                            std::to_string(descriptor) + ",\"data\":\"\",\"error\":\"unknown descriptor\"}]}\n");
+        EXPECT_EQ(text, "{\"offset\":0,\"set\":" + std::to_string(set) +
+                            ",\"fields\":[{\"descriptor\":" + std::to_string(descriptor) +
+                            ",\"data\":\"\",\"error\":\"unknown descriptor\"}]}\n");
         std::vector<uint8_t> back;
         std::string error;
         ASSERT_TRUE(encode_text(text, &back, &error)) << error;
@@ -89,12 +90,14 @@ TEST(Json, EncodeLineErrors) {
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"data\":\"01\",\"error\":\"x\"},]}",
     };
     for (const char *line : bad) {
-        EXPECT_EQ(codec_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg), CODEC_ERR_JSON)
+        EXPECT_EQ(codec_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg),
+                  CODEC_ERR_JSON)
             << line;
         EXPECT_NE(msg[0], '\0') << line;
     }
     const char *skip = " {\"skipped\":\"A5ff75\", \"offset\": 12} ";
-    ASSERT_EQ(codec_json_encode_line(skip, std::strlen(skip), out, sizeof out, &n, msg, sizeof msg), CODEC_OK) << msg;
+    ASSERT_EQ(codec_json_encode_line(skip, std::strlen(skip), out, sizeof out, &n, msg, sizeof msg), CODEC_OK)
+        << msg;
     ASSERT_EQ(n, 3u);
     EXPECT_EQ(out[0], 0xA5);
     EXPECT_EQ(out[2], 0x75);
@@ -102,12 +105,14 @@ TEST(Json, EncodeLineErrors) {
 }
 
 TEST(Json, RawAndTrailingEntriesRoundTrip) {
-    const char *line = "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":200,\"data\":\"0102\",\"error\":\"e\"},"
-                       "{\"trailing\":\"09\",\"error\":\"e\"}]}";
+    const char *line =
+        "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":200,\"data\":\"0102\",\"error\":\"e\"},"
+        "{\"trailing\":\"09\",\"error\":\"e\"}]}";
     uint8_t out[CODEC_MAX_PACKET];
     char msg[512];
     size_t n = 0;
-    ASSERT_EQ(codec_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg), CODEC_OK) << msg;
+    ASSERT_EQ(codec_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg), CODEC_OK)
+        << msg;
     ASSERT_EQ(n, CODEC_HEADER_SIZE + CODEC_FIELD_HEADER_SIZE + 2u + 1u + CODEC_CHECKSUM_SIZE);
     EXPECT_TRUE(codec_packet_valid(out, n));
     const uint8_t *payload = codec_packet_payload(out);

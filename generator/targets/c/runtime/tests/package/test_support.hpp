@@ -52,11 +52,11 @@ inline void collect(void *arg, const codec_event_t *ev) {
     size_t n;
     for (;;) {
         if (ev->kind == CODEC_EVENT_SKIP) {
-            n = codec_json_skip_line(ev->offset, c->input->data() + ev->offset, static_cast<size_t>(ev->length),
-                                      &line[0], line.size());
+            n = codec_json_skip_line(ev->offset, c->input->data() + ev->offset,
+                                     static_cast<size_t>(ev->length), &line[0], line.size());
         } else {
-            n = codec_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device, &line[0],
-                                        line.size());
+            n = codec_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device,
+                                       &line[0], line.size());
         }
         if (n < line.size()) {
             break;
@@ -68,7 +68,8 @@ inline void collect(void *arg, const codec_event_t *ev) {
 }
 
 // Feeds the bytes in chunks of `chunk` bytes (0: all at once); returns the JSON lines.
-inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk, codec_device_t device = CODEC_DEVICE_ANY) {
+inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk,
+                        codec_device_t device = CODEC_DEVICE_ANY) {
     Collector c;
     c.input = &bytes;
     c.device = device;
@@ -107,7 +108,8 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
         std::vector<uint8_t> buf(line.size() / 2 + CODEC_MAX_PACKET);
         char msg[512];
         size_t n = 0;
-        codec_status_t st = codec_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
+        codec_status_t st =
+            codec_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
         if (st != CODEC_OK) {
             *error = msg;
             return false;
@@ -118,7 +120,8 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
 }
 
 // A packet of descriptor set `set` holding the given (descriptor, data) fields.
-inline std::vector<uint8_t> packet(uint8_t set, const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
+inline std::vector<uint8_t> packet(uint8_t set,
+                                   const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
     std::vector<uint8_t> buf(CODEC_MAX_PACKET);
     codec_packet_builder_t b;
     codec_packet_begin(&b, buf.data(), buf.size(), set);
@@ -146,4 +149,4 @@ inline uint8_t garbage_byte() {
     }
 }
 
-}  // namespace test_support
+} // namespace test_support

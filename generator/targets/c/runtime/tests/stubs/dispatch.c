@@ -74,7 +74,8 @@ static int decode_layout(codec_field_id_t id, const uint8_t *data, size_t len, c
 }
 
 codec_status_t codec_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
-                                  codec_device_t device, codec_field_value_t *out, codec_decode_error_t *err) {
+                                  codec_device_t device, codec_field_value_t *out,
+                                  codec_decode_error_t *err) {
     codec_status_t why = CODEC_OK;
     const codec_field_info_t *f = codec_find_field(set, descriptor, &why);
     codec_decode_error_t first;
@@ -99,7 +100,8 @@ codec_status_t codec_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
     return CODEC_ERR_DECODE;
 }
 
-codec_status_t codec_encode_field(const codec_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+codec_status_t codec_encode_field(const codec_field_value_t *value, uint8_t *buf, size_t cap,
+                                  size_t *len_out) {
     codec_writer_t w;
     codec_status_t st = CODEC_OK;
     codec_writer_init(&w, buf, cap);

@@ -13,11 +13,7 @@
 extern "C" {
 #endif
 
-typedef enum {
-    CODEC_DEVICE_ANY = 0,
-    CODEC_DEVICE_ALPHA = 1,
-    CODEC_DEVICE_BETA = 2
-} codec_device_t;
+typedef enum { CODEC_DEVICE_ANY = 0, CODEC_DEVICE_ALPHA = 1, CODEC_DEVICE_BETA = 2 } codec_device_t;
 
 const char *codec_device_id(codec_device_t device);
 bool codec_device_from_id(const char *id, codec_device_t *out);
@@ -56,7 +52,8 @@ const codec_layout_info_t *codec_layout_info(codec_field_id_t id);
 const codec_field_info_t *codec_find_field(uint8_t set, uint8_t descriptor, codec_status_t *why);
 codec_status_t codec_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                                   codec_device_t device, codec_field_value_t *out, codec_decode_error_t *err);
-codec_status_t codec_encode_field(const codec_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out);
+codec_status_t codec_encode_field(const codec_field_value_t *value, uint8_t *buf, size_t cap,
+                                  size_t *len_out);
 
 #ifdef __cplusplus
 }
