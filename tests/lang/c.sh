@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Build, test and run the generated C packages (generated/c/<package>/ -> build/c/<package>/).
 #   tests/lang/c.sh build                         configure and build every package
-#   tests/lang/c.sh test                          build, then run each package's googletest binary
+#   tests/lang/c.sh test                          the runtime's own tests in place, then build every
+#                                                 package and run its googletest binary
 #   tests/lang/c.sh decode FILE|- [--device ID]   run <package>-decode (builds first if needed)
 #   tests/lang/c.sh encode                        run <package>-encode: JSON lines on stdin -> bytes
 #   tests/lang/c.sh example FILE                  run <package>-getting-started FILE (builds first if needed)
@@ -34,6 +35,23 @@ ensure_built() {
         return
     fi
     build_one "$PACKAGE"
+}
+
+# The runtime's own tests, built in place from generator/targets/c/runtime/ (no regeneration):
+# its formatting checked, then one googletest binary per hand-written test protocol (big- and
+# little-endian).
+runtime_tests() {
+    local runtime="$ROOT/generator/targets/c/runtime" out="$ROOT/build/c-runtime" variant
+    local src="$runtime/tests" format="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}"
+    find "$runtime" -name '*.[ch]' -o -name '*.[ch]pp' | sort |
+        xargs "$format" --style="file:$ROOT/.clang-format" --dry-run -Werror
+    if [ ! -f "$out/build.ninja" ]; then
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug >&2
+    fi
+    cmake --build "$out" >&2
+    for variant in big_endian little_endian; do
+        "$out/runtime_tests_$variant" --gtest_brief=1
+    done
 }
 
 # The same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails),
@@ -88,6 +106,7 @@ build)
     for pkg in $(packages); do build_one "$pkg"; done
     ;;
 test)
+    runtime_tests
     for pkg in $(packages); do
         build_one "$pkg"
         # The library never allocates: no allocator symbol may be referenced by it.

@@ -1,8 +1,8 @@
 """C back end: one C99 library per protocol at generated/c/<package>/ (see docs/design.md).
 
 All naming and type mapping happens here; the templates in templates/c/ only loop and print.
-The runtime (parser, checksum, JSON) is spec-independent template code rendered with the
-framing constants of the protocol.
+The runtime (parser, checksum, JSON) is plain C in generator/targets/c/runtime/, copied into each
+package with its symbol prefix; its only protocol input is the generated include/<pkg>/protocol.h.
 """
 
 from __future__ import annotations
@@ -13,59 +13,45 @@ from generator import model
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.primitives import PRIMITIVES
-from generator.render import environment
+from generator.render import copy_runtime, environment
+
+from .facts import KEYWORDS as _KEYWORDS
+from .facts import PRIMITIVE_TYPES as _PRIM
 
 OUTPUT_DIRS = ["c"]
 
-# C99 and C++ keywords (the headers are also compiled as C++ by the tests) and names the
-# generated code uses itself.
-_KEYWORDS = set(
-    """
-auto break case char const continue default do double else enum extern float for goto if inline int long
-register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while
-_Bool _Complex _Imaginary bool true false alignas alignof and and_eq asm bitand bitor catch class compl
-const_cast constexpr decltype delete dynamic_cast explicit export friend mutable namespace new noexcept not
-not_eq nullptr operator or or_eq private protected public reinterpret_cast static_assert static_cast
-template this thread_local throw try typeid typename using virtual wchar_t xor xor_eq char16_t char32_t
-""".split()
-)
-
-# wire primitive -> (C type, suffix of the runtime functions rd_/wr_/jw_/jr_)
-_PRIM = {
-    "bool": ("bool", "bool"),
-    "char": ("char", "char"),
-    "u8": ("uint8_t", "u8"),
-    "u16": ("uint16_t", "u16"),
-    "u32": ("uint32_t", "u32"),
-    "u64": ("uint64_t", "u64"),
-    "s8": ("int8_t", "s8"),
-    "s16": ("int16_t", "s16"),
-    "s32": ("int32_t", "s32"),
-    "s64": ("int64_t", "s64"),
-    "float": ("float", "f32"),
-    "double": ("double", "f64"),
+# The runtime: plain C in generator/targets/c/runtime/, written with the neutral prefix codec_/CODEC_,
+# package name codec and include directory codec/ (so that it compiles and is tested in place)
+# -> generated file, where "codec/" becomes the package's include directory.
+_RUNTIME_FILES = {
+    "include/codec/status.h": "include/codec/status.h",
+    "src/status.c": "src/status.c",
+    "include/codec/framing.h": "include/codec/framing.h",
+    "src/framing.c": "src/framing.c",
+    "include/codec/parser.h": "include/codec/parser.h",
+    "src/parser.c": "src/parser.c",
+    "include/codec/field_iter.h": "include/codec/field_iter.h",
+    "src/field_iter.c": "src/field_iter.c",
+    "include/codec/samples.h": "include/codec/samples.h",
+    "src/samples.c": "src/samples.c",
+    "src/wire.h": "src/wire.h",
+    "src/wire.c": "src/wire.c",
+    "src/json_writer.h": "src/json_writer.h",
+    "src/json_writer.c": "src/json_writer.c",
+    "src/json_reader.h": "src/json_reader.h",
+    "src/json_reader.c": "src/json_reader.c",
+    "include/codec/json.h": "include/codec/json.h",
+    "src/json_codec.c": "src/json_codec.c",
+    "tools/decode.c": "tools/decode.c",
+    "tools/encode.c": "tools/encode.c",
+    "tools/read_all.h": "tools/read_all.h",
+    "tests/package/test_support.hpp": "tests/test_support.hpp",
+    "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
 }
 
-# Runtime template -> generated file (relative to the package directory).
-_RUNTIME = {
-    "runtime/status.h.j2": "include/{pkg}/status.h",
-    "runtime/status.c.j2": "src/status.c",
-    "runtime/framing.h.j2": "include/{pkg}/framing.h",
-    "runtime/framing.c.j2": "src/framing.c",
-    "runtime/parser.h.j2": "include/{pkg}/parser.h",
-    "runtime/parser.c.j2": "src/parser.c",
-    "runtime/field_iter.h.j2": "include/{pkg}/field_iter.h",
-    "runtime/field_iter.c.j2": "src/field_iter.c",
-    "runtime/samples.h.j2": "include/{pkg}/samples.h",
-    "runtime/samples.c.j2": "src/samples.c",
-    "runtime/wire.h.j2": "src/wire.h",
-    "runtime/wire.c.j2": "src/wire.c",
-    "runtime/json_writer.h.j2": "src/json_writer.h",
-    "runtime/json_writer.c.j2": "src/json_writer.c",
-    "runtime/json_reader.h.j2": "src/json_reader.h",
-    "runtime/json_reader.c.j2": "src/json_reader.c",
-    "json.h.j2": "include/{pkg}/json.h",
-    "json_codec.c.j2": "src/json_codec.c",
+# Template -> generated file (relative to the package directory): what varies with the spec.
+_TEMPLATES = {
+    "protocol.h.j2": "include/{pkg}/protocol.h",
     "types.h.j2": "include/{pkg}/types.h",
     "types_internal.h.j2": "src/types_internal.h",
     "types.c.j2": "src/types.c",
@@ -75,12 +61,7 @@ _RUNTIME = {
     "umbrella.h.j2": "include/{pkg}/{pkg}.h",
     "CMakeLists.txt.j2": "CMakeLists.txt",
     "README.md.j2": "README.md",
-    "tools/decode.c.j2": "tools/decode.c",
-    "tools/encode.c.j2": "tools/encode.c",
-    "tools/read_all.h.j2": "tools/read_all.h",
     "examples/getting_started.c.j2": "examples/getting_started.c",
-    "tests/test_support.hpp.j2": "tests/test_support.hpp",
-    "tests/runtime_test.cpp.j2": "tests/runtime_test.cpp",
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
 }
 
@@ -546,6 +527,7 @@ class _Package:
             "p": self.p,
             "P": self.P,
             "pkg": self.pkg,
+            "byte_order": self.proto["byte_order"],
             "title": self.proto["title"],
             "protocol": self.proto["name"],
             "framing": self.framing,
@@ -567,6 +549,21 @@ class _Package:
         }
 
 
+def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
+    """The replacements that turn the runtime's neutral names into a package's: symbols codec_ and
+    CODEC_, program names codec-decode/codec-encode, include directory codec/. In this order no
+    replacement matches the text an earlier one wrote (a prefix is [a-z0-9_]: its lower case has
+    no '-' or '/', its upper case no lower-case letter; a package name has no '/').
+    tests/generator/test_c_runtime.py checks that the runtime writes the tokens only at the start
+    of a word, so that no other text changes."""
+    return [
+        ("codec_", f"{prefix}_"),
+        ("CODEC_", f"{prefix.upper()}_"),
+        ("codec-", f"{package}-"),
+        ("codec/", f"{package}/"),
+    ]
+
+
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
     env = environment()
     out: dict[str, str] = {}
@@ -574,7 +571,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         pkg = _Package(proto, vectors)
         ctx = pkg.context()
         root = f"c/{pkg.pkg}/"
-        for tpl, path in _RUNTIME.items():
+        runtime = {src: root + dest.replace("codec/", f"{pkg.pkg}/") for src, dest in _RUNTIME_FILES.items()}
+        out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
+        for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
         for s in pkg.sets:
             out[root + f"include/{s['header']}"] = env.get_template("c/set.h.j2").render(ctx, set=s)

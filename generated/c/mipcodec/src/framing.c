@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-const uint8_t mip_sync[MIP_SYNC_SIZE] = {0x75, 0x65};
+const uint8_t mip_sync[MIP_SYNC_SIZE] = MIP_SYNC_BYTES;
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
  * load on little-endian hosts). */
@@ -67,7 +67,11 @@ uint16_t mip_checksum_word(const uint8_t *bytes, size_t len) {
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
+#if MIP_CHECKSUM_SUM1_FIRST
     return (uint16_t)(sum1 << 8 | sum2);
+#else
+    return (uint16_t)(sum2 << 8 | sum1);
+#endif
 }
 
 void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]) {

@@ -138,7 +138,7 @@ static int decoded_field(mip_jr_t *jr, size_t pos, uint8_t set, uint8_t descript
     const mip_field_info_t *f = mip_find_field(set, descriptor, &why);
     mip_field_id_t id;
     size_t vp;
-    char text[48]; /* longest field name or device id, and a NUL */
+    char text[MIP_NAME_MAX]; /* longest field name or device id, and a NUL */
     size_t i;
     if (!f) {
         return mip_jr_fail(

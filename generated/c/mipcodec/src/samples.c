@@ -6,22 +6,36 @@
 
 #include "mipcodec/field_iter.h"
 
-static const uint8_t k_data_sets[MIP_SAMPLE_SETS] = {0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0};
-#define TIMESTAMPS 3
-static const uint8_t k_stamp_descriptor[TIMESTAMPS] = {0xD3, 0xD5, 0xD7};
-static const uint8_t k_stamp_size[TIMESTAMPS] = {12, 8, 10};
+/* The protocol's rule (protocol.h). A protocol without data sets or timestamps still gets
+ * one-element arrays (C has no empty ones); the #if blocks below leave them unused. */
+static const uint8_t k_data_sets[MIP_SAMPLE_SETS] = MIP_SAMPLE_DATA_SETS;
+#define TIMESTAMPS MIP_SAMPLE_TIMESTAMPS
+#if TIMESTAMPS > 0
+static const uint8_t k_stamp_descriptor[TIMESTAMPS] = MIP_SAMPLE_STAMP_DESCRIPTORS;
+static const uint8_t k_stamp_size[TIMESTAMPS] = MIP_SAMPLE_STAMP_SIZES;
+#endif
 
 static bool is_shared(uint8_t descriptor) {
-    return descriptor >= 0xD0;
+#if MIP_SAMPLE_FIRST_SHARED < 256
+    return descriptor >= MIP_SAMPLE_FIRST_SHARED;
+#else
+    (void)descriptor;
+    return false;
+#endif
 }
 
 static int slot_of(uint8_t set) {
+#if MIP_SAMPLE_DATA_SET_COUNT > 0
     int i;
     for (i = 0; i < MIP_SAMPLE_SETS; i++) {
         if (k_data_sets[i] == set) {
             return i;
         }
     }
+#else
+    (void)set;
+    (void)k_data_sets;
+#endif
     return -1;
 }
 
@@ -46,7 +60,9 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     size_t key_len = 0;
     size_t prefix = 0;
     const uint8_t *payload = payload_of(packet, len, &plen);
+#if TIMESTAMPS > 0
     bool seen[TIMESTAMPS] = {false};
+#endif
     if (shared_prefix) {
         *shared_prefix = 0;
     }
@@ -55,6 +71,7 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     }
     mip_field_iter_init(&it, mip_packet_set(packet), payload, plen);
     while (mip_field_iter_next(&it, &e) && e.kind == MIP_ENTRY_FIELD && is_shared(e.descriptor)) {
+#if TIMESTAMPS > 0
         int t;
         for (t = 0; t < TIMESTAMPS; t++) {
             if (k_stamp_descriptor[t] == e.descriptor && k_stamp_size[t] == e.length && !seen[t]) {
@@ -67,6 +84,9 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
                 break;
             }
         }
+#else
+        (void)key;
+#endif
         prefix = e.offset + MIP_FIELD_HEADER_SIZE + e.length;
     }
     if (shared_prefix) {

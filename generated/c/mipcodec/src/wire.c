@@ -1,4 +1,5 @@
-/* Bounds-checked big-endian reader and writer. Generated: do not edit. */
+/* Bounds-checked reader and writer in the protocol's byte order (MIP_LITTLE_ENDIAN).
+ * Generated: do not edit. */
 #include "wire.h"
 
 #include <string.h>
@@ -59,11 +60,16 @@ static int need(mip_reader_t *r, size_t n) {
     return -1;
 }
 
-static uint64_t get_be(mip_reader_t *r, size_t n) {
+/* An n-byte unsigned value in the protocol's byte order. */
+static uint64_t get_uint(mip_reader_t *r, size_t n) {
     uint64_t v = 0;
     size_t i;
     for (i = 0; i < n; i++) {
+#if MIP_LITTLE_ENDIAN
+        v |= (uint64_t)r->data[r->pos + i] << (8 * i);
+#else
         v = (v << 8) | (uint64_t)r->data[r->pos + i];
+#endif
     }
     r->pos += n;
     return v;
@@ -106,7 +112,7 @@ int mip_rd_u8(mip_reader_t *r, uint8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
-    *out = (uint8_t)get_be(r, 1);
+    *out = (uint8_t)get_uint(r, 1);
     return 0;
 }
 
@@ -114,7 +120,7 @@ int mip_rd_u16(mip_reader_t *r, uint16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
-    *out = (uint16_t)get_be(r, 2);
+    *out = (uint16_t)get_uint(r, 2);
     return 0;
 }
 
@@ -122,7 +128,7 @@ int mip_rd_u32(mip_reader_t *r, uint32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
-    *out = (uint32_t)get_be(r, 4);
+    *out = (uint32_t)get_uint(r, 4);
     return 0;
 }
 
@@ -130,7 +136,7 @@ int mip_rd_u64(mip_reader_t *r, uint64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
-    *out = get_be(r, 8);
+    *out = get_uint(r, 8);
     return 0;
 }
 
@@ -138,7 +144,7 @@ int mip_rd_s8(mip_reader_t *r, int8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
-    *out = (int8_t)to_signed(get_be(r, 1), 8);
+    *out = (int8_t)to_signed(get_uint(r, 1), 8);
     return 0;
 }
 
@@ -146,7 +152,7 @@ int mip_rd_s16(mip_reader_t *r, int16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
-    *out = (int16_t)to_signed(get_be(r, 2), 16);
+    *out = (int16_t)to_signed(get_uint(r, 2), 16);
     return 0;
 }
 
@@ -154,7 +160,7 @@ int mip_rd_s32(mip_reader_t *r, int32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
-    *out = (int32_t)to_signed(get_be(r, 4), 32);
+    *out = (int32_t)to_signed(get_uint(r, 4), 32);
     return 0;
 }
 
@@ -162,7 +168,7 @@ int mip_rd_s64(mip_reader_t *r, int64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
-    *out = to_signed(get_be(r, 8), 64);
+    *out = to_signed(get_uint(r, 8), 64);
     return 0;
 }
 
@@ -171,7 +177,7 @@ int mip_rd_f32(mip_reader_t *r, float *out) {
     if (need(r, 4)) {
         return -1;
     }
-    bits = (uint32_t)get_be(r, 4);
+    bits = (uint32_t)get_uint(r, 4);
     memcpy(out, &bits, sizeof bits);
     return 0;
 }
@@ -181,7 +187,7 @@ int mip_rd_f64(mip_reader_t *r, double *out) {
     if (need(r, 8)) {
         return -1;
     }
-    bits = get_be(r, 8);
+    bits = get_uint(r, 8);
     memcpy(out, &bits, sizeof bits);
     return 0;
 }
@@ -255,20 +261,25 @@ void mip_writer_init(mip_writer_t *w, uint8_t *buf, size_t cap) {
     w->len = 0;
 }
 
-static mip_status_t put_be(mip_writer_t *w, uint64_t v, size_t n) {
+/* The low n bytes of v in the protocol's byte order. */
+static mip_status_t put_uint(mip_writer_t *w, uint64_t v, size_t n) {
     size_t i;
     if (w->cap - w->len < n) {
         return MIP_ERR_BUFFER;
     }
     for (i = 0; i < n; i++) {
+#if MIP_LITTLE_ENDIAN
+        w->buf[w->len + i] = (uint8_t)(v >> (8 * i));
+#else
         w->buf[w->len + i] = (uint8_t)(v >> (8 * (n - 1 - i)));
+#endif
     }
     w->len += n;
     return MIP_OK;
 }
 
 mip_status_t mip_wr_bool(mip_writer_t *w, const bool *v) {
-    return put_be(w, *v ? 1u : 0u, 1);
+    return put_uint(w, *v ? 1u : 0u, 1);
 }
 
 mip_status_t mip_wr_char(mip_writer_t *w, const char *v) {
@@ -276,47 +287,47 @@ mip_status_t mip_wr_char(mip_writer_t *w, const char *v) {
 }
 
 mip_status_t mip_wr_u8(mip_writer_t *w, const uint8_t *v) {
-    return put_be(w, *v, 1);
+    return put_uint(w, *v, 1);
 }
 
 mip_status_t mip_wr_u16(mip_writer_t *w, const uint16_t *v) {
-    return put_be(w, *v, 2);
+    return put_uint(w, *v, 2);
 }
 
 mip_status_t mip_wr_u32(mip_writer_t *w, const uint32_t *v) {
-    return put_be(w, *v, 4);
+    return put_uint(w, *v, 4);
 }
 
 mip_status_t mip_wr_u64(mip_writer_t *w, const uint64_t *v) {
-    return put_be(w, *v, 8);
+    return put_uint(w, *v, 8);
 }
 
 mip_status_t mip_wr_s8(mip_writer_t *w, const int8_t *v) {
-    return put_be(w, (uint64_t)(int64_t)*v, 1);
+    return put_uint(w, (uint64_t)(int64_t)*v, 1);
 }
 
 mip_status_t mip_wr_s16(mip_writer_t *w, const int16_t *v) {
-    return put_be(w, (uint64_t)(int64_t)*v, 2);
+    return put_uint(w, (uint64_t)(int64_t)*v, 2);
 }
 
 mip_status_t mip_wr_s32(mip_writer_t *w, const int32_t *v) {
-    return put_be(w, (uint64_t)(int64_t)*v, 4);
+    return put_uint(w, (uint64_t)(int64_t)*v, 4);
 }
 
 mip_status_t mip_wr_s64(mip_writer_t *w, const int64_t *v) {
-    return put_be(w, (uint64_t)*v, 8);
+    return put_uint(w, (uint64_t)*v, 8);
 }
 
 mip_status_t mip_wr_f32(mip_writer_t *w, const float *v) {
     uint32_t bits;
     memcpy(&bits, v, sizeof bits);
-    return put_be(w, bits, 4);
+    return put_uint(w, bits, 4);
 }
 
 mip_status_t mip_wr_f64(mip_writer_t *w, const double *v) {
     uint64_t bits;
     memcpy(&bits, v, sizeof bits);
-    return put_be(w, bits, 8);
+    return put_uint(w, bits, 8);
 }
 
 mip_status_t mip_wr_chars(mip_writer_t *w, const char *v, size_t n) {

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "mipcodec/mipcodec.h"
+#include "mipcodec/json.h"
+#include "mipcodec/parser.h"
 
 namespace test_support {
 

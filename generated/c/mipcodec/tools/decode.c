@@ -1,6 +1,8 @@
 /* mipcodec-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
  * (docs/conformance.md section 5). Generated: do not edit. */
-#include "mipcodec/mipcodec.h"
+#include "mipcodec/json.h"
+#include "mipcodec/parser.h"
+#include "mipcodec/samples.h"
 #include "read_all.h"
 
 static const char k_usage[] = "usage: mipcodec-decode [--device ID] [--samples] [FILE|-]\n";
@@ -65,6 +67,15 @@ static void on_event(void *arg, const mip_event_t *ev) {
     fputc('\n', stdout);
 }
 
+/* The device ids the spec names, each after a space (devices are numbered from 1 up). */
+static void print_device_ids(FILE *out) {
+    int d;
+    const char *id;
+    for (d = 1; (id = mip_device_id((mip_device_t)d)) != NULL; d++) {
+        fprintf(out, " %s", id);
+    }
+}
+
 static int usage_error(const char *what) {
     fprintf(stderr, "mipcodec-decode: %s\n%s", what, k_usage);
     return 2;
@@ -104,7 +115,9 @@ int main(int argc, char **argv) {
             path = a;
         }
         if (id && !mip_device_from_id(id, &ctx.device)) {
-            fprintf(stderr, "mipcodec-decode: unknown device '%s' (expected one of: gx5_45 cv7_ins)\n", id);
+            fprintf(stderr, "mipcodec-decode: unknown device '%s' (expected one of:", id);
+            print_device_ids(stderr);
+            fputs(")\n", stderr);
             return 2;
         }
     }

@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-const uint8_t mscip_sync[MSCIP_SYNC_SIZE] = {0xA5, 0xA5};
+const uint8_t mscip_sync[MSCIP_SYNC_SIZE] = MSCIP_SYNC_BYTES;
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
  * load on little-endian hosts). */
@@ -67,7 +67,11 @@ uint16_t mscip_checksum_word(const uint8_t *bytes, size_t len) {
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
+#if MSCIP_CHECKSUM_SUM1_FIRST
     return (uint16_t)(sum1 << 8 | sum2);
+#else
+    return (uint16_t)(sum2 << 8 | sum1);
+#endif
 }
 
 void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]) {

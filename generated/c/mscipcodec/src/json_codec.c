@@ -139,7 +139,7 @@ static int decoded_field(mscip_jr_t *jr, size_t pos, uint8_t set, uint8_t descri
     const mscip_field_info_t *f = mscip_find_field(set, descriptor, &why);
     mscip_field_id_t id;
     size_t vp;
-    char text[30]; /* longest field name or device id, and a NUL */
+    char text[MSCIP_NAME_MAX]; /* longest field name or device id, and a NUL */
     size_t i;
     if (!f) {
         return mscip_jr_fail(

@@ -6,17 +6,36 @@
 
 #include "mscipcodec/field_iter.h"
 
-static const uint8_t k_data_sets[1] = {0};
-#define TIMESTAMPS 0
+/* The protocol's rule (protocol.h). A protocol without data sets or timestamps still gets
+ * one-element arrays (C has no empty ones); the #if blocks below leave them unused. */
+static const uint8_t k_data_sets[MSCIP_SAMPLE_SETS] = MSCIP_SAMPLE_DATA_SETS;
+#define TIMESTAMPS MSCIP_SAMPLE_TIMESTAMPS
+#if TIMESTAMPS > 0
+static const uint8_t k_stamp_descriptor[TIMESTAMPS] = MSCIP_SAMPLE_STAMP_DESCRIPTORS;
+static const uint8_t k_stamp_size[TIMESTAMPS] = MSCIP_SAMPLE_STAMP_SIZES;
+#endif
 
 static bool is_shared(uint8_t descriptor) {
+#if MSCIP_SAMPLE_FIRST_SHARED < 256
+    return descriptor >= MSCIP_SAMPLE_FIRST_SHARED;
+#else
     (void)descriptor;
     return false;
+#endif
 }
 
 static int slot_of(uint8_t set) {
+#if MSCIP_SAMPLE_DATA_SET_COUNT > 0
+    int i;
+    for (i = 0; i < MSCIP_SAMPLE_SETS; i++) {
+        if (k_data_sets[i] == set) {
+            return i;
+        }
+    }
+#else
     (void)set;
     (void)k_data_sets;
+#endif
     return -1;
 }
 
@@ -41,6 +60,9 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
     size_t key_len = 0;
     size_t prefix = 0;
     const uint8_t *payload = payload_of(packet, len, &plen);
+#if TIMESTAMPS > 0
+    bool seen[TIMESTAMPS] = {false};
+#endif
     if (shared_prefix) {
         *shared_prefix = 0;
     }
@@ -49,7 +71,22 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
     }
     mscip_field_iter_init(&it, mscip_packet_set(packet), payload, plen);
     while (mscip_field_iter_next(&it, &e) && e.kind == MSCIP_ENTRY_FIELD && is_shared(e.descriptor)) {
+#if TIMESTAMPS > 0
+        int t;
+        for (t = 0; t < TIMESTAMPS; t++) {
+            if (k_stamp_descriptor[t] == e.descriptor && k_stamp_size[t] == e.length && !seen[t]) {
+                size_t n = MSCIP_FIELD_HEADER_SIZE + e.length;
+                seen[t] = true;
+                if (key_len + n <= MSCIP_SAMPLE_KEY_MAX) {
+                    memcpy(key + key_len, payload + e.offset, n);
+                    key_len += n;
+                }
+                break;
+            }
+        }
+#else
         (void)key;
+#endif
         prefix = e.offset + MSCIP_FIELD_HEADER_SIZE + e.length;
     }
     if (shared_prefix) {

@@ -1,4 +1,5 @@
-/* Private: bounds-checked big-endian reader and writer used by the generated layouts.
+/* Private: bounds-checked reader and writer used by the generated layouts, in the protocol's
+ * byte order (MSCIP_LITTLE_ENDIAN in protocol.h).
  * Generated: do not edit. */
 #ifndef MSCIP_WIRE_H
 #define MSCIP_WIRE_H
@@ -48,11 +49,23 @@ int mscip_rd_selector_error_s(mscip_reader_t *r, int64_t value);
 /* After the last parameter: leftover bytes are an error. */
 int mscip_rd_finish(mscip_reader_t *r);
 
-/* Straight big-endian loads for fixed layouts (the caller has checked the length). Signed and
- * floating values take the bits of the unsigned value (exact-width types have no padding). */
+/* Straight loads in the protocol's byte order for fixed layouts (the caller has checked the
+ * length). Signed and floating values take the bits of the unsigned value (exact-width types have
+ * no padding). */
 static inline uint8_t mscip_ld_u8(const uint8_t *d) {
     return d[0];
 }
+#if MSCIP_LITTLE_ENDIAN
+static inline uint16_t mscip_ld_u16(const uint8_t *d) {
+    return (uint16_t)((unsigned)d[1] << 8 | d[0]);
+}
+static inline uint32_t mscip_ld_u32(const uint8_t *d) {
+    return (uint32_t)d[3] << 24 | (uint32_t)d[2] << 16 | (uint32_t)d[1] << 8 | (uint32_t)d[0];
+}
+static inline uint64_t mscip_ld_u64(const uint8_t *d) {
+    return (uint64_t)mscip_ld_u32(d + 4) << 32 | mscip_ld_u32(d);
+}
+#else
 static inline uint16_t mscip_ld_u16(const uint8_t *d) {
     return (uint16_t)((unsigned)d[0] << 8 | d[1]);
 }
@@ -62,6 +75,7 @@ static inline uint32_t mscip_ld_u32(const uint8_t *d) {
 static inline uint64_t mscip_ld_u64(const uint8_t *d) {
     return (uint64_t)mscip_ld_u32(d) << 32 | mscip_ld_u32(d + 4);
 }
+#endif
 static inline bool mscip_ld_bool(const uint8_t *d) {
     return d[0] != 0;
 }

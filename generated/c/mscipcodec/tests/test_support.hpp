@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "mscipcodec/mscipcodec.h"
+#include "mscipcodec/json.h"
+#include "mscipcodec/parser.h"
 
 namespace test_support {
 

@@ -1,6 +1,8 @@
 /* mscipcodec-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
  * (docs/conformance.md section 5). Generated: do not edit. */
-#include "mscipcodec/mscipcodec.h"
+#include "mscipcodec/json.h"
+#include "mscipcodec/parser.h"
+#include "mscipcodec/samples.h"
 #include "read_all.h"
 
 static const char k_usage[] = "usage: mscipcodec-decode [--device ID] [--samples] [FILE|-]\n";
@@ -65,6 +67,15 @@ static void on_event(void *arg, const mscip_event_t *ev) {
     fputc('\n', stdout);
 }
 
+/* The device ids the spec names, each after a space (devices are numbered from 1 up). */
+static void print_device_ids(FILE *out) {
+    int d;
+    const char *id;
+    for (d = 1; (id = mscip_device_id((mscip_device_t)d)) != NULL; d++) {
+        fprintf(out, " %s", id);
+    }
+}
+
 static int usage_error(const char *what) {
     fprintf(stderr, "mscipcodec-decode: %s\n%s", what, k_usage);
     return 2;
@@ -104,7 +115,9 @@ int main(int argc, char **argv) {
             path = a;
         }
         if (id && !mscip_device_from_id(id, &ctx.device)) {
-            fprintf(stderr, "mscipcodec-decode: unknown device '%s' (expected one of: ms_imu3020)\n", id);
+            fprintf(stderr, "mscipcodec-decode: unknown device '%s' (expected one of:", id);
+            print_device_ids(stderr);
+            fputs(")\n", stderr);
             return 2;
         }
     }

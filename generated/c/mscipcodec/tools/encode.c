@@ -1,7 +1,7 @@
 /* mscipcodec-encode: canonical JSON lines on stdin -> bytes on stdout (docs/conformance.md
  * section 5). A bad line is reported on stderr with its number and nothing is written for it;
  * the other lines are still encoded and the exit status is 1. Generated: do not edit. */
-#include "mscipcodec/mscipcodec.h"
+#include "mscipcodec/json.h"
 #include "read_all.h"
 
 static int blank(const char *s, size_t n) {

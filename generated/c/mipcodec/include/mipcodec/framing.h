@@ -1,51 +1,21 @@
-/* Framing of the MicroStrain MIP protocol, rendered from protocols[].framing of the IR.
- * Generated: do not edit. */
+/* Framing: checksum, packet header accessors and the packet builder; the framing constants are
+ * in protocol.h. Generated: do not edit. */
 #ifndef MIP_FRAMING_H
 #define MIP_FRAMING_H
 
+#include "mipcodec/protocol.h"
 #include "mipcodec/status.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Sync sequence that starts every packet. */
-#define MIP_SYNC_SIZE 2
-#define MIP_SYNC_0 0x75
-#define MIP_SYNC_1 0x65
-/* Packet header: sync bytes, then set, payload_length. */
-#define MIP_HEADER_SIZE 4
-#define MIP_SET_OFFSET 2
-#define MIP_LENGTH_OFFSET 3
-#define MIP_MAX_PAYLOAD 255
-#define MIP_CHECKSUM_SIZE 2
-/* Largest packet: header, maximum payload and checksum. */
-#define MIP_MAX_PACKET 261
-/* Field header: length, descriptor. */
-#define MIP_FIELD_HEADER_SIZE 2
-#define MIP_FIELD_LENGTH_OFFSET 0
-#define MIP_FIELD_DESCRIPTOR_OFFSET 1
-/* The field length byte counts the field header and the data:
- * data length = length byte - MIP_FIELD_LENGTH_ADJUST. */
-#define MIP_FIELD_LENGTH_ADJUST 2
-/*
- * Length byte - data length of field (set, descriptor): MIP_FIELD_LENGTH_ADJUST, except for the
- * fields the spec marks with length_byte_adjust (0 in this protocol).
- */
-static inline int mip_field_length_adjust(uint8_t set, uint8_t descriptor) {
-    (void)set;
-    (void)descriptor;
-    return MIP_FIELD_LENGTH_ADJUST;
-}
-/* Largest data a single field can carry. */
-#define MIP_MAX_FIELD_DATA 253
-
 /** The sync sequence as bytes. */
 extern const uint8_t mip_sync[MIP_SYNC_SIZE];
 
 /**
  * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
- * out[0..1] receive the checksum in wire order (sum1, sum2).
+ * out[0..1] receive the checksum in wire order (see MIP_CHECKSUM_SUM1_FIRST).
  */
 void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */

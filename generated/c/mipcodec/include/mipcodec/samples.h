@@ -9,11 +9,6 @@
 extern "C" {
 #endif
 
-/* Data sets that group continuation packets (one tracker slot each). */
-#define MIP_SAMPLE_SETS 8
-/* Largest sample key: field header + data of every shared timestamp field. */
-#define MIP_SAMPLE_KEY_MAX 36
-
 typedef struct {
     uint64_t number; /* sample number of the last packet of this set */
     uint8_t key_len; /* 0: that packet had no key */

@@ -1,10 +1,12 @@
-/* Status codes and decode errors of the mipcodec library. Generated: do not edit. */
+/* Status codes and decode errors of the library. Generated: do not edit. */
 #ifndef MIP_STATUS_H
 #define MIP_STATUS_H
 
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+
+#include "mipcodec/protocol.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -24,11 +26,6 @@ typedef enum {
 
 /** Short English text of a status code. */
 const char *mip_status_text(mip_status_t status);
-
-/** Deepest parameter path a layout of this protocol can have (members of nested structs). */
-#define MIP_PATH_MAX_DEPTH 3
-/** Enough room for any message mip_decode_error_format() can produce. */
-#define MIP_ERROR_MESSAGE_MAX 325
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {

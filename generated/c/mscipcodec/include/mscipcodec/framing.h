@@ -1,52 +1,21 @@
-/* Framing of the Memsense MS-CIP protocol, rendered from protocols[].framing of the IR.
- * Generated: do not edit. */
+/* Framing: checksum, packet header accessors and the packet builder; the framing constants are
+ * in protocol.h. Generated: do not edit. */
 #ifndef MSCIP_FRAMING_H
 #define MSCIP_FRAMING_H
 
+#include "mscipcodec/protocol.h"
 #include "mscipcodec/status.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Sync sequence that starts every packet. */
-#define MSCIP_SYNC_SIZE 2
-#define MSCIP_SYNC_0 0xA5
-#define MSCIP_SYNC_1 0xA5
-/* Packet header: sync bytes, then set, payload_length. */
-#define MSCIP_HEADER_SIZE 4
-#define MSCIP_SET_OFFSET 2
-#define MSCIP_LENGTH_OFFSET 3
-#define MSCIP_MAX_PAYLOAD 255
-#define MSCIP_CHECKSUM_SIZE 2
-/* Largest packet: header, maximum payload and checksum. */
-#define MSCIP_MAX_PACKET 261
-/* Field header: descriptor, length. */
-#define MSCIP_FIELD_HEADER_SIZE 2
-#define MSCIP_FIELD_LENGTH_OFFSET 1
-#define MSCIP_FIELD_DESCRIPTOR_OFFSET 0
-/* The field length byte counts only the data:
- * data length = length byte - MSCIP_FIELD_LENGTH_ADJUST. */
-#define MSCIP_FIELD_LENGTH_ADJUST 0
-/*
- * Length byte - data length of field (set, descriptor): MSCIP_FIELD_LENGTH_ADJUST, except for the
- * fields the spec marks with length_byte_adjust (1 in this protocol).
- */
-static inline int mscip_field_length_adjust(uint8_t set, uint8_t descriptor) {
-    if (set == 0x02 && descriptor == 0x05) {
-        return MSCIP_FIELD_LENGTH_ADJUST + (-1);
-    }
-    return MSCIP_FIELD_LENGTH_ADJUST;
-}
-/* Largest data a single field can carry. */
-#define MSCIP_MAX_FIELD_DATA 253
-
 /** The sync sequence as bytes. */
 extern const uint8_t mscip_sync[MSCIP_SYNC_SIZE];
 
 /**
  * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
- * out[0..1] receive the checksum in wire order (sum1, sum2).
+ * out[0..1] receive the checksum in wire order (see MSCIP_CHECKSUM_SUM1_FIRST).
  */
 void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */

@@ -9,11 +9,6 @@
 extern "C" {
 #endif
 
-/* Data sets that group continuation packets (one tracker slot each). */
-#define MSCIP_SAMPLE_SETS 1
-/* Largest sample key: field header + data of every shared timestamp field. */
-#define MSCIP_SAMPLE_KEY_MAX 1
-
 typedef struct {
     uint64_t number; /* sample number of the last packet of this set */
     uint8_t key_len; /* 0: that packet had no key */

@@ -1,10 +1,12 @@
-/* Status codes and decode errors of the mscipcodec library. Generated: do not edit. */
+/* Status codes and decode errors of the library. Generated: do not edit. */
 #ifndef MSCIP_STATUS_H
 #define MSCIP_STATUS_H
 
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+
+#include "mscipcodec/protocol.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -24,11 +26,6 @@ typedef enum {
 
 /** Short English text of a status code. */
 const char *mscip_status_text(mscip_status_t status);
-
-/** Deepest parameter path a layout of this protocol can have (members of nested structs). */
-#define MSCIP_PATH_MAX_DEPTH 2
-/** Enough room for any message mscip_decode_error_format() can produce. */
-#define MSCIP_ERROR_MESSAGE_MAX 236
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {

@@ -1,0 +1,345 @@
+/* Packet <-> canonical JSON line. Generated: do not edit. */
+#include "codec/json.h"
+#include "codec/field_iter.h"
+#include "layouts_internal.h"
+
+#include <stdio.h>
+#include <string.h>
+
+size_t codec_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap) {
+    codec_jw_t w;
+    codec_jw_init(&w, out, cap);
+    codec_jw_lit(&w, "{\"offset\":");
+    codec_jw_uint(&w, offset);
+    codec_jw_lit(&w, ",\"skipped\":");
+    codec_jw_hex(&w, bytes, n);
+    codec_jw_lit(&w, "}");
+    return codec_jw_finish(&w);
+}
+
+static void field_json(codec_jw_t *w, uint8_t set, const codec_field_entry_t *e, codec_device_t device) {
+    codec_field_value_t value;
+    codec_decode_error_t err;
+    codec_status_t st;
+    char msg[CODEC_ERROR_MESSAGE_MAX];
+    size_t n;
+    if (e->kind == CODEC_ENTRY_TRAILING) {
+        n = codec_trailing_format(e, msg, sizeof msg);
+        codec_jw_lit(w, "{\"trailing\":");
+        codec_jw_hex(w, e->data, e->length);
+        codec_jw_lit(w, ",\"error\":");
+        codec_jw_string(w, msg, n < sizeof msg ? n : sizeof msg - 1);
+        codec_jw_lit(w, "}");
+        return;
+    }
+    codec_jw_lit(w, "{\"descriptor\":");
+    codec_jw_uint(w, e->descriptor);
+    st = codec_decode_field(set, e->descriptor, e->data, e->length, device, &value, &err);
+    if (st == CODEC_OK) {
+        const codec_layout_info_t *info = codec_layout_info(value.id);
+        codec_jw_lit(w, ",\"name\":\"");
+        codec_jw_lit(w, info->name);
+        codec_jw_lit(w, "\"");
+        if (info->device) {
+            codec_jw_lit(w, ",\"device\":\"");
+            codec_jw_lit(w, info->device);
+            codec_jw_lit(w, "\"");
+        }
+        codec_jw_lit(w, ",\"values\":");
+        codec_value_to_json(w, &value);
+        codec_jw_lit(w, "}");
+        return;
+    }
+    if (st == CODEC_ERR_DECODE) {
+        n = codec_decode_error_format(&err, msg, sizeof msg);
+        if (n >= sizeof msg) {
+            n = sizeof msg - 1;
+        }
+    } else {
+        const char *text =
+            st == CODEC_ERR_UNKNOWN_DESCRIPTOR ? "unknown descriptor" : "unknown descriptor set";
+        n = strlen(text);
+        memcpy(msg, text, n + 1);
+    }
+    codec_jw_lit(w, ",\"data\":");
+    codec_jw_hex(w, e->data, e->length);
+    codec_jw_lit(w, ",\"error\":");
+    codec_jw_string(w, msg, n);
+    codec_jw_lit(w, "}");
+}
+
+size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device,
+                              char *out, size_t cap) {
+    codec_jw_t w;
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    size_t payload = 0;
+    size_t i = 0;
+    uint8_t set = 0;
+    if (len >= CODEC_HEADER_SIZE) {
+        set = packet[CODEC_SET_OFFSET];
+        payload = packet[CODEC_LENGTH_OFFSET];
+        if (payload > len - CODEC_HEADER_SIZE) {
+            payload = len - CODEC_HEADER_SIZE;
+        }
+    }
+    codec_jw_init(&w, out, cap);
+    codec_jw_lit(&w, "{\"offset\":");
+    codec_jw_uint(&w, offset);
+    codec_jw_lit(&w, ",\"set\":");
+    codec_jw_uint(&w, set);
+    codec_jw_lit(&w, ",\"fields\":[");
+    codec_field_iter_init(&it, set, len >= CODEC_HEADER_SIZE ? packet + CODEC_HEADER_SIZE : NULL, payload);
+    while (codec_field_iter_next(&it, &e)) {
+        codec_jw_sep(&w, i++);
+        field_json(&w, set, &e, device);
+    }
+    codec_jw_lit(&w, "]}");
+    return codec_jw_finish(&w);
+}
+
+/* ------------------------------------------------------------------ JSON line -> bytes */
+
+static const char *const k_packet_keys[] = {"offset", "set", "fields"};
+static const char *const k_skip_keys[] = {"offset", "skipped"};
+static const char *const k_trailing_keys[] = {"trailing", "error"};
+static const char *const k_raw_keys[] = {"descriptor", "data", "error"};
+static const char *const k_field_keys[] = {"descriptor", "name", "device", "values"};
+
+static int check_offset(codec_jr_t *jr, size_t pos) {
+    size_t vp;
+    uint64_t offset;
+    if (codec_jr_get(jr, pos, "offset", &vp) != 1) {
+        return codec_jr_fail(jr, "missing \"offset\"");
+    }
+    codec_jr_push(jr, "offset");
+    if (codec_jr_uint(jr, vp, UINT64_MAX, &offset)) {
+        return -1;
+    }
+    codec_jr_pop(jr);
+    return 0;
+}
+
+static int check_error_text(codec_jr_t *jr, size_t pos) {
+    size_t vp;
+    if (codec_jr_get(jr, pos, "error", &vp) != 1) {
+        return codec_jr_fail(jr, "missing \"error\"");
+    }
+    if (!codec_jr_is_string(jr, vp)) {
+        codec_jr_push(jr, "error");
+        return codec_jr_fail(jr, "expected a string");
+    }
+    return 0;
+}
+
+/* A decoded field: find its layout from descriptor, name and device, then read its values. */
+static int decoded_field(codec_jr_t *jr, size_t pos, uint8_t set, uint8_t descriptor,
+                         codec_field_value_t *value) {
+    codec_status_t why = CODEC_ERR_UNKNOWN_SET;
+    const codec_field_info_t *f = codec_find_field(set, descriptor, &why);
+    codec_field_id_t id;
+    size_t vp;
+    char text[CODEC_NAME_MAX]; /* longest field name or device id, and a NUL */
+    size_t i;
+    if (!f) {
+        return codec_jr_fail(
+            jr, "descriptor %u in set %u is not defined (%s); write it as a raw field with \"data\"",
+            (unsigned)descriptor, (unsigned)set, codec_status_text(why));
+    }
+    if (codec_jr_get(jr, pos, "name", &vp) != 1) {
+        return codec_jr_fail(jr, "missing \"name\"");
+    }
+    codec_jr_push(jr, "name");
+    if (codec_jr_chars(jr, vp, text, strlen(f->name)) || memcmp(text, f->name, strlen(f->name)) != 0) {
+        jr->failed = false;
+        return codec_jr_fail(jr, "descriptor %u in set %u is \"%s\"", (unsigned)descriptor, (unsigned)set,
+                             f->name);
+    }
+    codec_jr_pop(jr);
+    id = f->first_layout;
+    if (codec_jr_get(jr, pos, "device", &vp) == 1) {
+        codec_jr_push(jr, "device");
+        if (f->layout_count < 2) {
+            return codec_jr_fail(jr, "field \"%s\" has no per-device variants", f->name);
+        }
+        for (i = 0; i < f->layout_count; i++) {
+            const char *dev = codec_layout_info((codec_field_id_t)((size_t)f->first_layout + i))->device;
+            size_t n = strlen(dev);
+            if (codec_jr_chars(jr, vp, text, n) == 0 && memcmp(text, dev, n) == 0) {
+                id = (codec_field_id_t)((size_t)f->first_layout + i);
+                break;
+            }
+            jr->failed = false;
+        }
+        if (i == f->layout_count) {
+            return codec_jr_fail(jr, "not a device with a variant of \"%s\"", f->name);
+        }
+        codec_jr_pop(jr);
+    } else if (f->layout_count > 1) {
+        return codec_jr_fail(jr, "field \"%s\" has per-device variants: \"device\" is required", f->name);
+    }
+    if (codec_jr_get(jr, pos, "values", &vp) != 1) {
+        return codec_jr_fail(jr, "missing \"values\"");
+    }
+    codec_jr_push(jr, "values");
+    if (codec_value_from_json(jr, vp, id, value)) {
+        return -1;
+    }
+    codec_jr_pop(jr);
+    return 0;
+}
+
+/* One entry of "fields", appended to the packet. */
+static int field_entry(codec_jr_t *jr, size_t pos, uint8_t set, codec_packet_builder_t *b) {
+    size_t vp;
+    uint8_t data[CODEC_MAX_PAYLOAD];
+    size_t n = 0;
+    uint8_t descriptor = 0;
+    codec_status_t st;
+    if (codec_jr_get(jr, pos, "trailing", &vp) == 1) {
+        if (codec_jr_object(jr, pos, k_trailing_keys, 2) || check_error_text(jr, pos)) {
+            return -1;
+        }
+        codec_jr_push(jr, "trailing");
+        if (codec_jr_hex(jr, vp, data, sizeof data, &n)) {
+            return -1;
+        }
+        codec_jr_pop(jr);
+        st = codec_packet_add_raw(b, data, n);
+    } else {
+        int raw = codec_jr_get(jr, pos, "data", &vp) == 1;
+        if (codec_jr_object(jr, pos, raw ? k_raw_keys : k_field_keys, raw ? 3 : 4)) {
+            return -1;
+        }
+        if (codec_jr_get(jr, pos, "descriptor", &vp) != 1) {
+            return codec_jr_fail(jr, "missing \"descriptor\"");
+        }
+        codec_jr_push(jr, "descriptor");
+        if (codec_jr_u8(jr, vp, &descriptor)) {
+            return -1;
+        }
+        codec_jr_pop(jr);
+        if (raw) {
+            if (check_error_text(jr, pos)) {
+                return -1;
+            }
+            codec_jr_get(jr, pos, "data", &vp);
+            codec_jr_push(jr, "data");
+            if (codec_jr_hex(jr, vp, data, CODEC_MAX_FIELD_DATA, &n)) {
+                return -1;
+            }
+            codec_jr_pop(jr);
+        } else {
+            codec_field_value_t value;
+            if (decoded_field(jr, pos, set, descriptor, &value)) {
+                return -1;
+            }
+            st = codec_encode_field(&value, data, CODEC_MAX_FIELD_DATA, &n);
+            if (st == CODEC_ERR_BUFFER) {
+                return codec_jr_fail(jr, "the values need more than the %d bytes a field can carry",
+                                     CODEC_MAX_FIELD_DATA);
+            }
+            if (st != CODEC_OK) {
+                return codec_jr_fail(jr, "the values cannot be encoded (%s)", codec_status_text(st));
+            }
+        }
+        st = codec_packet_add_field(b, descriptor, data, n);
+    }
+    if (st == CODEC_ERR_TOO_LONG) {
+        return codec_jr_fail(jr, "the payload would exceed %d bytes", CODEC_MAX_PAYLOAD);
+    }
+    if (st == CODEC_ERR_INVALID) {
+        /* a field whose size byte is irregular needs at least -adjust bytes of data */
+        return codec_jr_fail(
+            jr, "field data of %u bytes is shorter than the minimum %d for descriptor %u of set %u",
+            (unsigned)n, -codec_field_length_adjust(set, descriptor), (unsigned)descriptor, (unsigned)set);
+    }
+    if (st != CODEC_OK && st != CODEC_ERR_BUFFER) {
+        return codec_jr_fail(jr, "%s", codec_status_text(st));
+    }
+    return st == CODEC_OK ? 0 : -1;
+}
+
+codec_status_t codec_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
+                                      char *msg, size_t msg_cap) {
+    codec_jr_t jr;
+    codec_packet_builder_t b;
+    size_t pos;
+    size_t vp;
+    size_t it;
+    size_t ep;
+    size_t i;
+    uint8_t set;
+    codec_status_t st;
+    codec_jr_init(&jr, line, len, msg, msg_cap);
+    if (out_len) {
+        *out_len = 0;
+    }
+    if (codec_jr_document(&jr, &pos)) {
+        return CODEC_ERR_JSON;
+    }
+    if (codec_jr_get(&jr, pos, "skipped", &vp) == 1) {
+        size_t n;
+        if (codec_jr_object(&jr, pos, k_skip_keys, 2) || check_offset(&jr, pos)) {
+            return CODEC_ERR_JSON;
+        }
+        codec_jr_push(&jr, "skipped");
+        if (!codec_jr_is_string(&jr, vp)) {
+            codec_jr_fail(&jr, "expected a hex string");
+            return CODEC_ERR_JSON;
+        }
+        if (codec_jr_hex(&jr, vp, out, cap, &n)) {
+            return CODEC_ERR_JSON;
+        }
+        if (out_len) {
+            *out_len = n;
+        }
+        return CODEC_OK;
+    }
+    if (codec_jr_object(&jr, pos, k_packet_keys, 3) || check_offset(&jr, pos)) {
+        return CODEC_ERR_JSON;
+    }
+    if (codec_jr_get(&jr, pos, "set", &vp) != 1) {
+        codec_jr_fail(&jr, "missing \"set\" (or \"skipped\")");
+        return CODEC_ERR_JSON;
+    }
+    codec_jr_push(&jr, "set");
+    if (codec_jr_u8(&jr, vp, &set)) {
+        return CODEC_ERR_JSON;
+    }
+    codec_jr_pop(&jr);
+    if (codec_jr_get(&jr, pos, "fields", &vp) != 1) {
+        codec_jr_fail(&jr, "missing \"fields\"");
+        return CODEC_ERR_JSON;
+    }
+    codec_jr_push(&jr, "fields");
+    if (codec_jr_array(&jr, vp, &it)) {
+        return CODEC_ERR_JSON;
+    }
+    codec_packet_begin(&b, out, cap, set);
+    for (i = 0;; i++) {
+        int more = codec_jr_next(&jr, &it, &ep);
+        if (more < 0) {
+            return CODEC_ERR_JSON;
+        }
+        if (!more) {
+            break;
+        }
+        codec_jr_index(&jr, i);
+        if (field_entry(&jr, ep, set, &b)) {
+            if (b.status == CODEC_ERR_BUFFER) {
+                snprintf(msg, msg_cap, "output buffer too small");
+                return CODEC_ERR_BUFFER;
+            }
+            return CODEC_ERR_JSON;
+        }
+    }
+    st = codec_packet_finish(&b, out_len);
+    if (st == CODEC_ERR_BUFFER) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap, "output buffer too small");
+        }
+        return st;
+    }
+    return st == CODEC_OK ? CODEC_OK : CODEC_ERR_JSON;
+}

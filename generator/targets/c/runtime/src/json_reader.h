@@ -1,0 +1,71 @@
+/* Private: reader of the JSON lines the decoder prints (no allocation). Values are addressed
+ * by their position in the line; objects are looked up by key, so key order does not matter.
+ * Functions return 0 (or 1 = found) on success and -1 after recording a message that names the
+ * JSON path of the bad value. Generated: do not edit. */
+#ifndef CODEC_JSON_READER_H
+#define CODEC_JSON_READER_H
+
+#include "codec/status.h"
+
+#define CODEC_JR_MAX_DEPTH (CODEC_PATH_MAX_DEPTH + 8)
+
+typedef struct {
+    const char *s;
+    size_t len;
+    char *msg;
+    size_t msg_cap;
+    bool failed;
+    const char *path[CODEC_JR_MAX_DEPTH];
+    size_t index[CODEC_JR_MAX_DEPTH];
+    size_t depth;
+} codec_jr_t;
+
+void codec_jr_init(codec_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap);
+/* Records "<path>: <message>" (only the first failure is kept); returns -1. */
+int codec_jr_fail(codec_jr_t *jr, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+void codec_jr_push(codec_jr_t *jr, const char *name);
+void codec_jr_index(codec_jr_t *jr, size_t index);
+void codec_jr_pop(codec_jr_t *jr);
+
+/* Position of the first non-space character at or after pos. */
+size_t codec_jr_ws(const codec_jr_t *jr, size_t pos);
+/* Checks the value at pos is well-formed JSON; *end is the position after it. */
+int codec_jr_skip(codec_jr_t *jr, size_t pos, size_t *end);
+/* The whole line is one JSON object (nothing after it). */
+int codec_jr_document(codec_jr_t *jr, size_t *pos);
+/* An object whose keys are all among keys[0..n) and appear once. */
+int codec_jr_object(codec_jr_t *jr, size_t pos, const char *const *keys, size_t n);
+/* After codec_jr_object: 1 and the value position if key is present, else 0. */
+int codec_jr_get(codec_jr_t *jr, size_t pos, const char *key, size_t *value);
+/* Iterates an array: begin, then next returns 1 per element, 0 at the end. */
+int codec_jr_array(codec_jr_t *jr, size_t pos, size_t *it);
+int codec_jr_next(codec_jr_t *jr, size_t *it, size_t *elem);
+
+int codec_jr_uint(codec_jr_t *jr, size_t pos, uint64_t max, uint64_t *out);
+int codec_jr_sint(codec_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out);
+int codec_jr_null(codec_jr_t *jr, size_t pos);
+/* A string of lowercase or uppercase hex pairs, at most cap bytes. */
+int codec_jr_hex(codec_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n);
+/* True when the value at pos is a string. */
+bool codec_jr_is_string(const codec_jr_t *jr, size_t pos);
+
+int codec_jr_bool(codec_jr_t *jr, size_t pos, bool *out);
+int codec_jr_char(codec_jr_t *jr, size_t pos, char *out);
+int codec_jr_u8(codec_jr_t *jr, size_t pos, uint8_t *out);
+int codec_jr_u16(codec_jr_t *jr, size_t pos, uint16_t *out);
+int codec_jr_u32(codec_jr_t *jr, size_t pos, uint32_t *out);
+int codec_jr_u64(codec_jr_t *jr, size_t pos, uint64_t *out);
+int codec_jr_s8(codec_jr_t *jr, size_t pos, int8_t *out);
+int codec_jr_s16(codec_jr_t *jr, size_t pos, int16_t *out);
+int codec_jr_s32(codec_jr_t *jr, size_t pos, int32_t *out);
+int codec_jr_s64(codec_jr_t *jr, size_t pos, int64_t *out);
+int codec_jr_f32(codec_jr_t *jr, size_t pos, float *out);
+int codec_jr_f64(codec_jr_t *jr, size_t pos, double *out);
+/* A string of exactly n characters (U+0000..U+00FF), stored as bytes. */
+int codec_jr_chars(codec_jr_t *jr, size_t pos, char *out, size_t n);
+
+#endif

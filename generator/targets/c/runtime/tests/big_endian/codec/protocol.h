@@ -1,0 +1,46 @@
+/* Test protocol "big": the constants a generated protocol.h provides (templates/c/protocol.h.j2),
+ * written by hand for the runtime's own tests. MIP-like: big-endian, a length byte that counts
+ * the field header, sum1 first, a samples rule with two data sets and two timestamps. */
+#ifndef CODEC_PROTOCOL_H
+#define CODEC_PROTOCOL_H
+
+#include <stdint.h>
+
+#define CODEC_LITTLE_ENDIAN 0
+
+#define CODEC_SYNC_SIZE 2
+#define CODEC_SYNC_0 0x75
+#define CODEC_SYNC_1 0x65
+#define CODEC_SYNC_BYTES {0x75, 0x65}
+#define CODEC_HEADER_SIZE 4
+#define CODEC_SET_OFFSET 2
+#define CODEC_LENGTH_OFFSET 3
+#define CODEC_MAX_PAYLOAD 255
+#define CODEC_CHECKSUM_SIZE 2
+#define CODEC_CHECKSUM_SUM1_FIRST 1
+#define CODEC_MAX_PACKET 261
+#define CODEC_FIELD_HEADER_SIZE 2
+#define CODEC_FIELD_LENGTH_OFFSET 0
+#define CODEC_FIELD_DESCRIPTOR_OFFSET 1
+#define CODEC_FIELD_LENGTH_ADJUST 2
+static inline int codec_field_length_adjust(uint8_t set, uint8_t descriptor) {
+    (void)set;
+    (void)descriptor;
+    return CODEC_FIELD_LENGTH_ADJUST;
+}
+#define CODEC_MAX_FIELD_DATA 253
+
+#define CODEC_SAMPLE_DATA_SET_COUNT 2
+#define CODEC_SAMPLE_SETS 2
+#define CODEC_SAMPLE_DATA_SETS {0x80, 0x82}
+#define CODEC_SAMPLE_FIRST_SHARED 0xD0
+#define CODEC_SAMPLE_TIMESTAMPS 2
+#define CODEC_SAMPLE_STAMP_DESCRIPTORS {0xD3, 0xD5}
+#define CODEC_SAMPLE_STAMP_SIZES {8, 4}
+#define CODEC_SAMPLE_KEY_MAX 16
+
+#define CODEC_PATH_MAX_DEPTH 2
+#define CODEC_ERROR_MESSAGE_MAX 200
+#define CODEC_NAME_MAX 32
+
+#endif
