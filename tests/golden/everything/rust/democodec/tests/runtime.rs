@@ -1,0 +1,471 @@
+//! Runtime tests that hold for any protocol: checksum, builder, stream parser (resync, truncated
+//! packets, chunk independence), field iterator errors, dispatch errors, encode round trips.
+
+use democodec::builder::PacketBuilder;
+use democodec::dispatch::{decode_field, set_defined, write_skip_json};
+use democodec::error::EncodeErrorKind;
+use democodec::fields::{FieldItem, Fields, FramingError, Packet};
+use democodec::framing::{
+    checksum_bytes, fletcher16, CHECKSUM_SIZE, CHECKSUM_SUM1_FIRST, FIELD_DESCRIPTOR_OFFSET,
+    FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST, FIELD_LENGTH_COUNTS_HEADER, FIELD_LENGTH_OFFSET,
+    HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD, SET_OFFSET, SYNC,
+};
+use democodec::parser::{Event, Parser};
+use democodec::text::{decode_bytes, encode_line, encode_text};
+
+const SET: u8 = 0x01;
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Ev {
+    Skip(u64, u64),
+    Packet(u64, Vec<u8>),
+}
+
+fn events_in_chunks(input: &[u8], chunk: usize) -> Vec<Ev> {
+    let mut parser = Parser::new();
+    let mut out = Vec::new();
+    let mut push = |e: Event<'_>| {
+        out.push(match e {
+            Event::Skip { offset, count } => Ev::Skip(offset, count),
+            Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
+        })
+    };
+    for piece in input.chunks(chunk.max(1)) {
+        parser.feed(piece, &mut push);
+    }
+    parser.flush(&mut push);
+    out
+}
+
+/// Events of `input`; asserts they are the same for several chunkings.
+fn events(input: &[u8]) -> Vec<Ev> {
+    let whole = events_in_chunks(input, usize::MAX);
+    for chunk in [1, 2, 3, 5, 7, 64, MAX_PACKET - 1, MAX_PACKET + 1] {
+        assert_eq!(events_in_chunks(input, chunk), whole, "chunk size {chunk}");
+    }
+    whole
+}
+
+/// A byte that does not start the sync sequence.
+fn filler() -> u8 {
+    SYNC[0].wrapping_add(1)
+}
+
+fn packet_with(descriptor: u8, data: &[u8]) -> Vec<u8> {
+    let mut b = PacketBuilder::new(SET);
+    b.add_raw_field(descriptor, data).unwrap();
+    b.finish().to_vec()
+}
+
+fn sample() -> Vec<u8> {
+    packet_with(0x7A, &[1, 2, 3])
+}
+
+fn header(set: u8, payload_len: u8) -> Vec<u8> {
+    let mut h = vec![0u8; HEADER_SIZE];
+    h[..SYNC.len()].copy_from_slice(&SYNC);
+    h[SET_OFFSET] = set;
+    h[LENGTH_OFFSET] = payload_len;
+    h
+}
+
+fn field_header(descriptor: u8, length: u8) -> [u8; 2] {
+    let mut h = [0u8; 2];
+    h[FIELD_LENGTH_OFFSET] = length;
+    h[FIELD_DESCRIPTOR_OFFSET] = descriptor;
+    h
+}
+
+/// A packet with this exact payload (checksum computed).
+fn packet_with_payload(payload: &[u8]) -> Vec<u8> {
+    let mut p = header(SET, payload.len() as u8);
+    p.extend_from_slice(payload);
+    let sum = checksum_bytes(&p);
+    p.extend_from_slice(&sum);
+    p
+}
+
+#[test]
+fn fletcher16_matches_the_definition() {
+    assert_eq!(fletcher16(&[]), (0, 0));
+    assert_eq!(fletcher16(&[0x01, 0x02]), (0x03, 0x04));
+    let data: Vec<u8> = (0..=255u8).chain(0..=255u8).collect();
+    let (mut s1, mut s2) = (0u32, 0u32);
+    for &b in &data {
+        s1 = (s1 + u32::from(b)) % 256;
+        s2 = (s2 + s1) % 256;
+    }
+    assert_eq!(fletcher16(&data), (s1 as u8, s2 as u8));
+    let (a, b) = fletcher16(&data);
+    assert_eq!(
+        checksum_bytes(&data),
+        if CHECKSUM_SUM1_FIRST { [a, b] } else { [b, a] }
+    );
+}
+
+/// The block-wise checksum against the byte-serial definition at every length up to a maximum
+/// packet and far past it (every block/remainder split, and past three groups of 64 blocks,
+/// after which the lane sums are reduced), on bytes that fill the 16-bit lanes (all 0xFF) and
+/// on varied bytes.
+#[test]
+fn fletcher16_matches_the_definition_at_every_length() {
+    let mut x: u32 = 12345;
+    let n_max = (3 * 64 * 8 + 40).max(MAX_PACKET + 40);
+    let varied: Vec<u8> = (0..n_max)
+        .map(|_| {
+            x = x.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            (x >> 16) as u8
+        })
+        .collect();
+    let ones = vec![0xFFu8; n_max];
+    for data in [&varied, &ones] {
+        for n in 0..=data.len() {
+            let (mut s1, mut s2) = (0u32, 0u32);
+            for &b in &data[..n] {
+                s1 = (s1 + u32::from(b)) % 256;
+                s2 = (s2 + s1) % 256;
+            }
+            assert_eq!(fletcher16(&data[..n]), (s1 as u8, s2 as u8), "length {n}");
+        }
+    }
+}
+
+/// Packets are checked in place in the caller's buffer and only a split candidate is buffered:
+/// the events must not depend on where the input is split, at every split point, for packets,
+/// garbage, a false sync whose length runs into the next packet and a partial sync.
+#[test]
+fn events_do_not_depend_on_the_split_point() {
+    let mut input = vec![filler(), filler()];
+    input.extend(sample());
+    input.extend(header(SET, 20));
+    input.push(filler());
+    input.extend(sample());
+    input.push(SYNC[0]);
+    input.extend(sample());
+    input.push(SYNC[0]);
+    let whole = events_in_chunks(&input, usize::MAX);
+    assert_eq!(
+        whole.iter().filter(|e| matches!(e, Ev::Packet(..))).count(),
+        3
+    );
+    for k in 0..=input.len() {
+        let mut parser = Parser::new();
+        let mut out = Vec::new();
+        let mut push = |e: Event<'_>| {
+            out.push(match e {
+                Event::Skip { offset, count } => Ev::Skip(offset, count),
+                Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
+            })
+        };
+        parser.feed(&input[..k], &mut push);
+        parser.feed(&input[k..], &mut push);
+        parser.flush(&mut push);
+        assert_eq!(out, whole, "split at {k}");
+    }
+}
+
+#[test]
+fn builder_frames_a_field() {
+    let p = sample();
+    assert_eq!(&p[..SYNC.len()], &SYNC);
+    assert_eq!(p[SET_OFFSET], SET);
+    assert_eq!(usize::from(p[LENGTH_OFFSET]), FIELD_HEADER_SIZE + 3);
+    assert_eq!(p.len(), HEADER_SIZE + FIELD_HEADER_SIZE + 3 + CHECKSUM_SIZE);
+    let field = &p[HEADER_SIZE..HEADER_SIZE + FIELD_HEADER_SIZE];
+    assert_eq!(
+        usize::from(field[FIELD_LENGTH_OFFSET]),
+        3 + FIELD_LENGTH_ADJUST
+    );
+    assert_eq!(field[FIELD_DESCRIPTOR_OFFSET], 0x7A);
+    let body = p.len() - CHECKSUM_SIZE;
+    assert_eq!(checksum_bytes(&p[..body])[..], p[body..]);
+    let packet = Packet::new(&p).unwrap();
+    assert_eq!(packet.set(), SET);
+    let items: Vec<_> = packet.fields().collect();
+    assert_eq!(
+        items,
+        vec![FieldItem::Field {
+            descriptor: 0x7A,
+            data: &[1, 2, 3]
+        }]
+    );
+}
+
+#[test]
+fn builder_rejects_oversized_fields() {
+    let mut b = PacketBuilder::new(SET);
+    let big = vec![0u8; MAX_FIELD_DATA + 1];
+    let err = b.add_raw_field(1, &big).unwrap_err();
+    assert_eq!(err.kind, EncodeErrorKind::Overflow);
+    assert_eq!(b.payload_len(), 0, "a failed field adds nothing");
+    let most = vec![0u8; MAX_FIELD_DATA.min(MAX_PAYLOAD - FIELD_HEADER_SIZE)];
+    b.add_raw_field(1, &most).unwrap();
+    let p = b.finish().to_vec();
+    assert_eq!(events(&p), vec![Ev::Packet(0, p.clone())]);
+}
+
+#[test]
+fn one_packet() {
+    let p = sample();
+    assert_eq!(events(&p), vec![Ev::Packet(0, p.clone())]);
+}
+
+#[test]
+fn garbage_then_resync() {
+    let p = sample();
+    // A false packet: sync and header with an empty payload, wrong checksum.
+    let mut false_packet = header(SET, 0);
+    let right = checksum_bytes(&false_packet);
+    let mut wrong = [right[0] ^ 0x01, right[1]];
+    if wrong[0] == SYNC[0] {
+        wrong[0] ^= 0x02;
+    }
+    false_packet.extend_from_slice(&wrong);
+    let mut input = vec![filler()];
+    input.extend_from_slice(&false_packet);
+    input.extend_from_slice(&p);
+    input.extend_from_slice(&[filler(); 4]);
+    let start = 1 + false_packet.len() as u64;
+    assert_eq!(
+        events(&input),
+        vec![
+            Ev::Skip(0, start),
+            Ev::Packet(start, p.clone()),
+            Ev::Skip(start + p.len() as u64, 4)
+        ]
+    );
+}
+
+#[test]
+fn packet_inside_a_false_one_is_found() {
+    let p = sample();
+    // A false header whose payload covers the real packet; its checksum fails.
+    let mut input = header(SET, (p.len() + 1) as u8);
+    input.extend_from_slice(&p);
+    input.extend_from_slice(&[filler(); 3]);
+    let h = HEADER_SIZE as u64;
+    assert_eq!(
+        events(&input),
+        vec![
+            Ev::Skip(0, h),
+            Ev::Packet(h, p.clone()),
+            Ev::Skip(h + p.len() as u64, 3)
+        ]
+    );
+}
+
+#[test]
+fn truncated_packet_at_end_is_skipped() {
+    let p = sample();
+    let cut = &p[..p.len() - 1];
+    assert_eq!(events(cut), vec![Ev::Skip(0, cut.len() as u64)]);
+    // A packet before it is still reported first.
+    let mut input = p.clone();
+    input.extend_from_slice(cut);
+    assert_eq!(
+        events(&input),
+        vec![
+            Ev::Packet(0, p.clone()),
+            Ev::Skip(p.len() as u64, cut.len() as u64)
+        ]
+    );
+}
+
+#[test]
+fn packet_behind_a_false_sync_running_past_the_end_is_found_at_flush() {
+    let p = sample();
+    // The false header claims more payload than the input has: at flush it is a false sync.
+    let mut input = header(SET, (p.len() + 20).min(MAX_PAYLOAD) as u8);
+    input.extend_from_slice(&p);
+    input.push(filler());
+    let h = HEADER_SIZE as u64;
+    assert_eq!(
+        events(&input),
+        vec![
+            Ev::Skip(0, h),
+            Ev::Packet(h, p.clone()),
+            Ev::Skip(h + p.len() as u64, 1)
+        ]
+    );
+}
+
+#[test]
+fn partial_sync_at_end_is_skipped_at_flush() {
+    let p = sample();
+    let mut input = p.clone();
+    input.extend_from_slice(&SYNC[..SYNC.len() - 1]);
+    input.push(SYNC[0]);
+    let tail = SYNC.len() as u64;
+    assert_eq!(
+        events(&input),
+        vec![Ev::Packet(0, p.clone()), Ev::Skip(p.len() as u64, tail)]
+    );
+}
+
+#[test]
+fn bad_checksum_and_garbage_are_one_run() {
+    let mut bad = sample();
+    let n = bad.len();
+    bad[n - 1] ^= 0xFF;
+    let mut input = bad.clone();
+    input.extend_from_slice(&[filler(); 5]);
+    let p = sample();
+    input.extend_from_slice(&p);
+    let run = (bad.len() + 5) as u64;
+    assert_eq!(
+        events(&input),
+        vec![Ev::Skip(0, run), Ev::Packet(run, p.clone())]
+    );
+}
+
+#[test]
+fn payload_length_over_the_maximum_is_a_false_sync() {
+    if MAX_PAYLOAD >= 255 {
+        return;
+    }
+    let p = sample();
+    let mut input = header(SET, (MAX_PAYLOAD + 1) as u8);
+    input.extend_from_slice(&p);
+    let h = HEADER_SIZE as u64;
+    assert_eq!(
+        events(&input),
+        vec![Ev::Skip(0, h), Ev::Packet(h, p.clone())]
+    );
+}
+
+#[test]
+fn empty_input_has_no_events() {
+    assert_eq!(events(&[]), vec![]);
+}
+
+#[test]
+fn field_iterator_reports_framing_problems() {
+    // A good empty field, then one byte.
+    let mut payload = field_header(0x10, FIELD_LENGTH_ADJUST as u8).to_vec();
+    payload.push(0xEE);
+    let items: Vec<_> = Fields::new(0x01, &payload).collect();
+    assert_eq!(
+        items[0],
+        FieldItem::Field {
+            descriptor: 0x10,
+            data: &[]
+        }
+    );
+    let FieldItem::Trailing { bytes, error } = items[1] else {
+        panic!("expected a trailing entry")
+    };
+    assert_eq!(bytes, &[0xEE]);
+    assert_eq!(
+        error.to_string(),
+        "field header at payload offset 2 needs 2 bytes, 1 left"
+    );
+
+    // A field that claims more data than the payload has.
+    let length = (10 + FIELD_LENGTH_ADJUST) as u8;
+    let mut payload = field_header(0x10, length).to_vec();
+    payload.extend_from_slice(&[1, 2]);
+    let items: Vec<_> = Fields::new(0x01, &payload).collect();
+    assert_eq!(items.len(), 1);
+    let FieldItem::Trailing { bytes, error } = items[0] else {
+        panic!("expected a trailing entry")
+    };
+    assert_eq!(bytes, &payload[..]);
+    assert_eq!(
+        error,
+        FramingError::Overrun {
+            length,
+            offset: 0,
+            left: 4
+        }
+    );
+    assert_eq!(
+        error.to_string(),
+        format!("field length {length} at payload offset 0 overruns the payload (4 bytes left)")
+    );
+
+    if FIELD_LENGTH_COUNTS_HEADER {
+        let payload = field_header(0x10, 1);
+        let items: Vec<_> = Fields::new(0x01, &payload).collect();
+        let FieldItem::Trailing { error, .. } = items[0] else {
+            panic!("expected a trailing entry")
+        };
+        assert_eq!(
+            error.to_string(),
+            "field length 1 at payload offset 0 is shorter than the field header"
+        );
+    }
+}
+
+#[test]
+fn trailing_entries_round_trip_through_json() {
+    let mut payload = field_header(0x10, (2 + FIELD_LENGTH_ADJUST) as u8).to_vec();
+    payload.extend_from_slice(&[0xAA, 0xBB]);
+    payload.push(0xEE);
+    let p = packet_with_payload(&payload);
+    let mut input = vec![filler(), filler()];
+    input.extend_from_slice(&p);
+    let text = decode_bytes(&input, None, usize::MAX);
+    assert!(text.contains("\"trailing\":\"ee\""), "{text}");
+    assert!(text.contains("needs 2 bytes, 1 left"), "{text}");
+    assert_eq!(decode_bytes(&input, None, 1), text);
+    assert_eq!(encode_text(&text).unwrap(), input);
+}
+
+#[test]
+fn unknown_set_and_descriptor_errors() {
+    let mut checked_set = false;
+    for set in 0..=255u8 {
+        for descriptor in 0..=255u8 {
+            let Err(e) = decode_field(set, descriptor, &[0xFF; 3], None) else {
+                continue;
+            };
+            let text = e.to_string();
+            if set_defined(set) {
+                if text == "unknown descriptor" {
+                    checked_set = true;
+                }
+            } else if e.path.is_empty() && !text.contains("offset") {
+                assert_eq!(text, "unknown descriptor set");
+            }
+        }
+    }
+    assert!(checked_set || (0..=255u8).all(|s| !set_defined(s)));
+}
+
+#[test]
+fn skip_json() {
+    let mut s = String::new();
+    write_skip_json(&mut s, 12, &[0xA5, 0xFF, 0x75]).unwrap();
+    assert_eq!(s, "{\"offset\":12,\"skipped\":\"a5ff75\"}");
+}
+
+#[test]
+fn garbage_and_packets_round_trip() {
+    let mut input = vec![0x00, filler(), SYNC[0]];
+    input.extend_from_slice(&sample());
+    input.extend_from_slice(&packet_with(0x01, &[]));
+    input.extend_from_slice(&header(SET, 7));
+    input.extend_from_slice(&sample());
+    input.extend_from_slice(&SYNC);
+    let text = decode_bytes(&input, None, usize::MAX);
+    for chunk in [1, 2, 3, 10] {
+        assert_eq!(decode_bytes(&input, None, chunk), text);
+    }
+    assert_eq!(encode_text(&text).unwrap(), input);
+}
+
+#[test]
+fn encode_reports_bad_lines() {
+    assert!(encode_line("{\"offset\":0,\"skipped\":\"0\"}").is_err());
+    assert!(encode_line("[1]").is_err());
+    assert!(encode_line("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1}]}").is_err());
+    assert!(encode_line("{\"offset\":0,\"set\":256,\"fields\":[]}").is_err());
+    let (line, _) = encode_text("{\"offset\":0,\"skipped\":\"00\"}\n\n{\"bad\":1}\n").unwrap_err();
+    assert_eq!(line, 3);
+    // A raw field and an empty packet encode as given.
+    let line = String::from("{\"offset\":0,\"set\":")
+        + &SET.to_string()
+        + ",\"fields\":[{\"descriptor\":122,\"data\":\"010203\",\"error\":\"x\"}]}";
+    let bytes = encode_line(&line).unwrap();
+    assert_eq!(bytes, sample());
+}
