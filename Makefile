@@ -12,7 +12,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml
 
-.PHONY: all bootstrap generate html test test-generator test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-golden test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -38,12 +38,31 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 bootstrap:
 	@tools/bootstrap
 
-test: bootstrap generate test-generator test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions
+test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions test-bench test-golden
 
+# Python everywhere under tests/ is one package (tests/__init__.py): pytest and the scripts run
+# from the project root (`python -m tests.conformance.differential`), shared helpers in tests/helpers/.
 test-generator: $(VENV)/.stamp
-	$(VENV)/bin/ruff check --config ruff.toml generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz tests/bench
-	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests/generator tests/conformance tests/bigendian tests/docs tests/fuzz tests/bench
+	$(VENV)/bin/ruff check --config ruff.toml generator tests
+	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests
 	$(PY) -m pytest -q tests/generator
+
+# The spec against what its manuals state outside the field tables (prose sizes, worked examples).
+test-spec: generate
+	$(PY) -m pytest -q tests/spec
+
+# The benchmark streams are what their sidecars say (small scale; `make bench` runs the benchmarks).
+test-bench: generate
+	$(PY) -m pytest -q tests/bench
+
+# The golden tree tests/golden/everything/ (the every-feature fixture rendered by the four back
+# ends) equals a fresh rendering byte for byte, and its packages build and pass their own tests
+# (build dirs under build/golden/, reused). `make golden` refreshes the tree after a wanted change.
+test-golden: $(VENV)/.stamp
+	$(PY) -m pytest -q tests/golden
+
+golden: $(VENV)/.stamp
+	$(PY) -m tests.golden.refresh
 
 $(addprefix test-,$(LANGS)): test-%: generate
 	tests/lang/$*.sh test
@@ -66,7 +85,7 @@ test-conformance: generate
 # each round prints its seed; a failure prints the command that replays it.
 ROUNDS ?= 50
 differential: generate
-	$(PY) tests/conformance/differential.py --rounds $(ROUNDS) $(if $(SEED),--seed $(SEED))
+	$(PY) -m tests.conformance.differential --rounds $(ROUNDS) $(if $(SEED),--seed $(SEED))
 
 # The device capture decodes completely and identically in the four languages (run when the
 # file exists; `make test` says so when it does not).

@@ -1,4 +1,4 @@
-"""Command line: python -m generator [--out DIR] [--only LANG,...] [--lint]
+"""Command line: python -m generator [--spec DIR [--vectors DIR]] [--out DIR] [--only LANG,...] [--lint]
 
 Loads and validates spec/, builds the IR, and renders every back end into generated/.
 Exit status: 0 ok, 1 spec errors (printed as file:line:column: error: ...), 2 usage/tool errors.
@@ -16,11 +16,18 @@ from .diagnostics import SpecError, SpecErrors
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m generator", description=__doc__.splitlines()[0])
     ap.add_argument("--spec", default=None, help="spec directory (default: spec/)")
+    ap.add_argument(
+        "--vectors",
+        default=None,
+        help="golden vectors of a --spec spec: DIR/<protocol>/*.yaml (default: none; spec/ has tests/vectors and tests/streams)",
+    )
     ap.add_argument("--out", default=None, help="output directory (default: generated/)")
     ap.add_argument("--only", default=None, help="comma-separated back ends to render (default: all)")
     ap.add_argument("--validate-only", action="store_true", help="load and validate the spec, write nothing")
     ap.add_argument("--lint", action="store_true", help="list stated lengths that disagree with the computed ones")
     args = ap.parse_args(argv)
+    if args.vectors and not args.spec:
+        ap.error("--vectors goes with --spec (spec/ always uses tests/vectors and tests/streams)")
 
     from . import pipeline  # imported late so that --help works without dependencies
 
@@ -31,6 +38,7 @@ def main(argv: list[str] | None = None) -> int:
             only=args.only.split(",") if args.only else None,
             validate_only=args.validate_only,
             lint=args.lint,
+            vectors_dir=Path(args.vectors) if args.vectors else None,
         )
     except SpecErrors as e:
         for err in e.errors:

@@ -11,7 +11,7 @@ from .output import write_file, write_tree
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .spec import ROOT, load_spec
 from .targets import TARGETS
-from .vectors import load_corpus
+from .vectors import load_corpus, load_vectors
 
 
 def run(
@@ -21,6 +21,7 @@ def run(
     validate_only: bool,
     lint: bool,
     docs_dir: Path | None = None,
+    vectors_dir: Path | None = None,
 ) -> int:
     ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT)
     if lint:
@@ -31,8 +32,11 @@ def run(
             )
         return 0
     # Golden vectors and the stream corpus belong to the project's own spec; a spec given with
-    # --spec is validated alone.
-    vectors = load_corpus(ir, ROOT) if spec_dir is None else []
+    # --spec has the vectors of vectors_dir (<dir>/<protocol>/*.yaml), if any.
+    if spec_dir is None:
+        vectors = load_corpus(ir, ROOT)
+    else:
+        vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
     if validate_only:
         return 0
     out_dir = out_dir or ROOT / "generated"
@@ -55,6 +59,14 @@ def run(
         owned.extend(docs.OUTPUT_DIRS)
         files.update(docs.render(ir, vectors, files))
     write_tree(out_dir, files, owned)
-    docs_dir = docs_dir or ROOT / "docs"
-    write_file(docs_dir / "errata.md", render_errata(ir, vectors))
+    # docs/errata.md is the project's page about its own spec: a spec given with --spec (a test
+    # fixture, the golden tree) never rewrites it, unless a docs directory is named.
+    if spec_dir is None or docs_dir is not None:
+        docs_dir = docs_dir or ROOT / "docs"
+        write_file(docs_dir / "errata.md", render_errata(ir, vectors))
     return 0
+
+
+def _project_root(path: Path) -> Path | None:
+    """The project root when path is inside it (vector file names then read tests/...), else None."""
+    return ROOT if path.resolve().is_relative_to(ROOT) else None

@@ -72,11 +72,13 @@ def load_corpus(ir: dict, root: Path) -> list[dict]:
     return cases
 
 
-def load_vectors(ir: dict, vectors_dir: Path) -> list[dict]:
+def load_vectors(ir: dict, vectors_dir: Path, root: Path | None = None) -> list[dict]:
+    """The cases of vectors_dir/<protocol>/*.yaml; their file names are relative to root (by
+    default the directory two levels up, the project of tests/vectors)."""
     cases: list[dict] = []
     errors: list[SpecError] = []
     protos = {p["name"]: p for p in ir["protocols"]}
-    root = vectors_dir.parent.parent
+    root = root or vectors_dir.parent.parent
     names: dict[str, str] = {}
     for proto_dir in sorted(p for p in vectors_dir.iterdir() if p.is_dir()):
         proto = protos.get(proto_dir.name)

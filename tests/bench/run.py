@@ -53,7 +53,9 @@ def streams(out: Path, scale: float) -> None:
     if have and stamp.is_file() and stamp.read_text() == want:
         return
     log(f"writing the streams (scale {scale}) into {shown(out)}/")
-    subprocess.run([sys.executable, str(script), "--out", str(out), "--scale", repr(scale)], check=True)
+    subprocess.run(
+        [sys.executable, "-m", "tests.bench.streams", "--out", str(out), "--scale", repr(scale)], check=True, cwd=ROOT
+    )
     stamp.write_text(want)
 
 

@@ -1,6 +1,6 @@
 """Writes the benchmark streams (issue 8) into build/bench/, deterministically.
 
-    python tests/bench/streams.py [--out build/bench] [--scale 1.0]
+    python -m tests.bench.streams [--out build/bench] [--scale 1.0]      (from the project root)
 
 Streams (MIP, little packets to large ones):
   accel_gyro          1,000,000 packets of set 0x80, each scaled accel (0x04) + scaled gyro (0x05):
@@ -32,10 +32,11 @@ import random
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "generated" / "python" / "mipcodec"))
+from tests.helpers.generated import python_package
+from tests.helpers.packets import fletcher16
 
-import mipcodec  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
+mipcodec = python_package("mipcodec")
 
 SYNC = b"\x75\x65"
 
@@ -97,14 +98,6 @@ def garbage(rng: random.Random) -> bytes:
         # a false sync whose length runs past the garbage into the next packet
         g[0:4] = SYNC + bytes([rng.getrandbits(8), 0xF0 | rng.getrandbits(4)])
     return bytes(g)
-
-
-def fletcher16(data) -> bytes:
-    s1 = s2 = 0
-    for b in data:
-        s1 = (s1 + b) & 0xFF
-        s2 = (s2 + s1) & 0xFF
-    return bytes([s1, s2])
 
 
 def defuse_false_syncs(buf: bytearray, offsets: list[int]) -> None:

@@ -5,11 +5,7 @@ printed in the report header, again at the end of the run (also under -q, where 
 not shown), and in every failure message, with the command that replays it.
 """
 
-import sys
-from pathlib import Path
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from differential import SEED, replay_command  # noqa: E402
+from tests.conformance.differential import SEED, replay_command
 
 _RAN = []
 

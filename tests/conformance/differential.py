@@ -25,7 +25,7 @@ the spec does not define):
 
 `check_group` runs the four languages' `encode` / `decode` CLIs over one device group (one stream
 per language and direction) and returns every disagreement as text. `test_differential.py` runs
-one round in `make test`; `python tests/conformance/differential.py --rounds N [--seed S]`
+one round in `make test`; `python -m tests.conformance.differential --rounds N [--seed S]`
 (`make differential`) runs many. Nothing here calls generated code.
 """
 
@@ -43,16 +43,13 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from generator.canonical import string_text
+from generator.primitives import PRIMITIVES, int_range
+from tests.conformance.reference import Reference, float_bits_text
+from tests.conformance.respell import invalidate, respell
+from tests.helpers.packets import packet
+
 ROOT = Path(__file__).resolve().parents[2]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-
-from generator.canonical import string_text  # noqa: E402
-from generator.primitives import PRIMITIVES, int_range  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from reference import Reference, float_bits_text  # noqa: E402
-from respell import invalidate, respell  # noqa: E402
 
 LANGS = ["c", "cpp", "python", "rust"]
 INTS = ("u8", "u16", "u32", "u64", "s8", "s16", "s32", "s64")
@@ -167,21 +164,7 @@ class Framing:
         return bytes(hdr) + data
 
     def packet(self, set_id: int, payload: bytes, bad_checksum: bool = False) -> bytes:
-        fr = self.fr
-        hdr = bytearray(fr["header_size"])
-        hdr[: len(self.sync)] = self.sync
-        hdr[fr["set_offset"]] = set_id
-        hdr[fr["length_offset"]] = len(payload)
-        body = bytes(hdr) + payload
-        s1 = s2 = 0
-        for b in body:
-            s1 = (s1 + b) & 0xFF
-            s2 = (s2 + s1) & 0xFF
-        sums = {"sum1": s1, "sum2": s2}
-        check = bytes(sums[k] for k in fr["checksum"]["order"])
-        if bad_checksum:
-            check = bytes([check[0] ^ 0x01]) + check[1:]
-        return body + check
+        return packet(self.fr, set_id, payload, bad_checksum)
 
 
 # ----------------------------------------------------------------------------------------- values

@@ -13,6 +13,7 @@ import json
 
 from generator.canonical import float_text, string_text
 from generator.primitives import PRIMITIVES
+from tests.helpers.packets import checksum
 
 INTS = ("u8", "u16", "u32", "u64", "s8", "s16", "s32", "s64")
 
@@ -83,12 +84,7 @@ class Reference:
                 skip(i, 1)
                 pos = i + 1
                 continue
-            s1 = s2 = 0
-            for b in buf[i : i + hs + length]:
-                s1 = (s1 + b) & 0xFF
-                s2 = (s2 + s1) & 0xFF
-            sums = {"sum1": s1, "sum2": s2}
-            want = bytes(sums[k] for k in fr["checksum"]["order"])
+            want = checksum(fr, buf[i : i + hs + length])
             if buf[i + hs + length : i + total] != want:
                 skip(i, 1)
                 pos = i + 1

@@ -21,17 +21,14 @@ checked to reach every layout, enum value, union member, array length class and 
 """
 
 import shutil
-import sys
 from pathlib import Path
 
 import pytest
 
 from generator.spec import load_spec
 from generator.vectors import load_corpus
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from differential import SEED, WORK, build_round, check_group, replay_command  # noqa: E402
-from reference import Reference  # noqa: E402
+from tests.conformance.differential import SEED, WORK, build_round, check_group, replay_command
+from tests.conformance.reference import Reference
 
 ROOT = Path(__file__).resolve().parents[2]
 IR = load_spec()
@@ -55,7 +52,7 @@ def test_reference_decoder_prints_every_golden_vector():
 
 def test_reference_sample_numbers_match_the_hand_derived_stream():
     """The oracle's §6 sample numbers on the hand-derived continuation stream of test_samples.py."""
-    from test_samples import STREAM
+    from tests.conformance.test_samples import STREAM
 
     lines = Reference(PROTOCOLS["mip"]).decode_stream(b"".join(p for p, _ in STREAM), samples=True)
     got = [int(x.split('"sample":')[1].split(",")[0]) if '"sample"' in x else None for x in lines]

@@ -1,8 +1,8 @@
 """Sample grouping of continuation packets (docs/conformance.md §6) through `decode --samples`,
 in every language, against sample numbers derived by hand from the rule.
 
-The stream is built here from hand-written fields (Fletcher-16 computed by the 6-line function
-below, over sync, header and payload). Shared descriptors: 0xD5 reference timestamp (u64 ns, a
+The stream is built here from hand-written fields (Fletcher-16 over sync, header and payload by
+the tests' one Fletcher-16, tests/helpers/packets.py). Shared descriptors: 0xD5 reference timestamp (u64 ns, a
 sample key), 0xD6 reference time delta (u64 ns, not a key); 0x04/0x05/0x06 are the scaled
 accel/gyro/mag vectors of set 0x80; 0xA0 is the system data set.
 """
@@ -13,22 +13,25 @@ from pathlib import Path
 
 import pytest
 
+from tests.helpers import packets
+
 ROOT = Path(__file__).resolve().parents[2]
 LANGS = ["c", "cpp", "python", "rust"]
 
 
-def fletcher(data: bytes) -> bytes:
-    s1 = s2 = 0
-    for b in data:
-        s1 = (s1 + b) & 0xFF
-        s2 = (s2 + s1) & 0xFF
-    return bytes([s1, s2])
+# The MIP framing, written down here (docs/conformance.md §1): sync 75 65, set byte, payload
+# length byte, Fletcher-16 sum1 then sum2.
+MIP_FRAMING = {
+    "sync": [0x75, 0x65],
+    "header_size": 4,
+    "set_offset": 2,
+    "length_offset": 3,
+    "checksum": {"order": ["sum1", "sum2"]},
+}
 
 
 def packet(set_id: int, *fields: str) -> bytes:
-    payload = bytes.fromhex("".join(fields))
-    body = bytes([0x75, 0x65, set_id, len(payload)]) + payload
-    return body + fletcher(body)
+    return packets.packet(MIP_FRAMING, set_id, bytes.fromhex("".join(fields)))
 
 
 def d5(ns: int) -> str:  # reference timestamp: length 10, descriptor D5, u64 big-endian

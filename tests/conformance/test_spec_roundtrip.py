@@ -12,15 +12,12 @@ command, response and data field. For each device group:
 
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
 from generator.spec import load_spec
-
-sys.path.insert(0, str(Path(__file__).parent))
-from samples import field_samples  # noqa: E402
+from tests.conformance.samples import field_samples
 
 ROOT = Path(__file__).resolve().parents[2]
 LANGS = ["c", "cpp", "python", "rust"]

@@ -16,20 +16,13 @@ import pytest
 
 from generator.spec import load_spec
 from generator.vectors import load_corpus
+from tests.helpers.packets import checksum
 
 ROOT = Path(__file__).resolve().parents[2]
 IR = load_spec()
 PROTOCOLS = {p["name"]: p for p in IR["protocols"]}
 CASES = load_corpus(IR, ROOT)
 STREAMS = [c for c in CASES if c["corpus"] == "streams"]
-
-
-def fletcher16(data: bytes) -> bytes:
-    a = b = 0
-    for x in data:
-        a = (a + x) % 256
-        b = (b + a) % 256
-    return bytes([a, b])
 
 
 def frame(data: bytes, framing: dict) -> list[tuple]:
@@ -67,9 +60,7 @@ def frame(data: bytes, framing: dict) -> list[tuple]:
             skip(i)
             pos = i + 1
             continue
-        check = fletcher16(data[i : i + hsize + length])
-        if framing["checksum"]["order"] == ["sum2", "sum1"]:
-            check = check[::-1]
+        check = checksum(framing, data[i : i + hsize + length])
         if data[i + hsize + length : i + total] != check:
             skip(i)
             pos = i + 1

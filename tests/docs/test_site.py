@@ -20,8 +20,7 @@ from urllib.parse import urldefrag, urlparse
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).parent))
-from cdp import Browser, find_chromium  # noqa: E402
+from tests.docs.cdp import Browser, find_chromium
 
 ROOT = Path(__file__).resolve().parents[2]
 SCREENSHOTS = {

@@ -229,7 +229,7 @@ def build_rust() -> None:
 
 # --------------------------------------------------------------------------------------- running
 def seeds() -> None:
-    sh([sys.executable, str(HERE / "seeds.py"), "--out", str(BUILD / "corpus")], stdout=subprocess.DEVNULL)
+    sh([sys.executable, "-m", "tests.fuzz.seeds", "--out", str(BUILD / "corpus")], stdout=subprocess.DEVNULL, cwd=ROOT)
 
 
 def fuzz_command(lang: str, package: str, target: str, bins: dict) -> tuple[list[str], dict]:
@@ -244,7 +244,9 @@ def fuzz_command(lang: str, package: str, target: str, bins: dict) -> tuple[list
     if lang == "rust":
         return rust_fuzz_cmd("run", f"{package}_{target}", "--"), cargo_env()
     python = os.environ.get("FUZZ_PYTHON", sys.executable)
-    return [python, str(HERE / "python" / "fuzz_target.py"), package, target], env
+    # the harness is the module tests.fuzz.python.fuzz_target: the project root is on its path
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(ROOT), env.get("PYTHONPATH")]))
+    return [python, "-m", "tests.fuzz.python.fuzz_target", package, target], env
 
 
 def run_one(lang: str, package: str, target: str, bins: dict, seconds: int | None, runs: int | None) -> dict:
@@ -378,7 +380,7 @@ def cmd_replay(_args) -> int:
     sh(
         [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(HERE / "python" / "test_regressions.py")],
         env=env,
-        cwd=HERE / "python",
+        cwd=ROOT,
     )
     print(f"fuzz.py: regressions and seeds replayed by {total} C/C++ harness runs, the Rust and the Python tests")
     return 0

@@ -1,6 +1,6 @@
 """Seed corpora for the fuzz targets, from the golden vectors and the stream corpus (generator.vectors.load_corpus).
 
-    python tests/fuzz/seeds.py [--out build/fuzz/corpus]
+    python -m tests.fuzz.seeds [--out build/fuzz/corpus]      (from the project root)
 
 writes one file per vector into <out>/<package>/<target>/:
   parser/<vector>: a control byte, then the vector's bytes. The control byte (low 6 bits: chunk
@@ -25,10 +25,10 @@ import shutil
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT))
+from generator.vectors import load_corpus
+from tests.helpers.packets import checksum
 
-from generator.vectors import load_corpus  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def control_byte(name: str, device_index: int) -> int:
@@ -48,12 +48,7 @@ def first_packet(framing: dict, data: bytes) -> bytes | None:
         body = data[i : i + header + n]
         if len(data) - i < header + n + 2:
             continue
-        sum1 = sum2 = 0
-        for b in body:
-            sum1 = (sum1 + b) & 0xFF
-            sum2 = (sum2 + sum1) & 0xFF
-        sums = {"sum1": sum1, "sum2": sum2}
-        if data[i + header + n : i + header + n + 2] == bytes(sums[k] for k in framing["checksum"]["order"]):
+        if data[i + header + n : i + header + n + 2] == checksum(framing, body):
             return bytes([data[i + framing["set_offset"]]]) + body[header:]
     return None
 

@@ -1,6 +1,8 @@
 """Runs one Python fuzz target under atheris (libFuzzer flags and corpus directories follow):
 
-    python tests/fuzz/python/fuzz_target.py PACKAGE TARGET [libFuzzer args...] [CORPUS_DIR...]
+    python -m tests.fuzz.python.fuzz_target PACKAGE TARGET [libFuzzer args...] [CORPUS_DIR...]
+
+(from the project root, or with it on PYTHONPATH as tests/fuzz/fuzz.py runs it).
 
 PACKAGE is mipcodec or mscipcodec, TARGET parser, decode or json (tests/fuzz/python/harness.py).
 `make fuzz` / `make fuzz-long` call this through tests/fuzz/fuzz.py.
@@ -9,16 +11,13 @@ PACKAGE is mipcodec or mscipcodec, TARGET parser, decode or json (tests/fuzz/pyt
 from __future__ import annotations
 
 import sys
-from pathlib import Path
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 
 def main() -> None:
     import atheris
 
     package, target = sys.argv[1], sys.argv[2]
-    import harness
+    from tests.fuzz.python import harness
 
     with atheris.instrument_imports():
         harness.load(package)

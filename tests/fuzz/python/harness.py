@@ -25,12 +25,9 @@ Python library prints into strings, so the C harnesses' small-buffer checks have
 
 from __future__ import annotations
 
-import importlib
-import sys
-from pathlib import Path
 from types import ModuleType
 
-ROOT = Path(__file__).resolve().parents[3]
+from tests.helpers.generated import python_package
 
 
 class FuzzCheckFailed(AssertionError):
@@ -44,10 +41,7 @@ def check(cond: object, message: str) -> None:
 
 def load(package: str) -> ModuleType:
     """The generated package (generated/python/<package>), imported from the source tree."""
-    path = str(ROOT / "generated" / "python" / package)
-    if path not in sys.path:
-        sys.path.insert(0, path)
-    return importlib.import_module(package)
+    return python_package(package)
 
 
 def chunk_sizes(control: int):

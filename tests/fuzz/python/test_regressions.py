@@ -7,8 +7,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-import harness
 import pytest
+
+from tests.fuzz.python import harness
 
 HERE = Path(__file__).resolve().parent
 REGRESSIONS = HERE.parent / "regressions"

@@ -1,10 +1,10 @@
-"""The benchmark streams (tests/bench/streams.py) are what their sidecars say.
+"""The benchmark streams (tests/bench/streams.py) are what their sidecars say (run by `make test-bench`).
 
 Every benchmark checks the packets and fields it saw against the sidecar `<name>.json`, so a
 wrong sidecar would fail every language's benchmark, and a stream whose garbage hid a packet
 would let a wrong parser pass. Here, on a small scale:
   - the clean streams are walked with nothing but the framing rules (sync, length byte, field
-    length bytes) and a byte-serial Fletcher-16 written here: every packet is where the previous
+    length bytes) and the tests' byte-serial Fletcher-16 (tests/helpers/packets.py): every packet is where the previous
     one ends, its checksum holds, and the packet and field counts and byte total equal the sidecar;
   - the garbage streams give exactly the sidecar's packets to the Python stream parser (no false
     sync turned into a packet, none lost), with packet bytes + garbage bytes = file size;
@@ -20,10 +20,11 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "generated" / "python" / "mipcodec"))
+from tests.helpers.generated import python_package
+from tests.helpers.packets import fletcher16
 
-import mipcodec  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
+mipcodec = python_package("mipcodec")
 
 SCALE = "0.002"  # 2000 accel+gyro packets, 400 mixed ones
 
@@ -32,23 +33,16 @@ SCALE = "0.002"  # 2000 accel+gyro packets, 400 mixed ones
 def streams(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("bench")
     subprocess.run(
-        [sys.executable, str(ROOT / "tests" / "bench" / "streams.py"), "--out", str(out), "--scale", SCALE],
+        [sys.executable, "-m", "tests.bench.streams", "--out", str(out), "--scale", SCALE],
         check=True,
         capture_output=True,
+        cwd=ROOT,
     )
     return out
 
 
 def sidecar(out: Path, name: str) -> dict:
     return json.loads((out / f"{name}.json").read_text())
-
-
-def fletcher16(data: bytes) -> bytes:
-    s1 = s2 = 0
-    for b in data:
-        s1 = (s1 + b) % 256
-        s2 = (s2 + s1) % 256
-    return bytes([s1, s2])
 
 
 @pytest.mark.parametrize("name", ["accel_gyro", "mixed"])

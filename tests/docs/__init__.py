@@ -1,0 +1,1 @@
+"""Tests of the reference documentation (Markdown and the HTML site)."""

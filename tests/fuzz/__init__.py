@@ -1,0 +1,1 @@
+"""Fuzzing: the driver, the seed corpora and the harnesses of every language."""

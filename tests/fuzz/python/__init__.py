@@ -1,0 +1,1 @@
+"""The Python fuzz harnesses (atheris) and their regression replay."""

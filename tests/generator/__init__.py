@@ -1,0 +1,1 @@
+"""Tests of the generator itself: spec loading, errors, IR, lookups, the audit."""

@@ -1,0 +1,103 @@
+/* getting_started FILE: builds a ping command with democodec, then decodes
+ * the packets in FILE (read in blocks, as from a serial port) and prints the name of every field.
+ * The documentation quotes the parts between the [...] and [end] comments. Generated: do not edit. */
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "democodec/democodec.h"
+
+// [parse-stream]
+/* Called by the parser for every packet and every run of skipped bytes. */
+static void on_event(void *ctx, const demo_event_t *event) {
+    demo_field_iter_t fields;
+    demo_field_entry_t entry;
+    const char *separator = "";
+    uint8_t set;
+    (void)ctx;
+    if (event->kind == DEMO_EVENT_SKIP) {
+        printf("skipped %llu\n", (unsigned long long)event->length);
+        return;
+    }
+    set = demo_packet_set(event->packet);
+    printf("packet set=0x%02x fields=", set);
+    demo_field_iter_init(&fields, set, demo_packet_payload(event->packet),
+                         demo_packet_payload_length(event->packet));
+    while (demo_field_iter_next(&fields, &entry)) {
+        demo_field_value_t value;
+        const char *name = "?"; /* trailing bytes, or a field that does not decode */
+        if (entry.kind == DEMO_ENTRY_FIELD &&
+            demo_decode_field(set, entry.descriptor, entry.data, entry.length, DEMO_DEVICE_ANY, &value,
+                              NULL) == DEMO_OK) {
+            name = demo_layout_info(value.id)->name;
+        }
+        printf("%s%s", separator, name);
+        separator = ",";
+    }
+    printf("\n");
+}
+// [end]
+
+// [build-command]
+/* Builds the command with its typed value and prints the packet bytes. */
+static int print_command(void) {
+    demo_commands_ping_t command;
+    uint8_t data[DEMO_MAX_FIELD_DATA];
+    uint8_t packet[DEMO_MAX_PACKET];
+    size_t data_len = 0;
+    size_t packet_len = 0;
+    size_t i;
+    demo_packet_builder_t builder;
+    memset(&command, 0, sizeof command);
+    demo_packet_begin(&builder, packet, sizeof packet, DEMO_COMMANDS_SET);
+    if (demo_commands_ping_encode(&command, data, sizeof data, &data_len) != DEMO_OK ||
+        demo_packet_add_field(&builder, DEMO_COMMANDS_PING_DESCRIPTOR, data, data_len) != DEMO_OK ||
+        demo_packet_finish(&builder, &packet_len) != DEMO_OK) {
+        fprintf(stderr, "getting_started: cannot build the command\n");
+        return 1;
+    }
+    printf("command ");
+    for (i = 0; i < packet_len; i++) {
+        printf("%02x", packet[i]);
+    }
+    printf("\n");
+    return 0;
+}
+// [end]
+
+// [read-file]
+/* Feeds the file to the parser block by block, then flushes it at the end of the input. */
+static int decode_file(const char *path) {
+    demo_parser_t parser;
+    uint8_t block[4096];
+    size_t n;
+    FILE *file = fopen(path, "rb");
+    if (!file) {
+        fprintf(stderr, "getting_started: cannot open %s: %s\n", path, strerror(errno));
+        return 1;
+    }
+    demo_parser_init(&parser);
+    while ((n = fread(block, 1, sizeof block, file)) > 0) {
+        demo_parser_feed(&parser, block, n, on_event, NULL);
+    }
+    if (ferror(file)) {
+        fprintf(stderr, "getting_started: cannot read %s\n", path);
+        fclose(file);
+        return 1;
+    }
+    fclose(file);
+    demo_parser_flush(&parser, on_event, NULL);
+    return 0;
+}
+// [end]
+
+int main(int argc, char **argv) {
+    if (argc != 2) {
+        fprintf(stderr, "usage: getting_started FILE\n");
+        return 2;
+    }
+    if (print_command() != 0) {
+        return 1;
+    }
+    return decode_file(argv[1]);
+}

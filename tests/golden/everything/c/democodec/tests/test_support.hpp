@@ -1,0 +1,152 @@
+// Helpers shared by the tests: hex, whole-stream decode to JSON text, JSON text to bytes.
+// Generated: do not edit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "democodec/json.h"
+#include "democodec/parser.h"
+
+namespace test_support {
+
+inline std::vector<uint8_t> from_hex(const std::string &hex) {
+    std::vector<uint8_t> out;
+    for (size_t i = 0; i + 1 < hex.size(); i += 2) {
+        out.push_back(static_cast<uint8_t>(std::stoul(hex.substr(i, 2), nullptr, 16)));
+    }
+    return out;
+}
+
+inline std::string to_hex(const std::vector<uint8_t> &bytes) {
+    static const char digits[] = "0123456789abcdef";
+    std::string out;
+    for (uint8_t b : bytes) {
+        out += digits[b >> 4];
+        out += digits[b & 0x0F];
+    }
+    return out;
+}
+
+struct Event {
+    demo_event_kind_t kind;
+    uint64_t offset;
+    uint64_t length;
+    bool operator==(const Event &o) const {
+        return kind == o.kind && offset == o.offset && length == o.length;
+    }
+};
+
+struct Collector {
+    const std::vector<uint8_t> *input = nullptr;
+    demo_device_t device = DEMO_DEVICE_ANY;
+    std::string text;
+    std::vector<Event> events;
+};
+
+inline void collect(void *arg, const demo_event_t *ev) {
+    Collector *c = static_cast<Collector *>(arg);
+    c->events.push_back(Event{ev->kind, ev->offset, ev->length});
+    std::string line(1024, '\0');
+    size_t n;
+    for (;;) {
+        if (ev->kind == DEMO_EVENT_SKIP) {
+            n = demo_json_skip_line(ev->offset, c->input->data() + ev->offset,
+                                    static_cast<size_t>(ev->length), &line[0], line.size());
+        } else {
+            n = demo_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device,
+                                      &line[0], line.size());
+        }
+        if (n < line.size()) {
+            break;
+        }
+        line.assign(n + 1, '\0');
+    }
+    c->text.append(line.data(), n);
+    c->text += '\n';
+}
+
+// Feeds the bytes in chunks of `chunk` bytes (0: all at once); returns the JSON lines.
+inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk,
+                        demo_device_t device = DEMO_DEVICE_ANY) {
+    Collector c;
+    c.input = &bytes;
+    c.device = device;
+    demo_parser_t parser;
+    demo_parser_init(&parser);
+    if (chunk == 0) {
+        demo_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
+    } else {
+        for (size_t i = 0; i < bytes.size(); i += chunk) {
+            size_t n = bytes.size() - i < chunk ? bytes.size() - i : chunk;
+            demo_parser_feed(&parser, bytes.data() + i, n, collect, &c);
+        }
+    }
+    demo_parser_flush(&parser, collect, &c);
+    return c;
+}
+
+inline std::string decode_text(const std::vector<uint8_t> &bytes, size_t chunk,
+                               demo_device_t device = DEMO_DEVICE_ANY) {
+    return decode(bytes, chunk, device).text;
+}
+
+// Encodes newline-separated JSON lines; false and a message on the first bad line.
+inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std::string *error) {
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t nl = text.find('\n', start);
+        if (nl == std::string::npos) {
+            nl = text.size();
+        }
+        std::string line = text.substr(start, nl - start);
+        start = nl + 1;
+        if (line.empty()) {
+            continue;
+        }
+        std::vector<uint8_t> buf(line.size() / 2 + DEMO_MAX_PACKET);
+        char msg[512];
+        size_t n = 0;
+        demo_status_t st =
+            demo_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
+        if (st != DEMO_OK) {
+            *error = msg;
+            return false;
+        }
+        out->insert(out->end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(n));
+    }
+    return true;
+}
+
+// A packet of descriptor set `set` holding the given (descriptor, data) fields.
+inline std::vector<uint8_t> packet(uint8_t set,
+                                   const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
+    std::vector<uint8_t> buf(DEMO_MAX_PACKET);
+    demo_packet_builder_t b;
+    demo_packet_begin(&b, buf.data(), buf.size(), set);
+    for (const auto &f : fields) {
+        demo_packet_add_field(&b, f.first, f.second.data(), f.second.size());
+    }
+    size_t n = 0;
+    if (demo_packet_finish(&b, &n) != DEMO_OK) {
+        return {};
+    }
+    buf.resize(n);
+    return buf;
+}
+
+// A byte that is not part of the sync sequence (garbage that cannot start a packet).
+inline uint8_t garbage_byte() {
+    for (unsigned b = 0;; b++) {
+        bool in_sync = false;
+        for (size_t i = 0; i < DEMO_SYNC_SIZE; i++) {
+            in_sync = in_sync || demo_sync[i] == b;
+        }
+        if (!in_sync) {
+            return static_cast<uint8_t>(b);
+        }
+    }
+}
+
+} // namespace test_support

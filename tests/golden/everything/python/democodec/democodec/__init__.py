@@ -1,0 +1,94 @@
+"""Demo protocol with every spec feature: typed encoder/decoder generated from the protocol spec.
+
+Modules: one per descriptor set (commands, data, receiver_1, receiver_2, shared) holding a
+dataclass per command, response and data field; `types` (enums, bitfields, structs, unions);
+`reserved` (fields reserved in every set of a kind); `framing` (checksum, packet builder, stream
+parser, field splitter); `packets` (dispatch and canonical JSON lines); `samples` (continuation
+packets grouped by shared timestamp); `cli` (decode/encode).
+
+    from democodec import Parser, PacketBuilder, decode_packet
+    for event in Parser().feed(data):
+        ...
+"""
+
+from . import commands, data, receiver_1, receiver_2, reserved, shared, types
+from .canonical import NaN
+from .codec import DecodeError, EncodeError, Field, Layout, Struct
+from .framing import (
+    ACCELERATED,
+    FramingError,
+    PacketBuilder,
+    Parser,
+    RawPacket,
+    Skip,
+    build_packet,
+    checksum_bytes,
+    fletcher16,
+    iter_fields,
+    parse,
+)
+from .packets import (
+    Columns,
+    DecodedField,
+    Decoder,
+    Packet,
+    RawField,
+    Trailing,
+    decode_all,
+    decode_bytes,
+    decode_columns,
+    decode_field,
+    decode_packet,
+    decode_stream,
+    encode_line,
+    encode_lines,
+)
+from .registry import DEVICES, lookup
+from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+
+__all__ = [
+    "commands",
+    "data",
+    "receiver_1",
+    "receiver_2",
+    "reserved",
+    "shared",
+    "types",
+    "NaN",
+    "DecodeError",
+    "EncodeError",
+    "Field",
+    "Layout",
+    "Struct",
+    "ACCELERATED",
+    "FramingError",
+    "PacketBuilder",
+    "Parser",
+    "RawPacket",
+    "Skip",
+    "build_packet",
+    "checksum_bytes",
+    "fletcher16",
+    "iter_fields",
+    "parse",
+    "Columns",
+    "DecodedField",
+    "Decoder",
+    "Packet",
+    "RawField",
+    "Trailing",
+    "decode_all",
+    "decode_bytes",
+    "decode_columns",
+    "decode_field",
+    "decode_packet",
+    "decode_stream",
+    "encode_line",
+    "encode_lines",
+    "DEVICES",
+    "lookup",
+    "Sample",
+    "SampleGrouper",
+    "SampleTracker",
+    "sample_key",
+]

@@ -1,0 +1,1130 @@
+/* Optional C accelerator of democodec (Demo protocol with every spec feature), built by the package's
+ * setup.py.
+ *
+ * It replaces the two hot loops of the pure-Python runtime and nothing else:
+ *   - scan(): the stream parser (framing.Parser._scan): sync search, length, Fletcher-16, skip runs;
+ *   - decode_packet() / decode_all(): field splitting and dispatch by (set, descriptor), with the
+ *     typed values of layouts made of fixed-size scalars (codec.Run of ints, floats, bools, chars,
+ *     strings, enums, bitfields) built here; every other layout, every error and every NaN goes
+ *     back to the pure-Python decoder, so messages and values are those of the pure path.
+ * The objects it returns are instances of the package's own classes (RawPacket, Skip, Packet,
+ * DecodedField and the generated dataclasses), equal to what the pure path returns. The framing
+ * constants below are rendered from the IR like those of framing.py.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <structmember.h>
+#include <string.h>
+
+#if PY_VERSION_HEX < 0x030A0000
+static inline PyObject *Py_NewRef(PyObject *o) {
+    Py_INCREF(o);
+    return o;
+}
+#endif
+
+#define SYNC_LEN 2
+static const unsigned char SYNC[SYNC_LEN] = {
+    0xa5,
+    0xa5,
+};
+#define HEADER_SIZE 4
+#define SET_OFFSET 2
+#define LENGTH_OFFSET 3
+#define FIELD_HEADER_SIZE 2
+#define FIELD_LENGTH_OFFSET 1
+#define FIELD_DESCRIPTOR_OFFSET 0
+#define FIELD_LENGTH_ADJUST 0
+#define MAX_PAYLOAD 255
+#define CHECKSUM_SIZE 2
+#define CHECKSUM_SUM1_FIRST 1
+#define BIG_ENDIAN_WIRE 1
+
+/* Length byte - data length of a field (framing.field_length_adjust). */
+static int field_length_adjust(int set_id, int descriptor) {
+    (void)set_id;
+    (void)descriptor;
+    return FIELD_LENGTH_ADJUST;
+}
+
+/* ------------------------------------------------------------------------------ base types */
+/* Base classes of RawPacket and Skip (offset, data), Packet (offset, set, fields) and
+ * DecodedField (descriptor, value): the Python classes derive from them (with empty __slots__)
+ * and keep their methods; instances made here are instances of those Python classes. */
+typedef struct {
+    PyObject_HEAD PyObject *a;
+    PyObject *b;
+    PyObject *c;
+} Slots3;
+
+static int slots_traverse(Slots3 *self, visitproc visit, void *arg) {
+    Py_VISIT(self->a);
+    Py_VISIT(self->b);
+    Py_VISIT(self->c);
+    return 0;
+}
+
+static int slots_clear(Slots3 *self) {
+    Py_CLEAR(self->a);
+    Py_CLEAR(self->b);
+    Py_CLEAR(self->c);
+    return 0;
+}
+
+static void slots_dealloc(Slots3 *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    /* Instances of the Python subclasses come through subtype_dealloc, which drops the type. */
+    PyObject_GC_UnTrack(self);
+    slots_clear(self);
+    tp->tp_free((PyObject *)self);
+}
+
+static PyMemberDef event_members[] = {
+    {"offset", T_OBJECT_EX, offsetof(Slots3, a), 0, "stream offset"},
+    {"data", T_OBJECT_EX, offsetof(Slots3, b), 0, "bytes"},
+    {NULL, 0, 0, 0, NULL},
+};
+
+static PyMemberDef packet_members[] = {
+    {"offset", T_OBJECT_EX, offsetof(Slots3, a), 0, "stream offset"},
+    {"set", T_OBJECT_EX, offsetof(Slots3, b), 0, "descriptor set"},
+    {"fields", T_OBJECT_EX, offsetof(Slots3, c), 0, "field entries"},
+    {NULL, 0, 0, 0, NULL},
+};
+
+static PyMemberDef decoded_members[] = {
+    {"descriptor", T_OBJECT_EX, offsetof(Slots3, a), 0, "field descriptor"},
+    {"value", T_OBJECT_EX, offsetof(Slots3, b), 0, "typed value"},
+    {NULL, 0, 0, 0, NULL},
+};
+
+static PyTypeObject EventBase = {PyVarObject_HEAD_INIT(NULL, 0).tp_name = NULL};
+static PyTypeObject PacketBase = {PyVarObject_HEAD_INIT(NULL, 0).tp_name = NULL};
+static PyTypeObject DecodedFieldBase = {PyVarObject_HEAD_INIT(NULL, 0).tp_name = NULL};
+
+static int ready_base(PyTypeObject *tp, const char *name, PyMemberDef *members) {
+    tp->tp_name = name;
+    tp->tp_basicsize = sizeof(Slots3);
+    tp->tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE | Py_TPFLAGS_HAVE_GC;
+    tp->tp_traverse = (traverseproc)slots_traverse;
+    tp->tp_clear = (inquiry)slots_clear;
+    tp->tp_dealloc = (destructor)slots_dealloc;
+    tp->tp_members = members;
+    tp->tp_new = PyType_GenericNew;
+    return PyType_Ready(tp);
+}
+
+/* The package's classes and pure-Python fallbacks, given by setup(). */
+static PyTypeObject *raw_packet_type, *skip_type, *packet_type, *decoded_type;
+static PyObject *py_decode_packet; /* pure decode_packet(packet, offset, device) */
+static PyObject *py_decode_field;  /* decode_field(set, descriptor, data) */
+static PyObject *py_program;       /* program(set, descriptor) -> None or (cls, items) */
+
+static PyObject *new3(PyTypeObject *tp, PyObject *a, PyObject *b, PyObject *c) {
+    /* Steals a, b, c (which may be NULL on error: then returns NULL). */
+    if (a == NULL || b == NULL || (tp == packet_type && c == NULL)) {
+        Py_XDECREF(a);
+        Py_XDECREF(b);
+        Py_XDECREF(c);
+        return NULL;
+    }
+    Slots3 *o = (Slots3 *)tp->tp_alloc(tp, 0);
+    if (o == NULL) {
+        Py_DECREF(a);
+        Py_DECREF(b);
+        Py_XDECREF(c);
+        return NULL;
+    }
+    o->a = a;
+    o->b = b;
+    o->c = c;
+    return (PyObject *)o;
+}
+
+/* ------------------------------------------------------------------------------ framing */
+static int checksum_ok(const unsigned char *p, Py_ssize_t body) {
+    unsigned int sum1 = 0, sum2 = 0;
+    Py_ssize_t i = 0;
+    for (; i + 4 <= body; i += 4) {
+        /* Four steps of sum1 += b; sum2 += sum1, folded. */
+        unsigned int b0 = p[i], b1 = p[i + 1], b2 = p[i + 2], b3 = p[i + 3];
+        sum2 += 4 * sum1 + 4 * b0 + 3 * b1 + 2 * b2 + b3;
+        sum1 += b0 + b1 + b2 + b3;
+    }
+    for (; i < body; i++) {
+        sum1 += p[i];
+        sum2 += sum1;
+    }
+    sum1 &= 0xFF;
+    sum2 &= 0xFF;
+#if CHECKSUM_SUM1_FIRST
+    return p[body] == sum1 && p[body + 1] == sum2;
+#else
+    return p[body] == sum2 && p[body + 1] == sum1;
+#endif
+}
+
+static Py_ssize_t find_sync(const unsigned char *p, Py_ssize_t pos, Py_ssize_t n) {
+    while (pos < n) {
+        const unsigned char *q = memchr(p + pos, SYNC[0], (size_t)(n - pos));
+        if (q == NULL) {
+            return -1;
+        }
+        Py_ssize_t i = q - p;
+        if (n - i < SYNC_LEN) {
+            return -1;
+        }
+        if (memcmp(q, SYNC, SYNC_LEN) == 0) {
+            return i;
+        }
+        pos = i + 1;
+    }
+    return -1;
+}
+
+/* Skip-run state: bytes in a bytearray and the stream offset of its first byte. */
+typedef struct {
+    PyObject *bytes; /* bytearray */
+    Py_ssize_t at;
+} SkipRun;
+
+static int skipped(SkipRun *s, const unsigned char *p, Py_ssize_t base, Py_ssize_t a, Py_ssize_t b) {
+    Py_ssize_t have = PyByteArray_GET_SIZE(s->bytes);
+    if (have == 0) {
+        s->at = base + a;
+    }
+    if (PyByteArray_Resize(s->bytes, have + (b - a)) < 0) {
+        return -1;
+    }
+    memcpy(PyByteArray_AS_STRING(s->bytes) + have, p + a, (size_t)(b - a));
+    return 0;
+}
+
+static int flush_skip(SkipRun *s, PyObject *events) {
+    Py_ssize_t have = PyByteArray_GET_SIZE(s->bytes);
+    if (have == 0) {
+        return 0;
+    }
+    PyObject *ev = new3(skip_type, PyLong_FromSsize_t(s->at),
+                        PyBytes_FromStringAndSize(PyByteArray_AS_STRING(s->bytes), have), NULL);
+    if (ev == NULL || PyList_Append(events, ev) < 0) {
+        Py_XDECREF(ev);
+        return -1;
+    }
+    Py_DECREF(ev);
+    return PyByteArray_Resize(s->bytes, 0);
+}
+
+static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject *offset);
+
+typedef struct Columns Columns;
+static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
+
+enum { SCAN_RAW, SCAN_DECODE, SCAN_COLUMNS };
+
+/* The parser loop of framing.Parser._scan over p[0:n] (stream offset `base`). A packet becomes
+ * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), or rows of `columns` (SCAN_COLUMNS);
+ * Skip events go to `events`. Returns the number of bytes consumed, or -1 with an exception set. */
+static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int mode,
+                            Columns *columns, SkipRun *skip, PyObject *events) {
+    Py_ssize_t pos = 0;
+    while (pos < n) {
+        Py_ssize_t i = find_sync(p, pos, n);
+        if (i < 0) {
+            /* Keep a partial sync sequence at the very end (unless this is the end of input). */
+            Py_ssize_t keep = n;
+            if (!final) {
+                Py_ssize_t j = n - SYNC_LEN + 1;
+                if (j < pos) {
+                    j = pos;
+                }
+                for (; j < n; j++) {
+                    if (memcmp(p + j, SYNC, (size_t)(n - j)) == 0) {
+                        keep = j;
+                        break;
+                    }
+                }
+            }
+            if (keep > pos && skipped(skip, p, base, pos, keep) < 0) {
+                return -1;
+            }
+            pos = keep;
+            break;
+        }
+        if (i > pos && skipped(skip, p, base, pos, i) < 0) {
+            return -1;
+        }
+        int length = n - i >= HEADER_SIZE ? p[i + LENGTH_OFFSET] : -1;
+        if (length >= 0 && length <= MAX_PAYLOAD) {
+            Py_ssize_t body = HEADER_SIZE + length;
+            Py_ssize_t total = body + CHECKSUM_SIZE;
+            if (n - i >= total) {
+                if (checksum_ok(p + i, body)) {
+                    if (flush_skip(skip, events) < 0) {
+                        return -1;
+                    }
+                    if (mode == SCAN_COLUMNS) {
+                        if (column_packet(columns, p + i, total, base + i) < 0) {
+                            return -1;
+                        }
+                        pos = i + total;
+                        continue;
+                    }
+                    PyObject *off = PyLong_FromSsize_t(base + i);
+                    PyObject *ev;
+                    if (mode == SCAN_DECODE) {
+                        ev = off == NULL ? NULL : decode_packet_c(p + i, total, off);
+                        Py_XDECREF(off);
+                    } else {
+                        ev = new3(raw_packet_type, off, PyBytes_FromStringAndSize((const char *)p + i, total),
+                                  NULL);
+                    }
+                    if (ev == NULL || PyList_Append(events, ev) < 0) {
+                        Py_XDECREF(ev);
+                        return -1;
+                    }
+                    Py_DECREF(ev);
+                    pos = i + total;
+                    continue;
+                }
+            } else if (!final) {
+                pos = i; /* wait for the rest of the packet */
+                break;
+            }
+        } else if (length < 0 && !final) {
+            pos = i; /* wait for the rest of the header */
+            break;
+        }
+        /* A false sync (bad length or checksum, or incomplete at end of input): skip one byte. */
+        if (skipped(skip, p, base, i, i + 1) < 0) {
+            return -1;
+        }
+        pos = i + 1;
+    }
+    return pos;
+}
+
+/* The cyclic garbage collector is paused while one call builds its objects: they form no cycle,
+ * and a collection in the middle would only rescan them (promoting them to older generations,
+ * which then get rescanned over and over on long streams). Objects the caller drops before the
+ * next call are never scanned at all; those it keeps are collected as usual afterwards. */
+static int gc_pause(void) {
+#if PY_VERSION_HEX >= 0x030A0000
+    return PyGC_Disable();
+#else
+    return 0;
+#endif
+}
+
+static void gc_resume(int was_enabled) {
+#if PY_VERSION_HEX >= 0x030A0000
+    if (was_enabled) {
+        PyGC_Enable();
+    }
+#else
+    (void)was_enabled;
+#endif
+}
+
+/* scan(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool, decode: bool = False)
+ *   -> (events, consumed, skip_at); with decode, packets are decoded (Packet) instead of RawPacket. */
+static PyObject *scan(PyObject *self, PyObject *args) {
+    (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        return NULL;
+    }
+    PyObject *buf;
+    Py_ssize_t base;
+    SkipRun skip;
+    int final, decode = 0;
+    if (!PyArg_ParseTuple(args, "O!nO!np|p", &PyByteArray_Type, &buf, &base, &PyByteArray_Type, &skip.bytes,
+                          &skip.at, &final, &decode)) {
+        return NULL;
+    }
+    /* Decoding may run Python code (the fallbacks): it works on a private copy of the buffer.
+     * Framing alone runs none (only our own objects are made), so it reads buf in place. */
+    PyObject *copy = NULL;
+    const unsigned char *p = (const unsigned char *)PyByteArray_AS_STRING(buf);
+    Py_ssize_t n = PyByteArray_GET_SIZE(buf);
+    if (decode) {
+        copy = PyBytes_FromStringAndSize((const char *)p, n);
+        if (copy == NULL) {
+            return NULL;
+        }
+        p = (const unsigned char *)PyBytes_AS_STRING(copy);
+    }
+    PyObject *events = PyList_New(0);
+    if (events == NULL) {
+        Py_XDECREF(copy);
+        return NULL;
+    }
+    int gc = gc_pause();
+    Py_ssize_t pos = scan_core(p, n, base, final, decode ? SCAN_DECODE : SCAN_RAW, NULL, &skip, events);
+    gc_resume(gc);
+    Py_XDECREF(copy);
+    if (pos < 0) {
+        Py_DECREF(events);
+        return NULL;
+    }
+    return Py_BuildValue("Nnn", events, pos, skip.at);
+}
+
+/* ------------------------------------------------------------------------------ typed values */
+/* One wire item of a fixed layout: a scalar (count < 0) or a fixed array (a list). */
+typedef struct {
+    char kind;      /* u: unsigned, i: signed, f: float32, d: float64, ?: bool, c: char, s: string,
+                       e: enum (aux: value -> member dict), F: bitfield (aux: class) */
+    int size;       /* bytes of one element */
+    int count;      /* -1: scalar */
+    PyObject *aux;  /* owned */
+    PyObject *attr; /* owned, interned attribute name */
+} Item;
+
+typedef enum { ENTRY_SLOW = 1, ENTRY_FAST = 2 } EntryKind;
+
+typedef struct {
+    EntryKind kind;
+    PyObject *cls;   /* owned */
+    Py_ssize_t size; /* data bytes */
+    int nitems;
+    Item items[];
+} Entry;
+
+static Entry **entries[256]; /* [set][descriptor], filled on first use */
+
+static unsigned long long load(const unsigned char *p, int size) {
+    unsigned long long v = 0;
+#if BIG_ENDIAN_WIRE
+    for (int k = 0; k < size; k++) {
+        v = (v << 8) | p[k];
+    }
+#else
+    for (int k = size - 1; k >= 0; k--) {
+        v = (v << 8) | p[k];
+    }
+#endif
+    return v;
+}
+
+static inline unsigned int load32(const unsigned char *p) {
+#if BIG_ENDIAN_WIRE
+    return ((unsigned int)p[0] << 24) | ((unsigned int)p[1] << 16) | ((unsigned int)p[2] << 8) | p[3];
+#else
+    return ((unsigned int)p[3] << 24) | ((unsigned int)p[2] << 16) | ((unsigned int)p[1] << 8) | p[0];
+#endif
+}
+
+#define NOT_FAST ((PyObject *)1) /* the value needs the pure-Python decoder */
+
+/* One element; NULL with an exception, or NOT_FAST. */
+static PyObject *element(const Item *it, const unsigned char *p) {
+    switch (it->kind) {
+    case 'f': {
+        unsigned int bits = load32(p);
+        float f;
+        memcpy(&f, &bits, 4);
+        if (f != f) {
+            return NOT_FAST;
+        }
+        return PyFloat_FromDouble((double)f);
+    }
+    case 'd': {
+        unsigned long long bits = load(p, 8);
+        double d;
+        memcpy(&d, &bits, 8);
+        if (d != d) {
+            return NOT_FAST;
+        }
+        return PyFloat_FromDouble(d);
+    }
+    case 'u':
+        return PyLong_FromUnsignedLongLong(load(p, it->size));
+    case 'i': {
+        unsigned long long v = load(p, it->size);
+        int shift = 64 - 8 * it->size;
+        long long s = shift ? (long long)(v << shift) >> shift : (long long)v;
+        return PyLong_FromLongLong(s);
+    }
+    case '?':
+        if (p[0] > 1) {
+            return NOT_FAST;
+        }
+        return PyBool_FromLong(p[0]);
+    case 'c':
+    case 's':
+        return PyBytes_FromStringAndSize((const char *)p, it->size);
+    case 'e': {
+        PyObject *v = PyLong_FromUnsignedLongLong(load(p, it->size));
+        if (v == NULL) {
+            return NULL;
+        }
+        PyObject *m = PyDict_GetItemWithError(it->aux, v);
+        if (m != NULL) {
+            Py_INCREF(m);
+            Py_DECREF(v);
+            return m;
+        }
+        if (PyErr_Occurred()) {
+            Py_DECREF(v);
+            return NULL;
+        }
+        return v;
+    }
+    case 'F': {
+        PyObject *v = PyLong_FromUnsignedLongLong(load(p, it->size));
+        if (v == NULL) {
+            return NULL;
+        }
+        PyObject *r = PyObject_CallOneArg(it->aux, v);
+        Py_DECREF(v);
+        return r;
+    }
+    default:
+        PyErr_Format(PyExc_SystemError, "bad item kind %c", it->kind);
+        return NULL;
+    }
+}
+
+static PyObject *empty_tuple;
+
+/* The typed value of a fast entry; NULL with an exception, or NOT_FAST. */
+static PyObject *fast_value(const Entry *e, const unsigned char *p) {
+    PyObject *obj = PyBaseObject_Type.tp_new((PyTypeObject *)e->cls, empty_tuple, NULL);
+    if (obj == NULL) {
+        return NULL;
+    }
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        PyObject *v;
+        if (it->count < 0) {
+            v = element(it, p);
+            p += it->size;
+        } else {
+            v = PyList_New(it->count);
+            for (int j = 0; v != NULL && j < it->count; j++) {
+                PyObject *x = element(it, p);
+                p += it->size;
+                if (x == NULL || x == NOT_FAST) {
+                    Py_DECREF(v);
+                    v = x;
+                    break;
+                }
+                PyList_SET_ITEM(v, j, x);
+            }
+        }
+        if (v == NULL || v == NOT_FAST) {
+            Py_DECREF(obj);
+            return v;
+        }
+        int rc = PyObject_GenericSetAttr(obj, it->attr, v);
+        Py_DECREF(v);
+        if (rc < 0) {
+            Py_DECREF(obj);
+            return NULL;
+        }
+    }
+    return obj;
+}
+
+/* The entry of (set, descriptor), asking the Python side on first use. */
+static Entry *entry_for(int set_id, int descriptor) {
+    Entry **row = entries[set_id];
+    if (row == NULL) {
+        row = PyMem_Calloc(256, sizeof(Entry *));
+        if (row == NULL) {
+            PyErr_NoMemory();
+            return NULL;
+        }
+        entries[set_id] = row;
+    }
+    if (row[descriptor] != NULL) {
+        return row[descriptor];
+    }
+    PyObject *prog = PyObject_CallFunction(py_program, "ii", set_id, descriptor);
+    if (prog == NULL) {
+        return NULL;
+    }
+    Entry *e;
+    if (prog == Py_None) {
+        e = PyMem_Calloc(1, sizeof(Entry));
+        if (e == NULL) {
+            Py_DECREF(prog);
+            PyErr_NoMemory();
+            return NULL;
+        }
+        e->kind = ENTRY_SLOW;
+    } else {
+        PyObject *cls, *items;
+        if (!PyArg_ParseTuple(prog, "OO!", &cls, &PyTuple_Type, &items)) {
+            Py_DECREF(prog);
+            return NULL;
+        }
+        Py_ssize_t n = PyTuple_GET_SIZE(items);
+        e = PyMem_Calloc(1, sizeof(Entry) + (size_t)n * sizeof(Item));
+        if (e == NULL) {
+            Py_DECREF(prog);
+            PyErr_NoMemory();
+            return NULL;
+        }
+        e->kind = ENTRY_FAST;
+        e->cls = Py_NewRef(cls);
+        e->nitems = (int)n;
+        for (Py_ssize_t k = 0; k < n; k++) {
+            Item *it = &e->items[k];
+            const char *kind;
+            PyObject *attr, *aux;
+            if (!PyArg_ParseTuple(PyTuple_GET_ITEM(items, k), "UsiiO", &attr, &kind, &it->size, &it->count,
+                                  &aux)) {
+                Py_DECREF(prog);
+                return NULL; /* the half-built entry leaks, once, on a programming error */
+            }
+            it->kind = kind[0];
+            it->attr = Py_NewRef(attr);
+            PyUnicode_InternInPlace(&it->attr);
+            it->aux = Py_NewRef(aux);
+            e->size += (Py_ssize_t)it->size * (it->count < 0 ? 1 : it->count);
+        }
+    }
+    Py_DECREF(prog);
+    row[descriptor] = e;
+    return e;
+}
+
+static PyObject *slow_field(int set_id, int descriptor, const unsigned char *data, Py_ssize_t len) {
+    return PyObject_CallFunction(py_decode_field, "iiy#", set_id, descriptor, (const char *)data, len);
+}
+
+#define NOT_SPLIT ((PyObject *)1) /* the payload has trailing bytes: pure-Python decoder */
+
+/* Field entries of a payload, or NULL with an exception, or NOT_SPLIT. */
+static PyObject *decode_fields(int set_id, const unsigned char *pl, Py_ssize_t n) {
+    /* Count the fields first (and see that the payload splits cleanly). */
+    Py_ssize_t count = 0;
+    for (Py_ssize_t o = 0; o < n;) {
+        if (n - o < FIELD_HEADER_SIZE) {
+            return NOT_SPLIT;
+        }
+        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        int data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+        if (data_length < 0 || FIELD_HEADER_SIZE + data_length > n - o) {
+            return NOT_SPLIT;
+        }
+        o += FIELD_HEADER_SIZE + data_length;
+        count++;
+    }
+    PyObject *fields = PyList_New(count);
+    if (fields == NULL) {
+        return NULL;
+    }
+    Py_ssize_t k = 0;
+    for (Py_ssize_t o = 0; o < n; k++) {
+        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        Py_ssize_t data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+        const unsigned char *data = pl + o + FIELD_HEADER_SIZE;
+        o += FIELD_HEADER_SIZE + data_length;
+        Entry *e = entry_for(set_id, descriptor);
+        if (e == NULL) {
+            Py_DECREF(fields);
+            return NULL;
+        }
+        PyObject *entry = NULL;
+        if (e->kind == ENTRY_FAST && e->size == data_length) {
+            PyObject *v = fast_value(e, data);
+            if (v != NOT_FAST) {
+                entry = new3(decoded_type, PyLong_FromLong(descriptor), v, NULL);
+                if (entry == NULL) {
+                    Py_DECREF(fields);
+                    return NULL;
+                }
+            }
+        }
+        if (entry == NULL) {
+            entry = slow_field(set_id, descriptor, data, data_length);
+            if (entry == NULL) {
+                Py_DECREF(fields);
+                return NULL;
+            }
+        }
+        PyList_SET_ITEM(fields, k, entry);
+    }
+    return fields;
+}
+
+/* A Packet from a complete packet p[0:n] (as found by the parser); NULL with an exception. */
+static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject *offset) {
+    PyObject *fields = NOT_SPLIT;
+    if (n >= HEADER_SIZE + CHECKSUM_SIZE) {
+        fields = decode_fields(p[SET_OFFSET], p + HEADER_SIZE, n - HEADER_SIZE - CHECKSUM_SIZE);
+    }
+    if (fields == NOT_SPLIT) {
+        return PyObject_CallFunction(py_decode_packet, "y#OO", (const char *)p, n, offset, Py_None);
+    }
+    Py_INCREF(offset);
+    return new3(packet_type, offset, PyLong_FromLong(p[SET_OFFSET]), fields);
+}
+
+/* decode_packet(packet, offset=0, device=None) */
+static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs) {
+    (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        return NULL;
+    }
+    static char *names[] = {"packet", "offset", "device", NULL};
+    PyObject *packet, *offset = NULL, *device = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O|OO", names, &packet, &offset, &device)) {
+        return NULL;
+    }
+    if (offset == NULL) {
+        offset = PyLong_FromLong(0);
+    } else {
+        Py_INCREF(offset);
+    }
+    PyObject *r;
+    if (device != Py_None) {
+        r = PyObject_CallFunctionObjArgs(py_decode_packet, packet, offset, device, NULL);
+    } else {
+        Py_buffer view;
+        if (PyObject_GetBuffer(packet, &view, PyBUF_SIMPLE) < 0) {
+            Py_DECREF(offset);
+            return NULL;
+        }
+        /* Copy: Python code run by the fallbacks must not see (or resize) the caller's buffer. */
+        PyObject *copy = PyBytes_FromStringAndSize(view.buf, view.len);
+        PyBuffer_Release(&view);
+        if (copy == NULL) {
+            Py_DECREF(offset);
+            return NULL;
+        }
+        r = decode_packet_c((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), offset);
+        Py_DECREF(copy);
+    }
+    Py_DECREF(offset);
+    return r;
+}
+
+/* decode_all(data) -> [Packet | Skip]: a complete stream, parsed and decoded in one pass. */
+static PyObject *decode_all(PyObject *self, PyObject *arg) {
+    (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        return NULL;
+    }
+    PyObject *copy = PyBytes_FromObject(arg); /* a private immutable copy (no copy for bytes) */
+    if (copy == NULL) {
+        return NULL;
+    }
+    SkipRun skip = {PyByteArray_FromStringAndSize(NULL, 0), 0};
+    PyObject *events = PyList_New(0);
+    if (skip.bytes == NULL || events == NULL) {
+        Py_XDECREF(skip.bytes);
+        Py_XDECREF(events);
+        Py_DECREF(copy);
+        return NULL;
+    }
+    int gc = gc_pause();
+    Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0, 1,
+                               SCAN_DECODE, NULL, &skip, events);
+    gc_resume(gc);
+    Py_DECREF(copy);
+    if (pos < 0 || flush_skip(&skip, events) < 0) {
+        Py_DECREF(skip.bytes);
+        Py_DECREF(events);
+        return NULL;
+    }
+    Py_DECREF(skip.bytes);
+    return events;
+}
+
+/* ------------------------------------------------------------------------------ columns */
+/* decode_columns: the fields the C side reads (fast entries without char or string items) become
+ * rows of per-(set, descriptor) tables of native numbers; every other field entry (and every
+ * packet that does not split into fields) goes to `others` as Python objects. */
+typedef struct {
+    char *p;
+    Py_ssize_t len, cap;
+} Buf;
+
+static int buf_reserve(Buf *b, Py_ssize_t more) {
+    if (b->len + more <= b->cap) {
+        return 0;
+    }
+    Py_ssize_t cap = b->cap ? b->cap : 4096;
+    while (cap < b->len + more) {
+        cap *= 2;
+    }
+    char *q = PyMem_Realloc(b->p, (size_t)cap);
+    if (q == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    b->p = q;
+    b->cap = cap;
+    return 0;
+}
+
+typedef struct {
+    const Entry *e;
+    int set_id, descriptor;
+    Py_ssize_t rows;
+    Buf offsets; /* long long per row: packet offset */
+    Buf index;   /* long long per row: position of the field in its packet */
+    Buf cols[];  /* per item: double (f, d), long long (i), unsigned long long (u, e, F), unsigned char (?) */
+} Table;
+
+struct Columns {
+    Table **by_key; /* [set << 8 | descriptor] */
+    Table **list;
+    Py_ssize_t ntables, cap;
+    Py_ssize_t packets;
+    PyObject *others; /* [(offset, index, entry) | (offset, -1, Packet)] */
+};
+
+static int columnable(const Entry *e) {
+    if (e->kind != ENTRY_FAST) {
+        return 0;
+    }
+    for (int k = 0; k < e->nitems; k++) {
+        if (e->items[k].kind == 'c' || e->items[k].kind == 's') {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int column_width(char kind) {
+    return kind == '?' ? 1 : 8;
+}
+
+/* True when every element reads as the pure decoder reads it (no NaN, no invalid bool). */
+static int row_ok(const Entry *e, const unsigned char *p) {
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        int n = it->count < 0 ? 1 : it->count;
+        for (int j = 0; j < n; j++, p += it->size) {
+            if (it->kind == 'f') {
+                unsigned int bits = load32(p);
+                if ((bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu)) {
+                    return 0;
+                }
+            } else if (it->kind == 'd') {
+                unsigned long long bits = load(p, 8);
+                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull &&
+                    (bits & 0x000FFFFFFFFFFFFFull)) {
+                    return 0;
+                }
+            } else if (it->kind == '?' && p[0] > 1) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+static Table *table_for(Columns *c, const Entry *e, int set_id, int descriptor) {
+    Table **slot = &c->by_key[set_id << 8 | descriptor];
+    if (*slot != NULL) {
+        return *slot;
+    }
+    Table *t = PyMem_Calloc(1, sizeof(Table) + (size_t)e->nitems * sizeof(Buf));
+    if (t == NULL) {
+        PyErr_NoMemory();
+        return NULL;
+    }
+    if (c->ntables == c->cap) {
+        Py_ssize_t cap = c->cap ? 2 * c->cap : 16;
+        Table **q = PyMem_Realloc(c->list, (size_t)cap * sizeof(Table *));
+        if (q == NULL) {
+            PyMem_Free(t);
+            PyErr_NoMemory();
+            return NULL;
+        }
+        c->list = q;
+        c->cap = cap;
+    }
+    t->e = e;
+    t->set_id = set_id;
+    t->descriptor = descriptor;
+    c->list[c->ntables++] = t;
+    *slot = t;
+    return t;
+}
+
+static int put_row(Table *t, const unsigned char *p, long long offset, long long index) {
+    const Entry *e = t->e;
+    if (buf_reserve(&t->offsets, 8) < 0 || buf_reserve(&t->index, 8) < 0) {
+        return -1;
+    }
+    memcpy(t->offsets.p + t->offsets.len, &offset, 8);
+    t->offsets.len += 8;
+    memcpy(t->index.p + t->index.len, &index, 8);
+    t->index.len += 8;
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        int n = it->count < 0 ? 1 : it->count;
+        Buf *b = &t->cols[k];
+        if (buf_reserve(b, (Py_ssize_t)n * column_width(it->kind)) < 0) {
+            return -1;
+        }
+        char *out = b->p + b->len;
+        for (int j = 0; j < n; j++, p += it->size) {
+            switch (it->kind) {
+            case 'f': {
+                unsigned int bits = load32(p);
+                float f;
+                memcpy(&f, &bits, 4);
+                double d = f;
+                memcpy(out, &d, 8);
+                out += 8;
+                break;
+            }
+            case 'd': {
+                unsigned long long bits = load(p, 8);
+                memcpy(out, &bits, 8);
+                out += 8;
+                break;
+            }
+            case 'i': {
+                unsigned long long v = load(p, it->size);
+                int shift = 64 - 8 * it->size;
+                long long x = shift ? (long long)(v << shift) >> shift : (long long)v;
+                memcpy(out, &x, 8);
+                out += 8;
+                break;
+            }
+            case '?':
+                *out++ = (char)p[0];
+                break;
+            default: { /* u, e, F */
+                unsigned long long v = load(p, it->size);
+                memcpy(out, &v, 8);
+                out += 8;
+                break;
+            }
+            }
+        }
+        b->len = out - b->p;
+    }
+    t->rows++;
+    return 0;
+}
+
+static int add_other(Columns *c, long long offset, long long index, PyObject *entry) {
+    if (entry == NULL) {
+        return -1;
+    }
+    PyObject *t = Py_BuildValue("LLN", offset, index, entry);
+    if (t == NULL || PyList_Append(c->others, t) < 0) {
+        Py_XDECREF(t);
+        return -1;
+    }
+    Py_DECREF(t);
+    return 0;
+}
+
+static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset) {
+    int set_id = p[SET_OFFSET];
+    const unsigned char *pl = p + HEADER_SIZE;
+    Py_ssize_t len = n - HEADER_SIZE - CHECKSUM_SIZE;
+    c->packets++;
+    /* A payload that does not split into fields: the whole packet, decoded in Python. */
+    for (Py_ssize_t o = 0; o < len;) {
+        int bad = len - o < FIELD_HEADER_SIZE;
+        if (!bad) {
+            int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+            int data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+            bad = data_length < 0 || FIELD_HEADER_SIZE + data_length > len - o;
+            o += FIELD_HEADER_SIZE + (data_length < 0 ? 0 : data_length);
+        }
+        if (bad) {
+            PyObject *off = PyLong_FromSsize_t(offset);
+            if (off == NULL) {
+                return -1;
+            }
+            PyObject *pkt = PyObject_CallFunction(py_decode_packet, "y#OO", (const char *)p, n, off, Py_None);
+            Py_DECREF(off);
+            return add_other(c, offset, -1, pkt);
+        }
+    }
+    long long index = 0;
+    for (Py_ssize_t o = 0; o < len; index++) {
+        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        Py_ssize_t data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+        const unsigned char *data = pl + o + FIELD_HEADER_SIZE;
+        o += FIELD_HEADER_SIZE + data_length;
+        Entry *e = entry_for(set_id, descriptor);
+        if (e == NULL) {
+            return -1;
+        }
+        if (e->kind == ENTRY_FAST && e->size == data_length && columnable(e) && row_ok(e, data)) {
+            Table *t = table_for(c, e, set_id, descriptor);
+            if (t == NULL || put_row(t, data, offset, index) < 0) {
+                return -1;
+            }
+        } else if (add_other(c, offset, index, slow_field(set_id, descriptor, data, data_length)) < 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static PyObject *buf_bytes(const Buf *b) {
+    return PyBytes_FromStringAndSize(b->p ? b->p : "", b->len);
+}
+
+static PyObject *tables_out(Columns *c) {
+    PyObject *out = PyList_New(c->ntables);
+    for (Py_ssize_t k = 0; out != NULL && k < c->ntables; k++) {
+        Table *t = c->list[k];
+        PyObject *cols = PyList_New(t->e->nitems);
+        for (int j = 0; cols != NULL && j < t->e->nitems; j++) {
+            PyObject *b = buf_bytes(&t->cols[j]);
+            if (b == NULL) {
+                Py_CLEAR(cols);
+                break;
+            }
+            PyList_SET_ITEM(cols, j, b);
+        }
+        PyObject *row = cols == NULL ? NULL
+                                     : Py_BuildValue("iiOnNNN", t->set_id, t->descriptor, t->e->cls, t->rows,
+                                                     buf_bytes(&t->offsets), buf_bytes(&t->index), cols);
+        if (row == NULL) {
+            Py_CLEAR(out);
+            break;
+        }
+        PyList_SET_ITEM(out, k, row);
+    }
+    return out;
+}
+
+static void columns_free(Columns *c) {
+    for (Py_ssize_t k = 0; k < c->ntables; k++) {
+        Table *t = c->list[k];
+        for (int j = 0; j < t->e->nitems; j++) {
+            PyMem_Free(t->cols[j].p);
+        }
+        PyMem_Free(t->offsets.p);
+        PyMem_Free(t->index.p);
+        PyMem_Free(t);
+    }
+    PyMem_Free(c->list);
+    PyMem_Free(c->by_key);
+    Py_XDECREF(c->others);
+}
+
+/* decode_columns(data) -> (packets, skips, tables, others); tables: [(set, descriptor, class, rows,
+ * offsets, index, [column bytes per item])] in native byte order. */
+static PyObject *decode_columns(PyObject *self, PyObject *arg) {
+    (void)self;
+    if (packet_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        return NULL;
+    }
+    PyObject *copy = PyBytes_FromObject(arg);
+    if (copy == NULL) {
+        return NULL;
+    }
+    Columns c = {PyMem_Calloc(65536, sizeof(Table *)), NULL, 0, 0, 0, PyList_New(0)};
+    SkipRun skip = {PyByteArray_FromStringAndSize(NULL, 0), 0};
+    PyObject *skips = PyList_New(0), *result = NULL;
+    if (c.by_key == NULL || c.others == NULL || skip.bytes == NULL || skips == NULL) {
+        if (c.by_key == NULL) {
+            PyErr_NoMemory();
+        }
+    } else {
+        int gc = gc_pause();
+        Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0,
+                                   1, SCAN_COLUMNS, &c, &skip, skips);
+        gc_resume(gc);
+        if (pos >= 0 && flush_skip(&skip, skips) >= 0) {
+            PyObject *tables = tables_out(&c);
+            if (tables != NULL) {
+                result = Py_BuildValue("nONO", c.packets, skips, tables, c.others);
+            }
+        }
+    }
+    Py_DECREF(copy);
+    Py_XDECREF(skip.bytes);
+    Py_XDECREF(skips);
+    columns_free(&c);
+    return result;
+}
+
+/* setup(RawPacket, Skip, Packet, DecodedField, decode_packet, decode_field, program) */
+static PyObject *setup(PyObject *self, PyObject *args) {
+    (void)self;
+    PyObject *t[4], *f[3];
+    if (!PyArg_ParseTuple(args, "O!O!O!O!OOO", &PyType_Type, &t[0], &PyType_Type, &t[1], &PyType_Type, &t[2],
+                          &PyType_Type, &t[3], &f[0], &f[1], &f[2])) {
+        return NULL;
+    }
+    PyTypeObject *bases[4] = {&EventBase, &EventBase, &PacketBase, &DecodedFieldBase};
+    for (int k = 0; k < 4; k++) {
+        if (!PyType_IsSubtype((PyTypeObject *)t[k], bases[k]) ||
+            ((PyTypeObject *)t[k])->tp_basicsize != (Py_ssize_t)sizeof(Slots3)) {
+            PyErr_Format(PyExc_TypeError, "%s must derive from %s with empty __slots__",
+                         ((PyTypeObject *)t[k])->tp_name, bases[k]->tp_name);
+            return NULL;
+        }
+    }
+    raw_packet_type = (PyTypeObject *)Py_NewRef(t[0]);
+    skip_type = (PyTypeObject *)Py_NewRef(t[1]);
+    packet_type = (PyTypeObject *)Py_NewRef(t[2]);
+    decoded_type = (PyTypeObject *)Py_NewRef(t[3]);
+    py_decode_packet = Py_NewRef(f[0]);
+    py_decode_field = Py_NewRef(f[1]);
+    py_program = Py_NewRef(f[2]);
+    Py_RETURN_NONE;
+}
+
+static PyMethodDef methods[] = {
+    {"setup", setup, METH_VARARGS, "Register the package's classes and pure-Python fallbacks."},
+    {"scan", scan, METH_VARARGS, "The stream parser loop (framing.Parser._scan)."},
+    {"decode_packet", (PyCFunction)(void (*)(void))decode_packet, METH_VARARGS | METH_KEYWORDS,
+     "decode_packet(packet, offset=0, device=None): a complete packet decoded into typed fields."},
+    {"decode_all", decode_all, METH_O,
+     "decode_all(data): every event of a complete stream, packets decoded."},
+    {"decode_columns", decode_columns, METH_O,
+     "decode_columns(data): a complete stream as per-field tables."},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef module = {
+    PyModuleDef_HEAD_INIT,
+    "democodec._speedups",
+    "C accelerator of democodec (optional).",
+    -1,
+    methods,
+    NULL,
+    NULL,
+    NULL,
+    NULL,
+};
+
+PyMODINIT_FUNC PyInit__speedups(void) {
+    PyTypeObject *types[3] = {&EventBase, &PacketBase, &DecodedFieldBase};
+    if (ready_base(&EventBase, "democodec._speedups.EventBase", event_members) < 0 ||
+        ready_base(&PacketBase, "democodec._speedups.PacketBase", packet_members) < 0 ||
+        ready_base(&DecodedFieldBase, "democodec._speedups.DecodedFieldBase", decoded_members) < 0) {
+        return NULL;
+    }
+    empty_tuple = PyTuple_New(0);
+    if (empty_tuple == NULL) {
+        return NULL;
+    }
+    PyObject *m = PyModule_Create(&module);
+    if (m == NULL) {
+        return NULL;
+    }
+    const char *names[3] = {"EventBase", "PacketBase", "DecodedFieldBase"};
+    for (int k = 0; k < 3; k++) {
+        Py_INCREF(types[k]);
+        if (PyModule_AddObject(m, names[k], (PyObject *)types[k]) < 0) {
+            Py_DECREF(types[k]);
+            Py_DECREF(m);
+            return NULL;
+        }
+    }
+    return m;
+}

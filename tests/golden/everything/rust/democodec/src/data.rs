@@ -1,0 +1,187 @@
+//! Data.
+//!
+//! Descriptor set 0x90 (data set):
+//! one struct per field layout, and `SetField`, the enum of all its fields.
+
+/// Descriptor set of this module.
+pub const SET: u8 = 0x90;
+
+/// Sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    pub quat: [f32; 4],
+    pub big: u64,
+    pub small: i8,
+    pub f: f32,
+}
+
+impl Default for Sample {
+    fn default() -> Self {
+        <Self as crate::wire::Wire>::ZERO
+    }
+}
+
+impl crate::wire::Wire for Sample {
+    const ZERO: Self = Self {
+        quat: <[f32; 4] as crate::wire::Wire>::ZERO,
+        big: <u64 as crate::wire::Wire>::ZERO,
+        small: <i8 as crate::wire::Wire>::ZERO,
+        f: <f32 as crate::wire::Wire>::ZERO,
+    };
+    const FIXED_SIZE: Option<usize> = Some(29);
+
+    // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
+    // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
+        let p_quat = <[f32; 4] as crate::wire::Wire>::decode(r).map_err(|e| e.at("quat"))?;
+        let p_big = <u64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("big"))?;
+        let p_small = <i8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("small"))?;
+        let p_f = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("f"))?;
+        Ok(Self {
+            quat: p_quat,
+            big: p_big,
+            small: p_small,
+            f: p_f,
+        })
+    }
+
+    fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let v = &self.quat;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("quat"))?;
+        let v = &self.big;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("big"))?;
+        let v = &self.small;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("small"))?;
+        let v = &self.f;
+        crate::wire::Wire::encode(v, w).map_err(|e| e.at("f"))?;
+        Ok(())
+    }
+
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        let mut first = true;
+        w.write_str("{")?;
+        let v = &self.quat;
+        crate::json::key(w, &mut first, "quat")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.big;
+        crate::json::key(w, &mut first, "big")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.small;
+        crate::json::key(w, &mut first, "small")?;
+        crate::wire::Wire::write_json(v, w)?;
+        let v = &self.f;
+        crate::json::key(w, &mut first, "f")?;
+        crate::wire::Wire::write_json(v, w)?;
+        w.write_str("}")
+    }
+}
+
+#[cfg(feature = "std")]
+impl crate::json_read::FromJson for Sample {
+    fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
+        let o = crate::json_read::Obj::new(v, &["quat", "big", "small", "f"])?;
+        let p_quat = o.req("quat", <[f32; 4] as crate::json_read::FromJson>::from_json)?;
+        let p_big = o.req("big", <u64 as crate::json_read::FromJson>::from_json)?;
+        let p_small = o.req("small", <i8 as crate::json_read::FromJson>::from_json)?;
+        let p_f = o.req("f", <f32 as crate::json_read::FromJson>::from_json)?;
+        Ok(Self {
+            quat: p_quat,
+            big: p_big,
+            small: p_small,
+            f: p_f,
+        })
+    }
+}
+
+impl Sample {
+    /// Descriptor set of the field.
+    pub const SET: u8 = 0x90;
+}
+
+impl crate::wire::Layout for Sample {
+    const DESCRIPTOR: u8 = 0x01;
+    const NAME: &'static str = "sample";
+}
+
+/// A decoded field of set 0x90 (`data`).
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SetField {
+    /// `sample` (0x01).
+    Sample(Sample),
+}
+
+impl SetField {
+    /// Field descriptor.
+    pub fn descriptor(&self) -> u8 {
+        match self {
+            Self::Sample(_) => 0x01,
+        }
+    }
+
+    /// Field name as printed in JSON.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Sample(_) => "sample",
+        }
+    }
+
+    /// Device of the layout used, for fields with per-device layouts.
+    pub fn device(&self) -> Option<crate::Device> {
+        match self {
+            Self::Sample(_) => None,
+        }
+    }
+
+    /// Encodes the field data.
+    pub fn encode_data(
+        &self,
+        w: &mut crate::wire::Writer<'_>,
+    ) -> Result<(), crate::error::EncodeError> {
+        match self {
+            Self::Sample(v) => crate::wire::Layout::encode_data(v, w),
+        }
+    }
+
+    /// Writes the canonical JSON of the values (`{...}`).
+    pub fn write_values_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        match self {
+            Self::Sample(v) => crate::wire::Wire::write_json(v, w),
+        }
+    }
+
+    /// Decodes field `descriptor` of this set; `None` if the set has no such field.
+    pub fn decode(
+        descriptor: u8,
+        data: &[u8],
+        device: Option<crate::Device>,
+    ) -> Option<Result<Self, crate::error::DecodeError>> {
+        let _ = device;
+        match descriptor {
+            0x01 => Some(<Sample as crate::wire::Layout>::decode_data(data).map(Self::Sample)),
+            _ => None,
+        }
+    }
+
+    /// Reads the values of field `descriptor` of this set; `None` if the set has no such field.
+    #[cfg(feature = "std")]
+    pub fn from_json(
+        descriptor: u8,
+        device: Option<crate::Device>,
+        values: &crate::json_read::Json,
+    ) -> Option<Result<Self, crate::json_read::JsonError>> {
+        match descriptor {
+            0x01 => Some(
+                crate::dispatch::no_device(device)
+                    .and_then(|()| {
+                        <Sample as crate::json_read::FromJson>::from_json(values)
+                            .map_err(|e| e.at("values"))
+                    })
+                    .map(Self::Sample),
+            ),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,125 @@
+//! Framing of the Demo protocol with every spec feature protocol, rendered from `ir.json` → `protocols[].framing`, and the
+//! Fletcher-16 checksum. These constants are the only protocol input of the runtime modules
+//! (parser, builder, fields, wire, error, samples), which are the same in every crate.
+//!
+//! Packet: sync (A5 A5), header [set, payload_length], payload, checksum.
+//! Field: header [descriptor, length], then the field data.
+
+/// Sync bytes that start every packet.
+pub const SYNC: [u8; 2] = [0xA5, 0xA5];
+/// Size of the packet header: the sync bytes, the set byte and the payload length byte.
+pub const HEADER_SIZE: usize = 4;
+/// Offset of the descriptor set byte in a packet.
+pub const SET_OFFSET: usize = 2;
+/// Offset of the payload length byte in a packet.
+pub const LENGTH_OFFSET: usize = 3;
+/// Largest payload length a packet may declare.
+pub const MAX_PAYLOAD: usize = 255;
+/// Size of the checksum after the payload.
+pub const CHECKSUM_SIZE: usize = 2;
+/// Largest packet: header, maximum payload and checksum.
+pub const MAX_PACKET: usize = 261;
+/// Size of a field header.
+pub const FIELD_HEADER_SIZE: usize = 2;
+/// Offset of the length byte within a field header.
+pub const FIELD_LENGTH_OFFSET: usize = 1;
+/// Offset of the descriptor byte within a field header.
+pub const FIELD_DESCRIPTOR_OFFSET: usize = 0;
+/// Whether the field length byte counts the field header as well as the data.
+pub const FIELD_LENGTH_COUNTS_HEADER: bool = false;
+/// What the field length byte adds to the length of the field data.
+pub const FIELD_LENGTH_ADJUST: usize = 0;
+/// Length byte minus data length of field `descriptor` in a packet of set `set`:
+/// [`FIELD_LENGTH_ADJUST`], except for the fields the spec marks with `length_byte_adjust`
+/// (0 in this protocol).
+#[inline]
+pub const fn field_length_adjust(set: u8, descriptor: u8) -> isize {
+    let _ = (set, descriptor);
+    FIELD_LENGTH_ADJUST as isize
+}
+/// Largest field data a single field can carry.
+pub const MAX_FIELD_DATA: usize = 253;
+/// Multi-byte values are big-endian.
+pub const BIG_ENDIAN: bool = true;
+/// Whether sum1 is transmitted before sum2.
+pub const CHECKSUM_SUM1_FIRST: bool = true;
+/// Deepest parameter path of any layout in the spec (names and array indices).
+pub const PATH_DEPTH: usize = 3;
+
+// The sample rule: continuation packets of a data set grouped by their timestamp (samples.rs).
+/// Data sets that group continuation packets (one sample tracker slot each).
+pub const DATA_SETS: [u8; 3] = [0x90, 0x91, 0x92];
+/// The first shared descriptor.
+pub const FIRST_SHARED: u16 = 208;
+/// (descriptor, data size) of the shared fields whose value identifies a sample.
+pub const TIMESTAMPS: [(u8, usize); 0] = [];
+/// Bytes of the largest sample key.
+pub const MAX_KEY: usize = 1;
+
+/// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
+///
+/// Computed eight bytes at a time. Over blocks B_0 .. B_{K-1} of eight bytes (block sums S_k,
+/// weighted sums W_k = 8·b0 + 7·b1 + … + 1·b7), starting from zero, the byte-serial recurrence
+/// gives sum1 = Σ S_k and sum2 = 8·Σ (K - 1 - k)·S_k + Σ W_k. The even and odd bytes of a
+/// little-endian word are spread into four 16-bit lanes and summed lane by lane: E, O = sums of
+/// the even and odd lanes, Q = sum of E + O (the running sum of both) after each block; then
+/// Σ S_k = hsum(E + O), Σ (K - 1 - k)·S_k = hsum(Q) - hsum(E + O), and Σ W_k comes from E and
+/// O with the lane weights (8, 6, 4, 2) and (7, 5, 3, 1). Only the sums modulo 256 matter, so
+/// every lane is reduced modulo 256 (masked) after each add and never carries into the next
+/// (Q + E + O is at most 3 · 255 before it is masked); a multiplication by lane constants adds
+/// the lanes into the top one (at most 255 · 20) without a carry from the lanes below.
+#[inline]
+pub fn fletcher16(bytes: &[u8]) -> (u8, u8) {
+    const LANES: u64 = 0x00FF_00FF_00FF_00FF;
+    const ONES: u64 = 0x0001_0001_0001_0001;
+    const W_EVEN: u64 = 0x0008_0006_0004_0002;
+    const W_ODD: u64 = 0x0007_0005_0003_0001;
+    let (mut e, mut o, mut q) = (0u64, 0u64, 0u64);
+    let mut blocks = bytes.chunks_exact(8);
+    let word = |block: &[u8]| {
+        let mut word = [0u8; 8];
+        word.copy_from_slice(block);
+        u64::from_le_bytes(word)
+    };
+    if bytes.len() <= 8 * 64 {
+        // Up to 64 blocks (every packet): E and O stay below 255 · 64 per lane, so they need
+        // no reduction until the end (Q + E + O stays below 2^16).
+        for block in &mut blocks {
+            let x = word(block);
+            e += x & LANES;
+            o += (x >> 8) & LANES;
+            q = (q + e + o) & LANES;
+        }
+        e &= LANES;
+        o &= LANES;
+    } else {
+        for block in &mut blocks {
+            let x = word(block);
+            e = (e + (x & LANES)) & LANES;
+            o = (o + ((x >> 8) & LANES)) & LANES;
+            q = (q + e + o) & LANES;
+        }
+    }
+    let hsum = |lanes: u64| lanes.wrapping_mul(ONES) >> 48;
+    let mut sum1 = hsum(e + o);
+    let mut sum2 = (hsum(q).wrapping_sub(sum1))
+        .wrapping_mul(8)
+        .wrapping_add(e.wrapping_mul(W_EVEN) >> 48)
+        .wrapping_add(o.wrapping_mul(W_ODD) >> 48);
+    for &b in blocks.remainder() {
+        sum1 = sum1.wrapping_add(u64::from(b));
+        sum2 = sum2.wrapping_add(sum1);
+    }
+    (sum1 as u8, sum2 as u8)
+}
+
+/// The checksum bytes of `bytes` (header and payload) in transmission order.
+#[inline]
+pub fn checksum_bytes(bytes: &[u8]) -> [u8; CHECKSUM_SIZE] {
+    let (sum1, sum2) = fletcher16(bytes);
+    if CHECKSUM_SUM1_FIRST {
+        [sum1, sum2]
+    } else {
+        [sum2, sum1]
+    }
+}

@@ -1,0 +1,66 @@
+//! Demo protocol with every spec feature: codec generated from `spec/demo/` by `python -m generator`. Do not edit.
+//!
+//! The core is `no_std` and allocation-free: bounded arrays ([`bounded::BoundedVec`]), a stream
+//! parser whose state is one maximum packet ([`parser::Parser`]), a sample tracker for
+//! continuation packets ([`samples`]), a packet builder
+//! ([`builder::PacketBuilder`]), a field iterator ([`fields::Packet`]), typed values for every
+//! field (one module per descriptor set, [`reserved`], [`types`]) and the canonical JSON writer
+//! ([`json`]). The default `std` feature adds the JSON reader ([`json_read`]), the text helpers
+//! used by the command-line tools ([`text`]) and the tools themselves.
+//!
+//! ```
+//! use democodec::builder::PacketBuilder;
+//! use democodec::fields::{FieldItem, Packet};
+//! use democodec::parser::{Event, Parser};
+//!
+//! // Build a packet with one raw field, then find it in a stream with garbage around it.
+//! let mut builder = PacketBuilder::new(0x01);
+//! builder.add_raw_field(0x01, &[]).unwrap();
+//! let mut stream = vec![0x00];
+//! stream.extend_from_slice(builder.finish());
+//!
+//! let mut parser = Parser::new();
+//! let mut packets = Vec::new();
+//! let mut on_event = |event: Event<'_>| match event {
+//!     Event::Packet { offset, bytes } => packets.push((offset, bytes.to_vec())),
+//!     Event::Skip { offset, count } => assert_eq!((offset, count), (0, 1)),
+//! };
+//! parser.feed(&stream, &mut on_event);
+//! parser.flush(&mut on_event);
+//!
+//! let packet = Packet::new(&packets[0].1).unwrap();
+//! for item in packet.fields() {
+//!     if let FieldItem::Field { descriptor, data } = item {
+//!         // A typed value (FieldValue), or the decode error of a raw field.
+//!         let _value = democodec::decode_field(packet.set(), descriptor, data, None);
+//!     }
+//! }
+//! ```
+#![cfg_attr(not(feature = "std"), no_std)]
+#![forbid(unsafe_code)]
+
+pub mod bounded;
+pub mod builder;
+pub mod dispatch;
+pub mod error;
+pub mod fields;
+pub mod framing;
+pub mod json;
+#[cfg(feature = "std")]
+pub mod json_read;
+pub mod parser;
+pub mod reserved;
+pub mod samples;
+#[cfg(feature = "std")]
+pub mod text;
+pub mod types;
+pub mod wire;
+
+pub mod commands;
+pub mod data;
+pub mod receiver_1;
+pub mod receiver_2;
+pub mod shared;
+
+pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
+pub use error::{DecodeError, EncodeError};

@@ -1,0 +1,332 @@
+//! Stream parser (`docs/conformance.md` §1): finds packets in a byte stream fed in chunks of
+//! any size and reports the bytes between them as skip runs. The events do not depend on the
+//! chunking. State: one maximum packet ([`MAX_PACKET`] bytes) and a few counters.
+
+use crate::framing::{
+    checksum_bytes, CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, MAX_PAYLOAD, SYNC,
+};
+
+/// What the parser found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Event<'a> {
+    /// A maximal run of `count` skipped bytes starting at stream offset `offset`.
+    Skip { offset: u64, count: u64 },
+    /// A packet with a valid checksum at stream offset `offset`: sync to checksum.
+    Packet { offset: u64, bytes: &'a [u8] },
+}
+
+/// The stream parser.
+#[derive(Clone)]
+pub struct Parser {
+    buf: [u8; MAX_PACKET],
+    len: usize,
+    // Stream offset of buf[0].
+    base: u64,
+    skip_start: u64,
+    skip_count: u64,
+}
+
+impl Default for Parser {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Whether `sent` is the checksum of `body` (byte by byte: no call to a slice comparison).
+#[inline(always)]
+fn checksum_matches(body: &[u8], sent: &[u8]) -> bool {
+    let sum = checksum_bytes(body);
+    sent.len() == CHECKSUM_SIZE && (0..CHECKSUM_SIZE).all(|i| sum[i] == sent[i])
+}
+
+/// Index of the first `byte` in `hay`, eight bytes at a time (one branch per eight bytes of
+/// garbage instead of one per byte).
+#[inline(always)]
+fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
+    const LOW: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let pattern = LOW * u64::from(byte);
+    let mut words = hay.chunks_exact(8);
+    let mut base = 0;
+    for word in &mut words {
+        let mut bytes = [0u8; 8];
+        bytes.copy_from_slice(word);
+        // Bytes equal to `byte` become zero; the lowest flagged byte is the first zero byte
+        // (a flag can be wrong only above a zero byte).
+        let x = u64::from_le_bytes(bytes) ^ pattern;
+        let zero = x.wrapping_sub(LOW) & !x & HIGH;
+        if zero != 0 {
+            return Some(base + (zero.trailing_zeros() / 8) as usize);
+        }
+        base += 8;
+    }
+    words
+        .remainder()
+        .iter()
+        .position(|&b| b == byte)
+        .map(|i| base + i)
+}
+
+/// Index of the first full sync in `data` at or after `from`, or of a sync prefix at its very
+/// end; `None` if there is neither.
+#[inline(always)]
+fn find_sync_from(data: &[u8], from: usize) -> Option<usize> {
+    let end = data.len();
+    let mut at = from;
+    loop {
+        at += find_byte(&data[at..], SYNC[0])?;
+        // The rest of the sync, or as much of it as `data` holds (byte by byte: no call to a
+        // slice comparison).
+        let n = (end - at).min(SYNC.len());
+        if (1..n).all(|k| data[at + k] == SYNC[k]) {
+            return Some(at);
+        }
+        at += 1;
+    }
+}
+
+enum Sync {
+    // A full sync sequence at this index.
+    Full(usize),
+    // No full sync; bytes from this index may start one (wait for more input).
+    Partial(usize),
+}
+
+impl Parser {
+    /// A parser at stream offset 0.
+    pub const fn new() -> Self {
+        Self {
+            buf: [0; MAX_PACKET],
+            len: 0,
+            base: 0,
+            skip_start: 0,
+            skip_count: 0,
+        }
+    }
+
+    /// Stream offset of the next byte to be fed.
+    pub fn offset(&self) -> u64 {
+        self.base + self.len as u64
+    }
+
+    /// The earliest stream offset whose byte may still be reported (in a skip run or a packet).
+    /// A caller that keeps the input to print skipped bytes can drop everything before it.
+    pub fn retain_from(&self) -> u64 {
+        if self.skip_count > 0 {
+            self.skip_start
+        } else {
+            self.base
+        }
+    }
+
+    /// Feeds `data`; calls `on` for every event it completes.
+    ///
+    /// Packets that lie wholly inside `data` are checked and reported in place (their bytes
+    /// borrow `data`); only a packet split across `feed` calls is copied into the parser's
+    /// buffer, and only the bytes it still needs.
+    pub fn feed<F: FnMut(Event<'_>)>(&mut self, mut data: &[u8], mut on: F) {
+        // Finish the candidate buffered by the previous call.
+        while self.len > 0 && !data.is_empty() {
+            let n = data.len().min(self.wanted() - self.len);
+            self.buf[self.len..self.len + n].copy_from_slice(&data[..n]);
+            self.len += n;
+            data = &data[n..];
+            self.process(&mut on, false);
+        }
+        if data.is_empty() {
+            return;
+        }
+        // Nothing buffered: search `data` itself, then keep the undecided tail.
+        let used = self.scan(data, &mut on);
+        let rest = &data[used..];
+        self.buf[..rest.len()].copy_from_slice(rest);
+        self.len = rest.len();
+    }
+
+    /// Bytes the buffered candidate needs before it can be decided (more than `self.len`
+    /// whenever `process` left bytes waiting).
+    fn wanted(&self) -> usize {
+        if self.len < HEADER_SIZE {
+            HEADER_SIZE
+        } else {
+            HEADER_SIZE + usize::from(self.buf[LENGTH_OFFSET]) + CHECKSUM_SIZE
+        }
+    }
+
+    /// The search of `process` over `data` in place, with nothing buffered (`self.base` is the
+    /// stream offset of `data[0]`). Returns how many bytes it consumed; the rest (a candidate
+    /// that needs more input, shorter than a maximum packet) is for the caller to buffer.
+    fn scan<F: FnMut(Event<'_>)>(&mut self, data: &[u8], on: &mut F) -> usize {
+        let end = data.len();
+        let mut pos = 0;
+        loop {
+            // The next sync (or a sync prefix at the very end): usually right here, after a
+            // packet; else searched for. (Reads through slices whose length was checked, so
+            // that they need no further bounds checks.)
+            let here = &data[pos..];
+            let at = if here.len() >= SYNC.len() && (0..SYNC.len()).all(|k| here[k] == SYNC[k]) {
+                pos
+            } else {
+                match find_sync_from(data, pos) {
+                    Some(at) => at,
+                    None => {
+                        self.skip_in_place(end - pos);
+                        return end;
+                    }
+                }
+            };
+            self.skip_in_place(at - pos);
+            pos = at;
+            let candidate = &data[pos..];
+            if candidate.len() < HEADER_SIZE {
+                return pos;
+            }
+            let payload = usize::from(candidate[LENGTH_OFFSET]);
+            if payload > MAX_PAYLOAD {
+                self.skip_in_place(1);
+                pos += 1;
+                continue;
+            }
+            let body = HEADER_SIZE + payload;
+            let total = body + CHECKSUM_SIZE;
+            let Some(packet) = candidate.get(..total) else {
+                return pos;
+            };
+            if checksum_matches(&packet[..body], &packet[body..]) {
+                self.emit_skip(on);
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: packet,
+                });
+                self.base += total as u64;
+                pos += total;
+            } else {
+                // The sync was false: resynchronise at the next byte.
+                self.skip_in_place(1);
+                pos += 1;
+            }
+        }
+    }
+
+    /// Adds `n` bytes at the parser's offset to the skip run (nothing buffered).
+    fn skip_in_place(&mut self, n: usize) {
+        if n == 0 {
+            return;
+        }
+        if self.skip_count == 0 {
+            self.skip_start = self.base;
+        }
+        self.skip_count += n as u64;
+        self.base += n as u64;
+    }
+
+    /// End of input: the same search, but a candidate packet that would wait for more input is
+    /// a false sync (one byte skipped, search continues), so a packet behind a false sync whose
+    /// length runs past the end is still found. Reports the remaining events, including the
+    /// last skip run.
+    pub fn flush<F: FnMut(Event<'_>)>(&mut self, mut on: F) {
+        self.process(&mut on, true);
+        self.emit_skip(&mut on);
+    }
+
+    fn find_sync(&self) -> Sync {
+        let mut i = 0;
+        while i < self.len {
+            let n = (self.len - i).min(SYNC.len());
+            if self.buf[i..i + n] == SYNC[..n] {
+                if n == SYNC.len() {
+                    return Sync::Full(i);
+                }
+                return Sync::Partial(i);
+            }
+            i += 1;
+        }
+        Sync::Partial(self.len)
+    }
+
+    /// Runs the search of `docs/conformance.md` §1 over the buffered bytes. Where it would wait
+    /// for more input it returns, unless `at_end`: then the candidate's first byte is skipped.
+    fn process<F: FnMut(Event<'_>)>(&mut self, on: &mut F, at_end: bool) {
+        loop {
+            let start = match self.find_sync() {
+                Sync::Full(i) => i,
+                Sync::Partial(i) => {
+                    self.skip(i);
+                    if at_end && self.len > 0 {
+                        self.skip(1);
+                        continue;
+                    }
+                    return;
+                }
+            };
+            self.skip(start);
+            if self.len < HEADER_SIZE {
+                if at_end {
+                    self.skip(1);
+                    continue;
+                }
+                return;
+            }
+            let payload = usize::from(self.buf[LENGTH_OFFSET]);
+            if payload > MAX_PAYLOAD {
+                self.skip(1);
+                continue;
+            }
+            let total = HEADER_SIZE + payload + CHECKSUM_SIZE;
+            if self.len < total {
+                if at_end {
+                    self.skip(1);
+                    continue;
+                }
+                return;
+            }
+            let body = HEADER_SIZE + payload;
+            if checksum_matches(&self.buf[..body], &self.buf[body..total]) {
+                self.emit_skip(on);
+                on(Event::Packet {
+                    offset: self.base,
+                    bytes: &self.buf[..total],
+                });
+                self.consume(total);
+            } else {
+                // The sync was false: resynchronise at the next byte.
+                self.skip(1);
+            }
+        }
+    }
+
+    fn skip(&mut self, n: usize) {
+        if n == 0 {
+            return;
+        }
+        if self.skip_count == 0 {
+            self.skip_start = self.base;
+        }
+        self.skip_count += n as u64;
+        self.consume(n);
+    }
+
+    fn consume(&mut self, n: usize) {
+        self.buf.copy_within(n..self.len, 0);
+        self.len -= n;
+        self.base += n as u64;
+    }
+
+    #[inline(always)]
+    fn emit_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
+        if self.skip_count > 0 {
+            self.report_skip(on);
+        }
+    }
+
+    /// Reports the skip run (out of line: the packet loop then calls `on` in one place only,
+    /// where the compiler can inline it).
+    #[inline(never)]
+    fn report_skip<F: FnMut(Event<'_>)>(&mut self, on: &mut F) {
+        on(Event::Skip {
+            offset: self.skip_start,
+            count: self.skip_count,
+        });
+        self.skip_count = 0;
+    }
+}
