@@ -14,17 +14,18 @@ built below, so the generated modules read like declarations.
 
 from __future__ import annotations
 
-import keyword
 import textwrap
 
 from generator.examples import example_context
 from generator.primitives import PRIMITIVES, int_range
-from generator.render import environment
+from generator.render import copy_runtime, environment
+from generator.targets.python import facts
 
 OUTPUT_DIRS = ["python"]
 
-# Runtime modules of every package; a descriptor set whose name collides gets a "_set" suffix.
+# Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
 RUNTIME_MODULES = {
+    "_protocol",
     "_speedups",
     "canonical",
     "cli",
@@ -53,9 +54,8 @@ EXPORTED = {
     "lookup",
     "parse",
 }
-# Static runtime templates: template file -> output path inside the package directory.
-RUNTIME_TEMPLATES = [
-    "__init__.py",
+# The runtime: plain files of generator/targets/python/runtime/, copied into every package.
+RUNTIME_FILES = [
     "__main__.py",
     "canonical.py",
     "cli.py",
@@ -65,25 +65,14 @@ RUNTIME_TEMPLATES = [
     "samples.py",
     "_speedups.c",
 ]
+# Templates of the package directory that do not need a model of their own (the protocol's
+# constants, the package's exports).
+PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
 
-SCALARS = {
-    "u8": "_c.U8",
-    "u16": "_c.U16",
-    "u32": "_c.U32",
-    "u64": "_c.U64",
-    "s8": "_c.S8",
-    "s16": "_c.S16",
-    "s32": "_c.S32",
-    "s64": "_c.S64",
-    "float": "_c.F32",
-    "double": "_c.F64",
-    "bool": "_c.BOOL",
-    "char": "_c.CHAR",
-}
-PY_TYPES = {"int": "int", "float": "float", "bool": "bool", "char": "bytes"}
+SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
 # Attribute names the runtime base classes use (a parameter with such a name gets a "_" suffix).
 LAYOUT_RESERVED = {"decode", "encode", "to_json", "from_json"}
-BITFIELD_RESERVED = set(dir(int)) | {"replace", "members"}
+BITFIELD_RESERVED = facts.INT_ATTRIBUTES | {"replace", "members"}
 
 
 # ------------------------------------------------------------------------------------------ naming
@@ -93,7 +82,7 @@ def camel(name: str) -> str:
 
 def py_attr(name: str, reserved: set[str] = LAYOUT_RESERVED) -> str:
     """A parameter/member name as a Python attribute (keywords and runtime names get a '_')."""
-    if keyword.iskeyword(name) or name in reserved or name in ("l", "O", "I"):
+    if name in facts.KEYWORDS or name in reserved or name in facts.AMBIGUOUS_NAMES:
         return name + "_"
     return name
 
@@ -104,7 +93,7 @@ def const_name(name: str) -> str:
 
 def set_module(set_: dict) -> str:
     name = set_["name"]
-    if name in RUNTIME_MODULES or name in EXPORTED or keyword.iskeyword(name):
+    if name in RUNTIME_MODULES or name in EXPORTED or name in facts.KEYWORDS:
         return name + "_set"
     return name
 
@@ -222,7 +211,7 @@ class _Proto:
     def elem_annotation(self, tref: dict, tp: str) -> str:
         kind = tref["kind"]
         if kind == "primitive":
-            return PY_TYPES[PRIMITIVES[tref["name"]][1]]
+            return facts.PRIMITIVES[tref["name"]].annotation
         if kind == "string":
             return "bytes"
         if kind in ("enum", "bitfield", "struct"):
@@ -238,8 +227,7 @@ class _Proto:
     def elem_default(self, tref: dict, tp: str) -> str:
         kind = tref["kind"]
         if kind == "primitive":
-            pk = PRIMITIVES[tref["name"]][1]
-            return {"int": "0", "float": "0.0", "bool": "False", "char": 'b"\\x00"'}[pk]
+            return facts.PRIMITIVES[tref["name"]].default
         if kind == "string":
             pad = "b' '" if tref.get("padding") == "space" else "b'\\x00'"
             return f"{pad} * {tref['length']}"
@@ -790,7 +778,8 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
         }
-        for name in RUNTIME_TEMPLATES:
+        files.update(_runtime(proto, f"{root}/{pkg}"))
+        for name in PACKAGE_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)
         files[f"{root}/{pkg}/types.py"] = env.get_template("python/package/types.py.j2").render(
             **ctx, **m.types_module()
@@ -811,11 +800,22 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
             "test_typed.py": _typed_context(m, sets),
             "test_runtime.py": {},
-            "test_cli.py": {},
         }
         for name, extra in tests.items():
             files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
     return files
+
+
+def _runtime(proto: dict, dest: str) -> dict[str, str]:
+    """The runtime files of one package. Their code takes what it needs of the protocol from the
+    generated _protocol.py / _protocol.h; only their docstrings and comments name the package, with
+    these placeholders (each replaced in every file that has it)."""
+    placeholders = [
+        ("<package>", proto["package"]),
+        ("<PACKAGE>", proto["package"].upper()),
+        ("<protocol title>", proto["title"]),
+    ]
+    return copy_runtime("python", {name: f"{dest}/{name}" for name in RUNTIME_FILES}, placeholders)
 
 
 def _example(proto: dict) -> dict:
