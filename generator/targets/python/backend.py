@@ -37,23 +37,44 @@ RUNTIME_MODULES = {
     "types",
     "tests",
 }
-# Names the package exports at top level (a set module must not shadow them).
-EXPORTED = {
-    "build_packet",
-    "checksum_bytes",
-    "decode_all",
-    "decode_columns",
-    "decode_bytes",
-    "decode_field",
-    "decode_packet",
-    "decode_stream",
-    "encode_line",
-    "encode_lines",
-    "fletcher16",
-    "iter_fields",
-    "lookup",
-    "parse",
+# What the package's __init__ re-exports from the runtime, by module, in the order it imports them.
+EXPORTS = {
+    "canonical": ["NaN"],
+    "codec": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
+    "framing": [
+        "ACCELERATED",
+        "FramingError",
+        "PacketBuilder",
+        "Parser",
+        "RawPacket",
+        "Skip",
+        "build_packet",
+        "checksum_bytes",
+        "fletcher16",
+        "iter_fields",
+        "parse",
+    ],
+    "packets": [
+        "Columns",
+        "DecodedField",
+        "Decoder",
+        "Packet",
+        "RawField",
+        "Trailing",
+        "decode_all",
+        "decode_bytes",
+        "decode_columns",
+        "decode_field",
+        "decode_packet",
+        "decode_stream",
+        "encode_line",
+        "encode_lines",
+    ],
+    "registry": ["DEVICES", "lookup"],
+    "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
 }
+# Names the package exports at top level (a set module must not shadow them).
+EXPORTED = {name for names in EXPORTS.values() for name in names}
 # The runtime: plain files of generator/targets/python/runtime/, copied into every package.
 RUNTIME_FILES = [
     "__main__.py",
@@ -775,6 +796,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "reserved": reserved,
             "registry": m.registry(sets, reserved),
             "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
+            "exports": EXPORTS,
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
         }
