@@ -1,13 +1,16 @@
 """Python back end: one installable, dependency-free package per protocol (Python 3.9+).
 
 generated/python/<package>/
-    pyproject.toml, README.md
-    <package>/            the library: runtime modules (rendered with the framing constants) plus
-                          types.py (enums, bitfields, structs, unions), one module per descriptor set,
-                          reserved.py (reserved fields such as ack/nack) and registry.py (dispatch tables)
-    tests/                golden vectors (generated), typed round trips (generated), runtime tests
+    pyproject.toml, setup.py, README.md
+    <package>/            the library: the runtime (plain files of generator/targets/python/runtime/,
+                          copied), _protocol.py and _protocol.h (the protocol's constants: the runtime's
+                          only protocol input), types.py (enums, bitfields, structs, unions), one module
+                          per descriptor set, reserved.py (reserved fields such as ack/nack) and
+                          registry.py (dispatch tables)
+    tests/                golden vectors, typed round trips, the accelerator on every fixed layout
+                          (generated; the runtime's own unit tests run in place, runtime/tests/)
 
-All naming and type mapping happens here; templates only loop and print. Layouts are described to
+All naming and type mapping happens here (language facts in facts.py); templates only loop and print. Layouts are described to
 the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...) whose source text is
 built below, so the generated modules read like declarations.
 """
@@ -23,20 +26,6 @@ from generator.targets.python import facts
 
 OUTPUT_DIRS = ["python"]
 
-# Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
-RUNTIME_MODULES = {
-    "_protocol",
-    "_speedups",
-    "canonical",
-    "cli",
-    "codec",
-    "framing",
-    "packets",
-    "registry",
-    "reserved",
-    "types",
-    "tests",
-}
 # What the package's __init__ re-exports from the runtime, by module, in the order it imports them.
 EXPORTS = {
     "canonical": ["NaN"],
@@ -89,6 +78,13 @@ RUNTIME_FILES = [
 # Templates of the package directory that do not need a model of their own (the protocol's
 # constants, the package's exports).
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
+# Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
+RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES} | {
+    "registry",
+    "reserved",
+    "types",
+    "tests",
+}
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
 # Attribute names the runtime base classes use (a parameter with such a name gets a "_" suffix).
