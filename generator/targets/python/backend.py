@@ -26,44 +26,8 @@ from generator.targets.python import facts
 
 OUTPUT_DIRS = ["python"]
 
-# What the package's __init__ re-exports from the runtime, by module, in the order it imports them.
-EXPORTS = {
-    "canonical": ["NaN"],
-    "codec": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
-    "framing": [
-        "ACCELERATED",
-        "FramingError",
-        "PacketBuilder",
-        "Parser",
-        "RawPacket",
-        "Skip",
-        "build_packet",
-        "checksum_bytes",
-        "fletcher16",
-        "iter_fields",
-        "parse",
-    ],
-    "packets": [
-        "Columns",
-        "DecodedField",
-        "Decoder",
-        "Packet",
-        "RawField",
-        "Trailing",
-        "decode_all",
-        "decode_bytes",
-        "decode_columns",
-        "decode_field",
-        "decode_packet",
-        "decode_stream",
-        "encode_line",
-        "encode_lines",
-    ],
-    "registry": ["DEVICES", "lookup"],
-    "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
-}
 # Names the package exports at top level (a set module must not shadow them).
-EXPORTED = {name for names in EXPORTS.values() for name in names}
+EXPORTED = {name for names in facts.EXPORTS.values() for name in names}
 # The runtime: plain files of generator/targets/python/runtime/, copied into every package.
 RUNTIME_FILES = [
     "__main__.py",
@@ -87,9 +51,9 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
 }
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
-# Attribute names the runtime base classes use (a parameter with such a name gets a "_" suffix).
-LAYOUT_RESERVED = {"decode", "encode", "to_json", "from_json"}
-BITFIELD_RESERVED = facts.INT_ATTRIBUTES | {"replace", "members"}
+# Attribute names a parameter / bitfield member must not take (it gets a "_" suffix instead).
+LAYOUT_RESERVED = facts.LAYOUT_ATTRIBUTES
+BITFIELD_RESERVED = facts.INT_ATTRIBUTES | facts.BITFIELD_ATTRIBUTES
 
 
 # ------------------------------------------------------------------------------------------ naming
@@ -792,7 +756,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "reserved": reserved,
             "registry": m.registry(sets, reserved),
             "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
-            "exports": EXPORTS,
+            "exports": facts.EXPORTS,
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
         }

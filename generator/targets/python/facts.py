@@ -133,6 +133,11 @@ INT_ATTRIBUTES = frozenset(
     }
 )
 
+# Attributes of the runtime's base classes (runtime/codec.py): Layout (every struct and field) and
+# Bitfield (an int subclass besides).
+LAYOUT_ATTRIBUTES = frozenset({"decode", "encode", "to_json", "from_json"})
+BITFIELD_ATTRIBUTES = frozenset({"replace", "members"})
+
 
 class Primitive(NamedTuple):
     """How one wire primitive looks in Python."""
@@ -156,4 +161,42 @@ PRIMITIVES: dict[str, Primitive] = {
     "double": Primitive("F64", "d", "float", "0.0"),
     "bool": Primitive("BOOL", "B", "bool", "False"),
     "char": Primitive("CHAR", "c", "bytes", 'b"\\x00"'),
+}
+
+# The runtime's public names that a package's __init__ re-exports, by runtime module, in the order
+# it imports them (templates/python/package/__init__.py.j2).
+EXPORTS = {
+    "canonical": ["NaN"],
+    "codec": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
+    "framing": [
+        "ACCELERATED",
+        "FramingError",
+        "PacketBuilder",
+        "Parser",
+        "RawPacket",
+        "Skip",
+        "build_packet",
+        "checksum_bytes",
+        "fletcher16",
+        "iter_fields",
+        "parse",
+    ],
+    "packets": [
+        "Columns",
+        "DecodedField",
+        "Decoder",
+        "Packet",
+        "RawField",
+        "Trailing",
+        "decode_all",
+        "decode_bytes",
+        "decode_columns",
+        "decode_field",
+        "decode_packet",
+        "decode_stream",
+        "encode_line",
+        "encode_lines",
+    ],
+    "registry": ["DEVICES", "lookup"],
+    "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
 }

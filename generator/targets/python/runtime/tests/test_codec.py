@@ -168,14 +168,25 @@ def test_string_text():
     assert string_text(b'a"\\\x00\x1f \x7e\x7f\xff') == '"a\\"\\\\\\u0000\\u001f ~\\u007f\\u00ff"'
 
 
-def test_the_generators_type_table_names_these_scalars():
-    # generator/targets/python/facts.py maps each primitive to a scalar of this module and its
-    # struct format: they must be the runtime's.
+def _facts():
+    """generator/targets/python/facts.py: what the back end assumes about this runtime."""
     sys.path.insert(0, str(ROOT))
     try:
-        from generator.targets.python.facts import PRIMITIVES
+        from generator.targets.python import facts
     finally:
         sys.path.remove(str(ROOT))
-    for name, prim in PRIMITIVES.items():
+    return facts
+
+
+def test_the_generators_type_table_names_these_scalars():
+    # Each primitive maps to a scalar of this module and its struct format: they must be the runtime's.
+    for name, prim in _facts().PRIMITIVES.items():
         scalar = getattr(c, prim.scalar)
         assert (scalar.type_name, scalar.code) == (name, prim.struct), name
+
+
+def test_the_generators_reserved_names_cover_the_base_classes():
+    # A parameter named like a method of Layout, or a bitfield member like one of Bitfield, is renamed.
+    facts = _facts()
+    assert {n for n in vars(c.Layout) if not n.startswith("_")} <= facts.LAYOUT_ATTRIBUTES
+    assert {n for n in vars(c.Bitfield) if not n.startswith("_")} <= facts.BITFIELD_ATTRIBUTES
