@@ -10,9 +10,10 @@ generated/python/<package>/
     tests/                golden vectors, typed round trips, the accelerator on every fixed layout
                           (generated; the runtime's own unit tests run in place, runtime/tests/)
 
-All naming and type mapping happens here (language facts in facts.py); templates only loop and print. Layouts are described to
-the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...) whose source text is
-built below, so the generated modules read like declarations.
+All naming and type mapping happens here, with the language's facts as data in facts.py; templates
+only loop and print. Layouts are described to the runtime as tuples of operations (`_c.Run`,
+`_c.Counted`, `_c.Choice`, ...) whose source text is built below, so the generated modules read like
+declarations.
 """
 
 from __future__ import annotations
@@ -61,7 +62,7 @@ def camel(name: str) -> str:
     return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
 
 
-def py_attr(name: str, reserved: set[str] = LAYOUT_RESERVED) -> str:
+def py_attr(name: str, reserved: frozenset[str] = LAYOUT_RESERVED) -> str:
     """A parameter/member name as a Python attribute (keywords and runtime names get a '_')."""
     if name in facts.KEYWORDS or name in reserved or name in facts.AMBIGUOUS_NAMES:
         return name + "_"
