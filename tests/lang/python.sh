@@ -93,11 +93,14 @@ test)
     [ -n "$RUFF" ] || { echo "tests/lang/python.sh: ruff not found (run make)" >&2; exit 2; }
     (cd "$ROOT" && "$RUFF" check --config ruff.toml generated/python generator/targets/python/runtime)
     # The runtime's unit tests, in place (generator/targets/python/runtime/tests/: a test protocol,
-    # no regeneration), pure and with the C accelerator, before the generated packages' tests.
-    echo "== runtime: pure Python (TESTPROTO_PURE=1)"
-    (cd "$ROOT" && env TESTPROTO_PURE=1 "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)
-    echo "== runtime: with the C accelerator (build/python/runtime/)"
-    (cd "$ROOT" && env -u TESTPROTO_PURE "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)
+    # no regeneration), before the generated packages' tests: with each of the test protocol's two
+    # framings (TESTPROTO_FRAMING), pure and with the C accelerator (built in build/python/runtime/).
+    for framing in a b; do
+        echo "== runtime, framing $framing: pure Python (TESTPROTO_PURE=1)"
+        (cd "$ROOT" && env TESTPROTO_FRAMING="$framing" TESTPROTO_PURE=1 "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)
+        echo "== runtime, framing $framing: with the C accelerator"
+        (cd "$ROOT" && env -u TESTPROTO_PURE TESTPROTO_FRAMING="$framing" "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)
+    done
     for pkg in $(packages); do
         up="$(echo "$pkg" | tr '[:lower:]' '[:upper:]')"
         echo "== $pkg: pure Python (${up}_PURE=1)"

@@ -2,10 +2,12 @@
 
 The runtime files (generator/targets/python/runtime/*.py and _speedups.c) and the hand-written test
 protocol (protocol/: what the generator would render from a spec) are copied into one package,
-build/python/runtime/testproto/, which is put first on sys.path. Unless TESTPROTO_PURE=1 asks for
-the pure-Python code, the C accelerator is compiled there as the generated packages' setup.py does
-it (an unchanged _speedups.c is not recompiled); it must build. tests/lang/python.sh test runs these
-tests both ways, as it does the generated packages' tests.
+build/python/runtime/<framing>/testproto/, which is put first on sys.path. TESTPROTO_FRAMING=b
+takes the constants of protocol/framing_b/ instead of protocol/ (framing a): between them, each
+branch of the runtime's framing choices. Unless TESTPROTO_PURE=1 asks for the pure-Python code,
+the C accelerator is compiled there as the generated packages' setup.py does it (an unchanged
+_speedups.c is not recompiled); it must build. tests/lang/python.sh test runs these tests with
+both framings, pure and accelerated.
 """
 
 from __future__ import annotations
@@ -20,8 +22,13 @@ import pytest
 
 RUNTIME = Path(__file__).resolve().parent.parent
 ROOT = RUNTIME.parents[3]
-OUT = ROOT / "build" / "python" / "runtime"
 PACKAGE = "testproto"
+PROTOCOL = RUNTIME / "tests" / "protocol"
+FRAMING = os.environ.get(PACKAGE.upper() + "_FRAMING", "a")
+if FRAMING not in ("a", "b"):
+    raise pytest.UsageError(f"TESTPROTO_FRAMING={FRAMING!r}: expected a or b")
+# One directory per framing: build_ext's timestamp check must not mix the two _protocol.h.
+OUT = ROOT / "build" / "python" / "runtime" / FRAMING
 
 # The Extension of the generated setup.py (templates/python/setup.py.j2) for this package.
 SETUP = (
@@ -36,7 +43,9 @@ def _assemble() -> Path:
     pkg.mkdir(parents=True, exist_ok=True)
     for old in pkg.glob("*.py"):
         old.unlink()
-    sources = [*RUNTIME.glob("*.py"), RUNTIME / "_speedups.c", *(RUNTIME / "tests" / "protocol").iterdir()]
+    sources = [*RUNTIME.glob("*.py"), RUNTIME / "_speedups.c", *PROTOCOL.iterdir()]
+    if FRAMING == "b":
+        sources += (PROTOCOL / "framing_b").iterdir()  # copied last: replaces framing a's constants
     for src in sources:
         if src.is_file():
             shutil.copy2(src, pkg / src.name)  # timestamps kept: build_ext rebuilds only what changed

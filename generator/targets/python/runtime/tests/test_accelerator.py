@@ -11,7 +11,7 @@ import random
 import testproto
 from testproto import codec as c
 from testproto import packets, registry
-from testproto.framing import PacketBuilder, Parser, RawPacket, Skip, parse
+from testproto.framing import SYNC, PacketBuilder, Parser, RawPacket, Skip, parse
 from testproto.packets import Packet, decode_all, decode_columns
 
 
@@ -69,7 +69,7 @@ def _stream(seed):
         data = bytes(rng.getrandbits(8) for _ in range(size + rng.choice((-1, 0, 0, 1)) if size else 0))
         out += bytes(rng.getrandbits(8) for _ in range(rng.randrange(3)))
         out += PacketBuilder(set_id).add_field(descriptor, data).build()
-    return out + PacketBuilder(0x01).add_field(0xF1, b"\x02\x00").build() + b"\x75\x65\x01"
+    return out + PacketBuilder(0x01).add_field(0xF1, b"\x02\x00").build() + SYNC + b"\x01"
 
 
 def test_accelerated_paths_match_the_pure_path():

@@ -1,6 +1,13 @@
 """samples.py: continuation packets grouped by their shared timestamp (docs/conformance.md section 6)."""
 
-from testproto.framing import PacketBuilder, RawPacket
+from testproto.framing import (
+    FIELD_DESCRIPTOR_OFFSET,
+    FIELD_HEADER_SIZE,
+    FIELD_LENGTH_ADJUST,
+    FIELD_LENGTH_OFFSET,
+    PacketBuilder,
+    RawPacket,
+)
 from testproto.samples import DATA_SETS, TIMESTAMPS, SampleGrouper, SampleTracker, sample_key
 
 
@@ -16,7 +23,10 @@ def _stamped(stamp: int, *fields: tuple, key: bool = True) -> bytes:
 
 def test_sample_key_is_the_leading_shared_timestamps():
     descriptor, size = next(iter(TIMESTAMPS.items()))
-    assert sample_key(_stamped(9, (0x01, b"a"))) == bytes([size + 2, descriptor]) + bytes([9]) * size
+    header = bytearray(FIELD_HEADER_SIZE)
+    header[FIELD_DESCRIPTOR_OFFSET] = descriptor
+    header[FIELD_LENGTH_OFFSET] = size + FIELD_LENGTH_ADJUST
+    assert sample_key(_stamped(9, (0x01, b"a"))) == bytes(header) + bytes([9]) * size
     assert sample_key(_stamped(9, (0x01, b"a"), key=False)) is None
     # A timestamp after the first non-shared field is not part of the key.
     late = PacketBuilder(min(DATA_SETS)).add_field(0x01, b"a").add_field(descriptor, bytes(size)).build()

@@ -1,4 +1,5 @@
-"""Constants of the test protocol (what the generator renders from the IR into _protocol.py)."""
+"""Constants of the test protocol, framing a (the default; framing_b/ has the other branch of each
+choice): what the generator renders from the IR into _protocol.py."""
 
 from __future__ import annotations
 
