@@ -10,7 +10,7 @@ import io
 import tokenize
 
 from generator.render import runtime_dir
-from generator.targets.python.backend import RUNTIME_FILES
+from generator.targets.python.backend import PACKAGE_TEST_FILES, RUNTIME_FILES
 
 PLACEHOLDERS = ("<package>", "<PACKAGE>", "<protocol title>")
 
@@ -27,7 +27,7 @@ def _docstrings(tree: ast.AST) -> set[int]:
 
 
 def test_runtime_files_have_no_template_syntax():
-    for name in RUNTIME_FILES:
+    for name in RUNTIME_FILES + [f"package_tests/{n}" for n in PACKAGE_TEST_FILES]:
         text = (runtime_dir("python") / name).read_text(encoding="utf-8")
         for tag in ("{{", "{%", "{#"):
             assert tag not in text, f"{name}: template syntax {tag!r} in a runtime file"

@@ -40,6 +40,8 @@ RUNTIME_FILES = [
     "samples.py",
     "_speedups.c",
 ]
+# Plain files of runtime/package_tests/, copied into every package's tests/ directory.
+PACKAGE_TEST_FILES = ["conftest.py"]
 # Templates of the package directory that do not need a model of their own (the protocol's
 # constants, the package's exports).
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
@@ -761,7 +763,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
         }
-        files.update(_runtime(proto, f"{root}/{pkg}"))
+        files.update(_runtime(proto, root))
         for name in PACKAGE_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)
         files[f"{root}/{pkg}/types.py"] = env.get_template("python/package/types.py.j2").render(
@@ -779,7 +781,6 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             **ctx, example=_example(proto)
         )
         tests = {
-            "conftest.py": {},
             "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
             "test_typed.py": _typed_context(m, sets),
             "test_runtime.py": {},
@@ -790,15 +791,18 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
 
 
 def _runtime(proto: dict, dest: str) -> dict[str, str]:
-    """The runtime files of one package. Their code takes what it needs of the protocol from the
-    generated _protocol.py / _protocol.h; only their docstrings and comments name the package, with
-    these placeholders (each replaced in every file that has it)."""
+    """The runtime files of the package in `dest` (generated/python/<package>), and the plain files
+    of its tests/. Their code takes what it needs of the protocol from the generated _protocol.py /
+    _protocol.h; only their docstrings and comments name the package, with these placeholders (each
+    replaced in every file that has it)."""
     placeholders = [
         ("<package>", proto["package"]),
         ("<PACKAGE>", proto["package"].upper()),
         ("<protocol title>", proto["title"]),
     ]
-    return copy_runtime("python", {name: f"{dest}/{name}" for name in RUNTIME_FILES}, placeholders)
+    mapping = {name: f"{dest}/{proto['package']}/{name}" for name in RUNTIME_FILES}
+    mapping.update({f"package_tests/{name}": f"{dest}/tests/{name}" for name in PACKAGE_TEST_FILES})
+    return copy_runtime("python", mapping, placeholders)
 
 
 def _example(proto: dict) -> dict:
