@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Build, test and run the generated Python packages.
 #   tests/lang/python.sh build                        byte-compile every package under generated/python/ into build/python/
-#   tests/lang/python.sh test                         ruff check + pytest of every package, twice: with the
-#                                                     C accelerator (built by `ext`) and forced pure (<PKG>_PURE=1)
+#   tests/lang/python.sh test                         ruff check, the runtime's unit tests in place
+#                                                     (generator/targets/python/runtime/tests/), then pytest of
+#                                                     every package; each twice: with the C accelerator (built
+#                                                     by `ext`) and forced pure (<PKG>_PURE=1)
 #   tests/lang/python.sh ext                          build every package with its C accelerator in place
 #                                                     into build/python/ext/<package>/ (prints the directory)
 #   tests/lang/python.sh decode FILE [--device ID]    python -m <package> decode (FILE may be -)
@@ -89,7 +91,16 @@ ext)
     ;;
 test)
     [ -n "$RUFF" ] || { echo "tests/lang/python.sh: ruff not found (run make)" >&2; exit 2; }
-    (cd "$ROOT" && "$RUFF" check --config ruff.toml generated/python)
+    (cd "$ROOT" && "$RUFF" check --config ruff.toml generated/python generator/targets/python/runtime)
+    # The runtime's unit tests, in place (generator/targets/python/runtime/tests/: a test protocol,
+    # no regeneration), before the generated packages' tests: with each of the test protocol's two
+    # framings (TESTPROTO_FRAMING), pure and with the C accelerator (built in build/python/runtime/).
+    for framing in a b; do
+        echo "== runtime, framing $framing: pure Python (TESTPROTO_PURE=1)"
+        (cd "$ROOT" && env TESTPROTO_FRAMING="$framing" TESTPROTO_PURE=1 "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)
+        echo "== runtime, framing $framing: with the C accelerator"
+        (cd "$ROOT" && env -u TESTPROTO_PURE TESTPROTO_FRAMING="$framing" "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)
+    done
     for pkg in $(packages); do
         up="$(echo "$pkg" | tr '[:lower:]' '[:upper:]')"
         echo "== $pkg: pure Python (${up}_PURE=1)"

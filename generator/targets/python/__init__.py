@@ -1,4 +1,6 @@
-"""The python target: back end (names and type mapping) in backend.py; see docs/design.md."""
+"""The python target: back end (names and type mapping) in backend.py, language facts as data in
+facts.py, the hand-written runtime (plain files, unit-tested in place) in runtime/; see
+docs/design.md."""
 
 from .backend import OUTPUT_DIRS, api_names, render
 

@@ -1,63 +1,38 @@
 """Python back end: one installable, dependency-free package per protocol (Python 3.9+).
 
 generated/python/<package>/
-    pyproject.toml, README.md
-    <package>/            the library: runtime modules (rendered with the framing constants) plus
-                          types.py (enums, bitfields, structs, unions), one module per descriptor set,
-                          reserved.py (reserved fields such as ack/nack) and registry.py (dispatch tables)
-    tests/                golden vectors (generated), typed round trips (generated), runtime tests
+    pyproject.toml, setup.py, README.md
+    <package>/            the library: the runtime (plain files of generator/targets/python/runtime/,
+                          copied), _protocol.py and _protocol.h (the protocol's constants: the runtime's
+                          only protocol input), types.py (enums, bitfields, structs, unions), one module
+                          per descriptor set, reserved.py (reserved fields such as ack/nack) and
+                          registry.py (dispatch tables)
+    tests/                golden vectors, typed round trips, the accelerator on every fixed layout
+                          (generated; the runtime's own unit tests run in place, runtime/tests/)
 
-All naming and type mapping happens here; templates only loop and print. Layouts are described to
-the runtime as tuples of operations (`_c.Run`, `_c.Counted`, `_c.Choice`, ...), so the generated
-modules read like declarations: each parameter is classified by the layout model
-(generator/model.py), named here, and written by templates/python/layout_macros.j2.
+All naming and type mapping happens here, with the language's facts as data in facts.py; templates
+only loop and print. Layouts are described to the runtime as tuples of operations (`_c.Run`,
+`_c.Counted`, `_c.Choice`, ...), so the generated modules read like declarations: each parameter is
+classified by the layout model (generator/model.py), named here, and written by
+templates/python/layout_macros.j2.
 """
 
 from __future__ import annotations
 
-import keyword
 import textwrap
 
 from generator import model
 from generator.examples import example_context
 from generator.primitives import PRIMITIVES, int_range
-from generator.render import environment
+from generator.render import copy_runtime, environment
+from generator.targets.python import facts
 
 OUTPUT_DIRS = ["python"]
 
-# Runtime modules of every package; a descriptor set whose name collides gets a "_set" suffix.
-RUNTIME_MODULES = {
-    "_speedups",
-    "canonical",
-    "cli",
-    "codec",
-    "framing",
-    "packets",
-    "registry",
-    "reserved",
-    "types",
-    "tests",
-}
 # Names the package exports at top level (a set module must not shadow them).
-EXPORTED = {
-    "build_packet",
-    "checksum_bytes",
-    "decode_all",
-    "decode_columns",
-    "decode_bytes",
-    "decode_field",
-    "decode_packet",
-    "decode_stream",
-    "encode_line",
-    "encode_lines",
-    "fletcher16",
-    "iter_fields",
-    "lookup",
-    "parse",
-}
-# Static runtime templates: template file -> output path inside the package directory.
-RUNTIME_TEMPLATES = [
-    "__init__.py",
+EXPORTED = {name for names in facts.EXPORTS.values() for name in names}
+# The runtime: plain files of generator/targets/python/runtime/, copied into every package.
+RUNTIME_FILES = [
     "__main__.py",
     "canonical.py",
     "cli.py",
@@ -67,25 +42,23 @@ RUNTIME_TEMPLATES = [
     "samples.py",
     "_speedups.c",
 ]
-
-SCALARS = {
-    "u8": "_c.U8",
-    "u16": "_c.U16",
-    "u32": "_c.U32",
-    "u64": "_c.U64",
-    "s8": "_c.S8",
-    "s16": "_c.S16",
-    "s32": "_c.S32",
-    "s64": "_c.S64",
-    "float": "_c.F32",
-    "double": "_c.F64",
-    "bool": "_c.BOOL",
-    "char": "_c.CHAR",
+# Plain files of runtime/package_tests/, copied into every package's tests/ directory.
+PACKAGE_TEST_FILES = ["conftest.py"]
+# Templates of the package directory that do not need a model of their own (the protocol's
+# constants, the package's exports).
+PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
+# Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
+RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES} | {
+    "registry",
+    "reserved",
+    "types",
+    "tests",
 }
-PY_TYPES = {"int": "int", "float": "float", "bool": "bool", "char": "bytes"}
-# Attribute names the runtime base classes use (a parameter with such a name gets a "_" suffix).
-LAYOUT_RESERVED = {"decode", "encode", "to_json", "from_json"}
-BITFIELD_RESERVED = set(dir(int)) | {"replace", "members"}
+
+SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
+# Attribute names a parameter / bitfield member must not take (it gets a "_" suffix instead).
+LAYOUT_RESERVED = facts.LAYOUT_ATTRIBUTES
+BITFIELD_RESERVED = facts.INT_ATTRIBUTES | facts.BITFIELD_ATTRIBUTES
 
 
 # ------------------------------------------------------------------------------------------ naming
@@ -93,9 +66,9 @@ def camel(name: str) -> str:
     return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
 
 
-def py_attr(name: str, reserved: set[str] = LAYOUT_RESERVED) -> str:
+def py_attr(name: str, reserved: frozenset[str] = LAYOUT_RESERVED) -> str:
     """A parameter/member name as a Python attribute (keywords and runtime names get a '_')."""
-    if keyword.iskeyword(name) or name in reserved or name in ("l", "O", "I"):
+    if name in facts.KEYWORDS or name in reserved or name in facts.AMBIGUOUS_NAMES:
         return name + "_"
     return name
 
@@ -106,7 +79,7 @@ def const_name(name: str) -> str:
 
 def set_module(set_: dict) -> str:
     name = set_["name"]
-    if name in RUNTIME_MODULES or name in EXPORTED or keyword.iskeyword(name):
+    if name in RUNTIME_MODULES or name in EXPORTED or name in facts.KEYWORDS:
         return name + "_set"
     return name
 
@@ -233,7 +206,7 @@ class _Proto:
             "elem_kind": e.kind,
             "codec": SCALARS[e.name] if e.kind == "primitive" else None,
             "py_kind": PRIMITIVES[e.name][1] if e.kind == "primitive" else None,
-            "py_type": PY_TYPES[PRIMITIVES[e.name][1]] if e.kind == "primitive" else None,
+            "py_type": facts.PRIMITIVES[e.name].annotation if e.kind == "primitive" else None,
             "cls": f"{tp}{e.name}" if e.named else None,
             "base": e.primitive,
             "length": e.length,
@@ -718,10 +691,12 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "reserved": reserved,
             "registry": m.registry(sets, reserved),
             "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
+            "exports": facts.EXPORTS,
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
         }
-        for name in RUNTIME_TEMPLATES:
+        files.update(_runtime(proto, root))
+        for name in PACKAGE_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)
         files[f"{root}/{pkg}/types.py"] = env.get_template("python/package/types.py.j2").render(
             **ctx, **m.types_module()
@@ -738,15 +713,28 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             **ctx, example=_example(proto)
         )
         tests = {
-            "conftest.py": {},
             "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
             "test_typed.py": _typed_context(m, sets),
             "test_runtime.py": {},
-            "test_cli.py": {},
         }
         for name, extra in tests.items():
             files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
     return files
+
+
+def _runtime(proto: dict, dest: str) -> dict[str, str]:
+    """The runtime files of the package in `dest` (generated/python/<package>), and the plain files
+    of its tests/. Their code takes what it needs of the protocol from the generated _protocol.py /
+    _protocol.h; only their docstrings and comments name the package, with these placeholders (each
+    replaced in every file that has it)."""
+    placeholders = [
+        ("<package>", proto["package"]),
+        ("<PACKAGE>", proto["package"].upper()),
+        ("<protocol title>", proto["title"]),
+    ]
+    mapping = {name: f"{dest}/{proto['package']}/{name}" for name in RUNTIME_FILES}
+    mapping.update({f"package_tests/{name}": f"{dest}/tests/{name}" for name in PACKAGE_TEST_FILES})
+    return copy_runtime("python", mapping, placeholders)
 
 
 def _example(proto: dict) -> dict:

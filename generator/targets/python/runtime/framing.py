@@ -1,7 +1,7 @@
-"""Framing of the {{ proto.title }}: constants, Fletcher-16, packet builder, stream parser, field splitter.
+"""Framing of the <protocol title>: constants, Fletcher-16, packet builder, stream parser, field splitter.
 
-The constants are rendered from the IR (protocols[].framing); the code below them is the same for
-every protocol and follows docs/conformance.md sections 1 and 2.
+The constants are rendered from the IR (protocols[].framing) into _protocol.py; the code below is
+the same for every protocol and follows docs/conformance.md sections 1 and 2.
 """
 
 from __future__ import annotations
@@ -10,11 +10,32 @@ import os
 from operator import mul
 from typing import Any, Iterator, List, Tuple, Union
 
+# The protocol's constants (generated). framing.MAX_PACKET and the others the code below does not
+# use are part of the package's API: re-exported.
+from ._protocol import (  # noqa: F401
+    CHECKSUM_SIZE,
+    CHECKSUM_SUM1_FIRST,
+    FIELD_DESCRIPTOR_OFFSET,
+    FIELD_HEADER_SIZE,
+    FIELD_LENGTH_ADJUST,
+    FIELD_LENGTH_COUNTS_HEADER,
+    FIELD_LENGTH_OFFSET,
+    HEADER_SIZE,
+    IRREGULAR_LENGTHS,
+    LENGTH_OFFSET,
+    MAX_FIELD_DATA,
+    MAX_PACKET,
+    MAX_PAYLOAD,
+    PACKAGE,
+    SET_OFFSET,
+    SYNC,
+)
+
 # The optional C accelerator (_speedups.c, built by setup.py when a compiler is there): the parser
-# loop and packet decoding run in C with the same results. {{ package | upper }}_PURE=1 in the
+# loop and packet decoding run in C with the same results. <PACKAGE>_PURE=1 in the
 # environment forces the pure-Python code (tests run both ways).
 _speedups: Any = None
-if os.environ.get("{{ package | upper }}_PURE", "") in ("", "0"):
+if os.environ.get(PACKAGE.upper() + "_PURE", "") in ("", "0"):
     try:
         from . import _speedups  # type: ignore[attr-defined, no-redef]
     except ImportError:
@@ -26,25 +47,6 @@ if _speedups is not None:
 else:
     _EventBase = object
     _EVENT_SLOTS = ("offset", "data")
-
-# ----------------------------------------------------------------------------------- constants
-SYNC = b"{{ sync }}"
-HEADER_SIZE = {{ framing.header_size }}  # sync bytes + set + payload length
-SET_OFFSET = {{ framing.set_offset }}
-LENGTH_OFFSET = {{ framing.length_offset }}
-FIELD_HEADER_SIZE = {{ framing.field_header_size }}
-FIELD_LENGTH_OFFSET = {{ framing.field_length_offset }}
-FIELD_DESCRIPTOR_OFFSET = {{ framing.field_descriptor_offset }}
-FIELD_LENGTH_COUNTS_HEADER = {{ framing.field_length_counts_header }}
-FIELD_LENGTH_ADJUST = {{ framing.field_length_adjust }}  # field length byte - data length
-MAX_PAYLOAD = {{ framing.max_payload }}
-MAX_PACKET = {{ framing.max_packet }}
-MAX_FIELD_DATA = {{ framing.max_field_data }}
-CHECKSUM_SIZE = {{ framing.checksum_size }}
-CHECKSUM_SUM1_FIRST = {{ sum1_first }}  # Fletcher-16 bytes on the wire: sum1 then sum2 when True
-# Fields whose length byte differs from the rule above, (set, descriptor) -> extra adjustment
-# (the spec's length_byte_adjust).
-IRREGULAR_LENGTHS = { {% for x in framing.irregular_lengths %}({{ x.set | hex2 }}, {{ x.descriptor | hex2 }}): {{ x.adjust }}, {% endfor %} }
 
 
 def field_length_adjust(set_id: int, descriptor: int) -> int:
@@ -106,7 +108,9 @@ class PacketBuilder:
     def add_bytes(self, raw: Any) -> PacketBuilder:
         """Append raw payload bytes (e.g. a trailing entry)."""
         if len(self.payload) + len(raw) > MAX_PAYLOAD:
-            raise FramingError(f"payload of {len(self.payload) + len(raw)} bytes is longer than the maximum {MAX_PAYLOAD}")
+            raise FramingError(
+                f"payload of {len(self.payload) + len(raw)} bytes is longer than the maximum {MAX_PAYLOAD}"
+            )
         self.payload += raw
         return self
 
@@ -316,13 +320,17 @@ def iter_fields(set_id: int, payload: Any) -> Iterator[Union[FieldBytes, Trailin
     while o < n:
         r = n - o
         if r < FIELD_HEADER_SIZE:
-            yield TrailingBytes(o, payload[o:], f"field header at payload offset {o} needs {FIELD_HEADER_SIZE} bytes, {r} left")
+            yield TrailingBytes(
+                o, payload[o:], f"field header at payload offset {o} needs {FIELD_HEADER_SIZE} bytes, {r} left"
+            )
             return
         length = payload[o + FIELD_LENGTH_OFFSET]
         descriptor = payload[o + FIELD_DESCRIPTOR_OFFSET]
         data_length = length - field_length_adjust(set_id, descriptor)
         if data_length < 0:
-            yield TrailingBytes(o, payload[o:], f"field length {length} at payload offset {o} is shorter than the field header")
+            yield TrailingBytes(
+                o, payload[o:], f"field length {length} at payload offset {o} is shorter than the field header"
+            )
             return
         size = FIELD_HEADER_SIZE + data_length
         if size > r:

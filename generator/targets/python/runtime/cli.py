@@ -1,7 +1,7 @@
 """Command-line tools (docs/conformance.md section 5).
 
-    python -m {{ package }} decode [--device ID] [--samples] [FILE|-]   binary stream -> canonical JSON lines
-    python -m {{ package }} encode                         JSON lines on stdin -> bytes on stdout
+    python -m <package> decode [--device ID] [--samples] [FILE|-]   binary stream -> canonical JSON lines
+    python -m <package> encode                         JSON lines on stdin -> bytes on stdout
 
 decode: exit 0; usage or I/O errors: one line on stderr, exit 2.
 encode: bad lines are reported on stderr with their line number and not written; exit 1 if any.
@@ -14,12 +14,12 @@ import sys
 from typing import BinaryIO, List, Optional
 
 from . import registry
+from ._protocol import PACKAGE as PROG
 from .codec import EncodeError
 from .framing import Parser, RawPacket
 from .packets import encode_line, event_line
 from .samples import SampleTracker
 
-PROG = "{{ package }}"
 USAGE = f"usage: python -m {PROG} decode [--device ID] [--samples] [FILE|-] | python -m {PROG} encode"
 CHUNK = 1 << 16
 

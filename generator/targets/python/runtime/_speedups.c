@@ -1,4 +1,4 @@
-/* Optional C accelerator of {{ package }} ({{ proto.title }}), built by the package's setup.py.
+/* Optional C accelerator of <package> (<protocol title>), built by the package's setup.py.
  *
  * It replaces the two hot loops of the pure-Python runtime and nothing else:
  *   - scan(): the stream parser (framing.Parser._scan): sync search, length, Fletcher-16, skip runs;
@@ -7,8 +7,8 @@
  *     strings, enums, bitfields) built here; every other layout, every error and every NaN goes
  *     back to the pure-Python decoder, so messages and values are those of the pure path.
  * The objects it returns are instances of the package's own classes (RawPacket, Skip, Packet,
- * DecodedField and the generated dataclasses), equal to what the pure path returns. The framing
- * constants below are rendered from the IR like those of framing.py.
+ * DecodedField and the generated dataclasses), equal to what the pure path returns. The protocol's
+ * constants come from _protocol.h, generated from the IR like _protocol.py.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -22,31 +22,7 @@ static inline PyObject *Py_NewRef(PyObject *o) {
 }
 #endif
 
-#define SYNC_LEN {{ framing.sync | length }}
-static const unsigned char SYNC[SYNC_LEN] = { {% for b in framing.sync %}0x{{ '%02x' % b }}, {% endfor %} };
-#define HEADER_SIZE {{ framing.header_size }}
-#define SET_OFFSET {{ framing.set_offset }}
-#define LENGTH_OFFSET {{ framing.length_offset }}
-#define FIELD_HEADER_SIZE {{ framing.field_header_size }}
-#define FIELD_LENGTH_OFFSET {{ framing.field_length_offset }}
-#define FIELD_DESCRIPTOR_OFFSET {{ framing.field_descriptor_offset }}
-#define FIELD_LENGTH_ADJUST {{ framing.field_length_adjust }}
-#define MAX_PAYLOAD {{ framing.max_payload }}
-#define CHECKSUM_SIZE {{ framing.checksum_size }}
-#define CHECKSUM_SUM1_FIRST {{ 1 if sum1_first else 0 }}
-#define BIG_ENDIAN_WIRE {{ 1 if byte_order == ">" else 0 }}
-
-/* Length byte - data length of a field (framing.field_length_adjust). */
-static int field_length_adjust(int set_id, int descriptor) {
-    (void)set_id;
-    (void)descriptor;
-{% for x in framing.irregular_lengths %}
-    if (set_id == {{ x.set }} && descriptor == {{ x.descriptor }}) {
-        return FIELD_LENGTH_ADJUST + ({{ x.adjust }});
-    }
-{% endfor %}
-    return FIELD_LENGTH_ADJUST;
-}
+#include "_protocol.h"
 
 /* ------------------------------------------------------------------------------ base types */
 /* Base classes of RawPacket and Skip (offset, data), Packet (offset, set, fields) and
@@ -332,7 +308,7 @@ static void gc_resume(int was_enabled) {
 static PyObject *scan(PyObject *self, PyObject *args) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "{{ package }}._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     PyObject *buf;
@@ -386,7 +362,7 @@ typedef enum { ENTRY_SLOW = 1, ENTRY_FAST = 2 } EntryKind;
 
 typedef struct {
     EntryKind kind;
-    PyObject *cls; /* owned */
+    PyObject *cls;   /* owned */
     Py_ssize_t size; /* data bytes */
     int nitems;
     Item items[];
@@ -669,7 +645,7 @@ static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject 
 static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "{{ package }}._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     static char *names[] = {"packet", "offset", "device", NULL};
@@ -709,7 +685,7 @@ static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs)
 static PyObject *decode_all(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "{{ package }}._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg); /* a private immutable copy (no copy for bytes) */
@@ -769,9 +745,9 @@ typedef struct {
     const Entry *e;
     int set_id, descriptor;
     Py_ssize_t rows;
-    Buf offsets;  /* long long per row: packet offset */
-    Buf index;    /* long long per row: position of the field in its packet */
-    Buf cols[];   /* per item: double (f, d), long long (i), unsigned long long (u, e, F), unsigned char (?) */
+    Buf offsets; /* long long per row: packet offset */
+    Buf index;   /* long long per row: position of the field in its packet */
+    Buf cols[];  /* per item: double (f, d), long long (i), unsigned long long (u, e, F), unsigned char (?) */
 } Table;
 
 struct Columns {
@@ -811,7 +787,8 @@ static int row_ok(const Entry *e, const unsigned char *p) {
                 }
             } else if (it->kind == 'd') {
                 unsigned long long bits = load(p, 8);
-                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull && (bits & 0x000FFFFFFFFFFFFFull)) {
+                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull &&
+                    (bits & 0x000FFFFFFFFFFFFFull)) {
                     return 0;
                 }
             } else if (it->kind == '?' && p[0] > 1) {
@@ -1018,7 +995,7 @@ static void columns_free(Columns *c) {
 static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "{{ package }}._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg);
@@ -1034,8 +1011,8 @@ static PyObject *decode_columns(PyObject *self, PyObject *arg) {
         }
     } else {
         int gc = gc_pause();
-        Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0, 1,
-                                   SCAN_COLUMNS, &c, &skip, skips);
+        Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0,
+                                   1, SCAN_COLUMNS, &c, &skip, skips);
         gc_resume(gc);
         if (pos >= 0 && flush_skip(&skip, skips) >= 0) {
             PyObject *tables = tables_out(&c);
@@ -1083,21 +1060,30 @@ static PyMethodDef methods[] = {
     {"scan", scan, METH_VARARGS, "The stream parser loop (framing.Parser._scan)."},
     {"decode_packet", (PyCFunction)(void (*)(void))decode_packet, METH_VARARGS | METH_KEYWORDS,
      "decode_packet(packet, offset=0, device=None): a complete packet decoded into typed fields."},
-    {"decode_all", decode_all, METH_O, "decode_all(data): every event of a complete stream, packets decoded."},
-    {"decode_columns", decode_columns, METH_O, "decode_columns(data): a complete stream as per-field tables."},
+    {"decode_all", decode_all, METH_O,
+     "decode_all(data): every event of a complete stream, packets decoded."},
+    {"decode_columns", decode_columns, METH_O,
+     "decode_columns(data): a complete stream as per-field tables."},
     {NULL, NULL, 0, NULL},
 };
 
 static struct PyModuleDef module = {
-    PyModuleDef_HEAD_INIT, "{{ package }}._speedups", "C accelerator of {{ package }} (optional).", -1, methods,
-    NULL, NULL, NULL, NULL,
+    PyModuleDef_HEAD_INIT,
+    PROTOCOL_PACKAGE "._speedups",
+    "C accelerator of " PROTOCOL_PACKAGE " (optional).",
+    -1,
+    methods,
+    NULL,
+    NULL,
+    NULL,
+    NULL,
 };
 
 PyMODINIT_FUNC PyInit__speedups(void) {
     PyTypeObject *types[3] = {&EventBase, &PacketBase, &DecodedFieldBase};
-    if (ready_base(&EventBase, "{{ package }}._speedups.EventBase", event_members) < 0 ||
-        ready_base(&PacketBase, "{{ package }}._speedups.PacketBase", packet_members) < 0 ||
-        ready_base(&DecodedFieldBase, "{{ package }}._speedups.DecodedFieldBase", decoded_members) < 0) {
+    if (ready_base(&EventBase, PROTOCOL_PACKAGE "._speedups.EventBase", event_members) < 0 ||
+        ready_base(&PacketBase, PROTOCOL_PACKAGE "._speedups.PacketBase", packet_members) < 0 ||
+        ready_base(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase", decoded_members) < 0) {
         return NULL;
     }
     empty_tuple = PyTuple_New(0);

@@ -55,7 +55,17 @@ class DecodedField(_DecodedBase):
     def line(self) -> str:
         v = self.value
         device = f',"device":"{v.DEVICE}"' if v.DEVICE is not None else ""
-        return '{"descriptor":' + str(self.descriptor) + ',"name":"' + v.NAME + '"' + device + ',"values":' + v.to_json() + "}"
+        return (
+            '{"descriptor":'
+            + str(self.descriptor)
+            + ',"name":"'
+            + v.NAME
+            + '"'
+            + device
+            + ',"values":'
+            + v.to_json()
+            + "}"
+        )
 
     def __reduce__(self) -> Any:
         return (type(self), (self.descriptor, self.value))
@@ -75,7 +85,15 @@ class RawField:
         self.error = error
 
     def line(self) -> str:
-        return '{"descriptor":' + str(self.descriptor) + ',"data":"' + self.data.hex() + '","error":' + error_text(self.error) + "}"
+        return (
+            '{"descriptor":'
+            + str(self.descriptor)
+            + ',"data":"'
+            + self.data.hex()
+            + '","error":'
+            + error_text(self.error)
+            + "}"
+        )
 
     def __repr__(self) -> str:
         return f"RawField(descriptor=0x{self.descriptor:02X}, data={self.data.hex()}, error={self.error!r})"
@@ -232,7 +250,9 @@ class Table:
     of `cls`) equal to the one `decode_packet` gives.
     """
 
-    def __init__(self, set_id: int, descriptor: int, cls: Any, rows: int, offsets: bytes, index: bytes, cols: List[bytes]) -> None:
+    def __init__(
+        self, set_id: int, descriptor: int, cls: Any, rows: int, offsets: bytes, index: bytes, cols: List[bytes]
+    ) -> None:
         self.set = set_id
         self.descriptor = descriptor
         self.cls = cls

@@ -3,16 +3,19 @@
 import os
 import subprocess
 import sys
+from pathlib import Path
 
-from mscipcodec.framing import PacketBuilder
-from mscipcodec.registry import SET_KINDS
+import testproto
+from testproto.framing import PacketBuilder
+from testproto.registry import SET_KINDS
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The directory holding the assembled package (conftest.py).
+ROOT = str(Path(testproto.__file__).resolve().parent.parent)
 
 
 def run(args, data=b""):
     env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""), PYTHONDONTWRITEBYTECODE="1")
-    return subprocess.run([sys.executable, "-m", "mscipcodec", *args], input=data, capture_output=True, env=env)
+    return subprocess.run([sys.executable, "-m", "testproto", *args], input=data, capture_output=True, env=env)
 
 
 def stream():

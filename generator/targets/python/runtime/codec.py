@@ -1,4 +1,4 @@
-"""Typed values and their wire encoding (spec-independent runtime of {{ package }}).
+"""Typed values and their wire encoding (spec-independent runtime of <package>).
 
 Every generated command, response, data field, reserved field and struct is a dataclass deriving
 from `Layout`. Its `_OPS` describe the parameters in wire order:
@@ -20,6 +20,7 @@ import struct
 from operator import attrgetter
 from typing import Any, Callable, Dict, List, Optional, Tuple
 
+from ._protocol import BYTE_ORDER
 from .canonical import (
     NaN,
     f32_bits,
@@ -30,8 +31,6 @@ from .canonical import (
     is_int,
     string_text,
 )
-
-BYTE_ORDER = "{{ byte_order }}"
 
 _RAW32 = struct.Struct(BYTE_ORDER + "I")
 _RAW64 = struct.Struct(BYTE_ORDER + "Q")
@@ -199,6 +198,8 @@ S8 = _int_scalar("b", 1, "s8", True)
 S16 = _int_scalar("h", 2, "s16", True)
 S32 = _int_scalar("i", 4, "s32", True)
 S64 = _int_scalar("q", 8, "s64", True)
+
+
 def _float_from_json(width: int) -> Callable[[Any], float]:
     def from_json(x: Any) -> float:
         try:
@@ -678,7 +679,9 @@ class _Array(_Op):
         for j in range(n):
             off = o + j * size
             if off + size > len(data):
-                raise DecodeError(f"{prefix}{self.name}[{j}]: needs {size} bytes at offset {off}, {len(data) - off} left")
+                raise DecodeError(
+                    f"{prefix}{self.name}[{j}]: needs {size} bytes at offset {off}, {len(data) - off} left"
+                )
             x = one.unpack_from(data, off)[0]
             if s.is_bool:
                 if x > 1:
@@ -1001,7 +1004,9 @@ class Layout:
                 if not op.is_empty(vals):
                     absent = absent or op.name
             elif absent is not None:
-                raise EncodeError(f"{prefix}{op.name}: present although the optional parameter {absent} before it is absent")
+                raise EncodeError(
+                    f"{prefix}{op.name}: present although the optional parameter {absent} before it is absent"
+                )
 
     # -- canonical JSON
     def to_json(self) -> str:

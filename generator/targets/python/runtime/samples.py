@@ -16,15 +16,9 @@ from __future__ import annotations
 
 from typing import Any, Dict, List, Optional, Tuple
 
+from ._protocol import DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS  # noqa: F401 (samples.MAX_KEY: API)
 from .framing import CHECKSUM_SIZE, FIELD_HEADER_SIZE, HEADER_SIZE, SET_OFFSET, FieldBytes, RawPacket, iter_fields
 from .packets import Entry, Packet, decode_packet
-
-# The rule exported as `samples` in generated/ir.json (first_shared 0x100: no shared descriptors).
-DATA_SETS = frozenset(({% for s in sample_rule.data_sets %}0x{{ '%02X' % s }}, {% endfor %}))
-FIRST_SHARED = 0x{{ '%02X' % sample_rule.first_shared }}
-# Shared descriptor -> data size of the fields whose value identifies a sample.
-TIMESTAMPS: Dict[int, int] = { {%- for t in sample_rule.timestamps %}0x{{ '%02X' % t.descriptor }}: {{ t.size }}{{ ", " if not loop.last }}{% endfor -%} }
-MAX_KEY = {{ sample_rule.max_key }}
 
 
 def shared_prefix(set_id: int, payload: Any) -> Tuple[int, int]:

@@ -168,7 +168,7 @@ class JsonError(ValueError):
 
 
 def _no_constants(name: str) -> Any:
-    raise JsonError(f"{name} is not valid JSON (write \"nan\", \"inf\" or \"-inf\" as strings)")
+    raise JsonError(f'{name} is not valid JSON (write "nan", "inf" or "-inf" as strings)')
 
 
 def _no_duplicates(pairs: List[Tuple[str, Any]]) -> Dict[str, Any]:

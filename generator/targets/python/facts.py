@@ -1,0 +1,202 @@
+"""Facts of the Python language and of the Python runtime that the back end maps names and types with.
+
+Written out as data (not read from the running interpreter's `keyword` module or `dir(int)`), so that
+the generated code does not depend on which Python runs the generator.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+# Python's reserved words (keyword.kwlist, unchanged from 3.9 to 3.13): a parameter, member or
+# module name that is one of them gets a "_" suffix.
+KEYWORDS = frozenset(
+    {
+        "False",
+        "None",
+        "True",
+        "and",
+        "as",
+        "assert",
+        "async",
+        "await",
+        "break",
+        "class",
+        "continue",
+        "def",
+        "del",
+        "elif",
+        "else",
+        "except",
+        "finally",
+        "for",
+        "from",
+        "global",
+        "if",
+        "import",
+        "in",
+        "is",
+        "lambda",
+        "nonlocal",
+        "not",
+        "or",
+        "pass",
+        "raise",
+        "return",
+        "try",
+        "while",
+        "with",
+        "yield",
+    }
+)
+
+# Names pycodestyle (ruff E741) rejects as ambiguous: they get a "_" suffix too.
+AMBIGUOUS_NAMES = frozenset({"l", "O", "I"})
+
+# The attributes of the builtin `int` (dir(int) of Python 3.11): a bitfield is an int subclass,
+# so a member with one of these names would hide them.
+INT_ATTRIBUTES = frozenset(
+    {
+        "__abs__",
+        "__add__",
+        "__and__",
+        "__bool__",
+        "__ceil__",
+        "__class__",
+        "__delattr__",
+        "__dir__",
+        "__divmod__",
+        "__doc__",
+        "__eq__",
+        "__float__",
+        "__floor__",
+        "__floordiv__",
+        "__format__",
+        "__ge__",
+        "__getattribute__",
+        "__getnewargs__",
+        "__getstate__",
+        "__gt__",
+        "__hash__",
+        "__index__",
+        "__init__",
+        "__init_subclass__",
+        "__int__",
+        "__invert__",
+        "__le__",
+        "__lshift__",
+        "__lt__",
+        "__mod__",
+        "__mul__",
+        "__ne__",
+        "__neg__",
+        "__new__",
+        "__or__",
+        "__pos__",
+        "__pow__",
+        "__radd__",
+        "__rand__",
+        "__rdivmod__",
+        "__reduce__",
+        "__reduce_ex__",
+        "__repr__",
+        "__rfloordiv__",
+        "__rlshift__",
+        "__rmod__",
+        "__rmul__",
+        "__ror__",
+        "__round__",
+        "__rpow__",
+        "__rrshift__",
+        "__rshift__",
+        "__rsub__",
+        "__rtruediv__",
+        "__rxor__",
+        "__setattr__",
+        "__sizeof__",
+        "__str__",
+        "__sub__",
+        "__subclasshook__",
+        "__truediv__",
+        "__trunc__",
+        "__xor__",
+        "as_integer_ratio",
+        "bit_count",
+        "bit_length",
+        "conjugate",
+        "denominator",
+        "from_bytes",
+        "imag",
+        "numerator",
+        "real",
+        "to_bytes",
+    }
+)
+
+# Attributes of the runtime's base classes (runtime/codec.py): Layout (every struct and field) and
+# Bitfield (an int subclass besides).
+LAYOUT_ATTRIBUTES = frozenset({"decode", "encode", "to_json", "from_json"})
+BITFIELD_ATTRIBUTES = frozenset({"replace", "members"})
+
+
+class Primitive(NamedTuple):
+    """How one wire primitive looks in Python."""
+
+    scalar: str  # the runtime's codec.Scalar object that packs it (runtime/codec.py)
+    struct: str  # its `struct` format character (without the byte order), as that Scalar uses
+    annotation: str  # the Python type of a decoded value
+    default: str  # source of the default value of a dataclass attribute
+
+
+PRIMITIVES: dict[str, Primitive] = {
+    "u8": Primitive("U8", "B", "int", "0"),
+    "u16": Primitive("U16", "H", "int", "0"),
+    "u32": Primitive("U32", "I", "int", "0"),
+    "u64": Primitive("U64", "Q", "int", "0"),
+    "s8": Primitive("S8", "b", "int", "0"),
+    "s16": Primitive("S16", "h", "int", "0"),
+    "s32": Primitive("S32", "i", "int", "0"),
+    "s64": Primitive("S64", "q", "int", "0"),
+    "float": Primitive("F32", "f", "float", "0.0"),
+    "double": Primitive("F64", "d", "float", "0.0"),
+    "bool": Primitive("BOOL", "B", "bool", "False"),
+    "char": Primitive("CHAR", "c", "bytes", 'b"\\x00"'),
+}
+
+# The runtime's public names that a package's __init__ re-exports, by runtime module, in the order
+# it imports them (templates/python/package/__init__.py.j2).
+EXPORTS = {
+    "canonical": ["NaN"],
+    "codec": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
+    "framing": [
+        "ACCELERATED",
+        "FramingError",
+        "PacketBuilder",
+        "Parser",
+        "RawPacket",
+        "Skip",
+        "build_packet",
+        "checksum_bytes",
+        "fletcher16",
+        "iter_fields",
+        "parse",
+    ],
+    "packets": [
+        "Columns",
+        "DecodedField",
+        "Decoder",
+        "Packet",
+        "RawField",
+        "Trailing",
+        "decode_all",
+        "decode_bytes",
+        "decode_columns",
+        "decode_field",
+        "decode_packet",
+        "decode_stream",
+        "encode_line",
+        "encode_lines",
+    ],
+    "registry": ["DEVICES", "lookup"],
+    "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
+}

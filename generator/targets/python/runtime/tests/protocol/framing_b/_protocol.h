@@ -1,0 +1,31 @@
+/* Constants of the test protocol, framing b, for the C accelerator: the same facts as _protocol.py. */
+#ifndef TESTPROTO_PROTOCOL_H
+#define TESTPROTO_PROTOCOL_H
+
+#define PROTOCOL_PACKAGE "testproto"
+#define SYNC_LEN 2
+static const unsigned char SYNC[SYNC_LEN] = {
+    0xa5,
+    0x5a,
+};
+#define HEADER_SIZE 4
+#define SET_OFFSET 2
+#define LENGTH_OFFSET 3
+#define FIELD_HEADER_SIZE 2
+#define FIELD_LENGTH_OFFSET 1
+#define FIELD_DESCRIPTOR_OFFSET 0
+#define FIELD_LENGTH_ADJUST 0
+#define MAX_PAYLOAD 200
+#define CHECKSUM_SIZE 2
+#define CHECKSUM_SUM1_FIRST 0
+#define BIG_ENDIAN_WIRE 1
+
+/* Length byte - data length of a field (framing.field_length_adjust). */
+static int field_length_adjust(int set_id, int descriptor) {
+    if (set_id == 128 && descriptor == 6) {
+        return FIELD_LENGTH_ADJUST + (-1);
+    }
+    return FIELD_LENGTH_ADJUST;
+}
+
+#endif

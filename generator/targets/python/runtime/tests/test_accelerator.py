@@ -1,0 +1,121 @@
+"""The C accelerator (_speedups.c) against the pure-Python code it replaces: the same events,
+packets, values and errors. tests/lang/python.sh runs these tests with the accelerator built and
+with TESTPROTO_PURE=1, where both sides are the pure-Python code."""
+
+import copy
+import gc
+import os
+import pickle
+import random
+
+import testproto
+from testproto import codec as c
+from testproto import packets, registry
+from testproto.framing import SYNC, PacketBuilder, Parser, RawPacket, Skip, parse
+from testproto.packets import Packet, decode_all, decode_columns
+
+
+def test_accelerator_is_what_the_environment_asks_for():
+    # Neither run of tests/lang/python.sh can silently be the other.
+    if os.environ.get("TESTPROTO_PURE", "") not in ("", "0"):
+        assert not testproto.ACCELERATED
+    else:
+        assert testproto.ACCELERATED  # conftest.py built it
+
+
+def _layout_data(items, fill):
+    size = sum(s * (1 if n < 0 else n) for _a, _k, s, n, _x in items)
+    if fill == "random":
+        return bytes(random.Random(size).getrandbits(8) for _ in range(size))
+    return bytes([fill]) * size
+
+
+def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
+    # Every field whose layout the C side reads itself, with data of all 0x00, 0x01, 0xFF (NaN
+    # floats, invalid bools, unknown enum values, every flag), random bytes, one byte short and
+    # one byte long, for each of its per-device layouts: the same entries (repr, line, types) as
+    # the pure-Python decoder, errors included.
+    checked = set()
+    for (set_id, descriptor), classes in registry.FIELDS.items():
+        for cls in classes:
+            items = c.fast_items(cls)
+            if items is None:
+                continue
+            for fill in (0x00, 0x01, 0xFF, "random"):
+                full = _layout_data(items, fill)
+                for data in (full, full[:-1], full + b"\x00"):
+                    packet = PacketBuilder(set_id).add_field(descriptor, data).build()
+                    for device in (None, *registry.DEVICES):
+                        got = packets.decode_packet(packet, 7, device)
+                        want = packets._decode_packet_pure(packet, 7, device)
+                        assert repr(got) == repr(want), (cls.__name__, data.hex())
+                        assert got.line() == want.line(), (cls.__name__, data.hex())
+                        assert [type(v) for v in got.values()] == [type(v) for v in want.values()]
+                    entries = [(o, k, repr(x)) for o, k, x in decode_columns(b"\0" * 7 + packet).entries()]
+                    want = packets._decode_packet_pure(packet, 7)
+                    assert entries == [(7, k, repr(f)) for k, f in enumerate(want.fields)], (cls.__name__, data.hex())
+                    checked.add(cls.__name__)
+    # Every kind of fixed-size item the C side reads: u16/s8/bool, f32 array/f64/u64/s32, enum,
+    # bitfield, string, char, per-device variants, an irregular length byte.
+    assert {"Reading", "Vector", "State", "Temperature_alpha", "Temperature_beta", "Odd"} <= checked
+
+
+def _stream(seed):
+    """Packets of every field of the test protocol (good, short, long data) with garbage between."""
+    rng = random.Random(seed)
+    out = b""
+    for (set_id, descriptor), classes in registry.FIELDS.items():
+        size = len(classes[0]().encode())
+        data = bytes(rng.getrandbits(8) for _ in range(size + rng.choice((-1, 0, 0, 1)) if size else 0))
+        out += bytes(rng.getrandbits(8) for _ in range(rng.randrange(3)))
+        out += PacketBuilder(set_id).add_field(descriptor, data).build()
+    return out + PacketBuilder(0x01).add_field(0xF1, b"\x02\x00").build() + SYNC + b"\x01"
+
+
+def test_accelerated_paths_match_the_pure_path():
+    for seed in range(5):
+        data = _stream(seed)
+        parser = Parser()
+        parser._scan = parser._scan_pure  # the pure-Python parser loop, also when the accelerator is built
+        events = parser.feed(data) + parser.flush()
+        assert parse(data) == events
+        expected = [packets._decode_packet_pure(e.data, e.offset) if isinstance(e, RawPacket) else e for e in events]
+        got = decode_all(data)
+        assert [type(x) for x in got] == [type(x) for x in expected]
+        assert [repr(x) for x in got] == [repr(x) for x in expected]
+        decoder = testproto.Decoder()
+        streamed = [x for i in range(0, len(data), 5) for x in decoder.feed(data[i : i + 5])] + decoder.flush()
+        assert [repr(x) for x in streamed] == [repr(x) for x in expected]
+        for g, e in zip(got, expected):
+            if isinstance(g, Packet):
+                assert [type(v) for v in g.values()] == [type(v) for v in e.values()]
+
+
+def test_events_and_packets_copy_and_pickle():
+    # RawPacket, Skip, Packet and DecodedField keep their attributes in C base classes when the
+    # accelerator is built: copying and pickling must still carry them.
+    data = b"\x00\x01" + PacketBuilder(0x80).add_field(0x01, b"\x00" * 4).build()
+    raw = parse(data)
+    assert [type(e) for e in raw] == [Skip, RawPacket]
+    for e in raw:
+        assert copy.copy(e) == e
+        assert pickle.loads(pickle.dumps(e)) == e
+    for e in decode_all(data):
+        assert repr(copy.deepcopy(e)) == repr(e)
+        assert repr(pickle.loads(pickle.dumps(e))) == repr(e)
+
+
+def test_decoding_leaves_the_garbage_collector_as_it_was():
+    # The accelerator pauses the collector during a call; it must restore the caller's setting.
+    data = PacketBuilder(0x80).add_field(0x01, b"\x00" * 4).build() * 3
+    was = gc.isenabled()
+    try:
+        for enabled in (True, False):
+            gc.enable() if enabled else gc.disable()
+            decode_all(data)
+            decode_columns(data)
+            testproto.Decoder().feed(data)
+            parse(data)
+            assert gc.isenabled() == enabled
+    finally:
+        gc.enable() if was else gc.disable()
