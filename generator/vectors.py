@@ -19,7 +19,7 @@ import jsonschema
 
 from .canonical import float_text, string_text
 from .diagnostics import SpecError, SpecErrors
-from .ir import SpecFile
+from .passes.context import SpecFile
 from .primitives import PRIMITIVES, int_range
 from .schema_check import schema_errors
 from .yamlpos import load
