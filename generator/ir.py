@@ -20,11 +20,13 @@ from .passes import (
     field_layouts,
     irregular_lengths,
     link_responses,
+    lookup_order,
     protocol_file,
     reserved_fields,
     resolve_types,
     samples,
     sets,
+    value_paths,
     variants,
 )
 from .passes.context import Context, SpecFile
@@ -42,6 +44,8 @@ PASSES = (
     irregular_lengths,  # length_byte_adjust checked; framing irregular_lengths
     samples,  # the sample-grouping rule (conformance.md section 6)
     field_layouts,  # each shared field layout once, with its users
+    lookup_order,  # the (set, descriptor) search order resolved for every set
+    value_paths,  # how deep and how long a value path can get
     assemble,  # the protocol entry in its exported shape
 )
 

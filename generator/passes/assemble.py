@@ -32,6 +32,8 @@ def run(ctx: Context) -> None:
         "types": [ctx.types[n] for n in sorted(ctx.types)],
         "field_layouts": ctx.layouts,
         "sets": ctx.sets,
+        "lookup": ctx.lookup,
+        "value_paths": ctx.value_paths,
     }
 
 
