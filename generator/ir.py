@@ -24,7 +24,7 @@ from .passes import (
     protocol_file,
     reserved_fields,
     resolve_types,
-    samples,
+    sample_rule,
     sets,
     value_paths,
     variants,
@@ -42,7 +42,7 @@ PASSES = (
     variants,  # each field's layouts, one per device where the spec has variants
     link_responses,  # responses to response fields of the same set; the reply code rule
     irregular_lengths,  # length_byte_adjust checked; framing irregular_lengths
-    samples,  # the sample-grouping rule (conformance.md section 6)
+    sample_rule,  # the sample-grouping rule (conformance.md section 6)
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get

@@ -64,6 +64,9 @@ def build_params(
     owner: str,
     allow_optional: bool = True,
 ) -> list[dict]:
+    """The IR parameters (docs/ir.md) of one parameter list at `path` in sf. `functions` are the
+    selector names of a command with a function selector (None otherwise); `owner` names the
+    list in messages; struct parameters may not be optional (allow_optional False)."""
     out: list[dict] = []
     names: dict[str, dict] = {}
     optional_seen: str | None = None
@@ -76,48 +79,7 @@ def build_params(
         if name == "function" and functions is not None:
             ctx.err(sf, pp + ("name",), f"{owner}: 'function' is reserved for the function selector", "another name")
         tref, alias, implicit_count = typeref(ctx, sf, pp, p)
-        count = None
-        if implicit_count is not None:
-            count = {"kind": "fixed", "value": implicit_count}
-            if "count" in p:
-                ctx.err(
-                    sf,
-                    pp + ("count",),
-                    f"{owner}: parameter {name} has type {alias}, which already has {implicit_count} elements",
-                    "no count on vector/matrix types (use the element type with count)",
-                )
-        elif "count" in p:
-            c = p["count"]
-            if isinstance(c, int):
-                count = {"kind": "fixed", "value": c}
-            elif c == "remaining":
-                count = {"kind": "remaining"}
-                if i != len(params) - 1:
-                    ctx.err(
-                        sf,
-                        pp + ("count",),
-                        f"{owner}: parameter {name} runs to the end of the field but is not the last parameter",
-                        "count: remaining only on the last parameter",
-                    )
-            else:
-                ref = names.get(c)
-                if ref is None:
-                    later = any(q["name"] == c for q in params[i + 1 :])
-                    why = "a later parameter" if later else "not a parameter"
-                    ctx.err(
-                        sf,
-                        pp + ("count",),
-                        f"{owner}: count of {name} refers to '{c}', which is {why}",
-                        "the name of an earlier integer parameter",
-                    )
-                elif not _is_integer(ref["type"]) or ref["count"] is not None:
-                    ctx.err(
-                        sf,
-                        pp + ("count",),
-                        f"{owner}: count of {name} refers to '{c}', which is not a single integer",
-                        "an earlier u8/u16/u32 parameter",
-                    )
-                count = {"kind": "param", "param": c}
+        count = _count(ctx, sf, pp, p, owner, alias, implicit_count, names, params[i + 1 :])
         if tref["kind"] == "string" and count is not None:
             ctx.err(sf, pp + ("count",), f"{owner}: arrays of strings are not supported", "a struct holding the string")
         if tref["kind"] != "string" and ("length" in p or "padding" in p or "justify" in p):
@@ -127,65 +89,8 @@ def build_params(
                 f"{owner}: parameter {name}: length/padding/justify apply only to type string",
                 "type: string",
             )
-        if tref["kind"] == "union":
-            sel = p.get("selector")
-            ut = ctx.types[tref["name"]]
-            if sel is None:
-                ctx.err(
-                    sf,
-                    pp,
-                    f"{owner}: union parameter {name} needs 'selector'",
-                    "selector: <earlier enum parameter>",
-                )
-            elif sel not in names:
-                ctx.err(
-                    sf,
-                    pp + ("selector",),
-                    f"{owner}: selector of {name} refers to '{sel}', which is not an earlier parameter",
-                    "the name of an earlier enum parameter",
-                )
-            elif names[sel]["type"]["kind"] != "enum":
-                ctx.err(
-                    sf,
-                    pp + ("selector",),
-                    f"{owner}: selector '{sel}' of union {name} is not an enum (it is {names[sel]['type']['kind']})",
-                    f"a parameter of enum type {ut['selector_enum']}",
-                )
-            elif names[sel]["type"]["name"] != ut["selector_enum"]:
-                ctx.err(
-                    sf,
-                    pp + ("selector",),
-                    f"{owner}: selector '{sel}' has type {names[sel]['type']['name']}, union {tref['name']} is selected by {ut['selector_enum']}",
-                    f"a parameter of enum type {ut['selector_enum']}",
-                )
-            tref = dict(tref, selector=sel)
-            if count is not None:
-                ctx.err(sf, pp + ("count",), f"{owner}: arrays of unions are not supported", "a single union")
-        elif "selector" in p:
-            ctx.err(
-                sf,
-                pp + ("selector",),
-                f"{owner}: parameter {name} is not a union; 'selector' does not apply",
-                "no selector",
-            )
-        pf = p.get("functions")
-        if pf is not None:
-            if functions is None:
-                ctx.err(
-                    sf,
-                    pp + ("functions",),
-                    f"{owner}: parameter {name} lists functions but the command has no function selector",
-                    "functions: on the command first",
-                )
-            else:
-                for fn in pf:
-                    if fn not in functions:
-                        ctx.err(
-                            sf,
-                            pp + ("functions",),
-                            f"{owner}: parameter {name} is marked for function '{fn}', which the command does not support",
-                            "a subset of the command's functions: " + ", ".join(functions),
-                        )
+        tref = _selector(ctx, sf, pp, p, owner, tref, count, names)
+        pf = _functions(ctx, sf, pp, p, owner, functions)
         optional = bool(p.get("optional")) or (functions is not None and pf is not None and set(pf) != set(functions))
         if functions is not None and pf is None:
             ctx.err(
@@ -209,7 +114,7 @@ def build_params(
             )
         max_count = None
         if count is not None and count["kind"] != "fixed":
-            max_count = p.get("max_count") or -1  # default: what fits beside the others (below)
+            max_count = p.get("max_count") or -1  # default: what fits beside the others (fill_capacities)
         elif "max_count" in p:
             ctx.err(
                 sf,
@@ -236,6 +141,139 @@ def build_params(
     fill_capacities(out, max_data, selector=functions is not None)
     fill_offsets(out)
     return out
+
+
+def _count(
+    ctx: Context,
+    sf: SpecFile,
+    pp: tuple,
+    p: dict,
+    owner: str,
+    alias: str | None,
+    implicit_count: int | None,
+    names: dict[str, dict],
+    after: list[dict],
+) -> dict | None:
+    """The parameter's count (null, fixed, param or remaining; docs/ir.md), checked against the
+    parameters before it (`names`) and after it."""
+    name = p["name"]
+    count = None
+    if implicit_count is not None:
+        count = {"kind": "fixed", "value": implicit_count}
+        if "count" in p:
+            ctx.err(
+                sf,
+                pp + ("count",),
+                f"{owner}: parameter {name} has type {alias}, which already has {implicit_count} elements",
+                "no count on vector/matrix types (use the element type with count)",
+            )
+    elif "count" in p:
+        c = p["count"]
+        if isinstance(c, int):
+            count = {"kind": "fixed", "value": c}
+        elif c == "remaining":
+            count = {"kind": "remaining"}
+            if after:
+                ctx.err(
+                    sf,
+                    pp + ("count",),
+                    f"{owner}: parameter {name} runs to the end of the field but is not the last parameter",
+                    "count: remaining only on the last parameter",
+                )
+        else:
+            ref = names.get(c)
+            if ref is None:
+                later = any(q["name"] == c for q in after)
+                why = "a later parameter" if later else "not a parameter"
+                ctx.err(
+                    sf,
+                    pp + ("count",),
+                    f"{owner}: count of {name} refers to '{c}', which is {why}",
+                    "the name of an earlier integer parameter",
+                )
+            elif not _is_integer(ref["type"]) or ref["count"] is not None:
+                ctx.err(
+                    sf,
+                    pp + ("count",),
+                    f"{owner}: count of {name} refers to '{c}', which is not a single integer",
+                    "an earlier u8/u16/u32 parameter",
+                )
+            count = {"kind": "param", "param": c}
+    return count
+
+
+def _selector(
+    ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, tref: dict, count: dict | None, names: dict[str, dict]
+) -> dict:
+    """A union parameter's type reference with its selector (an earlier parameter of the union's
+    enum); any other parameter must not have one."""
+    name = p["name"]
+    if tref["kind"] == "union":
+        sel = p.get("selector")
+        ut = ctx.types[tref["name"]]
+        if sel is None:
+            ctx.err(
+                sf,
+                pp,
+                f"{owner}: union parameter {name} needs 'selector'",
+                "selector: <earlier enum parameter>",
+            )
+        elif sel not in names:
+            ctx.err(
+                sf,
+                pp + ("selector",),
+                f"{owner}: selector of {name} refers to '{sel}', which is not an earlier parameter",
+                "the name of an earlier enum parameter",
+            )
+        elif names[sel]["type"]["kind"] != "enum":
+            ctx.err(
+                sf,
+                pp + ("selector",),
+                f"{owner}: selector '{sel}' of union {name} is not an enum (it is {names[sel]['type']['kind']})",
+                f"a parameter of enum type {ut['selector_enum']}",
+            )
+        elif names[sel]["type"]["name"] != ut["selector_enum"]:
+            ctx.err(
+                sf,
+                pp + ("selector",),
+                f"{owner}: selector '{sel}' has type {names[sel]['type']['name']}, union {tref['name']} is selected by {ut['selector_enum']}",
+                f"a parameter of enum type {ut['selector_enum']}",
+            )
+        tref = dict(tref, selector=sel)
+        if count is not None:
+            ctx.err(sf, pp + ("count",), f"{owner}: arrays of unions are not supported", "a single union")
+    elif "selector" in p:
+        ctx.err(
+            sf,
+            pp + ("selector",),
+            f"{owner}: parameter {name} is not a union; 'selector' does not apply",
+            "no selector",
+        )
+    return tref
+
+
+def _functions(ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, functions: list[str] | None) -> list | None:
+    """The functions a command parameter is sent for: a subset of its command's."""
+    name = p["name"]
+    pf = p.get("functions")
+    if pf is not None:
+        if functions is None:
+            ctx.err(
+                sf,
+                pp + ("functions",),
+                f"{owner}: parameter {name} lists functions but the command has no function selector",
+                "functions: on the command first",
+            )
+        else:
+            for fn in pf:
+                if fn not in functions:
+                    ctx.err(
+                        sf,
+                        pp + ("functions",),
+                        f"{owner}: parameter {name} is marked for function '{fn}', which the command does not support",
+                        "a subset of the command's functions: " + ", ".join(functions),
+                    )
+    return pf
 
 
 def _is_integer(tref: dict) -> bool:

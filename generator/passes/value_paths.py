@@ -3,7 +3,7 @@ buffers and its JSON nesting limit from ir.json alone.
 
 A value path names one value inside a field's data: a parameter name, then for an array an
 index, then for a struct (or the struct a union selects) a member name, and so on, written
-`name[index].member` (docs/conformance.md). A layout with a function selector has the path
+`name[index].member` (docs/conformance.md section 3). A layout with a function selector has the path
 `function`. Over every layout (set fields and reserved fields) and every struct type:
 
 - `depth`: the most steps in a path, a name or an index being one step each (at least 1);

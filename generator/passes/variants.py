@@ -75,6 +75,8 @@ def _field_variants(ctx: Context, field: dict) -> None:
 
 
 def _layout(ctx: Context, sf: SpecFile, path: tuple, src: dict, set_name: str, field: dict, device: str | None) -> dict:
+    """One layout of a field (docs/ir.md "variant") from src: the field's spec entry, or one entry
+    of its `variants` for device."""
     owner = f"{set_name}.{field['name']}" + (f" ({device})" if device else "")
     functions = src.get("functions")
     if functions is not None:
@@ -110,6 +112,43 @@ def _layout(ctx: Context, sf: SpecFile, path: tuple, src: dict, set_name: str, f
             params = build_params(ctx, lsf, lpath + ("params",), t["params"], functions, f"field layout {layout_name}")
     else:
         params = build_params(ctx, sf, path + ("params",), src.get("params", []), functions, owner)
+    responses = _responses(ctx, sf, path, src, owner, field, functions, params)
+    ack = _ack_suppression(ctx, sf, path, src, owner, functions, params)
+    sources = ctx.check_sources(sf, path + ("sources",), src.get("sources", []))
+    if device is not None:
+        devs = ctx.devices_of(sources)
+        if devs and device not in devs:
+            ctx.err(
+                sf,
+                path + ("device",),
+                f"{owner}: variant for device '{device}' cites only manuals of {', '.join(devs)}",
+                "sources from that device's manual",
+            )
+    return {
+        "device": device,
+        "devices": [device] if device else ctx.devices_of(sources),
+        "sources": sources,
+        "notes": src.get("notes", []) if device else [],
+        "functions": functions,
+        "responses": responses,
+        "ack_suppressed_by": ack,
+        "params": params,
+        "size": layout_size(params, selector=functions is not None),
+        "layout": layout_name,
+    }
+
+
+def _responses(
+    ctx: Context,
+    sf: SpecFile,
+    path: tuple,
+    src: dict,
+    owner: str,
+    field: dict,
+    functions: list[str] | None,
+    params: list[dict],
+) -> list[dict]:
+    """A command layout's responses with their conditions checked (linked by link_responses)."""
     responses = []
     if "response" in src and "responses" in src:
         ctx.err(sf, path + ("response",), f"{owner}: both 'response' and 'responses'", "one of them")
@@ -149,6 +188,14 @@ def _layout(ctx: Context, sf: SpecFile, path: tuple, src: dict, set_name: str, f
         responses.append({"id": r["id"], "when": when, "_loc": rp})
     if responses and field["role"] != "command":
         ctx.err(sf, path + ("response",), f"{owner}: only commands have responses", "no response on responses and data")
+    return responses
+
+
+def _ack_suppression(
+    ctx: Context, sf: SpecFile, path: tuple, src: dict, owner: str, functions: list[str] | None, params: list[dict]
+) -> dict | None:
+    """What suppresses a command's ack (a function or a parameter value), checked; an enum value
+    name becomes its integer."""
     ack = src.get("ack_suppressed_by")
     if ack:
         if "function" in ack and (functions is None or ack["function"] not in functions):
@@ -182,25 +229,4 @@ def _layout(ctx: Context, sf: SpecFile, path: tuple, src: dict, set_name: str, f
                     )
                 else:
                     ack["value"] = names[ack["value"]]
-    sources = ctx.check_sources(sf, path + ("sources",), src.get("sources", []))
-    if device is not None:
-        devs = ctx.devices_of(sources)
-        if devs and device not in devs:
-            ctx.err(
-                sf,
-                path + ("device",),
-                f"{owner}: variant for device '{device}' cites only manuals of {', '.join(devs)}",
-                "sources from that device's manual",
-            )
-    return {
-        "device": device,
-        "devices": [device] if device else ctx.devices_of(sources),
-        "sources": sources,
-        "notes": src.get("notes", []) if device else [],
-        "functions": functions,
-        "responses": responses,
-        "ack_suppressed_by": ack,
-        "params": params,
-        "size": layout_size(params, selector=functions is not None),
-        "layout": layout_name,
-    }
+    return ack
