@@ -32,6 +32,15 @@ def run(ctx: Context) -> None:
     }
 
 
+def entries(protocol: dict, set_id: int) -> list[dict]:
+    """The IR `lookup` entries for packets of set set_id, whether a spec file defines the set or
+    not (for readers of a finished IR; no search)."""
+    for t in protocol["lookup"]["sets"]:
+        if t["set"] == set_id:
+            return t["fields"]
+    return protocol["lookup"]["other_sets"].get(set_kind(protocol, set_id), [])
+
+
 def table(protocol: dict, set_id: int) -> list[dict]:
     """The lookup entries of set set_id by descriptor: `source` says where the field is defined
     (`own`: the set itself; `reserved`: a reserved field of the set's kind; `shared`: the shared

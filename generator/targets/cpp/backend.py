@@ -24,6 +24,8 @@ from __future__ import annotations
 import re
 
 from generator.examples import example_context
+from generator.passes.lookup_order import entries as lookup_entries
+from generator.passes.lookup_order import set_kind
 from generator.render import environment
 
 OUTPUT_DIRS = ["cpp"]
@@ -544,14 +546,12 @@ class _Proto:
         by_owner.update({("reserved", r["kind"]): r["cases"] for r in reserved})
         by_owner = {k: {c["descriptor"]: c for c in v} for k, v in by_owner.items()}
 
-        lookup = self.p["lookup"]
-        tables = {t["set"]: t["fields"] for t in lookup["sets"]}
+        defined = {st["id"] for st in sets}
 
         def row(set_id: int) -> list[int]:
-            kind = next((k for k, r in self.p["set_kinds"].items() if r["first"] <= set_id <= r["last"]), None)
-            entries = tables.get(set_id, lookup["other_sets"].get(kind, []))
-            found = {e["descriptor"]: e for e in entries}
-            miss = 1 if set_id in tables else 0
+            kind = set_kind(self.p, set_id)
+            found = {e["descriptor"]: e for e in lookup_entries(self.p, set_id)}
+            miss = 1 if set_id in defined else 0
             out = []
             for d in range(256):
                 if d not in found:

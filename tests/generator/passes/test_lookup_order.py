@@ -10,7 +10,7 @@ from pathlib import Path
 
 from tiny_spec import build, command_set, data_set
 
-from generator.passes.lookup_order import resolve, set_kind
+from generator.passes.lookup_order import entries, resolve, set_kind
 
 ROOT = Path(__file__).resolve().parents[3]
 
@@ -111,6 +111,11 @@ def test_the_ir_lookup_holds_every_set_and_the_undefined_ones_by_kind(tmp_path):
         "command": [{"descriptor": 0xF1, "name": "ack", "source": "reserved", "set": None}],
         "data": [{"descriptor": 0xD3, "name": "time", "source": "shared", "set": 0xFF}],
     }
+    # Readers of the finished IR: a defined set, an undefined one of a kind, an id in no kind.
+    protocol = {"set_kinds": {"command": {"first": 0x01, "last": 0x7F}}, "lookup": lookup}
+    assert entries(protocol, 0x01) == lookup["sets"][0]["fields"]
+    assert entries(protocol, 0x42) == lookup["other_sets"]["command"]
+    assert entries(protocol, 0x90) == []
 
 
 def test_the_exported_lookup_agrees_with_resolve_on_mip() -> None:
