@@ -5,7 +5,7 @@ The facts live next to their entries (spec notes, vector `erratum:`); this page 
 
 from __future__ import annotations
 
-from .ir import lint_stated_lengths
+from .stated_lengths import lint_stated_lengths
 
 KIND_TITLES = {
     "erratum": "Erratum",

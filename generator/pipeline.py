@@ -6,10 +6,10 @@ from pathlib import Path
 
 from .errata import render_errata
 from .export import ir_to_json
-from .ir import lint_stated_lengths
 from .output import write_file, write_tree
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .spec import ROOT, load_spec
+from .stated_lengths import lint_stated_lengths
 from .targets import TARGETS
 from .vectors import load_corpus, load_vectors
 

@@ -9,7 +9,8 @@ from pathlib import Path
 import jsonschema
 
 from .diagnostics import SpecError, SpecErrors
-from .ir import Builder, SpecFile
+from .ir import IR_VERSION, build_protocol
+from .passes.context import SpecFile
 from .schema_check import schema_errors
 from .yamlpos import load
 
@@ -97,11 +98,10 @@ def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
                 )
             ]
         )
-    builder = Builder(protocol_file, set_files, type_files)
-    ir = builder.build()
-    if builder.errors:
-        raise SpecErrors(builder.errors)
-    return ir["protocols"][0]
+    protocol, build_errors = build_protocol(protocol_file, set_files, type_files)
+    if build_errors:
+        raise SpecErrors(build_errors)
+    return protocol
 
 
 def load_spec(spec_dir: Path | None = None, root: Path = ROOT) -> dict:
@@ -115,6 +115,4 @@ def load_spec(spec_dir: Path | None = None, root: Path = ROOT) -> dict:
             errors.extend(e.errors)
     if errors:
         raise SpecErrors(errors)
-    from .ir import IR_VERSION
-
     return {"ir_version": IR_VERSION, "protocols": protocols}

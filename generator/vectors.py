@@ -19,7 +19,9 @@ import jsonschema
 
 from .canonical import float_text, string_text
 from .diagnostics import SpecError, SpecErrors
-from .ir import SpecFile
+from .passes.context import SpecFile
+from .passes.lookup_order import entries as lookup_entries
+from .passes.lookup_order import set_kind
 from .primitives import PRIMITIVES, int_range
 from .schema_check import schema_errors
 from .yamlpos import load
@@ -330,24 +332,16 @@ def _find_field(ctx: _Ctx, set_id: int, desc: int) -> dict | None:
 
 def resolve_field(proto: dict, set_id: int, desc: int) -> tuple[dict | None, dict] | None:
     """(set, field) that decodes descriptor desc in a packet of set set_id, by the dispatch rule of
-    docs/conformance.md §2: the set's own field, else a reserved field (set None), else in a data
-    set a field of the shared set. None when nothing matches."""
-    sets = {s["id"]: s for s in proto["sets"]}
-    s = sets.get(set_id)
-    if s:
-        for f in s["fields"]:
-            if f["id"] == desc:
-                return s, f
-    kind = next((k for k, r in proto["set_kinds"].items() if r["first"] <= set_id <= r["last"]), None)
-    for r in proto["reserved_fields"]:
-        if r["applies_to"] == kind and r["id"] == desc:
-            return None, r
-    shared = proto.get("shared_data")
-    if kind == "data" and shared and shared["set"] in sets:
-        for f in sets[shared["set"]]["fields"]:
-            if f["id"] == desc:
-                return sets[shared["set"]], f
-    return None
+    docs/conformance.md §2 as the IR's `lookup` resolves it: the set's own field, else a reserved
+    field (set None), else in a data set a field of the shared set. None when nothing matches."""
+    e = next((e for e in lookup_entries(proto, set_id) if e["descriptor"] == desc), None)
+    if e is None:
+        return None
+    if e["source"] == "reserved":
+        kind = set_kind(proto, set_id)
+        return None, next(r for r in proto["reserved_fields"] if r["applies_to"] == kind and r["id"] == desc)
+    s = next(s for s in proto["sets"] if s["id"] == e["set"])
+    return s, next(f for f in s["fields"] if f["id"] == desc)
 
 
 def _json_str(s: str) -> str:

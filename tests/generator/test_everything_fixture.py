@@ -2,8 +2,8 @@
 
 from pathlib import Path
 
-from generator.ir import lint_stated_lengths
 from generator.spec import load_spec
+from generator.stated_lengths import lint_stated_lengths
 
 FIXTURE = Path(__file__).parent / "fixtures" / "everything"
 

@@ -11,7 +11,6 @@ import re
 
 from generator import model
 from generator.examples import example_context
-from generator.lookup import resolve
 from generator.primitives import PRIMITIVES
 from generator.render import copy_runtime, environment
 
@@ -185,7 +184,8 @@ class _Package:
         self.shared_set = shared["set"] if shared and any(s["id"] == shared["set"] for s in proto["sets"]) else None
         self.data_kind = next((k for k in self.set_kinds if k["name"] == "data"), None)
         self._add_lookup_tables()
-        self.path_depth = max([self._layout_depth(v) for v in self._all_ir_layouts()] + [1])
+        # Path elements are names; an index rides on its array's element (IR value_paths).
+        self.path_depth = proto["value_paths"]["names"]
         longest = max([len(n) for n in self._all_param_names()] + [8])
         self.error_message_max = self.path_depth * (longest + 24) + 160
         self.vectors = [self._vector_view(c) for c in vectors if c["protocol"] == proto["name"]]
@@ -456,20 +456,18 @@ class _Package:
         }
 
     def _add_lookup_tables(self) -> None:
-        """Each set view's `lookup`: its descriptor -> field table in the C dispatch, as
-        generator.lookup resolves it (the set's fields, reserved fields of its kind, shared data
-        fields), so that a reserved or shared field (an ack/nack, a timestamp in every packet) is
-        one table lookup like any other. `source` says which of the three an entry is."""
+        """Each set view's `lookup`: its descriptor -> field table in the C dispatch, as the IR's
+        `lookup` resolves it (the set's fields, reserved fields of its kind, shared data fields),
+        so that a reserved or shared field (an ack/nack, a timestamp in every packet) is one table
+        lookup like any other. `source` says which of the three an entry is."""
         views = {(s["id"], f["descriptor"]): f for s in self.sets for f in s["fields"]}
         views.update({(("reserved", r["applies_to"]), r["descriptor"]): r for r in self.reserved})
+        tables = {t["set"]: t["fields"] for t in self.proto["lookup"]["sets"]}
         for s in self.sets:
             lookup = []
-            for d, (owner, f) in sorted(resolve(self.proto, s["id"]).items()):
-                if owner is None:
-                    view, source = views[(("reserved", f["applies_to"]), d)], "reserved"
-                else:
-                    view, source = views[(owner["id"], d)], "own" if owner["id"] == s["id"] else "shared"
-                lookup.append(dict(view, source=source))
+            for e in tables[s["id"]]:
+                key = (("reserved", s["kind"]) if e["source"] == "reserved" else e["set"], e["descriptor"])
+                lookup.append(dict(views[key], source=e["source"]))
             s["lookup"] = lookup
 
     def _all_ir_layouts(self):
@@ -487,20 +485,6 @@ class _Package:
         for t in self.types.values():
             for q in t.get("params", []):
                 yield q["name"]
-
-    def _depth_params(self, params: list[dict]) -> int:
-        return max([1 + self._depth_type(q["type"]) for q in params] + [0])
-
-    def _depth_type(self, tref: dict) -> int:
-        t = self.types.get(tref.get("name", ""))
-        if tref["kind"] == "struct" and t:
-            return self._depth_params(t["params"])
-        if tref["kind"] == "union" and t:
-            return max([self._depth_params(self.types[m["type"]]["params"]) for m in t["members"] if m["type"]] + [0])
-        return 0
-
-    def _layout_depth(self, v: dict) -> int:
-        return max(self._depth_params(v["params"]), 1 if v["functions"] is not None else 0)
 
     # -------------------------------------------------------------- vectors
     def _vector_view(self, case: dict) -> dict:

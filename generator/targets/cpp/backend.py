@@ -25,7 +25,8 @@ import re
 
 from generator import model
 from generator.examples import example_context
-from generator.lookup import resolve
+from generator.passes.lookup_order import entries as lookup_entries
+from generator.passes.lookup_order import set_kind
 from generator.render import environment
 
 OUTPUT_DIRS = ["cpp"]
@@ -430,7 +431,7 @@ class _Proto:
     def lookup_table(self, sets: list[dict], reserved: list[dict]) -> dict:
         """The (set, descriptor) -> case table of lookup.hpp: the answers of the search order of
         docs/conformance.md section 2 (set fields, reserved fields of the set's kind, shared data
-        fields) as generator.lookup resolves it. Case 0 is an unknown set, 1 an unknown descriptor,
+        fields) as the IR's `lookup` resolves it. Case 0 is an unknown set, 1 an unknown descriptor,
         2.. a field."""
         cases: list[list[str]] = []
         index: dict[tuple, int] = {}
@@ -443,21 +444,24 @@ class _Proto:
             return index[key]
 
         # Each field's case: a set's cases, the reserved cases of each kind (names are unique
-        # within those lists), found by where generator.lookup resolves (set, descriptor) to.
+        # within those lists), found by where the IR's `lookup` resolves (set, descriptor) to.
         by_owner: dict[tuple, dict] = {("set", st["id"]): st["cases"] for st in sets}
         by_owner.update({("reserved", r["kind"]): r["cases"] for r in reserved})
         by_owner = {k: {c["descriptor"]: c for c in v} for k, v in by_owner.items()}
 
+        defined = {st["id"] for st in sets}
+
         def row(set_id: int) -> list[int]:
-            found = resolve(self.p, set_id)
-            miss = 1 if any(st["id"] == set_id for st in sets) else 0
+            kind = set_kind(self.p, set_id)
+            found = {e["descriptor"]: e for e in lookup_entries(self.p, set_id)}
+            miss = 1 if set_id in defined else 0
             out = []
             for d in range(256):
                 if d not in found:
                     out.append(miss)
                     continue
-                owner, f = found[d]
-                key = ("set", owner["id"]) if owner else ("reserved", ident(f["applies_to"]))
+                e = found[d]
+                key = ("reserved", ident(kind)) if e["source"] == "reserved" else ("set", e["set"])
                 out.append(case(by_owner[key][d]))
             return out
 
@@ -481,60 +485,11 @@ class _Proto:
         }
 
     # ------------------------------------------------------------ limits
-    def _value_path(self, tref: dict, seen: tuple = ()) -> int:
-        if tref["kind"] == "struct" and tref["name"] not in seen:
-            return 1 + self._params_path(self.types[tref["name"]]["params"], seen + (tref["name"],))
-        if tref["kind"] == "union" and tref["name"] not in seen:
-            u = self.types[tref["name"]]
-            return max(
-                [
-                    1 + self._params_path(self.types[m["type"]]["params"], seen + (tref["name"],))
-                    for m in u["members"]
-                    if m["type"]
-                ]
-                or [0]
-            )
-        return 0
-
-    def _params_path(self, params: list[dict], seen: tuple = ()) -> int:
-        best = 0
-        for q in params:
-            n = len(q["name"])
-            c = q["count"]
-            if c is not None:
-                top = c["value"] if c["kind"] == "fixed" else (q["max_count"] or 0) + 1
-                n += 2 + len(str(max(top, 1)))
-            best = max(best, n + self._value_path(q["type"], seen))
-        return best
-
-    def _value_depth(self, tref: dict, counted: bool, seen: tuple = ()) -> int:
-        d = 1 if counted else 0
-        if tref["kind"] == "struct" and tref["name"] not in seen:
-            d += 1 + max(
-                [
-                    self._value_depth(q["type"], q["count"] is not None, seen + (tref["name"],))
-                    for q in self.types[tref["name"]]["params"]
-                ]
-                or [0]
-            )
-        elif tref["kind"] == "union" and tref["name"] not in seen:
-            u = self.types[tref["name"]]
-            d += 1 + max(
-                [
-                    self._value_depth({"kind": "struct", "name": m["type"]}, False, seen + (tref["name"],)) - 1
-                    for m in u["members"]
-                    if m["type"]
-                ]
-                or [0]
-            )
-        return d
-
     def limits(self) -> dict:
-        layouts = [v for s in self.p["sets"] for f in s["fields"] for v in f["variants"]]
-        layouts += [v for f in self.p["reserved_fields"] for v in f["variants"]]
-        path = max([len("function")] + [self._params_path(v["params"]) for v in layouts])
-        depth = max([0] + [self._value_depth(q["type"], q["count"] is not None) for v in layouts for q in v["params"]])
-        return {"max_error_path": path + 8, "max_json_depth": depth + 8}
+        """Buffer limits from the IR's value_paths, with slack: the error path text and the JSON
+        nesting (every step of a path but its last opens an object or array)."""
+        vp = self.p["value_paths"]
+        return {"max_error_path": vp["length"] + 8, "max_json_depth": vp["depth"] - 1 + 8}
 
     # ------------------------------------------------------------ framing
     def framing(self) -> dict:

@@ -16,7 +16,6 @@ import struct
 from generator import model
 from generator.canonical import float_text, string_text
 from generator.examples import example_context
-from generator.lookup import resolve
 from generator.primitives import PRIMITIVES
 from generator.render import ToolError, copy_runtime, environment
 
@@ -366,14 +365,16 @@ class _Protocol:
         }
 
     def set_decoders(self, s: dict) -> list[dict]:
-        """The entries of set s's decoder table: every descriptor that generator.lookup resolves
+        """The entries of set s's decoder table: every descriptor that the IR's `lookup` resolves
         to a field of a set (its own, or a shared data field it does not define). Descriptors
         that resolve to a reserved field stay out: decode_other_field decodes those."""
-        out = []
-        for d, (owner, f) in sorted(resolve(self.proto, s["id"]).items()):
-            if owner is not None:
-                out.append({"descriptor": _hex(d), "fn": f"{self.set_module(owner)}_{f['name']}"})
-        return out
+        sets = {x["id"]: x for x in self.proto["sets"]}
+        table = next(t["fields"] for t in self.proto["lookup"]["sets"] if t["set"] == s["id"])
+        return [
+            {"descriptor": _hex(e["descriptor"]), "fn": f"{self.set_module(sets[e['set']])}_{e['name']}"}
+            for e in table
+            if e["source"] != "reserved"
+        ]
 
     def reserved_model(self) -> list[dict]:
         out = []
@@ -394,39 +395,6 @@ class _Protocol:
                 }
             )
         return out
-
-    # ---------------------------------------------------------------- path depth
-    def path_depth(self) -> int:
-        memo: dict[str, int] = {}
-
-        def type_depth(tref: dict) -> int:
-            kind = tref["kind"]
-            if kind == "struct":
-                n = tref["name"]
-                if n not in memo:
-                    memo[n] = 0
-                    memo[n] = max([param_depth(q) for q in self.types[n]["params"]] or [0])
-                return memo[n]
-            if kind == "union":
-                u = self.types[tref["name"]]
-                return max(
-                    [type_depth({"kind": "struct", "name": m["type"]}) for m in u["members"] if m["type"]] or [0]
-                )
-            return 0
-
-        def param_depth(q: dict) -> int:
-            return 1 + (1 if q["count"] is not None else 0) + type_depth(q["type"])
-
-        depth = 1
-        layouts = [v for s in self.proto["sets"] for f in s["fields"] for v in f["variants"]]
-        layouts += [v for r in self.proto["reserved_fields"] for v in r["variants"]]
-        for lay in layouts:
-            for q in lay["params"]:
-                depth = max(depth, param_depth(q))
-        for t in self.proto["types"]:
-            if t["kind"] == "struct":
-                depth = max(depth, type_depth({"kind": "struct", "name": t["name"]}))
-        return depth
 
     # ---------------------------------------------------------------- context
     def context(self) -> dict:
@@ -480,7 +448,7 @@ class _Protocol:
                 "field_header": ", ".join(f["field_header"]),
                 "byte_order": proto["byte_order"],
             },
-            "path_depth": self.path_depth(),
+            "path_depth": self.proto["value_paths"]["depth"],  # a name or an index: one step each
             "kinds": kinds,
             "devices": devices,
             "types": types,

@@ -13,6 +13,10 @@ from setuptools import Extension, setup
 
 extensions = []
 if os.environ.get("DEMOCODEC_NO_EXTENSION", "") in ("", "0"):
-    extensions.append(Extension("democodec._speedups", ["democodec/_speedups.c"], optional=True))
+    # _protocol.h (the protocol's constants, generated) is #included by _speedups.c: listed so that
+    # a change rebuilds the extension and the sdist carries it.
+    extensions.append(
+        Extension("democodec._speedups", ["democodec/_speedups.c"], depends=["democodec/_protocol.h"], optional=True)
+    )
 
 setup(ext_modules=extensions)

@@ -8,8 +8,8 @@
  *     strings, enums, bitfields) built here; every other layout, every error and every NaN goes
  *     back to the pure-Python decoder, so messages and values are those of the pure path.
  * The objects it returns are instances of the package's own classes (RawPacket, Skip, Packet,
- * DecodedField and the generated dataclasses), equal to what the pure path returns. The framing
- * constants below are rendered from the IR like those of framing.py.
+ * DecodedField and the generated dataclasses), equal to what the pure path returns. The protocol's
+ * constants come from _protocol.h, generated from the IR like _protocol.py.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -23,29 +23,7 @@ static inline PyObject *Py_NewRef(PyObject *o) {
 }
 #endif
 
-#define SYNC_LEN 2
-static const unsigned char SYNC[SYNC_LEN] = {
-    0xa5,
-    0xa5,
-};
-#define HEADER_SIZE 4
-#define SET_OFFSET 2
-#define LENGTH_OFFSET 3
-#define FIELD_HEADER_SIZE 2
-#define FIELD_LENGTH_OFFSET 1
-#define FIELD_DESCRIPTOR_OFFSET 0
-#define FIELD_LENGTH_ADJUST 0
-#define MAX_PAYLOAD 255
-#define CHECKSUM_SIZE 2
-#define CHECKSUM_SUM1_FIRST 1
-#define BIG_ENDIAN_WIRE 1
-
-/* Length byte - data length of a field (framing.field_length_adjust). */
-static int field_length_adjust(int set_id, int descriptor) {
-    (void)set_id;
-    (void)descriptor;
-    return FIELD_LENGTH_ADJUST;
-}
+#include "_protocol.h"
 
 /* ------------------------------------------------------------------------------ base types */
 /* Base classes of RawPacket and Skip (offset, data), Packet (offset, set, fields) and
@@ -331,7 +309,7 @@ static void gc_resume(int was_enabled) {
 static PyObject *scan(PyObject *self, PyObject *args) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     PyObject *buf;
@@ -668,7 +646,7 @@ static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject 
 static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     static char *names[] = {"packet", "offset", "device", NULL};
@@ -708,7 +686,7 @@ static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs)
 static PyObject *decode_all(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg); /* a private immutable copy (no copy for bytes) */
@@ -1018,7 +996,7 @@ static void columns_free(Columns *c) {
 static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "democodec._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg);
@@ -1092,8 +1070,8 @@ static PyMethodDef methods[] = {
 
 static struct PyModuleDef module = {
     PyModuleDef_HEAD_INIT,
-    "democodec._speedups",
-    "C accelerator of democodec (optional).",
+    PROTOCOL_PACKAGE "._speedups",
+    "C accelerator of " PROTOCOL_PACKAGE " (optional).",
     -1,
     methods,
     NULL,
@@ -1104,9 +1082,9 @@ static struct PyModuleDef module = {
 
 PyMODINIT_FUNC PyInit__speedups(void) {
     PyTypeObject *types[3] = {&EventBase, &PacketBase, &DecodedFieldBase};
-    if (ready_base(&EventBase, "democodec._speedups.EventBase", event_members) < 0 ||
-        ready_base(&PacketBase, "democodec._speedups.PacketBase", packet_members) < 0 ||
-        ready_base(&DecodedFieldBase, "democodec._speedups.DecodedFieldBase", decoded_members) < 0) {
+    if (ready_base(&EventBase, PROTOCOL_PACKAGE "._speedups.EventBase", event_members) < 0 ||
+        ready_base(&PacketBase, PROTOCOL_PACKAGE "._speedups.PacketBase", packet_members) < 0 ||
+        ready_base(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase", decoded_members) < 0) {
         return NULL;
     }
     empty_tuple = PyTuple_New(0);

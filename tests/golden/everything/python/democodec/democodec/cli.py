@@ -14,12 +14,12 @@ import sys
 from typing import BinaryIO, List, Optional
 
 from . import registry
+from ._protocol import PACKAGE as PROG
 from .codec import EncodeError
 from .framing import Parser, RawPacket
 from .packets import encode_line, event_line
 from .samples import SampleTracker
 
-PROG = "democodec"
 USAGE = f"usage: python -m {PROG} decode [--device ID] [--samples] [FILE|-] | python -m {PROG} encode"
 CHUNK = 1 << 16
 

@@ -20,6 +20,7 @@ import struct
 from operator import attrgetter
 from typing import Any, Callable, Dict, List, Optional, Tuple
 
+from ._protocol import BYTE_ORDER
 from .canonical import (
     NaN,
     f32_bits,
@@ -30,8 +31,6 @@ from .canonical import (
     is_int,
     string_text,
 )
-
-BYTE_ORDER = ">"
 
 _RAW32 = struct.Struct(BYTE_ORDER + "I")
 _RAW64 = struct.Struct(BYTE_ORDER + "Q")

@@ -1,7 +1,7 @@
 """Framing of the Demo protocol with every spec feature: constants, Fletcher-16, packet builder, stream parser, field splitter.
 
-The constants are rendered from the IR (protocols[].framing); the code below them is the same for
-every protocol and follows docs/conformance.md sections 1 and 2.
+The constants are rendered from the IR (protocols[].framing) into _protocol.py; the code below is
+the same for every protocol and follows docs/conformance.md sections 1 and 2.
 """
 
 from __future__ import annotations
@@ -10,11 +10,32 @@ import os
 from operator import mul
 from typing import Any, Iterator, List, Tuple, Union
 
+# The protocol's constants (generated). framing.MAX_PACKET and the others the code below does not
+# use are part of the package's API: re-exported.
+from ._protocol import (  # noqa: F401
+    CHECKSUM_SIZE,
+    CHECKSUM_SUM1_FIRST,
+    FIELD_DESCRIPTOR_OFFSET,
+    FIELD_HEADER_SIZE,
+    FIELD_LENGTH_ADJUST,
+    FIELD_LENGTH_COUNTS_HEADER,
+    FIELD_LENGTH_OFFSET,
+    HEADER_SIZE,
+    IRREGULAR_LENGTHS,
+    LENGTH_OFFSET,
+    MAX_FIELD_DATA,
+    MAX_PACKET,
+    MAX_PAYLOAD,
+    PACKAGE,
+    SET_OFFSET,
+    SYNC,
+)
+
 # The optional C accelerator (_speedups.c, built by setup.py when a compiler is there): the parser
 # loop and packet decoding run in C with the same results. DEMOCODEC_PURE=1 in the
 # environment forces the pure-Python code (tests run both ways).
 _speedups: Any = None
-if os.environ.get("DEMOCODEC_PURE", "") in ("", "0"):
+if os.environ.get(PACKAGE.upper() + "_PURE", "") in ("", "0"):
     try:
         from . import _speedups  # type: ignore[attr-defined, no-redef]
     except ImportError:
@@ -26,25 +47,6 @@ if _speedups is not None:
 else:
     _EventBase = object
     _EVENT_SLOTS = ("offset", "data")
-
-# ----------------------------------------------------------------------------------- constants
-SYNC = b"\xa5\xa5"
-HEADER_SIZE = 4  # sync bytes + set + payload length
-SET_OFFSET = 2
-LENGTH_OFFSET = 3
-FIELD_HEADER_SIZE = 2
-FIELD_LENGTH_OFFSET = 1
-FIELD_DESCRIPTOR_OFFSET = 0
-FIELD_LENGTH_COUNTS_HEADER = False
-FIELD_LENGTH_ADJUST = 0  # field length byte - data length
-MAX_PAYLOAD = 255
-MAX_PACKET = 261
-MAX_FIELD_DATA = 253
-CHECKSUM_SIZE = 2
-CHECKSUM_SUM1_FIRST = True  # Fletcher-16 bytes on the wire: sum1 then sum2 when True
-# Fields whose length byte differs from the rule above, (set, descriptor) -> extra adjustment
-# (the spec's length_byte_adjust).
-IRREGULAR_LENGTHS = {}
 
 
 def field_length_adjust(set_id: int, descriptor: int) -> int:

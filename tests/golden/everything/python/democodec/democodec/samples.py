@@ -16,21 +16,9 @@ from __future__ import annotations
 
 from typing import Any, Dict, List, Optional, Tuple
 
+from ._protocol import DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS  # noqa: F401 (samples.MAX_KEY: API)
 from .framing import CHECKSUM_SIZE, FIELD_HEADER_SIZE, HEADER_SIZE, SET_OFFSET, FieldBytes, RawPacket, iter_fields
 from .packets import Entry, Packet, decode_packet
-
-# The rule exported as `samples` in generated/ir.json (first_shared 0x100: no shared descriptors).
-DATA_SETS = frozenset(
-    (
-        0x90,
-        0x91,
-        0x92,
-    )
-)
-FIRST_SHARED = 0xD0
-# Shared descriptor -> data size of the fields whose value identifies a sample.
-TIMESTAMPS: Dict[int, int] = {}
-MAX_KEY = 0
 
 
 def shared_prefix(set_id: int, payload: Any) -> Tuple[int, int]:

@@ -1,0 +1,280 @@
+"""Parameter lists (of structs, reserved fields, field layouts): each parameter's type
+reference, count, union selector, functions and optionality checked, with its size, the capacity
+of a counted array and its fixed offset. Not a pass: the passes that build types and layouts
+call build_params."""
+
+from __future__ import annotations
+
+from ..primitives import ALIASES, PRIMITIVES
+from .context import Context, SpecFile
+from .sizes import fill_capacities, fill_offsets, fixed, max_field_data, param_size
+
+
+def typeref(ctx: Context, sf: SpecFile, path: tuple, p: dict) -> tuple[dict, str | None, int | None]:
+    """Returns (type ref, alias name, implicit fixed count)."""
+    tname = p["type"]
+    if tname in ALIASES:
+        elem, n = ALIASES[tname]
+        return {"kind": "primitive", "name": elem, "size": fixed(PRIMITIVES[elem][0])}, tname, n
+    if tname in PRIMITIVES:
+        return {"kind": "primitive", "name": tname, "size": fixed(PRIMITIVES[tname][0])}, None, None
+    if tname == "string":
+        length = p.get("length")
+        if length is None:
+            ctx.err(
+                sf,
+                path + ("type",),
+                f"parameter {p['name']}: string needs a length",
+                "length: N (bytes on the wire)",
+            )
+            length = 1
+        return (
+            {
+                "kind": "string",
+                "length": length,
+                "padding": p.get("padding", ctx.string_defaults.get("padding", "nul")),
+                "justify": p.get("justify", ctx.string_defaults.get("justify", "left")),
+                "size": fixed(length),
+            },
+            None,
+            None,
+        )
+    t = ctx.types.get(tname)
+    if t is None:
+        known = sorted(list(PRIMITIVES) + list(ALIASES) + ["string"] + list(ctx.types))
+        ctx.err(
+            sf,
+            path + ("type",),
+            f"parameter {p['name']}: unknown type '{tname}'",
+            "a primitive, vector type, string or defined type: " + ", ".join(known),
+        )
+        return {"kind": "primitive", "name": "u8", "size": fixed(1)}, None, None
+    ref = {"kind": t["kind"], "name": tname, "size": t["size"]}
+    if t["kind"] in ("enum", "bitfield"):
+        ref["base"] = t["base"]
+    return ref, None, None
+
+
+def build_params(
+    ctx: Context,
+    sf: SpecFile,
+    path: tuple,
+    params: list[dict],
+    functions: list[str] | None,
+    owner: str,
+    allow_optional: bool = True,
+) -> list[dict]:
+    """The IR parameters (docs/ir.md) of one parameter list at `path` in sf. `functions` are the
+    selector names of a command with a function selector (None otherwise); `owner` names the
+    list in messages; struct parameters may not be optional (allow_optional False)."""
+    out: list[dict] = []
+    names: dict[str, dict] = {}
+    optional_seen: str | None = None
+    max_data = max_field_data(ctx.pf.data["framing"])
+    for i, p in enumerate(params):
+        pp = path + (i,)
+        name = p["name"]
+        if name in names:
+            ctx.err(sf, pp + ("name",), f"{owner}: two parameters named '{name}'", "unique parameter names")
+        if name == "function" and functions is not None:
+            ctx.err(sf, pp + ("name",), f"{owner}: 'function' is reserved for the function selector", "another name")
+        tref, alias, implicit_count = typeref(ctx, sf, pp, p)
+        count = _count(ctx, sf, pp, p, owner, alias, implicit_count, names, params[i + 1 :])
+        if tref["kind"] == "string" and count is not None:
+            ctx.err(sf, pp + ("count",), f"{owner}: arrays of strings are not supported", "a struct holding the string")
+        if tref["kind"] != "string" and ("length" in p or "padding" in p or "justify" in p):
+            ctx.err(
+                sf,
+                pp,
+                f"{owner}: parameter {name}: length/padding/justify apply only to type string",
+                "type: string",
+            )
+        tref = _selector(ctx, sf, pp, p, owner, tref, count, names)
+        pf = _functions(ctx, sf, pp, p, owner, functions)
+        optional = bool(p.get("optional")) or (functions is not None and pf is not None and set(pf) != set(functions))
+        if functions is not None and pf is None:
+            ctx.err(
+                sf,
+                pp,
+                f"{owner}: parameter {name} does not say which functions it is sent for",
+                "functions: [...] on every parameter of a command with a function selector",
+            )
+        if optional and not allow_optional:
+            ctx.err(
+                sf, pp, f"{owner}: parameter {name} cannot be optional here", "optional parameters only in commands"
+            )
+        if optional:
+            optional_seen = optional_seen or name
+        elif optional_seen:
+            ctx.err(
+                sf,
+                pp,
+                f"{owner}: required parameter {name} follows optional parameter {optional_seen}",
+                "optional parameters (not sent for every function) at the end",
+            )
+        max_count = None
+        if count is not None and count["kind"] != "fixed":
+            max_count = p.get("max_count") or -1  # default: what fits beside the others (fill_capacities)
+        elif "max_count" in p:
+            ctx.err(
+                sf,
+                pp + ("max_count",),
+                f"{owner}: max_count applies only to counted arrays",
+                "count: <param> or remaining",
+            )
+        q = {
+            "name": name,
+            "description": p.get("description", ""),
+            "units": p.get("units"),
+            "manual_name": p.get("manual_name"),
+            "type": tref,
+            "alias": alias,
+            "count": count,
+            "max_count": max_count,
+            "functions": pf,
+            "optional": optional,
+            "notes": p.get("notes", []),
+        }
+        q["size"] = param_size(q)
+        names[name] = q
+        out.append(q)
+    fill_capacities(out, max_data, selector=functions is not None)
+    fill_offsets(out)
+    return out
+
+
+def _count(
+    ctx: Context,
+    sf: SpecFile,
+    pp: tuple,
+    p: dict,
+    owner: str,
+    alias: str | None,
+    implicit_count: int | None,
+    names: dict[str, dict],
+    after: list[dict],
+) -> dict | None:
+    """The parameter's count (null, fixed, param or remaining; docs/ir.md), checked against the
+    parameters before it (`names`) and after it."""
+    name = p["name"]
+    count = None
+    if implicit_count is not None:
+        count = {"kind": "fixed", "value": implicit_count}
+        if "count" in p:
+            ctx.err(
+                sf,
+                pp + ("count",),
+                f"{owner}: parameter {name} has type {alias}, which already has {implicit_count} elements",
+                "no count on vector/matrix types (use the element type with count)",
+            )
+    elif "count" in p:
+        c = p["count"]
+        if isinstance(c, int):
+            count = {"kind": "fixed", "value": c}
+        elif c == "remaining":
+            count = {"kind": "remaining"}
+            if after:
+                ctx.err(
+                    sf,
+                    pp + ("count",),
+                    f"{owner}: parameter {name} runs to the end of the field but is not the last parameter",
+                    "count: remaining only on the last parameter",
+                )
+        else:
+            ref = names.get(c)
+            if ref is None:
+                later = any(q["name"] == c for q in after)
+                why = "a later parameter" if later else "not a parameter"
+                ctx.err(
+                    sf,
+                    pp + ("count",),
+                    f"{owner}: count of {name} refers to '{c}', which is {why}",
+                    "the name of an earlier integer parameter",
+                )
+            elif not _is_integer(ref["type"]) or ref["count"] is not None:
+                ctx.err(
+                    sf,
+                    pp + ("count",),
+                    f"{owner}: count of {name} refers to '{c}', which is not a single integer",
+                    "an earlier u8/u16/u32 parameter",
+                )
+            count = {"kind": "param", "param": c}
+    return count
+
+
+def _selector(
+    ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, tref: dict, count: dict | None, names: dict[str, dict]
+) -> dict:
+    """A union parameter's type reference with its selector (an earlier parameter of the union's
+    enum); any other parameter must not have one."""
+    name = p["name"]
+    if tref["kind"] == "union":
+        sel = p.get("selector")
+        ut = ctx.types[tref["name"]]
+        if sel is None:
+            ctx.err(
+                sf,
+                pp,
+                f"{owner}: union parameter {name} needs 'selector'",
+                "selector: <earlier enum parameter>",
+            )
+        elif sel not in names:
+            ctx.err(
+                sf,
+                pp + ("selector",),
+                f"{owner}: selector of {name} refers to '{sel}', which is not an earlier parameter",
+                "the name of an earlier enum parameter",
+            )
+        elif names[sel]["type"]["kind"] != "enum":
+            ctx.err(
+                sf,
+                pp + ("selector",),
+                f"{owner}: selector '{sel}' of union {name} is not an enum (it is {names[sel]['type']['kind']})",
+                f"a parameter of enum type {ut['selector_enum']}",
+            )
+        elif names[sel]["type"]["name"] != ut["selector_enum"]:
+            ctx.err(
+                sf,
+                pp + ("selector",),
+                f"{owner}: selector '{sel}' has type {names[sel]['type']['name']}, union {tref['name']} is selected by {ut['selector_enum']}",
+                f"a parameter of enum type {ut['selector_enum']}",
+            )
+        tref = dict(tref, selector=sel)
+        if count is not None:
+            ctx.err(sf, pp + ("count",), f"{owner}: arrays of unions are not supported", "a single union")
+    elif "selector" in p:
+        ctx.err(
+            sf,
+            pp + ("selector",),
+            f"{owner}: parameter {name} is not a union; 'selector' does not apply",
+            "no selector",
+        )
+    return tref
+
+
+def _functions(ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, functions: list[str] | None) -> list | None:
+    """The functions a command parameter is sent for: a subset of its command's."""
+    name = p["name"]
+    pf = p.get("functions")
+    if pf is not None:
+        if functions is None:
+            ctx.err(
+                sf,
+                pp + ("functions",),
+                f"{owner}: parameter {name} lists functions but the command has no function selector",
+                "functions: on the command first",
+            )
+        else:
+            for fn in pf:
+                if fn not in functions:
+                    ctx.err(
+                        sf,
+                        pp + ("functions",),
+                        f"{owner}: parameter {name} is marked for function '{fn}', which the command does not support",
+                        "a subset of the command's functions: " + ", ".join(functions),
+                    )
+    return pf
+
+
+def _is_integer(tref: dict) -> bool:
+    return tref["kind"] == "primitive" and PRIMITIVES[tref["name"]][1] == "int" and not PRIMITIVES[tref["name"]][2]

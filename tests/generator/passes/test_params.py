@@ -1,0 +1,67 @@
+"""passes/params.py and passes/sizes.py (called by several passes): parameter checks, the default
+capacity of a counted array and the fixed offsets."""
+
+from tiny_spec import build, command_set, errors
+
+
+def _layout(tmp_path, params: str, extra: str = ""):
+    field = (
+        "  - id: 0x01\n    name: cmd\n    role: command\n    title: Cmd\n"
+        "    sources: [{manual: a.txt, line: 4}]\n" + extra + "    params:\n" + params
+    )
+    ctx = build(tmp_path, {"base.yaml": command_set(field)}, "variants")
+    return ctx, ctx.sets[0]["fields"][0]["variants"][0]
+
+
+def test_counted_array_capacity_is_what_fits_beside_the_others(tmp_path):
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: n, type: u8}\n      - {name: values, type: u32, count: n}\n      - {name: tail, type: u16}\n",
+    )
+    assert errors(ctx) == []
+    n, values, tail = v["params"]
+    # Field data holds at most 253 bytes (MIP: 255 - 2 for the field header); 1 + 2 are taken.
+    assert values["max_count"] == (253 - 3) // 4
+    assert values["size"] == {"min": 0, "max": 4 * values["max_count"], "fixed": False}
+    assert [q["offset"] for q in (n, values, tail)] == [0, 1, None]
+    assert v["size"] == {"min": 3, "max": 3 + 4 * values["max_count"], "fixed": False}
+
+
+def test_count_must_name_an_earlier_integer(tmp_path):
+    ctx, _ = _layout(
+        tmp_path,
+        "      - {name: values, type: u8, count: n}\n      - {name: n, type: u8}\n"
+        "      - {name: f, type: float}\n      - {name: more, type: u8, count: f}\n",
+    )
+    assert errors(ctx) == [
+        "base.yaml:13:41: error: base.cmd: count of values refers to 'n', which is a later parameter"
+        " (expected the name of an earlier integer parameter)",
+        "base.yaml:16:39: error: base.cmd: count of more refers to 'f', which is not a single integer"
+        " (expected an earlier u8/u16/u32 parameter)",
+    ]
+
+
+def test_remaining_must_be_last_and_optional_params_must_come_last(tmp_path):
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: rest, type: u8, count: remaining}\n"
+        "      - {name: opt, type: u8, optional: true}\n      - {name: req, type: u8}\n",
+    )
+    assert errors(ctx) == [
+        "base.yaml:13:39: error: base.cmd: parameter rest runs to the end of the field but is not the last parameter"
+        " (expected count: remaining only on the last parameter)",
+        "base.yaml:15:9: error: base.cmd: required parameter req follows optional parameter opt"
+        " (expected optional parameters (not sent for every function) at the end)",
+    ]
+    assert [q["optional"] for q in v["params"]] == [False, True, False]
+
+
+def test_vector_aliases_are_fixed_arrays_of_their_element(tmp_path):
+    ctx, v = _layout(tmp_path, "      - {name: accel, type: vector3f}\n")
+    (q,) = v["params"]
+    assert (q["alias"], q["type"]["name"], q["count"], q["size"]["max"]) == (
+        "vector3f",
+        "float",
+        {"kind": "fixed", "value": 3},
+        12,
+    )
