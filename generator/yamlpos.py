@@ -50,9 +50,7 @@ def _construct(node: yaml.Node, path: Path, file: str, marks: dict, budget: _Bud
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
                 raise SpecError(marks[path], "mapping keys must be plain scalars")
-            key = (
-                yaml.safe_load(yaml.serialize(key_node)) if key_node.tag != "tag:yaml.org,2002:str" else key_node.value
-            )
+            key = key_node.value if key_node.tag == "tag:yaml.org,2002:str" else _scalar(key_node, file)
             if key in out:
                 loc = Location(file, key_node.start_mark.line + 1, key_node.start_mark.column + 1)
                 raise SpecError(loc, f"duplicate key '{key}'", "each key once per mapping")
