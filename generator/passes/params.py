@@ -91,7 +91,12 @@ def build_params(
             )
         tref = _selector(ctx, sf, pp, p, owner, tref, count, names)
         pf = _functions(ctx, sf, pp, p, owner, functions)
-        optional = bool(p.get("optional")) or (functions is not None and pf is not None and set(pf) != set(functions))
+        optional_for = _optional_for(ctx, sf, pp, p, owner, pf)
+        optional = (
+            bool(p.get("optional"))
+            or bool(optional_for)
+            or (functions is not None and pf is not None and set(pf) != set(functions))
+        )
         if functions is not None and pf is None:
             ctx.err(
                 sf,
@@ -133,6 +138,7 @@ def build_params(
             "max_count": max_count,
             "functions": pf,
             "optional": optional,
+            "optional_for": optional_for,
             "notes": p.get("notes", []),
         }
         q["size"] = param_size(q)
@@ -274,6 +280,32 @@ def _functions(ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, funct
                         "a subset of the command's functions: " + ", ".join(functions),
                     )
     return pf
+
+
+def _optional_for(ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, pf: list | None) -> list | None:
+    """The functions that may leave a parameter out although the manual prints it for them (host
+    software in the field sends e.g. a READ as the function byte alone): a subset of the
+    parameter's functions. Such a parameter is optional: decoders accept both forms."""
+    of = p.get("optional_for")
+    if of is None:
+        return None
+    if pf is None:
+        ctx.err(
+            sf,
+            pp + ("optional_for",),
+            f"{owner}: parameter {p['name']} has optional_for but no functions",
+            "functions: [...] on the parameter first",
+        )
+        return None
+    for fn in of:
+        if fn not in pf:
+            ctx.err(
+                sf,
+                pp + ("optional_for",),
+                f"{owner}: parameter {p['name']} may be left out by function '{fn}', which it is not sent for",
+                "a subset of the parameter's functions: " + ", ".join(pf),
+            )
+    return list(of)
 
 
 def _is_integer(tref: dict) -> bool:

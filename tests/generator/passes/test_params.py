@@ -65,3 +65,31 @@ def test_vector_aliases_are_fixed_arrays_of_their_element(tmp_path):
         {"kind": "fixed", "value": 3},
         12,
     )
+
+
+def test_optional_for_makes_a_parameter_optional_for_those_functions(tmp_path):
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: n, type: u8, functions: [write, read], optional_for: [read]}\n"
+        "      - {name: values, type: u8, count: n, functions: [write, read], optional_for: [read]}\n",
+        "    functions: [write, read]\n",
+    )
+    assert errors(ctx) == []
+    n, values = v["params"]
+    assert (n["optional"], n["optional_for"]) == (True, ["read"])
+    assert (values["optional"], values["optional_for"]) == (True, ["read"])
+
+
+def test_optional_for_names_functions_the_parameter_is_sent_for(tmp_path):
+    ctx, _ = _layout(
+        tmp_path,
+        "      - {name: a, type: u8, functions: [write, read], optional_for: [save]}\n"
+        "      - {name: b, type: u8, functions: [write, read]}\n",
+        "    functions: [write, read]\n",
+    )
+    assert errors(ctx) == [
+        "base.yaml:14:69: error: base.cmd: parameter a may be left out by function 'save', which it is not sent for"
+        " (expected a subset of the parameter's functions: write, read)",
+        "base.yaml:15:9: error: base.cmd: required parameter b follows optional parameter a"
+        " (expected optional parameters (not sent for every function) at the end)",
+    ]

@@ -1299,6 +1299,60 @@ TEST(Vectors, get_supported_events_actions_reply) {
                  "\"entries\":[{\"type\":1,\"count\":6},{\"type\":2,\"count\":8}]}}}]}\n");
 }
 
+TEST(Vectors, imu_message_format_read_short) {
+    check_vector("75650c03030802f6f4", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                 "\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, imu_message_format_save_short) {
+    check_vector("75650c03030803f7f5", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                 "\"values\":{\"function\":3}}]}\n");
+}
+
+TEST(Vectors, gnss_message_format_read_short) {
+    check_vector("75650c03030902f7f6", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
+                 "\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, filter_message_format_read_short) {
+    check_vector("75650c03030a02f8f8", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
+                 "\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, filter_message_format_default_short) {
+    check_vector("75650c03030a05fbfb", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
+                 "\"values\":{\"function\":5}}]}\n");
+}
+
+TEST(Vectors, data_stream_control_read_short) {
+    check_vector("75650c0404110201020f", MIP_DEVICE_GX5_45,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
+                 "\"device\":\"gx5_45\",\"values\":{\"function\":2,\"device_selector\":1}}]}\n");
+}
+
+TEST(Vectors, gnss_constellation_settings_read_short) {
+    check_vector("75650c030321020f26", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
+                 "settings\",\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, gnss_assisted_fix_control_read_short) {
+    check_vector("75650c03032302112a", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_"
+                 "control\",\"values\":{\"function\":2}}]}\n");
+}
+
+TEST(Vectors, gnss_assist_time_update_read_short) {
+    check_vector("75650c03032402122c", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
+                 "update\",\"values\":{\"function\":2}}]}\n");
+}
+
 TEST(Vectors, frame_config_write_antenna_offset) {
     check_vector("7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\","

@@ -1628,14 +1628,17 @@ class ImuMessageFormat(_c.Field):
     Set, read, save, load or reset the IMU data (0x80) message format.
 
     Functions: write, read, save, load, default. Responses: 0x80 imu_message_format_response.
-    Sources: 3dm-gx5-45-dcp.txt line 990; 3dm-gx5-45-dcp.txt line 383. Field data: 2..251 bytes.
+    Sources: 3dm-gx5-45-dcp.txt line 990; 3dm-gx5-45-dcp.txt line 383. Field data: 1..251 bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    num_descriptors: int = 0  # Number of descriptors (0 for every function except write).
-    # Descriptors and rate decimations (decimation = base rate / desired rate). (count: num_descriptors)
-    descriptors: _ty.List[_t.DescriptorRate] = _dc.field(default_factory=list)
+    # Number of descriptors (0 for every function except write, which may also leave it out). (sent for: write, read,
+    # save, load, default)
+    num_descriptors: _ty.Optional[int] = None
+    # Descriptors and rate decimations (decimation = base rate / desired rate). (sent for: write, read, save, load,
+    # default) (count: num_descriptors)
+    descriptors: _ty.Optional[_ty.List[_t.DescriptorRate]] = None
 
     SET = 0x0C
     DESCRIPTOR = 0x08
@@ -1643,8 +1646,9 @@ class ImuMessageFormat(_c.Field):
     ROLE = "command"
     _ATTRS = ("function", "num_descriptors", "descriptors")
     _OPS = (
-        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8")), _c.P("num_descriptors", _c.U8)),
-        _c.Counted("descriptors", _t.DescriptorRate, count="num_descriptors", maximum=83),
+        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),
+        _c.Opt(_c.Run(_c.P("num_descriptors", _c.U8))),
+        _c.Opt(_c.Counted("descriptors", _t.DescriptorRate, count="num_descriptors", maximum=83)),
     )
 
 
@@ -1679,14 +1683,17 @@ class GnssMessageFormat(_c.Field):
     Set, read, save, load or reset the GNSS data (0x81) message format.
 
     Functions: write, read, save, load, default. Responses: 0x81 gnss_message_format_response.
-    Sources: 3dm-gx5-45-dcp.txt line 1009. Field data: 2..251 bytes.
+    Sources: 3dm-gx5-45-dcp.txt line 1009. Field data: 1..251 bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    num_descriptors: int = 0  # Number of descriptors (0 for every function except write).
-    # Descriptors and rate decimations (decimation = base rate / desired rate). (count: num_descriptors)
-    descriptors: _ty.List[_t.DescriptorRate] = _dc.field(default_factory=list)
+    # Number of descriptors (0 for every function except write, which may also leave it out). (sent for: write, read,
+    # save, load, default)
+    num_descriptors: _ty.Optional[int] = None
+    # Descriptors and rate decimations (decimation = base rate / desired rate). (sent for: write, read, save, load,
+    # default) (count: num_descriptors)
+    descriptors: _ty.Optional[_ty.List[_t.DescriptorRate]] = None
 
     SET = 0x0C
     DESCRIPTOR = 0x09
@@ -1694,8 +1701,9 @@ class GnssMessageFormat(_c.Field):
     ROLE = "command"
     _ATTRS = ("function", "num_descriptors", "descriptors")
     _OPS = (
-        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8")), _c.P("num_descriptors", _c.U8)),
-        _c.Counted("descriptors", _t.DescriptorRate, count="num_descriptors", maximum=83),
+        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),
+        _c.Opt(_c.Run(_c.P("num_descriptors", _c.U8))),
+        _c.Opt(_c.Counted("descriptors", _t.DescriptorRate, count="num_descriptors", maximum=83)),
     )
 
 
@@ -1730,14 +1738,17 @@ class FilterMessageFormat(_c.Field):
     Set, read, save, load or reset the estimation filter data (0x82) message format.
 
     Functions: write, read, save, load, default. Responses: 0x82 filter_message_format_response.
-    Sources: 3dm-gx5-45-dcp.txt line 1027; 3dm-gx5-45-dcp.txt line 395. Field data: 2..251 bytes.
+    Sources: 3dm-gx5-45-dcp.txt line 1027; 3dm-gx5-45-dcp.txt line 395. Field data: 1..251 bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    num_descriptors: int = 0  # Number of descriptors (0 for every function except write).
-    # Descriptors and rate decimations (decimation = base rate / desired rate). (count: num_descriptors)
-    descriptors: _ty.List[_t.DescriptorRate] = _dc.field(default_factory=list)
+    # Number of descriptors (0 for every function except write, which may also leave it out). (sent for: write, read,
+    # save, load, default)
+    num_descriptors: _ty.Optional[int] = None
+    # Descriptors and rate decimations (decimation = base rate / desired rate). (sent for: write, read, save, load,
+    # default) (count: num_descriptors)
+    descriptors: _ty.Optional[_ty.List[_t.DescriptorRate]] = None
 
     SET = 0x0C
     DESCRIPTOR = 0x0A
@@ -1745,8 +1756,9 @@ class FilterMessageFormat(_c.Field):
     ROLE = "command"
     _ATTRS = ("function", "num_descriptors", "descriptors")
     _OPS = (
-        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8")), _c.P("num_descriptors", _c.U8)),
-        _c.Counted("descriptors", _t.DescriptorRate, count="num_descriptors", maximum=83),
+        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),
+        _c.Opt(_c.Run(_c.P("num_descriptors", _c.U8))),
+        _c.Opt(_c.Counted("descriptors", _t.DescriptorRate, count="num_descriptors", maximum=83)),
     )
 
 
@@ -1911,13 +1923,15 @@ class DataStreamControl_gx5_45(_c.Field):
     enable value is used only by write.
 
     Functions: write, read, save, load, default. Responses: 0x85 data_stream_control_response.
-    Sources: 3dm-gx5-45-dcp.txt line 1047; 3dm-gx5-45-dcp.txt line 419. Field data: 3 bytes.
+    Sources: 3dm-gx5-45-dcp.txt line 1047; 3dm-gx5-45-dcp.txt line 419. Field data: 2..3 bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
     device_selector: _t.Gx5StreamSelector = _t.Gx5StreamSelector.IMU  # Stream to control.
-    enable: int = 0  # 0x00 disable, 0x01 enable (default); ignored except for write.
+    # 0x00 disable, 0x01 enable (default); ignored except for write, and may be left out by the other functions. (sent
+    # for: write, read, save, load, default)
+    enable: _ty.Optional[int] = None
 
     SET = 0x0C
     DESCRIPTOR = 0x11
@@ -1929,8 +1943,8 @@ class DataStreamControl_gx5_45(_c.Field):
         _c.Run(
             _c.P("function", _c.enum(_t.FunctionSelector, "u8")),
             _c.P("device_selector", _c.enum(_t.Gx5StreamSelector, "u8")),
-            _c.P("enable", _c.U8),
         ),
+        _c.Opt(_c.Run(_c.P("enable", _c.U8))),
     )
 
 
@@ -2033,16 +2047,19 @@ class GnssConstellationSettings(_c.Field):
     may reserve and use (32 channels in all; GLONASS and BeiDou not together).
 
     Functions: write, read, save, load, default. Responses: 0xA0
-    gnss_constellation_settings_response. Sources: 3dm-gx5-45-dcp.txt line 1063. Field data: 4..250
+    gnss_constellation_settings_response. Sources: 3dm-gx5-45-dcp.txt line 1063. Field data: 1..250
     bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    max_channels: int = 0  # Maximum tracking channels to use in total (0 up to the available channels).
-    config_count: int = 0  # Number of constellation entries.
-    # Per-constellation settings. (count: config_count)
-    settings: _ty.List[_t.ConstellationSettings] = _dc.field(default_factory=list)
+    # Maximum tracking channels to use in total (0 up to the available channels). (sent for: write, read, save, load,
+    # default)
+    max_channels: _ty.Optional[int] = None
+    # Number of constellation entries. (sent for: write, read, save, load, default)
+    config_count: _ty.Optional[int] = None
+    # Per-constellation settings. (sent for: write, read, save, load, default) (count: config_count)
+    settings: _ty.Optional[_ty.List[_t.ConstellationSettings]] = None
 
     SET = 0x0C
     DESCRIPTOR = 0x21
@@ -2050,12 +2067,10 @@ class GnssConstellationSettings(_c.Field):
     ROLE = "command"
     _ATTRS = ("function", "max_channels", "config_count", "settings")
     _OPS = (
-        _c.Run(
-            _c.P("function", _c.enum(_t.FunctionSelector, "u8")),
-            _c.P("max_channels", _c.U16),
-            _c.P("config_count", _c.U8),
-        ),
-        _c.Counted("settings", _t.ConstellationSettings, count="config_count", maximum=41),
+        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),
+        _c.Opt(_c.Run(_c.P("max_channels", _c.U16))),
+        _c.Opt(_c.Run(_c.P("config_count", _c.U8))),
+        _c.Opt(_c.Counted("settings", _t.ConstellationSettings, count="config_count", maximum=41)),
     )
 
 
@@ -2153,13 +2168,14 @@ class GnssAssistedFixControl(_c.Field):
     the time to first fix. Disabling it erases that memory.
 
     Functions: write, read, save, load, default. Responses: 0xA2 gnss_assisted_fix_control_response.
-    Sources: 3dm-gx5-45-dcp.txt line 1157. Field data: 3 bytes.
+    Sources: 3dm-gx5-45-dcp.txt line 1157. Field data: 1..3 bytes.
     """
 
     # Function selector (one of: write, read, save, load, default)
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    option: _t.AssistedFixOption = _t.AssistedFixOption.NONE  # Assisted fix on or off.
-    flags: int = 0  # No flags defined; set to 0xFF.
+    # Assisted fix on or off. (sent for: write, read, save, load, default)
+    option: _ty.Optional[_t.AssistedFixOption] = None
+    flags: _ty.Optional[int] = None  # No flags defined; set to 0xFF. (sent for: write, read, save, load, default)
 
     SET = 0x0C
     DESCRIPTOR = 0x23
@@ -2167,11 +2183,9 @@ class GnssAssistedFixControl(_c.Field):
     ROLE = "command"
     _ATTRS = ("function", "option", "flags")
     _OPS = (
-        _c.Run(
-            _c.P("function", _c.enum(_t.FunctionSelector, "u8")),
-            _c.P("option", _c.enum(_t.AssistedFixOption, "u8")),
-            _c.P("flags", _c.U8),
-        ),
+        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),
+        _c.Opt(_c.Run(_c.P("option", _c.enum(_t.AssistedFixOption, "u8")))),
+        _c.Opt(_c.Run(_c.P("flags", _c.U8))),
     )
 
 
@@ -2203,13 +2217,13 @@ class GnssAssistTimeUpdate(_c.Field):
     can judge whether its saved satellite information is still usable.
 
     Functions: write, read. Responses: 0xA3 gnss_assist_time_update_response. Sources:
-    3dm-gx5-45-dcp.txt line 1176. Field data: 15 bytes.
+    3dm-gx5-45-dcp.txt line 1176. Field data: 1..15 bytes.
     """
 
     function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write, read)
-    tow: float = 0.0  # GPS time of week. [s]
-    week_number: int = 0  # GPS week number.
-    accuracy: float = 0.0  # Accuracy of the given time. [s]
+    tow: _ty.Optional[float] = None  # GPS time of week. [s] (sent for: write, read)
+    week_number: _ty.Optional[int] = None  # GPS week number. (sent for: write, read)
+    accuracy: _ty.Optional[float] = None  # Accuracy of the given time. [s] (sent for: write, read)
 
     SET = 0x0C
     DESCRIPTOR = 0x24
@@ -2217,12 +2231,10 @@ class GnssAssistTimeUpdate(_c.Field):
     ROLE = "command"
     _ATTRS = ("function", "tow", "week_number", "accuracy")
     _OPS = (
-        _c.Run(
-            _c.P("function", _c.enum(_t.FunctionSelector, "u8")),
-            _c.P("tow", _c.F64),
-            _c.P("week_number", _c.U16),
-            _c.P("accuracy", _c.F32),
-        ),
+        _c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),
+        _c.Opt(_c.Run(_c.P("tow", _c.F64))),
+        _c.Opt(_c.Run(_c.P("week_number", _c.U16))),
+        _c.Opt(_c.Run(_c.P("accuracy", _c.F32))),
     )
 
 

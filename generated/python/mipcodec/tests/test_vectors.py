@@ -1882,6 +1882,96 @@ CASES = [
         ],
     },
     {
+        "name": "imu_message_format_read_short",
+        "hex": "75650c03030802f6f4",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1361",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "imu_message_format_save_short",
+        "hex": "75650c03030803f7f5",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1373",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":3}}]}'
+        ],
+    },
+    {
+        "name": "gnss_message_format_read_short",
+        "hex": "75650c03030902f7f6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1385",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_read_short",
+        "hex": "75650c03030a02f8f8",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1397",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "filter_message_format_default_short",
+        "hex": "75650c03030a05fbfb",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1409",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":5}}]}'
+        ],
+    },
+    {
+        "name": "data_stream_control_read_short",
+        "hex": "75650c0404110201020f",
+        "device": "gx5_45",
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1421",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":17,"name":"data_stream_control","device":"gx5_45","values":{"function":2,"device_selector":1}}]}'
+        ],
+    },
+    {
+        "name": "gnss_constellation_settings_read_short",
+        "hex": "75650c030321020f26",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1434",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assisted_fix_control_read_short",
+        "hex": "75650c03032302112a",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1446",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":35,"name":"gnss_assisted_fix_control","values":{"function":2}}]}'
+        ],
+    },
+    {
+        "name": "gnss_assist_time_update_read_short",
+        "hex": "75650c03032402122c",
+        "device": None,
+        "rejected": False,
+        "where": "tests/vectors/mip/3dm_streaming.yaml:1458",
+        "expect": [
+            '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":2}}]}'
+        ],
+    },
+    {
         "name": "frame_config_write_antenna_offset",
         "hex": "7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1",
         "device": None,

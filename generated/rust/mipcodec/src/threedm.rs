@@ -6583,10 +6583,10 @@ impl crate::wire::Layout for BaseRate {
 pub struct ImuMessageFormat {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
-    /// Number of descriptors (0 for every function except write). Sent for: write, read, save, load, default.
-    pub num_descriptors: u8,
+    /// Number of descriptors (0 for every function except write, which may also leave it out). Sent for: write, read, save, load, default.
+    pub num_descriptors: Option<u8>,
     /// Descriptors and rate decimations (decimation = base rate / desired rate). Sent for: write, read, save, load, default.
-    pub descriptors: crate::bounded::BoundedVec<crate::types::DescriptorRate, 83>,
+    pub descriptors: Option<crate::bounded::BoundedVec<crate::types::DescriptorRate, 83>>,
 }
 
 impl Default for ImuMessageFormat {
@@ -6598,8 +6598,8 @@ impl Default for ImuMessageFormat {
 impl crate::wire::Wire for ImuMessageFormat {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
-        num_descriptors: <u8 as crate::wire::Wire>::ZERO,
-        descriptors: <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::wire::Wire>::ZERO,
+        num_descriptors: None,
+        descriptors: None,
     };
     const FIXED_SIZE: Option<usize> = None;
 
@@ -6610,14 +6610,22 @@ impl crate::wire::Wire for ImuMessageFormat {
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
-        let p_num_descriptors =
-            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
-        let p_descriptors =
-            crate::bounded::BoundedVec::<crate::types::DescriptorRate, 83>::decode_counted(
-                r,
-                u64::from(p_num_descriptors),
+        let p_num_descriptors = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?)
+        } else {
+            None
+        };
+        let p_descriptors = if r.left() > 0 {
+            Some(
+                crate::bounded::BoundedVec::<crate::types::DescriptorRate, 83>::decode_counted(
+                    r,
+                    p_num_descriptors.map_or(0, u64::from),
+                )
+                .map_err(|e| e.at("descriptors"))?,
             )
-            .map_err(|e| e.at("descriptors"))?;
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             num_descriptors: p_num_descriptors,
@@ -6626,13 +6634,22 @@ impl crate::wire::Wire for ImuMessageFormat {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
-        let v = &self.num_descriptors;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_descriptors"))?;
-        let v = &self.descriptors;
-        v.encode_counted(w, u64::from(self.num_descriptors))
-            .map_err(|e| e.at("descriptors"))?;
+        if let Some(v) = &self.num_descriptors {
+            optionals.present("num_descriptors")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_descriptors"))?;
+        } else {
+            optionals.absent("num_descriptors");
+        }
+        if let Some(v) = &self.descriptors {
+            optionals.present("descriptors")?;
+            v.encode_counted(w, self.num_descriptors.map_or(0, u64::from))
+                .map_err(|e| e.at("descriptors"))?;
+        } else {
+            optionals.absent("descriptors");
+        }
         Ok(())
     }
 
@@ -6642,12 +6659,14 @@ impl crate::wire::Wire for ImuMessageFormat {
         let v = &self.function;
         crate::json::key(w, &mut first, "function")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.num_descriptors;
-        crate::json::key(w, &mut first, "num_descriptors")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.descriptors;
-        crate::json::key(w, &mut first, "descriptors")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.num_descriptors {
+            crate::json::key(w, &mut first, "num_descriptors")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.descriptors {
+            crate::json::key(w, &mut first, "descriptors")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -6660,11 +6679,11 @@ impl crate::json_read::FromJson for ImuMessageFormat {
             "function",
             <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_num_descriptors = o.req(
+        let p_num_descriptors = o.opt(
             "num_descriptors",
             <u8 as crate::json_read::FromJson>::from_json,
         )?;
-        let p_descriptors = o.req("descriptors", <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::json_read::FromJson>::from_json)?;
+        let p_descriptors = o.opt("descriptors", <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             num_descriptors: p_num_descriptors,
@@ -6777,10 +6796,10 @@ impl crate::wire::Layout for ImuMessageFormatResponse {
 pub struct GnssMessageFormat {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
-    /// Number of descriptors (0 for every function except write). Sent for: write, read, save, load, default.
-    pub num_descriptors: u8,
+    /// Number of descriptors (0 for every function except write, which may also leave it out). Sent for: write, read, save, load, default.
+    pub num_descriptors: Option<u8>,
     /// Descriptors and rate decimations (decimation = base rate / desired rate). Sent for: write, read, save, load, default.
-    pub descriptors: crate::bounded::BoundedVec<crate::types::DescriptorRate, 83>,
+    pub descriptors: Option<crate::bounded::BoundedVec<crate::types::DescriptorRate, 83>>,
 }
 
 impl Default for GnssMessageFormat {
@@ -6792,8 +6811,8 @@ impl Default for GnssMessageFormat {
 impl crate::wire::Wire for GnssMessageFormat {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
-        num_descriptors: <u8 as crate::wire::Wire>::ZERO,
-        descriptors: <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::wire::Wire>::ZERO,
+        num_descriptors: None,
+        descriptors: None,
     };
     const FIXED_SIZE: Option<usize> = None;
 
@@ -6804,14 +6823,22 @@ impl crate::wire::Wire for GnssMessageFormat {
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
-        let p_num_descriptors =
-            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
-        let p_descriptors =
-            crate::bounded::BoundedVec::<crate::types::DescriptorRate, 83>::decode_counted(
-                r,
-                u64::from(p_num_descriptors),
+        let p_num_descriptors = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?)
+        } else {
+            None
+        };
+        let p_descriptors = if r.left() > 0 {
+            Some(
+                crate::bounded::BoundedVec::<crate::types::DescriptorRate, 83>::decode_counted(
+                    r,
+                    p_num_descriptors.map_or(0, u64::from),
+                )
+                .map_err(|e| e.at("descriptors"))?,
             )
-            .map_err(|e| e.at("descriptors"))?;
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             num_descriptors: p_num_descriptors,
@@ -6820,13 +6847,22 @@ impl crate::wire::Wire for GnssMessageFormat {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
-        let v = &self.num_descriptors;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_descriptors"))?;
-        let v = &self.descriptors;
-        v.encode_counted(w, u64::from(self.num_descriptors))
-            .map_err(|e| e.at("descriptors"))?;
+        if let Some(v) = &self.num_descriptors {
+            optionals.present("num_descriptors")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_descriptors"))?;
+        } else {
+            optionals.absent("num_descriptors");
+        }
+        if let Some(v) = &self.descriptors {
+            optionals.present("descriptors")?;
+            v.encode_counted(w, self.num_descriptors.map_or(0, u64::from))
+                .map_err(|e| e.at("descriptors"))?;
+        } else {
+            optionals.absent("descriptors");
+        }
         Ok(())
     }
 
@@ -6836,12 +6872,14 @@ impl crate::wire::Wire for GnssMessageFormat {
         let v = &self.function;
         crate::json::key(w, &mut first, "function")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.num_descriptors;
-        crate::json::key(w, &mut first, "num_descriptors")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.descriptors;
-        crate::json::key(w, &mut first, "descriptors")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.num_descriptors {
+            crate::json::key(w, &mut first, "num_descriptors")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.descriptors {
+            crate::json::key(w, &mut first, "descriptors")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -6854,11 +6892,11 @@ impl crate::json_read::FromJson for GnssMessageFormat {
             "function",
             <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_num_descriptors = o.req(
+        let p_num_descriptors = o.opt(
             "num_descriptors",
             <u8 as crate::json_read::FromJson>::from_json,
         )?;
-        let p_descriptors = o.req("descriptors", <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::json_read::FromJson>::from_json)?;
+        let p_descriptors = o.opt("descriptors", <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             num_descriptors: p_num_descriptors,
@@ -6971,10 +7009,10 @@ impl crate::wire::Layout for GnssMessageFormatResponse {
 pub struct FilterMessageFormat {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
-    /// Number of descriptors (0 for every function except write). Sent for: write, read, save, load, default.
-    pub num_descriptors: u8,
+    /// Number of descriptors (0 for every function except write, which may also leave it out). Sent for: write, read, save, load, default.
+    pub num_descriptors: Option<u8>,
     /// Descriptors and rate decimations (decimation = base rate / desired rate). Sent for: write, read, save, load, default.
-    pub descriptors: crate::bounded::BoundedVec<crate::types::DescriptorRate, 83>,
+    pub descriptors: Option<crate::bounded::BoundedVec<crate::types::DescriptorRate, 83>>,
 }
 
 impl Default for FilterMessageFormat {
@@ -6986,8 +7024,8 @@ impl Default for FilterMessageFormat {
 impl crate::wire::Wire for FilterMessageFormat {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
-        num_descriptors: <u8 as crate::wire::Wire>::ZERO,
-        descriptors: <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::wire::Wire>::ZERO,
+        num_descriptors: None,
+        descriptors: None,
     };
     const FIXED_SIZE: Option<usize> = None;
 
@@ -6998,14 +7036,22 @@ impl crate::wire::Wire for FilterMessageFormat {
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
-        let p_num_descriptors =
-            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?;
-        let p_descriptors =
-            crate::bounded::BoundedVec::<crate::types::DescriptorRate, 83>::decode_counted(
-                r,
-                u64::from(p_num_descriptors),
+        let p_num_descriptors = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("num_descriptors"))?)
+        } else {
+            None
+        };
+        let p_descriptors = if r.left() > 0 {
+            Some(
+                crate::bounded::BoundedVec::<crate::types::DescriptorRate, 83>::decode_counted(
+                    r,
+                    p_num_descriptors.map_or(0, u64::from),
+                )
+                .map_err(|e| e.at("descriptors"))?,
             )
-            .map_err(|e| e.at("descriptors"))?;
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             num_descriptors: p_num_descriptors,
@@ -7014,13 +7060,22 @@ impl crate::wire::Wire for FilterMessageFormat {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
-        let v = &self.num_descriptors;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_descriptors"))?;
-        let v = &self.descriptors;
-        v.encode_counted(w, u64::from(self.num_descriptors))
-            .map_err(|e| e.at("descriptors"))?;
+        if let Some(v) = &self.num_descriptors {
+            optionals.present("num_descriptors")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("num_descriptors"))?;
+        } else {
+            optionals.absent("num_descriptors");
+        }
+        if let Some(v) = &self.descriptors {
+            optionals.present("descriptors")?;
+            v.encode_counted(w, self.num_descriptors.map_or(0, u64::from))
+                .map_err(|e| e.at("descriptors"))?;
+        } else {
+            optionals.absent("descriptors");
+        }
         Ok(())
     }
 
@@ -7030,12 +7085,14 @@ impl crate::wire::Wire for FilterMessageFormat {
         let v = &self.function;
         crate::json::key(w, &mut first, "function")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.num_descriptors;
-        crate::json::key(w, &mut first, "num_descriptors")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.descriptors;
-        crate::json::key(w, &mut first, "descriptors")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.num_descriptors {
+            crate::json::key(w, &mut first, "num_descriptors")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.descriptors {
+            crate::json::key(w, &mut first, "descriptors")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -7048,11 +7105,11 @@ impl crate::json_read::FromJson for FilterMessageFormat {
             "function",
             <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_num_descriptors = o.req(
+        let p_num_descriptors = o.opt(
             "num_descriptors",
             <u8 as crate::json_read::FromJson>::from_json,
         )?;
-        let p_descriptors = o.req("descriptors", <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::json_read::FromJson>::from_json)?;
+        let p_descriptors = o.opt("descriptors", <crate::bounded::BoundedVec<crate::types::DescriptorRate, 83> as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             num_descriptors: p_num_descriptors,
@@ -7697,8 +7754,8 @@ pub struct DataStreamControlGx5_45 {
     pub function: crate::types::FunctionSelector,
     /// Stream to control. Sent for: write, read, save, load, default.
     pub device_selector: crate::types::Gx5StreamSelector,
-    /// 0x00 disable, 0x01 enable (default); ignored except for write. Sent for: write, read, save, load, default.
-    pub enable: u8,
+    /// 0x00 disable, 0x01 enable (default); ignored except for write, and may be left out by the other functions. Sent for: write, read, save, load, default.
+    pub enable: Option<u8>,
 }
 
 impl Default for DataStreamControlGx5_45 {
@@ -7711,9 +7768,9 @@ impl crate::wire::Wire for DataStreamControlGx5_45 {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
         device_selector: <crate::types::Gx5StreamSelector as crate::wire::Wire>::ZERO,
-        enable: <u8 as crate::wire::Wire>::ZERO,
+        enable: None,
     };
-    const FIXED_SIZE: Option<usize> = Some(3);
+    const FIXED_SIZE: Option<usize> = None;
 
     // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
     // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
@@ -7724,7 +7781,11 @@ impl crate::wire::Wire for DataStreamControlGx5_45 {
             .map_err(|e| e.at("function"))?;
         let p_device_selector = <crate::types::Gx5StreamSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("device_selector"))?;
-        let p_enable = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?;
+        let p_enable = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("enable"))?)
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             device_selector: p_device_selector,
@@ -7733,12 +7794,17 @@ impl crate::wire::Wire for DataStreamControlGx5_45 {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
         let v = &self.device_selector;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("device_selector"))?;
-        let v = &self.enable;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        if let Some(v) = &self.enable {
+            optionals.present("enable")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("enable"))?;
+        } else {
+            optionals.absent("enable");
+        }
         Ok(())
     }
 
@@ -7751,9 +7817,10 @@ impl crate::wire::Wire for DataStreamControlGx5_45 {
         let v = &self.device_selector;
         crate::json::key(w, &mut first, "device_selector")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.enable;
-        crate::json::key(w, &mut first, "enable")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.enable {
+            crate::json::key(w, &mut first, "enable")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -7770,7 +7837,7 @@ impl crate::json_read::FromJson for DataStreamControlGx5_45 {
             "device_selector",
             <crate::types::Gx5StreamSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_enable = o.req("enable", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_enable = o.opt("enable", <u8 as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             device_selector: p_device_selector,
@@ -8310,11 +8377,11 @@ pub struct GnssConstellationSettings {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
     /// Maximum tracking channels to use in total (0 up to the available channels). Sent for: write, read, save, load, default.
-    pub max_channels: u16,
+    pub max_channels: Option<u16>,
     /// Number of constellation entries. Sent for: write, read, save, load, default.
-    pub config_count: u8,
+    pub config_count: Option<u8>,
     /// Per-constellation settings. Sent for: write, read, save, load, default.
-    pub settings: crate::bounded::BoundedVec<crate::types::ConstellationSettings, 41>,
+    pub settings: Option<crate::bounded::BoundedVec<crate::types::ConstellationSettings, 41>>,
 }
 
 impl Default for GnssConstellationSettings {
@@ -8326,9 +8393,9 @@ impl Default for GnssConstellationSettings {
 impl crate::wire::Wire for GnssConstellationSettings {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
-        max_channels: <u16 as crate::wire::Wire>::ZERO,
-        config_count: <u8 as crate::wire::Wire>::ZERO,
-        settings: <crate::bounded::BoundedVec<crate::types::ConstellationSettings, 41> as crate::wire::Wire>::ZERO,
+        max_channels: None,
+        config_count: None,
+        settings: None,
     };
     const FIXED_SIZE: Option<usize> = None;
 
@@ -8339,16 +8406,21 @@ impl crate::wire::Wire for GnssConstellationSettings {
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
-        let p_max_channels =
-            <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_channels"))?;
-        let p_config_count =
-            <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("config_count"))?;
-        let p_settings =
-            crate::bounded::BoundedVec::<crate::types::ConstellationSettings, 41>::decode_counted(
-                r,
-                u64::from(p_config_count),
-            )
-            .map_err(|e| e.at("settings"))?;
+        let p_max_channels = if r.left() > 0 {
+            Some(<u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("max_channels"))?)
+        } else {
+            None
+        };
+        let p_config_count = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("config_count"))?)
+        } else {
+            None
+        };
+        let p_settings = if r.left() > 0 {
+            Some(crate::bounded::BoundedVec::<crate::types::ConstellationSettings, 41>::decode_counted(r, p_config_count.map_or(0, u64::from)).map_err(|e| e.at("settings"))?)
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             max_channels: p_max_channels,
@@ -8358,15 +8430,28 @@ impl crate::wire::Wire for GnssConstellationSettings {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
-        let v = &self.max_channels;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_channels"))?;
-        let v = &self.config_count;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("config_count"))?;
-        let v = &self.settings;
-        v.encode_counted(w, u64::from(self.config_count))
-            .map_err(|e| e.at("settings"))?;
+        if let Some(v) = &self.max_channels {
+            optionals.present("max_channels")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("max_channels"))?;
+        } else {
+            optionals.absent("max_channels");
+        }
+        if let Some(v) = &self.config_count {
+            optionals.present("config_count")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("config_count"))?;
+        } else {
+            optionals.absent("config_count");
+        }
+        if let Some(v) = &self.settings {
+            optionals.present("settings")?;
+            v.encode_counted(w, self.config_count.map_or(0, u64::from))
+                .map_err(|e| e.at("settings"))?;
+        } else {
+            optionals.absent("settings");
+        }
         Ok(())
     }
 
@@ -8376,15 +8461,18 @@ impl crate::wire::Wire for GnssConstellationSettings {
         let v = &self.function;
         crate::json::key(w, &mut first, "function")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.max_channels;
-        crate::json::key(w, &mut first, "max_channels")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.config_count;
-        crate::json::key(w, &mut first, "config_count")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.settings;
-        crate::json::key(w, &mut first, "settings")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.max_channels {
+            crate::json::key(w, &mut first, "max_channels")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.config_count {
+            crate::json::key(w, &mut first, "config_count")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.settings {
+            crate::json::key(w, &mut first, "settings")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -8400,15 +8488,15 @@ impl crate::json_read::FromJson for GnssConstellationSettings {
             "function",
             <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_max_channels = o.req(
+        let p_max_channels = o.opt(
             "max_channels",
             <u16 as crate::json_read::FromJson>::from_json,
         )?;
-        let p_config_count = o.req(
+        let p_config_count = o.opt(
             "config_count",
             <u8 as crate::json_read::FromJson>::from_json,
         )?;
-        let p_settings = o.req("settings", <crate::bounded::BoundedVec<crate::types::ConstellationSettings, 41> as crate::json_read::FromJson>::from_json)?;
+        let p_settings = o.opt("settings", <crate::bounded::BoundedVec<crate::types::ConstellationSettings, 41> as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             max_channels: p_max_channels,
@@ -8875,9 +8963,9 @@ pub struct GnssAssistedFixControl {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
     /// Assisted fix on or off. Sent for: write, read, save, load, default.
-    pub option: crate::types::AssistedFixOption,
+    pub option: Option<crate::types::AssistedFixOption>,
     /// No flags defined; set to 0xFF. Sent for: write, read, save, load, default.
-    pub flags: u8,
+    pub flags: Option<u8>,
 }
 
 impl Default for GnssAssistedFixControl {
@@ -8889,10 +8977,10 @@ impl Default for GnssAssistedFixControl {
 impl crate::wire::Wire for GnssAssistedFixControl {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
-        option: <crate::types::AssistedFixOption as crate::wire::Wire>::ZERO,
-        flags: <u8 as crate::wire::Wire>::ZERO,
+        option: None,
+        flags: None,
     };
-    const FIXED_SIZE: Option<usize> = Some(3);
+    const FIXED_SIZE: Option<usize> = None;
 
     // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
     // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
@@ -8901,9 +8989,19 @@ impl crate::wire::Wire for GnssAssistedFixControl {
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
-        let p_option = <crate::types::AssistedFixOption as crate::wire::Wire>::decode(r)
-            .map_err(|e| e.at("option"))?;
-        let p_flags = <u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("flags"))?;
+        let p_option = if r.left() > 0 {
+            Some(
+                <crate::types::AssistedFixOption as crate::wire::Wire>::decode(r)
+                    .map_err(|e| e.at("option"))?,
+            )
+        } else {
+            None
+        };
+        let p_flags = if r.left() > 0 {
+            Some(<u8 as crate::wire::Wire>::decode(r).map_err(|e| e.at("flags"))?)
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             option: p_option,
@@ -8912,12 +9010,21 @@ impl crate::wire::Wire for GnssAssistedFixControl {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
-        let v = &self.option;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("option"))?;
-        let v = &self.flags;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("flags"))?;
+        if let Some(v) = &self.option {
+            optionals.present("option")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("option"))?;
+        } else {
+            optionals.absent("option");
+        }
+        if let Some(v) = &self.flags {
+            optionals.present("flags")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("flags"))?;
+        } else {
+            optionals.absent("flags");
+        }
         Ok(())
     }
 
@@ -8927,12 +9034,14 @@ impl crate::wire::Wire for GnssAssistedFixControl {
         let v = &self.function;
         crate::json::key(w, &mut first, "function")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.option;
-        crate::json::key(w, &mut first, "option")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.flags;
-        crate::json::key(w, &mut first, "flags")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.option {
+            crate::json::key(w, &mut first, "option")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.flags {
+            crate::json::key(w, &mut first, "flags")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -8945,11 +9054,11 @@ impl crate::json_read::FromJson for GnssAssistedFixControl {
             "function",
             <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_option = o.req(
+        let p_option = o.opt(
             "option",
             <crate::types::AssistedFixOption as crate::json_read::FromJson>::from_json,
         )?;
-        let p_flags = o.req("flags", <u8 as crate::json_read::FromJson>::from_json)?;
+        let p_flags = o.opt("flags", <u8 as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             option: p_option,
@@ -9057,11 +9166,11 @@ pub struct GnssAssistTimeUpdate {
     /// Function selector (sent first).
     pub function: crate::types::FunctionSelector,
     /// GPS time of week. Units: s. Sent for: write, read.
-    pub tow: f64,
+    pub tow: Option<f64>,
     /// GPS week number. Sent for: write, read.
-    pub week_number: u16,
+    pub week_number: Option<u16>,
     /// Accuracy of the given time. Units: s. Sent for: write, read.
-    pub accuracy: f32,
+    pub accuracy: Option<f32>,
 }
 
 impl Default for GnssAssistTimeUpdate {
@@ -9073,11 +9182,11 @@ impl Default for GnssAssistTimeUpdate {
 impl crate::wire::Wire for GnssAssistTimeUpdate {
     const ZERO: Self = Self {
         function: <crate::types::FunctionSelector as crate::wire::Wire>::ZERO,
-        tow: <f64 as crate::wire::Wire>::ZERO,
-        week_number: <u16 as crate::wire::Wire>::ZERO,
-        accuracy: <f32 as crate::wire::Wire>::ZERO,
+        tow: None,
+        week_number: None,
+        accuracy: None,
     };
-    const FIXED_SIZE: Option<usize> = Some(15);
+    const FIXED_SIZE: Option<usize> = None;
 
     // Always inlined in optimised builds, so that a fixed layout decodes as straight-line
     // loads; not in debug builds, whose unoptimised frames would grow past a thread's stack.
@@ -9086,10 +9195,21 @@ impl crate::wire::Wire for GnssAssistTimeUpdate {
     fn decode(r: &mut crate::wire::Reader<'_>) -> Result<Self, crate::error::DecodeError> {
         let p_function = <crate::types::FunctionSelector as crate::wire::Wire>::decode(r)
             .map_err(|e| e.at("function"))?;
-        let p_tow = <f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?;
-        let p_week_number =
-            <u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("week_number"))?;
-        let p_accuracy = <f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("accuracy"))?;
+        let p_tow = if r.left() > 0 {
+            Some(<f64 as crate::wire::Wire>::decode(r).map_err(|e| e.at("tow"))?)
+        } else {
+            None
+        };
+        let p_week_number = if r.left() > 0 {
+            Some(<u16 as crate::wire::Wire>::decode(r).map_err(|e| e.at("week_number"))?)
+        } else {
+            None
+        };
+        let p_accuracy = if r.left() > 0 {
+            Some(<f32 as crate::wire::Wire>::decode(r).map_err(|e| e.at("accuracy"))?)
+        } else {
+            None
+        };
         Ok(Self {
             function: p_function,
             tow: p_tow,
@@ -9099,14 +9219,27 @@ impl crate::wire::Wire for GnssAssistTimeUpdate {
     }
 
     fn encode(&self, w: &mut crate::wire::Writer<'_>) -> Result<(), crate::error::EncodeError> {
+        let mut optionals = crate::wire::Optionals::new();
         let v = &self.function;
         crate::wire::Wire::encode(v, w).map_err(|e| e.at("function"))?;
-        let v = &self.tow;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("tow"))?;
-        let v = &self.week_number;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("week_number"))?;
-        let v = &self.accuracy;
-        crate::wire::Wire::encode(v, w).map_err(|e| e.at("accuracy"))?;
+        if let Some(v) = &self.tow {
+            optionals.present("tow")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("tow"))?;
+        } else {
+            optionals.absent("tow");
+        }
+        if let Some(v) = &self.week_number {
+            optionals.present("week_number")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("week_number"))?;
+        } else {
+            optionals.absent("week_number");
+        }
+        if let Some(v) = &self.accuracy {
+            optionals.present("accuracy")?;
+            crate::wire::Wire::encode(v, w).map_err(|e| e.at("accuracy"))?;
+        } else {
+            optionals.absent("accuracy");
+        }
         Ok(())
     }
 
@@ -9116,15 +9249,18 @@ impl crate::wire::Wire for GnssAssistTimeUpdate {
         let v = &self.function;
         crate::json::key(w, &mut first, "function")?;
         crate::wire::Wire::write_json(v, w)?;
-        let v = &self.tow;
-        crate::json::key(w, &mut first, "tow")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.week_number;
-        crate::json::key(w, &mut first, "week_number")?;
-        crate::wire::Wire::write_json(v, w)?;
-        let v = &self.accuracy;
-        crate::json::key(w, &mut first, "accuracy")?;
-        crate::wire::Wire::write_json(v, w)?;
+        if let Some(v) = &self.tow {
+            crate::json::key(w, &mut first, "tow")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.week_number {
+            crate::json::key(w, &mut first, "week_number")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
+        if let Some(v) = &self.accuracy {
+            crate::json::key(w, &mut first, "accuracy")?;
+            crate::wire::Wire::write_json(v, w)?;
+        }
         w.write_str("}")
     }
 }
@@ -9137,12 +9273,12 @@ impl crate::json_read::FromJson for GnssAssistTimeUpdate {
             "function",
             <crate::types::FunctionSelector as crate::json_read::FromJson>::from_json,
         )?;
-        let p_tow = o.req("tow", <f64 as crate::json_read::FromJson>::from_json)?;
-        let p_week_number = o.req(
+        let p_tow = o.opt("tow", <f64 as crate::json_read::FromJson>::from_json)?;
+        let p_week_number = o.opt(
             "week_number",
             <u16 as crate::json_read::FromJson>::from_json,
         )?;
-        let p_accuracy = o.req("accuracy", <f32 as crate::json_read::FromJson>::from_json)?;
+        let p_accuracy = o.opt("accuracy", <f32 as crate::json_read::FromJson>::from_json)?;
         Ok(Self {
             function: p_function,
             tow: p_tow,

@@ -2477,6 +2477,123 @@ fn case_get_supported_events_actions_reply() {
     );
 }
 
+/// `imu_message_format_read_short` (tests/vectors/mip/3dm_streaming.yaml:1361)
+#[test]
+fn case_imu_message_format_read_short() {
+    check(
+        "75650c03030802f6f4",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `imu_message_format_save_short` (tests/vectors/mip/3dm_streaming.yaml:1373)
+#[test]
+fn case_imu_message_format_save_short() {
+    check(
+        "75650c03030803f7f5",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":3}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_message_format_read_short` (tests/vectors/mip/3dm_streaming.yaml:1385)
+#[test]
+fn case_gnss_message_format_read_short() {
+    check(
+        "75650c03030902f7f6",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_read_short` (tests/vectors/mip/3dm_streaming.yaml:1397)
+#[test]
+fn case_filter_message_format_read_short() {
+    check(
+        "75650c03030a02f8f8",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `filter_message_format_default_short` (tests/vectors/mip/3dm_streaming.yaml:1409)
+#[test]
+fn case_filter_message_format_default_short() {
+    check(
+        "75650c03030a05fbfb",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":5}}]}",
+        ],
+        false,
+    );
+}
+
+/// `data_stream_control_read_short` (tests/vectors/mip/3dm_streaming.yaml:1421)
+#[test]
+fn case_data_stream_control_read_short() {
+    check(
+        "75650c0404110201020f",
+        Some("gx5_45"),
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{\"function\":2,\"device_selector\":1}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_constellation_settings_read_short` (tests/vectors/mip/3dm_streaming.yaml:1434)
+#[test]
+fn case_gnss_constellation_settings_read_short() {
+    check(
+        "75650c030321020f26",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_settings\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assisted_fix_control_read_short` (tests/vectors/mip/3dm_streaming.yaml:1446)
+#[test]
+fn case_gnss_assisted_fix_control_read_short() {
+    check(
+        "75650c03032302112a",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_control\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
+/// `gnss_assist_time_update_read_short` (tests/vectors/mip/3dm_streaming.yaml:1458)
+#[test]
+fn case_gnss_assist_time_update_read_short() {
+    check(
+        "75650c03032402122c",
+        None,
+        &[
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\",\"values\":{\"function\":2}}]}",
+        ],
+        false,
+    );
+}
+
 /// `frame_config_write_antenna_offset` (tests/vectors/mip/aiding.yaml:13)
 #[test]
 fn case_frame_config_write_antenna_offset() {

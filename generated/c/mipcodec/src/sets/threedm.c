@@ -8650,22 +8650,28 @@ static int mip_threedm_imu_message_format_read(mip_reader_t *r, mip_threedm_imu_
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "num_descriptors");
-    if (mip_rd_u8(r, &out->num_descriptors)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "descriptors");
-    if (out->num_descriptors > 83) {
-        return mip_rd_count_error(r, (uint64_t)out->num_descriptors, 83);
-    }
-    for (i = 0; i < (size_t)out->num_descriptors; i++) {
-        mip_rd_index(r, i);
-        if (mip_descriptor_rate_read(r, &out->descriptors[i])) {
+    if (r->pos < r->len) {
+        out->has_num_descriptors = true;
+        mip_rd_push(r, "num_descriptors");
+        if (mip_rd_u8(r, &out->num_descriptors)) {
             return -1;
         }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
+    if (r->pos < r->len) {
+        out->has_descriptors = true;
+        mip_rd_push(r, "descriptors");
+        if (out->num_descriptors > 83) {
+            return mip_rd_count_error(r, (uint64_t)out->num_descriptors, 83);
+        }
+        for (i = 0; i < (size_t)out->num_descriptors; i++) {
+            mip_rd_index(r, i);
+            if (mip_descriptor_rate_read(r, &out->descriptors[i])) {
+                return -1;
+            }
+        }
+        mip_rd_pop(r);
+    }
     return mip_rd_finish(r);
 }
 
@@ -8673,18 +8679,31 @@ static mip_status_t mip_threedm_imu_message_format_write(mip_writer_t *w,
                                                          const mip_threedm_imu_message_format_t *in) {
     mip_status_t st;
     size_t i;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->num_descriptors)) != MIP_OK) {
-        return st;
-    }
-    if (in->num_descriptors > 83) {
-        return MIP_ERR_INVALID;
-    }
-    for (i = 0; i < (size_t)in->num_descriptors; i++) {
-        if ((st = mip_descriptor_rate_write(w, &in->descriptors[i])) != MIP_OK) {
+    if (!in->has_num_descriptors) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->num_descriptors)) != MIP_OK) {
             return st;
+        }
+    }
+    if (!in->has_descriptors) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if (in->num_descriptors > 83) {
+            return MIP_ERR_INVALID;
+        }
+        for (i = 0; i < (size_t)in->num_descriptors; i++) {
+            if ((st = mip_descriptor_rate_write(w, &in->descriptors[i])) != MIP_OK) {
+                return st;
+            }
         }
     }
     return MIP_OK;
@@ -8717,15 +8736,19 @@ void mip_threedm_imu_message_format_to_json(mip_jw_t *w, const mip_threedm_imu_m
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "function");
     mip_jw_u8(w, &in->function);
-    mip_jw_key(w, &first, "num_descriptors");
-    mip_jw_u8(w, &in->num_descriptors);
-    mip_jw_key(w, &first, "descriptors");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->num_descriptors && i < 83; i++) {
-        mip_jw_sep(w, i);
-        mip_descriptor_rate_to_json(w, &in->descriptors[i]);
+    if (in->has_num_descriptors) {
+        mip_jw_key(w, &first, "num_descriptors");
+        mip_jw_u8(w, &in->num_descriptors);
     }
-    mip_jw_raw(w, "]", 1);
+    if (in->has_descriptors) {
+        mip_jw_key(w, &first, "descriptors");
+        mip_jw_raw(w, "[", 1);
+        for (i = 0; i < (size_t)in->num_descriptors && i < 83; i++) {
+            mip_jw_sep(w, i);
+            mip_descriptor_rate_to_json(w, &in->descriptors[i]);
+        }
+        mip_jw_raw(w, "]", 1);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -8734,6 +8757,7 @@ int mip_threedm_imu_message_format_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "num_descriptors", "descriptors"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     size_t i;
     size_t it = 0;
     size_t ep = 0;
@@ -8753,10 +8777,12 @@ int mip_threedm_imu_message_format_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "num_descriptors", &vp);
+    out->has_num_descriptors = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"num_descriptors\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"num_descriptors\" given after an absent one");
+    } else {
         mip_jr_push(jr, "num_descriptors");
         if (mip_jr_u8(jr, vp, &out->num_descriptors)) {
             return -1;
@@ -8764,10 +8790,12 @@ int mip_threedm_imu_message_format_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "descriptors", &vp);
+    out->has_descriptors = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"descriptors\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"descriptors\" given after an absent one");
+    } else {
         mip_jr_push(jr, "descriptors");
         if (mip_jr_array(jr, vp, &it)) {
             return -1;
@@ -8947,22 +8975,28 @@ static int mip_threedm_gnss_message_format_read(mip_reader_t *r, mip_threedm_gns
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "num_descriptors");
-    if (mip_rd_u8(r, &out->num_descriptors)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "descriptors");
-    if (out->num_descriptors > 83) {
-        return mip_rd_count_error(r, (uint64_t)out->num_descriptors, 83);
-    }
-    for (i = 0; i < (size_t)out->num_descriptors; i++) {
-        mip_rd_index(r, i);
-        if (mip_descriptor_rate_read(r, &out->descriptors[i])) {
+    if (r->pos < r->len) {
+        out->has_num_descriptors = true;
+        mip_rd_push(r, "num_descriptors");
+        if (mip_rd_u8(r, &out->num_descriptors)) {
             return -1;
         }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
+    if (r->pos < r->len) {
+        out->has_descriptors = true;
+        mip_rd_push(r, "descriptors");
+        if (out->num_descriptors > 83) {
+            return mip_rd_count_error(r, (uint64_t)out->num_descriptors, 83);
+        }
+        for (i = 0; i < (size_t)out->num_descriptors; i++) {
+            mip_rd_index(r, i);
+            if (mip_descriptor_rate_read(r, &out->descriptors[i])) {
+                return -1;
+            }
+        }
+        mip_rd_pop(r);
+    }
     return mip_rd_finish(r);
 }
 
@@ -8970,18 +9004,31 @@ static mip_status_t mip_threedm_gnss_message_format_write(mip_writer_t *w,
                                                           const mip_threedm_gnss_message_format_t *in) {
     mip_status_t st;
     size_t i;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->num_descriptors)) != MIP_OK) {
-        return st;
-    }
-    if (in->num_descriptors > 83) {
-        return MIP_ERR_INVALID;
-    }
-    for (i = 0; i < (size_t)in->num_descriptors; i++) {
-        if ((st = mip_descriptor_rate_write(w, &in->descriptors[i])) != MIP_OK) {
+    if (!in->has_num_descriptors) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->num_descriptors)) != MIP_OK) {
             return st;
+        }
+    }
+    if (!in->has_descriptors) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if (in->num_descriptors > 83) {
+            return MIP_ERR_INVALID;
+        }
+        for (i = 0; i < (size_t)in->num_descriptors; i++) {
+            if ((st = mip_descriptor_rate_write(w, &in->descriptors[i])) != MIP_OK) {
+                return st;
+            }
         }
     }
     return MIP_OK;
@@ -9014,15 +9061,19 @@ void mip_threedm_gnss_message_format_to_json(mip_jw_t *w, const mip_threedm_gnss
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "function");
     mip_jw_u8(w, &in->function);
-    mip_jw_key(w, &first, "num_descriptors");
-    mip_jw_u8(w, &in->num_descriptors);
-    mip_jw_key(w, &first, "descriptors");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->num_descriptors && i < 83; i++) {
-        mip_jw_sep(w, i);
-        mip_descriptor_rate_to_json(w, &in->descriptors[i]);
+    if (in->has_num_descriptors) {
+        mip_jw_key(w, &first, "num_descriptors");
+        mip_jw_u8(w, &in->num_descriptors);
     }
-    mip_jw_raw(w, "]", 1);
+    if (in->has_descriptors) {
+        mip_jw_key(w, &first, "descriptors");
+        mip_jw_raw(w, "[", 1);
+        for (i = 0; i < (size_t)in->num_descriptors && i < 83; i++) {
+            mip_jw_sep(w, i);
+            mip_descriptor_rate_to_json(w, &in->descriptors[i]);
+        }
+        mip_jw_raw(w, "]", 1);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -9031,6 +9082,7 @@ int mip_threedm_gnss_message_format_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "num_descriptors", "descriptors"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     size_t i;
     size_t it = 0;
     size_t ep = 0;
@@ -9050,10 +9102,12 @@ int mip_threedm_gnss_message_format_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "num_descriptors", &vp);
+    out->has_num_descriptors = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"num_descriptors\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"num_descriptors\" given after an absent one");
+    } else {
         mip_jr_push(jr, "num_descriptors");
         if (mip_jr_u8(jr, vp, &out->num_descriptors)) {
             return -1;
@@ -9061,10 +9115,12 @@ int mip_threedm_gnss_message_format_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "descriptors", &vp);
+    out->has_descriptors = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"descriptors\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"descriptors\" given after an absent one");
+    } else {
         mip_jr_push(jr, "descriptors");
         if (mip_jr_array(jr, vp, &it)) {
             return -1;
@@ -9244,22 +9300,28 @@ static int mip_threedm_filter_message_format_read(mip_reader_t *r, mip_threedm_f
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "num_descriptors");
-    if (mip_rd_u8(r, &out->num_descriptors)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "descriptors");
-    if (out->num_descriptors > 83) {
-        return mip_rd_count_error(r, (uint64_t)out->num_descriptors, 83);
-    }
-    for (i = 0; i < (size_t)out->num_descriptors; i++) {
-        mip_rd_index(r, i);
-        if (mip_descriptor_rate_read(r, &out->descriptors[i])) {
+    if (r->pos < r->len) {
+        out->has_num_descriptors = true;
+        mip_rd_push(r, "num_descriptors");
+        if (mip_rd_u8(r, &out->num_descriptors)) {
             return -1;
         }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
+    if (r->pos < r->len) {
+        out->has_descriptors = true;
+        mip_rd_push(r, "descriptors");
+        if (out->num_descriptors > 83) {
+            return mip_rd_count_error(r, (uint64_t)out->num_descriptors, 83);
+        }
+        for (i = 0; i < (size_t)out->num_descriptors; i++) {
+            mip_rd_index(r, i);
+            if (mip_descriptor_rate_read(r, &out->descriptors[i])) {
+                return -1;
+            }
+        }
+        mip_rd_pop(r);
+    }
     return mip_rd_finish(r);
 }
 
@@ -9267,18 +9329,31 @@ static mip_status_t mip_threedm_filter_message_format_write(mip_writer_t *w,
                                                             const mip_threedm_filter_message_format_t *in) {
     mip_status_t st;
     size_t i;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->num_descriptors)) != MIP_OK) {
-        return st;
-    }
-    if (in->num_descriptors > 83) {
-        return MIP_ERR_INVALID;
-    }
-    for (i = 0; i < (size_t)in->num_descriptors; i++) {
-        if ((st = mip_descriptor_rate_write(w, &in->descriptors[i])) != MIP_OK) {
+    if (!in->has_num_descriptors) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->num_descriptors)) != MIP_OK) {
             return st;
+        }
+    }
+    if (!in->has_descriptors) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if (in->num_descriptors > 83) {
+            return MIP_ERR_INVALID;
+        }
+        for (i = 0; i < (size_t)in->num_descriptors; i++) {
+            if ((st = mip_descriptor_rate_write(w, &in->descriptors[i])) != MIP_OK) {
+                return st;
+            }
         }
     }
     return MIP_OK;
@@ -9311,15 +9386,19 @@ void mip_threedm_filter_message_format_to_json(mip_jw_t *w, const mip_threedm_fi
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "function");
     mip_jw_u8(w, &in->function);
-    mip_jw_key(w, &first, "num_descriptors");
-    mip_jw_u8(w, &in->num_descriptors);
-    mip_jw_key(w, &first, "descriptors");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->num_descriptors && i < 83; i++) {
-        mip_jw_sep(w, i);
-        mip_descriptor_rate_to_json(w, &in->descriptors[i]);
+    if (in->has_num_descriptors) {
+        mip_jw_key(w, &first, "num_descriptors");
+        mip_jw_u8(w, &in->num_descriptors);
     }
-    mip_jw_raw(w, "]", 1);
+    if (in->has_descriptors) {
+        mip_jw_key(w, &first, "descriptors");
+        mip_jw_raw(w, "[", 1);
+        for (i = 0; i < (size_t)in->num_descriptors && i < 83; i++) {
+            mip_jw_sep(w, i);
+            mip_descriptor_rate_to_json(w, &in->descriptors[i]);
+        }
+        mip_jw_raw(w, "]", 1);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -9328,6 +9407,7 @@ int mip_threedm_filter_message_format_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "num_descriptors", "descriptors"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     size_t i;
     size_t it = 0;
     size_t ep = 0;
@@ -9347,10 +9427,12 @@ int mip_threedm_filter_message_format_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "num_descriptors", &vp);
+    out->has_num_descriptors = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"num_descriptors\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"num_descriptors\" given after an absent one");
+    } else {
         mip_jr_push(jr, "num_descriptors");
         if (mip_jr_u8(jr, vp, &out->num_descriptors)) {
             return -1;
@@ -9358,10 +9440,12 @@ int mip_threedm_filter_message_format_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "descriptors", &vp);
+    out->has_descriptors = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"descriptors\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"descriptors\" given after an absent one");
+    } else {
         mip_jr_push(jr, "descriptors");
         if (mip_jr_array(jr, vp, &it)) {
             return -1;
@@ -10343,11 +10427,14 @@ static int mip_threedm_data_stream_control_gx5_45_read(mip_reader_t *r,
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "enable");
-    if (mip_rd_u8(r, &out->enable)) {
-        return -1;
+    if (r->pos < r->len) {
+        out->has_enable = true;
+        mip_rd_push(r, "enable");
+        if (mip_rd_u8(r, &out->enable)) {
+            return -1;
+        }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
     return mip_rd_finish(r);
 }
 
@@ -10355,14 +10442,21 @@ static mip_status_t
 mip_threedm_data_stream_control_gx5_45_write(mip_writer_t *w,
                                              const mip_threedm_data_stream_control_gx5_45_t *in) {
     mip_status_t st;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
     if ((st = mip_wr_u8(w, &in->device_selector)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->enable)) != MIP_OK) {
-        return st;
+    if (!in->has_enable) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->enable)) != MIP_OK) {
+            return st;
+        }
     }
     return MIP_OK;
 }
@@ -10380,32 +10474,13 @@ mip_threedm_data_stream_control_gx5_45_encode(const mip_threedm_data_stream_cont
     return st;
 }
 
-/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_threedm_data_stream_control_gx5_45_load(const uint8_t *d,
-                                                       mip_threedm_data_stream_control_gx5_45_t *out) {
-    out->function = mip_ld_u8(d + 0);
-    out->device_selector = mip_ld_u8(d + 1);
-    out->enable = mip_ld_u8(d + 2);
-    return 0;
-}
-
-/* The general reader: lengths other than 3, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_gx5_45_decode_read(
-    const uint8_t *data, size_t len, mip_threedm_data_stream_control_gx5_45_t *out, mip_decode_error_t *err) {
+mip_status_t mip_threedm_data_stream_control_gx5_45_decode(const uint8_t *data, size_t len,
+                                                           mip_threedm_data_stream_control_gx5_45_t *out,
+                                                           mip_decode_error_t *err) {
     mip_reader_t r;
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_threedm_data_stream_control_gx5_45_decode(const uint8_t *data, size_t len,
-                                                           mip_threedm_data_stream_control_gx5_45_t *out,
-                                                           mip_decode_error_t *err) {
-    if (len == 3 && mip_threedm_data_stream_control_gx5_45_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_threedm_data_stream_control_gx5_45_decode_read(data, len, out, err);
 }
 
 void mip_threedm_data_stream_control_gx5_45_to_json(mip_jw_t *w,
@@ -10416,8 +10491,10 @@ void mip_threedm_data_stream_control_gx5_45_to_json(mip_jw_t *w,
     mip_jw_u8(w, &in->function);
     mip_jw_key(w, &first, "device_selector");
     mip_jw_u8(w, &in->device_selector);
-    mip_jw_key(w, &first, "enable");
-    mip_jw_u8(w, &in->enable);
+    if (in->has_enable) {
+        mip_jw_key(w, &first, "enable");
+        mip_jw_u8(w, &in->enable);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -10426,6 +10503,7 @@ int mip_threedm_data_stream_control_gx5_45_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "device_selector", "enable"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     memset(out, 0, sizeof *out);
     if (mip_jr_object(jr, pos, keys, 3)) {
         return -1;
@@ -10453,10 +10531,12 @@ int mip_threedm_data_stream_control_gx5_45_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "enable", &vp);
+    out->has_enable = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"enable\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"enable\" given after an absent one");
+    } else {
         mip_jr_push(jr, "enable");
         if (mip_jr_u8(jr, vp, &out->enable)) {
             return -1;
@@ -10958,27 +11038,36 @@ static int mip_threedm_gnss_constellation_settings_read(mip_reader_t *r,
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "max_channels");
-    if (mip_rd_u16(r, &out->max_channels)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "config_count");
-    if (mip_rd_u8(r, &out->config_count)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "settings");
-    if (out->config_count > 41) {
-        return mip_rd_count_error(r, (uint64_t)out->config_count, 41);
-    }
-    for (i = 0; i < (size_t)out->config_count; i++) {
-        mip_rd_index(r, i);
-        if (mip_constellation_settings_read(r, &out->settings[i])) {
+    if (r->pos < r->len) {
+        out->has_max_channels = true;
+        mip_rd_push(r, "max_channels");
+        if (mip_rd_u16(r, &out->max_channels)) {
             return -1;
         }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
+    if (r->pos < r->len) {
+        out->has_config_count = true;
+        mip_rd_push(r, "config_count");
+        if (mip_rd_u8(r, &out->config_count)) {
+            return -1;
+        }
+        mip_rd_pop(r);
+    }
+    if (r->pos < r->len) {
+        out->has_settings = true;
+        mip_rd_push(r, "settings");
+        if (out->config_count > 41) {
+            return mip_rd_count_error(r, (uint64_t)out->config_count, 41);
+        }
+        for (i = 0; i < (size_t)out->config_count; i++) {
+            mip_rd_index(r, i);
+            if (mip_constellation_settings_read(r, &out->settings[i])) {
+                return -1;
+            }
+        }
+        mip_rd_pop(r);
+    }
     return mip_rd_finish(r);
 }
 
@@ -10987,21 +11076,40 @@ mip_threedm_gnss_constellation_settings_write(mip_writer_t *w,
                                               const mip_threedm_gnss_constellation_settings_t *in) {
     mip_status_t st;
     size_t i;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->max_channels)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u8(w, &in->config_count)) != MIP_OK) {
-        return st;
-    }
-    if (in->config_count > 41) {
-        return MIP_ERR_INVALID;
-    }
-    for (i = 0; i < (size_t)in->config_count; i++) {
-        if ((st = mip_constellation_settings_write(w, &in->settings[i])) != MIP_OK) {
+    if (!in->has_max_channels) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u16(w, &in->max_channels)) != MIP_OK) {
             return st;
+        }
+    }
+    if (!in->has_config_count) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->config_count)) != MIP_OK) {
+            return st;
+        }
+    }
+    if (!in->has_settings) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if (in->config_count > 41) {
+            return MIP_ERR_INVALID;
+        }
+        for (i = 0; i < (size_t)in->config_count; i++) {
+            if ((st = mip_constellation_settings_write(w, &in->settings[i])) != MIP_OK) {
+                return st;
+            }
         }
     }
     return MIP_OK;
@@ -11036,17 +11144,23 @@ void mip_threedm_gnss_constellation_settings_to_json(mip_jw_t *w,
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "function");
     mip_jw_u8(w, &in->function);
-    mip_jw_key(w, &first, "max_channels");
-    mip_jw_u16(w, &in->max_channels);
-    mip_jw_key(w, &first, "config_count");
-    mip_jw_u8(w, &in->config_count);
-    mip_jw_key(w, &first, "settings");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->config_count && i < 41; i++) {
-        mip_jw_sep(w, i);
-        mip_constellation_settings_to_json(w, &in->settings[i]);
+    if (in->has_max_channels) {
+        mip_jw_key(w, &first, "max_channels");
+        mip_jw_u16(w, &in->max_channels);
     }
-    mip_jw_raw(w, "]", 1);
+    if (in->has_config_count) {
+        mip_jw_key(w, &first, "config_count");
+        mip_jw_u8(w, &in->config_count);
+    }
+    if (in->has_settings) {
+        mip_jw_key(w, &first, "settings");
+        mip_jw_raw(w, "[", 1);
+        for (i = 0; i < (size_t)in->config_count && i < 41; i++) {
+            mip_jw_sep(w, i);
+            mip_constellation_settings_to_json(w, &in->settings[i]);
+        }
+        mip_jw_raw(w, "]", 1);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -11055,6 +11169,7 @@ int mip_threedm_gnss_constellation_settings_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "max_channels", "config_count", "settings"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     size_t i;
     size_t it = 0;
     size_t ep = 0;
@@ -11074,10 +11189,12 @@ int mip_threedm_gnss_constellation_settings_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "max_channels", &vp);
+    out->has_max_channels = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"max_channels\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"max_channels\" given after an absent one");
+    } else {
         mip_jr_push(jr, "max_channels");
         if (mip_jr_u16(jr, vp, &out->max_channels)) {
             return -1;
@@ -11085,10 +11202,12 @@ int mip_threedm_gnss_constellation_settings_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "config_count", &vp);
+    out->has_config_count = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"config_count\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"config_count\" given after an absent one");
+    } else {
         mip_jr_push(jr, "config_count");
         if (mip_jr_u8(jr, vp, &out->config_count)) {
             return -1;
@@ -11096,10 +11215,12 @@ int mip_threedm_gnss_constellation_settings_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "settings", &vp);
+    out->has_settings = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"settings\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"settings\" given after an absent one");
+    } else {
         mip_jr_push(jr, "settings");
         if (mip_jr_array(jr, vp, &it)) {
             return -1;
@@ -11754,16 +11875,22 @@ static int mip_threedm_gnss_assisted_fix_control_read(mip_reader_t *r,
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "option");
-    if (mip_rd_u8(r, &out->option)) {
-        return -1;
+    if (r->pos < r->len) {
+        out->has_option = true;
+        mip_rd_push(r, "option");
+        if (mip_rd_u8(r, &out->option)) {
+            return -1;
+        }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "flags");
-    if (mip_rd_u8(r, &out->flags)) {
-        return -1;
+    if (r->pos < r->len) {
+        out->has_flags = true;
+        mip_rd_push(r, "flags");
+        if (mip_rd_u8(r, &out->flags)) {
+            return -1;
+        }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
     return mip_rd_finish(r);
 }
 
@@ -11771,14 +11898,27 @@ static mip_status_t
 mip_threedm_gnss_assisted_fix_control_write(mip_writer_t *w,
                                             const mip_threedm_gnss_assisted_fix_control_t *in) {
     mip_status_t st;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->option)) != MIP_OK) {
-        return st;
+    if (!in->has_option) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->option)) != MIP_OK) {
+            return st;
+        }
     }
-    if ((st = mip_wr_u8(w, &in->flags)) != MIP_OK) {
-        return st;
+    if (!in->has_flags) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u8(w, &in->flags)) != MIP_OK) {
+            return st;
+        }
     }
     return MIP_OK;
 }
@@ -11796,32 +11936,13 @@ mip_threedm_gnss_assisted_fix_control_encode(const mip_threedm_gnss_assisted_fix
     return st;
 }
 
-/* The layout is 3 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_threedm_gnss_assisted_fix_control_load(const uint8_t *d,
-                                                      mip_threedm_gnss_assisted_fix_control_t *out) {
-    out->function = mip_ld_u8(d + 0);
-    out->option = mip_ld_u8(d + 1);
-    out->flags = mip_ld_u8(d + 2);
-    return 0;
-}
-
-/* The general reader: lengths other than 3, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_threedm_gnss_assisted_fix_control_decode_read(
-    const uint8_t *data, size_t len, mip_threedm_gnss_assisted_fix_control_t *out, mip_decode_error_t *err) {
+mip_status_t mip_threedm_gnss_assisted_fix_control_decode(const uint8_t *data, size_t len,
+                                                          mip_threedm_gnss_assisted_fix_control_t *out,
+                                                          mip_decode_error_t *err) {
     mip_reader_t r;
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assisted_fix_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_threedm_gnss_assisted_fix_control_decode(const uint8_t *data, size_t len,
-                                                          mip_threedm_gnss_assisted_fix_control_t *out,
-                                                          mip_decode_error_t *err) {
-    if (len == 3 && mip_threedm_gnss_assisted_fix_control_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_threedm_gnss_assisted_fix_control_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_assisted_fix_control_to_json(mip_jw_t *w,
@@ -11830,10 +11951,14 @@ void mip_threedm_gnss_assisted_fix_control_to_json(mip_jw_t *w,
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "function");
     mip_jw_u8(w, &in->function);
-    mip_jw_key(w, &first, "option");
-    mip_jw_u8(w, &in->option);
-    mip_jw_key(w, &first, "flags");
-    mip_jw_u8(w, &in->flags);
+    if (in->has_option) {
+        mip_jw_key(w, &first, "option");
+        mip_jw_u8(w, &in->option);
+    }
+    if (in->has_flags) {
+        mip_jw_key(w, &first, "flags");
+        mip_jw_u8(w, &in->flags);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -11842,6 +11967,7 @@ int mip_threedm_gnss_assisted_fix_control_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "option", "flags"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     memset(out, 0, sizeof *out);
     if (mip_jr_object(jr, pos, keys, 3)) {
         return -1;
@@ -11858,10 +11984,12 @@ int mip_threedm_gnss_assisted_fix_control_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "option", &vp);
+    out->has_option = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"option\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"option\" given after an absent one");
+    } else {
         mip_jr_push(jr, "option");
         if (mip_jr_u8(jr, vp, &out->option)) {
             return -1;
@@ -11869,10 +11997,12 @@ int mip_threedm_gnss_assisted_fix_control_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "flags", &vp);
+    out->has_flags = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"flags\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"flags\" given after an absent one");
+    } else {
         mip_jr_push(jr, "flags");
         if (mip_jr_u8(jr, vp, &out->flags)) {
             return -1;
@@ -12009,38 +12139,66 @@ static int mip_threedm_gnss_assist_time_update_read(mip_reader_t *r,
         return -1;
     }
     mip_rd_pop(r);
-    mip_rd_push(r, "tow");
-    if (mip_rd_f64(r, &out->tow)) {
-        return -1;
+    if (r->pos < r->len) {
+        out->has_tow = true;
+        mip_rd_push(r, "tow");
+        if (mip_rd_f64(r, &out->tow)) {
+            return -1;
+        }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "week_number");
-    if (mip_rd_u16(r, &out->week_number)) {
-        return -1;
+    if (r->pos < r->len) {
+        out->has_week_number = true;
+        mip_rd_push(r, "week_number");
+        if (mip_rd_u16(r, &out->week_number)) {
+            return -1;
+        }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "accuracy");
-    if (mip_rd_f32(r, &out->accuracy)) {
-        return -1;
+    if (r->pos < r->len) {
+        out->has_accuracy = true;
+        mip_rd_push(r, "accuracy");
+        if (mip_rd_f32(r, &out->accuracy)) {
+            return -1;
+        }
+        mip_rd_pop(r);
     }
-    mip_rd_pop(r);
     return mip_rd_finish(r);
 }
 
 static mip_status_t
 mip_threedm_gnss_assist_time_update_write(mip_writer_t *w, const mip_threedm_gnss_assist_time_update_t *in) {
     mip_status_t st;
+    int absent = 0;
     if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
         return st;
     }
-    if ((st = mip_wr_f64(w, &in->tow)) != MIP_OK) {
-        return st;
+    if (!in->has_tow) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_f64(w, &in->tow)) != MIP_OK) {
+            return st;
+        }
     }
-    if ((st = mip_wr_u16(w, &in->week_number)) != MIP_OK) {
-        return st;
+    if (!in->has_week_number) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_u16(w, &in->week_number)) != MIP_OK) {
+            return st;
+        }
     }
-    if ((st = mip_wr_f32(w, &in->accuracy)) != MIP_OK) {
-        return st;
+    if (!in->has_accuracy) {
+        absent = 1;
+    } else if (absent) {
+        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+    } else {
+        if ((st = mip_wr_f32(w, &in->accuracy)) != MIP_OK) {
+            return st;
+        }
     }
     return MIP_OK;
 }
@@ -12057,33 +12215,13 @@ mip_status_t mip_threedm_gnss_assist_time_update_encode(const mip_threedm_gnss_a
     return st;
 }
 
-/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_threedm_gnss_assist_time_update_load(const uint8_t *d,
-                                                    mip_threedm_gnss_assist_time_update_t *out) {
-    out->function = mip_ld_u8(d + 0);
-    out->tow = mip_ld_f64(d + 1);
-    out->week_number = mip_ld_u16(d + 9);
-    out->accuracy = mip_ld_f32(d + 11);
-    return 0;
-}
-
-/* The general reader: lengths other than 15, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_threedm_gnss_assist_time_update_decode_read(
-    const uint8_t *data, size_t len, mip_threedm_gnss_assist_time_update_t *out, mip_decode_error_t *err) {
+mip_status_t mip_threedm_gnss_assist_time_update_decode(const uint8_t *data, size_t len,
+                                                        mip_threedm_gnss_assist_time_update_t *out,
+                                                        mip_decode_error_t *err) {
     mip_reader_t r;
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assist_time_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_threedm_gnss_assist_time_update_decode(const uint8_t *data, size_t len,
-                                                        mip_threedm_gnss_assist_time_update_t *out,
-                                                        mip_decode_error_t *err) {
-    if (len == 15 && mip_threedm_gnss_assist_time_update_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_threedm_gnss_assist_time_update_decode_read(data, len, out, err);
 }
 
 void mip_threedm_gnss_assist_time_update_to_json(mip_jw_t *w,
@@ -12092,12 +12230,18 @@ void mip_threedm_gnss_assist_time_update_to_json(mip_jw_t *w,
     mip_jw_raw(w, "{", 1);
     mip_jw_key(w, &first, "function");
     mip_jw_u8(w, &in->function);
-    mip_jw_key(w, &first, "tow");
-    mip_jw_f64(w, &in->tow);
-    mip_jw_key(w, &first, "week_number");
-    mip_jw_u16(w, &in->week_number);
-    mip_jw_key(w, &first, "accuracy");
-    mip_jw_f32(w, &in->accuracy);
+    if (in->has_tow) {
+        mip_jw_key(w, &first, "tow");
+        mip_jw_f64(w, &in->tow);
+    }
+    if (in->has_week_number) {
+        mip_jw_key(w, &first, "week_number");
+        mip_jw_u16(w, &in->week_number);
+    }
+    if (in->has_accuracy) {
+        mip_jw_key(w, &first, "accuracy");
+        mip_jw_f32(w, &in->accuracy);
+    }
     mip_jw_raw(w, "}", 1);
 }
 
@@ -12106,6 +12250,7 @@ int mip_threedm_gnss_assist_time_update_from_json(mip_jr_t *jr, size_t pos,
     static const char *const keys[] = {"function", "tow", "week_number", "accuracy"};
     size_t vp = 0;
     int found;
+    int absent = 0;
     memset(out, 0, sizeof *out);
     if (mip_jr_object(jr, pos, keys, 4)) {
         return -1;
@@ -12122,10 +12267,12 @@ int mip_threedm_gnss_assist_time_update_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "tow", &vp);
+    out->has_tow = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"tow\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"tow\" given after an absent one");
+    } else {
         mip_jr_push(jr, "tow");
         if (mip_jr_f64(jr, vp, &out->tow)) {
             return -1;
@@ -12133,10 +12280,12 @@ int mip_threedm_gnss_assist_time_update_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "week_number", &vp);
+    out->has_week_number = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"week_number\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"week_number\" given after an absent one");
+    } else {
         mip_jr_push(jr, "week_number");
         if (mip_jr_u16(jr, vp, &out->week_number)) {
             return -1;
@@ -12144,10 +12293,12 @@ int mip_threedm_gnss_assist_time_update_from_json(mip_jr_t *jr, size_t pos,
         mip_jr_pop(jr);
     }
     found = mip_jr_get(jr, pos, "accuracy", &vp);
+    out->has_accuracy = found == 1;
     if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"accuracy\"");
-    }
-    {
+        absent = 1;
+    } else if (absent) {
+        return mip_jr_fail(jr, "optional parameter \"accuracy\" given after an absent one");
+    } else {
         mip_jr_push(jr, "accuracy");
         if (mip_jr_f32(jr, vp, &out->accuracy)) {
             return -1;

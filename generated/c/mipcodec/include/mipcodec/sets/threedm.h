@@ -1418,7 +1418,10 @@ mip_status_t mip_threedm_base_rate_decode(const uint8_t *data, size_t len, mip_t
 /** IMU message format. Set, read, save, load or reset the IMU data (0x80) message format. */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read, save, load, default) */
-    uint8_t num_descriptors;          /* Number of descriptors (0 for every function except write). */
+    bool has_num_descriptors;         /* num_descriptors is present */
+    uint8_t num_descriptors; /* Number of descriptors (0 for every function except write, which may also leave
+                                it out). */
+    bool has_descriptors;    /* descriptors is present */
     mip_descriptor_rate_t
         descriptors[83]; /* Descriptors and rate decimations (decimation = base rate / desired rate). */
 } mip_threedm_imu_message_format_t;
@@ -1461,7 +1464,10 @@ mip_status_t mip_threedm_imu_message_format_response_decode(const uint8_t *data,
 /** GNSS message format. Set, read, save, load or reset the GNSS data (0x81) message format. */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read, save, load, default) */
-    uint8_t num_descriptors;          /* Number of descriptors (0 for every function except write). */
+    bool has_num_descriptors;         /* num_descriptors is present */
+    uint8_t num_descriptors; /* Number of descriptors (0 for every function except write, which may also leave
+                                it out). */
+    bool has_descriptors;    /* descriptors is present */
     mip_descriptor_rate_t
         descriptors[83]; /* Descriptors and rate decimations (decimation = base rate / desired rate). */
 } mip_threedm_gnss_message_format_t;
@@ -1505,7 +1511,10 @@ mip_status_t mip_threedm_gnss_message_format_response_decode(const uint8_t *data
  * format. */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read, save, load, default) */
-    uint8_t num_descriptors;          /* Number of descriptors (0 for every function except write). */
+    bool has_num_descriptors;         /* num_descriptors is present */
+    uint8_t num_descriptors; /* Number of descriptors (0 for every function except write, which may also leave
+                                it out). */
+    bool has_descriptors;    /* descriptors is present */
     mip_descriptor_rate_t
         descriptors[83]; /* Descriptors and rate decimations (decimation = base rate / desired rate). */
 } mip_threedm_filter_message_format_t;
@@ -1661,7 +1670,9 @@ mip_status_t mip_threedm_factory_streaming_decode(const uint8_t *data, size_t le
 typedef struct {
     mip_function_selector_t function;          /* function selector (write, read, save, load, default) */
     mip_gx5_stream_selector_t device_selector; /* Stream to control. */
-    uint8_t enable; /* 0x00 disable, 0x01 enable (default); ignored except for write. */
+    bool has_enable;                           /* enable is present */
+    uint8_t enable; /* 0x00 disable, 0x01 enable (default); ignored except for write, and may be left out by
+                       the other functions. */
 } mip_threedm_data_stream_control_gx5_45_t;
 
 /* Largest encoded data (after the field header). */
@@ -1765,8 +1776,11 @@ mip_status_t mip_threedm_raw_rtcm_message_decode(const uint8_t *data, size_t len
  * tracking channels each may reserve and use (32 channels in all; GLONASS and BeiDou not together). */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read, save, load, default) */
+    bool has_max_channels;            /* max_channels is present */
     uint16_t max_channels; /* Maximum tracking channels to use in total (0 up to the available channels). */
+    bool has_config_count; /* config_count is present */
     uint8_t config_count;  /* Number of constellation entries. */
+    bool has_settings;     /* settings is present */
     mip_constellation_settings_t settings[41]; /* Per-constellation settings. */
 } mip_threedm_gnss_constellation_settings_t;
 
@@ -1863,7 +1877,9 @@ mip_status_t mip_threedm_gnss_sbas_settings_response_decode(const uint8_t *data,
  * memory to shorten the time to first fix. Disabling it erases that memory. */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read, save, load, default) */
+    bool has_option;                  /* option is present */
     mip_assisted_fix_option_t option; /* Assisted fix on or off. */
+    bool has_flags;                   /* flags is present */
     uint8_t flags;                    /* No flags defined; set to 0xFF. */
 } mip_threedm_gnss_assisted_fix_control_t;
 
@@ -1907,8 +1923,11 @@ mip_threedm_gnss_assisted_fix_control_response_decode(const uint8_t *data, size_
  * enabled, so it can judge whether its saved satellite information is still usable. */
 typedef struct {
     mip_function_selector_t function; /* function selector (write, read) */
+    bool has_tow;                     /* tow is present */
     double tow;                       /* GPS time of week. [s] */
+    bool has_week_number;             /* week_number is present */
     uint16_t week_number;             /* GPS week number. */
+    bool has_accuracy;                /* accuracy is present */
     float accuracy;                   /* Accuracy of the given time. [s] */
 } mip_threedm_gnss_assist_time_update_t;
 

@@ -1377,8 +1377,9 @@ struct ImuMessageFormat {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    std::uint8_t num_descriptors{}; ///< Number of descriptors (0 for every function except write).
-    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+    std::optional<std::uint8_t> num_descriptors{};  ///< Number of descriptors (0 for every function except
+                                                    ///< write, which may also leave it out).
+    std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
     friend bool operator==(const ImuMessageFormat &a, const ImuMessageFormat &b) {
         (void)a;
@@ -1421,8 +1422,9 @@ struct GnssMessageFormat {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    std::uint8_t num_descriptors{}; ///< Number of descriptors (0 for every function except write).
-    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+    std::optional<std::uint8_t> num_descriptors{};  ///< Number of descriptors (0 for every function except
+                                                    ///< write, which may also leave it out).
+    std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
     friend bool operator==(const GnssMessageFormat &a, const GnssMessageFormat &b) {
         (void)a;
@@ -1465,8 +1467,9 @@ struct FilterMessageFormat {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    std::uint8_t num_descriptors{}; ///< Number of descriptors (0 for every function except write).
-    ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
+    std::optional<std::uint8_t> num_descriptors{};  ///< Number of descriptors (0 for every function except
+                                                    ///< write, which may also leave it out).
+    std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
     friend bool operator==(const FilterMessageFormat &a, const FilterMessageFormat &b) {
         (void)a;
@@ -1622,7 +1625,8 @@ struct DataStreamControlGx545 {
 
     ::mipcodec::types::FunctionSelector function{};         ///< Function selector.
     ::mipcodec::types::Gx5StreamSelector device_selector{}; ///< Stream to control.
-    std::uint8_t enable{}; ///< 0x00 disable, 0x01 enable (default); ignored except for write.
+    std::optional<std::uint8_t> enable{}; ///< 0x00 disable, 0x01 enable (default); ignored except for write,
+                                          ///< and may be left out by the other functions.
     friend bool operator==(const DataStreamControlGx545 &a, const DataStreamControlGx545 &b) {
         (void)a;
         (void)b;
@@ -1729,10 +1733,10 @@ struct GnssConstellationSettings {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    std::uint16_t
+    std::optional<std::uint16_t>
         max_channels{}; ///< Maximum tracking channels to use in total (0 up to the available channels).
-    std::uint8_t config_count{}; ///< Number of constellation entries.
-    ::mipcodec::BoundedVector<::mipcodec::types::ConstellationSettings, 41>
+    std::optional<std::uint8_t> config_count{}; ///< Number of constellation entries.
+    std::optional<::mipcodec::BoundedVector<::mipcodec::types::ConstellationSettings, 41>>
         settings{}; ///< Per-constellation settings.
     friend bool operator==(const GnssConstellationSettings &a, const GnssConstellationSettings &b) {
         (void)a;
@@ -1829,9 +1833,9 @@ struct GnssAssistedFixControl {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    ::mipcodec::types::AssistedFixOption option{};  ///< Assisted fix on or off.
-    std::uint8_t flags{};                           ///< No flags defined; set to 0xFF.
+    ::mipcodec::types::FunctionSelector function{};               ///< Function selector.
+    std::optional<::mipcodec::types::AssistedFixOption> option{}; ///< Assisted fix on or off.
+    std::optional<std::uint8_t> flags{};                          ///< No flags defined; set to 0xFF.
     friend bool operator==(const GnssAssistedFixControl &a, const GnssAssistedFixControl &b) {
         (void)a;
         (void)b;
@@ -1871,9 +1875,9 @@ struct GnssAssistTimeUpdate {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    double tow{};                                   ///< GPS time of week. [s]
-    std::uint16_t week_number{};                    ///< GPS week number.
-    float accuracy{};                               ///< Accuracy of the given time. [s]
+    std::optional<double> tow{};                    ///< GPS time of week. [s]
+    std::optional<std::uint16_t> week_number{};     ///< GPS week number.
+    std::optional<float> accuracy{};                ///< Accuracy of the given time. [s]
     friend bool operator==(const GnssAssistTimeUpdate &a, const GnssAssistTimeUpdate &b) {
         (void)a;
         (void)b;
@@ -4483,13 +4487,20 @@ template <> struct Codec<threedm::ImuMessageFormat> {
             err.enter("function");
             return false;
         }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
+        if (r.left() > 0) {
+            v.num_descriptors.emplace();
+            if (!read_value(r, (*v.num_descriptors), err)) {
+                err.enter("num_descriptors");
+                return false;
+            }
         }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
+        if (r.left() > 0) {
+            v.descriptors.emplace();
+            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
+                              err)) {
+                err.enter("descriptors");
+                return false;
+            }
         }
         return true;
     }
@@ -4498,8 +4509,24 @@ template <> struct Codec<threedm::ImuMessageFormat> {
         (void)v;
         bool absent = false;
         write_value(w, v.function);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        if (v.num_descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.num_descriptors));
+        } else {
+            absent = true;
+        }
+        if (v.descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };
@@ -4538,13 +4565,20 @@ template <> struct Codec<threedm::GnssMessageFormat> {
             err.enter("function");
             return false;
         }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
+        if (r.left() > 0) {
+            v.num_descriptors.emplace();
+            if (!read_value(r, (*v.num_descriptors), err)) {
+                err.enter("num_descriptors");
+                return false;
+            }
         }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
+        if (r.left() > 0) {
+            v.descriptors.emplace();
+            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
+                              err)) {
+                err.enter("descriptors");
+                return false;
+            }
         }
         return true;
     }
@@ -4553,8 +4587,24 @@ template <> struct Codec<threedm::GnssMessageFormat> {
         (void)v;
         bool absent = false;
         write_value(w, v.function);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        if (v.num_descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.num_descriptors));
+        } else {
+            absent = true;
+        }
+        if (v.descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };
@@ -4593,13 +4643,20 @@ template <> struct Codec<threedm::FilterMessageFormat> {
             err.enter("function");
             return false;
         }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
+        if (r.left() > 0) {
+            v.num_descriptors.emplace();
+            if (!read_value(r, (*v.num_descriptors), err)) {
+                err.enter("num_descriptors");
+                return false;
+            }
         }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
+        if (r.left() > 0) {
+            v.descriptors.emplace();
+            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
+                              err)) {
+                err.enter("descriptors");
+                return false;
+            }
         }
         return true;
     }
@@ -4608,8 +4665,24 @@ template <> struct Codec<threedm::FilterMessageFormat> {
         (void)v;
         bool absent = false;
         write_value(w, v.function);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
+        if (v.num_descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.num_descriptors));
+        } else {
+            absent = true;
+        }
+        if (v.descriptors) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };
@@ -4844,23 +4917,6 @@ template <> struct Codec<threedm::FactoryStreaming> {
 };
 
 template <> struct Codec<threedm::DataStreamControlGx545> {
-    static constexpr bool kPlain = true;
-    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
-                                              Plain<::mipcodec::types::Gx5StreamSelector>::kSize +
-                                              Plain<std::uint8_t>::kSize;
-    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
-    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::DataStreamControlGx545 &v) {
-        (void)p;
-        (void)v;
-        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
-        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
-        Plain<::mipcodec::types::Gx5StreamSelector>::load(p, v.device_selector);
-        p += Plain<::mipcodec::types::Gx5StreamSelector>::kSize;
-        Plain<std::uint8_t>::load(p, v.enable);
-    }
-
-    static constexpr bool kFixedSize = true;
-    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::DataStreamControlGx545 &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -4873,9 +4929,12 @@ template <> struct Codec<threedm::DataStreamControlGx545> {
             err.enter("device_selector");
             return false;
         }
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
+        if (r.left() > 0) {
+            v.enable.emplace();
+            if (!read_value(r, (*v.enable), err)) {
+                err.enter("enable");
+                return false;
+            }
         }
         return true;
     }
@@ -4885,7 +4944,15 @@ template <> struct Codec<threedm::DataStreamControlGx545> {
         bool absent = false;
         write_value(w, v.function);
         write_value(w, v.device_selector);
-        write_value(w, v.enable);
+        if (v.enable) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.enable));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };
@@ -5024,17 +5091,27 @@ template <> struct Codec<threedm::GnssConstellationSettings> {
             err.enter("function");
             return false;
         }
-        if (!read_value(r, v.max_channels, err)) {
-            err.enter("max_channels");
-            return false;
+        if (r.left() > 0) {
+            v.max_channels.emplace();
+            if (!read_value(r, (*v.max_channels), err)) {
+                err.enter("max_channels");
+                return false;
+            }
         }
-        if (!read_value(r, v.config_count, err)) {
-            err.enter("config_count");
-            return false;
+        if (r.left() > 0) {
+            v.config_count.emplace();
+            if (!read_value(r, (*v.config_count), err)) {
+                err.enter("config_count");
+                return false;
+            }
         }
-        if (!read_counted(r, v.settings, static_cast<std::uint64_t>(v.config_count), err)) {
-            err.enter("settings");
-            return false;
+        if (r.left() > 0) {
+            v.settings.emplace();
+            if (!read_counted(r, (*v.settings), static_cast<std::uint64_t>(v.config_count.value_or(0)),
+                              err)) {
+                err.enter("settings");
+                return false;
+            }
         }
         return true;
     }
@@ -5043,9 +5120,33 @@ template <> struct Codec<threedm::GnssConstellationSettings> {
         (void)v;
         bool absent = false;
         write_value(w, v.function);
-        write_value(w, v.max_channels);
-        write_value(w, v.config_count);
-        write_counted(w, v.settings, static_cast<std::uint64_t>(v.config_count));
+        if (v.max_channels) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.max_channels));
+        } else {
+            absent = true;
+        }
+        if (v.config_count) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.config_count));
+        } else {
+            absent = true;
+        }
+        if (v.settings) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_counted(w, (*v.settings), static_cast<std::uint64_t>(v.config_count.value_or(0)));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };
@@ -5206,23 +5307,6 @@ template <> struct Codec<threedm::GnssSbasSettingsResponse> {
 };
 
 template <> struct Codec<threedm::GnssAssistedFixControl> {
-    static constexpr bool kPlain = true;
-    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
-                                              Plain<::mipcodec::types::AssistedFixOption>::kSize +
-                                              Plain<std::uint8_t>::kSize;
-    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
-    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssAssistedFixControl &v) {
-        (void)p;
-        (void)v;
-        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
-        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
-        Plain<::mipcodec::types::AssistedFixOption>::load(p, v.option);
-        p += Plain<::mipcodec::types::AssistedFixOption>::kSize;
-        Plain<std::uint8_t>::load(p, v.flags);
-    }
-
-    static constexpr bool kFixedSize = true;
-    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssAssistedFixControl &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -5231,13 +5315,19 @@ template <> struct Codec<threedm::GnssAssistedFixControl> {
             err.enter("function");
             return false;
         }
-        if (!read_value(r, v.option, err)) {
-            err.enter("option");
-            return false;
+        if (r.left() > 0) {
+            v.option.emplace();
+            if (!read_value(r, (*v.option), err)) {
+                err.enter("option");
+                return false;
+            }
         }
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
+        if (r.left() > 0) {
+            v.flags.emplace();
+            if (!read_value(r, (*v.flags), err)) {
+                err.enter("flags");
+                return false;
+            }
         }
         return true;
     }
@@ -5246,8 +5336,24 @@ template <> struct Codec<threedm::GnssAssistedFixControl> {
         (void)v;
         bool absent = false;
         write_value(w, v.function);
-        write_value(w, v.option);
-        write_value(w, v.flags);
+        if (v.option) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.option));
+        } else {
+            absent = true;
+        }
+        if (v.flags) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.flags));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };
@@ -5292,25 +5398,6 @@ template <> struct Codec<threedm::GnssAssistedFixControlResponse> {
 };
 
 template <> struct Codec<threedm::GnssAssistTimeUpdate> {
-    static constexpr bool kPlain = true;
-    static constexpr std::size_t kPlainSize = 0 + Plain<::mipcodec::types::FunctionSelector>::kSize +
-                                              Plain<double>::kSize + Plain<std::uint16_t>::kSize +
-                                              Plain<float>::kSize;
-    /// Reads the kPlainSize bytes at p with no checks (see Plain<V> in wire.hpp).
-    MIPCODEC_INLINE static void load(const std::uint8_t *p, threedm::GnssAssistTimeUpdate &v) {
-        (void)p;
-        (void)v;
-        Plain<::mipcodec::types::FunctionSelector>::load(p, v.function);
-        p += Plain<::mipcodec::types::FunctionSelector>::kSize;
-        Plain<double>::load(p, v.tow);
-        p += Plain<double>::kSize;
-        Plain<std::uint16_t>::load(p, v.week_number);
-        p += Plain<std::uint16_t>::kSize;
-        Plain<float>::load(p, v.accuracy);
-    }
-
-    static constexpr bool kFixedSize = true;
-    static constexpr std::size_t kSize = kPlainSize;
     static bool read(Reader &r, threedm::GnssAssistTimeUpdate &v, DecodeError &err) {
         (void)r;
         (void)v;
@@ -5319,17 +5406,26 @@ template <> struct Codec<threedm::GnssAssistTimeUpdate> {
             err.enter("function");
             return false;
         }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
+        if (r.left() > 0) {
+            v.tow.emplace();
+            if (!read_value(r, (*v.tow), err)) {
+                err.enter("tow");
+                return false;
+            }
         }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
+        if (r.left() > 0) {
+            v.week_number.emplace();
+            if (!read_value(r, (*v.week_number), err)) {
+                err.enter("week_number");
+                return false;
+            }
         }
-        if (!read_value(r, v.accuracy, err)) {
-            err.enter("accuracy");
-            return false;
+        if (r.left() > 0) {
+            v.accuracy.emplace();
+            if (!read_value(r, (*v.accuracy), err)) {
+                err.enter("accuracy");
+                return false;
+            }
         }
         return true;
     }
@@ -5338,9 +5434,33 @@ template <> struct Codec<threedm::GnssAssistTimeUpdate> {
         (void)v;
         bool absent = false;
         write_value(w, v.function);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.accuracy);
+        if (v.tow) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.tow));
+        } else {
+            absent = true;
+        }
+        if (v.week_number) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.week_number));
+        } else {
+            absent = true;
+        }
+        if (v.accuracy) {
+            if (absent) {
+                w.fail(EncodeError::optional_gap);
+                return;
+            }
+            write_value(w, (*v.accuracy));
+        } else {
+            absent = true;
+        }
         (void)absent;
     }
 };

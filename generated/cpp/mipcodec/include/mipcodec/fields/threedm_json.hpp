@@ -3050,10 +3050,14 @@ template <> struct Json<threedm::ImuMessageFormat> {
         w.begin_object();
         w.key("function");
         json_write_value(w, v.function);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
+        if (v.num_descriptors) {
+            w.key("num_descriptors");
+            json_write_value(w, (*v.num_descriptors));
+        }
+        if (v.descriptors) {
+            w.key("descriptors");
+            json_write_array(w, (*v.descriptors));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::ImuMessageFormat &v, JsonError &err) {
@@ -3077,21 +3081,20 @@ template <> struct Json<threedm::ImuMessageFormat> {
         }
         if (const json::Value *found = in.find("num_descriptors")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
+            v.num_descriptors.emplace();
+            if (!json_read_value(x, (*v.num_descriptors), err)) {
                 err.enter("num_descriptors");
                 return false;
             }
-        } else {
-            return err.missing("num_descriptors");
         }
         if (const json::Value *found = in.find("descriptors")) {
             const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            v.descriptors.emplace();
+            if (!json_read_counted(x, (*v.descriptors),
+                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
                 err.enter("descriptors");
                 return false;
             }
-        } else {
-            return err.missing("descriptors");
         }
         (void)v;
         return true;
@@ -3146,10 +3149,14 @@ template <> struct Json<threedm::GnssMessageFormat> {
         w.begin_object();
         w.key("function");
         json_write_value(w, v.function);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
+        if (v.num_descriptors) {
+            w.key("num_descriptors");
+            json_write_value(w, (*v.num_descriptors));
+        }
+        if (v.descriptors) {
+            w.key("descriptors");
+            json_write_array(w, (*v.descriptors));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::GnssMessageFormat &v, JsonError &err) {
@@ -3173,21 +3180,20 @@ template <> struct Json<threedm::GnssMessageFormat> {
         }
         if (const json::Value *found = in.find("num_descriptors")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
+            v.num_descriptors.emplace();
+            if (!json_read_value(x, (*v.num_descriptors), err)) {
                 err.enter("num_descriptors");
                 return false;
             }
-        } else {
-            return err.missing("num_descriptors");
         }
         if (const json::Value *found = in.find("descriptors")) {
             const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            v.descriptors.emplace();
+            if (!json_read_counted(x, (*v.descriptors),
+                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
                 err.enter("descriptors");
                 return false;
             }
-        } else {
-            return err.missing("descriptors");
         }
         (void)v;
         return true;
@@ -3242,10 +3248,14 @@ template <> struct Json<threedm::FilterMessageFormat> {
         w.begin_object();
         w.key("function");
         json_write_value(w, v.function);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
+        if (v.num_descriptors) {
+            w.key("num_descriptors");
+            json_write_value(w, (*v.num_descriptors));
+        }
+        if (v.descriptors) {
+            w.key("descriptors");
+            json_write_array(w, (*v.descriptors));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::FilterMessageFormat &v, JsonError &err) {
@@ -3269,21 +3279,20 @@ template <> struct Json<threedm::FilterMessageFormat> {
         }
         if (const json::Value *found = in.find("num_descriptors")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
+            v.num_descriptors.emplace();
+            if (!json_read_value(x, (*v.num_descriptors), err)) {
                 err.enter("num_descriptors");
                 return false;
             }
-        } else {
-            return err.missing("num_descriptors");
         }
         if (const json::Value *found = in.find("descriptors")) {
             const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
+            v.descriptors.emplace();
+            if (!json_read_counted(x, (*v.descriptors),
+                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
                 err.enter("descriptors");
                 return false;
             }
-        } else {
-            return err.missing("descriptors");
         }
         (void)v;
         return true;
@@ -3604,8 +3613,10 @@ template <> struct Json<threedm::DataStreamControlGx545> {
         json_write_value(w, v.function);
         w.key("device_selector");
         json_write_value(w, v.device_selector);
-        w.key("enable");
-        json_write_value(w, v.enable);
+        if (v.enable) {
+            w.key("enable");
+            json_write_value(w, (*v.enable));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::DataStreamControlGx545 &v, JsonError &err) {
@@ -3638,12 +3649,11 @@ template <> struct Json<threedm::DataStreamControlGx545> {
         }
         if (const json::Value *found = in.find("enable")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
+            v.enable.emplace();
+            if (!json_read_value(x, (*v.enable), err)) {
                 err.enter("enable");
                 return false;
             }
-        } else {
-            return err.missing("enable");
         }
         (void)v;
         return true;
@@ -3825,12 +3835,18 @@ template <> struct Json<threedm::GnssConstellationSettings> {
         w.begin_object();
         w.key("function");
         json_write_value(w, v.function);
-        w.key("max_channels");
-        json_write_value(w, v.max_channels);
-        w.key("config_count");
-        json_write_value(w, v.config_count);
-        w.key("settings");
-        json_write_array(w, v.settings);
+        if (v.max_channels) {
+            w.key("max_channels");
+            json_write_value(w, (*v.max_channels));
+        }
+        if (v.config_count) {
+            w.key("config_count");
+            json_write_value(w, (*v.config_count));
+        }
+        if (v.settings) {
+            w.key("settings");
+            json_write_array(w, (*v.settings));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::GnssConstellationSettings &v, JsonError &err) {
@@ -3855,30 +3871,28 @@ template <> struct Json<threedm::GnssConstellationSettings> {
         }
         if (const json::Value *found = in.find("max_channels")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.max_channels, err)) {
+            v.max_channels.emplace();
+            if (!json_read_value(x, (*v.max_channels), err)) {
                 err.enter("max_channels");
                 return false;
             }
-        } else {
-            return err.missing("max_channels");
         }
         if (const json::Value *found = in.find("config_count")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.config_count, err)) {
+            v.config_count.emplace();
+            if (!json_read_value(x, (*v.config_count), err)) {
                 err.enter("config_count");
                 return false;
             }
-        } else {
-            return err.missing("config_count");
         }
         if (const json::Value *found = in.find("settings")) {
             const json::Value &x = *found;
-            if (!json_read_counted(x, v.settings, static_cast<std::uint64_t>(v.config_count), err)) {
+            v.settings.emplace();
+            if (!json_read_counted(x, (*v.settings), static_cast<std::uint64_t>(v.config_count.value_or(0)),
+                                   err)) {
                 err.enter("settings");
                 return false;
             }
-        } else {
-            return err.missing("settings");
         }
         (void)v;
         return true;
@@ -4107,10 +4121,14 @@ template <> struct Json<threedm::GnssAssistedFixControl> {
         w.begin_object();
         w.key("function");
         json_write_value(w, v.function);
-        w.key("option");
-        json_write_value(w, v.option);
-        w.key("flags");
-        json_write_value(w, v.flags);
+        if (v.option) {
+            w.key("option");
+            json_write_value(w, (*v.option));
+        }
+        if (v.flags) {
+            w.key("flags");
+            json_write_value(w, (*v.flags));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::GnssAssistedFixControl &v, JsonError &err) {
@@ -4134,21 +4152,19 @@ template <> struct Json<threedm::GnssAssistedFixControl> {
         }
         if (const json::Value *found = in.find("option")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.option, err)) {
+            v.option.emplace();
+            if (!json_read_value(x, (*v.option), err)) {
                 err.enter("option");
                 return false;
             }
-        } else {
-            return err.missing("option");
         }
         if (const json::Value *found = in.find("flags")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
+            v.flags.emplace();
+            if (!json_read_value(x, (*v.flags), err)) {
                 err.enter("flags");
                 return false;
             }
-        } else {
-            return err.missing("flags");
         }
         (void)v;
         return true;
@@ -4203,12 +4219,18 @@ template <> struct Json<threedm::GnssAssistTimeUpdate> {
         w.begin_object();
         w.key("function");
         json_write_value(w, v.function);
-        w.key("tow");
-        json_write_value(w, v.tow);
-        w.key("week_number");
-        json_write_value(w, v.week_number);
-        w.key("accuracy");
-        json_write_value(w, v.accuracy);
+        if (v.tow) {
+            w.key("tow");
+            json_write_value(w, (*v.tow));
+        }
+        if (v.week_number) {
+            w.key("week_number");
+            json_write_value(w, (*v.week_number));
+        }
+        if (v.accuracy) {
+            w.key("accuracy");
+            json_write_value(w, (*v.accuracy));
+        }
         w.end_object();
     }
     static bool read(const json::Value &in, threedm::GnssAssistTimeUpdate &v, JsonError &err) {
@@ -4233,30 +4255,27 @@ template <> struct Json<threedm::GnssAssistTimeUpdate> {
         }
         if (const json::Value *found = in.find("tow")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.tow, err)) {
+            v.tow.emplace();
+            if (!json_read_value(x, (*v.tow), err)) {
                 err.enter("tow");
                 return false;
             }
-        } else {
-            return err.missing("tow");
         }
         if (const json::Value *found = in.find("week_number")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.week_number, err)) {
+            v.week_number.emplace();
+            if (!json_read_value(x, (*v.week_number), err)) {
                 err.enter("week_number");
                 return false;
             }
-        } else {
-            return err.missing("week_number");
         }
         if (const json::Value *found = in.find("accuracy")) {
             const json::Value &x = *found;
-            if (!json_read_value(x, v.accuracy, err)) {
+            v.accuracy.emplace();
+            if (!json_read_value(x, (*v.accuracy), err)) {
                 err.enter("accuracy");
                 return false;
             }
-        } else {
-            return err.missing("accuracy");
         }
         (void)v;
         return true;
