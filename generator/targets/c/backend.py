@@ -13,6 +13,7 @@ from generator.examples import example_context
 from generator.lookup import resolve
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
+from generator.testcases import VectorCase, vector_cases
 
 OUTPUT_DIRS = ["c"]
 
@@ -206,7 +207,7 @@ class _Package:
         self.path_depth = max([self._layout_depth(v) for v in self._all_ir_layouts()] + [1])
         longest = max([len(n) for n in self._all_param_names()] + [8])
         self.error_message_max = self.path_depth * (longest + 24) + 160
-        self.vectors = [self._vector_view(c) for c in vectors if c["protocol"] == proto["name"]]
+        self.vectors = [self._vector_view(c) for c in vector_cases(vectors, proto)]
 
     # -------------------------------------------------------------- checks
     def _claim(self, ident: str, what: str) -> str:
@@ -560,17 +561,16 @@ class _Package:
     def _layout_depth(self, v: dict) -> int:
         return max(self._depth_params(v["params"]), 1 if v["functions"] is not None else 0)
 
-    # -------------------------------------------------------------- vectors
-    def _vector_view(self, case: dict) -> dict:
-        name = re.sub(r"[^A-Za-z0-9_]", "_", case["name"])
-        dev = case.get("device")
+    # -------------------------------------------------------------- vectors (cases from generator/testcases.py)
+    def _vector_view(self, case: VectorCase) -> dict:
+        dev = case.device
         return {
-            "name": name,
-            "suite": case["corpus"].capitalize(),
-            "hex": case["hex"],
+            "name": re.sub(r"[^A-Za-z0-9_]", "_", case.name),
+            "suite": case.corpus.capitalize(),
+            "hex": case.hex,
             "device_c": f"{self.P}_DEVICE_{dev.upper()}" if dev else f"{self.P}_DEVICE_ANY",
-            "expect": _c_string("".join(line + "\n" for line in case["expect"])),
-            "rejected": case["rejected"],
+            "expect": _c_string("".join(line + "\n" for line in case.expect)),
+            "rejected": case.rejected,
         }
 
     # -------------------------------------------------------------- render

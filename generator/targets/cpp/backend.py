@@ -26,6 +26,7 @@ import re
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.render import environment
+from generator.testcases import bitfield_cases, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
 
@@ -658,31 +659,32 @@ class _Proto:
             "big_endian": "true" if self.p["byte_order"] == "big" else "false",
         }
 
-    # ------------------------------------------------------------ tests
+    # ------------------------------------------------------------ tests (cases from generator/testcases.py)
     def bitfield_test(self) -> dict | None:
-        for t in self.p["types"]:
-            if t["kind"] != "bitfield":
-                continue
-            m = self.type_model(t)
-            mem = next((x for x in m["members"] if not x["flag"]), None) or m["members"][0]
-            flag = next((x for x in m["members"] if x["flag"]), None)
-            return {
-                "type": m["full"],
-                "base": m["base"],
-                "member": mem,
-                "flag": flag,
-                "value": (1 << mem["width"]) - 1 if mem["width"] < 64 else 1,
-                "raw": f"0x{((((1 << mem['width']) - 1) << mem['shift']) if mem['width'] < 64 else 1):X}ULL",
-            }
-        return None
+        """The accessor round trip of the first bitfield type: its first member wider than a bit
+        (or its first member) and its first flag."""
+        cases = bitfield_cases(self.p)
+        if not cases:
+            return None
+        b = cases[0]
+        m = self.type_model(self.types[b.name])
+        members = {x["name"]: x for x in m["members"]}
+        mem = b.wide_member()
+        flag = b.first_flag()
+        return {
+            "type": m["full"],
+            "base": m["base"],
+            "member": members[mem.name],
+            "flag": members[flag.name] if flag else None,
+            "value": mem.value,
+            "raw": f"0x{mem.raw:X}ULL",
+        }
 
     def vector_cases(self, vectors: list[dict]) -> list[dict]:
         out = []
         used: set[str] = set()
-        for c in vectors:
-            if c["protocol"] != self.p["name"]:
-                continue
-            name = re.sub(r"[^A-Za-z0-9]", "_", c["name"]).strip("_") or "case"
+        for c in vector_cases(vectors, self.p):
+            name = re.sub(r"[^A-Za-z0-9]", "_", c.name).strip("_") or "case"
             name = camel(name.lower()) if name[0].isdigit() else name
             base, i = name, 2
             while name in used:
@@ -691,12 +693,12 @@ class _Proto:
             out.append(
                 {
                     "name": name,
-                    "suite": c["corpus"].capitalize(),
-                    "source": c["name"],
-                    "hex": cpp_string(c["hex"]),
-                    "device": cpp_string(c["device"]) if c["device"] else "nullptr",
-                    "rejected": c["rejected"],
-                    "expect": [cpp_string(line) for line in c["expect"]],
+                    "suite": c.corpus.capitalize(),
+                    "source": c.name,
+                    "hex": cpp_string(c.hex),
+                    "device": cpp_string(c.device) if c.device else "nullptr",
+                    "rejected": c.rejected,
+                    "expect": [cpp_string(line) for line in c.expect],
                 }
             )
         return out
