@@ -11,6 +11,7 @@ import re
 
 from generator.examples import example_context
 from generator.lookup import resolve
+from generator.naming import snake
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
 from generator.testcases import VectorCase, vector_cases
@@ -112,13 +113,6 @@ class BackendError(Exception):
 
 
 # ---------------------------------------------------------------------------- naming helpers
-def snake(name: str) -> str:
-    """CamelCase type name -> snake_case (Gx5BitFlags -> gx5_bit_flags)."""
-    s = re.sub(r"([A-Z]+)([A-Z][a-z])", r"\1_\2", name)
-    s = re.sub(r"([a-z0-9])([A-Z])", r"\1_\2", s)
-    return s.lower()
-
-
 def member(name: str) -> str:
     """A spec identifier as a C struct member (keywords get a trailing underscore)."""
     return name + "_" if name in _KEYWORDS else name

@@ -25,6 +25,7 @@ import re
 
 from generator.examples import example_context
 from generator.lookup import resolve
+from generator.naming import camel
 from generator.render import environment
 from generator.testcases import bitfield_cases, vector_cases
 
@@ -100,10 +101,6 @@ PRIM_CPP = {
     "float": "float",
     "double": "double",
 }
-
-
-def camel(name: str) -> str:
-    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:

@@ -18,6 +18,7 @@ import keyword
 import textwrap
 
 from generator.examples import example_context
+from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.render import environment
 from generator.testcases import EnumValue, Flags, Sample, Sampler, StructValue, bitfield_cases, vector_cases
@@ -88,10 +89,6 @@ BITFIELD_RESERVED = set(dir(int)) | {"replace", "members"}
 
 
 # ------------------------------------------------------------------------------------------ naming
-def camel(name: str) -> str:
-    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
-
-
 def py_attr(name: str, reserved: set[str] = LAYOUT_RESERVED) -> str:
     """A parameter/member name as a Python attribute (keywords and runtime names get a '_')."""
     if keyword.iskeyword(name) or name in reserved or name in ("l", "O", "I"):
@@ -100,7 +97,7 @@ def py_attr(name: str, reserved: set[str] = LAYOUT_RESERVED) -> str:
 
 
 def const_name(name: str) -> str:
-    return name.upper()
+    return upper(name)
 
 
 def set_module(set_: dict) -> str:

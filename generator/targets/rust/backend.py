@@ -9,8 +9,10 @@ from __future__ import annotations
 
 import re
 
+from generator import naming
 from generator.examples import example_context
 from generator.lookup import resolve
+from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.render import ToolError, environment
 from generator.testcases import bitfield_cases, canonical_cases, layout_error_cases, vector_cases
@@ -113,18 +115,9 @@ _PRIM_RUST = {
 
 # ---------------------------------------------------------------------------------------- naming
 def camel(name: str) -> str:
-    """snake_case -> CamelCase; names that already are CamelCase are kept. Digit-digit joins keep a `_`."""
-    if re.fullmatch(r"[A-Z][A-Za-z0-9]*", name):
-        return name
-    out = ""
-    for part in [p for p in name.split("_") if p]:
-        piece = part[0].upper() + part[1:]
-        if out and out[-1].isdigit() and piece[0].isdigit():
-            out += "_"
-        out += piece
-    if not out or out[0].isdigit():
-        out = "T" + out
-    return out
+    """snake_case -> CamelCase with Rust's options (generator/naming.py): a `_` between digit words,
+    `T` before a leading digit."""
+    return naming.camel(name, digit_break="_", leading_digit="T")
 
 
 def ident(name: str) -> str:
@@ -134,10 +127,6 @@ def ident(name: str) -> str:
     if name in _KEYWORDS:
         return "r#" + name
     return name
-
-
-def upper(name: str) -> str:
-    return name.upper()
 
 
 def rust_str(s: str) -> str:
