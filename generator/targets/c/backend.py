@@ -14,7 +14,7 @@ from generator.lookup import resolve
 from generator.naming import snake
 from generator.primitives import PRIMITIVES, int_range
 from generator.render import environment
-from generator.testcases import VectorCase, vector_cases
+from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
 OUTPUT_DIRS = ["c"]
 
@@ -83,6 +83,7 @@ _RUNTIME = {
     "tests/test_support.hpp.j2": "tests/test_support.hpp",
     "tests/runtime_test.cpp.j2": "tests/runtime_test.cpp",
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
+    "tests/canonical_test.cpp.j2": "tests/canonical_test.cpp",
 }
 
 
@@ -567,6 +568,34 @@ class _Package:
             "rejected": case.rejected,
         }
 
+    def canonical(self) -> dict:
+        """The canonical float/string table of generator/testcases.py as C literals."""
+        cases = canonical_cases()
+        return {
+            "doubles": [{"bits": f"0x{c.bits:016X}ull", "text": _c_string(c.text)} for c in cases.doubles],
+            "floats": [{"bits": f"0x{c.bits:08X}u", "text": _c_string(c.text)} for c in cases.floats],
+            "all_bytes": _c_string(cases.all_bytes),
+        }
+
+    def bitfield_cases(self) -> list[dict]:
+        """The bitfield members of generator/testcases.py with their C mask and shift macros."""
+        views = {v["name"]: v for v in self.type_views}
+        out = []
+        for b in bitfield_cases(self.proto):
+            view = views[b.name]
+            members = [
+                {
+                    "mask": mv["mask"],
+                    "shift": mv["shift"],
+                    "first_bit": m.first_bit,
+                    "mask_value": f"UINT64_C(0x{m.mask:X})",
+                    "max": f"UINT64_C(0x{m.max:X})",
+                }
+                for m, mv in zip(b.members, view["members"])
+            ]
+            out.append({"name": b.name, "c": view["c"], "members": members})
+        return out
+
     # -------------------------------------------------------------- render
     def example(self) -> dict:
         """The getting-started example (generator/examples.py) with the C name of its set."""
@@ -595,6 +624,8 @@ class _Package:
             "sample_rule": self.proto["samples"],
             "data_kind": self.data_kind,
             "vectors": self.vectors,
+            "canonical": self.canonical(),
+            "bitfield_cases": self.bitfield_cases(),
             "example": self.example(),
             "name_max": max([len(f["name"]) for f in self.fields] + [len(d["id"]) for d in self.devices] + [1]) + 1,
         }

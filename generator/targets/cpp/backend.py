@@ -27,7 +27,7 @@ from generator.examples import example_context
 from generator.lookup import resolve
 from generator.naming import camel
 from generator.render import environment
-from generator.testcases import bitfield_cases, vector_cases
+from generator.testcases import bitfield_cases, canonical_cases, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
 
@@ -701,6 +701,16 @@ class _Proto:
         return out
 
 
+def canonical_context() -> dict:
+    """The canonical float/string table of generator/testcases.py as C++ literals."""
+    cases = canonical_cases()
+    return {
+        "doubles": [{"bits": f"0x{c.bits:016X}ULL", "text": cpp_string(c.text)} for c in cases.doubles],
+        "floats": [{"bits": f"0x{c.bits:08X}u", "text": cpp_string(c.text)} for c in cases.floats],
+        "all_bytes": cpp_string(cases.all_bytes),
+    }
+
+
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
     env = environment()
     files: dict[str, str] = {}
@@ -723,6 +733,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),
             "bitfield_test": P.bitfield_test(),
+            "canonical": canonical_context(),
             "sample_rule": proto["samples"],
             "example": example_context(proto, api_names),
         }
@@ -759,6 +770,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         files[f"{root}/tests/test_support.hpp"] = env.get_template("cpp/tests/test_support.hpp.j2").render(ctx)
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
         files[f"{root}/tests/test_runtime.cpp"] = env.get_template("cpp/tests/test_runtime.cpp.j2").render(ctx)
+        files[f"{root}/tests/test_canonical.cpp"] = env.get_template("cpp/tests/test_canonical.cpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
     return files

@@ -21,7 +21,16 @@ from generator.examples import example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.render import environment
-from generator.testcases import EnumValue, Flags, Sample, Sampler, StructValue, bitfield_cases, vector_cases
+from generator.testcases import (
+    EnumValue,
+    Flags,
+    Sample,
+    Sampler,
+    StructValue,
+    bitfield_cases,
+    canonical_cases,
+    vector_cases,
+)
 
 OUTPUT_DIRS = ["python"]
 
@@ -730,6 +739,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "conftest.py": {},
             "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
             "test_typed.py": _typed_context(m, sets),
+            "test_canonical.py": {"canonical": _canonical_context()},
             "test_runtime.py": {},
             "test_cli.py": {},
         }
@@ -743,6 +753,16 @@ def _example(proto: dict) -> dict:
     example = example_context(proto, api_names)
     example["module"], example["class_name"] = example["api"]["class"].rsplit(".", 1)
     return example
+
+
+def _canonical_context() -> dict:
+    """The canonical float/string table of generator/testcases.py as Python literals."""
+    cases = canonical_cases()
+    return {
+        "doubles": [{"bits": f"0x{c.bits:016X}", "text": repr(c.text)} for c in cases.doubles],
+        "floats": [{"bits": f"0x{c.bits:08X}", "text": repr(c.text)} for c in cases.floats],
+        "all_bytes": repr(cases.all_bytes),
+    }
 
 
 def _typed_context(m: _Proto, sets: list[dict]) -> dict:
