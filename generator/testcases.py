@@ -11,6 +11,7 @@ float with an odd NaN payload, a bitfield member) reaches all of them at once.
 
 from __future__ import annotations
 
+import hashlib
 import random
 import struct
 from dataclasses import dataclass
@@ -287,17 +288,38 @@ _SAMPLE_FLOATS = (1.5, -2.25, 0.375, 1024.0, -0.0)  # exact in binary32
 _SAMPLE_DOUBLES = (0.1, -2.5e-310, 1e16, 123.456, -0.0)
 
 
+def layout_sample(protocol: dict, set_: dict | None, field: dict, layout: dict) -> list[tuple[str, Sample]]:
+    """Sample values of one layout of a field (set_ None for a reserved field), seeded by the
+    field alone: adding or changing another field leaves these values as they are."""
+    if set_ is None:
+        key = (protocol["name"], "reserved", field["applies_to"], field["id"], field["name"], layout["device"])
+    else:
+        key = (protocol["name"], set_["id"], field["id"], field["name"], layout["device"])
+    return Sampler(protocol, stable_seed(*key)).layout(layout["params"], layout["functions"])
+
+
+def struct_sample(protocol: dict, t: dict) -> StructValue:
+    """A sample value of a struct type, seeded by the type alone."""
+    return Sampler(protocol, stable_seed(protocol["name"], "type", t["name"])).struct(t)
+
+
+def stable_seed(*parts: object) -> int:
+    """A number that depends only on `parts` (hashlib, not Python's per-process string hash)."""
+    text = "/".join(str(p) for p in parts)
+    return int.from_bytes(hashlib.sha256(text.encode()).digest()[:4], "big")
+
+
 class Sampler:
     """Typed sample values for round-trip tests: every parameter of a layout or struct gets a
     value that encodes, decodes and prints back unchanged. Array counts are two (at most the
     maximum) and a union takes its first member with data. Each value draws the next number of
-    one running counter, so the values vary from parameter to parameter."""
+    a counter that starts at `seed`, so the values vary from parameter to parameter."""
 
-    def __init__(self, protocol: dict):
+    def __init__(self, protocol: dict, seed: int = 0):
         self.types = {t["name"]: t for t in protocol["types"]}
         fs = protocol.get("function_selector") or {}
         self.function_enum = fs.get("enum")
-        self.k = 0
+        self.k = seed
 
     def layout(self, params: list[dict], function_names: list[str] | None) -> list[tuple[str, Sample]]:
         """(parameter name, value) for a layout (with its function selector) or a struct."""

@@ -14,7 +14,10 @@ from generator.testcases import (
     bitfield_cases,
     canonical_cases,
     layout_error_cases,
+    layout_sample,
     layouts,
+    stable_seed,
+    struct_sample,
     vector_cases,
 )
 
@@ -159,3 +162,28 @@ def test_sample_values_are_in_range_and_vary():
     sample = dict(Sampler(p).layout(_layout(p, "data", "sample")["params"], None))
     assert all(struct.unpack(">f", struct.pack(">f", x))[0] == x for x in sample["quat"])  # exact in binary32
     assert -128 <= sample["small"] <= 127 and not math.isnan(sample["f"])
+
+
+def test_a_fields_samples_depend_on_that_field_alone():
+    p = _proto()
+    before = {(s and s["id"], f["name"], v["device"]): layout_sample(p, s, f, v) for s, f, v in layouts(p)}
+    structs = {t["name"]: struct_sample(p, t) for t in p["types"] if t["kind"] == "struct"}
+    # drop the first field of the commands set: every other field keeps its values
+    commands = next(s for s in p["sets"] if s["name"] == "commands")
+    dropped = commands["fields"].pop(0)
+    after = {(s and s["id"], f["name"], v["device"]): layout_sample(p, s, f, v) for s, f, v in layouts(p)}
+    assert (commands["id"], dropped["name"], None) not in after
+    assert after == {k: v for k, v in before.items() if k != (commands["id"], dropped["name"], None)}
+    assert structs == {t["name"]: struct_sample(p, t) for t in p["types"] if t["kind"] == "struct"}
+
+
+def test_fields_with_the_same_shape_get_different_values():
+    p = _proto()
+    (a, fa, va), (b, fb, vb) = [(s, f, v) for s, f, v in layouts(p) if f["name"] == "llh_position"]
+    assert a["id"] != b["id"] and layout_sample(p, a, fa, va) != layout_sample(p, b, fb, vb)
+
+
+def test_stable_seed_is_a_fixed_function_of_its_parts():
+    assert stable_seed("mip", 0x80, 0x04, "scaled_accel", None) == stable_seed("mip", 128, 4, "scaled_accel", None)
+    assert stable_seed("mip", 0x80, 0x04) != stable_seed("mip", 0x80, 0x05)
+    assert stable_seed("a", "b") == 0xC14CDDC0

@@ -25,10 +25,11 @@ from generator.testcases import (
     EnumValue,
     Flags,
     Sample,
-    Sampler,
     StructValue,
     bitfield_cases,
     canonical_cases,
+    layout_sample,
+    struct_sample,
     vector_cases,
 )
 
@@ -644,7 +645,6 @@ class _Proto:
 
     def samples(self, sets: list[dict]) -> list[dict]:
         out = []
-        sampler = Sampler(self.p)
         for sm in sets:
             s = sm["set"]
             names = _layout_classes(s["fields"])
@@ -652,16 +652,18 @@ class _Proto:
                 multi = len(f["variants"]) > 1
                 for v in f["variants"]:
                     cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
-                    args = sampler.layout(v["params"], v["functions"])
+                    args = layout_sample(self.p, s, f, v)
                     out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
         names = _layout_classes(self.p["reserved_fields"])
         for f in self.p["reserved_fields"]:
             cls = f"reserved.{names[(f['name'], None)]}"
-            args = sampler.layout(f["params"], None)
+            args = layout_sample(self.p, None, f, f["variants"][0])
             out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
         for t in self.type_order():
             if t["kind"] == "struct":
-                out.append({"cls": f"types.{t['name']}", "expr": self.sample_literal(sampler.struct(t), "types.")})
+                out.append(
+                    {"cls": f"types.{t['name']}", "expr": self.sample_literal(struct_sample(self.p, t), "types.")}
+                )
         return out
 
     def bitfield_cases(self) -> list[dict]:
