@@ -11,8 +11,10 @@ import re
 
 from generator import model
 from generator.examples import example_context
+from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.render import copy_runtime, environment
+from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
 from .facts import KEYWORDS as _KEYWORDS
 from .facts import PRIMITIVE_TYPES as _PRIM
@@ -62,6 +64,7 @@ _TEMPLATES = {
     "README.md.j2": "README.md",
     "examples/getting_started.c.j2": "examples/getting_started.c",
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
+    "tests/canonical_test.cpp.j2": "tests/canonical_test.cpp",
 }
 
 
@@ -92,13 +95,6 @@ class BackendError(Exception):
 
 
 # ---------------------------------------------------------------------------- naming helpers
-def snake(name: str) -> str:
-    """CamelCase type name -> snake_case (Gx5BitFlags -> gx5_bit_flags)."""
-    s = re.sub(r"([A-Z]+)([A-Z][a-z])", r"\1_\2", name)
-    s = re.sub(r"([a-z0-9])([A-Z])", r"\1_\2", s)
-    return s.lower()
-
-
 def member(name: str) -> str:
     """A spec identifier as a C struct member (keywords get a trailing underscore)."""
     return name + "_" if name in _KEYWORDS else name
@@ -188,7 +184,7 @@ class _Package:
         self.path_depth = proto["value_paths"]["names"]
         longest = max([len(n) for n in self._all_param_names()] + [8])
         self.error_message_max = self.path_depth * (longest + 24) + 160
-        self.vectors = [self._vector_view(c) for c in vectors if c["protocol"] == proto["name"]]
+        self.vectors = [self._vector_view(c) for c in vector_cases(vectors, proto)]
 
     # -------------------------------------------------------------- checks
     def _claim(self, ident: str, what: str) -> str:
@@ -486,18 +482,45 @@ class _Package:
             for q in t.get("params", []):
                 yield q["name"]
 
-    # -------------------------------------------------------------- vectors
-    def _vector_view(self, case: dict) -> dict:
-        name = re.sub(r"[^A-Za-z0-9_]", "_", case["name"])
-        dev = case.get("device")
+    # -------------------------------------------------------------- vectors (cases from generator/testcases.py)
+    def _vector_view(self, case: VectorCase) -> dict:
+        dev = case.device
         return {
-            "name": name,
-            "suite": case["corpus"].capitalize(),
-            "hex": case["hex"],
+            "name": re.sub(r"[^A-Za-z0-9_]", "_", case.name),
+            "suite": case.corpus.capitalize(),
+            "hex": case.hex,
             "device_c": f"{self.P}_DEVICE_{dev.upper()}" if dev else f"{self.P}_DEVICE_ANY",
-            "expect": _c_string("".join(line + "\n" for line in case["expect"])),
-            "rejected": case["rejected"],
+            "expect": _c_string("".join(line + "\n" for line in case.expect)),
+            "rejected": case.rejected,
         }
+
+    def canonical(self) -> dict:
+        """The canonical float/string table of generator/testcases.py as C literals."""
+        cases = canonical_cases()
+        return {
+            "doubles": [{"bits": f"0x{c.bits:016X}ull", "text": _c_string(c.text)} for c in cases.doubles],
+            "floats": [{"bits": f"0x{c.bits:08X}u", "text": _c_string(c.text)} for c in cases.floats],
+            "all_bytes": _c_string(cases.all_bytes),
+        }
+
+    def bitfield_cases(self) -> list[dict]:
+        """The bitfield members of generator/testcases.py with their C mask and shift macros."""
+        views = {v["name"]: v for v in self.type_views}
+        out = []
+        for b in bitfield_cases(self.proto):
+            view = views[b.name]
+            members = [
+                {
+                    "mask": mv["mask"],
+                    "shift": mv["shift"],
+                    "first_bit": m.first_bit,
+                    "mask_value": f"UINT64_C(0x{m.mask:X})",
+                    "max": f"UINT64_C(0x{m.max:X})",
+                }
+                for m, mv in zip(b.members, view["members"])
+            ]
+            out.append({"name": b.name, "c": view["c"], "members": members})
+        return out
 
     # -------------------------------------------------------------- render
     def example(self) -> dict:
@@ -528,6 +551,8 @@ class _Package:
             "sample_rule": self.proto["samples"],
             "data_kind": self.data_kind,
             "vectors": self.vectors,
+            "canonical": self.canonical(),
+            "bitfield_cases": self.bitfield_cases(),
             "example": self.example(),
             "name_max": max([len(f["name"]) for f in self.fields] + [len(d["id"]) for d in self.devices] + [1]) + 1,
         }

@@ -25,9 +25,11 @@ import re
 
 from generator import model
 from generator.examples import example_context
+from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
 from generator.render import environment
+from generator.testcases import bitfield_cases, canonical_cases, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
 
@@ -101,10 +103,6 @@ PRIM_CPP = {
     "float": "float",
     "double": "double",
 }
-
-
-def camel(name: str) -> str:
-    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
@@ -516,31 +514,32 @@ class _Proto:
             "big_endian": "true" if self.p["byte_order"] == "big" else "false",
         }
 
-    # ------------------------------------------------------------ tests
+    # ------------------------------------------------------------ tests (cases from generator/testcases.py)
     def bitfield_test(self) -> dict | None:
-        for t in self.p["types"]:
-            if t["kind"] != "bitfield":
-                continue
-            m = self.type_model(t)
-            mem = next((x for x in m["members"] if not x["flag"]), None) or m["members"][0]
-            flag = next((x for x in m["members"] if x["flag"]), None)
-            return {
-                "type": m["full"],
-                "base": m["base"],
-                "member": mem,
-                "flag": flag,
-                "value": (1 << mem["width"]) - 1 if mem["width"] < 64 else 1,
-                "raw": f"0x{((((1 << mem['width']) - 1) << mem['shift']) if mem['width'] < 64 else 1):X}ULL",
-            }
-        return None
+        """The accessor round trip of the first bitfield type: its first member wider than a bit
+        (or its first member) and its first flag."""
+        cases = bitfield_cases(self.p)
+        if not cases:
+            return None
+        b = cases[0]
+        m = self.type_model(self.types[b.name])
+        members = {x["name"]: x for x in m["members"]}
+        mem = b.wide_member()
+        flag = b.first_flag()
+        return {
+            "type": m["full"],
+            "base": m["base"],
+            "member": members[mem.name],
+            "flag": members[flag.name] if flag else None,
+            "value": mem.value,
+            "raw": f"0x{mem.raw:X}ULL",
+        }
 
     def vector_cases(self, vectors: list[dict]) -> list[dict]:
         out = []
         used: set[str] = set()
-        for c in vectors:
-            if c["protocol"] != self.p["name"]:
-                continue
-            name = re.sub(r"[^A-Za-z0-9]", "_", c["name"]).strip("_") or "case"
+        for c in vector_cases(vectors, self.p):
+            name = re.sub(r"[^A-Za-z0-9]", "_", c.name).strip("_") or "case"
             name = camel(name.lower()) if name[0].isdigit() else name
             base, i = name, 2
             while name in used:
@@ -549,15 +548,25 @@ class _Proto:
             out.append(
                 {
                     "name": name,
-                    "suite": c["corpus"].capitalize(),
-                    "source": c["name"],
-                    "hex": cpp_string(c["hex"]),
-                    "device": cpp_string(c["device"]) if c["device"] else "nullptr",
-                    "rejected": c["rejected"],
-                    "expect": [cpp_string(line) for line in c["expect"]],
+                    "suite": c.corpus.capitalize(),
+                    "source": c.name,
+                    "hex": cpp_string(c.hex),
+                    "device": cpp_string(c.device) if c.device else "nullptr",
+                    "rejected": c.rejected,
+                    "expect": [cpp_string(line) for line in c.expect],
                 }
             )
         return out
+
+
+def canonical_context() -> dict:
+    """The canonical float/string table of generator/testcases.py as C++ literals."""
+    cases = canonical_cases()
+    return {
+        "doubles": [{"bits": f"0x{c.bits:016X}ULL", "text": cpp_string(c.text)} for c in cases.doubles],
+        "floats": [{"bits": f"0x{c.bits:08X}u", "text": cpp_string(c.text)} for c in cases.floats],
+        "all_bytes": cpp_string(cases.all_bytes),
+    }
 
 
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
@@ -582,6 +591,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),
             "bitfield_test": P.bitfield_test(),
+            "canonical": canonical_context(),
             "sample_rule": proto["samples"],
             "example": example_context(proto, api_names),
         }
@@ -618,6 +628,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         files[f"{root}/tests/test_support.hpp"] = env.get_template("cpp/tests/test_support.hpp.j2").render(ctx)
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
         files[f"{root}/tests/test_runtime.cpp"] = env.get_template("cpp/tests/test_runtime.cpp.j2").render(ctx)
+        files[f"{root}/tests/test_canonical.cpp"] = env.get_template("cpp/tests/test_canonical.cpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
     return files

@@ -23,9 +23,21 @@ import textwrap
 
 from generator import model
 from generator.examples import example_context
-from generator.primitives import PRIMITIVES, int_range
+from generator.naming import camel, upper
+from generator.primitives import PRIMITIVES
 from generator.render import copy_runtime, environment
 from generator.targets.python import facts
+from generator.testcases import (
+    EnumValue,
+    Flags,
+    Sample,
+    StructValue,
+    bitfield_cases,
+    canonical_cases,
+    layout_sample,
+    struct_sample,
+    vector_cases,
+)
 
 OUTPUT_DIRS = ["python"]
 
@@ -62,10 +74,6 @@ BITFIELD_RESERVED = facts.INT_ATTRIBUTES | facts.BITFIELD_ATTRIBUTES
 
 
 # ------------------------------------------------------------------------------------------ naming
-def camel(name: str) -> str:
-    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
-
-
 def py_attr(name: str, reserved: frozenset[str] = LAYOUT_RESERVED) -> str:
     """A parameter/member name as a Python attribute (keywords and runtime names get a '_')."""
     if name in facts.KEYWORDS or name in reserved or name in facts.AMBIGUOUS_NAMES:
@@ -74,7 +82,7 @@ def py_attr(name: str, reserved: frozenset[str] = LAYOUT_RESERVED) -> str:
 
 
 def const_name(name: str) -> str:
-    return name.upper()
+    return upper(name)
 
 
 def set_module(set_: dict) -> str:
@@ -524,89 +532,23 @@ class _Proto:
         }
 
     # -------------------------------------------------------------- samples (typed round-trip tests)
-    def sample_layout(self, params: list[dict], tp: str, function_names: list[str] | None, counter: list[int]) -> str:
-        args = []
-        if function_names is not None:
-            args.append(f"function={tp}{self.function_enum}.{const_name(function_names[-1])}")
-        counts: dict[str, int] = {}
-        selectors: dict[str, str] = {}
-        for q in params:
-            c = q["count"]
-            if c is not None and c["kind"] == "param":
-                counts[c["param"]] = min(2, q["max_count"])
-            if q["type"]["kind"] == "union":
-                ut = self.types[q["type"]["name"]]
-                with_data = [m for m in ut["members"] if m["type"]] or ut["members"]
-                selectors[q["type"]["selector"]] = with_data[0]["when"]
-        chosen: dict[str, str] = {}
-        for q in params:
-            attr = py_attr(q["name"])
-            if q["name"] in counts:
-                args.append(f"{attr}={counts[q['name']]}")
-                continue
-            if q["name"] in selectors:
-                chosen[q["name"]] = selectors[q["name"]]
-                args.append(f"{attr}={tp}{q['type']['name']}.{const_name(selectors[q['name']])}")
-                continue
-            c = q["count"]
-            tref = q["type"]
-            if tref["kind"] == "union":
-                ut = self.types[tref["name"]]
-                when = chosen.get(tref["selector"])
-                member = next((m for m in ut["members"] if m["when"] == when), None)
-                if member is None or not member["type"]:
-                    args.append(f"{attr}=None")
-                else:
-                    st = self.types[member["type"]]
-                    args.append(f"{attr}={self.sample_struct(st, tp, counter)}")
-                continue
-            if c is None:
-                args.append(f"{attr}={self.sample_value(tref, tp, counter)}")
-            else:
-                n = c["value"] if c["kind"] == "fixed" else counts.get(c.get("param", ""), min(2, q["max_count"]))
-                args.append(f"{attr}=[" + ", ".join(self.sample_value(tref, tp, counter) for _ in range(n)) + "]")
-        return ", ".join(args)
+    def sample_literal(self, value: Sample, tp: str) -> str:
+        """A sample value (generator/testcases.py) as a Python expression."""
+        if isinstance(value, StructValue):
+            return f"{tp}{value.type}(" + self.sample_args(value.args, tp) + ")"
+        if isinstance(value, EnumValue):
+            return f"{tp}{value.type}.{const_name(value.name)}"
+        if isinstance(value, Flags):
+            return f"{tp}{value.type}(0x{value.mask:X})"
+        if isinstance(value, list):
+            return "[" + ", ".join(self.sample_literal(v, tp) for v in value) + "]"
+        return repr(value)  # int, float, bool, bytes, None
 
-    def sample_struct(self, t: dict, tp: str, counter: list[int]) -> str:
-        return f"{tp}{t['name']}(" + self.sample_layout(t["params"], tp, None, counter) + ")"
-
-    def sample_value(self, tref: dict, tp: str, counter: list[int]) -> str:
-        counter[0] += 1
-        k = counter[0]
-        kind = tref["kind"]
-        if kind == "primitive":
-            name = tref["name"]
-            pk = PRIMITIVES[name][1]
-            if pk == "int":
-                lo, hi = int_range(name)
-                return str(-(k % 100) - 1) if lo < 0 and k % 2 else str((k * 37 + 1) % min(hi + 1, 251))
-            if pk == "bool":
-                return "True" if k % 2 else "False"
-            if pk == "char":
-                return repr(bytes([0x41 + k % 26]))
-            if name == "float":
-                return ["1.5", "-2.25", "0.375", "1024.0", "-0.0"][k % 5]
-            return ["0.1", "-2.5e-310", "1e+16", "123.456", "-0.0"][k % 5]
-        if kind == "string":
-            n = tref["length"]
-            text = bytes([0x61 + (k + i) % 26 for i in range(min(n, 3))])
-            pad = b" " if tref.get("padding") == "space" else b"\x00"
-            return repr(text + pad * (n - len(text)))
-        if kind == "enum":
-            et = self.types[tref["name"]]
-            v = et["values"][k % len(et["values"])]
-            return f"{tp}{tref['name']}.{const_name(v['name'])}"
-        if kind == "bitfield":
-            bt = self.types[tref["name"]]
-            ms = [m for m in bt["members"] if not m["alias"]] or bt["members"]
-            return f"{tp}{tref['name']}(0x{ms[k % len(ms)]['mask']:X})"
-        if kind == "struct":
-            return self.sample_struct(self.types[tref["name"]], tp, counter)
-        raise ValueError(kind)
+    def sample_args(self, args: list[tuple[str, Sample]], tp: str) -> str:
+        return ", ".join(f"{py_attr(name)}={self.sample_literal(v, tp)}" for name, v in args)
 
     def samples(self, sets: list[dict]) -> list[dict]:
         out = []
-        counter = [0]
         for sm in sets:
             s = sm["set"]
             names = _layout_classes(s["fields"])
@@ -614,59 +556,48 @@ class _Proto:
                 multi = len(f["variants"]) > 1
                 for v in f["variants"]:
                     cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
-                    out.append(
-                        {
-                            "cls": cls,
-                            "expr": f"{cls}("
-                            + self.sample_layout(v["params"], "types.", v["functions"], counter)
-                            + ")",
-                        }
-                    )
+                    args = layout_sample(self.p, s, f, v)
+                    out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
         names = _layout_classes(self.p["reserved_fields"])
         for f in self.p["reserved_fields"]:
             cls = f"reserved.{names[(f['name'], None)]}"
-            out.append({"cls": cls, "expr": f"{cls}(" + self.sample_layout(f["params"], "types.", None, counter) + ")"})
+            args = layout_sample(self.p, None, f, f["variants"][0])
+            out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
         for t in self.type_order():
             if t["kind"] == "struct":
-                out.append({"cls": f"types.{t['name']}", "expr": self.sample_struct(t, "types.", counter)})
+                out.append(
+                    {"cls": f"types.{t['name']}", "expr": self.sample_literal(struct_sample(self.p, t), "types.")}
+                )
         return out
 
     def bitfield_cases(self) -> list[dict]:
-        out = []
-        for t in self.p["types"]:
-            if t["kind"] != "bitfield":
-                continue
-            for m in t["members"]:
-                out.append(
-                    {
-                        "cls": f"types.{t['name']}",
-                        "attr": py_attr(m["name"], BITFIELD_RESERVED),
-                        "const": const_name(m["name"]),
-                        "first": m["first_bit"],
-                        "width": m["width"],
-                        "mask": m["mask"],
-                    }
-                )
-        return out
+        return [
+            {
+                "cls": f"types.{b.name}",
+                "attr": py_attr(m.name, BITFIELD_RESERVED),
+                "const": const_name(m.name),
+                "first": m.first_bit,
+                "width": m.width,
+                "mask": m.mask,
+            }
+            for b in bitfield_cases(self.p)
+            for m in b.members
+        ]
 
 
 # ------------------------------------------------------------------------------------------ render
 def _vector_cases(vectors: list[dict], proto: dict) -> list[dict]:
-    cases = []
-    for c in vectors:
-        if c.get("protocol") != proto["name"]:
-            continue
-        cases.append(
-            {
-                "name": c["name"],
-                "hex": c["hex"],
-                "device": c.get("device"),
-                "rejected": bool(c.get("rejected")),
-                "where": f"{c.get('file', '')}:{c.get('line', '')}",
-                "expect": list(c["expect"]),
-            }
-        )
-    return cases
+    return [
+        {
+            "name": c.name,
+            "hex": c.hex,
+            "device": c.device,
+            "rejected": c.rejected,
+            "where": c.source,
+            "expect": list(c.expect),
+        }
+        for c in vector_cases(vectors, proto)
+    ]
 
 
 def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
@@ -715,6 +646,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         tests = {
             "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
             "test_typed.py": _typed_context(m, sets),
+            "test_canonical.py": {"canonical": _canonical_context()},
             "test_runtime.py": {},
         }
         for name, extra in tests.items():
@@ -742,6 +674,16 @@ def _example(proto: dict) -> dict:
     example = example_context(proto, api_names)
     example["module"], example["class_name"] = example["api"]["class"].rsplit(".", 1)
     return example
+
+
+def _canonical_context() -> dict:
+    """The canonical float/string table of generator/testcases.py as Python literals."""
+    cases = canonical_cases()
+    return {
+        "doubles": [{"bits": f"0x{c.bits:016X}", "text": repr(c.text)} for c in cases.doubles],
+        "floats": [{"bits": f"0x{c.bits:08X}", "text": repr(c.text)} for c in cases.floats],
+        "all_bytes": repr(cases.all_bytes),
+    }
 
 
 def _typed_context(m: _Proto, sets: list[dict]) -> dict:

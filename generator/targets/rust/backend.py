@@ -9,15 +9,14 @@ Rust in runtime/, copied verbatim into each crate: its only protocol input is th
 
 from __future__ import annotations
 
-import random
 import re
-import struct
 
-from generator import model
-from generator.canonical import float_text, string_text
+from generator import model, naming
 from generator.examples import example_context
+from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.render import ToolError, copy_runtime, environment
+from generator.testcases import bitfield_cases, canonical_cases, layout_error_cases, vector_cases
 
 from .facts import KEYWORDS, NOT_RAW, PRIMITIVE_TYPES, RESERVED_MODULES
 
@@ -26,18 +25,9 @@ OUTPUT_DIRS = ["rust"]
 
 # ---------------------------------------------------------------------------------------- naming
 def camel(name: str) -> str:
-    """snake_case -> CamelCase; names that already are CamelCase are kept. Digit-digit joins keep a `_`."""
-    if re.fullmatch(r"[A-Z][A-Za-z0-9]*", name):
-        return name
-    out = ""
-    for part in [p for p in name.split("_") if p]:
-        piece = part[0].upper() + part[1:]
-        if out and out[-1].isdigit() and piece[0].isdigit():
-            out += "_"
-        out += piece
-    if not out or out[0].isdigit():
-        out = "T" + out
-    return out
+    """snake_case -> CamelCase with Rust's options (generator/naming.py): a `_` between digit words,
+    `T` before a leading digit."""
+    return naming.camel(name, digit_break="_", leading_digit="T")
 
 
 def ident(name: str) -> str:
@@ -47,10 +37,6 @@ def ident(name: str) -> str:
     if name in KEYWORDS:
         return "r#" + name
     return name
-
-
-def upper(name: str) -> str:
-    return name.upper()
 
 
 def rust_str(s: str) -> str:
@@ -460,179 +446,85 @@ class _Protocol:
             "first_set": sets[0]["id"] if sets else "0x00",
         }
 
-    # ---------------------------------------------------------------- tests computed here
+    # ---------------------------------------------------------------- tests (cases from generator/testcases.py)
     def vector_cases(self) -> list[dict]:
         out = []
         used: set[str] = set()
-        for c in self.vectors:
-            prefix = "stream_" if c["corpus"] == "streams" else "case_"
-            fn = prefix + re.sub(r"[^a-z0-9_]", "_", c["name"].lower())
+        for c in vector_cases(self.vectors, self.proto):
+            prefix = "stream_" if c.corpus == "streams" else "case_"
+            fn = prefix + re.sub(r"[^a-z0-9_]", "_", c.name.lower())
             while fn in used:
                 fn += "_"
             used.add(fn)
             out.append(
                 {
                     "fn": fn,
-                    "name": c["name"],
-                    "hex": rust_str(c["hex"]),
-                    "device": f"Some({rust_str(c['device'])})" if c.get("device") else "None",
-                    "expect": [rust_str(line) for line in c["expect"]],
-                    "rejected": "true" if c["rejected"] else "false",
-                    "source": f"{c['file']}:{c['line']}",
+                    "name": c.name,
+                    "hex": rust_str(c.hex),
+                    "device": f"Some({rust_str(c.device)})" if c.device else "None",
+                    "expect": [rust_str(line) for line in c.expect],
+                    "rejected": "true" if c.rejected else "false",
+                    "source": c.source,
                 }
             )
         return out
 
     def float_cases(self) -> dict:
-        rnd = random.Random(20240611)
-        doubles = [
-            0.0,
-            -0.0,
-            1.0,
-            -1.0,
-            0.1,
-            0.5,
-            123.456,
-            1e16,
-            1e15,
-            9999999999999998.0,
-            1.5e16,
-            1e-4,
-            1e-5,
-            0.00012345,
-            2.5e-310,
-            5e-324,
-            1.7976931348623157e308,
-            2.2250738585072014e-308,
-            1e22,
-            1e21,
-            123456789012345680.0,
-            0.30000000000000004,
-            100.0,
-            1e100,
-            -1e-100,
-            3.14159,
-        ]
-        dbits = [struct.unpack(">Q", struct.pack(">d", x))[0] for x in doubles]
-        dbits += [
-            0x7FF8000000000000,
-            0xFFF8000000000000,
-            0x7FF0000000000001,
-            0x7FF4000000000000,
-            0x7FF0000000000000,
-            0xFFF0000000000000,
-        ]
-        dbits += [rnd.getrandbits(64) for _ in range(300)]
-        floats = [0.0, -0.0, 1.0, 0.1, 16777216.0, 3.4028234663852886e38, 1e-45, 1.1754943508222875e-38, 0.24452066]
-        fbits = [struct.unpack(">I", struct.pack(">f", x))[0] for x in floats]
-        fbits += [0x7FC00000, 0xFFC00000, 0x7FE5BF7F, 0x7F800001, 0x7FA00000, 0x7F800000, 0xFF800000]
-        fbits += [rnd.getrandbits(32) for _ in range(300)]
-        dcases = []
-        for b in dbits:
-            x = struct.unpack(">d", struct.pack(">Q", b))[0]
-            dcases.append({"bits": "0x%016X" % b, "text": rust_str(float_text(x, b, single=False))})
-        fcases = []
-        for b in fbits:
-            x = struct.unpack(">f", struct.pack(">I", b))[0]
-            fcases.append({"bits": "0x%08X" % b, "text": rust_str(float_text(x, b, single=True))})
-        return {"doubles": dcases, "floats": fcases, "all_bytes": rust_str(string_text(bytes(range(256))))}
+        cases = canonical_cases()
+        return {
+            "doubles": [{"bits": "0x%016X" % c.bits, "text": rust_str(c.text)} for c in cases.doubles],
+            "floats": [{"bits": "0x%08X" % c.bits, "text": rust_str(c.text)} for c in cases.floats],
+            "all_bytes": rust_str(cases.all_bytes),
+        }
 
     def bitfield_cases(self) -> list[dict]:
         out = []
-        for t in self.proto["types"]:
-            if t["kind"] != "bitfield":
-                continue
-            base = _int_rust(t["base"])
+        for b in bitfield_cases(self.proto):
             members = []
-            for b in t["members"]:
-                getter = ident(b["name"])
-                if b["width"] == 1:
+            for m in b.members:
+                getter = ident(m.name)
+                if m.flag:
                     maxv, zero = "true", "false"
                     check_max, check_zero = f"assert!(v.{getter}());", f"assert!(!v.{getter}());"
                 else:
-                    maxv, zero = _hex((1 << b["width"]) - 1), "0"
+                    maxv, zero = _hex(m.max), "0"
                     check_max, check_zero = f"assert_eq!(v.{getter}(), {maxv});", f"assert_eq!(v.{getter}(), 0);"
                 members.append(
                     {
                         "getter": getter,
-                        "setter": f"set_{b['name']}",
+                        "setter": f"set_{m.name}",
                         "max": maxv,
                         "zero": zero,
-                        "mask": _hex(b["mask"]),
+                        "mask": _hex(m.mask),
                         "check_max": check_max,
                         "check_zero": check_zero,
                     }
                 )
-            out.append({"rust": camel(t["name"]), "base": base, "members": members})
+            out.append({"rust": camel(b.name), "base": _int_rust(b.base), "members": members})
         return out
 
     def short_cases(self) -> list[dict]:
         """Per layout: the result of decoding empty data and one byte too many (docs/conformance.md §3)."""
         out = []
-        layouts = []
-        for s in self.proto["sets"]:
-            for f in s["fields"]:
-                for v in f["variants"]:
-                    rust = camel(f["name"]) + (camel(v["device"]) if len(f["variants"]) > 1 else "")
-                    layouts.append((self.set_module(s), rust, v))
-        for r in self.proto["reserved_fields"]:
-            layouts.append(("reserved", camel(r["name"]), r["variants"][0]))
-        max_data = self.proto["framing"]["max_field_data"]
-        package = self.package
-        for module, rust, v in layouts:
+        for c in layout_error_cases(self.proto):
+            if c.set is None:
+                module, rust = "reserved", camel(c.field["name"])
+            else:
+                module = self.set_module(c.set)
+                multi = len(c.field["variants"]) > 1
+                rust = camel(c.field["name"]) + (camel(c.layout["device"]) if multi else "")
             case = {"module": module, "rust": rust, "empty": None, "extra_len": None}
-            first = self._first_read(v)
-            if first == "ok":
+            if c.empty == "":
                 case["empty"] = "Ok(())"
-            elif first is not None:
-                path, n = first
-                case["empty"] = f"Err({rust_str(f'{path}: needs {n} bytes at offset 0, 0 left')}.to_string())"
-            size = v["size"]
-            if (
-                all(q["size"]["fixed"] for q in v["params"])
-                and self._zero_safe(v["params"])
-                and size["max"] + 1 <= max_data
-            ):
-                case["extra_len"] = size["max"] + 1
-                case["extra"] = rust_str(f"1 unexpected bytes at offset {size['max']}")
-            case["zero_safe"] = self._zero_safe(v["params"])
-            case["set"] = "0x00" if module == "reserved" else f"{package}::{module}::{rust}::SET"
+            elif c.empty is not None:
+                case["empty"] = f"Err({rust_str(c.empty)}.to_string())"
+            if c.extra_len is not None:
+                case["extra_len"] = c.extra_len
+                case["extra"] = rust_str(c.extra)
+            case["zero_safe"] = c.zero_safe
+            case["set"] = "0x00" if module == "reserved" else f"{self.package}::{module}::{rust}::SET"
             out.append(case)
         return out
-
-    def _first_read(self, layout: dict):
-        if layout["functions"] is not None:
-            return ("function", 1)
-        params = layout["params"]
-        if not params or params[0]["optional"]:
-            return "ok"
-        return self._first_of_param(params[0], params[0]["name"])
-
-    def _first_of_param(self, q: dict, path: str):
-        c = q["count"]
-        t = q["type"]
-        if c is not None:
-            if c["kind"] != "fixed":
-                return None
-            path += "[0]"
-        kind = t["kind"]
-        if kind in ("primitive", "enum", "bitfield", "string"):
-            return (path, t["size"]["min"])
-        if kind == "struct":
-            ps = self.types[t["name"]]["params"]
-            if not ps:
-                return None
-            return self._first_of_param(ps[0], path + "." + ps[0]["name"])
-        return None
-
-    def _zero_safe(self, params: list[dict]) -> bool:
-        for q in params:
-            t = q["type"]
-            if t["kind"] == "union" or (q["count"] is not None and q["count"]["kind"] != "fixed"):
-                return False
-            if t["kind"] == "struct" and not self._zero_safe(self.types[t["name"]]["params"]):
-                return False
-        return True
 
 
 # ---------------------------------------------------------------------------------------- entry points
@@ -673,7 +565,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
     checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
-        model = _Protocol(proto, [v for v in vectors if v["protocol"] == proto["name"]])
+        model = _Protocol(proto, vectors)
         ctx = model.context()
         ctx["cases"] = model.vector_cases()
         ctx["floats"] = model.float_cases()

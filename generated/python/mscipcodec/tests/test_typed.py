@@ -16,65 +16,63 @@ SAMPLES = [
         "base.DeviceMessages",
         lambda: base.DeviceMessages(
             messages=[
-                types.MessageId(message_type=75, message_code=112),
-                types.MessageId(message_type=186, message_code=223),
+                types.MessageId(message_type=117, message_code=154),
+                types.MessageId(message_type=228, message_code=14),
             ]
         ),
     ),
     ("base.DeviceReset", lambda: base.DeviceReset()),
     ("base.GetDeviceModel", lambda: base.GetDeviceModel()),
-    ("base.DeviceModel", lambda: base.DeviceModel(model=b"hij             ")),
+    ("base.DeviceModel", lambda: base.DeviceModel(model=b"rst             ")),
     ("base.GetDeviceSn", lambda: base.GetDeviceSn()),
-    ("base.DeviceSn", lambda: base.DeviceSn(serial_number=b"ijk             ")),
+    ("base.DeviceSn", lambda: base.DeviceSn(serial_number=b"zab             ")),
     ("base.GetDeviceFw", lambda: base.GetDeviceFw()),
-    ("base.DeviceFw", lambda: base.DeviceFw(firmware=b"jkl             ")),
+    ("base.DeviceFw", lambda: base.DeviceFw(firmware=b"zab             ")),
     ("base.GetDeviceCal", lambda: base.GetDeviceCal()),
     ("base.DeviceCal", lambda: base.DeviceCal(date=b"klm             ")),
-    ("base.CorrelateGpsTime", lambda: base.CorrelateGpsTime(week=157, seconds=194)),
+    ("base.CorrelateGpsTime", lambda: base.CorrelateGpsTime(week=171, seconds=208)),
     (
         "imu_config.UartBaudRate",
         lambda: imu_config.UartBaudRate(function=types.FunctionCode.DEFAULT, baud_rate=types.BaudRate.BAUD_19200),
     ),
-    ("imu_config.UartBaudRateResponse", lambda: imu_config.UartBaudRateResponse(baud_rate=types.BaudRate.BAUD_115200)),
+    ("imu_config.UartBaudRateResponse", lambda: imu_config.UartBaudRateResponse(baud_rate=types.BaudRate.BAUD_9600)),
     (
         "imu_config.Filter",
         lambda: imu_config.Filter(function=types.FunctionCode.DEFAULT, bandwidth=types.FilterBandwidth.IIR_200HZ),
     ),
-    ("imu_config.FilterResponse", lambda: imu_config.FilterResponse(bandwidth=types.FilterBandwidth.DISABLED)),
-    ("imu_config.SampleRate", lambda: imu_config.SampleRate(function=types.FunctionCode.DEFAULT, decimation=128)),
-    ("imu_config.SampleRateResponse", lambda: imu_config.SampleRateResponse(decimation=165)),
+    ("imu_config.FilterResponse", lambda: imu_config.FilterResponse(bandwidth=types.FilterBandwidth.IIR_75HZ)),
+    ("imu_config.SampleRate", lambda: imu_config.SampleRate(function=types.FunctionCode.DEFAULT, decimation=60)),
+    ("imu_config.SampleRateResponse", lambda: imu_config.SampleRateResponse(decimation=103)),
     (
         "imu_config.SelectSensors",
         lambda: imu_config.SelectSensors(
             function=types.FunctionCode.DEFAULT,
-            reserved=202,
-            sensors=[types.SensorCode.SCALED_MAG, types.SensorCode.DELTA_THETA],
+            reserved=210,
+            sensors=[types.SensorCode.SCALED_AUX_ACCEL, types.SensorCode.SCALED_ACCEL],
         ),
     ),
     (
         "imu_config.SelectSensorsResponse",
-        lambda: imu_config.SelectSensorsResponse(
-            sensors=[types.SensorCode.DELTA_VELOCITY, types.SensorCode.SCALED_PRESSURE]
-        ),
+        lambda: imu_config.SelectSensorsResponse(sensors=[types.SensorCode.SCALED_ACCEL, types.SensorCode.SCALED_GYRO]),
     ),
     ("imu_config.GetInternalSampleRate", lambda: imu_config.GetInternalSampleRate()),
-    ("imu_config.InternalSampleRate", lambda: imu_config.InternalSampleRate(rate=136)),
+    ("imu_config.InternalSampleRate", lambda: imu_config.InternalSampleRate(rate=214)),
     (
         "imu_config.AccelRange",
-        lambda: imu_config.AccelRange(function=types.FunctionCode.DEFAULT, range=types.AccelRange.RANGE_15G),
+        lambda: imu_config.AccelRange(function=types.FunctionCode.DEFAULT, range=types.AccelRange.RANGE_40G),
     ),
-    ("imu_config.AccelRangeResponse", lambda: imu_config.AccelRangeResponse(range=types.AccelRange.RANGE_20G)),
+    ("imu_config.AccelRangeResponse", lambda: imu_config.AccelRangeResponse(range=types.AccelRange.RANGE_40G)),
     (
         "imu_config.GyroRange",
-        lambda: imu_config.GyroRange(function=types.FunctionCode.DEFAULT, range=types.GyroRange.RANGE_200DPS),
+        lambda: imu_config.GyroRange(function=types.FunctionCode.DEFAULT, range=types.GyroRange.RANGE_240DPS),
     ),
-    ("imu_config.GyroRangeResponse", lambda: imu_config.GyroRangeResponse(range=types.GyroRange.RANGE_120DPS)),
+    ("imu_config.GyroRangeResponse", lambda: imu_config.GyroRangeResponse(range=types.GyroRange.RANGE_240DPS)),
     ("imu_config.ConfigAll", lambda: imu_config.ConfigAll(function=types.FunctionCode.DEFAULT)),
     ("imu_config.DataOnOff", lambda: imu_config.DataOnOff(function=types.FunctionCode.DEFAULT, control=types.OnOff.ON)),
-    ("imu_config.DataOnOffResponse", lambda: imu_config.DataOnOffResponse(control=types.OnOff.OFF)),
+    ("imu_config.DataOnOffResponse", lambda: imu_config.DataOnOffResponse(control=types.OnOff.ON)),
     (
         "imu_config.XtrigOnOff",
-        lambda: imu_config.XtrigOnOff(function=types.FunctionCode.DEFAULT, control=types.OnOff.ON),
+        lambda: imu_config.XtrigOnOff(function=types.FunctionCode.DEFAULT, control=types.OnOff.OFF),
     ),
     ("imu_config.XtrigOnOffResponse", lambda: imu_config.XtrigOnOffResponse(control=types.OnOff.OFF)),
     (
@@ -87,28 +85,28 @@ SAMPLES = [
     (
         "imu_config.SelectSensorsRevBResponse",
         lambda: imu_config.SelectSensorsRevBResponse(
-            sensors=[types.SensorCode.SCALED_AUX_ACCEL, types.SensorCode.SCALED_ACCEL]
+            sensors=[types.SensorCode.SCALED_ACCEL, types.SensorCode.SCALED_GYRO]
         ),
     ),
     (
         "imu_config.AuxAccelRange",
-        lambda: imu_config.AuxAccelRange(function=types.FunctionCode.DEFAULT, range=types.AccelRange.RANGE_8G),
+        lambda: imu_config.AuxAccelRange(function=types.FunctionCode.DEFAULT, range=types.AccelRange.RANGE_20G),
     ),
-    ("imu_config.AuxAccelRangeResponse", lambda: imu_config.AuxAccelRangeResponse(range=types.AccelRange.RANGE_10G)),
-    ("imu_data.ScaledAccel", lambda: imu_data.ScaledAccel(accel=[-0.0, 1.5, -2.25])),
-    ("imu_data.ScaledGyro", lambda: imu_data.ScaledGyro(gyro=[0.375, 1024.0, -0.0])),
-    ("imu_data.ScaledMag", lambda: imu_data.ScaledMag(mag=[1.5, -2.25, 0.375])),
-    ("imu_data.DeltaTheta", lambda: imu_data.DeltaTheta(delta_theta=[1024.0, -0.0, 1.5])),
-    ("imu_data.DeltaVelocity", lambda: imu_data.DeltaVelocity(delta_velocity=[-2.25, 0.375, 1024.0])),
-    ("imu_data.ScaledPressure", lambda: imu_data.ScaledPressure(pressure=-0.0)),
-    ("imu_data.ScaledTemperature", lambda: imu_data.ScaledTemperature(temperature=1.5)),
+    ("imu_config.AuxAccelRangeResponse", lambda: imu_config.AuxAccelRangeResponse(range=types.AccelRange.RANGE_2G)),
+    ("imu_data.ScaledAccel", lambda: imu_data.ScaledAccel(accel=[1024.0, -0.0, 1.5])),
+    ("imu_data.ScaledGyro", lambda: imu_data.ScaledGyro(gyro=[-2.25, 0.375, 1024.0])),
+    ("imu_data.ScaledMag", lambda: imu_data.ScaledMag(mag=[1024.0, -0.0, 1.5])),
+    ("imu_data.DeltaTheta", lambda: imu_data.DeltaTheta(delta_theta=[-2.25, 0.375, 1024.0])),
+    ("imu_data.DeltaVelocity", lambda: imu_data.DeltaVelocity(delta_velocity=[1.5, -2.25, 0.375])),
+    ("imu_data.ScaledPressure", lambda: imu_data.ScaledPressure(pressure=-2.25)),
+    ("imu_data.ScaledTemperature", lambda: imu_data.ScaledTemperature(temperature=1024.0)),
     (
         "imu_data.GpsCorrelatedTime",
-        lambda: imu_data.GpsCorrelatedTime(seconds=-2.5e-310, week=102, flags=types.GpsTimeFlags(0x8)),
+        lambda: imu_data.GpsCorrelatedTime(seconds=123.456, week=164, flags=types.GpsTimeFlags(0x1)),
     ),
     ("imu_data.ScaledAuxAccel", lambda: imu_data.ScaledAuxAccel(accel=[-0.0, 1.5, -2.25])),
-    ("reserved.Ack", lambda: reserved.Ack(command_code=36, error_code=types.ErrorCode.INVALID_MESSAGE_CODE)),
-    ("types.MessageId", lambda: types.MessageId(message_type=110, message_code=147)),
+    ("reserved.Ack", lambda: reserved.Ack(command_code=213, error_code=types.ErrorCode.INVALID_MESSAGE_CODE)),
+    ("types.MessageId", lambda: types.MessageId(message_type=49, message_code=86)),
 ]
 
 BITFIELD_MEMBERS = [
