@@ -375,6 +375,14 @@ def _params(ctx: _Ctx, path: tuple, params: list[dict], values: dict) -> list[st
         v = values[q["name"]]
         seen[q["name"]] = v
         parts.append('"%s":%s' % (q["name"], _param_value(ctx, path + (q["name"],), q, v, seen)))
+    last = next((q for q in reversed(params) if q["name"] in values), None)
+    if last is not None and last["optional"] and last["count"] is not None and values[last["name"]] == []:
+        # It takes no bytes and nothing follows, so no decoder can tell it from absent (conformance.md §3).
+        ctx.err(
+            path + (last["name"],),
+            f"optional parameter '{last['name']}' is empty and last: decoders print it absent",
+            f"leave '{last['name']}' out",
+        )
     return parts
 
 

@@ -48,6 +48,12 @@ CASES = [
         "[{set: 1, fields: [{descriptor: 0x83, name: built_in_test_result, values: {flags: 0}}]}]",
         "has per-device variants; name one with device:",
     ),
+    (
+        "empty optional array last",
+        "[{set: 12, fields: [{descriptor: 8, name: imu_message_format,"
+        " values: {function: read, num_descriptors: 0, descriptors: []}}]}]",
+        "optional parameter 'descriptors' is empty and last: decoders print it absent (expected leave 'descriptors' out)",
+    ),
 ]
 
 

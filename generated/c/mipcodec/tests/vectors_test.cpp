@@ -623,11 +623,10 @@ TEST(Vectors, filter_message_format_ack) {
 }
 
 TEST(Vectors, save_message_formats_command) {
-    check_vector(
-        "75650c0804080300040a03000e31", MIP_DEVICE_ANY,
-        "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{"
-        "\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}},{\"descriptor\":10,\"name\":\"filter_"
-        "message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
+    check_vector("75650c0804080300040a03000e31", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
+                 "\"values\":{\"function\":3,\"num_descriptors\":0}},{\"descriptor\":10,\"name\":\"filter_"
+                 "message_format\",\"values\":{\"function\":3,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, message_formats_two_acks) {
@@ -782,7 +781,7 @@ TEST(Vectors, imu_message_format_write) {
 TEST(Vectors, imu_message_format_read) {
     check_vector("75650c0404080200f8f3", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
-                 "\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
+                 "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_read_reply) {
@@ -801,7 +800,7 @@ TEST(Vectors, imu_message_format_read_reply_table_published) {
 TEST(Vectors, imu_message_format_load) {
     check_vector("75650c0404080400faf7", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
-                 "\"values\":{\"function\":4,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
+                 "\"values\":{\"function\":4,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_write) {
@@ -820,7 +819,7 @@ TEST(Vectors, gnss_message_format_ack) {
 TEST(Vectors, gnss_message_format_read) {
     check_vector("75650c0404090200f9f6", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
-                 "\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
+                 "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_read_table_published) {
@@ -853,13 +852,13 @@ TEST(Vectors, filter_message_format_write_copy_paste_published) {
 TEST(Vectors, filter_message_format_read) {
     check_vector("75650c04040a0200faf9", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
-                 "\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
+                 "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_read_copy_paste_published) {
     check_vector("75650c0404090200f9f6", MIP_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
-                 "\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
+                 "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_read_reply) {
@@ -930,10 +929,9 @@ TEST(Vectors, gnss_constellation_settings_ack) {
 }
 
 TEST(Vectors, gnss_constellation_settings_read) {
-    check_vector(
-        "75650c06062102000000157a", MIP_DEVICE_ANY,
-        "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_settings\","
-        "\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0,\"settings\":[]}}]}\n");
+    check_vector("75650c06062102000000157a", MIP_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
+                 "settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_constellation_settings_read_reply) {

@@ -878,9 +878,8 @@ TEST(Vectors, save_message_formats_command) {
     check_vector("75650c0804080300040a03000e31", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
-                     "\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}},{\"descriptor\":"
-                     "10,\"name\":\"filter_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,"
-                     "\"descriptors\":[]}}]}",
+                     "\"values\":{\"function\":3,\"num_descriptors\":0}},{\"descriptor\":10,\"name\":"
+                     "\"filter_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0}}]}",
                  });
 }
 
@@ -1107,7 +1106,7 @@ TEST(Vectors, imu_message_format_read) {
     check_vector("75650c0404080200f8f3", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
-                     "\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                     "\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
                  });
 }
 
@@ -1135,7 +1134,7 @@ TEST(Vectors, imu_message_format_load) {
     check_vector("75650c0404080400faf7", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
-                     "\"values\":{\"function\":4,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                     "\"values\":{\"function\":4,\"num_descriptors\":0}}]}",
                  });
 }
 
@@ -1163,7 +1162,7 @@ TEST(Vectors, gnss_message_format_read) {
     check_vector("75650c0404090200f9f6", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_"
-                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
                  });
 }
 
@@ -1211,7 +1210,7 @@ TEST(Vectors, filter_message_format_read) {
     check_vector("75650c04040a0200faf9", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_"
-                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
                  });
 }
 
@@ -1220,7 +1219,7 @@ TEST(Vectors, filter_message_format_read_copy_paste_published) {
     check_vector("75650c0404090200f9f6", nullptr, false,
                  {
                      "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_"
-                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+                     "format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
                  });
 }
 
@@ -1323,12 +1322,11 @@ TEST(Vectors, gnss_constellation_settings_ack) {
 
 // gnss_constellation_settings_read
 TEST(Vectors, gnss_constellation_settings_read) {
-    check_vector(
-        "75650c06062102000000157a", nullptr, false,
-        {
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
-            "settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0,\"settings\":[]}}]}",
-        });
+    check_vector("75650c06062102000000157a", nullptr, false,
+                 {
+                     "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
+                     "settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0}}]}",
+                 });
 }
 
 // gnss_constellation_settings_read_reply

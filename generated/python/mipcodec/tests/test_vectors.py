@@ -916,7 +916,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:82",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":3,"num_descriptors":0,"descriptors":[]}},{"descriptor":10,"name":"filter_message_format","values":{"function":3,"num_descriptors":0,"descriptors":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":3,"num_descriptors":0}},{"descriptor":10,"name":"filter_message_format","values":{"function":3,"num_descriptors":0}}]}'
         ],
     },
     {
@@ -1146,7 +1146,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:355",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":2,"num_descriptors":0}}]}'
         ],
     },
     {
@@ -1174,7 +1174,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:398",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":4,"num_descriptors":0,"descriptors":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":8,"name":"imu_message_format","values":{"function":4,"num_descriptors":0}}]}'
         ],
     },
     {
@@ -1204,7 +1204,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:429",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0}}]}'
         ],
     },
     {
@@ -1252,7 +1252,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:492",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":10,"name":"filter_message_format","values":{"function":2,"num_descriptors":0}}]}'
         ],
     },
     {
@@ -1262,7 +1262,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:501",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0,"descriptors":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":9,"name":"gnss_message_format","values":{"function":2,"num_descriptors":0}}]}'
         ],
     },
     {
@@ -1362,7 +1362,7 @@ CASES = [
         "rejected": False,
         "where": "tests/vectors/mip/3dm_streaming.yaml:644",
         "expect": [
-            '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":2,"max_channels":0,"config_count":0,"settings":[]}}]}'
+            '{"offset":0,"set":12,"fields":[{"descriptor":33,"name":"gnss_constellation_settings","values":{"function":2,"max_channels":0,"config_count":0}}]}'
         ],
     },
     {

@@ -1205,7 +1205,7 @@ fn case_save_message_formats_command() {
         "75650c0804080300040a03000e31",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}},{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0}},{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":3,\"num_descriptors\":0}}]}",
         ],
         false,
     );
@@ -1513,7 +1513,7 @@ fn case_imu_message_format_read() {
         "75650c0404080200f8f3",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
         ],
         false,
     );
@@ -1550,7 +1550,7 @@ fn case_imu_message_format_load() {
         "75650c0404080400faf7",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":4,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{\"function\":4,\"num_descriptors\":0}}]}",
         ],
         false,
     );
@@ -1589,7 +1589,7 @@ fn case_gnss_message_format_read() {
         "75650c0404090200f9f6",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
         ],
         false,
     );
@@ -1652,7 +1652,7 @@ fn case_filter_message_format_read() {
         "75650c04040a0200faf9",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
         ],
         false,
     );
@@ -1665,7 +1665,7 @@ fn case_filter_message_format_read_copy_paste_published() {
         "75650c0404090200f9f6",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0,\"descriptors\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\",\"values\":{\"function\":2,\"num_descriptors\":0}}]}",
         ],
         false,
     );
@@ -1795,7 +1795,7 @@ fn case_gnss_constellation_settings_read() {
         "75650c06062102000000157a",
         None,
         &[
-            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0,\"settings\":[]}}]}",
+            "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0}}]}",
         ],
         false,
     );
