@@ -1,21 +1,24 @@
 """C++17 back end: one header-only library per protocol at generated/cpp/<package>/.
 
-All naming and type mapping happens here; the templates in templates/cpp/ only loop and print.
-Layout of a package (namespace = protocols[].package):
+All naming and type mapping happens here (language facts in facts.py); the templates in
+templates/cpp/ only loop and print, and the hand-written runtime in runtime/ is copied verbatim
+(runtime/README.md). Layout of a package (namespace = protocols[].package):
 
-  include/<pkg>/framing.hpp          framing constants (from protocols[].framing) and limits
-  include/<pkg>/wire.hpp             Reader/Writer, DecodeError, BoundedVector, Codec<T> for primitives
-  include/<pkg>/checksum.hpp         Fletcher-16
-  include/<pkg>/packet.hpp           PacketBuilder, PacketView, FieldIterator
-  include/<pkg>/parser.hpp           StreamParser (docs/conformance.md section 1)
-  include/<pkg>/samples.hpp          SampleTracker, SampleGrouper (continuation packets, section 6)
+  include/<pkg>/framing.hpp          framing constants, sample rule and limits (the runtime's only protocol input)
+  include/<pkg>/wire.hpp             runtime: Reader/Writer, DecodeError, BoundedVector, Codec<T> for primitives
+  include/<pkg>/checksum.hpp         runtime: Fletcher-16
+  include/<pkg>/packet.hpp           runtime: PacketBuilder, PacketView, FieldIterator
+  include/<pkg>/parser.hpp           runtime: StreamParser (docs/conformance.md section 1)
+  include/<pkg>/samples.hpp          runtime: SampleTracker, SampleGrouper (continuation packets, section 6)
+  include/<pkg>/json_{writer,reader,codec}.hpp  runtime: canonical JSON writer, JSON reader, Json<T> of primitives
+  include/<pkg>/dispatch.hpp         runtime: decode_field(): variants, raw fallback
+  include/<pkg>/json_lines.hpp       runtime: stream -> JSON lines, JSON line -> bytes (what the CLIs do)
   include/<pkg>/devices.hpp          Device enum, set kinds
   include/<pkg>/types.hpp            <pkg>::types: enums, bitfields, structs, unions (+ Codec)
-  include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec)
+  include/<pkg>/types_json.hpp       Json<T> of the types
+  include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec), and <set>_json.hpp
+  include/<pkg>/layouts_json.hpp     every set's <set>_json.hpp (for json_lines.hpp)
   include/<pkg>/lookup.hpp           (set, descriptor) -> layouts, with reserved and shared fields
-  include/<pkg>/dispatch.hpp         decode_field(): variants, raw fallback
-  include/<pkg>/json_*.hpp           canonical JSON writer, JSON reader, Json<T> codecs
-  include/<pkg>/json_lines.hpp       stream -> JSON lines, JSON line -> bytes (what the CLIs do)
   tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt
 """
 
@@ -26,6 +29,7 @@ import re
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.render import copy_runtime, environment
+from generator.targets.cpp.facts import KEYWORDS, PRIMITIVE_TYPES
 
 OUTPUT_DIRS = ["cpp"]
 
@@ -54,19 +58,6 @@ def runtime_names(pkg: str, ns: str) -> list[tuple[str, str]]:
     that is a C++ keyword), and macros the namespace in capitals."""
     return [("protopkg/", pkg + "/"), ("protopkg", ns), ("PROTOPKG", ns.upper())]
 
-
-CPP_KEYWORDS = set(
-    """
-    alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t char16_t char32_t class
-    compl concept const consteval constexpr constinit const_cast continue co_await co_return co_yield decltype
-    default delete do double dynamic_cast else enum explicit export extern false float for friend goto if inline
-    int long mutable namespace new noexcept not not_eq nullptr operator or or_eq private protected public register
-    reinterpret_cast requires return short signed sizeof static static_assert static_cast struct switch template
-    this thread_local throw true try typedef typeid typename union unsigned using virtual void volatile wchar_t
-    while xor xor_eq
-    std NULL assert errno stdin stdout stderr EOF
-    """.split()
-)  # C++ keywords, and names (std, common macros) a member must not shadow
 
 # Sub-namespaces of a package that the runtime uses; a set with one of these names gets a suffix.
 RUNTIME_NAMESPACES = {
@@ -111,28 +102,13 @@ RUNTIME_NAMESPACES = {
     "json_check_object",
 }  # namespace-scope names of the runtime; a set with one of these names gets a "_set" suffix
 
-PRIM_CPP = {
-    "bool": "bool",
-    "char": "char",
-    "u8": "std::uint8_t",
-    "u16": "std::uint16_t",
-    "u32": "std::uint32_t",
-    "u64": "std::uint64_t",
-    "s8": "std::int8_t",
-    "s16": "std::int16_t",
-    "s32": "std::int32_t",
-    "s64": "std::int64_t",
-    "float": "float",
-    "double": "double",
-}
-
 
 def camel(name: str) -> str:
     return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
-    return name + "_" if name in CPP_KEYWORDS or name in extra else name
+    return name + "_" if name in KEYWORDS or name in extra else name
 
 
 def int_literal(v: int) -> str:
@@ -230,7 +206,7 @@ class _Proto:
     def elem_cpp(self, tref: dict) -> str:
         k = tref["kind"]
         if k == "primitive":
-            return PRIM_CPP[tref["name"]]
+            return PRIMITIVE_TYPES[tref["name"]]
         if k == "string":
             return f"std::array<char, {tref['length']}>"
         return self.type_name(tref["name"])
@@ -402,12 +378,12 @@ class _Proto:
             "title": " ".join(t.get("title", t["name"]).split()),
         }
         if t["kind"] == "enum":
-            m["base"] = PRIM_CPP[t["base"]]
+            m["base"] = PRIMITIVE_TYPES[t["base"]]
             m["enumerators"] = [
                 {"name": v["name"], "cpp": ident(v["name"]), "literal": int_literal(v["value"])} for v in t["values"]
             ]
         elif t["kind"] == "bitfield":
-            m["base"] = PRIM_CPP[t["base"]]
+            m["base"] = PRIMITIVE_TYPES[t["base"]]
             taken = {"raw", "set_raw", "Raw"}
             members = []
             for b in t["members"]:
@@ -451,7 +427,7 @@ class _Proto:
             m["alternatives"] = alts
             m["members"] = members
             m["selector"] = self.type_name(sel["name"])
-            m["selector_base"] = PRIM_CPP[sel["base"]]
+            m["selector_base"] = PRIMITIVE_TYPES[sel["base"]]
             m["selector_signed"] = sel["base"].startswith("s")
         return m
 

@@ -23,16 +23,16 @@ struct Event {
     bool packet;
     std::uint64_t offset;
     std::uint64_t count;
-    bool operator==(const Event& o) const {
+    bool operator==(const Event &o) const {
         return packet == o.packet && offset == o.offset && count == o.count;
     }
 };
 
 /// The events of a parser fed `input` in chunks of `chunk` bytes, then flushed.
-inline std::vector<Event> events(const Bytes& input, std::size_t chunk) {
+inline std::vector<Event> events(const Bytes &input, std::size_t chunk) {
     pkg::StreamParser parser;
     std::vector<Event> out;
-    auto on = [&](const pkg::StreamEvent& e) {
+    auto on = [&](const pkg::StreamEvent &e) {
         if (e.kind == pkg::StreamEvent::Kind::packet) {
             out.push_back({true, e.offset, e.packet.size});
         } else {
@@ -73,7 +73,7 @@ inline Bytes packet(std::uint8_t set, std::uint8_t descriptor, std::size_t n) {
 
 inline Bytes cat(std::initializer_list<Bytes> parts) {
     Bytes out;
-    for (const Bytes& p : parts) {
+    for (const Bytes &p : parts) {
         out.insert(out.end(), p.begin(), p.end());
     }
     return out;

@@ -39,7 +39,7 @@ TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
     // Lengths past 256 bytes: the lanes are masked once per run of 32 eight-byte blocks.
     std::uint8_t bytes[600 + 7];
     std::uint32_t state = 12345;
-    for (std::uint8_t& b : bytes) {
+    for (std::uint8_t &b : bytes) {
         state = state * 1103515245u + 12345u;
         b = static_cast<std::uint8_t>(state >> 16);
     }
@@ -84,7 +84,7 @@ TEST(Checksum, BuilderWritesHeaderAndChecksum) {
     EXPECT_EQ(0, std::memcmp(p.data(), pkg::kSync.data(), pkg::kSyncSize));
     EXPECT_EQ(p[pkg::kSetOffset], 0x01);
     EXPECT_EQ(p[pkg::kLengthOffset], pkg::kFieldHeaderSize + 3);
-    const std::uint8_t* field = p.data() + pkg::kHeaderSize;
+    const std::uint8_t *field = p.data() + pkg::kHeaderSize;
     EXPECT_EQ(field[pkg::kFieldLengthOffset], 3 + pkg::kFieldLengthAdjust);
     EXPECT_EQ(field[pkg::kFieldDescriptorOffset], 0x7A);
     const auto sums = pkg::fletcher16(p.data(), p.size() - 2).bytes();
@@ -93,7 +93,7 @@ TEST(Checksum, BuilderWritesHeaderAndChecksum) {
     // one bit flipped in the checksum: the whole packet is skipped
     Bytes bad = p;
     bad.back() ^= 1;
-    EXPECT_EQ(events(bad, 64), (std::vector<Event>{ {false, 0, bad.size()} }));
+    EXPECT_EQ(events(bad, 64), (std::vector<Event>{{false, 0, bad.size()}}));
 }
 
 TEST(Parser, GarbageAndResync) {
@@ -122,7 +122,7 @@ TEST(Parser, FalseSyncIsSkippedOneByteAtATime) {
     fake[pkg::kLengthOffset] = 3;
     const Bytes input = cat({fake, real});
     ASSERT_NE(pkg::fletcher16(input.data(), pkg::kHeaderSize + 3).bytes()[0], input[pkg::kHeaderSize + 3]);
-    const std::vector<Event> want = { {false, 0, fake.size()}, {true, fake.size(), real.size()} };
+    const std::vector<Event> want = {{false, 0, fake.size()}, {true, fake.size(), real.size()}};
     EXPECT_EQ(events(input, input.size()), want);
     EXPECT_EQ(events(input, 1), want);
 }
@@ -130,12 +130,12 @@ TEST(Parser, FalseSyncIsSkippedOneByteAtATime) {
 TEST(Parser, TruncatedAtEndOfStream) {
     const Bytes p = packet(0x01, 0x20, 6);
     const Bytes input = cat({p, Bytes(p.begin(), p.end() - 1)});
-    const std::vector<Event> want = { {true, 0, p.size()}, {false, p.size(), p.size() - 1} };
+    const std::vector<Event> want = {{true, 0, p.size()}, {false, p.size(), p.size() - 1}};
     EXPECT_EQ(events(input, input.size()), want);
     EXPECT_EQ(events(input, 1), want);
     // a lone partial sync at the very end is skipped at flush
     const Bytes lone = cat({p, Bytes(pkg::kSync.begin(), pkg::kSync.begin() + 1)});
-    EXPECT_EQ(events(lone, 1), (std::vector<Event>{ {true, 0, p.size()}, {false, p.size(), 1} }));
+    EXPECT_EQ(events(lone, 1), (std::vector<Event>{{true, 0, p.size()}, {false, p.size(), 1}}));
 }
 
 TEST(Parser, FalseSyncRunningPastTheEndKeepsThePacketBehindIt) {
@@ -145,10 +145,10 @@ TEST(Parser, FalseSyncRunningPastTheEndKeepsThePacketBehindIt) {
     Bytes fake(pkg::kSync.begin(), pkg::kSync.end());
     fake.resize(pkg::kHeaderSize, 0x00);
     fake[pkg::kSetOffset] = static_cast<std::uint8_t>(pkg::kSync[0] ^ 0x5A);
-    fake[pkg::kLengthOffset] = static_cast<std::uint8_t>(real.size() + 10 <= pkg::kMaxPayload ? real.size() + 10
-                                                                                               : pkg::kMaxPayload);
+    fake[pkg::kLengthOffset] =
+        static_cast<std::uint8_t>(real.size() + 10 <= pkg::kMaxPayload ? real.size() + 10 : pkg::kMaxPayload);
     const Bytes input = cat({fake, real});
-    const std::vector<Event> want = { {false, 0, fake.size()}, {true, fake.size(), real.size()} };
+    const std::vector<Event> want = {{false, 0, fake.size()}, {true, fake.size(), real.size()}};
     EXPECT_EQ(events(input, input.size()), want);
     EXPECT_EQ(events(input, 1), want);
 }
@@ -189,7 +189,7 @@ TEST(Parser, ChunkIndependent) {
     }
     // every byte is accounted for, in order
     std::uint64_t pos = 0;
-    for (const Event& e : whole) {
+    for (const Event &e : whole) {
         EXPECT_EQ(e.offset, pos);
         pos += e.count;
     }
@@ -210,7 +210,8 @@ TEST(Fields, TrailingMessages) {
     two[pkg::kFieldDescriptorOffset] = 0x01;
     pkg::FieldIterator b(0x01, two, 2);
     ASSERT_TRUE(b.next(e));
-    EXPECT_STREQ(e.text().c_str(), "field length 200 at payload offset 0 overruns the payload (2 bytes left)");
+    EXPECT_STREQ(e.text().c_str(),
+                 "field length 200 at payload offset 0 overruns the payload (2 bytes left)");
     if (pkg::kFieldLengthCountsHeader) {
         two[pkg::kFieldLengthOffset] = 1;
         pkg::FieldIterator c(0x01, two, 2);
@@ -221,7 +222,7 @@ TEST(Fields, TrailingMessages) {
 
 Bytes stamped(std::uint8_t stamp, bool key, std::uint8_t descriptor, char data) {
     pkg::PacketBuilder b(pkg::sample_rule::kDataSets[0]);
-    const auto& ts = pkg::sample_rule::kTimestamps[0];
+    const auto &ts = pkg::sample_rule::kTimestamps[0];
     const Bytes value(ts.size, stamp);
     if (key) {
         EXPECT_EQ(b.add_raw_field(ts.descriptor, value.data(), value.size()), pkg::EncodeError::none);
@@ -237,16 +238,16 @@ TEST(Samples, GrouperMergesContinuationPackets) {
                                         stamped(2, true, 0x03, 'c'), stamped(0, false, 0x04, 'd')};
     pkg::SampleTracker tracker;
     std::vector<std::pair<std::uint64_t, bool>> places;
-    for (const Bytes& p : packets) {
+    for (const Bytes &p : packets) {
         const auto place = tracker.feed(pkg::PacketView{p.data(), p.size()});
         ASSERT_TRUE(place.has_value());
         places.emplace_back(place->number, place->continues);
     }
-    const std::vector<std::pair<std::uint64_t, bool>> want = { {0, false}, {0, true}, {1, false}, {2, false} };
+    const std::vector<std::pair<std::uint64_t, bool>> want = {{0, false}, {0, true}, {1, false}, {2, false}};
     EXPECT_EQ(places, want);
     pkg::SampleGrouper grouper;
     std::vector<pkg::Sample> done;
-    auto keep = [&](pkg::Sample&& s) { done.push_back(std::move(s)); };
+    auto keep = [&](pkg::Sample &&s) { done.push_back(std::move(s)); };
     for (std::size_t i = 0; i < packets.size(); ++i) {
         grouper.feed(pkg::PacketView{packets[i].data(), packets[i].size()}, i * 100, keep);
     }
@@ -255,13 +256,14 @@ TEST(Samples, GrouperMergesContinuationPackets) {
     EXPECT_EQ(done[1].number, 1u);
     EXPECT_EQ(done[0].offsets, (std::vector<std::uint64_t>{0, 100}));
     std::vector<std::uint8_t> descriptors;
-    done[0].for_each_field([&](const pkg::FieldEntry& e) { descriptors.push_back(e.descriptor); });
-    EXPECT_EQ(descriptors, (std::vector<std::uint8_t>{pkg::sample_rule::kTimestamps[0].descriptor, 0x01, 0x02}));
+    done[0].for_each_field([&](const pkg::FieldEntry &e) { descriptors.push_back(e.descriptor); });
+    EXPECT_EQ(descriptors,
+              (std::vector<std::uint8_t>{pkg::sample_rule::kTimestamps[0].descriptor, 0x01, 0x02}));
     grouper.flush(keep);
     ASSERT_EQ(done.size(), 3u);
     EXPECT_EQ(done[2].number, 2u);
     descriptors.clear();
-    done[2].for_each_field([&](const pkg::FieldEntry& e) { descriptors.push_back(e.descriptor); });
+    done[2].for_each_field([&](const pkg::FieldEntry &e) { descriptors.push_back(e.descriptor); });
     EXPECT_EQ(descriptors, (std::vector<std::uint8_t>{0x04}));
     pkg::PacketBuilder command(0x01);
     EXPECT_FALSE(tracker.feed(command.finish()).has_value());

@@ -22,7 +22,7 @@ struct Fletcher16 {
     /// weights (8, 6, 4, 2) and (7, 5, 3, 1). Only the sums modulo 256 matter: lanes are masked
     /// before they could carry into the next lane, and a multiply by lane constants adds
     /// the lanes into the top one (at most 255 * 20). Unsigned arithmetic wraps modulo 2^64.
-    void update(const std::uint8_t* data, std::size_t size) {
+    void update(const std::uint8_t *data, std::size_t size) {
         constexpr std::uint64_t kLanes = 0x00FF00FF00FF00FFu;
         constexpr std::uint64_t kOnes = 0x0001000100010001u;
         std::uint64_t s1 = sum1;
@@ -54,8 +54,8 @@ struct Fletcher16 {
             }
             const std::uint64_t blocks = whole / 8;
             const std::uint64_t block_sum = (r * kOnes) >> 48;
-            s2 += 8 * blocks * s1 + 8 * (((q * kOnes) >> 48) - block_sum) + ((e_sum * 0x0008000600040002u) >> 48) +
-                  ((o_sum * 0x0007000500030001u) >> 48);
+            s2 += 8 * blocks * s1 + 8 * (((q * kOnes) >> 48) - block_sum) +
+                  ((e_sum * 0x0008000600040002u) >> 48) + ((o_sum * 0x0007000500030001u) >> 48);
             s1 += block_sum;
         }
         for (; i < size; ++i) {
@@ -66,7 +66,7 @@ struct Fletcher16 {
         sum2 = static_cast<std::uint8_t>(s2);
     }
     /// Eight bytes as a little-endian word on any host (one load on little-endian ones).
-    static std::uint64_t load_le64(const std::uint8_t* b) {
+    static std::uint64_t load_le64(const std::uint8_t *b) {
         return static_cast<std::uint64_t>(b[0]) | static_cast<std::uint64_t>(b[1]) << 8 |
                static_cast<std::uint64_t>(b[2]) << 16 | static_cast<std::uint64_t>(b[3]) << 24 |
                static_cast<std::uint64_t>(b[4]) << 32 | static_cast<std::uint64_t>(b[5]) << 40 |
@@ -81,7 +81,7 @@ struct Fletcher16 {
     }
 };
 
-inline Fletcher16 fletcher16(const std::uint8_t* data, std::size_t size) {
+inline Fletcher16 fletcher16(const std::uint8_t *data, std::size_t size) {
     Fletcher16 f;
     f.update(data, size);
     return f;

@@ -13,21 +13,19 @@
 namespace protopkg {
 namespace detail {
 
-template <class Visitor>
-struct DecodeLayouts {
-    const std::uint8_t* data;
+template <class Visitor> struct DecodeLayouts {
+    const std::uint8_t *data;
     std::size_t size;
-    const std::optional<Device>& device;
-    Visitor& visitor;
+    const std::optional<Device> &device;
+    Visitor &visitor;
 
-    template <class T, class... Rest>
-    void operator()(Layouts<T, Rest...>) const {
+    template <class T, class... Rest> void operator()(Layouts<T, Rest...>) const {
         if constexpr (!T::kHasVariants) {
             if constexpr (Plain<T>::kPlain) {
                 if (size == Plain<T>::kSize) {
                     T value;
                     Plain<T>::load(data, value);
-                    visitor.field(static_cast<const T&>(value));
+                    visitor.field(static_cast<const T &>(value));
                     return;
                 }
             }
@@ -39,33 +37,31 @@ struct DecodeLayouts {
 
     // Fields with per-device layouts: only the chosen device's layout when the field has one
     // for it, else all in order; the first that decodes wins, else the first error.
-    template <class T, class... Rest>
-    PROTOPKG_NOINLINE void variants() const {
-        const bool chosen = device.has_value() && ((T::kDeviceId == *device) || ... || (Rest::kDeviceId == *device));
+    template <class T, class... Rest> PROTOPKG_NOINLINE void variants() const {
+        const bool chosen =
+            device.has_value() && ((T::kDeviceId == *device) || ... || (Rest::kDeviceId == *device));
         DecodeError first;
         bool have_first = false;
         bool done = false;
         attempt<T>(chosen, first, have_first, done);
         (attempt<Rest>(chosen, first, have_first, done), ...);
         if (!done) {
-            visitor.raw(static_cast<const DecodeError&>(first));
+            visitor.raw(static_cast<const DecodeError &>(first));
         }
     }
 
     // The checked decode of a single-layout field (and its error), out of the straight path.
-    template <class T>
-    PROTOPKG_NOINLINE void checked() const {
+    template <class T> PROTOPKG_NOINLINE void checked() const {
         T value{};
         DecodeError err;
         if (decode(data, size, value, err)) {
-            visitor.field(static_cast<const T&>(value));
+            visitor.field(static_cast<const T &>(value));
         } else {
-            visitor.raw(static_cast<const DecodeError&>(err));
+            visitor.raw(static_cast<const DecodeError &>(err));
         }
     }
 
-    template <class T>
-    void attempt(bool chosen, DecodeError& first, bool& have_first, bool& done) const {
+    template <class T> void attempt(bool chosen, DecodeError &first, bool &have_first, bool &done) const {
         if (done || (chosen && T::kDeviceId != *device)) {
             return;
         }
@@ -73,7 +69,7 @@ struct DecodeLayouts {
             if (size == Plain<T>::kSize) {
                 T value;
                 Plain<T>::load(data, value);
-                visitor.field(static_cast<const T&>(value));
+                visitor.field(static_cast<const T &>(value));
                 done = true;
                 return;
             }
@@ -81,7 +77,7 @@ struct DecodeLayouts {
         T value{};
         DecodeError err;
         if (decode(data, size, value, err)) {
-            visitor.field(static_cast<const T&>(value));
+            visitor.field(static_cast<const T &>(value));
             done = true;
         } else if (!have_first) {
             first = err;
@@ -96,8 +92,8 @@ struct DecodeLayouts {
 /// layout struct (T::kName, T::kDevice tell which), or visitor.raw(const DecodeError&) when the
 /// field cannot be decoded (unknown set or descriptor, or the layout's decode error).
 template <class Visitor>
-void decode_field(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t* data, std::size_t size,
-                  const std::optional<Device>& device, Visitor&& visitor) {
+void decode_field(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data, std::size_t size,
+                  const std::optional<Device> &device, Visitor &&visitor) {
     detail::DecodeLayouts<std::remove_reference_t<Visitor>> d{data, size, device, visitor};
     switch (lookup_field(set, descriptor, d)) {
     case Lookup::found:

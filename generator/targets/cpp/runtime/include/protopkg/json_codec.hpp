@@ -24,7 +24,7 @@ struct JsonError {
     std::string path;
     std::string message;
 
-    JsonError& enter(const char* name) {
+    JsonError &enter(const char *name) {
         if (path.empty()) {
             path = name;
         } else if (path[0] == '[') {
@@ -34,16 +34,16 @@ struct JsonError {
         }
         return *this;
     }
-    JsonError& enter_index(std::size_t i) {
+    JsonError &enter_index(std::size_t i) {
         const std::string idx = "[" + std::to_string(i) + "]";
         path = path.empty() || path[0] == '[' ? idx + path : idx + "." + path;
         return *this;
     }
-    bool fail(const std::string& what) {
+    bool fail(const std::string &what) {
         message = what;
         return false;
     }
-    bool missing(const char* name) {
+    bool missing(const char *name) {
         message = std::string("missing '") + name + "'";
         return false;
     }
@@ -52,18 +52,17 @@ struct JsonError {
     }
 };
 
-template <class T, class Enable = void>
-struct Json;
+template <class T, class Enable = void> struct Json;
 
 namespace detail {
 
 /// Sign and magnitude of a JSON integer (no fraction or exponent).
-inline bool json_integer(const json::Value& x, bool& negative, std::uint64_t& magnitude) {
+inline bool json_integer(const json::Value &x, bool &negative, std::uint64_t &magnitude) {
     if (!x.is_integer()) {
         return false;
     }
-    const char* p = x.text.data();
-    const char* end = p + x.text.size();
+    const char *p = x.text.data();
+    const char *end = p + x.text.size();
     negative = *p == '-';
     if (negative) {
         ++p;
@@ -72,7 +71,7 @@ inline bool json_integer(const json::Value& x, bool& negative, std::uint64_t& ma
     return res.ec == std::errc() && res.ptr == end;
 }
 
-inline bool parse_hex_bits(const std::string& s, std::size_t digits, std::uint64_t& bits) {
+inline bool parse_hex_bits(const std::string &s, std::size_t digits, std::uint64_t &bits) {
     if (s.size() != digits) {
         return false;
     }
@@ -96,13 +95,13 @@ inline bool parse_hex_bits(const std::string& s, std::size_t digits, std::uint64
 
 /// For a JSON number that from_chars found out of range: true when it is too large (its first
 /// significant digit stands for 10^k with k >= 0), false when it is too small (rounds to zero).
-inline bool json_number_is_large(const std::string& t) {
+inline bool json_number_is_large(const std::string &t) {
     std::size_t i = !t.empty() && t[0] == '-' ? 1 : 0;
     std::size_t int_digits = 0;
     while (i + int_digits < t.size() && t[i + int_digits] >= '0' && t[i + int_digits] <= '9') {
         ++int_digits;
     }
-    long long first = 0;  // power of ten of the first significant digit
+    long long first = 0; // power of ten of the first significant digit
     bool found = false;
     for (std::size_t j = 0; j < int_digits && !found; ++j) {
         if (t[i + j] != '0') {
@@ -138,8 +137,7 @@ inline bool json_number_is_large(const std::string& t) {
 }
 
 /// A float/double from a number or "inf", "-inf", "nan", "nan:0x<bits>"; Bits is uint32_t or uint64_t.
-template <class F, class Bits>
-bool json_float(const json::Value& x, F& v, JsonError& err) {
+template <class F, class Bits> bool json_float(const json::Value &x, F &v, JsonError &err) {
     constexpr std::size_t digits = sizeof(Bits) * 2;
     const std::string expected = std::string("expected a number, \"inf\", \"-inf\", \"nan\" or \"nan:0x<") +
                                  std::to_string(digits) + " hex digits>\"";
@@ -154,7 +152,8 @@ bool json_float(const json::Value& x, F& v, JsonError& err) {
         }
         Bits bits = 0;
         if (x.text == "nan") {
-            bits = sizeof(Bits) == 4 ? static_cast<Bits>(0x7fc00000u) : static_cast<Bits>(0x7ff8000000000000ull);
+            bits =
+                sizeof(Bits) == 4 ? static_cast<Bits>(0x7fc00000u) : static_cast<Bits>(0x7ff8000000000000ull);
         } else if (x.text.compare(0, 6, "nan:0x") == 0) {
             std::uint64_t b = 0;
             if (!parse_hex_bits(x.text.substr(6), digits, b)) {
@@ -176,10 +175,10 @@ bool json_float(const json::Value& x, F& v, JsonError& err) {
     // docs/conformance.md §5: the nearest double (ties to even), then for a float the nearest
     // float; a result that is infinite is an error, one that underflows is 0 or a denormal.
     double d = 0;
-    const char* end = x.text.data() + x.text.size();
+    const char *end = x.text.data() + x.text.size();
     const auto res = std::from_chars(x.text.data(), end, d);
     if (res.ec == std::errc::result_out_of_range && res.ptr == end && !json_number_is_large(x.text)) {
-        d = x.text[0] == '-' ? -0.0 : 0.0;  // underflow: rounds to zero
+        d = x.text[0] == '-' ? -0.0 : 0.0; // underflow: rounds to zero
     } else if (res.ec != std::errc() || res.ptr != end || !std::isfinite(d)) {
         return err.fail("number " + x.text + " is out of range for a double");
     }
@@ -202,15 +201,16 @@ bool json_float(const json::Value& x, F& v, JsonError& err) {
 } // namespace detail
 
 template <class T>
-struct Json<T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char>>> {
-    static void write(JsonWriter& w, const T& v) {
+struct Json<T,
+            std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char>>> {
+    static void write(JsonWriter &w, const T &v) {
         if constexpr (std::is_signed_v<T>) {
             w.integer(static_cast<std::int64_t>(v));
         } else {
             w.uinteger(static_cast<std::uint64_t>(v));
         }
     }
-    static bool read(const json::Value& x, T& v, JsonError& err) {
+    static bool read(const json::Value &x, T &v, JsonError &err) {
         bool negative = false;
         std::uint64_t mag = 0;
         if (detail::json_integer(x, negative, mag)) {
@@ -237,13 +237,12 @@ struct Json<T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool
 };
 
 /// Enums: the integer value; reading also accepts a value name from the spec.
-template <class T>
-struct Json<T, std::enable_if_t<std::is_enum_v<T>>> {
+template <class T> struct Json<T, std::enable_if_t<std::is_enum_v<T>>> {
     using U = std::underlying_type_t<T>;
-    static void write(JsonWriter& w, const T& v) {
+    static void write(JsonWriter &w, const T &v) {
         Json<U>::write(w, static_cast<U>(v));
     }
-    static bool read(const json::Value& x, T& v, JsonError& err) {
+    static bool read(const json::Value &x, T &v, JsonError &err) {
         if (x.type == json::Value::Type::string) {
             if (from_string(x.text.c_str(), v)) {
                 return true;
@@ -259,12 +258,11 @@ struct Json<T, std::enable_if_t<std::is_enum_v<T>>> {
     }
 };
 
-template <>
-struct Json<bool> {
-    static void write(JsonWriter& w, const bool& v) {
+template <> struct Json<bool> {
+    static void write(JsonWriter &w, const bool &v) {
         w.boolean(v);
     }
-    static bool read(const json::Value& x, bool& v, JsonError& err) {
+    static bool read(const json::Value &x, bool &v, JsonError &err) {
         if (x.type != json::Value::Type::boolean) {
             return err.fail("expected true or false");
         }
@@ -273,12 +271,11 @@ struct Json<bool> {
     }
 };
 
-template <>
-struct Json<char> {
-    static void write(JsonWriter& w, const char& v) {
+template <> struct Json<char> {
+    static void write(JsonWriter &w, const char &v) {
         w.string(&v, 1);
     }
-    static bool read(const json::Value& x, char& v, JsonError& err) {
+    static bool read(const json::Value &x, char &v, JsonError &err) {
         if (x.type != json::Value::Type::string || x.wide || x.text.size() != 1) {
             return err.fail("expected a string of 1 character (U+0000..U+00FF)");
         }
@@ -287,43 +284,37 @@ struct Json<char> {
     }
 };
 
-template <>
-struct Json<float> {
-    static void write(JsonWriter& w, const float& v) {
+template <> struct Json<float> {
+    static void write(JsonWriter &w, const float &v) {
         w.float32(v);
     }
-    static bool read(const json::Value& x, float& v, JsonError& err) {
+    static bool read(const json::Value &x, float &v, JsonError &err) {
         return detail::json_float<float, std::uint32_t>(x, v, err);
     }
 };
 
-template <>
-struct Json<double> {
-    static void write(JsonWriter& w, const double& v) {
+template <> struct Json<double> {
+    static void write(JsonWriter &w, const double &v) {
         w.float64(v);
     }
-    static bool read(const json::Value& x, double& v, JsonError& err) {
+    static bool read(const json::Value &x, double &v, JsonError &err) {
         return detail::json_float<double, std::uint64_t>(x, v, err);
     }
 };
 
 // ---- parameter helpers used by the generated JSON codecs
 
-template <class T>
-void json_write_value(JsonWriter& w, const T& v) {
+template <class T> void json_write_value(JsonWriter &w, const T &v) {
     Json<T>::write(w, v);
 }
-template <class T>
-bool json_read_value(const json::Value& x, T& v, JsonError& err) {
+template <class T> bool json_read_value(const json::Value &x, T &v, JsonError &err) {
     return Json<T>::read(x, v, err);
 }
 
-template <std::size_t N>
-void json_write_string(JsonWriter& w, const std::array<char, N>& v) {
+template <std::size_t N> void json_write_string(JsonWriter &w, const std::array<char, N> &v) {
     w.string(v.data(), N);
 }
-template <std::size_t N>
-bool json_read_string(const json::Value& x, std::array<char, N>& v, JsonError& err) {
+template <std::size_t N> bool json_read_string(const json::Value &x, std::array<char, N> &v, JsonError &err) {
     if (x.type != json::Value::Type::string || x.wide || x.text.size() != N) {
         return err.fail("expected a string of exactly " + std::to_string(N) + " characters (U+0000..U+00FF)");
     }
@@ -331,10 +322,9 @@ bool json_read_string(const json::Value& x, std::array<char, N>& v, JsonError& e
     return true;
 }
 
-template <class C>
-void json_write_array(JsonWriter& w, const C& items) {
+template <class C> void json_write_array(JsonWriter &w, const C &items) {
     w.begin_array();
-    for (const auto& item : items) {
+    for (const auto &item : items) {
         Json<typename C::value_type>::write(w, item);
     }
     w.end_array();
@@ -342,7 +332,7 @@ void json_write_array(JsonWriter& w, const C& items) {
 
 namespace detail {
 template <class T, class C>
-bool json_read_items(const json::Value& x, C& out, std::size_t n, JsonError& err) {
+bool json_read_items(const json::Value &x, C &out, std::size_t n, JsonError &err) {
     for (std::size_t i = 0; i < n; ++i) {
         if (!Json<T>::read(x.items[i], out[i], err)) {
             err.enter_index(i);
@@ -354,7 +344,7 @@ bool json_read_items(const json::Value& x, C& out, std::size_t n, JsonError& err
 } // namespace detail
 
 template <class T, std::size_t N>
-bool json_read_fixed(const json::Value& x, std::array<T, N>& v, JsonError& err) {
+bool json_read_fixed(const json::Value &x, std::array<T, N> &v, JsonError &err) {
     if (x.type != json::Value::Type::array || x.items.size() != N) {
         return err.fail("expected an array of " + std::to_string(N) + " elements");
     }
@@ -362,7 +352,7 @@ bool json_read_fixed(const json::Value& x, std::array<T, N>& v, JsonError& err) 
 }
 
 template <class T, std::size_t M>
-bool json_read_remaining(const json::Value& x, BoundedVector<T, M>& v, JsonError& err) {
+bool json_read_remaining(const json::Value &x, BoundedVector<T, M> &v, JsonError &err) {
     if (x.type != json::Value::Type::array) {
         return err.fail("expected an array");
     }
@@ -375,7 +365,7 @@ bool json_read_remaining(const json::Value& x, BoundedVector<T, M>& v, JsonError
 }
 
 template <class T, std::size_t M>
-bool json_read_counted(const json::Value& x, BoundedVector<T, M>& v, std::uint64_t count, JsonError& err) {
+bool json_read_counted(const json::Value &x, BoundedVector<T, M> &v, std::uint64_t count, JsonError &err) {
     if (!json_read_remaining(x, v, err)) {
         return false;
     }
@@ -387,13 +377,14 @@ bool json_read_counted(const json::Value& x, BoundedVector<T, M>& v, std::uint64
 }
 
 /// True when x is an object whose keys are all among `known`.
-inline bool json_check_object(const json::Value& x, std::initializer_list<const char*> known, JsonError& err) {
+inline bool json_check_object(const json::Value &x, std::initializer_list<const char *> known,
+                              JsonError &err) {
     if (x.type != json::Value::Type::object) {
         return err.fail(std::string("expected an object, not ") + json::type_name(x.type));
     }
-    for (const std::string& k : x.keys) {
+    for (const std::string &k : x.keys) {
         bool ok = false;
-        for (const char* name : known) {
+        for (const char *name : known) {
             if (k == name) {
                 ok = true;
                 break;

@@ -24,13 +24,12 @@ namespace protopkg {
 namespace detail {
 
 struct FieldJsonVisitor {
-    JsonWriter& w;
+    JsonWriter &w;
     std::uint8_t descriptor;
-    const std::uint8_t* data;
+    const std::uint8_t *data;
     std::size_t size;
 
-    template <class T>
-    void field(const T& value) {
+    template <class T> void field(const T &value) {
         w.begin_object();
         w.key("descriptor");
         w.uinteger(T::kDescriptor);
@@ -44,7 +43,7 @@ struct FieldJsonVisitor {
         Json<T>::write(w, value);
         w.end_object();
     }
-    void raw(const DecodeError& err) {
+    void raw(const DecodeError &err) {
         w.begin_object();
         w.key("descriptor");
         w.uinteger(descriptor);
@@ -59,8 +58,8 @@ struct FieldJsonVisitor {
 } // namespace detail
 
 /// {"offset":O,"set":S,"fields":[...]} for one packet (no newline).
-inline void write_packet_json(JsonWriter& w, std::uint64_t offset, const PacketView& packet,
-                              const std::optional<Device>& device) {
+inline void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketView &packet,
+                              const std::optional<Device> &device) {
     w.begin_object();
     w.key("offset");
     w.uinteger(offset);
@@ -88,7 +87,8 @@ inline void write_packet_json(JsonWriter& w, std::uint64_t offset, const PacketV
 }
 
 /// {"offset":O,"skipped":"hex"} for one skip run (no newline).
-inline void write_skip_json(JsonWriter& w, std::uint64_t offset, const std::uint8_t* bytes, std::size_t count) {
+inline void write_skip_json(JsonWriter &w, std::uint64_t offset, const std::uint8_t *bytes,
+                            std::size_t count) {
     w.begin_object();
     w.key("offset");
     w.uinteger(offset);
@@ -101,12 +101,12 @@ inline void write_skip_json(JsonWriter& w, std::uint64_t offset, const std::uint
 /// lines; on_line(const std::string&) receives each line without its newline. With `samples`,
 /// data packets carry their sample number (docs/conformance.md section 6).
 template <class OnLine>
-void decode_to_json_lines(const std::uint8_t* input, std::size_t size, std::size_t chunk,
-                          const std::optional<Device>& device, OnLine&& on_line, bool samples = false) {
+void decode_to_json_lines(const std::uint8_t *input, std::size_t size, std::size_t chunk,
+                          const std::optional<Device> &device, OnLine &&on_line, bool samples = false) {
     StreamParser parser;
     SampleTracker tracker;
     std::string line;
-    auto on_event = [&](const StreamEvent& e) {
+    auto on_event = [&](const StreamEvent &e) {
         line.clear();
         JsonWriter w(string_sink, &line);
         if (e.kind == StreamEvent::Kind::packet) {
@@ -119,7 +119,7 @@ void decode_to_json_lines(const std::uint8_t* input, std::size_t size, std::size
         } else {
             write_skip_json(w, e.offset, input + e.offset, static_cast<std::size_t>(e.count));
         }
-        on_line(static_cast<const std::string&>(line));
+        on_line(static_cast<const std::string &>(line));
     };
     if (chunk == 0) {
         chunk = 1;
@@ -132,7 +132,7 @@ void decode_to_json_lines(const std::uint8_t* input, std::size_t size, std::size
 
 namespace detail {
 
-inline bool hex_bytes(const json::Value& x, std::vector<std::uint8_t>& out) {
+inline bool hex_bytes(const json::Value &x, std::vector<std::uint8_t> &out) {
     if (x.type != json::Value::Type::string || x.text.size() % 2 != 0) {
         return false;
     }
@@ -147,14 +147,14 @@ inline bool hex_bytes(const json::Value& x, std::vector<std::uint8_t>& out) {
     return true;
 }
 
-inline bool byte_value(const json::Value& x, std::uint8_t& out) {
+inline bool byte_value(const json::Value &x, std::uint8_t &out) {
     JsonError ignored;
     return Json<std::uint8_t>::read(x, out, ignored);
 }
 
 /// "offset" of a packet or skip run: required, an integer 0..2^64-1 (its value is not used).
-inline bool offset_ok(const json::Value& v, std::string& error) {
-    const json::Value* o = v.find("offset");
+inline bool offset_ok(const json::Value &v, std::string &error) {
+    const json::Value *o = v.find("offset");
     bool negative = false;
     std::uint64_t magnitude = 0;
     if (o == nullptr) {
@@ -169,8 +169,8 @@ inline bool offset_ok(const json::Value& v, std::string& error) {
 }
 
 /// "error" of a raw field or trailing entry: required, a string (its text is not used).
-inline bool error_text_ok(const json::Value& f, JsonError& err) {
-    const json::Value* e = f.find("error");
+inline bool error_text_ok(const json::Value &f, JsonError &err) {
+    const json::Value *e = f.find("error");
     if (e == nullptr || e->type != json::Value::Type::string) {
         err.path = "error";
         err.message = e == nullptr ? "missing" : "expected a string";
@@ -180,16 +180,15 @@ inline bool error_text_ok(const json::Value& f, JsonError& err) {
 }
 
 struct EncodeLayouts {
-    const json::Value& values;
-    const std::string& name;
-    const json::Value* device;
-    PacketBuilder& builder;
-    JsonError& err;
+    const json::Value &values;
+    const std::string &name;
+    const json::Value *device;
+    PacketBuilder &builder;
+    JsonError &err;
     bool matched = false;
     bool ok = false;
 
-    template <class T, class... Rest>
-    void operator()(Layouts<T, Rest...>) {
+    template <class T, class... Rest> void operator()(Layouts<T, Rest...>) {
         if constexpr (!T::kHasVariants) {
             if (device != nullptr) {
                 err.path = "device";
@@ -214,16 +213,14 @@ struct EncodeLayouts {
         }
     }
 
-    template <class T>
-    void attempt() {
+    template <class T> void attempt() {
         if (!matched && device->text == T::kDevice) {
             matched = true;
             encode_as<T>();
         }
     }
 
-    template <class T>
-    void encode_as() {
+    template <class T> void encode_as() {
         if (name != T::kName) {
             err.path = "name";
             err.message = "descriptor " + std::to_string(T::kDescriptor) + " is '" + T::kName + "', not '" +
@@ -245,18 +242,18 @@ struct EncodeLayouts {
     }
 };
 
-inline bool fail(JsonError& err, const char* path, const std::string& message) {
+inline bool fail(JsonError &err, const char *path, const std::string &message) {
     err.path = path;
     err.message = message;
     return false;
 }
 
-inline bool encode_field(const json::Value& f, PacketBuilder& b, JsonError& err) {
+inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err) {
     if (f.type != json::Value::Type::object) {
         return fail(err, "", "expected an object");
     }
     std::vector<std::uint8_t> bytes;
-    if (const json::Value* t = f.find("trailing")) {
+    if (const json::Value *t = f.find("trailing")) {
         if (!json_check_object(f, {"trailing", "error"}, err) || !error_text_ok(f, err)) {
             return false;
         }
@@ -268,12 +265,12 @@ inline bool encode_field(const json::Value& f, PacketBuilder& b, JsonError& err)
         }
         return true;
     }
-    const json::Value* d = f.find("descriptor");
+    const json::Value *d = f.find("descriptor");
     std::uint8_t descriptor = 0;
     if (d == nullptr || !byte_value(*d, descriptor)) {
         return fail(err, "descriptor", "expected an integer in 0..255");
     }
-    if (const json::Value* data = f.find("data")) {
+    if (const json::Value *data = f.find("data")) {
         if (!json_check_object(f, {"descriptor", "data", "error"}, err) || !error_text_ok(f, err)) {
             return false;
         }
@@ -289,12 +286,13 @@ inline bool encode_field(const json::Value& f, PacketBuilder& b, JsonError& err)
         }
         return true;
     }
-    const json::Value* values = f.find("values");
-    const json::Value* name = f.find("name");
+    const json::Value *values = f.find("values");
+    const json::Value *name = f.find("name");
     if (values == nullptr || name == nullptr || name->type != json::Value::Type::string) {
-        return fail(err, "",
-                    "expected a decoded field (descriptor, name, values), a raw field (descriptor, data) or a "
-                    "trailing entry");
+        return fail(
+            err, "",
+            "expected a decoded field (descriptor, name, values), a raw field (descriptor, data) or a "
+            "trailing entry");
     }
     if (!json_check_object(f, {"descriptor", "name", "device", "values"}, err)) {
         return false;
@@ -318,7 +316,7 @@ inline bool encode_field(const json::Value& f, PacketBuilder& b, JsonError& err)
 
 /// Appends the bytes of one JSON line (a packet or a skip run) to `out`; false with `error`
 /// (and nothing appended) when the line is not valid.
-inline bool encode_json_line(const std::string& line, std::vector<std::uint8_t>& out, std::string& error) {
+inline bool encode_json_line(const std::string &line, std::vector<std::uint8_t> &out, std::string &error) {
     json::Value v;
     error.clear();
     if (!json::parse(line, v, error)) {
@@ -329,7 +327,7 @@ inline bool encode_json_line(const std::string& line, std::vector<std::uint8_t>&
         return false;
     }
     std::vector<std::uint8_t> bytes;
-    if (const json::Value* s = v.find("skipped")) {
+    if (const json::Value *s = v.find("skipped")) {
         JsonError err;
         if (!json_check_object(v, {"offset", "skipped"}, err)) {
             error = err.text();
@@ -345,8 +343,8 @@ inline bool encode_json_line(const std::string& line, std::vector<std::uint8_t>&
         out.insert(out.end(), bytes.begin(), bytes.end());
         return true;
     }
-    const json::Value* set = v.find("set");
-    const json::Value* fields = v.find("fields");
+    const json::Value *set = v.find("set");
+    const json::Value *fields = v.find("fields");
     if (set == nullptr || fields == nullptr) {
         error = "expected a packet (set, fields) or a skip run (skipped)";
         return false;

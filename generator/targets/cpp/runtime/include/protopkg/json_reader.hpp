@@ -15,12 +15,12 @@ struct Value {
     enum class Type : std::uint8_t { null, boolean, number, string, array, object };
     Type type = Type::null;
     bool boolean = false;
-    bool wide = false;            ///< string: holds a character above U+00FF
-    std::string text;             ///< number: its literal; string: one byte per character
-    std::vector<Value> items;     ///< array elements, or object member values
+    bool wide = false;             ///< string: holds a character above U+00FF
+    std::string text;              ///< number: its literal; string: one byte per character
+    std::vector<Value> items;      ///< array elements, or object member values
     std::vector<std::string> keys; ///< object member names (same order as items)
 
-    const Value* find(const char* key) const {
+    const Value *find(const char *key) const {
         for (std::size_t i = 0; i < keys.size(); ++i) {
             if (keys[i] == key) {
                 return &items[i];
@@ -33,7 +33,7 @@ struct Value {
     }
 };
 
-inline const char* type_name(Value::Type t) {
+inline const char *type_name(Value::Type t) {
     switch (t) {
     case Value::Type::null:
         return "null";
@@ -52,7 +52,7 @@ inline const char* type_name(Value::Type t) {
 }
 
 /// Text from the input made safe for a one-line message (control and non-ASCII bytes as \u00xx).
-inline std::string printable(const std::string& s) {
+inline std::string printable(const std::string &s) {
     static const char hexd[] = "0123456789abcdef";
     std::string out;
     for (char c : s) {
@@ -70,9 +70,9 @@ inline std::string printable(const std::string& s) {
 
 class Parser {
   public:
-    explicit Parser(const std::string& text) : s_(text) {}
+    explicit Parser(const std::string &text) : s_(text) {}
 
-    bool parse(Value& out, std::string& error) {
+    bool parse(Value &out, std::string &error) {
         skip_ws();
         if (!value(out, 0)) {
             error = error_;
@@ -90,18 +90,19 @@ class Parser {
   private:
     static constexpr int kMaxDepth = 64;
 
-    bool fail(const char* what) {
+    bool fail(const char *what) {
         if (error_.empty()) {
             error_ = std::string("invalid JSON at column ") + std::to_string(pos_ + 1) + ": " + what;
         }
         return false;
     }
     void skip_ws() {
-        while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r')) {
+        while (pos_ < s_.size() &&
+               (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r')) {
             ++pos_;
         }
     }
-    bool literal(const char* word) {
+    bool literal(const char *word) {
         const std::size_t n = std::strlen(word);
         if (s_.compare(pos_, n, word) != 0) {
             return fail("unknown literal");
@@ -109,7 +110,7 @@ class Parser {
         pos_ += n;
         return true;
     }
-    bool value(Value& out, int depth) {
+    bool value(Value &out, int depth) {
         if (depth > kMaxDepth) {
             return fail("nested too deeply");
         }
@@ -154,7 +155,7 @@ class Parser {
         }
         return pos_ > start;
     }
-    bool number(std::string& out) {
+    bool number(std::string &out) {
         const std::size_t start = pos_;
         if (s_[pos_] == '-') {
             ++pos_;
@@ -194,7 +195,7 @@ class Parser {
         }
         return -1;
     }
-    void put(std::string& out, bool& wide, std::uint32_t cp) {
+    void put(std::string &out, bool &wide, std::uint32_t cp) {
         if (cp > 0xFF) {
             wide = true;
             out.push_back('?');
@@ -202,7 +203,7 @@ class Parser {
             out.push_back(static_cast<char>(static_cast<unsigned char>(cp)));
         }
     }
-    bool string(std::string& out, bool& wide) {
+    bool string(std::string &out, bool &wide) {
         ++pos_; // opening quote
         out.clear();
         wide = false;
@@ -304,7 +305,7 @@ class Parser {
             put(out, wide, cp);
         }
     }
-    bool array(Value& out, int depth) {
+    bool array(Value &out, int depth) {
         out.type = Value::Type::array;
         ++pos_;
         skip_ws();
@@ -330,7 +331,7 @@ class Parser {
             return fail("expected ',' or ']'");
         }
     }
-    bool object(Value& out, int depth) {
+    bool object(Value &out, int depth) {
         out.type = Value::Type::object;
         ++pos_;
         skip_ws();
@@ -348,7 +349,7 @@ class Parser {
             if (!string(key, wide)) {
                 return false;
             }
-            for (const std::string& k : out.keys) {
+            for (const std::string &k : out.keys) {
                 if (k == key) {
                     return fail("duplicate key");
                 }
@@ -377,13 +378,13 @@ class Parser {
         }
     }
 
-    const std::string& s_;
+    const std::string &s_;
     std::size_t pos_ = 0;
     std::string error_;
 };
 
 /// Parses one JSON document; on failure `error` says where and what.
-inline bool parse(const std::string& text, Value& out, std::string& error) {
+inline bool parse(const std::string &text, Value &out, std::string &error) {
     out = Value{};
     return Parser(text).parse(out, error);
 }

@@ -16,11 +16,11 @@ namespace protopkg {
 
 /// Text of a finite double: shortest round-trip digits, positional when -4 <= exponent < 16.
 /// `out` must hold 32 characters; returns the length.
-inline std::size_t format_double(double value, char* out) {
+inline std::size_t format_double(double value, char *out) {
     char sci[40];
     const auto res = std::to_chars(sci, sci + sizeof sci, value, std::chars_format::scientific);
-    const char* p = sci;
-    const char* end = res.ptr;
+    const char *p = sci;
+    const char *end = res.ptr;
     std::size_t n = 0;
     if (*p == '-') {
         out[n++] = '-';
@@ -94,9 +94,9 @@ inline std::size_t format_double(double value, char* out) {
 class JsonWriter {
   public:
     /// Receives the text; called many times per line.
-    using Sink = void (*)(void* context, const char* data, std::size_t size);
+    using Sink = void (*)(void *context, const char *data, std::size_t size);
 
-    JsonWriter(Sink sink, void* context) : sink_(sink), context_(context) {}
+    JsonWriter(Sink sink, void *context) : sink_(sink), context_(context) {}
 
     void begin_object() {
         open('{');
@@ -111,7 +111,7 @@ class JsonWriter {
         close(']');
     }
     /// An object key (plain ASCII names from the spec).
-    void key(const char* name) {
+    void key(const char *name) {
         separate();
         raw("\"");
         raw(name);
@@ -164,7 +164,7 @@ class JsonWriter {
         raw(buf, format_double(v, buf));
     }
     /// A string of raw bytes: byte b -> U+00bb, escaped per docs/conformance.md.
-    void string(const char* s, std::size_t n) {
+    void string(const char *s, std::size_t n) {
         separate();
         raw("\"");
         static const char hexd[] = "0123456789abcdef";
@@ -183,11 +183,11 @@ class JsonWriter {
         }
         raw("\"");
     }
-    void string(const char* s) {
+    void string(const char *s) {
         string(s, std::strlen(s));
     }
     /// Lowercase hex of bytes, as a JSON string.
-    void hex(const std::uint8_t* p, std::size_t n) {
+    void hex(const std::uint8_t *p, std::size_t n) {
         separate();
         raw("\"");
         static const char hexd[] = "0123456789abcdef";
@@ -205,12 +205,12 @@ class JsonWriter {
         raw("\"");
     }
     /// Raw text (no separator handling).
-    void raw(const char* s, std::size_t n) {
+    void raw(const char *s, std::size_t n) {
         if (n > 0) {
             sink_(context_, s, n);
         }
     }
-    void raw(const char* s) {
+    void raw(const char *s) {
         raw(s, std::strlen(s));
     }
 
@@ -259,15 +259,15 @@ class JsonWriter {
     }
 
     Sink sink_;
-    void* context_;
+    void *context_;
     std::array<bool, kMaxJsonDepth> first_{};
     std::size_t depth_ = 0;
     bool after_key_ = false;
 };
 
 /// Sink that appends to a std::string (context = std::string*).
-inline void string_sink(void* context, const char* data, std::size_t size) {
-    static_cast<std::string*>(context)->append(data, size);
+inline void string_sink(void *context, const char *data, std::size_t size) {
+    static_cast<std::string *>(context)->append(data, size);
 }
 
 } // namespace protopkg

@@ -15,13 +15,13 @@ namespace protopkg {
 
 /// A complete packet (sync .. checksum) as found by StreamParser or made by PacketBuilder.
 struct PacketView {
-    const std::uint8_t* data = nullptr;
+    const std::uint8_t *data = nullptr;
     std::size_t size = 0;
 
     std::uint8_t set() const {
         return data[kSetOffset];
     }
-    const std::uint8_t* payload() const {
+    const std::uint8_t *payload() const {
         return data + kHeaderSize;
     }
     std::size_t payload_size() const {
@@ -46,8 +46,8 @@ class PacketBuilder {
     }
 
     /// Appends a field from its descriptor and data (the header is written here).
-    EncodeError add_raw_field(std::uint8_t descriptor, const std::uint8_t* data, std::size_t size) {
-        std::uint8_t* f = begin_field();
+    EncodeError add_raw_field(std::uint8_t descriptor, const std::uint8_t *data, std::size_t size) {
+        std::uint8_t *f = begin_field();
         if (f == nullptr) {
             return error_;
         }
@@ -62,9 +62,8 @@ class PacketBuilder {
     }
 
     /// Appends a typed field (any generated layout struct: uses T::kDescriptor).
-    template <class T>
-    EncodeError add(const T& value) {
-        std::uint8_t* f = begin_field();
+    template <class T> EncodeError add(const T &value) {
+        std::uint8_t *f = begin_field();
         if (f == nullptr) {
             return error_;
         }
@@ -77,7 +76,7 @@ class PacketBuilder {
     }
 
     /// Appends raw payload bytes (a trailing entry that is not a whole field).
-    EncodeError append(const std::uint8_t* data, std::size_t size) {
+    EncodeError append(const std::uint8_t *data, std::size_t size) {
         if (error_ != EncodeError::none) {
             return error_;
         }
@@ -106,7 +105,7 @@ class PacketBuilder {
     }
 
   private:
-    std::uint8_t* begin_field() {
+    std::uint8_t *begin_field() {
         if (error_ != EncodeError::none) {
             return nullptr;
         }
@@ -128,7 +127,7 @@ class PacketBuilder {
         if (length > 0xFF) {
             return fail(EncodeError::overflow);
         }
-        std::uint8_t* f = buf_.data() + kHeaderSize + payload_size_;
+        std::uint8_t *f = buf_.data() + kHeaderSize + payload_size_;
         f[kFieldLengthOffset] = static_cast<std::uint8_t>(length);
         f[kFieldDescriptorOffset] = descriptor;
         payload_size_ += kFieldHeaderSize + data_size;
@@ -155,7 +154,7 @@ struct FieldEntry {
 
     Kind kind = Kind::field;
     std::uint8_t descriptor = 0;
-    const std::uint8_t* data = nullptr; ///< field data (after the header), or the trailing bytes
+    const std::uint8_t *data = nullptr; ///< field data (after the header), or the trailing bytes
     std::size_t size = 0;
     std::size_t payload_offset = 0; ///< where the field (header) or trailing bytes start
     Problem problem = Problem::none;
@@ -171,13 +170,14 @@ struct FieldEntry {
             std::snprintf(t.text.data(), t.text.size(), "no error");
             break;
         case Problem::short_header:
-            std::snprintf(t.text.data(), t.text.size(), "field header at payload offset %llu needs %llu bytes, %llu left",
+            std::snprintf(t.text.data(), t.text.size(),
+                          "field header at payload offset %llu needs %llu bytes, %llu left",
                           ull(payload_offset), ull(kFieldHeaderSize), ull(left));
             break;
         case Problem::length_below_header:
             std::snprintf(t.text.data(), t.text.size(),
-                          "field length %u at payload offset %llu is shorter than the field header", unsigned(length),
-                          ull(payload_offset));
+                          "field length %u at payload offset %llu is shorter than the field header",
+                          unsigned(length), ull(payload_offset));
             break;
         case Problem::overruns:
             std::snprintf(t.text.data(), t.text.size(),
@@ -193,12 +193,13 @@ struct FieldEntry {
 class FieldIterator {
   public:
     /// The payload of a packet of descriptor set `set` (the set decides irregular field lengths).
-    FieldIterator(std::uint8_t set, const std::uint8_t* payload, std::size_t size) : set_(set), p_(payload), size_(size) {}
-    explicit FieldIterator(const PacketView& packet)
+    FieldIterator(std::uint8_t set, const std::uint8_t *payload, std::size_t size)
+        : set_(set), p_(payload), size_(size) {}
+    explicit FieldIterator(const PacketView &packet)
         : FieldIterator(packet.set(), packet.payload(), packet.payload_size()) {}
 
     /// Fills `out` with the next entry; false at the end of the payload.
-    bool next(FieldEntry& out) {
+    bool next(FieldEntry &out) {
         if (pos_ >= size_) {
             return false;
         }
@@ -227,7 +228,7 @@ class FieldIterator {
     }
 
   private:
-    bool trailing(FieldEntry& out, FieldEntry::Problem problem, std::uint8_t length, std::size_t left) {
+    bool trailing(FieldEntry &out, FieldEntry::Problem problem, std::uint8_t length, std::size_t left) {
         out.kind = FieldEntry::Kind::trailing;
         out.problem = problem;
         out.length = length;
@@ -239,7 +240,7 @@ class FieldIterator {
     }
 
     std::uint8_t set_;
-    const std::uint8_t* p_;
+    const std::uint8_t *p_;
     std::size_t size_;
     std::size_t pos_ = 0;
 };

@@ -25,8 +25,7 @@ struct StreamEvent {
 class StreamParser {
   public:
     /// Feeds bytes; on_event(const StreamEvent&) is called for every packet and skip run found.
-    template <class Handler>
-    void feed(const std::uint8_t* data, std::size_t size, Handler&& on_event) {
+    template <class Handler> void feed(const std::uint8_t *data, std::size_t size, Handler &&on_event) {
         while (size > 0) {
             if (len_ == 0) {
                 // Nothing buffered: packets are checked and reported in place; what is left is
@@ -60,8 +59,7 @@ class StreamParser {
     /// End of input: the same loop, but a candidate that would wait for more input is a false
     /// sync (skip one byte and go on), so no complete packet behind it is lost. The pending skip
     /// run is reported. The parser can then be fed a new stream (offsets continue).
-    template <class Handler>
-    void flush(Handler&& on_event) {
+    template <class Handler> void flush(Handler &&on_event) {
         process(on_event, true);
         emit_skip(on_event);
         start_ = 0;
@@ -84,16 +82,16 @@ class StreamParser {
 
     /// The decisions of process() made in place on the caller's bytes (nothing is buffered).
     /// Returns the bytes consumed; base_ follows them.
-    template <class Handler>
-    std::size_t scan(const std::uint8_t* data, std::size_t size, Handler& on_event) {
+    template <class Handler> std::size_t scan(const std::uint8_t *data, std::size_t size, Handler &on_event) {
         const std::uint64_t base = base_;
         std::size_t pos = 0;
         while (pos < size) {
-            const std::uint8_t* p = data + pos;
+            const std::uint8_t *p = data + pos;
             const std::size_t left = size - pos;
             if (p[0] != kSync[0]) {
-                const void* q = std::memchr(p, kSync[0], left);
-                const std::size_t n = q != nullptr ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(q) - p) : left;
+                const void *q = std::memchr(p, kSync[0], left);
+                const std::size_t n =
+                    q != nullptr ? static_cast<std::size_t>(static_cast<const std::uint8_t *>(q) - p) : left;
                 skip_at(base + pos, n);
                 pos += n;
                 continue;
@@ -117,7 +115,7 @@ class StreamParser {
                     e.kind = StreamEvent::Kind::packet;
                     e.offset = base + pos;
                     e.packet = PacketView{p, total};
-                    on_event(static_cast<const StreamEvent&>(e));
+                    on_event(static_cast<const StreamEvent &>(e));
                     pos += total;
                     continue;
                 }
@@ -136,10 +134,9 @@ class StreamParser {
         skip_count_ += n;
     }
 
-    template <class Handler>
-    void process(Handler& on_event, bool final) {
+    template <class Handler> void process(Handler &on_event, bool final) {
         for (;;) {
-            const std::uint8_t* p = buf_.data() + start_;
+            const std::uint8_t *p = buf_.data() + start_;
             std::size_t i = 0;
             bool found = false;
             while (i + kSyncSize <= len_) {
@@ -187,7 +184,7 @@ class StreamParser {
             e.kind = StreamEvent::Kind::packet;
             e.offset = base_;
             e.packet = PacketView{p, total};
-            on_event(static_cast<const StreamEvent&>(e));
+            on_event(static_cast<const StreamEvent &>(e));
             start_ += total;
             len_ -= total;
             base_ += total;
@@ -195,7 +192,7 @@ class StreamParser {
     }
 
     /// Length of the longest suffix of p[0..n) that is a proper prefix of the sync sequence.
-    static std::size_t partial_sync_tail(const std::uint8_t* p, std::size_t n) {
+    static std::size_t partial_sync_tail(const std::uint8_t *p, std::size_t n) {
         std::size_t k = kSyncSize - 1 < n ? kSyncSize - 1 : n;
         for (; k > 0; --k) {
             if (std::memcmp(p + n - k, kSync.data(), k) == 0) {
@@ -218,8 +215,7 @@ class StreamParser {
         base_ += n;
     }
 
-    template <class Handler>
-    void emit_skip(Handler& on_event) {
+    template <class Handler> void emit_skip(Handler &on_event) {
         if (skip_count_ == 0) {
             return;
         }
@@ -228,13 +224,13 @@ class StreamParser {
         e.offset = skip_offset_;
         e.count = skip_count_;
         skip_count_ = 0;
-        on_event(static_cast<const StreamEvent&>(e));
+        on_event(static_cast<const StreamEvent &>(e));
     }
 
     std::array<std::uint8_t, kMaxPacket> buf_{};
-    std::size_t start_ = 0;     ///< first unconsumed byte in buf_
-    std::size_t len_ = 0;       ///< unconsumed bytes in buf_
-    std::uint64_t base_ = 0;    ///< stream offset of buf_[start_]
+    std::size_t start_ = 0;  ///< first unconsumed byte in buf_
+    std::size_t len_ = 0;    ///< unconsumed bytes in buf_
+    std::uint64_t base_ = 0; ///< stream offset of buf_[start_]
     std::uint64_t skip_offset_ = 0;
     std::uint64_t skip_count_ = 0;
 };

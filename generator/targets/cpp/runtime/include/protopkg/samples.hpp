@@ -19,7 +19,7 @@ struct SampleKey {
     std::size_t size = 0;          ///< 0: no key
     std::size_t shared_prefix = 0; ///< payload bytes of the leading shared run
 
-    bool operator==(const SampleKey& o) const {
+    bool operator==(const SampleKey &o) const {
         return size == o.size && std::memcmp(bytes.data(), o.bytes.data(), size) == 0;
     }
 };
@@ -33,14 +33,14 @@ inline bool is_data_set(std::uint8_t set) {
     return false;
 }
 
-inline SampleKey sample_key(const PacketView& packet) {
+inline SampleKey sample_key(const PacketView &packet) {
     SampleKey key;
     std::array<bool, sample_rule::kTimestamps.size() + 1> seen{};
     FieldIterator it(packet);
     FieldEntry e;
     while (it.next(e) && e.kind == FieldEntry::Kind::field && sample_rule::is_shared(e.descriptor)) {
         for (std::size_t t = 0; t < sample_rule::kTimestamps.size(); ++t) {
-            const auto& stamp = sample_rule::kTimestamps[t];
+            const auto &stamp = sample_rule::kTimestamps[t];
             if (stamp.descriptor == e.descriptor && stamp.size == e.size && !seen[t]) {
                 const std::size_t n = kFieldHeaderSize + e.size;
                 seen[t] = true;
@@ -67,7 +67,7 @@ struct SamplePlace {
 class SampleTracker {
   public:
     /// The place of a data-set packet; std::nullopt for other packets.
-    std::optional<SamplePlace> feed(const PacketView& packet) {
+    std::optional<SamplePlace> feed(const PacketView &packet) {
         std::size_t i = 0;
         while (i < sample_rule::kDataSets.size() && sample_rule::kDataSets[i] != packet.set()) {
             ++i;
@@ -75,7 +75,7 @@ class SampleTracker {
         if (i == sample_rule::kDataSets.size()) {
             return std::nullopt;
         }
-        Slot& slot = slots_[i];
+        Slot &slot = slots_[i];
         const SampleKey key = sample_key(packet);
         SamplePlace place;
         place.shared_prefix = key.shared_prefix;
@@ -105,21 +105,20 @@ class SampleTracker {
 struct Sample {
     std::uint64_t number = 0;
     std::uint8_t set = 0;
-    std::vector<std::uint64_t> offsets;                 ///< stream offset of each packet
-    std::vector<std::vector<std::uint8_t>> packets;     ///< complete packets, in order
-    std::vector<std::size_t> skip;                      ///< payload bytes to skip (copies) per packet
+    std::vector<std::uint64_t> offsets;             ///< stream offset of each packet
+    std::vector<std::vector<std::uint8_t>> packets; ///< complete packets, in order
+    std::vector<std::size_t> skip;                  ///< payload bytes to skip (copies) per packet
 
     /// Calls fn(const FieldEntry&) for every field of the sample: the first packet's fields, then
     /// each continuation packet's fields after its leading shared run.
-    template <class Fn>
-    void for_each_field(Fn&& fn) const {
+    template <class Fn> void for_each_field(Fn &&fn) const {
         for (std::size_t k = 0; k < packets.size(); ++k) {
             const PacketView view{packets[k].data(), packets[k].size()};
             FieldIterator it(view.set(), view.payload() + skip[k], view.payload_size() - skip[k]);
             FieldEntry e;
             while (it.next(e)) {
                 e.payload_offset += skip[k];
-                fn(static_cast<const FieldEntry&>(e));
+                fn(static_cast<const FieldEntry &>(e));
             }
         }
     }
@@ -130,12 +129,12 @@ struct Sample {
 class SampleGrouper {
   public:
     template <class OnSample>
-    void feed(const PacketView& packet, std::uint64_t offset, OnSample&& on_sample) {
+    void feed(const PacketView &packet, std::uint64_t offset, OnSample &&on_sample) {
         const std::optional<SamplePlace> place = tracker_.feed(packet);
         if (!place) {
             return;
         }
-        std::optional<Sample>& open = open_[slot_of(packet.set())];
+        std::optional<Sample> &open = open_[slot_of(packet.set())];
         if (place->continues && open) {
             open->offsets.push_back(offset);
             open->packets.emplace_back(packet.data, packet.data + packet.size);
@@ -154,11 +153,10 @@ class SampleGrouper {
     }
 
     /// Delivers the samples still open, in order of their numbers.
-    template <class OnSample>
-    void flush(OnSample&& on_sample) {
+    template <class OnSample> void flush(OnSample &&on_sample) {
         for (;;) {
-            std::optional<Sample>* first = nullptr;
-            for (auto& o : open_) {
+            std::optional<Sample> *first = nullptr;
+            for (auto &o : open_) {
                 if (o && (first == nullptr || o->number < (*first)->number)) {
                     first = &o;
                 }

@@ -36,8 +36,7 @@
 namespace protopkg {
 
 /// A vector with a fixed capacity N (counted and `remaining` arrays); no heap.
-template <class T, std::size_t N>
-class BoundedVector {
+template <class T, std::size_t N> class BoundedVector {
   public:
     using value_type = T;
     static constexpr std::size_t kCapacity = N;
@@ -55,7 +54,7 @@ class BoundedVector {
         size_ = 0;
     }
     /// Appends a copy; false (and no change) when full.
-    bool push_back(const T& value) {
+    bool push_back(const T &value) {
         if (size_ >= N) {
             return false;
         }
@@ -63,7 +62,7 @@ class BoundedVector {
         return true;
     }
     /// Appends a value-initialised element and returns it; nullptr when full.
-    T* grow() {
+    T *grow() {
         if (size_ >= N) {
             return nullptr;
         }
@@ -82,32 +81,32 @@ class BoundedVector {
         return true;
     }
     /// Unchecked access (like std::vector); use at() for a checked one.
-    T& operator[](std::size_t i) {
+    T &operator[](std::size_t i) {
         return items_[i];
     }
-    const T& operator[](std::size_t i) const {
+    const T &operator[](std::size_t i) const {
         return items_[i];
     }
     /// Checked access: nullptr when i >= size().
-    const T* at(std::size_t i) const {
+    const T *at(std::size_t i) const {
         return i < size_ ? &items_[i] : nullptr;
     }
-    T* at(std::size_t i) {
+    T *at(std::size_t i) {
         return i < size_ ? &items_[i] : nullptr;
     }
-    T* begin() {
+    T *begin() {
         return items_.data();
     }
-    T* end() {
+    T *end() {
         return items_.data() + size_;
     }
-    const T* begin() const {
+    const T *begin() const {
         return items_.data();
     }
-    const T* end() const {
+    const T *end() const {
         return items_.data() + size_;
     }
-    friend bool operator==(const BoundedVector& a, const BoundedVector& b) {
+    friend bool operator==(const BoundedVector &a, const BoundedVector &b) {
         if (a.size_ != b.size_) {
             return false;
         }
@@ -118,7 +117,7 @@ class BoundedVector {
         }
         return true;
     }
-    friend bool operator!=(const BoundedVector& a, const BoundedVector& b) {
+    friend bool operator!=(const BoundedVector &a, const BoundedVector &b) {
         return !(a == b);
     }
 
@@ -130,7 +129,7 @@ class BoundedVector {
 /// Fixed-capacity text of an error message (no heap).
 struct ErrorText {
     std::array<char, kMaxErrorPath + 128> text{};
-    const char* c_str() const {
+    const char *c_str() const {
         return text.data();
     }
     std::string str() const {
@@ -214,7 +213,7 @@ class DecodeError {
     explicit operator bool() const {
         return kind != Kind::none;
     }
-    const char* path_data() const {
+    const char *path_data() const {
         return path_.data();
     }
     std::size_t path_size() const {
@@ -222,13 +221,13 @@ class DecodeError {
     }
 
     /// Prefixes the path with a parameter or member name ("rate" -> "entries" + "." + "rate").
-    DecodeError& enter(const char* name) {
+    DecodeError &enter(const char *name) {
         const bool dot = path_len_ > 0 && path_[0] != '[';
         prepend(name, std::strlen(name), dot);
         return *this;
     }
     /// Prefixes the path with an element index ("rate" -> "[2].rate").
-    DecodeError& enter_index(std::size_t index) {
+    DecodeError &enter_index(std::size_t index) {
         char buf[24];
         const int n = std::snprintf(buf, sizeof buf, "[%llu]", static_cast<unsigned long long>(index));
         const bool dot = path_len_ > 0 && path_[0] != '[';
@@ -239,28 +238,29 @@ class DecodeError {
     /// The exact message of docs/conformance.md.
     ErrorText text() const {
         ErrorText t;
-        char* out = t.text.data();
+        char *out = t.text.data();
         const std::size_t cap = t.text.size();
         const int pl = static_cast<int>(path_len_);
-        const char* p = path_.data();
+        const char *p = path_.data();
         using ull = unsigned long long;
         switch (kind) {
         case Kind::none:
             std::snprintf(out, cap, "no error");
             break;
         case Kind::short_data:
-            std::snprintf(out, cap, "%.*s: needs %llu bytes at offset %llu, %llu left", pl, p, ull(size), ull(offset),
-                          ull(left));
+            std::snprintf(out, cap, "%.*s: needs %llu bytes at offset %llu, %llu left", pl, p, ull(size),
+                          ull(offset), ull(left));
             break;
         case Kind::count_exceeds:
             std::snprintf(out, cap, "%.*s: count %llu exceeds maximum %llu", pl, p, ull(size), ull(left));
             break;
         case Kind::not_multiple:
-            std::snprintf(out, cap, "%.*s: %llu bytes left at offset %llu, not a multiple of %llu", pl, p, ull(left),
-                          ull(offset), ull(size));
+            std::snprintf(out, cap, "%.*s: %llu bytes left at offset %llu, not a multiple of %llu", pl, p,
+                          ull(left), ull(offset), ull(size));
             break;
         case Kind::invalid_bool:
-            std::snprintf(out, cap, "%.*s: invalid bool value %llu at offset %llu", pl, p, ull(value), ull(offset));
+            std::snprintf(out, cap, "%.*s: invalid bool value %llu at offset %llu", pl, p, ull(value),
+                          ull(offset));
             break;
         case Kind::no_union_member:
             std::snprintf(out, cap, "%.*s: no member for selector value %s%llu", pl, p, negative ? "-" : "",
@@ -280,10 +280,11 @@ class DecodeError {
     }
 
   private:
-    void prepend(const char* s, std::size_t n, bool dot) {
+    void prepend(const char *s, std::size_t n, bool dot) {
         const std::size_t extra = n + (dot ? 1 : 0);
-        const std::size_t keep = path_len_ + extra > kMaxErrorPath ? (kMaxErrorPath > extra ? kMaxErrorPath - extra : 0)
-                                                                   : path_len_;
+        const std::size_t keep = path_len_ + extra > kMaxErrorPath
+                                     ? (kMaxErrorPath > extra ? kMaxErrorPath - extra : 0)
+                                     : path_len_;
         const std::size_t add = extra > kMaxErrorPath ? kMaxErrorPath : extra;
         std::memmove(path_.data() + add, path_.data(), keep);
         std::size_t i = 0;
@@ -301,12 +302,11 @@ class DecodeError {
 };
 
 /// The error for a union selector value that names no member (signed or unsigned).
-template <class I>
-DecodeError no_union_member_error(I raw) {
+template <class I> DecodeError no_union_member_error(I raw) {
     if constexpr (std::is_signed_v<I>) {
         if (raw < 0) {
-            return DecodeError::no_union_member(static_cast<std::uint64_t>(-(static_cast<std::int64_t>(raw) + 1)) + 1,
-                                                true);
+            return DecodeError::no_union_member(
+                static_cast<std::uint64_t>(-(static_cast<std::int64_t>(raw) + 1)) + 1, true);
         }
     }
     return DecodeError::no_union_member(static_cast<std::uint64_t>(raw), false);
@@ -322,7 +322,7 @@ enum class EncodeError : std::uint8_t {
     too_short,      ///< shorter than an irregular field's size byte allows (length_byte_adjust)
 };
 
-inline const char* to_string(EncodeError e) {
+inline const char *to_string(EncodeError e) {
     switch (e) {
     case EncodeError::none:
         return "ok";
@@ -343,7 +343,7 @@ inline const char* to_string(EncodeError e) {
 /// Bounds-checked reader over field data; offsets are relative to the start of the data.
 class Reader {
   public:
-    Reader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+    Reader(const std::uint8_t *data, std::size_t size) : data_(data), size_(size) {}
     std::size_t offset() const {
         return pos_;
     }
@@ -351,7 +351,7 @@ class Reader {
         return size_ - pos_;
     }
     /// True when n bytes are left; otherwise sets a short_data error.
-    bool need(std::size_t n, DecodeError& err) const {
+    bool need(std::size_t n, DecodeError &err) const {
         if (left() < n) {
             err = DecodeError::short_data(n, pos_, left());
             return false;
@@ -360,7 +360,7 @@ class Reader {
     }
     /// Takes an n-byte unsigned integer (n <= 8) in the protocol's byte order; call need() first.
     std::uint64_t take_uint(std::size_t n) {
-        const std::uint8_t* const p = data_ + pos_;
+        const std::uint8_t *const p = data_ + pos_;
         // The common sizes as straight expressions (one load and a byte swap), the rest a loop.
         switch (n) {
         case 2:
@@ -391,14 +391,14 @@ class Reader {
         pos_ += n;
         return v;
     }
-    PROTOPKG_INLINE static std::uint64_t load2(const std::uint8_t* p) {
+    PROTOPKG_INLINE static std::uint64_t load2(const std::uint8_t *p) {
         if constexpr (kBigEndian) {
             return static_cast<std::uint64_t>(p[0]) << 8 | p[1];
         } else {
             return static_cast<std::uint64_t>(p[1]) << 8 | p[0];
         }
     }
-    PROTOPKG_INLINE static std::uint64_t load4(const std::uint8_t* p) {
+    PROTOPKG_INLINE static std::uint64_t load4(const std::uint8_t *p) {
         if constexpr (kBigEndian) {
             return static_cast<std::uint64_t>(p[0]) << 24 | static_cast<std::uint64_t>(p[1]) << 16 |
                    static_cast<std::uint64_t>(p[2]) << 8 | p[3];
@@ -408,14 +408,14 @@ class Reader {
         }
     }
     /// Takes n raw bytes; call need() first.
-    const std::uint8_t* take(std::size_t n) {
-        const std::uint8_t* p = data_ + pos_;
+    const std::uint8_t *take(std::size_t n) {
+        const std::uint8_t *p = data_ + pos_;
         pos_ += n;
         return p;
     }
 
   private:
-    const std::uint8_t* data_;
+    const std::uint8_t *data_;
     std::size_t size_;
     std::size_t pos_ = 0;
 };
@@ -423,7 +423,7 @@ class Reader {
 /// Bounds-checked writer; the first problem is kept in error() and later writes are dropped.
 class Writer {
   public:
-    Writer(std::uint8_t* data, std::size_t capacity) : data_(data), capacity_(capacity) {}
+    Writer(std::uint8_t *data, std::size_t capacity) : data_(data), capacity_(capacity) {}
     std::size_t size() const {
         return size_;
     }
@@ -446,7 +446,7 @@ class Writer {
         }
         size_ += n;
     }
-    void put_bytes(const void* p, std::size_t n) {
+    void put_bytes(const void *p, std::size_t n) {
         if (n == 0 || !room(n)) {
             return;
         }
@@ -465,7 +465,7 @@ class Writer {
         }
         return true;
     }
-    std::uint8_t* data_;
+    std::uint8_t *data_;
     std::size_t capacity_;
     std::size_t size_ = 0;
     EncodeError error_ = EncodeError::none;
@@ -473,8 +473,7 @@ class Writer {
 
 /// An N-byte unsigned integer (N in 1, 2, 4, 8) in the protocol's byte order, read from p
 /// without checks (the caller knows N bytes are there): one load and a byte swap.
-template <std::size_t N>
-PROTOPKG_INLINE std::uint64_t load_uint(const std::uint8_t* p) {
+template <std::size_t N> PROTOPKG_INLINE std::uint64_t load_uint(const std::uint8_t *p) {
     static_assert(N == 1 || N == 2 || N == 4 || N == 8, "load_uint: 1, 2, 4 or 8 bytes");
     if constexpr (N == 1) {
         return p[0];
@@ -492,32 +491,28 @@ PROTOPKG_INLINE std::uint64_t load_uint(const std::uint8_t* p) {
 /// Binary codec of a wire type: read(Reader&, T&, DecodeError&) and write(Writer&, const T&).
 /// kFixedSize/kSize give the encoded size when it does not depend on the value.
 /// Specialised here for primitives and enums, and in the generated headers for every type and layout.
-template <class T, class Enable = void>
-struct Codec;
+template <class T, class Enable = void> struct Codec;
 
 /// Plain<V>: V (a parameter's value type: a wire type or a std::array of one) is decoded by
 /// straight loads when its data has exactly Plain<V>::kSize bytes: every byte pattern of that
 /// size is a valid value (no bool, union, optional or variable-length array inside), so the
 /// checked Codec<T>::read cannot fail on it and gives the same value. Codec<T>::kPlain and
 /// Codec<T>::load(p, v) (reads kSize bytes at p, no checks) say so for a wire type.
-template <class V, class Enable = void>
-struct Plain {
+template <class V, class Enable = void> struct Plain {
     static constexpr bool kPlain = false;
     static constexpr std::size_t kSize = 0;
 };
-template <class V>
-struct Plain<V, std::enable_if_t<Codec<V>::kPlain>> {
+template <class V> struct Plain<V, std::enable_if_t<Codec<V>::kPlain>> {
     static constexpr bool kPlain = true;
     static constexpr std::size_t kSize = Codec<V>::kSize;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, V& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, V &v) {
         Codec<V>::load(p, v);
     }
 };
-template <class E, std::size_t N>
-struct Plain<std::array<E, N>, std::enable_if_t<Plain<E>::kPlain>> {
+template <class E, std::size_t N> struct Plain<std::array<E, N>, std::enable_if_t<Plain<E>::kPlain>> {
     static constexpr bool kPlain = true;
     static constexpr std::size_t kSize = N * Plain<E>::kSize;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, std::array<E, N>& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, std::array<E, N> &v) {
         for (std::size_t i = 0; i < N; ++i) {
             Plain<E>::load(p + i * Plain<E>::kSize, v[i]);
         }
@@ -525,16 +520,17 @@ struct Plain<std::array<E, N>, std::enable_if_t<Plain<E>::kPlain>> {
 };
 
 template <class T>
-struct Codec<T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char>>> {
+struct Codec<
+    T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char>>> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(T);
     static constexpr bool kPlain = true;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, T& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, T &v) {
         using U = std::make_unsigned_t<T>;
         const U u = static_cast<U>(load_uint<sizeof(T)>(p));
         std::memcpy(&v, &u, sizeof v);
     }
-    static bool read(Reader& r, T& v, DecodeError& err) {
+    static bool read(Reader &r, T &v, DecodeError &err) {
         if (!r.need(sizeof(T), err)) {
             return false;
         }
@@ -543,7 +539,7 @@ struct Codec<T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, boo
         std::memcpy(&v, &u, sizeof v); // two's complement reinterpretation, no overflow
         return true;
     }
-    static void write(Writer& w, const T& v) {
+    static void write(Writer &w, const T &v) {
         using U = std::make_unsigned_t<T>;
         U u;
         std::memcpy(&u, &v, sizeof u);
@@ -551,18 +547,17 @@ struct Codec<T, std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, boo
     }
 };
 
-template <class T>
-struct Codec<T, std::enable_if_t<std::is_enum_v<T>>> {
+template <class T> struct Codec<T, std::enable_if_t<std::is_enum_v<T>>> {
     using U = std::underlying_type_t<T>;
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = sizeof(U);
     static constexpr bool kPlain = true;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, T& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, T &v) {
         U u{};
         Codec<U>::load(p, u);
         v = static_cast<T>(u);
     }
-    static bool read(Reader& r, T& v, DecodeError& err) {
+    static bool read(Reader &r, T &v, DecodeError &err) {
         U u{};
         if (!Codec<U>::read(r, u, err)) {
             return false;
@@ -570,16 +565,15 @@ struct Codec<T, std::enable_if_t<std::is_enum_v<T>>> {
         v = static_cast<T>(u); // enum classes hold every value of their underlying type
         return true;
     }
-    static void write(Writer& w, const T& v) {
+    static void write(Writer &w, const T &v) {
         Codec<U>::write(w, static_cast<U>(v));
     }
 };
 
-template <>
-struct Codec<bool> {
+template <> struct Codec<bool> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
-    static bool read(Reader& r, bool& v, DecodeError& err) {
+    static bool read(Reader &r, bool &v, DecodeError &err) {
         if (!r.need(1, err)) {
             return false;
         }
@@ -592,20 +586,19 @@ struct Codec<bool> {
         v = b == 1;
         return true;
     }
-    static void write(Writer& w, const bool& v) {
+    static void write(Writer &w, const bool &v) {
         w.put_uint(1, v ? 1 : 0);
     }
 };
 
-template <>
-struct Codec<char> {
+template <> struct Codec<char> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 1;
     static constexpr bool kPlain = true;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, char& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, char &v) {
         std::memcpy(&v, p, 1);
     }
-    static bool read(Reader& r, char& v, DecodeError& err) {
+    static bool read(Reader &r, char &v, DecodeError &err) {
         if (!r.need(1, err)) {
             return false;
         }
@@ -613,21 +606,20 @@ struct Codec<char> {
         std::memcpy(&v, &b, 1);
         return true;
     }
-    static void write(Writer& w, const char& v) {
+    static void write(Writer &w, const char &v) {
         w.put_bytes(&v, 1);
     }
 };
 
-template <>
-struct Codec<float> {
+template <> struct Codec<float> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 4;
     static constexpr bool kPlain = true;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, float& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, float &v) {
         const auto bits = static_cast<std::uint32_t>(load_uint<4>(p));
         std::memcpy(&v, &bits, 4); // keeps NaN payloads
     }
-    static bool read(Reader& r, float& v, DecodeError& err) {
+    static bool read(Reader &r, float &v, DecodeError &err) {
         if (!r.need(4, err)) {
             return false;
         }
@@ -635,23 +627,22 @@ struct Codec<float> {
         std::memcpy(&v, &bits, 4); // keeps NaN payloads
         return true;
     }
-    static void write(Writer& w, const float& v) {
+    static void write(Writer &w, const float &v) {
         std::uint32_t bits;
         std::memcpy(&bits, &v, 4);
         w.put_uint(4, bits);
     }
 };
 
-template <>
-struct Codec<double> {
+template <> struct Codec<double> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 8;
     static constexpr bool kPlain = true;
-    PROTOPKG_INLINE static void load(const std::uint8_t* p, double& v) {
+    PROTOPKG_INLINE static void load(const std::uint8_t *p, double &v) {
         const std::uint64_t bits = load_uint<8>(p);
         std::memcpy(&v, &bits, 8); // keeps NaN payloads
     }
-    static bool read(Reader& r, double& v, DecodeError& err) {
+    static bool read(Reader &r, double &v, DecodeError &err) {
         if (!r.need(8, err)) {
             return false;
         }
@@ -659,7 +650,7 @@ struct Codec<double> {
         std::memcpy(&v, &bits, 8);
         return true;
     }
-    static void write(Writer& w, const double& v) {
+    static void write(Writer &w, const double &v) {
         std::uint64_t bits;
         std::memcpy(&bits, &v, 8);
         w.put_uint(8, bits);
@@ -668,31 +659,26 @@ struct Codec<double> {
 
 // ---- parameter helpers used by the generated codecs
 
-template <class T>
-bool read_value(Reader& r, T& v, DecodeError& err) {
+template <class T> bool read_value(Reader &r, T &v, DecodeError &err) {
     return Codec<T>::read(r, v, err);
 }
-template <class T>
-void write_value(Writer& w, const T& v) {
+template <class T> void write_value(Writer &w, const T &v) {
     Codec<T>::write(w, v);
 }
 
 /// A string of exactly N bytes, kept verbatim (padding included).
-template <std::size_t N>
-bool read_string(Reader& r, std::array<char, N>& v, DecodeError& err) {
+template <std::size_t N> bool read_string(Reader &r, std::array<char, N> &v, DecodeError &err) {
     if (!r.need(N, err)) {
         return false;
     }
     std::memcpy(v.data(), r.take(N), N);
     return true;
 }
-template <std::size_t N>
-void write_string(Writer& w, const std::array<char, N>& v) {
+template <std::size_t N> void write_string(Writer &w, const std::array<char, N> &v) {
     w.put_bytes(v.data(), N);
 }
 
-template <class T, std::size_t N>
-bool read_fixed(Reader& r, std::array<T, N>& v, DecodeError& err) {
+template <class T, std::size_t N> bool read_fixed(Reader &r, std::array<T, N> &v, DecodeError &err) {
     for (std::size_t i = 0; i < N; ++i) {
         if (!Codec<T>::read(r, v[i], err)) {
             err.enter_index(i);
@@ -701,23 +687,22 @@ bool read_fixed(Reader& r, std::array<T, N>& v, DecodeError& err) {
     }
     return true;
 }
-template <class T, std::size_t N>
-void write_fixed(Writer& w, const std::array<T, N>& v) {
-    for (const T& item : v) {
+template <class T, std::size_t N> void write_fixed(Writer &w, const std::array<T, N> &v) {
+    for (const T &item : v) {
         Codec<T>::write(w, item);
     }
 }
 
 /// An array whose element count is an earlier parameter.
 template <class T, std::size_t M>
-bool read_counted(Reader& r, BoundedVector<T, M>& v, std::uint64_t count, DecodeError& err) {
+bool read_counted(Reader &r, BoundedVector<T, M> &v, std::uint64_t count, DecodeError &err) {
     v.clear();
     if (count > M) {
         err = DecodeError::count_exceeds(count, M);
         return false;
     }
     for (std::uint64_t i = 0; i < count; ++i) {
-        T* item = v.grow();
+        T *item = v.grow();
         if (!Codec<T>::read(r, *item, err)) {
             err.enter_index(static_cast<std::size_t>(i));
             return false;
@@ -726,19 +711,18 @@ bool read_counted(Reader& r, BoundedVector<T, M>& v, std::uint64_t count, Decode
     return true;
 }
 template <class T, std::size_t M>
-void write_counted(Writer& w, const BoundedVector<T, M>& v, std::uint64_t count) {
+void write_counted(Writer &w, const BoundedVector<T, M> &v, std::uint64_t count) {
     if (count != v.size()) {
         w.fail(EncodeError::count_mismatch);
         return;
     }
-    for (const T& item : v) {
+    for (const T &item : v) {
         Codec<T>::write(w, item);
     }
 }
 
 /// An array that runs to the end of the field data.
-template <class T, std::size_t M>
-bool read_remaining(Reader& r, BoundedVector<T, M>& v, DecodeError& err) {
+template <class T, std::size_t M> bool read_remaining(Reader &r, BoundedVector<T, M> &v, DecodeError &err) {
     v.clear();
     if constexpr (Codec<T>::kFixedSize && Codec<T>::kSize > 0) {
         constexpr std::size_t n = Codec<T>::kSize;
@@ -752,7 +736,7 @@ bool read_remaining(Reader& r, BoundedVector<T, M>& v, DecodeError& err) {
         }
     }
     while (r.left() > 0) {
-        T* item = v.grow();
+        T *item = v.grow();
         if (item == nullptr) {
             err = DecodeError::count_exceeds(M + 1, M);
             return false;
@@ -764,16 +748,14 @@ bool read_remaining(Reader& r, BoundedVector<T, M>& v, DecodeError& err) {
     }
     return true;
 }
-template <class T, std::size_t M>
-void write_remaining(Writer& w, const BoundedVector<T, M>& v) {
-    for (const T& item : v) {
+template <class T, std::size_t M> void write_remaining(Writer &w, const BoundedVector<T, M> &v) {
+    for (const T &item : v) {
         Codec<T>::write(w, item);
     }
 }
 
 /// Decodes one layout (all of `size` bytes): leftover bytes are an error.
-template <class T>
-bool decode(const std::uint8_t* data, std::size_t size, T& out, DecodeError& err) {
+template <class T> bool decode(const std::uint8_t *data, std::size_t size, T &out, DecodeError &err) {
     if constexpr (Plain<T>::kPlain) {
         if (size == Plain<T>::kSize) { // the straight path: sets every member, cannot fail
             Plain<T>::load(data, out);
@@ -794,7 +776,7 @@ bool decode(const std::uint8_t* data, std::size_t size, T& out, DecodeError& err
 
 /// Encodes one layout into out[0..capacity); `written` is the data size on success.
 template <class T>
-EncodeError encode(const T& value, std::uint8_t* out, std::size_t capacity, std::size_t& written) {
+EncodeError encode(const T &value, std::uint8_t *out, std::size_t capacity, std::size_t &written) {
     Writer w(out, capacity);
     Codec<T>::write(w, value);
     written = w.error() == EncodeError::none ? w.size() : 0;
