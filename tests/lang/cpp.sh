@@ -35,8 +35,9 @@ runtime_tests() {
   local rt="$ROOT/generator/targets/cpp/runtime" out="$ROOT/build/cpp-runtime" fmt
   fmt="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}"
   [ -x "$fmt" ] || fmt="$(command -v clang-format)"
-  (cd "$ROOT" && "$fmt" --style=file --dry-run --Werror "$rt"/include/protopkg/*.hpp "$rt"/tests/*.cpp \
-    "$rt"/tests/*.hpp "$rt"/tests/protocols/*/protopkg/*.hpp)
+  (cd "$ROOT" && "$fmt" --style=file --dry-run --Werror "$rt"/include/protopkg/*.hpp "$rt"/tools/*.cpp \
+    "$rt"/package_tests/* "$rt"/tests/*.cpp "$rt"/tests/*.hpp "$rt"/tests/*/*/protopkg/*.hpp \
+    "$rt"/tests/package/protopkg/*.hpp)
   if [ ! -f "$out/build.ninja" ]; then
     cmake -G Ninja -S "$rt/tests" -B "$out" \
       -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
