@@ -29,9 +29,12 @@ import re
 from generator.examples import example_context
 from generator.lookup import resolve
 from generator.render import copy_runtime, environment
-from generator.targets.cpp.facts import KEYWORDS, PRIMITIVE_TYPES
+from generator.targets.cpp.facts import KEYWORDS as CPP_KEYWORDS
+from generator.targets.cpp.facts import PRIMITIVE_TYPES as PRIM_CPP
 
 OUTPUT_DIRS = ["cpp"]
+
+# CPP_KEYWORDS and PRIM_CPP (above) are the language tables of facts.py, under this module's names.
 
 # The hand-written runtime (generator/targets/cpp/runtime/, see its README.md): {file there: file
 # in the package}. The library headers' only protocol input is the generated framing.hpp;
@@ -129,7 +132,7 @@ def camel(name: str) -> str:
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
-    return name + "_" if name in KEYWORDS or name in extra else name
+    return name + "_" if name in CPP_KEYWORDS or name in extra else name
 
 
 def int_literal(v: int) -> str:
@@ -227,7 +230,7 @@ class _Proto:
     def elem_cpp(self, tref: dict) -> str:
         k = tref["kind"]
         if k == "primitive":
-            return PRIMITIVE_TYPES[tref["name"]]
+            return PRIM_CPP[tref["name"]]
         if k == "string":
             return f"std::array<char, {tref['length']}>"
         return self.type_name(tref["name"])
@@ -399,12 +402,12 @@ class _Proto:
             "title": " ".join(t.get("title", t["name"]).split()),
         }
         if t["kind"] == "enum":
-            m["base"] = PRIMITIVE_TYPES[t["base"]]
+            m["base"] = PRIM_CPP[t["base"]]
             m["enumerators"] = [
                 {"name": v["name"], "cpp": ident(v["name"]), "literal": int_literal(v["value"])} for v in t["values"]
             ]
         elif t["kind"] == "bitfield":
-            m["base"] = PRIMITIVE_TYPES[t["base"]]
+            m["base"] = PRIM_CPP[t["base"]]
             taken = {"raw", "set_raw", "Raw"}
             members = []
             for b in t["members"]:
@@ -448,7 +451,7 @@ class _Proto:
             m["alternatives"] = alts
             m["members"] = members
             m["selector"] = self.type_name(sel["name"])
-            m["selector_base"] = PRIMITIVE_TYPES[sel["base"]]
+            m["selector_base"] = PRIM_CPP[sel["base"]]
             m["selector_signed"] = sel["base"].startswith("s")
         return m
 
