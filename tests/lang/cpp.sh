@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
-# tests/lang/cpp.sh build|test|decode FILE [--device ID]|encode|example FILE
-# Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites, or
+# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|example FILE
+# Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites (after
+# the runtime's own tests, in place: generator/targets/cpp/runtime/tests/ into build/cpp-runtime/), or
 # runs the decode/encode tools or the getting-started example (<package>-getting-started FILE),
-# building them first when needed. Works from any directory.
+# building them first when needed; `runtime` runs only the runtime's in-place checks. Works from any
+# directory.
 # CPP_PACKAGE selects the package for decode/encode/example (default: mipcodec).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PKG="${CPP_PACKAGE:-mipcodec}"
 GEN="$ROOT/generated/cpp"
 
-usage() { echo "usage: $0 build|test|decode FILE [--device ID]|encode|example FILE" >&2; exit 2; }
+usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|example FILE" >&2; exit 2; }
 
 packages() {
   local d
@@ -24,6 +26,28 @@ configure() { # package
   if [ ! -f "$out/build.ninja" ]; then
     cmake -G Ninja -S "$src" -B "$out" >&2
   fi
+}
+
+# The hand-written runtime (generator/targets/cpp/runtime/), checked where it is edited, without
+# regenerating: clang-format clean, and its googletest suite built (strict warnings, under
+# AddressSanitizer and UndefinedBehaviorSanitizer) and run once per test protocol.
+runtime_tests() {
+  local rt="$ROOT/generator/targets/cpp/runtime" out="$ROOT/build/cpp-runtime" fmt
+  fmt="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}"
+  [ -x "$fmt" ] || fmt="$(command -v clang-format)"
+  (cd "$ROOT" && "$fmt" --style=file --dry-run --Werror "$rt"/include/protopkg/*.hpp "$rt"/tools/*.cpp \
+    "$rt"/package_tests/* "$rt"/tests/*.cpp "$rt"/tests/*.hpp "$rt"/tests/*/*/protopkg/*.hpp \
+    "$rt"/tests/package/protopkg/*.hpp)
+  if [ ! -f "$out/build.ninja" ]; then
+    cmake -G Ninja -S "$rt/tests" -B "$out" \
+      -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
+  fi
+  cmake --build "$out" >&2
+  local t
+  for t in "$out"/runtime-tests-*; do
+    "$t" --gtest_brief=1
+  done
 }
 
 build() { # package [targets...]
@@ -46,6 +70,7 @@ case "$cmd" in
     for p in $(packages); do build "$p"; done
     ;;
   test)
+    runtime_tests
     for p in $(packages); do
       build "$p"
       "$ROOT/build/cpp/$p/$p-tests" "$@"
@@ -59,6 +84,9 @@ case "$cmd" in
       cmake --build "$out" >&2
       "$out/$p-tests" --gtest_brief=1
     done
+    ;;
+  runtime)
+    runtime_tests
     ;;
   decode)
     [ $# -ge 1 ] || usage

@@ -1,21 +1,24 @@
 """C++17 back end: one header-only library per protocol at generated/cpp/<package>/.
 
-All naming and type mapping happens here; the templates in templates/cpp/ only loop and print.
-Layout of a package (namespace = protocols[].package):
+All naming and type mapping happens here (language facts in facts.py); the templates in
+templates/cpp/ only loop and print, and the hand-written runtime in runtime/ is copied verbatim
+(runtime/README.md). Layout of a package (namespace = protocols[].package):
 
-  include/<pkg>/framing.hpp          framing constants (from protocols[].framing) and limits
-  include/<pkg>/wire.hpp             Reader/Writer, DecodeError, BoundedVector, Codec<T> for primitives
-  include/<pkg>/checksum.hpp         Fletcher-16
-  include/<pkg>/packet.hpp           PacketBuilder, PacketView, FieldIterator
-  include/<pkg>/parser.hpp           StreamParser (docs/conformance.md section 1)
-  include/<pkg>/samples.hpp          SampleTracker, SampleGrouper (continuation packets, section 6)
+  include/<pkg>/framing.hpp          framing constants, sample rule and limits (the runtime's only protocol input)
+  include/<pkg>/wire.hpp             runtime: Reader/Writer, DecodeError, BoundedVector, Codec<T> for primitives
+  include/<pkg>/checksum.hpp         runtime: Fletcher-16
+  include/<pkg>/packet.hpp           runtime: PacketBuilder, PacketView, FieldIterator
+  include/<pkg>/parser.hpp           runtime: StreamParser (docs/conformance.md section 1)
+  include/<pkg>/samples.hpp          runtime: SampleTracker, SampleGrouper (continuation packets, section 6)
+  include/<pkg>/json_{writer,reader,codec}.hpp  runtime: canonical JSON writer, JSON reader, Json<T> of primitives
+  include/<pkg>/dispatch.hpp         runtime: decode_field(): variants, raw fallback
+  include/<pkg>/json_lines.hpp       runtime: stream -> JSON lines, JSON line -> bytes (what the CLIs do)
   include/<pkg>/devices.hpp          Device enum, set kinds
   include/<pkg>/types.hpp            <pkg>::types: enums, bitfields, structs, unions (+ Codec)
-  include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec)
+  include/<pkg>/types_json.hpp       Json<T> of the types
+  include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec), and <set>_json.hpp
+  include/<pkg>/layouts_json.hpp     every set's <set>_json.hpp (for json_lines.hpp)
   include/<pkg>/lookup.hpp           (set, descriptor) -> layouts, with reserved and shared fields
-  include/<pkg>/dispatch.hpp         decode_field(): variants, raw fallback
-  include/<pkg>/json_*.hpp           canonical JSON writer, JSON reader, Json<T> codecs
-  include/<pkg>/json_lines.hpp       stream -> JSON lines, JSON line -> bytes (what the CLIs do)
   tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt
 """
 
@@ -28,23 +31,61 @@ from generator.examples import example_context
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
-from generator.render import environment
+from generator.render import copy_runtime, environment
+from generator.targets.cpp.facts import KEYWORDS as CPP_KEYWORDS
+from generator.targets.cpp.facts import PRIMITIVE_TYPES as PRIM_CPP
 from generator.testcases import bitfield_cases, canonical_cases, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
 
-CPP_KEYWORDS = set(
-    """
-    alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t char16_t char32_t class
-    compl concept const consteval constexpr constinit const_cast continue co_await co_return co_yield decltype
-    default delete do double dynamic_cast else enum explicit export extern false float for friend goto if inline
-    int long mutable namespace new noexcept not not_eq nullptr operator or or_eq private protected public register
-    reinterpret_cast requires return short signed sizeof static static_assert static_cast struct switch template
-    this thread_local throw true try typedef typeid typename union unsigned using virtual void volatile wchar_t
-    while xor xor_eq
-    std NULL assert errno stdin stdout stderr EOF
-    """.split()
-)  # C++ keywords, and names (std, common macros) a member must not shadow
+# CPP_KEYWORDS and PRIM_CPP (above) are the language tables of facts.py, under this module's names.
+
+# The hand-written runtime (generator/targets/cpp/runtime/, see its README.md): {file there: file
+# in the package}. The library headers' only protocol input is the generated framing.hpp;
+# dispatch.hpp, json_lines.hpp, the tools and the package tests also use the generated API
+# (devices.hpp, lookup.hpp, layouts_json.hpp).
+RUNTIME_HEADERS = [
+    "wire.hpp",
+    "checksum.hpp",
+    "packet.hpp",
+    "parser.hpp",
+    "samples.hpp",
+    "dispatch.hpp",
+    "json_writer.hpp",
+    "json_reader.hpp",
+    "json_codec.hpp",
+    "json_lines.hpp",
+]
+
+
+def runtime_files(pkg: str) -> dict[str, str]:
+    """{runtime file: path in the package} of the hand-written runtime."""
+    return {
+        **{f"include/protopkg/{h}": f"include/{pkg}/{h}" for h in RUNTIME_HEADERS},
+        "tools/decode.cpp": "tools/decode.cpp",
+        "tools/encode.cpp": "tools/encode.cpp",
+        "package_tests/test_support.hpp": "tests/test_support.hpp",
+        "package_tests/test_package.cpp": "tests/test_package.cpp",
+    }
+
+
+# The first line of every file of a package, the copied runtime included.
+GENERATED_LINE = "// Generated by the protocol code generator from generated/ir.json. Do not edit.\n"
+
+
+def runtime_names(pkg: str, ns: str) -> list[tuple[str, str]]:
+    """The replacements of the runtime's placeholder package "protopkg" (see runtime/README.md), in
+    order: file names (include paths, the umbrella header, the tools' names) take the package
+    name; code takes its namespace (the package name, with a "_" suffix if that is a C++ keyword),
+    and macros the namespace in capitals."""
+    return [
+        ("protopkg/", pkg + "/"),
+        ("protopkg.hpp", pkg + ".hpp"),
+        ("protopkg-", pkg + "-"),
+        ("protopkg", ns),
+        ("PROTOPKG", ns.upper()),
+    ]
+
 
 # Sub-namespaces of a package that the runtime uses; a set with one of these names gets a suffix.
 RUNTIME_NAMESPACES = {
@@ -88,21 +129,6 @@ RUNTIME_NAMESPACES = {
     "json_read_remaining",
     "json_check_object",
 }  # namespace-scope names of the runtime; a set with one of these names gets a "_set" suffix
-
-PRIM_CPP = {
-    "bool": "bool",
-    "char": "char",
-    "u8": "std::uint8_t",
-    "u16": "std::uint16_t",
-    "u32": "std::uint32_t",
-    "u64": "std::uint64_t",
-    "s8": "std::int8_t",
-    "s16": "std::int16_t",
-    "s32": "std::int32_t",
-    "s64": "std::int64_t",
-    "float": "float",
-    "double": "double",
-}
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
@@ -595,39 +621,30 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "sample_rule": proto["samples"],
             "example": example_context(proto, api_names),
         }
-        plain = {
+        # The hand-written runtime, with the package's names put in for the placeholder.
+        for rel, text in copy_runtime("cpp", runtime_files(pkg), runtime_names(pkg, P.ns)).items():
+            files[f"{root}/{rel}"] = GENERATED_LINE + text
+        spec = {
             "framing.hpp": "framing.hpp.j2",
-            "wire.hpp": "wire.hpp.j2",
-            "checksum.hpp": "checksum.hpp.j2",
-            "packet.hpp": "packet.hpp.j2",
-            "parser.hpp": "parser.hpp.j2",
-            "samples.hpp": "samples.hpp.j2",
             "devices.hpp": "devices.hpp.j2",
             "types.hpp": "types.hpp.j2",
             "types_json.hpp": "types_json.hpp.j2",
             "lookup.hpp": "lookup.hpp.j2",
-            "dispatch.hpp": "dispatch.hpp.j2",
-            "json_writer.hpp": "json_writer.hpp.j2",
-            "json_reader.hpp": "json_reader.hpp.j2",
-            "json_codec.hpp": "json_codec.hpp.j2",
-            "json_lines.hpp": "json_lines.hpp.j2",
+            "layouts_json.hpp": "layouts_json.hpp.j2",
             f"{pkg}.hpp": "package.hpp.j2",
         }
-        for out, tpl in plain.items():
+        for out, tpl in spec.items():
             files[f"{inc}/{out}"] = env.get_template(f"cpp/include/{tpl}").render(ctx)
         for s in sets:
             files[f"{inc}/fields/{s['file']}.hpp"] = env.get_template("cpp/include/fields.hpp.j2").render(ctx, set=s)
             files[f"{inc}/fields/{s['file']}_json.hpp"] = env.get_template("cpp/include/fields_json.hpp.j2").render(
                 ctx, set=s
             )
-        files[f"{root}/tools/decode.cpp"] = env.get_template("cpp/tools/decode.cpp.j2").render(ctx)
-        files[f"{root}/tools/encode.cpp"] = env.get_template("cpp/tools/encode.cpp.j2").render(ctx)
         files[f"{root}/examples/getting_started.cpp"] = env.get_template("cpp/examples/getting_started.cpp.j2").render(
             ctx
         )
-        files[f"{root}/tests/test_support.hpp"] = env.get_template("cpp/tests/test_support.hpp.j2").render(ctx)
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
-        files[f"{root}/tests/test_runtime.cpp"] = env.get_template("cpp/tests/test_runtime.cpp.j2").render(ctx)
+        files[f"{root}/tests/test_types.cpp"] = env.get_template("cpp/tests/test_types.cpp.j2").render(ctx)
         files[f"{root}/tests/test_canonical.cpp"] = env.get_template("cpp/tests/test_canonical.cpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)

@@ -2,6 +2,7 @@
 // Devices of protocol 'mip' (per-device layouts) and descriptor-set kinds.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -12,6 +13,9 @@ enum class Device : std::uint8_t {
     gx5_45,  ///< 3DM-GX5-45
     cv7_ins, ///< 3DM-CV7-GNSS/INS
 };
+
+/// Every device, in spec order.
+inline constexpr std::array<Device, 2> kDevices = {Device::gx5_45, Device::cv7_ins};
 
 /// The device id used in the spec and in JSON ("gx5_45").
 inline const char *device_name(Device d) {

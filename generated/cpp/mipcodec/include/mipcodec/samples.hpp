@@ -9,26 +9,10 @@
 #include <optional>
 #include <vector>
 
+#include "mipcodec/framing.hpp"
 #include "mipcodec/packet.hpp"
 
 namespace mipcodec {
-
-/// The sample rule exported as `samples` in generated/ir.json.
-namespace sample_rule {
-inline constexpr std::array<std::uint8_t, 8> kDataSets = {0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0};
-inline constexpr unsigned kFirstShared = 208;
-struct Timestamp {
-    std::uint8_t descriptor;
-    std::size_t size;
-};
-inline constexpr std::array<Timestamp, 3> kTimestamps = {{{0xD3, 12}, {0xD5, 8}, {0xD7, 10}}};
-inline constexpr std::size_t kMaxKey = 36;
-/// True for a descriptor of the shared data set (from kFirstShared; none when it is 256). Written
-/// without comparing a byte to 256, which clang reports as always false.
-constexpr bool is_shared(std::uint8_t descriptor) {
-    return descriptor >= kFirstShared;
-}
-} // namespace sample_rule
 
 /// The key of a packet (bytes of its leading shared timestamp fields) and its leading shared run.
 struct SampleKey {

@@ -2,6 +2,7 @@
 // Devices of protocol 'mscip' (per-device layouts) and descriptor-set kinds.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -11,6 +12,9 @@ namespace mscipcodec {
 enum class Device : std::uint8_t {
     ms_imu3020, ///< MS-IMU3020
 };
+
+/// Every device, in spec order.
+inline constexpr std::array<Device, 1> kDevices = {Device::ms_imu3020};
 
 /// The device id used in the spec and in JSON ("ms_imu3020").
 inline const char *device_name(Device d) {

@@ -14,15 +14,12 @@
 #include "mscipcodec/json_codec.hpp"
 #include "mscipcodec/json_reader.hpp"
 #include "mscipcodec/json_writer.hpp"
+#include "mscipcodec/layouts_json.hpp"
 #include "mscipcodec/lookup.hpp"
 #include "mscipcodec/packet.hpp"
 #include "mscipcodec/parser.hpp"
 #include "mscipcodec/samples.hpp"
 #include "mscipcodec/types_json.hpp"
-#include "mscipcodec/fields/base_json.hpp"
-#include "mscipcodec/fields/imu_config_json.hpp"
-#include "mscipcodec/fields/imu_data_json.hpp"
-#include "mscipcodec/fields/reserved_json.hpp"
 
 namespace mscipcodec {
 namespace detail {

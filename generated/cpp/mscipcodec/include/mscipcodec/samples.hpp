@@ -9,27 +9,10 @@
 #include <optional>
 #include <vector>
 
+#include "mscipcodec/framing.hpp"
 #include "mscipcodec/packet.hpp"
 
 namespace mscipcodec {
-
-/// The sample rule exported as `samples` in generated/ir.json.
-namespace sample_rule {
-inline constexpr std::array<std::uint8_t, 0> kDataSets = {};
-inline constexpr unsigned kFirstShared = 256;
-struct Timestamp {
-    std::uint8_t descriptor;
-    std::size_t size;
-};
-inline constexpr std::array<Timestamp, 0> kTimestamps = {{}};
-inline constexpr std::size_t kMaxKey = 1;
-/// True for a descriptor of the shared data set (from kFirstShared; none when it is 256). Written
-/// without comparing a byte to 256, which clang reports as always false.
-constexpr bool is_shared(std::uint8_t descriptor) {
-    (void)descriptor;
-    return false;
-}
-} // namespace sample_rule
 
 /// The key of a packet (bytes of its leading shared timestamp fields) and its leading shared run.
 struct SampleKey {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "democodec/devices.hpp"
 #include "democodec/json_lines.hpp"
 
 namespace {
@@ -22,6 +23,16 @@ int usage_error(const std::string &message) {
 int io_error(const std::string &message) {
     std::fprintf(stderr, "democodec-decode: %s\n", message.c_str());
     return 2;
+}
+
+/// The protocol's device ids, in spec order, for the unknown-device message.
+std::string known_devices() {
+    std::string out;
+    for (const democodec::Device d : democodec::kDevices) {
+        out += out.empty() ? "" : ", ";
+        out += democodec::device_name(d);
+    }
+    return out;
 }
 
 bool read_all(std::FILE *f, std::vector<std::uint8_t> &out) {
@@ -60,7 +71,7 @@ int main(int argc, char **argv) {
             }
             device = democodec::device_from_name(id.c_str());
             if (!device) {
-                return usage_error("unknown device '" + id + "' (known: dev_a, dev_b)");
+                return usage_error("unknown device '" + id + "' (known: " + known_devices() + ")");
             }
             continue;
         }

@@ -2,6 +2,7 @@
 // Devices of protocol 'demo' (per-device layouts) and descriptor-set kinds.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -12,6 +13,9 @@ enum class Device : std::uint8_t {
     dev_a, ///< Device A
     dev_b, ///< Device B
 };
+
+/// Every device, in spec order.
+inline constexpr std::array<Device, 2> kDevices = {Device::dev_a, Device::dev_b};
 
 /// The device id used in the spec and in JSON ("dev_a").
 inline const char *device_name(Device d) {

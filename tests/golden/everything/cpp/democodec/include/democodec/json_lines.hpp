@@ -14,17 +14,12 @@
 #include "democodec/json_codec.hpp"
 #include "democodec/json_reader.hpp"
 #include "democodec/json_writer.hpp"
+#include "democodec/layouts_json.hpp"
 #include "democodec/lookup.hpp"
 #include "democodec/packet.hpp"
 #include "democodec/parser.hpp"
 #include "democodec/samples.hpp"
 #include "democodec/types_json.hpp"
-#include "democodec/fields/commands_json.hpp"
-#include "democodec/fields/data_json.hpp"
-#include "democodec/fields/receiver_1_json.hpp"
-#include "democodec/fields/receiver_2_json.hpp"
-#include "democodec/fields/shared_json.hpp"
-#include "democodec/fields/reserved_json.hpp"
 
 namespace democodec {
 namespace detail {

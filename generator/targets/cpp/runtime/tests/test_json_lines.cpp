@@ -1,0 +1,109 @@
+// Runtime tests of dispatch.hpp and json_lines.hpp on the stub package (package/protopkg/, with the
+// alpha framing): the canonical line of each kind of field, per-device variants, and the errors
+// of encode_json_line.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "protopkg/protopkg.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+namespace pkg = ::protopkg;
+using Bytes = std::vector<std::uint8_t>;
+
+Bytes one_packet(pkg::PacketBuilder &b) {
+    const pkg::PacketView p = b.finish();
+    return Bytes(p.data, p.data + p.size);
+}
+
+std::string line_of(const Bytes &bytes, const char *device = nullptr) {
+    const std::vector<std::string> lines = protopkg_test::decode_lines(bytes, bytes.size(), device);
+    return lines.size() == 1 ? lines[0] : "(" + std::to_string(lines.size()) + " lines)";
+}
+
+std::string encode_error(const std::string &line) {
+    Bytes out;
+    std::string error;
+    EXPECT_FALSE(pkg::encode_json_line(line, out, error)) << line;
+    EXPECT_TRUE(out.empty());
+    return error;
+}
+
+TEST(JsonLines, DecodedRawAndTrailingFields) {
+    pkg::PacketBuilder b(0x01);
+    ASSERT_EQ(b.add(pkg::stub::Ping{0x1234, 7}), pkg::EncodeError::none);
+    const std::uint8_t junk[] = {0xAB};
+    ASSERT_EQ(b.add_raw_field(0x7F, junk, 1), pkg::EncodeError::none); // unknown descriptor
+    const std::uint8_t bad_bool[] = {2};
+    ASSERT_EQ(b.add_raw_field(0x03, bad_bool, 1), pkg::EncodeError::none); // Switch: not a bool
+    const std::uint8_t trailing[] = {0x09};
+    ASSERT_EQ(b.append(trailing, 1), pkg::EncodeError::none);
+    const Bytes bytes = one_packet(b);
+    EXPECT_EQ(
+        line_of(bytes),
+        "{\"offset\":0,\"set\":1,\"fields\":["
+        "{\"descriptor\":1,\"name\":\"ping\",\"values\":{\"value\":4660,\"flags\":7}},"
+        "{\"descriptor\":127,\"data\":\"ab\",\"error\":\"unknown descriptor\"},"
+        "{\"descriptor\":3,\"data\":\"02\",\"error\":\"on: invalid bool value 2 at offset 0\"},"
+        "{\"trailing\":\"09\",\"error\":\"field header at payload offset 11 needs 2 bytes, 1 left\"}]}");
+    EXPECT_EQ(protopkg_test::encode_lines({line_of(bytes)}), bytes);
+}
+
+TEST(JsonLines, PerDeviceLayouts) {
+    pkg::PacketBuilder b(0x01);
+    ASSERT_EQ(b.add(pkg::stub::InfoCv{300, -2}), pkg::EncodeError::none);
+    const Bytes bytes = one_packet(b);
+    // The first layout that decodes the data wins (gx needs 1 byte: cv's 4 bytes are too many),
+    // unless a device is chosen.
+    const std::string cv =
+        "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"info\",\"device\":\"cv\","
+        "\"values\":{\"level\":300,\"offset\":-2}}]}";
+    EXPECT_EQ(line_of(bytes), cv);
+    EXPECT_EQ(line_of(bytes, "cv"), cv);
+    EXPECT_EQ(line_of(bytes, "gx"),
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"012cfffe\","
+              "\"error\":\"3 unexpected bytes at offset 1\"}]}");
+    EXPECT_EQ(protopkg_test::encode_lines({cv}), bytes);
+}
+
+TEST(JsonLines, SkipRunsAndUnknownSets) {
+    const Bytes garbage = {0x00, 0x01};
+    pkg::PacketBuilder b(0x40);
+    const Bytes bytes = [&] {
+        Bytes out = garbage;
+        const Bytes p = one_packet(b);
+        out.insert(out.end(), p.begin(), p.end());
+        return out;
+    }();
+    const std::vector<std::string> lines = protopkg_test::decode_lines(bytes, 1, nullptr);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "{\"offset\":0,\"skipped\":\"0001\"}");
+    EXPECT_EQ(lines[1], "{\"offset\":2,\"set\":64,\"fields\":[]}");
+    EXPECT_EQ(protopkg_test::encode_lines(lines), bytes);
+}
+
+TEST(JsonLines, EncodeErrors) {
+    EXPECT_EQ(encode_error("[]"), "expected a JSON object");
+    EXPECT_EQ(encode_error("{\"offset\":0}"), "expected a packet (set, fields) or a skip run (skipped)");
+    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":256,\"fields\":[]}"), "set: expected an integer in 0..255");
+    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\","
+                           "\"values\":{\"value\":70000,\"flags\":0}}]}")
+                  .rfind("fields[0].values.value: ", 0),
+              0u);
+    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"info\","
+                           "\"values\":{\"level\":1}}]}"),
+              "fields[0].device: field 'info' has per-device layouts; name the device");
+    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"pong\","
+                           "\"values\":{\"value\":1,\"flags\":0}}]}"),
+              "fields[0].name: descriptor 1 is 'ping', not 'pong'");
+    EXPECT_EQ(encode_error(
+                  "{\"offset\":0,\"set\":2,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}"),
+              "fields[0].descriptor: set 2 is unknown; write the field as raw data");
+}
+
+} // namespace
