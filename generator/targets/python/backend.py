@@ -1,7 +1,7 @@
 """Python back end: one installable, dependency-free package per protocol (Python 3.9+).
 
 generated/python/<package>/
-    pyproject.toml, setup.py, README.md
+    pyproject.toml, setup.py, MANIFEST.in (what the sdist adds), README.md
     <package>/            the library: the runtime (plain files of generator/targets/python/runtime/,
                           copied), _protocol.py and _protocol.h (the protocol's constants: the runtime's
                           only protocol input), types.py (enums, bitfields, structs, unions), one module
@@ -53,6 +53,7 @@ RUNTIME_FILES = [
     "packets.py",
     "samples.py",
     "_speedups.c",
+    "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
 ]
 # Plain files of runtime/package_tests/, copied into every package's tests/ directory.
 PACKAGE_TEST_FILES = ["conftest.py"]
@@ -60,7 +61,7 @@ PACKAGE_TEST_FILES = ["conftest.py"]
 # constants, the package's exports).
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
 # Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
-RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES} | {
+RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES if name.endswith((".py", ".c"))} | {
     "registry",
     "reserved",
     "types",
@@ -639,6 +640,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         files[f"{root}/{pkg}/registry.py"] = env.get_template("python/package/registry.py.j2").render(**ctx)
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
         files[f"{root}/setup.py"] = env.get_template("python/setup.py.j2").render(**ctx)
+        files[f"{root}/MANIFEST.in"] = env.get_template("python/MANIFEST.in.j2").render(**ctx)
         files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx)
         files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
             **ctx, example=_example(proto)

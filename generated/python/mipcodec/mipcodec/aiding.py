@@ -418,7 +418,7 @@ class Pressure(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     FrameConfig,
     FrameConfigResponse,
     EchoControl,

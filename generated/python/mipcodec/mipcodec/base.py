@@ -435,7 +435,7 @@ class DeviceReset(_c.Field):
     _OPS = ()
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     Ping,
     SetToIdle,
     GetDeviceInfo,

@@ -2190,7 +2190,7 @@ class GnssAntennaCalibrationControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("enable", _c.U8), _c.P("max_offset", _c.F32)),)
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     ResetFilter,
     SetInitialAttitude,
     SetInitialHeading,

@@ -1224,7 +1224,7 @@ class AidingFrameConfigErrorUncertainty(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     LlhPosition,
     NedVelocity,
     AttitudeQuaternion,

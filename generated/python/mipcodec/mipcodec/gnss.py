@@ -223,7 +223,7 @@ class SpartnConfigurationResponse(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     ReceiverInfo,
     ReceiverInfoResponse,
     SignalConfiguration,

@@ -104,4 +104,4 @@ class RtkCorrectionsStatus(_c.Field):
     )
 
 
-FIELDS: tuple = (BaseStationInfo, RtkCorrectionsStatus)
+FIELDS: tuple[type[_c.Field], ...] = (BaseStationInfo, RtkCorrectionsStatus)

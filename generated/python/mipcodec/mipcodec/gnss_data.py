@@ -435,7 +435,7 @@ class DgnssChannelStatus(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     LlhPosition,
     EcefPosition,
     NedVelocity,

@@ -215,4 +215,4 @@ class SatelliteStatus(_c.Field):
     )
 
 
-FIELDS: tuple = (LlhPosition, NedVelocity, UtcTime, FixInfo, SatelliteStatus)
+FIELDS: tuple[type[_c.Field], ...] = (LlhPosition, NedVelocity, UtcTime, FixInfo, SatelliteStatus)

@@ -1001,7 +1001,7 @@ class BeidouEphemeris(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     LlhPosition,
     EcefPosition,
     NedVelocity,

@@ -6,7 +6,7 @@ section 2). Reserved fields apply to every set of a kind; shared data descriptor
 
 from __future__ import annotations
 
-from typing import Dict, Optional, Tuple
+from typing import Dict, Optional, Tuple, Type
 
 from . import (
     aiding,
@@ -26,6 +26,7 @@ from . import (
     system_data,
     threedm,
 )
+from .codec import Field
 
 DEVICES: Tuple[str, ...] = ("gx5_45", "cv7_ins")
 
@@ -54,7 +55,7 @@ SET_KINDS: Tuple[Tuple[str, int, int], ...] = (
 
 SHARED_SET: Optional[int] = 0xFF
 
-FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
+FIELDS: Dict[Tuple[int, int], Tuple[Type[Field], ...]] = {
     (0x01, 0x01): (base.Ping,),
     (0x01, 0x02): (base.SetToIdle,),
     (0x01, 0x03): (base.GetDeviceInfo,),
@@ -396,7 +397,7 @@ FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
     (0xFF, 0xD8): (shared.ExternalTimeDelta,),
 }
 
-RESERVED: Dict[str, Dict[int, Tuple[type, ...]]] = {
+RESERVED: Dict[str, Dict[int, Tuple[Type[Field], ...]]] = {
     "command": {
         0xF1: (reserved.AckNack,),
     },
@@ -411,7 +412,7 @@ def set_kind(set_id: int) -> Optional[str]:
     return None
 
 
-def lookup(set_id: int, descriptor: int) -> Optional[Tuple[type, ...]]:
+def lookup(set_id: int, descriptor: int) -> Optional[Tuple[Type[Field], ...]]:
     """The layout classes for a field, or None: set's own field, reserved field, shared data field."""
     classes = FIELDS.get((set_id, descriptor))
     if classes is not None:

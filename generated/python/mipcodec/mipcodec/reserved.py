@@ -30,4 +30,4 @@ class AckNack(_c.Field):
     _OPS = (_c.Run(_c.P("command_descriptor", _c.U8), _c.P("ack_code", _c.enum(_t.AckCode, "u8"))),)
 
 
-FIELDS: tuple = (AckNack,)
+FIELDS: tuple[type[_c.Field], ...] = (AckNack,)

@@ -337,7 +337,7 @@ class OdometerData(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     ScaledAccel,
     ScaledGyro,
     ScaledMag,

@@ -170,7 +170,7 @@ class ExternalTimeDelta(_c.Field):
     _OPS = (_c.Run(_c.P("dt_nanos", _c.U64), _c.P("valid_flags", _c.flags(_t.ExternalTimeDeltaValidFlags))),)
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     EventSource,
     GpsTimestamp,
     DeltaTime,

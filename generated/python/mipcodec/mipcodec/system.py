@@ -61,4 +61,4 @@ class CommunicationModeResponse(_c.Field):
     _OPS = (_c.Run(_c.P("mode", _c.enum(_t.SystemCommMode, "u8"))),)
 
 
-FIELDS: tuple = (CommunicationMode, CommunicationModeResponse)
+FIELDS: tuple[type[_c.Field], ...] = (CommunicationMode, CommunicationModeResponse)

@@ -73,4 +73,4 @@ class GpioState(_c.Field):
     _OPS = (_c.Run(_c.P("states", _c.flags(_t.GpioPinStates))),)
 
 
-FIELDS: tuple = (BuiltInTest, TimeSyncStatus, GpioState)
+FIELDS: tuple[type[_c.Field], ...] = (BuiltInTest, TimeSyncStatus, GpioState)

@@ -2392,7 +2392,7 @@ class DeviceStatusResponse(_c.Field):
     )
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     EventControl,
     EventControlResponse,
     GetEventTriggerStatus,

@@ -257,7 +257,7 @@ class CorrelateGpsTime(_c.Field):
     _OPS = (_c.Run(_c.P("week", _c.U16), _c.P("seconds", _c.U32)),)
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     Ping,
     GetDeviceMessages,
     DeviceMessages,

@@ -513,7 +513,7 @@ class AuxAccelRangeResponse(_c.Field):
     _OPS = (_c.Run(_c.P("range", _c.enum(_t.AccelRange, "u8"))),)
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     UartBaudRate,
     UartBaudRateResponse,
     Filter,

@@ -196,7 +196,7 @@ class ScaledAuxAccel(_c.Field):
     _OPS = (_c.Run(_c.P("accel", _c.F32, 3)),)
 
 
-FIELDS: tuple = (
+FIELDS: tuple[type[_c.Field], ...] = (
     ScaledAccel,
     ScaledGyro,
     ScaledMag,

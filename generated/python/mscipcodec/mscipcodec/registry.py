@@ -6,9 +6,10 @@ section 2). Reserved fields apply to every set of a kind; shared data descriptor
 
 from __future__ import annotations
 
-from typing import Dict, Optional, Tuple
+from typing import Dict, Optional, Tuple, Type
 
 from . import base, imu_config, imu_data, reserved
+from .codec import Field
 
 DEVICES: Tuple[str, ...] = ("ms_imu3020",)
 
@@ -25,7 +26,7 @@ SET_KINDS: Tuple[Tuple[str, int, int], ...] = (
 
 SHARED_SET: Optional[int] = None
 
-FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
+FIELDS: Dict[Tuple[int, int], Tuple[Type[Field], ...]] = {
     (0x01, 0x02): (base.Ping,),
     (0x01, 0x03): (base.GetDeviceMessages,),
     (0x01, 0x83): (base.DeviceMessages,),
@@ -73,7 +74,7 @@ FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
     (0xA2, 0x89): (imu_data.ScaledAuxAccel,),
 }
 
-RESERVED: Dict[str, Dict[int, Tuple[type, ...]]] = {
+RESERVED: Dict[str, Dict[int, Tuple[Type[Field], ...]]] = {
     "command": {
         0x80: (reserved.Ack,),
     },
@@ -88,7 +89,7 @@ def set_kind(set_id: int) -> Optional[str]:
     return None
 
 
-def lookup(set_id: int, descriptor: int) -> Optional[Tuple[type, ...]]:
+def lookup(set_id: int, descriptor: int) -> Optional[Tuple[Type[Field], ...]]:
     """The layout classes for a field, or None: set's own field, reserved field, shared data field."""
     classes = FIELDS.get((set_id, descriptor))
     if classes is not None:

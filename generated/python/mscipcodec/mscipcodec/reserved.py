@@ -31,4 +31,4 @@ class Ack(_c.Field):
     _OPS = (_c.Run(_c.P("command_code", _c.U8), _c.P("error_code", _c.enum(_t.ErrorCode, "u8"))),)
 
 
-FIELDS: tuple = (Ack,)
+FIELDS: tuple[type[_c.Field], ...] = (Ack,)
