@@ -7,7 +7,7 @@ import from here. _protocol.h holds the same facts for the C accelerator.
 
 from __future__ import annotations
 
-from typing import Dict, Tuple
+from typing import Dict, FrozenSet, Tuple
 
 PACKAGE = "democodec"
 BYTE_ORDER = ">"  # struct byte order of every multi-byte value on the wire
@@ -33,7 +33,7 @@ IRREGULAR_LENGTHS: Dict[Tuple[int, int], int] = {}
 
 # Samples: the rule exported as `samples` in generated/ir.json (first_shared 0x100: no shared
 # descriptors).
-DATA_SETS = frozenset(
+DATA_SETS: FrozenSet[int] = frozenset(
     (
         0x90,
         0x91,

@@ -52,7 +52,8 @@ def f32_bits(v: Any) -> int:
             return v.bits
         b = v.bits
         return ((b >> 32) & 0x80000000) | 0x7FC00000 | ((b >> 29) & 0x003FFFFF)
-    return _U32.unpack(_F32.pack(v))[0]
+    bits: int = _U32.unpack(_F32.pack(v))[0]
+    return bits
 
 
 def f64_bits(v: Any) -> int:
@@ -62,7 +63,8 @@ def f64_bits(v: Any) -> int:
             return v.bits
         b = v.bits
         return ((b & 0x80000000) << 32) | 0x7FF0000000000000 | ((b & 0x007FFFFF) << 29)
-    return _U64.unpack(_F64.pack(v))[0]
+    bits: int = _U64.unpack(_F64.pack(v))[0]
+    return bits
 
 
 def f32_from_bits(bits: int) -> float:

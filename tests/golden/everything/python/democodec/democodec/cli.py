@@ -11,12 +11,12 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import BinaryIO, List, Optional
+from typing import BinaryIO, List, Optional, Tuple, Union
 
 from . import registry
 from ._protocol import PACKAGE as PROG
 from .codec import EncodeError
-from .framing import Parser, RawPacket
+from .framing import Parser, RawPacket, Skip
 from .packets import encode_line, event_line
 from .samples import SampleTracker
 
@@ -28,7 +28,7 @@ class UsageError(Exception):
     pass
 
 
-def _decode_args(args: List[str]) -> tuple:
+def _decode_args(args: List[str]) -> Tuple[Optional[str], Optional[str], bool]:
     device: Optional[str] = None
     path: Optional[str] = None
     samples = False
@@ -73,7 +73,7 @@ def _decode(args: List[str]) -> int:
     parser = Parser()
     tracker = SampleTracker() if samples else None
 
-    def line(event: object) -> str:
+    def line(event: Union[RawPacket, Skip]) -> str:
         text = event_line(event, device)
         placed = tracker.feed(event.data) if tracker is not None and isinstance(event, RawPacket) else None
         if placed is not None:

@@ -18,7 +18,8 @@ from __future__ import annotations
 import enum as _enum
 import struct
 from operator import attrgetter
-from typing import Any, Callable, Dict, List, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Callable, Dict, FrozenSet, List, Optional, Tuple, Type, TypeVar
+from typing import Union as _Union  # `Union` below is the base of generated unions
 
 from ._protocol import BYTE_ORDER
 from .canonical import (
@@ -31,6 +32,9 @@ from .canonical import (
     is_int,
     string_text,
 )
+
+# What the decoders read: any bytes-like object (bytes, bytearray, memoryview).
+BytesLike = _Union[bytes, bytearray, memoryview]
 
 _RAW32 = struct.Struct(BYTE_ORDER + "I")
 _RAW64 = struct.Struct(BYTE_ORDER + "Q")
@@ -322,13 +326,19 @@ def _patch_nan(out: bytearray, at: int, v: Any, width: int) -> None:
 
 
 # ------------------------------------------------------------------------------------- enums, bitfields
+_E = TypeVar("_E", bound="Enum")
+_B = TypeVar("_B", bound="Bitfield")
+_L = TypeVar("_L", bound="Layout")
+
+
 class Enum(_enum.IntEnum):
     """Base of generated enums. Decoding keeps unknown values as plain ints (see `of`)."""
 
     @classmethod
-    def of(cls, value: int) -> Any:
+    def of(cls: Type[_E], value: int) -> _Union[_E, int]:
         """The member with this value, or the plain int when the value is not a member."""
-        return cls._value2member_map_.get(value, value)
+        member: _Union[_E, int] = cls._value2member_map_.get(value, value)  # type: ignore[assignment]
+        return member
 
 
 class Bitfield(int):
@@ -342,37 +352,37 @@ class Bitfield(int):
     _ALL = 0xFF
     _MEMBERS: Tuple[Tuple[str, str, str, int, int], ...] = ()
 
-    def __or__(self, other: Any) -> Any:
+    def __or__(self: _B, other: int) -> _B:
         return type(self)(int(self) | int(other))
 
     __ror__ = __or__
 
-    def __and__(self, other: Any) -> Any:
+    def __and__(self: _B, other: int) -> _B:
         return type(self)(int(self) & int(other))
 
     __rand__ = __and__
 
-    def __xor__(self, other: Any) -> Any:
+    def __xor__(self: _B, other: int) -> _B:
         return type(self)(int(self) ^ int(other))
 
     __rxor__ = __xor__
 
-    def __invert__(self) -> Any:
+    def __invert__(self: _B) -> _B:
         return type(self)(~int(self) & self._ALL)
 
-    def __contains__(self, mask: Any) -> bool:
+    def __contains__(self, mask: int) -> bool:
         return int(self) & int(mask) == int(mask)
 
     def members(self) -> Dict[str, int]:
         """Every named member with a non-zero value: name -> value (1 for single bits)."""
-        out = {}
+        out: Dict[str, int] = {}
         for name, _attr, _const, first, width in self._MEMBERS:
             v = (int(self) >> first) & ((1 << width) - 1)
             if v:
                 out[name] = v
         return out
 
-    def replace(self, **values: Any) -> Any:
+    def replace(self: _B, **values: int) -> _B:
         """A copy with the given members (by attribute name) set to new values."""
         v = int(self)
         by_attr = {attr: (first, width) for _name, attr, _const, first, width in self._MEMBERS}
@@ -395,10 +405,10 @@ class Bitfield(int):
     __str__ = __repr__
 
 
-def bitfield(base: str) -> Callable[[Any], Any]:
+def bitfield(base: str) -> Callable[[Type[_B]], Type[_B]]:
     """Class decorator of generated bitfields: records the base type, turns mask constants into values."""
 
-    def wrap(cls: Any) -> Any:
+    def wrap(cls: Type[_B]) -> Type[_B]:
         cls._BASE = base
         cls._ALL = (1 << (_BASES[base].size * 8)) - 1
         for _name, _attr, const, first, width in cls._MEMBERS:
@@ -408,15 +418,24 @@ def bitfield(base: str) -> Callable[[Any], Any]:
     return wrap
 
 
-def bit(n: int) -> property:
+if TYPE_CHECKING:
+    # What type checkers see of the member properties (at run time they are plain properties).
+    class _BitMember:
+        def __get__(self, obj: Optional[Bitfield], owner: Any) -> bool: ...
+
+    class _BitsMember:
+        def __get__(self, obj: Optional[Bitfield], owner: Any) -> int: ...
+
+
+def bit(n: int) -> _BitMember:
     """A single-bit member (bool)."""
-    return property(lambda self: bool((int(self) >> n) & 1))
+    return property(lambda self: bool((int(self) >> n) & 1))  # type: ignore[return-value]
 
 
-def bits(first: int, width: int) -> property:
+def bits(first: int, width: int) -> _BitsMember:
     """A multi-bit member (int)."""
     mask = (1 << width) - 1
-    return property(lambda self: (int(self) >> first) & mask)
+    return property(lambda self: (int(self) >> first) & mask)  # type: ignore[return-value]
 
 
 # ------------------------------------------------------------------------------------- operations
@@ -431,6 +450,23 @@ class _Op:
 
     def names(self) -> List[str]:
         return [self.name]
+
+    # Implemented by every operation (declared here for type checkers).
+    def read(self, data: Any, o: int, vals: List[Any], prefix: str) -> int:
+        raise NotImplementedError
+
+    def write(self, out: bytearray, vals: Any, prefix: str) -> None:
+        raise NotImplementedError
+
+    def to_json(self, vals: Any, parts: List[str]) -> None:
+        raise NotImplementedError
+
+    def from_json(self, obj: Dict[str, Any], vals: List[Any], prefix: str) -> None:
+        raise NotImplementedError
+
+    def selects_nothing(self, vals: Any) -> bool:
+        """True when a union's selected member has no data (only Choice selects)."""
+        return False
 
 
 class P:
@@ -454,7 +490,7 @@ class Run(_Op):
         self.width = len(params)
         fmt = BYTE_ORDER
         off = k = 0
-        floats = []
+        floats: List[Tuple[int, int, int]] = []
         for p in params:
             s = p.scalar
             p.offset = off
@@ -597,9 +633,9 @@ class Run(_Op):
             if not isinstance(x, list) or len(x) != p.count:
                 raise EncodeError(f"{prefix}{p.name}: expected an array of {p.count} values")
             items = []
-            for j, e in enumerate(x):
+            for j, item in enumerate(x):
                 try:
-                    items.append(fj(e))
+                    items.append(fj(item))
                 except _Bad as err:
                     raise EncodeError(f"{prefix}{p.name}[{j}]: {err}") from None
             vals.append(items)
@@ -949,9 +985,10 @@ class Layout:
     _OPS: Tuple[Any, ...] = ()
     _ATTRS: Tuple[str, ...] = ()
     _NAMES: Tuple[str, ...] = ()
-    _KEYS: frozenset = frozenset()
+    _KEYS: FrozenSet[str] = frozenset()
     _OPTIONAL = False
     _SIZE: Optional[int] = None  # wire size when fixed (used for arrays running to the end of a field)
+    _get: Callable[[Any], Tuple[Any, ...]]  # the values of _ATTRS, set per class
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
@@ -968,7 +1005,7 @@ class Layout:
 
     # -- wire
     @classmethod
-    def decode(cls, data: Any) -> Any:
+    def decode(cls: Type[_L], data: BytesLike) -> _L:
         """Decode field data (after the field header); raises DecodeError with the canonical message."""
         value, o = cls._read(data, 0, "")
         if o != len(data):
@@ -976,7 +1013,7 @@ class Layout:
         return value
 
     @classmethod
-    def _read(cls, data: Any, o: int, prefix: str) -> Tuple[Any, int]:
+    def _read(cls: Type[_L], data: Any, o: int, prefix: str) -> Tuple[_L, int]:
         vals: List[Any] = []
         for op in cls._OPS:
             o = op.read(data, o, vals, prefix)
@@ -1026,7 +1063,7 @@ class Layout:
         return "{" + ",".join(parts) + "}"
 
     @classmethod
-    def from_json(cls, obj: Any, prefix: str = "") -> Any:
+    def from_json(cls: Type[_L], obj: Any, prefix: str = "") -> _L:
         """Build a value from a parsed canonical JSON object (raises EncodeError naming the path)."""
         if not isinstance(obj, dict):
             raise EncodeError(f"{prefix.rstrip('.') or 'values'}: expected an object, got {_show(obj)}")
@@ -1054,14 +1091,14 @@ class Field(Layout):
     APPLIES_TO: Optional[str] = None
 
 
-def fast_items(cls: Any) -> Optional[Tuple[Tuple[str, str, int, int, Any], ...]]:
+def fast_items(cls: Type[Layout]) -> Optional[Tuple[Tuple[str, str, int, int, Any], ...]]:
     """A layout as fixed-size wire items for the C accelerator, or None when the pure-Python decoder
     must read it (optional, counted, nested or union parameters, signed enums).
 
     Items are (attribute, kind, element size, count or -1 for a scalar, aux); the C side builds the
     same values as `Run.read` and hands every NaN, invalid bool and size mismatch back to `decode`.
     """
-    items = []
+    items: List[Tuple[str, str, int, int, Any]] = []
     attrs = cls._ATTRS
     for op in cls._OPS:
         if type(op) is not Run:
@@ -1082,9 +1119,9 @@ class Union:
     """Base of generated unions: `_MEMBERS` maps selector values to member structs (None: no data)."""
 
     _SELECTOR: Any = None
-    _MEMBERS: Dict[int, Any] = {}
+    _MEMBERS: Dict[int, Optional[Type[Struct]]] = {}
 
     @classmethod
-    def member(cls, selector: int) -> Any:
+    def member(cls, selector: int) -> Optional[Type[Struct]]:
         """The member struct for a selector value (None for a member without data); KeyError if none."""
         return cls._MEMBERS[int(selector)]

@@ -129,4 +129,4 @@ class PerDevice_dev_b(_c.Field):
     )
 
 
-FIELDS: tuple = (Ping, Configure, Configuration, PerDevice_dev_a, PerDevice_dev_b)
+FIELDS: tuple[type[_c.Field], ...] = (Ping, Configure, Configuration, PerDevice_dev_a, PerDevice_dev_b)

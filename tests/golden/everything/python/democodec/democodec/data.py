@@ -28,4 +28,4 @@ class Sample(_c.Field):
     _OPS = (_c.Run(_c.P("quat", _c.F32, 4), _c.P("big", _c.U64), _c.P("small", _c.S8), _c.P("f", _c.F32)),)
 
 
-FIELDS: tuple = (Sample,)
+FIELDS: tuple[type[_c.Field], ...] = (Sample,)

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import os
 from operator import mul
-from typing import Any, Iterator, List, Tuple, Union
+from typing import TYPE_CHECKING, Any, Iterator, List, Tuple, Union
 
 # The protocol's constants (generated). framing.MAX_PACKET and the others the code below does not
-# use are part of the package's API: re-exported.
+# use are part of the package's API: re-exported (listed in __all__ at the end, so type checkers see them exported).
 from ._protocol import (  # noqa: F401
     CHECKSUM_SIZE,
     CHECKSUM_SUM1_FIRST,
@@ -31,6 +31,9 @@ from ._protocol import (  # noqa: F401
     SYNC,
 )
 
+if TYPE_CHECKING:
+    from .codec import BytesLike, Field
+
 # The optional C accelerator (_speedups.c, built by setup.py when a compiler is there): the parser
 # loop and packet decoding run in C with the same results. DEMOCODEC_PURE=1 in the
 # environment forces the pure-Python code (tests run both ways).
@@ -41,12 +44,13 @@ if os.environ.get(PACKAGE.upper() + "_PURE", "") in ("", "0"):
     except ImportError:
         _speedups = None
 ACCELERATED = _speedups is not None
-if _speedups is not None:
-    _EventBase: Any = _speedups.EventBase
-    _EVENT_SLOTS: Tuple[str, ...] = ()  # offset and data live in the C base
+# Type checkers see the pure-Python classes (the C base holds the same attributes).
+_EVENT_SLOTS: Tuple[str, ...] = ("offset", "data")
+if _speedups is not None and not TYPE_CHECKING:
+    _EventBase = _speedups.EventBase
+    _EVENT_SLOTS = ()  # offset and data live in the C base
 else:
     _EventBase = object
-    _EVENT_SLOTS = ("offset", "data")
 
 
 def field_length_adjust(set_id: int, descriptor: int) -> int:
@@ -59,15 +63,15 @@ class FramingError(ValueError):
 
 
 # ----------------------------------------------------------------------------------- checksum
-def fletcher16(data: Any) -> int:
+def fletcher16(data: BytesLike) -> int:
     """Fletcher-16 (mod 256) of `data` as (sum1 << 8) | sum2."""
     n = len(data)
     sum1 = sum(data) & 0xFF
     sum2 = sum(map(mul, data, range(n, 0, -1))) & 0xFF
-    return (sum1 << 8) | sum2
+    return int((sum1 << 8) | sum2)
 
 
-def checksum_bytes(data: Any) -> bytes:
+def checksum_bytes(data: BytesLike) -> bytes:
     """The two checksum bytes of `data` in wire order."""
     c = fletcher16(data)
     sum1, sum2 = c >> 8, c & 0xFF
@@ -84,11 +88,11 @@ class PacketBuilder:
         self.set = set_id
         self.payload = bytearray()
 
-    def add(self, value: Any) -> PacketBuilder:
+    def add(self, value: Field) -> PacketBuilder:
         """Append a typed field value (anything with DESCRIPTOR and encode())."""
         return self.add_field(value.DESCRIPTOR, value.encode())
 
-    def add_field(self, descriptor: int, data: Any) -> PacketBuilder:
+    def add_field(self, descriptor: int, data: BytesLike) -> PacketBuilder:
         """Append a field from its descriptor and data bytes."""
         if not 0 <= descriptor <= 0xFF:
             raise FramingError(f"descriptor {descriptor} is not a byte")
@@ -105,7 +109,7 @@ class PacketBuilder:
         header[FIELD_DESCRIPTOR_OFFSET] = descriptor
         return self.add_bytes(bytes(header) + bytes(data))
 
-    def add_bytes(self, raw: Any) -> PacketBuilder:
+    def add_bytes(self, raw: BytesLike) -> PacketBuilder:
         """Append raw payload bytes (e.g. a trailing entry)."""
         if len(self.payload) + len(raw) > MAX_PAYLOAD:
             raise FramingError(
@@ -124,7 +128,7 @@ class PacketBuilder:
         return body + checksum_bytes(body)
 
 
-def build_packet(set_id: int, *values: Any) -> bytes:
+def build_packet(set_id: int, *values: Field) -> bytes:
     """A packet holding the given typed field values."""
     b = PacketBuilder(set_id)
     for v in values:
@@ -203,7 +207,7 @@ class Parser:
         self._skip = bytearray()
         self._skip_at = 0
 
-    def feed(self, data: Any) -> List[Event]:
+    def feed(self, data: BytesLike) -> List[Event]:
         """Consume more input; returns the events it completes."""
         self._buf += data
         return self._scan(final=False)
@@ -224,6 +228,7 @@ class Parser:
     def _scan(self, final: bool) -> List[Event]:
         if _speedups is None:
             return self._scan_pure(final)
+        events: List[Event]
         events, pos, self._skip_at = _speedups.scan(self._buf, self._base, self._skip, self._skip_at, final)
         del self._buf[:pos]
         self._base += pos
@@ -277,7 +282,7 @@ class Parser:
         return events
 
 
-def parse(data: Any) -> List[Event]:
+def parse(data: BytesLike) -> List[Event]:
     """All events of a complete stream."""
     p = Parser()
     return p.feed(data) + p.flush()
@@ -312,7 +317,7 @@ class TrailingBytes:
         return f"TrailingBytes(offset={self.offset}, data={self.data.hex()}, error={self.error!r})"
 
 
-def iter_fields(set_id: int, payload: Any) -> Iterator[Union[FieldBytes, TrailingBytes]]:
+def iter_fields(set_id: int, payload: BytesLike) -> Iterator[Union[FieldBytes, TrailingBytes]]:
     """Split the payload of a packet of set `set_id` into fields; framing problems end it with a TrailingBytes entry."""
     payload = bytes(payload)
     n = len(payload)
@@ -340,3 +345,38 @@ def iter_fields(set_id: int, payload: Any) -> Iterator[Union[FieldBytes, Trailin
             return
         yield FieldBytes(o, descriptor, payload[o + FIELD_HEADER_SIZE : o + size])
         o += size
+
+
+__all__ = [
+    "FramingError",
+    "fletcher16",
+    "checksum_bytes",
+    "field_length_adjust",
+    "PacketBuilder",
+    "build_packet",
+    "RawPacket",
+    "Skip",
+    "Event",
+    "Parser",
+    "parse",
+    "FieldBytes",
+    "TrailingBytes",
+    "iter_fields",
+    "ACCELERATED",
+    "CHECKSUM_SIZE",
+    "CHECKSUM_SUM1_FIRST",
+    "FIELD_DESCRIPTOR_OFFSET",
+    "FIELD_HEADER_SIZE",
+    "FIELD_LENGTH_ADJUST",
+    "FIELD_LENGTH_COUNTS_HEADER",
+    "FIELD_LENGTH_OFFSET",
+    "HEADER_SIZE",
+    "IRREGULAR_LENGTHS",
+    "LENGTH_OFFSET",
+    "MAX_FIELD_DATA",
+    "MAX_PACKET",
+    "MAX_PAYLOAD",
+    "PACKAGE",
+    "SET_OFFSET",
+    "SYNC",
+]

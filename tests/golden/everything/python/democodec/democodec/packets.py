@@ -8,11 +8,11 @@ such line back into bytes (the encode CLI).
 from __future__ import annotations
 
 from array import array
-from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, Iterable, List, Optional, Tuple, Type, Union, cast
 
 from . import registry
 from .canonical import JsonError, error_text, hex_bytes, is_int, loads, skip_line
-from .codec import DecodeError, EncodeError, Field, fast_items
+from .codec import BytesLike, DecodeError, EncodeError, Field, fast_items
 from .framing import (
     CHECKSUM_SIZE,
     HEADER_SIZE,
@@ -28,15 +28,17 @@ from .framing import (
     parse,
 )
 
-if _speedups is not None:
-    _PacketBase: Any = _speedups.PacketBase
-    _DecodedBase: Any = _speedups.DecodedFieldBase
-    _PACKET_SLOTS: Tuple[str, ...] = ()  # the attributes live in the C bases
-    _DECODED_SLOTS: Tuple[str, ...] = ()
+# Type checkers see the pure-Python classes (the C bases hold the same attributes).
+_PACKET_SLOTS: Tuple[str, ...] = ("offset", "set", "fields")
+_DECODED_SLOTS: Tuple[str, ...] = ("descriptor", "value")
+if _speedups is not None and not TYPE_CHECKING:
+    _PacketBase = _speedups.PacketBase
+    _DecodedBase = _speedups.DecodedFieldBase
+    _PACKET_SLOTS = ()  # the attributes live in the C bases
+    _DECODED_SLOTS = ()
 else:
-    _PacketBase = _DecodedBase = object
-    _PACKET_SLOTS = ("offset", "set", "fields")
-    _DECODED_SLOTS = ("descriptor", "value")
+    _PacketBase = object
+    _DecodedBase = object
 
 
 class DecodedField(_DecodedBase):
@@ -193,6 +195,9 @@ if _speedups is not None:
     decode_packet = _speedups.decode_packet  # noqa: F811 - same contract, in C
 
 
+DecodedEvent = Union["Packet", Skip]
+
+
 class Decoder(Parser):
     """A stream parser whose packets come out decoded: feed(bytes) -> [Packet | Skip], flush() at end.
 
@@ -205,13 +210,14 @@ class Decoder(Parser):
         super().__init__()
         self.device = device
 
-    def feed(self, data: Any) -> List[Any]:
+    # Returns decoded events where Parser returns raw ones (the override narrows the element type).
+    def feed(self, data: BytesLike) -> List[DecodedEvent]:  # type: ignore[override]
         """Consume more input; returns the (decoded) events it completes."""
-        return super().feed(data)
+        return cast(List[DecodedEvent], super().feed(data))
 
-    def flush(self) -> List[Any]:
+    def flush(self) -> List[DecodedEvent]:  # type: ignore[override]
         """End of input: returns the last (decoded) events."""
-        return super().flush()
+        return cast(List[DecodedEvent], super().flush())
 
     def _scan(self, final: bool) -> List[Any]:
         if _speedups is None or self.device is not None:
@@ -219,20 +225,22 @@ class Decoder(Parser):
             return [
                 decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in super()._scan(final)
             ]
+        events: List[Any]
         events, pos, self._skip_at = _speedups.scan(self._buf, self._base, self._skip, self._skip_at, final, True)
         del self._buf[:pos]
         self._base += pos
         return events
 
 
-def decode_all(data: Any, device: Optional[str] = None) -> List[Union[Packet, Skip]]:
+def decode_all(data: BytesLike, device: Optional[str] = None) -> List[DecodedEvent]:
     """Every event of a complete stream with its packets decoded: `Packet` and `Skip` in stream order.
 
     The same as `decode_packet(e.data, e.offset, device)` for each `RawPacket` of `parse(data)`, in
     one pass (in C, without the intermediate RawPacket objects, when the accelerator is built).
     """
     if _speedups is not None and device is None:
-        return _speedups.decode_all(data)
+        events: List[DecodedEvent] = _speedups.decode_all(data)
+        return events
     return [decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in parse(data)]
 
 
@@ -251,7 +259,7 @@ class Table:
     """
 
     def __init__(
-        self, set_id: int, descriptor: int, cls: Any, rows: int, offsets: bytes, index: bytes, cols: List[bytes]
+        self, set_id: int, descriptor: int, cls: Type[Field], rows: int, offsets: bytes, index: bytes, cols: List[bytes]
     ) -> None:
         self.set = set_id
         self.descriptor = descriptor
@@ -260,16 +268,16 @@ class Table:
         self.offsets = array("q", offsets)
         self.index = array("q", index)
         self._items = fast_items(cls) or ()
-        self.columns: Dict[str, Any] = {}
+        self.columns: Dict[str, array[Any]] = {}
         for (attr, kind, _size, _count, _aux), data in zip(self._items, cols):
             self.columns[attr] = array(_COLUMN_CODES[kind], data)
 
     def __len__(self) -> int:
         return self.rows
 
-    def row(self, i: int) -> Any:
+    def row(self, i: int) -> Field:
         """The typed value of row i."""
-        vals = []
+        vals: List[Any] = []
         for attr, kind, _size, count, aux in self._items:
             col = self.columns[attr]
             raw = [col[i]] if count < 0 else list(col[i * count : (i + 1) * count])
@@ -312,7 +320,7 @@ class Columns:
         return out
 
 
-def decode_columns(data: Any) -> Columns:
+def decode_columns(data: BytesLike) -> Columns:
     """A complete stream decoded into per-field tables of numbers (see `Columns`): the fast bulk API.
 
     In C when the accelerator is built; it builds no Python object per packet for the fields it
@@ -358,7 +366,7 @@ def decode_bytes(data: Any, device: Optional[str] = None) -> List[str]:
 
 
 # ----------------------------------------------------------------------------------- encode
-def _keys(obj: dict, required: Iterable[str], optional: Iterable[str], what: str) -> None:
+def _keys(obj: Dict[str, Any], required: Iterable[str], optional: Iterable[str], what: str) -> None:
     allowed = set(required) | set(optional)
     for k in required:
         if k not in obj:
@@ -368,25 +376,25 @@ def _keys(obj: dict, required: Iterable[str], optional: Iterable[str], what: str
             raise EncodeError(f"{what}: unknown key {k!r}")
 
 
-def _byte(obj: dict, key: str, what: str) -> int:
+def _byte(obj: Dict[str, Any], key: str, what: str) -> int:
     v = obj[key]
     if not is_int(v) or not 0 <= v <= 0xFF:
         raise EncodeError(f"{what}: {key} must be an integer 0..255")
     return int(v)
 
 
-def _offset(obj: dict, what: str) -> None:
+def _offset(obj: Dict[str, Any], what: str) -> None:
     v = obj["offset"]
     if not is_int(v) or not 0 <= v <= 0xFFFFFFFFFFFFFFFF:
         raise EncodeError(f"{what}: offset must be an integer 0..18446744073709551615")
 
 
-def _error_text(entry: dict, what: str) -> None:
+def _error_text(entry: Dict[str, Any], what: str) -> None:
     if not isinstance(entry["error"], str):
         raise EncodeError(f"{what}: error must be a string")
 
 
-def _field_bytes(set_id: int, entry: Any, what: str) -> tuple:
+def _field_bytes(set_id: int, entry: Any, what: str) -> Tuple[Optional[int], bytes]:
     """(descriptor, data) or (None, raw payload bytes) of one field entry of a packet line."""
     if not isinstance(entry, dict):
         raise EncodeError(f"{what}: expected an object")
@@ -410,7 +418,7 @@ def _field_bytes(set_id: int, entry: Any, what: str) -> tuple:
     if len(classes) > 1:
         match = [c for c in classes if c.DEVICE == device]
         if not match:
-            devices = ", ".join(c.DEVICE for c in classes)
+            devices = ", ".join(str(c.DEVICE) for c in classes)
             raise EncodeError(f"{what}: {name} has per-device layouts; 'device' must be one of {devices}")
         cls = match[0]
     else:

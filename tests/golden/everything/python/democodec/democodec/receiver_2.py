@@ -26,4 +26,4 @@ class LlhPosition(_c.Field):
     _OPS = (_c.Run(_c.P("latitude", _c.F64), _c.P("longitude", _c.F64), _c.P("valid_flags", _c.U16)),)
 
 
-FIELDS: tuple = (LlhPosition,)
+FIELDS: tuple[type[_c.Field], ...] = (LlhPosition,)

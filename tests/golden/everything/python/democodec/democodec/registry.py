@@ -6,9 +6,10 @@ section 2). Reserved fields apply to every set of a kind; shared data descriptor
 
 from __future__ import annotations
 
-from typing import Dict, Optional, Tuple
+from typing import Dict, Optional, Tuple, Type
 
 from . import commands, data, receiver_1, receiver_2, reserved, shared
+from .codec import Field
 
 DEVICES: Tuple[str, ...] = ("dev_a", "dev_b")
 
@@ -27,7 +28,7 @@ SET_KINDS: Tuple[Tuple[str, int, int], ...] = (
 
 SHARED_SET: Optional[int] = 0xFF
 
-FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
+FIELDS: Dict[Tuple[int, int], Tuple[Type[Field], ...]] = {
     (0x01, 0x01): (commands.Ping,),
     (0x01, 0x02): (commands.Configure,),
     (0x01, 0x82): (commands.Configuration,),
@@ -38,7 +39,7 @@ FIELDS: Dict[Tuple[int, int], Tuple[type, ...]] = {
     (0xFF, 0xD3): (shared.Timestamp,),
 }
 
-RESERVED: Dict[str, Dict[int, Tuple[type, ...]]] = {
+RESERVED: Dict[str, Dict[int, Tuple[Type[Field], ...]]] = {
     "command": {
         0x80: (reserved.Ack,),
     },
@@ -53,7 +54,7 @@ def set_kind(set_id: int) -> Optional[str]:
     return None
 
 
-def lookup(set_id: int, descriptor: int) -> Optional[Tuple[type, ...]]:
+def lookup(set_id: int, descriptor: int) -> Optional[Tuple[Type[Field], ...]]:
     """The layout classes for a field, or None: set's own field, reserved field, shared data field."""
     classes = FIELDS.get((set_id, descriptor))
     if classes is not None:

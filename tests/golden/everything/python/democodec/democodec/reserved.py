@@ -26,4 +26,4 @@ class Ack(_c.Field):
     _OPS = (_c.Run(_c.P("echo", _c.U8), _c.P("code", _c.U8)),)
 
 
-FIELDS: tuple = (Ack,)
+FIELDS: tuple[type[_c.Field], ...] = (Ack,)

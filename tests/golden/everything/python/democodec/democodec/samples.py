@@ -14,14 +14,15 @@
 
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Dict, List, Optional, Tuple, Union
 
 from ._protocol import DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS  # noqa: F401 (samples.MAX_KEY: API)
+from .codec import BytesLike
 from .framing import CHECKSUM_SIZE, FIELD_HEADER_SIZE, HEADER_SIZE, SET_OFFSET, FieldBytes, RawPacket, iter_fields
 from .packets import Entry, Packet, decode_packet
 
 
-def shared_prefix(set_id: int, payload: Any) -> Tuple[int, int]:
+def shared_prefix(set_id: int, payload: BytesLike) -> Tuple[int, int]:
     """(number of fields, bytes) of the leading shared run of the payload of a packet of set `set_id`."""
     count = size = 0
     for f in iter_fields(set_id, payload):
@@ -32,7 +33,7 @@ def shared_prefix(set_id: int, payload: Any) -> Tuple[int, int]:
     return count, size
 
 
-def sample_key(packet: Any) -> Optional[bytes]:
+def sample_key(packet: BytesLike) -> Optional[bytes]:
     """The key of a complete packet (section 6), or None when it has none."""
     packet = bytes(packet)
     if packet[SET_OFFSET] not in DATA_SETS:
@@ -58,7 +59,7 @@ class SampleTracker:
         self._next = 0
         self._last: Dict[int, Tuple[int, Optional[bytes]]] = {}
 
-    def feed(self, packet: Any) -> Optional[Tuple[int, bool]]:
+    def feed(self, packet: BytesLike) -> Optional[Tuple[int, bool]]:
         """(sample number, continues an earlier packet) for a packet of a data set, else None."""
         packet = bytes(packet)
         set_id = packet[SET_OFFSET]
@@ -105,7 +106,7 @@ class SampleGrouper:
         self._tracker = SampleTracker()
         self._open: Dict[int, Sample] = {}
 
-    def feed(self, packet: Any, offset: Optional[int] = None) -> List[Sample]:
+    def feed(self, packet: Union[RawPacket, BytesLike], offset: Optional[int] = None) -> List[Sample]:
         """Feed one complete packet (a RawPacket or its bytes); returns the samples it completes.
 
         Packets of command sets are ignored."""

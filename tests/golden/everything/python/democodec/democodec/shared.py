@@ -24,4 +24,4 @@ class Timestamp(_c.Field):
     _OPS = (_c.Run(_c.P("nanoseconds", _c.U64)),)
 
 
-FIELDS: tuple = (Timestamp,)
+FIELDS: tuple[type[_c.Field], ...] = (Timestamp,)
