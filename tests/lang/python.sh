@@ -1,10 +1,16 @@
 #!/usr/bin/env bash
 # Build, test and run the generated Python packages.
 #   tests/lang/python.sh build                        byte-compile every package under generated/python/ into build/python/
-#   tests/lang/python.sh test                         ruff check, the runtime's unit tests in place
+#   tests/lang/python.sh test                         ruff check, mypy --strict of every package (and of the
+#                                                     golden tree's), the runtime's unit tests in place
 #                                                     (generator/targets/python/runtime/tests/), then pytest of
 #                                                     every package; each twice: with the C accelerator (built
-#                                                     by `ext`) and forced pure (<PKG>_PURE=1)
+#                                                     by `ext`) and forced pure (<PKG>_PURE=1); then `consumer`
+#   tests/lang/python.sh consumer                     every package built into an sdist and a wheel (python -m
+#                                                     build), installed with pip --no-index into clean
+#                                                     virtualenvs (with the accelerator, and from the sdist with
+#                                                     no C compiler) and used from outside the tree, mypy --strict
+#                                                     of a typed consumer (tests/consumer/test_python_package.py)
 #   tests/lang/python.sh ext                          build every package with its C accelerator in place
 #                                                     into build/python/ext/<package>/ (prints the directory)
 #   tests/lang/python.sh decode FILE [--device ID]    python -m <package> decode (FILE may be -)
@@ -21,6 +27,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PACKAGE="${PY_PACKAGE:-mipcodec}"
 if [ -x "$ROOT/.venv/bin/python" ]; then PY="$ROOT/.venv/bin/python"; else PY="$(command -v python3)"; fi
 if [ -x "$ROOT/.venv/bin/ruff" ]; then RUFF="$ROOT/.venv/bin/ruff"; else RUFF="$(command -v ruff || true)"; fi
+MYPY_CACHE="$ROOT/build/python/mypy-cache"
 export PYTHONPYCACHEPREFIX="$ROOT/build/python/pycache"
 unset PYTHONDONTWRITEBYTECODE  # the cache lives in build/, not in the sources
 
@@ -32,7 +39,7 @@ packages() {
 }
 
 usage() {
-    echo "usage: tests/lang/python.sh build | ext | test | decode FILE [--device ID] | encode | example FILE" >&2
+    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | example FILE" >&2
     exit 2
 }
 
@@ -92,6 +99,12 @@ ext)
 test)
     [ -n "$RUFF" ] || { echo "tests/lang/python.sh: ruff not found (run make)" >&2; exit 2; }
     (cd "$ROOT" && "$RUFF" check --config ruff.toml generated/python generator/targets/python/runtime)
+    # The packages are typed (py.typed): each passes mypy --strict as its consumers run it.
+    for dir in "$ROOT"/generated/python/*/ "$ROOT"/tests/golden/everything/python/*/; do
+        [ -f "$dir/pyproject.toml" ] || continue
+        echo "== $(basename "$dir"): mypy --strict"
+        (cd "$dir" && "$PY" -m mypy --strict --explicit-package-bases --no-error-summary --cache-dir "$MYPY_CACHE" "$(basename "$dir")" examples/*.py)
+    done
     # The runtime's unit tests, in place (generator/targets/python/runtime/tests/: a test protocol,
     # no regeneration), before the generated packages' tests: with each of the test protocol's two
     # framings (TESTPROTO_FRAMING), pure and with the C accelerator (built in build/python/runtime/).
@@ -109,6 +122,11 @@ test)
         build_ext "$pkg"
         (cd "$ROOT/build/python/ext/$pkg" && env -u "${up}_PURE" "${up}_EXPECT_ACCELERATED=1" PYTHONPATH="$ROOT/build/python/ext/$pkg" "$PY" -m pytest -q -p no:cacheprovider tests)
     done
+    "$0" consumer
+    ;;
+consumer)
+    echo "== consumer: sdist and wheel of every package installed into clean virtualenvs (no index)"
+    (cd "$ROOT" && "$PY" -m pytest -q -p no:cacheprovider tests/consumer)
     ;;
 decode)
     [ $# -ge 1 ] || usage

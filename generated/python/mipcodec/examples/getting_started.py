@@ -6,8 +6,9 @@ The documentation quotes the parts between the [...] and [end] comments. Generat
 """
 
 import sys
+from typing import List, Union
 
-from mipcodec import DecodedField, PacketBuilder, Parser, Skip, decode_packet
+from mipcodec import DecodedField, PacketBuilder, Parser, RawPacket, Skip, decode_packet
 from mipcodec.base import Ping
 
 
@@ -22,7 +23,7 @@ def print_command() -> None:
 
 
 # [parse-stream]
-def on_event(event) -> None:
+def on_event(event: Union[RawPacket, Skip]) -> None:
     """Prints one parser event: a packet with the names of its fields, or a run of skipped bytes."""
     if isinstance(event, Skip):
         print("skipped", event.count)
@@ -56,7 +57,7 @@ def decode_file(path: str) -> int:
 # [end]
 
 
-def main(argv: list) -> int:
+def main(argv: List[str]) -> int:
     if len(argv) != 2:
         print("usage: getting_started FILE", file=sys.stderr)
         return 2
