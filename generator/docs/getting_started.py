@@ -54,8 +54,13 @@ def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
         )
     if lang == "python":
         return (
-            f"Install `generated/python/{pkg}/` (pure Python 3.9+, no dependencies), or put it on `PYTHONPATH`:",
-            f"pip install ./generated/python/{pkg}\npython -m {pkg} decode capture.bin   # canonical JSON lines",
+            f"Install `generated/python/{pkg}/` (Python 3.9+, no dependencies, typed for mypy; its optional C "
+            "accelerator is compiled when a C compiler is there), or build a wheel and an sdist once and install "
+            f"from them anywhere, offline too (`generated/python/{pkg}/README.md` has the details):",
+            f"pip install ./generated/python/{pkg}\n"
+            f"# or: python -m build --outdir dist generated/python/{pkg}\n"
+            f"#     pip install --no-index --find-links dist {pkg}\n"
+            f"python -m {pkg} decode capture.bin   # canonical JSON lines",
         )
     return (
         f"Depend on `generated/rust/{pkg}/` by path (no dependencies; `--no-default-features` builds without `std`):",
