@@ -239,12 +239,13 @@ def test_mypy_strict_accepts_a_typed_consumer(cases: dict[str, list[dict]]) -> N
     proc = mypy(built, HERE / "typed_mipcodec.py", example)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     case = next(c for c in cases["mipcodec"] if c["name"] == "scaled_accel_example")
-    out = run(
-        [str(built.venv / "bin" / "python"), str(HERE / "typed_mipcodec.py"), case["hex"]],
-        "typed consumer",
-        cwd=built.dir,
-    )
-    assert "typed_mipcodec: ok (accelerated=True" in out
+    for venv, accelerated in ((built.venv, True), (built.venv_nocc, False)):
+        out = run(
+            [str(venv / "bin" / "python"), str(HERE / "typed_mipcodec.py"), case["hex"]],
+            f"typed consumer ({venv.name})",
+            cwd=built.dir,
+        )
+        assert f"typed_mipcodec: ok (accelerated={accelerated}" in out
 
 
 def test_mypy_strict_rejects_wrong_types() -> None:
