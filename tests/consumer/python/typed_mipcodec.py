@@ -31,8 +31,9 @@ from mipcodec import (
 )
 from mipcodec.base import Ping
 from mipcodec.framing import MAX_PACKET
+from mipcodec.reserved import AckNack
 from mipcodec.sensor import ScaledAccel
-from mipcodec.types import AidingLlhValidFlags
+from mipcodec.types import AckCode, AidingLlhValidFlags
 
 if TYPE_CHECKING:
     from typing_extensions import assert_type
@@ -115,6 +116,14 @@ def main(argv: List[str]) -> int:
         assert_type(command, bytes)
     check(len(command) <= MAX_PACKET and decode_packet(command).values()[0].NAME == "ping", "ping")
     check(encode_line(packet.line()) == data, "encode_line(decode_packet(...).line()) is not the packet")
+
+    # Enums: a value the spec does not name decodes as a plain int, and the annotation says so.
+    acks = [AckNack.decode(bytes([0x01, code])).ack_code for code in (0x00, 0x7E)]
+    if TYPE_CHECKING:
+        assert_type(acks[0], Union[AckCode, int])
+    check(acks[0] is AckCode.OK and type(acks[1]) is int and acks[1] == 0x7E, f"ack codes {acks!r}")
+    named = [a.name for a in acks if isinstance(a, AckCode)]
+    check(named == ["OK"], f"named ack codes {named}")
 
     # Bitfields: members are bool (one bit) and the operators keep the type.
     flags = AidingLlhValidFlags(AidingLlhValidFlags.LATITUDE) | AidingLlhValidFlags.HEIGHT

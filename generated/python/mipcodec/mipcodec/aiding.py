@@ -27,10 +27,10 @@ class FrameConfig(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     frame_id: int = 0  # Reference frame number (at most 4).
     # Format of the rotation (also selects the format a read reports). (sent for: write, read)
-    format: _ty.Optional[_t.AidingFrameFormat] = None
+    format: _ty.Optional[_ty.Union[_t.AidingFrameFormat, int]] = None
     # If true, the Kalman filter tracks errors in this frame definition. (sent for: write)
     tracking_enabled: _ty.Optional[bool] = None
     # Translation X, Y, Z of the frame in the vehicle frame. [m] (sent for: write)
@@ -62,7 +62,7 @@ class FrameConfigResponse(_c.Field):
     """
 
     frame_id: int = 0  # Reference frame number.
-    format: _t.AidingFrameFormat = _t.AidingFrameFormat.EULER  # Format of the rotation.
+    format: _ty.Union[_t.AidingFrameFormat, int] = _t.AidingFrameFormat.EULER  # Format of the rotation.
     tracking_enabled: bool = False  # Whether the Kalman filter tracks errors in this frame.
     translation: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 3)  # Translation X, Y, Z. [m]
     # Rotation, in the given format.
@@ -96,8 +96,8 @@ class EchoControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    mode: _ty.Optional[_t.AidingEchoMode] = None  # How aiding commands are answered. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    mode: _ty.Optional[_ty.Union[_t.AidingEchoMode, int]] = None  # How aiding commands are answered. (sent for: write)
 
     SET = 0x13
     DESCRIPTOR = 0x1F
@@ -119,7 +119,7 @@ class EchoControlResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 7806. Field data: 1 bytes.
     """
 
-    mode: _t.AidingEchoMode = _t.AidingEchoMode.SUPPRESS_ACK  # How aiding commands are answered.
+    mode: _ty.Union[_t.AidingEchoMode, int] = _t.AidingEchoMode.SUPPRESS_ACK  # How aiding commands are answered.
 
     SET = 0x13
     DESCRIPTOR = 0x9F

@@ -288,7 +288,7 @@ class CommPortSpeed(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     port: int = 0  # Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB); 0 means all ports for save, load and default.
     baud: _ty.Optional[int] = None  # Port baud rate; must be a supported rate. [bit/s] (sent for: write)
 
@@ -334,8 +334,10 @@ class GpsTimeUpdate_gx5_45(_c.Field):
     3dm-gx5-45-dcp.txt line 865. Field data: 2..6 bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write, read, write_no_ack)
-    field_id: _t.GpsTimeField = _t.GpsTimeField.WEEK_NUMBER  # Which time value: 1 GPS week number, 2 GPS seconds.
+    # Function selector (one of: write, read, write_no_ack)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Which time value: 1 GPS week number, 2 GPS seconds.
+    field_id: _ty.Union[_t.GpsTimeField, int] = _t.GpsTimeField.WEEK_NUMBER
     # New week number or seconds, depending on field_id. (sent for: write, write_no_ack)
     value: _ty.Optional[int] = None
 
@@ -361,8 +363,8 @@ class GpsTimeUpdate_cv7_ins(_c.Field):
     Functions: write. Sources: 3dm-cv7-ins-docs.txt line 8160. Field data: 6 bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write)
-    field_id: _t.GpsTimeField = _t.GpsTimeField.WEEK_NUMBER  # Determines how to interpret value.
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE  # Function selector (one of: write)
+    field_id: _ty.Union[_t.GpsTimeField, int] = _t.GpsTimeField.WEEK_NUMBER  # Determines how to interpret value.
     value: int = 0  # Week number or time of week, depending on field_id.
 
     SET = 0x01

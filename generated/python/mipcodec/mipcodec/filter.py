@@ -104,8 +104,8 @@ class VehicleDynamicsMode(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    mode: _ty.Optional[_t.VehicleDynamicsMode] = None  # New dynamics mode. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    mode: _ty.Optional[_ty.Union[_t.VehicleDynamicsMode, int]] = None  # New dynamics mode. (sent for: write)
 
     SET = 0x0D
     DESCRIPTOR = 0x10
@@ -127,7 +127,7 @@ class VehicleDynamicsModeResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1460. Field data: 1 bytes.
     """
 
-    mode: _t.VehicleDynamicsMode = _t.VehicleDynamicsMode.PORTABLE  # Current dynamics mode.
+    mode: _ty.Union[_t.VehicleDynamicsMode, int] = _t.VehicleDynamicsMode.PORTABLE  # Current dynamics mode.
 
     SET = 0x0D
     DESCRIPTOR = 0x80
@@ -151,7 +151,7 @@ class SensorToVehicleTransform(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     roll: _ty.Optional[float] = None  # Roll angle of the sensor-to-vehicle rotation. [rad] (sent for: write)
     pitch: _ty.Optional[float] = None  # Pitch angle of the sensor-to-vehicle rotation. [rad] (sent for: write)
     yaw: _ty.Optional[float] = None  # Yaw angle of the sensor-to-vehicle rotation. [rad] (sent for: write)
@@ -202,7 +202,7 @@ class SensorToVehicleOffset(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     offset: _ty.Optional[_ty.List[float]] = None  # (x, y, z) offset in the sensor body frame. [m] (sent for: write)
 
     SET = 0x0D
@@ -249,7 +249,7 @@ class AntennaOffset(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # (x, y, z) antenna offset (sensor frame on GX5-45, vehicle frame on CV7). [m] (sent for: write)
     offset: _ty.Optional[_ty.List[float]] = None
 
@@ -294,7 +294,7 @@ class EstimationControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     flags: _ty.Optional[_t.EstimationControlFlags] = None  # States to estimate. (sent for: write)
 
     SET = 0x0D
@@ -339,8 +339,8 @@ class GnssSourceControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    source: _ty.Optional[_t.FilterGnssSource] = None  # GNSS source. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    source: _ty.Optional[_ty.Union[_t.FilterGnssSource, int]] = None  # GNSS source. (sent for: write)
 
     SET = 0x0D
     DESCRIPTOR = 0x15
@@ -362,7 +362,7 @@ class GnssSourceControlResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1539; 3dm-cv7-ins-docs.txt line 8308. Field data: 1 bytes.
     """
 
-    source: _t.FilterGnssSource = _t.FilterGnssSource.ALL_INTERNAL  # GNSS source.
+    source: _ty.Union[_t.FilterGnssSource, int] = _t.FilterGnssSource.ALL_INTERNAL  # GNSS source.
 
     SET = 0x0D
     DESCRIPTOR = 0x86
@@ -435,7 +435,7 @@ class ExternalHeadingUpdate(_c.Field):
 
     heading: float = 0.0  # Heading angle, within +-pi. [rad]
     heading_uncertainty: float = 0.0  # Heading 1-sigma uncertainty; must be greater than 0. [rad]
-    type: _t.ExternalHeadingType = _t.ExternalHeadingType.TRUE_HEADING  # True or magnetic heading.
+    type: _ty.Union[_t.ExternalHeadingType, int] = _t.ExternalHeadingType.TRUE_HEADING  # True or magnetic heading.
 
     SET = 0x0D
     DESCRIPTOR = 0x17
@@ -462,9 +462,9 @@ class HeadingUpdateControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Heading aiding source (the manual's "Enable Flag"). (sent for: write)
-    source: _ty.Optional[_t.HeadingUpdateSource] = None
+    source: _ty.Optional[_ty.Union[_t.HeadingUpdateSource, int]] = None
 
     SET = 0x0D
     DESCRIPTOR = 0x18
@@ -486,7 +486,7 @@ class HeadingUpdateControlResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1579. Field data: 1 bytes.
     """
 
-    source: _t.HeadingUpdateSource = _t.HeadingUpdateSource.NONE  # Heading aiding source.
+    source: _ty.Union[_t.HeadingUpdateSource, int] = _t.HeadingUpdateSource.NONE  # Heading aiding source.
 
     SET = 0x0D
     DESCRIPTOR = 0x87
@@ -508,7 +508,7 @@ class AutoInitControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable: _ty.Optional[int] = None  # 0 disables, 1 enables auto-initialisation. (sent for: write)
 
     SET = 0x0D
@@ -553,7 +553,7 @@ class AccelNoise(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[_ty.List[float]] = None  # (x, y, z) accelerometer noise 1-sigma. [m/s^2] (sent for: write)
 
     SET = 0x0D
@@ -599,7 +599,7 @@ class GyroNoise(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[_ty.List[float]] = None  # (x, y, z) gyro noise 1-sigma. [rad/s] (sent for: write)
 
     SET = 0x0D
@@ -644,7 +644,7 @@ class AccelBiasModel(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     beta: _ty.Optional[_ty.List[float]] = None  # (x, y, z) accelerometer bias beta. [1/s] (sent for: write)
     noise: _ty.Optional[_ty.List[float]] = None  # (x, y, z) accelerometer bias noise 1-sigma. [m/s^2] (sent for: write)
 
@@ -693,7 +693,7 @@ class GyroBiasModel(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     beta: _ty.Optional[_ty.List[float]] = None  # (x, y, z) gyro bias beta. [1/s] (sent for: write)
     noise: _ty.Optional[_ty.List[float]] = None  # (x, y, z) gyro bias noise 1-sigma. [rad/s] (sent for: write)
 
@@ -741,7 +741,7 @@ class ZuptControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable: _ty.Optional[int] = None  # 0 disables, 1 enables ZUPTs. (sent for: write)
     # Velocity magnitude at or below which a ZUPT is applied. [m/s] (sent for: write)
     threshold: _ty.Optional[float] = None
@@ -792,7 +792,7 @@ class ExternalHeadingUpdateWithTime(_c.Field):
     gps_week: int = 0  # GPS week number (not modulo 1024). [weeks]
     heading: float = 0.0  # Heading angle from true north, within +-pi. [rad]
     heading_uncertainty: float = 0.0  # Heading 1-sigma uncertainty; must be greater than 0. [rad]
-    type: _t.ExternalHeadingType = _t.ExternalHeadingType.TRUE_HEADING  # True or magnetic heading.
+    type: _ty.Union[_t.ExternalHeadingType, int] = _t.ExternalHeadingType.TRUE_HEADING  # True or magnetic heading.
 
     SET = 0x0D
     DESCRIPTOR = 0x1F
@@ -824,7 +824,7 @@ class ZeroAngularRateUpdateControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable: _ty.Optional[int] = None  # 0 disables, 1 enables the update. (sent for: write)
     # Angular rate magnitude at or below which the update is applied. [rad/s] (sent for: write)
     threshold: _ty.Optional[float] = None
@@ -873,7 +873,8 @@ class TareOrientation(_c.Field):
     bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write, save, load, default)
+    # Function selector (one of: write, save, load, default)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     axes: _ty.Optional[_t.TareAxes] = None  # Axes to tare; 0 resets all axes. (sent for: write)
 
     SET = 0x0D
@@ -932,7 +933,7 @@ class MagCaptureAutoCalibration(_c.Field):
     Functions: write, save. Sources: 3dm-gx5-45-dcp.txt line 1984. Field data: 1 bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write, save)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE  # Function selector (one of: write, save)
 
     SET = 0x0D
     DESCRIPTOR = 0x27
@@ -954,7 +955,7 @@ class GravityNoiseStdDev(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[_ty.List[float]] = None  # Gravity noise 1-sigma (x, y, z). [g] (sent for: write)
 
     SET = 0x0D
@@ -1000,7 +1001,7 @@ class PressureAltitudeNoiseStdDev(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[float] = None  # Pressure altitude noise 1-sigma. [m] (sent for: write)
 
     SET = 0x0D
@@ -1045,7 +1046,7 @@ class HardIronOffsetNoise(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[_ty.List[float]] = None  # Hard iron offset noise 1-sigma (x, y, z). [gauss] (sent for: write)
 
     SET = 0x0D
@@ -1091,7 +1092,7 @@ class SoftIronMatrixNoise(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[_ty.List[float]] = None  # Soft iron matrix noise 1-sigma, row-major m11..m33. (sent for: write)
 
     SET = 0x0D
@@ -1137,7 +1138,7 @@ class MagNoiseStdDev(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     noise: _ty.Optional[_ty.List[float]] = None  # Magnetometer noise 1-sigma (x, y, z). [gauss] (sent for: write)
 
     SET = 0x0D
@@ -1183,8 +1184,8 @@ class DeclinationSource(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    source: _ty.Optional[_t.MagneticParamSource] = None  # Declination source. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    source: _ty.Optional[_ty.Union[_t.MagneticParamSource, int]] = None  # Declination source. (sent for: write)
     # Manual declination angle (used when source is manual). [rad] (sent for: write)
     declination: _ty.Optional[float] = None
 
@@ -1209,7 +1210,7 @@ class DeclinationSourceResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1882; 3dm-cv7-ins-docs.txt line 8475. Field data: 5 bytes.
     """
 
-    source: _t.MagneticParamSource = _t.MagneticParamSource.NONE  # Declination source.
+    source: _ty.Union[_t.MagneticParamSource, int] = _t.MagneticParamSource.NONE  # Declination source.
     declination: float = 0.0  # Declination angle. [rad]
 
     SET = 0x0D
@@ -1235,8 +1236,9 @@ class GravityMagnitudeAdaptiveMeasurement(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    mode: _ty.Optional[_t.AdaptiveMeasurementMode] = None  # Disabled, fixed or auto-adaptive. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Disabled, fixed or auto-adaptive. (sent for: write)
+    mode: _ty.Optional[_ty.Union[_t.AdaptiveMeasurementMode, int]] = None
     frequency: _ty.Optional[float] = None  # Low-pass filter cutoff frequency. [Hz] (sent for: write)
     low_limit: _ty.Optional[float] = None  # Low limit. [m/s^2] (sent for: write)
     high_limit: _ty.Optional[float] = None  # High limit. [m/s^2] (sent for: write)
@@ -1279,7 +1281,8 @@ class GravityMagnitudeAdaptiveMeasurementResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1947. Field data: 25 bytes.
     """
 
-    mode: _t.AdaptiveMeasurementMode = _t.AdaptiveMeasurementMode.DISABLED  # Disabled, fixed or auto-adaptive.
+    # Disabled, fixed or auto-adaptive.
+    mode: _ty.Union[_t.AdaptiveMeasurementMode, int] = _t.AdaptiveMeasurementMode.DISABLED
     frequency: float = 0.0  # Low-pass filter cutoff frequency. [Hz]
     low_limit: float = 0.0  # Low limit. [m/s^2]
     high_limit: float = 0.0  # High limit. [m/s^2]
@@ -1328,8 +1331,9 @@ class MagMagnitudeAdaptiveMeasurement(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    mode: _ty.Optional[_t.AdaptiveMeasurementMode] = None  # Disabled, fixed or auto-adaptive. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Disabled, fixed or auto-adaptive. (sent for: write)
+    mode: _ty.Optional[_ty.Union[_t.AdaptiveMeasurementMode, int]] = None
     frequency: _ty.Optional[float] = None  # Low-pass filter cutoff frequency. [Hz] (sent for: write)
     low_limit: _ty.Optional[float] = None  # Low limit. [gauss] (sent for: write)
     high_limit: _ty.Optional[float] = None  # High limit. [gauss] (sent for: write)
@@ -1373,7 +1377,8 @@ class MagMagnitudeAdaptiveMeasurementResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1962. Field data: 25 bytes.
     """
 
-    mode: _t.AdaptiveMeasurementMode = _t.AdaptiveMeasurementMode.DISABLED  # Disabled, fixed or auto-adaptive.
+    # Disabled, fixed or auto-adaptive.
+    mode: _ty.Union[_t.AdaptiveMeasurementMode, int] = _t.AdaptiveMeasurementMode.DISABLED
     frequency: float = 0.0  # Low-pass filter cutoff frequency. [Hz]
     low_limit: float = 0.0  # Low limit. [gauss]
     high_limit: float = 0.0  # High limit. [gauss]
@@ -1421,8 +1426,9 @@ class MagDipAngleAdaptiveMeasurement(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    mode: _ty.Optional[_t.AdaptiveMeasurementMode] = None  # Disabled (0) or fixed (1). (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Disabled (0) or fixed (1). (sent for: write)
+    mode: _ty.Optional[_ty.Union[_t.AdaptiveMeasurementMode, int]] = None
     frequency: _ty.Optional[float] = None  # Low-pass filter cutoff frequency. [Hz] (sent for: write)
     high_limit: _ty.Optional[float] = None  # High limit of the dip angle error. [rad] (sent for: write)
     high_limit_uncertainty: _ty.Optional[float] = None  # High limit uncertainty, 1-sigma. [rad] (sent for: write)
@@ -1453,7 +1459,7 @@ class MagDipAngleAdaptiveMeasurementResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1975. Field data: 17 bytes.
     """
 
-    mode: _t.AdaptiveMeasurementMode = _t.AdaptiveMeasurementMode.DISABLED  # Disabled (0) or fixed (1).
+    mode: _ty.Union[_t.AdaptiveMeasurementMode, int] = _t.AdaptiveMeasurementMode.DISABLED  # Disabled (0) or fixed (1).
     frequency: float = 0.0  # Low-pass filter cutoff frequency. [Hz]
     high_limit: float = 0.0  # High limit of the dip angle error. [rad]
     high_limit_uncertainty: float = 0.0  # High limit uncertainty, 1-sigma. [rad]
@@ -1488,9 +1494,9 @@ class AltitudeAidingControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Altitude aiding input (0 disabled, 1 pressure). (sent for: write)
-    source: _ty.Optional[_t.AltitudeAidingSource] = None
+    source: _ty.Optional[_ty.Union[_t.AltitudeAidingSource, int]] = None
 
     SET = 0x0D
     DESCRIPTOR = 0x47
@@ -1512,7 +1518,7 @@ class AltitudeAidingControlResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1635. Field data: 1 bytes.
     """
 
-    source: _t.AltitudeAidingSource = _t.AltitudeAidingSource.NONE  # Altitude aiding input.
+    source: _ty.Union[_t.AltitudeAidingSource, int] = _t.AltitudeAidingSource.NONE  # Altitude aiding input.
 
     SET = 0x0D
     DESCRIPTOR = 0xB7
@@ -1534,9 +1540,9 @@ class PitchRollAidingControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Pitch/roll aiding input (0 disabled, 1 gravity vector). (sent for: write)
-    source: _ty.Optional[_t.PitchRollAidingSource] = None
+    source: _ty.Optional[_ty.Union[_t.PitchRollAidingSource, int]] = None
 
     SET = 0x0D
     DESCRIPTOR = 0x4B
@@ -1558,7 +1564,7 @@ class PitchRollAidingControlResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1621. Field data: 1 bytes.
     """
 
-    source: _t.PitchRollAidingSource = _t.PitchRollAidingSource.NONE  # Pitch/roll aiding input.
+    source: _ty.Union[_t.PitchRollAidingSource, int] = _t.PitchRollAidingSource.NONE  # Pitch/roll aiding input.
 
     SET = 0x0D
     DESCRIPTOR = 0xBB
@@ -1580,8 +1586,8 @@ class InclinationSource(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    source: _ty.Optional[_t.MagneticParamSource] = None  # Inclination source. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    source: _ty.Optional[_ty.Union[_t.MagneticParamSource, int]] = None  # Inclination source. (sent for: write)
     # Manual inclination angle (used when source is manual). [rad] (sent for: write)
     inclination: _ty.Optional[float] = None
 
@@ -1606,7 +1612,7 @@ class InclinationSourceResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1900. Field data: 5 bytes.
     """
 
-    source: _t.MagneticParamSource = _t.MagneticParamSource.NONE  # Inclination source.
+    source: _ty.Union[_t.MagneticParamSource, int] = _t.MagneticParamSource.NONE  # Inclination source.
     inclination: float = 0.0  # Inclination angle. [rad]
 
     SET = 0x0D
@@ -1630,8 +1636,8 @@ class MagneticFieldMagnitudeSource(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    source: _ty.Optional[_t.MagneticParamSource] = None  # Magnitude source. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    source: _ty.Optional[_ty.Union[_t.MagneticParamSource, int]] = None  # Magnitude source. (sent for: write)
     # Manual field magnitude (used when source is manual). [gauss] (sent for: write)
     magnitude: _ty.Optional[float] = None
 
@@ -1656,7 +1662,7 @@ class MagneticFieldMagnitudeSourceResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1931. Field data: 5 bytes.
     """
 
-    source: _t.MagneticParamSource = _t.MagneticParamSource.NONE  # Magnitude source.
+    source: _ty.Union[_t.MagneticParamSource, int] = _t.MagneticParamSource.NONE  # Magnitude source.
     magnitude: float = 0.0  # Field magnitude. [gauss]
 
     SET = 0x0D
@@ -1680,8 +1686,9 @@ class AidingMeasurementControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    source: _t.AidingMeasurementSource = _t.AidingMeasurementSource.GNSS_POS_VEL  # Aiding measurement source.
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Aiding measurement source.
+    source: _ty.Union[_t.AidingMeasurementSource, int] = _t.AidingMeasurementSource.GNSS_POS_VEL
     enable: _ty.Optional[bool] = None  # Whether the source is used. (sent for: write)
 
     SET = 0x0D
@@ -1707,7 +1714,8 @@ class AidingMeasurementControlResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 8515. Field data: 3 bytes.
     """
 
-    source: _t.AidingMeasurementSource = _t.AidingMeasurementSource.GNSS_POS_VEL  # Aiding measurement source.
+    # Aiding measurement source.
+    source: _ty.Union[_t.AidingMeasurementSource, int] = _t.AidingMeasurementSource.GNSS_POS_VEL
     enable: bool = False  # Whether the source is used.
 
     SET = 0x0D
@@ -1733,11 +1741,11 @@ class InitializationConfiguration(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Non-zero: initialize the filter only after a Run Navigation Filter (0x0D,0x05) command. (sent for: write)
     wait_for_run_command: _ty.Optional[int] = None
     # Which initial conditions are automatic and which user-specified. (sent for: write)
-    initial_cond_src: _ty.Optional[_t.FilterInitialConditionSource] = None
+    initial_cond_src: _ty.Optional[_ty.Union[_t.FilterInitialConditionSource, int]] = None
     # Allowed automatic heading alignment methods. (sent for: write)
     auto_heading_alignment_selector: _ty.Optional[_t.HeadingAlignmentMethods] = None
     initial_heading: _ty.Optional[float] = None  # User-specified initial heading. [deg] (sent for: write)
@@ -1748,7 +1756,7 @@ class InitializationConfiguration(_c.Field):
     # User-specified initial velocity, in the frame chosen by reference_frame_selector. [m/s] (sent for: write)
     initial_velocity: _ty.Optional[_ty.List[float]] = None
     # Frame of the initial position and velocity. (sent for: write)
-    reference_frame_selector: _ty.Optional[_t.FilterReferenceFrame] = None
+    reference_frame_selector: _ty.Optional[_ty.Union[_t.FilterReferenceFrame, int]] = None
 
     SET = 0x0D
     DESCRIPTOR = 0x52
@@ -1791,7 +1799,7 @@ class InitializationConfigurationResponse(_c.Field):
 
     wait_for_run_command: int = 0  # Non-zero: wait for the run command.
     # Initial condition source.
-    initial_cond_src: _t.FilterInitialConditionSource = _t.FilterInitialConditionSource.AUTO_POS_VEL_ATT
+    initial_cond_src: _ty.Union[_t.FilterInitialConditionSource, int] = _t.FilterInitialConditionSource.AUTO_POS_VEL_ATT
     # Allowed automatic heading alignment methods.
     auto_heading_alignment_selector: _t.HeadingAlignmentMethods = _t.HeadingAlignmentMethods(0)
     initial_heading: float = 0.0  # User-specified initial heading. [deg]
@@ -1802,7 +1810,7 @@ class InitializationConfigurationResponse(_c.Field):
     # User-specified initial velocity. [m/s]
     initial_velocity: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 3)
     # Frame of the initial position and velocity.
-    reference_frame_selector: _t.FilterReferenceFrame = _t.FilterReferenceFrame.ECEF
+    reference_frame_selector: _ty.Union[_t.FilterReferenceFrame, int] = _t.FilterReferenceFrame.ECEF
 
     SET = 0x0D
     DESCRIPTOR = 0xD2
@@ -1846,8 +1854,9 @@ class AdaptiveFilterControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    level: _ty.Optional[_t.AdaptiveFilterLevel] = None  # Auto-adaptive operating level. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Auto-adaptive operating level. (sent for: write)
+    level: _ty.Optional[_ty.Union[_t.AdaptiveFilterLevel, int]] = None
     time_limit: _ty.Optional[int] = None  # Longest measurement rejection before recovery mode. [ms] (sent for: write)
 
     SET = 0x0D
@@ -1871,7 +1880,7 @@ class AdaptiveFilterControlResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 8609. Field data: 3 bytes.
     """
 
-    level: _t.AdaptiveFilterLevel = _t.AdaptiveFilterLevel.OFF  # Auto-adaptive operating level.
+    level: _ty.Union[_t.AdaptiveFilterLevel, int] = _t.AdaptiveFilterLevel.OFF  # Auto-adaptive operating level.
     time_limit: int = 0  # Longest measurement rejection before recovery mode. [ms]
 
     SET = 0x0D
@@ -1894,7 +1903,7 @@ class MultiAntennaOffset(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     receiver_id: int = 0  # Receiver: 1, 2, ...
     # Antenna lever arm in the vehicle frame. [m] (sent for: write)
     antenna_offset: _ty.Optional[_ty.List[float]] = None
@@ -1943,11 +1952,11 @@ class RelativePositionConfiguration(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # 0 automatic (RTK base station), 1 manual. (sent for: write)
-    source: _ty.Optional[_t.RelativePositionSource] = None
+    source: _ty.Optional[_ty.Union[_t.RelativePositionSource, int]] = None
     # Frame of the reference coordinates. (sent for: write)
-    reference_frame_selector: _ty.Optional[_t.FilterReferenceFrame] = None
+    reference_frame_selector: _ty.Optional[_ty.Union[_t.FilterReferenceFrame, int]] = None
     # Reference location (ECEF m, or LLH deg/deg/m). (sent for: write)
     reference_coordinates: _ty.Optional[_ty.List[float]] = None
 
@@ -1973,9 +1982,10 @@ class RelativePositionConfigurationResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 8651. Field data: 26 bytes.
     """
 
-    source: _t.RelativePositionSource = _t.RelativePositionSource.AUTO  # 0 automatic (RTK base station), 1 manual.
+    # 0 automatic (RTK base station), 1 manual.
+    source: _ty.Union[_t.RelativePositionSource, int] = _t.RelativePositionSource.AUTO
     # Frame of the reference coordinates.
-    reference_frame_selector: _t.FilterReferenceFrame = _t.FilterReferenceFrame.ECEF
+    reference_frame_selector: _ty.Union[_t.FilterReferenceFrame, int] = _t.FilterReferenceFrame.ECEF
     # Reference location (ECEF m, or LLH deg/deg/m).
     reference_coordinates: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 3)
 
@@ -2006,9 +2016,9 @@ class ReferencePointLeverArm(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Reference point; reserved, must be 1 (vehicle). (sent for: write)
-    ref_point_sel: _ty.Optional[_t.ReferencePointSelector] = None
+    ref_point_sel: _ty.Optional[_ty.Union[_t.ReferencePointSelector, int]] = None
     lever_arm_offset: _ty.Optional[_ty.List[float]] = None  # Lever arm in the vehicle frame. [m] (sent for: write)
 
     SET = 0x0D
@@ -2032,7 +2042,7 @@ class ReferencePointLeverArmResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 8678. Field data: 13 bytes.
     """
 
-    ref_point_sel: _t.ReferencePointSelector = _t.ReferencePointSelector.VEH  # Reference point.
+    ref_point_sel: _ty.Union[_t.ReferencePointSelector, int] = _t.ReferencePointSelector.VEH  # Reference point.
     # Lever arm in the vehicle frame. [m]
     lever_arm_offset: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 3)
 
@@ -2058,7 +2068,7 @@ class SpeedLeverArm(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     source: int = 0  # Speed source; reserved, must be 1.
     lever_arm_offset: _ty.Optional[_ty.List[float]] = None  # Lever arm in the vehicle frame. [m] (sent for: write)
 
@@ -2107,7 +2117,7 @@ class WheeledVehicleConstraintControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable: _ty.Optional[int] = None  # 0 disables, 1 enables the constraint. (sent for: write)
 
     SET = 0x0D
@@ -2153,7 +2163,7 @@ class GnssAntennaCalibrationControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable: _ty.Optional[int] = None  # 0 disables, 1 enables lever arm error tracking. (sent for: write)
     # Largest absolute lever arm offset error in the vehicle frame. [m] (sent for: write)
     max_offset: _ty.Optional[float] = None

@@ -391,8 +391,9 @@ class FilterStatus_gx5_45(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 2356. Field data: 6 bytes.
     """
 
-    filter_state: _t.FilterStateGx5 = _t.FilterStateGx5.STARTUP  # Filter state.
-    dynamics_mode: _t.FilterDynamicsModeGx5 = _t.FilterDynamicsModeGx5.PORTABLE  # Vehicle dynamics mode.
+    filter_state: _ty.Union[_t.FilterStateGx5, int] = _t.FilterStateGx5.STARTUP  # Filter state.
+    # Vehicle dynamics mode.
+    dynamics_mode: _ty.Union[_t.FilterDynamicsModeGx5, int] = _t.FilterDynamicsModeGx5.PORTABLE
     # Status flags; their meaning depends on the filter state.
     status_flags: _t.FilterStatusFlagsGx5 = _t.FilterStatusFlagsGx5(0)
 
@@ -421,8 +422,8 @@ class FilterStatus_cv7_ins(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 4363. Field data: 6 bytes.
     """
 
-    filter_state: _t.FilterModeCv7 = _t.FilterModeCv7.INIT  # Filter mode reached (Filter States page).
-    dynamics_mode: _t.FilterDynamicsModeCv7 = _t.FilterDynamicsModeCv7.DEFAULT  # Dynamics mode.
+    filter_state: _ty.Union[_t.FilterModeCv7, int] = _t.FilterModeCv7.INIT  # Filter mode reached (Filter States page).
+    dynamics_mode: _ty.Union[_t.FilterDynamicsModeCv7, int] = _t.FilterDynamicsModeCv7.DEFAULT  # Dynamics mode.
     status_flags: _t.FilterStatusFlagsCv7 = _t.FilterStatusFlagsCv7(0)  # Filter condition and warning flags.
 
     SET = 0x82
@@ -1077,7 +1078,7 @@ class AidingMeasurementSummary(_c.Field):
     time_of_week: float = 0.0  # GPS time of week at the end of the measurement interval. [s]
     source: int = 0  # Measurement source (not described by the manual).
     # Which aiding measurement is summarised.
-    type: _t.FilterAidingMeasurementType = _t.FilterAidingMeasurementType.GNSS
+    type: _ty.Union[_t.FilterAidingMeasurementType, int] = _t.FilterAidingMeasurementType.GNSS
     # Measurement state and warnings.
     indicator: _t.FilterAidingMeasurementIndicator = _t.FilterAidingMeasurementIndicator(0)
 
@@ -1153,7 +1154,7 @@ class GnssDualAntennaStatus(_c.Field):
     time_of_week: float = 0.0  # GPS time of week of the last dual-antenna aiding measurement. [s]
     heading: float = 0.0  # Dual-antenna heading. [rad]
     heading_uncertainty: float = 0.0  # 1-sigma heading uncertainty. [rad]
-    fix_type: _t.FilterDualAntennaFixType = _t.FilterDualAntennaFixType.FIX_NONE  # Fix type.
+    fix_type: _ty.Union[_t.FilterDualAntennaFixType, int] = _t.FilterDualAntennaFixType.FIX_NONE  # Fix type.
     # Receiver and antenna-offset validity.
     status_flags: _t.FilterDualAntennaStatusFlags = _t.FilterDualAntennaStatusFlags(0)
     valid_flags: _t.FilterOutputValidFlags = _t.FilterOutputValidFlags(0)  # Field valid.

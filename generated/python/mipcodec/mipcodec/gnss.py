@@ -68,7 +68,7 @@ class SignalConfiguration(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     gps_enable: _ty.Optional[_t.GnssGpsSignals] = None  # GPS signals to use. (sent for: write)
     glonass_enable: _ty.Optional[_t.GnssGlonassSignals] = None  # GLONASS signals to use. (sent for: write)
     galileo_enable: _ty.Optional[_t.GnssGalileoSignals] = None  # Galileo signals to use. (sent for: write)
@@ -136,9 +136,9 @@ class SpartnConfiguration(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable: _ty.Optional[int] = None  # SPARTN subsystem: 0 disabled, 1 enabled. (sent for: write)
-    type: _ty.Optional[_t.SpartnConnectionType] = None  # Connection type. (sent for: write)
+    type: _ty.Optional[_ty.Union[_t.SpartnConnectionType, int]] = None  # Connection type. (sent for: write)
     # GPS time of week until which the current key is valid. [s] (sent for: write)
     current_key_tow: _ty.Optional[int] = None
     # GPS week until which the current key is valid. [weeks] (sent for: write)
@@ -187,7 +187,7 @@ class SpartnConfigurationResponse(_c.Field):
     """
 
     enable: int = 0  # SPARTN subsystem: 0 disabled, 1 enabled.
-    type: _t.SpartnConnectionType = _t.SpartnConnectionType.NONE  # Connection type.
+    type: _ty.Union[_t.SpartnConnectionType, int] = _t.SpartnConnectionType.NONE  # Connection type.
     current_key_tow: int = 0  # GPS time of week until which the current key is valid. [s]
     current_key_week: int = 0  # GPS week until which the current key is valid. [weeks]
     current_key: bytes = b"\x00" * 32  # Current key: 32 ASCII hex characters.

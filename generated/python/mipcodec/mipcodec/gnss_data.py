@@ -283,7 +283,7 @@ class FixInfo(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 2292; 3dm-gx5-45-dcp.txt line 697. Field data: 6 bytes.
     """
 
-    fix_type: _t.GnssFixTypeGx5 = _t.GnssFixTypeGx5.FIX_3D  # Type of fix.
+    fix_type: _ty.Union[_t.GnssFixTypeGx5, int] = _t.GnssFixTypeGx5.FIX_3D  # Type of fix.
     num_sv: int = 0  # Number of satellites used for the solution.
     fix_flags: _t.GnssFixFlags = _t.GnssFixFlags(0)  # Corrections used.
     valid_flags: _t.GnssFixInfoValidFlags = _t.GnssFixInfoValidFlags(0)  # Which values are valid.
@@ -350,9 +350,10 @@ class HardwareStatus(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 2317; 3dm-gx5-45-dcp.txt line 699. Field data: 5 bytes.
     """
 
-    receiver_state: _t.GnssReceiverState = _t.GnssReceiverState.OFF  # Receiver power state (GX5-45: sensor state).
-    antenna_state: _t.GnssAntennaState = _t.GnssAntennaState.INIT  # Antenna connection state.
-    antenna_power: _t.GnssAntennaPower = _t.GnssAntennaPower.OFF  # Antenna power state.
+    # Receiver power state (GX5-45: sensor state).
+    receiver_state: _ty.Union[_t.GnssReceiverState, int] = _t.GnssReceiverState.OFF
+    antenna_state: _ty.Union[_t.GnssAntennaState, int] = _t.GnssAntennaState.INIT  # Antenna connection state.
+    antenna_power: _ty.Union[_t.GnssAntennaPower, int] = _t.GnssAntennaPower.OFF  # Antenna power state.
     valid_flags: _t.GnssHardwareStatusValidFlags = _t.GnssHardwareStatusValidFlags(0)  # Which values are valid.
 
     SET = 0x81
@@ -383,7 +384,7 @@ class DgnssInfo(_c.Field):
     newest_age: float = 0.0  # Age of the newest correction (valid flag: latest age). [s]
     base_station_id: int = 0  # Base station id.
     # Base station status (UDRE scale factor).
-    base_station_status: _t.GnssDgnssBaseStationStatus = _t.GnssDgnssBaseStationStatus.UDRE_SCALE_1_0
+    base_station_status: _ty.Union[_t.GnssDgnssBaseStationStatus, int] = _t.GnssDgnssBaseStationStatus.UDRE_SCALE_1_0
     num_channels: int = 0  # Number of DGNSS channels.
     valid_flags: _t.GnssDgnssInfoValidFlags = _t.GnssDgnssInfoValidFlags(0)  # Which values are valid.
 

@@ -142,7 +142,7 @@ class FixInfo(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 4910; 3dm-cv7-ins-docs.txt line 669. Field data: 6 bytes.
     """
 
-    fix_type: _t.GnssFixTypeCv7 = _t.GnssFixTypeCv7.FIX_3D  # Type of fix.
+    fix_type: _ty.Union[_t.GnssFixTypeCv7, int] = _t.GnssFixTypeCv7.FIX_3D  # Type of fix.
     num_sv: int = 0  # Number of satellites used in the solution.
     fix_flags: _t.GnssFixFlags = _t.GnssFixFlags(0)  # Corrections used.
     valid_flags: _t.GnssFixInfoValidFlags = _t.GnssFixInfoValidFlags(0)  # Which values are valid.
@@ -176,7 +176,7 @@ class SatelliteStatus(_c.Field):
     count: int = 0  # Number of satellite status fields in this epoch.
     tow: float = 0.0  # GPS time of week. [s]
     week_number: int = 0  # GPS week number since 1980. [weeks]
-    gnss_id: _t.GnssConstellationId = _t.GnssConstellationId.UNKNOWN  # Constellation of the satellite.
+    gnss_id: _ty.Union[_t.GnssConstellationId, int] = _t.GnssConstellationId.UNKNOWN  # Constellation of the satellite.
     satellite_id: int = 0  # Satellite number within its constellation.
     elevation: float = 0.0  # Elevation of the satellite seen from the receiver. [deg]
     azimuth: float = 0.0  # Azimuth of the satellite seen from the receiver. [deg]

@@ -258,7 +258,7 @@ class FixInfo(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 5156. Field data: 6 bytes.
     """
 
-    fix_type: _t.GnssFixTypeCv7 = _t.GnssFixTypeCv7.FIX_3D  # Type of fix.
+    fix_type: _ty.Union[_t.GnssFixTypeCv7, int] = _t.GnssFixTypeCv7.FIX_3D  # Type of fix.
     num_sv: int = 0  # Number of satellites used in the solution.
     fix_flags: _t.GnssFixFlags = _t.GnssFixFlags(0)  # Corrections used.
     valid_flags: _t.GnssFixInfoValidFlags = _t.GnssFixInfoValidFlags(0)  # Which values are valid.
@@ -287,9 +287,10 @@ class HardwareStatus(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 5189. Field data: 5 bytes.
     """
 
-    receiver_state: _t.GnssReceiverState = _t.GnssReceiverState.OFF  # Receiver power state (GX5-45: sensor state).
-    antenna_state: _t.GnssAntennaState = _t.GnssAntennaState.INIT  # Antenna connection state.
-    antenna_power: _t.GnssAntennaPower = _t.GnssAntennaPower.OFF  # Antenna power state.
+    # Receiver power state (GX5-45: sensor state).
+    receiver_state: _ty.Union[_t.GnssReceiverState, int] = _t.GnssReceiverState.OFF
+    antenna_state: _ty.Union[_t.GnssAntennaState, int] = _t.GnssAntennaState.INIT  # Antenna connection state.
+    antenna_power: _ty.Union[_t.GnssAntennaPower, int] = _t.GnssAntennaPower.OFF  # Antenna power state.
     valid_flags: _t.GnssHardwareStatusValidFlags = _t.GnssHardwareStatusValidFlags(0)  # Which values are valid.
 
     SET = 0x91
@@ -370,7 +371,7 @@ class SbasInfo(_c.Field):
 
     tow: float = 0.0  # GPS time of week. [s]
     week_number: int = 0  # GPS week number (since 1980). [weeks]
-    sbas_system: _t.GnssSbasSystem = _t.GnssSbasSystem.UNKNOWN  # SBAS system.
+    sbas_system: _ty.Union[_t.GnssSbasSystem, int] = _t.GnssSbasSystem.UNKNOWN  # SBAS system.
     sbas_id: int = 0  # SBAS satellite id.
     count: int = 0  # Number of SBAS corrections.
     sbas_status: _t.GnssSbasStatus = _t.GnssSbasStatus(0)  # Status of the SBAS service.
@@ -407,7 +408,7 @@ class SatelliteStatus(_c.Field):
     count: int = 0  # Number of satellite status fields in this epoch.
     tow: float = 0.0  # GPS time of week. [s]
     week_number: int = 0  # GPS week number since 1980. [weeks]
-    gnss_id: _t.GnssConstellationId = _t.GnssConstellationId.UNKNOWN  # Constellation of the satellite.
+    gnss_id: _ty.Union[_t.GnssConstellationId, int] = _t.GnssConstellationId.UNKNOWN  # Constellation of the satellite.
     satellite_id: int = 0  # Satellite number within its constellation.
     elevation: float = 0.0  # Elevation of the satellite seen from the receiver. [deg]
     azimuth: float = 0.0  # Azimuth of the satellite seen from the receiver. [deg]
@@ -462,11 +463,11 @@ class Raw(_c.Field):
     # Receiver number (1, 2, ...), or the reference station id when the measurement comes from RTCM.
     receiver_id: int = 0
     tracking_channel: int = 0  # Receiver channel tracking this satellite.
-    gnss_id: _t.GnssConstellationId = _t.GnssConstellationId.UNKNOWN  # Constellation of the satellite.
+    gnss_id: _ty.Union[_t.GnssConstellationId, int] = _t.GnssConstellationId.UNKNOWN  # Constellation of the satellite.
     satellite_id: int = 0  # Satellite number within its constellation.
-    signal_id: _t.GnssSignalId = _t.GnssSignalId.UNKNOWN  # Signal the observation is made on.
+    signal_id: _ty.Union[_t.GnssSignalId, int] = _t.GnssSignalId.UNKNOWN  # Signal the observation is made on.
     signal_strength: float = 0.0  # Carrier-to-noise density ratio. [dB-Hz]
-    quality: _t.GnssSignalQuality = _t.GnssSignalQuality.NONE  # Tracking state of the signal.
+    quality: _ty.Union[_t.GnssSignalQuality, int] = _t.GnssSignalQuality.NONE  # Tracking state of the signal.
     pseudorange: float = 0.0  # Pseudorange. [m]
     carrier_phase: float = 0.0  # Carrier phase, in carrier periods. [cycles]
     doppler: float = 0.0  # Doppler shift. [Hz]
@@ -670,7 +671,7 @@ class GlonassEphemeris(_c.Field):
     freq_number: int = 0  # GLONASS frequency channel number (-7 to 24).
     tk: int = 0  # Start time of the frame within the current day. [s]
     tb: int = 0  # Reference time of the ephemeris. [s]
-    sat_type: _t.GnssGlonassSatelliteType = _t.GnssGlonassSatelliteType.GLONASS  # Satellite type.
+    sat_type: _ty.Union[_t.GnssGlonassSatelliteType, int] = _t.GnssGlonassSatelliteType.GLONASS  # Satellite type.
     gamma: float = 0.0  # Relative deviation of the carrier frequency from nominal (dimensionless).
     tau_n: float = 0.0  # Satellite time correction relative to GLONASS time. [s]
     x: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 3)  # Satellite position in the PZ-90 frame. [m]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses as _dc
+import typing as _ty
 
 from . import codec as _c
 from . import types as _t
@@ -19,7 +20,7 @@ class AckNack(_c.Field):
     """
 
     command_descriptor: int = 0  # Descriptor of the command being answered.
-    ack_code: _t.AckCode = _t.AckCode.OK  # 0 is an ACK; any other value is a NACK.
+    ack_code: _ty.Union[_t.AckCode, int] = _t.AckCode.OK  # 0 is an ACK; any other value is a NACK.
 
     SET = None
     DESCRIPTOR = 0xF1

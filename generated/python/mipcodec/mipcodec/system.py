@@ -27,9 +27,9 @@ class CommunicationMode(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # New communication mode (ignored for functions other than write). (sent for: write)
-    mode: _ty.Optional[_t.SystemCommMode] = None
+    mode: _ty.Optional[_ty.Union[_t.SystemCommMode, int]] = None
 
     SET = 0x7F
     DESCRIPTOR = 0x10
@@ -51,7 +51,7 @@ class CommunicationModeResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 2014. Field data: 1 bytes.
     """
 
-    mode: _t.SystemCommMode = _t.SystemCommMode.STANDARD  # Current communication mode.
+    mode: _ty.Union[_t.SystemCommMode, int] = _t.SystemCommMode.STANDARD  # Current communication mode.
 
     SET = 0x7F
     DESCRIPTOR = 0x90

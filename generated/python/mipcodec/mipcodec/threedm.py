@@ -23,9 +23,9 @@ class EventControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     instance: int = 0  # Trigger instance; 0 applies to all configured triggers (not for read).
-    mode: _ty.Optional[_t.EventControlMode] = None  # How to change the trigger state. (sent for: write)
+    mode: _ty.Optional[_ty.Union[_t.EventControlMode, int]] = None  # How to change the trigger state. (sent for: write)
 
     SET = 0x0C
     DESCRIPTOR = 0x2B
@@ -48,7 +48,7 @@ class EventControlResponse(_c.Field):
     """
 
     instance: int = 0  # Trigger instance.
-    mode: _t.EventControlMode = _t.EventControlMode.DISABLED  # Trigger mode.
+    mode: _ty.Union[_t.EventControlMode, int] = _t.EventControlMode.DISABLED  # Trigger mode.
 
     SET = 0x0C
     DESCRIPTOR = 0xB5
@@ -166,9 +166,9 @@ class EventTriggerConfig(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     instance: int = 0  # Trigger number; 0 applies to all instances for save, load and default.
-    type: _ty.Optional[_t.TriggerType] = None  # Type of trigger. (sent for: write)
+    type: _ty.Optional[_ty.Union[_t.TriggerType, int]] = None  # Type of trigger. (sent for: write)
     # Parameters of the trigger type. (sent for: write)
     parameters: _ty.Optional[_ty.Union[_t.TriggerGpioParams, _t.ThresholdParams, _t.CombinationParams]] = None
 
@@ -194,7 +194,7 @@ class EventTriggerConfigResponse(_c.Field):
     """
 
     instance: int = 0  # Trigger number.
-    type: _t.TriggerType = _t.TriggerType.NONE  # Type of trigger.
+    type: _ty.Union[_t.TriggerType, int] = _t.TriggerType.NONE  # Type of trigger.
     # Parameters of the trigger type.
     parameters: _ty.Optional[_ty.Union[_t.TriggerGpioParams, _t.ThresholdParams, _t.CombinationParams]] = None
 
@@ -220,10 +220,10 @@ class EventActionConfig(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     instance: int = 0  # Action number; 0 applies to all instances for save, load and default.
     trigger: _ty.Optional[int] = None  # Trigger ID number. (sent for: write)
-    type: _ty.Optional[_t.ActionType] = None  # Type of action. (sent for: write)
+    type: _ty.Optional[_ty.Union[_t.ActionType, int]] = None  # Type of action. (sent for: write)
     # Parameters of the action type. (sent for: write)
     parameters: _ty.Optional[_ty.Union[_t.ActionGpioParams, _t.MessageParams]] = None
 
@@ -251,7 +251,7 @@ class EventActionConfigResponse(_c.Field):
 
     instance: int = 0  # Action number.
     trigger: int = 0  # Trigger ID number.
-    type: _t.ActionType = _t.ActionType.NONE  # Type of action.
+    type: _ty.Union[_t.ActionType, int] = _t.ActionType.NONE  # Type of action.
     parameters: _ty.Optional[_ty.Union[_t.ActionGpioParams, _t.MessageParams]] = None  # Parameters of the action type.
 
     SET = 0x0C
@@ -277,7 +277,8 @@ class DeviceStartupSettings_gx5_45(_c.Field):
     bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.READ  # Function selector (one of: read, save, load, default)
+    # Function selector (one of: read, save, load, default)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.READ
 
     SET = 0x0C
     DESCRIPTOR = 0x30
@@ -299,7 +300,8 @@ class DeviceStartupSettings_cv7_ins(_c.Field):
     Functions: save, load, default. Sources: 3dm-cv7-ins-docs.txt line 7255. Field data: 1 bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.SAVE  # Function selector (one of: save, load, default)
+    # Function selector (one of: save, load, default)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.SAVE
 
     SET = 0x0C
     DESCRIPTOR = 0x30
@@ -325,7 +327,7 @@ class SensorToVehicleEuler(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     roll: _ty.Optional[float] = None  # Roll angle. [rad] (sent for: write)
     pitch: _ty.Optional[float] = None  # Pitch angle. [rad] (sent for: write)
     yaw: _ty.Optional[float] = None  # Yaw angle. [rad] (sent for: write)
@@ -377,7 +379,7 @@ class SensorToVehicleQuaternion(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     q: _ty.Optional[_ty.List[float]] = None  # Unit quaternion of the transformation, [w, i, j, k]. (sent for: write)
 
     SET = 0x0C
@@ -426,7 +428,7 @@ class SensorToVehicleDcm(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     dcm: _ty.Optional[_ty.List[float]] = None  # Direction cosine matrix, row-major. (sent for: write)
 
     SET = 0x0C
@@ -471,7 +473,7 @@ class AccelBias_gx5_45(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default, write_no_ack)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     bias: _ty.Optional[_ty.List[float]] = None  # X, Y, Z accelerometer bias. [g] (sent for: write, write_no_ack)
 
     SET = 0x0C
@@ -498,7 +500,7 @@ class AccelBias_cv7_ins(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     bias: _ty.Optional[_ty.List[float]] = None  # X, Y, Z accelerometer bias in the sensor frame. [g] (sent for: write)
 
     SET = 0x0C
@@ -544,7 +546,7 @@ class GyroBias_gx5_45(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default, write_no_ack)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     bias: _ty.Optional[_ty.List[float]] = None  # X, Y, Z gyro bias. [rad/s] (sent for: write, write_no_ack)
 
     SET = 0x0C
@@ -570,7 +572,7 @@ class GyroBias_cv7_ins(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     bias: _ty.Optional[_ty.List[float]] = None  # X, Y, Z gyro bias in the sensor frame. [rad/s] (sent for: write)
 
     SET = 0x0C
@@ -642,7 +644,7 @@ class MagHardIronOffset_gx5_45(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default, write_no_ack)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     offset: _ty.Optional[_ty.List[float]] = None  # X, Y, Z hard iron offset. [gauss] (sent for: write, write_no_ack)
 
     SET = 0x0C
@@ -670,7 +672,7 @@ class MagHardIronOffset_cv7_ins(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # X, Y, Z hard iron offset in the sensor frame. [gauss] (sent for: write)
     offset: _ty.Optional[_ty.List[float]] = None
 
@@ -718,7 +720,7 @@ class MagSoftIronMatrix_gx5_45(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default, write_no_ack)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Soft iron matrix m11..m33, row-major (dimensionless). (sent for: write, write_no_ack)
     matrix: _ty.Optional[_ty.List[float]] = None
 
@@ -746,7 +748,7 @@ class MagSoftIronMatrix_cv7_ins(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     matrix: _ty.Optional[_ty.List[float]] = None  # Soft iron matrix, row-major (dimensionless). (sent for: write)
 
     SET = 0x0C
@@ -792,7 +794,7 @@ class ConingScullingEnable(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # True enables coning and sculling compensation (0x01), false disables it (0x00). (sent for: write)
     enable: _ty.Optional[bool] = None
 
@@ -839,7 +841,7 @@ class UartBaudrate(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     baud: _ty.Optional[int] = None  # New baud rate; must be a rate the device supports. [bit/s] (sent for: write)
 
     SET = 0x0C
@@ -886,9 +888,9 @@ class GpioConfig(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     pin: int = 0  # GPIO pin number from 1; 0 selects all pins for save, load and default.
-    feature: _ty.Optional[_t.GpioFeature] = None  # What the pin is used for. (sent for: write)
+    feature: _ty.Optional[_ty.Union[_t.GpioFeature, int]] = None  # What the pin is used for. (sent for: write)
     # Role of the pin within the feature (meaning depends on feature). (sent for: write)
     behavior: _ty.Optional[
         _ty.Union[
@@ -925,7 +927,7 @@ class GpioConfigResponse(_c.Field):
     """
 
     pin: int = 0  # GPIO pin number from 1.
-    feature: _t.GpioFeature = _t.GpioFeature.UNUSED  # What the pin is used for.
+    feature: _ty.Union[_t.GpioFeature, int] = _t.GpioFeature.UNUSED  # What the pin is used for.
     # Role of the pin within the feature.
     behavior: _ty.Optional[
         _ty.Union[
@@ -963,7 +965,7 @@ class GpioState(_c.Field):
     7517. Field data: 2..3 bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write, read)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE  # Function selector (one of: write, read)
     pin: int = 0  # GPIO pin number from 1 (not 0).
     state: _ty.Optional[bool] = None  # Pin state (true = high). (sent for: write)
 
@@ -1010,8 +1012,8 @@ class OdometerConfig(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    mode: _ty.Optional[_t.OdometerMode] = None  # Odometer mode. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    mode: _ty.Optional[_ty.Union[_t.OdometerMode, int]] = None  # Odometer mode. (sent for: write)
     # Encoder pulses per metre (N / (2 pi R), N pulses per revolution, R wheel radius); negative if the encoder turns
     # backwards. [pulses/m] (sent for: write)
     scaling: _ty.Optional[float] = None
@@ -1040,7 +1042,7 @@ class OdometerConfigResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 7551. Field data: 9 bytes.
     """
 
-    mode: _t.OdometerMode = _t.OdometerMode.DISABLED  # Odometer mode.
+    mode: _ty.Union[_t.OdometerMode, int] = _t.OdometerMode.DISABLED  # Odometer mode.
     scaling: float = 0.0  # Encoder pulses per metre. [pulses/m]
     uncertainty: float = 0.0  # 1-sigma uncertainty of the scale. [m/m]
 
@@ -1065,7 +1067,7 @@ class AdvancedLowpassFilter(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Field descriptor in the sensor set (0x80) of the filtered quantity; 0 = all (CV7, not for read).
     target_descriptor: int = 0
     enable: _ty.Optional[bool] = None  # Apply the low-pass filter. (sent for: write)
@@ -1134,7 +1136,7 @@ class ComplementaryFilter(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     pitch_roll_enable: _ty.Optional[bool] = None  # Enable pitch/roll (up) correction. (sent for: write)
     # Enable heading (north) correction; needs a magnetometer. (sent for: write)
     heading_enable: _ty.Optional[bool] = None
@@ -1197,8 +1199,9 @@ class SensorRange(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    sensor: _t.SensorRangeType = _t.SensorRangeType.ALL  # Sensor to configure; all only for save, load and default.
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    # Sensor to configure; all only for save, load and default.
+    sensor: _ty.Union[_t.SensorRangeType, int] = _t.SensorRangeType.ALL
     setting: _ty.Optional[int] = None  # Range setting value (from 0x0C,0x53). (sent for: write)
 
     SET = 0x0C
@@ -1221,7 +1224,7 @@ class SensorRangeResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 7635. Field data: 2 bytes.
     """
 
-    sensor: _t.SensorRangeType = _t.SensorRangeType.ALL  # Sensor.
+    sensor: _ty.Union[_t.SensorRangeType, int] = _t.SensorRangeType.ALL  # Sensor.
     setting: int = 0  # Range setting value.
 
     SET = 0x0C
@@ -1242,7 +1245,7 @@ class GetCalibratedSensorRanges(_c.Field):
     bytes.
     """
 
-    sensor: _t.SensorRangeType = _t.SensorRangeType.ALL  # Sensor to query (not all).
+    sensor: _ty.Union[_t.SensorRangeType, int] = _t.SensorRangeType.ALL  # Sensor to query (not all).
 
     SET = 0x0C
     DESCRIPTOR = 0x53
@@ -1261,7 +1264,7 @@ class CalibratedSensorRanges(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 7665. Field data: 2..252 bytes.
     """
 
-    sensor: _t.SensorRangeType = _t.SensorRangeType.ALL  # Sensor from the command.
+    sensor: _ty.Union[_t.SensorRangeType, int] = _t.SensorRangeType.ALL  # Sensor from the command.
     num_ranges: int = 0  # Number of supported ranges.
     # Supported (setting, range) pairs. (count: num_ranges)
     ranges: _ty.List[_t.SensorRangeEntry] = _dc.field(default_factory=list)
@@ -1292,7 +1295,7 @@ class LowpassFilter(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     desc_set: int = 0  # Descriptor set of the filtered quantity (0 = all, not for read).
     field_desc: int = 0  # Field descriptor of the filtered quantity (0 = all in the set, not for read).
     enable: _ty.Optional[bool] = None  # Enable the filter. (sent for: write)
@@ -1355,7 +1358,7 @@ class PollImuData(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 900. Field data: 2..251 bytes.
     """
 
-    option: _t.Gx5PollOption = _t.Gx5PollOption.NORMAL  # Whether to send the ACK/NACK.
+    option: _ty.Union[_t.Gx5PollOption, int] = _t.Gx5PollOption.NORMAL  # Whether to send the ACK/NACK.
     num_descriptors: int = 0  # Number of descriptors; 0 uses the stored message format.
     # Descriptors to poll, in output order. (count: num_descriptors)
     descriptors: _ty.List[_t.Gx5PollDescriptor] = _dc.field(default_factory=list)
@@ -1380,7 +1383,7 @@ class PollGnssData(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 915. Field data: 2..251 bytes.
     """
 
-    option: _t.Gx5PollOption = _t.Gx5PollOption.NORMAL  # Whether to send the ACK/NACK.
+    option: _ty.Union[_t.Gx5PollOption, int] = _t.Gx5PollOption.NORMAL  # Whether to send the ACK/NACK.
     num_descriptors: int = 0  # Number of descriptors; 0 uses the stored message format.
     # Descriptors to poll, in output order. (count: num_descriptors)
     descriptors: _ty.List[_t.Gx5PollDescriptor] = _dc.field(default_factory=list)
@@ -1405,7 +1408,7 @@ class PollFilterData(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 930. Field data: 2..251 bytes.
     """
 
-    option: _t.Gx5PollOption = _t.Gx5PollOption.NORMAL  # Whether to send the ACK/NACK.
+    option: _ty.Union[_t.Gx5PollOption, int] = _t.Gx5PollOption.NORMAL  # Whether to send the ACK/NACK.
     num_descriptors: int = 0  # Number of descriptors; 0 uses the stored message format.
     # Descriptors to poll, in output order. (count: num_descriptors)
     descriptors: _ty.List[_t.Gx5PollDescriptor] = _dc.field(default_factory=list)
@@ -1632,7 +1635,7 @@ class ImuMessageFormat(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Number of descriptors (0 for every function except write, which may also leave it out). (sent for: write, read,
     # save, load, default)
     num_descriptors: _ty.Optional[int] = None
@@ -1687,7 +1690,7 @@ class GnssMessageFormat(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Number of descriptors (0 for every function except write, which may also leave it out). (sent for: write, read,
     # save, load, default)
     num_descriptors: _ty.Optional[int] = None
@@ -1742,7 +1745,7 @@ class FilterMessageFormat(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Number of descriptors (0 for every function except write, which may also leave it out). (sent for: write, read,
     # save, load, default)
     num_descriptors: _ty.Optional[int] = None
@@ -1798,7 +1801,7 @@ class NmeaMessageFormat(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     count: _ty.Optional[int] = None  # Number of format entries. (sent for: write)
     # Sentences, talkers, sources and decimations. (sent for: write) (count: count)
     format_entries: _ty.Optional[_ty.List[_t.NmeaMessage]] = None
@@ -1851,7 +1854,7 @@ class MessageFormat(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     desc_set: int = 0  # Data descriptor set; 0 means all sets for save, load and default.
     num_descriptors: _ty.Optional[int] = None  # Number of descriptors. (sent for: write)
     # Descriptors and decimations. (sent for: write) (count: num_descriptors)
@@ -1904,7 +1907,7 @@ class FactoryStreaming(_c.Field):
     """
 
     # How to combine the support descriptors with the current formats.
-    action: _t.FactoryStreamingAction = _t.FactoryStreamingAction.OVERWRITE
+    action: _ty.Union[_t.FactoryStreamingAction, int] = _t.FactoryStreamingAction.OVERWRITE
     reserved: int = 0  # Reserved; set to 0x00.
 
     SET = 0x0C
@@ -1927,8 +1930,8 @@ class DataStreamControl_gx5_45(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    device_selector: _t.Gx5StreamSelector = _t.Gx5StreamSelector.IMU  # Stream to control.
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    device_selector: _ty.Union[_t.Gx5StreamSelector, int] = _t.Gx5StreamSelector.IMU  # Stream to control.
     # 0x00 disable, 0x01 enable (default); ignored except for write, and may be left out by the other functions. (sent
     # for: write, read, save, load, default)
     enable: _ty.Optional[int] = None
@@ -1960,7 +1963,7 @@ class DataStreamControl_cv7_ins(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     desc_set: int = 0  # Data descriptor set of the stream; 0 means all streams for save, load and default.
     enable: _ty.Optional[bool] = None  # Enable (true) or disable (false) the stream. (sent for: write)
 
@@ -1985,7 +1988,7 @@ class DataStreamControlResponse_gx5_45(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1053. Field data: 2 bytes.
     """
 
-    device_selector: _t.Gx5StreamSelector = _t.Gx5StreamSelector.IMU  # Stream.
+    device_selector: _ty.Union[_t.Gx5StreamSelector, int] = _t.Gx5StreamSelector.IMU  # Stream.
     enabled: int = 0  # Current enable flag: 0x00 disabled, 0x01 enabled.
 
     SET = 0x0C
@@ -2052,7 +2055,7 @@ class GnssConstellationSettings(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Maximum tracking channels to use in total (0 up to the available channels). (sent for: write, read, save, load,
     # default)
     max_channels: _ty.Optional[int] = None
@@ -2112,7 +2115,7 @@ class GnssSbasSettings(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     enable_sbas: _ty.Optional[int] = None  # 0 SBAS disabled, 1 SBAS enabled (default). (sent for: write)
     sbas_options: _ty.Optional[_t.SbasOptions] = None  # SBAS options. (sent for: write)
     num_included_prns: _ty.Optional[int] = None  # Number of SBAS PRNs listed; 0 includes all. (sent for: write)
@@ -2172,9 +2175,9 @@ class GnssAssistedFixControl(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
     # Assisted fix on or off. (sent for: write, read, save, load, default)
-    option: _ty.Optional[_t.AssistedFixOption] = None
+    option: _ty.Optional[_ty.Union[_t.AssistedFixOption, int]] = None
     flags: _ty.Optional[int] = None  # No flags defined; set to 0xFF. (sent for: write, read, save, load, default)
 
     SET = 0x0C
@@ -2198,7 +2201,7 @@ class GnssAssistedFixControlResponse(_c.Field):
     Sources: 3dm-gx5-45-dcp.txt line 1165. Field data: 2 bytes.
     """
 
-    option: _t.AssistedFixOption = _t.AssistedFixOption.NONE  # Assisted fix on or off.
+    option: _ty.Union[_t.AssistedFixOption, int] = _t.AssistedFixOption.NONE  # Assisted fix on or off.
     flags: int = 0  # Assisted fix flags.
 
     SET = 0x0C
@@ -2220,7 +2223,7 @@ class GnssAssistTimeUpdate(_c.Field):
     3dm-gx5-45-dcp.txt line 1176. Field data: 1..15 bytes.
     """
 
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE  # Function selector (one of: write, read)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE  # Function selector (one of: write, read)
     tow: _ty.Optional[float] = None  # GPS time of week. [s] (sent for: write, read)
     week_number: _ty.Optional[int] = None  # GPS week number. (sent for: write, read)
     accuracy: _ty.Optional[float] = None  # Accuracy of the given time. [s] (sent for: write, read)
@@ -2270,8 +2273,8 @@ class PpsSource(_c.Field):
     """
 
     # Function selector (one of: write, read, save, load, default)
-    function: _t.FunctionSelector = _t.FunctionSelector.WRITE
-    source: _ty.Optional[_t.PpsSource] = None  # PPS source. (sent for: write)
+    function: _ty.Union[_t.FunctionSelector, int] = _t.FunctionSelector.WRITE
+    source: _ty.Optional[_ty.Union[_t.PpsSource, int]] = None  # PPS source. (sent for: write)
 
     SET = 0x0C
     DESCRIPTOR = 0x28
@@ -2293,7 +2296,7 @@ class PpsSourceResponse(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 6966. Field data: 1 bytes.
     """
 
-    source: _t.PpsSource = _t.PpsSource.DISABLED  # PPS source.
+    source: _ty.Union[_t.PpsSource, int] = _t.PpsSource.DISABLED  # PPS source.
 
     SET = 0x0C
     DESCRIPTOR = 0xA8
@@ -2312,7 +2315,8 @@ class GetSupportedEvents(_c.Field):
     Responses: 0xB4 supported_events. Sources: 3dm-cv7-ins-docs.txt line 6980. Field data: 1 bytes.
     """
 
-    query: _t.SupportedEventsQuery = _t.SupportedEventsQuery.TRIGGER_TYPES  # Trigger types or action types.
+    # Trigger types or action types.
+    query: _ty.Union[_t.SupportedEventsQuery, int] = _t.SupportedEventsQuery.TRIGGER_TYPES
 
     SET = 0x0C
     DESCRIPTOR = 0x2A
@@ -2331,7 +2335,7 @@ class SupportedEvents(_c.Field):
     Sources: 3dm-cv7-ins-docs.txt line 6992. Field data: 3..253 bytes.
     """
 
-    query: _t.SupportedEventsQuery = _t.SupportedEventsQuery.TRIGGER_TYPES  # Echo of the query.
+    query: _ty.Union[_t.SupportedEventsQuery, int] = _t.SupportedEventsQuery.TRIGGER_TYPES  # Echo of the query.
     info: _ty.Optional[_ty.Union[_t.SupportedTriggers, _t.SupportedActions]] = None  # Slots and supported types.
 
     SET = 0x0C
@@ -2357,7 +2361,8 @@ class DeviceStatus(_c.Field):
     """
 
     model_number: int = 0  # Device model number; 6251 (0x186B) for the 3DM-GX5-45.
-    status_selector: _t.DeviceStatusSelector = _t.DeviceStatusSelector.BASIC  # Which status structure to return.
+    # Which status structure to return.
+    status_selector: _ty.Union[_t.DeviceStatusSelector, int] = _t.DeviceStatusSelector.BASIC
 
     SET = 0x0C
     DESCRIPTOR = 0x64
@@ -2378,7 +2383,8 @@ class DeviceStatusResponse(_c.Field):
     """
 
     model_number: int = 0  # Echo of the model number.
-    status_selector: _t.DeviceStatusSelector = _t.DeviceStatusSelector.BASIC  # Echo of the status selector.
+    # Echo of the status selector.
+    status_selector: _ty.Union[_t.DeviceStatusSelector, int] = _t.DeviceStatusSelector.BASIC
     status: _ty.Optional[_ty.Union[_t.Gx5BasicStatus, _t.Gx5DiagnosticStatus]] = None  # The selected status structure.
 
     SET = 0x0C

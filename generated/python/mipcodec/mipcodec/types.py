@@ -2710,7 +2710,7 @@ class ActionGpioParams(_c.Struct):
     """ActionGpioParams (struct, 2 bytes)."""
 
     pin: int = 0  # GPIO pin number.
-    mode: ActionGpioMode = ActionGpioMode.DISABLED  # Behavior of the pin.
+    mode: _ty.Union[ActionGpioMode, int] = ActionGpioMode.DISABLED  # Behavior of the pin.
 
     _ATTRS = ("pin", "mode")
     _OPS = (_c.Run(_c.P("pin", _c.U8), _c.P("mode", _c.enum(ActionGpioMode, "u8"))),)
@@ -2752,7 +2752,7 @@ class ActionParams(_c.Union):
 class ActionStatusEntry(_c.Struct):
     """ActionStatusEntry (struct, 2 bytes)."""
 
-    action_type: ActionType = ActionType.NONE  # Configured action type.
+    action_type: _ty.Union[ActionType, int] = ActionType.NONE  # Configured action type.
     trigger_id: int = 0  # Associated trigger instance.
 
     _ATTRS = ("action_type", "trigger_id")
@@ -2807,7 +2807,7 @@ class AidingTime(_c.Struct):
     Timestamp carried first in every aiding measurement command.
     """
 
-    timebase: AidingTimebase = AidingTimebase.INTERNAL_REFERENCE  # Clock of the timestamp.
+    timebase: _ty.Union[AidingTimebase, int] = AidingTimebase.INTERNAL_REFERENCE  # Clock of the timestamp.
     reserved: int = 0  # Reserved.
     nanoseconds: int = 0  # Time of the measurement in nanoseconds, in the timebase's clock. [ns]
 
@@ -2835,7 +2835,7 @@ class CombinationParams(_c.Struct):
 class ConstellationSettings(_c.Struct):
     """GNSS constellation configuration entry (struct, 6 bytes)."""
 
-    constellation_id: Gx5ConstellationId = Gx5ConstellationId.GPS  # Constellation.
+    constellation_id: _ty.Union[Gx5ConstellationId, int] = Gx5ConstellationId.GPS  # Constellation.
     enable: int = 0  # 0x00 disable, 0x01 enable.
     # Tracking channels reserved for this constellation (0-32; all constellations together at most 32).
     reserved_channels: int = 0
@@ -2988,7 +2988,7 @@ class GnssReceiverInfoEntry(_c.Struct):
 class GpioBehaviorUnused(_c.Struct):
     """GpioBehaviorUnused (struct, 1 bytes)."""
 
-    behavior: GpioUnusedBehavior = GpioUnusedBehavior.UNUSED  # Behavior value (0).
+    behavior: _ty.Union[GpioUnusedBehavior, int] = GpioUnusedBehavior.UNUSED  # Behavior value (0).
 
     _ATTRS = ("behavior",)
     _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioUnusedBehavior, "u8"))),)
@@ -2999,7 +2999,7 @@ class GpioBehaviorUnused(_c.Struct):
 class GpioBehaviorIo(_c.Struct):
     """GpioBehaviorIo (struct, 1 bytes)."""
 
-    behavior: GpioIoBehavior = GpioIoBehavior.UNUSED  # Input, or output with its initial state.
+    behavior: _ty.Union[GpioIoBehavior, int] = GpioIoBehavior.UNUSED  # Input, or output with its initial state.
 
     _ATTRS = ("behavior",)
     _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioIoBehavior, "u8"))),)
@@ -3010,7 +3010,7 @@ class GpioBehaviorIo(_c.Struct):
 class GpioBehaviorPps(_c.Struct):
     """GpioBehaviorPps (struct, 1 bytes)."""
 
-    behavior: GpioPpsBehavior = GpioPpsBehavior.UNUSED  # PPS input or output.
+    behavior: _ty.Union[GpioPpsBehavior, int] = GpioPpsBehavior.UNUSED  # PPS input or output.
 
     _ATTRS = ("behavior",)
     _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioPpsBehavior, "u8"))),)
@@ -3021,7 +3021,7 @@ class GpioBehaviorPps(_c.Struct):
 class GpioBehaviorEncoder(_c.Struct):
     """GpioBehaviorEncoder (struct, 1 bytes)."""
 
-    behavior: GpioEncoderBehavior = GpioEncoderBehavior.UNUSED  # Quadrature channel A or B.
+    behavior: _ty.Union[GpioEncoderBehavior, int] = GpioEncoderBehavior.UNUSED  # Quadrature channel A or B.
 
     _ATTRS = ("behavior",)
     _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioEncoderBehavior, "u8"))),)
@@ -3032,7 +3032,7 @@ class GpioBehaviorEncoder(_c.Struct):
 class GpioBehaviorTimestamp(_c.Struct):
     """GpioBehaviorTimestamp (struct, 1 bytes)."""
 
-    behavior: GpioTimestampBehavior = GpioTimestampBehavior.UNUSED  # Which edges are timestamped.
+    behavior: _ty.Union[GpioTimestampBehavior, int] = GpioTimestampBehavior.UNUSED  # Which edges are timestamped.
 
     _ATTRS = ("behavior",)
     _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioTimestampBehavior, "u8"))),)
@@ -3043,7 +3043,7 @@ class GpioBehaviorTimestamp(_c.Struct):
 class GpioBehaviorUart(_c.Struct):
     """GpioBehaviorUart (struct, 1 bytes)."""
 
-    behavior: GpioUartBehavior = GpioUartBehavior.UNUSED  # UART port and direction.
+    behavior: _ty.Union[GpioUartBehavior, int] = GpioUartBehavior.UNUSED  # UART port and direction.
 
     _ATTRS = ("behavior",)
     _OPS = (_c.Run(_c.P("behavior", _c.enum(GpioUartBehavior, "u8"))),)
@@ -3232,7 +3232,7 @@ class SensorRangeEntry(_c.Struct):
 class SupportedActionType(_c.Struct):
     """Supported action type (struct, 2 bytes)."""
 
-    type: ActionType = ActionType.NONE  # Action type, as in Event Action Configuration (0x0C,0x2F).
+    type: _ty.Union[ActionType, int] = ActionType.NONE  # Action type, as in Event Action Configuration (0x0C,0x2F).
     count: int = 0  # Maximum number of instances of this type.
 
     _ATTRS = ("type", "count")
@@ -3260,7 +3260,7 @@ class SupportedActions(_c.Struct):
 class SupportedTriggerType(_c.Struct):
     """Supported trigger type (struct, 2 bytes)."""
 
-    type: TriggerType = TriggerType.NONE  # Trigger type, as in Event Trigger Configuration (0x0C,0x2E).
+    type: _ty.Union[TriggerType, int] = TriggerType.NONE  # Trigger type, as in Event Trigger Configuration (0x0C,0x2E).
     count: int = 0  # Maximum number of instances of this type.
 
     _ATTRS = ("type", "count")
@@ -3305,7 +3305,7 @@ class ThresholdParams(_c.Struct):
     desc_set: int = 0  # Descriptor set of the target data quantity.
     field_desc: int = 0  # Field descriptor of the target data quantity.
     param_id: int = 0  # 1-based index of the target parameter within the field.
-    type: ThresholdType = ThresholdType.WINDOW  # Type of comparison.
+    type: _ty.Union[ThresholdType, int] = ThresholdType.WINDOW  # Type of comparison.
     low_thres: float = 0.0  # Low threshold (window) or active time (interval).
     high_thres: float = 0.0  # High threshold (window) or interval (interval).
 
@@ -3328,7 +3328,7 @@ class TriggerGpioParams(_c.Struct):
     """TriggerGpioParams (struct, 2 bytes)."""
 
     pin: int = 0  # GPIO pin number.
-    mode: TriggerGpioMode = TriggerGpioMode.DISABLED  # How the pin state affects the trigger.
+    mode: _ty.Union[TriggerGpioMode, int] = TriggerGpioMode.DISABLED  # How the pin state affects the trigger.
 
     _ATTRS = ("pin", "mode")
     _OPS = (_c.Run(_c.P("pin", _c.U8), _c.P("mode", _c.enum(TriggerGpioMode, "u8"))),)
@@ -3355,7 +3355,7 @@ class TriggerParams(_c.Union):
 class TriggerStatusEntry(_c.Struct):
     """TriggerStatusEntry (struct, 2 bytes)."""
 
-    type: TriggerType = TriggerType.NONE  # Configured trigger type.
+    type: _ty.Union[TriggerType, int] = TriggerType.NONE  # Configured trigger type.
     status: TriggerStatus = TriggerStatus(0)  # Trigger status.
 
     _ATTRS = ("type", "status")

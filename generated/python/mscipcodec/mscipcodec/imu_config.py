@@ -24,8 +24,9 @@ class UartBaudRate(_c.Field):
     ms-cip-doc00419-revM.txt line 526; ms-cip-doc00419-revM.txt line 549. Field data: 1..5 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    baud_rate: _ty.Optional[_t.BaudRate] = None  # New baud rate. [baud] (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    baud_rate: _ty.Optional[_ty.Union[_t.BaudRate, int]] = None  # New baud rate. [baud] (sent for: write)
 
     SET = 0x02
     DESCRIPTOR = 0x01
@@ -47,7 +48,7 @@ class UartBaudRateResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 526. Field data: 4 bytes.
     """
 
-    baud_rate: _t.BaudRate = _t.BaudRate.BAUD_9600  # Current baud rate. [baud]
+    baud_rate: _ty.Union[_t.BaudRate, int] = _t.BaudRate.BAUD_9600  # Current baud rate. [baud]
 
     SET = 0x02
     DESCRIPTOR = 0x81
@@ -67,8 +68,10 @@ class Filter(_c.Field):
     ms-cip-doc00419-revM.txt line 584; ms-cip-doc00419-revM.txt line 617. Field data: 1..2 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    bandwidth: _ty.Optional[_t.FilterBandwidth] = None  # Filter bandwidth control code. (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    # Filter bandwidth control code. (sent for: write)
+    bandwidth: _ty.Optional[_ty.Union[_t.FilterBandwidth, int]] = None
 
     SET = 0x02
     DESCRIPTOR = 0x03
@@ -90,7 +93,7 @@ class FilterResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 584. Field data: 1 bytes.
     """
 
-    bandwidth: _t.FilterBandwidth = _t.FilterBandwidth.DISABLED  # Filter bandwidth control code.
+    bandwidth: _ty.Union[_t.FilterBandwidth, int] = _t.FilterBandwidth.DISABLED  # Filter bandwidth control code.
 
     SET = 0x02
     DESCRIPTOR = 0x83
@@ -111,7 +114,8 @@ class SampleRate(_c.Field):
     ms-cip-doc00419-revM.txt line 649; ms-cip-doc00419-revM.txt line 666. Field data: 1..3 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
     decimation: _ty.Optional[int] = None  # Divider of the internal sample rate. (sent for: write)
 
     SET = 0x02
@@ -157,10 +161,11 @@ class SelectSensors(_c.Field):
     line 738. Field data: 1..253 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
     reserved: _ty.Optional[int] = None  # Reserved for future use (0x00). (sent for: write)
     # Measurements to output, in order. (sent for: write) (to the end of the field)
-    sensors: _ty.Optional[_ty.List[_t.SensorCode]] = None
+    sensors: _ty.Optional[_ty.List[_ty.Union[_t.SensorCode, int]]] = None
 
     SET = 0x02
     DESCRIPTOR = 0x05
@@ -184,7 +189,7 @@ class SelectSensorsResponse(_c.Field):
     """
 
     # Selected measurements. (to the end of the field)
-    sensors: _ty.List[_t.SensorCode] = _dc.field(default_factory=list)
+    sensors: _ty.List[_ty.Union[_t.SensorCode, int]] = _dc.field(default_factory=list)
 
     SET = 0x02
     DESCRIPTOR = 0x85
@@ -241,8 +246,9 @@ class AccelRange(_c.Field):
     ms-cip-doc00419-revM.txt line 812; ms-cip-doc00419-revM.txt line 844. Field data: 1..2 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    range: _ty.Optional[_t.AccelRange] = None  # Accelerometer range code. (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    range: _ty.Optional[_ty.Union[_t.AccelRange, int]] = None  # Accelerometer range code. (sent for: write)
 
     SET = 0x02
     DESCRIPTOR = 0x07
@@ -264,7 +270,7 @@ class AccelRangeResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 812. Field data: 1 bytes.
     """
 
-    range: _t.AccelRange = _t.AccelRange.RANGE_2G  # Accelerometer range code.
+    range: _ty.Union[_t.AccelRange, int] = _t.AccelRange.RANGE_2G  # Accelerometer range code.
 
     SET = 0x02
     DESCRIPTOR = 0x87
@@ -284,8 +290,9 @@ class GyroRange(_c.Field):
     ms-cip-doc00419-revM.txt line 876; ms-cip-doc00419-revM.txt line 908. Field data: 1..2 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    range: _ty.Optional[_t.GyroRange] = None  # Gyroscope range code. (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    range: _ty.Optional[_ty.Union[_t.GyroRange, int]] = None  # Gyroscope range code. (sent for: write)
 
     SET = 0x02
     DESCRIPTOR = 0x08
@@ -307,7 +314,7 @@ class GyroRangeResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 876. Field data: 1 bytes.
     """
 
-    range: _t.GyroRange = _t.GyroRange.RANGE_120DPS  # Gyroscope range code.
+    range: _ty.Union[_t.GyroRange, int] = _t.GyroRange.RANGE_120DPS  # Gyroscope range code.
 
     SET = 0x02
     DESCRIPTOR = 0x88
@@ -327,7 +334,7 @@ class ConfigAll(_c.Field):
     ms-cip-doc00419-revM.txt line 944; ms-cip-doc00419-revM.txt line 953. Field data: 1 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.SAVE  # Function code (one of: save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.SAVE  # Function code (one of: save, load, default)
 
     SET = 0x02
     DESCRIPTOR = 0x09
@@ -347,8 +354,9 @@ class DataOnOff(_c.Field):
     ms-cip-doc00419-revM.txt line 984; ms-cip-doc00419-revM.txt line 1007. Field data: 1..2 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    control: _ty.Optional[_t.OnOff] = None  # Data on or off. (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    control: _ty.Optional[_ty.Union[_t.OnOff, int]] = None  # Data on or off. (sent for: write)
 
     SET = 0x02
     DESCRIPTOR = 0x0A
@@ -370,7 +378,7 @@ class DataOnOffResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 984. Field data: 1 bytes.
     """
 
-    control: _t.OnOff = _t.OnOff.OFF  # Data on or off.
+    control: _ty.Union[_t.OnOff, int] = _t.OnOff.OFF  # Data on or off.
 
     SET = 0x02
     DESCRIPTOR = 0x8A
@@ -390,8 +398,9 @@ class XtrigOnOff(_c.Field):
     ms-cip-doc00419-revM.txt line 1039; ms-cip-doc00419-revM.txt line 1062. Field data: 1..2 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    control: _ty.Optional[_t.OnOff] = None  # External trigger on or off. (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    control: _ty.Optional[_ty.Union[_t.OnOff, int]] = None  # External trigger on or off. (sent for: write)
 
     SET = 0x02
     DESCRIPTOR = 0x0B
@@ -413,7 +422,7 @@ class XtrigOnOffResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 1039. Field data: 1 bytes.
     """
 
-    control: _t.OnOff = _t.OnOff.OFF  # External trigger on or off.
+    control: _ty.Union[_t.OnOff, int] = _t.OnOff.OFF  # External trigger on or off.
 
     SET = 0x02
     DESCRIPTOR = 0x8B
@@ -435,9 +444,10 @@ class SelectSensorsRevB(_c.Field):
     1..253 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
     # Measurements to output, in order. (sent for: write) (to the end of the field)
-    sensors: _ty.Optional[_ty.List[_t.SensorCode]] = None
+    sensors: _ty.Optional[_ty.List[_ty.Union[_t.SensorCode, int]]] = None
 
     SET = 0x02
     DESCRIPTOR = 0x0C
@@ -460,7 +470,7 @@ class SelectSensorsRevBResponse(_c.Field):
     """
 
     # Selected measurements. (to the end of the field)
-    sensors: _ty.List[_t.SensorCode] = _dc.field(default_factory=list)
+    sensors: _ty.List[_ty.Union[_t.SensorCode, int]] = _dc.field(default_factory=list)
 
     SET = 0x02
     DESCRIPTOR = 0x8C
@@ -480,8 +490,9 @@ class AuxAccelRange(_c.Field):
     ms-cip-doc00419-revM.txt line 1161; ms-cip-doc00419-revM.txt line 1193. Field data: 1..2 bytes.
     """
 
-    function: _t.FunctionCode = _t.FunctionCode.WRITE  # Function code (one of: write, read, save, load, default)
-    range: _ty.Optional[_t.AccelRange] = None  # Auxiliary accelerometer range code. (sent for: write)
+    # Function code (one of: write, read, save, load, default)
+    function: _ty.Union[_t.FunctionCode, int] = _t.FunctionCode.WRITE
+    range: _ty.Optional[_ty.Union[_t.AccelRange, int]] = None  # Auxiliary accelerometer range code. (sent for: write)
 
     SET = 0x02
     DESCRIPTOR = 0x0D
@@ -503,7 +514,7 @@ class AuxAccelRangeResponse(_c.Field):
     Sources: ms-cip-doc00419-revM.txt line 1161. Field data: 1 bytes.
     """
 
-    range: _t.AccelRange = _t.AccelRange.RANGE_2G  # Auxiliary accelerometer range code.
+    range: _ty.Union[_t.AccelRange, int] = _t.AccelRange.RANGE_2G  # Auxiliary accelerometer range code.
 
     SET = 0x02
     DESCRIPTOR = 0x8D

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses as _dc
+import typing as _ty
 
 from . import codec as _c
 from . import types as _t
@@ -20,7 +21,7 @@ class Ack(_c.Field):
     """
 
     command_code: int = 0  # Message code of the command being answered ("Message echo").
-    error_code: _t.ErrorCode = _t.ErrorCode.OK  # 0 when the command was received without error.
+    error_code: _ty.Union[_t.ErrorCode, int] = _t.ErrorCode.OK  # 0 when the command was received without error.
 
     SET = None
     DESCRIPTOR = 0x80

@@ -32,9 +32,9 @@ class Configure(_c.Field):
     data: 2..32 bytes.
     """
 
-    function: _t.Function = _t.Function.WRITE  # Function (one of: write, read, save)
+    function: _ty.Union[_t.Function, int] = _t.Function.WRITE  # Function (one of: write, read, save)
     instance: int = 0
-    mode: _ty.Optional[_t.Mode] = None  # (sent for: write)
+    mode: _ty.Optional[_ty.Union[_t.Mode, int]] = None  # (sent for: write)
     params: _ty.Optional[_ty.Union[_t.GpioParams, _t.ThresholdParams]] = None  # (sent for: write)
     suppress_ack: _ty.Optional[bool] = None  # (sent for: write)
 
@@ -66,7 +66,7 @@ class Configuration(_c.Field):
     matrix: _ty.List[float] = _dc.field(default_factory=lambda: [0.0] * 9)
     fixed: _ty.List[int] = _dc.field(default_factory=lambda: [0] * 4)
     flags: _t.Flags = _t.Flags(0)
-    signed: _t.Signed = _t.Signed.MINUS_ONE
+    signed: _ty.Union[_t.Signed, int] = _t.Signed.MINUS_ONE
     tail: _ty.List[bytes] = _dc.field(default_factory=list)  # (to the end of the field)
 
     SET = 0x01
