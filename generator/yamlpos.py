@@ -26,6 +26,8 @@ _SCALARS = yaml.constructor.SafeConstructor()
 # allowed (spec/mscip shares notes with them), but every value they expand to counts.
 MAX_DEPTH = 64
 MAX_VALUES = 200_000
+# The largest file of the project is 72 kB (tests/vectors/mip/filter_20_64.yaml).
+MAX_BYTES = 4 << 20
 
 
 class _Budget:
@@ -75,9 +77,13 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
     name = display_name or file_path
     try:
         with open(file_path, "rb") as fh:
-            raw = fh.read()
+            raw = fh.read(MAX_BYTES + 1)
     except OSError as exc:
         raise SpecError(Location(name, 1, 1), f"cannot read file: {exc.strerror}") from None
+    if len(raw) > MAX_BYTES:
+        raise SpecError(
+            Location(name, 1, 1), f"the file is larger than {MAX_BYTES} bytes", f"at most {MAX_BYTES} bytes"
+        )
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -89,6 +95,15 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
         ) from None
     try:
         node = yaml.compose(text, Loader=_LOADER)
+    except yaml.reader.ReaderError as exc:  # a character YAML does not allow (NUL, other controls)
+        before = text[: exc.position]
+        line = before.count("\n") + 1
+        column = len(before) - (before.rfind("\n") + 1) + 1
+        raise SpecError(
+            Location(name, line, column),
+            f"invalid YAML: character U+{ord(text[exc.position]):04X} is not allowed ({exc.reason})",
+            "printable text (tabs and newlines allowed)",
+        ) from None
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         loc = Location(name, mark.line + 1, mark.column + 1) if mark else Location(name, 1, 1)

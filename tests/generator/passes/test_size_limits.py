@@ -103,3 +103,20 @@ def test_reserved_fields_are_checked_in_the_protocol_file(tmp_path):
             26, "reserved field ack: the largest encoding is 260 bytes of field data (junk 260)", file="protocol.yaml"
         )
     ]
+
+
+def test_an_elastic_array_counts_with_its_smallest_size(tmp_path):
+    # Without max_count, an array takes what the others leave (here 253 - 200 - 1 = 52 u8s): the
+    # layout fits. Two elastic arrays may each fill the field alone; the encoder checks the total.
+    fields = _field(1, "ok", "[{name: a, type: u8, count: 200}, {name: n, type: u8}, {name: t, type: u8, count: n}]")
+    fields += _field(
+        2, "two", "[{name: n, type: u8}, {name: a, type: u8, count: n}, {name: b, type: u8, count: remaining}]"
+    )
+    fields += _field(
+        3, "over", "[{name: a, type: u8, count: 250}, {name: n, type: u32}, {name: t, type: u8, count: n}]"
+    )
+    ctx = build(tmp_path, {"a.yaml": data_set(fields)}, "size_limits")
+    assert errors(ctx) == [
+        _error(24, "sensor.over: the largest encoding is 254 bytes of field data (a 250, n 4, t 0+ (elastic))"),
+    ]
+    assert [q["max_count"] for q in ctx.sets[0]["fields"][0]["params"]] == [None, None, 52]
