@@ -31,7 +31,7 @@ class FuzzCheckFailed(AssertionError):
     """A harness property does not hold."""
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _setup():
     validator = spec._schema_validator()
     real = {name: spec.read_spec_file(SPEC / name, f"spec/mscip/{name}", validator) for name in FILES[:4]}
