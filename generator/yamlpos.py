@@ -64,6 +64,54 @@ def _construct(node: yaml.Node, path: Path, file: str, marks: dict, budget: _Bud
     return _scalar(node, file)
 
 
+def _check_expansion(root: yaml.Node, file: str) -> None:
+    """Refuses a file whose aliases expand to more than MAX_VALUES values before building any of
+    them: each distinct node's expanded size is counted once (an alias bomb costs a moment, not the
+    seconds of constructing 200,000 values), and the error points where construction would stop."""
+    sizes: dict[int, int] = {}
+    open_nodes: set[int] = set()
+
+    def size(node: yaml.Node, depth: int) -> int:
+        key = id(node)
+        if key in sizes:
+            return sizes[key]
+        if depth > MAX_DEPTH or not isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
+            return 1  # too deep: _construct reports it
+        if key in open_nodes:  # an alias inside its own anchor: _construct reports the depth
+            return 1
+        open_nodes.add(key)
+        children = [v for _k, v in node.value] if isinstance(node, yaml.MappingNode) else node.value
+        n = 1
+        for child in children:
+            n += size(child, depth + 1)
+            if n > MAX_VALUES:
+                break
+        open_nodes.discard(key)
+        sizes[key] = n
+        return n
+
+    if size(root, 0) <= MAX_VALUES:
+        return
+    # Walk to the value at which construction would pass the limit.
+    node, left = root, MAX_VALUES - 1
+    while isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
+        children = [v for _k, v in node.value] if isinstance(node, yaml.MappingNode) else node.value
+        for child in children:
+            n = sizes.get(id(child), 1)
+            if n > left:
+                node, left = child, left - 1
+                break
+            left -= n
+        else:
+            break
+    loc = Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
+    raise SpecError(
+        loc,
+        f"the file expands to more than {MAX_VALUES} values (aliases of aliases?)",
+        f"at most {MAX_VALUES} values after expanding aliases",
+    )
+
+
 def _scalar(node: yaml.Node, file: str):
     """A scalar as the safe loader resolves it: ints (incl. 0x..), floats, bools, null, strings."""
     try:
@@ -115,6 +163,7 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
     marks: dict = {}
     if node is None:
         raise SpecError(Location(name, 1, 1), "empty file", "a YAML mapping")
+    _check_expansion(node, name)
     data = _construct(node, (), name, marks, _Budget())
 
     def locate(path: Path) -> Location:
