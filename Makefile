@@ -105,7 +105,8 @@ test-bigendian: generate
 # time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the
 # run; its input is saved under build/fuzz/findings/<lang>/<package>/<target>/. Needs clang-14,
 # libclang-rt-14-dev, llvm-14, a nightly Rust toolchain with cargo-fuzz, and atheris (in .venv).
-# FUZZ_ONLY limits the targets: LANG[/PACKAGE[/TARGET]] words, e.g. FUZZ_ONLY="c cpp/mipcodec".
+# FUZZ_ONLY limits the targets: LANG[/PACKAGE[/TARGET]] words, e.g. FUZZ_ONLY="c cpp/mipcodec"; "spec" is
+# the generator's front end (tests/fuzz/spec/: spec files through the YAML loader, schema and IR passes).
 FUZZ_SECONDS ?= 10
 FUZZ_RUNS ?= 10000000
 FUZZ_PY_RUNS ?= 1000000

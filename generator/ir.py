@@ -26,6 +26,7 @@ from .passes import (
     resolve_types,
     sample_rule,
     sets,
+    size_limits,
     value_paths,
     variants,
 )
@@ -42,6 +43,7 @@ PASSES = (
     variants,  # each field's layouts, one per device where the spec has variants
     link_responses,  # responses to response fields of the same set; the reply code rule
     irregular_lengths,  # length_byte_adjust checked; framing irregular_lengths
+    size_limits,  # every layout's largest encoding fits one field (framing max_field_data)
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set

@@ -15,6 +15,13 @@ def deepest(error: jsonschema.ValidationError) -> jsonschema.ValidationError:
     return best
 
 
+def _short(value) -> str:
+    """A value as it appears in a message: its repr, cut to a readable length (a hostile file can
+    hold a 4 MB string or a 400-digit number)."""
+    text = repr(value)
+    return text if len(text) <= 60 else text[:40] + f"... ({len(text)} characters)"
+
+
 def describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
     """Turn a jsonschema error into (what is wrong, what is expected)."""
     where = ".".join(str(p) for p in best.absolute_path) or "(top level)"
@@ -25,15 +32,15 @@ def describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
     if v == "additionalProperties":
         return f"{where}: {best.message}", "only the keys documented in docs/spec-format.md"
     if v == "enum":
-        return f"{where}: value {best.instance!r} is not allowed", "one of " + ", ".join(
+        return f"{where}: value {_short(best.instance)} is not allowed", "one of " + ", ".join(
             repr(x) for x in best.validator_value
         )
     if v == "pattern":
-        return f"{where}: {best.instance!r} is not a valid name", f"a name matching {best.validator_value}"
+        return f"{where}: {_short(best.instance)} is not a valid name", f"a name matching {best.validator_value}"
     if v == "type":
-        return f"{where}: {best.instance!r} has the wrong type", f"{best.validator_value}"
+        return f"{where}: {_short(best.instance)} has the wrong type", f"{best.validator_value}"
     if v in ("minimum", "maximum"):
-        return f"{where}: {best.instance!r} is out of range", f"{v} {best.validator_value}"
+        return f"{where}: {_short(best.instance)} is out of range", f"{v} {best.validator_value}"
     return f"{where}: {best.message}", None
 
 

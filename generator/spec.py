@@ -43,46 +43,49 @@ def _validate_shape(validators, sf: SpecFile) -> list[SpecError]:
     return schema_errors(validators[kind], sf.data, sf.locate)
 
 
-def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
-    """Load spec/<protocol>/ and return the protocol's IR (one protocol entry)."""
-    validator = _schema_validator()
-    files = sorted(p for p in directory.iterdir() if p.suffix in (".yaml", ".yml"))
-    errors: list[SpecError] = []
-    protocol_file = None
-    set_files: list[SpecFile] = []
-    type_files: list[SpecFile] = []
-    for path in files:
-        rel = os.path.relpath(path, root)
-        try:
-            data, locate = load(str(path), rel)
-        except SpecError as e:
-            errors.append(e)
-            continue
-        sf = SpecFile(rel, data, locate)
-        if not isinstance(data, dict):
-            errors.append(
+def read_spec_file(path: Path, display_name: str, validator) -> SpecFile:
+    """One spec file loaded (with positions) and its shape checked against the JSON Schema; raises
+    SpecErrors for a file that cannot be read or has the wrong shape."""
+    try:
+        data, locate = load(str(path), display_name)
+    except SpecError as e:
+        raise SpecErrors([e]) from None
+    sf = SpecFile(display_name, data, locate)
+    if not isinstance(data, dict):
+        raise SpecErrors(
+            [
                 SpecError(
                     locate(()),
                     "the file must be a YAML mapping",
                     "a protocol file (protocol: ...) or a set file (set: ...)",
                 )
-            )
-            continue
-        shape = _validate_shape(validator, sf)
-        if shape:
-            errors.extend(shape)
-            continue
-        if "protocol" in data:
+            ]
+        )
+    shape = _validate_shape(validator, sf)
+    if shape:
+        raise SpecErrors(shape)
+    return sf
+
+
+def build_from_files(dir_name: str, spec_files: list[SpecFile]) -> dict:
+    """A protocol's IR from its loaded, shape-checked files (one protocol file, set files, type
+    files); raises SpecErrors with every problem found."""
+    errors: list[SpecError] = []
+    protocol_file = None
+    set_files: list[SpecFile] = []
+    type_files: list[SpecFile] = []
+    for sf in spec_files:
+        if "protocol" in sf.data:
             if protocol_file is not None:
                 errors.append(
                     SpecError(
-                        locate(("protocol",)),
-                        f"a second protocol file in {directory.name}/ (first: {protocol_file.path})",
+                        sf.locate(("protocol",)),
+                        f"a second protocol file in {dir_name}/ (first: {protocol_file.path})",
                         "one protocol file per protocol directory",
                     )
                 )
             protocol_file = sf
-        elif "set" in data:
+        elif "set" in sf.data:
             set_files.append(sf)
         else:
             type_files.append(sf)
@@ -90,18 +93,28 @@ def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
         raise SpecErrors(errors)
     if protocol_file is None:
         raise SpecErrors(
-            [
-                SpecError(
-                    None,
-                    f"{os.path.relpath(directory, root)}/ has no protocol file",
-                    "a file with 'protocol:' describing the framing",
-                )
-            ]
+            [SpecError(None, f"{dir_name}/ has no protocol file", "a file with 'protocol:' describing the framing")]
         )
     protocol, build_errors = build_protocol(protocol_file, set_files, type_files)
     if build_errors:
         raise SpecErrors(build_errors)
     return protocol
+
+
+def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
+    """Load spec/<protocol>/ and return the protocol's IR (one protocol entry)."""
+    validator = _schema_validator()
+    files = sorted(p for p in directory.iterdir() if p.suffix in (".yaml", ".yml"))
+    errors: list[SpecError] = []
+    spec_files: list[SpecFile] = []
+    for path in files:
+        try:
+            spec_files.append(read_spec_file(path, os.path.relpath(path, root), validator))
+        except SpecErrors as e:
+            errors.extend(e.errors)
+    if errors:
+        raise SpecErrors(errors)
+    return build_from_files(os.path.relpath(directory, root), spec_files)
 
 
 def load_spec(spec_dir: Path | None = None, root: Path = ROOT) -> dict:

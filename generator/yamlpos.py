@@ -26,6 +26,8 @@ _SCALARS = yaml.constructor.SafeConstructor()
 # allowed (spec/mscip shares notes with them), but every value they expand to counts.
 MAX_DEPTH = 64
 MAX_VALUES = 200_000
+# The largest file of the project is 72 kB (tests/vectors/mip/filter_20_64.yaml).
+MAX_BYTES = 4 << 20
 
 
 class _Budget:
@@ -62,6 +64,54 @@ def _construct(node: yaml.Node, path: Path, file: str, marks: dict, budget: _Bud
     return _scalar(node, file)
 
 
+def _check_expansion(root: yaml.Node, file: str) -> None:
+    """Refuses a file whose aliases expand to more than MAX_VALUES values before building any of
+    them: each distinct node's expanded size is counted once (an alias bomb costs a moment, not the
+    seconds of constructing 200,000 values), and the error points where construction would stop."""
+    sizes: dict[int, int] = {}
+    open_nodes: set[int] = set()
+
+    def size(node: yaml.Node, depth: int) -> int:
+        key = id(node)
+        if key in sizes:
+            return sizes[key]
+        if depth > MAX_DEPTH or not isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
+            return 1  # too deep: _construct reports it
+        if key in open_nodes:  # an alias inside its own anchor: _construct reports the depth
+            return 1
+        open_nodes.add(key)
+        children = [v for _k, v in node.value] if isinstance(node, yaml.MappingNode) else node.value
+        n = 1
+        for child in children:
+            n += size(child, depth + 1)
+            if n > MAX_VALUES:
+                break
+        open_nodes.discard(key)
+        sizes[key] = n
+        return n
+
+    if size(root, 0) <= MAX_VALUES:
+        return
+    # Walk to the value at which construction would pass the limit.
+    node, left = root, MAX_VALUES - 1
+    while isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
+        children = [v for _k, v in node.value] if isinstance(node, yaml.MappingNode) else node.value
+        for child in children:
+            n = sizes.get(id(child), 1)
+            if n > left:
+                node, left = child, left - 1
+                break
+            left -= n
+        else:
+            break
+    loc = Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
+    raise SpecError(
+        loc,
+        f"the file expands to more than {MAX_VALUES} values (aliases of aliases?)",
+        f"at most {MAX_VALUES} values after expanding aliases",
+    )
+
+
 def _scalar(node: yaml.Node, file: str):
     """A scalar as the safe loader resolves it: ints (incl. 0x..), floats, bools, null, strings."""
     try:
@@ -75,9 +125,13 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
     name = display_name or file_path
     try:
         with open(file_path, "rb") as fh:
-            raw = fh.read()
+            raw = fh.read(MAX_BYTES + 1)
     except OSError as exc:
         raise SpecError(Location(name, 1, 1), f"cannot read file: {exc.strerror}") from None
+    if len(raw) > MAX_BYTES:
+        raise SpecError(
+            Location(name, 1, 1), f"the file is larger than {MAX_BYTES} bytes", f"at most {MAX_BYTES} bytes"
+        )
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -89,6 +143,15 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
         ) from None
     try:
         node = yaml.compose(text, Loader=_LOADER)
+    except yaml.reader.ReaderError as exc:  # a character YAML does not allow (NUL, other controls)
+        before = text[: exc.position]
+        line = before.count("\n") + 1
+        column = len(before) - (before.rfind("\n") + 1) + 1
+        raise SpecError(
+            Location(name, line, column),
+            f"invalid YAML: character U+{ord(text[exc.position]):04X} is not allowed ({exc.reason})",
+            "printable text (tabs and newlines allowed)",
+        ) from None
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         loc = Location(name, mark.line + 1, mark.column + 1) if mark else Location(name, 1, 1)
@@ -100,6 +163,7 @@ def load(file_path: str, display_name: str | None = None) -> tuple[Any, Callable
     marks: dict = {}
     if node is None:
         raise SpecError(Location(name, 1, 1), "empty file", "a YAML mapping")
+    _check_expansion(node, name)
     data = _construct(node, (), name, marks, _Budget())
 
     def locate(path: Path) -> Location:

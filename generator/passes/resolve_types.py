@@ -1,6 +1,7 @@
 """Pass: build every named type in IR form: enums and bitfields first (they depend on nothing),
-then structs and unions in dependency order, with their sizes. A type that contains itself is
-reported and replaced by an empty one so the passes after this one still run.
+then structs and unions in dependency order, with their sizes. A type that contains itself, or
+types nested more than MAX_NESTING deep, are reported and replaced by an empty one so the passes
+after this one still run.
 """
 
 from __future__ import annotations
@@ -10,6 +11,10 @@ from .context import Context, SpecFile
 from .params import build_params
 from .sizes import fixed, layout_size
 
+# Structs and unions nest a few levels in real specs (a MIP value's path has at most 3 names); every back end
+# and pass walks them recursively, so a chain of thousands (a generated or hostile spec) is refused.
+MAX_NESTING = 32
+
 
 def run(ctx: Context) -> None:
     # Enums and bitfields first (no dependencies), then structs/unions in dependency order.
@@ -18,7 +23,11 @@ def run(ctx: Context) -> None:
             ctx.types[name] = _enum(ctx, sf, path, t)
         elif kind == "bitfield":
             ctx.types[name] = _bitfield(ctx, sf, path, t)
-    visiting: set[str] = set()
+    visiting: list[str] = []  # the chain of types being resolved, outermost first
+    too_deep: list[str] = []  # the first chain found nested deeper than MAX_NESTING (reported once)
+
+    def placeholder(name: str, kind: str) -> None:
+        ctx.types[name] = {"kind": kind, "name": name, "params": [], "members": [], "size": fixed(0)}
 
     def resolve(name: str) -> None:
         if name in ctx.types:
@@ -26,17 +35,30 @@ def run(ctx: Context) -> None:
         kind, t, sf, path = ctx.raw_types[name]
         if name in visiting:
             ctx.err(sf, path + ("name",), f"type '{name}' contains itself", "a finite, non-recursive layout")
-            ctx.types[name] = {"kind": kind, "name": name, "params": [], "members": [], "size": fixed(0)}
+            placeholder(name, kind)
             return
-        visiting.add(name)
+        if len(visiting) >= MAX_NESTING:
+            if not too_deep:
+                too_deep.append(name)
+                ctx.err(
+                    sf,
+                    path + ("name",),
+                    f"type '{name}' is nested more than {MAX_NESTING} types deep ({visiting[0]} > {visiting[1]} > ...)",
+                    f"structs and unions nested at most {MAX_NESTING} deep",
+                )
+            placeholder(name, kind)
+            return
+        visiting.append(name)
         for ref in _type_refs(t):
             if ref in ctx.raw_types:
                 resolve(ref)
+        visiting.pop()
+        if name in ctx.types:  # part of a cycle, already reported and replaced by an empty type
+            return
         if kind == "struct":
             ctx.types[name] = _struct(ctx, sf, path, t)
         else:
             ctx.types[name] = _union(ctx, sf, path, t)
-        visiting.discard(name)
 
     for name, (kind, _t, _sf, _p) in ctx.raw_types.items():
         if kind in ("struct", "union"):

@@ -8,7 +8,9 @@
 runs the targets one at a time (the machine is shared: never two fuzzers at once) and prints a
 table: target, executions, exec/s, wall time, findings. Targets: LANG in c, cpp, rust, python;
 PACKAGE in the generated packages (mipcodec, mscipcodec); TARGET in parser, decode, json
-(decode: the lean parse + decode-every-field target, for execution count).
+(decode: the lean parse + decode-every-field target, for execution count); and spec/generator/loader,
+the generator's front end (tests/fuzz/spec/harness.py: spec files through the YAML loader, the
+schema and the IR passes; regressions in tests/fuzz/regressions/generator/loader/).
 
   build/fuzz/corpus/<package>/<target>/     seeds (golden vectors), rewritten by every run
   build/fuzz/work/<lang>/<package>/<target>/ what the fuzzer added (kept between runs)
@@ -46,7 +48,10 @@ LANGS = ("c", "cpp", "rust", "python")
 TARGETS = ("parser", "decode", "json")
 # Inputs larger than this are not tried (a few maximum packets; a long JSON line). `decode` is the
 # lean target for execution count: two maximum MIP packets or a few MS-CIP ones.
-MAX_LEN = {"parser": 1100, "decode": 600, "json": 4096}
+MAX_LEN = {"parser": 1100, "decode": 600, "json": 4096, "loader": 8192}
+# The generator's front end (tests/fuzz/spec/harness.py): spec files through the YAML loader, the
+# schema and the IR passes, under atheris; selected as spec/generator/loader (--only spec).
+SPEC_TARGET = ("spec", "generator", "loader")
 SANITIZE_FUZZ = ["-fsanitize=fuzzer-no-link,address,undefined", "-fno-sanitize-recover=undefined"]
 SANITIZE_REPLAY = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all"]
 WARN = ["-Wall", "-Wextra", "-Werror"]
@@ -244,6 +249,9 @@ def fuzz_command(lang: str, package: str, target: str, bins: dict) -> tuple[list
     if lang == "rust":
         return rust_fuzz_cmd("run", f"{package}_{target}", "--"), cargo_env()
     python = os.environ.get("FUZZ_PYTHON", sys.executable)
+    if lang == "spec":
+        env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(ROOT), env.get("PYTHONPATH")]))
+        return [python, "-m", "tests.fuzz.spec.fuzz_target"], env
     # the harness is the module tests.fuzz.python.fuzz_target: the project root is on its path
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(ROOT), env.get("PYTHONPATH")]))
     return [python, "-m", "tests.fuzz.python.fuzz_target", package, target], env
@@ -320,6 +328,9 @@ def selected(only: list[str]) -> list[tuple[str, str, str]]:
                 key = f"{lang}/{package}/{target}"
                 if not only or any(key == o or key.startswith(o.rstrip("/") + "/") for o in only):
                     out.append((lang, package, target))
+    key = "/".join(SPEC_TARGET)
+    if not only or any(key == o or key.startswith(o.rstrip("/") + "/") for o in only):
+        out.append(SPEC_TARGET)
     return out
 
 
@@ -342,7 +353,7 @@ def cmd_run(args) -> int:
     rows = []
     for lang, package, target in chosen:
         runs = args.runs
-        if runs and lang == "python":
+        if runs and lang in ("python", "spec"):
             runs = args.python_runs or max(1, runs // 10)
         rows.append(run_one(lang, package, target, bins, args.seconds, runs))
     print(table(rows))
@@ -378,11 +389,23 @@ def cmd_replay(_args) -> int:
     sh(["cargo", "test", "--quiet", "--manifest-path", str(RUST_DIR / "Cargo.toml"), "-p", "fuzz-harness"], env=env)
     env = dict(os.environ, FUZZ_SEED_CORPUS=str(corpus))
     sh(
-        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(HERE / "python" / "test_regressions.py")],
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "-q",
+            "-p",
+            "no:cacheprovider",
+            str(HERE / "python" / "test_regressions.py"),
+            str(HERE / "spec" / "test_regressions.py"),
+        ],
         env=env,
         cwd=ROOT,
     )
-    print(f"fuzz.py: regressions and seeds replayed by {total} C/C++ harness runs, the Rust and the Python tests")
+    print(
+        f"fuzz.py: regressions and seeds replayed by {total} C/C++ harness runs, the Rust and the Python tests"
+        " and the spec loader's"
+    )
     return 0
 
 

@@ -13,7 +13,8 @@ writes one file per vector into <out>/<package>/<target>/:
   json/<vector>:   the vector's expected canonical JSON lines, one per line.
   decode/...:      the parser seeds (the lean `decode` target reads the same input format).
 Stream cases under tests/streams/<protocol>/ (*.bin), when that directory exists, are added to the
-parser corpus the same way. Existing seed directories are replaced.
+parser corpus the same way. generator/loader/: the real spec/mscip files and the hostile spec corpus for
+the generator's front end (tests/fuzz/spec/harness.py). Existing seed directories are replaced.
 """
 
 from __future__ import annotations
@@ -91,6 +92,15 @@ def write(out: Path) -> dict[tuple[str, str], int]:
             for f in sorted((streams / name).glob("*.bin")) if (streams / name).is_dir() else []:
                 seed = f"stream-{f.stem}"
                 add(proto["package"], "parser", seed, bytes([control_byte(seed, 0)]) + f.read_bytes())
+    d = out / "generator" / "loader"  # the generator's front end (tests/fuzz/spec/harness.py)
+    if d.exists():
+        shutil.rmtree(d)
+    d.mkdir(parents=True)
+    from tests.fuzz.spec.harness import seeds as spec_seeds
+
+    for name, data in spec_seeds().items():
+        (d / name).write_bytes(data)
+    counts[("generator", "loader")] = len(list(d.iterdir()))
     return counts
 
 

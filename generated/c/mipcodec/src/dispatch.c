@@ -2,6 +2,7 @@
 #include "mipcodec/dispatch.h"
 #include "layouts_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 const char *mip_device_id(mip_device_t device) {
@@ -17,6 +18,8 @@ const char *mip_device_id(mip_device_t device) {
 }
 
 bool mip_device_from_id(const char *id, mip_device_t *out) {
+    assert(id != NULL);
+    assert(out != NULL);
     if (strcmp(id, "gx5_45") == 0) {
         *out = MIP_DEVICE_GX5_45;
         return true;
@@ -2310,6 +2313,8 @@ static MIP_NOINLINE mip_status_t decode_field_general(uint8_t set, uint8_t descr
 mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                               mip_device_t device, mip_field_value_t *out, mip_decode_error_t *err) {
     const uint16_t *table = k_sets[set];
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (table && table[descriptor] != 0) {
         const mip_field_info_t *f = &k_fields[table[descriptor] - 1];
         if (f->layout_count == 1) {
@@ -2324,6 +2329,8 @@ mip_status_t mip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *da
 }
 
 mip_status_t mip_encode_field(const mip_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     switch (value->id) {
     case MIP_FIELD_ACK_NACK:
         return mip_ack_nack_encode(&value->u.ack_nack, buf, cap, len_out);

@@ -1,6 +1,7 @@
 /* Splits a packet payload into fields. Generated: do not edit. */
 #include "mipcodec/field_iter.h"
 
+#include <assert.h>
 #include <stdio.h>
 
 bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, uint8_t length_byte,
@@ -17,6 +18,8 @@ bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, ui
 }
 
 size_t mip_trailing_format(const mip_field_entry_t *entry, char *buf, size_t cap) {
+    assert(entry != NULL);
+    assert(buf != NULL || cap == 0);
     int n;
     switch (entry->trailing) {
     case MIP_TRAILING_SHORT_LENGTH:

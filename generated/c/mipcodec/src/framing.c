@@ -1,6 +1,7 @@
 /* Checksum and packet builder. Generated: do not edit. */
 #include "mipcodec/framing.h"
 
+#include <assert.h>
 #include <string.h>
 
 const uint8_t mip_sync[MIP_SYNC_SIZE] = MIP_SYNC_BYTES;
@@ -30,6 +31,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * of 256.
  */
 uint16_t mip_checksum_word(const uint8_t *bytes, size_t len) {
+    assert(bytes != NULL || len == 0);
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
     uint64_t s1 = 0;
@@ -75,6 +77,8 @@ uint16_t mip_checksum_word(const uint8_t *bytes, size_t len) {
 }
 
 void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]) {
+    assert(bytes != NULL || len == 0);
+    assert(out != NULL);
     unsigned word = mip_checksum_word(bytes, len);
     out[0] = (uint8_t)(word >> 8);
     out[1] = (uint8_t)(word & 0xFFu);
@@ -83,10 +87,12 @@ void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZ
 /* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
  * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
 bool mip_checksum_matches(const uint8_t *bytes, size_t len) {
+    assert(bytes != NULL);
     return mip_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
 bool mip_packet_valid(const uint8_t *packet, size_t len) {
+    assert(packet != NULL || len == 0);
     size_t payload;
     if (len < MIP_HEADER_SIZE + MIP_CHECKSUM_SIZE || memcmp(packet, mip_sync, MIP_SYNC_SIZE) != 0) {
         return false;
@@ -99,6 +105,8 @@ bool mip_packet_valid(const uint8_t *packet, size_t len) {
 }
 
 void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
+    assert(b != NULL);
+    assert(buf != NULL || cap == 0);
     b->buf = buf;
     b->cap = buf ? cap : 0;
     b->len = 0;
@@ -128,6 +136,8 @@ static mip_status_t reserve(mip_packet_builder_t *b, size_t n) {
 
 mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
                                   size_t data_len) {
+    assert(b != NULL);
+    assert(data != NULL || data_len == 0);
     int adjust = mip_field_length_adjust(b->set, descriptor);
     if (b->status == MIP_OK && data_len > MIP_MAX_FIELD_DATA) {
         b->status = MIP_ERR_TOO_LONG;
@@ -149,6 +159,8 @@ mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, c
 }
 
 mip_status_t mip_packet_add_raw(mip_packet_builder_t *b, const uint8_t *bytes, size_t len) {
+    assert(b != NULL);
+    assert(bytes != NULL || len == 0);
     if (reserve(b, len) != MIP_OK) {
         return b->status;
     }
@@ -160,6 +172,7 @@ mip_status_t mip_packet_add_raw(mip_packet_builder_t *b, const uint8_t *bytes, s
 }
 
 mip_status_t mip_packet_finish(mip_packet_builder_t *b, size_t *len_out) {
+    assert(b != NULL);
     if (b->status != MIP_OK) {
         return b->status;
     }

@@ -3,10 +3,13 @@
 #include "mipcodec/field_iter.h"
 #include "layouts_internal.h"
 
+#include <assert.h>
 #include <stdio.h>
 #include <string.h>
 
 size_t mip_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap) {
+    assert(bytes != NULL || n == 0);
+    assert(out != NULL || cap == 0);
     mip_jw_t w;
     mip_jw_init(&w, out, cap);
     mip_jw_lit(&w, "{\"offset\":");
@@ -69,6 +72,8 @@ static void field_json(mip_jw_t *w, uint8_t set, const mip_field_entry_t *e, mip
 
 size_t mip_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mip_device_t device,
                             char *out, size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(out != NULL || cap == 0);
     mip_jw_t w;
     mip_field_iter_t it;
     mip_field_entry_t e;
@@ -261,6 +266,9 @@ static int field_entry(mip_jr_t *jr, size_t pos, uint8_t set, mip_packet_builder
 
 mip_status_t mip_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
                                   char *msg, size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL || cap == 0);
+    assert(msg != NULL || msg_cap == 0);
     mip_jr_t jr;
     mip_packet_builder_t b;
     size_t pos;

@@ -3,6 +3,7 @@
 #include "json_writer.h"
 #include "mipcodec/json.h"
 
+#include <assert.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -314,6 +315,7 @@ static size_t format_finite(double v, char *buf, size_t cap) {
 }
 
 size_t mip_json_format_double(double v, char *buf, size_t cap) {
+    assert(buf != NULL || cap == 0);
     uint64_t bits;
     char text[32];
     memcpy(&bits, &v, sizeof bits);
@@ -331,6 +333,7 @@ size_t mip_json_format_double(double v, char *buf, size_t cap) {
 }
 
 size_t mip_json_format_float(float v, char *buf, size_t cap) {
+    assert(buf != NULL || cap == 0);
     uint32_t bits;
     char text[32];
     memcpy(&bits, &v, sizeof bits);
@@ -348,6 +351,8 @@ size_t mip_json_format_float(float v, char *buf, size_t cap) {
 }
 
 size_t mip_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
+    assert(bytes != NULL || n == 0);
+    assert(buf != NULL || cap == 0);
     mip_jw_t w;
     mip_jw_init(&w, buf, cap);
     mip_jw_string(&w, bytes, n);

@@ -1,9 +1,11 @@
 /* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
 #include "mipcodec/parser.h"
 
+#include <assert.h>
 #include <string.h>
 
 void mip_parser_init(mip_parser_t *parser) {
+    assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
@@ -175,6 +177,9 @@ static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_ev
 }
 
 void mip_parser_feed(mip_parser_t *parser, const uint8_t *data, size_t len, mip_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(data != NULL || len == 0);
+    assert(fn != NULL);
     while (len > 0) {
         size_t take;
         if (parser->used == 0) {
@@ -201,6 +206,8 @@ void mip_parser_feed(mip_parser_t *parser, const uint8_t *data, size_t len, mip_
 }
 
 void mip_parser_flush(mip_parser_t *parser, mip_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }

@@ -4,6 +4,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_ack_nack_t */
@@ -36,6 +37,8 @@ static mip_status_t mip_ack_nack_write(mip_writer_t *w, const mip_ack_nack_t *in
 mip_status_t mip_ack_nack_encode(const mip_ack_nack_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_ack_nack_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -56,6 +59,8 @@ static int mip_ack_nack_load(const uint8_t *d, mip_ack_nack_t *out) {
 static MIP_NOINLINE mip_status_t mip_ack_nack_decode_read(const uint8_t *data, size_t len,
                                                           mip_ack_nack_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_ack_nack_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -63,6 +68,8 @@ static MIP_NOINLINE mip_status_t mip_ack_nack_decode_read(const uint8_t *data, s
 
 mip_status_t mip_ack_nack_decode(const uint8_t *data, size_t len, mip_ack_nack_t *out,
                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_ack_nack_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -2,6 +2,7 @@
 #include "mscipcodec/dispatch.h"
 #include "layouts_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 const char *mscip_device_id(mscip_device_t device) {
@@ -15,6 +16,8 @@ const char *mscip_device_id(mscip_device_t device) {
 }
 
 bool mscip_device_from_id(const char *id, mscip_device_t *out) {
+    assert(id != NULL);
+    assert(out != NULL);
     if (strcmp(id, "ms_imu3020") == 0) {
         *out = MSCIP_DEVICE_MS_IMU3020;
         return true;
@@ -415,6 +418,8 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
                                   mscip_device_t device, mscip_field_value_t *out,
                                   mscip_decode_error_t *err) {
     const uint16_t *table = k_sets[set];
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (table && table[descriptor] != 0) {
         const mscip_field_info_t *f = &k_fields[table[descriptor] - 1];
         if (f->layout_count == 1) {
@@ -430,6 +435,8 @@ mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
 
 mscip_status_t mscip_encode_field(const mscip_field_value_t *value, uint8_t *buf, size_t cap,
                                   size_t *len_out) {
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     switch (value->id) {
     case MSCIP_FIELD_ACK:
         return mscip_ack_encode(&value->u.ack, buf, cap, len_out);

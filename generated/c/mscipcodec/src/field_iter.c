@@ -1,6 +1,7 @@
 /* Splits a packet payload into fields. Generated: do not edit. */
 #include "mscipcodec/field_iter.h"
 
+#include <assert.h>
 #include <stdio.h>
 
 bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *entry, uint8_t length_byte,
@@ -17,6 +18,8 @@ bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *ent
 }
 
 size_t mscip_trailing_format(const mscip_field_entry_t *entry, char *buf, size_t cap) {
+    assert(entry != NULL);
+    assert(buf != NULL || cap == 0);
     int n;
     switch (entry->trailing) {
     case MSCIP_TRAILING_SHORT_LENGTH:

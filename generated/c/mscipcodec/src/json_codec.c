@@ -3,10 +3,13 @@
 #include "mscipcodec/field_iter.h"
 #include "layouts_internal.h"
 
+#include <assert.h>
 #include <stdio.h>
 #include <string.h>
 
 size_t mscip_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap) {
+    assert(bytes != NULL || n == 0);
+    assert(out != NULL || cap == 0);
     mscip_jw_t w;
     mscip_jw_init(&w, out, cap);
     mscip_jw_lit(&w, "{\"offset\":");
@@ -70,6 +73,8 @@ static void field_json(mscip_jw_t *w, uint8_t set, const mscip_field_entry_t *e,
 
 size_t mscip_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mscip_device_t device,
                               char *out, size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(out != NULL || cap == 0);
     mscip_jw_t w;
     mscip_field_iter_t it;
     mscip_field_entry_t e;
@@ -262,6 +267,9 @@ static int field_entry(mscip_jr_t *jr, size_t pos, uint8_t set, mscip_packet_bui
 
 mscip_status_t mscip_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
                                       char *msg, size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL || cap == 0);
+    assert(msg != NULL || msg_cap == 0);
     mscip_jr_t jr;
     mscip_packet_builder_t b;
     size_t pos;

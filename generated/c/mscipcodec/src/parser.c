@@ -1,9 +1,11 @@
 /* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
 #include "mscipcodec/parser.h"
 
+#include <assert.h>
 #include <string.h>
 
 void mscip_parser_init(mscip_parser_t *parser) {
+    assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
@@ -176,6 +178,9 @@ static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, msci
 
 void mscip_parser_feed(mscip_parser_t *parser, const uint8_t *data, size_t len, mscip_event_fn fn,
                        void *ctx) {
+    assert(parser != NULL);
+    assert(data != NULL || len == 0);
+    assert(fn != NULL);
     while (len > 0) {
         size_t take;
         if (parser->used == 0) {
@@ -202,6 +207,8 @@ void mscip_parser_feed(mscip_parser_t *parser, const uint8_t *data, size_t len, 
 }
 
 void mscip_parser_flush(mscip_parser_t *parser, mscip_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }

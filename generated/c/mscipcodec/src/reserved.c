@@ -4,6 +4,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mscip_ack_t */
@@ -36,6 +37,8 @@ static mscip_status_t mscip_ack_write(mscip_writer_t *w, const mscip_ack_t *in) 
 mscip_status_t mscip_ack_encode(const mscip_ack_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_ack_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -56,6 +59,8 @@ static int mscip_ack_load(const uint8_t *d, mscip_ack_t *out) {
 static MSCIP_NOINLINE mscip_status_t mscip_ack_decode_read(const uint8_t *data, size_t len, mscip_ack_t *out,
                                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_ack_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -63,6 +68,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_ack_decode_read(const uint8_t *data, 
 
 mscip_status_t mscip_ack_decode(const uint8_t *data, size_t len, mscip_ack_t *out,
                                 mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mscip_ack_load(data, out) == 0) {
         return MSCIP_OK;
     }

@@ -2,6 +2,7 @@
  * Generated: do not edit. */
 #include "mscipcodec/samples.h"
 
+#include <assert.h>
 #include <string.h>
 
 #include "mscipcodec/field_iter.h"
@@ -54,6 +55,8 @@ static const uint8_t *payload_of(const uint8_t *packet, size_t len, size_t *plen
 }
 
 size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
+    assert(packet != NULL || len == 0);
+    assert(key != NULL);
     mscip_field_iter_t it;
     mscip_field_entry_t e;
     size_t plen = 0;
@@ -96,11 +99,15 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
 }
 
 void mscip_sample_tracker_init(mscip_sample_tracker_t *tracker) {
+    assert(tracker != NULL);
     memset(tracker, 0, sizeof *tracker);
 }
 
 bool mscip_sample_tracker_feed(mscip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
                                mscip_sample_info_t *info) {
+    assert(tracker != NULL);
+    assert(packet != NULL || len == 0);
+    assert(info != NULL);
     uint8_t key[MSCIP_SAMPLE_KEY_MAX];
     size_t key_len;
     size_t prefix = 0;

@@ -16,7 +16,9 @@ from .codec import BytesLike, DecodeError, EncodeError, Field, fast_items
 from .framing import (
     CHECKSUM_SIZE,
     HEADER_SIZE,
+    LENGTH_OFFSET,
     SET_OFFSET,
+    SYNC,
     FramingError,
     PacketBuilder,
     Parser,
@@ -24,6 +26,7 @@ from .framing import (
     Skip,
     TrailingBytes,
     _speedups,
+    checksum_bytes,
     iter_fields,
     parse,
 )
@@ -148,6 +151,8 @@ class Packet(_PacketBase):
 
 def decode_field(set_id: int, descriptor: int, data: bytes, device: Optional[str] = None) -> Entry:
     """Decode one field by (set, descriptor) with the dispatch rules of section 2."""
+    if device is not None and device not in registry.DEVICES:
+        check_device(device)
     classes = registry.lookup(set_id, descriptor)
     if classes is None:
         error = "unknown descriptor" if set_id in registry.SET_NAMES else "unknown descriptor set"
@@ -165,9 +170,8 @@ def decode_field(set_id: int, descriptor: int, data: bytes, device: Optional[str
     return RawField(descriptor, data, first_error or "")
 
 
-def decode_packet(packet: Any, offset: int = 0, device: Optional[str] = None) -> Packet:
-    """Decode a complete packet (as found by the Parser) into typed fields."""
-    packet = bytes(packet)
+def _decode_unchecked(packet: bytes, offset: int = 0, device: Optional[str] = None) -> Packet:
+    """decode_packet of a packet known to be whole (from the Parser): no checks."""
     set_id = packet[SET_OFFSET]
     fields: List[Entry] = []
     for f in iter_fields(set_id, packet[HEADER_SIZE:-CHECKSUM_SIZE]):
@@ -178,7 +182,65 @@ def decode_packet(packet: Any, offset: int = 0, device: Optional[str] = None) ->
     return Packet(offset, set_id, fields)
 
 
-_decode_packet_pure = decode_packet
+def check_device(device: Optional[str]) -> None:
+    """FramingError unless device is None or one of registry.DEVICES."""
+    if device is not None and device not in registry.DEVICES:
+        raise FramingError(f"unknown device {device!r} (expected None or one of {', '.join(registry.DEVICES)})")
+
+
+def packet_bytes(packet: Any) -> bytes:
+    """The bytes of a bytes-like packet (bytes, bytearray, memoryview, array); TypeError for others."""
+    try:
+        with memoryview(packet) as view:
+            return view.tobytes()
+    except TypeError:
+        raise TypeError(
+            f"packet must be bytes-like (bytes, bytearray, memoryview), not {type(packet).__name__}"
+        ) from None
+
+
+def decode_packet(packet: Any, offset: int = 0, device: Optional[str] = None, *, check: bool = True) -> Packet:
+    """Decode one complete packet (sync, header, payload, checksum) into typed fields.
+
+    `packet` is bytes-like. FramingError (a ValueError) names what is wrong with bad input: fewer
+    bytes than a header and checksum, an unknown `device`, and unless check=False, a packet that
+    does not start with the sync bytes, whose length byte disagrees with its size, or whose
+    checksum is wrong. With check=False the payload is the bytes between header and checksum."""
+    data = packet_bytes(packet)
+    check_device(device)
+    n = len(data)
+    if n < HEADER_SIZE + CHECKSUM_SIZE:
+        raise FramingError(
+            f"a packet of {n} bytes is shorter than a header and checksum ({HEADER_SIZE + CHECKSUM_SIZE} bytes)"
+        )
+    if check:
+        if data[: len(SYNC)] != SYNC:
+            raise FramingError(f"the packet does not start with the sync bytes {SYNC.hex(' ')}")
+        stated = data[LENGTH_OFFSET]
+        if HEADER_SIZE + stated + CHECKSUM_SIZE != n:
+            raise FramingError(
+                f"the length byte says {stated} payload bytes, the packet holds {n - HEADER_SIZE - CHECKSUM_SIZE}"
+                " (pass check=False to decode it anyway)"
+            )
+        expected = checksum_bytes(data[:-CHECKSUM_SIZE])
+        if data[-CHECKSUM_SIZE:] != expected:
+            raise FramingError(
+                f"checksum {data[-CHECKSUM_SIZE:].hex(' ')} is wrong, expected {expected.hex(' ')}"
+                " (pass check=False to decode it anyway)"
+            )
+    return _decode_event(data, offset, device)
+
+
+def _decode_event(packet: bytes, offset: int, device: Optional[str]) -> Packet:
+    """decode_packet of a packet the Parser found (whole, checksum verified): in C when it can."""
+    if _fast_decode_packet is not None and device is None:
+        fast: Packet = _fast_decode_packet(packet, offset)
+        return fast
+    return _decode_unchecked(packet, offset, device)
+
+
+_decode_packet_pure = _decode_unchecked
+_fast_decode_packet: Any = None
 
 
 def _program(set_id: int, descriptor: int) -> Any:
@@ -192,7 +254,7 @@ def _program(set_id: int, descriptor: int) -> Any:
 
 if _speedups is not None:
     _speedups.setup(RawPacket, Skip, Packet, DecodedField, _decode_packet_pure, decode_field, _program)
-    decode_packet = _speedups.decode_packet  # noqa: F811 - same contract, in C
+    _fast_decode_packet = _speedups.decode_packet  # the unchecked decode, in C
 
 
 DecodedEvent = Union["Packet", Skip]
@@ -207,6 +269,7 @@ class Decoder(Parser):
     """
 
     def __init__(self, device: Optional[str] = None) -> None:
+        check_device(device)
         super().__init__()
         self.device = device
 
@@ -223,7 +286,7 @@ class Decoder(Parser):
         if _speedups is None or self.device is not None:
             device = self.device
             return [
-                decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in super()._scan(final)
+                _decode_event(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in super()._scan(final)
             ]
         events: List[Any]
         events, pos, self._skip_at = _speedups.scan(self._buf, self._base, self._skip, self._skip_at, final, True)
@@ -238,10 +301,11 @@ def decode_all(data: BytesLike, device: Optional[str] = None) -> List[DecodedEve
     The same as `decode_packet(e.data, e.offset, device)` for each `RawPacket` of `parse(data)`, in
     one pass (in C, without the intermediate RawPacket objects, when the accelerator is built).
     """
+    check_device(device)
     if _speedups is not None and device is None:
         events: List[DecodedEvent] = _speedups.decode_all(data)
         return events
-    return [decode_packet(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in parse(data)]
+    return [_decode_event(e.data, e.offset, device) if isinstance(e, RawPacket) else e for e in parse(data)]
 
 
 # Column type codes of the C accelerator's tables, by item kind (see fast_items).
@@ -347,7 +411,8 @@ def event_line(event: Union[RawPacket, Skip], device: Optional[str] = None) -> s
     """The canonical JSON line of a parser event."""
     if isinstance(event, Skip):
         return skip_line(event.offset, event.data)
-    return decode_packet(event.data, event.offset, device).line()
+    check_device(device)
+    return _decode_event(event.data, event.offset, device).line()
 
 
 def decode_stream(chunks: Iterable[Any], device: Optional[str] = None) -> Iterable[str]:

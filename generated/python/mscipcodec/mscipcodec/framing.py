@@ -89,7 +89,17 @@ class PacketBuilder:
         self.payload = bytearray()
 
     def add(self, value: Field) -> PacketBuilder:
-        """Append a typed field value (anything with DESCRIPTOR and encode())."""
+        """Append a typed field value (a generated layout: DESCRIPTOR and encode()). A layout that
+        is not a field of this packet's descriptor set (its own, a reserved or a shared data field;
+        docs/conformance.md section 2) raises FramingError: its descriptor means another field here."""
+        from . import registry  # the dispatch tables (imported here: they import this module)
+
+        classes = registry.lookup(self.set, value.DESCRIPTOR)
+        if classes is None or type(value) not in classes:
+            name = getattr(type(value), "NAME", type(value).__name__)
+            raise FramingError(
+                f"{name} (descriptor 0x{value.DESCRIPTOR:02x}) is not a field of descriptor set 0x{self.set:02x}"
+            )
         return self.add_field(value.DESCRIPTOR, value.encode())
 
     def add_field(self, descriptor: int, data: BytesLike) -> PacketBuilder:

@@ -199,6 +199,7 @@ impl FrameConfig {
 
 impl crate::wire::Layout for FrameConfig {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "frame_config";
 }
 
@@ -339,6 +340,7 @@ impl FrameConfigResponse {
 
 impl crate::wire::Layout for FrameConfigResponse {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "frame_config_response";
 }
 
@@ -438,6 +440,7 @@ impl EchoControl {
 
 impl crate::wire::Layout for EchoControl {
     const DESCRIPTOR: u8 = 0x1F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "echo_control";
 }
 
@@ -505,6 +508,7 @@ impl EchoControlResponse {
 
 impl crate::wire::Layout for EchoControlResponse {
     const DESCRIPTOR: u8 = 0x9F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "echo_control_response";
 }
 
@@ -639,6 +643,7 @@ impl EcefPosition {
 
 impl crate::wire::Layout for EcefPosition {
     const DESCRIPTOR: u8 = 0x21;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "ecef_position";
 }
 
@@ -801,6 +806,7 @@ impl LlhPosition {
 
 impl crate::wire::Layout for LlhPosition {
     const DESCRIPTOR: u8 = 0x22;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "llh_position";
 }
 
@@ -931,6 +937,7 @@ impl HeightAboveEllipsoid {
 
 impl crate::wire::Layout for HeightAboveEllipsoid {
     const DESCRIPTOR: u8 = 0x23;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "height_above_ellipsoid";
 }
 
@@ -1065,6 +1072,7 @@ impl EcefVelocity {
 
 impl crate::wire::Layout for EcefVelocity {
     const DESCRIPTOR: u8 = 0x28;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "ecef_velocity";
 }
 
@@ -1199,6 +1207,7 @@ impl NedVelocity {
 
 impl crate::wire::Layout for NedVelocity {
     const DESCRIPTOR: u8 = 0x29;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "ned_velocity";
 }
 
@@ -1333,6 +1342,7 @@ impl BodyFrameVelocity {
 
 impl crate::wire::Layout for BodyFrameVelocity {
     const DESCRIPTOR: u8 = 0x2A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "body_frame_velocity";
 }
 
@@ -1463,6 +1473,7 @@ impl TrueHeading {
 
 impl crate::wire::Layout for TrueHeading {
     const DESCRIPTOR: u8 = 0x31;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "true_heading";
 }
 
@@ -1603,6 +1614,7 @@ impl MagneticField {
 
 impl crate::wire::Layout for MagneticField {
     const DESCRIPTOR: u8 = 0x32;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "magnetic_field";
 }
 
@@ -1733,6 +1745,7 @@ impl Pressure {
 
 impl crate::wire::Layout for Pressure {
     const DESCRIPTOR: u8 = 0x33;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x13);
     const NAME: &'static str = "pressure";
 }
 

@@ -54,6 +54,7 @@ impl Ping {
 
 impl crate::wire::Layout for Ping {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "ping";
 }
 
@@ -105,6 +106,7 @@ impl SetToIdle {
 
 impl crate::wire::Layout for SetToIdle {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "set_to_idle";
 }
 
@@ -156,6 +158,7 @@ impl GetDeviceInfo {
 
 impl crate::wire::Layout for GetDeviceInfo {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_info";
 }
 
@@ -223,6 +226,7 @@ impl DeviceInfo {
 
 impl crate::wire::Layout for DeviceInfo {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_info";
 }
 
@@ -274,6 +278,7 @@ impl GetDeviceDescriptors {
 
 impl crate::wire::Layout for GetDeviceDescriptors {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_descriptors";
 }
 
@@ -345,6 +350,7 @@ impl DeviceDescriptors {
 
 impl crate::wire::Layout for DeviceDescriptors {
     const DESCRIPTOR: u8 = 0x82;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_descriptors";
 }
 
@@ -396,6 +402,7 @@ impl BuiltInTest {
 
 impl crate::wire::Layout for BuiltInTest {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "built_in_test";
 }
 
@@ -463,6 +470,7 @@ impl BuiltInTestResultGx5_45 {
 
 impl crate::wire::Layout for BuiltInTestResultGx5_45 {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "built_in_test_result";
 }
 
@@ -530,6 +538,7 @@ impl BuiltInTestResultCv7Ins {
 
 impl crate::wire::Layout for BuiltInTestResultCv7Ins {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "built_in_test_result";
 }
 
@@ -671,6 +680,7 @@ impl Resume {
 
 impl crate::wire::Layout for Resume {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "resume";
 }
 
@@ -722,6 +732,7 @@ impl GetExtendedDescriptors {
 
 impl crate::wire::Layout for GetExtendedDescriptors {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_extended_descriptors";
 }
 
@@ -793,6 +804,7 @@ impl ExtendedDescriptors {
 
 impl crate::wire::Layout for ExtendedDescriptors {
     const DESCRIPTOR: u8 = 0x86;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "extended_descriptors";
 }
 
@@ -844,6 +856,7 @@ impl ContinuousBit {
 
 impl crate::wire::Layout for ContinuousBit {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "continuous_bit";
 }
 
@@ -911,6 +924,7 @@ impl ContinuousBitResult {
 
 impl crate::wire::Layout for ContinuousBitResult {
     const DESCRIPTOR: u8 = 0x88;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "continuous_bit_result";
 }
 
@@ -1016,6 +1030,7 @@ impl CommPortSpeed {
 
 impl crate::wire::Layout for CommPortSpeed {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "comm_port_speed";
 }
 
@@ -1095,6 +1110,7 @@ impl CommPortSpeedResponse {
 
 impl crate::wire::Layout for CommPortSpeedResponse {
     const DESCRIPTOR: u8 = 0x89;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "comm_port_speed_response";
 }
 
@@ -1204,6 +1220,7 @@ impl GpsTimeUpdateGx5_45 {
 
 impl crate::wire::Layout for GpsTimeUpdateGx5_45 {
     const DESCRIPTOR: u8 = 0x72;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "gps_time_update";
 }
 
@@ -1303,6 +1320,7 @@ impl GpsTimeUpdateCv7Ins {
 
 impl crate::wire::Layout for GpsTimeUpdateCv7Ins {
     const DESCRIPTOR: u8 = 0x72;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "gps_time_update";
 }
 
@@ -1456,6 +1474,7 @@ impl GpsWeek {
 
 impl crate::wire::Layout for GpsWeek {
     const DESCRIPTOR: u8 = 0x84;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "gps_week";
 }
 
@@ -1519,6 +1538,7 @@ impl GpsSeconds {
 
 impl crate::wire::Layout for GpsSeconds {
     const DESCRIPTOR: u8 = 0x85;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "gps_seconds";
 }
 
@@ -1570,6 +1590,7 @@ impl DeviceReset {
 
 impl crate::wire::Layout for DeviceReset {
     const DESCRIPTOR: u8 = 0x7E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_reset";
 }
 

@@ -54,6 +54,7 @@ impl ResetFilter {
 
 impl crate::wire::Layout for ResetFilter {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "reset_filter";
 }
 
@@ -145,6 +146,7 @@ impl SetInitialAttitude {
 
 impl crate::wire::Layout for SetInitialAttitude {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "set_initial_attitude";
 }
 
@@ -208,6 +210,7 @@ impl SetInitialHeading {
 
 impl crate::wire::Layout for SetInitialHeading {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "set_initial_heading";
 }
 
@@ -259,6 +262,7 @@ impl RunFilter {
 
 impl crate::wire::Layout for RunFilter {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "run_filter";
 }
 
@@ -358,6 +362,7 @@ impl VehicleDynamicsMode {
 
 impl crate::wire::Layout for VehicleDynamicsMode {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "vehicle_dynamics_mode";
 }
 
@@ -425,6 +430,7 @@ impl VehicleDynamicsModeResponse {
 
 impl crate::wire::Layout for VehicleDynamicsModeResponse {
     const DESCRIPTOR: u8 = 0x80;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "vehicle_dynamics_mode_response";
 }
 
@@ -560,6 +566,7 @@ impl SensorToVehicleTransform {
 
 impl crate::wire::Layout for SensorToVehicleTransform {
     const DESCRIPTOR: u8 = 0x11;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "sensor_to_vehicle_transform";
 }
 
@@ -651,6 +658,7 @@ impl SensorToVehicleTransformResponse {
 
 impl crate::wire::Layout for SensorToVehicleTransformResponse {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "sensor_to_vehicle_transform_response";
 }
 
@@ -747,6 +755,7 @@ impl SensorToVehicleOffset {
 
 impl crate::wire::Layout for SensorToVehicleOffset {
     const DESCRIPTOR: u8 = 0x12;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "sensor_to_vehicle_offset";
 }
 
@@ -813,6 +822,7 @@ impl SensorToVehicleOffsetResponse {
 
 impl crate::wire::Layout for SensorToVehicleOffsetResponse {
     const DESCRIPTOR: u8 = 0x82;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "sensor_to_vehicle_offset_response";
 }
 
@@ -909,6 +919,7 @@ impl AntennaOffset {
 
 impl crate::wire::Layout for AntennaOffset {
     const DESCRIPTOR: u8 = 0x13;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "antenna_offset";
 }
 
@@ -975,6 +986,7 @@ impl AntennaOffsetResponse {
 
 impl crate::wire::Layout for AntennaOffsetResponse {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "antenna_offset_response";
 }
 
@@ -1074,6 +1086,7 @@ impl EstimationControl {
 
 impl crate::wire::Layout for EstimationControl {
     const DESCRIPTOR: u8 = 0x14;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "estimation_control";
 }
 
@@ -1141,6 +1154,7 @@ impl EstimationControlResponse {
 
 impl crate::wire::Layout for EstimationControlResponse {
     const DESCRIPTOR: u8 = 0x84;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "estimation_control_response";
 }
 
@@ -1240,6 +1254,7 @@ impl GnssSourceControl {
 
 impl crate::wire::Layout for GnssSourceControl {
     const DESCRIPTOR: u8 = 0x15;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gnss_source_control";
 }
 
@@ -1307,6 +1322,7 @@ impl GnssSourceControlResponse {
 
 impl crate::wire::Layout for GnssSourceControlResponse {
     const DESCRIPTOR: u8 = 0x86;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gnss_source_control_response";
 }
 
@@ -1482,6 +1498,7 @@ impl ExternalGnssUpdate {
 
 impl crate::wire::Layout for ExternalGnssUpdate {
     const DESCRIPTOR: u8 = 0x16;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "external_gnss_update";
 }
 
@@ -1581,6 +1598,7 @@ impl ExternalHeadingUpdate {
 
 impl crate::wire::Layout for ExternalHeadingUpdate {
     const DESCRIPTOR: u8 = 0x17;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "external_heading_update";
 }
 
@@ -1680,6 +1698,7 @@ impl HeadingUpdateControl {
 
 impl crate::wire::Layout for HeadingUpdateControl {
     const DESCRIPTOR: u8 = 0x18;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "heading_update_control";
 }
 
@@ -1747,6 +1766,7 @@ impl HeadingUpdateControlResponse {
 
 impl crate::wire::Layout for HeadingUpdateControlResponse {
     const DESCRIPTOR: u8 = 0x87;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "heading_update_control_response";
 }
 
@@ -1840,6 +1860,7 @@ impl AutoInitControl {
 
 impl crate::wire::Layout for AutoInitControl {
     const DESCRIPTOR: u8 = 0x19;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "auto_init_control";
 }
 
@@ -1903,6 +1924,7 @@ impl AutoInitControlResponse {
 
 impl crate::wire::Layout for AutoInitControlResponse {
     const DESCRIPTOR: u8 = 0x88;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "auto_init_control_response";
 }
 
@@ -1996,6 +2018,7 @@ impl AccelNoise {
 
 impl crate::wire::Layout for AccelNoise {
     const DESCRIPTOR: u8 = 0x1A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "accel_noise";
 }
 
@@ -2059,6 +2082,7 @@ impl AccelNoiseResponse {
 
 impl crate::wire::Layout for AccelNoiseResponse {
     const DESCRIPTOR: u8 = 0x89;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "accel_noise_response";
 }
 
@@ -2152,6 +2176,7 @@ impl GyroNoise {
 
 impl crate::wire::Layout for GyroNoise {
     const DESCRIPTOR: u8 = 0x1B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gyro_noise";
 }
 
@@ -2215,6 +2240,7 @@ impl GyroNoiseResponse {
 
 impl crate::wire::Layout for GyroNoiseResponse {
     const DESCRIPTOR: u8 = 0x8A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gyro_noise_response";
 }
 
@@ -2329,6 +2355,7 @@ impl AccelBiasModel {
 
 impl crate::wire::Layout for AccelBiasModel {
     const DESCRIPTOR: u8 = 0x1C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "accel_bias_model";
 }
 
@@ -2408,6 +2435,7 @@ impl AccelBiasModelResponse {
 
 impl crate::wire::Layout for AccelBiasModelResponse {
     const DESCRIPTOR: u8 = 0x8B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "accel_bias_model_response";
 }
 
@@ -2522,6 +2550,7 @@ impl GyroBiasModel {
 
 impl crate::wire::Layout for GyroBiasModel {
     const DESCRIPTOR: u8 = 0x1D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gyro_bias_model";
 }
 
@@ -2601,6 +2630,7 @@ impl GyroBiasModelResponse {
 
 impl crate::wire::Layout for GyroBiasModelResponse {
     const DESCRIPTOR: u8 = 0x8C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gyro_bias_model_response";
 }
 
@@ -2715,6 +2745,7 @@ impl ZuptControl {
 
 impl crate::wire::Layout for ZuptControl {
     const DESCRIPTOR: u8 = 0x1E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "zupt_control";
 }
 
@@ -2794,6 +2825,7 @@ impl ZuptControlResponse {
 
 impl crate::wire::Layout for ZuptControlResponse {
     const DESCRIPTOR: u8 = 0x8D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "zupt_control_response";
 }
 
@@ -2926,6 +2958,7 @@ impl ExternalHeadingUpdateWithTime {
 
 impl crate::wire::Layout for ExternalHeadingUpdateWithTime {
     const DESCRIPTOR: u8 = 0x1F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "external_heading_update_with_time";
 }
 
@@ -3040,6 +3073,7 @@ impl ZeroAngularRateUpdateControl {
 
 impl crate::wire::Layout for ZeroAngularRateUpdateControl {
     const DESCRIPTOR: u8 = 0x20;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "zero_angular_rate_update_control";
 }
 
@@ -3119,6 +3153,7 @@ impl ZeroAngularRateUpdateControlResponse {
 
 impl crate::wire::Layout for ZeroAngularRateUpdateControlResponse {
     const DESCRIPTOR: u8 = 0x8E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "zero_angular_rate_update_control_response";
 }
 
@@ -3218,6 +3253,7 @@ impl TareOrientation {
 
 impl crate::wire::Layout for TareOrientation {
     const DESCRIPTOR: u8 = 0x21;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "tare_orientation";
 }
 
@@ -3269,6 +3305,7 @@ impl CommandedZupt {
 
 impl crate::wire::Layout for CommandedZupt {
     const DESCRIPTOR: u8 = 0x22;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "commanded_zupt";
 }
 
@@ -3320,6 +3357,7 @@ impl CommandedZeroAngularRateUpdate {
 
 impl crate::wire::Layout for CommandedZeroAngularRateUpdate {
     const DESCRIPTOR: u8 = 0x23;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "commanded_zero_angular_rate_update";
 }
 
@@ -3391,6 +3429,7 @@ impl MagCaptureAutoCalibration {
 
 impl crate::wire::Layout for MagCaptureAutoCalibration {
     const DESCRIPTOR: u8 = 0x27;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_capture_auto_calibration";
 }
 
@@ -3484,6 +3523,7 @@ impl GravityNoiseStdDev {
 
 impl crate::wire::Layout for GravityNoiseStdDev {
     const DESCRIPTOR: u8 = 0x28;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gravity_noise_std_dev";
 }
 
@@ -3547,6 +3587,7 @@ impl GravityNoiseStdDevResponse {
 
 impl crate::wire::Layout for GravityNoiseStdDevResponse {
     const DESCRIPTOR: u8 = 0x93;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gravity_noise_std_dev_response";
 }
 
@@ -3640,6 +3681,7 @@ impl PressureAltitudeNoiseStdDev {
 
 impl crate::wire::Layout for PressureAltitudeNoiseStdDev {
     const DESCRIPTOR: u8 = 0x29;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "pressure_altitude_noise_std_dev";
 }
 
@@ -3703,6 +3745,7 @@ impl PressureAltitudeNoiseStdDevResponse {
 
 impl crate::wire::Layout for PressureAltitudeNoiseStdDevResponse {
     const DESCRIPTOR: u8 = 0x94;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "pressure_altitude_noise_std_dev_response";
 }
 
@@ -3796,6 +3839,7 @@ impl HardIronOffsetNoise {
 
 impl crate::wire::Layout for HardIronOffsetNoise {
     const DESCRIPTOR: u8 = 0x2B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "hard_iron_offset_noise";
 }
 
@@ -3859,6 +3903,7 @@ impl HardIronOffsetNoiseResponse {
 
 impl crate::wire::Layout for HardIronOffsetNoiseResponse {
     const DESCRIPTOR: u8 = 0x96;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "hard_iron_offset_noise_response";
 }
 
@@ -3952,6 +3997,7 @@ impl SoftIronMatrixNoise {
 
 impl crate::wire::Layout for SoftIronMatrixNoise {
     const DESCRIPTOR: u8 = 0x2C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "soft_iron_matrix_noise";
 }
 
@@ -4015,6 +4061,7 @@ impl SoftIronMatrixNoiseResponse {
 
 impl crate::wire::Layout for SoftIronMatrixNoiseResponse {
     const DESCRIPTOR: u8 = 0x97;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "soft_iron_matrix_noise_response";
 }
 
@@ -4108,6 +4155,7 @@ impl MagNoiseStdDev {
 
 impl crate::wire::Layout for MagNoiseStdDev {
     const DESCRIPTOR: u8 = 0x42;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_noise_std_dev";
 }
 
@@ -4171,6 +4219,7 @@ impl MagNoiseStdDevResponse {
 
 impl crate::wire::Layout for MagNoiseStdDevResponse {
     const DESCRIPTOR: u8 = 0xB1;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_noise_std_dev_response";
 }
 
@@ -4294,6 +4343,7 @@ impl DeclinationSource {
 
 impl crate::wire::Layout for DeclinationSource {
     const DESCRIPTOR: u8 = 0x43;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "declination_source";
 }
 
@@ -4381,6 +4431,7 @@ impl DeclinationSourceResponse {
 
 impl crate::wire::Layout for DeclinationSourceResponse {
     const DESCRIPTOR: u8 = 0xB2;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "declination_source_response";
 }
 
@@ -4630,6 +4681,7 @@ impl GravityMagnitudeAdaptiveMeasurement {
 
 impl crate::wire::Layout for GravityMagnitudeAdaptiveMeasurement {
     const DESCRIPTOR: u8 = 0x44;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gravity_magnitude_adaptive_measurement";
 }
 
@@ -4796,6 +4848,7 @@ impl GravityMagnitudeAdaptiveMeasurementResponse {
 
 impl crate::wire::Layout for GravityMagnitudeAdaptiveMeasurementResponse {
     const DESCRIPTOR: u8 = 0xB3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gravity_magnitude_adaptive_measurement_response";
 }
 
@@ -5045,6 +5098,7 @@ impl MagMagnitudeAdaptiveMeasurement {
 
 impl crate::wire::Layout for MagMagnitudeAdaptiveMeasurement {
     const DESCRIPTOR: u8 = 0x45;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_magnitude_adaptive_measurement";
 }
 
@@ -5211,6 +5265,7 @@ impl MagMagnitudeAdaptiveMeasurementResponse {
 
 impl crate::wire::Layout for MagMagnitudeAdaptiveMeasurementResponse {
     const DESCRIPTOR: u8 = 0xB4;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_magnitude_adaptive_measurement_response";
 }
 
@@ -5413,6 +5468,7 @@ impl MagDipAngleAdaptiveMeasurement {
 
 impl crate::wire::Layout for MagDipAngleAdaptiveMeasurement {
     const DESCRIPTOR: u8 = 0x46;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_dip_angle_adaptive_measurement";
 }
 
@@ -5549,6 +5605,7 @@ impl MagDipAngleAdaptiveMeasurementResponse {
 
 impl crate::wire::Layout for MagDipAngleAdaptiveMeasurementResponse {
     const DESCRIPTOR: u8 = 0xB5;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "mag_dip_angle_adaptive_measurement_response";
 }
 
@@ -5648,6 +5705,7 @@ impl AltitudeAidingControl {
 
 impl crate::wire::Layout for AltitudeAidingControl {
     const DESCRIPTOR: u8 = 0x47;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "altitude_aiding_control";
 }
 
@@ -5715,6 +5773,7 @@ impl AltitudeAidingControlResponse {
 
 impl crate::wire::Layout for AltitudeAidingControlResponse {
     const DESCRIPTOR: u8 = 0xB7;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "altitude_aiding_control_response";
 }
 
@@ -5814,6 +5873,7 @@ impl PitchRollAidingControl {
 
 impl crate::wire::Layout for PitchRollAidingControl {
     const DESCRIPTOR: u8 = 0x4B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "pitch_roll_aiding_control";
 }
 
@@ -5881,6 +5941,7 @@ impl PitchRollAidingControlResponse {
 
 impl crate::wire::Layout for PitchRollAidingControlResponse {
     const DESCRIPTOR: u8 = 0xBB;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "pitch_roll_aiding_control_response";
 }
 
@@ -6004,6 +6065,7 @@ impl InclinationSource {
 
 impl crate::wire::Layout for InclinationSource {
     const DESCRIPTOR: u8 = 0x4C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "inclination_source";
 }
 
@@ -6091,6 +6153,7 @@ impl InclinationSourceResponse {
 
 impl crate::wire::Layout for InclinationSourceResponse {
     const DESCRIPTOR: u8 = 0xBC;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "inclination_source_response";
 }
 
@@ -6211,6 +6274,7 @@ impl MagneticFieldMagnitudeSource {
 
 impl crate::wire::Layout for MagneticFieldMagnitudeSource {
     const DESCRIPTOR: u8 = 0x4D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "magnetic_field_magnitude_source";
 }
 
@@ -6294,6 +6358,7 @@ impl MagneticFieldMagnitudeSourceResponse {
 
 impl crate::wire::Layout for MagneticFieldMagnitudeSourceResponse {
     const DESCRIPTOR: u8 = 0xBD;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "magnetic_field_magnitude_source_response";
 }
 
@@ -6403,6 +6468,7 @@ impl AidingMeasurementControl {
 
 impl crate::wire::Layout for AidingMeasurementControl {
     const DESCRIPTOR: u8 = 0x50;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "aiding_measurement_control";
 }
 
@@ -6486,6 +6552,7 @@ impl AidingMeasurementControlResponse {
 
 impl crate::wire::Layout for AidingMeasurementControlResponse {
     const DESCRIPTOR: u8 = 0xD0;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "aiding_measurement_control_response";
 }
 
@@ -6797,6 +6864,7 @@ impl InitializationConfiguration {
 
 impl crate::wire::Layout for InitializationConfiguration {
     const DESCRIPTOR: u8 = 0x52;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "initialization_configuration";
 }
 
@@ -7013,6 +7081,7 @@ impl InitializationConfigurationResponse {
 
 impl crate::wire::Layout for InitializationConfigurationResponse {
     const DESCRIPTOR: u8 = 0xD2;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "initialization_configuration_response";
 }
 
@@ -7133,6 +7202,7 @@ impl AdaptiveFilterControl {
 
 impl crate::wire::Layout for AdaptiveFilterControl {
     const DESCRIPTOR: u8 = 0x53;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "adaptive_filter_control";
 }
 
@@ -7216,6 +7286,7 @@ impl AdaptiveFilterControlResponse {
 
 impl crate::wire::Layout for AdaptiveFilterControlResponse {
     const DESCRIPTOR: u8 = 0xD3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "adaptive_filter_control_response";
 }
 
@@ -7325,6 +7396,7 @@ impl MultiAntennaOffset {
 
 impl crate::wire::Layout for MultiAntennaOffset {
     const DESCRIPTOR: u8 = 0x54;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "multi_antenna_offset";
 }
 
@@ -7409,6 +7481,7 @@ impl MultiAntennaOffsetResponse {
 
 impl crate::wire::Layout for MultiAntennaOffsetResponse {
     const DESCRIPTOR: u8 = 0xD4;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "multi_antenna_offset_response";
 }
 
@@ -7570,6 +7643,7 @@ impl RelativePositionConfiguration {
 
 impl crate::wire::Layout for RelativePositionConfiguration {
     const DESCRIPTOR: u8 = 0x55;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "relative_position_configuration";
 }
 
@@ -7681,6 +7755,7 @@ impl RelativePositionConfigurationResponse {
 
 impl crate::wire::Layout for RelativePositionConfigurationResponse {
     const DESCRIPTOR: u8 = 0xD5;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "relative_position_configuration_response";
 }
 
@@ -7804,6 +7879,7 @@ impl ReferencePointLeverArm {
 
 impl crate::wire::Layout for ReferencePointLeverArm {
     const DESCRIPTOR: u8 = 0x56;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "reference_point_lever_arm";
 }
 
@@ -7892,6 +7968,7 @@ impl ReferencePointLeverArmResponse {
 
 impl crate::wire::Layout for ReferencePointLeverArmResponse {
     const DESCRIPTOR: u8 = 0xD6;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "reference_point_lever_arm_response";
 }
 
@@ -8000,6 +8077,7 @@ impl SpeedLeverArm {
 
 impl crate::wire::Layout for SpeedLeverArm {
     const DESCRIPTOR: u8 = 0x61;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "speed_lever_arm";
 }
 
@@ -8083,6 +8161,7 @@ impl SpeedLeverArmResponse {
 
 impl crate::wire::Layout for SpeedLeverArmResponse {
     const DESCRIPTOR: u8 = 0xE1;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "speed_lever_arm_response";
 }
 
@@ -8176,6 +8255,7 @@ impl WheeledVehicleConstraintControl {
 
 impl crate::wire::Layout for WheeledVehicleConstraintControl {
     const DESCRIPTOR: u8 = 0x63;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "wheeled_vehicle_constraint_control";
 }
 
@@ -8239,6 +8319,7 @@ impl WheeledVehicleConstraintControlResponse {
 
 impl crate::wire::Layout for WheeledVehicleConstraintControlResponse {
     const DESCRIPTOR: u8 = 0xE3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "wheeled_vehicle_constraint_control_response";
 }
 
@@ -8353,6 +8434,7 @@ impl GnssAntennaCalibrationControl {
 
 impl crate::wire::Layout for GnssAntennaCalibrationControl {
     const DESCRIPTOR: u8 = 0x64;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gnss_antenna_calibration_control";
 }
 
@@ -8432,6 +8514,7 @@ impl GnssAntennaCalibrationControlResponse {
 
 impl crate::wire::Layout for GnssAntennaCalibrationControlResponse {
     const DESCRIPTOR: u8 = 0xE4;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0D);
     const NAME: &'static str = "gnss_antenna_calibration_control_response";
 }
 

@@ -117,6 +117,7 @@ impl LlhPosition {
 
 impl crate::wire::Layout for LlhPosition {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "llh_position";
 }
 
@@ -224,6 +225,7 @@ impl NedVelocity {
 
 impl crate::wire::Layout for NedVelocity {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ned_velocity";
 }
 
@@ -307,6 +309,7 @@ impl AttitudeQuaternion {
 
 impl crate::wire::Layout for AttitudeQuaternion {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "attitude_quaternion";
 }
 
@@ -390,6 +393,7 @@ impl AttitudeDcm {
 
 impl crate::wire::Layout for AttitudeDcm {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "attitude_dcm";
 }
 
@@ -497,6 +501,7 @@ impl EulerAngles {
 
 impl crate::wire::Layout for EulerAngles {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "euler_angles";
 }
 
@@ -580,6 +585,7 @@ impl GyroBias {
 
 impl crate::wire::Layout for GyroBias {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gyro_bias";
 }
 
@@ -663,6 +669,7 @@ impl AccelBias {
 
 impl crate::wire::Layout for AccelBias {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "accel_bias";
 }
 
@@ -770,6 +777,7 @@ impl LlhPositionUncertainty {
 
 impl crate::wire::Layout for LlhPositionUncertainty {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "llh_position_uncertainty";
 }
 
@@ -877,6 +885,7 @@ impl NedVelocityUncertainty {
 
 impl crate::wire::Layout for NedVelocityUncertainty {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ned_velocity_uncertainty";
 }
 
@@ -984,6 +993,7 @@ impl EulerAnglesUncertainty {
 
 impl crate::wire::Layout for EulerAnglesUncertainty {
     const DESCRIPTOR: u8 = 0x0A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "euler_angles_uncertainty";
 }
 
@@ -1071,6 +1081,7 @@ impl GyroBiasUncertainty {
 
 impl crate::wire::Layout for GyroBiasUncertainty {
     const DESCRIPTOR: u8 = 0x0B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gyro_bias_uncertainty";
 }
 
@@ -1158,6 +1169,7 @@ impl AccelBiasUncertainty {
 
 impl crate::wire::Layout for AccelBiasUncertainty {
     const DESCRIPTOR: u8 = 0x0C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "accel_bias_uncertainty";
 }
 
@@ -1241,6 +1253,7 @@ impl LinearAccel {
 
 impl crate::wire::Layout for LinearAccel {
     const DESCRIPTOR: u8 = 0x0D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "linear_accel";
 }
 
@@ -1324,6 +1337,7 @@ impl CompAngularRate {
 
 impl crate::wire::Layout for CompAngularRate {
     const DESCRIPTOR: u8 = 0x0E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "comp_angular_rate";
 }
 
@@ -1411,6 +1425,7 @@ impl Wgs84GravityMagnitude {
 
 impl crate::wire::Layout for Wgs84GravityMagnitude {
     const DESCRIPTOR: u8 = 0x0F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "wgs84_gravity_magnitude";
 }
 
@@ -1514,6 +1529,7 @@ impl FilterStatusGx5_45 {
 
 impl crate::wire::Layout for FilterStatusGx5_45 {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "filter_status";
 }
 
@@ -1617,6 +1633,7 @@ impl FilterStatusCv7Ins {
 
 impl crate::wire::Layout for FilterStatusCv7Ins {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "filter_status";
 }
 
@@ -1806,6 +1823,7 @@ impl GpsTimestamp {
 
 impl crate::wire::Layout for GpsTimestamp {
     const DESCRIPTOR: u8 = 0x11;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gps_timestamp";
 }
 
@@ -1889,6 +1907,7 @@ impl QuaternionAttitudeUncertainty {
 
 impl crate::wire::Layout for QuaternionAttitudeUncertainty {
     const DESCRIPTOR: u8 = 0x12;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "quaternion_attitude_uncertainty";
 }
 
@@ -1975,6 +1994,7 @@ impl GravityVector {
 
 impl crate::wire::Layout for GravityVector {
     const DESCRIPTOR: u8 = 0x13;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gravity_vector";
 }
 
@@ -2094,6 +2114,7 @@ impl HeadingUpdateState {
 
 impl crate::wire::Layout for HeadingUpdateState {
     const DESCRIPTOR: u8 = 0x14;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "heading_update_state";
 }
 
@@ -2255,6 +2276,7 @@ impl MagneticModel {
 
 impl crate::wire::Layout for MagneticModel {
     const DESCRIPTOR: u8 = 0x15;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "magnetic_model";
 }
 
@@ -2342,6 +2364,7 @@ impl GyroScaleFactor {
 
 impl crate::wire::Layout for GyroScaleFactor {
     const DESCRIPTOR: u8 = 0x16;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gyro_scale_factor";
 }
 
@@ -2429,6 +2452,7 @@ impl AccelScaleFactor {
 
 impl crate::wire::Layout for AccelScaleFactor {
     const DESCRIPTOR: u8 = 0x17;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "accel_scale_factor";
 }
 
@@ -2516,6 +2540,7 @@ impl GyroScaleFactorUncertainty {
 
 impl crate::wire::Layout for GyroScaleFactorUncertainty {
     const DESCRIPTOR: u8 = 0x18;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gyro_scale_factor_uncertainty";
 }
 
@@ -2603,6 +2628,7 @@ impl AccelScaleFactorUncertainty {
 
 impl crate::wire::Layout for AccelScaleFactorUncertainty {
     const DESCRIPTOR: u8 = 0x19;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "accel_scale_factor_uncertainty";
 }
 
@@ -2686,6 +2712,7 @@ impl CompensatedAccel {
 
 impl crate::wire::Layout for CompensatedAccel {
     const DESCRIPTOR: u8 = 0x1C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "compensated_accel";
 }
 
@@ -2839,6 +2866,7 @@ impl StandardAtmosphere {
 
 impl crate::wire::Layout for StandardAtmosphere {
     const DESCRIPTOR: u8 = 0x20;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "standard_atmosphere";
 }
 
@@ -2926,6 +2954,7 @@ impl PressureAltitude {
 
 impl crate::wire::Layout for PressureAltitude {
     const DESCRIPTOR: u8 = 0x21;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "pressure_altitude";
 }
 
@@ -3013,6 +3042,7 @@ impl MagAutoHardIronOffset {
 
 impl crate::wire::Layout for MagAutoHardIronOffset {
     const DESCRIPTOR: u8 = 0x25;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "mag_auto_hard_iron_offset";
 }
 
@@ -3100,6 +3130,7 @@ impl MagAutoSoftIronMatrix {
 
 impl crate::wire::Layout for MagAutoSoftIronMatrix {
     const DESCRIPTOR: u8 = 0x26;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "mag_auto_soft_iron_matrix";
 }
 
@@ -3187,6 +3218,7 @@ impl MagAutoHardIronOffsetUncertainty {
 
 impl crate::wire::Layout for MagAutoHardIronOffsetUncertainty {
     const DESCRIPTOR: u8 = 0x28;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "mag_auto_hard_iron_offset_uncertainty";
 }
 
@@ -3274,6 +3306,7 @@ impl MagAutoSoftIronMatrixUncertainty {
 
 impl crate::wire::Layout for MagAutoSoftIronMatrixUncertainty {
     const DESCRIPTOR: u8 = 0x29;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "mag_auto_soft_iron_matrix_uncertainty";
 }
 
@@ -3360,6 +3393,7 @@ impl GnssAntennaOffsetCorrection {
 
 impl crate::wire::Layout for GnssAntennaOffsetCorrection {
     const DESCRIPTOR: u8 = 0x30;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gnss_antenna_offset_correction";
 }
 
@@ -3447,6 +3481,7 @@ impl GnssAntennaOffsetCorrectionUncertainty {
 
 impl crate::wire::Layout for GnssAntennaOffsetCorrectionUncertainty {
     const DESCRIPTOR: u8 = 0x31;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gnss_antenna_offset_correction_uncertainty";
 }
 
@@ -3546,6 +3581,7 @@ impl MultiAntennaOffsetCorrection {
 
 impl crate::wire::Layout for MultiAntennaOffsetCorrection {
     const DESCRIPTOR: u8 = 0x34;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "multi_antenna_offset_correction";
 }
 
@@ -3647,6 +3683,7 @@ impl MultiAntennaOffsetCorrectionUncertainty {
 
 impl crate::wire::Layout for MultiAntennaOffsetCorrectionUncertainty {
     const DESCRIPTOR: u8 = 0x35;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "multi_antenna_offset_correction_uncertainty";
 }
 
@@ -3734,6 +3771,7 @@ impl EcefPositionUncertainty {
 
 impl crate::wire::Layout for EcefPositionUncertainty {
     const DESCRIPTOR: u8 = 0x36;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ecef_position_uncertainty";
 }
 
@@ -3821,6 +3859,7 @@ impl EcefVelocityUncertainty {
 
 impl crate::wire::Layout for EcefVelocityUncertainty {
     const DESCRIPTOR: u8 = 0x37;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ecef_velocity_uncertainty";
 }
 
@@ -3908,6 +3947,7 @@ impl EcefPosition {
 
 impl crate::wire::Layout for EcefPosition {
     const DESCRIPTOR: u8 = 0x40;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ecef_position";
 }
 
@@ -3995,6 +4035,7 @@ impl EcefVelocity {
 
 impl crate::wire::Layout for EcefVelocity {
     const DESCRIPTOR: u8 = 0x41;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ecef_velocity";
 }
 
@@ -4082,6 +4123,7 @@ impl NedRelativePosition {
 
 impl crate::wire::Layout for NedRelativePosition {
     const DESCRIPTOR: u8 = 0x42;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "ned_relative_position";
 }
 
@@ -4198,6 +4240,7 @@ impl GnssPositionAidingStatus {
 
 impl crate::wire::Layout for GnssPositionAidingStatus {
     const DESCRIPTOR: u8 = 0x43;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gnss_position_aiding_status";
 }
 
@@ -4311,6 +4354,7 @@ impl AidingMeasurementSummary {
 
 impl crate::wire::Layout for AidingMeasurementSummary {
     const DESCRIPTOR: u8 = 0x46;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "aiding_measurement_summary";
 }
 
@@ -4398,6 +4442,7 @@ impl OdometerScaleFactorError {
 
 impl crate::wire::Layout for OdometerScaleFactorError {
     const DESCRIPTOR: u8 = 0x47;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "odometer_scale_factor_error";
 }
 
@@ -4485,6 +4530,7 @@ impl OdometerScaleFactorErrorUncertainty {
 
 impl crate::wire::Layout for OdometerScaleFactorErrorUncertainty {
     const DESCRIPTOR: u8 = 0x48;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "odometer_scale_factor_error_uncertainty";
 }
 
@@ -4643,6 +4689,7 @@ impl GnssDualAntennaStatus {
 
 impl crate::wire::Layout for GnssDualAntennaStatus {
     const DESCRIPTOR: u8 = 0x49;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "gnss_dual_antenna_status";
 }
 
@@ -4742,6 +4789,7 @@ impl AidingFrameConfigError {
 
 impl crate::wire::Layout for AidingFrameConfigError {
     const DESCRIPTOR: u8 = 0x50;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "aiding_frame_config_error";
 }
 
@@ -4848,6 +4896,7 @@ impl AidingFrameConfigErrorUncertainty {
 
 impl crate::wire::Layout for AidingFrameConfigErrorUncertainty {
     const DESCRIPTOR: u8 = 0x51;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x82);
     const NAME: &'static str = "aiding_frame_config_error_uncertainty";
 }
 

@@ -54,6 +54,7 @@ impl ReceiverInfo {
 
 impl crate::wire::Layout for ReceiverInfo {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0E);
     const NAME: &'static str = "receiver_info";
 }
 
@@ -143,6 +144,7 @@ impl ReceiverInfoResponse {
 
 impl crate::wire::Layout for ReceiverInfoResponse {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0E);
     const NAME: &'static str = "receiver_info_response";
 }
 
@@ -357,6 +359,7 @@ impl SignalConfiguration {
 
 impl crate::wire::Layout for SignalConfiguration {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0E);
     const NAME: &'static str = "signal_configuration";
 }
 
@@ -500,6 +503,7 @@ impl SignalConfigurationResponse {
 
 impl crate::wire::Layout for SignalConfigurationResponse {
     const DESCRIPTOR: u8 = 0x82;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0E);
     const NAME: &'static str = "signal_configuration_response";
 }
 
@@ -783,6 +787,7 @@ impl SpartnConfiguration {
 
 impl crate::wire::Layout for SpartnConfiguration {
     const DESCRIPTOR: u8 = 0x20;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0E);
     const NAME: &'static str = "spartn_configuration";
 }
 
@@ -974,6 +979,7 @@ impl SpartnConfigurationResponse {
 
 impl crate::wire::Layout for SpartnConfigurationResponse {
     const DESCRIPTOR: u8 = 0xA0;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0E);
     const NAME: &'static str = "spartn_configuration_response";
 }
 

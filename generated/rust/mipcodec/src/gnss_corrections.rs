@@ -171,6 +171,7 @@ impl BaseStationInfo {
 
 impl crate::wire::Layout for BaseStationInfo {
     const DESCRIPTOR: u8 = 0x30;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x93);
     const NAME: &'static str = "base_station_info";
 }
 
@@ -398,6 +399,7 @@ impl RtkCorrectionsStatus {
 
 impl crate::wire::Layout for RtkCorrectionsStatus {
     const DESCRIPTOR: u8 = 0x31;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x93);
     const NAME: &'static str = "rtk_corrections_status";
 }
 

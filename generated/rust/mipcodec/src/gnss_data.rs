@@ -170,6 +170,7 @@ impl LlhPosition {
 
 impl crate::wire::Layout for LlhPosition {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "llh_position";
 }
 
@@ -274,6 +275,7 @@ impl EcefPosition {
 
 impl crate::wire::Layout for EcefPosition {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "ecef_position";
 }
 
@@ -445,6 +447,7 @@ impl NedVelocity {
 
 impl crate::wire::Layout for NedVelocity {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "ned_velocity";
 }
 
@@ -549,6 +552,7 @@ impl EcefVelocity {
 
 impl crate::wire::Layout for EcefVelocity {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "ecef_velocity";
 }
 
@@ -716,6 +720,7 @@ impl Dop {
 
 impl crate::wire::Layout for Dop {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "dop";
 }
 
@@ -888,6 +893,7 @@ impl UtcTime {
 
 impl crate::wire::Layout for UtcTime {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "utc_time";
 }
 
@@ -987,6 +993,7 @@ impl GpsTime {
 
 impl crate::wire::Layout for GpsTime {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "gps_time";
 }
 
@@ -1099,6 +1106,7 @@ impl ClockInfo {
 
 impl crate::wire::Layout for ClockInfo {
     const DESCRIPTOR: u8 = 0x0A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "clock_info";
 }
 
@@ -1214,6 +1222,7 @@ impl FixInfo {
 
 impl crate::wire::Layout for FixInfo {
     const DESCRIPTOR: u8 = 0x0B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "fix_info";
 }
 
@@ -1376,6 +1385,7 @@ impl SvInfo {
 
 impl crate::wire::Layout for SvInfo {
     const DESCRIPTOR: u8 = 0x0C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "sv_info";
 }
 
@@ -1504,6 +1514,7 @@ impl HardwareStatus {
 
 impl crate::wire::Layout for HardwareStatus {
     const DESCRIPTOR: u8 = 0x0D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "hardware_status";
 }
 
@@ -1645,6 +1656,7 @@ impl DgnssInfo {
 
 impl crate::wire::Layout for DgnssInfo {
     const DESCRIPTOR: u8 = 0x0E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "dgnss_info";
 }
 
@@ -1779,6 +1791,7 @@ impl DgnssChannelStatus {
 
 impl crate::wire::Layout for DgnssChannelStatus {
     const DESCRIPTOR: u8 = 0x0F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x81);
     const NAME: &'static str = "dgnss_channel_status";
 }
 

@@ -170,6 +170,7 @@ impl LlhPosition {
 
 impl crate::wire::Layout for LlhPosition {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x94);
     const NAME: &'static str = "llh_position";
 }
 
@@ -341,6 +342,7 @@ impl NedVelocity {
 
 impl crate::wire::Layout for NedVelocity {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x94);
     const NAME: &'static str = "ned_velocity";
 }
 
@@ -513,6 +515,7 @@ impl UtcTime {
 
 impl crate::wire::Layout for UtcTime {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x94);
     const NAME: &'static str = "utc_time";
 }
 
@@ -628,6 +631,7 @@ impl FixInfo {
 
 impl crate::wire::Layout for FixInfo {
     const DESCRIPTOR: u8 = 0x0B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x94);
     const NAME: &'static str = "fix_info";
 }
 
@@ -834,6 +838,7 @@ impl SatelliteStatus {
 
 impl crate::wire::Layout for SatelliteStatus {
     const DESCRIPTOR: u8 = 0x20;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x94);
     const NAME: &'static str = "satellite_status";
 }
 

@@ -170,6 +170,7 @@ impl LlhPosition {
 
 impl crate::wire::Layout for LlhPosition {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "llh_position";
 }
 
@@ -274,6 +275,7 @@ impl EcefPosition {
 
 impl crate::wire::Layout for EcefPosition {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "ecef_position";
 }
 
@@ -445,6 +447,7 @@ impl NedVelocity {
 
 impl crate::wire::Layout for NedVelocity {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "ned_velocity";
 }
 
@@ -549,6 +552,7 @@ impl EcefVelocity {
 
 impl crate::wire::Layout for EcefVelocity {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "ecef_velocity";
 }
 
@@ -716,6 +720,7 @@ impl Dop {
 
 impl crate::wire::Layout for Dop {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "dop";
 }
 
@@ -888,6 +893,7 @@ impl UtcTime {
 
 impl crate::wire::Layout for UtcTime {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "utc_time";
 }
 
@@ -987,6 +993,7 @@ impl GpsTime {
 
 impl crate::wire::Layout for GpsTime {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "gps_time";
 }
 
@@ -1102,6 +1109,7 @@ impl FixInfo {
 
 impl crate::wire::Layout for FixInfo {
     const DESCRIPTOR: u8 = 0x0B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "fix_info";
 }
 
@@ -1230,6 +1238,7 @@ impl HardwareStatus {
 
 impl crate::wire::Layout for HardwareStatus {
     const DESCRIPTOR: u8 = 0x0D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "hardware_status";
 }
 
@@ -1367,6 +1376,7 @@ impl ClockInfo2 {
 
 impl crate::wire::Layout for ClockInfo2 {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "clock_info_2";
 }
 
@@ -1455,6 +1465,7 @@ impl GpsLeapSeconds {
 
 impl crate::wire::Layout for GpsLeapSeconds {
     const DESCRIPTOR: u8 = 0x11;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "gps_leap_seconds";
 }
 
@@ -1621,6 +1632,7 @@ impl SbasInfo {
 
 impl crate::wire::Layout for SbasInfo {
     const DESCRIPTOR: u8 = 0x12;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "sbas_info";
 }
 
@@ -1827,6 +1839,7 @@ impl SatelliteStatus {
 
 impl crate::wire::Layout for SatelliteStatus {
     const DESCRIPTOR: u8 = 0x20;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "satellite_status";
 }
 
@@ -2189,6 +2202,7 @@ impl Raw {
 
 impl crate::wire::Layout for Raw {
     const DESCRIPTOR: u8 = 0x22;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "raw";
 }
 
@@ -2730,6 +2744,7 @@ impl GpsEphemeris {
 
 impl crate::wire::Layout for GpsEphemeris {
     const DESCRIPTOR: u8 = 0x61;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "gps_ephemeris";
 }
 
@@ -3136,6 +3151,7 @@ impl GlonassEphemeris {
 
 impl crate::wire::Layout for GlonassEphemeris {
     const DESCRIPTOR: u8 = 0x62;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "glonass_ephemeris";
 }
 
@@ -3677,6 +3693,7 @@ impl GalileoEphemeris {
 
 impl crate::wire::Layout for GalileoEphemeris {
     const DESCRIPTOR: u8 = 0x63;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "galileo_ephemeris";
 }
 
@@ -4218,6 +4235,7 @@ impl BeidouEphemeris {
 
 impl crate::wire::Layout for BeidouEphemeris {
     const DESCRIPTOR: u8 = 0x64;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "beidou_ephemeris";
 }
 

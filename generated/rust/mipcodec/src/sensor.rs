@@ -74,6 +74,7 @@ impl ScaledAccel {
 
 impl crate::wire::Layout for ScaledAccel {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "scaled_accel";
 }
 
@@ -145,6 +146,7 @@ impl ScaledGyro {
 
 impl crate::wire::Layout for ScaledGyro {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "scaled_gyro";
 }
 
@@ -216,6 +218,7 @@ impl ScaledMag {
 
 impl crate::wire::Layout for ScaledMag {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "scaled_mag";
 }
 
@@ -287,6 +290,7 @@ impl DeltaTheta {
 
 impl crate::wire::Layout for DeltaTheta {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "delta_theta";
 }
 
@@ -358,6 +362,7 @@ impl DeltaVelocity {
 
 impl crate::wire::Layout for DeltaVelocity {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "delta_velocity";
 }
 
@@ -421,6 +426,7 @@ impl CfOrientationMatrix {
 
 impl crate::wire::Layout for CfOrientationMatrix {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "cf_orientation_matrix";
 }
 
@@ -484,6 +490,7 @@ impl CfQuaternion {
 
 impl crate::wire::Layout for CfQuaternion {
     const DESCRIPTOR: u8 = 0x0A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "cf_quaternion";
 }
 
@@ -575,6 +582,7 @@ impl CfEulerAngles {
 
 impl crate::wire::Layout for CfEulerAngles {
     const DESCRIPTOR: u8 = 0x0C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "cf_euler_angles";
 }
 
@@ -646,6 +654,7 @@ impl CfStabilizedNorth {
 
 impl crate::wire::Layout for CfStabilizedNorth {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "cf_stabilized_north";
 }
 
@@ -717,6 +726,7 @@ impl CfStabilizedUp {
 
 impl crate::wire::Layout for CfStabilizedUp {
     const DESCRIPTOR: u8 = 0x11;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "cf_stabilized_up";
 }
 
@@ -816,6 +826,7 @@ impl GpsTimestamp {
 
 impl crate::wire::Layout for GpsTimestamp {
     const DESCRIPTOR: u8 = 0x12;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "gps_timestamp";
 }
 
@@ -907,6 +918,7 @@ impl TemperatureStatistics {
 
 impl crate::wire::Layout for TemperatureStatistics {
     const DESCRIPTOR: u8 = 0x14;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "temperature_statistics";
 }
 
@@ -978,6 +990,7 @@ impl ScaledPressure {
 
 impl crate::wire::Layout for ScaledPressure {
     const DESCRIPTOR: u8 = 0x17;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "scaled_pressure";
 }
 
@@ -1045,6 +1058,7 @@ impl OverrangeStatus {
 
 impl crate::wire::Layout for OverrangeStatus {
     const DESCRIPTOR: u8 = 0x18;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "overrange_status";
 }
 
@@ -1144,6 +1158,7 @@ impl OdometerData {
 
 impl crate::wire::Layout for OdometerData {
     const DESCRIPTOR: u8 = 0x40;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x80);
     const NAME: &'static str = "odometer_data";
 }
 

@@ -70,6 +70,7 @@ impl EventSource {
 
 impl crate::wire::Layout for EventSource {
     const DESCRIPTOR: u8 = 0xD0;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "event_source";
 }
 
@@ -170,6 +171,7 @@ impl GpsTimestamp {
 
 impl crate::wire::Layout for GpsTimestamp {
     const DESCRIPTOR: u8 = 0xD3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "gps_timestamp";
 }
 
@@ -233,6 +235,7 @@ impl DeltaTime {
 
 impl crate::wire::Layout for DeltaTime {
     const DESCRIPTOR: u8 = 0xD4;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "delta_time";
 }
 
@@ -304,6 +307,7 @@ impl ReferenceTimestamp {
 
 impl crate::wire::Layout for ReferenceTimestamp {
     const DESCRIPTOR: u8 = 0xD5;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "reference_timestamp";
 }
 
@@ -371,6 +375,7 @@ impl ReferenceTimeDelta {
 
 impl crate::wire::Layout for ReferenceTimeDelta {
     const DESCRIPTOR: u8 = 0xD6;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "reference_time_delta";
 }
 
@@ -459,6 +464,7 @@ impl ExternalTimestamp {
 
 impl crate::wire::Layout for ExternalTimestamp {
     const DESCRIPTOR: u8 = 0xD7;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "external_timestamp";
 }
 
@@ -543,6 +549,7 @@ impl ExternalTimeDelta {
 
 impl crate::wire::Layout for ExternalTimeDelta {
     const DESCRIPTOR: u8 = 0xD8;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "external_time_delta";
 }
 

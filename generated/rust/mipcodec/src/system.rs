@@ -102,6 +102,7 @@ impl CommunicationMode {
 
 impl crate::wire::Layout for CommunicationMode {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x7F);
     const NAME: &'static str = "communication_mode";
 }
 
@@ -169,6 +170,7 @@ impl CommunicationModeResponse {
 
 impl crate::wire::Layout for CommunicationModeResponse {
     const DESCRIPTOR: u8 = 0x90;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x7F);
     const NAME: &'static str = "communication_mode_response";
 }
 

@@ -70,6 +70,7 @@ impl BuiltInTest {
 
 impl crate::wire::Layout for BuiltInTest {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA0);
     const NAME: &'static str = "built_in_test";
 }
 
@@ -153,6 +154,7 @@ impl TimeSyncStatus {
 
 impl crate::wire::Layout for TimeSyncStatus {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA0);
     const NAME: &'static str = "time_sync_status";
 }
 
@@ -220,6 +222,7 @@ impl GpioState {
 
 impl crate::wire::Layout for GpioState {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA0);
     const NAME: &'static str = "gpio_state";
 }
 

@@ -114,6 +114,7 @@ impl EventControl {
 
 impl crate::wire::Layout for EventControl {
     const DESCRIPTOR: u8 = 0x2B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_control";
 }
 
@@ -197,6 +198,7 @@ impl EventControlResponse {
 
 impl crate::wire::Layout for EventControlResponse {
     const DESCRIPTOR: u8 = 0xB5;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_control_response";
 }
 
@@ -286,6 +288,7 @@ impl GetEventTriggerStatus {
 
 impl crate::wire::Layout for GetEventTriggerStatus {
     const DESCRIPTOR: u8 = 0x2C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_event_trigger_status";
 }
 
@@ -371,6 +374,7 @@ impl EventTriggerStatus {
 
 impl crate::wire::Layout for EventTriggerStatus {
     const DESCRIPTOR: u8 = 0xB6;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_trigger_status";
 }
 
@@ -460,6 +464,7 @@ impl GetEventActionStatus {
 
 impl crate::wire::Layout for GetEventActionStatus {
     const DESCRIPTOR: u8 = 0x2D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_event_action_status";
 }
 
@@ -545,6 +550,7 @@ impl EventActionStatus {
 
 impl crate::wire::Layout for EventActionStatus {
     const DESCRIPTOR: u8 = 0xB7;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_action_status";
 }
 
@@ -683,6 +689,7 @@ impl EventTriggerConfig {
 
 impl crate::wire::Layout for EventTriggerConfig {
     const DESCRIPTOR: u8 = 0x2E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_trigger_config";
 }
 
@@ -782,6 +789,7 @@ impl EventTriggerConfigResponse {
 
 impl crate::wire::Layout for EventTriggerConfigResponse {
     const DESCRIPTOR: u8 = 0xB8;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_trigger_config_response";
 }
 
@@ -944,6 +952,7 @@ impl EventActionConfig {
 
 impl crate::wire::Layout for EventActionConfig {
     const DESCRIPTOR: u8 = 0x2F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_action_config";
 }
 
@@ -1055,6 +1064,7 @@ impl EventActionConfigResponse {
 
 impl crate::wire::Layout for EventActionConfigResponse {
     const DESCRIPTOR: u8 = 0xB9;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "event_action_config_response";
 }
 
@@ -1126,6 +1136,7 @@ impl DeviceStartupSettingsGx5_45 {
 
 impl crate::wire::Layout for DeviceStartupSettingsGx5_45 {
     const DESCRIPTOR: u8 = 0x30;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "device_startup_settings";
 }
 
@@ -1197,6 +1208,7 @@ impl DeviceStartupSettingsCv7Ins {
 
 impl crate::wire::Layout for DeviceStartupSettingsCv7Ins {
     const DESCRIPTOR: u8 = 0x30;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "device_startup_settings";
 }
 
@@ -1422,6 +1434,7 @@ impl SensorToVehicleEuler {
 
 impl crate::wire::Layout for SensorToVehicleEuler {
     const DESCRIPTOR: u8 = 0x31;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_to_vehicle_euler";
 }
 
@@ -1513,6 +1526,7 @@ impl SensorToVehicleEulerResponse {
 
 impl crate::wire::Layout for SensorToVehicleEulerResponse {
     const DESCRIPTOR: u8 = 0xB1;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_to_vehicle_euler_response";
 }
 
@@ -1606,6 +1620,7 @@ impl SensorToVehicleQuaternion {
 
 impl crate::wire::Layout for SensorToVehicleQuaternion {
     const DESCRIPTOR: u8 = 0x32;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_to_vehicle_quaternion";
 }
 
@@ -1669,6 +1684,7 @@ impl SensorToVehicleQuaternionResponse {
 
 impl crate::wire::Layout for SensorToVehicleQuaternionResponse {
     const DESCRIPTOR: u8 = 0xB2;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_to_vehicle_quaternion_response";
 }
 
@@ -1762,6 +1778,7 @@ impl SensorToVehicleDcm {
 
 impl crate::wire::Layout for SensorToVehicleDcm {
     const DESCRIPTOR: u8 = 0x33;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_to_vehicle_dcm";
 }
 
@@ -1825,6 +1842,7 @@ impl SensorToVehicleDcmResponse {
 
 impl crate::wire::Layout for SensorToVehicleDcmResponse {
     const DESCRIPTOR: u8 = 0xB3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_to_vehicle_dcm_response";
 }
 
@@ -1918,6 +1936,7 @@ impl AccelBiasGx5_45 {
 
 impl crate::wire::Layout for AccelBiasGx5_45 {
     const DESCRIPTOR: u8 = 0x37;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "accel_bias";
 }
 
@@ -2011,6 +2030,7 @@ impl AccelBiasCv7Ins {
 
 impl crate::wire::Layout for AccelBiasCv7Ins {
     const DESCRIPTOR: u8 = 0x37;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "accel_bias";
 }
 
@@ -2162,6 +2182,7 @@ impl AccelBiasResponse {
 
 impl crate::wire::Layout for AccelBiasResponse {
     const DESCRIPTOR: u8 = 0x9A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "accel_bias_response";
 }
 
@@ -2255,6 +2276,7 @@ impl GyroBiasGx5_45 {
 
 impl crate::wire::Layout for GyroBiasGx5_45 {
     const DESCRIPTOR: u8 = 0x38;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gyro_bias";
 }
 
@@ -2348,6 +2370,7 @@ impl GyroBiasCv7Ins {
 
 impl crate::wire::Layout for GyroBiasCv7Ins {
     const DESCRIPTOR: u8 = 0x38;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gyro_bias";
 }
 
@@ -2499,6 +2522,7 @@ impl GyroBiasResponse {
 
 impl crate::wire::Layout for GyroBiasResponse {
     const DESCRIPTOR: u8 = 0x9B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gyro_bias_response";
 }
 
@@ -2570,6 +2594,7 @@ impl CaptureGyroBias {
 
 impl crate::wire::Layout for CaptureGyroBias {
     const DESCRIPTOR: u8 = 0x39;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "capture_gyro_bias";
 }
 
@@ -2666,6 +2691,7 @@ impl MagHardIronOffsetGx5_45 {
 
 impl crate::wire::Layout for MagHardIronOffsetGx5_45 {
     const DESCRIPTOR: u8 = 0x3A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "mag_hard_iron_offset";
 }
 
@@ -2762,6 +2788,7 @@ impl MagHardIronOffsetCv7Ins {
 
 impl crate::wire::Layout for MagHardIronOffsetCv7Ins {
     const DESCRIPTOR: u8 = 0x3A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "mag_hard_iron_offset";
 }
 
@@ -2918,6 +2945,7 @@ impl MagHardIronOffsetResponse {
 
 impl crate::wire::Layout for MagHardIronOffsetResponse {
     const DESCRIPTOR: u8 = 0x9C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "mag_hard_iron_offset_response";
 }
 
@@ -3014,6 +3042,7 @@ impl MagSoftIronMatrixGx5_45 {
 
 impl crate::wire::Layout for MagSoftIronMatrixGx5_45 {
     const DESCRIPTOR: u8 = 0x3B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "mag_soft_iron_matrix";
 }
 
@@ -3110,6 +3139,7 @@ impl MagSoftIronMatrixCv7Ins {
 
 impl crate::wire::Layout for MagSoftIronMatrixCv7Ins {
     const DESCRIPTOR: u8 = 0x3B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "mag_soft_iron_matrix";
 }
 
@@ -3266,6 +3296,7 @@ impl MagSoftIronMatrixResponse {
 
 impl crate::wire::Layout for MagSoftIronMatrixResponse {
     const DESCRIPTOR: u8 = 0x9D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "mag_soft_iron_matrix_response";
 }
 
@@ -3359,6 +3390,7 @@ impl ConingScullingEnable {
 
 impl crate::wire::Layout for ConingScullingEnable {
     const DESCRIPTOR: u8 = 0x3E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "coning_sculling_enable";
 }
 
@@ -3422,6 +3454,7 @@ impl ConingScullingEnableResponse {
 
 impl crate::wire::Layout for ConingScullingEnableResponse {
     const DESCRIPTOR: u8 = 0x9E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "coning_sculling_enable_response";
 }
 
@@ -3515,6 +3548,7 @@ impl UartBaudrate {
 
 impl crate::wire::Layout for UartBaudrate {
     const DESCRIPTOR: u8 = 0x40;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "uart_baudrate";
 }
 
@@ -3578,6 +3612,7 @@ impl UartBaudrateResponse {
 
 impl crate::wire::Layout for UartBaudrateResponse {
     const DESCRIPTOR: u8 = 0x87;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "uart_baudrate_response";
 }
 
@@ -3744,6 +3779,7 @@ impl GpioConfig {
 
 impl crate::wire::Layout for GpioConfig {
     const DESCRIPTOR: u8 = 0x41;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gpio_config";
 }
 
@@ -3859,6 +3895,7 @@ impl GpioConfigResponse {
 
 impl crate::wire::Layout for GpioConfigResponse {
     const DESCRIPTOR: u8 = 0xC1;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gpio_config_response";
 }
 
@@ -3964,6 +4001,7 @@ impl GpioState {
 
 impl crate::wire::Layout for GpioState {
     const DESCRIPTOR: u8 = 0x42;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gpio_state";
 }
 
@@ -4043,6 +4081,7 @@ impl GpioStateResponse {
 
 impl crate::wire::Layout for GpioStateResponse {
     const DESCRIPTOR: u8 = 0xC2;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gpio_state_response";
 }
 
@@ -4187,6 +4226,7 @@ impl OdometerConfig {
 
 impl crate::wire::Layout for OdometerConfig {
     const DESCRIPTOR: u8 = 0x43;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "odometer_config";
 }
 
@@ -4286,6 +4326,7 @@ impl OdometerConfigResponse {
 
 impl crate::wire::Layout for OdometerConfigResponse {
     const DESCRIPTOR: u8 = 0xC3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "odometer_config_response";
 }
 
@@ -4468,6 +4509,7 @@ impl AdvancedLowpassFilter {
 
 impl crate::wire::Layout for AdvancedLowpassFilter {
     const DESCRIPTOR: u8 = 0x50;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "advanced_lowpass_filter";
 }
 
@@ -4596,6 +4638,7 @@ impl AdvancedLowpassFilterResponse {
 
 impl crate::wire::Layout for AdvancedLowpassFilterResponse {
     const DESCRIPTOR: u8 = 0x8B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "advanced_lowpass_filter_response";
 }
 
@@ -4776,6 +4819,7 @@ impl ComplementaryFilter {
 
 impl crate::wire::Layout for ComplementaryFilter {
     const DESCRIPTOR: u8 = 0x51;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "complementary_filter";
 }
 
@@ -4903,6 +4947,7 @@ impl ComplementaryFilterResponse {
 
 impl crate::wire::Layout for ComplementaryFilterResponse {
     const DESCRIPTOR: u8 = 0x97;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "complementary_filter_response";
 }
 
@@ -5012,6 +5057,7 @@ impl SensorRange {
 
 impl crate::wire::Layout for SensorRange {
     const DESCRIPTOR: u8 = 0x52;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_range";
 }
 
@@ -5095,6 +5141,7 @@ impl SensorRangeResponse {
 
 impl crate::wire::Layout for SensorRangeResponse {
     const DESCRIPTOR: u8 = 0xD2;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "sensor_range_response";
 }
 
@@ -5162,6 +5209,7 @@ impl GetCalibratedSensorRanges {
 
 impl crate::wire::Layout for GetCalibratedSensorRanges {
     const DESCRIPTOR: u8 = 0x53;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_calibrated_sensor_ranges";
 }
 
@@ -5263,6 +5311,7 @@ impl CalibratedSensorRanges {
 
 impl crate::wire::Layout for CalibratedSensorRanges {
     const DESCRIPTOR: u8 = 0xD3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "calibrated_sensor_ranges";
 }
 
@@ -5432,6 +5481,7 @@ impl LowpassFilter {
 
 impl crate::wire::Layout for LowpassFilter {
     const DESCRIPTOR: u8 = 0x54;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "lowpass_filter";
 }
 
@@ -5550,6 +5600,7 @@ impl LowpassFilterResponse {
 
 impl crate::wire::Layout for LowpassFilterResponse {
     const DESCRIPTOR: u8 = 0xD4;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "lowpass_filter_response";
 }
 
@@ -5655,6 +5706,7 @@ impl PollImuData {
 
 impl crate::wire::Layout for PollImuData {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "poll_imu_data";
 }
 
@@ -5760,6 +5812,7 @@ impl PollGnssData {
 
 impl crate::wire::Layout for PollGnssData {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "poll_gnss_data";
 }
 
@@ -5865,6 +5918,7 @@ impl PollFilterData {
 
 impl crate::wire::Layout for PollFilterData {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "poll_filter_data";
 }
 
@@ -5967,6 +6021,7 @@ impl PollNmeaData {
 
 impl crate::wire::Layout for PollNmeaData {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "poll_nmea_data";
 }
 
@@ -6087,6 +6142,7 @@ impl PollData {
 
 impl crate::wire::Layout for PollData {
     const DESCRIPTOR: u8 = 0x0D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "poll_data";
 }
 
@@ -6138,6 +6194,7 @@ impl GetImuBaseRate {
 
 impl crate::wire::Layout for GetImuBaseRate {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_imu_base_rate";
 }
 
@@ -6201,6 +6258,7 @@ impl ImuBaseRate {
 
 impl crate::wire::Layout for ImuBaseRate {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "imu_base_rate";
 }
 
@@ -6252,6 +6310,7 @@ impl GetGnssBaseRate {
 
 impl crate::wire::Layout for GetGnssBaseRate {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_gnss_base_rate";
 }
 
@@ -6315,6 +6374,7 @@ impl GnssBaseRate {
 
 impl crate::wire::Layout for GnssBaseRate {
     const DESCRIPTOR: u8 = 0x84;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_base_rate";
 }
 
@@ -6366,6 +6426,7 @@ impl GetFilterBaseRate {
 
 impl crate::wire::Layout for GetFilterBaseRate {
     const DESCRIPTOR: u8 = 0x0B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_filter_base_rate";
 }
 
@@ -6429,6 +6490,7 @@ impl FilterBaseRate {
 
 impl crate::wire::Layout for FilterBaseRate {
     const DESCRIPTOR: u8 = 0x8A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "filter_base_rate";
 }
 
@@ -6496,6 +6558,7 @@ impl GetBaseRate {
 
 impl crate::wire::Layout for GetBaseRate {
     const DESCRIPTOR: u8 = 0x0E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_base_rate";
 }
 
@@ -6575,6 +6638,7 @@ impl BaseRate {
 
 impl crate::wire::Layout for BaseRate {
     const DESCRIPTOR: u8 = 0x8E;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "base_rate";
 }
 
@@ -6699,6 +6763,7 @@ impl ImuMessageFormat {
 
 impl crate::wire::Layout for ImuMessageFormat {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "imu_message_format";
 }
 
@@ -6788,6 +6853,7 @@ impl ImuMessageFormatResponse {
 
 impl crate::wire::Layout for ImuMessageFormatResponse {
     const DESCRIPTOR: u8 = 0x80;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "imu_message_format_response";
 }
 
@@ -6912,6 +6978,7 @@ impl GnssMessageFormat {
 
 impl crate::wire::Layout for GnssMessageFormat {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_message_format";
 }
 
@@ -7001,6 +7068,7 @@ impl GnssMessageFormatResponse {
 
 impl crate::wire::Layout for GnssMessageFormatResponse {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_message_format_response";
 }
 
@@ -7125,6 +7193,7 @@ impl FilterMessageFormat {
 
 impl crate::wire::Layout for FilterMessageFormat {
     const DESCRIPTOR: u8 = 0x0A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "filter_message_format";
 }
 
@@ -7214,6 +7283,7 @@ impl FilterMessageFormatResponse {
 
 impl crate::wire::Layout for FilterMessageFormatResponse {
     const DESCRIPTOR: u8 = 0x82;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "filter_message_format_response";
 }
 
@@ -7335,6 +7405,7 @@ impl NmeaMessageFormat {
 
 impl crate::wire::Layout for NmeaMessageFormat {
     const DESCRIPTOR: u8 = 0x0C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "nmea_message_format";
 }
 
@@ -7421,6 +7492,7 @@ impl NmeaMessageFormatResponse {
 
 impl crate::wire::Layout for NmeaMessageFormatResponse {
     const DESCRIPTOR: u8 = 0x8C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "nmea_message_format_response";
 }
 
@@ -7560,6 +7632,7 @@ impl MessageFormat {
 
 impl crate::wire::Layout for MessageFormat {
     const DESCRIPTOR: u8 = 0x0F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "message_format";
 }
 
@@ -7661,6 +7734,7 @@ impl MessageFormatResponse {
 
 impl crate::wire::Layout for MessageFormatResponse {
     const DESCRIPTOR: u8 = 0x8F;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "message_format_response";
 }
 
@@ -7744,6 +7818,7 @@ impl FactoryStreaming {
 
 impl crate::wire::Layout for FactoryStreaming {
     const DESCRIPTOR: u8 = 0x10;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "factory_streaming";
 }
 
@@ -7853,6 +7928,7 @@ impl DataStreamControlGx5_45 {
 
 impl crate::wire::Layout for DataStreamControlGx5_45 {
     const DESCRIPTOR: u8 = 0x11;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "data_stream_control";
 }
 
@@ -7958,6 +8034,7 @@ impl DataStreamControlCv7Ins {
 
 impl crate::wire::Layout for DataStreamControlCv7Ins {
     const DESCRIPTOR: u8 = 0x11;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "data_stream_control";
 }
 
@@ -8131,6 +8208,7 @@ impl DataStreamControlResponseGx5_45 {
 
 impl crate::wire::Layout for DataStreamControlResponseGx5_45 {
     const DESCRIPTOR: u8 = 0x85;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "data_stream_control_response";
 }
 
@@ -8210,6 +8288,7 @@ impl DataStreamControlResponseCv7Ins {
 
 impl crate::wire::Layout for DataStreamControlResponseCv7Ins {
     const DESCRIPTOR: u8 = 0x85;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "data_stream_control_response";
 }
 
@@ -8368,6 +8447,7 @@ impl RawRtcmMessage {
 
 impl crate::wire::Layout for RawRtcmMessage {
     const DESCRIPTOR: u8 = 0x20;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "raw_rtcm_message";
 }
 
@@ -8513,6 +8593,7 @@ impl GnssConstellationSettings {
 
 impl crate::wire::Layout for GnssConstellationSettings {
     const DESCRIPTOR: u8 = 0x21;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_constellation_settings";
 }
 
@@ -8642,6 +8723,7 @@ impl GnssConstellationSettingsResponse {
 
 impl crate::wire::Layout for GnssConstellationSettingsResponse {
     const DESCRIPTOR: u8 = 0xA0;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_constellation_settings_response";
 }
 
@@ -8826,6 +8908,7 @@ impl GnssSbasSettings {
 
 impl crate::wire::Layout for GnssSbasSettings {
     const DESCRIPTOR: u8 = 0x22;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_sbas_settings";
 }
 
@@ -8954,6 +9037,7 @@ impl GnssSbasSettingsResponse {
 
 impl crate::wire::Layout for GnssSbasSettingsResponse {
     const DESCRIPTOR: u8 = 0xA1;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_sbas_settings_response";
 }
 
@@ -9074,6 +9158,7 @@ impl GnssAssistedFixControl {
 
 impl crate::wire::Layout for GnssAssistedFixControl {
     const DESCRIPTOR: u8 = 0x23;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_assisted_fix_control";
 }
 
@@ -9157,6 +9242,7 @@ impl GnssAssistedFixControlResponse {
 
 impl crate::wire::Layout for GnssAssistedFixControlResponse {
     const DESCRIPTOR: u8 = 0xA2;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_assisted_fix_control_response";
 }
 
@@ -9295,6 +9381,7 @@ impl GnssAssistTimeUpdate {
 
 impl crate::wire::Layout for GnssAssistTimeUpdate {
     const DESCRIPTOR: u8 = 0x24;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_assist_time_update";
 }
 
@@ -9390,6 +9477,7 @@ impl GnssAssistTimeUpdateResponse {
 
 impl crate::wire::Layout for GnssAssistTimeUpdateResponse {
     const DESCRIPTOR: u8 = 0xA3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "gnss_assist_time_update_response";
 }
 
@@ -9489,6 +9577,7 @@ impl PpsSource {
 
 impl crate::wire::Layout for PpsSource {
     const DESCRIPTOR: u8 = 0x28;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "pps_source";
 }
 
@@ -9556,6 +9645,7 @@ impl PpsSourceResponse {
 
 impl crate::wire::Layout for PpsSourceResponse {
     const DESCRIPTOR: u8 = 0xA8;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "pps_source_response";
 }
 
@@ -9623,6 +9713,7 @@ impl GetSupportedEvents {
 
 impl crate::wire::Layout for GetSupportedEvents {
     const DESCRIPTOR: u8 = 0x2A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "get_supported_events";
 }
 
@@ -9710,6 +9801,7 @@ impl SupportedEvents {
 
 impl crate::wire::Layout for SupportedEvents {
     const DESCRIPTOR: u8 = 0xB4;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "supported_events";
 }
 
@@ -9798,6 +9890,7 @@ impl DeviceStatus {
 
 impl crate::wire::Layout for DeviceStatus {
     const DESCRIPTOR: u8 = 0x64;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "device_status";
 }
 
@@ -9902,6 +9995,7 @@ impl DeviceStatusResponse {
 
 impl crate::wire::Layout for DeviceStatusResponse {
     const DESCRIPTOR: u8 = 0x90;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x0C);
     const NAME: &'static str = "device_status_response";
 }
 

@@ -54,6 +54,7 @@ impl Ping {
 
 impl crate::wire::Layout for Ping {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "ping";
 }
 
@@ -105,6 +106,7 @@ impl GetDeviceMessages {
 
 impl crate::wire::Layout for GetDeviceMessages {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_messages";
 }
 
@@ -175,6 +177,7 @@ impl DeviceMessages {
 
 impl crate::wire::Layout for DeviceMessages {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_messages";
 }
 
@@ -226,6 +229,7 @@ impl DeviceReset {
 
 impl crate::wire::Layout for DeviceReset {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_reset";
 }
 
@@ -277,6 +281,7 @@ impl GetDeviceModel {
 
 impl crate::wire::Layout for GetDeviceModel {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_model";
 }
 
@@ -344,6 +349,7 @@ impl DeviceModel {
 
 impl crate::wire::Layout for DeviceModel {
     const DESCRIPTOR: u8 = 0x85;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_model";
 }
 
@@ -395,6 +401,7 @@ impl GetDeviceSn {
 
 impl crate::wire::Layout for GetDeviceSn {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_sn";
 }
 
@@ -466,6 +473,7 @@ impl DeviceSn {
 
 impl crate::wire::Layout for DeviceSn {
     const DESCRIPTOR: u8 = 0x86;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_sn";
 }
 
@@ -517,6 +525,7 @@ impl GetDeviceFw {
 
 impl crate::wire::Layout for GetDeviceFw {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_fw";
 }
 
@@ -588,6 +597,7 @@ impl DeviceFw {
 
 impl crate::wire::Layout for DeviceFw {
     const DESCRIPTOR: u8 = 0x87;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_fw";
 }
 
@@ -639,6 +649,7 @@ impl GetDeviceCal {
 
 impl crate::wire::Layout for GetDeviceCal {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "get_device_cal";
 }
 
@@ -706,6 +717,7 @@ impl DeviceCal {
 
 impl crate::wire::Layout for DeviceCal {
     const DESCRIPTOR: u8 = 0x88;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "device_cal";
 }
 
@@ -785,6 +797,7 @@ impl CorrelateGpsTime {
 
 impl crate::wire::Layout for CorrelateGpsTime {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "correlate_gps_time";
 }
 

@@ -4,8 +4,8 @@
 use crate::error::{EncodeError, EncodeErrorKind};
 use crate::framing::{
     checksum_bytes, field_length_adjust, CHECKSUM_SIZE, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE,
-    FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD,
-    SET_OFFSET, SYNC,
+    FIELD_LENGTH_OFFSET, FIRST_SHARED, HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET,
+    MAX_PAYLOAD, SET_OFFSET, SYNC,
 };
 use crate::wire::{Layout, Writer};
 
@@ -71,8 +71,19 @@ impl PacketBuilder {
         self.add_field_with(descriptor, |w| w.put(data))
     }
 
-    /// Appends a typed field.
+    /// Appends a typed field. A layout of another descriptor set than the packet's fails with
+    /// [`EncodeErrorKind::WrongSet`] (its descriptor means another field there); shared data
+    /// fields (descriptor at or above [`FIRST_SHARED`]) go in any set, reserved fields (no
+    /// [`Layout::DESCRIPTOR_SET`]) too.
     pub fn add<L: Layout>(&mut self, value: &L) -> Result<(), EncodeError> {
+        if let Some(field_set) = L::DESCRIPTOR_SET {
+            if field_set != self.set() && u16::from(L::DESCRIPTOR) < FIRST_SHARED {
+                return Err(EncodeError::new(EncodeErrorKind::WrongSet {
+                    field_set,
+                    packet_set: self.set(),
+                }));
+            }
+        }
         self.add_field_with(L::DESCRIPTOR, |w| value.encode_data(w))
     }
 

@@ -102,6 +102,7 @@ impl UartBaudRate {
 
 impl crate::wire::Layout for UartBaudRate {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "uart_baud_rate";
 }
 
@@ -173,6 +174,7 @@ impl UartBaudRateResponse {
 
 impl crate::wire::Layout for UartBaudRateResponse {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "uart_baud_rate_response";
 }
 
@@ -272,6 +274,7 @@ impl Filter {
 
 impl crate::wire::Layout for Filter {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "filter";
 }
 
@@ -343,6 +346,7 @@ impl FilterResponse {
 
 impl crate::wire::Layout for FilterResponse {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "filter_response";
 }
 
@@ -436,6 +440,7 @@ impl SampleRate {
 
 impl crate::wire::Layout for SampleRate {
     const DESCRIPTOR: u8 = 0x04;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "sample_rate";
 }
 
@@ -503,6 +508,7 @@ impl SampleRateResponse {
 
 impl crate::wire::Layout for SampleRateResponse {
     const DESCRIPTOR: u8 = 0x84;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "sample_rate_response";
 }
 
@@ -620,6 +626,7 @@ impl SelectSensors {
 
 impl crate::wire::Layout for SelectSensors {
     const DESCRIPTOR: u8 = 0x05;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "select_sensors";
 }
 
@@ -686,6 +693,7 @@ impl SelectSensorsResponse {
 
 impl crate::wire::Layout for SelectSensorsResponse {
     const DESCRIPTOR: u8 = 0x85;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "select_sensors_response";
 }
 
@@ -737,6 +745,7 @@ impl GetInternalSampleRate {
 
 impl crate::wire::Layout for GetInternalSampleRate {
     const DESCRIPTOR: u8 = 0x06;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "get_internal_sample_rate";
 }
 
@@ -800,6 +809,7 @@ impl InternalSampleRate {
 
 impl crate::wire::Layout for InternalSampleRate {
     const DESCRIPTOR: u8 = 0x86;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "internal_sample_rate";
 }
 
@@ -899,6 +909,7 @@ impl AccelRange {
 
 impl crate::wire::Layout for AccelRange {
     const DESCRIPTOR: u8 = 0x07;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "accel_range";
 }
 
@@ -966,6 +977,7 @@ impl AccelRangeResponse {
 
 impl crate::wire::Layout for AccelRangeResponse {
     const DESCRIPTOR: u8 = 0x87;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "accel_range_response";
 }
 
@@ -1065,6 +1077,7 @@ impl GyroRange {
 
 impl crate::wire::Layout for GyroRange {
     const DESCRIPTOR: u8 = 0x08;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "gyro_range";
 }
 
@@ -1132,6 +1145,7 @@ impl GyroRangeResponse {
 
 impl crate::wire::Layout for GyroRangeResponse {
     const DESCRIPTOR: u8 = 0x88;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "gyro_range_response";
 }
 
@@ -1203,6 +1217,7 @@ impl ConfigAll {
 
 impl crate::wire::Layout for ConfigAll {
     const DESCRIPTOR: u8 = 0x09;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "config_all";
 }
 
@@ -1302,6 +1317,7 @@ impl DataOnOff {
 
 impl crate::wire::Layout for DataOnOff {
     const DESCRIPTOR: u8 = 0x0A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "data_on_off";
 }
 
@@ -1369,6 +1385,7 @@ impl DataOnOffResponse {
 
 impl crate::wire::Layout for DataOnOffResponse {
     const DESCRIPTOR: u8 = 0x8A;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "data_on_off_response";
 }
 
@@ -1468,6 +1485,7 @@ impl XtrigOnOff {
 
 impl crate::wire::Layout for XtrigOnOff {
     const DESCRIPTOR: u8 = 0x0B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "xtrig_on_off";
 }
 
@@ -1535,6 +1553,7 @@ impl XtrigOnOffResponse {
 
 impl crate::wire::Layout for XtrigOnOffResponse {
     const DESCRIPTOR: u8 = 0x8B;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "xtrig_on_off_response";
 }
 
@@ -1631,6 +1650,7 @@ impl SelectSensorsRevB {
 
 impl crate::wire::Layout for SelectSensorsRevB {
     const DESCRIPTOR: u8 = 0x0C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "select_sensors_rev_b";
 }
 
@@ -1697,6 +1717,7 @@ impl SelectSensorsRevBResponse {
 
 impl crate::wire::Layout for SelectSensorsRevBResponse {
     const DESCRIPTOR: u8 = 0x8C;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "select_sensors_rev_b_response";
 }
 
@@ -1796,6 +1817,7 @@ impl AuxAccelRange {
 
 impl crate::wire::Layout for AuxAccelRange {
     const DESCRIPTOR: u8 = 0x0D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "aux_accel_range";
 }
 
@@ -1863,6 +1885,7 @@ impl AuxAccelRangeResponse {
 
 impl crate::wire::Layout for AuxAccelRangeResponse {
     const DESCRIPTOR: u8 = 0x8D;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x02);
     const NAME: &'static str = "aux_accel_range_response";
 }
 

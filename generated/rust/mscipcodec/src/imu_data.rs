@@ -66,6 +66,7 @@ impl ScaledAccel {
 
 impl crate::wire::Layout for ScaledAccel {
     const DESCRIPTOR: u8 = 0x81;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "scaled_accel";
 }
 
@@ -129,6 +130,7 @@ impl ScaledGyro {
 
 impl crate::wire::Layout for ScaledGyro {
     const DESCRIPTOR: u8 = 0x82;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "scaled_gyro";
 }
 
@@ -192,6 +194,7 @@ impl ScaledMag {
 
 impl crate::wire::Layout for ScaledMag {
     const DESCRIPTOR: u8 = 0x83;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "scaled_mag";
 }
 
@@ -263,6 +266,7 @@ impl DeltaTheta {
 
 impl crate::wire::Layout for DeltaTheta {
     const DESCRIPTOR: u8 = 0x84;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "delta_theta";
 }
 
@@ -334,6 +338,7 @@ impl DeltaVelocity {
 
 impl crate::wire::Layout for DeltaVelocity {
     const DESCRIPTOR: u8 = 0x85;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "delta_velocity";
 }
 
@@ -401,6 +406,7 @@ impl ScaledPressure {
 
 impl crate::wire::Layout for ScaledPressure {
     const DESCRIPTOR: u8 = 0x86;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "scaled_pressure";
 }
 
@@ -472,6 +478,7 @@ impl ScaledTemperature {
 
 impl crate::wire::Layout for ScaledTemperature {
     const DESCRIPTOR: u8 = 0x87;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "scaled_temperature";
 }
 
@@ -567,6 +574,7 @@ impl GpsCorrelatedTime {
 
 impl crate::wire::Layout for GpsCorrelatedTime {
     const DESCRIPTOR: u8 = 0x88;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "gps_correlated_time";
 }
 
@@ -630,6 +638,7 @@ impl ScaledAuxAccel {
 
 impl crate::wire::Layout for ScaledAuxAccel {
     const DESCRIPTOR: u8 = 0x89;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xA2);
     const NAME: &'static str = "scaled_aux_accel";
 }
 

@@ -1,8 +1,16 @@
 /* Splits a packet payload into fields (docs/conformance.md section 2). Generated: do not edit. */
+/*
+ * Pointer arguments (every function of this header): a pointer must be valid for what the function
+ * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
+ * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
+ * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
+ */
 #ifndef MIP_FIELD_ITER_H
 #define MIP_FIELD_ITER_H
 
 #include "mipcodec/framing.h"
+
+#include <assert.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -44,9 +52,11 @@ bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, ui
 
 /* init and next are inline: a decode loop calls next for every field, and inline the iterator
  * and the entry stay in registers. */
-/** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths). */
+/** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths).
+ * `payload` may be NULL (an empty payload, whatever len says). */
 static inline void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const uint8_t *payload,
                                        size_t len) {
+    assert(it != NULL);
     it->set = set;
     it->payload = payload;
     it->len = payload ? len : 0;
@@ -55,9 +65,12 @@ static inline void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const 
 
 /** Next entry: returns true and fills *entry, or false after the last one. */
 static inline bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry) {
-    size_t left = it->len - it->pos;
+    size_t left;
     int data_len;
     size_t total;
+    assert(it != NULL);
+    assert(entry != NULL);
+    left = it->len - it->pos;
     const uint8_t *head;
     if (left == 0) {
         return false;

@@ -1,6 +1,12 @@
 /* Canonical JSON lines of docs/conformance.md section 4: packet and skip lines, number
  * formatting, and the reverse (JSON line -> bytes) used by the encode tool.
  * Generated: do not edit. */
+/*
+ * Pointer arguments (every function of this header): a pointer must be valid for what the function
+ * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
+ * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
+ * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
+ */
 #ifndef MIP_JSON_H
 #define MIP_JSON_H
 
@@ -38,6 +44,7 @@ size_t mip_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char 
  * Turns one JSON line (a packet or a skip run, as printed by the decoder) back into bytes:
  * packets are rebuilt from their fields with lengths and checksum recomputed.
  * Returns MIP_OK, MIP_ERR_BUFFER (out too small) or MIP_ERR_JSON with a message in msg.
+ * out_len may be NULL; *out_len receives the number of bytes written.
  */
 mip_status_t mip_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
                                   char *msg, size_t msg_cap);

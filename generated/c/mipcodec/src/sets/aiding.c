@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_aiding_frame_config_t */
@@ -112,6 +113,8 @@ mip_status_t mip_aiding_frame_config_encode(const mip_aiding_frame_config_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_frame_config_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -123,6 +126,8 @@ mip_status_t mip_aiding_frame_config_encode(const mip_aiding_frame_config_t *val
 mip_status_t mip_aiding_frame_config_decode(const uint8_t *data, size_t len, mip_aiding_frame_config_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_frame_config_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -333,6 +338,8 @@ mip_status_t mip_aiding_frame_config_response_encode(const mip_aiding_frame_conf
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_frame_config_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -345,6 +352,8 @@ mip_status_t mip_aiding_frame_config_response_decode(const uint8_t *data, size_t
                                                      mip_aiding_frame_config_response_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_frame_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -503,6 +512,8 @@ mip_status_t mip_aiding_echo_control_encode(const mip_aiding_echo_control_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_echo_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -514,6 +525,8 @@ mip_status_t mip_aiding_echo_control_encode(const mip_aiding_echo_control_t *val
 mip_status_t mip_aiding_echo_control_decode(const uint8_t *data, size_t len, mip_aiding_echo_control_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_echo_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -591,6 +604,8 @@ mip_status_t mip_aiding_echo_control_response_encode(const mip_aiding_echo_contr
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_echo_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -610,6 +625,8 @@ static int mip_aiding_echo_control_response_load(const uint8_t *d, mip_aiding_ec
 static MIP_NOINLINE mip_status_t mip_aiding_echo_control_response_decode_read(
     const uint8_t *data, size_t len, mip_aiding_echo_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_echo_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -618,6 +635,8 @@ static MIP_NOINLINE mip_status_t mip_aiding_echo_control_response_decode_read(
 mip_status_t mip_aiding_echo_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_aiding_echo_control_response_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_aiding_echo_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -722,6 +741,8 @@ mip_status_t mip_aiding_ecef_position_encode(const mip_aiding_ecef_position_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_ecef_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -733,6 +754,8 @@ mip_status_t mip_aiding_ecef_position_encode(const mip_aiding_ecef_position_t *v
 mip_status_t mip_aiding_ecef_position_decode(const uint8_t *data, size_t len, mip_aiding_ecef_position_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -952,6 +975,8 @@ mip_status_t mip_aiding_llh_position_encode(const mip_aiding_llh_position_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_llh_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -963,6 +988,8 @@ mip_status_t mip_aiding_llh_position_encode(const mip_aiding_llh_position_t *val
 mip_status_t mip_aiding_llh_position_decode(const uint8_t *data, size_t len, mip_aiding_llh_position_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1162,6 +1189,8 @@ mip_status_t mip_aiding_height_above_ellipsoid_encode(const mip_aiding_height_ab
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_height_above_ellipsoid_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1174,6 +1203,8 @@ mip_status_t mip_aiding_height_above_ellipsoid_decode(const uint8_t *data, size_
                                                       mip_aiding_height_above_ellipsoid_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_height_above_ellipsoid_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1329,6 +1360,8 @@ mip_status_t mip_aiding_ecef_velocity_encode(const mip_aiding_ecef_velocity_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_ecef_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1340,6 +1373,8 @@ mip_status_t mip_aiding_ecef_velocity_encode(const mip_aiding_ecef_velocity_t *v
 mip_status_t mip_aiding_ecef_velocity_decode(const uint8_t *data, size_t len, mip_aiding_ecef_velocity_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1548,6 +1583,8 @@ mip_status_t mip_aiding_ned_velocity_encode(const mip_aiding_ned_velocity_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_ned_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1559,6 +1596,8 @@ mip_status_t mip_aiding_ned_velocity_encode(const mip_aiding_ned_velocity_t *val
 mip_status_t mip_aiding_ned_velocity_decode(const uint8_t *data, size_t len, mip_aiding_ned_velocity_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1768,6 +1807,8 @@ mip_status_t mip_aiding_body_frame_velocity_encode(const mip_aiding_body_frame_v
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_body_frame_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1780,6 +1821,8 @@ mip_status_t mip_aiding_body_frame_velocity_decode(const uint8_t *data, size_t l
                                                    mip_aiding_body_frame_velocity_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_body_frame_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1977,6 +2020,8 @@ mip_status_t mip_aiding_true_heading_encode(const mip_aiding_true_heading_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_true_heading_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1988,6 +2033,8 @@ mip_status_t mip_aiding_true_heading_encode(const mip_aiding_true_heading_t *val
 mip_status_t mip_aiding_true_heading_decode(const uint8_t *data, size_t len, mip_aiding_true_heading_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_true_heading_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2142,6 +2189,8 @@ mip_status_t mip_aiding_magnetic_field_encode(const mip_aiding_magnetic_field_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_magnetic_field_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2153,6 +2202,8 @@ mip_status_t mip_aiding_magnetic_field_encode(const mip_aiding_magnetic_field_t 
 mip_status_t mip_aiding_magnetic_field_decode(const uint8_t *data, size_t len,
                                               mip_aiding_magnetic_field_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_magnetic_field_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2349,6 +2400,8 @@ mip_status_t mip_aiding_pressure_encode(const mip_aiding_pressure_t *value, uint
                                         size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_aiding_pressure_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2360,6 +2413,8 @@ mip_status_t mip_aiding_pressure_encode(const mip_aiding_pressure_t *value, uint
 mip_status_t mip_aiding_pressure_decode(const uint8_t *data, size_t len, mip_aiding_pressure_t *out,
                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_aiding_pressure_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_base_ping_t */
@@ -21,6 +22,8 @@ static mip_status_t mip_base_ping_write(mip_writer_t *w, const mip_base_ping_t *
 mip_status_t mip_base_ping_encode(const mip_base_ping_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_ping_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -32,6 +35,8 @@ mip_status_t mip_base_ping_encode(const mip_base_ping_t *value, uint8_t *buf, si
 mip_status_t mip_base_ping_decode(const uint8_t *data, size_t len, mip_base_ping_t *out,
                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_ping_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -70,6 +75,8 @@ mip_status_t mip_base_set_to_idle_encode(const mip_base_set_to_idle_t *value, ui
                                          size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_set_to_idle_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -81,6 +88,8 @@ mip_status_t mip_base_set_to_idle_encode(const mip_base_set_to_idle_t *value, ui
 mip_status_t mip_base_set_to_idle_decode(const uint8_t *data, size_t len, mip_base_set_to_idle_t *out,
                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_set_to_idle_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -119,6 +128,8 @@ mip_status_t mip_base_get_device_info_encode(const mip_base_get_device_info_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_get_device_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -130,6 +141,8 @@ mip_status_t mip_base_get_device_info_encode(const mip_base_get_device_info_t *v
 mip_status_t mip_base_get_device_info_decode(const uint8_t *data, size_t len, mip_base_get_device_info_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_get_device_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -174,6 +187,8 @@ mip_status_t mip_base_device_info_encode(const mip_base_device_info_t *value, ui
                                          size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_device_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -185,6 +200,8 @@ mip_status_t mip_base_device_info_encode(const mip_base_device_info_t *value, ui
 mip_status_t mip_base_device_info_decode(const uint8_t *data, size_t len, mip_base_device_info_t *out,
                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_device_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -238,6 +255,8 @@ mip_status_t mip_base_get_device_descriptors_encode(const mip_base_get_device_de
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_get_device_descriptors_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -250,6 +269,8 @@ mip_status_t mip_base_get_device_descriptors_decode(const uint8_t *data, size_t 
                                                     mip_base_get_device_descriptors_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_get_device_descriptors_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -311,6 +332,8 @@ mip_status_t mip_base_device_descriptors_encode(const mip_base_device_descriptor
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_device_descriptors_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -322,6 +345,8 @@ mip_status_t mip_base_device_descriptors_encode(const mip_base_device_descriptor
 mip_status_t mip_base_device_descriptors_decode(const uint8_t *data, size_t len,
                                                 mip_base_device_descriptors_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_device_descriptors_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -401,6 +426,8 @@ mip_status_t mip_base_built_in_test_encode(const mip_base_built_in_test_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_built_in_test_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -412,6 +439,8 @@ mip_status_t mip_base_built_in_test_encode(const mip_base_built_in_test_t *value
 mip_status_t mip_base_built_in_test_decode(const uint8_t *data, size_t len, mip_base_built_in_test_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -459,6 +488,8 @@ mip_status_t mip_base_built_in_test_result_gx5_45_encode(const mip_base_built_in
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_built_in_test_result_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -479,6 +510,8 @@ static int mip_base_built_in_test_result_gx5_45_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_base_built_in_test_result_gx5_45_decode_read(
     const uint8_t *data, size_t len, mip_base_built_in_test_result_gx5_45_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_result_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -487,6 +520,8 @@ static MIP_NOINLINE mip_status_t mip_base_built_in_test_result_gx5_45_decode_rea
 mip_status_t mip_base_built_in_test_result_gx5_45_decode(const uint8_t *data, size_t len,
                                                          mip_base_built_in_test_result_gx5_45_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_base_built_in_test_result_gx5_45_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -552,6 +587,8 @@ mip_base_built_in_test_result_cv7_ins_encode(const mip_base_built_in_test_result
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_built_in_test_result_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -572,6 +609,8 @@ static int mip_base_built_in_test_result_cv7_ins_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_base_built_in_test_result_cv7_ins_decode_read(
     const uint8_t *data, size_t len, mip_base_built_in_test_result_cv7_ins_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_built_in_test_result_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -580,6 +619,8 @@ static MIP_NOINLINE mip_status_t mip_base_built_in_test_result_cv7_ins_decode_re
 mip_status_t mip_base_built_in_test_result_cv7_ins_decode(const uint8_t *data, size_t len,
                                                           mip_base_built_in_test_result_cv7_ins_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_base_built_in_test_result_cv7_ins_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -635,6 +676,8 @@ mip_status_t mip_base_resume_encode(const mip_base_resume_t *value, uint8_t *buf
                                     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_resume_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -646,6 +689,8 @@ mip_status_t mip_base_resume_encode(const mip_base_resume_t *value, uint8_t *buf
 mip_status_t mip_base_resume_decode(const uint8_t *data, size_t len, mip_base_resume_t *out,
                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_resume_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -685,6 +730,8 @@ mip_status_t mip_base_get_extended_descriptors_encode(const mip_base_get_extende
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_get_extended_descriptors_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -697,6 +744,8 @@ mip_status_t mip_base_get_extended_descriptors_decode(const uint8_t *data, size_
                                                       mip_base_get_extended_descriptors_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_get_extended_descriptors_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -758,6 +807,8 @@ mip_status_t mip_base_extended_descriptors_encode(const mip_base_extended_descri
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_extended_descriptors_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -770,6 +821,8 @@ mip_status_t mip_base_extended_descriptors_decode(const uint8_t *data, size_t le
                                                   mip_base_extended_descriptors_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_extended_descriptors_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -849,6 +902,8 @@ mip_status_t mip_base_continuous_bit_encode(const mip_base_continuous_bit_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_continuous_bit_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -860,6 +915,8 @@ mip_status_t mip_base_continuous_bit_encode(const mip_base_continuous_bit_t *val
 mip_status_t mip_base_continuous_bit_decode(const uint8_t *data, size_t len, mip_base_continuous_bit_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_continuous_bit_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -905,6 +962,8 @@ mip_status_t mip_base_continuous_bit_result_encode(const mip_base_continuous_bit
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_continuous_bit_result_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -917,6 +976,8 @@ mip_status_t mip_base_continuous_bit_result_decode(const uint8_t *data, size_t l
                                                    mip_base_continuous_bit_result_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_continuous_bit_result_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1002,6 +1063,8 @@ mip_status_t mip_base_comm_port_speed_encode(const mip_base_comm_port_speed_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_comm_port_speed_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1013,6 +1076,8 @@ mip_status_t mip_base_comm_port_speed_encode(const mip_base_comm_port_speed_t *v
 mip_status_t mip_base_comm_port_speed_decode(const uint8_t *data, size_t len, mip_base_comm_port_speed_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_comm_port_speed_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1111,6 +1176,8 @@ mip_status_t mip_base_comm_port_speed_response_encode(const mip_base_comm_port_s
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_comm_port_speed_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1132,6 +1199,8 @@ static int mip_base_comm_port_speed_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_base_comm_port_speed_response_decode_read(
     const uint8_t *data, size_t len, mip_base_comm_port_speed_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_comm_port_speed_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1140,6 +1209,8 @@ static MIP_NOINLINE mip_status_t mip_base_comm_port_speed_response_decode_read(
 mip_status_t mip_base_comm_port_speed_response_decode(const uint8_t *data, size_t len,
                                                       mip_base_comm_port_speed_response_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_base_comm_port_speed_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1240,6 +1311,8 @@ mip_status_t mip_base_gps_time_update_gx5_45_encode(const mip_base_gps_time_upda
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_gps_time_update_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1252,6 +1325,8 @@ mip_status_t mip_base_gps_time_update_gx5_45_decode(const uint8_t *data, size_t 
                                                     mip_base_gps_time_update_gx5_45_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_time_update_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1359,6 +1434,8 @@ mip_status_t mip_base_gps_time_update_cv7_ins_encode(const mip_base_gps_time_upd
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_gps_time_update_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1380,6 +1457,8 @@ static int mip_base_gps_time_update_cv7_ins_load(const uint8_t *d, mip_base_gps_
 static MIP_NOINLINE mip_status_t mip_base_gps_time_update_cv7_ins_decode_read(
     const uint8_t *data, size_t len, mip_base_gps_time_update_cv7_ins_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_time_update_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1388,6 +1467,8 @@ static MIP_NOINLINE mip_status_t mip_base_gps_time_update_cv7_ins_decode_read(
 mip_status_t mip_base_gps_time_update_cv7_ins_decode(const uint8_t *data, size_t len,
                                                      mip_base_gps_time_update_cv7_ins_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_base_gps_time_update_cv7_ins_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1474,6 +1555,8 @@ mip_status_t mip_base_gps_week_encode(const mip_base_gps_week_t *value, uint8_t 
                                       size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_gps_week_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1494,6 +1577,8 @@ static MIP_NOINLINE mip_status_t mip_base_gps_week_decode_read(const uint8_t *da
                                                                mip_base_gps_week_t *out,
                                                                mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_week_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1501,6 +1586,8 @@ static MIP_NOINLINE mip_status_t mip_base_gps_week_decode_read(const uint8_t *da
 
 mip_status_t mip_base_gps_week_decode(const uint8_t *data, size_t len, mip_base_gps_week_t *out,
                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_base_gps_week_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1560,6 +1647,8 @@ mip_status_t mip_base_gps_seconds_encode(const mip_base_gps_seconds_t *value, ui
                                          size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_gps_seconds_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1580,6 +1669,8 @@ static MIP_NOINLINE mip_status_t mip_base_gps_seconds_decode_read(const uint8_t 
                                                                   mip_base_gps_seconds_t *out,
                                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_gps_seconds_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1587,6 +1678,8 @@ static MIP_NOINLINE mip_status_t mip_base_gps_seconds_decode_read(const uint8_t 
 
 mip_status_t mip_base_gps_seconds_decode(const uint8_t *data, size_t len, mip_base_gps_seconds_t *out,
                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_base_gps_seconds_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1640,6 +1733,8 @@ mip_status_t mip_base_device_reset_encode(const mip_base_device_reset_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_base_device_reset_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1651,6 +1746,8 @@ mip_status_t mip_base_device_reset_encode(const mip_base_device_reset_t *value, 
 mip_status_t mip_base_device_reset_decode(const uint8_t *data, size_t len, mip_base_device_reset_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_base_device_reset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_filter_reset_filter_t */
@@ -22,6 +23,8 @@ mip_status_t mip_filter_reset_filter_encode(const mip_filter_reset_filter_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_reset_filter_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -33,6 +36,8 @@ mip_status_t mip_filter_reset_filter_encode(const mip_filter_reset_filter_t *val
 mip_status_t mip_filter_reset_filter_decode(const uint8_t *data, size_t len, mip_filter_reset_filter_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_reset_filter_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -94,6 +99,8 @@ mip_status_t mip_filter_set_initial_attitude_encode(const mip_filter_set_initial
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_set_initial_attitude_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -115,6 +122,8 @@ static int mip_filter_set_initial_attitude_load(const uint8_t *d, mip_filter_set
 static MIP_NOINLINE mip_status_t mip_filter_set_initial_attitude_decode_read(
     const uint8_t *data, size_t len, mip_filter_set_initial_attitude_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_set_initial_attitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -123,6 +132,8 @@ static MIP_NOINLINE mip_status_t mip_filter_set_initial_attitude_decode_read(
 mip_status_t mip_filter_set_initial_attitude_decode(const uint8_t *data, size_t len,
                                                     mip_filter_set_initial_attitude_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_set_initial_attitude_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -210,6 +221,8 @@ mip_status_t mip_filter_set_initial_heading_encode(const mip_filter_set_initial_
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_set_initial_heading_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -229,6 +242,8 @@ static int mip_filter_set_initial_heading_load(const uint8_t *d, mip_filter_set_
 static MIP_NOINLINE mip_status_t mip_filter_set_initial_heading_decode_read(
     const uint8_t *data, size_t len, mip_filter_set_initial_heading_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_set_initial_heading_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -237,6 +252,8 @@ static MIP_NOINLINE mip_status_t mip_filter_set_initial_heading_decode_read(
 mip_status_t mip_filter_set_initial_heading_decode(const uint8_t *data, size_t len,
                                                    mip_filter_set_initial_heading_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_filter_set_initial_heading_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -291,6 +308,8 @@ mip_status_t mip_filter_run_filter_encode(const mip_filter_run_filter_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_run_filter_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -302,6 +321,8 @@ mip_status_t mip_filter_run_filter_encode(const mip_filter_run_filter_t *value, 
 mip_status_t mip_filter_run_filter_decode(const uint8_t *data, size_t len, mip_filter_run_filter_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_run_filter_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -365,6 +386,8 @@ mip_status_t mip_filter_vehicle_dynamics_mode_encode(const mip_filter_vehicle_dy
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_vehicle_dynamics_mode_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -377,6 +400,8 @@ mip_status_t mip_filter_vehicle_dynamics_mode_decode(const uint8_t *data, size_t
                                                      mip_filter_vehicle_dynamics_mode_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_vehicle_dynamics_mode_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -458,6 +483,8 @@ mip_filter_vehicle_dynamics_mode_response_encode(const mip_filter_vehicle_dynami
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_vehicle_dynamics_mode_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -479,6 +506,8 @@ static MIP_NOINLINE mip_status_t mip_filter_vehicle_dynamics_mode_response_decod
     const uint8_t *data, size_t len, mip_filter_vehicle_dynamics_mode_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_vehicle_dynamics_mode_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -488,6 +517,8 @@ mip_status_t
 mip_filter_vehicle_dynamics_mode_response_decode(const uint8_t *data, size_t len,
                                                  mip_filter_vehicle_dynamics_mode_response_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_vehicle_dynamics_mode_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -605,6 +636,8 @@ mip_filter_sensor_to_vehicle_transform_encode(const mip_filter_sensor_to_vehicle
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_sensor_to_vehicle_transform_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -617,6 +650,8 @@ mip_status_t mip_filter_sensor_to_vehicle_transform_decode(const uint8_t *data, 
                                                            mip_filter_sensor_to_vehicle_transform_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_sensor_to_vehicle_transform_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -749,6 +784,8 @@ mip_status_t mip_filter_sensor_to_vehicle_transform_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_sensor_to_vehicle_transform_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -773,6 +810,8 @@ static MIP_NOINLINE mip_status_t mip_filter_sensor_to_vehicle_transform_response
     const uint8_t *data, size_t len, mip_filter_sensor_to_vehicle_transform_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_sensor_to_vehicle_transform_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -782,6 +821,8 @@ mip_status_t
 mip_filter_sensor_to_vehicle_transform_response_decode(const uint8_t *data, size_t len,
                                                        mip_filter_sensor_to_vehicle_transform_response_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_sensor_to_vehicle_transform_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -896,6 +937,8 @@ mip_status_t mip_filter_sensor_to_vehicle_offset_encode(const mip_filter_sensor_
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_sensor_to_vehicle_offset_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -908,6 +951,8 @@ mip_status_t mip_filter_sensor_to_vehicle_offset_decode(const uint8_t *data, siz
                                                         mip_filter_sensor_to_vehicle_offset_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_sensor_to_vehicle_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1026,6 +1071,8 @@ mip_status_t mip_filter_sensor_to_vehicle_offset_response_encode(
     const mip_filter_sensor_to_vehicle_offset_response_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_sensor_to_vehicle_offset_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1050,6 +1097,8 @@ static MIP_NOINLINE mip_status_t mip_filter_sensor_to_vehicle_offset_response_de
     const uint8_t *data, size_t len, mip_filter_sensor_to_vehicle_offset_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_sensor_to_vehicle_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1059,6 +1108,8 @@ mip_status_t
 mip_filter_sensor_to_vehicle_offset_response_decode(const uint8_t *data, size_t len,
                                                     mip_filter_sensor_to_vehicle_offset_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_sensor_to_vehicle_offset_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1174,6 +1225,8 @@ mip_status_t mip_filter_antenna_offset_encode(const mip_filter_antenna_offset_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_antenna_offset_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1185,6 +1238,8 @@ mip_status_t mip_filter_antenna_offset_encode(const mip_filter_antenna_offset_t 
 mip_status_t mip_filter_antenna_offset_decode(const uint8_t *data, size_t len,
                                               mip_filter_antenna_offset_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_antenna_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1299,6 +1354,8 @@ mip_status_t mip_filter_antenna_offset_response_encode(const mip_filter_antenna_
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_antenna_offset_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1321,6 +1378,8 @@ static int mip_filter_antenna_offset_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_antenna_offset_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_antenna_offset_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_antenna_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1329,6 +1388,8 @@ static MIP_NOINLINE mip_status_t mip_filter_antenna_offset_response_decode_read(
 mip_status_t mip_filter_antenna_offset_response_decode(const uint8_t *data, size_t len,
                                                        mip_filter_antenna_offset_response_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_antenna_offset_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1437,6 +1498,8 @@ mip_status_t mip_filter_estimation_control_encode(const mip_filter_estimation_co
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_estimation_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1449,6 +1512,8 @@ mip_status_t mip_filter_estimation_control_decode(const uint8_t *data, size_t le
                                                   mip_filter_estimation_control_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_estimation_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1529,6 +1594,8 @@ mip_filter_estimation_control_response_encode(const mip_filter_estimation_contro
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_estimation_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1549,6 +1616,8 @@ static int mip_filter_estimation_control_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_estimation_control_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_estimation_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_estimation_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1557,6 +1626,8 @@ static MIP_NOINLINE mip_status_t mip_filter_estimation_control_response_decode_r
 mip_status_t mip_filter_estimation_control_response_decode(const uint8_t *data, size_t len,
                                                            mip_filter_estimation_control_response_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_filter_estimation_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1637,6 +1708,8 @@ mip_status_t mip_filter_gnss_source_control_encode(const mip_filter_gnss_source_
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gnss_source_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1649,6 +1722,8 @@ mip_status_t mip_filter_gnss_source_control_decode(const uint8_t *data, size_t l
                                                    mip_filter_gnss_source_control_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_source_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1730,6 +1805,8 @@ mip_filter_gnss_source_control_response_encode(const mip_filter_gnss_source_cont
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gnss_source_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1751,6 +1828,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gnss_source_control_response_decode_
     const uint8_t *data, size_t len, mip_filter_gnss_source_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_source_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1759,6 +1838,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gnss_source_control_response_decode_
 mip_status_t mip_filter_gnss_source_control_response_decode(const uint8_t *data, size_t len,
                                                             mip_filter_gnss_source_control_response_t *out,
                                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_gnss_source_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1894,6 +1975,8 @@ mip_status_t mip_filter_external_gnss_update_encode(const mip_filter_external_gn
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_external_gnss_update_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1926,6 +2009,8 @@ static int mip_filter_external_gnss_update_load(const uint8_t *d, mip_filter_ext
 static MIP_NOINLINE mip_status_t mip_filter_external_gnss_update_decode_read(
     const uint8_t *data, size_t len, mip_filter_external_gnss_update_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_gnss_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1934,6 +2019,8 @@ static MIP_NOINLINE mip_status_t mip_filter_external_gnss_update_decode_read(
 mip_status_t mip_filter_external_gnss_update_decode(const uint8_t *data, size_t len,
                                                     mip_filter_external_gnss_update_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 70 && mip_filter_external_gnss_update_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2189,6 +2276,8 @@ mip_status_t mip_filter_external_heading_update_encode(const mip_filter_external
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_external_heading_update_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2211,6 +2300,8 @@ static int mip_filter_external_heading_update_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_external_heading_update_decode_read(
     const uint8_t *data, size_t len, mip_filter_external_heading_update_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_heading_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2219,6 +2310,8 @@ static MIP_NOINLINE mip_status_t mip_filter_external_heading_update_decode_read(
 mip_status_t mip_filter_external_heading_update_decode(const uint8_t *data, size_t len,
                                                        mip_filter_external_heading_update_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 9 && mip_filter_external_heading_update_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2324,6 +2417,8 @@ mip_status_t mip_filter_heading_update_control_encode(const mip_filter_heading_u
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_heading_update_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2336,6 +2431,8 @@ mip_status_t mip_filter_heading_update_control_decode(const uint8_t *data, size_
                                                       mip_filter_heading_update_control_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_heading_update_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2418,6 +2515,8 @@ mip_filter_heading_update_control_response_encode(const mip_filter_heading_updat
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_heading_update_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2440,6 +2539,8 @@ static MIP_NOINLINE mip_status_t mip_filter_heading_update_control_response_deco
     const uint8_t *data, size_t len, mip_filter_heading_update_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_heading_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2449,6 +2550,8 @@ mip_status_t
 mip_filter_heading_update_control_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_heading_update_control_response_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_heading_update_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2529,6 +2632,8 @@ mip_status_t mip_filter_auto_init_control_encode(const mip_filter_auto_init_cont
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_auto_init_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2541,6 +2646,8 @@ mip_status_t mip_filter_auto_init_control_decode(const uint8_t *data, size_t len
                                                  mip_filter_auto_init_control_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_auto_init_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2621,6 +2728,8 @@ mip_filter_auto_init_control_response_encode(const mip_filter_auto_init_control_
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_auto_init_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2641,6 +2750,8 @@ static int mip_filter_auto_init_control_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_auto_init_control_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_auto_init_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_auto_init_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2649,6 +2760,8 @@ static MIP_NOINLINE mip_status_t mip_filter_auto_init_control_response_decode_re
 mip_status_t mip_filter_auto_init_control_response_decode(const uint8_t *data, size_t len,
                                                           mip_filter_auto_init_control_response_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_auto_init_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2735,6 +2848,8 @@ mip_status_t mip_filter_accel_noise_encode(const mip_filter_accel_noise_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_accel_noise_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2746,6 +2861,8 @@ mip_status_t mip_filter_accel_noise_encode(const mip_filter_accel_noise_t *value
 mip_status_t mip_filter_accel_noise_decode(const uint8_t *data, size_t len, mip_filter_accel_noise_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_noise_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2859,6 +2976,8 @@ mip_status_t mip_filter_accel_noise_response_encode(const mip_filter_accel_noise
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_accel_noise_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2880,6 +2999,8 @@ static int mip_filter_accel_noise_response_load(const uint8_t *d, mip_filter_acc
 static MIP_NOINLINE mip_status_t mip_filter_accel_noise_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_accel_noise_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2888,6 +3009,8 @@ static MIP_NOINLINE mip_status_t mip_filter_accel_noise_response_decode_read(
 mip_status_t mip_filter_accel_noise_response_decode(const uint8_t *data, size_t len,
                                                     mip_filter_accel_noise_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_accel_noise_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3002,6 +3125,8 @@ mip_status_t mip_filter_gyro_noise_encode(const mip_filter_gyro_noise_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gyro_noise_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3013,6 +3138,8 @@ mip_status_t mip_filter_gyro_noise_encode(const mip_filter_gyro_noise_t *value, 
 mip_status_t mip_filter_gyro_noise_decode(const uint8_t *data, size_t len, mip_filter_gyro_noise_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_noise_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3126,6 +3253,8 @@ mip_status_t mip_filter_gyro_noise_response_encode(const mip_filter_gyro_noise_r
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gyro_noise_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3147,6 +3276,8 @@ static int mip_filter_gyro_noise_response_load(const uint8_t *d, mip_filter_gyro
 static MIP_NOINLINE mip_status_t mip_filter_gyro_noise_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_gyro_noise_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3155,6 +3286,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gyro_noise_response_decode_read(
 mip_status_t mip_filter_gyro_noise_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_gyro_noise_response_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_gyro_noise_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3292,6 +3425,8 @@ mip_status_t mip_filter_accel_bias_model_encode(const mip_filter_accel_bias_mode
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_accel_bias_model_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3303,6 +3438,8 @@ mip_status_t mip_filter_accel_bias_model_encode(const mip_filter_accel_bias_mode
 mip_status_t mip_filter_accel_bias_model_decode(const uint8_t *data, size_t len,
                                                 mip_filter_accel_bias_model_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_bias_model_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3473,6 +3610,8 @@ mip_status_t mip_filter_accel_bias_model_response_encode(const mip_filter_accel_
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_accel_bias_model_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3498,6 +3637,8 @@ static int mip_filter_accel_bias_model_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_accel_bias_model_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_accel_bias_model_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_accel_bias_model_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3506,6 +3647,8 @@ static MIP_NOINLINE mip_status_t mip_filter_accel_bias_model_response_decode_rea
 mip_status_t mip_filter_accel_bias_model_response_decode(const uint8_t *data, size_t len,
                                                          mip_filter_accel_bias_model_response_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 24 && mip_filter_accel_bias_model_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3682,6 +3825,8 @@ mip_status_t mip_filter_gyro_bias_model_encode(const mip_filter_gyro_bias_model_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gyro_bias_model_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3693,6 +3838,8 @@ mip_status_t mip_filter_gyro_bias_model_encode(const mip_filter_gyro_bias_model_
 mip_status_t mip_filter_gyro_bias_model_decode(const uint8_t *data, size_t len,
                                                mip_filter_gyro_bias_model_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_bias_model_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3862,6 +4009,8 @@ mip_status_t mip_filter_gyro_bias_model_response_encode(const mip_filter_gyro_bi
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gyro_bias_model_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3887,6 +4036,8 @@ static int mip_filter_gyro_bias_model_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_gyro_bias_model_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_gyro_bias_model_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gyro_bias_model_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3895,6 +4046,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gyro_bias_model_response_decode_read
 mip_status_t mip_filter_gyro_bias_model_response_decode(const uint8_t *data, size_t len,
                                                         mip_filter_gyro_bias_model_response_t *out,
                                                         mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 24 && mip_filter_gyro_bias_model_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4058,6 +4211,8 @@ mip_status_t mip_filter_zupt_control_encode(const mip_filter_zupt_control_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_zupt_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4069,6 +4224,8 @@ mip_status_t mip_filter_zupt_control_encode(const mip_filter_zupt_control_t *val
 mip_status_t mip_filter_zupt_control_decode(const uint8_t *data, size_t len, mip_filter_zupt_control_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zupt_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4171,6 +4328,8 @@ mip_status_t mip_filter_zupt_control_response_encode(const mip_filter_zupt_contr
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_zupt_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4191,6 +4350,8 @@ static int mip_filter_zupt_control_response_load(const uint8_t *d, mip_filter_zu
 static MIP_NOINLINE mip_status_t mip_filter_zupt_control_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_zupt_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zupt_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4199,6 +4360,8 @@ static MIP_NOINLINE mip_status_t mip_filter_zupt_control_response_decode_read(
 mip_status_t mip_filter_zupt_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_zupt_control_response_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_filter_zupt_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4308,6 +4471,8 @@ mip_status_t mip_filter_external_heading_update_with_time_encode(
     const mip_filter_external_heading_update_with_time_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_external_heading_update_with_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4334,6 +4499,8 @@ static MIP_NOINLINE mip_status_t mip_filter_external_heading_update_with_time_de
     const uint8_t *data, size_t len, mip_filter_external_heading_update_with_time_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_external_heading_update_with_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4343,6 +4510,8 @@ mip_status_t
 mip_filter_external_heading_update_with_time_decode(const uint8_t *data, size_t len,
                                                     mip_filter_external_heading_update_with_time_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 19 && mip_filter_external_heading_update_with_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4496,6 +4665,8 @@ mip_filter_zero_angular_rate_update_control_encode(const mip_filter_zero_angular
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_zero_angular_rate_update_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4509,6 +4680,8 @@ mip_filter_zero_angular_rate_update_control_decode(const uint8_t *data, size_t l
                                                    mip_filter_zero_angular_rate_update_control_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zero_angular_rate_update_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4615,6 +4788,8 @@ mip_status_t mip_filter_zero_angular_rate_update_control_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_zero_angular_rate_update_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4637,6 +4812,8 @@ static MIP_NOINLINE mip_status_t mip_filter_zero_angular_rate_update_control_res
     const uint8_t *data, size_t len, mip_filter_zero_angular_rate_update_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_zero_angular_rate_update_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4645,6 +4822,8 @@ static MIP_NOINLINE mip_status_t mip_filter_zero_angular_rate_update_control_res
 mip_status_t mip_filter_zero_angular_rate_update_control_response_decode(
     const uint8_t *data, size_t len, mip_filter_zero_angular_rate_update_control_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_filter_zero_angular_rate_update_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4738,6 +4917,8 @@ mip_status_t mip_filter_tare_orientation_encode(const mip_filter_tare_orientatio
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_tare_orientation_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4749,6 +4930,8 @@ mip_status_t mip_filter_tare_orientation_encode(const mip_filter_tare_orientatio
 mip_status_t mip_filter_tare_orientation_decode(const uint8_t *data, size_t len,
                                                 mip_filter_tare_orientation_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_tare_orientation_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4819,6 +5002,8 @@ mip_status_t mip_filter_commanded_zupt_encode(const mip_filter_commanded_zupt_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_commanded_zupt_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4830,6 +5015,8 @@ mip_status_t mip_filter_commanded_zupt_encode(const mip_filter_commanded_zupt_t 
 mip_status_t mip_filter_commanded_zupt_decode(const uint8_t *data, size_t len,
                                               mip_filter_commanded_zupt_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_commanded_zupt_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4871,6 +5058,8 @@ mip_status_t mip_filter_commanded_zero_angular_rate_update_encode(
     const mip_filter_commanded_zero_angular_rate_update_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_commanded_zero_angular_rate_update_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4884,6 +5073,8 @@ mip_filter_commanded_zero_angular_rate_update_decode(const uint8_t *data, size_t
                                                      mip_filter_commanded_zero_angular_rate_update_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_commanded_zero_angular_rate_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4934,6 +5125,8 @@ mip_filter_mag_capture_auto_calibration_encode(const mip_filter_mag_capture_auto
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_capture_auto_calibration_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4955,6 +5148,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_capture_auto_calibration_decode_
     const uint8_t *data, size_t len, mip_filter_mag_capture_auto_calibration_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_capture_auto_calibration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4963,6 +5158,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_capture_auto_calibration_decode_
 mip_status_t mip_filter_mag_capture_auto_calibration_decode(const uint8_t *data, size_t len,
                                                             mip_filter_mag_capture_auto_calibration_t *out,
                                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_mag_capture_auto_calibration_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5050,6 +5247,8 @@ mip_status_t mip_filter_gravity_noise_std_dev_encode(const mip_filter_gravity_no
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gravity_noise_std_dev_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5062,6 +5261,8 @@ mip_status_t mip_filter_gravity_noise_std_dev_decode(const uint8_t *data, size_t
                                                      mip_filter_gravity_noise_std_dev_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_noise_std_dev_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5179,6 +5380,8 @@ mip_filter_gravity_noise_std_dev_response_encode(const mip_filter_gravity_noise_
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gravity_noise_std_dev_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5202,6 +5405,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gravity_noise_std_dev_response_decod
     const uint8_t *data, size_t len, mip_filter_gravity_noise_std_dev_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5211,6 +5416,8 @@ mip_status_t
 mip_filter_gravity_noise_std_dev_response_decode(const uint8_t *data, size_t len,
                                                  mip_filter_gravity_noise_std_dev_response_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_gravity_noise_std_dev_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5324,6 +5531,8 @@ mip_filter_pressure_altitude_noise_std_dev_encode(const mip_filter_pressure_alti
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_pressure_altitude_noise_std_dev_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5337,6 +5546,8 @@ mip_filter_pressure_altitude_noise_std_dev_decode(const uint8_t *data, size_t le
                                                   mip_filter_pressure_altitude_noise_std_dev_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pressure_altitude_noise_std_dev_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5418,6 +5629,8 @@ mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_pressure_altitude_noise_std_dev_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5439,6 +5652,8 @@ static MIP_NOINLINE mip_status_t mip_filter_pressure_altitude_noise_std_dev_resp
     const uint8_t *data, size_t len, mip_filter_pressure_altitude_noise_std_dev_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pressure_altitude_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5447,6 +5662,8 @@ static MIP_NOINLINE mip_status_t mip_filter_pressure_altitude_noise_std_dev_resp
 mip_status_t mip_filter_pressure_altitude_noise_std_dev_response_decode(
     const uint8_t *data, size_t len, mip_filter_pressure_altitude_noise_std_dev_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_filter_pressure_altitude_noise_std_dev_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5534,6 +5751,8 @@ mip_status_t mip_filter_hard_iron_offset_noise_encode(const mip_filter_hard_iron
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_hard_iron_offset_noise_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5546,6 +5765,8 @@ mip_status_t mip_filter_hard_iron_offset_noise_decode(const uint8_t *data, size_
                                                       mip_filter_hard_iron_offset_noise_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_hard_iron_offset_noise_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5664,6 +5885,8 @@ mip_filter_hard_iron_offset_noise_response_encode(const mip_filter_hard_iron_off
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_hard_iron_offset_noise_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5688,6 +5911,8 @@ static MIP_NOINLINE mip_status_t mip_filter_hard_iron_offset_noise_response_deco
     const uint8_t *data, size_t len, mip_filter_hard_iron_offset_noise_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_hard_iron_offset_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5697,6 +5922,8 @@ mip_status_t
 mip_filter_hard_iron_offset_noise_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_hard_iron_offset_noise_response_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_hard_iron_offset_noise_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5813,6 +6040,8 @@ mip_status_t mip_filter_soft_iron_matrix_noise_encode(const mip_filter_soft_iron
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_soft_iron_matrix_noise_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5825,6 +6054,8 @@ mip_status_t mip_filter_soft_iron_matrix_noise_decode(const uint8_t *data, size_
                                                       mip_filter_soft_iron_matrix_noise_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_soft_iron_matrix_noise_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5943,6 +6174,8 @@ mip_filter_soft_iron_matrix_noise_response_encode(const mip_filter_soft_iron_mat
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_soft_iron_matrix_noise_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5973,6 +6206,8 @@ static MIP_NOINLINE mip_status_t mip_filter_soft_iron_matrix_noise_response_deco
     const uint8_t *data, size_t len, mip_filter_soft_iron_matrix_noise_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_soft_iron_matrix_noise_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5982,6 +6217,8 @@ mip_status_t
 mip_filter_soft_iron_matrix_noise_response_decode(const uint8_t *data, size_t len,
                                                   mip_filter_soft_iron_matrix_noise_response_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 36 && mip_filter_soft_iron_matrix_noise_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6098,6 +6335,8 @@ mip_status_t mip_filter_mag_noise_std_dev_encode(const mip_filter_mag_noise_std_
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_noise_std_dev_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6110,6 +6349,8 @@ mip_status_t mip_filter_mag_noise_std_dev_decode(const uint8_t *data, size_t len
                                                  mip_filter_mag_noise_std_dev_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_noise_std_dev_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6226,6 +6467,8 @@ mip_filter_mag_noise_std_dev_response_encode(const mip_filter_mag_noise_std_dev_
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_noise_std_dev_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6248,6 +6491,8 @@ static int mip_filter_mag_noise_std_dev_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_mag_noise_std_dev_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_mag_noise_std_dev_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_noise_std_dev_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6256,6 +6501,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_noise_std_dev_response_decode_re
 mip_status_t mip_filter_mag_noise_std_dev_response_decode(const uint8_t *data, size_t len,
                                                           mip_filter_mag_noise_std_dev_response_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_mag_noise_std_dev_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6382,6 +6629,8 @@ mip_status_t mip_filter_declination_source_encode(const mip_filter_declination_s
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_declination_source_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6394,6 +6643,8 @@ mip_status_t mip_filter_declination_source_decode(const uint8_t *data, size_t le
                                                   mip_filter_declination_source_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_declination_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6499,6 +6750,8 @@ mip_filter_declination_source_response_encode(const mip_filter_declination_sourc
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_declination_source_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6520,6 +6773,8 @@ static int mip_filter_declination_source_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_declination_source_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_declination_source_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_declination_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6528,6 +6783,8 @@ static MIP_NOINLINE mip_status_t mip_filter_declination_source_response_decode_r
 mip_status_t mip_filter_declination_source_response_decode(const uint8_t *data, size_t len,
                                                            mip_filter_declination_source_response_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_filter_declination_source_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6725,6 +6982,8 @@ mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gravity_magnitude_adaptive_measurement_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6737,6 +6996,8 @@ mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_decode(
     const uint8_t *data, size_t len, mip_filter_gravity_magnitude_adaptive_measurement_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_magnitude_adaptive_measurement_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6975,6 +7236,8 @@ mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gravity_magnitude_adaptive_measurement_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7002,6 +7265,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gravity_magnitude_adaptive_measureme
     const uint8_t *data, size_t len, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gravity_magnitude_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7010,6 +7275,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gravity_magnitude_adaptive_measureme
 mip_status_t mip_filter_gravity_magnitude_adaptive_measurement_response_decode(
     const uint8_t *data, size_t len, mip_filter_gravity_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 25 && mip_filter_gravity_magnitude_adaptive_measurement_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -7278,6 +7545,8 @@ mip_status_t mip_filter_mag_magnitude_adaptive_measurement_encode(
     const mip_filter_mag_magnitude_adaptive_measurement_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_magnitude_adaptive_measurement_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7291,6 +7560,8 @@ mip_filter_mag_magnitude_adaptive_measurement_decode(const uint8_t *data, size_t
                                                      mip_filter_mag_magnitude_adaptive_measurement_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_magnitude_adaptive_measurement_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7529,6 +7800,8 @@ mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_magnitude_adaptive_measurement_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7556,6 +7829,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_magnitude_adaptive_measurement_r
     const uint8_t *data, size_t len, mip_filter_mag_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_magnitude_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7564,6 +7839,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_magnitude_adaptive_measurement_r
 mip_status_t mip_filter_mag_magnitude_adaptive_measurement_response_decode(
     const uint8_t *data, size_t len, mip_filter_mag_magnitude_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 25 && mip_filter_mag_magnitude_adaptive_measurement_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -7798,6 +8075,8 @@ mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_encode(
     const mip_filter_mag_dip_angle_adaptive_measurement_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_dip_angle_adaptive_measurement_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7811,6 +8090,8 @@ mip_filter_mag_dip_angle_adaptive_measurement_decode(const uint8_t *data, size_t
                                                      mip_filter_mag_dip_angle_adaptive_measurement_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_dip_angle_adaptive_measurement_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7993,6 +8274,8 @@ mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_mag_dip_angle_adaptive_measurement_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8018,6 +8301,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_r
     const uint8_t *data, size_t len, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_mag_dip_angle_adaptive_measurement_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8026,6 +8311,8 @@ static MIP_NOINLINE mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_r
 mip_status_t mip_filter_mag_dip_angle_adaptive_measurement_response_decode(
     const uint8_t *data, size_t len, mip_filter_mag_dip_angle_adaptive_measurement_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 17 && mip_filter_mag_dip_angle_adaptive_measurement_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8160,6 +8447,8 @@ mip_status_t mip_filter_altitude_aiding_control_encode(const mip_filter_altitude
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_altitude_aiding_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8172,6 +8461,8 @@ mip_status_t mip_filter_altitude_aiding_control_decode(const uint8_t *data, size
                                                        mip_filter_altitude_aiding_control_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_altitude_aiding_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8254,6 +8545,8 @@ mip_filter_altitude_aiding_control_response_encode(const mip_filter_altitude_aid
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_altitude_aiding_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8276,6 +8569,8 @@ static MIP_NOINLINE mip_status_t mip_filter_altitude_aiding_control_response_dec
     const uint8_t *data, size_t len, mip_filter_altitude_aiding_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_altitude_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8285,6 +8580,8 @@ mip_status_t
 mip_filter_altitude_aiding_control_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_altitude_aiding_control_response_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_altitude_aiding_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8367,6 +8664,8 @@ mip_status_t mip_filter_pitch_roll_aiding_control_encode(const mip_filter_pitch_
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_pitch_roll_aiding_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8379,6 +8678,8 @@ mip_status_t mip_filter_pitch_roll_aiding_control_decode(const uint8_t *data, si
                                                          mip_filter_pitch_roll_aiding_control_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pitch_roll_aiding_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8460,6 +8761,8 @@ mip_status_t mip_filter_pitch_roll_aiding_control_response_encode(
     const mip_filter_pitch_roll_aiding_control_response_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_pitch_roll_aiding_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8482,6 +8785,8 @@ static MIP_NOINLINE mip_status_t mip_filter_pitch_roll_aiding_control_response_d
     const uint8_t *data, size_t len, mip_filter_pitch_roll_aiding_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_pitch_roll_aiding_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8491,6 +8796,8 @@ mip_status_t
 mip_filter_pitch_roll_aiding_control_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_pitch_roll_aiding_control_response_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_pitch_roll_aiding_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8588,6 +8895,8 @@ mip_status_t mip_filter_inclination_source_encode(const mip_filter_inclination_s
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_inclination_source_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8600,6 +8909,8 @@ mip_status_t mip_filter_inclination_source_decode(const uint8_t *data, size_t le
                                                   mip_filter_inclination_source_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_inclination_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8705,6 +9016,8 @@ mip_filter_inclination_source_response_encode(const mip_filter_inclination_sourc
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_inclination_source_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8726,6 +9039,8 @@ static int mip_filter_inclination_source_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_inclination_source_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_inclination_source_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_inclination_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8734,6 +9049,8 @@ static MIP_NOINLINE mip_status_t mip_filter_inclination_source_response_decode_r
 mip_status_t mip_filter_inclination_source_response_decode(const uint8_t *data, size_t len,
                                                            mip_filter_inclination_source_response_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_filter_inclination_source_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8848,6 +9165,8 @@ mip_filter_magnetic_field_magnitude_source_encode(const mip_filter_magnetic_fiel
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_magnetic_field_magnitude_source_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8861,6 +9180,8 @@ mip_filter_magnetic_field_magnitude_source_decode(const uint8_t *data, size_t le
                                                   mip_filter_magnetic_field_magnitude_source_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_magnetic_field_magnitude_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8967,6 +9288,8 @@ mip_status_t mip_filter_magnetic_field_magnitude_source_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_magnetic_field_magnitude_source_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8989,6 +9312,8 @@ static MIP_NOINLINE mip_status_t mip_filter_magnetic_field_magnitude_source_resp
     const uint8_t *data, size_t len, mip_filter_magnetic_field_magnitude_source_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_magnetic_field_magnitude_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8997,6 +9322,8 @@ static MIP_NOINLINE mip_status_t mip_filter_magnetic_field_magnitude_source_resp
 mip_status_t mip_filter_magnetic_field_magnitude_source_response_decode(
     const uint8_t *data, size_t len, mip_filter_magnetic_field_magnitude_source_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_filter_magnetic_field_magnitude_source_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -9101,6 +9428,8 @@ mip_filter_aiding_measurement_control_encode(const mip_filter_aiding_measurement
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_aiding_measurement_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9113,6 +9442,8 @@ mip_status_t mip_filter_aiding_measurement_control_decode(const uint8_t *data, s
                                                           mip_filter_aiding_measurement_control_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_aiding_measurement_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9216,6 +9547,8 @@ mip_status_t mip_filter_aiding_measurement_control_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_aiding_measurement_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9242,6 +9575,8 @@ static MIP_NOINLINE mip_status_t mip_filter_aiding_measurement_control_response_
     const uint8_t *data, size_t len, mip_filter_aiding_measurement_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_aiding_measurement_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9251,6 +9586,8 @@ mip_status_t
 mip_filter_aiding_measurement_control_response_decode(const uint8_t *data, size_t len,
                                                       mip_filter_aiding_measurement_control_response_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 3 && mip_filter_aiding_measurement_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -9495,6 +9832,8 @@ mip_filter_initialization_configuration_encode(const mip_filter_initialization_c
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_initialization_configuration_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9507,6 +9846,8 @@ mip_status_t mip_filter_initialization_configuration_decode(const uint8_t *data,
                                                             mip_filter_initialization_configuration_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_initialization_configuration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9858,6 +10199,8 @@ mip_status_t mip_filter_initialization_configuration_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_initialization_configuration_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9891,6 +10234,8 @@ static MIP_NOINLINE mip_status_t mip_filter_initialization_configuration_respons
     const uint8_t *data, size_t len, mip_filter_initialization_configuration_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_initialization_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9899,6 +10244,8 @@ static MIP_NOINLINE mip_status_t mip_filter_initialization_configuration_respons
 mip_status_t mip_filter_initialization_configuration_response_decode(
     const uint8_t *data, size_t len, mip_filter_initialization_configuration_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 40 && mip_filter_initialization_configuration_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -10158,6 +10505,8 @@ mip_status_t mip_filter_adaptive_filter_control_encode(const mip_filter_adaptive
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_adaptive_filter_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10170,6 +10519,8 @@ mip_status_t mip_filter_adaptive_filter_control_decode(const uint8_t *data, size
                                                        mip_filter_adaptive_filter_control_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_adaptive_filter_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10277,6 +10628,8 @@ mip_filter_adaptive_filter_control_response_encode(const mip_filter_adaptive_fil
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_adaptive_filter_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10300,6 +10653,8 @@ static MIP_NOINLINE mip_status_t mip_filter_adaptive_filter_control_response_dec
     const uint8_t *data, size_t len, mip_filter_adaptive_filter_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_adaptive_filter_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10309,6 +10664,8 @@ mip_status_t
 mip_filter_adaptive_filter_control_response_decode(const uint8_t *data, size_t len,
                                                    mip_filter_adaptive_filter_control_response_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 3 && mip_filter_adaptive_filter_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -10417,6 +10774,8 @@ mip_status_t mip_filter_multi_antenna_offset_encode(const mip_filter_multi_anten
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_multi_antenna_offset_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10429,6 +10788,8 @@ mip_status_t mip_filter_multi_antenna_offset_decode(const uint8_t *data, size_t 
                                                     mip_filter_multi_antenna_offset_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_multi_antenna_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10567,6 +10928,8 @@ mip_filter_multi_antenna_offset_response_encode(const mip_filter_multi_antenna_o
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_multi_antenna_offset_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10591,6 +10954,8 @@ static MIP_NOINLINE mip_status_t mip_filter_multi_antenna_offset_response_decode
     const uint8_t *data, size_t len, mip_filter_multi_antenna_offset_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_multi_antenna_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10599,6 +10964,8 @@ static MIP_NOINLINE mip_status_t mip_filter_multi_antenna_offset_response_decode
 mip_status_t mip_filter_multi_antenna_offset_response_decode(const uint8_t *data, size_t len,
                                                              mip_filter_multi_antenna_offset_response_t *out,
                                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 13 && mip_filter_multi_antenna_offset_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -10766,6 +11133,8 @@ mip_filter_relative_position_configuration_encode(const mip_filter_relative_posi
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_relative_position_configuration_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10779,6 +11148,8 @@ mip_filter_relative_position_configuration_decode(const uint8_t *data, size_t le
                                                   mip_filter_relative_position_configuration_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_relative_position_configuration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10947,6 +11318,8 @@ mip_status_t mip_filter_relative_position_configuration_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_relative_position_configuration_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10972,6 +11345,8 @@ static MIP_NOINLINE mip_status_t mip_filter_relative_position_configuration_resp
     const uint8_t *data, size_t len, mip_filter_relative_position_configuration_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_relative_position_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10980,6 +11355,8 @@ static MIP_NOINLINE mip_status_t mip_filter_relative_position_configuration_resp
 mip_status_t mip_filter_relative_position_configuration_response_decode(
     const uint8_t *data, size_t len, mip_filter_relative_position_configuration_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 26 && mip_filter_relative_position_configuration_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -11141,6 +11518,8 @@ mip_status_t mip_filter_reference_point_lever_arm_encode(const mip_filter_refere
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_reference_point_lever_arm_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11153,6 +11532,8 @@ mip_status_t mip_filter_reference_point_lever_arm_decode(const uint8_t *data, si
                                                          mip_filter_reference_point_lever_arm_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_reference_point_lever_arm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11295,6 +11676,8 @@ mip_status_t mip_filter_reference_point_lever_arm_response_encode(
     const mip_filter_reference_point_lever_arm_response_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_reference_point_lever_arm_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11320,6 +11703,8 @@ static MIP_NOINLINE mip_status_t mip_filter_reference_point_lever_arm_response_d
     const uint8_t *data, size_t len, mip_filter_reference_point_lever_arm_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_reference_point_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11329,6 +11714,8 @@ mip_status_t
 mip_filter_reference_point_lever_arm_response_decode(const uint8_t *data, size_t len,
                                                      mip_filter_reference_point_lever_arm_response_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 13 && mip_filter_reference_point_lever_arm_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -11466,6 +11853,8 @@ mip_status_t mip_filter_speed_lever_arm_encode(const mip_filter_speed_lever_arm_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_speed_lever_arm_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11477,6 +11866,8 @@ mip_status_t mip_filter_speed_lever_arm_encode(const mip_filter_speed_lever_arm_
 mip_status_t mip_filter_speed_lever_arm_decode(const uint8_t *data, size_t len,
                                                mip_filter_speed_lever_arm_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_speed_lever_arm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11612,6 +12003,8 @@ mip_status_t mip_filter_speed_lever_arm_response_encode(const mip_filter_speed_l
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_speed_lever_arm_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11635,6 +12028,8 @@ static int mip_filter_speed_lever_arm_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_speed_lever_arm_response_decode_read(
     const uint8_t *data, size_t len, mip_filter_speed_lever_arm_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_speed_lever_arm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11643,6 +12038,8 @@ static MIP_NOINLINE mip_status_t mip_filter_speed_lever_arm_response_decode_read
 mip_status_t mip_filter_speed_lever_arm_response_decode(const uint8_t *data, size_t len,
                                                         mip_filter_speed_lever_arm_response_t *out,
                                                         mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 13 && mip_filter_speed_lever_arm_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -11767,6 +12164,8 @@ mip_status_t mip_filter_wheeled_vehicle_constraint_control_encode(
     const mip_filter_wheeled_vehicle_constraint_control_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_wheeled_vehicle_constraint_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11780,6 +12179,8 @@ mip_filter_wheeled_vehicle_constraint_control_decode(const uint8_t *data, size_t
                                                      mip_filter_wheeled_vehicle_constraint_control_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_wheeled_vehicle_constraint_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11861,6 +12262,8 @@ mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_wheeled_vehicle_constraint_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11882,6 +12285,8 @@ static MIP_NOINLINE mip_status_t mip_filter_wheeled_vehicle_constraint_control_r
     const uint8_t *data, size_t len, mip_filter_wheeled_vehicle_constraint_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_wheeled_vehicle_constraint_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11890,6 +12295,8 @@ static MIP_NOINLINE mip_status_t mip_filter_wheeled_vehicle_constraint_control_r
 mip_status_t mip_filter_wheeled_vehicle_constraint_control_response_decode(
     const uint8_t *data, size_t len, mip_filter_wheeled_vehicle_constraint_control_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_filter_wheeled_vehicle_constraint_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -11991,6 +12398,8 @@ mip_filter_gnss_antenna_calibration_control_encode(const mip_filter_gnss_antenna
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gnss_antenna_calibration_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12004,6 +12413,8 @@ mip_filter_gnss_antenna_calibration_control_decode(const uint8_t *data, size_t l
                                                    mip_filter_gnss_antenna_calibration_control_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_antenna_calibration_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12110,6 +12521,8 @@ mip_status_t mip_filter_gnss_antenna_calibration_control_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_gnss_antenna_calibration_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12132,6 +12545,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gnss_antenna_calibration_control_res
     const uint8_t *data, size_t len, mip_filter_gnss_antenna_calibration_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_gnss_antenna_calibration_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12140,6 +12555,8 @@ static MIP_NOINLINE mip_status_t mip_filter_gnss_antenna_calibration_control_res
 mip_status_t mip_filter_gnss_antenna_calibration_control_response_decode(
     const uint8_t *data, size_t len, mip_filter_gnss_antenna_calibration_control_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_filter_gnss_antenna_calibration_control_response_load(data, out) == 0) {
         return MIP_OK;
     }

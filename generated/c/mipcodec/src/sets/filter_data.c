@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_filter_data_llh_position_t */
@@ -53,6 +54,8 @@ mip_status_t mip_filter_data_llh_position_encode(const mip_filter_data_llh_posit
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_llh_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -76,6 +79,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_decode_read(const 
                                                                           mip_filter_data_llh_position_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -84,6 +89,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_decode_read(const 
 mip_status_t mip_filter_data_llh_position_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_llh_position_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 26 && mip_filter_data_llh_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -207,6 +214,8 @@ mip_status_t mip_filter_data_ned_velocity_encode(const mip_filter_data_ned_veloc
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ned_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -230,6 +239,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_decode_read(const 
                                                                           mip_filter_data_ned_velocity_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -238,6 +249,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_decode_read(const 
 mip_status_t mip_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ned_velocity_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_ned_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -353,6 +366,8 @@ mip_status_t mip_filter_data_attitude_quaternion_encode(const mip_filter_data_at
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_attitude_quaternion_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -377,6 +392,8 @@ static int mip_filter_data_attitude_quaternion_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_attitude_quaternion_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_attitude_quaternion_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_attitude_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -385,6 +402,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_attitude_quaternion_decode_read
 mip_status_t mip_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
                                                         mip_filter_data_attitude_quaternion_t *out,
                                                         mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 18 && mip_filter_data_attitude_quaternion_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -504,6 +523,8 @@ mip_status_t mip_filter_data_attitude_dcm_encode(const mip_filter_data_attitude_
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_attitude_dcm_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -533,6 +554,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_attitude_dcm_decode_read(const 
                                                                           mip_filter_data_attitude_dcm_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_attitude_dcm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -541,6 +564,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_attitude_dcm_decode_read(const 
 mip_status_t mip_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_attitude_dcm_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 38 && mip_filter_data_attitude_dcm_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -667,6 +692,8 @@ mip_status_t mip_filter_data_euler_angles_encode(const mip_filter_data_euler_ang
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_euler_angles_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -690,6 +717,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_decode_read(const 
                                                                           mip_filter_data_euler_angles_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -698,6 +727,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_decode_read(const 
 mip_status_t mip_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_euler_angles_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_euler_angles_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -811,6 +842,8 @@ mip_status_t mip_filter_data_gyro_bias_encode(const mip_filter_data_gyro_bias_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gyro_bias_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -834,6 +867,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_decode_read(const uin
                                                                        mip_filter_data_gyro_bias_t *out,
                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -841,6 +876,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_decode_read(const uin
 
 mip_status_t mip_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
                                               mip_filter_data_gyro_bias_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gyro_bias_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -958,6 +995,8 @@ mip_status_t mip_filter_data_accel_bias_encode(const mip_filter_data_accel_bias_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_accel_bias_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -981,6 +1020,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_decode_read(const ui
                                                                         mip_filter_data_accel_bias_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -988,6 +1029,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_decode_read(const ui
 
 mip_status_t mip_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
                                                mip_filter_data_accel_bias_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_accel_bias_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1117,6 +1160,8 @@ mip_filter_data_llh_position_uncertainty_encode(const mip_filter_data_llh_positi
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_llh_position_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1141,6 +1186,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_uncertainty_decode
     const uint8_t *data, size_t len, mip_filter_data_llh_position_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_llh_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1149,6 +1196,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_uncertainty_decode
 mip_status_t mip_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_llh_position_uncertainty_t *out,
                                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_llh_position_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1277,6 +1326,8 @@ mip_filter_data_ned_velocity_uncertainty_encode(const mip_filter_data_ned_veloci
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ned_velocity_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1301,6 +1352,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_uncertainty_decode
     const uint8_t *data, size_t len, mip_filter_data_ned_velocity_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1309,6 +1362,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_uncertainty_decode
 mip_status_t mip_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_ned_velocity_uncertainty_t *out,
                                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_ned_velocity_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1437,6 +1492,8 @@ mip_filter_data_euler_angles_uncertainty_encode(const mip_filter_data_euler_angl
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_euler_angles_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1461,6 +1518,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_uncertainty_decode
     const uint8_t *data, size_t len, mip_filter_data_euler_angles_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_euler_angles_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1469,6 +1528,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_uncertainty_decode
 mip_status_t mip_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_euler_angles_uncertainty_t *out,
                                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_euler_angles_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1588,6 +1649,8 @@ mip_filter_data_gyro_bias_uncertainty_encode(const mip_filter_data_gyro_bias_unc
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gyro_bias_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1611,6 +1674,8 @@ static int mip_filter_data_gyro_bias_uncertainty_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_gyro_bias_uncertainty_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1619,6 +1684,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_uncertainty_decode_re
 mip_status_t mip_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
                                                           mip_filter_data_gyro_bias_uncertainty_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gyro_bias_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1741,6 +1808,8 @@ mip_filter_data_accel_bias_uncertainty_encode(const mip_filter_data_accel_bias_u
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_accel_bias_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1764,6 +1833,8 @@ static int mip_filter_data_accel_bias_uncertainty_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_uncertainty_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_accel_bias_uncertainty_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1772,6 +1843,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_uncertainty_decode_r
 mip_status_t mip_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
                                                            mip_filter_data_accel_bias_uncertainty_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_accel_bias_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1891,6 +1964,8 @@ mip_status_t mip_filter_data_linear_accel_encode(const mip_filter_data_linear_ac
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_linear_accel_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1914,6 +1989,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_linear_accel_decode_read(const 
                                                                           mip_filter_data_linear_accel_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_linear_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1922,6 +1999,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_linear_accel_decode_read(const 
 mip_status_t mip_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_linear_accel_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_linear_accel_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2039,6 +2118,8 @@ mip_status_t mip_filter_data_comp_angular_rate_encode(const mip_filter_data_comp
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_comp_angular_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2062,6 +2143,8 @@ static int mip_filter_data_comp_angular_rate_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_comp_angular_rate_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_comp_angular_rate_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_comp_angular_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2070,6 +2153,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_comp_angular_rate_decode_read(
 mip_status_t mip_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_comp_angular_rate_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_comp_angular_rate_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2184,6 +2269,8 @@ mip_filter_data_wgs84_gravity_magnitude_encode(const mip_filter_data_wgs84_gravi
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_wgs84_gravity_magnitude_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2206,6 +2293,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode_
     const uint8_t *data, size_t len, mip_filter_data_wgs84_gravity_magnitude_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_wgs84_gravity_magnitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2214,6 +2303,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode_
 mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
                                                             mip_filter_data_wgs84_gravity_magnitude_t *out,
                                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_filter_data_wgs84_gravity_magnitude_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2307,6 +2398,8 @@ mip_status_t mip_filter_data_filter_status_gx5_45_encode(const mip_filter_data_f
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_filter_status_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2329,6 +2422,8 @@ static int mip_filter_data_filter_status_gx5_45_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_gx5_45_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_filter_status_gx5_45_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_filter_status_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2337,6 +2432,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_gx5_45_decode_rea
 mip_status_t mip_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
                                                          mip_filter_data_filter_status_gx5_45_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_filter_data_filter_status_gx5_45_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2444,6 +2541,8 @@ mip_filter_data_filter_status_cv7_ins_encode(const mip_filter_data_filter_status
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_filter_status_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2466,6 +2565,8 @@ static int mip_filter_data_filter_status_cv7_ins_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_cv7_ins_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_filter_status_cv7_ins_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_filter_status_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2474,6 +2575,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_cv7_ins_decode_re
 mip_status_t mip_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
                                                           mip_filter_data_filter_status_cv7_ins_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_filter_data_filter_status_cv7_ins_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2578,6 +2681,8 @@ mip_status_t mip_filter_data_gps_timestamp_encode(const mip_filter_data_gps_time
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gps_timestamp_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2599,6 +2704,8 @@ static int mip_filter_data_gps_timestamp_load(const uint8_t *d, mip_filter_data_
 static MIP_NOINLINE mip_status_t mip_filter_data_gps_timestamp_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_gps_timestamp_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2607,6 +2714,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gps_timestamp_decode_read(
 mip_status_t mip_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_gps_timestamp_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_data_gps_timestamp_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2711,6 +2820,8 @@ mip_status_t mip_filter_data_quaternion_attitude_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_quaternion_attitude_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2737,6 +2848,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_quaternion_attitude_uncertainty
     const uint8_t *data, size_t len, mip_filter_data_quaternion_attitude_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_quaternion_attitude_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2746,6 +2859,8 @@ mip_status_t
 mip_filter_data_quaternion_attitude_uncertainty_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_quaternion_attitude_uncertainty_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 18 && mip_filter_data_quaternion_attitude_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2865,6 +2980,8 @@ mip_status_t mip_filter_data_gravity_vector_encode(const mip_filter_data_gravity
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gravity_vector_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2887,6 +3004,8 @@ static int mip_filter_data_gravity_vector_load(const uint8_t *d, mip_filter_data
 static MIP_NOINLINE mip_status_t mip_filter_data_gravity_vector_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_gravity_vector_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gravity_vector_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2895,6 +3014,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gravity_vector_decode_read(
 mip_status_t mip_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_gravity_vector_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gravity_vector_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3024,6 +3145,8 @@ mip_status_t mip_filter_data_heading_update_state_encode(const mip_filter_data_h
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_heading_update_state_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3047,6 +3170,8 @@ static int mip_filter_data_heading_update_state_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_heading_update_state_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_heading_update_state_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_heading_update_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3055,6 +3180,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_heading_update_state_decode_rea
 mip_status_t mip_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
                                                          mip_filter_data_heading_update_state_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_filter_data_heading_update_state_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3196,6 +3323,8 @@ mip_status_t mip_filter_data_magnetic_model_encode(const mip_filter_data_magneti
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_magnetic_model_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3220,6 +3349,8 @@ static int mip_filter_data_magnetic_model_load(const uint8_t *d, mip_filter_data
 static MIP_NOINLINE mip_status_t mip_filter_data_magnetic_model_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_magnetic_model_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_magnetic_model_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3228,6 +3359,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_magnetic_model_decode_read(
 mip_status_t mip_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_magnetic_model_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 22 && mip_filter_data_magnetic_model_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3370,6 +3503,8 @@ mip_status_t mip_filter_data_gyro_scale_factor_encode(const mip_filter_data_gyro
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gyro_scale_factor_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3393,6 +3528,8 @@ static int mip_filter_data_gyro_scale_factor_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_gyro_scale_factor_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3401,6 +3538,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_decode_read(
 mip_status_t mip_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_gyro_scale_factor_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gyro_scale_factor_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3520,6 +3659,8 @@ mip_status_t mip_filter_data_accel_scale_factor_encode(const mip_filter_data_acc
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_accel_scale_factor_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3543,6 +3684,8 @@ static int mip_filter_data_accel_scale_factor_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_accel_scale_factor_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3551,6 +3694,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_decode_read(
 mip_status_t mip_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_accel_scale_factor_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_accel_scale_factor_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3671,6 +3816,8 @@ mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_encode(
     const mip_filter_data_gyro_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gyro_scale_factor_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3696,6 +3843,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_d
     const uint8_t *data, size_t len, mip_filter_data_gyro_scale_factor_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gyro_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3705,6 +3854,8 @@ mip_status_t
 mip_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
                                                      mip_filter_data_gyro_scale_factor_uncertainty_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gyro_scale_factor_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3827,6 +3978,8 @@ mip_status_t mip_filter_data_accel_scale_factor_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_accel_scale_factor_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3852,6 +4005,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_uncertainty_
     const uint8_t *data, size_t len, mip_filter_data_accel_scale_factor_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_accel_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3861,6 +4016,8 @@ mip_status_t
 mip_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_accel_scale_factor_uncertainty_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_accel_scale_factor_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3980,6 +4137,8 @@ mip_status_t mip_filter_data_compensated_accel_encode(const mip_filter_data_comp
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_compensated_accel_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4003,6 +4162,8 @@ static int mip_filter_data_compensated_accel_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_compensated_accel_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_compensated_accel_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_compensated_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4011,6 +4172,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_compensated_accel_decode_read(
 mip_status_t mip_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_compensated_accel_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_compensated_accel_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4155,6 +4318,8 @@ mip_status_t mip_filter_data_standard_atmosphere_encode(const mip_filter_data_st
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_standard_atmosphere_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4180,6 +4345,8 @@ static int mip_filter_data_standard_atmosphere_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_standard_atmosphere_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_standard_atmosphere_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_standard_atmosphere_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4188,6 +4355,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_standard_atmosphere_decode_read
 mip_status_t mip_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
                                                         mip_filter_data_standard_atmosphere_t *out,
                                                         mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 22 && mip_filter_data_standard_atmosphere_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4324,6 +4493,8 @@ mip_status_t mip_filter_data_pressure_altitude_encode(const mip_filter_data_pres
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_pressure_altitude_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4345,6 +4516,8 @@ static int mip_filter_data_pressure_altitude_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_pressure_altitude_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_pressure_altitude_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_pressure_altitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4353,6 +4526,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_pressure_altitude_decode_read(
 mip_status_t mip_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_pressure_altitude_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_filter_data_pressure_altitude_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4445,6 +4620,8 @@ mip_filter_data_mag_auto_hard_iron_offset_encode(const mip_filter_data_mag_auto_
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_mag_auto_hard_iron_offset_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4469,6 +4646,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_decod
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_hard_iron_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4478,6 +4657,8 @@ mip_status_t
 mip_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_mag_auto_hard_iron_offset_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4600,6 +4781,8 @@ mip_filter_data_mag_auto_soft_iron_matrix_encode(const mip_filter_data_mag_auto_
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_mag_auto_soft_iron_matrix_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4630,6 +4813,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_decod
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_soft_iron_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4639,6 +4824,8 @@ mip_status_t
 mip_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_mag_auto_soft_iron_matrix_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4760,6 +4947,8 @@ mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_mag_auto_hard_iron_offset_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4784,6 +4973,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncer
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4792,6 +4983,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncer
 mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4913,6 +5106,8 @@ mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4943,6 +5138,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncer
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4951,6 +5148,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncer
 mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5073,6 +5272,8 @@ mip_status_t mip_filter_data_gnss_antenna_offset_correction_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gnss_antenna_offset_correction_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5098,6 +5299,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_
     const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5107,6 +5310,8 @@ mip_status_t
 mip_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
                                                       mip_filter_data_gnss_antenna_offset_correction_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5228,6 +5433,8 @@ mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gnss_antenna_offset_correction_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5252,6 +5459,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_
     const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5260,6 +5469,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_
 mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5390,6 +5601,8 @@ mip_status_t mip_filter_data_multi_antenna_offset_correction_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_multi_antenna_offset_correction_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5416,6 +5629,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction
     const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_multi_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5425,6 +5640,8 @@ mip_status_t
 mip_filter_data_multi_antenna_offset_correction_decode(const uint8_t *data, size_t len,
                                                        mip_filter_data_multi_antenna_offset_correction_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 15 && mip_filter_data_multi_antenna_offset_correction_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5567,6 +5784,8 @@ mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_multi_antenna_offset_correction_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5592,6 +5811,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction
     const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_multi_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE
@@ -5601,6 +5822,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction
 mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 15 && mip_filter_data_multi_antenna_offset_correction_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5736,6 +5959,8 @@ mip_filter_data_ecef_position_uncertainty_encode(const mip_filter_data_ecef_posi
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ecef_position_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5760,6 +5985,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_uncertainty_decod
     const uint8_t *data, size_t len, mip_filter_data_ecef_position_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5769,6 +5996,8 @@ mip_status_t
 mip_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ecef_position_uncertainty_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_ecef_position_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5891,6 +6120,8 @@ mip_filter_data_ecef_velocity_uncertainty_encode(const mip_filter_data_ecef_velo
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ecef_velocity_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5915,6 +6146,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_uncertainty_decod
     const uint8_t *data, size_t len, mip_filter_data_ecef_velocity_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5924,6 +6157,8 @@ mip_status_t
 mip_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_ecef_velocity_uncertainty_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_ecef_velocity_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6043,6 +6278,8 @@ mip_status_t mip_filter_data_ecef_position_encode(const mip_filter_data_ecef_pos
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ecef_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6065,6 +6302,8 @@ static int mip_filter_data_ecef_position_load(const uint8_t *d, mip_filter_data_
 static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_ecef_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6073,6 +6312,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_decode_read(
 mip_status_t mip_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_ecef_position_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 26 && mip_filter_data_ecef_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6190,6 +6431,8 @@ mip_status_t mip_filter_data_ecef_velocity_encode(const mip_filter_data_ecef_vel
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ecef_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6212,6 +6455,8 @@ static int mip_filter_data_ecef_velocity_load(const uint8_t *d, mip_filter_data_
 static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_ecef_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6220,6 +6465,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_decode_read(
 mip_status_t mip_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_ecef_velocity_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_filter_data_ecef_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6340,6 +6587,8 @@ mip_filter_data_ned_relative_position_encode(const mip_filter_data_ned_relative_
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_ned_relative_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6363,6 +6612,8 @@ static int mip_filter_data_ned_relative_position_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_filter_data_ned_relative_position_decode_read(
     const uint8_t *data, size_t len, mip_filter_data_ned_relative_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_ned_relative_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6371,6 +6622,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_ned_relative_position_decode_re
 mip_status_t mip_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
                                                           mip_filter_data_ned_relative_position_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 26 && mip_filter_data_ned_relative_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6510,6 +6763,8 @@ mip_filter_data_gnss_position_aiding_status_encode(const mip_filter_data_gnss_po
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gnss_position_aiding_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6542,6 +6797,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gnss_position_aiding_status_dec
     const uint8_t *data, size_t len, mip_filter_data_gnss_position_aiding_status_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_position_aiding_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6551,6 +6808,8 @@ mip_status_t
 mip_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_gnss_position_aiding_status_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 15 && mip_filter_data_gnss_position_aiding_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6709,6 +6968,8 @@ mip_filter_data_aiding_measurement_summary_encode(const mip_filter_data_aiding_m
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_aiding_measurement_summary_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6734,6 +6995,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_aiding_measurement_summary_deco
     const uint8_t *data, size_t len, mip_filter_data_aiding_measurement_summary_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_measurement_summary_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6743,6 +7006,8 @@ mip_status_t
 mip_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
                                                   mip_filter_data_aiding_measurement_summary_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 7 && mip_filter_data_aiding_measurement_summary_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6856,6 +7121,8 @@ mip_filter_data_odometer_scale_factor_error_encode(const mip_filter_data_odomete
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_odometer_scale_factor_error_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6879,6 +7146,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_dec
     const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_odometer_scale_factor_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6888,6 +7157,8 @@ mip_status_t
 mip_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
                                                    mip_filter_data_odometer_scale_factor_error_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_filter_data_odometer_scale_factor_error_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6973,6 +7244,8 @@ mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_odometer_scale_factor_error_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6995,6 +7268,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_unc
     const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_odometer_scale_factor_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7003,6 +7278,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_unc
 mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_filter_data_odometer_scale_factor_error_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -7121,6 +7398,8 @@ mip_filter_data_gnss_dual_antenna_status_encode(const mip_filter_data_gnss_dual_
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_gnss_dual_antenna_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7147,6 +7426,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gnss_dual_antenna_status_decode
     const uint8_t *data, size_t len, mip_filter_data_gnss_dual_antenna_status_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_gnss_dual_antenna_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7155,6 +7436,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_gnss_dual_antenna_status_decode
 mip_status_t mip_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
                                                              mip_filter_data_gnss_dual_antenna_status_t *out,
                                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 17 && mip_filter_data_gnss_dual_antenna_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -7314,6 +7597,8 @@ mip_filter_data_aiding_frame_config_error_encode(const mip_filter_data_aiding_fr
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_aiding_frame_config_error_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7342,6 +7627,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_decod
     const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_frame_config_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7351,6 +7638,8 @@ mip_status_t
 mip_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
                                                  mip_filter_data_aiding_frame_config_error_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 29 && mip_filter_data_aiding_frame_config_error_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -7523,6 +7812,8 @@ mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_filter_data_aiding_frame_config_error_uncertainty_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7550,6 +7841,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_uncer
     const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_filter_data_aiding_frame_config_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7558,6 +7851,8 @@ static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_uncer
 mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode(
     const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 25 && mip_filter_data_aiding_frame_config_error_uncertainty_load(data, out) == 0) {
         return MIP_OK;
     }

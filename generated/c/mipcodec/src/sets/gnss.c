@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_gnss_receiver_info_t */
@@ -22,6 +23,8 @@ mip_status_t mip_gnss_receiver_info_encode(const mip_gnss_receiver_info_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -33,6 +36,8 @@ mip_status_t mip_gnss_receiver_info_encode(const mip_gnss_receiver_info_t *value
 mip_status_t mip_gnss_receiver_info_decode(const uint8_t *data, size_t len, mip_gnss_receiver_info_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -99,6 +104,8 @@ mip_status_t mip_gnss_receiver_info_response_encode(const mip_gnss_receiver_info
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_info_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -111,6 +118,8 @@ mip_status_t mip_gnss_receiver_info_response_decode(const uint8_t *data, size_t 
                                                     mip_gnss_receiver_info_response_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_info_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -306,6 +315,8 @@ mip_status_t mip_gnss_signal_configuration_encode(const mip_gnss_signal_configur
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_signal_configuration_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -318,6 +329,8 @@ mip_status_t mip_gnss_signal_configuration_decode(const uint8_t *data, size_t le
                                                   mip_gnss_signal_configuration_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_signal_configuration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -535,6 +548,8 @@ mip_gnss_signal_configuration_response_encode(const mip_gnss_signal_configuratio
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_signal_configuration_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -562,6 +577,8 @@ static int mip_gnss_signal_configuration_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_signal_configuration_response_decode_read(
     const uint8_t *data, size_t len, mip_gnss_signal_configuration_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_signal_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -570,6 +587,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_signal_configuration_response_decode_r
 mip_status_t mip_gnss_signal_configuration_response_decode(const uint8_t *data, size_t len,
                                                            mip_gnss_signal_configuration_response_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 8 && mip_gnss_signal_configuration_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -851,6 +870,8 @@ mip_status_t mip_gnss_spartn_configuration_encode(const mip_gnss_spartn_configur
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_spartn_configuration_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -863,6 +884,8 @@ mip_status_t mip_gnss_spartn_configuration_decode(const uint8_t *data, size_t le
                                                   mip_gnss_spartn_configuration_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_spartn_configuration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1120,6 +1143,8 @@ mip_gnss_spartn_configuration_response_encode(const mip_gnss_spartn_configuratio
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_spartn_configuration_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1132,6 +1157,8 @@ mip_status_t mip_gnss_spartn_configuration_response_decode(const uint8_t *data, 
                                                            mip_gnss_spartn_configuration_response_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_spartn_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_gnss_corrections_base_station_info_t */
@@ -87,6 +88,8 @@ mip_gnss_corrections_base_station_info_encode(const mip_gnss_corrections_base_st
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_corrections_base_station_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -115,6 +118,8 @@ static int mip_gnss_corrections_base_station_info_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_corrections_base_station_info_decode_read(
     const uint8_t *data, size_t len, mip_gnss_corrections_base_station_info_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_corrections_base_station_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -123,6 +128,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_corrections_base_station_info_decode_r
 mip_status_t mip_gnss_corrections_base_station_info_decode(const uint8_t *data, size_t len,
                                                            mip_gnss_corrections_base_station_info_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 44 && mip_gnss_corrections_base_station_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -376,6 +383,8 @@ mip_gnss_corrections_rtk_corrections_status_encode(const mip_gnss_corrections_rt
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_corrections_rtk_corrections_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -410,6 +419,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_corrections_rtk_corrections_status_dec
     const uint8_t *data, size_t len, mip_gnss_corrections_rtk_corrections_status_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_corrections_rtk_corrections_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -419,6 +430,8 @@ mip_status_t
 mip_gnss_corrections_rtk_corrections_status_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_corrections_rtk_corrections_status_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 50 && mip_gnss_corrections_rtk_corrections_status_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_gnss_data_llh_position_t */
@@ -77,6 +78,8 @@ mip_status_t mip_gnss_data_llh_position_encode(const mip_gnss_data_llh_position_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_llh_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -103,6 +106,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_llh_position_decode_read(const ui
                                                                         mip_gnss_data_llh_position_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -110,6 +115,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_llh_position_decode_read(const ui
 
 mip_status_t mip_gnss_data_llh_position_decode(const uint8_t *data, size_t len,
                                                mip_gnss_data_llh_position_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 42 && mip_gnss_data_llh_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -273,6 +280,8 @@ mip_status_t mip_gnss_data_ecef_position_encode(const mip_gnss_data_ecef_positio
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_ecef_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -297,6 +306,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_ecef_position_decode_read(const u
                                                                          mip_gnss_data_ecef_position_t *out,
                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -304,6 +315,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_ecef_position_decode_read(const u
 
 mip_status_t mip_gnss_data_ecef_position_decode(const uint8_t *data, size_t len,
                                                 mip_gnss_data_ecef_position_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 30 && mip_gnss_data_ecef_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -474,6 +487,8 @@ mip_status_t mip_gnss_data_ned_velocity_encode(const mip_gnss_data_ned_velocity_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_ned_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -502,6 +517,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_ned_velocity_decode_read(const ui
                                                                         mip_gnss_data_ned_velocity_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -509,6 +526,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_ned_velocity_decode_read(const ui
 
 mip_status_t mip_gnss_data_ned_velocity_decode(const uint8_t *data, size_t len,
                                                mip_gnss_data_ned_velocity_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 34 && mip_gnss_data_ned_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -700,6 +719,8 @@ mip_status_t mip_gnss_data_ecef_velocity_encode(const mip_gnss_data_ecef_velocit
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_ecef_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -724,6 +745,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_ecef_velocity_decode_read(const u
                                                                          mip_gnss_data_ecef_velocity_t *out,
                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -731,6 +754,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_ecef_velocity_decode_read(const u
 
 mip_status_t mip_gnss_data_ecef_velocity_decode(const uint8_t *data, size_t len,
                                                 mip_gnss_data_ecef_velocity_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 18 && mip_gnss_data_ecef_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -901,6 +926,8 @@ mip_status_t mip_gnss_data_dop_encode(const mip_gnss_data_dop_t *value, uint8_t 
                                       size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_dop_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -928,6 +955,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_dop_decode_read(const uint8_t *da
                                                                mip_gnss_data_dop_t *out,
                                                                mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dop_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -935,6 +964,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_dop_decode_read(const uint8_t *da
 
 mip_status_t mip_gnss_data_dop_decode(const uint8_t *data, size_t len, mip_gnss_data_dop_t *out,
                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 30 && mip_gnss_data_dop_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1141,6 +1172,8 @@ mip_status_t mip_gnss_data_utc_time_encode(const mip_gnss_data_utc_time_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_utc_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1168,6 +1201,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_utc_time_decode_read(const uint8_
                                                                     mip_gnss_data_utc_time_t *out,
                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1175,6 +1210,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_utc_time_decode_read(const uint8_
 
 mip_status_t mip_gnss_data_utc_time_decode(const uint8_t *data, size_t len, mip_gnss_data_utc_time_t *out,
                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 13 && mip_gnss_data_utc_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1342,6 +1379,8 @@ mip_status_t mip_gnss_data_gps_time_encode(const mip_gnss_data_gps_time_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_gps_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1364,6 +1403,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_gps_time_decode_read(const uint8_
                                                                     mip_gnss_data_gps_time_t *out,
                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_gps_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1371,6 +1412,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_gps_time_decode_read(const uint8_
 
 mip_status_t mip_gnss_data_gps_time_decode(const uint8_t *data, size_t len, mip_gnss_data_gps_time_t *out,
                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_gnss_data_gps_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1480,6 +1523,8 @@ mip_status_t mip_gnss_data_clock_info_encode(const mip_gnss_data_clock_info_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_clock_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1503,6 +1548,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_clock_info_decode_read(const uint
                                                                       mip_gnss_data_clock_info_t *out,
                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_clock_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1510,6 +1557,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_clock_info_decode_read(const uint
 
 mip_status_t mip_gnss_data_clock_info_decode(const uint8_t *data, size_t len, mip_gnss_data_clock_info_t *out,
                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 26 && mip_gnss_data_clock_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1632,6 +1681,8 @@ mip_status_t mip_gnss_data_fix_info_encode(const mip_gnss_data_fix_info_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_fix_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1655,6 +1706,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_fix_info_decode_read(const uint8_
                                                                     mip_gnss_data_fix_info_t *out,
                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1662,6 +1715,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_fix_info_decode_read(const uint8_
 
 mip_status_t mip_gnss_data_fix_info_decode(const uint8_t *data, size_t len, mip_gnss_data_fix_info_t *out,
                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_gnss_data_fix_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1808,6 +1863,8 @@ mip_status_t mip_gnss_data_sv_info_encode(const mip_gnss_data_sv_info_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_sv_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1834,6 +1891,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_sv_info_decode_read(const uint8_t
                                                                    mip_gnss_data_sv_info_t *out,
                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_sv_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1841,6 +1900,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_sv_info_decode_read(const uint8_t
 
 mip_status_t mip_gnss_data_sv_info_decode(const uint8_t *data, size_t len, mip_gnss_data_sv_info_t *out,
                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_gnss_data_sv_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2004,6 +2065,8 @@ mip_status_t mip_gnss_data_hardware_status_encode(const mip_gnss_data_hardware_s
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_hardware_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2026,6 +2089,8 @@ static int mip_gnss_data_hardware_status_load(const uint8_t *d, mip_gnss_data_ha
 static MIP_NOINLINE mip_status_t mip_gnss_data_hardware_status_decode_read(
     const uint8_t *data, size_t len, mip_gnss_data_hardware_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_hardware_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2034,6 +2099,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_hardware_status_decode_read(
 mip_status_t mip_gnss_data_hardware_status_decode(const uint8_t *data, size_t len,
                                                   mip_gnss_data_hardware_status_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_gnss_data_hardware_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2164,6 +2231,8 @@ mip_status_t mip_gnss_data_dgnss_info_encode(const mip_gnss_data_dgnss_info_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_dgnss_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2188,6 +2257,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_dgnss_info_decode_read(const uint
                                                                       mip_gnss_data_dgnss_info_t *out,
                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dgnss_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2195,6 +2266,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_dgnss_info_decode_read(const uint
 
 mip_status_t mip_gnss_data_dgnss_info_decode(const uint8_t *data, size_t len, mip_gnss_data_dgnss_info_t *out,
                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_gnss_data_dgnss_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2341,6 +2414,8 @@ mip_status_t mip_gnss_data_dgnss_channel_status_encode(const mip_gnss_data_dgnss
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_data_dgnss_channel_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2365,6 +2440,8 @@ static int mip_gnss_data_dgnss_channel_status_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_data_dgnss_channel_status_decode_read(
     const uint8_t *data, size_t len, mip_gnss_data_dgnss_channel_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_data_dgnss_channel_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2373,6 +2450,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_data_dgnss_channel_status_decode_read(
 mip_status_t mip_gnss_data_dgnss_channel_status_decode(const uint8_t *data, size_t len,
                                                        mip_gnss_data_dgnss_channel_status_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 15 && mip_gnss_data_dgnss_channel_status_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_gnss_external_llh_position_t */
@@ -77,6 +78,8 @@ mip_status_t mip_gnss_external_llh_position_encode(const mip_gnss_external_llh_p
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_external_llh_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -102,6 +105,8 @@ static int mip_gnss_external_llh_position_load(const uint8_t *d, mip_gnss_extern
 static MIP_NOINLINE mip_status_t mip_gnss_external_llh_position_decode_read(
     const uint8_t *data, size_t len, mip_gnss_external_llh_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -110,6 +115,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_llh_position_decode_read(
 mip_status_t mip_gnss_external_llh_position_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_external_llh_position_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 42 && mip_gnss_external_llh_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -306,6 +313,8 @@ mip_status_t mip_gnss_external_ned_velocity_encode(const mip_gnss_external_ned_v
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_external_ned_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -333,6 +342,8 @@ static int mip_gnss_external_ned_velocity_load(const uint8_t *d, mip_gnss_extern
 static MIP_NOINLINE mip_status_t mip_gnss_external_ned_velocity_decode_read(
     const uint8_t *data, size_t len, mip_gnss_external_ned_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -341,6 +352,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_ned_velocity_decode_read(
 mip_status_t mip_gnss_external_ned_velocity_decode(const uint8_t *data, size_t len,
                                                    mip_gnss_external_ned_velocity_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 34 && mip_gnss_external_ned_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -566,6 +579,8 @@ mip_status_t mip_gnss_external_utc_time_encode(const mip_gnss_external_utc_time_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_external_utc_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -593,6 +608,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_utc_time_decode_read(const ui
                                                                         mip_gnss_external_utc_time_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -600,6 +617,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_utc_time_decode_read(const ui
 
 mip_status_t mip_gnss_external_utc_time_decode(const uint8_t *data, size_t len,
                                                mip_gnss_external_utc_time_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 13 && mip_gnss_external_utc_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -776,6 +795,8 @@ mip_status_t mip_gnss_external_fix_info_encode(const mip_gnss_external_fix_info_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_external_fix_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -799,6 +820,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_fix_info_decode_read(const ui
                                                                         mip_gnss_external_fix_info_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -806,6 +829,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_fix_info_decode_read(const ui
 
 mip_status_t mip_gnss_external_fix_info_decode(const uint8_t *data, size_t len,
                                                mip_gnss_external_fix_info_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_gnss_external_fix_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -978,6 +1003,8 @@ mip_status_t mip_gnss_external_satellite_status_encode(const mip_gnss_external_s
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_external_satellite_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1010,6 +1037,8 @@ static int mip_gnss_external_satellite_status_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_external_satellite_status_decode_read(
     const uint8_t *data, size_t len, mip_gnss_external_satellite_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_external_satellite_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1018,6 +1047,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_external_satellite_status_decode_read(
 mip_status_t mip_gnss_external_satellite_status_decode(const uint8_t *data, size_t len,
                                                        mip_gnss_external_satellite_status_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 25 && mip_gnss_external_satellite_status_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_gnss_receiver_1_llh_position_t */
@@ -77,6 +78,8 @@ mip_status_t mip_gnss_receiver_1_llh_position_encode(const mip_gnss_receiver_1_l
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_llh_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -102,6 +105,8 @@ static int mip_gnss_receiver_1_llh_position_load(const uint8_t *d, mip_gnss_rece
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_llh_position_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_llh_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -110,6 +115,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_llh_position_decode_read(
 mip_status_t mip_gnss_receiver_1_llh_position_decode(const uint8_t *data, size_t len,
                                                      mip_gnss_receiver_1_llh_position_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 42 && mip_gnss_receiver_1_llh_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -274,6 +281,8 @@ mip_status_t mip_gnss_receiver_1_ecef_position_encode(const mip_gnss_receiver_1_
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_ecef_position_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -298,6 +307,8 @@ static int mip_gnss_receiver_1_ecef_position_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ecef_position_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_ecef_position_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -306,6 +317,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ecef_position_decode_read(
 mip_status_t mip_gnss_receiver_1_ecef_position_decode(const uint8_t *data, size_t len,
                                                       mip_gnss_receiver_1_ecef_position_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 30 && mip_gnss_receiver_1_ecef_position_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -477,6 +490,8 @@ mip_status_t mip_gnss_receiver_1_ned_velocity_encode(const mip_gnss_receiver_1_n
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_ned_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -504,6 +519,8 @@ static int mip_gnss_receiver_1_ned_velocity_load(const uint8_t *d, mip_gnss_rece
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ned_velocity_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_ned_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -512,6 +529,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ned_velocity_decode_read(
 mip_status_t mip_gnss_receiver_1_ned_velocity_decode(const uint8_t *data, size_t len,
                                                      mip_gnss_receiver_1_ned_velocity_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 34 && mip_gnss_receiver_1_ned_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -704,6 +723,8 @@ mip_status_t mip_gnss_receiver_1_ecef_velocity_encode(const mip_gnss_receiver_1_
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_ecef_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -728,6 +749,8 @@ static int mip_gnss_receiver_1_ecef_velocity_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ecef_velocity_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_ecef_velocity_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -736,6 +759,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_ecef_velocity_decode_read(
 mip_status_t mip_gnss_receiver_1_ecef_velocity_decode(const uint8_t *data, size_t len,
                                                       mip_gnss_receiver_1_ecef_velocity_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 18 && mip_gnss_receiver_1_ecef_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -907,6 +932,8 @@ mip_status_t mip_gnss_receiver_1_dop_encode(const mip_gnss_receiver_1_dop_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_dop_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -934,6 +961,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_dop_decode_read(const uint8
                                                                      mip_gnss_receiver_1_dop_t *out,
                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_dop_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -941,6 +970,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_dop_decode_read(const uint8
 
 mip_status_t mip_gnss_receiver_1_dop_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_dop_t *out,
                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 30 && mip_gnss_receiver_1_dop_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1148,6 +1179,8 @@ mip_status_t mip_gnss_receiver_1_utc_time_encode(const mip_gnss_receiver_1_utc_t
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_utc_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1175,6 +1208,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_utc_time_decode_read(const 
                                                                           mip_gnss_receiver_1_utc_time_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_utc_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1183,6 +1218,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_utc_time_decode_read(const 
 mip_status_t mip_gnss_receiver_1_utc_time_decode(const uint8_t *data, size_t len,
                                                  mip_gnss_receiver_1_utc_time_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 13 && mip_gnss_receiver_1_utc_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1351,6 +1388,8 @@ mip_status_t mip_gnss_receiver_1_gps_time_encode(const mip_gnss_receiver_1_gps_t
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_gps_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1373,6 +1412,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_time_decode_read(const 
                                                                           mip_gnss_receiver_1_gps_time_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1381,6 +1422,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_time_decode_read(const 
 mip_status_t mip_gnss_receiver_1_gps_time_decode(const uint8_t *data, size_t len,
                                                  mip_gnss_receiver_1_gps_time_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_gnss_receiver_1_gps_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1491,6 +1534,8 @@ mip_status_t mip_gnss_receiver_1_fix_info_encode(const mip_gnss_receiver_1_fix_i
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_fix_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1514,6 +1559,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_fix_info_decode_read(const 
                                                                           mip_gnss_receiver_1_fix_info_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_fix_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1522,6 +1569,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_fix_info_decode_read(const 
 mip_status_t mip_gnss_receiver_1_fix_info_decode(const uint8_t *data, size_t len,
                                                  mip_gnss_receiver_1_fix_info_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_gnss_receiver_1_fix_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1646,6 +1695,8 @@ mip_status_t mip_gnss_receiver_1_hardware_status_encode(const mip_gnss_receiver_
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_hardware_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1669,6 +1720,8 @@ static int mip_gnss_receiver_1_hardware_status_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_hardware_status_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_hardware_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_hardware_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1677,6 +1730,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_hardware_status_decode_read
 mip_status_t mip_gnss_receiver_1_hardware_status_decode(const uint8_t *data, size_t len,
                                                         mip_gnss_receiver_1_hardware_status_t *out,
                                                         mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 5 && mip_gnss_receiver_1_hardware_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1810,6 +1865,8 @@ mip_status_t mip_gnss_receiver_1_clock_info_2_encode(const mip_gnss_receiver_1_c
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_clock_info_2_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1833,6 +1890,8 @@ static int mip_gnss_receiver_1_clock_info_2_load(const uint8_t *d, mip_gnss_rece
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_clock_info_2_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_clock_info_2_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_clock_info_2_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1841,6 +1900,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_clock_info_2_decode_read(
 mip_status_t mip_gnss_receiver_1_clock_info_2_decode(const uint8_t *data, size_t len,
                                                      mip_gnss_receiver_1_clock_info_2_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 34 && mip_gnss_receiver_1_clock_info_2_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1965,6 +2026,8 @@ mip_status_t mip_gnss_receiver_1_gps_leap_seconds_encode(const mip_gnss_receiver
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_gps_leap_seconds_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1986,6 +2049,8 @@ static int mip_gnss_receiver_1_gps_leap_seconds_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_gps_leap_seconds_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_leap_seconds_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1994,6 +2059,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode_rea
 mip_status_t mip_gnss_receiver_1_gps_leap_seconds_decode(const uint8_t *data, size_t len,
                                                          mip_gnss_receiver_1_gps_leap_seconds_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 3 && mip_gnss_receiver_1_gps_leap_seconds_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2117,6 +2184,8 @@ mip_status_t mip_gnss_receiver_1_sbas_info_encode(const mip_gnss_receiver_1_sbas
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_sbas_info_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2142,6 +2211,8 @@ static int mip_gnss_receiver_1_sbas_info_load(const uint8_t *d, mip_gnss_receive
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_sbas_info_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_sbas_info_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_sbas_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2150,6 +2221,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_sbas_info_decode_read(
 mip_status_t mip_gnss_receiver_1_sbas_info_decode(const uint8_t *data, size_t len,
                                                   mip_gnss_receiver_1_sbas_info_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 16 && mip_gnss_receiver_1_sbas_info_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2363,6 +2436,8 @@ mip_status_t mip_gnss_receiver_1_satellite_status_encode(const mip_gnss_receiver
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_satellite_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2395,6 +2470,8 @@ static int mip_gnss_receiver_1_satellite_status_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_satellite_status_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_satellite_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_satellite_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2403,6 +2480,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_satellite_status_decode_rea
 mip_status_t mip_gnss_receiver_1_satellite_status_decode(const uint8_t *data, size_t len,
                                                          mip_gnss_receiver_1_satellite_status_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 25 && mip_gnss_receiver_1_satellite_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2726,6 +2805,8 @@ mip_status_t mip_gnss_receiver_1_raw_encode(const mip_gnss_receiver_1_raw_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_raw_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2764,6 +2845,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_raw_decode_read(const uint8
                                                                      mip_gnss_receiver_1_raw_t *out,
                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_raw_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2771,6 +2854,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_raw_decode_read(const uint8
 
 mip_status_t mip_gnss_receiver_1_raw_decode(const uint8_t *data, size_t len, mip_gnss_receiver_1_raw_t *out,
                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 61 && mip_gnss_receiver_1_raw_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3335,6 +3420,8 @@ mip_status_t mip_gnss_receiver_1_gps_ephemeris_encode(const mip_gnss_receiver_1_
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_gps_ephemeris_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3388,6 +3475,8 @@ static int mip_gnss_receiver_1_gps_ephemeris_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_gps_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_gps_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3396,6 +3485,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode_read(
 mip_status_t mip_gnss_receiver_1_gps_ephemeris_decode(const uint8_t *data, size_t len,
                                                       mip_gnss_receiver_1_gps_ephemeris_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 218 && mip_gnss_receiver_1_gps_ephemeris_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4131,6 +4222,8 @@ mip_gnss_receiver_1_glonass_ephemeris_encode(const mip_gnss_receiver_1_glonass_e
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_glonass_ephemeris_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4181,6 +4274,8 @@ static int mip_gnss_receiver_1_glonass_ephemeris_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_glonass_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_glonass_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4189,6 +4284,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode_re
 mip_status_t mip_gnss_receiver_1_glonass_ephemeris_decode(const uint8_t *data, size_t len,
                                                           mip_gnss_receiver_1_glonass_ephemeris_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 102 && mip_gnss_receiver_1_glonass_ephemeris_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4913,6 +5010,8 @@ mip_gnss_receiver_1_galileo_ephemeris_encode(const mip_gnss_receiver_1_galileo_e
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_galileo_ephemeris_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4966,6 +5065,8 @@ static int mip_gnss_receiver_1_galileo_ephemeris_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_galileo_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_galileo_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4974,6 +5075,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode_re
 mip_status_t mip_gnss_receiver_1_galileo_ephemeris_decode(const uint8_t *data, size_t len,
                                                           mip_gnss_receiver_1_galileo_ephemeris_t *out,
                                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 218 && mip_gnss_receiver_1_galileo_ephemeris_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5764,6 +5867,8 @@ mip_status_t mip_gnss_receiver_1_beidou_ephemeris_encode(const mip_gnss_receiver
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_gnss_receiver_1_beidou_ephemeris_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5817,6 +5922,8 @@ static int mip_gnss_receiver_1_beidou_ephemeris_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode_read(
     const uint8_t *data, size_t len, mip_gnss_receiver_1_beidou_ephemeris_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_gnss_receiver_1_beidou_ephemeris_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5825,6 +5932,8 @@ static MIP_NOINLINE mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode_rea
 mip_status_t mip_gnss_receiver_1_beidou_ephemeris_decode(const uint8_t *data, size_t len,
                                                          mip_gnss_receiver_1_beidou_ephemeris_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 218 && mip_gnss_receiver_1_beidou_ephemeris_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_sensor_scaled_accel_t */
@@ -35,6 +36,8 @@ mip_status_t mip_sensor_scaled_accel_encode(const mip_sensor_scaled_accel_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_scaled_accel_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -57,6 +60,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_accel_decode_read(const uint8
                                                                      mip_sensor_scaled_accel_t *out,
                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -64,6 +69,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_accel_decode_read(const uint8
 
 mip_status_t mip_sensor_scaled_accel_decode(const uint8_t *data, size_t len, mip_sensor_scaled_accel_t *out,
                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_scaled_accel_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -159,6 +166,8 @@ mip_status_t mip_sensor_scaled_gyro_encode(const mip_sensor_scaled_gyro_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_scaled_gyro_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -181,6 +190,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_gyro_decode_read(const uint8_
                                                                     mip_sensor_scaled_gyro_t *out,
                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_gyro_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -188,6 +199,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_gyro_decode_read(const uint8_
 
 mip_status_t mip_sensor_scaled_gyro_decode(const uint8_t *data, size_t len, mip_sensor_scaled_gyro_t *out,
                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_scaled_gyro_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -283,6 +296,8 @@ mip_status_t mip_sensor_scaled_mag_encode(const mip_sensor_scaled_mag_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_scaled_mag_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -305,6 +320,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_mag_decode_read(const uint8_t
                                                                    mip_sensor_scaled_mag_t *out,
                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_mag_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -312,6 +329,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_mag_decode_read(const uint8_t
 
 mip_status_t mip_sensor_scaled_mag_decode(const uint8_t *data, size_t len, mip_sensor_scaled_mag_t *out,
                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_scaled_mag_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -407,6 +426,8 @@ mip_status_t mip_sensor_delta_theta_encode(const mip_sensor_delta_theta_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_delta_theta_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -429,6 +450,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_delta_theta_decode_read(const uint8_
                                                                     mip_sensor_delta_theta_t *out,
                                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_delta_theta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -436,6 +459,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_delta_theta_decode_read(const uint8_
 
 mip_status_t mip_sensor_delta_theta_decode(const uint8_t *data, size_t len, mip_sensor_delta_theta_t *out,
                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_delta_theta_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -531,6 +556,8 @@ mip_status_t mip_sensor_delta_velocity_encode(const mip_sensor_delta_velocity_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_delta_velocity_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -553,6 +580,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_delta_velocity_decode_read(const uin
                                                                        mip_sensor_delta_velocity_t *out,
                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_delta_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -560,6 +589,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_delta_velocity_decode_read(const uin
 
 mip_status_t mip_sensor_delta_velocity_decode(const uint8_t *data, size_t len,
                                               mip_sensor_delta_velocity_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_delta_velocity_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -656,6 +687,8 @@ mip_status_t mip_sensor_cf_orientation_matrix_encode(const mip_sensor_cf_orienta
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_cf_orientation_matrix_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -683,6 +716,8 @@ static int mip_sensor_cf_orientation_matrix_load(const uint8_t *d, mip_sensor_cf
 static MIP_NOINLINE mip_status_t mip_sensor_cf_orientation_matrix_decode_read(
     const uint8_t *data, size_t len, mip_sensor_cf_orientation_matrix_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_orientation_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -691,6 +726,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_orientation_matrix_decode_read(
 mip_status_t mip_sensor_cf_orientation_matrix_decode(const uint8_t *data, size_t len,
                                                      mip_sensor_cf_orientation_matrix_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 36 && mip_sensor_cf_orientation_matrix_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -787,6 +824,8 @@ mip_status_t mip_sensor_cf_quaternion_encode(const mip_sensor_cf_quaternion_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_cf_quaternion_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -810,6 +849,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_quaternion_decode_read(const uint
                                                                       mip_sensor_cf_quaternion_t *out,
                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -817,6 +858,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_quaternion_decode_read(const uint
 
 mip_status_t mip_sensor_cf_quaternion_decode(const uint8_t *data, size_t len, mip_sensor_cf_quaternion_t *out,
                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 16 && mip_sensor_cf_quaternion_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -922,6 +965,8 @@ mip_status_t mip_sensor_cf_euler_angles_encode(const mip_sensor_cf_euler_angles_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_cf_euler_angles_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -944,6 +989,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_euler_angles_decode_read(const ui
                                                                         mip_sensor_cf_euler_angles_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -951,6 +998,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_euler_angles_decode_read(const ui
 
 mip_status_t mip_sensor_cf_euler_angles_decode(const uint8_t *data, size_t len,
                                                mip_sensor_cf_euler_angles_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_cf_euler_angles_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1044,6 +1093,8 @@ mip_status_t mip_sensor_cf_stabilized_north_encode(const mip_sensor_cf_stabilize
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_cf_stabilized_north_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1065,6 +1116,8 @@ static int mip_sensor_cf_stabilized_north_load(const uint8_t *d, mip_sensor_cf_s
 static MIP_NOINLINE mip_status_t mip_sensor_cf_stabilized_north_decode_read(
     const uint8_t *data, size_t len, mip_sensor_cf_stabilized_north_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_stabilized_north_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1073,6 +1126,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_stabilized_north_decode_read(
 mip_status_t mip_sensor_cf_stabilized_north_decode(const uint8_t *data, size_t len,
                                                    mip_sensor_cf_stabilized_north_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_cf_stabilized_north_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1170,6 +1225,8 @@ mip_status_t mip_sensor_cf_stabilized_up_encode(const mip_sensor_cf_stabilized_u
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_cf_stabilized_up_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1192,6 +1249,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_stabilized_up_decode_read(const u
                                                                          mip_sensor_cf_stabilized_up_t *out,
                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_cf_stabilized_up_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1199,6 +1258,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_cf_stabilized_up_decode_read(const u
 
 mip_status_t mip_sensor_cf_stabilized_up_decode(const uint8_t *data, size_t len,
                                                 mip_sensor_cf_stabilized_up_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_cf_stabilized_up_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1303,6 +1364,8 @@ mip_status_t mip_sensor_gps_timestamp_encode(const mip_sensor_gps_timestamp_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_gps_timestamp_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1325,6 +1388,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_gps_timestamp_decode_read(const uint
                                                                       mip_sensor_gps_timestamp_t *out,
                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1332,6 +1397,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_gps_timestamp_decode_read(const uint
 
 mip_status_t mip_sensor_gps_timestamp_decode(const uint8_t *data, size_t len, mip_sensor_gps_timestamp_t *out,
                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_gps_timestamp_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1434,6 +1501,8 @@ mip_status_t mip_sensor_temperature_statistics_encode(const mip_sensor_temperatu
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_temperature_statistics_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1456,6 +1525,8 @@ static int mip_sensor_temperature_statistics_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_sensor_temperature_statistics_decode_read(
     const uint8_t *data, size_t len, mip_sensor_temperature_statistics_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_temperature_statistics_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1464,6 +1535,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_temperature_statistics_decode_read(
 mip_status_t mip_sensor_temperature_statistics_decode(const uint8_t *data, size_t len,
                                                       mip_sensor_temperature_statistics_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_sensor_temperature_statistics_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1551,6 +1624,8 @@ mip_status_t mip_sensor_scaled_pressure_encode(const mip_sensor_scaled_pressure_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_scaled_pressure_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1571,6 +1646,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_pressure_decode_read(const ui
                                                                         mip_sensor_scaled_pressure_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_scaled_pressure_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1578,6 +1655,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_scaled_pressure_decode_read(const ui
 
 mip_status_t mip_sensor_scaled_pressure_decode(const uint8_t *data, size_t len,
                                                mip_sensor_scaled_pressure_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_sensor_scaled_pressure_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1638,6 +1717,8 @@ mip_status_t mip_sensor_overrange_status_encode(const mip_sensor_overrange_statu
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_overrange_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1658,6 +1739,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_overrange_status_decode_read(const u
                                                                          mip_sensor_overrange_status_t *out,
                                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_overrange_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1665,6 +1748,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_overrange_status_decode_read(const u
 
 mip_status_t mip_sensor_overrange_status_decode(const uint8_t *data, size_t len,
                                                 mip_sensor_overrange_status_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_sensor_overrange_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1740,6 +1825,8 @@ mip_status_t mip_sensor_odometer_data_encode(const mip_sensor_odometer_data_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_sensor_odometer_data_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1762,6 +1849,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_odometer_data_decode_read(const uint
                                                                       mip_sensor_odometer_data_t *out,
                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_sensor_odometer_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1769,6 +1858,8 @@ static MIP_NOINLINE mip_status_t mip_sensor_odometer_data_decode_read(const uint
 
 mip_status_t mip_sensor_odometer_data_decode(const uint8_t *data, size_t len, mip_sensor_odometer_data_t *out,
                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 10 && mip_sensor_odometer_data_load(data, out) == 0) {
         return MIP_OK;
     }

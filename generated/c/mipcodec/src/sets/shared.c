@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_shared_event_source_t */
@@ -28,6 +29,8 @@ mip_status_t mip_shared_event_source_encode(const mip_shared_event_source_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_event_source_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -48,6 +51,8 @@ static MIP_NOINLINE mip_status_t mip_shared_event_source_decode_read(const uint8
                                                                      mip_shared_event_source_t *out,
                                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_event_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -55,6 +60,8 @@ static MIP_NOINLINE mip_status_t mip_shared_event_source_decode_read(const uint8
 
 mip_status_t mip_shared_event_source_decode(const uint8_t *data, size_t len, mip_shared_event_source_t *out,
                                             mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_shared_event_source_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -130,6 +137,8 @@ mip_status_t mip_shared_gps_timestamp_encode(const mip_shared_gps_timestamp_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_gps_timestamp_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -152,6 +161,8 @@ static MIP_NOINLINE mip_status_t mip_shared_gps_timestamp_decode_read(const uint
                                                                       mip_shared_gps_timestamp_t *out,
                                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -159,6 +170,8 @@ static MIP_NOINLINE mip_status_t mip_shared_gps_timestamp_decode_read(const uint
 
 mip_status_t mip_shared_gps_timestamp_decode(const uint8_t *data, size_t len, mip_shared_gps_timestamp_t *out,
                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_shared_gps_timestamp_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -244,6 +257,8 @@ mip_status_t mip_shared_delta_time_encode(const mip_shared_delta_time_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_delta_time_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -264,6 +279,8 @@ static MIP_NOINLINE mip_status_t mip_shared_delta_time_decode_read(const uint8_t
                                                                    mip_shared_delta_time_t *out,
                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_delta_time_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -271,6 +288,8 @@ static MIP_NOINLINE mip_status_t mip_shared_delta_time_decode_read(const uint8_t
 
 mip_status_t mip_shared_delta_time_decode(const uint8_t *data, size_t len, mip_shared_delta_time_t *out,
                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 8 && mip_shared_delta_time_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -331,6 +350,8 @@ mip_status_t mip_shared_reference_timestamp_encode(const mip_shared_reference_ti
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_reference_timestamp_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -350,6 +371,8 @@ static int mip_shared_reference_timestamp_load(const uint8_t *d, mip_shared_refe
 static MIP_NOINLINE mip_status_t mip_shared_reference_timestamp_decode_read(
     const uint8_t *data, size_t len, mip_shared_reference_timestamp_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_reference_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -358,6 +381,8 @@ static MIP_NOINLINE mip_status_t mip_shared_reference_timestamp_decode_read(
 mip_status_t mip_shared_reference_timestamp_decode(const uint8_t *data, size_t len,
                                                    mip_shared_reference_timestamp_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 8 && mip_shared_reference_timestamp_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -419,6 +444,8 @@ mip_status_t mip_shared_reference_time_delta_encode(const mip_shared_reference_t
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_reference_time_delta_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -438,6 +465,8 @@ static int mip_shared_reference_time_delta_load(const uint8_t *d, mip_shared_ref
 static MIP_NOINLINE mip_status_t mip_shared_reference_time_delta_decode_read(
     const uint8_t *data, size_t len, mip_shared_reference_time_delta_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_reference_time_delta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -446,6 +475,8 @@ static MIP_NOINLINE mip_status_t mip_shared_reference_time_delta_decode_read(
 mip_status_t mip_shared_reference_time_delta_decode(const uint8_t *data, size_t len,
                                                     mip_shared_reference_time_delta_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 8 && mip_shared_reference_time_delta_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -515,6 +546,8 @@ mip_status_t mip_shared_external_timestamp_encode(const mip_shared_external_time
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_external_timestamp_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -535,6 +568,8 @@ static int mip_shared_external_timestamp_load(const uint8_t *d, mip_shared_exter
 static MIP_NOINLINE mip_status_t mip_shared_external_timestamp_decode_read(
     const uint8_t *data, size_t len, mip_shared_external_timestamp_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_external_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -543,6 +578,8 @@ static MIP_NOINLINE mip_status_t mip_shared_external_timestamp_decode_read(
 mip_status_t mip_shared_external_timestamp_decode(const uint8_t *data, size_t len,
                                                   mip_shared_external_timestamp_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 10 && mip_shared_external_timestamp_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -624,6 +661,8 @@ mip_status_t mip_shared_external_time_delta_encode(const mip_shared_external_tim
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_shared_external_time_delta_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -644,6 +683,8 @@ static int mip_shared_external_time_delta_load(const uint8_t *d, mip_shared_exte
 static MIP_NOINLINE mip_status_t mip_shared_external_time_delta_decode_read(
     const uint8_t *data, size_t len, mip_shared_external_time_delta_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_shared_external_time_delta_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -652,6 +693,8 @@ static MIP_NOINLINE mip_status_t mip_shared_external_time_delta_decode_read(
 mip_status_t mip_shared_external_time_delta_decode(const uint8_t *data, size_t len,
                                                    mip_shared_external_time_delta_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 10 && mip_shared_external_time_delta_load(data, out) == 0) {
         return MIP_OK;
     }

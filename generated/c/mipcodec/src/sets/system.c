@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_system_communication_mode_t */
@@ -47,6 +48,8 @@ mip_status_t mip_system_communication_mode_encode(const mip_system_communication
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_system_communication_mode_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -59,6 +62,8 @@ mip_status_t mip_system_communication_mode_decode(const uint8_t *data, size_t le
                                                   mip_system_communication_mode_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_communication_mode_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -139,6 +144,8 @@ mip_system_communication_mode_response_encode(const mip_system_communication_mod
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_system_communication_mode_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -159,6 +166,8 @@ static int mip_system_communication_mode_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_system_communication_mode_response_decode_read(
     const uint8_t *data, size_t len, mip_system_communication_mode_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_communication_mode_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -167,6 +176,8 @@ static MIP_NOINLINE mip_status_t mip_system_communication_mode_response_decode_r
 mip_status_t mip_system_communication_mode_response_decode(const uint8_t *data, size_t len,
                                                            mip_system_communication_mode_response_t *out,
                                                            mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_system_communication_mode_response_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_system_data_built_in_test_t */
@@ -29,6 +30,8 @@ mip_status_t mip_system_data_built_in_test_encode(const mip_system_data_built_in
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_system_data_built_in_test_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -41,6 +44,8 @@ mip_status_t mip_system_data_built_in_test_decode(const uint8_t *data, size_t le
                                                   mip_system_data_built_in_test_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_built_in_test_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -108,6 +113,8 @@ mip_status_t mip_system_data_time_sync_status_encode(const mip_system_data_time_
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_system_data_time_sync_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -131,6 +138,8 @@ static int mip_system_data_time_sync_status_load(const uint8_t *d, mip_system_da
 static MIP_NOINLINE mip_status_t mip_system_data_time_sync_status_decode_read(
     const uint8_t *data, size_t len, mip_system_data_time_sync_status_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_time_sync_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -139,6 +148,8 @@ static MIP_NOINLINE mip_status_t mip_system_data_time_sync_status_decode_read(
 mip_status_t mip_system_data_time_sync_status_decode(const uint8_t *data, size_t len,
                                                      mip_system_data_time_sync_status_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_system_data_time_sync_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -213,6 +224,8 @@ mip_status_t mip_system_data_gpio_state_encode(const mip_system_data_gpio_state_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_system_data_gpio_state_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -233,6 +246,8 @@ static MIP_NOINLINE mip_status_t mip_system_data_gpio_state_decode_read(const ui
                                                                         mip_system_data_gpio_state_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_system_data_gpio_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -240,6 +255,8 @@ static MIP_NOINLINE mip_status_t mip_system_data_gpio_state_decode_read(const ui
 
 mip_status_t mip_system_data_gpio_state_decode(const uint8_t *data, size_t len,
                                                mip_system_data_gpio_state_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_system_data_gpio_state_load(data, out) == 0) {
         return MIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mip_threedm_event_control_t */
@@ -54,6 +55,8 @@ mip_status_t mip_threedm_event_control_encode(const mip_threedm_event_control_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -65,6 +68,8 @@ mip_status_t mip_threedm_event_control_encode(const mip_threedm_event_control_t 
 mip_status_t mip_threedm_event_control_decode(const uint8_t *data, size_t len,
                                               mip_threedm_event_control_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -164,6 +169,8 @@ mip_status_t mip_threedm_event_control_response_encode(const mip_threedm_event_c
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -185,6 +192,8 @@ static int mip_threedm_event_control_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_threedm_event_control_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_event_control_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -193,6 +202,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_event_control_response_decode_read(
 mip_status_t mip_threedm_event_control_response_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_event_control_response_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_event_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -290,6 +301,8 @@ mip_status_t mip_threedm_get_event_trigger_status_encode(const mip_threedm_get_e
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_event_trigger_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -302,6 +315,8 @@ mip_status_t mip_threedm_get_event_trigger_status_decode(const uint8_t *data, si
                                                          mip_threedm_get_event_trigger_status_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_event_trigger_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -427,6 +442,8 @@ mip_status_t mip_threedm_event_trigger_status_encode(const mip_threedm_event_tri
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_trigger_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -439,6 +456,8 @@ mip_status_t mip_threedm_event_trigger_status_decode(const uint8_t *data, size_t
                                                      mip_threedm_event_trigger_status_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_trigger_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -563,6 +582,8 @@ mip_status_t mip_threedm_get_event_action_status_encode(const mip_threedm_get_ev
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_event_action_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -575,6 +596,8 @@ mip_status_t mip_threedm_get_event_action_status_decode(const uint8_t *data, siz
                                                         mip_threedm_get_event_action_status_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_event_action_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -700,6 +723,8 @@ mip_status_t mip_threedm_event_action_status_encode(const mip_threedm_event_acti
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_action_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -712,6 +737,8 @@ mip_status_t mip_threedm_event_action_status_decode(const uint8_t *data, size_t 
                                                     mip_threedm_event_action_status_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_action_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -857,6 +884,8 @@ mip_status_t mip_threedm_event_trigger_config_encode(const mip_threedm_event_tri
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_trigger_config_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -869,6 +898,8 @@ mip_status_t mip_threedm_event_trigger_config_decode(const uint8_t *data, size_t
                                                      mip_threedm_event_trigger_config_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_trigger_config_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -996,6 +1027,8 @@ mip_threedm_event_trigger_config_response_encode(const mip_threedm_event_trigger
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_trigger_config_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1009,6 +1042,8 @@ mip_threedm_event_trigger_config_response_decode(const uint8_t *data, size_t len
                                                  mip_threedm_event_trigger_config_response_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_trigger_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1156,6 +1191,8 @@ mip_status_t mip_threedm_event_action_config_encode(const mip_threedm_event_acti
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_action_config_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1168,6 +1205,8 @@ mip_status_t mip_threedm_event_action_config_decode(const uint8_t *data, size_t 
                                                     mip_threedm_event_action_config_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_action_config_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1320,6 +1359,8 @@ mip_threedm_event_action_config_response_encode(const mip_threedm_event_action_c
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_event_action_config_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1332,6 +1373,8 @@ mip_status_t mip_threedm_event_action_config_response_decode(const uint8_t *data
                                                              mip_threedm_event_action_config_response_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_event_action_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1436,6 +1479,8 @@ mip_threedm_device_startup_settings_gx5_45_encode(const mip_threedm_device_start
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_device_startup_settings_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1458,6 +1503,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_device_startup_settings_gx5_45_deco
     const uint8_t *data, size_t len, mip_threedm_device_startup_settings_gx5_45_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_startup_settings_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1467,6 +1514,8 @@ mip_status_t
 mip_threedm_device_startup_settings_gx5_45_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_device_startup_settings_gx5_45_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_device_startup_settings_gx5_45_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1533,6 +1582,8 @@ mip_threedm_device_startup_settings_cv7_ins_encode(const mip_threedm_device_star
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_device_startup_settings_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1555,6 +1606,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_device_startup_settings_cv7_ins_dec
     const uint8_t *data, size_t len, mip_threedm_device_startup_settings_cv7_ins_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_startup_settings_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1564,6 +1617,8 @@ mip_status_t
 mip_threedm_device_startup_settings_cv7_ins_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_device_startup_settings_cv7_ins_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_device_startup_settings_cv7_ins_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1679,6 +1734,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_euler_encode(const mip_threedm_sensor
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_to_vehicle_euler_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1691,6 +1748,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_euler_decode(const uint8_t *data, siz
                                                         mip_threedm_sensor_to_vehicle_euler_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_euler_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1823,6 +1882,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_euler_response_encode(
     const mip_threedm_sensor_to_vehicle_euler_response_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_to_vehicle_euler_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1847,6 +1908,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_euler_response_de
     const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_euler_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_euler_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -1856,6 +1919,8 @@ mip_status_t
 mip_threedm_sensor_to_vehicle_euler_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_sensor_to_vehicle_euler_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_threedm_sensor_to_vehicle_euler_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -1972,6 +2037,8 @@ mip_threedm_sensor_to_vehicle_quaternion_encode(const mip_threedm_sensor_to_vehi
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_to_vehicle_quaternion_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -1984,6 +2051,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_quaternion_decode(const uint8_t *data
                                                              mip_threedm_sensor_to_vehicle_quaternion_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2101,6 +2170,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_to_vehicle_quaternion_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2125,6 +2196,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_quaternion_respon
     const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_quaternion_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_quaternion_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2133,6 +2206,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_quaternion_respon
 mip_status_t mip_threedm_sensor_to_vehicle_quaternion_response_decode(
     const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_quaternion_response_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 16 && mip_threedm_sensor_to_vehicle_quaternion_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2249,6 +2324,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_dcm_encode(const mip_threedm_sensor_t
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_to_vehicle_dcm_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2261,6 +2338,8 @@ mip_status_t mip_threedm_sensor_to_vehicle_dcm_decode(const uint8_t *data, size_
                                                       mip_threedm_sensor_to_vehicle_dcm_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_dcm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2379,6 +2458,8 @@ mip_threedm_sensor_to_vehicle_dcm_response_encode(const mip_threedm_sensor_to_ve
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_to_vehicle_dcm_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2409,6 +2490,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_sensor_to_vehicle_dcm_response_deco
     const uint8_t *data, size_t len, mip_threedm_sensor_to_vehicle_dcm_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_to_vehicle_dcm_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2418,6 +2501,8 @@ mip_status_t
 mip_threedm_sensor_to_vehicle_dcm_response_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_sensor_to_vehicle_dcm_response_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 36 && mip_threedm_sensor_to_vehicle_dcm_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2534,6 +2619,8 @@ mip_status_t mip_threedm_accel_bias_gx5_45_encode(const mip_threedm_accel_bias_g
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_accel_bias_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2546,6 +2633,8 @@ mip_status_t mip_threedm_accel_bias_gx5_45_decode(const uint8_t *data, size_t le
                                                   mip_threedm_accel_bias_gx5_45_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_accel_bias_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2677,6 +2766,8 @@ mip_status_t mip_threedm_accel_bias_cv7_ins_encode(const mip_threedm_accel_bias_
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_accel_bias_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2689,6 +2780,8 @@ mip_status_t mip_threedm_accel_bias_cv7_ins_decode(const uint8_t *data, size_t l
                                                    mip_threedm_accel_bias_cv7_ins_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_accel_bias_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2803,6 +2896,8 @@ mip_status_t mip_threedm_accel_bias_response_encode(const mip_threedm_accel_bias
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_accel_bias_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2824,6 +2919,8 @@ static int mip_threedm_accel_bias_response_load(const uint8_t *d, mip_threedm_ac
 static MIP_NOINLINE mip_status_t mip_threedm_accel_bias_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_accel_bias_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_accel_bias_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -2832,6 +2929,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_accel_bias_response_decode_read(
 mip_status_t mip_threedm_accel_bias_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_accel_bias_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_threedm_accel_bias_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -2947,6 +3046,8 @@ mip_status_t mip_threedm_gyro_bias_gx5_45_encode(const mip_threedm_gyro_bias_gx5
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gyro_bias_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -2959,6 +3060,8 @@ mip_status_t mip_threedm_gyro_bias_gx5_45_decode(const uint8_t *data, size_t len
                                                  mip_threedm_gyro_bias_gx5_45_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gyro_bias_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3090,6 +3193,8 @@ mip_status_t mip_threedm_gyro_bias_cv7_ins_encode(const mip_threedm_gyro_bias_cv
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gyro_bias_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3102,6 +3207,8 @@ mip_status_t mip_threedm_gyro_bias_cv7_ins_decode(const uint8_t *data, size_t le
                                                   mip_threedm_gyro_bias_cv7_ins_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gyro_bias_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3215,6 +3322,8 @@ mip_status_t mip_threedm_gyro_bias_response_encode(const mip_threedm_gyro_bias_r
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gyro_bias_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3236,6 +3345,8 @@ static int mip_threedm_gyro_bias_response_load(const uint8_t *d, mip_threedm_gyr
 static MIP_NOINLINE mip_status_t mip_threedm_gyro_bias_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_gyro_bias_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gyro_bias_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3244,6 +3355,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_gyro_bias_response_decode_read(
 mip_status_t mip_threedm_gyro_bias_response_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_gyro_bias_response_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_threedm_gyro_bias_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3334,6 +3447,8 @@ mip_status_t mip_threedm_capture_gyro_bias_encode(const mip_threedm_capture_gyro
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_capture_gyro_bias_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3353,6 +3468,8 @@ static int mip_threedm_capture_gyro_bias_load(const uint8_t *d, mip_threedm_capt
 static MIP_NOINLINE mip_status_t mip_threedm_capture_gyro_bias_decode_read(
     const uint8_t *data, size_t len, mip_threedm_capture_gyro_bias_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_capture_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3361,6 +3478,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_capture_gyro_bias_decode_read(
 mip_status_t mip_threedm_capture_gyro_bias_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_capture_gyro_bias_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_capture_gyro_bias_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3449,6 +3568,8 @@ mip_threedm_mag_hard_iron_offset_gx5_45_encode(const mip_threedm_mag_hard_iron_o
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_mag_hard_iron_offset_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3461,6 +3582,8 @@ mip_status_t mip_threedm_mag_hard_iron_offset_gx5_45_decode(const uint8_t *data,
                                                             mip_threedm_mag_hard_iron_offset_gx5_45_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_hard_iron_offset_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3597,6 +3720,8 @@ mip_threedm_mag_hard_iron_offset_cv7_ins_encode(const mip_threedm_mag_hard_iron_
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_mag_hard_iron_offset_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3609,6 +3734,8 @@ mip_status_t mip_threedm_mag_hard_iron_offset_cv7_ins_decode(const uint8_t *data
                                                              mip_threedm_mag_hard_iron_offset_cv7_ins_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_hard_iron_offset_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3727,6 +3854,8 @@ mip_threedm_mag_hard_iron_offset_response_encode(const mip_threedm_mag_hard_iron
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_mag_hard_iron_offset_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3750,6 +3879,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_mag_hard_iron_offset_response_decod
     const uint8_t *data, size_t len, mip_threedm_mag_hard_iron_offset_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_hard_iron_offset_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -3759,6 +3890,8 @@ mip_status_t
 mip_threedm_mag_hard_iron_offset_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_mag_hard_iron_offset_response_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mip_threedm_mag_hard_iron_offset_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -3878,6 +4011,8 @@ mip_threedm_mag_soft_iron_matrix_gx5_45_encode(const mip_threedm_mag_soft_iron_m
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_mag_soft_iron_matrix_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -3890,6 +4025,8 @@ mip_status_t mip_threedm_mag_soft_iron_matrix_gx5_45_decode(const uint8_t *data,
                                                             mip_threedm_mag_soft_iron_matrix_gx5_45_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_soft_iron_matrix_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4026,6 +4163,8 @@ mip_threedm_mag_soft_iron_matrix_cv7_ins_encode(const mip_threedm_mag_soft_iron_
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_mag_soft_iron_matrix_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4038,6 +4177,8 @@ mip_status_t mip_threedm_mag_soft_iron_matrix_cv7_ins_decode(const uint8_t *data
                                                              mip_threedm_mag_soft_iron_matrix_cv7_ins_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_soft_iron_matrix_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4156,6 +4297,8 @@ mip_threedm_mag_soft_iron_matrix_response_encode(const mip_threedm_mag_soft_iron
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_mag_soft_iron_matrix_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4185,6 +4328,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_mag_soft_iron_matrix_response_decod
     const uint8_t *data, size_t len, mip_threedm_mag_soft_iron_matrix_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_mag_soft_iron_matrix_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4194,6 +4339,8 @@ mip_status_t
 mip_threedm_mag_soft_iron_matrix_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_mag_soft_iron_matrix_response_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 36 && mip_threedm_mag_soft_iron_matrix_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4304,6 +4451,8 @@ mip_status_t mip_threedm_coning_sculling_enable_encode(const mip_threedm_coning_
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_coning_sculling_enable_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4316,6 +4465,8 @@ mip_status_t mip_threedm_coning_sculling_enable_decode(const uint8_t *data, size
                                                        mip_threedm_coning_sculling_enable_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_coning_sculling_enable_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4398,6 +4549,8 @@ mip_threedm_coning_sculling_enable_response_encode(const mip_threedm_coning_scul
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_coning_sculling_enable_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4423,6 +4576,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_coning_sculling_enable_response_dec
     const uint8_t *data, size_t len, mip_threedm_coning_sculling_enable_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_coning_sculling_enable_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4432,6 +4587,8 @@ mip_status_t
 mip_threedm_coning_sculling_enable_response_decode(const uint8_t *data, size_t len,
                                                    mip_threedm_coning_sculling_enable_response_t *out,
                                                    mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_coning_sculling_enable_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4511,6 +4668,8 @@ mip_status_t mip_threedm_uart_baudrate_encode(const mip_threedm_uart_baudrate_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_uart_baudrate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4522,6 +4681,8 @@ mip_status_t mip_threedm_uart_baudrate_encode(const mip_threedm_uart_baudrate_t 
 mip_status_t mip_threedm_uart_baudrate_decode(const uint8_t *data, size_t len,
                                               mip_threedm_uart_baudrate_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_uart_baudrate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4600,6 +4761,8 @@ mip_status_t mip_threedm_uart_baudrate_response_encode(const mip_threedm_uart_ba
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_uart_baudrate_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4620,6 +4783,8 @@ static int mip_threedm_uart_baudrate_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_threedm_uart_baudrate_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_uart_baudrate_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_uart_baudrate_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4628,6 +4793,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_uart_baudrate_response_decode_read(
 mip_status_t mip_threedm_uart_baudrate_response_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_uart_baudrate_response_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mip_threedm_uart_baudrate_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -4748,6 +4915,8 @@ mip_status_t mip_threedm_gpio_config_encode(const mip_threedm_gpio_config_t *val
                                             size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gpio_config_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4759,6 +4928,8 @@ mip_status_t mip_threedm_gpio_config_encode(const mip_threedm_gpio_config_t *val
 mip_status_t mip_threedm_gpio_config_decode(const uint8_t *data, size_t len, mip_threedm_gpio_config_t *out,
                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gpio_config_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -4907,6 +5078,8 @@ mip_status_t mip_threedm_gpio_config_response_encode(const mip_threedm_gpio_conf
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gpio_config_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -4919,6 +5092,8 @@ mip_status_t mip_threedm_gpio_config_response_decode(const uint8_t *data, size_t
                                                      mip_threedm_gpio_config_response_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gpio_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5043,6 +5218,8 @@ mip_status_t mip_threedm_gpio_state_encode(const mip_threedm_gpio_state_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gpio_state_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5054,6 +5231,8 @@ mip_status_t mip_threedm_gpio_state_encode(const mip_threedm_gpio_state_t *value
 mip_status_t mip_threedm_gpio_state_decode(const uint8_t *data, size_t len, mip_threedm_gpio_state_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gpio_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5152,6 +5331,8 @@ mip_status_t mip_threedm_gpio_state_response_encode(const mip_threedm_gpio_state
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gpio_state_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5175,6 +5356,8 @@ static int mip_threedm_gpio_state_response_load(const uint8_t *d, mip_threedm_gp
 static MIP_NOINLINE mip_status_t mip_threedm_gpio_state_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_gpio_state_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gpio_state_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5183,6 +5366,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_gpio_state_response_decode_read(
 mip_status_t mip_threedm_gpio_state_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_gpio_state_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_gpio_state_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5309,6 +5494,8 @@ mip_status_t mip_threedm_odometer_config_encode(const mip_threedm_odometer_confi
                                                 size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_odometer_config_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5320,6 +5507,8 @@ mip_status_t mip_threedm_odometer_config_encode(const mip_threedm_odometer_confi
 mip_status_t mip_threedm_odometer_config_decode(const uint8_t *data, size_t len,
                                                 mip_threedm_odometer_config_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_odometer_config_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5449,6 +5638,8 @@ mip_status_t mip_threedm_odometer_config_response_encode(const mip_threedm_odome
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_odometer_config_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5471,6 +5662,8 @@ static int mip_threedm_odometer_config_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_threedm_odometer_config_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_odometer_config_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_odometer_config_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5479,6 +5672,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_odometer_config_response_decode_rea
 mip_status_t mip_threedm_odometer_config_response_decode(const uint8_t *data, size_t len,
                                                          mip_threedm_odometer_config_response_t *out,
                                                          mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 9 && mip_threedm_odometer_config_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -5645,6 +5840,8 @@ mip_status_t mip_threedm_advanced_lowpass_filter_encode(const mip_threedm_advanc
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_advanced_lowpass_filter_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5657,6 +5854,8 @@ mip_status_t mip_threedm_advanced_lowpass_filter_decode(const uint8_t *data, siz
                                                         mip_threedm_advanced_lowpass_filter_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_advanced_lowpass_filter_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5836,6 +6035,8 @@ mip_status_t mip_threedm_advanced_lowpass_filter_response_encode(
     const mip_threedm_advanced_lowpass_filter_response_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_advanced_lowpass_filter_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -5868,6 +6069,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_advanced_lowpass_filter_response_de
     const uint8_t *data, size_t len, mip_threedm_advanced_lowpass_filter_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_advanced_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -5877,6 +6080,8 @@ mip_status_t
 mip_threedm_advanced_lowpass_filter_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_advanced_lowpass_filter_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mip_threedm_advanced_lowpass_filter_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6060,6 +6265,8 @@ mip_status_t mip_threedm_complementary_filter_encode(const mip_threedm_complemen
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_complementary_filter_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6072,6 +6279,8 @@ mip_status_t mip_threedm_complementary_filter_decode(const uint8_t *data, size_t
                                                      mip_threedm_complementary_filter_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_complementary_filter_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6229,6 +6438,8 @@ mip_threedm_complementary_filter_response_encode(const mip_threedm_complementary
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_complementary_filter_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6259,6 +6470,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_complementary_filter_response_decod
     const uint8_t *data, size_t len, mip_threedm_complementary_filter_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_complementary_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6268,6 +6481,8 @@ mip_status_t
 mip_threedm_complementary_filter_response_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_complementary_filter_response_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 10 && mip_threedm_complementary_filter_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6395,6 +6610,8 @@ mip_status_t mip_threedm_sensor_range_encode(const mip_threedm_sensor_range_t *v
                                              size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_range_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6406,6 +6623,8 @@ mip_status_t mip_threedm_sensor_range_encode(const mip_threedm_sensor_range_t *v
 mip_status_t mip_threedm_sensor_range_decode(const uint8_t *data, size_t len, mip_threedm_sensor_range_t *out,
                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_range_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6504,6 +6723,8 @@ mip_status_t mip_threedm_sensor_range_response_encode(const mip_threedm_sensor_r
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_sensor_range_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6525,6 +6746,8 @@ static int mip_threedm_sensor_range_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_threedm_sensor_range_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_sensor_range_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_sensor_range_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6533,6 +6756,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_sensor_range_response_decode_read(
 mip_status_t mip_threedm_sensor_range_response_decode(const uint8_t *data, size_t len,
                                                       mip_threedm_sensor_range_response_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_sensor_range_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6610,6 +6835,8 @@ mip_threedm_get_calibrated_sensor_ranges_encode(const mip_threedm_get_calibrated
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_calibrated_sensor_ranges_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6631,6 +6858,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode
     const uint8_t *data, size_t len, mip_threedm_get_calibrated_sensor_ranges_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_calibrated_sensor_ranges_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6639,6 +6868,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode
 mip_status_t mip_threedm_get_calibrated_sensor_ranges_decode(const uint8_t *data, size_t len,
                                                              mip_threedm_get_calibrated_sensor_ranges_t *out,
                                                              mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_get_calibrated_sensor_ranges_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -6732,6 +6963,8 @@ mip_status_t mip_threedm_calibrated_sensor_ranges_encode(const mip_threedm_calib
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_calibrated_sensor_ranges_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6744,6 +6977,8 @@ mip_status_t mip_threedm_calibrated_sensor_ranges_decode(const uint8_t *data, si
                                                          mip_threedm_calibrated_sensor_ranges_t *out,
                                                          mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_calibrated_sensor_ranges_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -6928,6 +7163,8 @@ mip_status_t mip_threedm_lowpass_filter_encode(const mip_threedm_lowpass_filter_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_lowpass_filter_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -6939,6 +7176,8 @@ mip_status_t mip_threedm_lowpass_filter_encode(const mip_threedm_lowpass_filter_
 mip_status_t mip_threedm_lowpass_filter_decode(const uint8_t *data, size_t len,
                                                mip_threedm_lowpass_filter_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_lowpass_filter_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7109,6 +7348,8 @@ mip_status_t mip_threedm_lowpass_filter_response_encode(const mip_threedm_lowpas
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_lowpass_filter_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7139,6 +7380,8 @@ static int mip_threedm_lowpass_filter_response_load(const uint8_t *d,
 static MIP_NOINLINE mip_status_t mip_threedm_lowpass_filter_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_lowpass_filter_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_lowpass_filter_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7147,6 +7390,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_lowpass_filter_response_decode_read
 mip_status_t mip_threedm_lowpass_filter_response_decode(const uint8_t *data, size_t len,
                                                         mip_threedm_lowpass_filter_response_t *out,
                                                         mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 8 && mip_threedm_lowpass_filter_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -7289,6 +7534,8 @@ mip_status_t mip_threedm_poll_imu_data_encode(const mip_threedm_poll_imu_data_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_poll_imu_data_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7300,6 +7547,8 @@ mip_status_t mip_threedm_poll_imu_data_encode(const mip_threedm_poll_imu_data_t 
 mip_status_t mip_threedm_poll_imu_data_decode(const uint8_t *data, size_t len,
                                               mip_threedm_poll_imu_data_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_poll_imu_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7444,6 +7693,8 @@ mip_status_t mip_threedm_poll_gnss_data_encode(const mip_threedm_poll_gnss_data_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_poll_gnss_data_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7455,6 +7706,8 @@ mip_status_t mip_threedm_poll_gnss_data_encode(const mip_threedm_poll_gnss_data_
 mip_status_t mip_threedm_poll_gnss_data_decode(const uint8_t *data, size_t len,
                                                mip_threedm_poll_gnss_data_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_poll_gnss_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7599,6 +7852,8 @@ mip_status_t mip_threedm_poll_filter_data_encode(const mip_threedm_poll_filter_d
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_poll_filter_data_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7611,6 +7866,8 @@ mip_status_t mip_threedm_poll_filter_data_decode(const uint8_t *data, size_t len
                                                  mip_threedm_poll_filter_data_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_poll_filter_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7755,6 +8012,8 @@ mip_status_t mip_threedm_poll_nmea_data_encode(const mip_threedm_poll_nmea_data_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_poll_nmea_data_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7766,6 +8025,8 @@ mip_status_t mip_threedm_poll_nmea_data_encode(const mip_threedm_poll_nmea_data_
 mip_status_t mip_threedm_poll_nmea_data_decode(const uint8_t *data, size_t len,
                                                mip_threedm_poll_nmea_data_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_poll_nmea_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -7916,6 +8177,8 @@ mip_status_t mip_threedm_poll_data_encode(const mip_threedm_poll_data_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_poll_data_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -7927,6 +8190,8 @@ mip_status_t mip_threedm_poll_data_encode(const mip_threedm_poll_data_t *value, 
 mip_status_t mip_threedm_poll_data_decode(const uint8_t *data, size_t len, mip_threedm_poll_data_t *out,
                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_poll_data_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8049,6 +8314,8 @@ mip_status_t mip_threedm_get_imu_base_rate_encode(const mip_threedm_get_imu_base
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_imu_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8061,6 +8328,8 @@ mip_status_t mip_threedm_get_imu_base_rate_decode(const uint8_t *data, size_t le
                                                   mip_threedm_get_imu_base_rate_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_imu_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8105,6 +8374,8 @@ mip_status_t mip_threedm_imu_base_rate_encode(const mip_threedm_imu_base_rate_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_imu_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8125,6 +8396,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_imu_base_rate_decode_read(const uin
                                                                        mip_threedm_imu_base_rate_t *out,
                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_imu_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8132,6 +8405,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_imu_base_rate_decode_read(const uin
 
 mip_status_t mip_threedm_imu_base_rate_decode(const uint8_t *data, size_t len,
                                               mip_threedm_imu_base_rate_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_imu_base_rate_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8186,6 +8461,8 @@ mip_status_t mip_threedm_get_gnss_base_rate_encode(const mip_threedm_get_gnss_ba
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_gnss_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8198,6 +8475,8 @@ mip_status_t mip_threedm_get_gnss_base_rate_decode(const uint8_t *data, size_t l
                                                    mip_threedm_get_gnss_base_rate_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_gnss_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8244,6 +8523,8 @@ mip_status_t mip_threedm_gnss_base_rate_encode(const mip_threedm_gnss_base_rate_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8264,6 +8545,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_gnss_base_rate_decode_read(const ui
                                                                         mip_threedm_gnss_base_rate_t *out,
                                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8271,6 +8554,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_gnss_base_rate_decode_read(const ui
 
 mip_status_t mip_threedm_gnss_base_rate_decode(const uint8_t *data, size_t len,
                                                mip_threedm_gnss_base_rate_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_gnss_base_rate_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8325,6 +8610,8 @@ mip_status_t mip_threedm_get_filter_base_rate_encode(const mip_threedm_get_filte
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_filter_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8337,6 +8624,8 @@ mip_status_t mip_threedm_get_filter_base_rate_decode(const uint8_t *data, size_t
                                                      mip_threedm_get_filter_base_rate_t *out,
                                                      mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_filter_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8383,6 +8672,8 @@ mip_status_t mip_threedm_filter_base_rate_encode(const mip_threedm_filter_base_r
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_filter_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8403,6 +8694,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_filter_base_rate_decode_read(const 
                                                                           mip_threedm_filter_base_rate_t *out,
                                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_filter_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8411,6 +8704,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_filter_base_rate_decode_read(const 
 mip_status_t mip_threedm_filter_base_rate_decode(const uint8_t *data, size_t len,
                                                  mip_threedm_filter_base_rate_t *out,
                                                  mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_filter_base_rate_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8470,6 +8765,8 @@ mip_status_t mip_threedm_get_base_rate_encode(const mip_threedm_get_base_rate_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8490,6 +8787,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_get_base_rate_decode_read(const uin
                                                                        mip_threedm_get_base_rate_t *out,
                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8497,6 +8796,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_get_base_rate_decode_read(const uin
 
 mip_status_t mip_threedm_get_base_rate_decode(const uint8_t *data, size_t len,
                                               mip_threedm_get_base_rate_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_get_base_rate_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8564,6 +8865,8 @@ mip_status_t mip_threedm_base_rate_encode(const mip_threedm_base_rate_t *value, 
                                           size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_base_rate_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8585,6 +8888,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_base_rate_decode_read(const uint8_t
                                                                    mip_threedm_base_rate_t *out,
                                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_base_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8592,6 +8897,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_base_rate_decode_read(const uint8_t
 
 mip_status_t mip_threedm_base_rate_decode(const uint8_t *data, size_t len, mip_threedm_base_rate_t *out,
                                           mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 3 && mip_threedm_base_rate_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -8713,6 +9020,8 @@ mip_status_t mip_threedm_imu_message_format_encode(const mip_threedm_imu_message
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_imu_message_format_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8725,6 +9034,8 @@ mip_status_t mip_threedm_imu_message_format_decode(const uint8_t *data, size_t l
                                                    mip_threedm_imu_message_format_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_imu_message_format_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -8874,6 +9185,8 @@ mip_threedm_imu_message_format_response_encode(const mip_threedm_imu_message_for
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_imu_message_format_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -8886,6 +9199,8 @@ mip_status_t mip_threedm_imu_message_format_response_decode(const uint8_t *data,
                                                             mip_threedm_imu_message_format_response_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_imu_message_format_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9038,6 +9353,8 @@ mip_status_t mip_threedm_gnss_message_format_encode(const mip_threedm_gnss_messa
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_message_format_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9050,6 +9367,8 @@ mip_status_t mip_threedm_gnss_message_format_decode(const uint8_t *data, size_t 
                                                     mip_threedm_gnss_message_format_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_message_format_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9199,6 +9518,8 @@ mip_threedm_gnss_message_format_response_encode(const mip_threedm_gnss_message_f
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_message_format_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9211,6 +9532,8 @@ mip_status_t mip_threedm_gnss_message_format_response_decode(const uint8_t *data
                                                              mip_threedm_gnss_message_format_response_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_message_format_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9363,6 +9686,8 @@ mip_status_t mip_threedm_filter_message_format_encode(const mip_threedm_filter_m
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_filter_message_format_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9375,6 +9700,8 @@ mip_status_t mip_threedm_filter_message_format_decode(const uint8_t *data, size_
                                                       mip_threedm_filter_message_format_t *out,
                                                       mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_filter_message_format_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9525,6 +9852,8 @@ mip_threedm_filter_message_format_response_encode(const mip_threedm_filter_messa
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_filter_message_format_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9538,6 +9867,8 @@ mip_threedm_filter_message_format_response_decode(const uint8_t *data, size_t le
                                                   mip_threedm_filter_message_format_response_t *out,
                                                   mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_filter_message_format_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9690,6 +10021,8 @@ mip_status_t mip_threedm_nmea_message_format_encode(const mip_threedm_nmea_messa
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_nmea_message_format_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9702,6 +10035,8 @@ mip_status_t mip_threedm_nmea_message_format_decode(const uint8_t *data, size_t 
                                                     mip_threedm_nmea_message_format_t *out,
                                                     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_nmea_message_format_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -9850,6 +10185,8 @@ mip_threedm_nmea_message_format_response_encode(const mip_threedm_nmea_message_f
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_nmea_message_format_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -9862,6 +10199,8 @@ mip_status_t mip_threedm_nmea_message_format_response_decode(const uint8_t *data
                                                              mip_threedm_nmea_message_format_response_t *out,
                                                              mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_nmea_message_format_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10021,6 +10360,8 @@ mip_status_t mip_threedm_message_format_encode(const mip_threedm_message_format_
                                                size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_message_format_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10032,6 +10373,8 @@ mip_status_t mip_threedm_message_format_encode(const mip_threedm_message_format_
 mip_status_t mip_threedm_message_format_decode(const uint8_t *data, size_t len,
                                                mip_threedm_message_format_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_message_format_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10199,6 +10542,8 @@ mip_status_t mip_threedm_message_format_response_encode(const mip_threedm_messag
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_message_format_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10211,6 +10556,8 @@ mip_status_t mip_threedm_message_format_response_decode(const uint8_t *data, siz
                                                         mip_threedm_message_format_response_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_message_format_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10336,6 +10683,8 @@ mip_status_t mip_threedm_factory_streaming_encode(const mip_threedm_factory_stre
                                                   size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_factory_streaming_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10356,6 +10705,8 @@ static int mip_threedm_factory_streaming_load(const uint8_t *d, mip_threedm_fact
 static MIP_NOINLINE mip_status_t mip_threedm_factory_streaming_decode_read(
     const uint8_t *data, size_t len, mip_threedm_factory_streaming_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_factory_streaming_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10364,6 +10715,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_factory_streaming_decode_read(
 mip_status_t mip_threedm_factory_streaming_decode(const uint8_t *data, size_t len,
                                                   mip_threedm_factory_streaming_t *out,
                                                   mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_factory_streaming_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -10466,6 +10819,8 @@ mip_threedm_data_stream_control_gx5_45_encode(const mip_threedm_data_stream_cont
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_data_stream_control_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10478,6 +10833,8 @@ mip_status_t mip_threedm_data_stream_control_gx5_45_decode(const uint8_t *data, 
                                                            mip_threedm_data_stream_control_gx5_45_t *out,
                                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10599,6 +10956,8 @@ mip_threedm_data_stream_control_cv7_ins_encode(const mip_threedm_data_stream_con
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_data_stream_control_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10611,6 +10970,8 @@ mip_status_t mip_threedm_data_stream_control_cv7_ins_decode(const uint8_t *data,
                                                             mip_threedm_data_stream_control_cv7_ins_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10714,6 +11075,8 @@ mip_status_t mip_threedm_data_stream_control_response_gx5_45_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_data_stream_control_response_gx5_45_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10737,6 +11100,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_response_gx5_45
     const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_gx5_45_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_response_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10746,6 +11111,8 @@ mip_status_t
 mip_threedm_data_stream_control_response_gx5_45_decode(const uint8_t *data, size_t len,
                                                        mip_threedm_data_stream_control_response_gx5_45_t *out,
                                                        mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_data_stream_control_response_gx5_45_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -10831,6 +11198,8 @@ mip_status_t mip_threedm_data_stream_control_response_cv7_ins_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_data_stream_control_response_cv7_ins_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10856,6 +11225,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_response_cv7_in
     const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_cv7_ins_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_data_stream_control_response_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -10864,6 +11235,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_data_stream_control_response_cv7_in
 mip_status_t mip_threedm_data_stream_control_response_cv7_ins_decode(
     const uint8_t *data, size_t len, mip_threedm_data_stream_control_response_cv7_ins_t *out,
     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_data_stream_control_response_cv7_ins_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -10954,6 +11327,8 @@ mip_status_t mip_threedm_raw_rtcm_message_encode(const mip_threedm_raw_rtcm_mess
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_raw_rtcm_message_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -10966,6 +11341,8 @@ mip_status_t mip_threedm_raw_rtcm_message_decode(const uint8_t *data, size_t len
                                                  mip_threedm_raw_rtcm_message_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_raw_rtcm_message_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11120,6 +11497,8 @@ mip_threedm_gnss_constellation_settings_encode(const mip_threedm_gnss_constellat
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_constellation_settings_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11132,6 +11511,8 @@ mip_status_t mip_threedm_gnss_constellation_settings_decode(const uint8_t *data,
                                                             mip_threedm_gnss_constellation_settings_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_constellation_settings_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11313,6 +11694,8 @@ mip_status_t mip_threedm_gnss_constellation_settings_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_constellation_settings_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11325,6 +11708,8 @@ mip_status_t mip_threedm_gnss_constellation_settings_response_decode(
     const uint8_t *data, size_t len, mip_threedm_gnss_constellation_settings_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_constellation_settings_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11536,6 +11921,8 @@ mip_status_t mip_threedm_gnss_sbas_settings_encode(const mip_threedm_gnss_sbas_s
                                                    uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_sbas_settings_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11548,6 +11935,8 @@ mip_status_t mip_threedm_gnss_sbas_settings_decode(const uint8_t *data, size_t l
                                                    mip_threedm_gnss_sbas_settings_t *out,
                                                    mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_sbas_settings_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11748,6 +12137,8 @@ mip_threedm_gnss_sbas_settings_response_encode(const mip_threedm_gnss_sbas_setti
                                                uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_sbas_settings_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11760,6 +12151,8 @@ mip_status_t mip_threedm_gnss_sbas_settings_response_decode(const uint8_t *data,
                                                             mip_threedm_gnss_sbas_settings_response_t *out,
                                                             mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_sbas_settings_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -11928,6 +12321,8 @@ mip_threedm_gnss_assisted_fix_control_encode(const mip_threedm_gnss_assisted_fix
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_assisted_fix_control_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -11940,6 +12335,8 @@ mip_status_t mip_threedm_gnss_assisted_fix_control_decode(const uint8_t *data, s
                                                           mip_threedm_gnss_assisted_fix_control_t *out,
                                                           mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assisted_fix_control_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12047,6 +12444,8 @@ mip_status_t mip_threedm_gnss_assisted_fix_control_response_encode(
     size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_assisted_fix_control_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12070,6 +12469,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_gnss_assisted_fix_control_response_
     const uint8_t *data, size_t len, mip_threedm_gnss_assisted_fix_control_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assisted_fix_control_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12079,6 +12480,8 @@ mip_status_t
 mip_threedm_gnss_assisted_fix_control_response_decode(const uint8_t *data, size_t len,
                                                       mip_threedm_gnss_assisted_fix_control_response_t *out,
                                                       mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mip_threedm_gnss_assisted_fix_control_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -12207,6 +12610,8 @@ mip_status_t mip_threedm_gnss_assist_time_update_encode(const mip_threedm_gnss_a
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_assist_time_update_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12219,6 +12624,8 @@ mip_status_t mip_threedm_gnss_assist_time_update_decode(const uint8_t *data, siz
                                                         mip_threedm_gnss_assist_time_update_t *out,
                                                         mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assist_time_update_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12351,6 +12758,8 @@ mip_status_t mip_threedm_gnss_assist_time_update_response_encode(
     const mip_threedm_gnss_assist_time_update_response_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_gnss_assist_time_update_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12375,6 +12784,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_gnss_assist_time_update_response_de
     const uint8_t *data, size_t len, mip_threedm_gnss_assist_time_update_response_t *out,
     mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_gnss_assist_time_update_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12384,6 +12795,8 @@ mip_status_t
 mip_threedm_gnss_assist_time_update_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_gnss_assist_time_update_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 14 && mip_threedm_gnss_assist_time_update_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -12489,6 +12902,8 @@ mip_status_t mip_threedm_pps_source_encode(const mip_threedm_pps_source_t *value
                                            size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_pps_source_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12500,6 +12915,8 @@ mip_status_t mip_threedm_pps_source_encode(const mip_threedm_pps_source_t *value
 mip_status_t mip_threedm_pps_source_decode(const uint8_t *data, size_t len, mip_threedm_pps_source_t *out,
                                            mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_pps_source_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12577,6 +12994,8 @@ mip_status_t mip_threedm_pps_source_response_encode(const mip_threedm_pps_source
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_pps_source_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12596,6 +13015,8 @@ static int mip_threedm_pps_source_response_load(const uint8_t *d, mip_threedm_pp
 static MIP_NOINLINE mip_status_t mip_threedm_pps_source_response_decode_read(
     const uint8_t *data, size_t len, mip_threedm_pps_source_response_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_pps_source_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12604,6 +13025,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_pps_source_response_decode_read(
 mip_status_t mip_threedm_pps_source_response_decode(const uint8_t *data, size_t len,
                                                     mip_threedm_pps_source_response_t *out,
                                                     mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_pps_source_response_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -12665,6 +13088,8 @@ mip_status_t mip_threedm_get_supported_events_encode(const mip_threedm_get_suppo
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_get_supported_events_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12684,6 +13109,8 @@ static int mip_threedm_get_supported_events_load(const uint8_t *d, mip_threedm_g
 static MIP_NOINLINE mip_status_t mip_threedm_get_supported_events_decode_read(
     const uint8_t *data, size_t len, mip_threedm_get_supported_events_t *out, mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_get_supported_events_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12692,6 +13119,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_get_supported_events_decode_read(
 mip_status_t mip_threedm_get_supported_events_decode(const uint8_t *data, size_t len,
                                                      mip_threedm_get_supported_events_t *out,
                                                      mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mip_threedm_get_supported_events_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -12761,6 +13190,8 @@ mip_status_t mip_threedm_supported_events_encode(const mip_threedm_supported_eve
                                                  size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_supported_events_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12773,6 +13204,8 @@ mip_status_t mip_threedm_supported_events_decode(const uint8_t *data, size_t len
                                                  mip_threedm_supported_events_t *out,
                                                  mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_supported_events_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12852,6 +13285,8 @@ mip_status_t mip_threedm_device_status_encode(const mip_threedm_device_status_t 
                                               size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_device_status_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12873,6 +13308,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_device_status_decode_read(const uin
                                                                        mip_threedm_device_status_t *out,
                                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
@@ -12880,6 +13317,8 @@ static MIP_NOINLINE mip_status_t mip_threedm_device_status_decode_read(const uin
 
 mip_status_t mip_threedm_device_status_decode(const uint8_t *data, size_t len,
                                               mip_threedm_device_status_t *out, mip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 3 && mip_threedm_device_status_load(data, out) == 0) {
         return MIP_OK;
     }
@@ -12970,6 +13409,8 @@ mip_status_t mip_threedm_device_status_response_encode(const mip_threedm_device_
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mip_writer_t w;
     mip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mip_writer_init(&w, buf, cap);
     st = mip_threedm_device_status_response_write(&w, value);
     if (st == MIP_OK && len_out) {
@@ -12982,6 +13423,8 @@ mip_status_t mip_threedm_device_status_response_decode(const uint8_t *data, size
                                                        mip_threedm_device_status_response_t *out,
                                                        mip_decode_error_t *err) {
     mip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mip_threedm_device_status_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;

@@ -1,4 +1,10 @@
 /* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
+/*
+ * Pointer arguments (every function of this header): a pointer must be valid for what the function
+ * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
+ * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
+ * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
+ */
 #ifndef MSCIP_PARSER_H
 #define MSCIP_PARSER_H
 
@@ -35,7 +41,7 @@ typedef struct {
 } mscip_parser_t;
 
 void mscip_parser_init(mscip_parser_t *parser);
-/** Feeds a chunk of the stream; events are delivered through fn. */
+/** Feeds a chunk of the stream; events are delivered through fn (not NULL) with ctx (may be NULL). */
 void mscip_parser_feed(mscip_parser_t *parser, const uint8_t *data, size_t len, mscip_event_fn fn, void *ctx);
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */

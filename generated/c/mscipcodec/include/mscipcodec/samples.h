@@ -1,5 +1,11 @@
 /* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6).
  * Generated: do not edit. */
+/*
+ * Pointer arguments (every function of this header): a pointer must be valid for what the function
+ * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
+ * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
+ * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
+ */
 #ifndef MSCIP_SAMPLES_H
 #define MSCIP_SAMPLES_H
 

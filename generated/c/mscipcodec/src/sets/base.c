@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mscip_base_ping_t */
@@ -22,6 +23,8 @@ mscip_status_t mscip_base_ping_encode(const mscip_base_ping_t *value, uint8_t *b
                                       size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_ping_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -33,6 +36,8 @@ mscip_status_t mscip_base_ping_encode(const mscip_base_ping_t *value, uint8_t *b
 mscip_status_t mscip_base_ping_decode(const uint8_t *data, size_t len, mscip_base_ping_t *out,
                                       mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_ping_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -72,6 +77,8 @@ mscip_status_t mscip_base_get_device_messages_encode(const mscip_base_get_device
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_get_device_messages_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -84,6 +91,8 @@ mscip_status_t mscip_base_get_device_messages_decode(const uint8_t *data, size_t
                                                      mscip_base_get_device_messages_t *out,
                                                      mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_get_device_messages_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -145,6 +154,8 @@ mscip_status_t mscip_base_device_messages_encode(const mscip_base_device_message
                                                  size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_device_messages_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -157,6 +168,8 @@ mscip_status_t mscip_base_device_messages_decode(const uint8_t *data, size_t len
                                                  mscip_base_device_messages_t *out,
                                                  mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_device_messages_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -236,6 +249,8 @@ mscip_status_t mscip_base_device_reset_encode(const mscip_base_device_reset_t *v
                                               size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_device_reset_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -247,6 +262,8 @@ mscip_status_t mscip_base_device_reset_encode(const mscip_base_device_reset_t *v
 mscip_status_t mscip_base_device_reset_decode(const uint8_t *data, size_t len, mscip_base_device_reset_t *out,
                                               mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_device_reset_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -286,6 +303,8 @@ mscip_status_t mscip_base_get_device_model_encode(const mscip_base_get_device_mo
                                                   size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_get_device_model_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -298,6 +317,8 @@ mscip_status_t mscip_base_get_device_model_decode(const uint8_t *data, size_t le
                                                   mscip_base_get_device_model_t *out,
                                                   mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_get_device_model_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -342,6 +363,8 @@ mscip_status_t mscip_base_device_model_encode(const mscip_base_device_model_t *v
                                               size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_device_model_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -353,6 +376,8 @@ mscip_status_t mscip_base_device_model_encode(const mscip_base_device_model_t *v
 mscip_status_t mscip_base_device_model_decode(const uint8_t *data, size_t len, mscip_base_device_model_t *out,
                                               mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_device_model_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -406,6 +431,8 @@ mscip_status_t mscip_base_get_device_sn_encode(const mscip_base_get_device_sn_t 
                                                size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_get_device_sn_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -417,6 +444,8 @@ mscip_status_t mscip_base_get_device_sn_encode(const mscip_base_get_device_sn_t 
 mscip_status_t mscip_base_get_device_sn_decode(const uint8_t *data, size_t len,
                                                mscip_base_get_device_sn_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_get_device_sn_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -461,6 +490,8 @@ mscip_status_t mscip_base_device_sn_encode(const mscip_base_device_sn_t *value, 
                                            size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_device_sn_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -472,6 +503,8 @@ mscip_status_t mscip_base_device_sn_encode(const mscip_base_device_sn_t *value, 
 mscip_status_t mscip_base_device_sn_decode(const uint8_t *data, size_t len, mscip_base_device_sn_t *out,
                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_device_sn_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -525,6 +558,8 @@ mscip_status_t mscip_base_get_device_fw_encode(const mscip_base_get_device_fw_t 
                                                size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_get_device_fw_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -536,6 +571,8 @@ mscip_status_t mscip_base_get_device_fw_encode(const mscip_base_get_device_fw_t 
 mscip_status_t mscip_base_get_device_fw_decode(const uint8_t *data, size_t len,
                                                mscip_base_get_device_fw_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_get_device_fw_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -580,6 +617,8 @@ mscip_status_t mscip_base_device_fw_encode(const mscip_base_device_fw_t *value, 
                                            size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_device_fw_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -591,6 +630,8 @@ mscip_status_t mscip_base_device_fw_encode(const mscip_base_device_fw_t *value, 
 mscip_status_t mscip_base_device_fw_decode(const uint8_t *data, size_t len, mscip_base_device_fw_t *out,
                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_device_fw_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -644,6 +685,8 @@ mscip_status_t mscip_base_get_device_cal_encode(const mscip_base_get_device_cal_
                                                 size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_get_device_cal_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -655,6 +698,8 @@ mscip_status_t mscip_base_get_device_cal_encode(const mscip_base_get_device_cal_
 mscip_status_t mscip_base_get_device_cal_decode(const uint8_t *data, size_t len,
                                                 mscip_base_get_device_cal_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_get_device_cal_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -699,6 +744,8 @@ mscip_status_t mscip_base_device_cal_encode(const mscip_base_device_cal_t *value
                                             size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_device_cal_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -710,6 +757,8 @@ mscip_status_t mscip_base_device_cal_encode(const mscip_base_device_cal_t *value
 mscip_status_t mscip_base_device_cal_decode(const uint8_t *data, size_t len, mscip_base_device_cal_t *out,
                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_device_cal_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -777,6 +826,8 @@ mscip_status_t mscip_base_correlate_gps_time_encode(const mscip_base_correlate_g
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_base_correlate_gps_time_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -797,6 +848,8 @@ static int mscip_base_correlate_gps_time_load(const uint8_t *d, mscip_base_corre
 static MSCIP_NOINLINE mscip_status_t mscip_base_correlate_gps_time_decode_read(
     const uint8_t *data, size_t len, mscip_base_correlate_gps_time_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_base_correlate_gps_time_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -805,6 +858,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_base_correlate_gps_time_decode_read(
 mscip_status_t mscip_base_correlate_gps_time_decode(const uint8_t *data, size_t len,
                                                     mscip_base_correlate_gps_time_t *out,
                                                     mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 6 && mscip_base_correlate_gps_time_load(data, out) == 0) {
         return MSCIP_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mscip_imu_config_uart_baud_rate_t */
@@ -47,6 +48,8 @@ mscip_status_t mscip_imu_config_uart_baud_rate_encode(const mscip_imu_config_uar
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_uart_baud_rate_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -59,6 +62,8 @@ mscip_status_t mscip_imu_config_uart_baud_rate_decode(const uint8_t *data, size_
                                                       mscip_imu_config_uart_baud_rate_t *out,
                                                       mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_uart_baud_rate_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -140,6 +145,8 @@ mscip_imu_config_uart_baud_rate_response_encode(const mscip_imu_config_uart_baud
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_uart_baud_rate_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -161,6 +168,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_uart_baud_rate_response_de
     const uint8_t *data, size_t len, mscip_imu_config_uart_baud_rate_response_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_uart_baud_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -170,6 +179,8 @@ mscip_status_t
 mscip_imu_config_uart_baud_rate_response_decode(const uint8_t *data, size_t len,
                                                 mscip_imu_config_uart_baud_rate_response_t *out,
                                                 mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mscip_imu_config_uart_baud_rate_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -249,6 +260,8 @@ mscip_status_t mscip_imu_config_filter_encode(const mscip_imu_config_filter_t *v
                                               size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_filter_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -260,6 +273,8 @@ mscip_status_t mscip_imu_config_filter_encode(const mscip_imu_config_filter_t *v
 mscip_status_t mscip_imu_config_filter_decode(const uint8_t *data, size_t len, mscip_imu_config_filter_t *out,
                                               mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_filter_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -337,6 +352,8 @@ mscip_status_t mscip_imu_config_filter_response_encode(const mscip_imu_config_fi
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_filter_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -356,6 +373,8 @@ static int mscip_imu_config_filter_response_load(const uint8_t *d, mscip_imu_con
 static MSCIP_NOINLINE mscip_status_t mscip_imu_config_filter_response_decode_read(
     const uint8_t *data, size_t len, mscip_imu_config_filter_response_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_filter_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -364,6 +383,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_filter_response_decode_rea
 mscip_status_t mscip_imu_config_filter_response_decode(const uint8_t *data, size_t len,
                                                        mscip_imu_config_filter_response_t *out,
                                                        mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_filter_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -443,6 +464,8 @@ mscip_status_t mscip_imu_config_sample_rate_encode(const mscip_imu_config_sample
                                                    size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_sample_rate_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -455,6 +478,8 @@ mscip_status_t mscip_imu_config_sample_rate_decode(const uint8_t *data, size_t l
                                                    mscip_imu_config_sample_rate_t *out,
                                                    mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_sample_rate_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -535,6 +560,8 @@ mscip_imu_config_sample_rate_response_encode(const mscip_imu_config_sample_rate_
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_sample_rate_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -556,6 +583,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_sample_rate_response_decod
     const uint8_t *data, size_t len, mscip_imu_config_sample_rate_response_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_sample_rate_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -564,6 +593,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_sample_rate_response_decod
 mscip_status_t mscip_imu_config_sample_rate_response_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_sample_rate_response_t *out,
                                                             mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mscip_imu_config_sample_rate_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -676,6 +707,8 @@ mscip_status_t mscip_imu_config_select_sensors_encode(const mscip_imu_config_sel
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_select_sensors_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -688,6 +721,8 @@ mscip_status_t mscip_imu_config_select_sensors_decode(const uint8_t *data, size_
                                                       mscip_imu_config_select_sensors_t *out,
                                                       mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_select_sensors_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -828,6 +863,8 @@ mscip_imu_config_select_sensors_response_encode(const mscip_imu_config_select_se
                                                 uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_select_sensors_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -841,6 +878,8 @@ mscip_imu_config_select_sensors_response_decode(const uint8_t *data, size_t len,
                                                 mscip_imu_config_select_sensors_response_t *out,
                                                 mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_select_sensors_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -926,6 +965,8 @@ mscip_imu_config_get_internal_sample_rate_encode(const mscip_imu_config_get_inte
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_get_internal_sample_rate_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -939,6 +980,8 @@ mscip_imu_config_get_internal_sample_rate_decode(const uint8_t *data, size_t len
                                                  mscip_imu_config_get_internal_sample_rate_t *out,
                                                  mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_get_internal_sample_rate_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -989,6 +1032,8 @@ mscip_imu_config_internal_sample_rate_encode(const mscip_imu_config_internal_sam
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_internal_sample_rate_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1010,6 +1055,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_internal_sample_rate_decod
     const uint8_t *data, size_t len, mscip_imu_config_internal_sample_rate_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_internal_sample_rate_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1018,6 +1065,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_internal_sample_rate_decod
 mscip_status_t mscip_imu_config_internal_sample_rate_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_internal_sample_rate_t *out,
                                                             mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && mscip_imu_config_internal_sample_rate_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -1098,6 +1147,8 @@ mscip_status_t mscip_imu_config_accel_range_encode(const mscip_imu_config_accel_
                                                    size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_accel_range_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1110,6 +1161,8 @@ mscip_status_t mscip_imu_config_accel_range_decode(const uint8_t *data, size_t l
                                                    mscip_imu_config_accel_range_t *out,
                                                    mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_accel_range_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1190,6 +1243,8 @@ mscip_imu_config_accel_range_response_encode(const mscip_imu_config_accel_range_
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_accel_range_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1211,6 +1266,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_accel_range_response_decod
     const uint8_t *data, size_t len, mscip_imu_config_accel_range_response_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1219,6 +1276,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_accel_range_response_decod
 mscip_status_t mscip_imu_config_accel_range_response_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_accel_range_response_t *out,
                                                             mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_accel_range_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -1299,6 +1358,8 @@ mscip_status_t mscip_imu_config_gyro_range_encode(const mscip_imu_config_gyro_ra
                                                   size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_gyro_range_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1311,6 +1372,8 @@ mscip_status_t mscip_imu_config_gyro_range_decode(const uint8_t *data, size_t le
                                                   mscip_imu_config_gyro_range_t *out,
                                                   mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_gyro_range_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1391,6 +1454,8 @@ mscip_imu_config_gyro_range_response_encode(const mscip_imu_config_gyro_range_re
                                             size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_gyro_range_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1411,6 +1476,8 @@ static int mscip_imu_config_gyro_range_response_load(const uint8_t *d,
 static MSCIP_NOINLINE mscip_status_t mscip_imu_config_gyro_range_response_decode_read(
     const uint8_t *data, size_t len, mscip_imu_config_gyro_range_response_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_gyro_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1419,6 +1486,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_gyro_range_response_decode
 mscip_status_t mscip_imu_config_gyro_range_response_decode(const uint8_t *data, size_t len,
                                                            mscip_imu_config_gyro_range_response_t *out,
                                                            mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_gyro_range_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -1481,6 +1550,8 @@ mscip_status_t mscip_imu_config_config_all_encode(const mscip_imu_config_config_
                                                   size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_config_all_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1500,6 +1571,8 @@ static int mscip_imu_config_config_all_load(const uint8_t *d, mscip_imu_config_c
 static MSCIP_NOINLINE mscip_status_t mscip_imu_config_config_all_decode_read(
     const uint8_t *data, size_t len, mscip_imu_config_config_all_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_config_all_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1508,6 +1581,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_config_all_decode_read(
 mscip_status_t mscip_imu_config_config_all_decode(const uint8_t *data, size_t len,
                                                   mscip_imu_config_config_all_t *out,
                                                   mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_config_all_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -1586,6 +1661,8 @@ mscip_status_t mscip_imu_config_data_on_off_encode(const mscip_imu_config_data_o
                                                    size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_data_on_off_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1598,6 +1675,8 @@ mscip_status_t mscip_imu_config_data_on_off_decode(const uint8_t *data, size_t l
                                                    mscip_imu_config_data_on_off_t *out,
                                                    mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_data_on_off_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1678,6 +1757,8 @@ mscip_imu_config_data_on_off_response_encode(const mscip_imu_config_data_on_off_
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_data_on_off_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1699,6 +1780,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_data_on_off_response_decod
     const uint8_t *data, size_t len, mscip_imu_config_data_on_off_response_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_data_on_off_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1707,6 +1790,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_data_on_off_response_decod
 mscip_status_t mscip_imu_config_data_on_off_response_decode(const uint8_t *data, size_t len,
                                                             mscip_imu_config_data_on_off_response_t *out,
                                                             mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_data_on_off_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -1787,6 +1872,8 @@ mscip_status_t mscip_imu_config_xtrig_on_off_encode(const mscip_imu_config_xtrig
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_xtrig_on_off_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1799,6 +1886,8 @@ mscip_status_t mscip_imu_config_xtrig_on_off_decode(const uint8_t *data, size_t 
                                                     mscip_imu_config_xtrig_on_off_t *out,
                                                     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_xtrig_on_off_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1880,6 +1969,8 @@ mscip_imu_config_xtrig_on_off_response_encode(const mscip_imu_config_xtrig_on_of
                                               uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_xtrig_on_off_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -1901,6 +1992,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_xtrig_on_off_response_deco
     const uint8_t *data, size_t len, mscip_imu_config_xtrig_on_off_response_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_xtrig_on_off_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1909,6 +2002,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_xtrig_on_off_response_deco
 mscip_status_t mscip_imu_config_xtrig_on_off_response_decode(const uint8_t *data, size_t len,
                                                              mscip_imu_config_xtrig_on_off_response_t *out,
                                                              mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_xtrig_on_off_response_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -2007,6 +2102,8 @@ mscip_imu_config_select_sensors_rev_b_encode(const mscip_imu_config_select_senso
                                              uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_select_sensors_rev_b_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -2019,6 +2116,8 @@ mscip_status_t mscip_imu_config_select_sensors_rev_b_decode(const uint8_t *data,
                                                             mscip_imu_config_select_sensors_rev_b_t *out,
                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_select_sensors_rev_b_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -2143,6 +2242,8 @@ mscip_status_t mscip_imu_config_select_sensors_rev_b_response_encode(
     size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_select_sensors_rev_b_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -2156,6 +2257,8 @@ mscip_imu_config_select_sensors_rev_b_response_decode(const uint8_t *data, size_
                                                       mscip_imu_config_select_sensors_rev_b_response_t *out,
                                                       mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_select_sensors_rev_b_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -2262,6 +2365,8 @@ mscip_status_t mscip_imu_config_aux_accel_range_encode(const mscip_imu_config_au
                                                        uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_aux_accel_range_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -2274,6 +2379,8 @@ mscip_status_t mscip_imu_config_aux_accel_range_decode(const uint8_t *data, size
                                                        mscip_imu_config_aux_accel_range_t *out,
                                                        mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_aux_accel_range_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -2355,6 +2462,8 @@ mscip_imu_config_aux_accel_range_response_encode(const mscip_imu_config_aux_acce
                                                  uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_config_aux_accel_range_response_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -2376,6 +2485,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_config_aux_accel_range_response_d
     const uint8_t *data, size_t len, mscip_imu_config_aux_accel_range_response_t *out,
     mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_config_aux_accel_range_response_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -2385,6 +2496,8 @@ mscip_status_t
 mscip_imu_config_aux_accel_range_response_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_config_aux_accel_range_response_t *out,
                                                  mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 1 && mscip_imu_config_aux_accel_range_response_load(data, out) == 0) {
         return MSCIP_OK;
     }

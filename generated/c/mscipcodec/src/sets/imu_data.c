@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- mscip_imu_data_scaled_accel_t */
@@ -36,6 +37,8 @@ mscip_status_t mscip_imu_data_scaled_accel_encode(const mscip_imu_data_scaled_ac
                                                   size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_scaled_accel_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -57,6 +60,8 @@ static int mscip_imu_data_scaled_accel_load(const uint8_t *d, mscip_imu_data_sca
 static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_accel_decode_read(
     const uint8_t *data, size_t len, mscip_imu_data_scaled_accel_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_accel_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -65,6 +70,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_accel_decode_read(
 mscip_status_t mscip_imu_data_scaled_accel_decode(const uint8_t *data, size_t len,
                                                   mscip_imu_data_scaled_accel_t *out,
                                                   mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_scaled_accel_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -161,6 +168,8 @@ mscip_status_t mscip_imu_data_scaled_gyro_encode(const mscip_imu_data_scaled_gyr
                                                  size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_scaled_gyro_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -183,6 +192,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_gyro_decode_read(cons
                                                                             mscip_imu_data_scaled_gyro_t *out,
                                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_gyro_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -191,6 +202,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_gyro_decode_read(cons
 mscip_status_t mscip_imu_data_scaled_gyro_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_data_scaled_gyro_t *out,
                                                  mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_scaled_gyro_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -287,6 +300,8 @@ mscip_status_t mscip_imu_data_scaled_mag_encode(const mscip_imu_data_scaled_mag_
                                                 size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_scaled_mag_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -309,6 +324,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_mag_decode_read(const
                                                                            mscip_imu_data_scaled_mag_t *out,
                                                                            mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_mag_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -316,6 +333,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_mag_decode_read(const
 
 mscip_status_t mscip_imu_data_scaled_mag_decode(const uint8_t *data, size_t len,
                                                 mscip_imu_data_scaled_mag_t *out, mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_scaled_mag_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -412,6 +431,8 @@ mscip_status_t mscip_imu_data_delta_theta_encode(const mscip_imu_data_delta_thet
                                                  size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_delta_theta_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -434,6 +455,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_delta_theta_decode_read(cons
                                                                             mscip_imu_data_delta_theta_t *out,
                                                                             mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_delta_theta_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -442,6 +465,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_delta_theta_decode_read(cons
 mscip_status_t mscip_imu_data_delta_theta_decode(const uint8_t *data, size_t len,
                                                  mscip_imu_data_delta_theta_t *out,
                                                  mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_delta_theta_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -538,6 +563,8 @@ mscip_status_t mscip_imu_data_delta_velocity_encode(const mscip_imu_data_delta_v
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_delta_velocity_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -559,6 +586,8 @@ static int mscip_imu_data_delta_velocity_load(const uint8_t *d, mscip_imu_data_d
 static MSCIP_NOINLINE mscip_status_t mscip_imu_data_delta_velocity_decode_read(
     const uint8_t *data, size_t len, mscip_imu_data_delta_velocity_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_delta_velocity_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -567,6 +596,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_delta_velocity_decode_read(
 mscip_status_t mscip_imu_data_delta_velocity_decode(const uint8_t *data, size_t len,
                                                     mscip_imu_data_delta_velocity_t *out,
                                                     mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_delta_velocity_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -657,6 +688,8 @@ mscip_status_t mscip_imu_data_scaled_pressure_encode(const mscip_imu_data_scaled
                                                      uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_scaled_pressure_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -676,6 +709,8 @@ static int mscip_imu_data_scaled_pressure_load(const uint8_t *d, mscip_imu_data_
 static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_pressure_decode_read(
     const uint8_t *data, size_t len, mscip_imu_data_scaled_pressure_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_pressure_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -684,6 +719,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_pressure_decode_read(
 mscip_status_t mscip_imu_data_scaled_pressure_decode(const uint8_t *data, size_t len,
                                                      mscip_imu_data_scaled_pressure_t *out,
                                                      mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mscip_imu_data_scaled_pressure_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -746,6 +783,8 @@ mscip_status_t mscip_imu_data_scaled_temperature_encode(const mscip_imu_data_sca
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_scaled_temperature_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -766,6 +805,8 @@ static int mscip_imu_data_scaled_temperature_load(const uint8_t *d,
 static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_temperature_decode_read(
     const uint8_t *data, size_t len, mscip_imu_data_scaled_temperature_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_temperature_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -774,6 +815,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_temperature_decode_re
 mscip_status_t mscip_imu_data_scaled_temperature_decode(const uint8_t *data, size_t len,
                                                         mscip_imu_data_scaled_temperature_t *out,
                                                         mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && mscip_imu_data_scaled_temperature_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -852,6 +895,8 @@ mscip_status_t mscip_imu_data_gps_correlated_time_encode(const mscip_imu_data_gp
                                                          uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_gps_correlated_time_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -874,6 +919,8 @@ static int mscip_imu_data_gps_correlated_time_load(const uint8_t *d,
 static MSCIP_NOINLINE mscip_status_t mscip_imu_data_gps_correlated_time_decode_read(
     const uint8_t *data, size_t len, mscip_imu_data_gps_correlated_time_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_gps_correlated_time_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -882,6 +929,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_gps_correlated_time_decode_r
 mscip_status_t mscip_imu_data_gps_correlated_time_decode(const uint8_t *data, size_t len,
                                                          mscip_imu_data_gps_correlated_time_t *out,
                                                          mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_gps_correlated_time_load(data, out) == 0) {
         return MSCIP_OK;
     }
@@ -977,6 +1026,8 @@ mscip_status_t mscip_imu_data_scaled_aux_accel_encode(const mscip_imu_data_scale
                                                       uint8_t *buf, size_t cap, size_t *len_out) {
     mscip_writer_t w;
     mscip_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     mscip_writer_init(&w, buf, cap);
     st = mscip_imu_data_scaled_aux_accel_write(&w, value);
     if (st == MSCIP_OK && len_out) {
@@ -998,6 +1049,8 @@ static int mscip_imu_data_scaled_aux_accel_load(const uint8_t *d, mscip_imu_data
 static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_aux_accel_decode_read(
     const uint8_t *data, size_t len, mscip_imu_data_scaled_aux_accel_t *out, mscip_decode_error_t *err) {
     mscip_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     mscip_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return mscip_imu_data_scaled_aux_accel_read(&r, out) ? MSCIP_ERR_DECODE : MSCIP_OK;
@@ -1006,6 +1059,8 @@ static MSCIP_NOINLINE mscip_status_t mscip_imu_data_scaled_aux_accel_decode_read
 mscip_status_t mscip_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
                                                       mscip_imu_data_scaled_aux_accel_t *out,
                                                       mscip_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 12 && mscip_imu_data_scaled_aux_accel_load(data, out) == 0) {
         return MSCIP_OK;
     }

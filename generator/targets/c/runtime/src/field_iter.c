@@ -1,6 +1,7 @@
 /* Splits a packet payload into fields. Generated: do not edit. */
 #include "codec/field_iter.h"
 
+#include <assert.h>
 #include <stdio.h>
 
 bool codec_field_iter_trailing_(codec_field_iter_t *it, codec_field_entry_t *entry, uint8_t length_byte,
@@ -17,6 +18,8 @@ bool codec_field_iter_trailing_(codec_field_iter_t *it, codec_field_entry_t *ent
 }
 
 size_t codec_trailing_format(const codec_field_entry_t *entry, char *buf, size_t cap) {
+    assert(entry != NULL);
+    assert(buf != NULL || cap == 0);
     int n;
     switch (entry->trailing) {
     case CODEC_TRAILING_SHORT_LENGTH:

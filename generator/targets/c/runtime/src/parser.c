@@ -1,9 +1,11 @@
 /* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
 #include "codec/parser.h"
 
+#include <assert.h>
 #include <string.h>
 
 void codec_parser_init(codec_parser_t *parser) {
+    assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
@@ -176,6 +178,9 @@ static size_t scan(const uint8_t *data, size_t len, codec_parser_t *parser, code
 
 void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, codec_event_fn fn,
                        void *ctx) {
+    assert(parser != NULL);
+    assert(data != NULL || len == 0);
+    assert(fn != NULL);
     while (len > 0) {
         size_t take;
         if (parser->used == 0) {
@@ -202,6 +207,8 @@ void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, 
 }
 
 void codec_parser_flush(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }

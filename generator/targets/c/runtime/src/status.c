@@ -2,6 +2,7 @@
  * Generated: do not edit. */
 #include "codec/status.h"
 
+#include <assert.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
@@ -41,6 +42,8 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
 }
 
 size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, size_t cap) {
+    assert(err != NULL);
+    assert(buf != NULL || cap == 0);
     char num[96];
     size_t len = 0;
     size_t i;

@@ -722,3 +722,50 @@ TEST(Samples, WithoutDataSetsNoPacketIsASample) {
     }
 }
 #endif
+
+// Issue 28: every pointer precondition is documented in the headers and checked by assert() in
+// debug builds (this suite is built without NDEBUG); a NULL buffer with size 0 is allowed.
+#ifndef NDEBUG
+TEST(Preconditions, NullPointersAreCaughtInDebugBuilds) {
+    uint8_t buf[CODEC_MAX_PACKET];
+    codec_packet_builder_t b;
+    codec_parser_t parser;
+    codec_field_iter_t it;
+    codec_field_entry_t entry;
+    codec_sample_tracker_t tracker;
+    codec_sample_info_t info;
+    EXPECT_DEATH(codec_packet_begin(nullptr, buf, sizeof buf, 1), "b != NULL");
+    EXPECT_DEATH(codec_packet_begin(&b, nullptr, 10, 1), "buf != NULL \\|\\| cap == 0");
+    codec_packet_begin(&b, buf, sizeof buf, 1);
+    EXPECT_DEATH(codec_packet_add_field(&b, 1, nullptr, 3), "data != NULL \\|\\| data_len == 0");
+    EXPECT_DEATH(codec_packet_add_raw(nullptr, buf, 1), "b != NULL");
+    EXPECT_DEATH(codec_packet_finish(nullptr, nullptr), "b != NULL");
+    EXPECT_DEATH(codec_checksum(nullptr, 4, buf), "bytes != NULL");
+    EXPECT_DEATH(codec_packet_valid(nullptr, 8), "packet != NULL");
+    EXPECT_DEATH(codec_parser_init(nullptr), "parser != NULL");
+    codec_parser_init(&parser);
+    EXPECT_DEATH(codec_parser_feed(&parser, nullptr, 5, nullptr, nullptr), "data != NULL");
+    EXPECT_DEATH(codec_parser_feed(&parser, buf, 0, nullptr, nullptr), "fn != NULL");
+    EXPECT_DEATH(codec_field_iter_init(nullptr, 1, buf, 1), "it != NULL");
+    codec_field_iter_init(&it, 1, buf, 0);
+    EXPECT_DEATH(codec_field_iter_next(&it, nullptr), "entry != NULL");
+    EXPECT_DEATH(codec_trailing_format(nullptr, nullptr, 0), "entry != NULL");
+    codec_sample_tracker_init(&tracker);
+    EXPECT_DEATH(codec_sample_tracker_feed(&tracker, nullptr, 9, &info), "packet != NULL");
+    EXPECT_DEATH(codec_sample_key(buf, 0, nullptr, nullptr), "key != NULL");
+    EXPECT_DEATH(codec_json_skip_line(0, nullptr, 2, nullptr, 0), "bytes != NULL");
+    EXPECT_DEATH(codec_json_packet_line(buf, 0, 0, CODEC_DEVICE_ANY, nullptr, 4), "out != NULL");
+    EXPECT_DEATH(codec_json_encode_line(nullptr, 3, buf, sizeof buf, nullptr, nullptr, 0), "line != NULL");
+    EXPECT_DEATH(codec_json_format_double(1.0, nullptr, 8), "buf != NULL");
+    EXPECT_DEATH(codec_decode_error_format(nullptr, nullptr, 0), "err != NULL");
+    // NULL with a zero size is fine: nothing is read or written.
+    codec_packet_begin(&b, buf, sizeof buf, 1);
+    EXPECT_EQ(codec_packet_add_field(&b, 1, nullptr, 0), CODEC_OK);
+    size_t len = 0;
+    EXPECT_EQ(codec_packet_finish(&b, &len), CODEC_OK);
+    EXPECT_TRUE(codec_packet_valid(buf, len));
+    EXPECT_EQ(codec_json_format_double(1.5, nullptr, 0), 3u);
+    codec_field_iter_init(&it, 1, nullptr, 5);
+    EXPECT_FALSE(codec_field_iter_next(&it, &entry));
+}
+#endif

@@ -220,6 +220,42 @@ TEST(Fields, TrailingMessages) {
     }
 }
 
+// Issue 28: a view over a user's buffer is read within its size, whatever the length byte says.
+TEST(Fields, ViewOfATruncatedBufferIsReadWithinItsSize) {
+    pkg::PacketBuilder b(0x01);
+    const std::uint8_t data[6] = {1, 2, 3, 4, 5, 6};
+    ASSERT_EQ(b.add_raw_field(0x01, data, sizeof data), pkg::EncodeError::none);
+    const pkg::PacketView whole = b.finish();
+    ASSERT_TRUE(whole.valid());
+    // A heap copy cut after the first payload byte: ASan reports any read past it.
+    const std::size_t cut = pkg::kHeaderSize + 1;
+    std::vector<std::uint8_t> heap(whole.data, whole.data + cut);
+    const pkg::PacketView view{heap.data(), heap.size()};
+    EXPECT_FALSE(view.valid());
+    EXPECT_EQ(view.set(), 0x01);
+    EXPECT_EQ(view.payload_size(), 1u);
+    pkg::FieldIterator it(view);
+    pkg::FieldEntry e;
+    ASSERT_TRUE(it.next(e));
+    EXPECT_EQ(e.kind, pkg::FieldEntry::Kind::trailing);
+    EXPECT_EQ(e.size, 1u);
+    EXPECT_FALSE(it.next(e));
+    // Shorter than a header, empty, or null: nothing to read.
+    std::vector<std::uint8_t> two(whole.data, whole.data + 2);
+    for (const pkg::PacketView v : {pkg::PacketView{two.data(), two.size()}, pkg::PacketView{}}) {
+        EXPECT_FALSE(v.valid());
+        EXPECT_EQ(v.set(), 0);
+        EXPECT_EQ(v.payload_size(), 0u);
+        pkg::FieldIterator none(v);
+        EXPECT_FALSE(none.next(e));
+    }
+    // Without its checksum the payload is whole but the view is not a packet.
+    std::vector<std::uint8_t> no_sum(whole.data, whole.data + whole.size - pkg::kChecksumSize);
+    const pkg::PacketView unsummed{no_sum.data(), no_sum.size()};
+    EXPECT_FALSE(unsummed.valid());
+    EXPECT_EQ(unsummed.payload_size(), pkg::kFieldHeaderSize + sizeof data);
+}
+
 Bytes stamped(std::uint8_t stamp, bool key, std::uint8_t descriptor, char data) {
     pkg::PacketBuilder b(pkg::sample_rule::kDataSets[0]);
     const auto &ts = pkg::sample_rule::kTimestamps[0];

@@ -21,6 +21,18 @@ Bytes one_packet(pkg::PacketBuilder &b) {
     return Bytes(p.data, p.data + p.size);
 }
 
+// Issue 28: a typed field of another descriptor set would be another command on the wire.
+TEST(Builder, TypedAddRefusesALayoutOfAnotherSet) {
+    pkg::PacketBuilder other(0x0C);
+    EXPECT_EQ(other.add(pkg::stub::Ping{}), pkg::EncodeError::wrong_set);
+    EXPECT_EQ(other.error(), pkg::EncodeError::wrong_set);
+    EXPECT_EQ(other.payload_size(), 0u);
+    EXPECT_STREQ(pkg::to_string(other.error()), "the field belongs to another descriptor set");
+    pkg::PacketBuilder same(pkg::stub::Ping::kSet);
+    EXPECT_EQ(same.add(pkg::stub::Ping{}), pkg::EncodeError::none);
+    EXPECT_GT(same.payload_size(), 0u);
+}
+
 std::string line_of(const Bytes &bytes, const char *device = nullptr) {
     const std::vector<std::string> lines = protopkg_test::decode_lines(bytes, bytes.size(), device);
     return lines.size() == 1 ? lines[0] : "(" + std::to_string(lines.size()) + " lines)";

@@ -544,3 +544,86 @@ fn irregular_field_lengths_are_honoured() {
         }]
     );
 }
+
+/// A typed layout of the data set (the harness has no generated ones): `counter`, one u16.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Counter(u16);
+
+impl protocodec::wire::Wire for Counter {
+    const ZERO: Self = Counter(0);
+    const FIXED_SIZE: Option<usize> = Some(2);
+    fn decode(
+        r: &mut protocodec::wire::Reader<'_>,
+    ) -> Result<Self, protocodec::error::DecodeError> {
+        Ok(Counter(u16::decode(r)?))
+    }
+    fn encode(
+        &self,
+        w: &mut protocodec::wire::Writer<'_>,
+    ) -> Result<(), protocodec::error::EncodeError> {
+        self.0.encode(w)
+    }
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        write!(w, "{{\"count\":{}}}", self.0)
+    }
+}
+
+impl protocodec::wire::Layout for Counter {
+    const DESCRIPTOR: u8 = COUNTER;
+    const DESCRIPTOR_SET: Option<u8> = Some(DATA_SET);
+    const NAME: &'static str = "counter";
+}
+
+/// A reserved-style layout: no descriptor set of its own.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Anywhere(Counter);
+
+impl protocodec::wire::Wire for Anywhere {
+    const ZERO: Self = Anywhere(Counter(0));
+    const FIXED_SIZE: Option<usize> = Some(2);
+    fn decode(
+        r: &mut protocodec::wire::Reader<'_>,
+    ) -> Result<Self, protocodec::error::DecodeError> {
+        Ok(Anywhere(Counter::decode(r)?))
+    }
+    fn encode(
+        &self,
+        w: &mut protocodec::wire::Writer<'_>,
+    ) -> Result<(), protocodec::error::EncodeError> {
+        self.0.encode(w)
+    }
+    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        self.0.write_json(w)
+    }
+}
+
+impl protocodec::wire::Layout for Anywhere {
+    const DESCRIPTOR: u8 = 0x7F;
+    const NAME: &'static str = "anywhere";
+}
+
+// Issue 28: a typed field added to a packet of another set would be another field on the wire.
+#[test]
+fn typed_add_refuses_a_layout_of_another_set() {
+    use protocodec::wire::Wire;
+    let mut other = PacketBuilder::new(SET);
+    let err = other.add(&Counter(7)).unwrap_err();
+    assert_eq!(
+        err.kind,
+        EncodeErrorKind::WrongSet {
+            field_set: DATA_SET,
+            packet_set: SET
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "a field of descriptor set 0x80 cannot go in a packet of set 0x01"
+    );
+    assert_eq!(other.payload_len(), 0);
+    let mut own = PacketBuilder::new(DATA_SET);
+    own.add(&Counter(7)).unwrap();
+    assert_eq!(own.payload_len(), FIELD_HEADER_SIZE + 2);
+    let mut any = PacketBuilder::new(SET);
+    any.add(&Anywhere(Counter::ZERO)).unwrap();
+    assert_eq!(any.payload_len(), FIELD_HEADER_SIZE + 2);
+}

@@ -2,6 +2,7 @@
 #include "democodec/dispatch.h"
 #include "layouts_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 const char *demo_device_id(demo_device_t device) {
@@ -17,6 +18,8 @@ const char *demo_device_id(demo_device_t device) {
 }
 
 bool demo_device_from_id(const char *id, demo_device_t *out) {
+    assert(id != NULL);
+    assert(out != NULL);
     if (strcmp(id, "dev_a") == 0) {
         *out = DEMO_DEVICE_DEV_A;
         return true;
@@ -234,6 +237,8 @@ static DEMO_NOINLINE demo_status_t decode_field_general(uint8_t set, uint8_t des
 demo_status_t demo_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                                 demo_device_t device, demo_field_value_t *out, demo_decode_error_t *err) {
     const uint16_t *table = k_sets[set];
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (table && table[descriptor] != 0) {
         const demo_field_info_t *f = &k_fields[table[descriptor] - 1];
         if (f->layout_count == 1) {
@@ -248,6 +253,8 @@ demo_status_t demo_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *
 }
 
 demo_status_t demo_encode_field(const demo_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     switch (value->id) {
     case DEMO_FIELD_ACK:
         return demo_ack_encode(&value->u.ack, buf, cap, len_out);

@@ -1,6 +1,7 @@
 /* Splits a packet payload into fields. Generated: do not edit. */
 #include "democodec/field_iter.h"
 
+#include <assert.h>
 #include <stdio.h>
 
 bool demo_field_iter_trailing_(demo_field_iter_t *it, demo_field_entry_t *entry, uint8_t length_byte,
@@ -17,6 +18,8 @@ bool demo_field_iter_trailing_(demo_field_iter_t *it, demo_field_entry_t *entry,
 }
 
 size_t demo_trailing_format(const demo_field_entry_t *entry, char *buf, size_t cap) {
+    assert(entry != NULL);
+    assert(buf != NULL || cap == 0);
     int n;
     switch (entry->trailing) {
     case DEMO_TRAILING_SHORT_LENGTH:

@@ -3,10 +3,13 @@
 #include "democodec/field_iter.h"
 #include "layouts_internal.h"
 
+#include <assert.h>
 #include <stdio.h>
 #include <string.h>
 
 size_t demo_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap) {
+    assert(bytes != NULL || n == 0);
+    assert(out != NULL || cap == 0);
     demo_jw_t w;
     demo_jw_init(&w, out, cap);
     demo_jw_lit(&w, "{\"offset\":");
@@ -70,6 +73,8 @@ static void field_json(demo_jw_t *w, uint8_t set, const demo_field_entry_t *e, d
 
 size_t demo_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, demo_device_t device,
                              char *out, size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(out != NULL || cap == 0);
     demo_jw_t w;
     demo_field_iter_t it;
     demo_field_entry_t e;
@@ -262,6 +267,9 @@ static int field_entry(demo_jr_t *jr, size_t pos, uint8_t set, demo_packet_build
 
 demo_status_t demo_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
                                     char *msg, size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL || cap == 0);
+    assert(msg != NULL || msg_cap == 0);
     demo_jr_t jr;
     demo_packet_builder_t b;
     size_t pos;

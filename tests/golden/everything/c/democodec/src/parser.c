@@ -1,9 +1,11 @@
 /* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
 #include "democodec/parser.h"
 
+#include <assert.h>
 #include <string.h>
 
 void demo_parser_init(demo_parser_t *parser) {
+    assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
@@ -175,6 +177,9 @@ static size_t scan(const uint8_t *data, size_t len, demo_parser_t *parser, demo_
 }
 
 void demo_parser_feed(demo_parser_t *parser, const uint8_t *data, size_t len, demo_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(data != NULL || len == 0);
+    assert(fn != NULL);
     while (len > 0) {
         size_t take;
         if (parser->used == 0) {
@@ -201,6 +206,8 @@ void demo_parser_feed(demo_parser_t *parser, const uint8_t *data, size_t len, de
 }
 
 void demo_parser_flush(demo_parser_t *parser, demo_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }

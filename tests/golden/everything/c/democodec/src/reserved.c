@@ -4,6 +4,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- demo_ack_t */
@@ -36,6 +37,8 @@ static demo_status_t demo_ack_write(demo_writer_t *w, const demo_ack_t *in) {
 demo_status_t demo_ack_encode(const demo_ack_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_ack_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -56,12 +59,16 @@ static int demo_ack_load(const uint8_t *d, demo_ack_t *out) {
 static DEMO_NOINLINE demo_status_t demo_ack_decode_read(const uint8_t *data, size_t len, demo_ack_t *out,
                                                         demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_ack_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
 }
 
 demo_status_t demo_ack_decode(const uint8_t *data, size_t len, demo_ack_t *out, demo_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 2 && demo_ack_load(data, out) == 0) {
         return DEMO_OK;
     }

@@ -54,6 +54,7 @@ impl Ping {
 
 impl crate::wire::Layout for Ping {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "ping";
 }
 
@@ -216,6 +217,7 @@ impl Configure {
 
 impl crate::wire::Layout for Configure {
     const DESCRIPTOR: u8 = 0x02;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "configure";
 }
 
@@ -412,6 +414,7 @@ impl Configuration {
 
 impl crate::wire::Layout for Configuration {
     const DESCRIPTOR: u8 = 0x82;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "configuration";
 }
 
@@ -474,6 +477,7 @@ impl PerDeviceDevA {
 
 impl crate::wire::Layout for PerDeviceDevA {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "per_device";
 }
 
@@ -561,6 +565,7 @@ impl PerDeviceDevB {
 
 impl crate::wire::Layout for PerDeviceDevB {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x01);
     const NAME: &'static str = "per_device";
 }
 

@@ -102,6 +102,7 @@ impl Sample {
 
 impl crate::wire::Layout for Sample {
     const DESCRIPTOR: u8 = 0x01;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x90);
     const NAME: &'static str = "sample";
 }
 

@@ -187,6 +187,9 @@ pub enum EncodeErrorKind {
     OptionalGap { later: &'static str },
     /// Field data shorter than an irregular field's size byte allows (`length_byte_adjust`).
     TooShort { data_len: usize },
+    /// A typed field of another descriptor set than the packet's: its descriptor would mean
+    /// another field there.
+    WrongSet { field_set: u8, packet_set: u8 },
 }
 
 /// An encode error: what went wrong and the path of the value.
@@ -248,6 +251,15 @@ impl fmt::Display for EncodeError {
                 write!(
                     f,
                     "field data of {data_len} bytes is too short for its size byte"
+                )
+            }
+            EncodeErrorKind::WrongSet {
+                field_set,
+                packet_set,
+            } => {
+                write!(
+                    f,
+                    "a field of descriptor set 0x{field_set:02x} cannot go in a packet of set 0x{packet_set:02x}"
                 )
             }
             EncodeErrorKind::OptionalGap { later } => {

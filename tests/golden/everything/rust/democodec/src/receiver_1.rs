@@ -97,6 +97,7 @@ impl LlhPosition {
 
 impl crate::wire::Layout for LlhPosition {
     const DESCRIPTOR: u8 = 0x03;
+    const DESCRIPTOR_SET: Option<u8> = Some(0x91);
     const NAME: &'static str = "llh_position";
 }
 

@@ -73,6 +73,7 @@ impl Timestamp {
 
 impl crate::wire::Layout for Timestamp {
     const DESCRIPTOR: u8 = 0xD3;
+    const DESCRIPTOR_SET: Option<u8> = Some(0xFF);
     const NAME: &'static str = "timestamp";
 }
 

@@ -132,6 +132,9 @@ pub trait Wire: Copy {
 pub trait Layout: Wire {
     /// Field descriptor.
     const DESCRIPTOR: u8;
+    /// Descriptor set the field belongs to; `None` for a reserved field (ack/nack), which every
+    /// set of its kind answers. [`crate::builder::PacketBuilder::add`] checks it.
+    const DESCRIPTOR_SET: Option<u8> = None;
     /// Field name as printed in JSON.
     const NAME: &'static str;
 

@@ -1,5 +1,11 @@
 /* Framing: checksum, packet header accessors and the packet builder; the framing constants are
  * in protocol.h. Generated: do not edit. */
+/*
+ * Pointer arguments (every function of this header): a pointer must be valid for what the function
+ * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
+ * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
+ * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
+ */
 #ifndef DEMO_FRAMING_H
 #define DEMO_FRAMING_H
 
@@ -26,7 +32,7 @@ bool demo_checksum_matches(const uint8_t *bytes, size_t len);
 /** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
 bool demo_packet_valid(const uint8_t *packet, size_t len);
 /* The header accessors are inline: a decode loop calls them for every packet. */
-/** Descriptor set of a packet (at least DEMO_HEADER_SIZE bytes). */
+/** Descriptor set of a packet (at least DEMO_HEADER_SIZE bytes: check the length first). */
 static inline uint8_t demo_packet_set(const uint8_t *packet) {
     return packet[DEMO_SET_OFFSET];
 }
@@ -58,7 +64,7 @@ demo_status_t demo_packet_add_field(demo_packet_builder_t *b, uint8_t descriptor
                                     size_t data_len);
 /** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
 demo_status_t demo_packet_add_raw(demo_packet_builder_t *b, const uint8_t *bytes, size_t len);
-/** Writes the payload length and checksum; *len_out receives the packet size. */
+/** Writes the payload length and checksum; *len_out (len_out may be NULL) receives the packet size. */
 demo_status_t demo_packet_finish(demo_packet_builder_t *b, size_t *len_out);
 
 #ifdef __cplusplus

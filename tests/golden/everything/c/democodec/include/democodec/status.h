@@ -1,4 +1,10 @@
 /* Status codes and decode errors of the library. Generated: do not edit. */
+/*
+ * Pointer arguments (every function of this header): a pointer must be valid for what the function
+ * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
+ * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
+ * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
+ */
 #ifndef DEMO_STATUS_H
 #define DEMO_STATUS_H
 

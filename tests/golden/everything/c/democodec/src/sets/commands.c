@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- demo_commands_ping_t */
@@ -22,6 +23,8 @@ demo_status_t demo_commands_ping_encode(const demo_commands_ping_t *value, uint8
                                         size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_commands_ping_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -33,6 +36,8 @@ demo_status_t demo_commands_ping_encode(const demo_commands_ping_t *value, uint8
 demo_status_t demo_commands_ping_decode(const uint8_t *data, size_t len, demo_commands_ping_t *out,
                                         demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_commands_ping_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -137,6 +142,8 @@ demo_status_t demo_commands_configure_encode(const demo_commands_configure_t *va
                                              size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_commands_configure_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -148,6 +155,8 @@ demo_status_t demo_commands_configure_encode(const demo_commands_configure_t *va
 demo_status_t demo_commands_configure_decode(const uint8_t *data, size_t len, demo_commands_configure_t *out,
                                              demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_commands_configure_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -380,6 +389,8 @@ demo_status_t demo_commands_configuration_encode(const demo_commands_configurati
                                                  size_t cap, size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_commands_configuration_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -392,6 +403,8 @@ demo_status_t demo_commands_configuration_decode(const uint8_t *data, size_t len
                                                  demo_commands_configuration_t *out,
                                                  demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_commands_configuration_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -671,6 +684,8 @@ demo_status_t demo_commands_per_device_dev_a_encode(const demo_commands_per_devi
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_commands_per_device_dev_a_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -690,6 +705,8 @@ static int demo_commands_per_device_dev_a_load(const uint8_t *d, demo_commands_p
 static DEMO_NOINLINE demo_status_t demo_commands_per_device_dev_a_decode_read(
     const uint8_t *data, size_t len, demo_commands_per_device_dev_a_t *out, demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_commands_per_device_dev_a_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -698,6 +715,8 @@ static DEMO_NOINLINE demo_status_t demo_commands_per_device_dev_a_decode_read(
 demo_status_t demo_commands_per_device_dev_a_decode(const uint8_t *data, size_t len,
                                                     demo_commands_per_device_dev_a_t *out,
                                                     demo_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 4 && demo_commands_per_device_dev_a_load(data, out) == 0) {
         return DEMO_OK;
     }
@@ -777,6 +796,8 @@ demo_status_t demo_commands_per_device_dev_b_encode(const demo_commands_per_devi
                                                     uint8_t *buf, size_t cap, size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_commands_per_device_dev_b_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -789,6 +810,8 @@ demo_status_t demo_commands_per_device_dev_b_decode(const uint8_t *data, size_t 
                                                     demo_commands_per_device_dev_b_t *out,
                                                     demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_commands_per_device_dev_b_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;

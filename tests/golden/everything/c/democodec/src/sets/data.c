@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- demo_data_sample_t */
@@ -59,6 +60,8 @@ demo_status_t demo_data_sample_encode(const demo_data_sample_t *value, uint8_t *
                                       size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_data_sample_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -85,6 +88,8 @@ static DEMO_NOINLINE demo_status_t demo_data_sample_decode_read(const uint8_t *d
                                                                 demo_data_sample_t *out,
                                                                 demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_data_sample_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -92,6 +97,8 @@ static DEMO_NOINLINE demo_status_t demo_data_sample_decode_read(const uint8_t *d
 
 demo_status_t demo_data_sample_decode(const uint8_t *data, size_t len, demo_data_sample_t *out,
                                       demo_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 29 && demo_data_sample_load(data, out) == 0) {
         return DEMO_OK;
     }

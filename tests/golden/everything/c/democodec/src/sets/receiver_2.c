@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- demo_receiver_2_llh_position_t */
@@ -45,6 +46,8 @@ demo_status_t demo_receiver_2_llh_position_encode(const demo_receiver_2_llh_posi
                                                   size_t cap, size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_receiver_2_llh_position_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -66,6 +69,8 @@ static int demo_receiver_2_llh_position_load(const uint8_t *d, demo_receiver_2_l
 static DEMO_NOINLINE demo_status_t demo_receiver_2_llh_position_decode_read(
     const uint8_t *data, size_t len, demo_receiver_2_llh_position_t *out, demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_receiver_2_llh_position_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -74,6 +79,8 @@ static DEMO_NOINLINE demo_status_t demo_receiver_2_llh_position_decode_read(
 demo_status_t demo_receiver_2_llh_position_decode(const uint8_t *data, size_t len,
                                                   demo_receiver_2_llh_position_t *out,
                                                   demo_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 18 && demo_receiver_2_llh_position_load(data, out) == 0) {
         return DEMO_OK;
     }

@@ -3,6 +3,7 @@
 #include "layouts_internal.h"
 #include "types_internal.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* ---- demo_shared_timestamp_t */
@@ -28,6 +29,8 @@ demo_status_t demo_shared_timestamp_encode(const demo_shared_timestamp_t *value,
                                            size_t *len_out) {
     demo_writer_t w;
     demo_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
     demo_writer_init(&w, buf, cap);
     st = demo_shared_timestamp_write(&w, value);
     if (st == DEMO_OK && len_out) {
@@ -48,6 +51,8 @@ static DEMO_NOINLINE demo_status_t demo_shared_timestamp_decode_read(const uint8
                                                                      demo_shared_timestamp_t *out,
                                                                      demo_decode_error_t *err) {
     demo_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     demo_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
     return demo_shared_timestamp_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
@@ -55,6 +60,8 @@ static DEMO_NOINLINE demo_status_t demo_shared_timestamp_decode_read(const uint8
 
 demo_status_t demo_shared_timestamp_decode(const uint8_t *data, size_t len, demo_shared_timestamp_t *out,
                                            demo_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
     if (len == 8 && demo_shared_timestamp_load(data, out) == 0) {
         return DEMO_OK;
     }

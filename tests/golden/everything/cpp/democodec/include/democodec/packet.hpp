@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
 
 #include "democodec/checksum.hpp"
 #include "democodec/framing.hpp"
@@ -14,21 +15,44 @@
 
 namespace democodec {
 
-/// A complete packet (sync .. checksum) as found by StreamParser or made by PacketBuilder.
+/// A complete packet (sync .. checksum) as found by StreamParser or made by PacketBuilder, or
+/// any bytes a user points it at: every accessor stays within `size` bytes of `data`, whatever
+/// the length byte says (a truncated buffer gives a shorter payload, never a read past it).
+/// `valid()` tells whether the bytes are one whole packet: header, payload and checksum as long
+/// as the length byte says.
 struct PacketView {
     const std::uint8_t *data = nullptr;
     std::size_t size = 0;
 
+    /// The descriptor set, or 0 when the view is too short to hold the header.
     std::uint8_t set() const {
-        return data[kSetOffset];
+        return data != nullptr && size >= kHeaderSize ? data[kSetOffset] : 0;
     }
+    /// The payload's first byte (meaningful for payload_size() bytes).
     const std::uint8_t *payload() const {
-        return data + kHeaderSize;
+        return data != nullptr && size >= kHeaderSize ? data + kHeaderSize : data;
     }
+    /// The payload's size: the length byte, cut to the bytes the view holds after the header.
     std::size_t payload_size() const {
-        return data[kLengthOffset];
+        if (data == nullptr || size < kHeaderSize) {
+            return 0;
+        }
+        const std::size_t stated = data[kLengthOffset];
+        const std::size_t held = size - kHeaderSize;
+        return stated < held ? stated : held;
+    }
+    /// True when the view holds exactly one packet: header, the payload its length byte states,
+    /// and the checksum (not verified here; see StreamParser).
+    bool valid() const {
+        return data != nullptr && size >= kHeaderSize + kChecksumSize &&
+               size == kHeaderSize + std::size_t{data[kLengthOffset]} + kChecksumSize;
     }
 };
+
+namespace detail {
+template <class T, class = void> struct HasSet : std::false_type {};
+template <class T> struct HasSet<T, std::void_t<decltype(T::kSet)>> : std::true_type {};
+} // namespace detail
 
 /// Appends fields to a bounded buffer and finalises length and checksum. No heap.
 class PacketBuilder {
@@ -62,8 +86,16 @@ class PacketBuilder {
         return end_field(descriptor, size);
     }
 
-    /// Appends a typed field (any generated layout struct: uses T::kDescriptor).
+    /// Appends a typed field (any generated layout struct: uses T::kDescriptor). A layout of
+    /// another descriptor set than the builder's (T::kSet) is refused with EncodeError::wrong_set:
+    /// its descriptor means another field there. Shared data fields (sample_rule::is_shared) go
+    /// in any set; reserved fields (ack/nack, no kSet) in any set of their kind.
     template <class T> EncodeError add(const T &value) {
+        if constexpr (detail::HasSet<T>::value) {
+            if (T::kSet != set_ && !sample_rule::is_shared(T::kDescriptor) && error_ == EncodeError::none) {
+                return fail(EncodeError::wrong_set);
+            }
+        }
         std::uint8_t *f = begin_field();
         if (f == nullptr) {
             return error_;

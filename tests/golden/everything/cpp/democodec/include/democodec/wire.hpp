@@ -321,6 +321,7 @@ enum class EncodeError : std::uint8_t {
     union_mismatch, ///< a union holds a member other than the one its selector names
     optional_gap,   ///< an optional parameter is present after an absent one
     too_short,      ///< shorter than an irregular field's size byte allows (length_byte_adjust)
+    wrong_set,      ///< a typed field of another descriptor set than the packet's (PacketBuilder::add)
 };
 
 inline const char *to_string(EncodeError e) {
@@ -337,6 +338,8 @@ inline const char *to_string(EncodeError e) {
         return "optional parameter present after an absent one";
     case EncodeError::too_short:
         return "field data too short for its size byte";
+    case EncodeError::wrong_set:
+        return "the field belongs to another descriptor set";
     }
     return "?";
 }
