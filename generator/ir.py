@@ -25,6 +25,7 @@ from .passes import (
     reserved_fields,
     resolve_types,
     sample_rule,
+    session_rule,
     sets,
     value_paths,
     variants,
@@ -43,6 +44,7 @@ PASSES = (
     link_responses,  # responses to response fields of the same set; the reply code rule
     irregular_lengths,  # length_byte_adjust checked; framing irregular_lengths
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
+    session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get
