@@ -53,6 +53,7 @@ RUNTIME_FILES = [
     "packets.py",
     "samples.py",
     "session.py",
+    "session_tool.py",
     "transport.py",
     "_speedups.c",
 ]

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import typing as _ty
 
-from . import types as _t
 from . import base, imu_config
+from . import types as _t
 from .session import Device
 
 

@@ -24,7 +24,7 @@ from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 from . import _session as _meta
 from . import registry
-from .canonical import error_text
+from .canonical import error_text, loads
 from .codec import Field
 from .framing import PacketBuilder, Parser, RawPacket, Skip
 from .packets import DecodedField, Entry, Packet, RawField, Trailing, decode_packet
@@ -89,7 +89,7 @@ class Result:
     RawField, Trailing).
     """
 
-    __slots__ = ("command", "status", "code", "reply", "error", "expect")
+    __slots__ = ("command", "status", "code", "reply", "error", "expect", "tag")
 
     def __init__(
         self,
@@ -106,6 +106,7 @@ class Result:
         self.reply: List[Entry] = reply if reply is not None else []
         self.error = error
         self.expect = expect
+        self.tag: Any = None  # the tag given to Session.start
 
     @property
     def ok(self) -> bool:
@@ -282,11 +283,43 @@ def expected_replies(command: Field, info: Optional[CommandInfo] = None) -> Tupl
     return tuple(out)
 
 
+def command_from_line(text: str) -> Field:
+    """The command of one input line of the conformance tool: a canonical packet line (what
+    `encode` accepts) with exactly one decoded command field. Raises ValueError naming the problem."""
+    from .codec import EncodeError
+    from .packets import encode_line
+
+    try:
+        encode_line(text)  # every rule of the encoder's input (section 5)
+    except EncodeError as e:
+        raise ValueError(str(e)) from None
+    obj = loads(text)
+    if "fields" not in obj:
+        raise ValueError("expected a packet line with one command field, not a skip run")
+    fields = obj["fields"]
+    if len(fields) != 1:
+        raise ValueError(f"expected exactly one command field, got {len(fields)}")
+    f = fields[0]
+    if "values" not in f:
+        raise ValueError("expected a decoded command field (descriptor, name, values), not a raw field")
+    classes = registry.lookup(obj["set"], f["descriptor"]) or ()
+    if "device" in f:
+        classes = tuple(c for c in classes if c.DEVICE == f["device"])
+    if not classes or classes[0].ROLE != "command":
+        raise ValueError(f"{f['name']} (set {obj['set']}, descriptor {f['descriptor']}) is not a command")
+    return classes[0].from_json(f["values"], "values.")
+
+
 # ----------------------------------------------------------------------------- timed parser
 class TimedParser(Parser):
     """The stream parser of section 1 with the timed rule of section 7: when the parser has been
     waiting at the same position (a partial sync, header or packet) for longer than
-    `inter_packet_timeout_ms`, the byte there is skipped and parsing resumes at the next byte."""
+    `inter_packet_timeout_ms`, the byte there is skipped and parsing resumes at the next byte.
+
+    `feed_at(data, now)` applies the rule at `now` to the bytes already buffered *before* it adds
+    `data` (bytes that arrive too late do not rescue a stale candidate), so the events do not
+    depend on whether the caller polled in between; the position it then waits at, if new, waits
+    from `now`."""
 
     def __init__(self, inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS) -> None:
         super().__init__()
@@ -296,25 +329,24 @@ class TimedParser(Parser):
 
     def feed_at(self, data: Any, now_ms: int) -> List[Any]:
         """Consume bytes received at `now_ms` (may be empty: only the timed rule runs)."""
-        events = self.feed(data) if data else []
-        while self._buf:
-            if self._wait_at != self._base:
-                self._wait_at, self._wait_since = self._base, now_ms
-                break
-            if now_ms - self._wait_since <= self.inter_packet_timeout_ms:
-                break
+        events: List[Any] = []
+        while self._buf and self._wait_at == self._base and now_ms - self._wait_since > self.inter_packet_timeout_ms:
             self._skipped(0, 1)
             del self._buf[:1]
             self._base += 1
             events += self._scan(final=False)
+        if data:
+            events += self.feed(data)
         if not self._buf:
             self._wait_at = -1
+        elif self._wait_at != self._base:
+            self._wait_at, self._wait_since = self._base, now_ms
         return events
 
     @property
     def wait_deadline(self) -> Optional[int]:
-        """When the timed rule next fires (a time after which a poll drops bytes), or None."""
-        if not self._buf or self._wait_at != self._base:
+        """When the timed rule next fires (the first time a poll drops a byte), or None."""
+        if not self._buf:
             return None
         return self._wait_since + self.inter_packet_timeout_ms + 1
 
@@ -404,16 +436,18 @@ class Session:
             why = support_error(command, self.device)
             if why is not None:
                 p = Pending(command, b"", now_ms, expect, tag)
-                p.result = Result(command, REFUSED, error=why, expect=expect)
+                p.result = _tagged(Result(command, REFUSED, error=why, expect=expect), tag)
                 return p
         packet = PacketBuilder(command.SET).add(command).build()
         p = Pending(command, packet, now_ms + base + allowance_ms(command, info), expect, tag)
         if ack_suppressed(command, info):
-            p.result = Result(command, SENT, expect=expect)
+            p.result = _tagged(Result(command, SENT, expect=expect), tag)
             return p
         if len(self._pending) >= self.max_pending:
             p.packet = b""
-            p.result = Result(command, REFUSED, error=f"{self.max_pending} commands already pending", expect=expect)
+            p.result = _tagged(
+                Result(command, REFUSED, error=f"{self.max_pending} commands already pending", expect=expect), tag
+            )
             return p
         self._pending.append(p)
         return p
@@ -448,7 +482,7 @@ class Session:
         keep = []
         for p in self._pending:
             if now_ms >= p.deadline:
-                p.result = Result(p.command, TIMEOUT, expect=p.expect)
+                p.result = _tagged(Result(p.command, TIMEOUT, expect=p.expect), p.tag)
                 out.append(p.result)
             else:
                 keep.append(p)
@@ -500,9 +534,14 @@ class Session:
                     end = j
                     break
             self._pending.remove(p)
-            p.result = _complete(p, getattr(ack, _meta.ACK_CODE), list(fields[i + 1 : end]))
+            p.result = _tagged(_complete(p, getattr(ack, _meta.ACK_CODE), list(fields[i + 1 : end])), p.tag)
             results.append(p.result)
         return results
+
+
+def _tagged(result: Result, tag: Any) -> Result:
+    result.tag = tag
+    return result
 
 
 def _complete(p: Pending, code: Any, reply: List[Entry]) -> Result:
@@ -623,6 +662,7 @@ __all__ = [
     "CommandTimeout",
     "InvalidReply",
     "connect",
+    "command_from_line",
     "command_info",
     "support_error",
     "ack_suppressed",
