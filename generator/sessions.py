@@ -113,7 +113,9 @@ def _case(ctx: _Ctx, path: tuple, c) -> dict | None:
     for k, s in enumerate(c["steps"] or []):
         sp = path + ("steps", k)
         if not isinstance(s, dict) or "at" not in s or len({"send", "receive"} & set(s)) != 1:
-            ctx.err(sp, "a step has 'at' and one of 'send' or 'receive'", "{at: 0, send: {...}} or {at: 5, receive: hex}")
+            ctx.err(
+                sp, "a step has 'at' and one of 'send' or 'receive'", "{at: 0, send: {...}} or {at: 5, receive: hex}"
+            )
             continue
         extra = set(s) - {"at", "send", "receive", "bytes"}
         if extra or ("bytes" in s and "send" not in s):
@@ -136,7 +138,11 @@ def _case(ctx: _Ctx, path: tuple, c) -> dict | None:
     for k, e in enumerate(c["expect"] or []):
         ep = path + ("expect", k)
         if not isinstance(e, dict):
-            ctx.err(ep, "an expected line is a mapping", "{line: 1, result: ack, ...}, {packet: ...} or {skipped: hex, offset: N}")
+            ctx.err(
+                ep,
+                "an expected line is a mapping",
+                "{line: 1, result: ack, ...}, {packet: ...} or {skipped: hex, offset: N}",
+            )
             continue
         if "packet" in e:
             p = e["packet"]
@@ -175,7 +181,9 @@ def _send_line(ctx: _Ctx, path: tuple, s) -> str:
         return ""
     hit = resolve_field(ctx.proto, s["set"], s.get("descriptor"))
     if hit is None or hit[1]["role"] != "command":
-        ctx.err(path + ("descriptor",), f"no command 0x{s.get('descriptor', 0):02X} in set 0x{s['set']:02X}", "a command")
+        ctx.err(
+            path + ("descriptor",), f"no command 0x{s.get('descriptor', 0):02X} in set 0x{s['set']:02X}", "a command"
+        )
         return ""
     field = {k: v for k, v in s.items() if k != "set"}
     return _packet(ctx, path, {"offset": 0, "set": s["set"], "fields": [field]}, s.get("device"))
@@ -233,7 +241,9 @@ def _check_tiling(ctx: _Ctx, path: tuple, name: str, raw: bytes, tiles: list[dic
         if "skipped" in ev:
             got = bytes.fromhex(ev["skipped"])
             if raw[off : off + len(got)] != got:
-                return bad(f"skipped bytes at offset {off} are not the received ones ({raw[off : off + len(got)].hex()})")
+                return bad(
+                    f"skipped bytes at offset {off} are not the received ones ({raw[off : off + len(got)].hex()})"
+                )
             pos += len(got)
             continue
         head = raw[off : off + fr["header_size"]]

@@ -146,9 +146,12 @@ def test_tool_over_tcp():
     for case, (proc, dev) in zip(LIVE, runs):
         got = proc.stdout.splitlines()
         if proc.returncode != 0 or got != case["expect"] or dev.errors:
-            failures.append(f"{_id(case)}: exit {proc.returncode}, stderr {proc.stderr!r}, device {dev.errors}\n"
-                            + "\n".join(f"  got:    {g}" for g in got)
-                            + "\n" + "\n".join(f"  expect: {e}" for e in case["expect"]))
+            failures.append(
+                f"{_id(case)}: exit {proc.returncode}, stderr {proc.stderr!r}, device {dev.errors}\n"
+                + "\n".join(f"  got:    {g}" for g in got)
+                + "\n"
+                + "\n".join(f"  expect: {e}" for e in case["expect"])
+            )
     assert not failures, "\n".join(failures)
 
 
@@ -162,7 +165,10 @@ def test_tool_bad_line_is_reported_and_skipped():
     ]
     lines = "\n".join(bad) + "\n\n" + case["steps"][0]["send"] + "\n"
     proc = subprocess.run(
-        [str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{dev.port}"], input=lines, capture_output=True, text=True,
+        [str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{dev.port}"],
+        input=lines,
+        capture_output=True,
+        text=True,
         timeout=60,
     )
     dev.join(10)
@@ -178,10 +184,20 @@ def test_tool_connection_refused_and_usage():
     s.bind(("127.0.0.1", 0))
     port = s.getsockname()[1]
     s.close()
-    proc = subprocess.run([str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{port}"], input="", capture_output=True,
-                          text=True, timeout=60)
+    proc = subprocess.run(
+        [str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{port}"],
+        input="",
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert proc.returncode == 2 and "cannot connect" in proc.stderr
-    for args in (["--connect"], ["--timeout-ms", "x", "--connect", "tcp:a:1"], ["--device", "nope", "--connect", "tcp:a:1"], []):
+    for args in (
+        ["--connect"],
+        ["--timeout-ms", "x", "--connect", "tcp:a:1"],
+        ["--device", "nope", "--connect", "tcp:a:1"],
+        [],
+    ):
         proc = subprocess.run([str(TOOL), "python", *args], input="", capture_output=True, text=True, timeout=60)
         assert proc.returncode == 2 and proc.stderr, args
     proc = subprocess.run([str(TOOL), "python", "--connect", "tcp:nohost"], input="", capture_output=True, text=True)
