@@ -7,8 +7,9 @@ integer parameter `param`, in milliseconds, and applies to the listed functions 
 
 Per protocol: `session`, how a reply is matched: the reserved field of role `ack` (its
 descriptor), which of its two parameters echoes the command descriptor and which carries the
-code, the code's enum and the value that means success (0). The ack field must be exactly two
-u8-based parameters, the echo first, so every runtime reads it as two bytes.
+code, the code's enum (null when the code is a plain u8) and the value that means success (0). The
+ack field must be exactly two one-byte parameters, the echo first, so every runtime reads it as
+two bytes.
 """
 
 from __future__ import annotations
@@ -81,19 +82,18 @@ def _session(ctx: Context) -> dict | None:
         len(params) == 2
         and all(p["count"] is None and p["size"] == {"min": 1, "max": 1, "fixed": True} for p in params)
         and params[0]["type"]["kind"] == "primitive"
-        and params[1]["type"]["kind"] == "enum"
+        and params[1]["type"]["kind"] in ("primitive", "enum")
     )
     if not ok:
         ctx.err(
             ctx.pf,
             ("reserved_fields",),
-            f"ack field {ack['name']}: a session needs two one-byte parameters, the echoed descriptor then the code enum",
-            "params: [{name: ..., type: u8}, {name: ..., type: <CodeEnum>}]",
+            f"ack field {ack['name']}: a session needs two one-byte parameters, the echoed descriptor then the code",
+            "params: [{name: ..., type: u8}, {name: ..., type: u8 or a u8 enum}]",
         )
         return None
-    enum = ctx.types.get(params[1]["type"]["name"], {})
-    success = [v for v in enum.get("values", []) if v["value"] == 0]
-    if not success:
+    enum = ctx.types.get(params[1]["type"]["name"], {}) if params[1]["type"]["kind"] == "enum" else None
+    if enum is not None and not any(v["value"] == 0 for v in enum.get("values", [])):
         ctx.err(
             ctx.pf,
             ("reserved_fields",),
@@ -105,6 +105,6 @@ def _session(ctx: Context) -> dict | None:
         "ack_name": ack["name"],
         "echo": params[0]["name"],
         "code": params[1]["name"],
-        "code_enum": params[1]["type"]["name"],
+        "code_enum": enum["name"] if enum else None,
         "ok": 0,
     }

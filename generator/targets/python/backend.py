@@ -64,7 +64,7 @@ PACKAGE_TEST_FILES = ["conftest.py"]
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
 # Templates of the session layer (docs/conformance.md section 7): the spec facts of every command
 # and the typed command API.
-SESSION_TEMPLATES = ["_session.py", "commands.py"]
+SESSION_TEMPLATES = ["_session.py", "command_api.py"]
 # Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
 RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES} | {
     "registry",
@@ -72,7 +72,7 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
     "types",
     "tests",
     "_session",
-    "commands",
+    "command_api",
 }
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
@@ -721,7 +721,7 @@ def _int_value(types: dict, tref: dict, value) -> int | None:
 
 
 def _session_context(m: _Proto, sets: list[dict]) -> dict:
-    """What _session.py.j2 (the spec facts of every command) and commands.py.j2 (the typed command
+    """What _session.py.j2 (the spec facts of every command) and command_api.py.j2 (the typed command
     API) print: per command layout its class, devices, functions, replies, ack suppression and
     timeout allowance; per command set a class with one method per function."""
     proto = m.p

@@ -12,7 +12,7 @@ current time in milliseconds with every call and sends the bytes it returns:
 
 `Device` is the blocking API over a transport (transport.py): `device.run(command)` returns the
 Result, `device.call(command)` raises on anything but success, and the typed command API
-(`device.threedm.sensor_to_vehicle_euler.read()`, generated into commands.py) calls it.
+(`device.threedm.sensor_to_vehicle_euler.read()`, generated into command_api.py) calls it.
 Every packet that is not a reply goes to the handlers registered with `on_packet`, `on_field`
 and `on_sample`, also while a command is pending.
 """
@@ -576,9 +576,9 @@ class Device:
         self._clock = clock
         self._t0 = clock()
         self.on_event = on_event
-        from . import commands  # the generated typed API (imports this module)
+        from . import command_api  # the generated typed API (imports this module)
 
-        commands.bind(self)
+        command_api.bind(self)
 
     @property
     def device(self) -> Optional[str]:

@@ -5,6 +5,7 @@ with one method per function it supports (or a plain call):
 
     device = connect("tcp:192.168.1.10:5000", device="cv7_ins")
     device.base.ping()
+
 Each method builds the command, sends it, waits for its result and returns the typed reply field
 (or None when the command has none); it raises CommandRefused when the selected device does not
 support the command or function (nothing is sent; `check_device=False` sends it anyway), Nack,
@@ -17,14 +18,14 @@ from __future__ import annotations
 import typing as _ty
 
 from . import aiding, base, filter, gnss, system, threedm
+from . import session as _s
 from . import types as _t
-from .session import Device
 
 
 class _Command:
     """One command bound to a Device."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self._device = device
 
     def _pick(self, layouts: _ty.Dict[str, _ty.Any]) -> _ty.Any:
@@ -306,7 +307,7 @@ class DeviceReset(_Command):
 class BaseCommands:
     """Base Command Set commands (set 0x01)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.ping = Ping(device)
         self.set_to_idle = SetToIdle(device)
         self.get_device_info = GetDeviceInfo(device)
@@ -3144,7 +3145,7 @@ class DeviceStatus(_Command):
 class ThreedmCommands:
     """3DM Command Set commands (set 0x0C)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.event_control = EventControl(device)
         self.get_event_trigger_status = GetEventTriggerStatus(device)
         self.get_event_action_status = GetEventActionStatus(device)
@@ -6128,7 +6129,7 @@ class GnssAntennaCalibrationControl(_Command):
 class FilterCommands:
     """Filter Command Set commands (set 0x0D)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.reset_filter = ResetFilter(device)
         self.set_initial_attitude = SetInitialAttitude(device)
         self.set_initial_heading = SetInitialHeading(device)
@@ -6360,7 +6361,7 @@ class SpartnConfiguration(_Command):
 class GnssCommands:
     """GNSS Command Set commands (set 0x0E)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.receiver_info = ReceiverInfo(device)
         self.signal_configuration = SignalConfiguration(device)
         self.spartn_configuration = SpartnConfiguration(device)
@@ -6767,7 +6768,7 @@ class Pressure(_Command):
 class AidingCommands:
     """Aiding Command Set commands (set 0x13)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.frame_config = FrameConfig(device)
         self.echo_control = EchoControl(device)
         self.ecef_position = EcefPosition(device)
@@ -6855,11 +6856,11 @@ class CommunicationMode(_Command):
 class SystemCommands:
     """System Command Set commands (set 0x7F)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.communication_mode = CommunicationMode(device)
 
 
-def bind(device: Device) -> None:
+def bind(device: _s.Device) -> None:
     """Give a Device its command sets (called by Device itself)."""
     device.base = BaseCommands(device)  # type: ignore[attr-defined]
     device.threedm = ThreedmCommands(device)  # type: ignore[attr-defined]

@@ -5,6 +5,7 @@ with one method per function it supports (or a plain call):
 
     device = connect("tcp:192.168.1.10:5000", device="ms_imu3020")
     device.base.ping()
+
 Each method builds the command, sends it, waits for its result and returns the typed reply field
 (or None when the command has none); it raises CommandRefused when the selected device does not
 support the command or function (nothing is sent; `check_device=False` sends it anyway), Nack,
@@ -17,14 +18,14 @@ from __future__ import annotations
 import typing as _ty
 
 from . import base, imu_config
+from . import session as _s
 from . import types as _t
-from .session import Device
 
 
 class _Command:
     """One command bound to a Device."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self._device = device
 
     def _pick(self, layouts: _ty.Dict[str, _ty.Any]) -> _ty.Any:
@@ -162,7 +163,7 @@ class CorrelateGpsTime(_Command):
 class BaseCommands:
     """Base Messages commands (set 0x01)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.ping = Ping(device)
         self.get_device_messages = GetDeviceMessages(device)
         self.device_reset = DeviceReset(device)
@@ -946,7 +947,7 @@ class AuxAccelRange(_Command):
 class ImuConfigCommands:
     """IMU Configuration Messages commands (set 0x02)."""
 
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: _s.Device) -> None:
         self.uart_baud_rate = UartBaudRate(device)
         self.filter = Filter(device)
         self.sample_rate = SampleRate(device)
@@ -961,7 +962,7 @@ class ImuConfigCommands:
         self.aux_accel_range = AuxAccelRange(device)
 
 
-def bind(device: Device) -> None:
+def bind(device: _s.Device) -> None:
     """Give a Device its command sets (called by Device itself)."""
     device.base = BaseCommands(device)  # type: ignore[attr-defined]
     device.imu_config = ImuConfigCommands(device)  # type: ignore[attr-defined]

@@ -1,4 +1,4 @@
-"""The typed command API of the test protocol (cf. templates/python/package/commands.py.j2)."""
+"""The typed command API of the test protocol (cf. templates/python/package/command_api.py.j2)."""
 
 from __future__ import annotations
 
