@@ -27,7 +27,6 @@ def run(ctx: Context) -> None:
             for j, (v, src) in enumerate(zip(f["variants"], sources)):
                 path = f["_path"] + (("variants", j) if "variants" in spec else ())
                 v["timeout"] = _timeout(ctx, f, v, src, path, f"{s['name']}.{f['name']}")
-            f["timeout"] = f["variants"][0]["timeout"]
     ctx.session = _session(ctx)
 
 

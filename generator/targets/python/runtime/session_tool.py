@@ -19,7 +19,7 @@ from .packets import Packet
 from .session import DEFAULT_TIMEOUT_MS, Device, Result, command_from_line
 from .transport import TransportError, open_transport
 
-PROG = "<package>.session_tool"
+PROG = f"{__package__}.session_tool"
 USAGE = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]"
 
 
