@@ -208,3 +208,34 @@ def test_tool_connection_refused_and_usage():
 def test_tool_other_languages_not_yet(lang):
     proc = subprocess.run([str(TOOL), lang, "--connect", "tcp:127.0.0.1:1"], input="", capture_output=True, text=True)
     assert proc.returncode == 2 and "not implemented yet" in proc.stderr
+
+
+def test_typed_api_over_tcp():
+    """The generated command API of mipcodec against the fake device: write and read the
+    sensor-to-vehicle rotation (case write_then_read), a refusal and a NACK raised as errors."""
+    pkg = python_package("mipcodec")
+    case = next(c for c in CASES if c["protocol"] == "mip" and c["name"] == "write_then_read")
+    dev = FakeDevice(case, PROTOCOLS["mip"]["framing"]).start()
+    with pkg.connect(f"tcp:127.0.0.1:{dev.port}", device="cv7_ins") as device:
+        assert device.threedm.sensor_to_vehicle_euler.write(0.0, 1.5708, 1.5708) is None
+        reply = device.threedm.sensor_to_vehicle_euler.read()
+        assert isinstance(reply, pkg.threedm.SensorToVehicleEulerResponse)
+        assert (reply.roll, round(reply.pitch, 4), round(reply.yaw, 4)) == (0.0, 1.5708, 1.5708)
+    dev.join(10)
+    # The write of vector sensor_to_vehicle_euler_example_3, then the read of vector sensor_to_vehicle_euler_read.
+    assert dev.errors == [] and [p.hex() for p in dev.received] == [case["steps"][0]["bytes"], "75650c030331021f46"]
+    case = next(c for c in CASES if c["protocol"] == "mip" and c["name"] == "refused_command_for_the_device")
+    dev = FakeDevice(case, PROTOCOLS["mip"]["framing"]).start()
+    with pkg.connect(f"tcp:127.0.0.1:{dev.port}", device="gx5_45") as device:
+        with pytest.raises(pkg.session.CommandRefused, match="not supported by gx5_45"):
+            device.threedm.sensor_to_vehicle_euler.read()
+        device.base.ping()
+    dev.join(10)
+    assert dev.errors == []
+    case = next(c for c in CASES if c["protocol"] == "mip" and c["name"] == "nack_of_a_read")
+    dev = FakeDevice(case, PROTOCOLS["mip"]["framing"]).start()
+    with pkg.connect(f"tcp:127.0.0.1:{dev.port}", device="cv7_ins") as device:
+        with pytest.raises(pkg.session.Nack) as e:
+            device.threedm.sensor_to_vehicle_euler.read()
+        assert e.value.code == pkg.types.AckCode.INVALID_PARAMETER
+    dev.join(10)

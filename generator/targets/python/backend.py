@@ -650,7 +650,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
         files[f"{root}/setup.py"] = env.get_template("python/setup.py.j2").render(**ctx)
-        files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx)
+        files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx, **session)
         files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
             **ctx, example=_example(proto)
         )
@@ -791,6 +791,7 @@ def _session_context(m: _Proto, sets: list[dict]) -> dict:
                 }
             )
     return {
+        "session_example": _session_example(api_sets),
         "session_rule": proto["session"],
         "code_enum": proto["session"]["code_enum"] if proto["session"] else None,
         "function_names": [{"value": v, "name": n} for n, v in fvalues.items()],
@@ -897,3 +898,20 @@ def _reply_type(s: dict, f: dict, variants: list[dict], fn: str | None, by_id: d
         return "_ty.Any"
     module = next(sm["module"] for sm in sets if sm["set"]["id"] == s["id"])
     return f"{module}.{_layout_classes(s['fields'])[(target['name'], None)]}"
+
+
+def _session_example(api_sets: list[dict]) -> dict | None:
+    """The command the README's session snippet calls: the first read that returns a reply field,
+    else the first plain command that does, else the first command."""
+    calls = [(s, c, m) for s in api_sets for c in s["commands"] for m in c["methods"] if not m["args"]]
+    for s, c, m in calls:
+        if m["returns"] != "None":
+            call = f"{s['attr']}.{c['attr']}" + ("()" if m["name"] == "__call__" else f".{m['name']}()")
+            return {"call": call, "returns": True}
+    if calls:
+        s, c, m = calls[0]
+        return {
+            "call": f"{s['attr']}.{c['attr']}" + ("()" if m["name"] == "__call__" else f".{m['name']}()"),
+            "returns": False,
+        }
+    return None
