@@ -27,7 +27,7 @@ from . import registry
 from .canonical import error_text, loads
 from .codec import Field
 from .framing import PacketBuilder, Parser, RawPacket, Skip
-from .packets import DecodedField, Entry, Packet, RawField, Trailing, decode_packet
+from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from .samples import Sample, SampleGrouper
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
@@ -311,7 +311,7 @@ def command_from_line(text: str) -> Field:
 
 
 # ----------------------------------------------------------------------------- timed parser
-class TimedParser(Parser):
+class TimedParser(Decoder):
     """The stream parser of section 1 with the timed rule of section 7: when the parser has been
     waiting at the same position (a partial sync, header or packet) for longer than
     `inter_packet_timeout_ms`, the byte there is skipped and parsing resumes at the next byte.
@@ -321,8 +321,11 @@ class TimedParser(Parser):
     depend on whether the caller polled in between; the position it then waits at, if new, waits
     from `now`."""
 
-    def __init__(self, inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS) -> None:
-        super().__init__()
+    def __init__(
+        self, inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS, device: Optional[str] = None
+    ) -> None:
+        super().__init__(device)
+        self.raw = False  # True: RawPacket events (as Parser), else decoded Packets (as Decoder)
         self.inter_packet_timeout_ms = inter_packet_timeout_ms
         self._wait_at = -1
         self._wait_since = 0
@@ -342,6 +345,9 @@ class TimedParser(Parser):
         elif self._wait_at != self._base:
             self._wait_at, self._wait_since = self._base, now_ms
         return events
+
+    def _scan(self, final: bool) -> List[Any]:
+        return Parser._scan(self, final) if self.raw else Decoder._scan(self, final)
 
     @property
     def wait_deadline(self) -> Optional[int]:
@@ -380,7 +386,7 @@ class Session:
         self.timeout_ms = timeout_ms
         self.max_pending = max_pending
         self.check_device = check_device
-        self._parser = TimedParser(inter_packet_timeout_ms)
+        self._parser = TimedParser(inter_packet_timeout_ms, device)
         self._pending: List[Pending] = []
         self._packet_handlers: List[Callable[[Packet], Any]] = []
         self._field_handlers: Dict[Tuple[int, int], List[Callable[[Any, Packet], Any]]] = {}
@@ -400,6 +406,7 @@ class Session:
         """Call handler(sample) for every complete sample of data packets (section 6 grouping)."""
         if self._grouper is None:
             self._grouper = SampleGrouper(self.device)
+            self._parser.raw = True  # the grouper reads the packets' bytes
         self._sample_handlers.append(handler)
 
     # -------------------------------------------------------------- commands
@@ -457,8 +464,7 @@ class Session:
         """Bytes received at `now_ms`: returns the events in order (Results of commands that
         completed, Packets that are not replies, Skip runs) after calling the handlers."""
         events: List[Event] = self._expire(now_ms)
-        for e in self._parser.feed_at(data, now_ms):
-            self._event(e, events)
+        self._route(self._parser.feed_at(data, now_ms), events)
         return events
 
     def poll(self, now_ms: int) -> List[Event]:
@@ -469,8 +475,7 @@ class Session:
         """End of input: what `poll` does, then every buffered byte that is not a complete packet
         is skipped (as at the end of a stream, section 1); pending commands stay pending."""
         events = self.poll(now_ms)
-        for e in self._parser.flush():
-            self._event(e, events)
+        self._route(self._parser.flush(), events)
         if self._grouper is not None:
             for s in self._grouper.flush():
                 for h in self._sample_handlers:
@@ -489,16 +494,35 @@ class Session:
         self._pending = keep
         return out
 
+    def _route(self, parsed: List[Any], events: List[Event]) -> None:
+        if self._packet_handlers or self._field_handlers or self._grouper is not None:
+            for e in parsed:
+                self._event(e, events)
+            return
+        # No handlers (the common case of a caller reading the events): only packets of a set
+        # with a pending command need a look.
+        sets = {p.set for p in self._pending}
+        for e in parsed:
+            if type(e) is Skip or e.set not in sets:
+                events.append(e)
+            else:
+                self._event(e, events)
+
     def _event(self, e: Any, events: List[Event]) -> None:
         if isinstance(e, Skip):
             events.append(e)
             return
-        raw: RawPacket = e
-        packet = decode_packet(raw.data, raw.offset, self.device)
-        results = self._match(packet) if self._pending else []
-        if results:
-            events.extend(results)
-            return
+        raw: Optional[RawPacket] = None
+        if isinstance(e, RawPacket):
+            raw = e
+            packet = decode_packet(raw.data, raw.offset, self.device)
+        else:
+            packet = e
+        if self._pending and any(p.set == packet.set for p in self._pending):
+            results = self._match(packet)
+            if results:
+                events.extend(results)
+                return
         events.append(packet)
         for h in self._packet_handlers:
             h(packet)
@@ -507,7 +531,7 @@ class Session:
                 if isinstance(f, DecodedField):
                     for h in self._field_handlers.get((packet.set, f.descriptor), ()):
                         h(f.value, packet)
-        if self._grouper is not None:
+        if self._grouper is not None and raw is not None:
             for s in self._grouper.feed(raw.data, raw.offset):
                 for h in self._sample_handlers:
                     h(s)
