@@ -137,6 +137,16 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         out["variants"] = ", ".join(classes)
         for v, c in zip(field["variants"], classes):
             out[f"class_{v['device']}"] = c
+    if not is_reserved and field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (command_api.py.j2): device.<set>.<command>.<function>(...).
+        attr = set_module(set_)
+        attr = attr + "_set" if attr in DEVICE_ATTRIBUTES else attr
+        call = f"device.{attr}.{py_attr(field['name'])}"
+        functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
+        if len(functions) > 1:
+            out["session"] = f"{call}.{{{','.join(py_attr(fn) for fn in functions)}}}(...)"
+        else:
+            out["session"] = f"{call}.{py_attr(functions[0])}(...)" if functions else f"{call}(...)"
     return out
 
 
