@@ -25,6 +25,7 @@ from .passes import (
     reserved_fields,
     resolve_types,
     sample_rule,
+    session_rule,
     sets,
     size_limits,
     value_paths,
@@ -45,6 +46,7 @@ PASSES = (
     irregular_lengths,  # length_byte_adjust checked; framing irregular_lengths
     size_limits,  # every layout's largest encoding fits one field (framing max_field_data)
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
+    session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get

@@ -8,6 +8,7 @@ from .errata import render_errata
 from .export import ir_to_json
 from .output import write_file, write_tree
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
+from .sessions import load_sessions
 from .spec import ROOT, load_spec
 from .stated_lengths import lint_stated_lengths
 from .targets import TARGETS
@@ -35,6 +36,8 @@ def run(
     # --spec has the vectors of vectors_dir (<dir>/<protocol>/*.yaml), if any.
     if spec_dir is None:
         vectors = load_corpus(ir, ROOT)
+        # The session corpus (docs/conformance.md section 7) is checked here; its runners load it.
+        load_sessions(ir, ROOT / "tests" / "sessions")
     else:
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
     if validate_only:

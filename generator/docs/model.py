@@ -149,7 +149,7 @@ class Docs:
         for lang, mod in self.api.items():
             n = mod.api_names(p, s, f)
             shown = []
-            for key in ("type", "class", "variants", "encode", "decode", "module", "header", "namespace"):
+            for key in ("type", "class", "variants", "encode", "decode", "session", "module", "header", "namespace"):
                 if key in n and not (key == "variants" and "type" not in n and "class" not in n):
                     shown.append(f"{key}: {code(n[key])}")
             rows.append([LANG_TITLES[lang], "<br>".join(shown)])

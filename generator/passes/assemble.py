@@ -27,6 +27,7 @@ def run(ctx: Context) -> None:
         "set_kinds": p["set_kinds"],
         "shared_data": p.get("shared_data"),
         "samples": ctx.samples,
+        "session": ctx.session,
         "function_selector": p.get("function_selector"),
         "reserved_fields": ctx.reserved,
         "types": [ctx.types[n] for n in sorted(ctx.types)],

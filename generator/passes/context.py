@@ -50,6 +50,7 @@ class Context:
         self.reserved: list[dict] = []
         self.sets: list[dict] = []
         self.samples: dict = {}
+        self.session: dict | None = None  # session_rule: how replies are matched
         self.layouts: list[dict] = []  # field_layouts in IR form
         self.lookup: dict = {}
         self.value_paths: dict = {}

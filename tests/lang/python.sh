@@ -15,6 +15,7 @@
 #                                                     into build/python/ext/<package>/ (prints the directory)
 #   tests/lang/python.sh decode FILE [--device ID]    python -m <package> decode (FILE may be -)
 #   tests/lang/python.sh encode                       python -m <package> encode (stdin -> stdout)
+#   tests/lang/python.sh session --connect ADDRESS ...  python -m <package>.session_tool (docs/conformance.md section 7)
 #   tests/lang/python.sh example FILE                 the package's examples/getting_started.py FILE
 # The package for decode/encode/example is $PY_PACKAGE (default: mipcodec). Works from any directory.
 # decode/encode run the pure-Python code straight from generated/python/<package>; bytecode
@@ -39,7 +40,7 @@ packages() {
 }
 
 usage() {
-    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | example FILE" >&2
+    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE" >&2
     exit 2
 }
 
@@ -136,6 +137,9 @@ decode)
     ;;
 encode)
     run_cli encode "$@"
+    ;;
+session)
+    run_py -m "$PACKAGE.session_tool" "$@"
     ;;
 example)
     run_py "$ROOT/generated/python/$PACKAGE/examples/getting_started.py" "$@"

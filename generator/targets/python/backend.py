@@ -52,6 +52,9 @@ RUNTIME_FILES = [
     "framing.py",
     "packets.py",
     "samples.py",
+    "session.py",
+    "session_tool.py",
+    "transport.py",
     "_speedups.c",
     "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
 ]
@@ -60,12 +63,17 @@ PACKAGE_TEST_FILES = ["conftest.py"]
 # Templates of the package directory that do not need a model of their own (the protocol's
 # constants, the package's exports).
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
+# Templates of the session layer (docs/conformance.md section 8): the spec facts of every command
+# and the typed command API.
+SESSION_TEMPLATES = ["_session.py", "command_api.py"]
 # Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
 RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES if name.endswith((".py", ".c"))} | {
     "registry",
     "reserved",
     "types",
     "tests",
+    "_session",
+    "command_api",
 }
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
@@ -130,6 +138,16 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         out["variants"] = ", ".join(classes)
         for v, c in zip(field["variants"], classes):
             out[f"class_{v['device']}"] = c
+    if not is_reserved and field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (command_api.py.j2): device.<set>.<command>.<function>(...).
+        attr = set_module(set_)
+        attr = attr + "_set" if attr in DEVICE_ATTRIBUTES else attr
+        call = f"device.{attr}.{py_attr(field['name'])}"
+        functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
+        if len(functions) > 1:
+            out["session"] = f"{call}.{{{','.join(py_attr(fn) for fn in functions)}}}(...)"
+        else:
+            out["session"] = f"{call}.{py_attr(functions[0])}(...)" if functions else f"{call}(...)"
     return out
 
 
@@ -638,10 +656,13 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             files[f"{root}/{pkg}/{sm['module']}.py"] = tmpl.render(**ctx, mod=sm)
         files[f"{root}/{pkg}/reserved.py"] = tmpl.render(**ctx, mod=reserved)
         files[f"{root}/{pkg}/registry.py"] = env.get_template("python/package/registry.py.j2").render(**ctx)
+        session = _session_context(m, sets)
+        for name in SESSION_TEMPLATES:
+            files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
         files[f"{root}/setup.py"] = env.get_template("python/setup.py.j2").render(**ctx)
         files[f"{root}/MANIFEST.in"] = env.get_template("python/MANIFEST.in.j2").render(**ctx)
-        files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx)
+        files[f"{root}/README.md"] = env.get_template("python/README.md.j2").render(**ctx, **session)
         files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
             **ctx, example=_example(proto)
         )
@@ -695,3 +716,214 @@ def _typed_context(m: _Proto, sets: list[dict]) -> dict:
     text = " ".join(s["expr"] for s in samples)
     used |= {mod for mod in ("types",) if f"{mod}." in text}
     return {"samples": samples, "bitfields": bitfields, "sample_modules": sorted(used)}
+
+
+# ------------------------------------------------------------------------------------------ session
+# Attributes of session.Device a command set must not shadow (it gets a "_set" suffix instead).
+DEVICE_ATTRIBUTES = {"transport", "session", "device", "run", "call", "pump", "listen", "close", "now_ms"}
+DEVICE_ATTRIBUTES |= {"on_packet", "on_field", "on_sample", "on_event"}
+
+
+def _int_value(types: dict, tref: dict, value) -> int | None:
+    """An enum value name (or integer) of a parameter's type as an integer."""
+    if value is None or isinstance(value, int):
+        return value
+    t = types[tref["name"]]
+    return next(v["value"] for v in t["values"] if v["name"] == value)
+
+
+def _session_context(m: _Proto, sets: list[dict]) -> dict:
+    """What _session.py.j2 (the spec facts of every command) and command_api.py.j2 (the typed command
+    API) print: per command layout its class, devices, functions, replies, ack suppression and
+    timeout allowance; per command set a class with one method per function."""
+    proto = m.p
+    fvalues: dict[str, int] = {}
+    fdevices: dict[int, list[str]] = {}
+    if m.function_enum:
+        for v in m.types[m.function_enum]["values"]:
+            fvalues[v["name"]] = v["value"]
+            if v.get("devices"):
+                fdevices[v["value"]] = v["devices"]
+    rows = []
+    api_sets = []
+    for sm in sets:
+        s = sm["set"]
+        if s["kind"] != "command":
+            continue
+        names = _layout_classes(s["fields"])
+        by_id = {f["id"]: f for f in s["fields"]}
+        commands = []
+        for f in s["fields"]:
+            if f["role"] != "command":
+                continue
+            multi = len(f["variants"]) > 1
+            layouts = []
+            for v in f["variants"]:
+                cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
+                params = {q["name"]: q for q in v["params"]}
+                responses = []
+                for r in v["responses"]:
+                    w = r["when"] or {}
+                    fn = fvalues.get(w["function"]) if "function" in w else None
+                    param = w.get("param")
+                    value = _int_value(m.types, params[param]["type"], w.get("value")) if param else None
+                    responses.append(f"(0x{r['id']:02X}, {fn!r}, {py_attr(param) if param else None!r}, {value!r})")
+                ack = v["ack_suppressed_by"]
+                if ack is None:
+                    ack_text = "None"
+                elif "function" in ack:
+                    ack_text = f'("function", {fvalues[ack["function"]]})'
+                else:
+                    ack_text = f'("param", {py_attr(ack["param"])!r}, {ack.get("value")!r})'
+                t = v.get("timeout")
+                if t is None:
+                    timeout = "None"
+                else:
+                    fns = tuple(fvalues[x] for x in t["functions"]) if t["functions"] else None
+                    timeout = f"({t['ms']}, {py_attr(t['param']) if t['param'] else None!r}, {fns!r})"
+                functions = tuple(fvalues[x] for x in v["functions"]) if v["functions"] is not None else None
+                rows_text = (
+                    f"({cls}, {v['device']!r}, {tuple(v['devices'])!r}, {functions!r}, "
+                    f"{tuple_literal(responses) if responses else '()'}, {ack_text}, {timeout})"
+                )
+                layouts.append({"cls": cls, "device": v["device"], "variant": v, "row": rows_text})
+            rows.append({"key": f"(0x{s['id']:02X}, 0x{f['id']:02X})", "layouts": layouts})
+            commands.append(_command_api(m, s, f, layouts, by_id, sets))
+        if commands:
+            attr = set_module(s)
+            if attr in DEVICE_ATTRIBUTES:
+                attr += "_set"
+            api_sets.append(
+                {
+                    "attr": attr,
+                    "cls": camel(s["name"]) + "Commands",
+                    "title": s["title"],
+                    "set_hex": f"0x{s['id']:02X}",
+                    "commands": commands,
+                }
+            )
+    return {
+        "session_example": _session_example(api_sets),
+        "session_rule": proto["session"],
+        "code_enum": proto["session"]["code_enum"] if proto["session"] else None,
+        "function_names": [{"value": v, "name": n} for n, v in fvalues.items()],
+        "function_devices": [{"value": k, "devices": tuple_literal([repr(d) for d in v])} for k, v in fdevices.items()],
+        "command_rows": rows,
+        "api_sets": api_sets,
+        "set_modules": sorted({sm["module"] for sm in sets if sm["set"]["kind"] == "command" and sm["classes"]}),
+    }
+
+
+def _command_api(m: _Proto, s: dict, f: dict, layouts: list[dict], by_id: dict, sets: list[dict]) -> dict:
+    """One command of the typed API: its methods (one per function, or `__call__`)."""
+    fn_enum = m.function_enum
+    methods = []
+    plain = layouts[0]["variant"]["functions"] is None
+    functions: list[str] = []
+    for lay in layouts:
+        for fn in lay["variant"]["functions"] or []:
+            if fn not in functions:
+                functions.append(fn)
+    for fn in [None] if plain else functions:
+        groups: dict[tuple, list[dict]] = {}
+        for lay in layouts:
+            v = lay["variant"]
+            if fn is not None and fn not in (v["functions"] or []):
+                continue
+            sig = _signature(m, v, fn)
+            groups.setdefault(tuple((a["attr"], a["annotation"]) for a in sig["args"]), []).append({**lay, "sig": sig})
+        split = len(groups) > 1
+        for group in groups.values():
+            for_devices = [g for g in group]
+            sig = for_devices[0]["sig"]
+            name = "__call__" if fn is None else py_attr(fn)
+            if split:
+                name = f"{name}_{for_devices[0]['device']}" if fn is not None else f"call_{for_devices[0]['device']}"
+            reply = _reply_type(s, f, [g["variant"] for g in for_devices], fn, by_id, sets)
+            choose = (
+                "{" + ", ".join(f"{g['device']!r}: {g['cls']}" for g in for_devices) + "}" if len(layouts) > 1 else None
+            )
+            methods.append(
+                {
+                    "name": name,
+                    "fn": fn,
+                    "fn_const": f"_t.{fn_enum}.{const_name(fn)}" if fn is not None else None,
+                    "cls": for_devices[0]["cls"],
+                    "choose": choose,
+                    "args": sig["args"],
+                    "counts": sig["counts"],
+                    "returns": reply,
+                    "doc": (f"Function {fn}" if fn else "Send the command")
+                    + (f" (layout for {', '.join(g['device'] for g in for_devices)})" if split else "")
+                    + (": returns the reply field." if reply != "None" else "; raises on a NACK, timeout or refusal."),
+                }
+            )
+    return {
+        "attr": py_attr(f["name"]),
+        "cls": camel(f["name"]),
+        "title": f["title"],
+        "descriptor": f"0x{f['id']:02X}",
+        "methods": methods,
+    }
+
+
+def _signature(m: _Proto, v: dict, fn: str | None) -> dict:
+    """The arguments of the method for function fn of layout v: the parameters sent for fn (the
+    function selector and count parameters left out: the method sets them)."""
+    lay = m.layout(v["params"], "_t.", v["functions"])
+    decls = {d["name"]: d for d in lay["fields"]}
+    counted = {q["count"]["param"]: q for q in v["params"] if q["count"] and q["count"]["kind"] == "param"}
+    args, counts = [], []
+    for q in v["params"]:
+        if q["functions"] is not None and fn not in q["functions"]:
+            continue
+        if q["name"] in counted:
+            counts.append({"attr": py_attr(q["name"]), "array": py_attr(counted[q["name"]]["name"])})
+            continue
+        d = decls[q["name"]]
+        required = (q["functions"] is not None and fn not in (q["optional_for"] or [])) or not q["optional"]
+        ann = d["annotation"]
+        if required and ann.startswith("_ty.Optional[") and ann.endswith("]"):
+            ann = ann[len("_ty.Optional[") : -1]
+        args.append({"attr": d["attr"], "annotation": ann, "required": required})
+    # Required arguments first (Python's rule); the order among each kind follows the layout.
+    args = [a for a in args if a["required"]] + [a for a in args if not a["required"]]
+    return {"args": args, "counts": counts}
+
+
+def _reply_type(s: dict, f: dict, variants: list[dict], fn: str | None, by_id: dict, sets: list[dict]) -> str:
+    """The annotation of what a method returns: the reply field's class, or None."""
+    ids = []
+    for v in variants:
+        for r in v["responses"]:
+            w = r["when"] or {}
+            if "function" in w and w["function"] != fn:
+                continue
+            if r["id"] not in ids:
+                ids.append(r["id"])
+    if not ids:
+        return "None"
+    if len(ids) > 1:
+        return "_ty.Any"
+    target = by_id.get(ids[0])
+    if target is None or len(target["variants"]) > 1:
+        return "_ty.Any"
+    module = next(sm["module"] for sm in sets if sm["set"]["id"] == s["id"])
+    return f"{module}.{_layout_classes(s['fields'])[(target['name'], None)]}"
+
+
+def _session_example(api_sets: list[dict]) -> dict | None:
+    """The command the README's session snippet calls: the first read that returns a reply field,
+    else the first plain command that does, else the first command."""
+    calls = [(s, c, m) for s in api_sets for c in s["commands"] for m in c["methods"] if not m["args"]]
+    for s, c, m in calls:
+        if m["returns"] != "None":
+            call = f"{s['attr']}.{c['attr']}" + ("()" if m["name"] == "__call__" else f".{m['name']}()")
+            return {"call": call, "returns": True}
+    if calls:
+        s, c, m = calls[0]
+        return {
+            "call": f"{s['attr']}.{c['attr']}" + ("()" if m["name"] == "__call__" else f".{m['name']}()"),
+            "returns": False,
+        }
+    return None

@@ -199,4 +199,5 @@ EXPORTS = {
     ],
     "registry": ["DEVICES", "lookup"],
     "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
+    "session": ["Device", "Result", "Session", "connect"],
 }

@@ -33,6 +33,7 @@ def test_the_protocol_entry_has_the_documented_keys_and_no_notes(tmp_path):
         "set_kinds",
         "shared_data",
         "samples",
+        "session",
         "function_selector",
         "reserved_fields",
         "types",

@@ -63,6 +63,7 @@ from .packets import (
 )
 from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+from .session import Device, Result, Session, connect
 
 __all__ = [
     "aiding",
@@ -119,4 +120,8 @@ __all__ = [
     "SampleGrouper",
     "SampleTracker",
     "sample_key",
+    "Device",
+    "Result",
+    "Session",
+    "connect",
 ]

@@ -45,6 +45,7 @@ from .packets import (
 )
 from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+from .session import Device, Result, Session, connect
 
 __all__ = [
     "commands",
@@ -91,4 +92,8 @@ __all__ = [
     "SampleGrouper",
     "SampleTracker",
     "sample_key",
+    "Device",
+    "Result",
+    "Session",
+    "connect",
 ]

@@ -1,0 +1,113 @@
+"""Transports for the blocking session API (session.Device): TCP (standard library) and serial
+(pyserial, the optional extra `mscipcodec[serial]`).
+
+A transport has `write(data)`, `read(timeout_s) -> bytes` (the bytes available within
+`timeout_s` seconds, b"" when none came) and `close()`; a closed connection raises
+TransportError. Anything with these three methods works (a test's fake, a USB bridge).
+"""
+
+from __future__ import annotations
+
+import socket
+from typing import Any, Optional, Tuple
+
+
+class TransportError(OSError):
+    """The connection could not be opened, or it was closed or broke."""
+
+
+def parse_address(address: str) -> Tuple[str, Any]:
+    """("tcp", (host, port)) for "tcp:HOST:PORT" (an IPv6 host in brackets), else ("serial", path)."""
+    if address.startswith("tcp:"):
+        rest = address[4:]
+        host, sep, port = rest.rpartition(":")
+        if not sep or not host or not port.isdigit() or not 0 < int(port) < 65536:
+            raise ValueError(f"bad TCP address {address!r} (expected tcp:HOST:PORT)")
+        if host.startswith("[") and host.endswith("]"):
+            host = host[1:-1]
+        return "tcp", (host, int(port))
+    if not address:
+        raise ValueError("empty address (expected tcp:HOST:PORT or a serial port path)")
+    return "serial", address
+
+
+class TcpTransport:
+    """A TCP connection (a device server, a serial-to-TCP bridge, a simulator)."""
+
+    def __init__(self, host: str, port: int, connect_timeout_s: float = 5.0) -> None:
+        try:
+            self._sock = socket.create_connection((host, port), timeout=connect_timeout_s)
+        except OSError as e:
+            raise TransportError(f"cannot connect to {host}:{port}: {e.strerror or e}") from None
+        self._sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+
+    def write(self, data: bytes) -> None:
+        try:
+            self._sock.sendall(data)
+        except OSError as e:
+            raise TransportError(f"send failed: {e.strerror or e}") from None
+
+    def read(self, timeout_s: float) -> bytes:
+        self._sock.settimeout(max(timeout_s, 0.0) or 0.000001)
+        try:
+            data = self._sock.recv(65536)
+        except socket.timeout:
+            return b""
+        except BlockingIOError:
+            return b""
+        except OSError as e:
+            raise TransportError(f"receive failed: {e.strerror or e}") from None
+        if not data:
+            raise TransportError("connection closed by the device")
+        return data
+
+    def close(self) -> None:
+        self._sock.close()
+
+
+class SerialTransport:
+    """A serial port through pyserial (`pip install mscipcodec[serial]`)."""
+
+    def __init__(self, path: str, baudrate: int = 115200) -> None:
+        try:
+            import serial  # type: ignore[import-not-found]
+        except ImportError:
+            raise TransportError(
+                "serial ports need pyserial: pip install pyserial (or the package's [serial] extra)"
+            ) from None
+        try:
+            self._port = serial.Serial(path, baudrate=baudrate, timeout=0)
+        except (OSError, ValueError, serial.SerialException) as e:
+            raise TransportError(f"cannot open {path} at {baudrate} baud: {e}") from None
+        self._serial = serial
+
+    def write(self, data: bytes) -> None:
+        try:
+            self._port.write(data)
+        except self._serial.SerialException as e:
+            raise TransportError(f"write failed: {e}") from None
+
+    def read(self, timeout_s: float) -> bytes:
+        try:
+            self._port.timeout = max(timeout_s, 0.0)
+            first = self._port.read(1)
+            if not first:
+                return b""
+            waiting = self._port.in_waiting
+            return first + (self._port.read(waiting) if waiting else b"")
+        except self._serial.SerialException as e:
+            raise TransportError(f"read failed: {e}") from None
+
+    def close(self) -> None:
+        self._port.close()
+
+
+def open_transport(address: str, baudrate: int = 115200, connect_timeout_s: Optional[float] = None) -> Any:
+    """A transport for `address`: "tcp:HOST:PORT" or a serial port path (at `baudrate`)."""
+    kind, where = parse_address(address)
+    if kind == "tcp":
+        return TcpTransport(where[0], where[1], 5.0 if connect_timeout_s is None else connect_timeout_s)
+    return SerialTransport(where, baudrate)
+
+
+__all__ = ["TransportError", "TcpTransport", "SerialTransport", "open_transport", "parse_address"]

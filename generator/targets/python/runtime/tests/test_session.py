@@ -1,0 +1,253 @@
+"""session.py and transport.py: the sans-I/O session core, the blocking Device, the transports
+(docs/conformance.md section 8), on the test protocol (ping on every device; set_mode on alpha
+only, its ack suppressed by mode AUTO, with 500 ms of allowance)."""
+
+from __future__ import annotations
+
+import socket
+import threading
+
+import pytest
+from testproto import command, reserved, sensor
+from testproto import types as t
+from testproto.framing import PacketBuilder, Skip
+from testproto.packets import Packet
+from testproto.session import (
+    CommandRefused,
+    CommandTimeout,
+    Device,
+    Nack,
+    Result,
+    Session,
+    TimedParser,
+    command_from_line,
+)
+from testproto.transport import TcpTransport, TransportError, open_transport, parse_address
+
+
+def ack(descriptor: int, code: int = 0, set_id: int = 0x01, extra: tuple = ()) -> bytes:
+    b = PacketBuilder(set_id).add(reserved.AckNack(command_descriptor=descriptor, ack_code=t.AckCode(code)))
+    for f in extra:
+        b.add(f)
+    return b.build()
+
+
+def data_packet() -> bytes:
+    return PacketBuilder(0x80).add_field(0x01, b"\x00\x07\xff\x01").build()  # count 7, offset -1, valid
+
+
+def results(events):
+    return [e for e in events if isinstance(e, Result)]
+
+
+def test_ack_matches_the_pending_command_whatever_the_split():
+    reply = ack(0x01)
+    for cut in range(len(reply) + 1):
+        s = Session()
+        p = s.start(command.Ping(), 0)
+        assert p.packet == PacketBuilder(0x01).add(command.Ping()).build()
+        events = s.feed(reply[:cut], 1) + s.feed(reply[cut:], 1)
+        assert [r.status for r in results(events)] == ["ack"]
+        assert p.result.status == "ack" and p.result.code == 0 and p.result.reply == []
+        assert not s.pending
+
+
+def test_nack_carries_the_typed_code():
+    s = Session()
+    p = s.start(command.Ping(), 0)
+    s.feed(ack(0x01, 1), 5)
+    assert p.result.status == "nack" and p.result.code == t.AckCode.UNKNOWN_COMMAND
+    with pytest.raises(Nack) as e:
+        p.result.raise_for_status()
+    assert "unknown_command" in str(e.value)
+
+
+def test_a_reply_for_another_command_or_set_is_a_packet():
+    s = Session()
+    seen = []
+    s.on_packet(seen.append)
+    p = s.start(command.Ping(), 0)
+    events = s.feed(ack(0x02) + ack(0x01, set_id=0x02), 1)
+    assert p.result is None and [type(e) for e in events] == [Packet, Packet] and len(seen) == 2
+    s.feed(ack(0x01), 2)
+    assert p.result.status == "ack" and len(seen) == 2  # the reply itself is not routed
+
+
+def test_data_is_routed_while_a_command_is_pending():
+    s = Session()
+    packets, fields = [], []
+    s.on_packet(packets.append)
+    s.on_field(0x80, 0x01, lambda value, packet: fields.append((value, packet.set)))
+    p = s.start(command.Ping(), 0)
+    s.feed(b"\x00" + data_packet() + ack(0x01), 3)
+    assert p.result.status == "ack"
+    assert [pk.set for pk in packets] == [0x80] and len(fields) == 1 and fields[0][1] == 0x80
+
+
+def test_timeout_then_late_reply_is_a_packet():
+    s = Session(timeout_ms=100)
+    p = s.start(command.Ping(), 0)
+    assert s.next_deadline() == 100
+    assert s.poll(99) == [] and p.result is None
+    assert [r.status for r in results(s.poll(100))] == ["timeout"]
+    events = s.feed(ack(0x01), 150)
+    assert [type(e) for e in events] == [Packet]
+
+
+def test_same_command_twice_first_in_first_out_and_queue_limit():
+    s = Session(max_pending=2)
+    a, b = s.start(command.Ping(), 0, tag="a"), s.start(command.Ping(), 0, tag="b")
+    c = s.start(command.Ping(), 0)
+    assert c.result.status == "refused" and not c.packet and "2 commands already pending" in c.result.error
+    out = results(s.feed(ack(0x01, 1), 1))
+    assert [r.tag for r in out] == ["a"] and a.result.status == "nack" and b.result is None
+
+
+def test_two_acks_in_one_packet_answer_two_commands():
+    s = Session()
+    a, b = s.start(command.Ping(), 0), s.start(command.SetMode(mode=t.Mode.ON), 0)
+    b2 = PacketBuilder(0x01)
+    for d in (0x02, 0x01):
+        b2.add(reserved.AckNack(command_descriptor=d, ack_code=t.AckCode.OK))
+    assert [r.command.NAME for r in results(s.feed(b2.build(), 1))] == ["set_mode", "ping"]
+    assert a.result.ok and b.result.ok
+
+
+def test_reply_fields_after_the_ack_and_raw_fields_make_it_invalid():
+    s = Session()
+    p = s.start(command.Ping(), 0)
+    packet = PacketBuilder(0x01).add(reserved.AckNack(command_descriptor=1)).add_field(0x33, b"\x01").build()
+    s.feed(packet, 1)
+    assert p.result.status == "invalid" and p.result.error == "unknown descriptor"
+    assert p.result.line(7).startswith('{"line":7,"result":"invalid","code":0,"reply":[{"descriptor":51,')
+
+
+def test_ack_suppression_allowance_and_device_support():
+    s = Session(device="beta", timeout_ms=100)
+    p = s.start(command.SetMode(mode=t.Mode.ON), 0)
+    assert p.result.status == "refused" and p.result.error == "set_mode is not supported by beta" and not p.packet
+    with pytest.raises(CommandRefused):
+        p.result.raise_for_status()
+    p = s.start(command.SetMode(mode=t.Mode.ON), 0, check_device=False)
+    assert p.result is None and p.deadline == 600  # 100 + the spec's 500
+    q = s.start(command.SetMode(mode=t.Mode.AUTO), 0, check_device=False)
+    assert (
+        q.result.status == "sent"
+        and q.packet
+        and q.result.line(2) == ('{"line":2,"result":"sent","code":null,"reply":[]}')
+    )
+    with pytest.raises(ValueError):
+        Session(device="gamma")
+    with pytest.raises(TypeError):
+        s.start(sensor.FIELDS[0](), 0)
+
+
+def test_timed_rule_drops_a_stale_candidate_before_new_bytes():
+    false = PacketBuilder(0x01).add_field(0x01, b"\x00" * 20).build()[:6]  # a header promising more
+    p = TimedParser(100)
+    assert p.feed_at(false + ack(0x01), 5) == []  # waits on the false candidate
+    assert p.wait_deadline == 106
+    assert p.feed_at(b"", 105) == []
+    events = p.feed_at(b"", 106)
+    assert isinstance(events[0], Skip) and events[0].data == false and events[1].offset == len(false)
+    # a candidate stale when more bytes come is dropped first: those bytes do not complete it
+    whole = ack(0x01)
+    p = TimedParser(100)
+    p.feed_at(whole[:5], 0)
+    assert p.feed_at(whole[5:], 200) == [] and p.flush()[0].data == whole
+
+
+def test_command_from_line():
+    assert isinstance(
+        command_from_line('{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}'), command.Ping
+    )
+    for bad in ("[]", '{"offset":0,"set":1,"fields":[]}', '{"offset":0,"skipped":"00"}'):
+        with pytest.raises(ValueError):
+            command_from_line(bad)
+
+
+class FakeTransport:
+    """Answers each written command with the scripted bytes (None: nothing)."""
+
+    def __init__(self, answers: list) -> None:
+        self.answers = list(answers)
+        self.written: list[bytes] = []
+        self.pending = b""
+        self.closed = False
+
+    def write(self, data: bytes) -> None:
+        self.written.append(data)
+        self.pending += self.answers.pop(0) or b""
+
+    def read(self, timeout_s: float) -> bytes:
+        out, self.pending = self.pending, b""
+        return out
+
+    def close(self) -> None:
+        self.closed = True
+
+
+def test_device_blocking_calls_and_typed_api():
+    clock = [0.0]
+
+    def tick() -> float:
+        clock[0] += 0.01
+        return clock[0]
+
+    tr = FakeTransport([data_packet() + ack(0x01), ack(0x02, 1), None])
+    seen = []
+    with Device(tr, device="alpha", timeout_ms=50, clock=tick) as dev:
+        dev.on_packet(seen.append)
+        dev.command.ping()
+        with pytest.raises(Nack):
+            dev.command.set_mode(t.Mode.ON)
+        with pytest.raises(CommandTimeout):
+            dev.command.ping()
+    assert tr.closed and [p.set for p in seen] == [0x80] and len(tr.written) == 3
+    dev = Device(FakeTransport([]), device="beta")
+    with pytest.raises(CommandRefused):
+        dev.command.set_mode(t.Mode.ON)
+
+
+def test_parse_address_and_tcp_transport():
+    assert parse_address("tcp:localhost:5000") == ("tcp", ("localhost", 5000))
+    assert parse_address("tcp:[::1]:5000") == ("tcp", ("::1", 5000))
+    assert parse_address("/dev/ttyUSB0") == ("serial", "/dev/ttyUSB0")
+    for bad in ("tcp:host", "tcp::5", "tcp:h:0", "tcp:h:99999", ""):
+        with pytest.raises(ValueError):
+            parse_address(bad)
+    srv = socket.socket()
+    srv.bind(("127.0.0.1", 0))
+    srv.listen(1)
+
+    def serve() -> None:
+        conn, _ = srv.accept()
+        conn.sendall(conn.recv(100)[::-1])
+        conn.close()
+
+    th = threading.Thread(target=serve)
+    th.start()
+    tr = open_transport(f"tcp:127.0.0.1:{srv.getsockname()[1]}")
+    assert isinstance(tr, TcpTransport)
+    tr.write(b"abc")
+    got = b""
+    while len(got) < 3:
+        got += tr.read(1.0)
+    assert got == b"cba"
+    th.join()
+    with pytest.raises(TransportError, match="closed"):
+        while True:
+            tr.read(1.0)
+    tr.close()
+    srv.close()
+
+
+def test_serial_transport_without_pyserial_says_how_to_get_it():
+    try:
+        import serial  # noqa: F401
+    except ImportError:
+        with pytest.raises(TransportError, match="pyserial"):
+            open_transport("/dev/ttyUSB0")
+    else:
+        with pytest.raises(TransportError, match="cannot open"):
+            open_transport("/nonexistent/tty")

@@ -1,0 +1,698 @@
+"""Command sessions (docs/conformance.md section 8): send commands, match their replies, route data.
+
+`Session` is the sans-I/O core: it never reads a clock or a socket. The caller gives it the
+current time in milliseconds with every call and sends the bytes it returns:
+
+    session = Session(device="cv7_ins")
+    pending = session.start(threedm.SensorToVehicleEuler(function=FunctionSelector.READ), now_ms)
+    transport.write(pending.packet)
+    for event in session.feed(received_bytes, now_ms):   # Result | Packet | Skip
+        ...
+    pending.result            # Result: ack / nack / timeout / invalid / sent / refused
+
+`Device` is the blocking API over a transport (transport.py): `device.run(command)` returns the
+Result, `device.call(command)` raises on anything but success, and the typed command API
+(`device.threedm.sensor_to_vehicle_euler.read()`, generated into command_api.py) calls it.
+Every packet that is not a reply goes to the handlers registered with `on_packet`, `on_field`
+and `on_sample`, also while a command is pending.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+
+from . import _session as _meta
+from . import registry
+from .canonical import error_text, loads
+from .codec import Field
+from .framing import PacketBuilder, Parser, RawPacket, Skip
+from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
+from .samples import Sample, SampleGrouper
+
+DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
+DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a partial packet waiting longer is a false sync
+MAX_PENDING = 8  # commands waiting for their reply at once (the C core's fixed queue)
+
+ACK = "ack"
+NACK = "nack"
+TIMEOUT = "timeout"
+INVALID = "invalid"
+SENT = "sent"
+REFUSED = "refused"
+
+
+class SessionError(Exception):
+    """Base of the errors the blocking API raises."""
+
+
+class CommandRefused(SessionError, ValueError):
+    """The command (or its function) is not supported by the selected device model; nothing was sent."""
+
+    def __init__(self, result: Result) -> None:
+        super().__init__(result.error)
+        self.result = result
+
+
+class CommandFailed(SessionError):
+    """A command did not succeed; `result` holds what happened."""
+
+    def __init__(self, result: Result) -> None:
+        super().__init__(result.describe())
+        self.result = result
+
+
+class Nack(CommandFailed):
+    """The device answered with a NACK; `code` is the typed error code."""
+
+    @property
+    def code(self) -> Any:
+        return self.result.code
+
+
+class CommandTimeout(CommandFailed):
+    """No reply came before the command's deadline."""
+
+
+class InvalidReply(CommandFailed):
+    """The device acknowledged, but the reply fields do not decode (or the expected one is missing)."""
+
+
+class Result:
+    """The one result of a command.
+
+    `status`: "ack", "nack", "timeout", "invalid" (acknowledged, but a reply field does not decode
+    or the expected reply field is missing; `error` says which), "sent" (the command suppresses its
+    ack: it completes when sent) or "refused" (not sent: the selected device does not support it;
+    `error` says why). `code` is the ack/nack code (an IntEnum member when the spec names it) or
+    None; `reply` the field entries of the reply packet that follow the ack (DecodedField,
+    RawField, Trailing).
+    """
+
+    __slots__ = ("command", "status", "code", "reply", "error", "expect", "tag")
+
+    def __init__(
+        self,
+        command: Field,
+        status: str,
+        code: Any = None,
+        reply: Optional[List[Entry]] = None,
+        error: Optional[str] = None,
+        expect: Tuple[int, ...] = (),
+    ) -> None:
+        self.command = command
+        self.status = status
+        self.code = code
+        self.reply: List[Entry] = reply if reply is not None else []
+        self.error = error
+        self.expect = expect
+        self.tag: Any = None  # the tag given to Session.start
+
+    @property
+    def ok(self) -> bool:
+        """True for "ack" and "sent"."""
+        return self.status in (ACK, SENT)
+
+    @property
+    def response(self) -> Any:
+        """The typed value of the command's reply field (the first decoded field of the reply whose
+        descriptor the command expects, else the first decoded field), or None."""
+        decoded = [e for e in self.reply if isinstance(e, DecodedField)]
+        for e in decoded:
+            if e.descriptor in self.expect:
+                return e.value
+        return decoded[0].value if decoded else None
+
+    def describe(self) -> str:
+        name = self.command.NAME
+        if self.status == NACK:
+            code = getattr(self.code, "name", None)
+            text = f" ({code.lower()})" if code else ""
+            return f"{name}: NACK, code {int(self.code)}{text}"
+        if self.status == TIMEOUT:
+            return f"{name}: no reply before the timeout"
+        if self.status in (INVALID, REFUSED):
+            return f"{name}: {self.error}"
+        return f"{name}: {self.status}"
+
+    def raise_for_status(self) -> Result:
+        """Returns self when ok; raises CommandRefused, Nack, CommandTimeout or InvalidReply."""
+        if self.status == REFUSED:
+            raise CommandRefused(self)
+        if self.status == NACK:
+            raise Nack(self)
+        if self.status == TIMEOUT:
+            raise CommandTimeout(self)
+        if self.status == INVALID:
+            raise InvalidReply(self)
+        return self
+
+    def line(self, number: int) -> str:
+        """The conformance tool's line for input line `number` (docs/conformance.md section 8)."""
+        code = "null" if self.code is None else str(int(self.code))
+        text = (
+            '{"line":'
+            + str(number)
+            + ',"result":"'
+            + self.status
+            + '","code":'
+            + code
+            + ',"reply":['
+            + ",".join(e.line() for e in self.reply)
+            + "]"
+        )
+        if self.error is not None:
+            text += ',"error":' + error_text(self.error)
+        return text + "}"
+
+    def __repr__(self) -> str:
+        return f"Result({self.command.NAME}, {self.status}, code={self.code!r}, reply={self.reply!r})"
+
+
+class Pending:
+    """A started command: the bytes to send (`packet`, empty when nothing is to be sent), its
+    deadline and, once complete, its `result`."""
+
+    __slots__ = ("command", "set", "descriptor", "packet", "deadline", "expect", "result", "tag")
+
+    def __init__(self, command: Field, packet: bytes, deadline: int, expect: Tuple[int, ...], tag: Any) -> None:
+        self.command = command
+        self.set = command.SET
+        self.descriptor = command.DESCRIPTOR
+        self.packet = packet
+        self.deadline = deadline
+        self.expect = expect
+        self.result: Optional[Result] = None
+        self.tag = tag
+
+    @property
+    def done(self) -> bool:
+        return self.result is not None
+
+
+# ----------------------------------------------------------------------------- command facts
+class CommandInfo:
+    """What the spec says about one command layout (generated into _session.py)."""
+
+    __slots__ = ("cls", "device", "devices", "functions", "responses", "ack", "timeout")
+
+    def __init__(self, cls: Any, device: Any, devices: Any, functions: Any, responses: Any, ack: Any, timeout: Any):
+        self.cls = cls
+        self.device = device
+        self.devices = devices
+        self.functions = functions
+        self.responses = responses
+        self.ack = ack
+        self.timeout = timeout
+
+
+_INFO: Dict[Any, CommandInfo] = {}
+for _key, _layouts in _meta.COMMANDS.items():
+    for _row in _layouts:
+        _INFO[_row[0]] = CommandInfo(*_row)
+
+
+def command_info(command: Field) -> Optional[CommandInfo]:
+    """The spec facts of a command value's layout, or None when it is not a command."""
+    return _INFO.get(type(command))
+
+
+def _function(command: Field) -> Optional[int]:
+    f = getattr(command, "function", None)
+    return None if f is None else int(f)
+
+
+def support_error(command: Field, device: str) -> Optional[str]:
+    """Why `device` does not support the command as given (None when it does)."""
+    info = command_info(command)
+    name = command.NAME
+    layouts = _meta.COMMANDS.get((command.SET, command.DESCRIPTOR), ())
+    if not any(device in row[2] for row in layouts):
+        return f"{name} is not supported by {device}"
+    if info is not None and info.device is not None and info.device != device:
+        return f"{name}: this layout is for {info.device}, not {device}"
+    fn = _function(command)
+    if info is not None and info.functions is not None and fn is not None:
+        limited = _meta.FUNCTION_DEVICES.get(fn)
+        if fn not in info.functions or (limited is not None and device not in limited):
+            return f"function {_meta.function_name(fn)} of {name} is not supported by {device}"
+    return None
+
+
+def ack_suppressed(command: Field, info: Optional[CommandInfo] = None) -> bool:
+    """True when the command as given asks the device not to reply (spec `ack_suppressed_by`)."""
+    info = info or command_info(command)
+    if info is None or info.ack is None:
+        return False
+    if info.ack[0] == "function":
+        return _function(command) == info.ack[1]
+    value = getattr(command, info.ack[1], None)
+    if value is None:
+        return False
+    return int(value) != 0 if info.ack[2] is None else int(value) == info.ack[2]
+
+
+def allowance_ms(command: Field, info: Optional[CommandInfo] = None) -> int:
+    """The extra reply time the spec gives the command as given (spec `timeout`)."""
+    info = info or command_info(command)
+    if info is None or info.timeout is None:
+        return 0
+    ms, param, functions = info.timeout
+    if functions is not None and _function(command) not in functions:
+        return 0
+    if param is not None:
+        ms += int(getattr(command, param, 0) or 0)
+    return ms
+
+
+def expected_replies(command: Field, info: Optional[CommandInfo] = None) -> Tuple[int, ...]:
+    """The reply field descriptors the command as given expects with its ack (spec `responses`)."""
+    info = info or command_info(command)
+    if info is None:
+        return ()
+    out = []
+    fn = _function(command)
+    for rid, when_fn, when_param, when_value in info.responses:
+        if when_fn is not None and fn != when_fn:
+            continue
+        if when_param is not None:
+            v = getattr(command, when_param, None)
+            if v is None or (int(v) != when_value if when_value is not None else int(v) == 0):
+                continue
+        out.append(rid)
+    return tuple(out)
+
+
+def command_from_line(text: str) -> Field:
+    """The command of one input line of the conformance tool: a canonical packet line (what
+    `encode` accepts) with exactly one decoded command field. Raises ValueError naming the problem."""
+    from .codec import EncodeError
+    from .packets import encode_line
+
+    try:
+        encode_line(text)  # every rule of the encoder's input (section 5)
+    except EncodeError as e:
+        raise ValueError(str(e)) from None
+    obj = loads(text)
+    if "fields" not in obj:
+        raise ValueError("expected a packet line with one command field, not a skip run")
+    fields = obj["fields"]
+    if len(fields) != 1:
+        raise ValueError(f"expected exactly one command field, got {len(fields)}")
+    f = fields[0]
+    if "values" not in f:
+        raise ValueError("expected a decoded command field (descriptor, name, values), not a raw field")
+    classes = registry.lookup(obj["set"], f["descriptor"]) or ()
+    if "device" in f:
+        classes = tuple(c for c in classes if c.DEVICE == f["device"])
+    if not classes or classes[0].ROLE != "command":
+        raise ValueError(f"{f['name']} (set {obj['set']}, descriptor {f['descriptor']}) is not a command")
+    return classes[0].from_json(f["values"], "values.")
+
+
+# ----------------------------------------------------------------------------- timed parser
+class TimedParser(Decoder):
+    """The stream parser of section 1 with the timed rule of section 8: when the parser has been
+    waiting at the same position (a partial sync, header or packet) for longer than
+    `inter_packet_timeout_ms`, the byte there is skipped and parsing resumes at the next byte.
+
+    `feed_at(data, now)` applies the rule at `now` to the bytes already buffered *before* it adds
+    `data` (bytes that arrive too late do not rescue a stale candidate), so the events do not
+    depend on whether the caller polled in between; the position it then waits at, if new, waits
+    from `now`."""
+
+    def __init__(
+        self, inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS, device: Optional[str] = None
+    ) -> None:
+        super().__init__(device)
+        self.raw = False  # True: RawPacket events (as Parser), else decoded Packets (as Decoder)
+        self.inter_packet_timeout_ms = inter_packet_timeout_ms
+        self._wait_at = -1
+        self._wait_since = 0
+
+    def feed_at(self, data: Any, now_ms: int) -> List[Any]:
+        """Consume bytes received at `now_ms` (may be empty: only the timed rule runs)."""
+        events: List[Any] = []
+        while self._buf and self._wait_at == self._base and now_ms - self._wait_since > self.inter_packet_timeout_ms:
+            self._skipped(0, 1)
+            del self._buf[:1]
+            self._base += 1
+            events += self._scan(final=False)
+        if data:
+            events += self.feed(data)
+        if not self._buf:
+            self._wait_at = -1
+        elif self._wait_at != self._base:
+            self._wait_at, self._wait_since = self._base, now_ms
+        return events
+
+    def _scan(self, final: bool) -> List[Any]:
+        return Parser._scan(self, final) if self.raw else Decoder._scan(self, final)
+
+    @property
+    def wait_deadline(self) -> Optional[int]:
+        """When the timed rule next fires (the first time a poll drops a byte), or None."""
+        if not self._buf:
+            return None
+        return self._wait_since + self.inter_packet_timeout_ms + 1
+
+
+# ----------------------------------------------------------------------------- the core
+Event = Union[Result, Packet, Skip]
+
+
+class Session:
+    """The sans-I/O session core (docs/conformance.md section 8).
+
+    `device`: the device model (one of registry.DEVICES) whose layouts decode replies and data and
+    whose support `start` checks (unless `check_device=False`). `timeout_ms`: the reply timeout
+    of every command (plus the spec's allowance for long commands). At most `max_pending`
+    commands wait for their replies at once.
+    """
+
+    def __init__(
+        self,
+        device: Optional[str] = None,
+        timeout_ms: int = DEFAULT_TIMEOUT_MS,
+        inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS,
+        max_pending: int = MAX_PENDING,
+        check_device: bool = True,
+    ) -> None:
+        if device is not None and device not in registry.DEVICES:
+            raise ValueError(f"unknown device {device!r} (one of: {', '.join(registry.DEVICES)})")
+        if timeout_ms < 0 or inter_packet_timeout_ms < 0 or max_pending < 1:
+            raise ValueError("timeouts must be >= 0 and max_pending >= 1")
+        self.device = device
+        self.timeout_ms = timeout_ms
+        self.max_pending = max_pending
+        self.check_device = check_device
+        self._parser = TimedParser(inter_packet_timeout_ms, device)
+        self._pending: List[Pending] = []
+        self._packet_handlers: List[Callable[[Packet], Any]] = []
+        self._field_handlers: Dict[Tuple[int, int], List[Callable[[Any, Packet], Any]]] = {}
+        self._sample_handlers: List[Callable[[Sample], Any]] = []
+        self._grouper: Optional[SampleGrouper] = None
+
+    # -------------------------------------------------------------- handlers
+    def on_packet(self, handler: Callable[[Packet], Any]) -> None:
+        """Call handler(packet) for every decoded packet that is not a reply."""
+        self._packet_handlers.append(handler)
+
+    def on_field(self, set_id: int, descriptor: int, handler: Callable[[Any, Packet], Any]) -> None:
+        """Call handler(value, packet) for every decoded field (set, descriptor) of a packet that is not a reply."""
+        self._field_handlers.setdefault((set_id, descriptor), []).append(handler)
+
+    def on_sample(self, handler: Callable[[Sample], Any]) -> None:
+        """Call handler(sample) for every complete sample of data packets (section 6 grouping)."""
+        if self._grouper is None:
+            self._grouper = SampleGrouper(self.device)
+            self._parser.raw = True  # the grouper reads the packets' bytes
+        self._sample_handlers.append(handler)
+
+    # -------------------------------------------------------------- commands
+    @property
+    def pending(self) -> List[Pending]:
+        """The commands waiting for their replies, oldest first."""
+        return list(self._pending)
+
+    def next_deadline(self) -> Optional[int]:
+        """The earliest time at which `poll` has something to do (a timeout or the timed rule)."""
+        times = [p.deadline for p in self._pending]
+        w = self._parser.wait_deadline
+        if w is not None:
+            times.append(w)
+        return min(times) if times else None
+
+    def start(
+        self,
+        command: Field,
+        now_ms: int,
+        timeout_ms: Optional[int] = None,
+        check_device: Optional[bool] = None,
+        tag: Any = None,
+    ) -> Pending:
+        """Start a command at `now_ms`: returns the Pending whose `packet` the caller sends. A
+        refused command (`packet` empty) and one whose ack it suppresses complete at once."""
+        info = command_info(command)
+        if info is None or getattr(command, "ROLE", None) != "command":
+            raise TypeError(f"not a command: {command!r}")
+        check = self.check_device if check_device is None else check_device
+        base = self.timeout_ms if timeout_ms is None else timeout_ms
+        expect = expected_replies(command, info)
+        if check and self.device is not None:
+            why = support_error(command, self.device)
+            if why is not None:
+                p = Pending(command, b"", now_ms, expect, tag)
+                p.result = _tagged(Result(command, REFUSED, error=why, expect=expect), tag)
+                return p
+        packet = PacketBuilder(command.SET).add(command).build()
+        p = Pending(command, packet, now_ms + base + allowance_ms(command, info), expect, tag)
+        if ack_suppressed(command, info):
+            p.result = _tagged(Result(command, SENT, expect=expect), tag)
+            return p
+        if len(self._pending) >= self.max_pending:
+            p.packet = b""
+            p.result = _tagged(
+                Result(command, REFUSED, error=f"{self.max_pending} commands already pending", expect=expect), tag
+            )
+            return p
+        self._pending.append(p)
+        return p
+
+    # -------------------------------------------------------------- input
+    def feed(self, data: Any, now_ms: int) -> List[Event]:
+        """Bytes received at `now_ms`: returns the events in order (Results of commands that
+        completed, Packets that are not replies, Skip runs) after calling the handlers."""
+        events: List[Event] = self._expire(now_ms)
+        self._route(self._parser.feed_at(data, now_ms), events)
+        return events
+
+    def poll(self, now_ms: int) -> List[Event]:
+        """Nothing received: runs the timeouts and the timed rule at `now_ms`."""
+        return self.feed(b"", now_ms)
+
+    def close(self, now_ms: int) -> List[Event]:
+        """End of input: what `poll` does, then every buffered byte that is not a complete packet
+        is skipped (as at the end of a stream, section 1); pending commands stay pending."""
+        events = self.poll(now_ms)
+        self._route(self._parser.flush(), events)
+        if self._grouper is not None:
+            for s in self._grouper.flush():
+                for h in self._sample_handlers:
+                    h(s)
+        return events
+
+    def _expire(self, now_ms: int) -> List[Event]:
+        out: List[Event] = []
+        keep = []
+        for p in self._pending:
+            if now_ms >= p.deadline:
+                p.result = _tagged(Result(p.command, TIMEOUT, expect=p.expect), p.tag)
+                out.append(p.result)
+            else:
+                keep.append(p)
+        self._pending = keep
+        return out
+
+    def _route(self, parsed: List[Any], events: List[Event]) -> None:
+        if self._packet_handlers or self._field_handlers or self._grouper is not None:
+            for e in parsed:
+                self._event(e, events)
+            return
+        # No handlers (the common case of a caller reading the events): only packets of a set
+        # with a pending command need a look.
+        sets = {p.set for p in self._pending}
+        for e in parsed:
+            if type(e) is Skip or e.set not in sets:
+                events.append(e)
+            else:
+                self._event(e, events)
+
+    def _event(self, e: Any, events: List[Event]) -> None:
+        if isinstance(e, Skip):
+            events.append(e)
+            return
+        raw: Optional[RawPacket] = None
+        if isinstance(e, RawPacket):
+            raw = e
+            packet = decode_packet(raw.data, raw.offset, self.device)
+        else:
+            packet = e
+        if self._pending and any(p.set == packet.set for p in self._pending):
+            results = self._match(packet)
+            if results:
+                events.extend(results)
+                return
+        events.append(packet)
+        for h in self._packet_handlers:
+            h(packet)
+        if self._field_handlers:
+            for f in packet.fields:
+                if isinstance(f, DecodedField):
+                    for h in self._field_handlers.get((packet.set, f.descriptor), ()):
+                        h(f.value, packet)
+        if self._grouper is not None and raw is not None:
+            for s in self._grouper.feed(raw.data, raw.offset):
+                for h in self._sample_handlers:
+                    h(s)
+
+    def _match(self, packet: Packet) -> List[Result]:
+        """Results of the pending commands this packet answers (none: it is not a reply)."""
+        fields = packet.fields
+        acks = [
+            i
+            for i, f in enumerate(fields)
+            if isinstance(f, DecodedField) and f.descriptor == _meta.ACK_DESCRIPTOR and f.value.ROLE == "ack"
+        ]
+        results: List[Result] = []
+        for n, i in enumerate(acks):
+            ack = fields[i].value
+            echo = int(getattr(ack, _meta.ACK_ECHO))
+            p = next((q for q in self._pending if q.set == packet.set and q.descriptor == echo), None)
+            if p is None:
+                continue
+            end = acks[n + 1] if n + 1 < len(acks) else len(fields)
+            # A raw ack-descriptor field also ends the reply of the ack before it.
+            for j in range(i + 1, end):
+                if isinstance(fields[j], RawField) and fields[j].descriptor == _meta.ACK_DESCRIPTOR:
+                    end = j
+                    break
+            self._pending.remove(p)
+            p.result = _tagged(_complete(p, getattr(ack, _meta.ACK_CODE), list(fields[i + 1 : end])), p.tag)
+            results.append(p.result)
+        return results
+
+
+def _tagged(result: Result, tag: Any) -> Result:
+    result.tag = tag
+    return result
+
+
+def _complete(p: Pending, code: Any, reply: List[Entry]) -> Result:
+    if int(code) != _meta.ACK_OK:
+        return Result(p.command, NACK, code, reply, expect=p.expect)
+    for e in reply:
+        if isinstance(e, (RawField, Trailing)):
+            return Result(p.command, INVALID, code, reply, error=e.error, expect=p.expect)
+    if p.expect and not any(isinstance(e, DecodedField) and e.descriptor in p.expect for e in reply):
+        return Result(p.command, INVALID, code, reply, error=f"missing reply field {p.expect[0]}", expect=p.expect)
+    return Result(p.command, ACK, code, reply, expect=p.expect)
+
+
+# ----------------------------------------------------------------------------- blocking API
+class Device:
+    """A session over a transport (transport.py), blocking: `run` sends a command and waits for
+    its result, feeding every received byte to the session, so data packets reach the handlers
+    meanwhile. The typed command API is bound as attributes (`device.base.ping()`)."""
+
+    def __init__(
+        self,
+        transport: Any,
+        device: Optional[str] = None,
+        timeout_ms: int = DEFAULT_TIMEOUT_MS,
+        inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS,
+        check_device: bool = True,
+        clock: Callable[[], float] = time.monotonic,
+        on_event: Optional[Callable[[Event], Any]] = None,
+    ) -> None:
+        self.transport = transport
+        self.session = Session(device, timeout_ms, inter_packet_timeout_ms, 1, check_device)
+        self._clock = clock
+        self._t0 = clock()
+        self.on_event = on_event
+        from . import command_api  # the generated typed API (imports this module)
+
+        command_api.bind(self)
+
+    @property
+    def device(self) -> Optional[str]:
+        return self.session.device
+
+    def now_ms(self) -> int:
+        return int((self._clock() - self._t0) * 1000)
+
+    def on_packet(self, handler: Callable[[Packet], Any]) -> None:
+        self.session.on_packet(handler)
+
+    def on_field(self, set_id: int, descriptor: int, handler: Callable[[Any, Packet], Any]) -> None:
+        self.session.on_field(set_id, descriptor, handler)
+
+    def on_sample(self, handler: Callable[[Sample], Any]) -> None:
+        self.session.on_sample(handler)
+
+    def _deliver(self, events: List[Event]) -> None:
+        if self.on_event is not None:
+            for e in events:
+                self.on_event(e)
+
+    def run(self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None) -> Result:
+        """Send the command and wait for its Result (never raises for nack, timeout or refusal)."""
+        p = self.session.start(command, self.now_ms(), timeout_ms, check_device)
+        if p.packet:
+            self.transport.write(p.packet)
+        while p.result is None:
+            self.pump(max(0, (self.session.next_deadline() or p.deadline) - self.now_ms()))
+        return p.result
+
+    def call(self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None) -> Result:
+        """As `run`, but raises CommandRefused, Nack, CommandTimeout or InvalidReply unless it succeeded."""
+        return self.run(command, timeout_ms, check_device).raise_for_status()
+
+    def pump(self, wait_ms: int) -> List[Event]:
+        """Wait up to `wait_ms` for bytes, feed them (or run the timeouts) and deliver the events."""
+        data = self.transport.read(wait_ms / 1000.0)
+        events = self.session.feed(data, self.now_ms())
+        self._deliver(events)
+        return events
+
+    def listen(self, duration_ms: int) -> None:
+        """Receive for `duration_ms`, routing every packet to the handlers."""
+        end = self.now_ms() + duration_ms
+        while True:
+            left = end - self.now_ms()
+            if left <= 0:
+                break
+            self.pump(left)
+
+    def close(self) -> None:
+        self._deliver(self.session.close(self.now_ms()))
+        self.transport.close()
+
+    def __enter__(self) -> Device:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+
+def connect(address: str, device: Optional[str] = None, baudrate: int = 115200, **options: Any) -> Device:
+    """A Device on `address`: "tcp:HOST:PORT" or a serial port path ("/dev/ttyUSB0", "COM3")."""
+    from .transport import open_transport
+
+    return Device(open_transport(address, baudrate), device, **options)
+
+
+__all__ = [
+    "Session",
+    "Device",
+    "Pending",
+    "Result",
+    "TimedParser",
+    "CommandInfo",
+    "SessionError",
+    "CommandRefused",
+    "CommandFailed",
+    "Nack",
+    "CommandTimeout",
+    "InvalidReply",
+    "connect",
+    "command_from_line",
+    "command_info",
+    "support_error",
+    "ack_suppressed",
+    "allowance_ms",
+    "expected_replies",
+    "DEFAULT_TIMEOUT_MS",
+    "DEFAULT_INTER_PACKET_TIMEOUT_MS",
+    "MAX_PENDING",
+]
