@@ -77,7 +77,7 @@ class GetDeviceInfo(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceInfo
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceInfo", self._call(command, timeout_ms, check_device))
 
 
 class GetDeviceDescriptors(_Command):
@@ -92,7 +92,7 @@ class GetDeviceDescriptors(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceDescriptors
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceDescriptors", self._call(command, timeout_ms, check_device))
 
 
 class BuiltInTest(_Command):
@@ -107,7 +107,7 @@ class BuiltInTest(_Command):
         """Send the command: returns the reply field."""
         cls = base.BuiltInTest
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("_ty.Any", self._call(command, timeout_ms, check_device))
 
 
 class Resume(_Command):
@@ -137,7 +137,7 @@ class GetExtendedDescriptors(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetExtendedDescriptors
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.ExtendedDescriptors", self._call(command, timeout_ms, check_device))
 
 
 class ContinuousBit(_Command):
@@ -152,7 +152,7 @@ class ContinuousBit(_Command):
         """Send the command: returns the reply field."""
         cls = base.ContinuousBit
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.ContinuousBitResult", self._call(command, timeout_ms, check_device))
 
 
 class CommPortSpeed(_Command):
@@ -188,7 +188,7 @@ class CommPortSpeed(_Command):
             function=_t.FunctionSelector.READ,
             port=port,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.CommPortSpeedResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -269,7 +269,7 @@ class GpsTimeUpdate(_Command):
             function=_t.FunctionSelector.READ,
             field_id=field_id,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("_ty.Any", self._call(command, timeout_ms, check_device))
 
     def write_no_ack(
         self,
@@ -354,7 +354,7 @@ class EventControl(_Command):
             function=_t.FunctionSelector.READ,
             instance=instance,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.EventControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -418,7 +418,7 @@ class GetEventTriggerStatus(_Command):
             requested_instances=requested_instances,
             requested_count=None if requested_instances is None else len(requested_instances),
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.EventTriggerStatus", self._call(command, timeout_ms, check_device))
 
 
 class GetEventActionStatus(_Command):
@@ -437,7 +437,7 @@ class GetEventActionStatus(_Command):
             requested_instances=requested_instances,
             requested_count=None if requested_instances is None else len(requested_instances),
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.EventActionStatus", self._call(command, timeout_ms, check_device))
 
 
 class EventTriggerConfig(_Command):
@@ -475,7 +475,7 @@ class EventTriggerConfig(_Command):
             function=_t.FunctionSelector.READ,
             instance=instance,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.EventTriggerConfigResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -560,7 +560,7 @@ class EventActionConfig(_Command):
             function=_t.FunctionSelector.READ,
             instance=instance,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.EventActionConfigResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -703,7 +703,7 @@ class SensorToVehicleEuler(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.SensorToVehicleEulerResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -774,7 +774,7 @@ class SensorToVehicleQuaternion(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.SensorToVehicleQuaternionResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -845,7 +845,7 @@ class SensorToVehicleDcm(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.SensorToVehicleDcmResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -916,7 +916,7 @@ class AccelBias(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.AccelBiasResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1002,7 +1002,7 @@ class GyroBias(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GyroBiasResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1074,7 +1074,7 @@ class CaptureGyroBias(_Command):
         command = cls(
             averaging_time_ms=averaging_time_ms,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GyroBiasResponse", self._call(command, timeout_ms, check_device))
 
 
 class MagHardIronOffset(_Command):
@@ -1106,7 +1106,7 @@ class MagHardIronOffset(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.MagHardIronOffsetResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1192,7 +1192,7 @@ class MagSoftIronMatrix(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.MagSoftIronMatrixResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1278,7 +1278,7 @@ class ConingScullingEnable(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.ConingScullingEnableResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1349,7 +1349,7 @@ class UartBaudrate(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.UartBaudrateResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1435,7 +1435,7 @@ class GpioConfig(_Command):
             function=_t.FunctionSelector.READ,
             pin=pin,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GpioConfigResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1516,7 +1516,7 @@ class GpioState(_Command):
             function=_t.FunctionSelector.READ,
             pin=pin,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GpioStateResponse", self._call(command, timeout_ms, check_device))
 
 
 class OdometerConfig(_Command):
@@ -1552,7 +1552,7 @@ class OdometerConfig(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.OdometerConfigResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1633,7 +1633,7 @@ class AdvancedLowpassFilter(_Command):
             function=_t.FunctionSelector.READ,
             target_descriptor=target_descriptor,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.AdvancedLowpassFilterResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1716,7 +1716,7 @@ class ComplementaryFilter(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.ComplementaryFilterResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1791,7 +1791,7 @@ class SensorRange(_Command):
             function=_t.FunctionSelector.READ,
             sensor=sensor,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.SensorRangeResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -1854,7 +1854,7 @@ class GetCalibratedSensorRanges(_Command):
         command = cls(
             sensor=sensor,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.CalibratedSensorRanges", self._call(command, timeout_ms, check_device))
 
 
 class LowpassFilter(_Command):
@@ -1898,7 +1898,7 @@ class LowpassFilter(_Command):
             desc_set=desc_set,
             field_desc=field_desc,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.LowpassFilterResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2071,7 +2071,7 @@ class GetImuBaseRate(_Command):
         """Send the command: returns the reply field."""
         cls = threedm.GetImuBaseRate
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.ImuBaseRate", self._call(command, timeout_ms, check_device))
 
 
 class GetGnssBaseRate(_Command):
@@ -2086,7 +2086,7 @@ class GetGnssBaseRate(_Command):
         """Send the command: returns the reply field."""
         cls = threedm.GetGnssBaseRate
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GnssBaseRate", self._call(command, timeout_ms, check_device))
 
 
 class GetFilterBaseRate(_Command):
@@ -2101,7 +2101,7 @@ class GetFilterBaseRate(_Command):
         """Send the command: returns the reply field."""
         cls = threedm.GetFilterBaseRate
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.FilterBaseRate", self._call(command, timeout_ms, check_device))
 
 
 class GetBaseRate(_Command):
@@ -2119,7 +2119,7 @@ class GetBaseRate(_Command):
         command = cls(
             desc_set=desc_set,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.BaseRate", self._call(command, timeout_ms, check_device))
 
 
 class ImuMessageFormat(_Command):
@@ -2155,7 +2155,7 @@ class ImuMessageFormat(_Command):
             descriptors=descriptors,
             num_descriptors=None if descriptors is None else len(descriptors),
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.ImuMessageFormatResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2239,7 +2239,7 @@ class GnssMessageFormat(_Command):
             descriptors=descriptors,
             num_descriptors=None if descriptors is None else len(descriptors),
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GnssMessageFormatResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2323,7 +2323,7 @@ class FilterMessageFormat(_Command):
             descriptors=descriptors,
             num_descriptors=None if descriptors is None else len(descriptors),
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.FilterMessageFormatResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2404,7 +2404,7 @@ class NmeaMessageFormat(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.NmeaMessageFormatResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2480,7 +2480,7 @@ class MessageFormat(_Command):
             function=_t.FunctionSelector.READ,
             desc_set=desc_set,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.MessageFormatResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2600,7 +2600,7 @@ class DataStreamControl(_Command):
             device_selector=device_selector,
             enable=enable,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("_ty.Any", self._call(command, timeout_ms, check_device))
 
     def read_cv7_ins(
         self,
@@ -2615,7 +2615,7 @@ class DataStreamControl(_Command):
             function=_t.FunctionSelector.READ,
             desc_set=desc_set,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("_ty.Any", self._call(command, timeout_ms, check_device))
 
     def save_gx5_45(
         self,
@@ -2769,7 +2769,7 @@ class GnssConstellationSettings(_Command):
             settings=settings,
             config_count=None if settings is None else len(settings),
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GnssConstellationSettingsResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2860,7 +2860,7 @@ class GnssSbasSettings(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GnssSbasSettingsResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -2937,7 +2937,7 @@ class GnssAssistedFixControl(_Command):
             option=option,
             flags=flags,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GnssAssistedFixControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3030,7 +3030,7 @@ class GnssAssistTimeUpdate(_Command):
             week_number=week_number,
             accuracy=accuracy,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.GnssAssistTimeUpdateResponse", self._call(command, timeout_ms, check_device))
 
 
 class PpsSource(_Command):
@@ -3062,7 +3062,7 @@ class PpsSource(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.PpsSourceResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3119,7 +3119,7 @@ class GetSupportedEvents(_Command):
         command = cls(
             query=query,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.SupportedEvents", self._call(command, timeout_ms, check_device))
 
 
 class DeviceStatus(_Command):
@@ -3139,7 +3139,7 @@ class DeviceStatus(_Command):
             model_number=model_number,
             status_selector=status_selector,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("threedm.DeviceStatusResponse", self._call(command, timeout_ms, check_device))
 
 
 class ThreedmCommands:
@@ -3295,7 +3295,7 @@ class VehicleDynamicsMode(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.VehicleDynamicsModeResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3370,7 +3370,7 @@ class SensorToVehicleTransform(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.SensorToVehicleTransformResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3441,7 +3441,7 @@ class SensorToVehicleOffset(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.SensorToVehicleOffsetResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3512,7 +3512,7 @@ class AntennaOffset(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AntennaOffsetResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3583,7 +3583,7 @@ class EstimationControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.EstimationControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3654,7 +3654,7 @@ class GnssSourceControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.GnssSourceControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3779,7 +3779,7 @@ class HeadingUpdateControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.HeadingUpdateControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3850,7 +3850,7 @@ class AutoInitControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AutoInitControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3921,7 +3921,7 @@ class AccelNoise(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AccelNoiseResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -3992,7 +3992,7 @@ class GyroNoise(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.GyroNoiseResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4065,7 +4065,7 @@ class AccelBiasModel(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AccelBiasModelResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4138,7 +4138,7 @@ class GyroBiasModel(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.GyroBiasModelResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4211,7 +4211,7 @@ class ZuptControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.ZuptControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4310,7 +4310,7 @@ class ZeroAngularRateUpdateControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.ZeroAngularRateUpdateControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4499,7 +4499,7 @@ class GravityNoiseStdDev(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.GravityNoiseStdDevResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4570,7 +4570,7 @@ class PressureAltitudeNoiseStdDev(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.PressureAltitudeNoiseStdDevResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4641,7 +4641,7 @@ class HardIronOffsetNoise(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.HardIronOffsetNoiseResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4712,7 +4712,7 @@ class SoftIronMatrixNoise(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.SoftIronMatrixNoiseResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4783,7 +4783,7 @@ class MagNoiseStdDev(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.MagNoiseStdDevResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4856,7 +4856,7 @@ class DeclinationSource(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.DeclinationSourceResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -4939,7 +4939,9 @@ class GravityMagnitudeAdaptiveMeasurement(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast(
+            "filter.GravityMagnitudeAdaptiveMeasurementResponse", self._call(command, timeout_ms, check_device)
+        )
 
     def save(
         self,
@@ -5022,7 +5024,7 @@ class MagMagnitudeAdaptiveMeasurement(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.MagMagnitudeAdaptiveMeasurementResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5101,7 +5103,7 @@ class MagDipAngleAdaptiveMeasurement(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.MagDipAngleAdaptiveMeasurementResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5172,7 +5174,7 @@ class AltitudeAidingControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AltitudeAidingControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5243,7 +5245,7 @@ class PitchRollAidingControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.PitchRollAidingControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5316,7 +5318,7 @@ class InclinationSource(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.InclinationSourceResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5389,7 +5391,7 @@ class MagneticFieldMagnitudeSource(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.MagneticFieldMagnitudeSourceResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5464,7 +5466,7 @@ class AidingMeasurementControl(_Command):
             function=_t.FunctionSelector.READ,
             source=source,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AidingMeasurementControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5557,7 +5559,7 @@ class InitializationConfiguration(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.InitializationConfigurationResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5630,7 +5632,7 @@ class AdaptiveFilterControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.AdaptiveFilterControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5705,7 +5707,7 @@ class MultiAntennaOffset(_Command):
             function=_t.FunctionSelector.READ,
             receiver_id=receiver_id,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.MultiAntennaOffsetResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5786,7 +5788,7 @@ class RelativePositionConfiguration(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.RelativePositionConfigurationResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5859,7 +5861,7 @@ class ReferencePointLeverArm(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.ReferencePointLeverArmResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -5934,7 +5936,7 @@ class SpeedLeverArm(_Command):
             function=_t.FunctionSelector.READ,
             source=source,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.SpeedLeverArmResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6011,7 +6013,7 @@ class WheeledVehicleConstraintControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.WheeledVehicleConstraintControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6084,7 +6086,7 @@ class GnssAntennaCalibrationControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("filter.GnssAntennaCalibrationControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6191,7 +6193,7 @@ class ReceiverInfo(_Command):
         """Send the command: returns the reply field."""
         cls = gnss.ReceiverInfo
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("gnss.ReceiverInfoResponse", self._call(command, timeout_ms, check_device))
 
 
 class SignalConfiguration(_Command):
@@ -6231,7 +6233,7 @@ class SignalConfiguration(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("gnss.SignalConfigurationResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6316,7 +6318,7 @@ class SpartnConfiguration(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("gnss.SpartnConfigurationResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6408,7 +6410,7 @@ class FrameConfig(_Command):
             frame_id=frame_id,
             format=format,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("aiding.FrameConfigResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6485,7 +6487,7 @@ class EchoControl(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("aiding.EchoControlResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -6811,7 +6813,7 @@ class CommunicationMode(_Command):
         command = cls(
             function=_t.FunctionSelector.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("system.CommunicationModeResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,

@@ -226,7 +226,7 @@ def support_error(command: Field, device: str) -> Optional[str]:
     """Why `device` does not support the command as given (None when it does)."""
     info = command_info(command)
     name = command.NAME
-    layouts = _meta.COMMANDS.get((command.SET, command.DESCRIPTOR), ())
+    layouts = _meta.COMMANDS.get((command.SET, command.DESCRIPTOR), ()) if command.SET is not None else ()
     if not any(device in row[2] for row in layouts):
         return f"{name} is not supported by {device}"
     if info is not None and info.device is not None and info.device != device:
@@ -245,11 +245,11 @@ def ack_suppressed(command: Field, info: Optional[CommandInfo] = None) -> bool:
     if info is None or info.ack is None:
         return False
     if info.ack[0] == "function":
-        return _function(command) == info.ack[1]
+        return bool(_function(command) == info.ack[1])
     value = getattr(command, info.ack[1], None)
     if value is None:
         return False
-    return int(value) != 0 if info.ack[2] is None else int(value) == info.ack[2]
+    return bool(int(value) != 0) if info.ack[2] is None else bool(int(value) == info.ack[2])
 
 
 def allowance_ms(command: Field, info: Optional[CommandInfo] = None) -> int:
@@ -262,7 +262,7 @@ def allowance_ms(command: Field, info: Optional[CommandInfo] = None) -> int:
         return 0
     if param is not None:
         ms += int(getattr(command, param, 0) or 0)
-    return ms
+    return int(ms)
 
 
 def expected_replies(command: Field, info: Optional[CommandInfo] = None) -> Tuple[int, ...]:
@@ -445,6 +445,8 @@ class Session:
                 p = Pending(command, b"", now_ms, expect, tag)
                 p.result = _tagged(Result(command, REFUSED, error=why, expect=expect), tag)
                 return p
+        if command.SET is None:
+            raise TypeError(f"{command.NAME} is not a command of a descriptor set")
         packet = PacketBuilder(command.SET).add(command).build()
         p = Pending(command, packet, now_ms + base + allowance_ms(command, info), expect, tag)
         if ack_suppressed(command, info):
@@ -524,17 +526,17 @@ class Session:
                 events.extend(results)
                 return
         events.append(packet)
-        for h in self._packet_handlers:
-            h(packet)
+        for on_packet in self._packet_handlers:
+            on_packet(packet)
         if self._field_handlers:
             for f in packet.fields:
                 if isinstance(f, DecodedField):
-                    for h in self._field_handlers.get((packet.set, f.descriptor), ()):
-                        h(f.value, packet)
+                    for on_field in self._field_handlers.get((packet.set, f.descriptor), ()):
+                        on_field(f.value, packet)
         if self._grouper is not None and raw is not None:
             for s in self._grouper.feed(raw.data, raw.offset):
-                for h in self._sample_handlers:
-                    h(s)
+                for on_sample in self._sample_handlers:
+                    on_sample(s)
 
     def _match(self, packet: Packet) -> List[Result]:
         """Results of the pending commands this packet answers (none: it is not a reply)."""
@@ -546,7 +548,9 @@ class Session:
         ]
         results: List[Result] = []
         for n, i in enumerate(acks):
-            ack = fields[i].value
+            first = fields[i]
+            assert isinstance(first, DecodedField)  # acks holds the indexes of decoded ack fields
+            ack = first.value
             echo = int(getattr(ack, _meta.ACK_ECHO))
             p = next((q for q in self._pending if q.set == packet.set and q.descriptor == echo), None)
             if p is None:
@@ -554,7 +558,8 @@ class Session:
             end = acks[n + 1] if n + 1 < len(acks) else len(fields)
             # A raw ack-descriptor field also ends the reply of the ack before it.
             for j in range(i + 1, end):
-                if isinstance(fields[j], RawField) and fields[j].descriptor == _meta.ACK_DESCRIPTOR:
+                later = fields[j]
+                if isinstance(later, RawField) and later.descriptor == _meta.ACK_DESCRIPTOR:
                     end = j
                     break
             self._pending.remove(p)

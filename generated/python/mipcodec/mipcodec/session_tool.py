@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import Any, List, Optional
+from typing import Any, Dict, List, Optional
 
 from . import registry
 from .framing import Skip
@@ -33,8 +33,8 @@ def _int_option(name: str, text: str, low: int) -> int:
     return int(text)
 
 
-def _options(argv: List[str]) -> dict:
-    opts: dict = {"connect": None, "timeout_ms": DEFAULT_TIMEOUT_MS, "device": None, "baud": 115200}
+def _options(argv: List[str]) -> Dict[str, Any]:
+    opts: Dict[str, Any] = {"connect": None, "timeout_ms": DEFAULT_TIMEOUT_MS, "device": None, "baud": 115200}
     i = 0
     while i < len(argv):
         a = argv[i]

@@ -62,7 +62,7 @@ class GetDeviceMessages(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceMessages
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceMessages", self._call(command, timeout_ms, check_device))
 
 
 class DeviceReset(_Command):
@@ -92,7 +92,7 @@ class GetDeviceModel(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceModel
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceModel", self._call(command, timeout_ms, check_device))
 
 
 class GetDeviceSn(_Command):
@@ -107,7 +107,7 @@ class GetDeviceSn(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceSn
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceSn", self._call(command, timeout_ms, check_device))
 
 
 class GetDeviceFw(_Command):
@@ -122,7 +122,7 @@ class GetDeviceFw(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceFw
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceFw", self._call(command, timeout_ms, check_device))
 
 
 class GetDeviceCal(_Command):
@@ -137,7 +137,7 @@ class GetDeviceCal(_Command):
         """Send the command: returns the reply field."""
         cls = base.GetDeviceCal
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("base.DeviceCal", self._call(command, timeout_ms, check_device))
 
 
 class CorrelateGpsTime(_Command):
@@ -203,7 +203,7 @@ class UartBaudRate(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.UartBaudRateResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -274,7 +274,7 @@ class Filter(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.FilterResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -345,7 +345,7 @@ class SampleRate(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.SampleRateResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -418,7 +418,7 @@ class SelectSensors(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.SelectSensorsResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -472,7 +472,7 @@ class GetInternalSampleRate(_Command):
         """Send the command: returns the reply field."""
         cls = imu_config.GetInternalSampleRate
         command = cls()
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.InternalSampleRate", self._call(command, timeout_ms, check_device))
 
 
 class AccelRange(_Command):
@@ -504,7 +504,7 @@ class AccelRange(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.AccelRangeResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -575,7 +575,7 @@ class GyroRange(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.GyroRangeResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -689,7 +689,7 @@ class DataOnOff(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.DataOnOffResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -760,7 +760,7 @@ class XtrigOnOff(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.XtrigOnOffResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -831,7 +831,7 @@ class SelectSensorsRevB(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.SelectSensorsRevBResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
@@ -902,7 +902,7 @@ class AuxAccelRange(_Command):
         command = cls(
             function=_t.FunctionCode.READ,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("imu_config.AuxAccelRangeResponse", self._call(command, timeout_ms, check_device))
 
     def save(
         self,

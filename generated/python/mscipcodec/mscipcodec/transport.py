@@ -70,7 +70,7 @@ class SerialTransport:
 
     def __init__(self, path: str, baudrate: int = 115200) -> None:
         try:
-            import serial  # type: ignore[import-not-found]
+            import serial  # type: ignore[import-not-found, import-untyped, unused-ignore]
         except ImportError:
             raise TransportError(
                 "serial ports need pyserial: pip install pyserial (or the package's [serial] extra)"
@@ -94,7 +94,8 @@ class SerialTransport:
             if not first:
                 return b""
             waiting = self._port.in_waiting
-            return first + (self._port.read(waiting) if waiting else b"")
+            data: bytes = first + (self._port.read(waiting) if waiting else b"")
+            return data
         except self._serial.SerialException as e:
             raise TransportError(f"read failed: {e}") from None
 

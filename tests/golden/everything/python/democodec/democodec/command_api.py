@@ -87,7 +87,7 @@ class Configure(_Command):
             function=_t.Function.READ,
             instance=instance,
         )
-        return self._call(command, timeout_ms, check_device)  # type: ignore[no-any-return]
+        return _ty.cast("commands.Configuration", self._call(command, timeout_ms, check_device))
 
     def save(
         self,
