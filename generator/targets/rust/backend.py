@@ -92,8 +92,8 @@ def cargo_metadata(proto: dict) -> dict:
         if _CRATE_KEYWORD.fullmatch(word) and word not in keywords:
             keywords.append(word)
     description = (
-        f"{proto['title']} protocol codec: stream parser, typed encoders and decoders of every "
-        "field, canonical JSON; no_std and allocation-free. Generated from the protocol spec."
+        f"{proto['title']}: stream parser, typed encoders and decoders of every field, canonical "
+        "JSON; no_std, no allocation, no dependencies. Generated from the protocol spec."
     )
     return {
         "rust_version": toml_str(RUST_VERSION),
