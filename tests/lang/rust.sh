@@ -177,12 +177,12 @@ test_msrv() {
     CARGO_TARGET_DIR="$MSRV_TARGET_DIR" cargo "+$version" test --quiet --manifest-path "$m" >&2
 }
 
-# Sizes (text, data, bss) of an ELF image, with the first size tool found.
+# Sizes (text, data, bss) of ELF images, with the first size tool found.
 image_size() {
     local tool
     for tool in llvm-size llvm-size-14 arm-none-eabi-size size; do
         if command -v "$tool" >/dev/null; then
-            "$tool" "$1"
+            "$tool" "$@"
             return
         fi
     done
@@ -203,9 +203,10 @@ test_embedded() {
         setup_consumer "$pkg"
         CARGO_TARGET_DIR="$EMBEDDED_TARGET_DIR/firmware-$pkg" cargo build --quiet --release \
             --manifest-path "$dst/firmware/Cargo.toml" --target "$EMBEDDED_TARGET"
-        image="$EMBEDDED_TARGET_DIR/firmware-$pkg/$EMBEDDED_TARGET/release/consumer-firmware"
-        echo "$pkg firmware image ($EMBEDDED_TARGET): stream parser, decode_field of every field, packet builder"
-        image_size "$image"
+        image="$EMBEDDED_TARGET_DIR/firmware-$pkg/$EMBEDDED_TARGET/release"
+        echo "$pkg firmware images ($EMBEDDED_TARGET): parser = stream parser, field iterator, packet builder;"
+        echo "  decode = the same and decode_field, which links the decoder of every field"
+        image_size "$image/parser" "$image/decode"
     done
 }
 

@@ -152,6 +152,27 @@ pub fn build_packet(set: u8, descriptor: u8, data: &[u8], out: &mut [u8]) -> usi
     }
 }
 
+/// Parses `input` (as a firmware would its serial bytes) and iterates the fields of every packet
+/// without decoding them; returns (packets, fields).
+pub fn count_packets(input: &[u8]) -> (usize, usize) {
+    let mut parser = Parser::new();
+    let (mut packets, mut fields) = (0, 0);
+    let mut on_event = |event: Event<'_>| {
+        if let Event::Packet { bytes, .. } = event {
+            if let Some(packet) = Packet::new(bytes) {
+                packets += 1;
+                fields += packet
+                    .fields()
+                    .filter(|item| matches!(item, FieldItem::Field { .. }))
+                    .count();
+            }
+        }
+    };
+    parser.feed(input, &mut on_event);
+    parser.flush(&mut on_event);
+    (packets, fields)
+}
+
 /// Parses `input` (as a firmware would its serial bytes) and decodes every field of every
 /// packet; returns (packets, fields that decode).
 pub fn count_fields(input: &[u8]) -> (usize, usize) {
@@ -209,6 +230,7 @@ mod tests {
         stream.extend_from_slice(&packet[..packet.len() - 1]); // cut short: never reported
         stream.extend_from_slice(&packet);
         assert_eq!(count_fields(&stream), (2, 4));
+        assert_eq!(count_packets(&stream), (2, 4));
         assert_eq!(count_fields(&[]), (0, 0));
         let mut out = [0u8; 300];
         let n = build_packet(set, descriptor, &[], &mut out);

@@ -1,7 +1,8 @@
 //! A firmware image for a Cortex-M4F (`thumbv7em-none-eabihf`) around the `no_std` consumer
-//! (`consumer-core`): parses the bytes of a receive buffer and decodes every field (all of the
-//! protocol's decoders are linked, the field comes from the data), and builds a packet. No global allocator is defined, so the image links only if nothing uses
-//! `alloc`. Built (never run) by tests/lang/rust.sh embedded, which prints its size.
+//! (`consumer-core`): parses the bytes of a receive buffer and decodes every field (every decoder
+//! of the protocol is linked: the field comes from the data), and builds a packet. No global
+//! allocator is defined, so the image links only if nothing uses `alloc`. Built (never run) by
+//! tests/lang/rust.sh embedded, which prints its size.
 #![no_std]
 #![no_main]
 
@@ -10,7 +11,7 @@ use core::panic::PanicInfo;
 
 use consumer_core::{build_packet, count_fields};
 
-/// Where a UART driver would put received bytes, and the bytes to send; `black_box` keeps the
+/// Where a UART driver would put received bytes, and the field to send; `black_box` keeps the
 /// optimizer from assuming their contents.
 static RX: [u8; 256] = [0; 256];
 static TX_FIELD: [u8; 3] = [0x01, 0x01, 0];
