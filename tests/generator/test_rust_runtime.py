@@ -88,3 +88,13 @@ def test_toml_strings_escape_what_toml_requires() -> None:
     assert backend.toml_str('a"b\\c') == '"a\\"b\\\\c"'
     assert backend.toml_str("tab\there é") == '"tab\\u0009here \\u00E9"'
     assert backend.toml_str("\U0001f600") == '"\\U0001F600"'
+
+
+def test_the_core_is_no_std_without_alloc() -> None:
+    # Without the `std` feature the crate is `#![no_std]` (rust.sh test builds it so, CI for
+    # thumbv7em-none-eabihf without an allocator); `alloc` would need `extern crate alloc`.
+    _, crate = _crate()
+    assert '#![cfg_attr(not(feature = "std"), no_std)]' in crate["src/lib.rs"]
+    for path, text in crate.items():
+        if path.endswith(".rs"):
+            assert "extern crate alloc" not in text, f"{path}: the core must not allocate"
