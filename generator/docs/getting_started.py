@@ -62,9 +62,13 @@ def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
             f"#     pip install --no-index --find-links dist {pkg}\n"
             f"python -m {pkg} decode capture.bin   # canonical JSON lines",
         )
+    msrv = re.search(r'^rust-version = "([^"]+)"', files.get(f"rust/{pkg}/Cargo.toml", ""), re.M)
+    since = f"Rust {msrv.group(1)} or newer, " if msrv else ""
     return (
-        f"Depend on `generated/rust/{pkg}/` by path (no dependencies; `--no-default-features` builds without `std`):",
-        f'[dependencies]\n{pkg} = {{ path = "third_party/{pkg}" }}',
+        f"Copy `generated/rust/{pkg}/` into your tree ({since}no dependencies) and depend on it by path; "
+        "for `no_std` firmware (no allocator), turn off the default `std` feature:",
+        f'[dependencies]\n{pkg} = {{ path = "third_party/{pkg}" }}\n'
+        f'# no_std: {pkg} = {{ path = "third_party/{pkg}", default-features = false }}',
     )
 
 

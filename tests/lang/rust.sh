@@ -2,8 +2,21 @@
 # Build, test and run the generated Rust crates.
 #   tests/lang/rust.sh build                      cargo build --release of every crate under generated/rust/
 #   tests/lang/rust.sh test                       the runtime in place (as `runtime`), then clippy
-#                                                 -D warnings, cargo test, and a core-only
-#                                                 (--no-default-features) build, for every crate
+#                                                 -D warnings, cargo test, a core-only
+#                                                 (--no-default-features) build, `package` and
+#                                                 `consumer`, for every crate
+#   tests/lang/rust.sh package                    cargo package of every crate: the .crate holds
+#                                                 exactly the crate's files, the manifest's metadata
+#                                                 is complete; the smallest crate is verified (built
+#                                                 from its .crate, offline)
+#   tests/lang/rust.sh consumer                   the out-of-tree consumers of tests/lang/rust_consumer/
+#                                                 (path dependency, default features and
+#                                                 default-features = false) built and run
+#   tests/lang/rust.sh msrv                       (CI) the smallest crate built and tested with the
+#                                                 toolchain of its rust-version (rustup)
+#   tests/lang/rust.sh embedded                   (CI) every crate without default features in a
+#                                                 firmware image for thumbv7em-none-eabihf (the
+#                                                 no_std consumer, no allocator); prints its size
 #   tests/lang/rust.sh runtime                    the runtime where it is edited, generator/targets/rust/
 #                                                 runtime/ (no regeneration needed): rustfmt --check,
 #                                                 clippy, rustdoc and cargo test
@@ -23,8 +36,17 @@ CORE_TARGET_DIR="$ROOT/build/rust/target-core"
 RUNTIME="$ROOT/generator/targets/rust/runtime"
 RUNTIME_TARGET_DIR="$ROOT/build/rust/target-runtime"
 
+# cargo package's output and the out-of-tree consumers (copied from CONSUMER_SRC).
+PACKAGE_TARGET_DIR="$ROOT/build/rust/target-package"
+CONSUMER_SRC="$ROOT/tests/lang/rust_consumer"
+CONSUMER_DIR="$ROOT/build/rust/consumer"
+# The firmware target of `embedded` (Cortex-M4F), and the MSRV build of `msrv`.
+EMBEDDED_TARGET=thumbv7em-none-eabihf
+EMBEDDED_TARGET_DIR="$ROOT/build/rust/target-embedded"
+MSRV_TARGET_DIR="$ROOT/build/rust/target-msrv"
+
 usage() {
-    echo "usage: tests/lang/rust.sh build | test | runtime | decode FILE [--device ID] | encode | example FILE" >&2
+    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | example FILE" >&2
     exit 2
 }
 
@@ -55,6 +77,139 @@ test_runtime() {
     CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo test --quiet --manifest-path "$m"
 }
 
+# The crate with the fewest source bytes (verified by `package`, built by `msrv`: one is enough,
+# the manifests and the runtime are the same template and files).
+smallest_package() {
+    local pkg
+    for pkg in $(packages); do
+        echo "$(du -sk "$ROOT/generated/rust/$pkg/src" | cut -f1) $pkg"
+    done | sort -n | head -1 | cut -d' ' -f2
+}
+
+# cargo package of every crate. What goes into the .crate (`include` in Cargo.toml) must be
+# exactly the crate's files (the files cargo adds itself aside), and the only manifest warning
+# allowed is the missing documentation/homepage/repository URL (the project has none to give).
+test_package() {
+    local pkg m dir listed expected warnings verify="$(smallest_package)" crate
+    for pkg in $(packages); do
+        m="$(manifest "$pkg")"
+        dir="$ROOT/generated/rust/$pkg"
+        echo "== $pkg: cargo package" >&2
+        listed="$(CARGO_TARGET_DIR="$PACKAGE_TARGET_DIR" cargo package --list --allow-dirty --offline \
+            --manifest-path "$m" 2>/dev/null | grep -v -x -e Cargo.toml.orig -e Cargo.lock -e .cargo_vcs_info.json | sort)"
+        expected="$(cd "$dir" && find . -type f ! -path './target/*' ! -name Cargo.lock | sed 's|^\./||' | sort)"
+        if [ "$listed" != "$expected" ]; then
+            echo "rust.sh package: the .crate of $pkg does not hold exactly the crate's files (< packaged, > on disk):" >&2
+            diff <(echo "$listed") <(echo "$expected") >&2 || true
+            exit 1
+        fi
+        if [ "$pkg" = "$verify" ]; then
+            warnings="$(CARGO_TARGET_DIR="$PACKAGE_TARGET_DIR" cargo package --quiet --allow-dirty --offline \
+                --manifest-path "$m" 2>&1 >/dev/null)"
+        else
+            warnings="$(CARGO_TARGET_DIR="$PACKAGE_TARGET_DIR" cargo package --quiet --allow-dirty --no-verify \
+                --manifest-path "$m" 2>&1 >/dev/null)"
+        fi
+        warnings="$(grep -E '^(warning|error)' <<<"$warnings" | grep -v -x 'warning: manifest has no documentation, homepage or repository' || true)"
+        if [ -n "$warnings" ]; then
+            echo "rust.sh package: cargo package of $pkg: $warnings" >&2
+            exit 1
+        fi
+        crate="$(ls "$PACKAGE_TARGET_DIR/package/$pkg"-*.crate)"
+        # The published manifest carries what crates.io and a vendoring team look for.
+        local key
+        for key in description license readme rust-version keywords categories; do
+            tar -xzOf "$crate" --wildcards "$pkg-*/Cargo.toml" | grep -q "^$key = " || {
+                echo "rust.sh package: $crate: Cargo.toml has no $key" >&2
+                exit 1
+            }
+        done
+    done
+}
+
+# Copies the consumer projects to build/rust/consumer/PACKAGE/ with the crate's path and name.
+setup_consumer() {
+    local pkg="$1" dst="$CONSUMER_DIR/$1" part
+    mkdir -p "$dst"
+    for part in app core firmware; do
+        rm -rf "${dst:?}/$part"
+        cp -R "$CONSUMER_SRC/$part" "$dst/$part"
+    done
+    find "$dst" -type f \( -name '*.rs' -o -name Cargo.toml \) -exec \
+        sed -i -e "s|@CRATE_DIR@|$ROOT/generated/rust/$pkg|" -e "s/\bprotocodec\b/$pkg/g" {} +
+}
+
+# Out-of-tree consumers: a std program with default features (run: it checks itself and prints
+# two JSON lines), and a no_std library with default-features = false (built, and its tests
+# run). They share the target directories of `test`, so the crate is not compiled again.
+test_consumer() {
+    local pkg dst out
+    echo "== consumers: rustfmt --check" >&2
+    find "$CONSUMER_SRC" -name '*.rs' -print0 | xargs -0 rustfmt --check --edition 2021
+    for pkg in $(packages); do
+        dst="$CONSUMER_DIR/$pkg"
+        setup_consumer "$pkg"
+        echo "== $pkg: consumer (path dependency, default features)" >&2
+        out="$(cargo run --quiet --manifest-path "$dst/app/Cargo.toml")"
+        if [ "$(wc -l <<<"$out")" != 2 ]; then
+            echo "rust.sh consumer: $pkg: want two JSON lines from the consumer, got: $out" >&2
+            exit 1
+        fi
+        echo "== $pkg: consumer (path dependency, default-features = false, no_std)" >&2
+        CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$dst/core/Cargo.toml"
+        CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo test --quiet --manifest-path "$dst/core/Cargo.toml" >&2
+    done
+}
+
+# The minimum supported Rust version (rust-version of Cargo.toml, generator/targets/rust/facts.py):
+# the smallest crate with exactly that toolchain, core only and with std, and its tests.
+test_msrv() {
+    local pkg m version
+    pkg="$(smallest_package)"
+    m="$(manifest "$pkg")"
+    version="$(sed -n 's/^rust-version = "\(.*\)"$/\1/p' "$m")"
+    if ! rustup run "$version" cargo --version >/dev/null 2>&1; then
+        echo "rust.sh msrv: Rust $version is not installed; run: rustup toolchain install $version --profile minimal (or tools/bootstrap --ci)" >&2
+        exit 1
+    fi
+    echo "== $pkg: Rust $version (rust-version): build --no-default-features, build, test" >&2
+    CARGO_TARGET_DIR="$MSRV_TARGET_DIR" cargo "+$version" build --quiet --manifest-path "$m" --lib --no-default-features
+    CARGO_TARGET_DIR="$MSRV_TARGET_DIR" cargo "+$version" test --quiet --manifest-path "$m" >&2
+}
+
+# Sizes (text, data, bss) of ELF images, with the first size tool found.
+image_size() {
+    local tool
+    for tool in llvm-size llvm-size-14 arm-none-eabi-size size; do
+        if command -v "$tool" >/dev/null; then
+            "$tool" "$@"
+            return
+        fi
+    done
+    echo "(no size tool: install binutils or llvm)"
+}
+
+# Every crate without std for a Cortex-M4F, and the firmware consumer linked without an allocator.
+test_embedded() {
+    local pkg dst image
+    if command -v rustup >/dev/null && ! rustup target list --installed | grep -qx "$EMBEDDED_TARGET"; then
+        echo "rust.sh embedded: the $EMBEDDED_TARGET target is not installed; run: rustup target add $EMBEDDED_TARGET (or tools/bootstrap --ci)" >&2
+        exit 1
+    fi
+    for pkg in $(packages); do
+        # The crate is built with default-features = false for the target as the image's dependency.
+        echo "== $pkg: --no-default-features for $EMBEDDED_TARGET: firmware image (no allocator, opt-level s, LTO)" >&2
+        dst="$CONSUMER_DIR/$pkg"
+        setup_consumer "$pkg"
+        CARGO_TARGET_DIR="$EMBEDDED_TARGET_DIR/firmware-$pkg" cargo build --quiet --release \
+            --manifest-path "$dst/firmware/Cargo.toml" --target "$EMBEDDED_TARGET"
+        image="$EMBEDDED_TARGET_DIR/firmware-$pkg/$EMBEDDED_TARGET/release"
+        echo "$pkg firmware images ($EMBEDDED_TARGET): parser = stream parser, field iterator, packet builder;"
+        echo "  decode = the same and decode_field, which links the decoder of every field"
+        image_size "$image/parser" "$image/decode"
+    done
+}
+
 build_one() {
     cargo build --release --quiet --manifest-path "$(manifest "$1")" --bins >&2
 }
@@ -79,6 +234,18 @@ build)
 runtime)
     test_runtime
     ;;
+package)
+    test_package
+    ;;
+consumer)
+    test_consumer
+    ;;
+msrv)
+    test_msrv
+    ;;
+embedded)
+    test_embedded
+    ;;
 test)
     test_runtime
     for pkg in $(packages); do
@@ -92,6 +259,8 @@ test)
         echo "== $pkg: build (core only, --no-default-features)" >&2
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$m" --lib --no-default-features
     done
+    test_package
+    test_consumer
     ;;
 decode)
     [ $# -ge 1 ] || usage

@@ -18,7 +18,17 @@ from generator.primitives import PRIMITIVES
 from generator.render import ToolError, copy_runtime, environment
 from generator.testcases import bitfield_cases, canonical_cases, layout_error_cases, vector_cases
 
-from .facts import KEYWORDS, NOT_RAW, PRIMITIVE_TYPES, RESERVED_MODULES
+from .facts import (
+    CATEGORIES,
+    INCLUDE,
+    KEYWORDS,
+    KEYWORDS_COMMON,
+    LICENSE,
+    NOT_RAW,
+    PRIMITIVE_TYPES,
+    RESERVED_MODULES,
+    RUST_VERSION,
+)
 
 OUTPUT_DIRS = ["rust"]
 
@@ -53,6 +63,46 @@ def rust_str(s: str) -> str:
             out.append("\\u{%x}" % ord(ch))
     out.append('"')
     return "".join(out)
+
+
+def toml_str(s: str) -> str:
+    """A TOML basic string for any text (control and non-ASCII characters escaped)."""
+    out = ['"']
+    for ch in s:
+        if ch in '"\\':
+            out.append("\\" + ch)
+        elif 0x20 <= ord(ch) < 0x7F:
+            out.append(ch)
+        else:
+            out.append("\\u%04X" % ord(ch) if ord(ch) <= 0xFFFF else "\\U%08X" % ord(ch))
+    out.append('"')
+    return "".join(out)
+
+
+_CRATE_KEYWORD = re.compile(r"[a-z][a-z0-9_-]{0,19}")
+
+
+def cargo_metadata(proto: dict) -> dict:
+    """The [package] metadata of a protocol's crate (facts.py): TOML values, ready to print.
+    Keywords are the protocol's name, its vendor (the first word of its title) and the common
+    ones, as far as crates.io accepts them (a word it would refuse is left out)."""
+    words = [proto["name"], *proto["title"].split()[:1], *KEYWORDS_COMMON]
+    keywords: list[str] = []
+    for word in (w.lower() for w in words):
+        if _CRATE_KEYWORD.fullmatch(word) and word not in keywords:
+            keywords.append(word)
+    description = (
+        f"{proto['title']}: stream parser, typed encoders and decoders of every field, canonical "
+        "JSON; no_std, no allocation, no dependencies. Generated from the protocol spec."
+    )
+    return {
+        "rust_version": toml_str(RUST_VERSION),
+        "license": toml_str(LICENSE),
+        "description": toml_str(description),
+        "keywords": ", ".join(toml_str(k) for k in keywords[:5]),
+        "categories": ", ".join(toml_str(c) for c in CATEGORIES[:5]),
+        "include": ", ".join(toml_str(i) for i in INCLUDE),
+    }
 
 
 def doc_line(*texts: str | None) -> str:
@@ -444,6 +494,8 @@ class _Protocol:
             "shared": shared,
             "shared_rule": bool(shared) and "data" in proto["set_kinds"],
             "first_set": sets[0]["id"] if sets else "0x00",
+            "cargo": cargo_metadata(proto),
+            "rust_version": RUST_VERSION,
         }
 
     # ---------------------------------------------------------------- tests (cases from generator/testcases.py)

@@ -55,3 +55,21 @@ RESERVED_MODULES = frozenset(
         "alloc",
     }
 )
+
+# The generated crate's package metadata (Cargo.toml), as `cargo package` and crates.io want it.
+# RUST_VERSION is the minimum supported Rust version (MSRV), found by building and testing the
+# crates with older toolchains: 1.64 lacks `let ... else` (stable in 1.65), which the runtime
+# uses; 1.65 builds the core (`--no-default-features`) and the std crate and passes their tests.
+# `.ci/run` builds and tests a crate with exactly this toolchain (tests/lang/rust.sh msrv), and
+# clippy's `incompatible_msrv` lint flags a standard-library API newer than it. Raising it is a
+# decision (README "Rust"): change it here and in runtime/Cargo.toml (a test compares them).
+RUST_VERSION = "1.65"
+LICENSE = "MIT"
+# crates.io categories (https://crates.io/category_slugs), at most five.
+CATEGORIES = ["embedded", "no-std", "no-std::no-alloc", "encoding", "parser-implementations"]
+# Keywords besides the protocol's name and its vendor (the first word of its title): at most five
+# in all, each ASCII letters, digits, `-` or `_`, starting with a letter, at most 20 characters.
+KEYWORDS_COMMON = ["protocol", "codec", "parser"]
+# What `cargo package` puts into the .crate: the manifest, README, LICENSE (when present), the
+# library, tools, example and tests; nothing else a generator run could leave beside them.
+INCLUDE = ["/Cargo.toml", "/README.md", "/LICENSE", "/src/", "/examples/", "/tests/"]

@@ -106,7 +106,8 @@ impl<T: Wire, const N: usize> BoundedVec<T, N> {
     pub fn decode_remaining(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         if let Some(size) = T::FIXED_SIZE {
             let left = r.left();
-            if size > 0 && !left.is_multiple_of(size) {
+            // `%` rather than `is_multiple_of` (Rust 1.87): the crates support Rust 1.65.
+            if size > 0 && left % size != 0 {
                 return Err(DecodeError::new(DecodeErrorKind::Partial {
                     left,
                     offset: r.pos(),

@@ -255,7 +255,8 @@ fn write_number(w: &mut dyn Write, x: f64) -> fmt::Result {
     if x.is_sign_negative() {
         w.write_char('-')?;
     }
-    let a = x.abs();
+    // Not `x.abs()`: core has float `abs` only since Rust 1.85 (the crates support 1.65).
+    let a = if x.is_sign_negative() { -x } else { x };
     if a == 0.0 {
         return w.write_str("0.0");
     }
