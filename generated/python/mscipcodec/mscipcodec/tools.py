@@ -149,8 +149,10 @@ def packet_time(packet: Packet) -> Optional[float]:
 
 
 def table_name(set_id: int, cls: Any) -> str:
-    """File stem of a (set, field layout) table: <set name>.<field name>[.<device>]."""
-    base = f"{registry.SET_NAMES.get(set_id, f'set_{set_id:02x}')}.{cls.NAME}"
+    """File stem of a (set, field layout) table: <set name>.[shared.]<field name>[.<device>]
+    (`shared.` for the shared data fields a packet of the set carries)."""
+    shared = "shared." if cls.SET != set_id else ""
+    base = f"{registry.SET_NAMES.get(set_id, f'set_{set_id:02x}')}.{shared}{cls.NAME}"
     return f"{base}.{cls.DEVICE}" if cls.DEVICE else base
 
 
@@ -664,11 +666,8 @@ def info(args: argparse.Namespace) -> int:
 
 
 # --------------------------------------------------------------------------------------- plot
-def plot(args: argparse.Namespace) -> int:
-    fields = _field_list(args.fields)
-    ext = os.path.splitext(args.out)[1].lower()
-    if ext not in (".png", ".svg", ".html"):
-        raise ToolError(f"--out must end in .png, .svg or .html (got {args.out!r})")
+def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) -> Any:
+    """The matplotlib figure of `plot`: the selected columns against time, one panel per unit."""
     need("matplotlib")
     import matplotlib
 
@@ -676,9 +675,9 @@ def plot(args: argparse.Namespace) -> int:
     import matplotlib.pyplot as plt
 
     series: Dict[str, Tuple[List[float], List[float], str]] = {}
-    source = Source(args.log)
+    source = Source(log)
     have_time = False
-    for e in events(source, args.device):
+    for e in events(source, device):
         if not isinstance(e, Packet) or e.set not in _DATA_SETS:
             continue
         t = packet_time(e)
@@ -712,8 +711,23 @@ def plot(args: argparse.Namespace) -> int:
         ax.legend(loc="upper right", fontsize="small")
         ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel(TIME_HEADER if have_time else "packet offset [bytes]")
-    fig.suptitle(os.path.basename(args.log))
+    fig.suptitle(os.path.basename(log))
     fig.tight_layout()
+    return fig
+
+
+def plot(args: argparse.Namespace) -> int:
+    fields = _field_list(args.fields)
+    ext = os.path.splitext(args.out)[1].lower()
+    if ext not in (".png", ".svg", ".html"):
+        raise ToolError(f"--out must end in .png, .svg or .html (got {args.out!r})")
+    need("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = figure(args.log, fields, args.device)
     try:
         if ext == ".html":
             import io
@@ -730,7 +744,7 @@ def plot(args: argparse.Namespace) -> int:
     except OSError as e:
         raise ToolError(f"cannot write {args.out!r}: {e.strerror or e}", 1) from None
     plt.close(fig)
-    print(f"{args.out}: {len(series)} series")
+    print(f"{args.out}: {sum(len(ax.lines) for ax in fig.axes)} series")
     return 0
 
 
