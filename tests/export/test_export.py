@@ -15,6 +15,8 @@ import json
 import math
 import os
 import struct
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -123,13 +125,28 @@ def read_table(path: Path):
     return t.column_names, [list(r.values()) for r in t.to_pylist()]
 
 
-def check_export(package: str, data: bytes, out: Path, fmt: str, enum_numbers: bool) -> int:
+def ext_build(package: str) -> str:
+    """The package built with its C accelerator (build/python/ext/<package>, by tests/lang/python.sh ext)."""
+    ext = subprocess.run(["tests/lang/python.sh", "ext"], cwd=ROOT, capture_output=True, text=True, check=True)
+    return next(line for line in ext.stdout.splitlines() if line.endswith("/" + package))
+
+
+def check_export(package: str, data: bytes, out: Path, fmt: str, enum_numbers: bool, accelerated: bool = False) -> int:
     """Exports `data` and compares every table with the canonical decode; returns the values checked."""
     mod = pkg(package)
     log = out / "log.bin"
     log.write_bytes(data)
     args = ["export", str(log), "--format", fmt, "--out", str(out / fmt)] + (["--enum-numbers"] if enum_numbers else [])
-    assert mod.cli.main(args) == 0
+    if accelerated:
+        run = subprocess.run(
+            [sys.executable, "-m", package] + args,
+            env=dict(os.environ, PYTHONPATH=ext_build(package)),
+            capture_output=True,
+            text=True,
+        )
+        assert run.returncode == 0 and "(columnar path)" in run.stderr, run.stderr
+    else:
+        assert mod.cli.main(args) == 0
     want = canonical(package, data)
     cols = mod._columns
     set_ids = {v: k for k, v in mod.registry.SET_NAMES.items()}
@@ -196,11 +213,20 @@ def test_every_layout_kind_is_exported():
     assert reached == kinds >= {"float32", "float64", "int", "enum", "bits", "bool"}
 
 
+@pytest.mark.parametrize("fmt", ["csv", "parquet"])
+@pytest.mark.parametrize("protocol", sorted(PACKAGES))
+def test_golden_vectors_columnar_export_equals_canonical_decode(tmp_path, protocol, fmt):
+    """The columnar path (C accelerator, numpy, pyarrow) gives the same values."""
+    package = PACKAGES[protocol]
+    data = vector_stream(protocol)
+    assert check_export(package, data, tmp_path, fmt, enum_numbers=(fmt == "csv"), accelerated=True) > 50
+
+
 @pytest.mark.skipif(not CAPTURE.exists(), reason="device capture absent (the golden-vector tests cover export)")
 @pytest.mark.parametrize("fmt", ["csv", "parquet"])
 def test_device_capture_export_equals_canonical_decode(tmp_path, fmt):
     data = CAPTURE.read_bytes()
-    assert check_export("mipcodec", data, tmp_path, fmt, enum_numbers=False) > 40000
+    assert check_export("mipcodec", data, tmp_path, fmt, enum_numbers=False, accelerated=(fmt == "csv")) > 40000
     headers, rows = read_table(tmp_path / fmt / f"sensor.scaled_accel.{fmt}")
     assert headers == ["time [s]", "offset", "scaled_accel.x [g]", "scaled_accel.y [g]", "scaled_accel.z [g]"]
     # the time column is the reference timestamp of the packet, in seconds
@@ -383,8 +409,6 @@ shapes = {}
 for key, t in cols.tables.items():
     for attr, a in t.arrays().items():
         shapes[attr] = a.shape
-        if attr in ("offset", "index"):
-            continue
         for i in range(t.rows):
             assert np.array_equal(np.asarray(getattr(t.row(i), attr), dtype=a.dtype).reshape(a[i].shape), a[i]), (key, attr, i)
 assert shapes["scaled_accel"][1:] == (3,), shapes
@@ -399,11 +423,7 @@ print(len(cols.tables))
 def test_table_arrays_shaped_by_the_spec(tmp_path):
     """decode_columns tables as numpy arrays shaped by the spec (vectors n x 3) and as a DataFrame,
     equal to the typed rows; run with the C accelerator (the tables are its output)."""
-    import subprocess
-    import sys
-
-    ext = subprocess.run(["tests/lang/python.sh", "ext"], cwd=ROOT, capture_output=True, text=True, check=True)
-    where = next(line for line in ext.stdout.splitlines() if line.endswith("/mipcodec"))
+    where = ext_build("mipcodec")
     log = tmp_path / "v.bin"
     log.write_bytes(vector_stream("mip"))
     run = subprocess.run(

@@ -25,7 +25,7 @@ import time
 from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 from . import _columns, registry
-from ._protocol import FIRST_SHARED, SYNC, TIMESTAMPS
+from ._protocol import FIRST_SHARED, SET_OFFSET, SYNC, TIMESTAMPS
 from ._protocol import PACKAGE as PROG
 from .framing import fletcher16
 from .packets import DecodedField, Decoder, Packet
@@ -251,7 +251,8 @@ class CsvWriter:
     def __init__(self, path: str, headers: List[str]) -> None:
         self.file = open(path, "w", newline="", encoding="utf-8")
         self.csv = csv.writer(self.file, lineterminator="\n")
-        self.csv.writerow(headers)
+        # Headers quoted, as pyarrow writes them on the fast path: the files are the same bytes.
+        csv.writer(self.file, lineterminator="\n", quoting=csv.QUOTE_ALL).writerow(headers)
 
     def write(self, rows: List[List[Any]]) -> None:
         self.csv.writerows([[_cell_text(c) for c in row] for row in rows])
@@ -515,6 +516,215 @@ def sample_key(p: Packet) -> Optional[Tuple]:
     return tuple(key) if key else None
 
 
+# ------------------------------------------------------------------------- columnar fast path
+BLOCK = 16 << 20  # bytes decoded by one decode_columns call on the fast path
+
+
+def _fast_path(args: argparse.Namespace) -> bool:
+    """The columnar path (decode_columns in C, numpy, pyarrow) applies: a whole file to CSV or
+    Parquet, one table per field, the accelerator built and numpy and pyarrow installed."""
+    from .framing import ACCELERATED
+
+    if args.log == "-" or args.follow or args.join or args.format not in ("csv", "parquet") or not ACCELERATED:
+        return False
+    try:
+        import numpy  # noqa: F401
+        import pyarrow  # noqa: F401
+    except ImportError:
+        return False
+    return os.environ.get(PROG.upper() + "_EXPORT_SLOW") is None
+
+
+class FastExporter:
+    """Exports per-field tables from decode_columns blocks: the numbers the C accelerator read as
+    numpy columns, every other entry (NaN, optional, nested, ...) through `Layout`, merged in
+    stream order; written by pyarrow (CSV or Parquet) block by block."""
+
+    def __init__(self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool) -> None:
+        import numpy as np
+        import pyarrow as pa
+
+        self.np, self.pa = np, pa
+        self.out, self.fmt, self.fields, self.enum_numbers = out, fmt, fields, enum_numbers
+        self.writers: Dict[Any, Any] = {}
+        self.counts: Dict[Any, int] = {}
+        self.schemas: Dict[Any, Any] = {}
+        self.layouts: Dict[Any, Optional[Tuple[Layout, List[int]]]] = {}
+
+    def _layout(self, cls: Any) -> Optional[Tuple[Layout, List[int]]]:
+        if cls not in self.layouts:
+            lay = Layout(cls, self.enum_numbers)
+            keep = select(lay.headers, self.fields)
+            self.layouts[cls] = None if (self.fields and not keep) else (lay, keep)
+        return self.layouts[cls]
+
+    def block(self, cols: Any, data: Any, base: int) -> None:
+        """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
+        np = self.np
+        times: Dict[int, Tuple[Any, Any]] = {}  # set -> (packet offsets, seconds), sorted by offset
+        pieces: Dict[Any, List[Any]] = {}
+        for (set_id, _d), t in cols.tables.items():
+            if set_id not in _DATA_SETS or t.rows == 0:
+                continue
+            arrays = t.arrays()
+            for s, d, attr, per_second in reversed(_columns.TIMES):
+                if t.cls.SET == s and t.cls.DESCRIPTOR == d and attr in arrays:
+                    prev = times.get(set_id)
+                    sec = arrays[attr].astype(np.float64) / per_second
+                    times[set_id] = _merge_times(np, prev, (np.frombuffer(t.offsets, dtype=np.int64), sec))
+        other_rows: Dict[Any, List[Tuple[int, int, List[Any]]]] = {}
+        other_times: Dict[int, Dict[int, float]] = {}
+        for off, k, entry in cols.others:
+            if k < 0 or not isinstance(entry, DecodedField):
+                continue
+            packet_set = data[off + SET_OFFSET]
+            if packet_set not in _DATA_SETS:
+                continue
+            cls = type(entry.value)
+            for s, d, attr, per_second in _columns.TIMES:
+                if cls.SET == s and cls.DESCRIPTOR == d:
+                    other_times.setdefault(packet_set, {}).setdefault(off, getattr(entry.value, attr) / per_second)
+            chosen = self._layout(cls)
+            if chosen is not None:
+                other_rows.setdefault((packet_set, cls), []).append((off, k, _typed(chosen[0], entry.value)))
+        for set_id, extra in other_times.items():
+            o = np.fromiter(extra.keys(), dtype=np.int64, count=len(extra))
+            v = np.fromiter(extra.values(), dtype=np.float64, count=len(extra))
+            times[set_id] = _merge_times(np, times.get(set_id), (o, v))
+        for (set_id, _d), t in cols.tables.items():
+            if set_id not in _DATA_SETS or t.rows == 0 or self._layout(t.cls) is None:
+                continue
+            lay, keep = self._layout(t.cls)
+            arrays = t.arrays()
+            offs = np.frombuffer(t.offsets, dtype=np.int64)
+            cols_out: List[Any] = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            for i in keep:
+                _name, path, _units, kind, enum = lay.specs[i]
+                a = arrays[path[0]]
+                if len(path) > 1:
+                    a = a.reshape(t.rows, -1)[:, path[1]]
+                cols_out.append(self._column(a, kind, enum))
+            pieces.setdefault((set_id, t.cls), []).append((offs, np.frombuffer(t.index, dtype=np.int64), cols_out))
+        for (set_id, cls), rows in other_rows.items():
+            lay, keep = self._layout(cls)
+            offs = np.array([r[0] for r in rows], dtype=np.int64)
+            idx = np.array([r[1] for r in rows], dtype=np.int64)
+            cells = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            for i in keep:
+                cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
+            pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
+        for key, parts in pieces.items():
+            self._write(key, parts)
+
+    def _column(self, a: Any, kind: str, enum: Optional[str]) -> Any:
+        np, pa = self.np, self.pa
+        if kind == "float32":
+            return pa.array(a.astype(np.float32))
+        if kind == "enum" and not self.enum_numbers:
+            names = _columns.ENUMS.get(enum or "", {})
+            return pa.array([names.get(int(v), str(int(v))) for v in a], type=pa.string())
+        if kind == "bool":
+            return pa.array(a.astype(bool))
+        if kind in ("int", "bits", "enum") and a.dtype == np.uint64 and (a.size == 0 or a.max() < (1 << 63)):
+            return pa.array(a.astype(np.int64))
+        return pa.array(a)
+
+    def _py_column(self, vals: List[Any], kind: str) -> Any:
+        pa = self.pa
+        if kind == "float32":
+            return pa.array([None if v is None else float(v) for v in vals], type=pa.float32())
+        if kind == "float64":
+            return pa.array(vals, type=pa.float64())
+        if kind == "bool":
+            return pa.array(vals, type=pa.bool_())
+        if kind in ("int", "bits") or (kind == "enum" and self.enum_numbers):
+            big = any(v is not None and v >= 1 << 63 for v in vals)
+            return pa.array(vals, type=pa.uint64() if big else pa.int64())
+        return pa.array([None if v is None else str(v) for v in vals], type=pa.string())
+
+    def _write(self, key: Any, parts: List[Any]) -> None:
+        np, pa = self.np, self.pa
+        set_id, cls = key
+        lay, keep = self._layout(cls)
+        headers = [TIME_HEADER, "offset"] + [lay.headers[i] for i in keep]
+        offs = np.concatenate([p[0] for p in parts])
+        idx = np.concatenate([p[1] for p in parts])
+        order = np.lexsort((idx, offs))
+        columns = []
+        for j in range(len(headers)):
+            chunk = [p[2][j] for p in parts]
+            col = chunk[0] if len(chunk) == 1 else pa.concat_arrays([_as_arrow(pa, c) for c in _unify(pa, chunk)])
+            col = _as_arrow(pa, col)
+            if len(parts) > 1:
+                col = col.take(pa.array(order))
+            columns.append(col)
+        table = pa.Table.from_arrays(columns, names=headers)
+        w = self.writers.get(key)
+        if w is None:
+            path = os.path.join(self.out, table_name(set_id, cls) + "." + self.fmt)
+            if self.fmt == "csv":
+                import pyarrow.csv as pacsv
+
+                w = pacsv.CSVWriter(path, table.schema, write_options=pacsv.WriteOptions(quoting_style="needed"))
+            else:
+                import pyarrow.parquet as pq
+
+                w = pq.ParquetWriter(path, table.schema)
+            self.writers[key] = w
+            self.schemas[key] = table.schema
+            self.counts[key] = 0
+        schema = self.schemas[key]
+        w.write_table(table if table.schema == schema else table.cast(schema))
+        self.counts[key] += table.num_rows
+
+    def close(self) -> List[Tuple[str, int]]:
+        out = []
+        for (set_id, cls), w in self.writers.items():
+            w.close()
+            out.append((table_name(set_id, cls) + "." + self.fmt, self.counts[(set_id, cls)]))
+        return sorted(out)
+
+
+def _as_arrow(pa: Any, c: Any) -> Any:
+    return c if isinstance(c, (pa.Array, pa.ChunkedArray)) else pa.array(c)
+
+
+def _unify(pa: Any, chunks: List[Any]) -> List[Any]:
+    """Chunks of one column as one arrow type (the first non-null type wins; ints widen to float)."""
+    arrs = [_as_arrow(pa, c) for c in chunks]
+    types = [a.type for a in arrs if a.type != pa.null()]
+    target = types[0] if types else pa.null()
+    if any(pa.types.is_floating(t) for t in types) and pa.types.is_integer(target):
+        target = next(t for t in types if pa.types.is_floating(t))
+    return [a if a.type == target else a.cast(target) for a in arrs]
+
+
+def _merge_times(np: Any, prev: Any, new: Tuple[Any, Any]) -> Tuple[Any, Any]:
+    """Packet offsets -> seconds, sorted; an earlier source (higher preference) wins on a tie."""
+    if prev is None:
+        order = np.argsort(new[0], kind="stable")
+        return new[0][order], new[1][order]
+    offs = np.concatenate([new[0], prev[0]])
+    secs = np.concatenate([new[1], prev[1]])
+    order = np.argsort(offs, kind="stable")
+    offs, secs = offs[order], secs[order]
+    keep = np.ones(len(offs), dtype=bool)
+    keep[1:] = offs[1:] != offs[:-1]
+    return offs[keep], secs[keep]
+
+
+def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
+    """Seconds of each packet offset (NaN -> null where the packet has no timestamp)."""
+    import pyarrow as pa
+
+    if times is None or len(times[0]) == 0:
+        return pa.nulls(len(offsets), type=pa.float64())
+    pos = np.searchsorted(times[0], offsets)
+    pos[pos >= len(times[0])] = 0
+    hit = times[0][pos] == offsets
+    return pa.array(np.where(hit, times[1][pos], 0.0), mask=~hit)
+
+
 def export(args: argparse.Namespace) -> int:
     if args.format == "parquet":
         need("pyarrow")
@@ -523,6 +733,8 @@ def export(args: argparse.Namespace) -> int:
         os.makedirs(args.out, exist_ok=True)
     except OSError as e:
         raise ToolError(f"cannot create {args.out!r}: {e.strerror or e}") from None
+    if _fast_path(args):
+        return _export_fast(args, fields)
     source = Source(args.log, follow=args.follow, idle=args.idle)
     ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join)
     packets = skipped = 0
@@ -542,6 +754,52 @@ def export(args: argparse.Namespace) -> int:
     for name, n in written:
         print(f"{os.path.join(args.out, name)}: {n} rows")
     print(f"{packets} packets, {skipped} bytes skipped", file=sys.stderr)
+    return 0
+
+
+def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
+    """The columnar export: blocks of BLOCK bytes through decode_columns; bytes that end a block
+    in a skipped run (possibly a packet cut by the block's end) start the next block."""
+    from .packets import decode_columns
+
+    source = Source(args.log)
+    ex = FastExporter(args.out, args.format, fields, args.enum_numbers)
+    packets = skipped = 0
+    carry = b""
+    base = 0
+    size = source.size or 0
+    pending = bytearray()
+    try:
+        for chunk in source.chunks():
+            pending += chunk
+            if len(pending) < BLOCK:
+                continue
+            data = carry + bytes(pending)
+            pending = bytearray()
+            cols = decode_columns(data)
+            cut = len(data)
+            if cols.skips and cols.skips[-1].offset + len(cols.skips[-1].data) == len(data):
+                cut = cols.skips[-1].offset
+                cols = decode_columns(data[:cut]) if cut else None
+            if cols is not None:
+                ex.block(cols, data, base)
+                packets += cols.packets
+                skipped += sum(len(k.data) for k in cols.skips)
+            carry = data[cut:]
+            base += cut
+        data = carry + bytes(pending)
+        if data:
+            cols = decode_columns(data)
+            ex.block(cols, data, base)
+            packets += cols.packets
+            skipped += sum(len(k.data) for k in cols.skips)
+        written = ex.close()
+    except OSError as e:
+        raise ToolError(f"cannot write to {args.out!r}: {e.strerror or e}", 1) from None
+    del size
+    for name, n in written:
+        print(f"{os.path.join(args.out, name)}: {n} rows")
+    print(f"{packets} packets, {skipped} bytes skipped (columnar path)", file=sys.stderr)
     return 0
 
 

@@ -289,7 +289,7 @@ class Table:
         A scalar parameter is an array of n values, a vector n x 3, a quaternion n x 4, a 3x3
         matrix n x 3 x 3, any other fixed array n x count; floats float64 (float32 values widen
         exactly), signed integers int64, unsigned integers, enums and bitfields uint64, bools bool.
-        Also "offset" (packet offsets) and "index" (field position in its packet).
+        Row i belongs to the packet at `offsets[i]` (`np.asarray(table.offsets)`).
 
             import numpy as np
             cols = decode_columns(data)
@@ -303,10 +303,7 @@ class Table:
         from . import _columns
 
         shapes = _columns.SHAPES.get((self.cls.SET, self.cls.DESCRIPTOR, self.cls.DEVICE), {})
-        out: Dict[str, Any] = {
-            "offset": np.frombuffer(self.offsets, dtype=np.int64),
-            "index": np.frombuffer(self.index, dtype=np.int64),
-        }
+        out: Dict[str, Any] = {}
         for attr, kind, _size, count, _aux in self._items:
             a = np.frombuffer(self.columns[attr], dtype=_NUMPY_TYPES[kind])
             if kind == "?":
@@ -320,6 +317,7 @@ class Table:
         """The columns as a pandas DataFrame (needs pandas): one row per entry, one column per
         value, named as in `export` (`scaled_accel.x`, ...), and "offset"."""
         try:
+            import numpy as np
             import pandas as pd
         except ImportError:
             raise ImportError("Table.dataframe needs pandas: pip install pandas") from None
@@ -327,7 +325,7 @@ class Table:
 
         specs = _columns.COLUMNS.get((self.cls.SET, self.cls.DESCRIPTOR, self.cls.DEVICE), ())
         arrays = self.arrays()
-        data: Dict[str, Any] = {"offset": arrays["offset"]}
+        data: Dict[str, Any] = {"offset": np.frombuffer(self.offsets, dtype=np.int64)}
         for name, path, _units, _kind, _enum in specs:
             a = arrays[path[0]]
             if len(path) > 1:
