@@ -549,6 +549,9 @@ class FastExporter:
         self.writers: Dict[Any, Any] = {}
         self.counts: Dict[Any, int] = {}
         self.schemas: Dict[Any, Any] = {}
+        import threading
+
+        self.lock = threading.Lock()
         self.layouts: Dict[Any, Optional[Tuple[Layout, List[int]]]] = {}
 
     def _layout(self, cls: Any) -> Optional[Tuple[Layout, List[int]]]:
@@ -613,8 +616,16 @@ class FastExporter:
             for i in keep:
                 cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
             pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
-        for key, parts in pieces.items():
-            self._write(key, parts)
+        # pyarrow formats and writes without the GIL: one table per thread.
+        if len(pieces) > 1 and (os.cpu_count() or 1) > 1:
+            from concurrent.futures import ThreadPoolExecutor
+
+            with ThreadPoolExecutor(max_workers=min(len(pieces), os.cpu_count() or 1)) as pool:
+                for done in [pool.submit(self._write, key, parts) for key, parts in pieces.items()]:
+                    done.result()
+        else:
+            for key, parts in pieces.items():
+                self._write(key, parts)
 
     def _column(self, a: Any, kind: str, enum: Optional[str]) -> Any:
         np, pa = self.np, self.pa
@@ -659,6 +670,15 @@ class FastExporter:
                 col = col.take(pa.array(order))
             columns.append(col)
         table = pa.Table.from_arrays(columns, names=headers)
+        with self.lock:
+            w = self._writer(key, table)
+        schema = self.schemas[key]
+        w.write_table(table if table.schema == schema else table.cast(schema))
+        with self.lock:
+            self.counts[key] += table.num_rows
+
+    def _writer(self, key: Any, table: Any) -> Any:
+        set_id, cls = key
         w = self.writers.get(key)
         if w is None:
             path = os.path.join(self.out, table_name(set_id, cls) + "." + self.fmt)
@@ -673,9 +693,7 @@ class FastExporter:
             self.writers[key] = w
             self.schemas[key] = table.schema
             self.counts[key] = 0
-        schema = self.schemas[key]
-        w.write_table(table if table.schema == schema else table.cast(schema))
-        self.counts[key] += table.num_rows
+        return w
 
     def close(self) -> List[Tuple[str, int]]:
         out = []
