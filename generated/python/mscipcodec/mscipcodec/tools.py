@@ -904,7 +904,10 @@ class Summary:
                     continue
                 hz, gaps, dropped = self.rate(times)
                 rate = f"{hz:10.3f} Hz" if hz is not None else "         - Hz"
-                out.append(f"  0x{d:02X} {name:32} {len(times):8} {rate}  gaps {gaps}  dropped {dropped}")
+                untimed = sum(1 for t in times if t is None)
+                # Rates, gaps and drops come from the entries whose packet carries a timestamp.
+                note = f"  ({untimed} without timestamp)" if untimed else ""
+                out.append(f"  0x{d:02X} {name:32} {len(times):8} {rate}  gaps {gaps}  dropped {dropped}{note}")
         return out
 
 
