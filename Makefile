@@ -12,7 +12,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-golden test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -38,7 +38,7 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 bootstrap:
 	@tools/bootstrap
 
-test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions test-bench test-golden
+test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden
 
 # Python everywhere under tests/ is one package (tests/__init__.py): pytest and the scripts run
 # from the project root (`python -m tests.conformance.differential`), shared helpers in tests/helpers/.
@@ -52,6 +52,10 @@ test-spec: generate
 	$(PY) -m pytest -q tests/spec
 
 # The benchmark streams are what their sidecars say (small scale; `make bench` runs the benchmarks).
+# The Python packages' user commands (export, info, plot) against the canonical decode.
+test-export: generate
+	$(PY) -m pytest -q tests/export
+
 test-bench: generate
 	$(PY) -m pytest -q tests/bench
 

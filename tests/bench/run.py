@@ -36,7 +36,7 @@ LANG_ROWS = {
     "c": ("c",),
     "cpp": ("cpp",),
     "rust": ("rust",),
-    "python": ("python", "python-columns", "python-pure"),
+    "python": ("python", "python-columns", "python-export", "python-pure"),
 }
 
 
@@ -167,7 +167,7 @@ def table(rows: list[dict[str, str]], langs: list[str]) -> str:
             base[r["stream"]] = int(r["bytes"]) / float(r["seconds"])
     order = ["baseline"] + [row for lang in langs for row in LANG_ROWS[lang]]
     lang_rank = {name: i for i, name in enumerate(order)}
-    mode_rank = {"copy": 0, "frame": 1, "decode": 2}
+    mode_rank = {"copy": 0, "frame": 1, "decode": 2, "csv": 3, "parquet": 4}
     stream_rank = {s: i for i, s in enumerate(STREAMS)}
 
     def key(r: dict[str, str]):

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import textwrap
 
-from generator import model
+from generator import columns, model
 from generator.examples import example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
@@ -55,6 +55,7 @@ RUNTIME_FILES = [
     "session.py",
     "session_tool.py",
     "transport.py",
+    "tools.py",
     "_speedups.c",
     "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
 ]
@@ -659,6 +660,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         session = _session_context(m, sets)
         for name in SESSION_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
+        files[f"{root}/{pkg}/_columns.py"] = env.get_template("python/package/_columns.py.j2").render(
+            **ctx, **_columns_context(proto)
+        )
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
         files[f"{root}/setup.py"] = env.get_template("python/setup.py.j2").render(**ctx)
         files[f"{root}/MANIFEST.in"] = env.get_template("python/MANIFEST.in.j2").render(**ctx)
@@ -675,6 +679,39 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         for name, extra in tests.items():
             files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
     return files
+
+
+def _columns_context(proto: dict) -> dict:
+    """The export table of `_columns.py` (generator/columns.py), with paths as Python attributes."""
+    layouts = []
+    for s, f, v in columns.data_layouts(proto):
+        cols = []
+        for c in columns.layout_columns(proto, f, v):
+            path = tuple(x if isinstance(x, int) else py_attr(x) for x in c.path)
+            cols.append(
+                {"name": c.name, "path": pyrepr(path), "units": pyrepr(c.units), "kind": c.kind, "enum": pyrepr(c.enum)}
+            )
+        shapes = {
+            py_attr(q["name"]): columns.SHAPES[q["alias"]]
+            for q in v["params"]
+            if q.get("alias") in columns.SHAPES and q["count"] and q["count"].get("value") == columns.SIZES[q["alias"]]
+        }
+        key = f"(0x{s['id']:02X}, 0x{f['id']:02X}, {pyrepr(v['device'])})"
+        layouts.append({"key": key, "columns": cols, "shapes": pyrepr(shapes), "title": f["title"]})
+    used = {c["enum"] for lay in layouts for c in lay["columns"] if c["kind"] == "enum"}
+    enums = [
+        {"name": name, "values": sorted(values.items())}
+        for name, values in sorted(columns.enums(proto).items())
+        if pyrepr(name) in used
+    ]
+    return {
+        "layouts": layouts,
+        "enums": enums,
+        "times": [
+            {"set": f"0x{t[0]:02X}", "descriptor": f"0x{t[1]:02X}", "attr": py_attr(t[2]), "per_second": t[3]}
+            for t in columns.time_sources(proto)
+        ],
+    }
 
 
 def _runtime(proto: dict, dest: str) -> dict[str, str]:

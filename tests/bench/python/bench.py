@@ -20,7 +20,9 @@ object kept until the end of the pass), and lang=python-columns mode=decode line
 mipcodec.decode_columns(data): the columnar fast API (per-field tables of numbers built in C, no
 Python object per packet for the fields it reads; every other field entry as an object). Each pass runs over the whole file (read once, not
 timed); the best of the passes is printed. As in timeit, the garbage collector is off during a
-timed pass (--gc leaves it on). The packet and field counts of every timed pass are checked
+timed pass (--gc leaves it on). lang=python-export modes csv and parquet: `python -m mipcodec export
+<stream> --format csv|parquet --out TMP` on the accel_gyro streams (one table per field; the
+columnar path: decode_columns, numpy, pyarrow), file read and tables written included. The packet and field counts of every timed pass are checked
 against the sidecar (exit 1 on a mismatch); an untimed decode_all pass checks that every field
 decoded to a typed value and prints a checksum of one number of each.
 """
@@ -140,6 +142,30 @@ def check_values(mipcodec, data, lang, name, side) -> int:
     return 0
 
 
+def export_pass(mipcodec, path: Path, fmt: str, passes: int) -> tuple[float, int]:
+    """`python -m mipcodec export PATH --format FMT` (in this process, the columnar path with the
+    accelerator): best wall time of the passes (reading the file included) and the rows written."""
+    import contextlib
+    import importlib
+    import io
+    import tempfile
+
+    tools = importlib.import_module("mipcodec.tools")
+    best = math.inf
+    rows = 0
+    for _ in range(passes):
+        with tempfile.TemporaryDirectory() as out:
+            text = io.StringIO()
+            t0 = time.perf_counter()
+            with contextlib.redirect_stdout(text), contextlib.redirect_stderr(io.StringIO()):
+                status = tools.main(["export", str(path), "--format", fmt, "--out", out])
+            best = min(best, time.perf_counter() - t0)
+            if status != 0:
+                raise SystemExit(f"bench.py: export {path.name} --format {fmt}: exit status {status}")
+            rows = sum(int(line.rsplit(": ", 1)[1].split()[0]) for line in text.getvalue().splitlines())
+    return best, rows
+
+
 def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use_gc: bool) -> int:
     import mipcodec
 
@@ -174,6 +200,16 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
                 )
                 status = 1
             sys.stdout.flush()
+        if lang == "python" and name.startswith("accel_gyro"):
+            for fmt in ("csv", "parquet"):
+                seconds, rows = export_pass(mipcodec, directory / f"{name}.bin", fmt, max(1, min(passes, 3)))
+                print(
+                    f"BENCH lang=python-export stream={name} mode={fmt} packets={side['packets']} bytes={len(data)} seconds={seconds:.6f}"
+                )
+                if rows != side["fields"]:
+                    print(f"bench.py: export {name} {fmt}: {rows} rows, expected {side['fields']}", file=sys.stderr)
+                    status = 1
+                sys.stdout.flush()
     return status
 
 

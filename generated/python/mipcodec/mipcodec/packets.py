@@ -310,6 +310,7 @@ def decode_all(data: BytesLike, device: Optional[str] = None) -> List[DecodedEve
 
 # Column type codes of the C accelerator's tables, by item kind (see fast_items).
 _COLUMN_CODES = {"f": "d", "d": "d", "i": "q", "u": "Q", "e": "Q", "F": "Q", "?": "B"}
+_NUMPY_TYPES = {"f": "float64", "d": "float64", "i": "int64", "u": "uint64", "e": "uint64", "F": "uint64", "?": "uint8"}
 
 
 class Table:
@@ -353,6 +354,56 @@ class Table:
                 raw = [v == 1 for v in raw]
             vals.append(raw[0] if count < 0 else raw)
         return self.cls(*vals)
+
+    def arrays(self) -> Dict[str, Any]:
+        """The columns as numpy arrays shaped by the spec (needs numpy): one row per entry.
+
+        A scalar parameter is an array of n values, a vector n x 3, a quaternion n x 4, a 3x3
+        matrix n x 3 x 3, any other fixed array n x count; floats float64 (float32 values widen
+        exactly), signed integers int64, unsigned integers, enums and bitfields uint64, bools bool.
+        Row i belongs to the packet at `offsets[i]` (`np.asarray(table.offsets)`).
+
+            import numpy as np
+            cols = decode_columns(data)
+            accel = cols.tables[(0x80, 0x04)].arrays()["scaled_accel"]   # shape (n, 3)
+            norm = np.linalg.norm(accel, axis=1)
+        """
+        try:
+            import numpy as np
+        except ImportError:
+            raise ImportError("Table.arrays needs numpy: pip install numpy") from None
+        from . import _columns
+
+        shapes = _columns.SHAPES.get((self.cls.SET, self.cls.DESCRIPTOR, self.cls.DEVICE), {})
+        out: Dict[str, Any] = {}
+        for attr, kind, _size, count, _aux in self._items:
+            a = np.frombuffer(self.columns[attr], dtype=_NUMPY_TYPES[kind])
+            if kind == "?":
+                a = a.astype(bool)
+            if count >= 0:
+                a = a.reshape((self.rows,) + tuple(shapes.get(attr, (count,))))
+            out[attr] = a
+        return out
+
+    def dataframe(self) -> Any:
+        """The columns as a pandas DataFrame (needs pandas): one row per entry, one column per
+        value, named as in `export` (`scaled_accel.x`, ...), and "offset"."""
+        try:
+            import numpy as np
+            import pandas as pd
+        except ImportError:
+            raise ImportError("Table.dataframe needs pandas: pip install pandas") from None
+        from . import _columns
+
+        specs = _columns.COLUMNS.get((self.cls.SET, self.cls.DESCRIPTOR, self.cls.DEVICE), ())
+        arrays = self.arrays()
+        data: Dict[str, Any] = {"offset": np.frombuffer(self.offsets, dtype=np.int64)}
+        for name, path, _units, _kind, _enum in specs:
+            a = arrays[path[0]]
+            if len(path) > 1:
+                a = a.reshape(self.rows, -1)[:, path[1]]
+            data[name] = a
+        return pd.DataFrame(data)
 
     def __repr__(self) -> str:
         return f"Table(set=0x{self.set:02X}, descriptor=0x{self.descriptor:02X}, {self.cls.__name__}, rows={self.rows})"

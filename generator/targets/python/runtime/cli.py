@@ -136,7 +136,12 @@ def main(argv: Optional[List[str]] = None) -> int:
         command, rest = args[0], args[1:]
         if command in ("-h", "--help", "help"):
             print(USAGE)
+            print(f"python -m {PROG} export|info|plot --help: recorded logs to tables, summaries and plots")
             return 0
+        if command in ("export", "info", "plot"):
+            from .tools import main as tools_main  # the user commands (optional libraries, see tools)
+
+            return tools_main(args)
         if command == "decode":
             if "-h" in rest or "--help" in rest:
                 print(USAGE)

@@ -161,83 +161,216 @@ void codec_jw_chars(codec_jw_t *w, const char *v, size_t n) {
 
 /* ------------------------------------------------------------------ numbers */
 
-/* Significant digits of a "%.*e" text and its exponent: text = d.ddd e x. */
-static void split_e(const char *text, char *digits, int *n, int *x) {
-    const char *s = text;
-    *n = 0;
-    if (*s == '-') {
-        s++;
+/* Shortest round-trip digits (Python's repr(float)): the free-format algorithm of Steele & White
+ * as given by Burger & Dybvig ("Printing Floating-Point Numbers Quickly and Accurately", PLDI
+ * 1996), in exact integer arithmetic. v = r / s x 10^k; the decimals that read back as v are those
+ * strictly inside (or, for an even mantissa, on the edge of) v's rounding interval, whose
+ * half-widths are m- and m+ in the same units. Digits are generated until the number so far is
+ * within the interval; the last digit is the one closer to v (round half to even on a tie). No
+ * snprintf/strtod search; tests/json_float_test.cpp compares it with an independent reference on
+ * every float32 (JSON_FLOAT_EXHAUSTIVE=1), a stride of them, random and boundary doubles. */
+#define BIG_LIMBS 40 /* 1280 bits: r, s, m+, m- stay under 2^1140 for every finite double */
+
+typedef struct {
+    uint32_t d[BIG_LIMBS]; /* little-endian limbs */
+    int n;                 /* limbs in use (no leading zero limbs; 0 for zero) */
+} big_t;
+
+static void big_set(big_t *a, uint64_t v) {
+    a->n = 0;
+    while (v) {
+        a->d[a->n++] = (uint32_t)v;
+        v >>= 32;
     }
-    for (; *s && *s != 'e'; s++) {
-        if (*s >= '0' && *s <= '9') {
-            digits[(*n)++] = *s;
+}
+
+static void big_mul_small(big_t *a, uint32_t m) {
+    uint64_t carry = 0;
+    int i;
+    for (i = 0; i < a->n; i++) {
+        uint64_t t = (uint64_t)a->d[i] * m + carry;
+        a->d[i] = (uint32_t)t;
+        carry = t >> 32;
+    }
+    if (carry) {
+        a->d[a->n++] = (uint32_t)carry;
+    }
+}
+
+static void big_shl(big_t *a, int bits) {
+    int limbs = bits / 32;
+    int shift = bits % 32;
+    int i;
+    if (a->n == 0) {
+        return;
+    }
+    if (shift) {
+        uint32_t carry = 0;
+        for (i = 0; i < a->n; i++) {
+            uint32_t next = a->d[i] >> (32 - shift);
+            a->d[i] = (a->d[i] << shift) | carry;
+            carry = next;
         }
+        if (carry) {
+            a->d[a->n++] = carry;
+        }
+    }
+    if (limbs) {
+        for (i = a->n - 1; i >= 0; i--) {
+            a->d[i + limbs] = a->d[i];
+        }
+        for (i = 0; i < limbs; i++) {
+            a->d[i] = 0;
+        }
+        a->n += limbs;
+    }
+}
+
+static void big_mul_pow10(big_t *a, int k) {
+    for (; k >= 9; k -= 9) {
+        big_mul_small(a, 1000000000u);
+    }
+    for (; k > 0; k--) {
+        big_mul_small(a, 10u);
+    }
+}
+
+static int big_cmp(const big_t *a, const big_t *b) {
+    int i;
+    if (a->n != b->n) {
+        return a->n < b->n ? -1 : 1;
+    }
+    for (i = a->n - 1; i >= 0; i--) {
+        if (a->d[i] != b->d[i]) {
+            return a->d[i] < b->d[i] ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+/* Compare a + b with c. */
+static int big_cmp_sum(const big_t *a, const big_t *b, const big_t *c) {
+    big_t t;
+    uint64_t carry = 0;
+    int n = a->n > b->n ? a->n : b->n;
+    int i;
+    for (i = 0; i < n; i++) {
+        uint64_t x = (uint64_t)(i < a->n ? a->d[i] : 0) + (i < b->n ? b->d[i] : 0) + carry;
+        t.d[i] = (uint32_t)x;
+        carry = x >> 32;
+    }
+    if (carry) {
+        t.d[n++] = (uint32_t)carry;
+    }
+    t.n = n;
+    return big_cmp(&t, c);
+}
+
+/* a -= b (a >= b). */
+static void big_sub(big_t *a, const big_t *b) {
+    int64_t borrow = 0;
+    int i;
+    for (i = 0; i < a->n; i++) {
+        int64_t x = (int64_t)a->d[i] - (i < b->n ? b->d[i] : 0) - borrow;
+        borrow = x < 0;
+        a->d[i] = (uint32_t)x;
+    }
+    while (a->n > 0 && a->d[a->n - 1] == 0) {
+        a->n--;
+    }
+}
+
+/* Shortest digits of v (finite, > 0), closest to v among the shortest; x = scientific exponent. */
+static void shortest(double v, char *digits, int *n, int *x) {
+    uint64_t bits;
+    uint64_t f;
+    int e;
+    int be;
+    int even;
+    int unequal;
+    int k;
+    int bitlen = 0;
+    big_t r;
+    big_t s;
+    big_t mp;
+    big_t mm;
+    memcpy(&bits, &v, sizeof bits);
+    be = (int)((bits >> 52) & 0x7FF);
+    f = bits & 0xFFFFFFFFFFFFFull;
+    if (be == 0) {
+        e = -1074;
+    } else {
+        f |= 1ull << 52;
+        e = be - 1075;
+    }
+    even = (f & 1) == 0;
+    unequal = f == (1ull << 52) && be > 1; /* the gap below v is half the gap above */
+    big_set(&r, f);
+    big_set(&s, 1);
+    big_set(&mp, 1);
+    big_set(&mm, 1);
+    if (e >= 0) {
+        big_shl(&r, e + (unequal ? 2 : 1));
+        big_set(&s, unequal ? 4 : 2);
+        big_shl(&mp, e + (unequal ? 1 : 0));
+        big_shl(&mm, e);
+    } else {
+        big_shl(&r, unequal ? 2 : 1);
+        big_shl(&s, (unequal ? 2 : 1) - e);
+        big_set(&mp, unequal ? 2 : 1);
+    }
+    /* k = ceil(log10(v)) or one less, from the binary exponent; fixed below. */
+    while (bitlen < 64 && (f >> bitlen) != 0) {
+        bitlen++;
+    }
+    {
+        double est = (e + bitlen - 1) * 0.30102999566398114 - 1e-10; /* log10(2^(e+bitlen-1)) */
+        k = (int)est;
+        k += est > (double)k; /* ceil, without libm */
+    }
+    if (k >= 0) {
+        big_mul_pow10(&s, k);
+    } else {
+        big_mul_pow10(&r, -k);
+        big_mul_pow10(&mp, -k);
+        big_mul_pow10(&mm, -k);
+    }
+    /* v + m+ reaches 10^k: one more digit before the point. */
+    while (even ? big_cmp_sum(&r, &mp, &s) >= 0 : big_cmp_sum(&r, &mp, &s) > 0) {
+        big_mul_small(&s, 10);
+        k++;
+    }
+    *n = 0;
+    for (;;) {
+        int d = 0;
+        int low;
+        int high;
+        big_mul_small(&r, 10);
+        big_mul_small(&mp, 10);
+        big_mul_small(&mm, 10);
+        while (big_cmp(&r, &s) >= 0) {
+            big_sub(&r, &s);
+            d++;
+        }
+        low = even ? big_cmp(&r, &mm) <= 0 : big_cmp(&r, &mm) < 0;
+        high = even ? big_cmp_sum(&r, &mp, &s) >= 0 : big_cmp_sum(&r, &mp, &s) > 0;
+        if (!low && !high) {
+            digits[(*n)++] = (char)('0' + d);
+            continue;
+        }
+        if (low && high) {
+            int c = big_cmp_sum(&r, &r, &s); /* 2r against s: which of d, d + 1 is closer */
+            if (c > 0 || (c == 0 && (d & 1))) {
+                d++;
+            }
+        } else if (high) {
+            d++;
+        }
+        digits[(*n)++] = (char)('0' + d);
+        break;
     }
     digits[*n] = '\0';
-    *x = *s == 'e' ? (int)strtol(s + 1, NULL, 10) : 0;
-}
-
-/* True when digits (d1.d2...dn) x 10^x, read back by strtod, is exactly v. */
-static int round_trips(double v, const char *digits, int n, int x) {
-    char text[48];
-    snprintf(text, sizeof text, "%c.%se%d", digits[0], n > 1 ? digits + 1 : "0", x);
-    return strtod(text, NULL) == v;
-}
-
-/* The next decimal of n digits above (delta = +1) or below (delta = -1). */
-static void neighbour(const char *digits, int n, int x, int delta, char *out, int *out_x) {
-    int i;
-    memcpy(out, digits, (size_t)n + 1);
-    *out_x = x;
-    if (delta > 0) {
-        for (i = n - 1; i >= 0 && out[i] == '9'; i--) {
-            out[i] = '0';
-        }
-        if (i < 0) {
-            out[0] = '1'; /* 99..9 -> 10..0 of the next decade */
-            *out_x = x + 1;
-        } else {
-            out[i]++;
-        }
-    } else {
-        for (i = n - 1; i >= 0 && out[i] == '0'; i--) {
-            out[i] = '9';
-        }
-        if (i == 0 && out[0] == '1') {
-            memset(out, '9', (size_t)n); /* 10..0 -> 99..9 of the previous decade */
-            *out_x = x - 1;
-        } else if (i >= 0) {
-            out[i]--;
-        }
-    }
-}
-
-/* Shortest digits that round-trip to v (finite, > 0), and the scientific exponent. */
-static void shortest(double v, char *digits, int *n, int *x) {
-    int prec;
-    char text[48];
-    for (prec = 1; prec <= 17; prec++) {
-        char alt[24];
-        int alt_x;
-        int delta;
-        snprintf(text, sizeof text, "%.*e", prec - 1, v);
-        split_e(text, digits, n, x);
-        if (strtod(text, NULL) == v) {
-            return;
-        }
-        /* The correctly rounded decimal may fall outside v's rounding interval on the narrow
-         * side while the one on the other side is inside: that one is shorter still. */
-        for (delta = -1; delta <= 1; delta += 2) {
-            neighbour(digits, *n, *x, delta, alt, &alt_x);
-            if (round_trips(v, alt, *n, alt_x)) {
-                memcpy(digits, alt, (size_t)*n + 1);
-                *x = alt_x;
-                return;
-            }
-        }
-    }
-    snprintf(text, sizeof text, "%.16e", v);
-    split_e(text, digits, n, x);
+    *x = k - 1;
 }
 
 static size_t put(char *buf, size_t cap, size_t len, char c) {

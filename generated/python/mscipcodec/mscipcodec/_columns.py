@@ -1,0 +1,87 @@
+"""Export table of the Memsense MS-CIP, generated from the IR (generator/columns.py).
+
+What the `export`, `info` and `plot` commands (`mscipcodec.tools`) and `Table.arrays` need to
+know about the data fields, taken from the spec rather than written by hand:
+
+- `COLUMNS[(set, descriptor, device)]`: one entry per value a row of that field layout holds:
+  (column name, path to the value in the decoded dataclass (attributes and indices), units or
+  None, kind ("float32", "float64", "int", "bool", "enum", "bits", "json"), enum type name or None);
+- `SHAPES[(set, descriptor, device)]`: fixed-array parameters with a spec shape (vector 3,
+  quaternion 4, matrix 3x3), by attribute;
+- `ENUMS[type name]`: value -> name of every enum a column uses;
+- `TIMES`: (set, descriptor, attribute, counts per second) of the shared fields giving a
+  packet its time (value / counts seconds), in order of preference;
+- `TITLES[(set, descriptor, device)]`: the field's title.
+"""
+
+from __future__ import annotations
+
+from typing import Dict, Optional, Tuple
+
+Key = Tuple[int, int, Optional[str]]
+ColumnSpec = Tuple[str, Tuple, Optional[str], str, Optional[str]]
+
+COLUMNS: Dict[Key, Tuple[ColumnSpec, ...]] = {
+    (0xA2, 0x81, None): (
+        ("scaled_accel.accel.x", ("accel", 0), "g", "float32", None),
+        ("scaled_accel.accel.y", ("accel", 1), "g", "float32", None),
+        ("scaled_accel.accel.z", ("accel", 2), "g", "float32", None),
+    ),
+    (0xA2, 0x82, None): (
+        ("scaled_gyro.gyro.x", ("gyro", 0), "deg/s", "float32", None),
+        ("scaled_gyro.gyro.y", ("gyro", 1), "deg/s", "float32", None),
+        ("scaled_gyro.gyro.z", ("gyro", 2), "deg/s", "float32", None),
+    ),
+    (0xA2, 0x83, None): (
+        ("scaled_mag.mag.x", ("mag", 0), "gauss", "float32", None),
+        ("scaled_mag.mag.y", ("mag", 1), "gauss", "float32", None),
+        ("scaled_mag.mag.z", ("mag", 2), "gauss", "float32", None),
+    ),
+    (0xA2, 0x84, None): (
+        ("delta_theta.x", ("delta_theta", 0), "rad", "float32", None),
+        ("delta_theta.y", ("delta_theta", 1), "rad", "float32", None),
+        ("delta_theta.z", ("delta_theta", 2), "rad", "float32", None),
+    ),
+    (0xA2, 0x85, None): (
+        ("delta_velocity.x", ("delta_velocity", 0), "m/s", "float32", None),
+        ("delta_velocity.y", ("delta_velocity", 1), "m/s", "float32", None),
+        ("delta_velocity.z", ("delta_velocity", 2), "m/s", "float32", None),
+    ),
+    (0xA2, 0x86, None): (("scaled_pressure.pressure", ("pressure",), "mbar", "float32", None),),
+    (0xA2, 0x87, None): (("scaled_temperature.temperature", ("temperature",), "degC", "float32", None),),
+    (0xA2, 0x88, None): (
+        ("gps_correlated_time.seconds", ("seconds",), "s", "float64", None),
+        ("gps_correlated_time.week", ("week",), "weeks", "int", None),
+        ("gps_correlated_time.flags", ("flags",), None, "bits", None),
+    ),
+    (0xA2, 0x89, None): (
+        ("scaled_aux_accel.accel.x", ("accel", 0), "g", "float32", None),
+        ("scaled_aux_accel.accel.y", ("accel", 1), "g", "float32", None),
+        ("scaled_aux_accel.accel.z", ("accel", 2), "g", "float32", None),
+    ),
+}
+
+SHAPES: Dict[Key, Dict[str, Tuple[int, ...]]] = {
+    (0xA2, 0x81, None): {"accel": (3,)},
+    (0xA2, 0x82, None): {"gyro": (3,)},
+    (0xA2, 0x83, None): {"mag": (3,)},
+    (0xA2, 0x84, None): {"delta_theta": (3,)},
+    (0xA2, 0x85, None): {"delta_velocity": (3,)},
+    (0xA2, 0x89, None): {"accel": (3,)},
+}
+
+TITLES: Dict[Key, str] = {
+    (0xA2, 0x81, None): "Scaled acceleration vector",
+    (0xA2, 0x82, None): "Scaled angular rate vector",
+    (0xA2, 0x83, None): "Scaled magnetic field vector",
+    (0xA2, 0x84, None): "Scaled delta theta vector",
+    (0xA2, 0x85, None): "Scaled delta velocity vector",
+    (0xA2, 0x86, None): "Scaled pressure",
+    (0xA2, 0x87, None): "Scaled temperature",
+    (0xA2, 0x88, None): "GPS correlated time",
+    (0xA2, 0x89, None): "Scaled aux accel vector",
+}
+
+ENUMS: Dict[str, Dict[int, str]] = {}
+
+TIMES: Tuple[Tuple[int, int, str, int], ...] = ()

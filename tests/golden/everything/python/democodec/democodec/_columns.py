@@ -1,0 +1,60 @@
+"""Export table of the Demo protocol with every spec feature, generated from the IR (generator/columns.py).
+
+What the `export`, `info` and `plot` commands (`democodec.tools`) and `Table.arrays` need to
+know about the data fields, taken from the spec rather than written by hand:
+
+- `COLUMNS[(set, descriptor, device)]`: one entry per value a row of that field layout holds:
+  (column name, path to the value in the decoded dataclass (attributes and indices), units or
+  None, kind ("float32", "float64", "int", "bool", "enum", "bits", "json"), enum type name or None);
+- `SHAPES[(set, descriptor, device)]`: fixed-array parameters with a spec shape (vector 3,
+  quaternion 4, matrix 3x3), by attribute;
+- `ENUMS[type name]`: value -> name of every enum a column uses;
+- `TIMES`: (set, descriptor, attribute, counts per second) of the shared fields giving a
+  packet its time (value / counts seconds), in order of preference;
+- `TITLES[(set, descriptor, device)]`: the field's title.
+"""
+
+from __future__ import annotations
+
+from typing import Dict, Optional, Tuple
+
+Key = Tuple[int, int, Optional[str]]
+ColumnSpec = Tuple[str, Tuple, Optional[str], str, Optional[str]]
+
+COLUMNS: Dict[Key, Tuple[ColumnSpec, ...]] = {
+    (0x90, 0x01, None): (
+        ("sample.quat.w", ("quat", 0), None, "float32", None),
+        ("sample.quat.x", ("quat", 1), None, "float32", None),
+        ("sample.quat.y", ("quat", 2), None, "float32", None),
+        ("sample.quat.z", ("quat", 3), None, "float32", None),
+        ("sample.big", ("big",), None, "int", None),
+        ("sample.small", ("small",), None, "int", None),
+        ("sample.f", ("f",), None, "float32", None),
+    ),
+    (0x91, 0x03, None): (
+        ("llh_position.latitude", ("latitude",), "deg", "float64", None),
+        ("llh_position.longitude", ("longitude",), "deg", "float64", None),
+        ("llh_position.valid_flags", ("valid_flags",), None, "int", None),
+    ),
+    (0x92, 0x03, None): (
+        ("llh_position.latitude", ("latitude",), "deg", "float64", None),
+        ("llh_position.longitude", ("longitude",), "deg", "float64", None),
+        ("llh_position.valid_flags", ("valid_flags",), None, "int", None),
+    ),
+    (0xFF, 0xD3, None): (("timestamp.nanoseconds", ("nanoseconds",), None, "int", None),),
+}
+
+SHAPES: Dict[Key, Dict[str, Tuple[int, ...]]] = {
+    (0x90, 0x01, None): {"quat": (4,)},
+}
+
+TITLES: Dict[Key, str] = {
+    (0x90, 0x01, None): "Sample",
+    (0x91, 0x03, None): "LLH position",
+    (0x92, 0x03, None): "LLH position",
+    (0xFF, 0xD3, None): "Timestamp",
+}
+
+ENUMS: Dict[str, Dict[int, str]] = {}
+
+TIMES: Tuple[Tuple[int, int, str, int], ...] = ()

@@ -1,0 +1,1106 @@
+"""User commands for recorded logs: export to tables, summarise, plot (`python -m democodec export|info|plot`).
+
+    python -m democodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
+                                  [--enum-numbers] [--device ID] [--follow [--idle S]]
+    python -m democodec info LOG [--device ID]
+    python -m democodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID]
+
+Column names, units and enum names come from the spec through the generated `_columns` table.
+The core package needs nothing beyond Python; Parquet needs pyarrow, plots matplotlib, the
+progress bar tqdm (the package's `[export]`, `[plot]` extras), and the commands name the extra to
+install when one is missing. Exit status: 0, 1 on a failed write, 2 on a usage error or unreadable
+input; messages are one line on stderr.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import os
+import struct
+import sys
+import time
+from typing import Any, Dict, Iterator, List, Optional, Tuple
+
+from . import _columns, registry
+from ._protocol import FIRST_SHARED, SET_OFFSET, SYNC, TIMESTAMPS
+from ._protocol import PACKAGE as PROG
+from .framing import fletcher16
+from .packets import DecodedField, Decoder, Packet
+
+CHUNK = 1 << 16
+_F32 = struct.Struct(">f")
+EXTRAS = {"pyarrow": "export", "numpy": "export", "matplotlib": "plot", "tqdm": "export"}
+
+
+class ToolError(Exception):
+    """A problem the user can fix: printed as one line, exit status `status`."""
+
+    def __init__(self, message: str, status: int = 2) -> None:
+        super().__init__(message)
+        self.status = status
+
+
+def need(module: str) -> Any:
+    """Import an optional library or say which extra installs it."""
+    import importlib
+
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        extra = EXTRAS.get(module.split(".")[0], "export")
+        raise ToolError(
+            f"{module} is not installed: pip install '{PROG}[{extra}]' (or pip install {module.split('.')[0]})"
+        ) from None
+
+
+# ------------------------------------------------------------------------------ values to cells
+def f32_text(v: float) -> str:
+    """Shortest text that reads back as the same float32 (the value as the device sent it)."""
+    if v != v or v in (math.inf, -math.inf):
+        return repr(float(v))
+    for digits in range(6, 10):
+        text = f"{v:.{digits}g}"
+        if _F32.unpack(_F32.pack(float(text)))[0] == v:
+            return repr(float(text)) if "e" not in text else text
+    return repr(float(v))
+
+
+def plain(v: Any) -> Any:
+    """A decoded value as plain JSON data (dataclasses as objects, bytes as latin-1 text)."""
+    if isinstance(v, (bytes, bytearray)):
+        return bytes(v).decode("latin-1")
+    if isinstance(v, (list, tuple)):
+        return [plain(x) for x in v]
+    if isinstance(v, bool) or v is None:
+        return v
+    if isinstance(v, int):
+        return int(v)
+    if isinstance(v, float):
+        return float(v) if v == v and abs(v) != math.inf else repr(float(v))
+    names = getattr(v, "_ATTRS", None)
+    if names is not None:
+        return {a: plain(getattr(v, a)) for a in names}
+    return str(v)
+
+
+def _get(value: Any, path: Tuple) -> Any:
+    for step in path:
+        if value is None:
+            return None
+        value = value[step] if isinstance(step, int) else getattr(value, step, None)
+    return value
+
+
+class Layout:
+    """The columns of one field layout class: names with units, and how to read each value."""
+
+    def __init__(self, cls: Any, enum_numbers: bool) -> None:
+        self.cls = cls
+        key = (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
+        self.specs = _columns.COLUMNS.get(key, ())
+        self.enum_numbers = enum_numbers
+        self.headers = [header(name, units) for name, _p, units, _k, _e in self.specs]
+        self.f32 = [i for i, spec in enumerate(self.specs) if spec[3] == "float32"]
+
+    def cells(self, value: Any) -> List[Any]:
+        """Typed cells of one decoded value: float, int, bool, str or None (absent)."""
+        out: List[Any] = []
+        for _name, path, _units, kind, enum in self.specs:
+            v = _get(value, path)
+            if v is None:
+                out.append(None)
+            elif kind == "json":
+                out.append(json.dumps(plain(v), separators=(",", ":")))
+            elif kind == "enum":
+                n = int(v)
+                out.append(n if self.enum_numbers else _columns.ENUMS.get(enum or "", {}).get(n, n))
+            elif kind == "bool":
+                out.append(bool(v))
+            elif kind in ("int", "bits"):
+                out.append(int(v))
+            else:
+                out.append(float(v))
+        return out
+
+
+def header(name: str, units: Optional[str]) -> str:
+    return f"{name} [{units}]" if units else name
+
+
+TIME_HEADER = "time [s]"
+
+
+def packet_time(packet: Packet) -> Optional[float]:
+    """Seconds from the packet's shared timestamp (the generated TIMES order), or None."""
+    found: Dict[Tuple[int, int], float] = {}
+    for f in packet.fields:
+        if isinstance(f, DecodedField):
+            cls = type(f.value)
+            for s, d, attr, per_second in _columns.TIMES:
+                if cls.SET == s and cls.DESCRIPTOR == d:
+                    found[(s, d)] = getattr(f.value, attr) / per_second
+    for s, d, _attr, _per_second in _columns.TIMES:
+        if (s, d) in found:
+            return found[(s, d)]
+    return None
+
+
+def table_name(set_id: int, cls: Any) -> str:
+    """File stem of a (set, field layout) table: <set name>.[shared.]<field name>[.<device>]
+    (`shared.` for the shared data fields a packet of the set carries)."""
+    shared = "shared." if cls.SET != set_id else ""
+    base = f"{registry.SET_NAMES.get(set_id, f'set_{set_id:02x}')}.{shared}{cls.NAME}"
+    return f"{base}.{cls.DEVICE}" if cls.DEVICE else base
+
+
+def select(headers: List[str], fields: Optional[List[str]]) -> List[int]:
+    """Indices of the headers that `--fields` selects (a column name, or any prefix ending at . or [)."""
+    if not fields:
+        return list(range(len(headers)))
+    out = []
+    for i, h in enumerate(headers):
+        name = h.split(" [")[0]
+        if any(name == f or name.startswith(f + ".") or name.startswith(f + "[") for f in fields):
+            out.append(i)
+    return out
+
+
+# ------------------------------------------------------------------------------------ sources
+class Source:
+    """The bytes of a log: a file (optionally followed as it grows) or stdin, in chunks."""
+
+    def __init__(self, path: str, follow: bool = False, idle: Optional[float] = None, progress: bool = True) -> None:
+        self.path = path
+        self.follow = follow
+        self.idle = idle
+        if path == "-":
+            self.file = sys.stdin.buffer
+            self.size = None
+        else:
+            try:
+                self.file = open(path, "rb")
+            except OSError as e:
+                raise ToolError(f"cannot open {path!r}: {e.strerror or e}") from None
+            self.size = None if follow else os.fstat(self.file.fileno()).st_size
+        self.bar = _progress(self.size) if progress and sys.stderr.isatty() and self.size else None
+
+    def chunks(self) -> Iterator[bytes]:
+        read = getattr(self.file, "read1", self.file.read)
+        quiet_since = time.monotonic()
+        try:
+            while True:
+                try:
+                    chunk = read(CHUNK)
+                except OSError as e:
+                    raise ToolError(f"cannot read {self.path}: {e.strerror or e}") from None
+                if chunk:
+                    quiet_since = time.monotonic()
+                    if self.bar is not None:
+                        self.bar.update(len(chunk))
+                    yield chunk
+                    continue
+                if not self.follow:
+                    return
+                if self.idle is not None and time.monotonic() - quiet_since >= self.idle:
+                    return
+                time.sleep(0.05)
+        finally:
+            if self.bar is not None:
+                self.bar.close()
+            if self.file is not sys.stdin.buffer:
+                self.file.close()
+
+    def read_all(self) -> bytes:
+        return b"".join(self.chunks())
+
+
+def _progress(total: int) -> Any:
+    """A tqdm bar in bytes (with bytes/s) on stderr, or None when tqdm is not installed."""
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        return None
+    return tqdm(total=total, unit="B", unit_scale=True, unit_divisor=1024, file=sys.stderr, leave=False)
+
+
+def events(source: Source, device: Optional[str]) -> Iterator[Any]:
+    """Decoded events (Packet, Skip) of the source, chunk by chunk."""
+    decoder = Decoder(device)
+    for chunk in source.chunks():
+        yield from decoder.feed(chunk)
+    yield from decoder.flush()
+
+
+# --------------------------------------------------------------------------------- table model
+class Rows:
+    """One output table: headers, then rows of typed cells; written by a Writer."""
+
+    def __init__(self, name: str, headers: List[str], keep: List[int]) -> None:
+        self.name = name
+        self.keep = keep
+        self.headers = [TIME_HEADER, "offset"] + [headers[i] for i in keep]
+        self.count = 0
+
+
+class CsvWriter:
+    suffix = ".csv"
+
+    def __init__(self, path: str, headers: List[str]) -> None:
+        self.file = open(path, "w", newline="", encoding="utf-8")
+        self.csv = csv.writer(self.file, lineterminator="\n")
+        # Headers quoted, as pyarrow writes them on the fast path: the files are the same bytes.
+        csv.writer(self.file, lineterminator="\n", quoting=csv.QUOTE_ALL).writerow(headers)
+
+    def write(self, rows: List[List[Any]]) -> None:
+        self.csv.writerows([[_cell_text(c) for c in row] for row in rows])
+
+    def flush(self) -> None:
+        self.file.flush()
+
+    def close(self) -> None:
+        self.file.close()
+
+
+def _cell_text(c: Any) -> str:
+    if c is None:
+        return ""
+    if c is True:
+        return "true"
+    if c is False:
+        return "false"
+    if isinstance(c, _F32Cell):
+        return c.text
+    if isinstance(c, float):
+        return repr(c) if c == c else "nan"
+    return str(c)
+
+
+class _F32Cell(float):
+    """A float32 value: prints as its shortest float32 text in CSV."""
+
+    @property
+    def text(self) -> str:
+        return f32_text(self)
+
+
+class JsonlWriter:
+    suffix = ".jsonl"
+
+    def __init__(self, path: str, headers: List[str]) -> None:
+        self.file = open(path, "w", encoding="utf-8")
+        self.headers = headers
+
+    def write(self, rows: List[List[Any]]) -> None:
+        out = []
+        for row in rows:
+            obj = {h: (_json_float(c) if isinstance(c, float) else c) for h, c in zip(self.headers, row)}
+            out.append(json.dumps(obj, separators=(",", ":"), allow_nan=False))
+        self.file.write("\n".join(out) + "\n" if out else "")
+
+    def flush(self) -> None:
+        self.file.flush()
+
+    def close(self) -> None:
+        self.file.close()
+
+
+def _json_float(c: float) -> Any:
+    if c != c or abs(c) == math.inf:
+        return repr(float(c))  # "nan", "inf", "-inf" as strings (JSON has no such numbers)
+    if isinstance(c, _F32Cell):
+        return float(c.text)
+    return c
+
+
+class ParquetWriter:
+    """Parquet by pyarrow, in row groups of up to 65536 rows (bounded memory)."""
+
+    suffix = ".parquet"
+    GROUP = 65536
+
+    def __init__(self, path: str, headers: List[str]) -> None:
+        self.pa = need("pyarrow")
+        self.pq = need("pyarrow.parquet")
+        self.path = path
+        self.headers = headers
+        self.pending: List[List[Any]] = []
+        self.writer: Any = None
+        self.types: Optional[List[Any]] = None
+
+    def _type(self, cells: List[Any]) -> Any:
+        pa = self.pa
+        sample = next((c for c in cells if c is not None), None)
+        if isinstance(sample, _F32Cell):
+            return pa.float32()
+        if isinstance(sample, bool):
+            return pa.bool_()
+        if isinstance(sample, int):
+            return pa.uint64() if any(c is not None and c >= 1 << 63 for c in cells) else pa.int64()
+        if isinstance(sample, float):
+            return pa.float64()
+        return pa.string()
+
+    def write(self, rows: List[List[Any]]) -> None:
+        self.pending.extend(rows)
+        if len(self.pending) >= self.GROUP:
+            self._emit()
+
+    def _emit(self) -> None:
+        if not self.pending:
+            return
+        cols = list(zip(*self.pending))
+        self.pending = []
+        if self.types is None:
+            self.types = [self._type(list(c)) for c in cols]
+            self.types[1] = self.pa.uint64()
+        arrays = []
+        for c, t in zip(cols, self.types):
+            if t == self.pa.string():
+                c = [None if x is None else str(x) for x in c]
+            arrays.append(self.pa.array(c, type=t))
+        table = self.pa.Table.from_arrays(arrays, names=self.headers)
+        if self.writer is None:
+            self.writer = self.pq.ParquetWriter(self.path, table.schema)
+        self.writer.write_table(table)
+
+    def flush(self) -> None:
+        pass
+
+    def close(self) -> None:
+        self._emit()
+        if self.writer is None:  # no rows: an empty table with string columns
+            schema = self.pa.schema([(h, self.pa.string()) for h in self.headers])
+            self.pq.write_table(schema.empty_table(), self.path)
+        else:
+            self.writer.close()
+
+
+WRITERS = {"csv": CsvWriter, "jsonl": JsonlWriter, "parquet": ParquetWriter}
+
+
+# ------------------------------------------------------------------------------------- export
+def _typed(layout: Layout, value: Any) -> List[Any]:
+    """Cells of one value, float32 values marked so that they print as the device sent them."""
+    cells = layout.cells(value)
+    for i in layout.f32:
+        if cells[i] is not None:
+            cells[i] = _F32Cell(cells[i])
+    return cells
+
+
+class Exporter:
+    """Writes the tables of a stream of decoded packets (one per (set, layout), or per set with join)."""
+
+    def __init__(self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool, join: bool) -> None:
+        self.out = out
+        self.writer = WRITERS[fmt]
+        self.fields = fields
+        self.enum_numbers = enum_numbers
+        self.join = join
+        self.tables: Dict[Any, Tuple[Rows, Any, Optional[Layout]]] = {}
+        self.pending: Dict[Any, List[List[Any]]] = {}
+        self.layouts: Dict[Any, Layout] = {}
+        self.joined: Dict[int, Dict[str, Any]] = {}  # join: set -> {"rows": [...], "headers": {...}}
+        self.open_sample: Dict[int, Tuple[Any, Dict[str, Any]]] = {}
+
+    def layout(self, cls: Any) -> Layout:
+        lay = self.layouts.get(cls)
+        if lay is None:
+            lay = self.layouts[cls] = Layout(cls, self.enum_numbers)
+        return lay
+
+    def packet(self, p: Packet) -> None:
+        if p.set not in _DATA_SETS:
+            return
+        t = packet_time(p)
+        if self.join:
+            self._join(p, t)
+            return
+        for f in p.fields:
+            if not isinstance(f, DecodedField):
+                continue
+            cls = type(f.value)
+            key = (p.set, cls)
+            entry = self.tables.get(key)
+            if entry is None:
+                lay = self.layout(cls)
+                keep = select(lay.headers, self.fields)
+                if self.fields and not keep:
+                    self.tables[key] = entry = (None, None, None)
+                else:
+                    rows = Rows(table_name(p.set, cls), lay.headers, keep)
+                    path = os.path.join(self.out, rows.name + self.writer.suffix)
+                    self.tables[key] = entry = (rows, self.writer(path, rows.headers), lay)
+                    self.pending[key] = []
+            rows, _w, lay = entry
+            if rows is None:
+                continue
+            cells = _typed(lay, f.value)
+            self.pending[key].append([t, p.offset] + [cells[i] for i in rows.keep])
+            rows.count += 1
+            if len(self.pending[key]) >= 4096:
+                self._drain(key)
+
+    def _drain(self, key: Any) -> None:
+        rows = self.pending[key]
+        if rows:
+            self.tables[key][1].write(rows)
+            self.pending[key] = []
+
+    def _join(self, p: Packet, t: Optional[float]) -> None:
+        key = sample_key(p)
+        table = self.joined.setdefault(p.set, {"rows": [], "headers": {}})
+        current = self.open_sample.get(p.set)
+        if current is None or key is None or current[0] != key:
+            row: Dict[str, Any] = {TIME_HEADER: t, "offset": p.offset}
+            table["rows"].append(row)
+            self.open_sample[p.set] = (key, row)
+        else:
+            row = current[1]
+            if row.get(TIME_HEADER) is None:
+                row[TIME_HEADER] = t
+        for f in p.fields:
+            if not isinstance(f, DecodedField):
+                continue
+            lay = self.layout(type(f.value))
+            keep = select(lay.headers, self.fields)
+            cells = _typed(lay, f.value)
+            for i in keep:
+                h = lay.headers[i]
+                table["headers"].setdefault(h, None)
+                row.setdefault(h, cells[i])
+
+    def flush(self) -> None:
+        for key in list(self.pending):
+            self._drain(key)
+            self.tables[key][1].flush()
+
+    def close(self) -> List[Tuple[str, int]]:
+        written = []
+        if self.join:
+            for set_id, table in sorted(self.joined.items()):
+                headers = [TIME_HEADER, "offset"] + list(table["headers"])
+                if len(headers) == 2 and self.fields:
+                    continue
+                name = registry.SET_NAMES.get(set_id, f"set_{set_id:02x}")
+                w = self.writer(os.path.join(self.out, name + self.writer.suffix), headers)
+                w.write([[r.get(h) for h in headers] for r in table["rows"]])
+                w.close()
+                written.append((name + self.writer.suffix, len(table["rows"])))
+            return written
+        for key, (rows, w, _lay) in self.tables.items():
+            if rows is None:
+                continue
+            self._drain(key)
+            w.close()
+            written.append((rows.name + self.writer.suffix, rows.count))
+        return sorted(written)
+
+
+_DATA_SETS = frozenset(s for s, _d, _dev in _columns.COLUMNS)
+
+
+def sample_key(p: Packet) -> Optional[Tuple]:
+    """The sample key of a decoded packet (docs/conformance.md section 6): the leading shared
+    timestamp fields of the sample rule, as sent; None when it has none."""
+    key = []
+    for f in p.fields:
+        d = getattr(f, "descriptor", None)
+        if d is None or d < FIRST_SHARED:
+            break
+        if isinstance(f, DecodedField) and d in TIMESTAMPS and all(k[0] != d for k in key):
+            key.append((d, f.value.encode()))
+    return tuple(key) if key else None
+
+
+# ------------------------------------------------------------------------- columnar fast path
+BLOCK = 16 << 20  # bytes decoded by one decode_columns call on the fast path
+
+
+def _fast_path(args: argparse.Namespace) -> bool:
+    """The columnar path (decode_columns in C, numpy, pyarrow) applies: a whole file to CSV or
+    Parquet, one table per field, the accelerator built and numpy and pyarrow installed."""
+    from .framing import ACCELERATED
+
+    if args.log == "-" or args.follow or args.join or args.format not in ("csv", "parquet") or not ACCELERATED:
+        return False
+    try:
+        import numpy  # noqa: F401
+        import pyarrow  # noqa: F401
+    except ImportError:
+        return False
+    return os.environ.get(PROG.upper() + "_EXPORT_SLOW") is None
+
+
+class FastExporter:
+    """Exports per-field tables from decode_columns blocks: the numbers the C accelerator read as
+    numpy columns, every other entry (NaN, optional, nested, ...) through `Layout`, merged in
+    stream order; written by pyarrow (CSV or Parquet) block by block."""
+
+    def __init__(self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool) -> None:
+        import numpy as np
+        import pyarrow as pa
+
+        self.np, self.pa = np, pa
+        self.out, self.fmt, self.fields, self.enum_numbers = out, fmt, fields, enum_numbers
+        self.writers: Dict[Any, Any] = {}
+        self.counts: Dict[Any, int] = {}
+        self.schemas: Dict[Any, Any] = {}
+        import threading
+
+        self.lock = threading.Lock()
+        self.layouts: Dict[Any, Optional[Tuple[Layout, List[int]]]] = {}
+
+    def _layout(self, cls: Any) -> Optional[Tuple[Layout, List[int]]]:
+        if cls not in self.layouts:
+            lay = Layout(cls, self.enum_numbers)
+            keep = select(lay.headers, self.fields)
+            self.layouts[cls] = None if (self.fields and not keep) else (lay, keep)
+        return self.layouts[cls]
+
+    def block(self, cols: Any, data: Any, base: int) -> None:
+        """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
+        np = self.np
+        times: Dict[int, Tuple[Any, Any]] = {}  # set -> (packet offsets, seconds), sorted by offset
+        pieces: Dict[Any, List[Any]] = {}
+        for (set_id, _d), t in cols.tables.items():
+            if set_id not in _DATA_SETS or t.rows == 0:
+                continue
+            arrays = t.arrays()
+            for s, d, attr, per_second in reversed(_columns.TIMES):
+                if t.cls.SET == s and t.cls.DESCRIPTOR == d and attr in arrays:
+                    prev = times.get(set_id)
+                    sec = arrays[attr].astype(np.float64) / per_second
+                    times[set_id] = _merge_times(np, prev, (np.frombuffer(t.offsets, dtype=np.int64), sec))
+        other_rows: Dict[Any, List[Tuple[int, int, List[Any]]]] = {}
+        other_times: Dict[int, Dict[int, float]] = {}
+        for off, k, entry in cols.others:
+            if k < 0 or not isinstance(entry, DecodedField):
+                continue
+            packet_set = data[off + SET_OFFSET]
+            if packet_set not in _DATA_SETS:
+                continue
+            cls = type(entry.value)
+            for s, d, attr, per_second in _columns.TIMES:
+                if cls.SET == s and cls.DESCRIPTOR == d:
+                    other_times.setdefault(packet_set, {}).setdefault(off, getattr(entry.value, attr) / per_second)
+            chosen = self._layout(cls)
+            if chosen is not None:
+                other_rows.setdefault((packet_set, cls), []).append((off, k, _typed(chosen[0], entry.value)))
+        for set_id, extra in other_times.items():
+            o = np.fromiter(extra.keys(), dtype=np.int64, count=len(extra))
+            v = np.fromiter(extra.values(), dtype=np.float64, count=len(extra))
+            times[set_id] = _merge_times(np, times.get(set_id), (o, v))
+        for (set_id, _d), t in cols.tables.items():
+            if set_id not in _DATA_SETS or t.rows == 0 or self._layout(t.cls) is None:
+                continue
+            lay, keep = self._layout(t.cls)
+            arrays = t.arrays()
+            offs = np.frombuffer(t.offsets, dtype=np.int64)
+            cols_out: List[Any] = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            for i in keep:
+                _name, path, _units, kind, enum = lay.specs[i]
+                a = arrays[path[0]]
+                if len(path) > 1:
+                    a = a.reshape(t.rows, -1)[:, path[1]]
+                cols_out.append(self._column(a, kind, enum))
+            pieces.setdefault((set_id, t.cls), []).append((offs, np.frombuffer(t.index, dtype=np.int64), cols_out))
+        for (set_id, cls), rows in other_rows.items():
+            lay, keep = self._layout(cls)
+            offs = np.array([r[0] for r in rows], dtype=np.int64)
+            idx = np.array([r[1] for r in rows], dtype=np.int64)
+            cells = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            for i in keep:
+                cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
+            pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
+        # pyarrow formats and writes without the GIL: one table per thread.
+        if len(pieces) > 1 and (os.cpu_count() or 1) > 1:
+            from concurrent.futures import ThreadPoolExecutor
+
+            with ThreadPoolExecutor(max_workers=min(len(pieces), os.cpu_count() or 1)) as pool:
+                for done in [pool.submit(self._write, key, parts) for key, parts in pieces.items()]:
+                    done.result()
+        else:
+            for key, parts in pieces.items():
+                self._write(key, parts)
+
+    def _column(self, a: Any, kind: str, enum: Optional[str]) -> Any:
+        np, pa = self.np, self.pa
+        if kind == "float32":
+            return pa.array(a.astype(np.float32))
+        if kind == "enum" and not self.enum_numbers:
+            names = _columns.ENUMS.get(enum or "", {})
+            return pa.array([names.get(int(v), str(int(v))) for v in a], type=pa.string())
+        if kind == "bool":
+            return pa.array(a.astype(bool))
+        if kind in ("int", "bits", "enum") and a.dtype == np.uint64 and (a.size == 0 or a.max() < (1 << 63)):
+            return pa.array(a.astype(np.int64))
+        return pa.array(a)
+
+    def _py_column(self, vals: List[Any], kind: str) -> Any:
+        pa = self.pa
+        if kind == "float32":
+            return pa.array([None if v is None else float(v) for v in vals], type=pa.float32())
+        if kind == "float64":
+            return pa.array(vals, type=pa.float64())
+        if kind == "bool":
+            return pa.array(vals, type=pa.bool_())
+        if kind in ("int", "bits") or (kind == "enum" and self.enum_numbers):
+            big = any(v is not None and v >= 1 << 63 for v in vals)
+            return pa.array(vals, type=pa.uint64() if big else pa.int64())
+        return pa.array([None if v is None else str(v) for v in vals], type=pa.string())
+
+    def _write(self, key: Any, parts: List[Any]) -> None:
+        np, pa = self.np, self.pa
+        set_id, cls = key
+        lay, keep = self._layout(cls)
+        headers = [TIME_HEADER, "offset"] + [lay.headers[i] for i in keep]
+        offs = np.concatenate([p[0] for p in parts])
+        idx = np.concatenate([p[1] for p in parts])
+        order = np.lexsort((idx, offs))
+        columns = []
+        for j in range(len(headers)):
+            chunk = [p[2][j] for p in parts]
+            col = chunk[0] if len(chunk) == 1 else pa.concat_arrays([_as_arrow(pa, c) for c in _unify(pa, chunk)])
+            col = _as_arrow(pa, col)
+            if len(parts) > 1:
+                col = col.take(pa.array(order))
+            columns.append(col)
+        table = pa.Table.from_arrays(columns, names=headers)
+        with self.lock:
+            w = self._writer(key, table)
+        schema = self.schemas[key]
+        w.write_table(table if table.schema == schema else table.cast(schema))
+        with self.lock:
+            self.counts[key] += table.num_rows
+
+    def _writer(self, key: Any, table: Any) -> Any:
+        set_id, cls = key
+        w = self.writers.get(key)
+        if w is None:
+            path = os.path.join(self.out, table_name(set_id, cls) + "." + self.fmt)
+            if self.fmt == "csv":
+                import pyarrow.csv as pacsv
+
+                w = pacsv.CSVWriter(path, table.schema, write_options=pacsv.WriteOptions(quoting_style="needed"))
+            else:
+                import pyarrow.parquet as pq
+
+                w = pq.ParquetWriter(path, table.schema)
+            self.writers[key] = w
+            self.schemas[key] = table.schema
+            self.counts[key] = 0
+        return w
+
+    def close(self) -> List[Tuple[str, int]]:
+        out = []
+        for (set_id, cls), w in self.writers.items():
+            w.close()
+            out.append((table_name(set_id, cls) + "." + self.fmt, self.counts[(set_id, cls)]))
+        return sorted(out)
+
+
+def _as_arrow(pa: Any, c: Any) -> Any:
+    return c if isinstance(c, (pa.Array, pa.ChunkedArray)) else pa.array(c)
+
+
+def _unify(pa: Any, chunks: List[Any]) -> List[Any]:
+    """Chunks of one column as one arrow type (the first non-null type wins; ints widen to float)."""
+    arrs = [_as_arrow(pa, c) for c in chunks]
+    types = [a.type for a in arrs if a.type != pa.null()]
+    target = types[0] if types else pa.null()
+    if any(pa.types.is_floating(t) for t in types) and pa.types.is_integer(target):
+        target = next(t for t in types if pa.types.is_floating(t))
+    return [a if a.type == target else a.cast(target) for a in arrs]
+
+
+def _merge_times(np: Any, prev: Any, new: Tuple[Any, Any]) -> Tuple[Any, Any]:
+    """Packet offsets -> seconds, sorted; an earlier source (higher preference) wins on a tie."""
+    if prev is None:
+        order = np.argsort(new[0], kind="stable")
+        return new[0][order], new[1][order]
+    offs = np.concatenate([new[0], prev[0]])
+    secs = np.concatenate([new[1], prev[1]])
+    order = np.argsort(offs, kind="stable")
+    offs, secs = offs[order], secs[order]
+    keep = np.ones(len(offs), dtype=bool)
+    keep[1:] = offs[1:] != offs[:-1]
+    return offs[keep], secs[keep]
+
+
+def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
+    """Seconds of each packet offset (NaN -> null where the packet has no timestamp)."""
+    import pyarrow as pa
+
+    if times is None or len(times[0]) == 0:
+        return pa.nulls(len(offsets), type=pa.float64())
+    pos = np.searchsorted(times[0], offsets)
+    pos[pos >= len(times[0])] = 0
+    hit = times[0][pos] == offsets
+    return pa.array(np.where(hit, times[1][pos], 0.0), mask=~hit)
+
+
+def export(args: argparse.Namespace) -> int:
+    if args.format == "parquet":
+        need("pyarrow")
+    fields = _field_list(args.fields)
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        raise ToolError(f"cannot create {args.out!r}: {e.strerror or e}") from None
+    if _fast_path(args):
+        return _export_fast(args, fields)
+    source = Source(args.log, follow=args.follow, idle=args.idle)
+    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join)
+    packets = skipped = 0
+    try:
+        for chunk_events in _batched(source, args.device):
+            for e in chunk_events:
+                if isinstance(e, Packet):
+                    packets += 1
+                    ex.packet(e)
+                else:
+                    skipped += len(e.data)
+            if args.follow:
+                ex.flush()
+        written = ex.close()
+    except OSError as e:
+        raise ToolError(f"cannot write to {args.out!r}: {e.strerror or e}", 1) from None
+    for name, n in written:
+        print(f"{os.path.join(args.out, name)}: {n} rows")
+    print(f"{packets} packets, {skipped} bytes skipped", file=sys.stderr)
+    return 0
+
+
+def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
+    """The columnar export: blocks of BLOCK bytes through decode_columns; bytes that end a block
+    in a skipped run (possibly a packet cut by the block's end) start the next block."""
+    from .packets import decode_columns
+
+    source = Source(args.log)
+    ex = FastExporter(args.out, args.format, fields, args.enum_numbers)
+    packets = skipped = 0
+    carry = b""
+    base = 0
+    size = source.size or 0
+    pending = bytearray()
+    try:
+        for chunk in source.chunks():
+            pending += chunk
+            if len(pending) < BLOCK:
+                continue
+            data = carry + bytes(pending)
+            pending = bytearray()
+            cols = decode_columns(data)
+            cut = len(data)
+            if cols.skips and cols.skips[-1].offset + len(cols.skips[-1].data) == len(data):
+                cut = cols.skips[-1].offset
+                cols = decode_columns(data[:cut]) if cut else None
+            if cols is not None:
+                ex.block(cols, data, base)
+                packets += cols.packets
+                skipped += sum(len(k.data) for k in cols.skips)
+            carry = data[cut:]
+            base += cut
+        data = carry + bytes(pending)
+        if data:
+            cols = decode_columns(data)
+            ex.block(cols, data, base)
+            packets += cols.packets
+            skipped += sum(len(k.data) for k in cols.skips)
+        written = ex.close()
+    except OSError as e:
+        raise ToolError(f"cannot write to {args.out!r}: {e.strerror or e}", 1) from None
+    del size
+    for name, n in written:
+        print(f"{os.path.join(args.out, name)}: {n} rows")
+    print(f"{packets} packets, {skipped} bytes skipped (columnar path)", file=sys.stderr)
+    return 0
+
+
+def _batched(source: Source, device: Optional[str]) -> Iterator[List[Any]]:
+    decoder = Decoder(device)
+    for chunk in source.chunks():
+        yield decoder.feed(chunk)
+    yield decoder.flush()
+
+
+def _field_list(text: Optional[str]) -> Optional[List[str]]:
+    if text is None:
+        return None
+    fields = [f.strip() for f in text.split(",") if f.strip()]
+    if not fields:
+        raise ToolError("--fields needs at least one column name")
+    known = {h.split(" [")[0] for specs in _columns.COLUMNS.values() for h in (s[0] for s in specs)}
+    for f in fields:
+        if not any(k == f or k.startswith(f + ".") or k.startswith(f + "[") for k in known):
+            raise ToolError(f"--fields: no column named {f!r} (column names look like 'scaled_accel.x')")
+    return fields
+
+
+# --------------------------------------------------------------------------------------- info
+class Summary:
+    """What `info` prints, computed from a stream of events."""
+
+    def __init__(self) -> None:
+        self.packets: Dict[int, int] = {}
+        self.fields: Dict[Tuple[int, int, str], List[Optional[float]]] = {}
+        self.skipped = 0
+        self.skip_runs = 0
+        self.bad_checksums = 0
+        self.first: Optional[float] = None
+        self.last: Optional[float] = None
+        self.bytes = 0
+
+    def add(self, e: Any) -> None:
+        if isinstance(e, Packet):
+            self.packets[e.set] = self.packets.get(e.set, 0) + 1
+            t = packet_time(e)
+            if t is not None:
+                self.first = t if self.first is None else min(self.first, t)
+                self.last = t if self.last is None else max(self.last, t)
+            for f in e.fields:
+                d = getattr(f, "descriptor", None)
+                if d is None:
+                    continue
+                name = f.name if isinstance(f, DecodedField) else "(undecoded)"
+                self.fields.setdefault((e.set, d, name), []).append(t)
+        else:
+            self.skipped += len(e.data)
+            self.skip_runs += 1
+            self.bad_checksums += bad_checksums(bytes(e.data))
+
+    def rate(self, times: List[Optional[float]]) -> Tuple[Optional[float], int, int]:
+        """(rate in Hz from the median interval, gaps, dropped samples) of one field's times."""
+        ts = [t for t in times if t is not None]
+        dts = [b - a for a, b in zip(ts, ts[1:]) if b > a]
+        if not dts:
+            return None, 0, 0
+        step = sorted(dts)[len(dts) // 2]
+        gaps = dropped = 0
+        for dt in dts:
+            if dt > 1.5 * step:
+                gaps += 1
+                dropped += round(dt / step) - 1
+        return 1.0 / step, gaps, dropped
+
+    def lines(self) -> List[str]:
+        out = []
+        total = sum(self.packets.values())
+        out.append(
+            f"bytes: {self.bytes}  packets: {total}  skipped bytes: {self.skipped} in {self.skip_runs} runs  bad checksums: {self.bad_checksums}"
+        )
+        if self.first is not None:
+            out.append(f"time: first {self.first:.6f} s  last {self.last:.6f} s  span {self.last - self.first:.6f} s")
+        else:
+            out.append("time: no timestamps")
+        for s in sorted(self.packets):
+            out.append(f"set 0x{s:02X} {registry.SET_NAMES.get(s, '?')}: {self.packets[s]} packets")
+            for (fs, d, name), times in sorted(self.fields.items()):
+                if fs != s:
+                    continue
+                hz, gaps, dropped = self.rate(times)
+                rate = f"{hz:10.3f} Hz" if hz is not None else "         - Hz"
+                untimed = sum(1 for t in times if t is None)
+                # Rates, gaps and drops come from the entries whose packet carries a timestamp.
+                note = f"  ({untimed} without timestamp)" if untimed else ""
+                out.append(f"  0x{d:02X} {name:32} {len(times):8} {rate}  gaps {gaps}  dropped {dropped}{note}")
+        return out
+
+
+def bad_checksums(data: bytes) -> int:
+    """Complete packets with a wrong checksum inside a skipped run (same header, wrong sum)."""
+    from ._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET
+
+    n = 0
+    i = data.find(SYNC)
+    while i >= 0:
+        if i + HEADER_SIZE <= len(data):
+            end = i + HEADER_SIZE + data[i + LENGTH_OFFSET] + CHECKSUM_SIZE
+            if end <= len(data):
+                body = data[i : end - CHECKSUM_SIZE]
+                from .framing import checksum_bytes
+
+                if checksum_bytes(body) != data[end - CHECKSUM_SIZE : end]:
+                    n += 1
+        i = data.find(SYNC, i + 1)
+    return n
+
+
+def info(args: argparse.Namespace) -> int:
+    source = Source(args.log)
+    summary = Summary()
+    decoder = Decoder(args.device)
+    for chunk in source.chunks():
+        summary.bytes += len(chunk)
+        for e in decoder.feed(chunk):
+            summary.add(e)
+    for e in decoder.flush():
+        summary.add(e)
+    print("\n".join(summary.lines()))
+    return 0
+
+
+# --------------------------------------------------------------------------------------- plot
+def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) -> Any:
+    """The matplotlib figure of `plot`: the selected columns against time, one panel per unit."""
+    need("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    series: Dict[str, Tuple[List[float], List[float], str]] = {}
+    source = Source(log)
+    have_time = False
+    for e in events(source, device):
+        if not isinstance(e, Packet) or e.set not in _DATA_SETS:
+            continue
+        t = packet_time(e)
+        x = t if t is not None else float(e.offset)
+        have_time = have_time or t is not None
+        for f in e.fields:
+            if not isinstance(f, DecodedField):
+                continue
+            lay = Layout(type(f.value), True)
+            keep = select(lay.headers, fields)
+            if not keep:
+                continue
+            cells = lay.cells(f.value)
+            for i in keep:
+                if lay.specs[i][3] == "json" or cells[i] is None:
+                    continue
+                s = series.setdefault(lay.headers[i], ([], [], lay.specs[i][2] or ""))
+                s[0].append(x)
+                s[1].append(float(cells[i]))
+    if not series:
+        raise ToolError("no values of the selected fields in the log", 1)
+    by_units: Dict[str, List[str]] = {}
+    for name, (_x, _y, units) in series.items():
+        by_units.setdefault(units, []).append(name)
+    fig, axes = plt.subplots(len(by_units), 1, sharex=True, figsize=(10, 2.8 * len(by_units)), squeeze=False)
+    for ax, (units, names) in zip(axes[:, 0], by_units.items()):
+        for name in names:
+            xs, ys, _u = series[name]
+            ax.plot(xs, ys, label=name.split(" [")[0], linewidth=0.8)
+        ax.set_ylabel(units or "value")
+        ax.legend(loc="upper right", fontsize="small")
+        ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel(TIME_HEADER if have_time else "packet offset [bytes]")
+    fig.suptitle(os.path.basename(log))
+    fig.tight_layout()
+    return fig
+
+
+def plot(args: argparse.Namespace) -> int:
+    fields = _field_list(args.fields)
+    ext = os.path.splitext(args.out)[1].lower()
+    if ext not in (".png", ".svg", ".html"):
+        raise ToolError(f"--out must end in .png, .svg or .html (got {args.out!r})")
+    need("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = figure(args.log, fields, args.device)
+    try:
+        if ext == ".html":
+            import io
+
+            buf = io.StringIO()
+            fig.savefig(buf, format="svg")
+            title = os.path.basename(args.log)
+            with open(args.out, "w", encoding="utf-8") as fh:
+                fh.write(f"<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>{title}</title></head><body>\n")
+                fh.write(buf.getvalue()[buf.getvalue().find("<svg") :])
+                fh.write("</body></html>\n")
+        else:
+            fig.savefig(args.out, dpi=110)
+    except OSError as e:
+        raise ToolError(f"cannot write {args.out!r}: {e.strerror or e}", 1) from None
+    plt.close(fig)
+    print(f"{args.out}: {sum(len(ax.lines) for ax in fig.axes)} series")
+    return 0
+
+
+# ---------------------------------------------------------------------------------------- CLI
+def parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog=f"python -m {PROG}",
+        description="Recorded logs to tables and plots (export, info, plot); decode/encode are the canonical "
+        "JSON-line tools (python -m %s decode --help)." % PROG,
+    )
+    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+    device = dict(choices=registry.DEVICES, help="decode per-device layouts for this device")
+
+    e = sub.add_parser(
+        "export",
+        help="decode a log into tables (CSV, JSON lines, Parquet)",
+        description="Decode a log into one table per (set, field) (or per sample with --join). Columns are named from the spec with units in the header, e.g. 'scaled_accel.x [g]', after a 'time [s]' column from the shared timestamps and the packet's 'offset' in the log.",
+    )
+    e.add_argument("log", metavar="LOG", help="binary log file, or - for stdin")
+    e.add_argument(
+        "--format", choices=sorted(WRITERS), default="csv", help="table format (default csv; parquet needs pyarrow)"
+    )
+    e.add_argument("--out", required=True, metavar="DIR", help="directory for the tables (created if missing)")
+    e.add_argument(
+        "--join", action="store_true", help="one table per data set, one row per sample (packets sharing a timestamp)"
+    )
+    e.add_argument(
+        "--fields", metavar="F,..", help="only these columns (names or prefixes, e.g. scaled_accel,gps_timestamp.tow)"
+    )
+    e.add_argument("--enum-numbers", action="store_true", help="write enums as numbers (default: names from the spec)")
+    e.add_argument("--follow", action="store_true", help="keep reading a growing file (stop with Ctrl-C or --idle)")
+    e.add_argument("--idle", type=float, metavar="S", help="with --follow: stop after S seconds without new data")
+    e.add_argument("--device", **device)
+    e.set_defaults(run=export)
+
+    i = sub.add_parser(
+        "info",
+        help="summarise a log: packets, fields, rates, gaps, skipped bytes",
+        description="Packets and fields per set and descriptor, rates in Hz from the timestamps, gaps and dropped samples, skipped bytes and bad checksums, first and last time.",
+    )
+    i.add_argument("log", metavar="LOG", help="binary log file, or - for stdin")
+    i.add_argument("--device", **device)
+    i.set_defaults(run=info)
+
+    q = sub.add_parser(
+        "plot",
+        help="plot fields against time (needs matplotlib)",
+        description="Plot the selected fields against the time of their packets, one panel per unit.",
+    )
+    q.add_argument("log", metavar="LOG", help="binary log file, or - for stdin")
+    q.add_argument(
+        "--fields",
+        required=True,
+        metavar="F,..",
+        help="columns to plot (names or prefixes, e.g. scaled_accel,scaled_gyro.z)",
+    )
+    q.add_argument("--out", required=True, metavar="FILE", help="image file: .png, .svg or .html")
+    q.add_argument("--device", **device)
+    q.set_defaults(run=plot)
+    return p
+
+
+def main(argv: List[str]) -> int:
+    args = parser().parse_args(argv)
+    if not getattr(args, "run", None):
+        parser().print_help()
+        return 2
+    if getattr(args, "idle", None) is not None and not args.follow:
+        print(f"{PROG} {args.command}: --idle needs --follow", file=sys.stderr)
+        return 2
+    try:
+        return args.run(args)
+    except ToolError as e:
+        print(f"{PROG} {args.command}: {e}", file=sys.stderr)
+        return e.status
+    except KeyboardInterrupt:
+        return 130
+
+
+__all__ = ["main", "Layout", "Exporter", "Summary", "packet_time", "f32_text", "fletcher16"]
