@@ -7,6 +7,7 @@ from pathlib import Path
 from .errata import render_errata
 from .export import ir_to_json
 from .output import write_file, write_tree
+from .release import load_release
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .spec import ROOT, load_spec
 from .stated_lengths import lint_stated_lengths
@@ -39,6 +40,7 @@ def run(
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
     if validate_only:
         return 0
+    release = load_release(spec_dir)
     out_dir = out_dir or ROOT / "generated"
     files: dict[str, str] = {"ir.json": ir_to_json(ir)}
     owned: list[str] = []
@@ -46,7 +48,7 @@ def run(
         if only and name not in only:
             continue
         owned.extend(mod.OUTPUT_DIRS)
-        rendered = mod.render(ir, vectors)
+        rendered = mod.render(ir, vectors, release)
         for rel in rendered:
             if not any(rel == d or rel.startswith(d.rstrip("/") + "/") for d in mod.OUTPUT_DIRS):
                 raise ToolError(f"back end {name} wrote {rel}, outside its directories {mod.OUTPUT_DIRS}")

@@ -9,7 +9,14 @@ packets grouped by shared timestamp); `cli` (decode/encode).
     from mipcodec import Parser, PacketBuilder, decode_packet
     for event in Parser().feed(data):
         ...
+
+`__version__` is the package's version (semantic versioning; every package of a release has it)
+and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mip protocol's canonical
+IR: two packages with the same hash were generated from the same spec.
 """
+
+__version__ = "0.1.0"
+SPEC_HASH = "802382e5af15122a"
 
 from . import (
     aiding,
@@ -65,6 +72,8 @@ from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 
 __all__ = [
+    "SPEC_HASH",
+    "__version__",
     "aiding",
     "base",
     "filter",

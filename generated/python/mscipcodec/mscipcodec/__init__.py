@@ -9,7 +9,14 @@ packets grouped by shared timestamp); `cli` (decode/encode).
     from mscipcodec import Parser, PacketBuilder, decode_packet
     for event in Parser().feed(data):
         ...
+
+`__version__` is the package's version (semantic versioning; every package of a release has it)
+and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mscip protocol's canonical
+IR: two packages with the same hash were generated from the same spec.
 """
+
+__version__ = "0.1.0"
+SPEC_HASH = "7fae6228b043afc8"
 
 from . import base, imu_config, imu_data, reserved, types
 from .canonical import NaN
@@ -47,6 +54,8 @@ from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 
 __all__ = [
+    "SPEC_HASH",
+    "__version__",
     "base",
     "imu_config",
     "imu_data",
