@@ -38,9 +38,9 @@ def run(
         vectors = load_corpus(ir, ROOT)
     else:
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
+    release = load_release(spec_dir)  # VERSION and LICENSE: checked by --validate-only too
     if validate_only:
         return 0
-    release = load_release(spec_dir)
     out_dir = out_dir or ROOT / "generated"
     files: dict[str, str] = {"ir.json": ir_to_json(ir)}
     owned: list[str] = []
