@@ -15,9 +15,6 @@ and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mip protocol's can
 IR: two packages with the same hash were generated from the same spec.
 """
 
-__version__ = "0.1.0"
-SPEC_HASH = "802382e5af15122a"
-
 from . import (
     aiding,
     base,
@@ -70,6 +67,9 @@ from .packets import (
 )
 from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+
+__version__ = "0.1.0"
+SPEC_HASH = "802382e5af15122a"
 
 __all__ = [
     "SPEC_HASH",

@@ -15,9 +15,6 @@ and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mscip protocol's c
 IR: two packages with the same hash were generated from the same spec.
 """
 
-__version__ = "0.1.0"
-SPEC_HASH = "7fae6228b043afc8"
-
 from . import base, imu_config, imu_data, reserved, types
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
@@ -52,6 +49,9 @@ from .packets import (
 )
 from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+
+__version__ = "0.1.0"
+SPEC_HASH = "7fae6228b043afc8"
 
 __all__ = [
     "SPEC_HASH",

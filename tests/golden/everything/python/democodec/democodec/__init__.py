@@ -15,9 +15,6 @@ and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the demo protocol's ca
 IR: two packages with the same hash were generated from the same spec.
 """
 
-__version__ = "2.10.3"
-SPEC_HASH = "91219e91caa71af8"
-
 from . import commands, data, receiver_1, receiver_2, reserved, shared, types
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
@@ -52,6 +49,9 @@ from .packets import (
 )
 from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+
+__version__ = "2.10.3"
+SPEC_HASH = "91219e91caa71af8"
 
 __all__ = [
     "SPEC_HASH",
