@@ -221,3 +221,21 @@ def test_generator_reports_a_bad_version_file(tmp_path: Path) -> None:
     assert f"{spec / 'VERSION'}:1:1: error: version '2.1' is not a semantic version MAJOR.MINOR.PATCH" in proc.stderr
     assert "Traceback" not in proc.stderr
     assert not out.exists()
+
+
+def test_a_missing_version_file_is_a_located_error(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from generator import release
+
+    monkeypatch.setattr(release, "VERSION_FILE", tmp_path / "VERSION")
+    with pytest.raises(SpecError) as e:
+        release.load_release()
+    assert str(e.value) == (
+        f"{tmp_path / 'VERSION'}:1:1: error: VERSION is missing (expected a file holding the version, MAJOR.MINOR.PATCH)"
+    )
+    (tmp_path / "VERSION").write_text("3.0.7\n", encoding="utf-8")
+    assert release.load_release().version == "3.0.7"
+    # A --spec directory's own VERSION wins over the project's.
+    spec = tmp_path / "spec"
+    spec.mkdir()
+    (spec / "VERSION").write_text("4.5.6\n", encoding="utf-8")
+    assert (release.load_release(spec).major, release.load_release(spec).version) == (4, "4.5.6")
