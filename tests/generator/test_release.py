@@ -45,12 +45,12 @@ def _defines(path: Path) -> dict[str, str]:
     return dict(re.findall(r"^#define (\w+) (.+)$", path.read_text(encoding="utf-8"), re.M))
 
 
-def _cmake_version(path: Path, package: str) -> str:
-    m = re.search(rf"^project\({re.escape(package)} VERSION (\S+) LANGUAGES ", path.read_text(encoding="utf-8"), re.M)
-    assert m, f"{path}: no project({package} VERSION ...)"
-    assert re.search(r"^install\(FILES LICENSE ", path.read_text(encoding="utf-8"), re.M), (
-        f"{path}: LICENSE not installed"
-    )
+def _cmake_version(path: Path) -> str:
+    """The project VERSION of a CMakeLists.txt, which must also install LICENSE."""
+    text = path.read_text(encoding="utf-8")
+    m = re.search(r"^project\(\S+ VERSION (\S+) LANGUAGES ", text, re.M)
+    assert m, f"{path}: no project(NAME VERSION ... LANGUAGES ...)"
+    assert re.search(r"^\s*install\(FILES LICENSE ", text, re.M), f"{path}: LICENSE not installed"
     return m[1]
 
 
@@ -106,7 +106,7 @@ def test_every_package_carries_the_version_and_its_spec_hash(tree_name: str) -> 
             root = tree / lang / pkg
             defines = _defines(root / "include" / pkg / header)
             assert {k: defines.get(k) for k in want_macros} == want_macros, f"{lang}/{pkg}"
-            assert _cmake_version(root / "CMakeLists.txt", pkg) == version, f"{lang}/{pkg}"
+            assert _cmake_version(root / "CMakeLists.txt") == version, f"{lang}/{pkg}"
             umbrella = (root / "include" / pkg / (f"{pkg}.h" if lang == "c" else f"{pkg}.hpp")).read_text()
             assert f'#include "{pkg}/{header}"' in umbrella, f"{lang}/{pkg}: the umbrella header includes {header}"
             checked.append(f"{lang}/{pkg}")
