@@ -10,7 +10,7 @@ MANUALS ?= ../shared/manuals
 CAPTURE ?= ../shared/captures/mip_data.bin
 export RUFF := $(abspath $(VENV)/bin/ruff)
 
-SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml
+SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
 .PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
@@ -105,7 +105,7 @@ endif
 test-bigendian: generate
 	$(PY) -m pytest -q tests/bigendian
 
-# Fuzzing (tests/fuzz/, README "Fuzzing"): every harness of every language and package, one at a
+# Fuzzing (tests/fuzz/, docs/fuzzing.md): every harness of every language and package, one at a
 # time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the
 # run; its input is saved under build/fuzz/findings/<lang>/<package>/<target>/. Needs clang-14,
 # libclang-rt-14-dev, llvm-14, a nightly Rust toolchain with cargo-fuzz, and atheris (in .venv).
@@ -128,7 +128,7 @@ fuzz-long: generate
 test-fuzz-regressions: generate
 	$(PY) tests/fuzz/fuzz.py replay
 
-# Benchmarks of the four languages (tests/bench/run.py, README "Benchmarks"): builds them into
+# Benchmarks of the four languages (tests/bench/run.py, docs/benchmarks.md): builds them into
 # build/bench/, runs them on the streams of tests/bench/streams.py and prints one table.
 # BENCH_ARGS passes options, e.g. BENCH_ARGS="--langs c,cpp --scale 0.1".
 BENCH_ARGS ?=

@@ -15,7 +15,11 @@ from .diagnostics import SpecError, SpecErrors
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m generator", description=__doc__.splitlines()[0])
-    ap.add_argument("--spec", default=None, help="spec directory (default: spec/)")
+    ap.add_argument(
+        "--spec",
+        default=None,
+        help="spec directory (default: spec/); its VERSION file, if any, replaces the project's (docs/versioning.md)",
+    )
     ap.add_argument(
         "--vectors",
         default=None,

@@ -7,6 +7,7 @@ from pathlib import Path
 from .errata import render_errata
 from .export import ir_to_json
 from .output import write_file, write_tree
+from .release import load_release
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .sessions import load_sessions
 from .spec import ROOT, load_spec
@@ -40,6 +41,7 @@ def run(
         load_sessions(ir, ROOT / "tests" / "sessions")
     else:
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
+    release = load_release(spec_dir)  # VERSION and LICENSE: checked by --validate-only too
     if validate_only:
         return 0
     out_dir = out_dir or ROOT / "generated"
@@ -49,7 +51,7 @@ def run(
         if only and name not in only:
             continue
         owned.extend(mod.OUTPUT_DIRS)
-        rendered = mod.render(ir, vectors)
+        rendered = mod.render(ir, vectors, release)
         for rel in rendered:
             if not any(rel == d or rel.startswith(d.rstrip("/") + "/") for d in mod.OUTPUT_DIRS):
                 raise ToolError(f"back end {name} wrote {rel}, outside its directories {mod.OUTPUT_DIRS}")

@@ -23,6 +23,8 @@ INPUTS = [
     ".clang-format",
     "ruff.toml",
     "rustfmt.toml",
+    "VERSION",
+    "LICENSE",
 ]
 # Two environments that differ in everything the output must not depend on.
 ENVIRONMENTS = [

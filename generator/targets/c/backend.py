@@ -13,6 +13,7 @@ from generator import model
 from generator.examples import example_context
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
+from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
 from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
@@ -60,6 +61,7 @@ _TEMPLATES = {
     "dispatch.c.j2": "src/dispatch.c",
     "layouts_internal.h.j2": "src/layouts_internal.h",
     "umbrella.h.j2": "include/{pkg}/{pkg}.h",
+    "version.h.j2": "include/{pkg}/version.h",
     "CMakeLists.txt.j2": "CMakeLists.txt",
     "README.md.j2": "README.md",
     "examples/getting_started.c.j2": "examples/getting_started.c",
@@ -573,13 +575,15 @@ def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
     ]
 
 
-def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+    release = release or load_release()
     env = environment()
     out: dict[str, str] = {}
     for proto in ir["protocols"]:
         pkg = _Package(proto, vectors)
-        ctx = pkg.context()
+        ctx = {**pkg.context(), **release.stamp(proto)}
         root = f"c/{pkg.pkg}/"
+        out[root + "LICENSE"] = release.license
         runtime = {src: root + dest.replace("codec/", f"{pkg.pkg}/") for src, dest in _RUNTIME_FILES.items()}
         out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
         for tpl, path in _TEMPLATES.items():

@@ -19,7 +19,8 @@ templates/cpp/ only loop and print, and the hand-written runtime in runtime/ is 
   include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec), and <set>_json.hpp
   include/<pkg>/layouts_json.hpp     every set's <set>_json.hpp (for json_lines.hpp)
   include/<pkg>/lookup.hpp           (set, descriptor) -> layouts, with reserved and shared fields
-  tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt
+  include/<pkg>/version.hpp          version and spec hash (generator/release.py)
+  tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt, LICENSE
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from generator.examples import example_context
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
+from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
 from generator.targets.cpp.facts import KEYWORDS as CPP_KEYWORDS
 from generator.targets.cpp.facts import PRIMITIVE_TYPES as PRIM_CPP
@@ -595,7 +597,8 @@ def canonical_context() -> dict:
     }
 
 
-def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+    release = release or load_release()
     env = environment()
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
@@ -620,7 +623,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "canonical": canonical_context(),
             "sample_rule": proto["samples"],
             "example": example_context(proto, api_names),
+            **release.stamp(proto),
         }
+        files[f"{root}/LICENSE"] = release.license
         # The hand-written runtime, with the package's names put in for the placeholder.
         for rel, text in copy_runtime("cpp", runtime_files(pkg), runtime_names(pkg, P.ns)).items():
             files[f"{root}/{rel}"] = GENERATED_LINE + text
@@ -632,6 +637,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "lookup.hpp": "lookup.hpp.j2",
             "layouts_json.hpp": "layouts_json.hpp.j2",
             f"{pkg}.hpp": "package.hpp.j2",
+            "version.hpp": "version.hpp.j2",
         }
         for out, tpl in spec.items():
             files[f"{inc}/{out}"] = env.get_template(f"cpp/include/{tpl}").render(ctx)

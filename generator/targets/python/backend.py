@@ -25,6 +25,7 @@ from generator import columns, model
 from generator.examples import example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
+from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
 from generator.targets.python import facts
 from generator.testcases import (
@@ -620,7 +621,8 @@ def _vector_cases(vectors: list[dict], proto: dict) -> list[dict]:
     ]
 
 
-def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+    release = release or load_release()
     env = environment()
     env.filters["pyrepr"] = pyrepr
     files: dict[str, str] = {}
@@ -645,7 +647,9 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
             "exports": facts.EXPORTS,
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
+            **release.stamp(proto),
         }
+        files[f"{root}/LICENSE"] = release.license
         files.update(_runtime(proto, root))
         for name in PACKAGE_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)

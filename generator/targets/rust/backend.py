@@ -15,6 +15,7 @@ from generator import model, naming
 from generator.examples import example_context
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
+from generator.release import Release, load_release
 from generator.render import ToolError, copy_runtime, environment
 from generator.testcases import bitfield_cases, canonical_cases, layout_error_cases, vector_cases
 
@@ -612,13 +613,14 @@ def _runtime_files(package: str) -> dict[str, str]:
     return files
 
 
-def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+    release = release or load_release()
     env = environment()
     checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
         model = _Protocol(proto, vectors)
-        ctx = model.context()
+        ctx = {**model.context(), **release.stamp(proto)}
         ctx["cases"] = model.vector_cases()
         ctx["floats"] = model.float_cases()
         ctx["bitfields"] = model.bitfield_cases()
@@ -626,6 +628,7 @@ def render(ir: dict, vectors: list[dict]) -> dict[str, str]:
         ctx["sample_rule"] = proto["samples"]
         ctx["example"] = _example(proto)
         root = f"rust/{model.package}/"
+        files[root + "LICENSE"] = release.license
         for tpl, out in _TEMPLATES:
             files[root + out] = env.get_template(f"rust/{tpl}").render(**ctx)
         files[root + "src/framing.rs"] = env.get_template("rust/framing.rs.j2").render(**ctx) + "\n" + checksum

@@ -9,6 +9,10 @@ packets grouped by shared timestamp); `cli` (decode/encode).
     from mipcodec import Parser, PacketBuilder, decode_packet
     for event in Parser().feed(data):
         ...
+
+`__version__` is the package's version (semantic versioning; every package of a release has it)
+and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mip protocol's canonical
+IR: two packages with the same hash were generated from the same spec.
 """
 
 from . import (
@@ -65,7 +69,12 @@ from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
+__version__ = "0.1.0"
+SPEC_HASH = "ed15223bba2fd95b"
+
 __all__ = [
+    "SPEC_HASH",
+    "__version__",
     "aiding",
     "base",
     "filter",

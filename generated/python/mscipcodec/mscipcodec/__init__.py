@@ -9,6 +9,10 @@ packets grouped by shared timestamp); `cli` (decode/encode).
     from mscipcodec import Parser, PacketBuilder, decode_packet
     for event in Parser().feed(data):
         ...
+
+`__version__` is the package's version (semantic versioning; every package of a release has it)
+and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mscip protocol's canonical
+IR: two packages with the same hash were generated from the same spec.
 """
 
 from . import base, imu_config, imu_data, reserved, types
@@ -47,7 +51,12 @@ from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
+__version__ = "0.1.0"
+SPEC_HASH = "d0b17e43b10441a7"
+
 __all__ = [
+    "SPEC_HASH",
+    "__version__",
     "base",
     "imu_config",
     "imu_data",

@@ -60,5 +60,22 @@ pub mod base;
 pub mod imu_config;
 pub mod imu_data;
 
+/// The package's version (semantic versioning: MAJOR.MINOR.PATCH; every package of a release has
+/// it), also the crate's version.
+///
+/// ```
+/// assert_eq!(mscipcodec::VERSION, env!("CARGO_PKG_VERSION"));
+/// ```
+pub const VERSION: &str = "0.1.0";
+/// The parts of [`VERSION`].
+pub const VERSION_MAJOR: u32 = 0;
+/// The parts of [`VERSION`].
+pub const VERSION_MINOR: u32 = 1;
+/// The parts of [`VERSION`].
+pub const VERSION_PATCH: u32 = 0;
+/// First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two crates
+/// with the same hash were generated from the same spec.
+pub const SPEC_HASH: &str = "d0b17e43b10441a7";
+
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

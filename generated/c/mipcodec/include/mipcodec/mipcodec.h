@@ -3,6 +3,7 @@
 #ifndef MIP_MIPCODEC_H
 #define MIP_MIPCODEC_H
 
+#include "mipcodec/version.h"
 #include "mipcodec/status.h"
 #include "mipcodec/framing.h"
 #include "mipcodec/parser.h"

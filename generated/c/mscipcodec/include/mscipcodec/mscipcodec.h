@@ -3,6 +3,7 @@
 #ifndef MSCIP_MSCIPCODEC_H
 #define MSCIP_MSCIPCODEC_H
 
+#include "mscipcodec/version.h"
 #include "mscipcodec/status.h"
 #include "mscipcodec/framing.h"
 #include "mscipcodec/parser.h"

@@ -12,4 +12,5 @@
 #include "mipcodec/parser.hpp"
 #include "mipcodec/samples.hpp"
 #include "mipcodec/types.hpp"
+#include "mipcodec/version.hpp"
 #include "mipcodec/wire.hpp"

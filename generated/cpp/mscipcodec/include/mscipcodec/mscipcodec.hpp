@@ -12,4 +12,5 @@
 #include "mscipcodec/parser.hpp"
 #include "mscipcodec/samples.hpp"
 #include "mscipcodec/types.hpp"
+#include "mscipcodec/version.hpp"
 #include "mscipcodec/wire.hpp"

@@ -9,6 +9,10 @@ packets grouped by shared timestamp); `cli` (decode/encode).
     from democodec import Parser, PacketBuilder, decode_packet
     for event in Parser().feed(data):
         ...
+
+`__version__` is the package's version (semantic versioning; every package of a release has it)
+and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the demo protocol's canonical
+IR: two packages with the same hash were generated from the same spec.
 """
 
 from . import commands, data, receiver_1, receiver_2, reserved, shared, types
@@ -47,7 +51,12 @@ from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
+__version__ = "2.10.3"
+SPEC_HASH = "1d3f1495a97aed54"
+
 __all__ = [
+    "SPEC_HASH",
+    "__version__",
     "commands",
     "data",
     "receiver_1",

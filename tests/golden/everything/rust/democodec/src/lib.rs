@@ -62,5 +62,22 @@ pub mod receiver_1;
 pub mod receiver_2;
 pub mod shared;
 
+/// The package's version (semantic versioning: MAJOR.MINOR.PATCH; every package of a release has
+/// it), also the crate's version.
+///
+/// ```
+/// assert_eq!(democodec::VERSION, env!("CARGO_PKG_VERSION"));
+/// ```
+pub const VERSION: &str = "2.10.3";
+/// The parts of [`VERSION`].
+pub const VERSION_MAJOR: u32 = 2;
+/// The parts of [`VERSION`].
+pub const VERSION_MINOR: u32 = 10;
+/// The parts of [`VERSION`].
+pub const VERSION_PATCH: u32 = 3;
+/// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two crates
+/// with the same hash were generated from the same spec.
+pub const SPEC_HASH: &str = "1d3f1495a97aed54";
+
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

@@ -3,6 +3,7 @@
 #ifndef DEMO_DEMOCODEC_H
 #define DEMO_DEMOCODEC_H
 
+#include "democodec/version.h"
 #include "democodec/status.h"
 #include "democodec/framing.h"
 #include "democodec/parser.h"

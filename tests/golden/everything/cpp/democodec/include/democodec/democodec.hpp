@@ -12,4 +12,5 @@
 #include "democodec/parser.hpp"
 #include "democodec/samples.hpp"
 #include "democodec/types.hpp"
+#include "democodec/version.hpp"
 #include "democodec/wire.hpp"
