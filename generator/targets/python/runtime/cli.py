@@ -38,7 +38,11 @@ class UsageError(Exception):
 
 
 class IOFailure(Exception):
-    """An I/O error already worded for stderr (exit status 2)."""
+    """An I/O error already worded for stderr (exit status 2); `write`: stdout failed."""
+
+    def __init__(self, message: str, write: bool = False) -> None:
+        super().__init__(message)
+        self.write = write
 
 
 def _reason(e: OSError) -> str:
@@ -54,7 +58,7 @@ def _stdin() -> BinaryIO:
 
 def _stdout() -> BinaryIO:
     if sys.stdout is None:
-        raise IOFailure(f"cannot write standard output: {os.strerror(errno.EBADF)}")
+        raise IOFailure(f"cannot write standard output: {os.strerror(errno.EBADF)}", write=True)
     return sys.stdout.buffer
 
 
@@ -71,7 +75,7 @@ def _write_failed(e: OSError) -> IOFailure:
     if e.errno == errno.EPIPE and hasattr(signal, "SIGPIPE"):
         signal.signal(signal.SIGPIPE, signal.SIG_DFL)
         os.kill(os.getpid(), signal.SIGPIPE)
-    return IOFailure(f"cannot write standard output: {_reason(e)}")
+    return IOFailure(f"cannot write standard output: {_reason(e)}", write=True)
 
 
 def _silence_stdout() -> None:
@@ -153,7 +157,10 @@ def _decode(args: List[str]) -> int:
             try:
                 chunk = read(CHUNK)
             except OSError as e:
-                write(())
+                try:
+                    out.flush()  # the lines printed before the fault are kept
+                except OSError as w:
+                    raise _write_failed(w) from None
                 raise IOFailure(f"cannot read {name}: {_reason(e)}") from None
             if not chunk:
                 break
@@ -187,6 +194,10 @@ def _encode(args: List[str]) -> int:
         try:
             chunk = source.read1(CHUNK)
         except OSError as e:
+            try:
+                out.flush()  # the bytes written before the fault are kept
+            except OSError as w:
+                raise _write_failed(w) from None
             raise IOFailure(f"cannot read standard input: {_reason(e)}") from None
         lines = (pending + chunk).split(b"\n")
         pending = lines.pop() if chunk else b""
@@ -239,7 +250,8 @@ def main(argv: Optional[List[str]] = None) -> int:
         print(f"{PROG}: {e} ({USAGE})", file=sys.stderr)
         return 2
     except IOFailure as e:
-        _silence_stdout()
+        if e.write:
+            _silence_stdout()
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
