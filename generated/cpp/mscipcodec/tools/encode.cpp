@@ -38,8 +38,8 @@ int main(int argc, char **argv) {
     }
     static char out_buf[1 << 16];
     std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
-    const bool flush_blocks = !tool_io::stdout_is_file();
-    tool_io::Output out;
+    const bool flush_blocks = !mscipcodec::tool_io::stdout_is_file();
+    mscipcodec::tool_io::Output out;
     std::string line;
     std::string error;
     std::vector<std::uint8_t> bytes;
@@ -60,11 +60,12 @@ int main(int argc, char **argv) {
         out.put(bytes.data(), bytes.size());
     };
     for (;;) {
-        const long n = tool_io::read_some(stdin, buf.data(), buf.size());
+        const long n = mscipcodec::tool_io::read_some(stdin, buf.data(), buf.size());
         if (n < 0) {
             const int err = errno;
             out.flush();
-            return out.failed() ? out.report(kProg) : tool_io::read_error(kProg, "standard input", err);
+            return out.failed() ? out.report(kProg)
+                                : mscipcodec::tool_io::read_error(kProg, "standard input", err);
         }
         if (n == 0) {
             break;

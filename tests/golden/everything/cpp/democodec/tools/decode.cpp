@@ -45,8 +45,8 @@ int run(std::FILE *in, const std::string &name, const std::optional<democodec::D
         bool samples) {
     static char out_buf[1 << 16];
     std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
-    const bool flush_blocks = !tool_io::stdout_is_file();
-    tool_io::Output out;
+    const bool flush_blocks = !democodec::tool_io::stdout_is_file();
+    democodec::tool_io::Output out;
     democodec::JsonLinesDecoder decoder(device, samples);
     auto on_line = [&out](const std::string &line) {
         out.put(line);
@@ -54,11 +54,11 @@ int run(std::FILE *in, const std::string &name, const std::optional<democodec::D
     };
     std::vector<unsigned char> buf(1 << 16);
     for (;;) {
-        const long n = tool_io::read_some(in, buf.data(), buf.size());
+        const long n = democodec::tool_io::read_some(in, buf.data(), buf.size());
         if (n < 0) {
             const int err = errno;
             out.flush();
-            return out.failed() ? out.report(kProg) : tool_io::read_error(kProg, name, err);
+            return out.failed() ? out.report(kProg) : democodec::tool_io::read_error(kProg, name, err);
         }
         if (n == 0) {
             break;

@@ -19,7 +19,7 @@
 #define DEMOCODEC_TOOL_POSIX 0
 #endif
 
-namespace tool_io {
+namespace democodec::tool_io {
 
 /// Reads what is available, at most `cap` bytes (blocking only until some bytes arrive, so a
 /// live stream is decoded as it comes). Returns the count, 0 at the end, or -1 with errno set.
@@ -107,4 +107,4 @@ inline int read_error(const char *prog, const std::string &name, int err) {
     return 2;
 }
 
-} // namespace tool_io
+} // namespace democodec::tool_io
