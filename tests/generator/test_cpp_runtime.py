@@ -40,4 +40,5 @@ def test_a_keyword_package_keeps_its_file_names_and_gets_a_namespace() -> None:
     assert '#include "int/framing.hpp"' in wire
     assert '#include "int/int.hpp"' in files["tests/test_support.hpp"]
     assert '"usage: int-decode' in files["tools/decode.cpp"]
-    assert "int_::decode_to_json_lines" in files["tools/decode.cpp"]
+    assert "int_::JsonLinesDecoder" in files["tools/decode.cpp"]
+    assert "namespace int_::tool_io {" in files["tools/tool_io.hpp"]

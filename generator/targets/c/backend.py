@@ -46,7 +46,7 @@ _RUNTIME_FILES = {
     "src/json_codec.c": "src/json_codec.c",
     "tools/decode.c": "tools/decode.c",
     "tools/encode.c": "tools/encode.c",
-    "tools/read_all.h": "tools/read_all.h",
+    "tools/tool_io.h": "tools/tool_io.h",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
 }

@@ -66,6 +66,7 @@ def runtime_files(pkg: str) -> dict[str, str]:
         **{f"include/protopkg/{h}": f"include/{pkg}/{h}" for h in RUNTIME_HEADERS},
         "tools/decode.cpp": "tools/decode.cpp",
         "tools/encode.cpp": "tools/encode.cpp",
+        "tools/tool_io.hpp": "tools/tool_io.hpp",
         "package_tests/test_support.hpp": "tests/test_support.hpp",
         "package_tests/test_package.cpp": "tests/test_package.cpp",
     }

@@ -5,13 +5,22 @@
 
 decode: exit 0; usage or I/O errors: one line on stderr, exit 2.
 encode: bad lines are reported on stderr with their line number and not written; exit 1 if any.
+
+I/O faults, the same in the four languages: a closed pipe on stdout (`decode BIG | head`) ends
+the process by SIGPIPE, quietly, as the C tools and `cat` do; any other read or write error
+(a full disk, an unreadable file, a directory, a closed stdin) is one line on stderr and exit 2,
+never a traceback. Input is read in blocks as it arrives; when stdout is not a regular file, the
+lines of every block are flushed at once (a live stream shows each packet when it arrives).
 """
 
 from __future__ import annotations
 
+import errno
 import os
+import signal
+import stat
 import sys
-from typing import BinaryIO, List, Optional, Tuple, Union
+from typing import BinaryIO, Iterable, List, Optional, Tuple, Union
 
 from . import registry
 from ._protocol import PACKAGE as PROG
@@ -26,6 +35,56 @@ CHUNK = 1 << 16
 
 class UsageError(Exception):
     pass
+
+
+class IOFailure(Exception):
+    """An I/O error already worded for stderr (exit status 2); `write`: stdout failed."""
+
+    def __init__(self, message: str, write: bool = False) -> None:
+        super().__init__(message)
+        self.write = write
+
+
+def _reason(e: OSError) -> str:
+    return e.strerror or str(e)
+
+
+def _stdin() -> BinaryIO:
+    """The standard input's byte stream; a closed descriptor is an error (not an empty input)."""
+    if sys.stdin is None:
+        raise IOFailure(f"cannot read standard input: {os.strerror(errno.EBADF)}")
+    return sys.stdin.buffer
+
+
+def _stdout() -> BinaryIO:
+    if sys.stdout is None:
+        raise IOFailure(f"cannot write standard output: {os.strerror(errno.EBADF)}", write=True)
+    return sys.stdout.buffer
+
+
+def _is_regular_file(stream: BinaryIO) -> bool:
+    try:
+        return stat.S_ISREG(os.fstat(stream.fileno()).st_mode)
+    except (OSError, ValueError):
+        return False
+
+
+def _write_failed(e: OSError) -> IOFailure:
+    """A write to stdout failed: a closed pipe ends the process by SIGPIPE (Python ignores the
+    signal; its default action is restored and the signal raised); otherwise the one line."""
+    if e.errno == errno.EPIPE and hasattr(signal, "SIGPIPE"):
+        signal.signal(signal.SIGPIPE, signal.SIG_DFL)
+        os.kill(os.getpid(), signal.SIGPIPE)
+    return IOFailure(f"cannot write standard output: {_reason(e)}", write=True)
+
+
+def _silence_stdout() -> None:
+    """After a failed write, the interpreter's last flush of stdout must not fail again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, AttributeError, ValueError):
+        pass
 
 
 def _decode_args(args: List[str]) -> Tuple[Optional[str], Optional[str], bool]:
@@ -60,16 +119,18 @@ def _decode_args(args: List[str]) -> Tuple[Optional[str], Optional[str], bool]:
 def _decode(args: List[str]) -> int:
     device, path, samples = _decode_args(args)
     if path is None or path == "-":
-        source: BinaryIO = sys.stdin.buffer
+        source: BinaryIO = _stdin()
+        name = "standard input"
         close = False
     else:
         try:
             source = open(path, "rb")
         except OSError as e:
-            print(f"{PROG} decode: cannot open {path!r}: {e.strerror or e}", file=sys.stderr)
-            return 2
+            raise IOFailure(f"cannot open {path!r}: {_reason(e)}") from None
+        name = repr(path)
         close = True
-    out = sys.stdout
+    out = _stdout()
+    flush_blocks = not _is_regular_file(out)
     parser = Parser()
     tracker = SampleTracker() if samples else None
 
@@ -81,51 +142,91 @@ def _decode(args: List[str]) -> int:
             text = text[:at] + ',"sample":' + str(placed[0]) + text[at:]
         return text
 
+    def write(events: Iterable[object]) -> None:
+        text = "".join(line(event) + "\n" for event in events)
+        try:
+            out.write(text.encode("ascii"))
+            if flush_blocks:
+                out.flush()
+        except OSError as e:
+            raise _write_failed(e) from None
+
     read = getattr(source, "read1", source.read)  # read1: do not wait for a full chunk from a live stream
     try:
         while True:
             try:
                 chunk = read(CHUNK)
             except OSError as e:
-                print(f"{PROG} decode: cannot read {path or 'stdin'}: {e.strerror or e}", file=sys.stderr)
-                return 2
+                try:
+                    out.flush()  # the lines printed before the fault are kept
+                except OSError as w:
+                    raise _write_failed(w) from None
+                raise IOFailure(f"cannot read {name}: {_reason(e)}") from None
             if not chunk:
                 break
-            for event in parser.feed(chunk):
-                out.write(line(event) + "\n")
+            write(parser.feed(chunk))
+        write(parser.flush())
+        try:
             out.flush()
-        for event in parser.flush():
-            out.write(line(event) + "\n")
-        out.flush()
+        except OSError as e:
+            raise _write_failed(e) from None
     finally:
         if close:
             source.close()
     return 0
 
 
+def _blank(text: str) -> bool:
+    """RFC 8259 whitespace only (space, tab, CR, LF), as in the four encoders."""
+    return not text.strip(" \t\r\n")
+
+
 def _encode(args: List[str]) -> int:
     if args:
         raise UsageError(f"encode takes no arguments (got {args[0]!r}); it reads JSON lines on stdin")
-    out = sys.stdout.buffer
+    source = _stdin()
+    out = _stdout()
+    flush_blocks = not _is_regular_file(out)
     status = 0
-    for number, raw in enumerate(sys.stdin.buffer, start=1):
+    number = 0
+    pending = b""
+    while True:
         try:
-            text = raw.decode("utf-8")
-        except UnicodeDecodeError:
-            print(f"line {number}: not UTF-8 text", file=sys.stderr)
-            status = 1
-            continue
-        if not text.strip():
-            continue  # blank lines carry nothing (as in the C, C++ and Rust encoders)
+            chunk = source.read1(CHUNK)
+        except OSError as e:
+            try:
+                out.flush()  # the bytes written before the fault are kept
+            except OSError as w:
+                raise _write_failed(w) from None
+            raise IOFailure(f"cannot read standard input: {_reason(e)}") from None
+        lines = (pending + chunk).split(b"\n")
+        pending = lines.pop() if chunk else b""
+        if not chunk and not lines[-1]:
+            lines.pop()  # the input ended with a newline (or was empty)
+        data = []
+        for raw in lines:
+            number += 1
+            try:
+                text = raw.decode("utf-8")
+            except UnicodeDecodeError:
+                print(f"line {number}: not UTF-8 text", file=sys.stderr)
+                status = 1
+                continue
+            if _blank(text):
+                continue  # blank lines carry nothing (as in the C, C++ and Rust encoders)
+            try:
+                data.append(encode_line(text))
+            except EncodeError as e:
+                print(f"line {number}: {e}", file=sys.stderr)
+                status = 1
         try:
-            data = encode_line(text)
-        except EncodeError as e:
-            print(f"line {number}: {e}", file=sys.stderr)
-            status = 1
-            continue
-        out.write(data)
-    out.flush()
-    return status
+            out.write(b"".join(data))
+            if flush_blocks or not chunk:
+                out.flush()
+        except OSError as e:
+            raise _write_failed(e) from None
+        if not chunk:
+            return status
 
 
 def main(argv: Optional[List[str]] = None) -> int:
@@ -153,13 +254,10 @@ def main(argv: Optional[List[str]] = None) -> int:
     except UsageError as e:
         print(f"{PROG}: {e} ({USAGE})", file=sys.stderr)
         return 2
-    except BrokenPipeError:
-        # The reader went away (e.g. `| head`): stop quietly.
-        try:
-            devnull = os.open(os.devnull, os.O_WRONLY)
-            os.dup2(devnull, sys.stdout.fileno())
-        except OSError:
-            pass
-        return 0
+    except IOFailure as e:
+        if e.write:
+            _silence_stdout()
+        print(f"{PROG}: {e}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:
         return 130

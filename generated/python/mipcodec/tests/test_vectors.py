@@ -2626,7 +2626,7 @@ CASES = [
         "hex": "75650c11112401000000000000000000007f7fffff2979",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:45",
+        "where": "tests/vectors/mip/encode_input.yaml:49",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":0.0,"week_number":0,"accuracy":3.4028234663852886e+38}}]}'
         ],
@@ -2636,7 +2636,7 @@ CASES = [
         "hex": "75650c1111240100000000000000000000000000002d03",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:73",
+        "where": "tests/vectors/mip/encode_input.yaml:77",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":0.0,"week_number":0,"accuracy":0.0}}]}'
         ],
@@ -2646,7 +2646,7 @@ CASES = [
         "hex": "75650c1111240180000000000000000000800000002d03",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:100",
+        "where": "tests/vectors/mip/encode_input.yaml:104",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":-0.0,"week_number":0,"accuracy":-0.0}}]}'
         ],
@@ -2656,7 +2656,7 @@ CASES = [
         "hex": "75650c1111240100000000000000010000000000012f0b",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:120",
+        "where": "tests/vectors/mip/encode_input.yaml:124",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":5e-324,"week_number":0,"accuracy":1.401298464324817e-45}}]}'
         ],
@@ -2666,7 +2666,7 @@ CASES = [
         "hex": "75650c11112401fff000000000000100007fc000015d69",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:138",
+        "where": "tests/vectors/mip/encode_input.yaml:142",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":36,"name":"gnss_assist_time_update","values":{"function":1,"tow":"nan:0xfff0000000000001","week_number":0,"accuracy":"nan:0x7fc00001"}}]}'
         ],
@@ -2676,7 +2676,7 @@ CASES = [
         "hex": "75650c0504c8abcd013087",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:165",
+        "where": "tests/vectors/mip/encode_input.yaml:169",
         "expect": [
             '{"offset":0,"set":12,"fields":[{"descriptor":200,"data":"abcd","error":"unknown descriptor"},{"trailing":"01","error":"field header at payload offset 4 needs 2 bytes, 1 left"}]}'
         ],
@@ -2686,7 +2686,7 @@ CASES = [
         "hex": "756501020201e0c6",
         "device": None,
         "rejected": False,
-        "where": "tests/vectors/mip/encode_input.yaml:203",
+        "where": "tests/vectors/mip/encode_input.yaml:207",
         "expect": ['{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}'],
     },
     {

@@ -81,16 +81,10 @@ impl crate::wire::Wire for AckCode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AckCode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AckCode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -170,16 +164,10 @@ impl crate::wire::Wire for ActionGpioMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for ActionGpioMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of ActionGpioMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -488,16 +476,10 @@ impl crate::wire::Wire for ActionType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for ActionType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of ActionType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -569,16 +551,10 @@ impl crate::wire::Wire for AdaptiveFilterLevel {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AdaptiveFilterLevel {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AdaptiveFilterLevel"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -646,16 +622,10 @@ impl crate::wire::Wire for AdaptiveMeasurementMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AdaptiveMeasurementMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AdaptiveMeasurementMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -723,16 +693,10 @@ impl crate::wire::Wire for AidingEchoMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AidingEchoMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AidingEchoMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -849,16 +813,10 @@ impl crate::wire::Wire for AidingFrameFormat {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AidingFrameFormat {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AidingFrameFormat"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -1186,16 +1144,10 @@ impl crate::wire::Wire for AidingMeasurementSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AidingMeasurementSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AidingMeasurementSource"
-                ))
-            }),
-            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -1352,16 +1304,10 @@ impl crate::wire::Wire for AidingTimebase {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AidingTimebase {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AidingTimebase"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -1507,16 +1453,10 @@ impl crate::wire::Wire for AltitudeAidingSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AltitudeAidingSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AltitudeAidingSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -1580,16 +1520,10 @@ impl crate::wire::Wire for AssistedFixOption {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AssistedFixOption {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AssistedFixOption"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4056,16 +3990,10 @@ impl crate::wire::Wire for DeviceStatusSelector {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for DeviceStatusSelector {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of DeviceStatusSelector"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4295,16 +4223,10 @@ impl crate::wire::Wire for EventControlMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for EventControlMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of EventControlMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4368,16 +4290,10 @@ impl crate::wire::Wire for ExternalHeadingType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for ExternalHeadingType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of ExternalHeadingType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4569,16 +4485,10 @@ impl crate::wire::Wire for FactoryStreamingAction {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FactoryStreamingAction {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FactoryStreamingAction"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4824,16 +4734,10 @@ impl crate::wire::Wire for FilterAidingMeasurementType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterAidingMeasurementType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterAidingMeasurementType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -4901,16 +4805,10 @@ impl crate::wire::Wire for FilterDualAntennaFixType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterDualAntennaFixType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterDualAntennaFixType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5052,16 +4950,10 @@ impl crate::wire::Wire for FilterDynamicsModeCv7 {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterDynamicsModeCv7 {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterDynamicsModeCv7"
-                ))
-            }),
-            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5129,16 +5021,10 @@ impl crate::wire::Wire for FilterDynamicsModeGx5 {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterDynamicsModeGx5 {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterDynamicsModeGx5"
-                ))
-            }),
-            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5500,16 +5386,10 @@ impl crate::wire::Wire for FilterGnssSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterGnssSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterGnssSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5713,16 +5593,10 @@ impl crate::wire::Wire for FilterInitialConditionSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterInitialConditionSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterInitialConditionSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5794,16 +5668,10 @@ impl crate::wire::Wire for FilterModeCv7 {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterModeCv7 {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterModeCv7"
-                ))
-            }),
-            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5917,16 +5785,10 @@ impl crate::wire::Wire for FilterReferenceFrame {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterReferenceFrame {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterReferenceFrame"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -5998,16 +5860,10 @@ impl crate::wire::Wire for FilterStateGx5 {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterStateGx5 {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterStateGx5"
-                ))
-            }),
-            other => <u16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -6627,16 +6483,10 @@ impl crate::wire::Wire for FunctionSelector {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FunctionSelector {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FunctionSelector"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -6704,16 +6554,10 @@ impl crate::wire::Wire for GnssAntennaPower {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssAntennaPower {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssAntennaPower"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -6789,16 +6633,10 @@ impl crate::wire::Wire for GnssAntennaState {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssAntennaState {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssAntennaState"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -7516,16 +7354,10 @@ impl crate::wire::Wire for GnssConstellationId {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssConstellationId {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssConstellationId"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -7613,16 +7445,10 @@ impl crate::wire::Wire for GnssDgnssBaseStationStatus {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssDgnssBaseStationStatus {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssDgnssBaseStationStatus"
-                ))
-            }),
-            other => <i16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <i16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -8570,16 +8396,10 @@ impl crate::wire::Wire for GnssFixTypeCv7 {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssFixTypeCv7 {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssFixTypeCv7"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -8655,16 +8475,10 @@ impl crate::wire::Wire for GnssFixTypeGx5 {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssFixTypeGx5 {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssFixTypeGx5"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -8888,16 +8702,10 @@ impl crate::wire::Wire for GnssGlonassSatelliteType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssGlonassSatelliteType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssGlonassSatelliteType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -10074,16 +9882,10 @@ impl crate::wire::Wire for GnssReceiverState {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssReceiverState {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssReceiverState"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -10593,16 +10395,10 @@ impl crate::wire::Wire for GnssSbasSystem {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssSbasSystem {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssSbasSystem"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -10922,16 +10718,10 @@ impl crate::wire::Wire for GnssSignalId {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssSignalId {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssSignalId"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -11011,16 +10801,10 @@ impl crate::wire::Wire for GnssSignalQuality {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GnssSignalQuality {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GnssSignalQuality"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -11983,16 +11767,10 @@ impl crate::wire::Wire for GpioEncoderBehavior {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioEncoderBehavior {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioEncoderBehavior"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12072,16 +11850,10 @@ impl crate::wire::Wire for GpioFeature {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioFeature {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioFeature"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12153,16 +11925,10 @@ impl crate::wire::Wire for GpioIoBehavior {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioIoBehavior {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioIoBehavior"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12422,16 +12188,10 @@ impl crate::wire::Wire for GpioPpsBehavior {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioPpsBehavior {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioPpsBehavior"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12503,16 +12263,10 @@ impl crate::wire::Wire for GpioTimestampBehavior {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioTimestampBehavior {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioTimestampBehavior"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12588,16 +12342,10 @@ impl crate::wire::Wire for GpioUartBehavior {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioUartBehavior {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioUartBehavior"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12657,16 +12405,10 @@ impl crate::wire::Wire for GpioUnusedBehavior {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpioUnusedBehavior {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpioUnusedBehavior"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -12730,16 +12472,10 @@ impl crate::wire::Wire for GpsTimeField {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GpsTimeField {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GpsTimeField"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -13026,16 +12762,10 @@ impl crate::wire::Wire for Gx5ConstellationId {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for Gx5ConstellationId {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of Gx5ConstellationId"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -13663,16 +13393,10 @@ impl crate::wire::Wire for Gx5PollOption {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for Gx5PollOption {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of Gx5PollOption"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -13736,16 +13460,10 @@ impl crate::wire::Wire for Gx5StreamSelector {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for Gx5StreamSelector {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of Gx5StreamSelector"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -13933,16 +13651,10 @@ impl crate::wire::Wire for HeadingUpdateSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for HeadingUpdateSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of HeadingUpdateSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -14010,16 +13722,10 @@ impl crate::wire::Wire for MagneticParamSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for MagneticParamSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of MagneticParamSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -14347,16 +14053,10 @@ impl crate::wire::Wire for OdometerMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for OdometerMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of OdometerMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -14674,16 +14374,10 @@ impl crate::wire::Wire for PitchRollAidingSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for PitchRollAidingSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of PitchRollAidingSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -14759,16 +14453,10 @@ impl crate::wire::Wire for PpsSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for PpsSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of PpsSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -14828,16 +14516,10 @@ impl crate::wire::Wire for ReferencePointSelector {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for ReferencePointSelector {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of ReferencePointSelector"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -14901,16 +14583,10 @@ impl crate::wire::Wire for RelativePositionSource {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for RelativePositionSource {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of RelativePositionSource"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -15639,16 +15315,10 @@ impl crate::wire::Wire for SensorRangeType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for SensorRangeType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of SensorRangeType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -15806,16 +15476,10 @@ impl crate::wire::Wire for SpartnConnectionType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for SpartnConnectionType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of SpartnConnectionType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -16135,16 +15799,10 @@ impl crate::wire::Wire for SupportedEventsQuery {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for SupportedEventsQuery {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of SupportedEventsQuery"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -16377,16 +16035,10 @@ impl crate::wire::Wire for SystemCommMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for SystemCommMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of SystemCommMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -16663,16 +16315,10 @@ impl crate::wire::Wire for ThresholdType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for ThresholdType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of ThresholdType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -16744,16 +16390,10 @@ impl crate::wire::Wire for TriggerGpioMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for TriggerGpioMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of TriggerGpioMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -17163,16 +16803,10 @@ impl crate::wire::Wire for TriggerType {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for TriggerType {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of TriggerType"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -17244,15 +16878,9 @@ impl crate::wire::Wire for VehicleDynamicsMode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for VehicleDynamicsMode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of VehicleDynamicsMode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }

@@ -3472,7 +3472,7 @@ fn case_encode_input_float_rounding() {
     );
 }
 
-/// `encode_input_float_range` (tests/vectors/mip/encode_input.yaml:45)
+/// `encode_input_float_range` (tests/vectors/mip/encode_input.yaml:49)
 #[test]
 fn case_encode_input_float_range() {
     check(
@@ -3485,7 +3485,7 @@ fn case_encode_input_float_range() {
     );
 }
 
-/// `encode_input_double_range` (tests/vectors/mip/encode_input.yaml:73)
+/// `encode_input_double_range` (tests/vectors/mip/encode_input.yaml:77)
 #[test]
 fn case_encode_input_double_range() {
     check(
@@ -3498,7 +3498,7 @@ fn case_encode_input_double_range() {
     );
 }
 
-/// `encode_input_negative_zero` (tests/vectors/mip/encode_input.yaml:100)
+/// `encode_input_negative_zero` (tests/vectors/mip/encode_input.yaml:104)
 #[test]
 fn case_encode_input_negative_zero() {
     check(
@@ -3511,7 +3511,7 @@ fn case_encode_input_negative_zero() {
     );
 }
 
-/// `encode_input_denormals` (tests/vectors/mip/encode_input.yaml:120)
+/// `encode_input_denormals` (tests/vectors/mip/encode_input.yaml:124)
 #[test]
 fn case_encode_input_denormals() {
     check(
@@ -3524,7 +3524,7 @@ fn case_encode_input_denormals() {
     );
 }
 
-/// `encode_input_nan_text` (tests/vectors/mip/encode_input.yaml:138)
+/// `encode_input_nan_text` (tests/vectors/mip/encode_input.yaml:142)
 #[test]
 fn case_encode_input_nan_text() {
     check(
@@ -3537,7 +3537,7 @@ fn case_encode_input_nan_text() {
     );
 }
 
-/// `encode_input_packet_keys` (tests/vectors/mip/encode_input.yaml:165)
+/// `encode_input_packet_keys` (tests/vectors/mip/encode_input.yaml:169)
 #[test]
 fn case_encode_input_packet_keys() {
     check(
@@ -3550,7 +3550,7 @@ fn case_encode_input_packet_keys() {
     );
 }
 
-/// `encode_input_field_keys` (tests/vectors/mip/encode_input.yaml:203)
+/// `encode_input_field_keys` (tests/vectors/mip/encode_input.yaml:207)
 #[test]
 fn case_encode_input_field_keys() {
     check(

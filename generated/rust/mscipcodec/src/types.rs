@@ -81,16 +81,10 @@ impl crate::wire::Wire for AccelRange {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for AccelRange {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of AccelRange"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -170,16 +164,10 @@ impl crate::wire::Wire for BaudRate {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for BaudRate {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of BaudRate"
-                ))
-            }),
-            other => <u32 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u32 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -255,16 +243,10 @@ impl crate::wire::Wire for ErrorCode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for ErrorCode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of ErrorCode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -352,16 +334,10 @@ impl crate::wire::Wire for FilterBandwidth {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FilterBandwidth {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FilterBandwidth"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -437,16 +413,10 @@ impl crate::wire::Wire for FunctionCode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for FunctionCode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of FunctionCode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -640,16 +610,10 @@ impl crate::wire::Wire for GyroRange {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for GyroRange {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of GyroRange"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -790,14 +754,10 @@ impl crate::wire::Wire for OnOff {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for OnOff {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!("\"{name}\" is not a value of OnOff"))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -889,15 +849,9 @@ impl crate::wire::Wire for SensorCode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for SensorCode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of SensorCode"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }

@@ -71,6 +71,12 @@ class StreamParser {
         return base_ + len_;
     }
 
+    /// Stream offset from which the caller must keep its input to print the bytes of skip runs
+    /// still to be reported: the pending run's first byte, else the first undecided byte.
+    std::uint64_t retain_from() const {
+        return skip_count_ > 0 ? skip_offset_ : base_;
+    }
+
   private:
     /// Bytes the buffered candidate (at buf_[start_]) needs before process() can decide on it.
     std::size_t wanted() const {

@@ -237,19 +237,14 @@ struct Json<T,
     }
 };
 
-/// Enums: the integer value; reading also accepts a value name from the spec.
+/// Enums: the integer value, written and read (docs/conformance.md section 5: a value name is
+/// not accepted, in every language; from_string() gives a name's value to the caller's code).
 template <class T> struct Json<T, std::enable_if_t<std::is_enum_v<T>>> {
     using U = std::underlying_type_t<T>;
     static void write(JsonWriter &w, const T &v) {
         Json<U>::write(w, static_cast<U>(v));
     }
     static bool read(const json::Value &x, T &v, JsonError &err) {
-        if (x.type == json::Value::Type::string) {
-            if (from_string(x.text.c_str(), v)) {
-                return true;
-            }
-            return err.fail("unknown value name '" + json::printable(x.text) + "'");
-        }
         U u{};
         if (!Json<U>::read(x, u, err)) {
             return false;

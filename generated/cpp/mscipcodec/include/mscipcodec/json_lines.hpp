@@ -98,6 +98,63 @@ inline void write_skip_json(JsonWriter &w, std::uint64_t offset, const std::uint
     w.end_object();
 }
 
+/// Canonical JSON lines of a stream fed in chunks of any size (the decode tool): keeps only the
+/// input bytes the parser has not decided on (a candidate packet, a pending skip run), so memory
+/// does not grow with the stream. on_line(const std::string&) receives each line without its
+/// newline. With `samples`, data packets carry their sample number (docs/conformance.md section 6).
+class JsonLinesDecoder {
+  public:
+    explicit JsonLinesDecoder(const std::optional<Device> &device, bool samples = false)
+        : device_(device), samples_(samples) {}
+
+    template <class OnLine> void feed(const std::uint8_t *data, std::size_t size, OnLine &&on_line) {
+        hist_.insert(hist_.end(), data, data + size);
+        parser_.feed(data, size, [&](const StreamEvent &e) { on_event(e, on_line); });
+        trim();
+    }
+
+    /// End of input: the remaining lines.
+    template <class OnLine> void finish(OnLine &&on_line) {
+        parser_.flush([&](const StreamEvent &e) { on_event(e, on_line); });
+        trim();
+    }
+
+  private:
+    template <class OnLine> void on_event(const StreamEvent &e, OnLine &on_line) {
+        line_.clear();
+        JsonWriter w(string_sink, &line_);
+        if (e.kind == StreamEvent::Kind::packet) {
+            write_packet_json(w, e.offset, e.packet, device_);
+            const std::optional<SamplePlace> place = samples_ ? tracker_.feed(e.packet) : std::nullopt;
+            const std::size_t at = line_.find(",\"fields\":");
+            if (place && at != std::string::npos) {
+                line_.insert(at, ",\"sample\":" + std::to_string(place->number));
+            }
+        } else {
+            write_skip_json(w, e.offset, hist_.data() + (e.offset - hist_base_),
+                            static_cast<std::size_t>(e.count));
+        }
+        on_line(static_cast<const std::string &>(line_));
+    }
+
+    void trim() {
+        const std::uint64_t keep = parser_.retain_from();
+        const auto drop = static_cast<std::size_t>(keep - hist_base_);
+        if (drop > 0) {
+            hist_.erase(hist_.begin(), hist_.begin() + static_cast<std::ptrdiff_t>(drop));
+            hist_base_ = keep;
+        }
+    }
+
+    std::optional<Device> device_;
+    bool samples_;
+    StreamParser parser_;
+    SampleTracker tracker_;
+    std::vector<std::uint8_t> hist_; ///< input from stream offset hist_base_ on
+    std::uint64_t hist_base_ = 0;
+    std::string line_;
+};
+
 /// Decodes a whole input, fed to a StreamParser `chunk` bytes at a time, into canonical JSON
 /// lines; on_line(const std::string&) receives each line without its newline. With `samples`,
 /// data packets carry their sample number (docs/conformance.md section 6).

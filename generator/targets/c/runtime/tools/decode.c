@@ -1,19 +1,39 @@
 /* codec-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
- * (docs/conformance.md section 5). Generated: do not edit. */
+ * (docs/conformance.md section 5). The input is read in blocks as it arrives and decoded in
+ * bounded memory: only the bytes the parser has not decided on are kept (a candidate packet, or
+ * the bytes of a pending skip run; a skip run longer than k_skip_spill is printed as it grows).
+ * When stdout is not a regular file, the lines of every block are flushed as soon as they are
+ * printed, so a live stream shows each packet when it arrives. Generated: do not edit. */
+#if defined(__unix__) || defined(__APPLE__)
+#define _POSIX_C_SOURCE 200809L
+#endif
 #include "codec/json.h"
 #include "codec/parser.h"
 #include "codec/samples.h"
-#include "read_all.h"
+#include "tool_io.h"
 
 static const char k_usage[] = "usage: codec-decode [--device ID] [--samples] [FILE|-]\n";
+static const char k_prog[] = "codec-decode";
+static const char k_hex_digits[] = "0123456789abcdef";
+
+enum {
+    k_block = 65536,       /* bytes read at a time */
+    k_skip_spill = 1 << 20 /* a pending skip run longer than this is printed as it grows */
+};
 
 typedef struct {
-    const unsigned char *input;
+    unsigned char *hist; /* input bytes from stream offset hist_base on (not yet decided) */
+    size_t hist_len;
+    size_t hist_cap;
+    uint64_t hist_base;
     codec_device_t device;
     char *line;
     size_t line_cap;
-    int failed;
+    int failed;    /* out of memory */
+    int write_err; /* errno of the first failed write, or 0 */
     int samples;
+    int skip_open;      /* a skip line's start is printed, its end is not */
+    uint64_t skip_done; /* stream offset up to which the open skip line's bytes are printed */
     codec_sample_tracker_t tracker;
 } decode_ctx_t;
 
@@ -28,11 +48,24 @@ static int grow(decode_ctx_t *ctx, size_t need) {
     return 0;
 }
 
+/* Prints the hex of the kept input bytes at stream offsets [from, to). */
+static void put_hex(decode_ctx_t *ctx, uint64_t from, uint64_t to) {
+    const unsigned char *p = ctx->hist + (size_t)(from - ctx->hist_base);
+    size_t n = (size_t)(to - from);
+    char two[2];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        two[0] = k_hex_digits[p[i] >> 4];
+        two[1] = k_hex_digits[p[i] & 0x0F];
+        tool_put(two, 2, &ctx->write_err);
+    }
+}
+
 /* The line of an event into ctx->line; returns its full length. */
 static size_t format(decode_ctx_t *ctx, const codec_event_t *ev) {
     if (ev->kind == CODEC_EVENT_SKIP) {
-        return codec_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length,
-                                    ctx->line, ctx->line_cap);
+        return codec_json_skip_line(ev->offset, ctx->hist + (size_t)(ev->offset - ctx->hist_base),
+                                    (size_t)ev->length, ctx->line, ctx->line_cap);
     }
     return codec_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
                                   ctx->line_cap);
@@ -41,7 +74,13 @@ static size_t format(decode_ctx_t *ctx, const codec_event_t *ev) {
 static void on_event(void *arg, const codec_event_t *ev) {
     decode_ctx_t *ctx = (decode_ctx_t *)arg;
     size_t need;
-    if (ctx->failed) {
+    if (ctx->failed || ctx->write_err) {
+        return;
+    }
+    if (ev->kind == CODEC_EVENT_SKIP && ctx->skip_open) {
+        put_hex(ctx, ctx->skip_done, ev->offset + ev->length);
+        tool_put("\"}\n", 3, &ctx->write_err);
+        ctx->skip_open = 0;
         return;
     }
     need = format(ctx, ev);
@@ -55,16 +94,45 @@ static void on_event(void *arg, const codec_event_t *ev) {
         codec_sample_info_t info;
         const char *at = strstr(ctx->line, ",\"fields\":");
         if (at && codec_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
+            char number[40];
             size_t head = (size_t)(at - ctx->line);
-            fwrite(ctx->line, 1, head, stdout);
-            fprintf(stdout, ",\"sample\":%llu", (unsigned long long)info.number);
-            fwrite(at, 1, need - head, stdout);
-            fputc('\n', stdout);
+            int k = snprintf(number, sizeof number, ",\"sample\":%llu", (unsigned long long)info.number);
+            tool_put(ctx->line, head, &ctx->write_err);
+            tool_put(number, (size_t)k, &ctx->write_err);
+            tool_put(at, need - head, &ctx->write_err);
+            tool_put("\n", 1, &ctx->write_err);
             return;
         }
     }
-    fwrite(ctx->line, 1, need, stdout);
-    fputc('\n', stdout);
+    ctx->line[need] = '\n';
+    tool_put(ctx->line, need + 1, &ctx->write_err);
+}
+
+/* After a block: a long pending skip run is printed so far, then the bytes the parser has
+ * decided on are dropped. */
+static void trim(decode_ctx_t *ctx, const codec_parser_t *parser) {
+    uint64_t keep = parser->skip_count ? parser->skip_offset : parser->base;
+    size_t drop;
+    if (parser->skip_count && (ctx->skip_open || parser->skip_count > k_skip_spill) && !ctx->write_err) {
+        uint64_t end = parser->skip_offset + parser->skip_count; /* the pending run so far */
+        if (!ctx->skip_open) {
+            char head[64];
+            int k = snprintf(head, sizeof head, "{\"offset\":%llu,\"skipped\":\"",
+                             (unsigned long long)parser->skip_offset);
+            tool_put(head, (size_t)k, &ctx->write_err);
+            ctx->skip_open = 1;
+            ctx->skip_done = parser->skip_offset;
+        }
+        put_hex(ctx, ctx->skip_done, end);
+        ctx->skip_done = end;
+        keep = end;
+    }
+    drop = (size_t)(keep - ctx->hist_base);
+    if (drop > 0) {
+        memmove(ctx->hist, ctx->hist + drop, ctx->hist_len - drop);
+        ctx->hist_len -= drop;
+        ctx->hist_base = keep;
+    }
 }
 
 /* The device ids the spec names, each after a space (devices are numbered from 1 up). */
@@ -77,18 +145,73 @@ static void print_device_ids(FILE *out) {
 }
 
 static int usage_error(const char *what) {
-    fprintf(stderr, "codec-decode: %s\n%s", what, k_usage);
+    fprintf(stderr, "%s: %s\n%s", k_prog, what, k_usage);
     return 2;
+}
+
+/* Decodes `in` to stdout; returns the exit status. */
+static int run(decode_ctx_t *ctx, FILE *in, const char *name) {
+    codec_parser_t parser;
+    const int flush_blocks = !tool_stdout_is_file();
+    codec_parser_init(&parser);
+    codec_sample_tracker_init(&ctx->tracker);
+    for (;;) {
+        long n;
+        if (ctx->hist_cap - ctx->hist_len < k_block) {
+            size_t cap = ctx->hist_len + k_block;
+            unsigned char *bigger = (unsigned char *)realloc(ctx->hist, cap);
+            if (!bigger) {
+                ctx->failed = 1;
+                break;
+            }
+            ctx->hist = bigger;
+            ctx->hist_cap = cap;
+        }
+        n = tool_read(in, ctx->hist + ctx->hist_len, k_block);
+        if (n < 0) {
+            int err = errno;
+            tool_flush(&ctx->write_err);
+            if (ctx->write_err) {
+                return tool_write_error(k_prog, ctx->write_err);
+            }
+            return tool_read_error(k_prog, name, err);
+        }
+        if (n == 0) {
+            break;
+        }
+        ctx->hist_len += (size_t)n;
+        codec_parser_feed(&parser, ctx->hist + ctx->hist_len - (size_t)n, (size_t)n, on_event, ctx);
+        trim(ctx, &parser);
+        if (flush_blocks) {
+            tool_flush(&ctx->write_err);
+        }
+        if (ctx->write_err) {
+            return tool_write_error(k_prog, ctx->write_err);
+        }
+        if (ctx->failed) {
+            break;
+        }
+    }
+    if (!ctx->failed) {
+        codec_parser_flush(&parser, on_event, ctx);
+    }
+    if (ctx->failed) {
+        fprintf(stderr, "%s: out of memory\n", k_prog);
+        return 2;
+    }
+    tool_flush(&ctx->write_err);
+    if (ctx->write_err) {
+        return tool_write_error(k_prog, ctx->write_err);
+    }
+    return 0;
 }
 
 int main(int argc, char **argv) {
     const char *path = NULL;
     decode_ctx_t ctx;
-    codec_parser_t parser;
-    unsigned char *input;
-    size_t len = 0;
     FILE *in = stdin;
     int i;
+    int status;
     memset(&ctx, 0, sizeof ctx);
     ctx.device = CODEC_DEVICE_ANY;
     for (i = 1; i < argc; i++) {
@@ -107,7 +230,7 @@ int main(int argc, char **argv) {
             fputs(k_usage, stdout);
             return 0;
         } else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "codec-decode: unknown option %s\n%s", a, k_usage);
+            fprintf(stderr, "%s: unknown option %s\n%s", k_prog, a, k_usage);
             return 2;
         } else if (path) {
             return usage_error("only one input file");
@@ -115,7 +238,7 @@ int main(int argc, char **argv) {
             path = a;
         }
         if (id && !codec_device_from_id(id, &ctx.device)) {
-            fprintf(stderr, "codec-decode: unknown device '%s' (expected one of:", id);
+            fprintf(stderr, "%s: unknown device '%s' (expected one of:", k_prog, id);
             print_device_ids(stderr);
             fputs(")\n", stderr);
             return 2;
@@ -124,39 +247,23 @@ int main(int argc, char **argv) {
     if (path && strcmp(path, "-") != 0) {
         in = fopen(path, "rb");
         if (!in) {
-            fprintf(stderr, "codec-decode: cannot open %s\n", path);
+            fprintf(stderr, "%s: cannot open %s: %s\n", k_prog, path, strerror(errno));
             return 2;
         }
     }
-    input = read_all(in, &len);
-    if (in != stdin) {
-        fclose(in);
-    }
-    if (!input) {
-        fprintf(stderr, "codec-decode: cannot read %s\n", path ? path : "standard input");
-        return 2;
-    }
-    ctx.input = input;
+    setvbuf(stdout, NULL, _IOFBF, k_block);
     ctx.line_cap = 65536;
     ctx.line = (char *)malloc(ctx.line_cap);
     if (!ctx.line) {
-        free(input);
-        fprintf(stderr, "codec-decode: out of memory\n");
-        return 2;
+        fprintf(stderr, "%s: out of memory\n", k_prog);
+        status = 2;
+    } else {
+        status = run(&ctx, in, path && strcmp(path, "-") != 0 ? path : "standard input");
     }
-    codec_parser_init(&parser);
-    codec_sample_tracker_init(&ctx.tracker);
-    codec_parser_feed(&parser, input, len, on_event, &ctx);
-    codec_parser_flush(&parser, on_event, &ctx);
+    if (in != stdin) {
+        fclose(in);
+    }
     free(ctx.line);
-    free(input);
-    if (ctx.failed) {
-        fprintf(stderr, "codec-decode: out of memory\n");
-        return 2;
-    }
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "codec-decode: cannot write the output\n");
-        return 2;
-    }
-    return 0;
+    free(ctx.hist);
+    return status;
 }

@@ -1,6 +1,7 @@
 // Runtime tests of dispatch.hpp and json_lines.hpp on the stub package (package/protopkg/, with the
 // alpha framing): the canonical line of each kind of field, per-device variants, and the errors
 // of encode_json_line.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -97,6 +98,35 @@ TEST(JsonLines, SkipRunsAndUnknownSets) {
     EXPECT_EQ(lines[0], "{\"offset\":0,\"skipped\":\"0001\"}");
     EXPECT_EQ(lines[1], "{\"offset\":2,\"set\":64,\"fields\":[]}");
     EXPECT_EQ(protopkg_test::encode_lines(lines), bytes);
+}
+
+// The decode tool's streaming decoder: the same lines as the whole-input decode, whatever the
+// chunks, and it keeps no more than the undecided bytes (its lines carry skip runs that span
+// many chunks).
+TEST(JsonLines, StreamingDecoderMatchesWholeDecode) {
+    Bytes bytes;
+    for (int k = 0; k < 40; ++k) {
+        const Bytes junk(static_cast<std::size_t>(k * 7 % 23), static_cast<std::uint8_t>(k));
+        bytes.insert(bytes.end(), junk.begin(), junk.end());
+        pkg::PacketBuilder b(0x40);
+        const Bytes p = one_packet(b);
+        bytes.insert(bytes.end(), p.begin(), p.end());
+    }
+    bytes.push_back(bytes.front() == 0 ? 0x11 : 0x00);
+    std::vector<std::string> whole;
+    pkg::decode_to_json_lines(bytes.data(), bytes.size(), bytes.size(), std::nullopt,
+                              [&](const std::string &line) { whole.push_back(line); });
+    ASSERT_GT(whole.size(), 40u);
+    for (const std::size_t chunk : {std::size_t{1}, std::size_t{3}, std::size_t{64}, bytes.size()}) {
+        std::vector<std::string> streamed;
+        pkg::JsonLinesDecoder decoder(std::nullopt);
+        const auto on_line = [&](const std::string &line) { streamed.push_back(line); };
+        for (std::size_t pos = 0; pos < bytes.size(); pos += chunk) {
+            decoder.feed(bytes.data() + pos, std::min(chunk, bytes.size() - pos), on_line);
+        }
+        decoder.finish(on_line);
+        EXPECT_EQ(streamed, whole) << "chunk " << chunk;
+    }
 }
 
 TEST(JsonLines, EncodeErrors) {

@@ -1,5 +1,8 @@
 // protopkg-decode [--device ID] [--samples] [FILE|-]: a binary stream -> canonical JSON lines on stdout.
-// Usage and I/O errors: one line on stderr, exit status 2.
+// Usage and I/O errors: one line on stderr, exit status 2 (a closed pipe on stdout: SIGPIPE, see
+// tool_io.hpp). The input is read in blocks as it arrives and decoded in bounded memory
+// (JsonLinesDecoder keeps only the bytes the parser has not decided on); when stdout is not a
+// regular file, the lines of every block are flushed as soon as they are printed.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -9,18 +12,20 @@
 
 #include "protopkg/devices.hpp"
 #include "protopkg/json_lines.hpp"
+#include "tool_io.hpp"
 
 namespace {
 
+const char *const kProg = "protopkg-decode";
 const char *const kUsage = "usage: protopkg-decode [--device ID] [--samples] [FILE|-]";
 
 int usage_error(const std::string &message) {
-    std::fprintf(stderr, "protopkg-decode: %s (%s)\n", message.c_str(), kUsage);
+    std::fprintf(stderr, "%s: %s (%s)\n", kProg, message.c_str(), kUsage);
     return 2;
 }
 
 int io_error(const std::string &message) {
-    std::fprintf(stderr, "protopkg-decode: %s\n", message.c_str());
+    std::fprintf(stderr, "%s: %s\n", kProg, message.c_str());
     return 2;
 }
 
@@ -34,15 +39,39 @@ std::string known_devices() {
     return out;
 }
 
-bool read_all(std::FILE *f, std::vector<std::uint8_t> &out) {
-    std::uint8_t buf[65536];
+/// Decodes `in` to stdout; returns the exit status.
+int run(std::FILE *in, const std::string &name, const std::optional<protopkg::Device> &device, bool samples) {
+    static char out_buf[1 << 16];
+    std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
+    const bool flush_blocks = !protopkg::tool_io::stdout_is_file();
+    protopkg::tool_io::Output out;
+    protopkg::JsonLinesDecoder decoder(device, samples);
+    auto on_line = [&out](const std::string &line) {
+        out.put(line);
+        out.put("\n", 1);
+    };
+    std::vector<unsigned char> buf(1 << 16);
     for (;;) {
-        const std::size_t n = std::fread(buf, 1, sizeof buf, f);
-        out.insert(out.end(), buf, buf + n);
-        if (n < sizeof buf) {
-            return std::ferror(f) == 0;
+        const long n = protopkg::tool_io::read_some(in, buf.data(), buf.size());
+        if (n < 0) {
+            const int err = errno;
+            out.flush();
+            return out.failed() ? out.report(kProg) : protopkg::tool_io::read_error(kProg, name, err);
+        }
+        if (n == 0) {
+            break;
+        }
+        decoder.feed(buf.data(), static_cast<std::size_t>(n), on_line);
+        if (flush_blocks) {
+            out.flush();
+        }
+        if (out.failed()) {
+            return out.report(kProg);
         }
     }
+    decoder.finish(on_line);
+    out.flush();
+    return out.failed() ? out.report(kProg) : 0;
 }
 
 } // namespace
@@ -90,32 +119,18 @@ int main(int argc, char **argv) {
         }
         path = argv[i];
     }
-    std::vector<std::uint8_t> input;
-    if (path == nullptr || std::strcmp(path, "-") == 0) {
-        if (!read_all(stdin, input)) {
-            return io_error("cannot read standard input");
-        }
-    } else {
-        std::FILE *f = std::fopen(path, "rb");
-        if (f == nullptr) {
+    std::FILE *in = stdin;
+    std::string name = "standard input";
+    if (path != nullptr && std::strcmp(path, "-") != 0) {
+        in = std::fopen(path, "rb");
+        if (in == nullptr) {
             return io_error(std::string("cannot open '") + path + "': " + std::strerror(errno));
         }
-        const bool ok = read_all(f, input);
-        std::fclose(f);
-        if (!ok) {
-            return io_error(std::string("cannot read '") + path + "'");
-        }
+        name = std::string("'") + path + "'";
     }
-    protopkg::decode_to_json_lines(
-        input.data(), input.size(), 4096, device,
-        [](const std::string &line) {
-            std::fwrite(line.data(), 1, line.size(), stdout);
-            std::fputc('\n', stdout);
-        },
-        samples);
-    if (std::fflush(stdout) != 0) {
-        std::fprintf(stderr, "protopkg-decode: cannot write standard output\n");
-        return 2;
+    const int status = run(in, name, device, samples);
+    if (in != stdin) {
+        std::fclose(in);
     }
-    return 0;
+    return status;
 }

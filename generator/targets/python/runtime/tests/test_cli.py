@@ -66,3 +66,44 @@ def test_encode_bad_lines():
     assert [line.split(":")[0] for line in lines] == ["line 2", "line 3", "line 4", "line 5"]
     assert r.stdout == b"\x00\xff\x00\xff"
     assert b"Traceback" not in r.stderr
+
+
+def test_io_faults_are_one_line_and_exit_2(tmp_path):
+    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""), PYTHONDONTWRITEBYTECODE="1")
+    path = tmp_path / "s.bin"
+    path.write_bytes(stream() * 1000)
+    with open("/dev/full", "wb") as full:
+        for args, data in ((["decode", str(path)], None), (["encode"], run(["decode", str(path)]).stdout)):
+            r = subprocess.run(
+                [sys.executable, "-m", "testproto", *args], input=data, stdout=full, stderr=subprocess.PIPE, env=env
+            )
+            assert r.returncode == 2, args
+            assert r.stderr.decode().splitlines() == [f"testproto: cannot write standard output: {os.strerror(28)}"]
+    for args in (["decode", "-"], ["encode"], ["decode", str(tmp_path)], ["decode", "/proc/self/mem"]):
+        r = subprocess.run(
+            [sys.executable, "-m", "testproto", *args],
+            capture_output=True,
+            env=env,
+            preexec_fn=lambda: os.close(0),
+        )
+        assert r.returncode == 2, args
+        assert r.stderr.count(b"\n") == 1 and b"Traceback" not in r.stderr, r.stderr
+    # A closed pipe: killed by SIGPIPE, nothing on stderr.
+    p = subprocess.Popen(
+        [sys.executable, "-m", "testproto", "decode", str(path)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        env=env,
+    )
+    assert len(p.stdout.read(100)) == 100
+    p.stdout.close()
+    assert p.wait(timeout=60) == -13
+    assert p.stderr.read() == b""
+
+
+def test_blank_lines_are_rfc_8259_whitespace_only():
+    good = b'{"offset":0,"skipped":"00ff"}\n'
+    r = run(["encode"], good + b" \t\r\n" + "\u00a0\n".encode() + b"\x0c\n" + good)
+    assert r.returncode == 1
+    assert [line.split(":")[0] for line in r.stderr.decode().splitlines()] == ["line 3", "line 4"]
+    assert r.stdout == b"\x00\xff\x00\xff"

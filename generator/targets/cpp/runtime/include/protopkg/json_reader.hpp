@@ -301,6 +301,11 @@ class Parser {
                 }
                 cp = (cp << 6) | (d & 0x3F);
             }
+            // RFC 3629: the shortest form only, no surrogates, nothing above U+10FFFF.
+            static constexpr std::uint32_t kLeast[] = {0, 0x80, 0x800, 0x10000};
+            if (cp < kLeast[n] || (cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF) {
+                return fail("invalid UTF-8");
+            }
             pos_ += n + 1;
             put(out, wide, cp);
         }

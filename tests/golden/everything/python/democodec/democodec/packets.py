@@ -577,7 +577,7 @@ def encode_value(obj: Any) -> bytes:
 
 def encode_line(text: str) -> bytes:
     """Bytes of one canonical JSON line; raises EncodeError (or JsonError) naming what is wrong."""
-    if not text.strip():
+    if not text.strip(" \t\r\n"):  # RFC 8259 whitespace only
         raise EncodeError("empty line (expected a JSON object)")
     try:
         obj = loads(text)

@@ -136,16 +136,10 @@ impl crate::wire::Wire for Function {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for Function {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of Function"
-                ))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -284,14 +278,10 @@ impl crate::wire::Wire for Mode {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for Mode {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!("\"{name}\" is not a value of Mode"))
-            }),
-            other => <u8 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <u8 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
@@ -353,16 +343,10 @@ impl crate::wire::Wire for Signed {
 
 #[cfg(feature = "std")]
 impl crate::json_read::FromJson for Signed {
-    /// An integer, or the name of a value.
+    /// The integer value (docs/conformance.md §5: a value name is not accepted, in every
+    /// language; `from_name` gives a name's value to the caller's code).
     fn from_json(v: &crate::json_read::Json) -> Result<Self, crate::json_read::JsonError> {
-        match v {
-            crate::json_read::Json::String(name) => Self::from_name(name).ok_or_else(|| {
-                crate::json_read::JsonError::new(std::format!(
-                    "\"{name}\" is not a value of Signed"
-                ))
-            }),
-            other => <i16 as crate::json_read::FromJson>::from_json(other).map(Self),
-        }
+        <i16 as crate::json_read::FromJson>::from_json(v).map(Self)
     }
 }
 
