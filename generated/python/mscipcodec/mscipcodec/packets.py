@@ -7,6 +7,7 @@ such line back into bytes (the encode CLI).
 
 from __future__ import annotations
 
+import importlib
 from array import array
 from typing import TYPE_CHECKING, Any, Dict, Iterable, List, Optional, Tuple, Type, Union, cast
 
@@ -374,7 +375,8 @@ class Table:
             raise ImportError("Table.arrays needs numpy: pip install numpy") from None
         from . import _columns
 
-        shapes = _columns.SHAPES.get((self.cls.SET, self.cls.DESCRIPTOR, self.cls.DEVICE), {})
+        key = _columns_key(self.cls)
+        shapes = _columns.SHAPES.get(key, {}) if key is not None else {}
         out: Dict[str, Any] = {}
         for attr, kind, _size, count, _aux in self._items:
             a = np.frombuffer(self.columns[attr], dtype=_NUMPY_TYPES[kind])
@@ -390,16 +392,18 @@ class Table:
         value, named as in `export` (`scaled_accel.x`, ...), and "offset"."""
         try:
             import numpy as np
-            import pandas as pd
+
+            pd: Any = importlib.import_module("pandas")  # no type stubs
         except ImportError:
             raise ImportError("Table.dataframe needs pandas: pip install pandas") from None
         from . import _columns
 
-        specs = _columns.COLUMNS.get((self.cls.SET, self.cls.DESCRIPTOR, self.cls.DEVICE), ())
+        key = _columns_key(self.cls)
+        specs = _columns.COLUMNS.get(key, ()) if key is not None else ()
         arrays = self.arrays()
         data: Dict[str, Any] = {"offset": np.frombuffer(self.offsets, dtype=np.int64)}
         for name, path, _units, _kind, _enum in specs:
-            a = arrays[path[0]]
+            a = arrays[str(path[0])]  # the attribute; indices follow
             if len(path) > 1:
                 a = a.reshape(self.rows, -1)[:, path[1]]
             data[name] = a
@@ -407,6 +411,12 @@ class Table:
 
     def __repr__(self) -> str:
         return f"Table(set=0x{self.set:02X}, descriptor=0x{self.descriptor:02X}, {self.cls.__name__}, rows={self.rows})"
+
+
+def _columns_key(cls: Type[Field]) -> Optional[Tuple[int, int, Optional[str]]]:
+    """The (set, descriptor, device) key of a field layout in the generated `_columns` tables
+    (None for a layout of no set, which has no entry)."""
+    return None if cls.SET is None else (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
 
 
 class Columns:

@@ -16,13 +16,14 @@ from __future__ import annotations
 
 import argparse
 import csv
+import importlib
 import json
 import math
 import os
 import struct
 import sys
 import time
-from typing import Any, Dict, Iterator, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, Type
 
 from . import _columns, registry
 from ._protocol import FIRST_SHARED, SET_OFFSET, SYNC, TIMESTAMPS
@@ -45,8 +46,6 @@ class ToolError(Exception):
 
 def need(module: str) -> Any:
     """Import an optional library or say which extra installs it."""
-    import importlib
-
     try:
         return importlib.import_module(module)
     except ImportError:
@@ -86,7 +85,7 @@ def plain(v: Any) -> Any:
     return str(v)
 
 
-def _get(value: Any, path: Tuple) -> Any:
+def _get(value: Any, path: _columns.Path) -> Any:
     for step in path:
         if value is None:
             return None
@@ -220,7 +219,7 @@ class Source:
 def _progress(total: int) -> Any:
     """A tqdm bar in bytes (with bytes/s) on stderr, or None when tqdm is not installed."""
     try:
-        from tqdm import tqdm
+        tqdm = importlib.import_module("tqdm").tqdm  # no type stubs
     except ImportError:
         return None
     return tqdm(total=total, unit="B", unit_scale=True, unit_divisor=1024, file=sys.stderr, leave=False)
@@ -245,7 +244,25 @@ class Rows:
         self.count = 0
 
 
-class CsvWriter:
+class Writer:
+    """A table file being written: headers first, then rows of typed cells."""
+
+    suffix = ""
+
+    def __init__(self, path: str, headers: List[str]) -> None:
+        raise NotImplementedError
+
+    def write(self, rows: List[List[Any]]) -> None:
+        raise NotImplementedError
+
+    def flush(self) -> None:
+        raise NotImplementedError
+
+    def close(self) -> None:
+        raise NotImplementedError
+
+
+class CsvWriter(Writer):
     suffix = ".csv"
 
     def __init__(self, path: str, headers: List[str]) -> None:
@@ -286,7 +303,7 @@ class _F32Cell(float):
         return f32_text(self)
 
 
-class JsonlWriter:
+class JsonlWriter(Writer):
     suffix = ".jsonl"
 
     def __init__(self, path: str, headers: List[str]) -> None:
@@ -315,7 +332,7 @@ def _json_float(c: float) -> Any:
     return c
 
 
-class ParquetWriter:
+class ParquetWriter(Writer):
     """Parquet by pyarrow, in row groups of up to 65536 rows (bounded memory)."""
 
     suffix = ".parquet"
@@ -358,9 +375,10 @@ class ParquetWriter:
             self.types[1] = self.pa.uint64()
         arrays = []
         for c, t in zip(cols, self.types):
+            values: List[Any] = list(c)
             if t == self.pa.string():
-                c = [None if x is None else str(x) for x in c]
-            arrays.append(self.pa.array(c, type=t))
+                values = [None if x is None else str(x) for x in values]
+            arrays.append(self.pa.array(values, type=t))
         table = self.pa.Table.from_arrays(arrays, names=self.headers)
         if self.writer is None:
             self.writer = self.pq.ParquetWriter(self.path, table.schema)
@@ -378,7 +396,7 @@ class ParquetWriter:
             self.writer.close()
 
 
-WRITERS = {"csv": CsvWriter, "jsonl": JsonlWriter, "parquet": ParquetWriter}
+WRITERS: Dict[str, Type[Writer]] = {"csv": CsvWriter, "jsonl": JsonlWriter, "parquet": ParquetWriter}
 
 
 # ------------------------------------------------------------------------------------- export
@@ -400,7 +418,8 @@ class Exporter:
         self.fields = fields
         self.enum_numbers = enum_numbers
         self.join = join
-        self.tables: Dict[Any, Tuple[Rows, Any, Optional[Layout]]] = {}
+        # (set, layout class) -> its table, or None when --fields keeps none of its columns
+        self.tables: Dict[Any, Optional[Tuple[Rows, Writer, Layout]]] = {}
         self.pending: Dict[Any, List[List[Any]]] = {}
         self.layouts: Dict[Any, Layout] = {}
         self.joined: Dict[int, Dict[str, Any]] = {}  # join: set -> {"rows": [...], "headers": {...}}
@@ -424,30 +443,37 @@ class Exporter:
                 continue
             cls = type(f.value)
             key = (p.set, cls)
-            entry = self.tables.get(key)
-            if entry is None:
+            if key in self.tables:
+                entry = self.tables[key]
+            else:
                 lay = self.layout(cls)
                 keep = select(lay.headers, self.fields)
                 if self.fields and not keep:
-                    self.tables[key] = entry = (None, None, None)
+                    self.tables[key] = entry = None
                 else:
                     rows = Rows(table_name(p.set, cls), lay.headers, keep)
                     path = os.path.join(self.out, rows.name + self.writer.suffix)
                     self.tables[key] = entry = (rows, self.writer(path, rows.headers), lay)
                     self.pending[key] = []
-            rows, _w, lay = entry
-            if rows is None:
+            if entry is None:
                 continue
+            rows, _w, lay = entry
             cells = _typed(lay, f.value)
             self.pending[key].append([t, p.offset] + [cells[i] for i in rows.keep])
             rows.count += 1
             if len(self.pending[key]) >= 4096:
                 self._drain(key)
 
+    def _writer(self, key: Any) -> Writer:
+        """The writer of a table that has pending rows (so one with columns)."""
+        entry = self.tables[key]
+        assert entry is not None
+        return entry[1]
+
     def _drain(self, key: Any) -> None:
         rows = self.pending[key]
         if rows:
-            self.tables[key][1].write(rows)
+            self._writer(key).write(rows)
             self.pending[key] = []
 
     def _join(self, p: Packet, t: Optional[float]) -> None:
@@ -476,10 +502,10 @@ class Exporter:
     def flush(self) -> None:
         for key in list(self.pending):
             self._drain(key)
-            self.tables[key][1].flush()
+            self._writer(key).flush()
 
     def close(self) -> List[Tuple[str, int]]:
-        written = []
+        written: List[Tuple[str, int]] = []
         if self.join:
             for set_id, table in sorted(self.joined.items()):
                 headers = [TIME_HEADER, "offset"] + list(table["headers"])
@@ -491,9 +517,10 @@ class Exporter:
                 w.close()
                 written.append((name + self.writer.suffix, len(table["rows"])))
             return written
-        for key, (rows, w, _lay) in self.tables.items():
-            if rows is None:
+        for key, entry in self.tables.items():
+            if entry is None:
                 continue
+            rows, w, _lay = entry
             self._drain(key)
             w.close()
             written.append((rows.name + self.writer.suffix, rows.count))
@@ -503,10 +530,10 @@ class Exporter:
 _DATA_SETS = frozenset(s for s, _d, _dev in _columns.COLUMNS)
 
 
-def sample_key(p: Packet) -> Optional[Tuple]:
+def sample_key(p: Packet) -> Optional[Tuple[Tuple[int, bytes], ...]]:
     """The sample key of a decoded packet (docs/conformance.md section 6): the leading shared
     timestamp fields of the sample rule, as sent; None when it has none."""
-    key = []
+    key: List[Tuple[int, bytes]] = []
     for f in p.fields:
         d = getattr(f, "descriptor", None)
         if d is None or d < FIRST_SHARED:
@@ -528,8 +555,8 @@ def _fast_path(args: argparse.Namespace) -> bool:
     if args.log == "-" or args.follow or args.join or args.format not in ("csv", "parquet") or not ACCELERATED:
         return False
     try:
-        import numpy  # noqa: F401
-        import pyarrow  # noqa: F401
+        importlib.import_module("numpy")
+        importlib.import_module("pyarrow")
     except ImportError:
         return False
     return os.environ.get(PROG.upper() + "_EXPORT_SLOW") is None
@@ -541,10 +568,9 @@ class FastExporter:
     stream order; written by pyarrow (CSV or Parquet) block by block."""
 
     def __init__(self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool) -> None:
-        import numpy as np
-        import pyarrow as pa
-
-        self.np, self.pa = np, pa
+        # numpy and pyarrow are optional (pyarrow has no type stubs): both used untyped here.
+        self.np: Any = importlib.import_module("numpy")
+        self.pa: Any = importlib.import_module("pyarrow")
         self.out, self.fmt, self.fields, self.enum_numbers = out, fmt, fields, enum_numbers
         self.writers: Dict[Any, Any] = {}
         self.counts: Dict[Any, int] = {}
@@ -560,6 +586,12 @@ class FastExporter:
             keep = select(lay.headers, self.fields)
             self.layouts[cls] = None if (self.fields and not keep) else (lay, keep)
         return self.layouts[cls]
+
+    def _kept(self, cls: Any) -> Tuple[Layout, List[int]]:
+        """The layout and kept columns of a class that has rows (so columns to write)."""
+        chosen = self._layout(cls)
+        assert chosen is not None
+        return chosen
 
     def block(self, cols: Any, data: Any, base: int) -> None:
         """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
@@ -595,9 +627,12 @@ class FastExporter:
             v = np.fromiter(extra.values(), dtype=np.float64, count=len(extra))
             times[set_id] = _merge_times(np, times.get(set_id), (o, v))
         for (set_id, _d), t in cols.tables.items():
-            if set_id not in _DATA_SETS or t.rows == 0 or self._layout(t.cls) is None:
+            if set_id not in _DATA_SETS or t.rows == 0:
                 continue
-            lay, keep = self._layout(t.cls)
+            chosen = self._layout(t.cls)
+            if chosen is None:
+                continue
+            lay, keep = chosen
             arrays = t.arrays()
             offs = np.frombuffer(t.offsets, dtype=np.int64)
             cols_out: List[Any] = [_lookup_times(np, times.get(set_id), offs), offs + base]
@@ -609,7 +644,7 @@ class FastExporter:
                 cols_out.append(self._column(a, kind, enum))
             pieces.setdefault((set_id, t.cls), []).append((offs, np.frombuffer(t.index, dtype=np.int64), cols_out))
         for (set_id, cls), rows in other_rows.items():
-            lay, keep = self._layout(cls)
+            lay, keep = self._kept(cls)
             offs = np.array([r[0] for r in rows], dtype=np.int64)
             idx = np.array([r[1] for r in rows], dtype=np.int64)
             cells = [_lookup_times(np, times.get(set_id), offs), offs + base]
@@ -656,7 +691,7 @@ class FastExporter:
     def _write(self, key: Any, parts: List[Any]) -> None:
         np, pa = self.np, self.pa
         set_id, cls = key
-        lay, keep = self._layout(cls)
+        lay, keep = self._kept(cls)
         headers = [TIME_HEADER, "offset"] + [lay.headers[i] for i in keep]
         offs = np.concatenate([p[0] for p in parts])
         idx = np.concatenate([p[1] for p in parts])
@@ -683,13 +718,10 @@ class FastExporter:
         if w is None:
             path = os.path.join(self.out, table_name(set_id, cls) + "." + self.fmt)
             if self.fmt == "csv":
-                import pyarrow.csv as pacsv
-
+                pacsv = importlib.import_module("pyarrow.csv")
                 w = pacsv.CSVWriter(path, table.schema, write_options=pacsv.WriteOptions(quoting_style="needed"))
             else:
-                import pyarrow.parquet as pq
-
-                w = pq.ParquetWriter(path, table.schema)
+                w = importlib.import_module("pyarrow.parquet").ParquetWriter(path, table.schema)
             self.writers[key] = w
             self.schemas[key] = table.schema
             self.counts[key] = 0
@@ -733,7 +765,7 @@ def _merge_times(np: Any, prev: Any, new: Tuple[Any, Any]) -> Tuple[Any, Any]:
 
 def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
     """Seconds of each packet offset (NaN -> null where the packet has no timestamp)."""
-    import pyarrow as pa
+    pa = importlib.import_module("pyarrow")
 
     if times is None or len(times[0]) == 0:
         return pa.nulls(len(offsets), type=pa.float64())
@@ -758,12 +790,12 @@ def export(args: argparse.Namespace) -> int:
     packets = skipped = 0
     try:
         for chunk_events in _batched(source, args.device):
-            for e in chunk_events:
-                if isinstance(e, Packet):
+            for ev in chunk_events:
+                if isinstance(ev, Packet):
                     packets += 1
-                    ex.packet(e)
+                    ex.packet(ev)
                 else:
-                    skipped += len(e.data)
+                    skipped += len(ev.data)
             if args.follow:
                 ex.flush()
         written = ex.close()
@@ -778,7 +810,7 @@ def export(args: argparse.Namespace) -> int:
 def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
     """The columnar export: blocks of BLOCK bytes through decode_columns; bytes that end a block
     in a skipped run (possibly a packet cut by the block's end) start the next block."""
-    from .packets import decode_columns
+    from .packets import Columns, decode_columns
 
     source = Source(args.log)
     ex = FastExporter(args.out, args.format, fields, args.enum_numbers)
@@ -796,13 +828,14 @@ def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
             pending = bytearray()
             cols = decode_columns(data)
             cut = len(data)
+            block: Optional[Columns] = cols
             if cols.skips and cols.skips[-1].offset + len(cols.skips[-1].data) == len(data):
                 cut = cols.skips[-1].offset
-                cols = decode_columns(data[:cut]) if cut else None
-            if cols is not None:
-                ex.block(cols, data, base)
-                packets += cols.packets
-                skipped += sum(len(k.data) for k in cols.skips)
+                block = decode_columns(data[:cut]) if cut else None
+            if block is not None:
+                ex.block(block, data, base)
+                packets += block.packets
+                skipped += sum(len(k.data) for k in block.skips)
             carry = data[cut:]
             base += cut
         data = carry + bytes(pending)
@@ -893,7 +926,7 @@ class Summary:
         out.append(
             f"bytes: {self.bytes}  packets: {total}  skipped bytes: {self.skipped} in {self.skip_runs} runs  bad checksums: {self.bad_checksums}"
         )
-        if self.first is not None:
+        if self.first is not None and self.last is not None:
             out.append(f"time: first {self.first:.6f} s  last {self.last:.6f} s  span {self.last - self.first:.6f} s")
         else:
             out.append("time: no timestamps")
@@ -1035,7 +1068,9 @@ def parser() -> argparse.ArgumentParser:
         "JSON-line tools (python -m %s decode --help)." % PROG,
     )
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
-    device = dict(choices=registry.DEVICES, help="decode per-device layouts for this device")
+
+    def device(command: argparse.ArgumentParser) -> None:
+        command.add_argument("--device", choices=registry.DEVICES, help="decode per-device layouts for this device")
 
     e = sub.add_parser(
         "export",
@@ -1056,7 +1091,7 @@ def parser() -> argparse.ArgumentParser:
     e.add_argument("--enum-numbers", action="store_true", help="write enums as numbers (default: names from the spec)")
     e.add_argument("--follow", action="store_true", help="keep reading a growing file (stop with Ctrl-C or --idle)")
     e.add_argument("--idle", type=float, metavar="S", help="with --follow: stop after S seconds without new data")
-    e.add_argument("--device", **device)
+    device(e)
     e.set_defaults(run=export)
 
     i = sub.add_parser(
@@ -1065,7 +1100,7 @@ def parser() -> argparse.ArgumentParser:
         description="Packets and fields per set and descriptor, rates in Hz from the timestamps, gaps and dropped samples, skipped bytes and bad checksums, first and last time.",
     )
     i.add_argument("log", metavar="LOG", help="binary log file, or - for stdin")
-    i.add_argument("--device", **device)
+    device(i)
     i.set_defaults(run=info)
 
     q = sub.add_parser(
@@ -1081,7 +1116,7 @@ def parser() -> argparse.ArgumentParser:
         help="columns to plot (names or prefixes, e.g. scaled_accel,scaled_gyro.z)",
     )
     q.add_argument("--out", required=True, metavar="FILE", help="image file: .png, .svg or .html")
-    q.add_argument("--device", **device)
+    device(q)
     q.set_defaults(run=plot)
     return p
 
@@ -1094,8 +1129,9 @@ def main(argv: List[str]) -> int:
     if getattr(args, "idle", None) is not None and not args.follow:
         print(f"{PROG} {args.command}: --idle needs --follow", file=sys.stderr)
         return 2
+    run: Callable[[argparse.Namespace], int] = args.run
     try:
-        return args.run(args)
+        return run(args)
     except ToolError as e:
         print(f"{PROG} {args.command}: {e}", file=sys.stderr)
         return e.status

@@ -16,10 +16,11 @@ know about the data fields, taken from the spec rather than written by hand:
 
 from __future__ import annotations
 
-from typing import Dict, Optional, Tuple
+from typing import Dict, Optional, Tuple, Union
 
 Key = Tuple[int, int, Optional[str]]
-ColumnSpec = Tuple[str, Tuple, Optional[str], str, Optional[str]]
+Path = Tuple[Union[str, int], ...]
+ColumnSpec = Tuple[str, Path, Optional[str], str, Optional[str]]
 
 COLUMNS: Dict[Key, Tuple[ColumnSpec, ...]] = {
     (0x90, 0x01, None): (
