@@ -62,6 +62,14 @@ def _stdout() -> BinaryIO:
     return sys.stdout.buffer
 
 
+def _read_some(stream: BinaryIO, size: int) -> bytes:
+    """What the stream has now, up to size bytes, without waiting for more (read1 where the
+    stream is buffered, as sys.stdin.buffer is)."""
+    read1 = getattr(stream, "read1", None)
+    data: bytes = read1(size) if read1 is not None else stream.read(size)
+    return data
+
+
 def _is_regular_file(stream: BinaryIO) -> bool:
     try:
         return stat.S_ISREG(os.fstat(stream.fileno()).st_mode)
@@ -142,7 +150,7 @@ def _decode(args: List[str]) -> int:
             text = text[:at] + ',"sample":' + str(placed[0]) + text[at:]
         return text
 
-    def write(events: Iterable[object]) -> None:
+    def write(events: Iterable[Union[RawPacket, Skip]]) -> None:
         text = "".join(line(event) + "\n" for event in events)
         try:
             out.write(text.encode("ascii"))
@@ -192,7 +200,7 @@ def _encode(args: List[str]) -> int:
     pending = b""
     while True:
         try:
-            chunk = source.read1(CHUNK)
+            chunk = _read_some(source, CHUNK)
         except OSError as e:
             try:
                 out.flush()  # the bytes written before the fault are kept
