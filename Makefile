@@ -113,15 +113,15 @@ FUZZ_ONLY ?=
 FUZZ_SELECT = $(foreach o,$(FUZZ_ONLY),--only $(o))
 
 fuzz: generate
-	$(PY) tests/fuzz/fuzz.py run --seconds $(FUZZ_SECONDS) $(FUZZ_SELECT)
+	$(PY) -m tests.fuzz.fuzz run --seconds $(FUZZ_SECONDS) $(FUZZ_SELECT)
 
 fuzz-long: generate
-	$(PY) tests/fuzz/fuzz.py run --runs $(FUZZ_RUNS) --python-runs $(FUZZ_PY_RUNS) $(FUZZ_SELECT)
+	$(PY) -m tests.fuzz.fuzz run --runs $(FUZZ_RUNS) --python-runs $(FUZZ_PY_RUNS) $(FUZZ_SELECT)
 
 # Part of `make test`: the inputs of tests/fuzz/regressions/ (and the seed corpus) through every
 # language's harnesses without clang or libFuzzer (gcc/g++ with ASan+UBSan, cargo test, pytest).
 test-fuzz-regressions: generate
-	$(PY) tests/fuzz/fuzz.py replay
+	$(PY) -m tests.fuzz.fuzz replay
 
 # Benchmarks of the four languages (tests/bench/run.py, README "Benchmarks"): builds them into
 # build/bench/, runs them on the streams of tests/bench/streams.py and prints one table.

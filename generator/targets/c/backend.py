@@ -100,8 +100,18 @@ def member(name: str) -> str:
     return name + "_" if name in _KEYWORDS else name
 
 
+def c_prefix(package: str) -> str:
+    """The C symbol prefix of a package (without the trailing underscore; its upper case is the
+    macro prefix): the package name without a trailing "codec", plus "c" (mipcodec -> mipc_/MIPC_,
+    mscipcodec -> mscipc_/MSCIPC_). The vendor SDKs name their C API after the protocol (mip_,
+    MIP_), so a prefix that is not the protocol's name lets both be linked into one program; the
+    runtime is written with the neutral codec_/CODEC_ that this replaces (runtime_replacements)."""
+    base = package[: -len("codec")] if package.endswith("codec") and package != "codec" else package
+    return re.sub(r"[^a-z0-9_]", "_", base.lower()) + "c"
+
+
 def prefix_of(protocol: dict) -> str:
-    return re.sub(r"[^a-z0-9_]", "_", protocol["name"].lower())
+    return c_prefix(protocol["package"])
 
 
 def _int_literal(value: int, ctype: str, base: str) -> str:

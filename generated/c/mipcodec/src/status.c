@@ -6,23 +6,23 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *mip_status_text(mip_status_t status) {
+const char *mipc_status_text(mipc_status_t status) {
     switch (status) {
-    case MIP_OK:
+    case MIPC_OK:
         return "ok";
-    case MIP_ERR_DECODE:
+    case MIPC_ERR_DECODE:
         return "field data does not match the layout";
-    case MIP_ERR_BUFFER:
+    case MIPC_ERR_BUFFER:
         return "output buffer too small";
-    case MIP_ERR_INVALID:
+    case MIPC_ERR_INVALID:
         return "value cannot be encoded";
-    case MIP_ERR_UNKNOWN_SET:
+    case MIPC_ERR_UNKNOWN_SET:
         return "unknown descriptor set";
-    case MIP_ERR_UNKNOWN_DESCRIPTOR:
+    case MIPC_ERR_UNKNOWN_DESCRIPTOR:
         return "unknown descriptor";
-    case MIP_ERR_TOO_LONG:
+    case MIPC_ERR_TOO_LONG:
         return "exceeds the framing limits";
-    case MIP_ERR_JSON:
+    case MIPC_ERR_JSON:
         return "invalid JSON line";
     }
     return "unknown status";
@@ -40,15 +40,15 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
     *len += n;
 }
 
-size_t mip_decode_error_format(const mip_decode_error_t *err, char *buf, size_t cap) {
+size_t mipc_decode_error_format(const mipc_decode_error_t *err, char *buf, size_t cap) {
     char num[96];
     size_t len = 0;
     size_t i;
     if (cap > 0) {
         buf[0] = '\0';
     }
-    if (err->kind != MIP_DECODE_UNEXPECTED) {
-        for (i = 0; i < err->depth && i < MIP_PATH_MAX_DEPTH; i++) {
+    if (err->kind != MIPC_DECODE_UNEXPECTED) {
+        for (i = 0; i < err->depth && i < MIPC_PATH_MAX_DEPTH; i++) {
             if (i > 0) {
                 append(buf, cap, &len, ".");
             }
@@ -61,21 +61,21 @@ size_t mip_decode_error_format(const mip_decode_error_t *err, char *buf, size_t 
         append(buf, cap, &len, ": ");
     }
     switch (err->kind) {
-    case MIP_DECODE_NEEDS_BYTES:
+    case MIPC_DECODE_NEEDS_BYTES:
         snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need, err->offset,
                  err->have);
         break;
-    case MIP_DECODE_COUNT:
+    case MIPC_DECODE_COUNT:
         snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
         break;
-    case MIP_DECODE_REMAINING:
+    case MIPC_DECODE_REMAINING:
         snprintf(num, sizeof num, "%zu bytes left at offset %zu, not a multiple of %zu", err->have,
                  err->offset, err->need);
         break;
-    case MIP_DECODE_BOOL:
+    case MIPC_DECODE_BOOL:
         snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value, err->offset);
         break;
-    case MIP_DECODE_SELECTOR:
+    case MIPC_DECODE_SELECTOR:
         if (err->value_signed) {
             int64_t v = err->value > (uint64_t)INT64_MAX ? -(int64_t)(~err->value) - 1 : (int64_t)err->value;
             snprintf(num, sizeof num, "no member for selector value %" PRId64, v);
@@ -83,10 +83,10 @@ size_t mip_decode_error_format(const mip_decode_error_t *err, char *buf, size_t 
             snprintf(num, sizeof num, "no member for selector value %" PRIu64, err->value);
         }
         break;
-    case MIP_DECODE_UNEXPECTED:
+    case MIPC_DECODE_UNEXPECTED:
         snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have, err->offset);
         break;
-    case MIP_DECODE_NONE:
+    case MIPC_DECODE_NONE:
     default:
         snprintf(num, sizeof num, "no error");
         break;

@@ -9,12 +9,12 @@ static const char k_usage[] = "usage: mipcodec-decode [--device ID] [--samples] 
 
 typedef struct {
     const unsigned char *input;
-    mip_device_t device;
+    mipc_device_t device;
     char *line;
     size_t line_cap;
     int failed;
     int samples;
-    mip_sample_tracker_t tracker;
+    mipc_sample_tracker_t tracker;
 } decode_ctx_t;
 
 static int grow(decode_ctx_t *ctx, size_t need) {
@@ -29,16 +29,16 @@ static int grow(decode_ctx_t *ctx, size_t need) {
 }
 
 /* The line of an event into ctx->line; returns its full length. */
-static size_t format(decode_ctx_t *ctx, const mip_event_t *ev) {
-    if (ev->kind == MIP_EVENT_SKIP) {
-        return mip_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length, ctx->line,
-                                  ctx->line_cap);
+static size_t format(decode_ctx_t *ctx, const mipc_event_t *ev) {
+    if (ev->kind == MIPC_EVENT_SKIP) {
+        return mipc_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length, ctx->line,
+                                   ctx->line_cap);
     }
-    return mip_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
-                                ctx->line_cap);
+    return mipc_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
+                                 ctx->line_cap);
 }
 
-static void on_event(void *arg, const mip_event_t *ev) {
+static void on_event(void *arg, const mipc_event_t *ev) {
     decode_ctx_t *ctx = (decode_ctx_t *)arg;
     size_t need;
     if (ctx->failed) {
@@ -51,10 +51,10 @@ static void on_event(void *arg, const mip_event_t *ev) {
         }
         need = format(ctx, ev);
     }
-    if (ctx->samples && ev->kind == MIP_EVENT_PACKET) {
-        mip_sample_info_t info;
+    if (ctx->samples && ev->kind == MIPC_EVENT_PACKET) {
+        mipc_sample_info_t info;
         const char *at = strstr(ctx->line, ",\"fields\":");
-        if (at && mip_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
+        if (at && mipc_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
             size_t head = (size_t)(at - ctx->line);
             fwrite(ctx->line, 1, head, stdout);
             fprintf(stdout, ",\"sample\":%llu", (unsigned long long)info.number);
@@ -71,7 +71,7 @@ static void on_event(void *arg, const mip_event_t *ev) {
 static void print_device_ids(FILE *out) {
     int d;
     const char *id;
-    for (d = 1; (id = mip_device_id((mip_device_t)d)) != NULL; d++) {
+    for (d = 1; (id = mipc_device_id((mipc_device_t)d)) != NULL; d++) {
         fprintf(out, " %s", id);
     }
 }
@@ -84,13 +84,13 @@ static int usage_error(const char *what) {
 int main(int argc, char **argv) {
     const char *path = NULL;
     decode_ctx_t ctx;
-    mip_parser_t parser;
+    mipc_parser_t parser;
     unsigned char *input;
     size_t len = 0;
     FILE *in = stdin;
     int i;
     memset(&ctx, 0, sizeof ctx);
-    ctx.device = MIP_DEVICE_ANY;
+    ctx.device = MIPC_DEVICE_ANY;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *id = NULL;
@@ -114,7 +114,7 @@ int main(int argc, char **argv) {
         } else {
             path = a;
         }
-        if (id && !mip_device_from_id(id, &ctx.device)) {
+        if (id && !mipc_device_from_id(id, &ctx.device)) {
             fprintf(stderr, "mipcodec-decode: unknown device '%s' (expected one of:", id);
             print_device_ids(stderr);
             fputs(")\n", stderr);
@@ -144,10 +144,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "mipcodec-decode: out of memory\n");
         return 2;
     }
-    mip_parser_init(&parser);
-    mip_sample_tracker_init(&ctx.tracker);
-    mip_parser_feed(&parser, input, len, on_event, &ctx);
-    mip_parser_flush(&parser, on_event, &ctx);
+    mipc_parser_init(&parser);
+    mipc_sample_tracker_init(&ctx.tracker);
+    mipc_parser_feed(&parser, input, len, on_event, &ctx);
+    mipc_parser_flush(&parser, on_event, &ctx);
     free(ctx.line);
     free(input);
     if (ctx.failed) {

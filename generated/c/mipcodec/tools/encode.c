@@ -43,17 +43,17 @@ int main(int argc, char **argv) {
         start += n + 1;
         line_no++;
         if (!blank(line, n)) {
-            size_t cap = n / 2 + MIP_MAX_PACKET;
+            size_t cap = n / 2 + MIPC_MAX_PACKET;
             size_t out_len = 0;
             uint8_t *out = (uint8_t *)malloc(cap);
-            mip_status_t st;
+            mipc_status_t st;
             if (!out) {
                 fprintf(stderr, "mipcodec-encode: out of memory\n");
                 free(input);
                 return 2;
             }
-            st = mip_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
-            if (st == MIP_OK) {
+            st = mipc_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
+            if (st == MIPC_OK) {
                 fwrite(out, 1, out_len, stdout);
             } else {
                 fprintf(stderr, "line %lu: %s\n", line_no, msg);

@@ -1,6 +1,6 @@
 /* Reads a whole stream into memory (the command-line tools may allocate). Generated: do not edit. */
-#ifndef MIP_TOOLS_READ_ALL_H
-#define MIP_TOOLS_READ_ALL_H
+#ifndef MIPC_TOOLS_READ_ALL_H
+#define MIPC_TOOLS_READ_ALL_H
 
 #include <stdio.h>
 #include <stdlib.h>

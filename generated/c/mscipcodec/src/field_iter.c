@@ -3,9 +3,9 @@
 
 #include <stdio.h>
 
-bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *entry, uint8_t length_byte,
-                                mscip_trailing_kind_t why) {
-    entry->kind = MSCIP_ENTRY_TRAILING;
+bool mscipc_field_iter_trailing_(mscipc_field_iter_t *it, mscipc_field_entry_t *entry, uint8_t length_byte,
+                                 mscipc_trailing_kind_t why) {
+    entry->kind = MSCIPC_ENTRY_TRAILING;
     entry->offset = it->pos;
     entry->descriptor = 0;
     entry->data = it->payload + it->pos;
@@ -16,21 +16,21 @@ bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *ent
     return true;
 }
 
-size_t mscip_trailing_format(const mscip_field_entry_t *entry, char *buf, size_t cap) {
+size_t mscipc_trailing_format(const mscipc_field_entry_t *entry, char *buf, size_t cap) {
     int n;
     switch (entry->trailing) {
-    case MSCIP_TRAILING_SHORT_LENGTH:
+    case MSCIPC_TRAILING_SHORT_LENGTH:
         n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
                      (unsigned)entry->length_byte, entry->offset);
         break;
-    case MSCIP_TRAILING_OVERRUN:
+    case MSCIPC_TRAILING_OVERRUN:
         n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
                      (unsigned)entry->length_byte, entry->offset, entry->length);
         break;
-    case MSCIP_TRAILING_SHORT_HEADER:
+    case MSCIPC_TRAILING_SHORT_HEADER:
     default:
         n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
-                     MSCIP_FIELD_HEADER_SIZE, entry->length);
+                     MSCIPC_FIELD_HEADER_SIZE, entry->length);
         break;
     }
     return n < 0 ? 0 : (size_t)n;

@@ -6,23 +6,23 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *mscip_status_text(mscip_status_t status) {
+const char *mscipc_status_text(mscipc_status_t status) {
     switch (status) {
-    case MSCIP_OK:
+    case MSCIPC_OK:
         return "ok";
-    case MSCIP_ERR_DECODE:
+    case MSCIPC_ERR_DECODE:
         return "field data does not match the layout";
-    case MSCIP_ERR_BUFFER:
+    case MSCIPC_ERR_BUFFER:
         return "output buffer too small";
-    case MSCIP_ERR_INVALID:
+    case MSCIPC_ERR_INVALID:
         return "value cannot be encoded";
-    case MSCIP_ERR_UNKNOWN_SET:
+    case MSCIPC_ERR_UNKNOWN_SET:
         return "unknown descriptor set";
-    case MSCIP_ERR_UNKNOWN_DESCRIPTOR:
+    case MSCIPC_ERR_UNKNOWN_DESCRIPTOR:
         return "unknown descriptor";
-    case MSCIP_ERR_TOO_LONG:
+    case MSCIPC_ERR_TOO_LONG:
         return "exceeds the framing limits";
-    case MSCIP_ERR_JSON:
+    case MSCIPC_ERR_JSON:
         return "invalid JSON line";
     }
     return "unknown status";
@@ -40,15 +40,15 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
     *len += n;
 }
 
-size_t mscip_decode_error_format(const mscip_decode_error_t *err, char *buf, size_t cap) {
+size_t mscipc_decode_error_format(const mscipc_decode_error_t *err, char *buf, size_t cap) {
     char num[96];
     size_t len = 0;
     size_t i;
     if (cap > 0) {
         buf[0] = '\0';
     }
-    if (err->kind != MSCIP_DECODE_UNEXPECTED) {
-        for (i = 0; i < err->depth && i < MSCIP_PATH_MAX_DEPTH; i++) {
+    if (err->kind != MSCIPC_DECODE_UNEXPECTED) {
+        for (i = 0; i < err->depth && i < MSCIPC_PATH_MAX_DEPTH; i++) {
             if (i > 0) {
                 append(buf, cap, &len, ".");
             }
@@ -61,21 +61,21 @@ size_t mscip_decode_error_format(const mscip_decode_error_t *err, char *buf, siz
         append(buf, cap, &len, ": ");
     }
     switch (err->kind) {
-    case MSCIP_DECODE_NEEDS_BYTES:
+    case MSCIPC_DECODE_NEEDS_BYTES:
         snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need, err->offset,
                  err->have);
         break;
-    case MSCIP_DECODE_COUNT:
+    case MSCIPC_DECODE_COUNT:
         snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
         break;
-    case MSCIP_DECODE_REMAINING:
+    case MSCIPC_DECODE_REMAINING:
         snprintf(num, sizeof num, "%zu bytes left at offset %zu, not a multiple of %zu", err->have,
                  err->offset, err->need);
         break;
-    case MSCIP_DECODE_BOOL:
+    case MSCIPC_DECODE_BOOL:
         snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value, err->offset);
         break;
-    case MSCIP_DECODE_SELECTOR:
+    case MSCIPC_DECODE_SELECTOR:
         if (err->value_signed) {
             int64_t v = err->value > (uint64_t)INT64_MAX ? -(int64_t)(~err->value) - 1 : (int64_t)err->value;
             snprintf(num, sizeof num, "no member for selector value %" PRId64, v);
@@ -83,10 +83,10 @@ size_t mscip_decode_error_format(const mscip_decode_error_t *err, char *buf, siz
             snprintf(num, sizeof num, "no member for selector value %" PRIu64, err->value);
         }
         break;
-    case MSCIP_DECODE_UNEXPECTED:
+    case MSCIPC_DECODE_UNEXPECTED:
         snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have, err->offset);
         break;
-    case MSCIP_DECODE_NONE:
+    case MSCIPC_DECODE_NONE:
     default:
         snprintf(num, sizeof num, "no error");
         break;

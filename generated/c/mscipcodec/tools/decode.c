@@ -9,12 +9,12 @@ static const char k_usage[] = "usage: mscipcodec-decode [--device ID] [--samples
 
 typedef struct {
     const unsigned char *input;
-    mscip_device_t device;
+    mscipc_device_t device;
     char *line;
     size_t line_cap;
     int failed;
     int samples;
-    mscip_sample_tracker_t tracker;
+    mscipc_sample_tracker_t tracker;
 } decode_ctx_t;
 
 static int grow(decode_ctx_t *ctx, size_t need) {
@@ -29,16 +29,16 @@ static int grow(decode_ctx_t *ctx, size_t need) {
 }
 
 /* The line of an event into ctx->line; returns its full length. */
-static size_t format(decode_ctx_t *ctx, const mscip_event_t *ev) {
-    if (ev->kind == MSCIP_EVENT_SKIP) {
-        return mscip_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length,
-                                    ctx->line, ctx->line_cap);
+static size_t format(decode_ctx_t *ctx, const mscipc_event_t *ev) {
+    if (ev->kind == MSCIPC_EVENT_SKIP) {
+        return mscipc_json_skip_line(ev->offset, ctx->input + (size_t)ev->offset, (size_t)ev->length,
+                                     ctx->line, ctx->line_cap);
     }
-    return mscip_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
-                                  ctx->line_cap);
+    return mscipc_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
+                                   ctx->line_cap);
 }
 
-static void on_event(void *arg, const mscip_event_t *ev) {
+static void on_event(void *arg, const mscipc_event_t *ev) {
     decode_ctx_t *ctx = (decode_ctx_t *)arg;
     size_t need;
     if (ctx->failed) {
@@ -51,10 +51,10 @@ static void on_event(void *arg, const mscip_event_t *ev) {
         }
         need = format(ctx, ev);
     }
-    if (ctx->samples && ev->kind == MSCIP_EVENT_PACKET) {
-        mscip_sample_info_t info;
+    if (ctx->samples && ev->kind == MSCIPC_EVENT_PACKET) {
+        mscipc_sample_info_t info;
         const char *at = strstr(ctx->line, ",\"fields\":");
-        if (at && mscip_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
+        if (at && mscipc_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
             size_t head = (size_t)(at - ctx->line);
             fwrite(ctx->line, 1, head, stdout);
             fprintf(stdout, ",\"sample\":%llu", (unsigned long long)info.number);
@@ -71,7 +71,7 @@ static void on_event(void *arg, const mscip_event_t *ev) {
 static void print_device_ids(FILE *out) {
     int d;
     const char *id;
-    for (d = 1; (id = mscip_device_id((mscip_device_t)d)) != NULL; d++) {
+    for (d = 1; (id = mscipc_device_id((mscipc_device_t)d)) != NULL; d++) {
         fprintf(out, " %s", id);
     }
 }
@@ -84,13 +84,13 @@ static int usage_error(const char *what) {
 int main(int argc, char **argv) {
     const char *path = NULL;
     decode_ctx_t ctx;
-    mscip_parser_t parser;
+    mscipc_parser_t parser;
     unsigned char *input;
     size_t len = 0;
     FILE *in = stdin;
     int i;
     memset(&ctx, 0, sizeof ctx);
-    ctx.device = MSCIP_DEVICE_ANY;
+    ctx.device = MSCIPC_DEVICE_ANY;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *id = NULL;
@@ -114,7 +114,7 @@ int main(int argc, char **argv) {
         } else {
             path = a;
         }
-        if (id && !mscip_device_from_id(id, &ctx.device)) {
+        if (id && !mscipc_device_from_id(id, &ctx.device)) {
             fprintf(stderr, "mscipcodec-decode: unknown device '%s' (expected one of:", id);
             print_device_ids(stderr);
             fputs(")\n", stderr);
@@ -144,10 +144,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "mscipcodec-decode: out of memory\n");
         return 2;
     }
-    mscip_parser_init(&parser);
-    mscip_sample_tracker_init(&ctx.tracker);
-    mscip_parser_feed(&parser, input, len, on_event, &ctx);
-    mscip_parser_flush(&parser, on_event, &ctx);
+    mscipc_parser_init(&parser);
+    mscipc_sample_tracker_init(&ctx.tracker);
+    mscipc_parser_feed(&parser, input, len, on_event, &ctx);
+    mscipc_parser_flush(&parser, on_event, &ctx);
     free(ctx.line);
     free(input);
     if (ctx.failed) {

@@ -43,17 +43,17 @@ int main(int argc, char **argv) {
         start += n + 1;
         line_no++;
         if (!blank(line, n)) {
-            size_t cap = n / 2 + MSCIP_MAX_PACKET;
+            size_t cap = n / 2 + MSCIPC_MAX_PACKET;
             size_t out_len = 0;
             uint8_t *out = (uint8_t *)malloc(cap);
-            mscip_status_t st;
+            mscipc_status_t st;
             if (!out) {
                 fprintf(stderr, "mscipcodec-encode: out of memory\n");
                 free(input);
                 return 2;
             }
-            st = mscip_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
-            if (st == MSCIP_OK) {
+            st = mscipc_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
+            if (st == MSCIPC_OK) {
                 fwrite(out, 1, out_len, stdout);
             } else {
                 fprintf(stderr, "line %lu: %s\n", line_no, msg);

@@ -1,6 +1,6 @@
 /* Reads a whole stream into memory (the command-line tools may allocate). Generated: do not edit. */
-#ifndef MSCIP_TOOLS_READ_ALL_H
-#define MSCIP_TOOLS_READ_ALL_H
+#ifndef MSCIPC_TOOLS_READ_ALL_H
+#define MSCIPC_TOOLS_READ_ALL_H
 
 #include <stdio.h>
 #include <stdlib.h>

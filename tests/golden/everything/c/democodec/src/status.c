@@ -6,23 +6,23 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *demo_status_text(demo_status_t status) {
+const char *democ_status_text(democ_status_t status) {
     switch (status) {
-    case DEMO_OK:
+    case DEMOC_OK:
         return "ok";
-    case DEMO_ERR_DECODE:
+    case DEMOC_ERR_DECODE:
         return "field data does not match the layout";
-    case DEMO_ERR_BUFFER:
+    case DEMOC_ERR_BUFFER:
         return "output buffer too small";
-    case DEMO_ERR_INVALID:
+    case DEMOC_ERR_INVALID:
         return "value cannot be encoded";
-    case DEMO_ERR_UNKNOWN_SET:
+    case DEMOC_ERR_UNKNOWN_SET:
         return "unknown descriptor set";
-    case DEMO_ERR_UNKNOWN_DESCRIPTOR:
+    case DEMOC_ERR_UNKNOWN_DESCRIPTOR:
         return "unknown descriptor";
-    case DEMO_ERR_TOO_LONG:
+    case DEMOC_ERR_TOO_LONG:
         return "exceeds the framing limits";
-    case DEMO_ERR_JSON:
+    case DEMOC_ERR_JSON:
         return "invalid JSON line";
     }
     return "unknown status";
@@ -40,15 +40,15 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
     *len += n;
 }
 
-size_t demo_decode_error_format(const demo_decode_error_t *err, char *buf, size_t cap) {
+size_t democ_decode_error_format(const democ_decode_error_t *err, char *buf, size_t cap) {
     char num[96];
     size_t len = 0;
     size_t i;
     if (cap > 0) {
         buf[0] = '\0';
     }
-    if (err->kind != DEMO_DECODE_UNEXPECTED) {
-        for (i = 0; i < err->depth && i < DEMO_PATH_MAX_DEPTH; i++) {
+    if (err->kind != DEMOC_DECODE_UNEXPECTED) {
+        for (i = 0; i < err->depth && i < DEMOC_PATH_MAX_DEPTH; i++) {
             if (i > 0) {
                 append(buf, cap, &len, ".");
             }
@@ -61,21 +61,21 @@ size_t demo_decode_error_format(const demo_decode_error_t *err, char *buf, size_
         append(buf, cap, &len, ": ");
     }
     switch (err->kind) {
-    case DEMO_DECODE_NEEDS_BYTES:
+    case DEMOC_DECODE_NEEDS_BYTES:
         snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need, err->offset,
                  err->have);
         break;
-    case DEMO_DECODE_COUNT:
+    case DEMOC_DECODE_COUNT:
         snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
         break;
-    case DEMO_DECODE_REMAINING:
+    case DEMOC_DECODE_REMAINING:
         snprintf(num, sizeof num, "%zu bytes left at offset %zu, not a multiple of %zu", err->have,
                  err->offset, err->need);
         break;
-    case DEMO_DECODE_BOOL:
+    case DEMOC_DECODE_BOOL:
         snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value, err->offset);
         break;
-    case DEMO_DECODE_SELECTOR:
+    case DEMOC_DECODE_SELECTOR:
         if (err->value_signed) {
             int64_t v = err->value > (uint64_t)INT64_MAX ? -(int64_t)(~err->value) - 1 : (int64_t)err->value;
             snprintf(num, sizeof num, "no member for selector value %" PRId64, v);
@@ -83,10 +83,10 @@ size_t demo_decode_error_format(const demo_decode_error_t *err, char *buf, size_
             snprintf(num, sizeof num, "no member for selector value %" PRIu64, err->value);
         }
         break;
-    case DEMO_DECODE_UNEXPECTED:
+    case DEMOC_DECODE_UNEXPECTED:
         snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have, err->offset);
         break;
-    case DEMO_DECODE_NONE:
+    case DEMOC_DECODE_NONE:
     default:
         snprintf(num, sizeof num, "no error");
         break;

@@ -43,17 +43,17 @@ int main(int argc, char **argv) {
         start += n + 1;
         line_no++;
         if (!blank(line, n)) {
-            size_t cap = n / 2 + DEMO_MAX_PACKET;
+            size_t cap = n / 2 + DEMOC_MAX_PACKET;
             size_t out_len = 0;
             uint8_t *out = (uint8_t *)malloc(cap);
-            demo_status_t st;
+            democ_status_t st;
             if (!out) {
                 fprintf(stderr, "democodec-encode: out of memory\n");
                 free(input);
                 return 2;
             }
-            st = demo_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
-            if (st == DEMO_OK) {
+            st = democ_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
+            if (st == DEMOC_OK) {
                 fwrite(out, 1, out_len, stdout);
             } else {
                 fprintf(stderr, "line %lu: %s\n", line_no, msg);

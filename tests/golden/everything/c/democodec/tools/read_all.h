@@ -1,6 +1,6 @@
 /* Reads a whole stream into memory (the command-line tools may allocate). Generated: do not edit. */
-#ifndef DEMO_TOOLS_READ_ALL_H
-#define DEMO_TOOLS_READ_ALL_H
+#ifndef DEMOC_TOOLS_READ_ALL_H
+#define DEMOC_TOOLS_READ_ALL_H
 
 #include <stdio.h>
 #include <stdlib.h>
