@@ -12,7 +12,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-golden test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -38,7 +38,7 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 bootstrap:
 	@tools/bootstrap
 
-test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions test-bench test-golden
+test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-fuzz-regressions test-bench test-golden test-consumer
 
 # Python everywhere under tests/ is one package (tests/__init__.py): pytest and the scripts run
 # from the project root (`python -m tests.conformance.differential`), shared helpers in tests/helpers/.
@@ -100,6 +100,18 @@ endif
 # needs gcc-s390x-linux-gnu, libc6-dev-s390x-cross and qemu-user (installed by .ci/run).
 test-bigendian: generate
 	$(PY) -m pytest -q tests/bigendian
+
+# The C and C++ packages consumed from outside the repository as docs/packaging.md says
+# (tests/consumer/): Release -O3 with -Werror under gcc (and clang where installed), cmake --install
+# of both into one prefix + find_package, pkg-config, add_subdirectory into a C-only project.
+test-consumer: generate
+	$(PY) -m pytest -q tests/consumer/test_consumers.py
+
+# The C core built freestanding for a Cortex-M4F (arm-none-eabi-gcc + newlib, -Os) into a minimal
+# image whose code size it prints. Not part of `make test`: needs gcc-arm-none-eabi and
+# libnewlib-arm-none-eabi (tools/bootstrap --ci; .ci/run runs it).
+test-cortexm: generate
+	$(PY) -m pytest -q -s tests/consumer/test_cortexm.py
 
 # Fuzzing (tests/fuzz/, README "Fuzzing"): every harness of every language and package, one at a
 # time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the

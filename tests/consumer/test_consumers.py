@@ -125,7 +125,7 @@ def prefix() -> Path:
 def test_install_tree(prefix):
     """What `cmake --install` puts where (docs/packaging.md lists the same tree)."""
     files = sorted(p.relative_to(prefix).as_posix() for p in prefix.rglob("*") if p.is_file())
-    libdir = next(p.parent.parent.relative_to(prefix).as_posix() for p in prefix.rglob(f"{PKG}Config.cmake"))
+    libdir = next(p.parents[2].relative_to(prefix).as_posix() for p in prefix.rglob(f"{PKG}Config.cmake"))
     expected = {
         f"{libdir}/lib{PKG}.a",
         f"{libdir}/lib{PKG}_json.a",

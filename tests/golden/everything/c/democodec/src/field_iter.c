@@ -1,8 +1,6 @@
 /* Splits a packet payload into fields. Generated: do not edit. */
 #include "democodec/field_iter.h"
 
-#include <stdio.h>
-
 bool democ_field_iter_trailing_(democ_field_iter_t *it, democ_field_entry_t *entry, uint8_t length_byte,
                                 democ_trailing_kind_t why) {
     entry->kind = DEMOC_ENTRY_TRAILING;
@@ -16,22 +14,4 @@ bool democ_field_iter_trailing_(democ_field_iter_t *it, democ_field_entry_t *ent
     return true;
 }
 
-size_t democ_trailing_format(const democ_field_entry_t *entry, char *buf, size_t cap) {
-    int n;
-    switch (entry->trailing) {
-    case DEMOC_TRAILING_SHORT_LENGTH:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
-                     (unsigned)entry->length_byte, entry->offset);
-        break;
-    case DEMOC_TRAILING_OVERRUN:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
-                     (unsigned)entry->length_byte, entry->offset, entry->length);
-        break;
-    case DEMOC_TRAILING_SHORT_HEADER:
-    default:
-        n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
-                     DEMOC_FIELD_HEADER_SIZE, entry->length);
-        break;
-    }
-    return n < 0 ? 0 : (size_t)n;
-}
+/* democ_trailing_format is in status.c, with the other messages (no stdio). */
